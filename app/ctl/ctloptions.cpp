@@ -1,0 +1,129 @@
+#include "ctloptions.h"
+
+#include <QCoreApplication>
+
+namespace stepcom {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("stepcomctl", text);
+}
+
+bool toInt(const QString &text, int *out)
+{
+    bool ok = false;
+    const int v = text.toInt(&ok);
+    if (ok)
+        *out = v;
+    return ok;
+}
+
+} // namespace
+
+void CtlOptions::addOptions(QCommandLineParser &parser)
+{
+    parser.addOptions({
+        {QStringLiteral("port"), tr("Serial port of the controller (e.g. /dev/ttyUSB0, COM3)."),
+         tr("path")},
+        {QStringLiteral("tcp"), tr("Modbus TCP gateway or simulator, HOST[:PORT] (port 502)."),
+         tr("host:port")},
+        {QStringLiteral("sim"), tr("Use the built-in simulated controller.")},
+        {QStringLiteral("baud"), tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600)."),
+         tr("rate"), QStringLiteral("9600")},
+        {QStringLiteral("parity"), tr("Parity: none, even or odd (default none)."), tr("parity"),
+         QStringLiteral("none")},
+        {QStringLiteral("stop-bits"), tr("Stop bits: 1 or 2 (default 1)."), tr("n"),
+         QStringLiteral("1")},
+        {QStringLiteral("id"), tr("Device id 1-255 (default 1)."), tr("id"), QStringLiteral("1")},
+        {QStringLiteral("timeout"), tr("Answer timeout in ms (default 500)."), tr("ms"),
+         QStringLiteral("500")},
+        {QStringLiteral("retries"), tr("Retries after a timeout (default 2)."), tr("n"),
+         QStringLiteral("2")},
+        {QStringLiteral("map"), tr("Register map file to use instead of the built-in one."),
+         tr("file")},
+        {QStringLiteral("json"), tr("Machine-readable JSON output.")},
+        {QStringLiteral("verbose"), tr("Show the Modbus traffic on standard error.")},
+        {QStringLiteral("yes"), tr("Do not ask: needed for commands that destroy settings.")},
+        {QStringLiteral("save-to-flash"), tr("After writing, save the parameters to flash.")},
+        {QStringLiteral("count"), tr("monitor: number of samples (default: until stopped)."),
+         tr("n")},
+        {QStringLiteral("interval"),
+         tr("monitor: ms between samples (default: as fast as the "
+            "link allows)."),
+         tr("ms")},
+    });
+}
+
+QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out)
+{
+    CtlOptions o;
+    const int targets = int(parser.isSet(QStringLiteral("port"))) +
+                        int(parser.isSet(QStringLiteral("tcp"))) +
+                        int(parser.isSet(QStringLiteral("sim")));
+    if (targets > 1)
+        return tr("give only one of --port, --tcp and --sim");
+    if (parser.isSet(QStringLiteral("port"))) {
+        o.target = Target::Port;
+        o.link.transport = LinkSettings::Transport::Rtu;
+        o.link.portName = parser.value(QStringLiteral("port"));
+    } else if (parser.isSet(QStringLiteral("tcp"))) {
+        o.target = Target::Tcp;
+        o.link.transport = LinkSettings::Transport::Tcp;
+        const QString value = parser.value(QStringLiteral("tcp"));
+        const qsizetype colon = value.lastIndexOf(QLatin1Char(':'));
+        o.link.host = colon < 0 ? value : value.left(colon);
+        o.link.tcpPort = 502;
+        if (colon >= 0 && !toInt(value.mid(colon + 1), &o.link.tcpPort))
+            return tr("--tcp: '%1' is not HOST[:PORT]").arg(value);
+    } else if (parser.isSet(QStringLiteral("sim"))) {
+        o.target = Target::Sim;
+    }
+    if (!toInt(parser.value(QStringLiteral("baud")), &o.link.baud))
+        return tr("--baud: '%1' is not a number").arg(parser.value(QStringLiteral("baud")));
+    if (!LinkSettings::parseParity(parser.value(QStringLiteral("parity")), &o.link.parity))
+        return tr("--parity: '%1' is not none, even or odd")
+            .arg(parser.value(QStringLiteral("parity")));
+    const QString stop = parser.value(QStringLiteral("stop-bits"));
+    if (stop == QLatin1String("1"))
+        o.link.stopBits = QSerialPort::OneStop;
+    else if (stop == QLatin1String("2"))
+        o.link.stopBits = QSerialPort::TwoStop;
+    else
+        return tr("--stop-bits: '%1' is not 1 or 2").arg(stop);
+    if (!toInt(parser.value(QStringLiteral("id")), &o.link.deviceId))
+        return tr("--id: '%1' is not a number").arg(parser.value(QStringLiteral("id")));
+    if (!toInt(parser.value(QStringLiteral("timeout")), &o.link.timeoutMs))
+        return tr("--timeout: '%1' is not a number").arg(parser.value(QStringLiteral("timeout")));
+    if (!toInt(parser.value(QStringLiteral("retries")), &o.link.retries))
+        return tr("--retries: '%1' is not a number").arg(parser.value(QStringLiteral("retries")));
+    if (parser.isSet(QStringLiteral("count")) &&
+        (!toInt(parser.value(QStringLiteral("count")), &o.count) || o.count < 1))
+        return tr("--count: '%1' is not a positive number")
+            .arg(parser.value(QStringLiteral("count")));
+    if (parser.isSet(QStringLiteral("interval")) &&
+        (!toInt(parser.value(QStringLiteral("interval")), &o.intervalMs) || o.intervalMs < 0))
+        return tr("--interval: '%1' is not a number of ms")
+            .arg(parser.value(QStringLiteral("interval")));
+    o.mapFile = parser.value(QStringLiteral("map"));
+    o.json = parser.isSet(QStringLiteral("json"));
+    o.verbose = parser.isSet(QStringLiteral("verbose"));
+    o.yes = parser.isSet(QStringLiteral("yes"));
+    o.saveToFlash = parser.isSet(QStringLiteral("save-to-flash"));
+    const QStringList positional = parser.positionalArguments();
+    if (positional.isEmpty())
+        return tr("no command given (params, read, write, command)");
+    o.command = positional.first();
+    o.arguments = positional.mid(1);
+    if (o.target != Target::None) {
+        if (o.target != Target::Sim) {
+            if (const QString problem = o.link.validate(); !problem.isEmpty())
+                return problem;
+        }
+    }
+    *out = o;
+    return {};
+}
+
+} // namespace stepcom

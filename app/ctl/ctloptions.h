@@ -1,0 +1,32 @@
+#pragma once
+
+#include "bus/linksettings.h"
+
+#include <QCommandLineParser>
+#include <QStringList>
+
+namespace stepcom {
+
+// The global options shared by every stepcomctl command, parsed and checked.
+struct CtlOptions
+{
+    enum class Target { None, Port, Tcp, Sim };
+    Target target = Target::None;
+    LinkSettings link;
+    QString mapFile;
+    bool json = false;
+    bool verbose = false;
+    bool yes = false;
+    bool saveToFlash = false;
+    int count = -1;
+    int intervalMs = 0;
+    QString command;
+    QStringList arguments;
+
+    // Sets up `parser` with every option; the caller processes it.
+    static void addOptions(QCommandLineParser &parser);
+    // Fills the options from a processed parser; on a usage error returns the message.
+    static QString fromParser(const QCommandLineParser &parser, CtlOptions *out);
+};
+
+} // namespace stepcom

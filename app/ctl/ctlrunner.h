@@ -1,0 +1,48 @@
+#pragma once
+
+#include "ctloptions.h"
+#include "device/deviceclient.h"
+#include "map/registermap.h"
+
+#include <QObject>
+#include <QTextStream>
+
+namespace stepcom {
+
+class ModbusLink;
+
+// Runs one stepcomctl command against a controller and reports an exit code:
+// 0 success, 1 link or device error, 2 usage or validation error.
+class CtlRunner : public QObject
+{
+    Q_OBJECT
+public:
+    enum Exit { Ok = 0, DeviceError = 1, UsageError = 2 };
+
+    CtlRunner(const CtlOptions &options, const RegisterMap &map, QObject *parent = nullptr);
+    // Starts the command; `finished` follows once.
+    void start();
+
+Q_SIGNALS:
+    void finished(int exitCode);
+
+private:
+    void connectThen(std::function<void()> next);
+    void runParams();
+    void runRead();
+    void runWrite();
+    void runCommand();
+    void fail(int code, const QString &message);
+    void finish(int code);
+    QString valueText(const Parameter &p, qint64 raw) const;
+
+    CtlOptions m_options;
+    RegisterMap m_map;
+    ModbusLink *m_link = nullptr;
+    DeviceClient *m_device = nullptr;
+    QTextStream m_out;
+    QTextStream m_err;
+    bool m_finished = false;
+};
+
+} // namespace stepcom

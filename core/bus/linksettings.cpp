@@ -1,0 +1,100 @@
+#include "bus/linksettings.h"
+
+#include <QCoreApplication>
+
+namespace stepcom {
+
+namespace {
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("stepcom::LinkSettings", text);
+}
+} // namespace
+
+const QList<int> &LinkSettings::supportedBauds()
+{
+    static const QList<int> bauds{4800, 9600, 19200, 38400};
+    return bauds;
+}
+
+QString LinkSettings::parityName(QSerialPort::Parity parity)
+{
+    switch (parity) {
+    case QSerialPort::EvenParity:
+        return QStringLiteral("even");
+    case QSerialPort::OddParity:
+        return QStringLiteral("odd");
+    default:
+        return QStringLiteral("none");
+    }
+}
+
+bool LinkSettings::parseParity(const QString &text, QSerialPort::Parity *parity)
+{
+    const QString t = text.trimmed().toLower();
+    if (t == QLatin1String("none") || t == QLatin1String("n"))
+        *parity = QSerialPort::NoParity;
+    else if (t == QLatin1String("even") || t == QLatin1String("e"))
+        *parity = QSerialPort::EvenParity;
+    else if (t == QLatin1String("odd") || t == QLatin1String("o"))
+        *parity = QSerialPort::OddParity;
+    else
+        return false;
+    return true;
+}
+
+QString LinkSettings::describe() const
+{
+    if (transport == Transport::Tcp)
+        return QStringLiteral("%1:%2 · id %3").arg(host).arg(tcpPort).arg(deviceId);
+    const QChar p = parity == QSerialPort::EvenParity  ? QLatin1Char('E')
+                    : parity == QSerialPort::OddParity ? QLatin1Char('O')
+                                                       : QLatin1Char('N');
+    return QStringLiteral("%1 · %2 8%3%4 · id %5")
+        .arg(portName)
+        .arg(baud)
+        .arg(p)
+        .arg(stopBits == QSerialPort::TwoStop ? 2 : 1)
+        .arg(deviceId);
+}
+
+QString LinkSettings::validate() const
+{
+    if (deviceId < 1 || deviceId > 255)
+        return tr("device id %1 is outside 1-255").arg(deviceId);
+    if (timeoutMs < 20 || timeoutMs > 60000)
+        return tr("timeout %1 ms is outside 20-60000 ms").arg(timeoutMs);
+    if (retries < 0 || retries > 10)
+        return tr("retries %1 is outside 0-10").arg(retries);
+    if (transport == Transport::Tcp) {
+        if (host.trimmed().isEmpty())
+            return tr("no host given");
+        if (tcpPort < 1 || tcpPort > 65535)
+            return tr("TCP port %1 is outside 1-65535").arg(tcpPort);
+        return {};
+    }
+    if (portName.trimmed().isEmpty())
+        return tr("no serial port given");
+    if (!supportedBauds().contains(baud))
+        return tr("baud %1 is not one of 4800, 9600, 19200, 38400").arg(baud);
+    if (stopBits != QSerialPort::OneStop && stopBits != QSerialPort::TwoStop)
+        return tr("stop bits must be 1 or 2");
+    return {};
+}
+
+double LinkSettings::charTimeMs() const
+{
+    if (transport == Transport::Tcp || baud <= 0)
+        return 0.0;
+    return 10000.0 / baud;
+}
+
+bool operator==(const LinkSettings &a, const LinkSettings &b)
+{
+    return a.transport == b.transport && a.portName == b.portName && a.baud == b.baud &&
+           a.parity == b.parity && a.stopBits == b.stopBits && a.host == b.host &&
+           a.tcpPort == b.tcpPort && a.deviceId == b.deviceId && a.timeoutMs == b.timeoutMs &&
+           a.retries == b.retries;
+}
+
+} // namespace stepcom

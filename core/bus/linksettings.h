@@ -1,0 +1,39 @@
+#pragma once
+
+#include <QSerialPort>
+#include <QString>
+
+namespace stepcom {
+
+// How to reach one controller. Defaults are the controller's factory settings.
+struct LinkSettings
+{
+    enum class Transport { Rtu, Tcp };
+    Transport transport = Transport::Rtu;
+    QString portName; // serial device path or name (/dev/ttyUSB0, COM3, a pty path)
+    int baud = 9600;
+    QSerialPort::Parity parity = QSerialPort::NoParity;
+    QSerialPort::StopBits stopBits = QSerialPort::OneStop;
+    QString host = QStringLiteral("127.0.0.1");
+    int tcpPort = 502;
+    int deviceId = 1;
+    // A 49-register read at 4800 baud takes about 280 ms on the wire plus the 35 ms answer
+    // delay; 500 ms leaves room for USB adapters' latency.
+    int timeoutMs = 500;
+    int retries = 2;
+
+    // "/dev/ttyUSB0 · 9600 8N1 · id 1" or "192.168.0.7:502 · id 1".
+    QString describe() const;
+    // Empty when usable, else what is wrong ("baud 1200 is not one of 4800, 9600, 19200, 38400").
+    QString validate() const;
+    // Seconds the wire needs for `bytes` characters at this baud (10 bits a character); 0 on TCP.
+    double charTimeMs() const;
+
+    static const QList<int> &supportedBauds();
+    static QString parityName(QSerialPort::Parity parity);
+    static bool parseParity(const QString &text, QSerialPort::Parity *parity);
+};
+
+bool operator==(const LinkSettings &a, const LinkSettings &b);
+
+} // namespace stepcom

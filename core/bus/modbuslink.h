@@ -1,0 +1,106 @@
+#pragma once
+
+#include "bus/linksettings.h"
+#include "bus/linkstats.h"
+#include "bus/request.h"
+#include "bus/requestqueue.h"
+#include "bus/wiretap.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+
+class QModbusClient;
+class QModbusReply;
+
+namespace stepcom {
+
+class TrafficLog;
+
+// The only code that touches QModbusClient. One transaction on the wire at a time, taken from
+// a priority queue (emergency > commands and writes > reads > polling); our own retries, so an
+// emergency stop can go out between two attempts of a poll; our own watchdog, because a
+// vanished port leaves Qt 6.4's pending reply unfinished forever.
+class ModbusLink : public QObject
+{
+    Q_OBJECT
+public:
+    enum class State { Disconnected, Connecting, Connected };
+    Q_ENUM(State)
+
+    explicit ModbusLink(QObject *parent = nullptr);
+    ~ModbusLink() override;
+
+    // Connect; `opened(ok, reason)` follows exactly once for this attempt.
+    void open(const LinkSettings &settings);
+    // Disconnect; everything queued fails with "link closed".
+    void close(const QString &reason = QString());
+    State state() const { return m_state; }
+    bool isConnected() const { return m_state == State::Connected; }
+    const LinkSettings &settings() const { return m_settings; }
+    // After the controller's id changed (register 40212) the link follows without reopening.
+    void setDeviceId(int id) { m_settings.deviceId = id; }
+
+    // Queue a request; `callback` runs once with the result (not if `context` died first).
+    quint64 submit(Request request, ResultCallback callback, QObject *context = nullptr);
+    // Fail every queued (not in-flight) request of priority `from` or lower; returns how many.
+    int cancelQueued(Priority from, const QString &reason = QString());
+    int queuedCount() const { return m_queue.size(); }
+    bool isBusy() const { return m_inFlight.has_value(); }
+
+    // Silence after a timeout or a bad answer before the next request, so a late answer to
+    // the old request cannot be taken for the answer to the new one.
+    void setQuietTimeMs(int ms) { m_quietMs = ms; }
+    int quietTimeMs() const { return m_quietMs; }
+
+    const LinkStats &stats() const { return m_stats; }
+    void resetStats();
+    TrafficLog *traffic() const { return m_traffic; }
+
+Q_SIGNALS:
+    void opened(bool ok, const QString &reason);
+    void stateChanged(stepcom::ModbusLink::State state, const QString &reason);
+    // The link dropped on its own (port vanished, gateway closed, watchdog).
+    void lost(const QString &reason);
+    // A request was put on the wire.
+    void dispatched(quint64 id, const stepcom::Request &request);
+    void finished(quint64 id, const stepcom::Request &request, const stepcom::Result &result);
+    void statsChanged();
+
+private:
+    void setState(State state, const QString &reason);
+    void finishOpen(bool ok, const QString &reason);
+    void onClientState(int state);
+    void onClientError(int error);
+    void pump();
+    void schedulePump(int delayMs);
+    void onReplyFinished(QModbusReply *reply);
+    void onWatchdog();
+    void complete(QueuedRequest item, Result result);
+    void failLink(const QString &reason);
+    void failAll(const QString &reason);
+    void onWireFrame(WireTap::Frame frame, const QByteArray &raw);
+    QString describe(const Request &request) const;
+
+    LinkSettings m_settings;
+    State m_state = State::Disconnected;
+    QModbusClient *m_client = nullptr;
+    bool m_openPending = false;
+    QTimer m_connectTimer;
+    RequestQueue m_queue;
+    std::optional<QueuedRequest> m_inFlight;
+    QPointer<QModbusReply> m_reply;
+    QElapsedTimer m_sentAt;
+    QTimer m_watchdog;
+    QTimer m_pumpTimer;
+    QElapsedTimer m_sinceQuiet;
+    int m_quietRemainingMs = 0;
+    int m_quietMs = 100;
+    quint64 m_nextId = 1;
+    LinkStats m_stats;
+    TrafficLog *m_traffic;
+    bool m_failing = false;
+};
+
+} // namespace stepcom

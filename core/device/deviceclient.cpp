@@ -1,0 +1,283 @@
+#include "device/deviceclient.h"
+
+#include "bus/modbuslink.h"
+
+#include <QCoreApplication>
+
+#include <memory>
+
+namespace stepcom {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("stepcom::DeviceClient", text);
+}
+
+const QString kDeviceId = QStringLiteral("device.id");
+const QString kDeviceBaud = QStringLiteral("device.baud");
+
+} // namespace
+
+DeviceClient::DeviceClient(ModbusLink *link, const RegisterMap &map, QObject *parent)
+    : QObject(parent)
+    , m_link(link)
+    , m_map(map)
+{}
+
+ReadCostModel DeviceClient::costModel() const
+{
+    const LinkSettings &s = m_link->settings();
+    return ReadCostModel::forBaud(s.transport == LinkSettings::Transport::Rtu ? s.baud : 0,
+                                  m_map.answerDelayMs());
+}
+
+QList<ReadBlock> DeviceClient::planRead(const QList<const Parameter *> &params) const
+{
+    return ReadPlanner::plan(params, m_map.maxRegistersPerRequest(), costModel());
+}
+
+void DeviceClient::read(const QList<const Parameter *> &params, Priority priority,
+                        std::function<void(const ReadOutcome &)> done)
+{
+    const QList<ReadBlock> blocks = planRead(params);
+    auto outcome = std::make_shared<ReadOutcome>();
+    auto pending = std::make_shared<int>(int(blocks.size()));
+    outcome->reads = int(blocks.size());
+    if (blocks.isEmpty()) {
+        outcome->ok = params.isEmpty();
+        if (!params.isEmpty())
+            outcome->errors << tr("nothing readable among the parameters asked for");
+        QTimer::singleShot(0, this, [outcome, done] { done(*outcome); });
+        return;
+    }
+    int index = 0;
+    for (const ReadBlock &block : blocks) {
+        Request req = Request::read(block.address, block.count, priority);
+        req.what = tr("read block %1/%2").arg(++index).arg(blocks.size());
+        m_link->submit(
+            req,
+            [this, block, params, outcome, pending, done](const Result &r) {
+                if (r.ok) {
+                    for (const Parameter *p : params) {
+                        if (p->address >= block.address && p->lastAddress() <= block.lastAddress())
+                            outcome->values.insert(p->key, p->decode(r.values.constData() +
+                                                                     (p->address - block.address)));
+                    }
+                } else {
+                    outcome->errors << r.errorText;
+                }
+                if (--*pending == 0) {
+                    outcome->ok = outcome->errors.isEmpty();
+                    done(*outcome);
+                }
+            },
+            this);
+    }
+}
+
+void DeviceClient::readAll(std::function<void(const ReadOutcome &)> done)
+{
+    read(m_map.holdings(), Priority::Read, std::move(done));
+}
+
+QStringList DeviceClient::validate(const QList<ParameterWrite> &writes)
+{
+    QStringList problems;
+    QSet<QString> seen;
+    for (const ParameterWrite &w : writes) {
+        if (!w.parameter) {
+            problems << tr("unknown parameter");
+            continue;
+        }
+        if (!w.parameter->writable())
+            problems << tr("%1 is read-only").arg(w.parameter->key);
+        else if (const QString why = w.parameter->checkRaw(w.raw); !why.isEmpty())
+            problems << why;
+        if (seen.contains(w.parameter->key))
+            problems << tr("%1 is given twice").arg(w.parameter->key);
+        seen.insert(w.parameter->key);
+    }
+    return problems;
+}
+
+namespace {
+
+// One write-and-verify run; steps chain through callbacks, never a nested event loop.
+struct WriteJob : std::enable_shared_from_this<WriteJob>
+{
+    DeviceClient *client = nullptr;
+    QList<Request> requests;          // ordinary parameters, planned
+    QList<ParameterWrite> all;        // everything, for the read-back
+    QList<ParameterWrite> linkWrites; // device.id / device.baud, written last
+    std::function<void(const WriteOutcome &)> done;
+    WriteOutcome outcome;
+    QHash<quint16, const Parameter *> byAddress;
+
+    void writeNext(int index)
+    {
+        if (index >= requests.size()) {
+            writeLinkSettings(0);
+            return;
+        }
+        auto self = shared_from_this();
+        client->link()->submit(
+            requests.at(index),
+            [self, index](const Result &r) {
+                const QStringList keys = self->requests.at(index).what.split(QStringLiteral(", "));
+                if (!r.ok) {
+                    self->outcome.errors << r.errorText;
+                    for (int i = index + 1; i < self->requests.size(); ++i)
+                        self->outcome.notWritten +=
+                            self->requests.at(i).what.split(QStringLiteral(", "));
+                    for (const ParameterWrite &w : std::as_const(self->linkWrites))
+                        self->outcome.notWritten << w.parameter->key;
+                    self->verify();
+                    return;
+                }
+                self->outcome.written += keys;
+                self->writeNext(index + 1);
+            },
+            client);
+    }
+
+    void writeLinkSettings(int index)
+    {
+        if (index >= linkWrites.size()) {
+            verify();
+            return;
+        }
+        const ParameterWrite w = linkWrites.at(index);
+        Request req = Request::write(w.parameter->address, w.parameter->encode(w.raw));
+        req.what = w.parameter->key;
+        auto self = shared_from_this();
+        client->link()->submit(
+            req,
+            [self, index, w](const Result &r) {
+                if (!r.ok) {
+                    self->outcome.errors << r.errorText;
+                    self->verify();
+                    return;
+                }
+                self->outcome.written << w.parameter->key;
+                ModbusLink *link = self->client->link();
+                if (w.parameter->key == kDeviceId) {
+                    link->setDeviceId(int(w.raw)); // the controller answers at its new id now
+                    self->writeLinkSettings(index + 1);
+                } else if (w.parameter->key == kDeviceBaud &&
+                           link->settings().transport == LinkSettings::Transport::Rtu) {
+                    LinkSettings s = link->settings();
+                    s.baud = int(w.raw);
+                    auto connection = std::make_shared<QMetaObject::Connection>();
+                    *connection = QObject::connect(
+                        link, &ModbusLink::opened, self->client,
+                        [self, index, connection](bool ok, const QString &reason) {
+                            QObject::disconnect(*connection);
+                            if (!ok) {
+                                self->outcome.errors
+                                    << tr("could not reopen the port at the new baud: %1")
+                                           .arg(reason);
+                                self->finish();
+                                return;
+                            }
+                            self->writeLinkSettings(index + 1);
+                        });
+                    link->open(s);
+                } else {
+                    self->writeLinkSettings(index + 1);
+                }
+            },
+            client);
+    }
+
+    void verify()
+    {
+        QList<const Parameter *> params;
+        for (const ParameterWrite &w : std::as_const(all)) {
+            if (outcome.written.contains(w.parameter->key))
+                params << w.parameter;
+        }
+        if (params.isEmpty()) {
+            finish();
+            return;
+        }
+        auto self = shared_from_this();
+        client->read(params, Priority::Command, [self](const ReadOutcome &read) {
+            for (const ParameterWrite &w : std::as_const(self->all)) {
+                if (!self->outcome.written.contains(w.parameter->key))
+                    continue;
+                const auto it = read.values.constFind(w.parameter->key);
+                if (it == read.values.cend())
+                    self->outcome.mismatches.append({w.parameter->key, w.raw, std::nullopt});
+                else if (*it != w.raw)
+                    self->outcome.mismatches.append({w.parameter->key, w.raw, *it});
+            }
+            self->outcome.errors += read.errors;
+            self->finish();
+        });
+    }
+
+    void finish()
+    {
+        for (const WriteMismatch &m : std::as_const(outcome.mismatches)) {
+            const Parameter *p = client->map().find(m.key);
+            outcome.errors << (m.got ? tr("%1: wrote %2 but the controller holds %3")
+                                           .arg(m.key, p->formatRaw(m.wanted), p->formatRaw(*m.got))
+                                     : tr("%1: wrote %2 but could not read it back")
+                                           .arg(m.key, p->formatRaw(m.wanted)));
+        }
+        outcome.ok = outcome.errors.isEmpty();
+        done(outcome);
+    }
+};
+
+} // namespace
+
+void DeviceClient::write(const QList<ParameterWrite> &writes,
+                         std::function<void(const WriteOutcome &)> done)
+{
+    auto job = std::make_shared<WriteJob>();
+    job->client = this;
+    job->done = std::move(done);
+    job->all = writes;
+    job->outcome.errors = validate(writes);
+    if (!job->outcome.errors.isEmpty()) {
+        for (const ParameterWrite &w : writes) {
+            if (w.parameter)
+                job->outcome.notWritten << w.parameter->key;
+        }
+        QTimer::singleShot(0, this, [job] { job->done(job->outcome); });
+        return;
+    }
+    QList<ParameterWrite> ordinary;
+    for (const ParameterWrite &w : writes) {
+        if (w.parameter->key == kDeviceId || w.parameter->key == kDeviceBaud)
+            job->linkWrites << w;
+        else
+            ordinary << w;
+    }
+    // The id first, then the baud: each answers before it takes effect.
+    std::sort(job->linkWrites.begin(), job->linkWrites.end(),
+              [](const ParameterWrite &a, const ParameterWrite &b) {
+                  return a.parameter->key == kDeviceId && b.parameter->key != kDeviceId;
+              });
+    job->requests = WritePlanner::plan(ordinary, m_map.maxRegistersPerRequest());
+    job->writeNext(0);
+}
+
+Priority DeviceClient::priorityFor(const Parameter &coil)
+{
+    return coil.command == CommandClass::Emergency ? Priority::Emergency : Priority::Command;
+}
+
+void DeviceClient::command(const Parameter &coil, std::function<void(const Result &)> done)
+{
+    Request req = Request::coil(coil.address, true, priorityFor(coil));
+    req.what = coil.key;
+    // Stops are safe to repeat; anything that moves or changes state is not.
+    req.retryable = coil.command == CommandClass::Emergency || coil.command == CommandClass::Output;
+    m_link->submit(req, std::move(done), this);
+}
+
+} // namespace stepcom

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs what StepCom needs from Debian/Ubuntu packages, only what is missing.
+#   scripts/deps.sh          build and run
+#   scripts/deps.sh --test   also the test peers (mbpoll, socat, pymodbus, Xvfb)
+set -euo pipefail
+
+packages=(build-essential cmake ninja-build pkg-config
+          qt6-base-dev qt6-serialbus-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools
+          qt6-l10n-tools qt6-charts-dev qt6-svg-dev qt6-translations-l10n libgl-dev
+          qt6-qpa-plugins fonts-noto-cjk)
+if [[ "${1:-}" == "--test" ]]; then
+    packages+=(mbpoll socat python3-pymodbus xvfb xauth dpkg-dev file)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+sudo=()
+if [[ $(id -u) -ne 0 ]]; then
+    command -v sudo >/dev/null || { echo "deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+    sudo=(sudo)
+fi
+echo "deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
