@@ -1,0 +1,295 @@
+#include "bus/modbuslink.h"
+#include "bus/trafficlog.h"
+#include "map/registermap.h"
+#include "scripteddevice.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace stepcom;
+using namespace stepcom::test;
+
+namespace {
+
+struct Outcome
+{
+    bool done = false;
+    Result result;
+};
+
+ResultCallback into(Outcome *o)
+{
+    return [o](const Result &r) {
+        o->done = true;
+        o->result = r;
+    };
+}
+
+} // namespace
+
+class TestModbusLink : public QObject
+{
+    Q_OBJECT
+
+    std::unique_ptr<ScriptedDevice> device;
+    std::unique_ptr<ModbusLink> link;
+
+    void openLink(int timeoutMs = 300, int retries = 0)
+    {
+        LinkSettings s;
+        s.portName = device->clientPath();
+        s.timeoutMs = timeoutMs;
+        s.retries = retries;
+        QSignalSpy opened(link.get(), &ModbusLink::opened);
+        link->open(s);
+        QTRY_COMPARE(opened.size(), 1);
+        QVERIFY2(opened.at(0).at(0).toBool(), qPrintable(opened.at(0).at(1).toString()));
+        link->setQuietTimeMs(50);
+    }
+
+private Q_SLOTS:
+    void init()
+    {
+        device = std::make_unique<ScriptedDevice>();
+        QString error;
+        QVERIFY2(device->open(&error), qPrintable(error));
+        link = std::make_unique<ModbusLink>();
+    }
+    void cleanup()
+    {
+        link.reset();
+        device.reset();
+    }
+
+    // The manual's worked frames, byte for byte, both ways.
+    void manualFrames_data()
+    {
+        QTest::addColumn<int>("kind"); // 0 read, 1 write, 2 coil
+        QTest::addColumn<int>("address");
+        QTest::addColumn<QVector<quint16>>("values");
+        QTest::addColumn<QByteArray>("request");
+        QTest::addColumn<QByteArray>("response");
+        QTest::newRow("read 40001-40002") << 0 << 0 << QVector<quint16>{2} << fromHex("01 03 00 00 00 02 C4 0B")
+                                          << fromHex("01 03 04 00 B4 00 08 BB D3");
+        QTest::newRow("write 40002 = 4") << 1 << 1 << QVector<quint16>{4} << fromHex("01 06 00 01 00 04 D9 C9")
+                                         << fromHex("01 06 00 01 00 04 D9 C9");
+        QTest::newRow("FC10 at 0x0009") << 1 << 9 << QVector<quint16>{0x00C8, 0x0000}
+                                        << fromHex("01 10 00 09 00 02 04 00 C8 00 00 B2 3B")
+                                        << fromHex("01 10 00 09 00 02 91 CA");
+        QTest::newRow("coil 0x0007 ON") << 2 << 7 << QVector<quint16>{} << fromHex("01 05 00 07 FF 00 3D FB")
+                                        << fromHex("01 05 00 07 FF 00 3D FB");
+    }
+    void manualFrames()
+    {
+        QFETCH(int, kind);
+        QFETCH(int, address);
+        QFETCH(QVector<quint16>, values);
+        QFETCH(QByteArray, request);
+        QFETCH(QByteArray, response);
+        device->setResponder([response](const QByteArray &, int) { return response; });
+        openLink();
+        Request req = kind == 0   ? Request::read(quint16(address), values.first())
+                      : kind == 1 ? Request::write(quint16(address), values)
+                                  : Request::coil(quint16(address), true);
+        Outcome o;
+        link->submit(req, into(&o));
+        QTRY_VERIFY(o.done);
+        QCOMPARE(device->requests().size(), 1);
+        QCOMPARE(device->requests().first().toHex(' '), request.toHex(' '));
+        QVERIFY2(o.result.ok, qPrintable(o.result.errorText));
+        if (kind == 0) {
+            QCOMPARE(o.result.values, (QVector<quint16>{180, 8}));
+            const RegisterMap &map = RegisterMap::builtin();
+            QCOMPARE(map.find(QStringLiteral("motor1.step_angle"))->formatRaw(o.result.values[0]),
+                     QStringLiteral("1.80"));
+            QCOMPARE(map.find(QStringLiteral("motor1.microsteps"))->decode(&o.result.values[1]), 8);
+        }
+        // The traffic log shows the real frames, CRC included.
+        QTRY_VERIFY(link->traffic()->entries().size() >= 2);
+        bool sawRequest = false;
+        for (const TrafficEntry &e : link->traffic()->entries())
+            sawRequest |= e.direction == TrafficEntry::Direction::Sent && e.bytes == request;
+        QVERIFY(sawRequest);
+    }
+
+    void noAnswerTimesOutRetriesAndKeepsWorking()
+    {
+        device->setResponder([](const QByteArray &r, int index) -> std::optional<QByteArray> {
+            if (index < 2)
+                return std::nullopt; // silent twice
+            return withCrc(r.left(2) + fromHex("02 00 07"));
+        });
+        openLink(100, 1);
+        Outcome first;
+        link->submit(Request::read(0, 1), into(&first));
+        QTRY_VERIFY(first.done);
+        QVERIFY(!first.result.ok);
+        QCOMPARE(first.result.error, QModbusDevice::TimeoutError);
+        QCOMPARE(first.result.attempts, 2);
+        QVERIFY(first.result.errorText.contains(QStringLiteral("no answer")));
+        QCOMPARE(link->stats().timeouts, quint64(2));
+        QVERIFY(link->isConnected());
+        Outcome second;
+        link->submit(Request::read(0, 1), into(&second));
+        QTRY_VERIFY(second.done);
+        QVERIFY2(second.result.ok, qPrintable(second.result.errorText));
+        QCOMPARE(second.result.values, QVector<quint16>{7});
+    }
+
+    void badCrcIsCountedAndRetried()
+    {
+        device->setResponder([](const QByteArray &r, int index) {
+            QByteArray answer = withCrc(r.left(2) + fromHex("02 01 2C"));
+            if (index == 0)
+                answer[answer.size() - 1] = char(answer.at(answer.size() - 1) ^ 0x55);
+            return answer;
+        });
+        openLink(150, 2);
+        Outcome o;
+        link->submit(Request::read(5, 1), into(&o));
+        QTRY_VERIFY(o.done);
+        QVERIFY2(o.result.ok, qPrintable(o.result.errorText));
+        QCOMPARE(o.result.values, QVector<quint16>{300});
+        QCOMPARE(o.result.attempts, 2);
+        QCOMPARE(link->stats().crcErrors, quint64(1));
+    }
+
+    void exceptionIsReportedInWords()
+    {
+        device->setResponder([](const QByteArray &r, int) {
+            return withCrc(r.left(1) + QByteArray(1, char(0x86)) + QByteArray(1, char(0x02)));
+        });
+        openLink();
+        Request req = Request::write(0x0014, {1});
+        req.what = QStringLiteral("motor1.speed");
+        Outcome o;
+        link->submit(req, into(&o));
+        QTRY_VERIFY(o.done);
+        QVERIFY(!o.result.ok);
+        QCOMPARE(o.result.exceptionCode, 2);
+        QVERIFY2(o.result.errorText.contains(QStringLiteral("illegal data address")), qPrintable(o.result.errorText));
+        QVERIFY(o.result.errorText.contains(QStringLiteral("motor1.speed")));
+        QVERIFY(o.result.errorText.contains(QStringLiteral("40021")));
+        QCOMPARE(device->requests().size(), 1); // a refusal is an answer: never retried
+        QCOMPARE(link->stats().exceptionsByCode.value(2), quint64(1));
+    }
+
+    void lateAnswerIsNotTakenForTheNextOne()
+    {
+        // First answer arrives after the timeout; the second request must get its own values.
+        device->setResponder([this](const QByteArray &r, int index) -> std::optional<QByteArray> {
+            const QByteArray answer = withCrc(r.left(2) + fromHex("02 00") + QByteArray(1, char(index + 1)));
+            if (index == 0) {
+                QTimer::singleShot(160, this, [this, answer] { device->bridge().inject(PtyBridge::Side::A, answer); });
+                return std::nullopt;
+            }
+            return answer;
+        });
+        openLink(100, 0);
+        link->setQuietTimeMs(120);
+        Outcome first;
+        Outcome second;
+        link->submit(Request::read(0, 1), into(&first));
+        link->submit(Request::read(1, 1), into(&second));
+        QTRY_VERIFY(second.done);
+        QVERIFY(first.done && !first.result.ok);
+        QVERIFY2(second.result.ok, qPrintable(second.result.errorText));
+        QCOMPARE(second.result.values, QVector<quint16>{2});
+    }
+
+    void wrongSizedAnswerIsRejected()
+    {
+        device->setResponder([](const QByteArray &r, int) { return withCrc(r.left(2) + fromHex("02 00 01")); });
+        openLink(100, 0);
+        Outcome o;
+        link->submit(Request::read(0, 2), into(&o));
+        QTRY_VERIFY(o.done);
+        QVERIFY(!o.result.ok);
+        QVERIFY2(o.result.errorText.contains(QStringLiteral("carried 1 registers, 2 were asked for")),
+                 qPrintable(o.result.errorText));
+    }
+
+    void motionCommandIsNeverRetried()
+    {
+        openLink(80, 3); // silent device
+        Request req = Request::coil(1, true);
+        req.retryable = false;
+        Outcome o;
+        link->submit(req, into(&o));
+        QTRY_VERIFY(o.done);
+        QCOMPARE(device->requests().size(), 1);
+        QVERIFY(o.result.mayHaveActed);
+        QVERIFY(o.result.errorText.contains(QStringLiteral("may have acted")));
+    }
+
+    void emergencyGoesOutNextAheadOfEverythingQueued()
+    {
+        device->useRegisterDevice();
+        device->setAnswerDelayMs(40);
+        openLink();
+        QList<quint64> order;
+        connect(link.get(), &ModbusLink::dispatched, this,
+                [&order](quint64 id, const Request &) { order << id; });
+        QList<quint64> polls;
+        for (int i = 0; i < 5; ++i)
+            polls << link->submit(Request::read(quint16(i), 1, Priority::Poll), {});
+        QTRY_COMPARE(order.size(), 1); // the first poll is on the wire
+        const quint64 write = link->submit(Request::write(10, {1}), {});
+        Request stop = Request::coil(41, true, Priority::Emergency);
+        const quint64 estop = link->submit(stop, {});
+        QTRY_COMPARE(order.size(), 7);
+        QCOMPARE(order.at(0), polls.at(0));
+        QCOMPARE(order.at(1), estop); // within one in-flight transaction
+        QCOMPARE(order.at(2), write);
+        QCOMPARE(order.mid(3), polls.mid(1));
+        QCOMPARE(device->requests().at(1), fromHex("01 05 00 29 FF 00 5D F2"));
+    }
+
+    void vanishedPortDisconnectsOnceWithAReason()
+    {
+        openLink(300, 2); // silent device: the request hangs in flight
+        QSignalSpy lost(link.get(), &ModbusLink::lost);
+        QSignalSpy state(link.get(), &ModbusLink::stateChanged);
+        Outcome o;
+        link->submit(Request::read(0, 1), into(&o));
+        QTRY_COMPARE(device->requests().size(), 1);
+        device->bridge().close();
+        QTRY_VERIFY_WITH_TIMEOUT(o.done, 5000);
+        QVERIFY(!o.result.ok);
+        QTRY_COMPARE_WITH_TIMEOUT(lost.size(), 1, 5000);
+        QVERIFY(!lost.at(0).at(0).toString().isEmpty());
+        QCOMPARE(link->state(), ModbusLink::State::Disconnected);
+        QTest::qWait(200); // Qt 6.4 repeats port errors: they must not repeat our verdict
+        QCOMPARE(lost.size(), 1);
+        // and new requests fail at once instead of queueing
+        Outcome after;
+        link->submit(Request::read(0, 1), into(&after));
+        QTRY_VERIFY(after.done);
+        QVERIFY(after.result.errorText.contains(QStringLiteral("not connected")));
+    }
+
+    void missingPortIsNamed()
+    {
+        LinkSettings s;
+        s.portName = QStringLiteral("/dev/stepcom-no-such-port");
+        QSignalSpy opened(link.get(), &ModbusLink::opened);
+        link->open(s);
+        QTRY_COMPARE(opened.size(), 1);
+        QVERIFY(!opened.at(0).at(0).toBool());
+        QVERIFY(opened.at(0).at(1).toString().contains(QStringLiteral("/dev/stepcom-no-such-port does not exist")));
+    }
+
+    void badSettingsAreRefused()
+    {
+        LinkSettings s;
+        s.portName = device->clientPath();
+        s.baud = 1200;
+        QSignalSpy opened(link.get(), &ModbusLink::opened);
+        link->open(s);
+        QTRY_COMPARE(opened.size(), 1);
+        QVERIFY(opened.at(0).at(1).toString().contains(QStringLiteral("baud 1200")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestModbusLink)
+#include "tst_modbuslink.moc"

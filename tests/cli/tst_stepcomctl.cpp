@@ -1,0 +1,192 @@
+#include "scripteddevice.h"
+#include "testpaths.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTest>
+
+using namespace stepcom::test;
+
+namespace {
+
+struct Run
+{
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+} // namespace
+
+class TestStepcomctl : public QObject
+{
+    Q_OBJECT
+    std::unique_ptr<ScriptedDevice> device;
+
+    // Runs stepcomctl without blocking the event loop, so the fake device keeps answering.
+    Run ctl(const QStringList &args, bool withPort = true)
+    {
+        QProcess p;
+        QStringList all = withPort ? QStringList{QStringLiteral("--port"), device->clientPath(),
+                                                 QStringLiteral("--timeout"), QStringLiteral("200"),
+                                                 QStringLiteral("--retries"), QStringLiteral("0")}
+                                   : QStringList{};
+        p.start(programPath(QStringLiteral("stepcomctl")), all + args);
+        if (!p.waitForStarted(5000))
+            return {};
+        for (int i = 0; i < 1000 && p.state() != QProcess::NotRunning; ++i)
+            QTest::qWait(10);
+        Run r;
+        r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+        r.out = QString::fromUtf8(p.readAllStandardOutput());
+        r.err = QString::fromUtf8(p.readAllStandardError());
+        return r;
+    }
+
+private Q_SLOTS:
+    void init()
+    {
+        device = std::make_unique<ScriptedDevice>();
+        QString error;
+        QVERIFY2(device->open(&error), qPrintable(error));
+        device->useRegisterDevice();
+        device->registers[0] = 180; // motor1.step_angle 1.80
+        device->registers[1] = 8;
+        device->registers[5] = 300;
+        device->registers[107] = quint16(-250 & 0xFFFF); // motor1.position -2.50, low word
+        device->registers[108] = 0xFFFF;
+        device->registers[212] = 9600; // device.baud
+    }
+
+    void readsInEngineeringUnits()
+    {
+        const Run r = ctl({QStringLiteral("read"), QStringLiteral("motor1.step_angle"), QStringLiteral("motor1.microsteps"),
+                           QStringLiteral("motor1.position"), QStringLiteral("motor1.direction")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains(QStringLiteral("motor1.step_angle = 1.80 °")), qPrintable(r.out));
+        QVERIFY(r.out.contains(QStringLiteral("motor1.microsteps = 8\n")));
+        QVERIFY(r.out.contains(QStringLiteral("motor1.position = -2.50 mm")));
+        QVERIFY(r.out.contains(QStringLiteral("motor1.direction = 0 (Forward)")));
+    }
+
+    void readAllAsJsonUsesThePlannedReads()
+    {
+        const Run r = ctl({QStringLiteral("--json"), QStringLiteral("read")});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(o.size(), 57);
+        QCOMPARE(o.value(QStringLiteral("motor1.step_angle")).toDouble(), 1.8);
+        QCOMPARE(o.value(QStringLiteral("motor1.position")).toDouble(), -2.5);
+        QCOMPARE(o.value(QStringLiteral("device.baud")).toInt(), 9600);
+        QCOMPARE(device->requests().size(), 5); // the optimum plan at 9600 baud
+    }
+
+    void writeVerifies()
+    {
+        const Run r = ctl({QStringLiteral("write"), QStringLiteral("motor1.speed=450"), QStringLiteral("motor2.pitch=5")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(device->registers[5], quint16(450));
+        QCOMPARE(device->registers[16], quint16(500));
+        QCOMPARE(device->requests().at(0), withCrc(fromHex("01 06 00 05 01 C2"))); // FC06 for one register
+        QCOMPARE(device->requests().at(1).mid(0, 6), fromHex("01 10 00 10 00 02")); // pitch as one FC10
+        QVERIFY(r.out.contains(QStringLiteral("motor1.speed = 450 rpm  (written, verified)")));
+        QVERIFY(r.out.contains(QStringLiteral("motor2.pitch = 5.00 mm")));
+    }
+
+    void invalidValuesWriteNothing_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("out of range") << QStringList{"write", "motor1.speed=99999", "motor1.microsteps=4"}
+                                      << "motor1.speed: 99999 is out of range";
+        QTest::newRow("too many decimals") << QStringList{"write", "motor1.step_angle=1.805"} << "more than 2 decimal";
+        QTest::newRow("unknown key") << QStringList{"write", "motor9.speed=1"} << "unknown parameter 'motor9.speed'";
+        QTest::newRow("read-only") << QStringList{"write", "motor1.position=0"} << "motor1.position is read-only";
+        QTest::newRow("not key=value") << QStringList{"write", "motor1.speed"} << "is not KEY=VALUE";
+        QTest::newRow("destructive without yes") << QStringList{"command", "factory_reset"} << "add --yes";
+        QTest::newRow("unknown command") << QStringList{"frobnicate"} << "unknown command 'frobnicate'";
+        QTest::newRow("read unknown") << QStringList{"read", "nope"} << "unknown parameter 'nope'";
+    }
+    void invalidValuesWriteNothing()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        const QList<quint16> before = device->registers;
+        const Run r = ctl(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QTest::qWait(50);
+        QCOMPARE(device->requests().size(), 0); // nothing was sent at all
+        QCOMPARE(device->registers, before);
+    }
+
+    void verificationCatchesADeviceThatIgnoresAWrite()
+    {
+        // Acknowledges every write but keeps its old values.
+        auto honest = device->registers;
+        device->setResponder([this, honest](const QByteArray &request, int) -> std::optional<QByteArray> {
+            if (quint8(request.at(1)) == 0x06)
+                return request;
+            QList<quint16> regs = honest;
+            QByteArray answer = request.left(2);
+            const int address = (quint8(request.at(2)) << 8) | quint8(request.at(3));
+            const int count = (quint8(request.at(4)) << 8) | quint8(request.at(5));
+            answer.append(char(count * 2));
+            for (int i = 0; i < count; ++i) {
+                answer.append(char(regs[address + i] >> 8));
+                answer.append(char(regs[address + i] & 0xFF));
+            }
+            return withCrc(answer);
+        });
+        const Run r = ctl({QStringLiteral("write"), QStringLiteral("motor1.speed=450")});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("motor1.speed: wrote 450 but the controller holds 300")), qPrintable(r.err));
+    }
+
+    void silentDeviceIsALinkError()
+    {
+        device->setResponder({});
+        const Run r = ctl({QStringLiteral("read"), QStringLiteral("motor1.speed")});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("no answer within 200 ms")), qPrintable(r.err));
+    }
+
+    void commandPulsesTheCoil()
+    {
+        const Run r = ctl({QStringLiteral("command"), QStringLiteral("motor2.reverse")});
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(device->requests().value(0), fromHex("01 05 00 07 FF 00 3D FB"));
+    }
+
+    void noTargetIsAUsageError()
+    {
+        const Run r = ctl({QStringLiteral("read")}, false);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains(QStringLiteral("--port PATH, --tcp HOST[:PORT] or --sim")));
+    }
+
+    void missingPortIsNamed()
+    {
+        const Run r = ctl({QStringLiteral("--port"), QStringLiteral("/dev/ttyNOPE9"), QStringLiteral("read")}, false);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.contains(QStringLiteral("/dev/ttyNOPE9 does not exist")));
+    }
+
+    void paramsJsonListsTheMap()
+    {
+        const Run r = ctl({QStringLiteral("--json"), QStringLiteral("params")}, false);
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray array = QJsonDocument::fromJson(r.out.toUtf8()).array();
+        QCOMPARE(array.size(), 81);
+        const QJsonObject first = array.at(0).toObject();
+        for (const char *field : {"key", "kind", "plc", "address", "words", "signed", "scale", "unit", "access", "min", "max"})
+            QVERIFY2(first.contains(QLatin1String(field)), field);
+        QCOMPARE(first.value(QStringLiteral("key")).toString(), QStringLiteral("motor1.step_angle"));
+        QCOMPARE(first.value(QStringLiteral("max")).toDouble(), 360.0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestStepcomctl)
+#include "tst_stepcomctl.moc"
