@@ -8,7 +8,7 @@ namespace {
 
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("stepcomctl", text);
+    return QCoreApplication::translate("stepcom::CtlOptions", text);
 }
 
 bool toInt(const QString &text, int *out)

@@ -2,6 +2,7 @@
 
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
+#include "sim/simhost.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -116,6 +117,8 @@ void CtlRunner::connectThen(std::function<void()> next)
         fail(UsageError, tr("no controller given: use --port PATH, --tcp HOST[:PORT] or --sim"));
         return;
     }
+    if (m_options.target == CtlOptions::Target::Sim && !startSimulator())
+        return;
     m_link = new ModbusLink(this);
     m_link->traffic()->setMap(&m_map);
     if (m_options.verbose) {
@@ -132,6 +135,34 @@ void CtlRunner::connectThen(std::function<void()> next)
         next();
     });
     m_link->open(m_options.link);
+}
+
+bool CtlRunner::startSimulator()
+{
+    // The built-in controller runs in this process; on Unix it is reached over a
+    // pseudo-terminal, so --sim takes the same RTU path as a real adapter.
+    m_sim = new SimHost(this);
+    SimOptions sim;
+    sim.map = m_map;
+#ifdef Q_OS_UNIX
+    sim.rtu = true;
+#else
+    sim.tcp = true;
+#endif
+    QString error;
+    if (!m_sim->start(sim, &error)) {
+        fail(DeviceError, tr("cannot start the built-in simulator: %1").arg(error));
+        return false;
+    }
+    if (sim.rtu) {
+        m_options.link.transport = LinkSettings::Transport::Rtu;
+        m_options.link.portName = m_sim->rtuPath();
+    } else {
+        m_options.link.transport = LinkSettings::Transport::Tcp;
+        m_options.link.host = m_sim->tcpAddress().toString();
+        m_options.link.tcpPort = m_sim->tcpPort();
+    }
+    return true;
 }
 
 void CtlRunner::runParams()

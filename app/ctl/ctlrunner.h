@@ -10,6 +10,7 @@
 namespace stepcom {
 
 class ModbusLink;
+class SimHost;
 
 // Runs one stepcomctl command against a controller and reports an exit code:
 // 0 success, 1 link or device error, 2 usage or validation error.
@@ -28,6 +29,7 @@ Q_SIGNALS:
 
 private:
     void connectThen(std::function<void()> next);
+    bool startSimulator();
     void runParams();
     void runRead();
     void runWrite();
@@ -38,6 +40,7 @@ private:
 
     CtlOptions m_options;
     RegisterMap m_map;
+    SimHost *m_sim = nullptr;
     ModbusLink *m_link = nullptr;
     DeviceClient *m_device = nullptr;
     QTextStream m_out;

@@ -109,10 +109,15 @@ void ModbusLink::open(const LinkSettings &settings)
             [this](QModbusDevice::Error e) { onClientError(int(e)); });
     m_traffic->addEvent(tr("connecting to %1").arg(settings.describe()));
     if (!m_client->connectDevice()) {
-        failLink(m_client->errorString().isEmpty() ? tr("cannot open %1").arg(settings.describe())
-                                                   : m_client->errorString());
+        // The client may already have reported the error and been torn down inside the call.
+        if (m_client)
+            failLink(m_client->errorString().isEmpty()
+                         ? tr("cannot open %1").arg(settings.describe())
+                         : m_client->errorString());
         return;
     }
+    if (!m_client)
+        return;
     if (m_client->state() == QModbusDevice::ConnectedState) {
         onClientState(int(QModbusDevice::ConnectedState));
     } else {
@@ -359,10 +364,12 @@ void ModbusLink::onReplyFinished(QModbusReply *reply)
             if (req.type == Request::Type::ReadHolding)
                 r.values = unit.values();
         }
-    } else if (r.error == QModbusDevice::ProtocolError && reply->rawResult().isException()) {
+    } else if (r.error == QModbusDevice::ProtocolError && reply->rawResult().data().size() == 1) {
+        // An exception answer carries just its code. (QModbusPdu::isException() trips UBSan on
+        // Qt 6.4: the function code is stored sign-extended.)
         ++m_stats.answers;
         ++m_stats.exceptions;
-        r.exceptionCode = int(reply->rawResult().exceptionCode());
+        r.exceptionCode = quint8(reply->rawResult().data().at(0));
         ++m_stats.exceptionsByCode[r.exceptionCode];
         r.errorText =
             tr("%1: the controller refused: %2").arg(describe(req), exceptionText(r.exceptionCode));

@@ -10,11 +10,6 @@ namespace stepcom {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("stepcom::DeviceClient", text);
-}
-
 const QString kDeviceId = QStringLiteral("device.id");
 const QString kDeviceBaud = QStringLiteral("device.baud");
 
@@ -176,7 +171,8 @@ struct WriteJob : std::enable_shared_from_this<WriteJob>
                             QObject::disconnect(*connection);
                             if (!ok) {
                                 self->outcome.errors
-                                    << tr("could not reopen the port at the new baud: %1")
+                                    << DeviceClient::tr(
+                                           "could not reopen the port at the new baud: %1")
                                            .arg(reason);
                                 self->finish();
                                 return;
@@ -222,9 +218,9 @@ struct WriteJob : std::enable_shared_from_this<WriteJob>
     {
         for (const WriteMismatch &m : std::as_const(outcome.mismatches)) {
             const Parameter *p = client->map().find(m.key);
-            outcome.errors << (m.got ? tr("%1: wrote %2 but the controller holds %3")
+            outcome.errors << (m.got ? DeviceClient::tr("%1: wrote %2 but the controller holds %3")
                                            .arg(m.key, p->formatRaw(m.wanted), p->formatRaw(*m.got))
-                                     : tr("%1: wrote %2 but could not read it back")
+                                     : DeviceClient::tr("%1: wrote %2 but could not read it back")
                                            .arg(m.key, p->formatRaw(m.wanted)));
         }
         outcome.ok = outcome.errors.isEmpty();

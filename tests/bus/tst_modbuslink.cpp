@@ -69,15 +69,18 @@ private Q_SLOTS:
         QTest::addColumn<QVector<quint16>>("values");
         QTest::addColumn<QByteArray>("request");
         QTest::addColumn<QByteArray>("response");
-        QTest::newRow("read 40001-40002") << 0 << 0 << QVector<quint16>{2} << fromHex("01 03 00 00 00 02 C4 0B")
-                                          << fromHex("01 03 04 00 B4 00 08 BB D3");
-        QTest::newRow("write 40002 = 4") << 1 << 1 << QVector<quint16>{4} << fromHex("01 06 00 01 00 04 D9 C9")
-                                         << fromHex("01 06 00 01 00 04 D9 C9");
+        QTest::newRow("read 40001-40002")
+            << 0 << 0 << QVector<quint16>{2} << fromHex("01 03 00 00 00 02 C4 0B")
+            << fromHex("01 03 04 00 B4 00 08 BB D3");
+        QTest::newRow("write 40002 = 4")
+            << 1 << 1 << QVector<quint16>{4} << fromHex("01 06 00 01 00 04 D9 C9")
+            << fromHex("01 06 00 01 00 04 D9 C9");
         QTest::newRow("FC10 at 0x0009") << 1 << 9 << QVector<quint16>{0x00C8, 0x0000}
                                         << fromHex("01 10 00 09 00 02 04 00 C8 00 00 B2 3B")
                                         << fromHex("01 10 00 09 00 02 91 CA");
-        QTest::newRow("coil 0x0007 ON") << 2 << 7 << QVector<quint16>{} << fromHex("01 05 00 07 FF 00 3D FB")
-                                        << fromHex("01 05 00 07 FF 00 3D FB");
+        QTest::newRow("coil 0x0007 ON")
+            << 2 << 7 << QVector<quint16>{} << fromHex("01 05 00 07 FF 00 3D FB")
+            << fromHex("01 05 00 07 FF 00 3D FB");
     }
     void manualFrames()
     {
@@ -167,7 +170,8 @@ private Q_SLOTS:
         QTRY_VERIFY(o.done);
         QVERIFY(!o.result.ok);
         QCOMPARE(o.result.exceptionCode, 2);
-        QVERIFY2(o.result.errorText.contains(QStringLiteral("illegal data address")), qPrintable(o.result.errorText));
+        QVERIFY2(o.result.errorText.contains(QStringLiteral("illegal data address")),
+                 qPrintable(o.result.errorText));
         QVERIFY(o.result.errorText.contains(QStringLiteral("motor1.speed")));
         QVERIFY(o.result.errorText.contains(QStringLiteral("40021")));
         QCOMPARE(device->requests().size(), 1); // a refusal is an answer: never retried
@@ -178,9 +182,12 @@ private Q_SLOTS:
     {
         // First answer arrives after the timeout; the second request must get its own values.
         device->setResponder([this](const QByteArray &r, int index) -> std::optional<QByteArray> {
-            const QByteArray answer = withCrc(r.left(2) + fromHex("02 00") + QByteArray(1, char(index + 1)));
+            const QByteArray answer =
+                withCrc(r.left(2) + fromHex("02 00") + QByteArray(1, char(index + 1)));
             if (index == 0) {
-                QTimer::singleShot(160, this, [this, answer] { device->bridge().inject(PtyBridge::Side::A, answer); });
+                QTimer::singleShot(160, this, [this, answer] {
+                    device->bridge().inject(PtyBridge::Side::A, answer);
+                });
                 return std::nullopt;
             }
             return answer;
@@ -199,14 +206,16 @@ private Q_SLOTS:
 
     void wrongSizedAnswerIsRejected()
     {
-        device->setResponder([](const QByteArray &r, int) { return withCrc(r.left(2) + fromHex("02 00 01")); });
+        device->setResponder(
+            [](const QByteArray &r, int) { return withCrc(r.left(2) + fromHex("02 00 01")); });
         openLink(100, 0);
         Outcome o;
         link->submit(Request::read(0, 2), into(&o));
         QTRY_VERIFY(o.done);
         QVERIFY(!o.result.ok);
-        QVERIFY2(o.result.errorText.contains(QStringLiteral("carried 1 registers, 2 were asked for")),
-                 qPrintable(o.result.errorText));
+        QVERIFY2(
+            o.result.errorText.contains(QStringLiteral("carried 1 registers, 2 were asked for")),
+            qPrintable(o.result.errorText));
     }
 
     void motionCommandIsNeverRetried()
@@ -276,7 +285,22 @@ private Q_SLOTS:
         link->open(s);
         QTRY_COMPARE(opened.size(), 1);
         QVERIFY(!opened.at(0).at(0).toBool());
-        QVERIFY(opened.at(0).at(1).toString().contains(QStringLiteral("/dev/stepcom-no-such-port does not exist")));
+        QVERIFY(opened.at(0).at(1).toString().contains(
+            QStringLiteral("/dev/stepcom-no-such-port does not exist")));
+    }
+
+    // Regression: Qt reports the error inside connectDevice(), which tore the client down
+    // under open()'s feet (segfault on a file that is no serial port).
+    void aFileThatIsNoSerialPortFailsCleanly()
+    {
+        LinkSettings s;
+        s.portName = QStringLiteral("/dev/null");
+        QSignalSpy opened(link.get(), &ModbusLink::opened);
+        link->open(s);
+        QTRY_COMPARE(opened.size(), 1);
+        QVERIFY(!opened.at(0).at(0).toBool());
+        QVERIFY(!opened.at(0).at(1).toString().isEmpty());
+        QCOMPARE(link->state(), ModbusLink::State::Disconnected);
     }
 
     void badSettingsAreRefused()

@@ -29,7 +29,7 @@ class TestStepcomctl : public QObject
     Run ctl(const QStringList &args, bool withPort = true)
     {
         QProcess p;
-        QStringList all = withPort ? QStringList{QStringLiteral("--port"), device->clientPath(),
+        QStringList all = withPort ? QStringList{QStringLiteral("--port"),    device->clientPath(),
                                                  QStringLiteral("--timeout"), QStringLiteral("200"),
                                                  QStringLiteral("--retries"), QStringLiteral("0")}
                                    : QStringList{};
@@ -62,8 +62,9 @@ private Q_SLOTS:
 
     void readsInEngineeringUnits()
     {
-        const Run r = ctl({QStringLiteral("read"), QStringLiteral("motor1.step_angle"), QStringLiteral("motor1.microsteps"),
-                           QStringLiteral("motor1.position"), QStringLiteral("motor1.direction")});
+        const Run r = ctl({QStringLiteral("read"), QStringLiteral("motor1.step_angle"),
+                           QStringLiteral("motor1.microsteps"), QStringLiteral("motor1.position"),
+                           QStringLiteral("motor1.direction")});
         QCOMPARE(r.exitCode, 0);
         QVERIFY2(r.out.contains(QStringLiteral("motor1.step_angle = 1.80 °")), qPrintable(r.out));
         QVERIFY(r.out.contains(QStringLiteral("motor1.microsteps = 8\n")));
@@ -85,12 +86,15 @@ private Q_SLOTS:
 
     void writeVerifies()
     {
-        const Run r = ctl({QStringLiteral("write"), QStringLiteral("motor1.speed=450"), QStringLiteral("motor2.pitch=5")});
+        const Run r = ctl({QStringLiteral("write"), QStringLiteral("motor1.speed=450"),
+                           QStringLiteral("motor2.pitch=5")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(device->registers[5], quint16(450));
         QCOMPARE(device->registers[16], quint16(500));
-        QCOMPARE(device->requests().at(0), withCrc(fromHex("01 06 00 05 01 C2"))); // FC06 for one register
-        QCOMPARE(device->requests().at(1).mid(0, 6), fromHex("01 10 00 10 00 02")); // pitch as one FC10
+        QCOMPARE(device->requests().at(0),
+                 withCrc(fromHex("01 06 00 05 01 C2"))); // FC06 for one register
+        QCOMPARE(device->requests().at(1).mid(0, 6),
+                 fromHex("01 10 00 10 00 02")); // pitch as one FC10
         QVERIFY(r.out.contains(QStringLiteral("motor1.speed = 450 rpm  (written, verified)")));
         QVERIFY(r.out.contains(QStringLiteral("motor2.pitch = 5.00 mm")));
     }
@@ -99,14 +103,21 @@ private Q_SLOTS:
     {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("message");
-        QTest::newRow("out of range") << QStringList{"write", "motor1.speed=99999", "motor1.microsteps=4"}
-                                      << "motor1.speed: 99999 is out of range";
-        QTest::newRow("too many decimals") << QStringList{"write", "motor1.step_angle=1.805"} << "more than 2 decimal";
-        QTest::newRow("unknown key") << QStringList{"write", "motor9.speed=1"} << "unknown parameter 'motor9.speed'";
-        QTest::newRow("read-only") << QStringList{"write", "motor1.position=0"} << "motor1.position is read-only";
-        QTest::newRow("not key=value") << QStringList{"write", "motor1.speed"} << "is not KEY=VALUE";
-        QTest::newRow("destructive without yes") << QStringList{"command", "factory_reset"} << "add --yes";
-        QTest::newRow("unknown command") << QStringList{"frobnicate"} << "unknown command 'frobnicate'";
+        QTest::newRow("out of range")
+            << QStringList{"write", "motor1.speed=99999", "motor1.microsteps=4"}
+            << "motor1.speed: 99999 is out of range";
+        QTest::newRow("too many decimals")
+            << QStringList{"write", "motor1.step_angle=1.805"} << "more than 2 decimal";
+        QTest::newRow("unknown key")
+            << QStringList{"write", "motor9.speed=1"} << "unknown parameter 'motor9.speed'";
+        QTest::newRow("read-only")
+            << QStringList{"write", "motor1.position=0"} << "motor1.position is read-only";
+        QTest::newRow("not key=value")
+            << QStringList{"write", "motor1.speed"} << "is not KEY=VALUE";
+        QTest::newRow("destructive without yes")
+            << QStringList{"command", "factory_reset"} << "add --yes";
+        QTest::newRow("unknown command")
+            << QStringList{"frobnicate"} << "unknown command 'frobnicate'";
         QTest::newRow("read unknown") << QStringList{"read", "nope"} << "unknown parameter 'nope'";
     }
     void invalidValuesWriteNothing()
@@ -126,23 +137,26 @@ private Q_SLOTS:
     {
         // Acknowledges every write but keeps its old values.
         auto honest = device->registers;
-        device->setResponder([this, honest](const QByteArray &request, int) -> std::optional<QByteArray> {
-            if (quint8(request.at(1)) == 0x06)
-                return request;
-            QList<quint16> regs = honest;
-            QByteArray answer = request.left(2);
-            const int address = (quint8(request.at(2)) << 8) | quint8(request.at(3));
-            const int count = (quint8(request.at(4)) << 8) | quint8(request.at(5));
-            answer.append(char(count * 2));
-            for (int i = 0; i < count; ++i) {
-                answer.append(char(regs[address + i] >> 8));
-                answer.append(char(regs[address + i] & 0xFF));
-            }
-            return withCrc(answer);
-        });
+        device->setResponder(
+            [this, honest](const QByteArray &request, int) -> std::optional<QByteArray> {
+                if (quint8(request.at(1)) == 0x06)
+                    return request;
+                QList<quint16> regs = honest;
+                QByteArray answer = request.left(2);
+                const int address = (quint8(request.at(2)) << 8) | quint8(request.at(3));
+                const int count = (quint8(request.at(4)) << 8) | quint8(request.at(5));
+                answer.append(char(count * 2));
+                for (int i = 0; i < count; ++i) {
+                    answer.append(char(regs[address + i] >> 8));
+                    answer.append(char(regs[address + i] & 0xFF));
+                }
+                return withCrc(answer);
+            });
         const Run r = ctl({QStringLiteral("write"), QStringLiteral("motor1.speed=450")});
         QCOMPARE(r.exitCode, 1);
-        QVERIFY2(r.err.contains(QStringLiteral("motor1.speed: wrote 450 but the controller holds 300")), qPrintable(r.err));
+        QVERIFY2(
+            r.err.contains(QStringLiteral("motor1.speed: wrote 450 but the controller holds 300")),
+            qPrintable(r.err));
     }
 
     void silentDeviceIsALinkError()
@@ -169,7 +183,9 @@ private Q_SLOTS:
 
     void missingPortIsNamed()
     {
-        const Run r = ctl({QStringLiteral("--port"), QStringLiteral("/dev/ttyNOPE9"), QStringLiteral("read")}, false);
+        const Run r =
+            ctl({QStringLiteral("--port"), QStringLiteral("/dev/ttyNOPE9"), QStringLiteral("read")},
+                false);
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains(QStringLiteral("/dev/ttyNOPE9 does not exist")));
     }
@@ -181,9 +197,11 @@ private Q_SLOTS:
         const QJsonArray array = QJsonDocument::fromJson(r.out.toUtf8()).array();
         QCOMPARE(array.size(), 81);
         const QJsonObject first = array.at(0).toObject();
-        for (const char *field : {"key", "kind", "plc", "address", "words", "signed", "scale", "unit", "access", "min", "max"})
+        for (const char *field : {"key", "kind", "plc", "address", "words", "signed", "scale",
+                                  "unit", "access", "min", "max"})
             QVERIFY2(first.contains(QLatin1String(field)), field);
-        QCOMPARE(first.value(QStringLiteral("key")).toString(), QStringLiteral("motor1.step_angle"));
+        QCOMPARE(first.value(QStringLiteral("key")).toString(),
+                 QStringLiteral("motor1.step_angle"));
         QCOMPARE(first.value(QStringLiteral("max")).toDouble(), 360.0);
     }
 };

@@ -28,7 +28,8 @@ QByteArray fromHex(const char *spaced)
     return QByteArray::fromHex(QByteArray(spaced).replace(' ', ""));
 }
 
-ScriptedDevice::ScriptedDevice(QObject *parent) : QObject(parent)
+ScriptedDevice::ScriptedDevice(QObject *parent)
+    : QObject(parent)
 {
     // Take every byte the client sends; nothing is forwarded to the (unused) side B.
     m_bridge.setTap([this](PtyBridge::Side from, const QByteArray &bytes) {
@@ -69,21 +70,26 @@ void ScriptedDevice::onBytes(const QByteArray &bytes)
         if (m_delayMs <= 0)
             m_bridge.inject(PtyBridge::Side::A, *answer);
         else
-            QTimer::singleShot(m_delayMs, this, [this, a = *answer] { m_bridge.inject(PtyBridge::Side::A, a); });
+            QTimer::singleShot(m_delayMs, this,
+                               [this, a = *answer] { m_bridge.inject(PtyBridge::Side::A, a); });
     }
 }
 
 void ScriptedDevice::useRegisterDevice(int deviceId)
 {
     registers = QList<quint16>(320, 0);
-    m_responder = [this, deviceId](const QByteArray &request, int) { return registerDevice(request, deviceId); };
+    m_responder = [this, deviceId](const QByteArray &request, int) {
+        return registerDevice(request, deviceId);
+    };
 }
 
 std::optional<QByteArray> ScriptedDevice::registerDevice(const QByteArray &request, int deviceId)
 {
     if (quint8(request.at(0)) != deviceId)
         return std::nullopt;
-    auto word = [&](int at) { return int((quint8(request.at(at)) << 8) | quint8(request.at(at + 1))); };
+    auto word = [&](int at) {
+        return int((quint8(request.at(at)) << 8) | quint8(request.at(at + 1)));
+    };
     const int fc = quint8(request.at(1));
     const int address = word(2);
     QByteArray answer = request.left(2);

@@ -24,7 +24,8 @@ class ScriptedDevice : public QObject
     Q_OBJECT
 public:
     // Return the bytes to send back, or nullopt for silence.
-    using Responder = std::function<std::optional<QByteArray>(const QByteArray &request, int index)>;
+    using Responder =
+        std::function<std::optional<QByteArray>(const QByteArray &request, int index)>;
 
     explicit ScriptedDevice(QObject *parent = nullptr);
     bool open(QString *error);

@@ -1,0 +1,102 @@
+// stepcom-sim: the simulated controller as a program of its own.
+#include "consolereader.h"
+#include "signalwatcher.h"
+#include "sim/simcommandline.h"
+#include "sim/simconsole.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QTextStream>
+
+using namespace stepcom;
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("stepcom-sim", text);
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("stepcom-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(STEPCOM_VERSION));
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        tr("A simulated 2-axis stepper controller speaking Modbus RTU on a pseudo-terminal "
+           "and/or Modbus TCP. Without --pty or --tcp it serves a pseudo-terminal."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    SimCommandLine::addOptions(parser);
+    const QCommandLineOption consoleOption(
+        QStringLiteral("console"),
+        tr("Read console commands from standard input even when it is not a terminal."));
+    parser.addOption(consoleOption);
+    parser.process(app);
+
+    SimOptions options;
+    QString error;
+    if (!SimCommandLine::toOptions(parser, &options, &error)) {
+        err << tr("stepcom-sim: %1").arg(error) << Qt::endl;
+        return 2;
+    }
+    if (!options.rtu && !options.tcp)
+        options.rtu = true;
+
+    // Before anything is opened, so Ctrl-C during start-up still ends cleanly.
+    SignalWatcher watcher;
+    QObject::connect(&watcher, &SignalWatcher::terminationRequested, &app, &QCoreApplication::quit);
+
+    SimHost host;
+    QObject::connect(&host, &SimHost::message, &app,
+                     [&err](const QString &text) { err << text << Qt::endl; });
+    QObject::connect(&host, &SimHost::hungUp, &app,
+                     [&out] { out << tr("port hung up") << Qt::endl; });
+    QObject::connect(&host, &SimHost::reopened, &app, [&out](const QString &path) {
+        out << tr("port back: %1").arg(path) << Qt::endl;
+    });
+    if (!host.start(options, &error)) {
+        err << tr("stepcom-sim: %1").arg(error) << Qt::endl;
+        return 1;
+    }
+    SimDevice *device = host.device();
+    out << tr("stepcom-sim %1: device id %2, %3 baud, %4 motors")
+               .arg(QStringLiteral(STEPCOM_VERSION))
+               .arg(device->deviceId())
+               .arg(device->baud())
+               .arg(device->motorCount())
+        << Qt::endl;
+    if (options.rtu) {
+        out << QStringLiteral("pty: %1").arg(host.ptyPath()) << Qt::endl;
+        if (!options.linkPath.isEmpty())
+            out << QStringLiteral("link: %1").arg(options.linkPath) << Qt::endl;
+    }
+    if (options.tcp)
+        out << QStringLiteral("tcp: %1:%2").arg(host.tcpAddress().toString()).arg(host.tcpPort())
+            << Qt::endl;
+
+    SimConsole console(&host);
+    ConsoleReader *reader = nullptr;
+    if (parser.isSet(consoleOption) || ConsoleReader::stdinIsTerminal()) {
+        reader = new ConsoleReader(&app);
+        out << tr("type 'help' for the console commands") << Qt::endl;
+        QObject::connect(reader, &ConsoleReader::lineRead, &app, [&](const QString &line) {
+            const SimConsole::Result r = console.execute(line);
+            if (!r.text.isEmpty())
+                (r.ok ? out : err) << r.text << Qt::endl;
+            if (r.quit)
+                QCoreApplication::quit();
+        });
+    }
+    const int rc = app.exec();
+    host.stop();
+    return rc;
+}

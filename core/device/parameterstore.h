@@ -1,0 +1,78 @@
+#pragma once
+
+#include "device/deviceclient.h"
+#include "map/registermap.h"
+
+#include <QHash>
+#include <QObject>
+
+#include <optional>
+
+namespace stepcom {
+
+// What StepCom knows about each parameter: the value the device holds (as last read), the
+// value the user typed but has not written, and the state between them. Views show this;
+// nothing here ever writes to the device.
+class ParameterStore : public QObject
+{
+    Q_OBJECT
+public:
+    enum class State { Unknown, InSync, Edited, WriteFailed };
+    Q_ENUM(State)
+
+    struct Entry
+    {
+        std::optional<qint64> device;
+        std::optional<qint64> edited;
+        State state = State::Unknown;
+        QString error; // why the last write failed
+    };
+
+    explicit ParameterStore(const RegisterMap &map, QObject *parent = nullptr);
+
+    const RegisterMap &map() const { return m_map; }
+    Entry entry(const QString &key) const { return m_entries.value(key); }
+    std::optional<qint64> deviceValue(const QString &key) const
+    {
+        return m_entries.value(key).device;
+    }
+    // The edit when there is one, else what the device holds.
+    std::optional<qint64> shownValue(const QString &key) const;
+    State state(const QString &key) const { return m_entries.value(key).state; }
+
+    // Values read from the device. A pending edit is kept: a poll never overwrites typing.
+    void setDeviceValues(const QHash<QString, qint64> &values);
+    // The link is gone: what the device holds is unknown again (edits stay).
+    void forgetDeviceValues();
+
+    // Validates against the map; returns the problem, or empty when the edit is held.
+    // Editing back to the device's value drops the edit.
+    QString edit(const QString &key, qint64 raw);
+    void revert(const QString &key);
+    void revertAll();
+    bool hasEdits() const { return !editedKeys().isEmpty(); }
+    QStringList editedKeys() const;
+    QList<ParameterWrite> pendingWrites() const;
+    // After a write: verified values are in sync and their edits gone; failed ones keep the
+    // edit, marked WriteFailed with the reason.
+    void applyWriteOutcome(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
+
+    // Set after any successful write until "save to flash" succeeds.
+    bool unsavedToFlash() const { return m_unsaved; }
+    void setUnsavedToFlash(bool unsaved);
+
+Q_SIGNALS:
+    void valueChanged(const QString &key);
+    void editsChanged();
+    void unsavedChanged(bool unsaved);
+
+private:
+    void update(const QString &key, const Entry &entry);
+    static State stateOf(const Entry &e);
+
+    RegisterMap m_map;
+    QHash<QString, Entry> m_entries;
+    bool m_unsaved = false;
+};
+
+} // namespace stepcom

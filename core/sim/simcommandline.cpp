@@ -1,0 +1,206 @@
+#include "sim/simcommandline.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+
+namespace stepcom {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("stepcom::SimCommandLine", text);
+}
+
+bool toInt(const QString &text, int min, int max, int *out)
+{
+    bool ok = false;
+    const int v = text.toInt(&ok);
+    if (!ok || v < min || v > max)
+        return false;
+    *out = v;
+    return true;
+}
+
+} // namespace
+
+void SimCommandLine::addOptions(QCommandLineParser &p)
+{
+    const QString n = tr("N");
+    const QString ms = tr("MS");
+    const QString share = tr("SHARE");
+    p.addOption({QStringLiteral("pty"), tr("Serve Modbus RTU on a new pseudo-terminal (Unix).")});
+    p.addOption(
+        {QStringLiteral("link"), tr("Make PATH a symlink to the pseudo-terminal."), tr("PATH")});
+    p.addOption({QStringLiteral("no-baud-check"),
+                 tr("Answer whatever baud rate the client set (by default a client whose baud "
+                    "differs from register 40213 gets silence, as on a real line).")});
+    p.addOption({QStringLiteral("tcp"),
+                 tr("Serve Modbus TCP on [HOST:]PORT (127.0.0.1 unless --listen-any; port 0 "
+                    "picks a free one)."),
+                 tr("[HOST:]PORT")});
+    p.addOption({QStringLiteral("listen-any"), tr("Listen for TCP on every interface.")});
+    p.addOption({QStringLiteral("strict-reads"),
+                 tr("Refuse reads of reserved registers (exception 02) instead of reading 0.")});
+    p.addOption({QStringLiteral("id"), tr("Device id 1-255 (overrides the saved one)."), n});
+    p.addOption({QStringLiteral("state"),
+                 tr("The simulator's flash: saved parameters are loaded from and saved to FILE."),
+                 tr("FILE")});
+    p.addOption({QStringLiteral("map"),
+                 tr("Use the register map FILE instead of the built-in one."), tr("FILE")});
+    p.addOption({QStringLiteral("answer-delay"),
+                 tr("Answer no sooner than MS after a request (default: the map's, 35)."), ms});
+    p.addOption({QStringLiteral("wire-baud"),
+                 tr("Add the bytes' time on a line at N baud to every answer."), n});
+    p.addOption({QStringLiteral("drop"), tr("Drop a SHARE (0-1 or %) of the answers."), share});
+    p.addOption(
+        {QStringLiteral("corrupt-crc"), tr("Break the CRC of a SHARE of the answers."), share});
+    p.addOption(
+        {QStringLiteral("late"), tr("Answer a SHARE of the requests MS later."), tr("SHARE:MS")});
+    p.addOption({QStringLiteral("exception"),
+                 tr("Answer a SHARE of the requests with exception CODE instead."),
+                 tr("SHARE:CODE")});
+    p.addOption({QStringLiteral("hangup-after"),
+                 tr("Hang up the port after every N answers (it comes back, see --hangup-pause)."),
+                 n});
+    p.addOption({QStringLiteral("hangup-pause"),
+                 tr("How long a hung-up port stays away (default 1000)."), ms});
+    p.addOption({QStringLiteral("seed"), tr("Seed of the fault dice (default 1)."), n});
+    p.addOption({QStringLiteral("input"),
+                 tr("Set an input at start: INn=on|off|pulse (repeatable)."), tr("INn=STATE")});
+    p.addOption({QStringLiteral("travel"),
+                 tr("Travel of each axis between its limit switches (default 200)."), tr("MM")});
+}
+
+bool SimCommandLine::parseTcp(const QString &text, QHostAddress *address, quint16 *port,
+                              QString *error)
+{
+    QString host;
+    QString portText = text;
+    const int colon = int(text.lastIndexOf(QLatin1Char(':')));
+    if (colon >= 0) {
+        host = text.left(colon);
+        portText = text.mid(colon + 1);
+        if (host.startsWith(QLatin1Char('[')) && host.endsWith(QLatin1Char(']')))
+            host = host.mid(1, host.size() - 2);
+    }
+    int p = 0;
+    QHostAddress a;
+    if (!toInt(portText, 0, 65535, &p) || (!host.isEmpty() && !a.setAddress(host))) {
+        if (error)
+            *error = tr("--tcp: '%1' is not [HOST:]PORT").arg(text);
+        return false;
+    }
+    if (!host.isEmpty())
+        *address = a;
+    *port = quint16(p);
+    return true;
+}
+
+std::optional<std::pair<int, SimMachine::InputForce>>
+SimCommandLine::parseInput(const QString &text, QString *error)
+{
+    static const QRegularExpression re(QStringLiteral("^(?:in)?(\\d+)=(on|off|pulse|1|0)$"),
+                                       QRegularExpression::CaseInsensitiveOption);
+    const auto m = re.match(text.trimmed());
+    if (!m.hasMatch()) {
+        if (error)
+            *error = tr("--input: '%1' is not INn=on|off|pulse").arg(text);
+        return std::nullopt;
+    }
+    const QString state = m.captured(2).toLower();
+    SimMachine::InputForce force = SimMachine::InputForce::Pulse;
+    if (state == QLatin1String("on") || state == QLatin1String("1"))
+        force = SimMachine::InputForce::On;
+    else if (state == QLatin1String("off") || state == QLatin1String("0"))
+        force = SimMachine::InputForce::Off;
+    return std::make_pair(m.captured(1).toInt(), force);
+}
+
+bool SimCommandLine::toOptions(const QCommandLineParser &p, SimOptions *o, QString *error)
+{
+    auto fail = [&](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    auto intOption = [&](const char *name, int min, int max, int *out) {
+        const QString key = QLatin1String(name);
+        if (!p.isSet(key))
+            return true;
+        if (toInt(p.value(key), min, max, out))
+            return true;
+        return fail(tr("--%1: '%2' must be a whole number from %3 to %4")
+                        .arg(key, p.value(key))
+                        .arg(min)
+                        .arg(max));
+    };
+    if (p.isSet(QStringLiteral("map"))) {
+        QStringList errors;
+        const auto map = RegisterMap::loadFile(p.value(QStringLiteral("map")), &errors);
+        if (!map)
+            return fail(errors.join(QLatin1Char('\n')));
+        o->map = *map;
+    }
+    o->rtu = p.isSet(QStringLiteral("pty")) || p.isSet(QStringLiteral("link"));
+    o->linkPath = p.value(QStringLiteral("link"));
+    o->checkBaud = !p.isSet(QStringLiteral("no-baud-check"));
+    if (p.isSet(QStringLiteral("tcp"))) {
+        o->tcp = true;
+        if (!parseTcp(p.value(QStringLiteral("tcp")), &o->tcpAddress, &o->tcpPort, error))
+            return false;
+    }
+    if (p.isSet(QStringLiteral("listen-any")))
+        o->tcpAddress = QHostAddress(QHostAddress::Any);
+    o->statePath = p.value(QStringLiteral("state"));
+    o->strictReads = p.isSet(QStringLiteral("strict-reads"));
+    int seed = int(o->faults.seed);
+    if (!intOption("id", 1, 255, &o->deviceId) ||
+        !intOption("answer-delay", 0, 60000, &o->answerDelayMs) ||
+        !intOption("wire-baud", 1, 10000000, &o->wireBaud) ||
+        !intOption("hangup-after", 0, 1000000, &o->faults.hangupAfter) ||
+        !intOption("hangup-pause", 0, 600000, &o->faults.hangupPauseMs) ||
+        !intOption("seed", 0, std::numeric_limits<int>::max(), &seed))
+        return false;
+    o->faults.seed = quint32(seed);
+    for (const char *name : {"drop", "corrupt-crc"}) {
+        const QString key = QLatin1String(name);
+        if (!p.isSet(key))
+            continue;
+        QString why;
+        const auto share = FaultInjector::parseShare(p.value(key), &why);
+        if (!share)
+            return fail(QStringLiteral("--%1: %2").arg(key, why));
+        (key == QLatin1String("drop") ? o->faults.drop : o->faults.corruptCrc) = *share;
+    }
+    QString why;
+    if (p.isSet(QStringLiteral("late")) &&
+        !FaultInjector::parseShareAndValue(p.value(QStringLiteral("late")), &o->faults.late,
+                                           &o->faults.lateMs, &why))
+        return fail(QStringLiteral("--late: %1").arg(why));
+    if (p.isSet(QStringLiteral("exception"))) {
+        if (!FaultInjector::parseShareAndValue(p.value(QStringLiteral("exception")),
+                                               &o->faults.exception, &o->faults.exceptionCode,
+                                               &why))
+            return fail(QStringLiteral("--exception: %1").arg(why));
+        if (o->faults.exceptionCode < 1 || o->faults.exceptionCode > 255)
+            return fail(tr("--exception: the code must be 1-255"));
+    }
+    if (p.isSet(QStringLiteral("travel"))) {
+        bool ok = false;
+        o->travel = p.value(QStringLiteral("travel")).toDouble(&ok);
+        if (!ok || o->travel <= 0)
+            return fail(tr("--travel: '%1' must be a positive distance")
+                            .arg(p.value(QStringLiteral("travel"))));
+        o->startPosition = std::min(o->startPosition, o->travel / 4);
+    }
+    for (const QString &text : p.values(QStringLiteral("input"))) {
+        const auto input = parseInput(text, error);
+        if (!input)
+            return false;
+        o->inputs.append(*input);
+    }
+    return true;
+}
+
+} // namespace stepcom

@@ -1,0 +1,29 @@
+#pragma once
+
+#include "sim/simoptions.h"
+
+#include <QCommandLineParser>
+#include <QString>
+
+#include <optional>
+#include <utility>
+
+namespace stepcom {
+
+// The simulator's command-line options, shared by stepcom-sim and any program that embeds a
+// SimHost (e.g. stepcomctl --sim), so they spell them the same way.
+class SimCommandLine
+{
+public:
+    static void addOptions(QCommandLineParser &parser);
+    // Reads what addOptions() added; false and a message naming the option on bad input.
+    static bool toOptions(const QCommandLineParser &parser, SimOptions *options, QString *error);
+
+    // "IN3=on", "3=pulse", "in1=off"
+    static std::optional<std::pair<int, SimMachine::InputForce>> parseInput(const QString &text,
+                                                                            QString *error);
+    // "5020", "127.0.0.1:5020", "[::1]:502"
+    static bool parseTcp(const QString &text, QHostAddress *address, quint16 *port, QString *error);
+};
+
+} // namespace stepcom

@@ -1,0 +1,97 @@
+#pragma once
+
+#include "map/registermap.h"
+#include "sim/simanswer.h"
+#include "sim/simmachine.h"
+#include "sim/simregisters.h"
+
+#include <QHash>
+#include <QModbusPdu>
+#include <QMutex>
+
+#include <functional>
+#include <optional>
+
+namespace stepcom {
+
+// The simulated controller without any transport: registers by the register map, the motion
+// model, the virtual machine and the protocol rules. Time is injected (a clock and/or
+// advance()), so tests are deterministic. Every public method is thread-safe.
+class SimDevice
+{
+public:
+    using Clock = std::function<qint64()>; // monotonic milliseconds
+    using InputForce = SimMachine::InputForce;
+
+    explicit SimDevice(const RegisterMap &map = RegisterMap::builtin());
+
+    const RegisterMap &map() const { return m_regs.map(); }
+
+    // With a clock the model catches up with it on every call; without one only advance()
+    // moves time.
+    void setClock(Clock clock);
+    void advance(qint64 ms);
+    qint64 now() const;
+
+    // One request PDU, answered as the controller would (no delays here; see SimResponder).
+    SimAnswer handle(const QModbusRequest &request);
+
+    // Raw register value of a holding parameter (status ones included).
+    std::optional<qint64> value(const QString &key) const;
+    // A write as a client would make it: read-write parameters, range-checked.
+    bool setValue(const QString &key, qint64 raw, QString *error = nullptr);
+    // A coil switched ON by key ("motor1.move", "estop").
+    bool command(const QString &coilKey, QString *error = nullptr);
+    int deviceId() const;
+    int baud() const;
+    // Called (under the device's lock: only queue work from it) whenever the device id or baud
+    // changed, by a request or by hand, so a server can follow once its answer is out.
+    void setLinkObserver(std::function<void()> observer);
+
+    int motorCount() const;
+    int inputCount() const;
+    int outputCount() const;
+    // Drive input n (1-based) by hand; a pulse stays on for SimMachine::kPulseMs.
+    void setInput(int n, InputForce force);
+    bool input(int n) const;
+    bool output(int n) const;
+    bool running(int motor) const;
+    qint64 position(int motor) const; // the position register: distance units × 100
+    qint64 steps(int motor) const;    // the pulse counter
+    double machinePosition(int motor) const;
+    void setMachinePosition(int motor, double units);
+    void setTravel(int motor, double travel, double overtravel = 5.0);
+
+    // Where coil 00096 saves; empty keeps the saved values in memory only.
+    void setStatePath(const QString &path);
+    QString statePath() const;
+    // Loads the state file if it exists (a missing file means factory values).
+    bool loadState(QString *error);
+    bool save(QString *error);
+    void factoryReset();
+
+    // Strict reads: every address read must belong to a parameter (default: gaps read as 0).
+    void setStrictReads(bool strict);
+
+    // A few lines for people: mode, motors, inputs, outputs.
+    QString statusText() const;
+
+private:
+    void sync() const;
+    void applyWrites(const QList<std::pair<const Parameter *, qint64>> &writes);
+    bool executeCoil(const Parameter &coil);
+    bool saveLocked(QString *error);
+
+    mutable QMutex m_mutex;
+    mutable SimRegisters m_regs;
+    mutable SimMachine m_machine;
+    Clock m_clock;
+    mutable qint64 m_clockSeen = 0;
+    QString m_statePath;
+    QHash<QString, qint64> m_flash; // saved values when there is no state file
+    bool m_linkChanged = false;
+    bool m_strictReads = false;
+    std::function<void()> m_linkObserver;
+};
+
+} // namespace stepcom

@@ -1,0 +1,131 @@
+#include "sim/simhost.h"
+
+#include "sim/simdevice.h"
+#include "sim/simresponder.h"
+#include "sim/simworker.h"
+
+#include <QElapsedTimer>
+#include <QMutexLocker>
+#include <QThread>
+
+namespace stepcom {
+
+SimHost::SimHost(QObject *parent)
+    : QObject(parent)
+{}
+
+SimHost::~SimHost()
+{
+    stop();
+}
+
+bool SimHost::start(const SimOptions &options, QString *error)
+{
+    stop();
+    m_options = options;
+    m_device = std::make_unique<SimDevice>(options.map);
+    SimDevice &d = *m_device;
+    for (int n = 1; n <= d.motorCount(); ++n) {
+        d.setTravel(n, options.travel);
+        d.setMachinePosition(n, options.startPosition);
+    }
+    d.setStatePath(options.statePath);
+    d.setStrictReads(options.strictReads);
+    QString loadError;
+    if (!d.loadState(&loadError)) {
+        if (error)
+            *error = loadError;
+        return false;
+    }
+    if (!loadError.isEmpty())
+        Q_EMIT message(loadError); // some saved values were not taken
+    if (options.deviceId != 0 && !d.setValue(QStringLiteral("device.id"), options.deviceId, error))
+        return false;
+    for (const auto &[input, force] : options.inputs)
+        d.setInput(input, force);
+    if (!options.manualClock) {
+        QElapsedTimer clock;
+        clock.start();
+        d.setClock([clock] { return clock.elapsed(); });
+    }
+
+    m_thread = new QThread(this);
+    m_thread->setObjectName(QStringLiteral("stepcom-sim"));
+    m_worker = new SimWorker(m_device.get(), options);
+    m_worker->onPtyPath = [this](const QString &path) {
+        QMutexLocker lock(&m_pathMutex);
+        m_ptyPath = path;
+    };
+    m_worker->moveToThread(m_thread);
+    connect(m_worker, &SimWorker::hungUp, this, &SimHost::hungUp);
+    connect(m_worker, &SimWorker::reopened, this, &SimHost::reopened);
+    connect(m_worker, &SimWorker::message, this, &SimHost::message);
+    m_thread->start();
+    bool ok = false;
+    QString openError;
+    QMetaObject::invokeMethod(
+        m_worker, [&] { ok = m_worker->open(&openError); }, Qt::BlockingQueuedConnection);
+    if (!ok) {
+        stop();
+        if (error)
+            *error = openError;
+        return false;
+    }
+    m_tcpPort = m_worker->tcpPort();
+    return true;
+}
+
+void SimHost::stop()
+{
+    if (!m_thread)
+        return;
+    QMetaObject::invokeMethod(
+        m_worker, [this] { m_worker->close(); }, Qt::BlockingQueuedConnection);
+    m_thread->quit();
+    m_thread->wait();
+    delete m_worker; // its thread has finished: safe to delete from here
+    m_worker = nullptr;
+    delete m_thread;
+    m_thread = nullptr;
+    m_tcpPort = 0;
+    QMutexLocker lock(&m_pathMutex);
+    m_ptyPath.clear();
+}
+
+QString SimHost::ptyPath() const
+{
+    QMutexLocker lock(&m_pathMutex);
+    return m_ptyPath;
+}
+
+QString SimHost::rtuPath() const
+{
+    QMutexLocker lock(&m_pathMutex);
+    if (m_ptyPath.isEmpty())
+        return {};
+    return m_options.linkPath.isEmpty() ? m_ptyPath : m_options.linkPath;
+}
+
+void SimHost::hangUp(int pauseMs)
+{
+    if (m_worker)
+        QMetaObject::invokeMethod(m_worker, [w = m_worker, pauseMs] { w->hangUp(pauseMs); });
+}
+
+SimHost::Stats SimHost::stats() const
+{
+    Stats s;
+    if (!m_worker)
+        return s;
+    SimResponder::Counters &c = m_worker->responder()->counters();
+    s.requests = c.requests;
+    s.answers = c.answers;
+    s.exceptions = c.exceptions;
+    s.dropped = c.dropped;
+    s.corrupted = c.corrupted;
+    s.late = c.late;
+    s.wrongBaud = c.wrongBaud;
+    return s;
+}
+
+} // namespace stepcom

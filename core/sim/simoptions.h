@@ -1,0 +1,43 @@
+#pragma once
+
+#include "map/registermap.h"
+#include "sim/faultinjector.h"
+#include "sim/simmachine.h"
+
+#include <QHostAddress>
+#include <QList>
+#include <QString>
+
+#include <utility>
+
+namespace stepcom {
+
+// Everything SimHost::start() needs: transports, identity, timing, faults, the machine.
+struct SimOptions
+{
+    RegisterMap map = RegisterMap::builtin();
+
+    bool rtu = false;      // Modbus RTU on a pseudo-terminal (Unix only)
+    QString linkPath;      // a symlink to the pty, optional
+    bool checkBaud = true; // silence when the client's baud differs from register 40213
+
+    bool tcp = false; // Modbus TCP
+    QHostAddress tcpAddress = QHostAddress(QHostAddress::LocalHost);
+    quint16 tcpPort = 0; // 0: any free port, see SimHost::tcpPort()
+
+    bool strictReads = false; // reads of reserved registers get exception 02 instead of 0
+
+    int deviceId = 0;  // 1-255 overrides the saved id; 0 keeps it
+    QString statePath; // the "flash" file; empty: saved values live in memory only
+
+    int answerDelayMs = -1; // -1: the map's answer delay (35 ms)
+    int wireBaud = 0;       // >0: add the bytes' time on a line at this baud
+    FaultOptions faults;
+
+    bool manualClock = false;  // time only moves by SimDevice::advance() (tests)
+    double travel = 200;       // travel of every axis, distance units
+    double startPosition = 50; // where the carriages stand at power-up
+    QList<std::pair<int, SimMachine::InputForce>> inputs; // inputs set at start
+};
+
+} // namespace stepcom

@@ -1,0 +1,174 @@
+#include "sim/simworker.h"
+
+#include "sim/ptybridge.h"
+#include "sim/simdevice.h"
+#include "sim/simresponder.h"
+#include "sim/simrtuserver.h"
+#include "sim/simtcpserver.h"
+
+#include <QModbusDevice>
+#include <QSerialPort>
+#include <QTimer>
+
+namespace stepcom {
+
+SimWorker::SimWorker(SimDevice *device, const SimOptions &options)
+    : m_device(device)
+    , m_options(options)
+{
+    const int delay =
+        options.answerDelayMs >= 0 ? options.answerDelayMs : options.map.answerDelayMs();
+    m_responder = std::make_unique<SimResponder>(device, delay, options.wireBaud, options.faults);
+}
+
+SimWorker::~SimWorker()
+{
+    close();
+}
+
+bool SimWorker::open(QString *error)
+{
+    // Queued: an answer to the write that changed the id still leaves under the old one.
+    m_device->setLinkObserver([this] {
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                if (m_rtu)
+                    m_rtu->setServerAddress(m_device->deviceId());
+            },
+            Qt::QueuedConnection);
+    });
+    m_reopen = new QTimer(this);
+    m_reopen->setSingleShot(true);
+    connect(m_reopen, &QTimer::timeout, this, &SimWorker::reopenRtu);
+    if (!m_options.manualClock) {
+        // The model catches up lazily on every access; this keeps each catch-up short.
+        m_sync = new QTimer(this);
+        connect(m_sync, &QTimer::timeout, this, [this] { m_device->now(); });
+        m_sync->start(50);
+    }
+    if (m_options.rtu && !openRtu(error))
+        return false;
+    if (m_options.tcp) {
+        m_tcp = new SimTcpServer(m_responder.get(), this);
+        if (!m_tcp->listen(m_options.tcpAddress, m_options.tcpPort, error))
+            return false;
+        m_tcpPort = m_tcp->port();
+        connect(m_tcp, &SimTcpServer::hangUpRequested, this, &SimWorker::scheduleHangUp);
+    }
+    return true;
+}
+
+bool SimWorker::openRtu(QString *error)
+{
+#ifdef Q_OS_UNIX
+    if (!m_bridge) {
+        m_bridge = new PtyBridge(this);
+        // Side A is the controller, side B the client's end.
+        m_bridge->setTap([this](PtyBridge::Side from, const QByteArray &bytes) {
+            if (from != PtyBridge::Side::A || !m_rtu || bytes.isEmpty() || !m_rtu->takeCorruptCrc())
+                return bytes;
+            QByteArray bad = bytes;
+            bad[bad.size() - 1] = char(bad.at(bad.size() - 1) ^ 0x5A);
+            return bad;
+        });
+    }
+    if (!m_bridge->open(error))
+        return false;
+    if (!m_options.linkPath.isEmpty() &&
+        !m_bridge->createLink(PtyBridge::Side::B, m_options.linkPath, error)) {
+        m_bridge->close();
+        return false;
+    }
+    if (!m_rtu) {
+        std::function<int()> clientBaud;
+        if (m_options.checkBaud)
+            clientBaud = [this] { return m_bridge->clientBaud(PtyBridge::Side::B); };
+        m_rtu = new SimRtuServer(m_responder.get(), clientBaud, this);
+        connect(m_rtu, &SimRtuServer::hangUpRequested, this, &SimWorker::scheduleHangUp);
+        connect(m_rtu, &QModbusDevice::errorOccurred, this, [this](QModbusDevice::Error e) {
+            if (e != QModbusDevice::NoError)
+                Q_EMIT message(tr("RTU server: %1").arg(m_rtu->errorString()));
+        });
+    }
+    m_rtu->setConnectionParameter(QModbusDevice::SerialPortNameParameter,
+                                  m_bridge->path(PtyBridge::Side::A));
+    m_rtu->setConnectionParameter(QModbusDevice::SerialBaudRateParameter, QSerialPort::Baud9600);
+    m_rtu->setConnectionParameter(QModbusDevice::SerialParityParameter, QSerialPort::NoParity);
+    m_rtu->setConnectionParameter(QModbusDevice::SerialDataBitsParameter, QSerialPort::Data8);
+    m_rtu->setConnectionParameter(QModbusDevice::SerialStopBitsParameter, QSerialPort::OneStop);
+    m_rtu->setServerAddress(m_device->deviceId());
+    if (!m_rtu->connectDevice() || m_rtu->state() != QModbusDevice::ConnectedState) {
+        if (error)
+            *error = tr("cannot open the pseudo-terminal: %1").arg(m_rtu->errorString());
+        m_bridge->close();
+        return false;
+    }
+    m_ptyPath = m_bridge->path(PtyBridge::Side::B);
+    if (onPtyPath)
+        onPtyPath(m_ptyPath);
+    return true;
+#else
+    if (error)
+        *error = tr("Modbus RTU on a pseudo-terminal is not available on this system; use --tcp");
+    return false;
+#endif
+}
+
+void SimWorker::reopenRtu()
+{
+    QString error;
+    if (openRtu(&error))
+        Q_EMIT reopened(m_ptyPath);
+    else
+        Q_EMIT message(tr("cannot re-create the port: %1").arg(error));
+}
+
+void SimWorker::scheduleHangUp()
+{
+    // A moment for the last answer to leave before the line goes dead.
+    QTimer::singleShot(50, this, [this] { hangUp(-1); });
+}
+
+void SimWorker::hangUp(int pauseMs)
+{
+    const int pause = pauseMs >= 0 ? pauseMs : m_options.faults.hangupPauseMs;
+#ifdef Q_OS_UNIX
+    if (m_bridge && m_bridge->isOpen()) {
+        m_rtu->disconnectDevice();
+        m_bridge->close();
+        m_ptyPath.clear();
+        if (onPtyPath)
+            onPtyPath(m_ptyPath);
+        m_reopen->start(pause);
+    }
+#endif
+    if (m_tcp)
+        m_tcp->hangUp(pause);
+    Q_EMIT hungUp();
+}
+
+void SimWorker::close()
+{
+    m_device->setLinkObserver({});
+    if (m_reopen)
+        m_reopen->stop();
+    if (m_sync)
+        m_sync->stop();
+#ifdef Q_OS_UNIX
+    if (m_rtu)
+        m_rtu->disconnectDevice();
+    if (m_bridge)
+        m_bridge->close();
+#endif
+    if (m_tcp)
+        m_tcp->close();
+    delete m_rtu;
+    m_rtu = nullptr;
+    delete m_bridge;
+    m_bridge = nullptr;
+    delete m_tcp;
+    m_tcp = nullptr;
+}
+
+} // namespace stepcom

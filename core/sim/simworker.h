@@ -1,0 +1,66 @@
+#pragma once
+
+#include "sim/simoptions.h"
+
+#include <QObject>
+#include <QString>
+
+#include <functional>
+#include <memory>
+
+QT_BEGIN_NAMESPACE
+class QTimer;
+QT_END_NAMESPACE
+
+namespace stepcom {
+
+class PtyBridge;
+class SimDevice;
+class SimResponder;
+class SimRtuServer;
+class SimTcpServer;
+
+// The transports of a SimHost, living in the simulator's own thread: the pty bridge with the
+// RTU server on its device side, the TCP server, hang-ups and their recovery.
+class SimWorker : public QObject
+{
+    Q_OBJECT
+public:
+    SimWorker(SimDevice *device, const SimOptions &options);
+    ~SimWorker() override;
+
+    // In the worker's thread. On success the pty path and TCP port are known.
+    bool open(QString *error);
+    void close();
+    // Hang up every transport; they come back after `pauseMs` (-1: the options' pause).
+    void hangUp(int pauseMs);
+
+    QString ptyPath() const { return m_ptyPath; }
+    quint16 tcpPort() const { return m_tcpPort; }
+    SimResponder *responder() const { return m_responder.get(); }
+    // Called from the worker's thread whenever the pty path changes (empty while hung up).
+    std::function<void(const QString &)> onPtyPath;
+
+Q_SIGNALS:
+    void hungUp();
+    void reopened(const QString &ptyPath);
+    void message(const QString &text);
+
+private:
+    bool openRtu(QString *error);
+    void reopenRtu();
+    void scheduleHangUp();
+
+    SimDevice *m_device;
+    SimOptions m_options;
+    std::unique_ptr<SimResponder> m_responder;
+    PtyBridge *m_bridge = nullptr;
+    SimRtuServer *m_rtu = nullptr;
+    SimTcpServer *m_tcp = nullptr;
+    QTimer *m_reopen = nullptr;
+    QTimer *m_sync = nullptr; // keeps the model close to real time between requests
+    QString m_ptyPath;
+    quint16 m_tcpPort = 0;
+};
+
+} // namespace stepcom

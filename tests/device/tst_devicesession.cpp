@@ -1,0 +1,137 @@
+#include "bus/modbuslink.h"
+#include "bus/trafficlog.h"
+#include "device/devicesession.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace stepcom;
+
+class TestDeviceSession : public QObject
+{
+    Q_OBJECT
+    std::unique_ptr<DeviceSession> session;
+
+    void connectSim()
+    {
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->connectSimulator();
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
+        QVERIFY(read.at(0).at(0).toBool());
+    }
+    SimDevice *sim() const { return session->simulator()->device(); }
+
+private Q_SLOTS:
+    void init() { session = std::make_unique<DeviceSession>(); }
+    void cleanup() { session.reset(); }
+
+    void connectingReadsButNeverWrites()
+    {
+        connectSim();
+        QCOMPARE(*session->store()->deviceValue(QStringLiteral("motor1.step_angle")), 180);
+        QCOMPARE(session->store()->state(QStringLiteral("motor2.pitch")),
+                 ParameterStore::State::InSync);
+        for (const TrafficEntry &e : session->link()->traffic()->entries()) {
+            if (e.direction == TrafficEntry::Direction::Sent)
+                QCOMPARE(int(quint8(e.bytes.at(1))), 0x03); // reads only
+        }
+    }
+
+    void writeChangesReachesTheController()
+    {
+        connectSim();
+        QVERIFY(session->store()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // held, not written
+        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        session->writeChanges();
+        QTRY_COMPARE(written.size(), 1);
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
+        QCOMPARE(session->store()->state(QStringLiteral("motor1.speed")),
+                 ParameterStore::State::InSync);
+        QVERIFY(session->store()->unsavedToFlash());
+        QSignalSpy done(session.get(), &DeviceSession::commandFinished);
+        session->saveToFlash();
+        QTRY_COMPARE(done.size(), 1);
+        QVERIFY(done.at(0).at(1).toBool());
+        QVERIFY(!session->store()->unsavedToFlash());
+    }
+
+    void statusIsPolled()
+    {
+        connectSim();
+        sim()->setInput(3, SimDevice::InputForce::On);
+        QTRY_COMPARE_WITH_TIMEOUT(
+            session->store()->deviceValue(QStringLiteral("io.in3")).value_or(-1), 1, 5000);
+        sim()->setInput(3, SimDevice::InputForce::Off);
+        QTRY_COMPARE_WITH_TIMEOUT(
+            session->store()->deviceValue(QStringLiteral("io.in3")).value_or(-1), 0, 5000);
+    }
+
+    void emergencyStopGoesAheadAndStops()
+    {
+        connectSim();
+        QSignalSpy done(session.get(), &DeviceSession::commandFinished);
+        session->command(QStringLiteral("motor1.forward"));
+        QTRY_COMPARE(done.size(), 1);
+        QTRY_VERIFY(sim()->running(1));
+        QList<QString> order;
+        connect(session->link(), &ModbusLink::dispatched, this,
+                [&order](quint64, const Request &r) { order << r.what; });
+        session->readAll();
+        session->readAll();
+        session->emergencyStop();
+        QTRY_VERIFY(order.contains(QStringLiteral("estop")));
+        QVERIFY2(order.indexOf(QStringLiteral("estop")) <= 1,
+                 qPrintable(order.join(QLatin1Char(','))));
+        QTRY_VERIFY(!sim()->running(1));
+    }
+
+    void idChangeIsFollowed()
+    {
+        connectSim();
+        QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
+        session->changeLink(7, 9600);
+        QTRY_COMPARE_WITH_TIMEOUT(changed.size(), 1, 5000);
+        QCOMPARE(session->settings().deviceId, 7);
+        QCOMPARE(sim()->deviceId(), 7);
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->readAll();
+        QTRY_COMPARE(read.size(), 1);
+        QVERIFY(read.at(0).at(0).toBool());
+    }
+
+    void baudChangeIsFollowed()
+    {
+        connectSim();
+        QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
+        QSignalSpy failed(session.get(), &DeviceSession::linkChangeFailed);
+        session->changeLink(1, 19200);
+        QTRY_VERIFY_WITH_TIMEOUT(changed.size() + failed.size() == 1, 10000);
+        QVERIFY2(changed.size() == 1,
+                 failed.isEmpty() ? "" : qPrintable(failed.at(0).at(1).toString()));
+        QCOMPARE(session->settings().baud, 19200);
+        QCOMPARE(sim()->baud(), 19200);
+    }
+
+    void lostControllerOffersTheOldSettings()
+    {
+        connectSim();
+        session->simulator()->device()->setValue(QStringLiteral("device.id"), 1);
+        QSignalSpy failed(session.get(), &DeviceSession::linkChangeFailed);
+        // the controller takes the new id but we stop it before it can answer there
+        connect(session->link(), &ModbusLink::finished, this,
+                [this](quint64, const Request &r, const Result &res) {
+                    if (r.what == QLatin1String("device.id") && res.ok)
+                        session->simulator()->stop();
+                });
+        session->changeLink(9, 9600);
+        QTRY_COMPARE_WITH_TIMEOUT(failed.size(), 1, 10000);
+        const LinkSettings previous = failed.at(0).at(0).value<LinkSettings>();
+        QCOMPARE(previous.deviceId, 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestDeviceSession)
+#include "tst_devicesession.moc"

@@ -1,0 +1,93 @@
+#include "device/parameterstore.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace stepcom;
+
+class TestParameterStore : public QObject
+{
+    Q_OBJECT
+    const RegisterMap &map = RegisterMap::builtin();
+    ParameterWrite w(ParameterStore &s, const char *key, qint64 raw)
+    {
+        return {s.map().find(QString::fromLatin1(key)), raw};
+    }
+
+private Q_SLOTS:
+    void statesFollowTheDevice()
+    {
+        ParameterStore store(map);
+        const QString speed = QStringLiteral("motor1.speed");
+        QCOMPARE(store.state(speed), ParameterStore::State::Unknown);
+        store.setDeviceValues({{speed, 300}});
+        QCOMPARE(store.state(speed), ParameterStore::State::InSync);
+        QVERIFY(store.edit(speed, 450).isEmpty());
+        QCOMPARE(store.state(speed), ParameterStore::State::Edited);
+        QCOMPARE(*store.shownValue(speed), 450);
+        QCOMPARE(*store.deviceValue(speed), 300);
+        // a poll never overwrites what the user typed
+        store.setDeviceValues({{speed, 310}});
+        QCOMPARE(*store.shownValue(speed), 450);
+        // editing back to what the device holds is no edit
+        QVERIFY(store.edit(speed, 310).isEmpty());
+        QCOMPARE(store.state(speed), ParameterStore::State::InSync);
+        QVERIFY(!store.hasEdits());
+    }
+
+    void rejectsBadEdits()
+    {
+        ParameterStore store(map);
+        QVERIFY(store.edit(QStringLiteral("motor1.speed"), 99999)
+                    .contains(QStringLiteral("out of range")));
+        QVERIFY(
+            store.edit(QStringLiteral("motor1.position"), 0).contains(QStringLiteral("read-only")));
+        QVERIFY(store.edit(QStringLiteral("nope"), 0).contains(QStringLiteral("unknown")));
+        QVERIFY(!store.hasEdits());
+    }
+
+    void writeOutcomeUpdatesStates()
+    {
+        ParameterStore store(map);
+        QSignalSpy unsaved(&store, &ParameterStore::unsavedChanged);
+        store.setDeviceValues({{QStringLiteral("motor1.speed"), 300},
+                               {QStringLiteral("motor1.microsteps"), 8},
+                               {QStringLiteral("motor2.speed"), 300}});
+        store.edit(QStringLiteral("motor1.speed"), 450);
+        store.edit(QStringLiteral("motor1.microsteps"), 16);
+        store.edit(QStringLiteral("motor2.speed"), 100);
+        const QList<ParameterWrite> writes = store.pendingWrites();
+        QCOMPARE(writes.size(), 3);
+        WriteOutcome outcome;
+        outcome.written = {QStringLiteral("motor1.speed"), QStringLiteral("motor1.microsteps")};
+        outcome.mismatches.append({QStringLiteral("motor1.microsteps"), 16, 8});
+        outcome.notWritten = {QStringLiteral("motor2.speed")};
+        outcome.errors = {QStringLiteral("x")};
+        store.applyWriteOutcome(writes, outcome);
+        QCOMPARE(store.state(QStringLiteral("motor1.speed")), ParameterStore::State::InSync);
+        QCOMPARE(*store.deviceValue(QStringLiteral("motor1.speed")), 450);
+        QCOMPARE(store.state(QStringLiteral("motor1.microsteps")),
+                 ParameterStore::State::WriteFailed);
+        QVERIFY(store.entry(QStringLiteral("motor1.microsteps"))
+                    .error.contains(QStringLiteral("holds 8")));
+        QCOMPARE(store.state(QStringLiteral("motor2.speed")), ParameterStore::State::WriteFailed);
+        QCOMPARE(*store.shownValue(QStringLiteral("motor2.speed")), 100); // the edit is kept
+        QVERIFY(store.unsavedToFlash());
+        QCOMPARE(unsaved.size(), 1);
+    }
+
+    void forgettingKeepsEdits()
+    {
+        ParameterStore store(map);
+        store.setDeviceValues({{QStringLiteral("motor1.speed"), 300}});
+        store.edit(QStringLiteral("motor1.speed"), 450);
+        store.forgetDeviceValues();
+        QVERIFY(!store.deviceValue(QStringLiteral("motor1.speed")));
+        QCOMPARE(*store.shownValue(QStringLiteral("motor1.speed")), 450);
+        store.revertAll();
+        QCOMPARE(store.state(QStringLiteral("motor1.speed")), ParameterStore::State::Unknown);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestParameterStore)
+#include "tst_parameterstore.moc"

@@ -1,0 +1,198 @@
+#include "testpaths.h"
+
+#include <QFileInfo>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <memory>
+
+using namespace stepcom;
+
+// The stepcom-sim program, checked by independent clients: mbpoll (libmodbus) over the pty and
+// TCP, and its own console and options.
+class TstStepcomSim : public QObject
+{
+    Q_OBJECT
+
+private:
+    QString m_mbpoll;
+
+    // Starts stepcom-sim and waits for its "pty:"/"tcp:" lines.
+    static std::unique_ptr<QProcess> startSim(const QStringList &args, QString *banner)
+    {
+        auto p = std::make_unique<QProcess>();
+        p->setProgram(test::programPath(QStringLiteral("stepcom-sim")));
+        p->setArguments(args);
+        p->start();
+        if (!p->waitForStarted(5000))
+            return nullptr;
+        QByteArray out;
+        while (!out.contains("pty:") && !out.contains("tcp:") && p->waitForReadyRead(5000))
+            out += p->readAllStandardOutput();
+        QTest::qWait(50); // the tcp line may follow the pty line
+        out += p->readAllStandardOutput();
+        if (banner)
+            *banner = QString::fromUtf8(out);
+        return p;
+    }
+    static void endSim(QProcess *p)
+    {
+        p->terminate(); // SIGTERM: must end cleanly
+        QVERIFY(p->waitForFinished(5000));
+        QCOMPARE(p->exitStatus(), QProcess::NormalExit);
+        QCOMPARE(p->exitCode(), 0);
+    }
+    QString mbpoll(const QStringList &args)
+    {
+        QProcess p;
+        p.start(m_mbpoll, args);
+        p.waitForFinished(10000);
+        return QString::fromUtf8(p.readAllStandardOutput() + p.readAllStandardError());
+    }
+    // mbpoll [options] DEVICE [values to write]
+    QStringList rtu(const QString &path, const QStringList &more, const QStringList &values = {})
+    {
+        return QStringList{QStringLiteral("-m"),   QStringLiteral("rtu"), QStringLiteral("-b"),
+                           QStringLiteral("9600"), QStringLiteral("-P"),  QStringLiteral("none"),
+                           QStringLiteral("-1")} +
+               more + QStringList{path} + values;
+    }
+    static QStringList split(const char *args)
+    {
+        return QString::fromLatin1(args).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        m_mbpoll = QStandardPaths::findExecutable(QStringLiteral("mbpoll"));
+        QVERIFY(QFileInfo::exists(test::programPath(QStringLiteral("stepcom-sim"))));
+    }
+
+    void version()
+    {
+        QProcess p;
+        p.start(test::programPath(QStringLiteral("stepcom-sim")), {QStringLiteral("--version")});
+        QVERIFY(p.waitForFinished(5000));
+        QCOMPARE(QString::fromUtf8(p.readAllStandardOutput()).trimmed(),
+                 QStringLiteral("stepcom-sim " STEPCOM_VERSION));
+    }
+
+    void badOptionsAreRefused()
+    {
+        QProcess p;
+        p.start(test::programPath(QStringLiteral("stepcom-sim")),
+                {QStringLiteral("--drop"), QStringLiteral("2")});
+        QVERIFY(p.waitForFinished(5000));
+        QCOMPARE(p.exitCode(), 2);
+        QVERIFY(p.readAllStandardError().contains("--drop"));
+    }
+
+    void mbpollOverThePty()
+    {
+        if (m_mbpoll.isEmpty())
+            QSKIP("mbpoll is not installed (Debian package mbpoll)");
+        QTemporaryDir dir;
+        const QString link = dir.filePath(QStringLiteral("stepcom0"));
+        QString banner;
+        auto sim = startSim({QStringLiteral("--pty"), QStringLiteral("--link"), link}, &banner);
+        QVERIFY(sim);
+        QVERIFY2(banner.contains(QStringLiteral("link: ") + link), qPrintable(banner));
+        QVERIFY(QFileInfo(link).isSymLink());
+
+        QString out = mbpoll(rtu(link, split("-a 1 -r 1 -c 2")));
+        QVERIFY2(out.contains(QStringLiteral("[1]: \t180")) &&
+                     out.contains(QStringLiteral("[2]: \t8")),
+                 qPrintable(out));
+        out = mbpoll(rtu(link, split("-a 1 -t 3 -r 1 -c 2")));
+        QVERIFY2(out.contains(QStringLiteral("Illegal function")), qPrintable(out));
+        out = mbpoll(rtu(link, split("-a 1 -r 1 -c 50")));
+        QVERIFY2(out.contains(QStringLiteral("Illegal data value")), qPrintable(out));
+        out = mbpoll(rtu(link, split("-a 2 -o 0.3 -r 1 -c 2")));
+        QVERIFY2(out.contains(QStringLiteral("timed out"), Qt::CaseInsensitive), qPrintable(out));
+
+        // A reverse single move of 10 mm: the 32-bit position reads -10.00 (low word first).
+        out = mbpoll(
+            rtu(link, split("-a 1 -r 5"), {QStringLiteral("1")})); // 40005 direction = reverse
+        QVERIFY2(out.contains(QStringLiteral("Written 1 references")), qPrintable(out));
+        out = mbpoll(rtu(link, split("-a 1 -t 0 -r 1"),
+                         {QStringLiteral("1")})); // coil 00001: motor 1 single move
+        QVERIFY2(out.contains(QStringLiteral("Written 1 references")), qPrintable(out));
+        for (int i = 0; i < 30; ++i) {
+            out = mbpoll(rtu(link, split("-a 1 -t 4:int -r 108 -c 1")));
+            if (out.contains(QStringLiteral("[108]: \t-1000")))
+                break;
+            QTest::qWait(100);
+        }
+        QVERIFY2(out.contains(QStringLiteral("[108]: \t-1000")), qPrintable(out));
+        endSim(sim.get());
+        QVERIFY(!QFileInfo::exists(link)); // removed on a clean exit
+    }
+
+    void mbpollOverTcp()
+    {
+        if (m_mbpoll.isEmpty())
+            QSKIP("mbpoll is not installed (Debian package mbpoll)");
+        QString banner;
+        auto sim = startSim({QStringLiteral("--tcp"), QStringLiteral("0")}, &banner);
+        QVERIFY(sim);
+        const auto m =
+            QRegularExpression(QStringLiteral("tcp: 127\\.0\\.0\\.1:(\\d+)")).match(banner);
+        QVERIFY2(m.hasMatch(), qPrintable(banner));
+        const QString out =
+            mbpoll({QStringLiteral("-m"), QStringLiteral("tcp"), QStringLiteral("-p"),
+                    m.captured(1), QStringLiteral("-a"), QStringLiteral("1"), QStringLiteral("-r"),
+                    QStringLiteral("1"), QStringLiteral("-c"), QStringLiteral("2"),
+                    QStringLiteral("-1"), QStringLiteral("127.0.0.1")});
+        QVERIFY2(out.contains(QStringLiteral("[1]: \t180")), qPrintable(out));
+        endSim(sim.get());
+    }
+
+    void stateSurvivesARestart()
+    {
+        if (m_mbpoll.isEmpty())
+            QSKIP("mbpoll is not installed (Debian package mbpoll)");
+        QTemporaryDir dir;
+        const QString link = dir.filePath(QStringLiteral("stepcom0"));
+        const QString state = dir.filePath(QStringLiteral("flash.json"));
+        const QStringList args{QStringLiteral("--link"), link, QStringLiteral("--state"), state};
+        auto sim = startSim(args, nullptr);
+        QVERIFY(sim);
+        QVERIFY(mbpoll(rtu(link, split("-a 1 -r 2"), {QStringLiteral("16")}))
+                    .contains(QStringLiteral("Written")));
+        QVERIFY(mbpoll(rtu(link, split("-a 1 -t 0 -r 96"), {QStringLiteral("1")}))
+                    .contains(QStringLiteral("Written")));
+        endSim(sim.get());
+        QVERIFY(QFileInfo::exists(state));
+        sim = startSim(args, nullptr);
+        QVERIFY(sim);
+        const QString out = mbpoll(rtu(link, split("-a 1 -r 2 -c 1")));
+        QVERIFY2(out.contains(QStringLiteral("[2]: \t16")), qPrintable(out));
+        endSim(sim.get());
+    }
+
+    void consoleDrivesInputs()
+    {
+        QString banner;
+        auto sim =
+            startSim({QStringLiteral("--tcp"), QStringLiteral("0"), QStringLiteral("--console"),
+                      QStringLiteral("--input"), QStringLiteral("IN2=on")},
+                     &banner);
+        QVERIFY(sim);
+        sim->write("in 3 on\nstatus\nbogus\nset motor1.speed 600\nget motor1.speed\nquit\n");
+        QVERIFY(sim->waitForFinished(5000));
+        QCOMPARE(sim->exitCode(), 0);
+        const QString out = QString::fromUtf8(sim->readAllStandardOutput());
+        const QString err = QString::fromUtf8(sim->readAllStandardError());
+        QVERIFY2(out.contains(QStringLiteral("IN3 is on")), qPrintable(out));
+        QVERIFY2(out.contains(QStringLiteral("IN1=0 IN2=1 IN3=1 IN4=0")), qPrintable(out));
+        QVERIFY2(out.contains(QStringLiteral("motor1.speed = 600 rpm")), qPrintable(out));
+        QVERIFY2(err.contains(QStringLiteral("unknown command 'bogus'")), qPrintable(err));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstStepcomSim)
+#include "tst_stepcomsim.moc"

@@ -1,0 +1,163 @@
+#include "bus/modbuslink.h"
+#include "device/devicesession.h"
+#include "dialogs/writechangesdialog.h"
+#include "emergencystop.h"
+#include "language.h"
+#include "mainwindow.h"
+#include "page.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+#include "widgets/parameterfield.h"
+#include "widgets/parameterform.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTest>
+#include <QToolButton>
+
+using namespace stepcom;
+
+class TestMainWindow : public QObject
+{
+    Q_OBJECT
+    std::unique_ptr<DeviceSession> session;
+    std::unique_ptr<MainWindow> window;
+
+    SimDevice *sim() const { return session->simulator()->device(); }
+    ParameterField *field(const QString &key) const
+    {
+        for (ParameterField *f : window->findChildren<ParameterField *>()) {
+            if (f->parameter().key == key)
+                return f;
+        }
+        return nullptr;
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QApplication::setOrganizationName(QStringLiteral("StepComTest"));
+    }
+
+    void init()
+    {
+        Language::instance().setLanguage(QStringLiteral("en"));
+        session = std::make_unique<DeviceSession>();
+        window = std::make_unique<MainWindow>(session.get());
+        window->show();
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->connectSimulator();
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
+    }
+
+    void cleanup()
+    {
+        window.reset();
+        session.reset();
+    }
+
+    void editWriteAndTheSimulatorHoldsIt()
+    {
+        ParameterField *speed = field(QStringLiteral("motor1.speed"));
+        QVERIFY(speed);
+        speed->enterText(QStringLiteral("450"));
+        QCOMPARE(session->store()->state(QStringLiteral("motor1.speed")),
+                 ParameterStore::State::Edited);
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // nothing written yet
+        QVERIFY(window->action(QStringLiteral("writeChanges"))->isEnabled());
+        window->action(QStringLiteral("writeChanges"))->trigger();
+        QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
+        // the dialog shows what will change before anything is sent
+        QTableWidget *table = window->writeDialog()->table();
+        QCOMPARE(table->rowCount(), 1);
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("300 rpm"));
+        QCOMPARE(table->item(0, 3)->text(), QStringLiteral("450 rpm"));
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
+        window->writeDialog()->findChild<QPushButton *>(QStringLiteral("writeButton"))->click();
+        QTRY_COMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
+        QTRY_COMPARE(session->store()->state(QStringLiteral("motor1.speed")),
+                     ParameterStore::State::InSync);
+        QVERIFY(session->store()->unsavedToFlash());
+    }
+
+    void rejectedValueWritesNothing()
+    {
+        int writes = 0;
+        connect(session->link(), &ModbusLink::dispatched, this,
+                [&writes](quint64, const Request &r) {
+                    writes += r.type != Request::Type::ReadHolding ? 1 : 0;
+                });
+        ParameterField *speed = field(QStringLiteral("motor1.speed"));
+        QSignalSpy rejected(speed, &ParameterField::rejected);
+        speed->enterText(QStringLiteral("99999"));
+        QCOMPARE(rejected.size(), 1);
+        QVERIFY(rejected.at(0).at(0).toString().contains(QStringLiteral("out of range")));
+        QVERIFY(!session->store()->hasEdits());
+        QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
+        QTest::qWait(300);
+        QCOMPARE(writes, 0);
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
+    }
+
+    void emergencyStopFromInsideADialogGoesFirst()
+    {
+        QSignalSpy done(session.get(), &DeviceSession::commandFinished);
+        session->command(QStringLiteral("motor1.forward"));
+        QTRY_COMPARE(done.size(), 1);
+        QTRY_VERIFY(sim()->running(1));
+        field(QStringLiteral("motor1.speed"))->enterText(QStringLiteral("200"));
+        window->writeChanges();
+        QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
+        QStringList order;
+        connect(session->link(), &ModbusLink::dispatched, this,
+                [&order](quint64, const Request &r) { order << r.what; });
+        session->readAll(); // a queue of work in front
+        QTest::keyClick(window->writeDialog()->table(), Qt::Key_F12);
+        QTRY_VERIFY(order.contains(QStringLiteral("estop")));
+        QVERIFY2(order.indexOf(QStringLiteral("estop")) <= 1,
+                 qPrintable(order.join(QLatin1Char(','))));
+        QTRY_VERIFY(!sim()->running(1));
+        QVERIFY(window->writeDialog()->isVisible()); // the stop never asked anything
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // and wrote nothing else
+    }
+
+    void languageSwitchRetranslatesTheOpenWindow()
+    {
+        QCOMPARE(window->action(QStringLiteral("readAll"))->text(), QStringLiteral("&Read all"));
+        QVERIFY(Language::instance().setLanguage(QStringLiteral("zh_CN")));
+        QCOMPARE(window->action(QStringLiteral("readAll"))->text(), QStringLiteral("读取全部(&R)"));
+        QCOMPARE(window->emergencyStopButton()->text(), QStringLiteral("急停"));
+        const QLabel *label = nullptr;
+        for (QLabel *l : window->findChildren<QLabel *>()) {
+            if (l->property("parameterKey").toString() == QLatin1String("motor1.microsteps"))
+                label = l;
+        }
+        QVERIFY(label);
+        QCOMPARE(label->text(), QStringLiteral("细分:"));
+        Language::instance().setLanguage(QStringLiteral("en"));
+        QCOMPARE(window->action(QStringLiteral("readAll"))->text(), QStringLiteral("&Read all"));
+    }
+
+    void closingWithEditsAsks()
+    {
+        field(QStringLiteral("motor2.speed"))->enterText(QStringLiteral("123"));
+        QVERIFY(!window->close());
+        QTRY_VERIFY(window->closeQuestion() && window->closeQuestion()->isVisible());
+        QVERIFY(window->isVisible());
+        window->closeQuestion()->button(QMessageBox::Discard)->click();
+        QTRY_VERIFY(!window->isVisible());
+        QCOMPARE(*sim()->value(QStringLiteral("motor2.speed")), 300); // discarded, not written
+    }
+
+    void closingWithoutEditsJustCloses() { QVERIFY(window->close()); }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"

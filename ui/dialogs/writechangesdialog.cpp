@@ -1,0 +1,63 @@
+#include "dialogs/writechangesdialog.h"
+
+#include "device/parameterstore.h"
+#include "language.h"
+
+#include <QDialogButtonBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+namespace stepcom {
+
+WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, QWidget *parent)
+    : QDialog(parent)
+    , m_writes(store.pendingWrites())
+    , m_table(new QTableWidget(int(m_writes.size()), 4, this))
+    , m_summary(new QLabel(this))
+{
+    setWindowTitle(tr("Write changes to the controller"));
+    const QString lang = Language::instance().current();
+    m_table->setHorizontalHeaderLabels(
+        {tr("Parameter"), tr("Register"), tr("Controller holds"), tr("New value")});
+    m_table->verticalHeader()->hide();
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionMode(QAbstractItemView::NoSelection);
+    for (int row = 0; row < m_writes.size(); ++row) {
+        const Parameter &p = *m_writes.at(row).parameter;
+        const std::optional<qint64> device = store.deviceValue(p.key);
+        auto *name = new QTableWidgetItem(p.label.text(lang));
+        name->setToolTip(p.key);
+        m_table->setItem(row, 0, name);
+        m_table->setItem(row, 1, new QTableWidgetItem(p.registerName()));
+        m_table->setItem(
+            row, 2, new QTableWidgetItem(device ? p.displayRaw(*device, lang) : tr("unknown")));
+        auto *value = new QTableWidgetItem(p.displayRaw(m_writes.at(row).raw, lang));
+        QFont bold = value->font();
+        bold.setBold(true);
+        value->setFont(bold);
+        m_table->setItem(row, 3, value);
+    }
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_summary->setWordWrap(true);
+    m_summary->setText(tr("%n parameter(s) will be written and then read back to verify. "
+                          "They stay in the controller's RAM until you save to flash.",
+                          nullptr, int(m_writes.size())));
+    auto *buttons = new QDialogButtonBox(this);
+    QPushButton *write = buttons->addButton(tr("&Write"), QDialogButtonBox::AcceptRole);
+    write->setObjectName(QStringLiteral("writeButton"));
+    buttons->addButton(QDialogButtonBox::Cancel);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_summary);
+    layout->addWidget(m_table);
+    layout->addWidget(buttons);
+    resize(sizeHint().expandedTo(QSize(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 80,
+                                       fontMetrics().height() * 16)));
+}
+
+} // namespace stepcom

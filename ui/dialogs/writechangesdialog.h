@@ -1,0 +1,31 @@
+#pragma once
+
+#include "device/writeplanner.h"
+
+#include <QDialog>
+
+class QTableWidget;
+class QLabel;
+
+namespace stepcom {
+
+class ParameterStore;
+
+// Shows exactly what "Write changes" will write -- each parameter, its register, what the
+// controller holds now and the new value -- before anything is sent.
+class WriteChangesDialog : public QDialog
+{
+    Q_OBJECT
+public:
+    WriteChangesDialog(const ParameterStore &store, QWidget *parent = nullptr);
+    // The writes shown, as they will be sent if the user accepts.
+    const QList<ParameterWrite> &writes() const { return m_writes; }
+    QTableWidget *table() const { return m_table; }
+
+private:
+    QList<ParameterWrite> m_writes;
+    QTableWidget *m_table;
+    QLabel *m_summary;
+};
+
+} // namespace stepcom

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <QKeySequence>
+#include <QObject>
+
+class QToolButton;
+
+namespace stepcom {
+
+class DeviceSession;
+
+// The stop that always works: a red button for the toolbar and a key (F12) caught by an
+// application-wide event filter, so it fires from every page and from inside any dialog,
+// modal or not. It never asks for confirmation.
+class EmergencyStop : public QObject
+{
+    Q_OBJECT
+public:
+    explicit EmergencyStop(DeviceSession *session, QObject *parent = nullptr);
+    ~EmergencyStop() override;
+
+    static QKeySequence shortcut() { return QKeySequence(Qt::Key_F12); }
+    // A new red button wired to trigger(); the caller places it.
+    QToolButton *createButton(QWidget *parent);
+    void trigger();
+
+Q_SIGNALS:
+    void triggered();
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
+private:
+    DeviceSession *m_session;
+};
+
+} // namespace stepcom

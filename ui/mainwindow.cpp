@@ -1,0 +1,320 @@
+#include "mainwindow.h"
+
+#include "bus/modbuslink.h"
+#include "device/devicesession.h"
+#include "dialogs/writechangesdialog.h"
+#include "emergencystop.h"
+#include "language.h"
+#include "pages/connectionpage.h"
+#include "pages/devicepage.h"
+#include "pages/inputspage.h"
+#include "pages/motorpage.h"
+#include "widgets/linkstatus.h"
+#include "widgets/messageview.h"
+#include "widgets/trafficview.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QHBoxLayout>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QToolButton>
+
+namespace stepcom {
+
+MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
+    : QMainWindow(parent)
+    , m_session(session)
+    , m_estop(new EmergencyStop(session, this))
+    , m_sidebar(new QListWidget(this))
+    , m_stack(new QStackedWidget(this))
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    auto *splitter = new QSplitter(this);
+    splitter->addWidget(m_sidebar);
+    splitter->addWidget(m_stack);
+    splitter->setStretchFactor(1, 1);
+    m_sidebar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
+    m_sidebar->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 28);
+    setCentralWidget(splitter);
+    connect(m_sidebar, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
+
+    addPage(new ConnectionPage(session, this));
+    for (int n = 1; n <= session->map().blockCount(QStringLiteral("motor")); ++n)
+        addPage(new MotorPage(session, n, this));
+    addPage(new InputsPage(session, this));
+    addPage(new DevicePage(session, this));
+    m_sidebar->setCurrentRow(0);
+
+    createActions();
+    createMenus();
+    createDocks();
+    m_linkStatus = new LinkStatus(session, this);
+    statusBar()->addPermanentWidget(m_linkStatus);
+
+    connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
+    connect(session->store(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
+    connect(session, &DeviceSession::message, this,
+            [this](DeviceSession::Severity s, const QString &text) {
+                m_messages->add(s, text);
+                statusBar()->showMessage(text, 5000);
+            });
+    connect(session, &DeviceSession::connected, this, [this](bool ok, const QString &) {
+        if (ok && currentPage() && qobject_cast<ConnectionPage *>(currentPage()))
+            showPage(1); // connected: on to the first motor
+    });
+    retranslate();
+    updateActions();
+    restoreLayout();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::addPage(Page *page)
+{
+    m_pages << page;
+    m_stack->addWidget(page);
+    m_sidebar->addItem(page->title());
+}
+
+WriteChangesDialog *MainWindow::writeDialog() const
+{
+    return m_writeDialog;
+}
+
+QMessageBox *MainWindow::closeQuestion() const
+{
+    return m_closeQuestion;
+}
+
+Page *MainWindow::currentPage() const
+{
+    return qobject_cast<Page *>(m_stack->currentWidget());
+}
+
+void MainWindow::showPage(int index)
+{
+    m_sidebar->setCurrentRow(index);
+}
+
+QAction *MainWindow::action(const QString &objectName) const
+{
+    return findChild<QAction *>(objectName);
+}
+
+void MainWindow::createActions()
+{
+    auto make = [this](const char *name, const QKeySequence &key, auto slot) {
+        auto *a = new QAction(this);
+        a->setObjectName(QLatin1String(name));
+        if (!key.isEmpty())
+            a->setShortcut(key);
+        connect(a, &QAction::triggered, this, slot);
+        return a;
+    };
+    m_readAll = make("readAll", QKeySequence::Refresh, [this] { m_session->readAll(); });
+    m_write =
+        make("writeChanges", QKeySequence(Qt::CTRL | Qt::Key_Return), [this] { writeChanges(); });
+    m_revert = make("revert", QKeySequence(Qt::CTRL | Qt::Key_R),
+                    [this] { m_session->store()->revertAll(); });
+    m_save = make("saveToFlash", QKeySequence::Save, [this] { m_session->saveToFlash(); });
+    m_disconnect = make("disconnect", QKeySequence(), [this] { m_session->disconnectFrom(); });
+    m_estopAction = make("emergencyStop", QKeySequence(), [this] { m_estop->trigger(); });
+    m_quit = make("quit", QKeySequence::Quit, [this] { close(); });
+    m_about = make("about", QKeySequence(), [this] {
+        auto *box = new QMessageBox(QMessageBox::Information, tr("About StepCom"),
+                                    tr("<b>StepCom %1</b><br>Commissioning tool for 2-axis stepper "
+                                       "controllers over Modbus RTU/TCP.<br>GPL-3.0-or-later.")
+                                        .arg(QStringLiteral(STEPCOM_VERSION)),
+                                    QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
+    m_languages = new QActionGroup(this);
+    for (const QString &lang : Language::available()) {
+        auto *a = new QAction(Language::nativeName(lang), m_languages);
+        a->setObjectName(QStringLiteral("language_") + lang);
+        a->setCheckable(true);
+        a->setChecked(Language::instance().current() == lang);
+        connect(a, &QAction::triggered, this, [lang] { Language::instance().setLanguage(lang); });
+    }
+    m_toolbar = addToolBar(QString());
+    m_toolbar->setObjectName(QStringLiteral("mainToolbar"));
+    m_toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    m_toolbar->setMovable(false);
+    m_toolbar->addAction(m_readAll);
+    m_toolbar->addAction(m_write);
+    m_toolbar->addAction(m_revert);
+    m_toolbar->addAction(m_save);
+    m_toolbar->addSeparator();
+    m_toolbar->addAction(m_disconnect);
+    auto *spacer = new QWidget(m_toolbar);
+    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    m_toolbar->addWidget(spacer);
+    m_estopButton = m_estop->createButton(m_toolbar);
+    m_toolbar->addWidget(m_estopButton);
+}
+
+void MainWindow::createMenus()
+{
+    m_fileMenu = menuBar()->addMenu(QString());
+    m_fileMenu->addAction(m_quit);
+    m_deviceMenu = menuBar()->addMenu(QString());
+    m_deviceMenu->addActions({m_readAll, m_write, m_revert, m_save});
+    m_deviceMenu->addSeparator();
+    m_deviceMenu->addAction(m_disconnect);
+    m_deviceMenu->addSeparator();
+    m_deviceMenu->addAction(m_estopAction);
+    m_viewMenu = menuBar()->addMenu(QString());
+    m_languageMenu = menuBar()->addMenu(QString());
+    m_languageMenu->addActions(m_languages->actions());
+    m_helpMenu = menuBar()->addMenu(QString());
+    m_helpMenu->addAction(m_about);
+}
+
+void MainWindow::createDocks()
+{
+    m_traffic = new TrafficView(this);
+    m_traffic->setLog(m_session->link()->traffic());
+    m_trafficDock = new QDockWidget(this);
+    m_trafficDock->setObjectName(QStringLiteral("trafficDock"));
+    m_trafficDock->setWidget(m_traffic);
+    addDockWidget(Qt::BottomDockWidgetArea, m_trafficDock);
+    m_messages = new MessageView(this);
+    m_messageDock = new QDockWidget(this);
+    m_messageDock->setObjectName(QStringLiteral("messageDock"));
+    m_messageDock->setWidget(m_messages);
+    addDockWidget(Qt::BottomDockWidgetArea, m_messageDock);
+    tabifyDockWidget(m_trafficDock, m_messageDock);
+    m_messageDock->raise();
+    m_viewMenu->addAction(m_trafficDock->toggleViewAction());
+    m_viewMenu->addAction(m_messageDock->toggleViewAction());
+}
+
+void MainWindow::retranslate()
+{
+    setWindowTitle(tr("StepCom — stepper controller commissioning"));
+    m_readAll->setText(tr("&Read all"));
+    m_readAll->setToolTip(tr("Read every parameter from the controller (%1)")
+                              .arg(m_readAll->shortcut().toString(QKeySequence::NativeText)));
+    m_write->setText(tr("&Write changes…"));
+    m_write->setToolTip(tr("Show the edited values, then write them and verify (%1)")
+                            .arg(m_write->shortcut().toString(QKeySequence::NativeText)));
+    m_revert->setText(tr("Re&vert"));
+    m_revert->setToolTip(tr("Drop every edit and show what the controller holds"));
+    m_save->setText(tr("&Save to flash"));
+    m_save->setToolTip(
+        tr("Save the controller's parameters to its non-volatile memory (coil 00096)"));
+    m_disconnect->setText(tr("&Disconnect"));
+    m_estopAction->setText(tr("&Emergency stop"));
+    m_estopAction->setToolTip(
+        tr("All motors and outputs off, at once (key: %1)")
+            .arg(EmergencyStop::shortcut().toString(QKeySequence::NativeText)));
+    m_estopButton->setText(tr("E-STOP"));
+    m_estopButton->setToolTip(m_estopAction->toolTip());
+    m_quit->setText(tr("&Quit"));
+    m_about->setText(tr("&About StepCom"));
+    m_fileMenu->setTitle(tr("&File"));
+    m_deviceMenu->setTitle(tr("&Device"));
+    m_viewMenu->setTitle(tr("&View"));
+    m_languageMenu->setTitle(tr("&Language"));
+    m_helpMenu->setTitle(tr("&Help"));
+    m_toolbar->setWindowTitle(tr("Main toolbar"));
+    m_trafficDock->setWindowTitle(tr("Traffic"));
+    m_messageDock->setWindowTitle(tr("Messages"));
+    for (int i = 0; i < m_pages.size(); ++i)
+        m_sidebar->item(i)->setText(m_pages.at(i)->title());
+    for (QAction *a : m_languages->actions())
+        a->setChecked(a->objectName() ==
+                      QStringLiteral("language_") + Language::instance().current());
+}
+
+void MainWindow::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QMainWindow::changeEvent(event);
+}
+
+void MainWindow::updateActions()
+{
+    const bool connected = m_session->isConnected();
+    const bool edits = m_session->store()->hasEdits();
+    m_readAll->setEnabled(connected);
+    m_write->setEnabled(connected && edits);
+    m_revert->setEnabled(edits);
+    m_save->setEnabled(connected);
+    m_disconnect->setEnabled(connected);
+}
+
+void MainWindow::writeChanges()
+{
+    if (!m_session->store()->hasEdits() || !m_session->isConnected())
+        return;
+    if (m_writeDialog)
+        m_writeDialog->close();
+    m_writeDialog = new WriteChangesDialog(*m_session->store(), this);
+    m_writeDialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(m_writeDialog, &QDialog::accepted, this,
+            [this, dialog = m_writeDialog.data()] { m_session->write(dialog->writes()); });
+    m_writeDialog->open();
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (m_session->store()->hasEdits() && !m_closeConfirmed) {
+        event->ignore();
+        if (m_closeQuestion)
+            return;
+        m_closeQuestion = new QMessageBox(QMessageBox::Warning, tr("Unwritten changes"),
+                                          tr("%n edited value(s) were never written to the "
+                                             "controller. Close anyway and lose them?",
+                                             nullptr, int(m_session->store()->editedKeys().size())),
+                                          QMessageBox::Discard | QMessageBox::Cancel, this);
+        m_closeQuestion->setAttribute(Qt::WA_DeleteOnClose);
+        m_closeQuestion->setDefaultButton(QMessageBox::Cancel);
+        connect(m_closeQuestion, &QMessageBox::finished, this, [this](int result) {
+            if (result == QMessageBox::Discard) {
+                m_closeConfirmed = true;
+                close();
+            }
+        });
+        m_closeQuestion->open();
+        return;
+    }
+    saveLayout();
+    event->accept();
+}
+
+void MainWindow::restoreLayout()
+{
+    QSettings settings;
+    settings.beginGroup(QStringLiteral("window"));
+    if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray())) {
+        // First start: room for a page beside the sidebar, docks a quarter of the height.
+        const QFontMetrics fm = fontMetrics();
+        resize(fm.horizontalAdvance(QLatin1Char('x')) * 150, fm.height() * 48);
+    }
+    if (!restoreState(settings.value(QStringLiteral("state")).toByteArray()))
+        resizeDocks({m_trafficDock, m_messageDock},
+                    {fontMetrics().height() * 9, fontMetrics().height() * 9}, Qt::Vertical);
+}
+
+void MainWindow::saveLayout()
+{
+    QSettings settings;
+    settings.beginGroup(QStringLiteral("window"));
+    settings.setValue(QStringLiteral("geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("state"), saveState());
+}
+
+} // namespace stepcom

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <QMainWindow>
+#include <QPointer>
+
+class QAction;
+class QActionGroup;
+class QDockWidget;
+class QListWidget;
+class QMessageBox;
+class QStackedWidget;
+class QToolButton;
+
+namespace stepcom {
+
+class DeviceSession;
+class EmergencyStop;
+class LinkStatus;
+class MessageView;
+class Page;
+class TrafficView;
+class WriteChangesDialog;
+
+// Composes the pages, docks, toolbar and menus around one DeviceSession. It does no page's
+// work: pages are views of the session's store; actions call the session.
+class MainWindow : public QMainWindow
+{
+    Q_OBJECT
+public:
+    explicit MainWindow(DeviceSession *session, QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    DeviceSession *session() const { return m_session; }
+    EmergencyStop *emergencyStop() const { return m_estop; }
+    QToolButton *emergencyStopButton() const { return m_estopButton; }
+    const QList<Page *> &pages() const { return m_pages; }
+    Page *currentPage() const;
+    void showPage(int index);
+    TrafficView *trafficView() const { return m_traffic; }
+    MessageView *messageView() const { return m_messages; }
+    // The dialogs a test (or a curious user) may want to reach while they are open.
+    WriteChangesDialog *writeDialog() const;
+    QMessageBox *closeQuestion() const;
+    QAction *action(const QString &objectName) const;
+
+    // Ask before writing: opens the write dialog (non-modal to the event loop).
+    void writeChanges();
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+    void changeEvent(QEvent *event) override;
+
+private:
+    void createActions();
+    void createMenus();
+    void createDocks();
+    void addPage(Page *page);
+    void retranslate();
+    void updateActions();
+    void restoreLayout();
+    void saveLayout();
+
+    DeviceSession *m_session;
+    EmergencyStop *m_estop;
+    QToolButton *m_estopButton = nullptr;
+    QListWidget *m_sidebar;
+    QStackedWidget *m_stack;
+    QList<Page *> m_pages;
+    TrafficView *m_traffic = nullptr;
+    MessageView *m_messages = nullptr;
+    QDockWidget *m_trafficDock = nullptr;
+    QDockWidget *m_messageDock = nullptr;
+    LinkStatus *m_linkStatus = nullptr;
+    QPointer<WriteChangesDialog> m_writeDialog;
+    QPointer<QMessageBox> m_closeQuestion;
+    bool m_closeConfirmed = false;
+
+    QAction *m_readAll = nullptr;
+    QAction *m_write = nullptr;
+    QAction *m_revert = nullptr;
+    QAction *m_save = nullptr;
+    QAction *m_disconnect = nullptr;
+    QAction *m_estopAction = nullptr;
+    QAction *m_quit = nullptr;
+    QAction *m_about = nullptr;
+    QActionGroup *m_languages = nullptr;
+    QMenu *m_fileMenu = nullptr;
+    QMenu *m_deviceMenu = nullptr;
+    QMenu *m_viewMenu = nullptr;
+    QMenu *m_languageMenu = nullptr;
+    QMenu *m_helpMenu = nullptr;
+    QToolBar *m_toolbar = nullptr;
+};
+
+} // namespace stepcom

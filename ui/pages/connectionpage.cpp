@@ -1,0 +1,544 @@
+#include "pages/connectionpage.h"
+
+#include "bus/modbuslink.h"
+#include "device/devicesession.h"
+#include "dialogs/busscandialog.h"
+#include "sim/simhost.h"
+#include "widgets/led.h"
+
+#include <QButtonGroup>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSerialPortInfo>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStyle>
+#include <QVBoxLayout>
+
+namespace stepcom {
+
+namespace {
+
+const auto kGroup = QStringLiteral("connection");
+
+QFormLayout *newForm(QWidget *parent)
+{
+    auto *form = new QFormLayout(parent);
+    // Spin boxes at their natural width read better than ones stretched across the page.
+    form->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
+    return form;
+}
+
+// A form row whose label text is set (and re-set) in retranslate().
+template<class W>
+W *addRow(QFormLayout *form, W *field)
+{
+    auto *label = new QLabel(field->parentWidget());
+    label->setBuddy(field);
+    form->addRow(label, field);
+    return field;
+}
+
+void setRow(QFormLayout *form, QWidget *field, const QString &label, const QString &toolTip)
+{
+    if (auto *l = qobject_cast<QLabel *>(form->labelForField(field)))
+        l->setText(label);
+    field->setToolTip(toolTip);
+}
+
+QComboBox *newCombo(QWidget *parent, const QList<std::pair<QString, int>> &items)
+{
+    auto *combo = new QComboBox(parent);
+    for (const auto &[text, value] : items)
+        combo->addItem(text, value);
+    return combo;
+}
+
+QSpinBox *newSpin(QWidget *parent, int min, int max, int step = 1)
+{
+    auto *spin = new QSpinBox(parent);
+    spin->setRange(min, max);
+    spin->setSingleStep(step);
+    return spin;
+}
+
+QPushButton *newButton(QWidget *parent, const char *name)
+{
+    auto *button = new QPushButton(parent);
+    button->setObjectName(QLatin1String(name));
+    return button;
+}
+
+} // namespace
+
+ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
+    : Page(session, parent)
+{
+    buildUi();
+    refreshPorts();
+    loadSettings();
+
+    connect(m_transportGroup, &QButtonGroup::idClicked, this, [this] { updateVisibility(); });
+    connect(m_refresh, &QPushButton::clicked, this, &ConnectionPage::refreshPorts);
+    connect(m_connect, &QPushButton::clicked, this, &ConnectionPage::connectNow);
+    connect(m_disconnect, &QPushButton::clicked, this, &ConnectionPage::disconnectNow);
+    connect(m_scan, &QPushButton::clicked, this, [this] { openBusScan(); });
+
+    connect(session, &DeviceSession::linkStateChanged, this, &ConnectionPage::updateState);
+    connect(session, &DeviceSession::connected, this, &ConnectionPage::onConnected);
+    connect(session, &DeviceSession::disconnected, this,
+            [this] { setNote(false, [] { return tr("Disconnected."); }); });
+    // Connected after the session's own handler of `lost`, so this note wins over the plain one.
+    connect(session->link(), &ModbusLink::lost, this, [this](const QString &reason) {
+        setNote(true, [reason] { return tr("Connection lost: %1").arg(reason); });
+    });
+    connect(session, &DeviceSession::linkChanged, this, [this](const LinkSettings &s) {
+        // The Device page moved the controller to a new id or baud: follow and remember it.
+        if (!usesSimulator()) {
+            applySettings(s);
+            saveSettings();
+        }
+    });
+
+    retranslate();
+    updateVisibility();
+}
+
+ConnectionPage::~ConnectionPage()
+{
+    saveSettings();
+}
+
+void ConnectionPage::buildUi()
+{
+    m_transportBox = new QGroupBox(this);
+    m_transportGroup = new QButtonGroup(this);
+    auto *transportRow = new QHBoxLayout(m_transportBox);
+    for (QRadioButton **radio : {&m_serialRadio, &m_tcpRadio, &m_simRadio}) {
+        *radio = new QRadioButton(m_transportBox);
+        m_transportGroup->addButton(*radio, int(m_transportGroup->buttons().size()));
+        transportRow->addWidget(*radio);
+    }
+    transportRow->addStretch(1);
+    m_serialRadio->setChecked(true);
+
+    m_serialBox = new QGroupBox(this);
+    m_serialForm = newForm(m_serialBox);
+    m_port = new QComboBox(m_serialBox);
+    m_port->setObjectName(QStringLiteral("port"));
+    m_port->setEditable(true); // pseudo-terminals are never listed: any path can be typed
+    m_port->setInsertPolicy(QComboBox::NoInsert);
+    m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_port->setMinimumContentsLength(28);
+    m_refresh = newButton(m_serialBox, "refresh");
+    auto *portRow = new QHBoxLayout;
+    portRow->addWidget(m_port, 1);
+    portRow->addWidget(m_refresh);
+    m_portLabel = new QLabel(m_serialBox);
+    m_portLabel->setBuddy(m_port);
+    m_serialForm->addRow(m_portLabel, portRow);
+    QList<std::pair<QString, int>> bauds;
+    for (int baud : LinkSettings::supportedBauds())
+        bauds.append({QString::number(baud), baud});
+    m_baud = addRow(m_serialForm, newCombo(m_serialBox, bauds));
+    m_parity = addRow(m_serialForm, newCombo(m_serialBox, {{QString(), QSerialPort::NoParity},
+                                                           {QString(), QSerialPort::EvenParity},
+                                                           {QString(), QSerialPort::OddParity}}));
+    m_stopBits =
+        addRow(m_serialForm, newCombo(m_serialBox, {{QStringLiteral("1"), QSerialPort::OneStop},
+                                                    {QStringLiteral("2"), QSerialPort::TwoStop}}));
+
+    m_tcpBox = new QGroupBox(this);
+    m_tcpForm = newForm(m_tcpBox);
+    m_tcpForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    m_host = addRow(m_tcpForm, new QLineEdit(m_tcpBox));
+    m_host->setObjectName(QStringLiteral("host"));
+    m_tcpPort = addRow(m_tcpForm, newSpin(m_tcpBox, 1, 65535));
+    m_tcpPort->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
+
+    m_deviceBox = new QGroupBox(this);
+    m_deviceForm = newForm(m_deviceBox);
+    m_deviceId = addRow(m_deviceForm, newSpin(m_deviceBox, 1, 255));
+    m_timeout = addRow(m_deviceForm, newSpin(m_deviceBox, 20, 60000, 50));
+    m_retries = addRow(m_deviceForm, newSpin(m_deviceBox, 0, 10));
+
+    m_simBox = new QGroupBox(this);
+    m_simText = new QLabel(m_simBox);
+    m_simText->setWordWrap(true);
+    (new QVBoxLayout(m_simBox))->addWidget(m_simText);
+
+    m_statusBox = new QGroupBox(this);
+    m_led = new Led(m_statusBox);
+    m_stateIcon = new QLabel(m_statusBox);
+    m_status = new QLabel(m_statusBox);
+    m_status->setObjectName(QStringLiteral("status"));
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse); // errors get copied into tickets
+    m_connect = newButton(m_statusBox, "connect");
+    m_connect->setDefault(true);
+    m_disconnect = newButton(m_statusBox, "disconnect");
+    m_scan = newButton(m_statusBox, "scan");
+    auto *statusLine = new QHBoxLayout;
+    statusLine->addWidget(m_led, 0, Qt::AlignTop);
+    statusLine->addWidget(m_stateIcon, 0, Qt::AlignTop);
+    statusLine->addWidget(m_status, 1);
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_connect);
+    buttons->addWidget(m_disconnect);
+    buttons->addStretch(1);
+    buttons->addWidget(m_scan);
+    auto *statusLayout = new QVBoxLayout(m_statusBox);
+    statusLayout->addLayout(statusLine);
+    statusLayout->addLayout(buttons);
+
+    auto *column = new QVBoxLayout;
+    for (QWidget *box : {m_transportBox, m_serialBox, m_tcpBox, m_simBox, m_deviceBox, m_statusBox})
+        column->addWidget(box);
+    column->addStretch(1);
+    // A readable column on a wide window instead of fields stretched across the screen.
+    auto *outer = new QHBoxLayout(this);
+    outer->addLayout(column, 3);
+    outer->addStretch(1);
+
+    QWidget *order[] = {m_serialRadio, m_tcpRadio, m_simRadio,   m_port,    m_refresh,  m_baud,
+                        m_parity,      m_stopBits, m_host,       m_tcpPort, m_deviceId, m_timeout,
+                        m_retries,     m_connect,  m_disconnect, m_scan};
+    for (size_t i = 1; i < std::size(order); ++i)
+        setTabOrder(order[i - 1], order[i]);
+}
+
+QString ConnectionPage::title() const
+{
+    return tr("Connection");
+}
+
+void ConnectionPage::retranslate()
+{
+    m_transportBox->setTitle(tr("Connect through"));
+    m_serialRadio->setText(tr("&Serial (RTU)"));
+    m_serialRadio->setToolTip(tr("Modbus RTU over RS-485 or RS-232, e.g. a USB adapter"));
+    m_tcpRadio->setText(tr("Modbus &TCP"));
+    m_tcpRadio->setToolTip(tr("Modbus TCP, e.g. through an Ethernet-to-RS-485 gateway"));
+    m_simRadio->setText(tr("Built-in si&mulator"));
+    m_simRadio->setToolTip(tr("A simulated controller inside StepCom: try every page without "
+                              "a machine"));
+
+    m_serialBox->setTitle(tr("Serial port"));
+    m_portLabel->setText(tr("&Port:"));
+    m_port->setToolTip(tr("The serial port, e.g. /dev/ttyUSB0 or COM3. Any path can be typed: "
+                          "pseudo-terminals are not listed."));
+    m_port->lineEdit()->setPlaceholderText(tr("/dev/ttyUSB0 or a path"));
+    m_refresh->setText(tr("Re&fresh"));
+    m_refresh->setToolTip(tr("List the serial ports again (after plugging in an adapter)"));
+    setRow(m_serialForm, m_baud, tr("&Baud rate:"),
+           tr("The controller's baud rate (register 40213); factory setting 9600"));
+    setRow(m_serialForm, m_parity, tr("Parit&y:"),
+           tr("The controller uses no parity (8N1) unless set otherwise"));
+    m_parity->setItemText(0, tr("None"));
+    m_parity->setItemText(1, tr("Even"));
+    m_parity->setItemText(2, tr("Odd"));
+    setRow(m_serialForm, m_stopBits, tr("St&op bits:"), tr("The controller uses 1 stop bit"));
+
+    m_tcpBox->setTitle(tr("Modbus TCP"));
+    setRow(m_tcpForm, m_host, tr("&Host:"),
+           tr("Host name or IP address of the gateway or controller"));
+    m_host->setPlaceholderText(tr("192.168.0.7"));
+    setRow(m_tcpForm, m_tcpPort, tr("TCP p&ort:"),
+           tr("TCP port of the Modbus server; 502 is the standard"));
+
+    m_deviceBox->setTitle(tr("Controller"));
+    setRow(m_deviceForm, m_deviceId, tr("Device &id:"),
+           tr("The controller's Modbus address (register 40212); factory setting 1. Use Scan "
+              "bus when it is not known."));
+    setRow(m_deviceForm, m_timeout, tr("Tim&eout:"),
+           tr("How long to wait for each answer before trying again"));
+    m_timeout->setSuffix(tr(" ms"));
+    setRow(m_deviceForm, m_retries, tr("&Retries:"),
+           tr("How often an unanswered request is sent again"));
+
+    m_simBox->setTitle(tr("Built-in simulator"));
+    m_simText->setText(tr("A simulated controller runs inside StepCom and answers like the real "
+                          "one: every page can be tried without a machine. Nothing reaches "
+                          "real hardware."));
+
+    m_statusBox->setTitle(tr("Link"));
+    m_connect->setText(tr("&Connect"));
+    m_connect->setToolTip(tr("Connect and read every parameter (nothing is written)"));
+    m_disconnect->setText(tr("&Disconnect"));
+    m_disconnect->setToolTip(tr("Close the port; edits that were not written stay"));
+    m_scan->setText(tr("Sc&an bus…"));
+    m_scan->setToolTip(tr("Find controllers whose device id or baud rate is not known"));
+    updateState();
+}
+
+ConnectionPage::Transport ConnectionPage::transport() const
+{
+    return Transport(m_transportGroup->checkedId());
+}
+
+void ConnectionPage::setTransport(Transport transport)
+{
+    m_transportGroup->button(int(transport))->setChecked(true);
+    updateVisibility();
+}
+
+void ConnectionPage::updateVisibility()
+{
+    const Transport t = transport();
+    if (t != Transport::Simulator)
+        m_realTransport = t;
+    m_serialBox->setVisible(t == Transport::Serial);
+    m_tcpBox->setVisible(t == Transport::Tcp);
+    m_deviceBox->setVisible(t != Transport::Simulator);
+    m_simBox->setVisible(t == Transport::Simulator);
+    updateState();
+}
+
+QString ConnectionPage::portFromCombo() const
+{
+    const QString text = m_port->currentText().trimmed();
+    // A listed entry shows "ttyUSB0 — description"; its data is the path to open.
+    const int index = m_port->findText(text);
+    if (index >= 0 && !m_port->itemData(index).toString().isEmpty())
+        return m_port->itemData(index).toString();
+    return text;
+}
+
+void ConnectionPage::setPortInCombo(const QString &port)
+{
+    const int index = m_port->findData(port);
+    if (index >= 0)
+        m_port->setCurrentIndex(index);
+    else
+        m_port->setEditText(port);
+}
+
+void ConnectionPage::refreshPorts()
+{
+    const QString current = portFromCombo();
+    m_port->clear();
+    for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts()) {
+        QString detail = info.description();
+        if (!info.manufacturer().isEmpty() && !detail.contains(info.manufacturer()))
+            detail = detail.isEmpty() ? info.manufacturer()
+                                      : QStringLiteral("%1, %2").arg(detail, info.manufacturer());
+        const QString text = detail.isEmpty()
+                                 ? info.portName()
+                                 : QStringLiteral("%1 — %2").arg(info.portName(), detail);
+        m_port->addItem(text, info.systemLocation());
+    }
+    setPortInCombo(current);
+}
+
+LinkSettings ConnectionPage::currentSettings() const
+{
+    LinkSettings s;
+    s.transport = m_realTransport == Transport::Tcp ? LinkSettings::Transport::Tcp
+                                                    : LinkSettings::Transport::Rtu;
+    s.portName = portFromCombo();
+    s.baud = m_baud->currentData().toInt();
+    s.parity = QSerialPort::Parity(m_parity->currentData().toInt());
+    s.stopBits = QSerialPort::StopBits(m_stopBits->currentData().toInt());
+    s.host = m_host->text().trimmed();
+    s.tcpPort = m_tcpPort->value();
+    s.deviceId = m_deviceId->value();
+    s.timeoutMs = m_timeout->value();
+    s.retries = m_retries->value();
+    return s;
+}
+
+void ConnectionPage::applySettings(const LinkSettings &s)
+{
+    setPortInCombo(s.portName);
+    const int baud = m_baud->findData(s.baud);
+    m_baud->setCurrentIndex(baud >= 0 ? baud : m_baud->findData(9600));
+    m_parity->setCurrentIndex(std::max(0, m_parity->findData(int(s.parity))));
+    m_stopBits->setCurrentIndex(std::max(0, m_stopBits->findData(int(s.stopBits))));
+    m_host->setText(s.host);
+    m_tcpPort->setValue(s.tcpPort);
+    m_deviceId->setValue(s.deviceId);
+    m_timeout->setValue(s.timeoutMs);
+    m_retries->setValue(s.retries);
+    setTransport(s.transport == LinkSettings::Transport::Tcp ? Transport::Tcp : Transport::Serial);
+}
+
+void ConnectionPage::loadSettings()
+{
+    QSettings settings;
+    settings.beginGroup(kGroup);
+    const auto value = [&settings](const char *key, const QVariant &fallback) {
+        return settings.value(QLatin1String(key), fallback);
+    };
+    LinkSettings s;
+    s.transport = value("transport", {}).toString() == QLatin1String("tcp")
+                      ? LinkSettings::Transport::Tcp
+                      : LinkSettings::Transport::Rtu;
+    s.portName = value("port", s.portName).toString();
+    s.baud = value("baud", s.baud).toInt();
+    LinkSettings::parseParity(value("parity", {}).toString(), &s.parity); // keeps none if unknown
+    s.stopBits = value("stopBits", 1).toInt() == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop;
+    s.host = value("host", s.host).toString();
+    s.tcpPort = value("tcpPort", s.tcpPort).toInt();
+    s.deviceId = value("deviceId", s.deviceId).toInt();
+    s.timeoutMs = value("timeoutMs", s.timeoutMs).toInt();
+    s.retries = value("retries", s.retries).toInt();
+    applySettings(s);
+    if (value("simulator", false).toBool())
+        setTransport(Transport::Simulator);
+}
+
+void ConnectionPage::saveSettings() const
+{
+    const LinkSettings s = currentSettings();
+    QSettings settings;
+    settings.beginGroup(kGroup);
+    const auto set = [&settings](const char *key, const QVariant &v) {
+        settings.setValue(QLatin1String(key), v);
+    };
+    // The real link and the simulator choice apart, so choosing the simulator keeps the port.
+    const bool tcp = s.transport == LinkSettings::Transport::Tcp;
+    set("transport", tcp ? QStringLiteral("tcp") : QStringLiteral("serial"));
+    set("simulator", transport() == Transport::Simulator);
+    set("port", s.portName);
+    set("baud", s.baud);
+    set("parity", LinkSettings::parityName(s.parity));
+    set("stopBits", s.stopBits == QSerialPort::TwoStop ? 2 : 1);
+    set("host", s.host);
+    set("tcpPort", s.tcpPort);
+    set("deviceId", s.deviceId);
+    set("timeoutMs", s.timeoutMs);
+    set("retries", s.retries);
+}
+
+void ConnectionPage::connectNow()
+{
+    saveSettings();
+    if (transport() == Transport::Simulator) {
+        setNote(false, {});
+        session()->connectSimulator();
+        return;
+    }
+    const LinkSettings s = currentSettings();
+    if (const QString problem = s.validate(); !problem.isEmpty()) {
+        setNote(true, [problem] { return tr("Cannot connect: %1.").arg(problem); });
+        return;
+    }
+    setNote(false, {});
+    session()->connectTo(s);
+}
+
+void ConnectionPage::disconnectNow()
+{
+    session()->disconnectFrom();
+}
+
+void ConnectionPage::onConnected(bool ok, const QString &reason)
+{
+    if (!ok) {
+        const bool sim = transport() == Transport::Simulator || usesSimulator();
+        const QString where = sim ? QString() : session()->settings().describe();
+        setNote(true, [reason, where] {
+            return tr("Could not connect to %1: %2")
+                .arg(where.isEmpty() ? tr("the built-in simulator") : where, reason);
+        });
+        return;
+    }
+    setNote(false, {});
+    // Whoever connected (this page, --port, a bus scan), the fields show what is in use.
+    if (usesSimulator())
+        setTransport(Transport::Simulator);
+    else
+        applySettings(session()->settings());
+    saveSettings();
+}
+
+bool ConnectionPage::usesSimulator() const
+{
+    if (session()->isSimulator())
+        return true;
+    // connected(true) can arrive from inside connectSimulator(), before the session marks
+    // itself as on the simulator: recognise the simulator's own port instead.
+    const SimHost *sim = session()->simulator();
+    if (!sim || !sim->isRunning())
+        return false;
+    const LinkSettings s = session()->settings();
+    return s.transport == LinkSettings::Transport::Rtu
+               ? !s.portName.isEmpty() && s.portName == sim->rtuPath()
+               : s.tcpPort == sim->tcpPort() && sim->tcpPort() != 0;
+}
+
+void ConnectionPage::setNote(bool problem, std::function<QString()> note)
+{
+    m_noteIsProblem = problem && note;
+    m_note = std::move(note);
+    updateState();
+}
+
+QString ConnectionPage::statusText() const
+{
+    const ModbusLink::State state = session()->link()->state();
+    const QString where = session()->settings().describe();
+    if (state == ModbusLink::State::Connected)
+        return usesSimulator() ? tr("Connected to the built-in simulator (%1).").arg(where)
+                               : tr("Connected to %1.").arg(where);
+    if (state == ModbusLink::State::Connecting)
+        return tr("Connecting to %1…").arg(where);
+    if (m_note)
+        return m_note(); // built now, so a language switch retranslates it
+    return tr("Not connected.");
+}
+
+void ConnectionPage::updateState()
+{
+    if (!m_status)
+        return;
+    const ModbusLink::State state = session()->link()->state();
+    const bool idle = state == ModbusLink::State::Disconnected;
+    // Settings are what the link was opened with: changing them needs a reconnect.
+    for (QGroupBox *box : {m_transportBox, m_serialBox, m_tcpBox, m_deviceBox})
+        box->setEnabled(idle);
+    m_connect->setEnabled(idle);
+    m_disconnect->setEnabled(!idle);
+    m_scan->setEnabled(transport() != Transport::Simulator);
+    m_led->setState(state == ModbusLink::State::Connected ? Led::State::On
+                    : idle                                ? Led::State::Off
+                                                          : Led::State::Unknown);
+    const bool problem = idle && m_noteIsProblem;
+    if (problem) {
+        const int size = m_status->fontMetrics().height();
+        m_stateIcon->setPixmap(style()->standardIcon(QStyle::SP_MessageBoxWarning).pixmap(size));
+    }
+    m_stateIcon->setVisible(problem);
+    m_status->setText(statusText());
+}
+
+BusScanDialog *ConnectionPage::scanDialog() const
+{
+    return m_scanDialog;
+}
+
+BusScanDialog *ConnectionPage::openBusScan()
+{
+    if (!m_scanDialog) {
+        m_scanDialog = new BusScanDialog(session(), currentSettings(), this);
+        connect(m_scanDialog, &BusScanDialog::connectRequested, this,
+                [this](const LinkSettings &s) {
+                    applySettings(s);
+                    connectNow();
+                });
+    } else if (!m_scanDialog->isScanning()) {
+        m_scanDialog->setBaseSettings(currentSettings());
+    }
+    m_scanDialog->show();
+    m_scanDialog->raise();
+    m_scanDialog->activateWindow();
+    return m_scanDialog;
+}
+
+} // namespace stepcom

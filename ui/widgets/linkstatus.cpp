@@ -1,0 +1,88 @@
+#include "widgets/linkstatus.h"
+
+#include "bus/modbuslink.h"
+#include "device/devicesession.h"
+#include "poll/poller.h"
+
+#include <QDateTime>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+
+namespace stepcom {
+
+LinkStatus::LinkStatus(DeviceSession *session, QWidget *parent)
+    : QWidget(parent)
+    , m_session(session)
+    , m_state(new QLabel(this))
+    , m_where(new QLabel(this))
+    , m_rate(new QLabel(this))
+    , m_errors(new QLabel(this))
+    , m_unsaved(new QLabel(this))
+{
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    for (QLabel *l : {m_unsaved, m_state, m_where, m_rate, m_errors})
+        layout->addWidget(l);
+    QFont bold = m_unsaved->font();
+    bold.setBold(true);
+    m_unsaved->setFont(bold);
+    m_state->setFont(bold);
+    connect(session, &DeviceSession::linkStateChanged, this, &LinkStatus::refresh);
+    connect(session->store(), &ParameterStore::unsavedChanged, this, &LinkStatus::refresh);
+    connect(&m_timer, &QTimer::timeout, this, &LinkStatus::refresh);
+    m_timer.start(1000);
+    refresh();
+}
+
+void LinkStatus::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        refresh();
+    QWidget::changeEvent(event);
+}
+
+QString LinkStatus::stateText() const
+{
+    return m_state->text();
+}
+
+void LinkStatus::refresh()
+{
+    const ModbusLink *link = m_session->link();
+    switch (link->state()) {
+    case ModbusLink::State::Connected:
+        m_state->setText(m_session->isSimulator() ? tr("Connected (simulator)") : tr("Connected"));
+        break;
+    case ModbusLink::State::Connecting:
+        m_state->setText(tr("Connecting…"));
+        break;
+    case ModbusLink::State::Disconnected:
+        m_state->setText(tr("Disconnected"));
+        break;
+    }
+    m_where->setText(
+        link->state() == ModbusLink::State::Disconnected ? QString() : link->settings().describe());
+    const LinkStats &s = link->stats();
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    if (m_lastMs > 0 && now > m_lastMs && s.answers >= m_lastAnswers)
+        m_perSecond = double(s.answers - m_lastAnswers) * 1000.0 / double(now - m_lastMs);
+    m_lastAnswers = s.answers;
+    m_lastMs = now;
+    m_rate->setText(link->isConnected() ? tr("%1 transactions/s · status %2 Hz")
+                                              .arg(m_perSecond, 0, 'f', 1)
+                                              .arg(m_session->statusPoller()->rate(), 0, 'f', 1)
+                                        : QString());
+    m_errors->setText(tr("errors: %1 (timeouts %2, CRC %3, exceptions %4)")
+                          .arg(s.errors())
+                          .arg(s.timeouts)
+                          .arg(s.crcErrors)
+                          .arg(s.exceptions));
+    m_unsaved->setText(m_session->store()->unsavedToFlash() ? tr("⚠ Not saved to flash")
+                                                            : QString());
+    m_unsaved->setToolTip(
+        tr("Parameters were written but not saved to the controller's flash: they are lost "
+           "when it loses power. Use Save to flash."));
+}
+
+} // namespace stepcom

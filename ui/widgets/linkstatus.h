@@ -1,0 +1,39 @@
+#pragma once
+
+#include <QTimer>
+#include <QWidget>
+
+class QLabel;
+
+namespace stepcom {
+
+class DeviceSession;
+
+// The status bar's right side: link state, port/baud/id, transactions per second, errors,
+// polling rate and the "not saved to flash" warning.
+class LinkStatus : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit LinkStatus(DeviceSession *session, QWidget *parent = nullptr);
+    QString stateText() const;
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void refresh();
+
+    DeviceSession *m_session;
+    QLabel *m_state;
+    QLabel *m_where;
+    QLabel *m_rate;
+    QLabel *m_errors;
+    QLabel *m_unsaved;
+    QTimer m_timer;
+    quint64 m_lastAnswers = 0;
+    qint64 m_lastMs = 0;
+    double m_perSecond = 0.0;
+};
+
+} // namespace stepcom

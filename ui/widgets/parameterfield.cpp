@@ -1,0 +1,211 @@
+#include "widgets/parameterfield.h"
+
+#include "device/parameterstore.h"
+#include "language.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+
+namespace stepcom {
+
+namespace {
+
+QColor blend(const QColor &base, const QColor &tint, double amount)
+{
+    return QColor::fromRgbF(float(base.redF() * (1 - amount) + tint.redF() * amount),
+                            float(base.greenF() * (1 - amount) + tint.greenF() * amount),
+                            float(base.blueF() * (1 - amount) + tint.blueF() * amount));
+}
+
+} // namespace
+
+ParameterField::ParameterField(ParameterStore *store, const Parameter &parameter, QWidget *parent)
+    : QWidget(parent)
+    , m_store(store)
+    , m_parameter(parameter)
+{
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    if (!parameter.values.isEmpty()) {
+        m_combo = new QComboBox(this);
+        for (const EnumValue &v : parameter.values)
+            m_combo->addItem(QString(), QVariant::fromValue(v.value));
+        connect(m_combo, &QComboBox::activated, this, &ParameterField::commitIndex);
+        layout->addWidget(m_combo, 1);
+    } else {
+        m_line = new QLineEdit(this);
+        m_line->setAlignment(Qt::AlignRight);
+        m_line->setPlaceholderText(QStringLiteral("—"));
+        // Wide enough for the largest value the parameter can hold, at any font size.
+        const QString widest = parameter.formatRaw(parameter.rawMin).size() >
+                                       parameter.formatRaw(parameter.rawMax).size()
+                                   ? parameter.formatRaw(parameter.rawMin)
+                                   : parameter.formatRaw(parameter.rawMax);
+        m_line->setMinimumWidth(
+            m_line->fontMetrics().horizontalAdvance(widest + QStringLiteral("00")));
+        connect(m_line, &QLineEdit::editingFinished, this, &ParameterField::commitText);
+        layout->addWidget(m_line, 1);
+        m_unit = new QLabel(parameter.unit, this);
+        m_unit->setMinimumWidth(m_unit->fontMetrics().horizontalAdvance(QStringLiteral("rpm__")));
+        layout->addWidget(m_unit);
+    }
+    editor()->setEnabled(parameter.writable());
+    m_state = new QLabel(this);
+    m_state->setMinimumWidth(m_state->fontMetrics().horizontalAdvance(QStringLiteral("●●")));
+    m_state->setAlignment(Qt::AlignCenter);
+    layout->addWidget(m_state);
+    setFocusProxy(editor());
+    connect(m_store, &ParameterStore::valueChanged, this, [this](const QString &key) {
+        if (key == m_parameter.key)
+            refresh();
+    });
+    retranslate();
+}
+
+QWidget *ParameterField::editor() const
+{
+    return m_combo ? static_cast<QWidget *>(m_combo) : static_cast<QWidget *>(m_line);
+}
+
+void ParameterField::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    else if (event->type() == QEvent::PaletteChange)
+        applyStateLook();
+    QWidget::changeEvent(event);
+}
+
+void ParameterField::retranslate()
+{
+    const QString lang = Language::instance().current();
+    if (m_combo) {
+        for (int i = 0; i < m_parameter.values.size(); ++i)
+            m_combo->setItemText(i, m_parameter.values.at(i).label.text(lang));
+    }
+    refresh();
+}
+
+void ParameterField::refresh()
+{
+    const std::optional<qint64> shown = m_store->shownValue(m_parameter.key);
+    if (m_combo) {
+        int index = -1;
+        if (shown)
+            index = m_combo->findData(QVariant::fromValue(*shown));
+        m_combo->setCurrentIndex(index);
+    } else if (!m_line->hasFocus() || !m_line->isModified()) {
+        m_line->setText(shown ? m_parameter.formatRaw(*shown) : QString());
+        m_line->setModified(false);
+    }
+    applyStateLook();
+}
+
+void ParameterField::enterText(const QString &text)
+{
+    if (m_combo) {
+        QString error;
+        const auto raw = m_parameter.parse(text, &error);
+        const int index = raw ? m_combo->findData(QVariant::fromValue(*raw)) : -1;
+        if (index < 0) {
+            m_lastError = error;
+            Q_EMIT rejected(error);
+            applyStateLook();
+            return;
+        }
+        m_combo->setCurrentIndex(index);
+        commitIndex(index);
+        return;
+    }
+    m_line->setText(text);
+    m_line->setModified(true);
+    commitText();
+}
+
+void ParameterField::commitText()
+{
+    if (!m_line->isModified())
+        return;
+    m_line->setModified(false);
+    QString error;
+    const auto raw = m_parameter.parse(m_line->text(), &error);
+    m_lastError.clear();
+    if (raw)
+        error = m_store->edit(m_parameter.key, *raw);
+    if (!error.isEmpty()) {
+        m_lastError = error;
+        Q_EMIT rejected(error);
+    }
+    refresh();
+}
+
+void ParameterField::commitIndex(int index)
+{
+    if (index < 0)
+        return;
+    m_lastError.clear();
+    const QString error = m_store->edit(m_parameter.key, m_combo->itemData(index).toLongLong());
+    if (!error.isEmpty()) {
+        m_lastError = error;
+        Q_EMIT rejected(error);
+    }
+    refresh();
+}
+
+void ParameterField::applyStateLook()
+{
+    const ParameterStore::Entry e = m_store->entry(m_parameter.key);
+    const QString lang = Language::instance().current();
+    QString stateText;
+    QString stateTip;
+    QColor tint;
+    switch (e.state) {
+    case ParameterStore::State::Unknown:
+        stateText = QStringLiteral("?");
+        stateTip = tr("Not read from the controller yet");
+        break;
+    case ParameterStore::State::InSync:
+        stateText = QStringLiteral("✓");
+        stateTip = tr("The controller holds this value");
+        break;
+    case ParameterStore::State::Edited:
+        stateText = QStringLiteral("●");
+        tint = QColor(255, 170, 0);
+        stateTip = e.device ? tr("Edited, not written yet (the controller holds %1)")
+                                  .arg(m_parameter.displayRaw(*e.device, lang))
+                            : tr("Edited, not written yet");
+        break;
+    case ParameterStore::State::WriteFailed:
+        stateText = QStringLiteral("✗");
+        tint = QColor(230, 40, 40);
+        stateTip = tr("Write failed: %1").arg(e.error);
+        break;
+    }
+    if (!m_lastError.isEmpty()) {
+        tint = QColor(230, 40, 40);
+        stateTip = m_lastError;
+    }
+    m_state->setText(stateText);
+    m_state->setToolTip(stateTip);
+    QPalette pal = editor()->parentWidget()->palette();
+    if (tint.isValid()) {
+        pal.setColor(QPalette::Base, blend(pal.color(QPalette::Base), tint, 0.35));
+        pal.setColor(QPalette::Button, blend(pal.color(QPalette::Button), tint, 0.35));
+    }
+    editor()->setPalette(pal);
+    QFont font = editor()->font();
+    font.setItalic(e.state == ParameterStore::State::Unknown);
+    editor()->setFont(font);
+    const QString tip =
+        QStringLiteral("<b>%1</b> — %2<br>%3<br><small>%4 · %5</small>")
+            .arg(m_parameter.label.text(lang).toHtmlEscaped(), m_parameter.registerName(),
+                 m_parameter.help.text(lang).toHtmlEscaped(), m_parameter.key,
+                 m_parameter.rangeText().toHtmlEscaped());
+    editor()->setToolTip(tip + QStringLiteral("<br>") + stateTip.toHtmlEscaped());
+    editor()->setAccessibleName(m_parameter.label.text(lang));
+}
+
+} // namespace stepcom
