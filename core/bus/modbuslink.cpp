@@ -62,6 +62,7 @@ void ModbusLink::open(const LinkSettings &settings)
     if (m_state != State::Disconnected)
         close(tr("reconnecting"));
     m_settings = settings;
+    ++m_attempt;
     m_failing = false;
     m_openPending = true;
     setState(State::Connecting, settings.describe());
@@ -146,8 +147,14 @@ void ModbusLink::onClientState(int s)
         schedulePump(0);
     } else if (state == QModbusDevice::UnconnectedState && m_state != State::Disconnected &&
                !m_failing) {
-        failLink(m_client && !m_client->errorString().isEmpty() ? m_client->errorString()
-                                                                : tr("connection closed"));
+        // Qt sets the state before the error that explains it: give the error a moment.
+        const quint64 attempt = m_attempt;
+        QTimer::singleShot(0, this, [this, attempt] {
+            if (attempt != m_attempt || m_failing || m_state == State::Disconnected)
+                return;
+            failLink(m_client && !m_client->errorString().isEmpty() ? m_client->errorString()
+                                                                    : tr("connection closed"));
+        });
     }
 }
 
@@ -276,10 +283,14 @@ void ModbusLink::pump()
         schedulePump(int(quietLeft));
         return;
     }
-    QueuedRequest item = m_queue.takeNext();
-    item.attempts += 1;
-    const Request &req = item.request;
+    // In flight before it is sent: a TCP client writes (and logs the frame) inside the call.
+    m_inFlight = m_queue.takeNext();
+    m_inFlight->attempts += 1;
+    const Request req = m_inFlight->request;
     const int id = m_settings.deviceId;
+    ++m_stats.requests;
+    m_sentAt.start();
+    Q_EMIT dispatched(m_inFlight->id, req);
     QModbusReply *reply = nullptr;
     switch (req.type) {
     case Request::Type::ReadHolding:
@@ -298,15 +309,14 @@ void ModbusLink::pump()
             id);
         break;
     }
-    ++m_stats.requests;
-    m_inFlight = std::move(item);
-    m_sentAt.start();
-    Q_EMIT dispatched(m_inFlight->id, m_inFlight->request);
+    if (!m_inFlight)
+        return; // the link failed while sending; everything was reported by failLink
     if (!reply) {
         Result r;
         r.error = QModbusDevice::WriteError;
         r.attempts = m_inFlight->attempts;
-        r.errorText = tr("%1: could not send: %2").arg(describe(req), m_client->errorString());
+        r.errorText = tr("%1: could not send: %2")
+                          .arg(describe(req), m_client ? m_client->errorString() : QString());
         complete(*std::exchange(m_inFlight, std::nullopt), r);
         schedulePump(0);
         return;

@@ -101,6 +101,7 @@ private:
     LinkStats m_stats;
     TrafficLog *m_traffic;
     bool m_failing = false;
+    quint64 m_attempt = 0; // connect attempts, so stale deferred checks do nothing
 };
 
 } // namespace stepcom

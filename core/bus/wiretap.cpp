@@ -68,7 +68,7 @@ void messageHandler(QtMsgType type, const QMessageLogContext &context, const QSt
 bool WireTap::parse(const QString &message, Frame *frame, QByteArray *raw)
 {
     static const QRegularExpression pattern(QStringLiteral(
-        R"re(^\((RTU|TCP) [Cc]lient\) (Sent Serial ADU|Received ADU|Sent TCP ADU|Response buffer|tcp buffer|Received PDU|Response ADU)[^:]*:\s*"?(?:0x)?([0-9a-fA-F]*)"?)re"));
+        R"re(^\((RTU|TCP) [Cc]lient\) (Sent Serial ADU|Received ADU|Sent TCP ADU|Response buffer)[^:]*:\s*"?(?:0x)?([0-9a-fA-F]*)"?)re"));
     const QRegularExpressionMatch m = pattern.match(message);
     if (!m.hasMatch() || m.captured(3).isEmpty())
         return false;
@@ -77,9 +77,8 @@ bool WireTap::parse(const QString &message, Frame *frame, QByteArray *raw)
     const bool sent = what.startsWith(QLatin1String("Sent"));
     if (rtu && what == QLatin1String("Response buffer"))
         return false; // partial reads; the complete ADU follows as "Received ADU"
-    if (!rtu && !sent && what != QLatin1String("Response ADU") &&
-        what != QLatin1String("tcp buffer"))
-        return false;
+    if (!rtu && !sent && what != QLatin1String("Response buffer"))
+        return false; // the TCP client logs what it received as its response buffer
     *frame = rtu ? (sent ? Frame::RtuSent : Frame::RtuReceived)
                  : (sent ? Frame::TcpSent : Frame::TcpReceived);
     *raw = QByteArray::fromHex(m.captured(3).toLatin1());

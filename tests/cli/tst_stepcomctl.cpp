@@ -1,4 +1,6 @@
 #include "scripteddevice.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
 #include "testpaths.h"
 
 #include <QJsonArray>
@@ -188,6 +190,44 @@ private Q_SLOTS:
                 false);
         QCOMPARE(r.exitCode, 1);
         QVERIFY(r.err.contains(QStringLiteral("/dev/ttyNOPE9 does not exist")));
+    }
+
+    void modbusTcpThroughAGateway()
+    {
+        stepcom::SimHost host;
+        stepcom::SimOptions options;
+        options.tcp = true;
+        QString error;
+        QVERIFY2(host.start(options, &error), qPrintable(error));
+        const QString target = QStringLiteral("127.0.0.1:%1").arg(host.tcpPort());
+        Run r = ctl({"--tcp", target, "--verbose", "write", "motor2.move_distance=12.5",
+                     "motor2.speed=275"},
+                    false);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(*host.device()->value(QStringLiteral("motor2.speed")), 275);
+        // the traffic shows the MBAP frames both ways
+        QVERIFY2(r.err.contains(QStringLiteral("TX  00")) &&
+                     r.err.contains(QStringLiteral("RX  00")),
+                 qPrintable(r.err));
+        r = ctl({"--tcp", target, "--json", "read", "motor2.speed"}, false);
+        QCOMPARE(r.exitCode, 0);
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8())
+                     .object()
+                     .value(QStringLiteral("motor2.speed"))
+                     .toInt(),
+                 275);
+        host.stop();
+        r = ctl({"--tcp", target, "read"}, false);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("refused")), qPrintable(r.err));
+    }
+
+    void builtinSimulator()
+    {
+        const Run r = ctl({"--sim", "read", "motor1.step_angle", "device.baud"}, false);
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains(QStringLiteral("motor1.step_angle = 1.80 °")));
+        QVERIFY(r.out.contains(QStringLiteral("device.baud = 9600")));
     }
 
     void paramsJsonListsTheMap()
