@@ -25,6 +25,9 @@ protected:
     virtual void retranslate() = 0;
     void changeEvent(QEvent *event) override;
     DeviceSession *session() const { return m_session; }
+    // The page's content widget inside a frameless scroll area filling the page: every field
+    // stays reachable at 200% scale on a small screen. Call once, from the constructor.
+    QWidget *scrollableContent();
 
 private:
     DeviceSession *m_session;

@@ -50,14 +50,7 @@ QWidget *statusRow(QWidget *parent, QLabel **icon, QLabel **text)
 DevicePage::DevicePage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
 {
-    auto *outer = new QVBoxLayout(this);
-    outer->setContentsMargins(0, 0, 0, 0);
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    outer->addWidget(scroll);
-    auto *content = new QWidget(scroll);
-    scroll->setWidget(content);
+    QWidget *content = scrollableContent();
     auto *rows = new QVBoxLayout(content);
 
     m_linkBox = new QGroupBox(content);

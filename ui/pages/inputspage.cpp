@@ -48,14 +48,7 @@ InputsPage::InputsPage(DeviceSession *session, QWidget *parent)
     const RegisterMap &map = session->map();
     m_motors = map.blockCount(kMotor);
 
-    auto *outer = new QVBoxLayout(this);
-    outer->setContentsMargins(0, 0, 0, 0);
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    outer->addWidget(scroll);
-    auto *content = new QWidget(scroll);
-    scroll->setWidget(content);
+    QWidget *content = scrollableContent();
     auto *rows = new QVBoxLayout(content);
 
     // Motors as rows, roles as columns: a wrong input stands out against its neighbours.

@@ -31,15 +31,7 @@ MotorPage::MotorPage(DeviceSession *session, int motor, QWidget *parent)
     , m_motor(motor)
 {
     ParameterStore *store = session->store();
-    // A scroll area keeps every field reachable at 200% scale on a small screen.
-    auto *outer = new QVBoxLayout(this);
-    outer->setContentsMargins(0, 0, 0, 0);
-    auto *scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    outer->addWidget(scroll);
-    auto *content = new QWidget(scroll);
-    scroll->setWidget(content);
+    QWidget *content = scrollableContent();
     auto *columns = new QHBoxLayout(content);
 
     m_parameterBox = new QGroupBox(content);
