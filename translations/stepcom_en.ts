@@ -2,564 +2,2161 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>stepcom</name>
+    <message>
+        <source>Commissioning window for a 2-axis stepper controller (Modbus RTU/TCP).</source>
+        <translation>Commissioning window for a 2-axis stepper controller (Modbus RTU/TCP).</translation>
+    </message>
+    <message>
+        <source>Start connected to the built-in simulator.</source>
+        <translation>Start connected to the built-in simulator.</translation>
+    </message>
+    <message>
+        <source>Connect to this serial port at start.</source>
+        <translation>Connect to this serial port at start.</translation>
+    </message>
+    <message>
+        <source>path</source>
+        <translation>path</translation>
+    </message>
+    <message>
+        <source>Connect to this Modbus TCP gateway at start.</source>
+        <translation>Connect to this Modbus TCP gateway at start.</translation>
+    </message>
+    <message>
+        <source>host:port</source>
+        <translation>host:port</translation>
+    </message>
+    <message>
+        <source>Baud rate (default 9600).</source>
+        <translation>Baud rate (default 9600).</translation>
+    </message>
+    <message>
+        <source>rate</source>
+        <translation>rate</translation>
+    </message>
+    <message>
+        <source>Device id (default 1).</source>
+        <translation>Device id (default 1).</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>id</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom-sim</name>
+    <message>
+        <source>A simulated 2-axis stepper controller speaking Modbus RTU on a pseudo-terminal and/or Modbus TCP. Without --pty or --tcp it serves a pseudo-terminal.</source>
+        <translation>A simulated 2-axis stepper controller speaking Modbus RTU on a pseudo-terminal and/or Modbus TCP. Without --pty or --tcp it serves a pseudo-terminal.</translation>
+    </message>
+    <message>
+        <source>Read console commands from standard input even when it is not a terminal.</source>
+        <translation>Read console commands from standard input even when it is not a terminal.</translation>
+    </message>
+    <message>
+        <source>stepcom-sim: %1</source>
+        <translation>stepcom-sim: %1</translation>
+    </message>
+    <message>
+        <source>port hung up</source>
+        <translation>port hung up</translation>
+    </message>
+    <message>
+        <source>port back: %1</source>
+        <translation>port back: %1</translation>
+    </message>
+    <message>
+        <source>stepcom-sim %1: device id %2, %3 baud, %4 motors</source>
+        <translation>stepcom-sim %1: device id %2, %3 baud, %4 motors</translation>
+    </message>
+    <message>
+        <source>type &apos;help&apos; for the console commands</source>
+        <translation>type &apos;help&apos; for the console commands</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusScanDialog</name>
+    <message>
+        <source>Scan bus</source>
+        <translation>Scan bus</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Where</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <source>What to try</source>
+        <translation>What to try</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rates:</source>
+        <translation>&amp;Baud rates:</translation>
+    </message>
+    <message>
+        <source>Try this baud rate (register 40213; the factory setting is 9600)</source>
+        <translation>Try this baud rate (register 40213; the factory setting is 9600)</translation>
+    </message>
+    <message>
+        <source>Device &amp;ids:</source>
+        <translation>Device &amp;ids:</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>to</translation>
+    </message>
+    <message>
+        <source>First device id to try (register 40212; factory setting 1)</source>
+        <translation>First device id to try (register 40212; factory setting 1)</translation>
+    </message>
+    <message>
+        <source>Last device id to try; 247 is the highest standard Modbus address</source>
+        <translation>Last device id to try; 247 is the highest standard Modbus address</translation>
+    </message>
+    <message>
+        <source>Probe &amp;timeout:</source>
+        <translation>Probe &amp;timeout:</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>How long to wait for an answer from each id. The controller answers after 35 ms; USB adapters add some latency.</source>
+        <translation>How long to wait for an answer from each id. The controller answers after 35 ms; USB adapters add some latency.</translation>
+    </message>
+    <message>
+        <source>Stop at the &amp;first controller found</source>
+        <translation>Stop at the &amp;first controller found</translation>
+    </message>
+    <message>
+        <source>Finish as soon as one controller answers</source>
+        <translation>Finish as soon as one controller answers</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Start</translation>
+    </message>
+    <message>
+        <source>Start the scan; it only reads, nothing is written</source>
+        <translation>Start the scan; it only reads, nothing is written</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Cancel</translation>
+    </message>
+    <message>
+        <source>Stop the scan now</source>
+        <translation>Stop the scan now</translation>
+    </message>
+    <message>
+        <source>Controllers found</source>
+        <translation>Controllers found</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>Baud</translation>
+    </message>
+    <message>
+        <source>Device id</source>
+        <translation>Device id</translation>
+    </message>
+    <message>
+        <source>Answer</source>
+        <translation>Answer</translation>
+    </message>
+    <message>
+        <source>Double-click a controller to connect to it</source>
+        <translation>Double-click a controller to connect to it</translation>
+    </message>
+    <message>
+        <source>C&amp;onnect</source>
+        <translation>C&amp;onnect</translation>
+    </message>
+    <message>
+        <source>Connect to the selected controller with its baud rate and id</source>
+        <translation>Connect to the selected controller with its baud rate and id</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+    <message>
+        <source>even</source>
+        <translation>even</translation>
+    </message>
+    <message>
+        <source>odd</source>
+        <translation>odd</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>%1:%2 (Modbus TCP)</source>
+        <translation>%1:%2 (Modbus TCP)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, parity %2, %n stop bit(s)</source>
+        <translation>
+            <numerusform>%1, parity %2, %n stop bit</numerusform>
+            <numerusform>%1, parity %2, %n stop bits</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>(no port chosen)</source>
+        <translation>(no port chosen)</translation>
+    </message>
+    <message>
+        <source>starting…</source>
+        <translation>starting…</translation>
+    </message>
+    <message>
+        <source>id %1 at %2 baud</source>
+        <translation>id %1 at %2 baud</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>done</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>stopped</translation>
+    </message>
+    <message>
+        <source>StepCom is connected on this port: the scan disconnects first.</source>
+        <translation>StepCom is connected on this port: the scan disconnects first.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Scanning… %n controller(s) found so far.</source>
+        <translation>
+            <numerusform>Scanning… %n controller found so far.</numerusform>
+            <numerusform>Scanning… %n controllers found so far.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan finished: %n controller(s) found. Select one and press Connect.</source>
+        <translation>
+            <numerusform>Scan finished: %n controller found. Select one and press Connect.</numerusform>
+            <numerusform>Scan finished: %n controllers found. Select one and press Connect.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scan finished: no controller answered. Check the power, the wiring (A and B swapped?) and the port.</source>
+        <translation>Scan finished: no controller answered. Check the power, the wiring (A and B swapped?) and the port.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan cancelled: %n controller(s) found.</source>
+        <translation>
+            <numerusform>Scan cancelled: %n controller found.</numerusform>
+            <numerusform>Scan cancelled: %n controllers found.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scan stopped: %1</source>
+        <translation>Scan stopped: %1</translation>
+    </message>
+    <message>
+        <source>Choose at least one baud rate.</source>
+        <translation>Choose at least one baud rate.</translation>
+    </message>
+    <message>
+        <source>Scan stopped: StepCom connected on this port.</source>
+        <translation>Scan stopped: StepCom connected on this port.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n probe(s), at most about %1 s. A scan only reads; nothing is written.</source>
+        <translation>
+            <numerusform>%n probe, at most about %1 s. A scan only reads; nothing is written.</numerusform>
+            <numerusform>%n probes, at most about %1 s. A scan only reads; nothing is written.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusScanner</name>
     <message>
         <source>no baud rate to try</source>
-        <translation type="unfinished"></translation>
+        <translation>no baud rate to try</translation>
     </message>
     <message>
         <source>scan finished</source>
-        <translation type="unfinished"></translation>
+        <translation>scan finished</translation>
     </message>
     <message>
         <source>scan id %1 at %2 baud</source>
-        <translation type="unfinished"></translation>
+        <translation>scan id %1 at %2 baud</translation>
     </message>
     <message>
         <source>answered (register 40001 = %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>answered (register 40001 = %1)</translation>
     </message>
     <message>
         <source>answered with an exception: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>answered with an exception: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ConnectionPage</name>
+    <message>
+        <source>Disconnected.</source>
+        <translation>Disconnected.</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>Connection lost: %1</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Connection</translation>
+    </message>
+    <message>
+        <source>Connect through</source>
+        <translation>Connect through</translation>
+    </message>
+    <message>
+        <source>&amp;Serial (RTU)</source>
+        <translation>&amp;Serial (RTU)</translation>
+    </message>
+    <message>
+        <source>Modbus RTU over RS-485 or RS-232, e.g. a USB adapter</source>
+        <translation>Modbus RTU over RS-485 or RS-232, e.g. a USB adapter</translation>
+    </message>
+    <message>
+        <source>Modbus &amp;TCP</source>
+        <translation>Modbus &amp;TCP</translation>
+    </message>
+    <message>
+        <source>Modbus TCP, e.g. through an Ethernet-to-RS-485 gateway</source>
+        <translation>Modbus TCP, e.g. through an Ethernet-to-RS-485 gateway</translation>
+    </message>
+    <message>
+        <source>Built-in si&amp;mulator</source>
+        <translation>Built-in si&amp;mulator</translation>
+    </message>
+    <message>
+        <source>A simulated controller inside StepCom: try every page without a machine</source>
+        <translation>A simulated controller inside StepCom: try every page without a machine</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>Serial port</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>&amp;Port:</translation>
+    </message>
+    <message>
+        <source>The serial port, e.g. /dev/ttyUSB0 or COM3. Any path can be typed: pseudo-terminals are not listed.</source>
+        <translation>The serial port, e.g. /dev/ttyUSB0 or COM3. Any path can be typed: pseudo-terminals are not listed.</translation>
+    </message>
+    <message>
+        <source>/dev/ttyUSB0 or a path</source>
+        <translation>/dev/ttyUSB0 or a path</translation>
+    </message>
+    <message>
+        <source>Re&amp;fresh</source>
+        <translation>Re&amp;fresh</translation>
+    </message>
+    <message>
+        <source>List the serial ports again (after plugging in an adapter)</source>
+        <translation>List the serial ports again (after plugging in an adapter)</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rate:</source>
+        <translation>&amp;Baud rate:</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s baud rate (register 40213); factory setting 9600</source>
+        <translation>The controller&apos;s baud rate (register 40213); factory setting 9600</translation>
+    </message>
+    <message>
+        <source>Parit&amp;y:</source>
+        <translation>Parit&amp;y:</translation>
+    </message>
+    <message>
+        <source>The controller uses no parity (8N1) unless set otherwise</source>
+        <translation>The controller uses no parity (8N1) unless set otherwise</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>None</translation>
+    </message>
+    <message>
+        <source>Even</source>
+        <translation>Even</translation>
+    </message>
+    <message>
+        <source>Odd</source>
+        <translation>Odd</translation>
+    </message>
+    <message>
+        <source>St&amp;op bits:</source>
+        <translation>St&amp;op bits:</translation>
+    </message>
+    <message>
+        <source>The controller uses 1 stop bit</source>
+        <translation>The controller uses 1 stop bit</translation>
+    </message>
+    <message>
+        <source>Modbus TCP</source>
+        <translation>Modbus TCP</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>&amp;Host:</translation>
+    </message>
+    <message>
+        <source>Host name or IP address of the gateway or controller</source>
+        <translation>Host name or IP address of the gateway or controller</translation>
+    </message>
+    <message>
+        <source>192.168.0.7</source>
+        <translation>192.168.0.7</translation>
+    </message>
+    <message>
+        <source>TCP p&amp;ort:</source>
+        <translation>TCP p&amp;ort:</translation>
+    </message>
+    <message>
+        <source>TCP port of the Modbus server; 502 is the standard</source>
+        <translation>TCP port of the Modbus server; 502 is the standard</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Controller</translation>
+    </message>
+    <message>
+        <source>Device &amp;id:</source>
+        <translation>Device &amp;id:</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s Modbus address (register 40212); factory setting 1. Use Scan bus when it is not known.</source>
+        <translation>The controller&apos;s Modbus address (register 40212); factory setting 1. Use Scan bus when it is not known.</translation>
+    </message>
+    <message>
+        <source>Tim&amp;eout:</source>
+        <translation>Tim&amp;eout:</translation>
+    </message>
+    <message>
+        <source>How long to wait for each answer before trying again</source>
+        <translation>How long to wait for each answer before trying again</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>&amp;Retries:</source>
+        <translation>&amp;Retries:</translation>
+    </message>
+    <message>
+        <source>How often an unanswered request is sent again</source>
+        <translation>How often an unanswered request is sent again</translation>
+    </message>
+    <message>
+        <source>Built-in simulator</source>
+        <translation>Built-in simulator</translation>
+    </message>
+    <message>
+        <source>A simulated controller runs inside StepCom and answers like the real one: every page can be tried without a machine. Nothing reaches real hardware.</source>
+        <translation>A simulated controller runs inside StepCom and answers like the real one: every page can be tried without a machine. Nothing reaches real hardware.</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Link</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Connect</translation>
+    </message>
+    <message>
+        <source>Connect and read every parameter (nothing is written)</source>
+        <translation>Connect and read every parameter (nothing is written)</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Disconnect</translation>
+    </message>
+    <message>
+        <source>Close the port; edits that were not written stay</source>
+        <translation>Close the port; edits that were not written stay</translation>
+    </message>
+    <message>
+        <source>Sc&amp;an bus…</source>
+        <translation>Sc&amp;an bus…</translation>
+    </message>
+    <message>
+        <source>Find controllers whose device id or baud rate is not known</source>
+        <translation>Find controllers whose device id or baud rate is not known</translation>
+    </message>
+    <message>
+        <source>Cannot connect: %1.</source>
+        <translation>Cannot connect: %1.</translation>
+    </message>
+    <message>
+        <source>Could not connect to %1: %2</source>
+        <translation>Could not connect to %1: %2</translation>
+    </message>
+    <message>
+        <source>the built-in simulator</source>
+        <translation>the built-in simulator</translation>
+    </message>
+    <message>
+        <source>Connected to the built-in simulator (%1).</source>
+        <translation>Connected to the built-in simulator (%1).</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>Connected to %1.</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>Connecting to %1…</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>Not connected.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlMonitor</name>
+    <message>
+        <source>link lost: %1</source>
+        <translation>link lost: %1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::CtlOptions</name>
     <message>
         <source>Serial port of the controller (e.g. /dev/ttyUSB0, COM3).</source>
-        <translation type="unfinished"></translation>
+        <translation>Serial port of the controller (e.g. /dev/ttyUSB0, COM3).</translation>
     </message>
     <message>
         <source>path</source>
-        <translation type="unfinished"></translation>
+        <translation>path</translation>
     </message>
     <message>
         <source>Modbus TCP gateway or simulator, HOST[:PORT] (port 502).</source>
-        <translation type="unfinished"></translation>
+        <translation>Modbus TCP gateway or simulator, HOST[:PORT] (port 502).</translation>
     </message>
     <message>
         <source>host:port</source>
-        <translation type="unfinished"></translation>
+        <translation>host:port</translation>
     </message>
     <message>
         <source>Use the built-in simulated controller.</source>
-        <translation type="unfinished"></translation>
+        <translation>Use the built-in simulated controller.</translation>
     </message>
     <message>
         <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600).</source>
-        <translation type="unfinished"></translation>
+        <translation>Baud rate: 4800, 9600, 19200 or 38400 (default 9600).</translation>
     </message>
     <message>
         <source>rate</source>
-        <translation type="unfinished"></translation>
+        <translation>rate</translation>
     </message>
     <message>
         <source>Parity: none, even or odd (default none).</source>
-        <translation type="unfinished"></translation>
+        <translation>Parity: none, even or odd (default none).</translation>
     </message>
     <message>
         <source>parity</source>
-        <translation type="unfinished"></translation>
+        <translation>parity</translation>
     </message>
     <message>
         <source>Stop bits: 1 or 2 (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Stop bits: 1 or 2 (default 1).</translation>
     </message>
     <message>
         <source>n</source>
-        <translation type="unfinished"></translation>
+        <translation>n</translation>
     </message>
     <message>
         <source>Device id 1-255 (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Device id 1-255 (default 1).</translation>
     </message>
     <message>
         <source>id</source>
-        <translation type="unfinished"></translation>
+        <translation>id</translation>
     </message>
     <message>
         <source>Answer timeout in ms (default 500).</source>
-        <translation type="unfinished"></translation>
+        <translation>Answer timeout in ms (default 500).</translation>
     </message>
     <message>
         <source>ms</source>
-        <translation type="unfinished"></translation>
+        <translation>ms</translation>
     </message>
     <message>
         <source>Retries after a timeout (default 2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Retries after a timeout (default 2).</translation>
     </message>
     <message>
         <source>Register map file to use instead of the built-in one.</source>
-        <translation type="unfinished"></translation>
+        <translation>Register map file to use instead of the built-in one.</translation>
     </message>
     <message>
         <source>file</source>
-        <translation type="unfinished"></translation>
+        <translation>file</translation>
     </message>
     <message>
         <source>Machine-readable JSON output.</source>
-        <translation type="unfinished"></translation>
+        <translation>Machine-readable JSON output.</translation>
     </message>
     <message>
         <source>Show the Modbus traffic on standard error.</source>
-        <translation type="unfinished"></translation>
+        <translation>Show the Modbus traffic on standard error.</translation>
     </message>
     <message>
         <source>Do not ask: needed for commands that destroy settings.</source>
-        <translation type="unfinished"></translation>
+        <translation>Do not ask: needed for commands that destroy settings.</translation>
     </message>
     <message>
         <source>After writing, save the parameters to flash.</source>
-        <translation type="unfinished"></translation>
+        <translation>After writing, save the parameters to flash.</translation>
     </message>
     <message>
         <source>monitor: number of samples (default: until stopped).</source>
-        <translation type="unfinished"></translation>
+        <translation>monitor: number of samples (default: until stopped).</translation>
     </message>
     <message>
         <source>monitor: ms between samples (default: as fast as the link allows).</source>
-        <translation type="unfinished"></translation>
+        <translation>monitor: ms between samples (default: as fast as the link allows).</translation>
     </message>
     <message>
         <source>give only one of --port, --tcp and --sim</source>
-        <translation type="unfinished"></translation>
+        <translation>give only one of --port, --tcp and --sim</translation>
     </message>
     <message>
         <source>--tcp: &apos;%1&apos; is not HOST[:PORT]</source>
-        <translation type="unfinished"></translation>
+        <translation>--tcp: &apos;%1&apos; is not HOST[:PORT]</translation>
     </message>
     <message>
         <source>--baud: &apos;%1&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>--baud: &apos;%1&apos; is not a number</translation>
     </message>
     <message>
         <source>--parity: &apos;%1&apos; is not none, even or odd</source>
-        <translation type="unfinished"></translation>
+        <translation>--parity: &apos;%1&apos; is not none, even or odd</translation>
     </message>
     <message>
         <source>--stop-bits: &apos;%1&apos; is not 1 or 2</source>
-        <translation type="unfinished"></translation>
+        <translation>--stop-bits: &apos;%1&apos; is not 1 or 2</translation>
     </message>
     <message>
         <source>--id: &apos;%1&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>--id: &apos;%1&apos; is not a number</translation>
     </message>
     <message>
         <source>--timeout: &apos;%1&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>--timeout: &apos;%1&apos; is not a number</translation>
     </message>
     <message>
         <source>--retries: &apos;%1&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>--retries: &apos;%1&apos; is not a number</translation>
     </message>
     <message>
         <source>--count: &apos;%1&apos; is not a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>--count: &apos;%1&apos; is not a positive number</translation>
     </message>
     <message>
         <source>--interval: &apos;%1&apos; is not a number of ms</source>
-        <translation type="unfinished"></translation>
+        <translation>--interval: &apos;%1&apos; is not a number of ms</translation>
     </message>
     <message>
         <source>no command given (params, read, write, command)</source>
-        <translation type="unfinished"></translation>
+        <translation>no command given (params, read, write, command)</translation>
     </message>
 </context>
 <context>
     <name>stepcom::CtlRunner</name>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>done</source>
-        <translation type="unfinished"></translation>
+        <translation>done</translation>
     </message>
     <message>
         <source>no controller given: use --port PATH, --tcp HOST[:PORT] or --sim</source>
-        <translation type="unfinished"></translation>
+        <translation>no controller given: use --port PATH, --tcp HOST[:PORT] or --sim</translation>
     </message>
     <message>
         <source>cannot connect to %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>cannot connect to %1: %2</translation>
     </message>
     <message>
         <source>cannot start the built-in simulator: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>cannot start the built-in simulator: %1</translation>
     </message>
     <message>
         <source>unknown parameter &apos;%1&apos; (see: stepcomctl params)</source>
-        <translation type="unfinished"></translation>
+        <translation>unknown parameter &apos;%1&apos; (see: stepcomctl params)</translation>
     </message>
     <message>
         <source>%1 is a command and cannot be read</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 is a command and cannot be read</translation>
     </message>
     <message>
         <source>write needs KEY=VALUE arguments</source>
-        <translation type="unfinished"></translation>
+        <translation>write needs KEY=VALUE arguments</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not KEY=VALUE</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; is not KEY=VALUE</translation>
     </message>
     <message>
         <source>%1 is a command: use &apos;stepcomctl command %1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 is a command: use &apos;stepcomctl command %1&apos;</translation>
     </message>
     <message>
         <source>%1 is read-only</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 is read-only</translation>
     </message>
     <message>
         <source>nothing was written</source>
-        <translation type="unfinished"></translation>
+        <translation>nothing was written</translation>
     </message>
     <message>
         <source>(written, verified)</source>
-        <translation type="unfinished"></translation>
+        <translation>(written, verified)</translation>
     </message>
     <message>
         <source>not written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>not written: %1</translation>
     </message>
     <message>
         <source>this map has no save_to_flash command</source>
-        <translation type="unfinished"></translation>
+        <translation>this map has no save_to_flash command</translation>
     </message>
     <message>
         <source>saved to flash</source>
-        <translation type="unfinished"></translation>
+        <translation>saved to flash</translation>
     </message>
     <message>
         <source>command needs exactly one command name (see: stepcomctl params)</source>
-        <translation type="unfinished"></translation>
+        <translation>command needs exactly one command name (see: stepcomctl params)</translation>
     </message>
     <message>
         <source>%1 is a parameter, not a command: use read or write</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 is a parameter, not a command: use read or write</translation>
     </message>
     <message>
         <source>unknown command &apos;%1&apos; (see: stepcomctl params)</source>
-        <translation type="unfinished"></translation>
+        <translation>unknown command &apos;%1&apos; (see: stepcomctl params)</translation>
     </message>
     <message>
         <source>%1 destroys settings (%2); add --yes if you mean it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 destroys settings (%2); add --yes if you mean it</translation>
     </message>
     <message>
         <source>%1: done</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: done</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor)</source>
+        <translation>unknown command &apos;%1&apos; (params, read, write, command, monitor)</translation>
+    </message>
+    <message>
+        <source>monitor takes no arguments, only --count and --interval</source>
+        <translation>monitor takes no arguments, only --count and --interval</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::DerivedValues</name>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>Pulses per revolution:</source>
+        <translation>Pulses per revolution:</translation>
+    </message>
+    <message>
+        <source>Pulse rate at the set speed:</source>
+        <translation>Pulse rate at the set speed:</translation>
+    </message>
+    <message>
+        <source>Linear speed:</source>
+        <translation>Linear speed:</translation>
+    </message>
+    <message>
+        <source>Revolutions per move:</source>
+        <translation>Revolutions per move:</translation>
+    </message>
+    <message>
+        <source>Pulses per move:</source>
+        <translation>Pulses per move:</translation>
+    </message>
+    <message>
+        <source>Ramp to the set speed:</source>
+        <translation>Ramp to the set speed:</translation>
+    </message>
+    <message>
+        <source>Estimated move time:</source>
+        <translation>Estimated move time:</translation>
+    </message>
+    <message>
+        <source>360 / step angle × microsteps</source>
+        <translation>360 / step angle × microsteps</translation>
+    </message>
+    <message>
+        <source>Speed (rpm) × pulses per revolution / 60: what the driver must accept</source>
+        <translation>Speed (rpm) × pulses per revolution / 60: what the driver must accept</translation>
+    </message>
+    <message>
+        <source>Speed (rpm) × pitch / 60</source>
+        <translation>Speed (rpm) × pitch / 60</translation>
+    </message>
+    <message>
+        <source>Speed (rpm) × pitch</source>
+        <translation>Speed (rpm) × pitch</translation>
+    </message>
+    <message>
+        <source>Move distance / pitch</source>
+        <translation>Move distance / pitch</translation>
+    </message>
+    <message>
+        <source>Move distance / pitch × pulses per revolution, in whole pulses as the controller sends them</source>
+        <translation>Move distance / pitch × pulses per revolution, in whole pulses as the controller sends them</translation>
+    </message>
+    <message>
+        <source>(Pulse rate − start frequency) / accel/decel frequency: the rate rises by the accel/decel frequency every millisecond; braking takes as long</source>
+        <translation>(Pulse rate − start frequency) / accel/decel frequency: the rate rises by the accel/decel frequency every millisecond; braking takes as long</translation>
+    </message>
+    <message>
+        <source>A single move with its ramps up and down, as the simulator runs it (start frequency, accel/decel frequency per millisecond, speed)</source>
+        <translation>A single move with its ramps up and down, as the simulator runs it (start frequency, accel/decel frequency per millisecond, speed)</translation>
+    </message>
+    <message>
+        <source>units</source>
+        <translation>units</translation>
+    </message>
+    <message>
+        <source>%1 pulses/rev</source>
+        <translation>%1 pulses/rev</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>%1 %2/s</source>
+        <translation>%1 %2/s</translation>
+    </message>
+    <message>
+        <source>%1 %2/min</source>
+        <translation>%1 %2/min</translation>
+    </message>
+    <message>
+        <source>%1 rev</source>
+        <translation>%1 rev</translation>
+    </message>
+    <message>
+        <source>%1 pulses</source>
+        <translation>%1 pulses</translation>
+    </message>
+    <message>
+        <source>none (start frequency ≥ pulse rate)</source>
+        <translation>none (start frequency ≥ pulse rate)</translation>
     </message>
 </context>
 <context>
     <name>stepcom::DeviceClient</name>
     <message>
         <source>nothing readable among the parameters asked for</source>
-        <translation type="unfinished"></translation>
+        <translation>nothing readable among the parameters asked for</translation>
     </message>
     <message>
         <source>read block %1/%2</source>
-        <translation type="unfinished"></translation>
+        <translation>read block %1/%2</translation>
     </message>
     <message>
         <source>unknown parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>unknown parameter</translation>
     </message>
     <message>
         <source>%1 is read-only</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 is read-only</translation>
     </message>
     <message>
         <source>%1 is given twice</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 is given twice</translation>
+    </message>
+    <message>
+        <source>could not reopen the port at the new baud: %1</source>
+        <translation>could not reopen the port at the new baud: %1</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2 but the controller holds %3</source>
+        <translation>%1: wrote %2 but the controller holds %3</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2 but could not read it back</source>
+        <translation>%1: wrote %2 but could not read it back</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::DevicePage</name>
+    <message>
+        <source>Device</source>
+        <translation>Device</translation>
+    </message>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>ID %1 at %2 baud</source>
+        <translation>ID %1 at %2 baud</translation>
+    </message>
+    <message>
+        <source>The controller holds %1</source>
+        <translation>The controller holds %1</translation>
+    </message>
+    <message>
+        <source>Not read yet</source>
+        <translation>Not read yet</translation>
+    </message>
+    <message>
+        <source>Changing the controller to %1…</source>
+        <translation>Changing the controller to %1…</translation>
+    </message>
+    <message>
+        <source>The controller answers at %1. Save to flash to keep this after a power cycle.</source>
+        <translation>The controller answers at %1. Save to flash to keep this after a power cycle.</translation>
+    </message>
+    <message>
+        <source>The controller does not answer with the new settings (%1). It may be using them anyway. Reconnect with the old settings (%2), or connect with the new ones on the Connection page.</source>
+        <translation>The controller does not answer with the new settings (%1). It may be using them anyway. Reconnect with the old settings (%2), or connect with the new ones on the Connection page.</translation>
+    </message>
+    <message>
+        <source>Reconnecting with the old settings (%1)…</source>
+        <translation>Reconnecting with the old settings (%1)…</translation>
+    </message>
+    <message>
+        <source>Connected again with the old settings.</source>
+        <translation>Connected again with the old settings.</translation>
+    </message>
+    <message>
+        <source>Reconnecting with the old settings failed: %1.</source>
+        <translation>Reconnecting with the old settings failed: %1.</translation>
+    </message>
+    <message>
+        <source>Saving to flash…</source>
+        <translation>Saving to flash…</translation>
+    </message>
+    <message>
+        <source>Saved to flash: the controller keeps its settings after a power cycle.</source>
+        <translation>Saved to flash: the controller keeps its settings after a power cycle.</translation>
+    </message>
+    <message>
+        <source>Saving to flash failed; see the messages.</source>
+        <translation>Saving to flash failed; see the messages.</translation>
+    </message>
+    <message>
+        <source>Restoring the factory settings…</source>
+        <translation>Restoring the factory settings…</translation>
+    </message>
+    <message>
+        <source>Factory settings restored; StepCom reads the controller again.</source>
+        <translation>Factory settings restored; StepCom reads the controller again.</translation>
+    </message>
+    <message>
+        <source>Restoring the factory settings failed; see the messages.</source>
+        <translation>Restoring the factory settings failed; see the messages.</translation>
+    </message>
+    <message>
+        <source>Change device ID and baud rate</source>
+        <translation>Change device ID and baud rate</translation>
+    </message>
+    <message>
+        <source>Change the controller from %1 to %2?</source>
+        <translation>Change the controller from %1 to %2?</translation>
+    </message>
+    <message>
+        <source>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
+
+Every other master on the bus must use the new settings too, and no other device may use the new ID. Save to flash afterwards to keep them after a power cycle.</source>
+        <translation>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
+
+Every other master on the bus must use the new settings too, and no other device may use the new ID. Save to flash afterwards to keep them after a power cycle.</translation>
+    </message>
+    <message>
+        <source>&amp;Change</source>
+        <translation>&amp;Change</translation>
+    </message>
+    <message>
+        <source>motors 1 to %1</source>
+        <translation>motors 1 to %1</translation>
+    </message>
+    <message>
+        <source>the motor</source>
+        <translation>the motor</translation>
+    </message>
+    <message>
+        <source>every motor parameter of %1: step angle, microsteps, start and accel/decel frequency, direction, speed, pitch, move distance</source>
+        <translation>every motor parameter of %1: step angle, microsteps, start and accel/decel frequency, direction, speed, pitch, move distance</translation>
+    </message>
+    <message>
+        <source>the limit and home inputs</source>
+        <translation>the limit and home inputs</translation>
+    </message>
+    <message>
+        <source>the homing order</source>
+        <translation>the homing order</translation>
+    </message>
+    <message>
+        <source>the arc and line interpolation setup</source>
+        <translation>the arc and line interpolation setup</translation>
+    </message>
+    <message>
+        <source>the system mode and its number of round trips</source>
+        <translation>the system mode and its number of round trips</translation>
+    </message>
+    <message>
+        <source>These settings in the controller are replaced by the factory values:</source>
+        <translation>These settings in the controller are replaced by the factory values:</translation>
+    </message>
+    <message>
+        <source>The device ID (%1) and the baud rate (%2) are kept, so StepCom stays connected. Edits not written yet stay in StepCom. The flash keeps the old settings until you save to flash.</source>
+        <translation>The device ID (%1) and the baud rate (%2) are kept, so StepCom stays connected. Edits not written yet stay in StepCom. The flash keeps the old settings until you save to flash.</translation>
+    </message>
+    <message>
+        <source>Restore factory settings</source>
+        <translation>Restore factory settings</translation>
+    </message>
+    <message>
+        <source>Restore the controller&apos;s factory settings?</source>
+        <translation>Restore the controller&apos;s factory settings?</translation>
+    </message>
+    <message>
+        <source>&amp;Restore factory settings</source>
+        <translation>&amp;Restore factory settings</translation>
+    </message>
+    <message>
+        <source>Device ID and baud rate</source>
+        <translation>Device ID and baud rate</translation>
+    </message>
+    <message>
+        <source>Flash memory</source>
+        <translation>Flash memory</translation>
+    </message>
+    <message>
+        <source>Factory settings</source>
+        <translation>Factory settings</translation>
+    </message>
+    <message>
+        <source>Device &amp;ID:</source>
+        <translation>Device &amp;ID:</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rate:</source>
+        <translation>&amp;Baud rate:</translation>
+    </message>
+    <message>
+        <source>The device ID matters on RS-485, where several controllers share the bus. On Modbus TCP only the ID can be changed here.</source>
+        <translation>The device ID matters on RS-485, where several controllers share the bus. On Modbus TCP only the ID can be changed here.</translation>
+    </message>
+    <message>
+        <source>&amp;Apply ID and baud…</source>
+        <translation>&amp;Apply ID and baud…</translation>
+    </message>
+    <message>
+        <source>Reconnect with the &amp;old settings</source>
+        <translation>Reconnect with the &amp;old settings</translation>
+    </message>
+    <message>
+        <source>Written values take effect at once but live in working memory: without saving to flash, the controller forgets them when it is switched off.</source>
+        <translation>Written values take effect at once but live in working memory: without saving to flash, the controller forgets them when it is switched off.</translation>
+    </message>
+    <message>
+        <source>Changes not saved to flash.</source>
+        <translation>Changes not saved to flash.</translation>
+    </message>
+    <message>
+        <source>&amp;Save to flash</source>
+        <translation>&amp;Save to flash</translation>
+    </message>
+    <message>
+        <source>Puts every motor parameter, the limits, the homing order, the interpolation setup and the mode back to the factory values. The device ID and baud rate are kept.</source>
+        <translation>Puts every motor parameter, the limits, the homing order, the interpolation setup and the mode back to the factory values. The device ID and baud rate are kept.</translation>
+    </message>
+    <message>
+        <source>Restore &amp;factory settings…</source>
+        <translation>Restore &amp;factory settings…</translation>
     </message>
 </context>
 <context>
     <name>stepcom::DeviceSession</name>
     <message>
         <source>Cannot connect: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Cannot connect: %1</translation>
     </message>
     <message>
         <source>Connected to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Connected to %1</translation>
     </message>
     <message>
         <source>Link lost: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Link lost: %1</translation>
     </message>
     <message>
         <source>Cannot start the built-in simulator: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Cannot start the built-in simulator: %1</translation>
     </message>
     <message>
         <source>disconnected by the user</source>
-        <translation type="unfinished"></translation>
+        <translation>disconnected by the user</translation>
     </message>
     <message>
         <source>Reading failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Reading failed: %1</translation>
     </message>
     <message numerus="yes">
         <source>Read %n parameter(s) in %1 request(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Read %n parameter in %1 request(s)</numerusform>
+            <numerusform>Read %n parameters in %1 request(s)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>Wrote and verified %n parameter(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Wrote and verified %n parameter</numerusform>
+            <numerusform>Wrote and verified %n parameters</numerusform>
         </translation>
     </message>
     <message>
         <source>Unknown command %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Unknown command %1</translation>
     </message>
     <message>
         <source>%1: done</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: done</translation>
     </message>
     <message>
         <source>E-STOP: not connected, nothing was sent</source>
-        <translation type="unfinished"></translation>
+        <translation>E-STOP: not connected, nothing was sent</translation>
     </message>
     <message>
         <source>emergency stop</source>
-        <translation type="unfinished"></translation>
+        <translation>emergency stop</translation>
     </message>
     <message>
         <source>E-STOP sent</source>
-        <translation type="unfinished"></translation>
+        <translation>E-STOP sent</translation>
     </message>
     <message>
         <source>The controller answers at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>The controller answers at %1</translation>
     </message>
     <message>
         <source>The controller does not answer with the new settings: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>The controller does not answer with the new settings: %1</translation>
+    </message>
+    <message>
+        <source>switching to %1</source>
+        <translation>switching to %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::EmergencyStop</name>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <source>Emergency stop: all motors and outputs off (coil 00042). Key: %1</source>
+        <translation>Emergency stop: all motors and outputs off (coil 00042). Key: %1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::FaultInjector</name>
     <message>
         <source>&apos;%1&apos; is not a share between 0 and 1 (or 0%-100%)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; is not a share between 0 and 1 (or 0%-100%)</translation>
     </message>
     <message>
         <source>&apos;%1&apos;: expected SHARE:NUMBER, e.g. 0.1:500</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos;: expected SHARE:NUMBER, e.g. 0.1:500</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::HomingOrderEditor</name>
+    <message>
+        <source>%1 is already the %2 in the homing order: a motor homes once. Set the %2 to %3 first.</source>
+        <translation>%1 is already the %2 in the homing order: a motor homes once. Set the %2 to %3 first.</translation>
+    </message>
+    <message>
+        <source>no motor</source>
+        <translation>no motor</translation>
+    </message>
+    <message>
+        <source>%1, then %2</source>
+        <translation>%1, then %2</translation>
+    </message>
+    <message>
+        <source>1st</source>
+        <translation>1st</translation>
+    </message>
+    <message>
+        <source>2nd</source>
+        <translation>2nd</translation>
+    </message>
+    <message>
+        <source>1st to home:</source>
+        <translation>1st to home:</translation>
+    </message>
+    <message>
+        <source>2nd to home:</source>
+        <translation>2nd to home:</translation>
+    </message>
+    <message>
+        <source>Not read from the controller yet</source>
+        <translation>Not read from the controller yet</translation>
+    </message>
+    <message>
+        <source>The controller holds this order</source>
+        <translation>The controller holds this order</translation>
+    </message>
+    <message>
+        <source>Edited, not written yet: apply the order</source>
+        <translation>Edited, not written yet: apply the order</translation>
+    </message>
+    <message>
+        <source>Write failed: %1</source>
+        <translation>Write failed: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::InputsPage</name>
+    <message>
+        <source>Inputs and limits</source>
+        <translation>Inputs and limits</translation>
+    </message>
+    <message>
+        <source>System mode: not known yet.</source>
+        <translation>System mode: not known yet.</translation>
+    </message>
+    <message>
+        <source>System mode: %1. The limit and home settings apply.</source>
+        <translation>System mode: %1. The limit and home settings apply.</translation>
+    </message>
+    <message>
+        <source>System mode: %1. Motor 1 uses IN1 and IN2 as its limits, IN3 stops it and IN4 starts it.</source>
+        <translation>System mode: %1. Motor 1 uses IN1 and IN2 as its limits, IN3 stops it and IN4 starts it.</translation>
+    </message>
+    <message>
+        <source>System mode: %1. The limit settings are ignored: the inputs do what the mode says.</source>
+        <translation>System mode: %1. The limit settings are ignored: the inputs do what the mode says.</translation>
+    </message>
+    <message>
+        <source>motor %1 positive limit</source>
+        <translation>motor %1 positive limit</translation>
+    </message>
+    <message>
+        <source>motor %1 negative limit</source>
+        <translation>motor %1 negative limit</translation>
+    </message>
+    <message>
+        <source>motor %1 home</source>
+        <translation>motor %1 home</translation>
+    </message>
+    <message>
+        <source>not used as a limit or home</source>
+        <translation>not used as a limit or home</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unknown</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>on</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>off</translation>
+    </message>
+    <message>
+        <source>Limit and home inputs</source>
+        <translation>Limit and home inputs</translation>
+    </message>
+    <message>
+        <source>Wiring check</source>
+        <translation>Wiring check</translation>
+    </message>
+    <message>
+        <source>Inputs (live)</source>
+        <translation>Inputs (live)</translation>
+    </message>
+    <message>
+        <source>Outputs (live)</source>
+        <translation>Outputs (live)</translation>
+    </message>
+    <message>
+        <source>Positive limit</source>
+        <translation>Positive limit</translation>
+    </message>
+    <message>
+        <source>Negative limit</source>
+        <translation>Negative limit</translation>
+    </message>
+    <message>
+        <source>Home input</source>
+        <translation>Home input</translation>
+    </message>
+    <message>
+        <source>Motor &amp;%1:</source>
+        <translation>Motor &amp;%1:</translation>
+    </message>
+    <message>
+        <source>Homing runs in reverse until the home input is on, so the home input is usually the negative limit&apos;s input. Inputs are on with a 24 V negative (NPN) signal.</source>
+        <translation>Homing runs in reverse until the home input is on, so the home input is usually the negative limit&apos;s input. Inputs are on with a 24 V negative (NPN) signal.</translation>
+    </message>
+    <message>
+        <source>Output %1</source>
+        <translation>Output %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::JogController</name>
+    <message>
+        <source>Motor %1 has stopped now</source>
+        <translation>Motor %1 has stopped now</translation>
+    </message>
+    <message>
+        <source>Keyboard jogging is on</source>
+        <translation>Keyboard jogging is on</translation>
+    </message>
+    <message>
+        <source>Keyboard jogging is off</source>
+        <translation>Keyboard jogging is off</translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>forward</translation>
+    </message>
+    <message>
+        <source>reverse</source>
+        <translation>reverse</translation>
+    </message>
+    <message>
+        <source>There is no motor %1</source>
+        <translation>There is no motor %1</translation>
+    </message>
+    <message>
+        <source>Keyboard jogging is off: motor %1 does not move</source>
+        <translation>Keyboard jogging is off: motor %1 does not move</translation>
+    </message>
+    <message>
+        <source>Not connected: motor %1 does not move</source>
+        <translation>Not connected: motor %1 does not move</translation>
+    </message>
+    <message>
+        <source>Motor %1 already jogs %2: let go of it first</source>
+        <translation>Motor %1 already jogs %2: let go of it first</translation>
+    </message>
+    <message>
+        <source>Motor %1: the last jog command is still on its way; press again</source>
+        <translation>Motor %1: the last jog command is still on its way; press again</translation>
+    </message>
+    <message>
+        <source>Motor %1 may still be running after its stop: stop it before jogging</source>
+        <translation>Motor %1 may still be running after its stop: stop it before jogging</translation>
+    </message>
+    <message>
+        <source>Motor %1 is moving (a single move, homing or another command): stop it before jogging</source>
+        <translation>Motor %1 is moving (a single move, homing or another command): stop it before jogging</translation>
+    </message>
+    <message>
+        <source>Motor %1 has no %2 command in this map</source>
+        <translation>Motor %1 has no %2 command in this map</translation>
+    </message>
+    <message>
+        <source>Motor %1: jog %2</source>
+        <translation>Motor %1: jog %2</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>released</translation>
+    </message>
+    <message>
+        <source>stop button</source>
+        <translation>stop button</translation>
+    </message>
+    <message>
+        <source>Motor %1 has no stop command in this map: use the emergency stop</source>
+        <translation>Motor %1 has no stop command in this map: use the emergency stop</translation>
+    </message>
+    <message>
+        <source>not connected, the stop could not be sent</source>
+        <translation>not connected, the stop could not be sent</translation>
+    </message>
+    <message>
+        <source>Not connected: the stop for motor %1 was not sent</source>
+        <translation>Not connected: the stop for motor %1 was not sent</translation>
+    </message>
+    <message>
+        <source>Motor %1: jog %2 failed: %3</source>
+        <translation>Motor %1: jog %2 failed: %3</translation>
+    </message>
+    <message>
+        <source>the jog command failed</source>
+        <translation>the jog command failed</translation>
+    </message>
+    <message>
+        <source>Motor %1: the stop failed: %2</source>
+        <translation>Motor %1: the stop failed: %2</translation>
+    </message>
+    <message>
+        <source>Motor %1 stopped (%2)</source>
+        <translation>Motor %1 stopped (%2)</translation>
+    </message>
+    <message>
+        <source>Motor %1 still runs after its stop (%2)! Use the emergency stop, then check the controller.</source>
+        <translation>Motor %1 still runs after its stop (%2)! Use the emergency stop, then check the controller.</translation>
+    </message>
+    <message>
+        <source>Motor %1: could not check that it stopped: %2</source>
+        <translation>Motor %1: could not check that it stopped: %2</translation>
+    </message>
+    <message>
+        <source>Motor %1 is possibly still running (%2). The stop goes out as soon as the link is back; if needed now, use the machine&apos;s own emergency stop.</source>
+        <translation>Motor %1 is possibly still running (%2). The stop goes out as soon as the link is back; if needed now, use the machine&apos;s own emergency stop.</translation>
+    </message>
+    <message>
+        <source>the link was lost while it moved: %1</source>
+        <translation>the link was lost while it moved: %1</translation>
+    </message>
+    <message>
+        <source>The link is back: stopping motor %1, which was possibly still running</source>
+        <translation>The link is back: stopping motor %1, which was possibly still running</translation>
+    </message>
+    <message>
+        <source>link back</source>
+        <translation>link back</translation>
+    </message>
+    <message>
+        <source>Motor %1: jog %2 not done: %3</source>
+        <translation>Motor %1: jog %2 not done: %3</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::JogPanel</name>
+    <message>
+        <source>stop button</source>
+        <translation>stop button</translation>
+    </message>
+    <message>
+        <source>Single move</source>
+        <translation>Single move</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Homing</translation>
+    </message>
+    <message>
+        <source>%1 done</source>
+        <translation>%1 done</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>Not connected.</translation>
+    </message>
+    <message>
+        <source>Not read yet: %1.</source>
+        <translation>Not read yet: %1.</translation>
+    </message>
+    <message>
+        <source>%1 edited but not written: the controller moves by the values it holds. Write or revert the edit first.</source>
+        <translation>%1 edited but not written: the controller moves by the values it holds. Write or revert the edit first.</translation>
+    </message>
+    <message>
+        <source>The motor is moving.</source>
+        <translation>The motor is moving.</translation>
+    </message>
+    <message>
+        <source>This controller has no single move.</source>
+        <translation>This controller has no single move.</translation>
+    </message>
+    <message>
+        <source>%1, %2, at %3</source>
+        <translation>%1, %2, at %3</translation>
+    </message>
+    <message>
+        <source>Jogging forward</source>
+        <translation>Jogging forward</translation>
+    </message>
+    <message>
+        <source>Jogging in reverse</source>
+        <translation>Jogging in reverse</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>Stopping…</translation>
+    </message>
+    <message>
+        <source>STILL RUNNING after its stop: use the E-STOP</source>
+        <translation>STILL RUNNING after its stop: use the E-STOP</translation>
+    </message>
+    <message>
+        <source>Possibly still running: the link was lost; the stop goes out when it is back</source>
+        <translation>Possibly still running: the link was lost; the stop goes out when it is back</translation>
+    </message>
+    <message>
+        <source>%1… running</source>
+        <translation>%1… running</translation>
+    </message>
+    <message>
+        <source>%1…</source>
+        <translation>%1…</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Unknown</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>Running</translation>
+    </message>
+    <message>
+        <source>Idle</source>
+        <translation>Idle</translation>
+    </message>
+    <message>
+        <source>Idle — %1</source>
+        <translation>Idle — %1</translation>
+    </message>
+    <message>
+        <source>Jogs at %1, the controller&apos;s value, until you apply %2.</source>
+        <translation>Jogs at %1, the controller&apos;s value, until you apply %2.</translation>
+    </message>
+    <message>
+        <source>Move once by the distance shown, in the direction and at the speed shown (coil %1)</source>
+        <translation>Move once by the distance shown, in the direction and at the speed shown (coil %1)</translation>
+    </message>
+    <message>
+        <source>No home input: runs in reverse until a limit or a stop, without zeroing.</source>
+        <translation>No home input: runs in reverse until a limit or a stop, without zeroing.</translation>
+    </message>
+    <message>
+        <source>Reverse until %1, then position 0.</source>
+        <translation>Reverse until %1, then position 0.</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>◀ Reverse</source>
+        <translation>◀ Reverse</translation>
+    </message>
+    <message>
+        <source>Forward ▶</source>
+        <translation>Forward ▶</translation>
+    </message>
+    <message>
+        <source>Hold to run motor %1 in reverse; let go to stop</source>
+        <translation>Hold to run motor %1 in reverse; let go to stop</translation>
+    </message>
+    <message>
+        <source>Hold to run motor %1 forward; let go to stop</source>
+        <translation>Hold to run motor %1 forward; let go to stop</translation>
+    </message>
+    <message>
+        <source>Stop motor &amp;%1</source>
+        <translation>Stop motor &amp;%1</translation>
+    </message>
+    <message>
+        <source>Stop motor %1 at once, whatever started it</source>
+        <translation>Stop motor %1 at once, whatever started it</translation>
+    </message>
+    <message>
+        <source>Position:</source>
+        <translation>Position:</translation>
+    </message>
+    <message>
+        <source>Jog speed:</source>
+        <translation>Jog speed:</translation>
+    </message>
+    <message>
+        <source>&amp;Apply speed</source>
+        <translation>&amp;Apply speed</translation>
+    </message>
+    <message>
+        <source>Write just the jog speed to the controller now and read it back. The controller takes a new speed even while the motor runs. Other edits wait for &quot;Write changes&quot;.</source>
+        <translation>Write just the jog speed to the controller now and read it back. The controller takes a new speed even while the motor runs. Other edits wait for &quot;Write changes&quot;.</translation>
+    </message>
+    <message>
+        <source>Single move:</source>
+        <translation>Single move:</translation>
+    </message>
+    <message>
+        <source>&amp;Single move</source>
+        <translation>&amp;Single move</translation>
+    </message>
+    <message>
+        <source>Home:</source>
+        <translation>Home:</translation>
+    </message>
+    <message>
+        <source>Home &amp;motor %1</source>
+        <translation>Home &amp;motor %1</translation>
+    </message>
+    <message>
+        <source>Run motor %1 in reverse to its home input and set its position to 0</source>
+        <translation>Run motor %1 in reverse to its home input and set its position to 0</translation>
     </message>
 </context>
 <context>
     <name>stepcom::LinkSettings</name>
     <message>
         <source>device id %1 is outside 1-255</source>
-        <translation type="unfinished"></translation>
+        <translation>device id %1 is outside 1-255</translation>
     </message>
     <message>
         <source>timeout %1 ms is outside 20-60000 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>timeout %1 ms is outside 20-60000 ms</translation>
     </message>
     <message>
         <source>retries %1 is outside 0-10</source>
-        <translation type="unfinished"></translation>
+        <translation>retries %1 is outside 0-10</translation>
     </message>
     <message>
         <source>no host given</source>
-        <translation type="unfinished"></translation>
+        <translation>no host given</translation>
     </message>
     <message>
         <source>TCP port %1 is outside 1-65535</source>
-        <translation type="unfinished"></translation>
+        <translation>TCP port %1 is outside 1-65535</translation>
     </message>
     <message>
         <source>no serial port given</source>
-        <translation type="unfinished"></translation>
+        <translation>no serial port given</translation>
     </message>
     <message>
         <source>baud %1 is not one of 4800, 9600, 19200, 38400</source>
-        <translation type="unfinished"></translation>
+        <translation>baud %1 is not one of 4800, 9600, 19200, 38400</translation>
     </message>
     <message>
         <source>stop bits must be 1 or 2</source>
-        <translation type="unfinished"></translation>
+        <translation>stop bits must be 1 or 2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::LinkStatus</name>
+    <message>
+        <source>Connected (simulator)</source>
+        <translation>Connected (simulator)</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>Connected</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>Connecting…</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Disconnected</translation>
+    </message>
+    <message>
+        <source>%1 transactions/s · status %2 Hz</source>
+        <translation>%1 transactions/s · status %2 Hz</translation>
+    </message>
+    <message>
+        <source>errors: %1 (timeouts %2, CRC %3, exceptions %4)</source>
+        <translation>errors: %1 (timeouts %2, CRC %3, exceptions %4)</translation>
+    </message>
+    <message>
+        <source>⚠ Not saved to flash</source>
+        <translation>⚠ Not saved to flash</translation>
+    </message>
+    <message>
+        <source>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</source>
+        <translation>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MainWindow</name>
+    <message>
+        <source>About StepCom</source>
+        <translation>About StepCom</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;StepCom %1&lt;/b&gt;&lt;br&gt;Commissioning tool for 2-axis stepper controllers over Modbus RTU/TCP.&lt;br&gt;GPL-3.0-or-later.</source>
+        <translation>&lt;b&gt;StepCom %1&lt;/b&gt;&lt;br&gt;Commissioning tool for 2-axis stepper controllers over Modbus RTU/TCP.&lt;br&gt;GPL-3.0-or-later.</translation>
+    </message>
+    <message>
+        <source>StepCom — stepper controller commissioning</source>
+        <translation>StepCom — stepper controller commissioning</translation>
+    </message>
+    <message>
+        <source>&amp;Read all</source>
+        <translation>&amp;Read all</translation>
+    </message>
+    <message>
+        <source>Read every parameter from the controller (%1)</source>
+        <translation>Read every parameter from the controller (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Write changes…</source>
+        <translation>&amp;Write changes…</translation>
+    </message>
+    <message>
+        <source>Show the edited values, then write them and verify (%1)</source>
+        <translation>Show the edited values, then write them and verify (%1)</translation>
+    </message>
+    <message>
+        <source>Re&amp;vert</source>
+        <translation>Re&amp;vert</translation>
+    </message>
+    <message>
+        <source>Drop every edit and show what the controller holds</source>
+        <translation>Drop every edit and show what the controller holds</translation>
+    </message>
+    <message>
+        <source>&amp;Save to flash</source>
+        <translation>&amp;Save to flash</translation>
+    </message>
+    <message>
+        <source>Save the controller&apos;s parameters to its non-volatile memory (coil 00096)</source>
+        <translation>Save the controller&apos;s parameters to its non-volatile memory (coil 00096)</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Disconnect</translation>
+    </message>
+    <message>
+        <source>&amp;Emergency stop</source>
+        <translation>&amp;Emergency stop</translation>
+    </message>
+    <message>
+        <source>All motors and outputs off, at once (key: %1)</source>
+        <translation>All motors and outputs off, at once (key: %1)</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quit</translation>
+    </message>
+    <message>
+        <source>&amp;About StepCom</source>
+        <translation>&amp;About StepCom</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;File</translation>
+    </message>
+    <message>
+        <source>&amp;Device</source>
+        <translation>&amp;Device</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;View</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Language</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Help</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>Main toolbar</translation>
+    </message>
+    <message>
+        <source>Traffic</source>
+        <translation>Traffic</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>Messages</translation>
+    </message>
+    <message>
+        <source>Unwritten changes</source>
+        <translation>Unwritten changes</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) were never written to the controller. Close anyway and lose them?</source>
+        <translation>
+            <numerusform>%n edited value was never written to the controller. Close anyway and lose it?</numerusform>
+            <numerusform>%n edited values were never written to the controller. Close anyway and lose them?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>another page was chosen</source>
+        <translation>another page was chosen</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>the window lost focus</translation>
+    </message>
+    <message>
+        <source>the window closes</source>
+        <translation>the window closes</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MessageView</name>
+    <message>
+        <source>C&amp;lear messages</source>
+        <translation>C&amp;lear messages</translation>
     </message>
 </context>
 <context>
     <name>stepcom::Modbus</name>
     <message>
         <source>illegal function</source>
-        <translation type="unfinished"></translation>
+        <translation>illegal function</translation>
     </message>
     <message>
         <source>illegal data address</source>
-        <translation type="unfinished"></translation>
+        <translation>illegal data address</translation>
     </message>
     <message>
         <source>illegal data value</source>
-        <translation type="unfinished"></translation>
+        <translation>illegal data value</translation>
     </message>
     <message>
         <source>server device failure</source>
-        <translation type="unfinished"></translation>
+        <translation>server device failure</translation>
     </message>
     <message>
         <source>acknowledge</source>
-        <translation type="unfinished"></translation>
+        <translation>acknowledge</translation>
     </message>
     <message>
         <source>server device busy</source>
-        <translation type="unfinished"></translation>
+        <translation>server device busy</translation>
     </message>
     <message>
         <source>exception %1</source>
-        <translation type="unfinished"></translation>
+        <translation>exception %1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::ModbusLink</name>
     <message>
         <source>no connection to %1 within %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>no connection to %1 within %2 s</translation>
     </message>
     <message>
         <source>reconnecting</source>
-        <translation type="unfinished"></translation>
+        <translation>reconnecting</translation>
     </message>
     <message>
         <source>serial port %1 does not exist (is the adapter plugged in?)</source>
-        <translation type="unfinished"></translation>
+        <translation>serial port %1 does not exist (is the adapter plugged in?)</translation>
     </message>
     <message>
         <source>no permission to open %1: add your user to the group that owns it (on Debian and Ubuntu: sudo usermod -aG dialout $USER), then log out and in again</source>
-        <translation type="unfinished"></translation>
+        <translation>no permission to open %1: add your user to the group that owns it (on Debian and Ubuntu: sudo usermod -aG dialout $USER), then log out and in again</translation>
     </message>
     <message>
         <source>connecting to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>connecting to %1</translation>
     </message>
     <message>
         <source>cannot open %1</source>
-        <translation type="unfinished"></translation>
+        <translation>cannot open %1</translation>
     </message>
     <message>
         <source>connected to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>connected to %1</translation>
     </message>
     <message>
         <source>connection closed</source>
-        <translation type="unfinished"></translation>
+        <translation>connection closed</translation>
     </message>
     <message>
         <source>the port reported an error</source>
-        <translation type="unfinished"></translation>
+        <translation>the port reported an error</translation>
     </message>
     <message>
         <source>link lost: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>link lost: %1</translation>
     </message>
     <message>
         <source>link closed</source>
-        <translation type="unfinished"></translation>
+        <translation>link closed</translation>
     </message>
     <message>
         <source>disconnected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>disconnected: %1</translation>
     </message>
     <message>
         <source>%1: not done, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: not done, %2</translation>
     </message>
     <message>
         <source>%1: not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: not connected</translation>
     </message>
     <message>
         <source>%1: cancelled%2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: cancelled%2</translation>
     </message>
     <message>
         <source>%1: could not send: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: could not send: %2</translation>
     </message>
     <message>
         <source>%1: answer carried %2 registers, %3 were asked for</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: answer carried %2 registers, %3 were asked for</translation>
     </message>
     <message>
         <source>%1: the controller refused: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: the controller refused: %2</translation>
     </message>
     <message>
         <source>%1: answers had a bad checksum (CRC)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: answers had a bad checksum (CRC)</translation>
     </message>
     <message>
         <source>%1: no answer within %2 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: no answer within %2 ms</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <source> -- the controller may have acted on it</source>
-        <translation type="unfinished"></translation>
+        <translation> -- the controller may have acted on it</translation>
     </message>
     <message>
         <source>the port stopped responding (no answer and no timeout from the driver)</source>
-        <translation type="unfinished"></translation>
+        <translation>the port stopped responding (no answer and no timeout from the driver)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MotionPage</name>
+    <message>
+        <source>Homing in order</source>
+        <translation>Homing in order</translation>
+    </message>
+    <message>
+        <source>Returning to data zero</source>
+        <translation>Returning to data zero</translation>
+    </message>
+    <message>
+        <source>Coordinates zeroed</source>
+        <translation>Coordinates zeroed</translation>
+    </message>
+    <message>
+        <source>motor %1 at %2</source>
+        <translation>motor %1 at %2</translation>
+    </message>
+    <message>
+        <source>%1: done (%2)</source>
+        <translation>%1: done (%2)</translation>
+    </message>
+    <message>
+        <source>Jog and home</source>
+        <translation>Jog and home</translation>
+    </message>
+    <message>
+        <source>%1…</source>
+        <translation>%1…</translation>
+    </message>
+    <message>
+        <source>%1… motor %2 running</source>
+        <translation>%1… motor %2 running</translation>
+    </message>
+    <message>
+        <source>&quot;Home in order&quot; uses the order the controller holds (%1) until you apply the edit.</source>
+        <translation>&quot;Home in order&quot; uses the order the controller holds (%1) until you apply the edit.</translation>
+    </message>
+    <message>
+        <source>Homes %1.</source>
+        <translation>Homes %1.</translation>
+    </message>
+    <message>
+        <source>the page was left</source>
+        <translation>the page was left</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>the window lost focus</translation>
+    </message>
+    <message>
+        <source>&amp;Clear</source>
+        <translation>&amp;Clear</translation>
+    </message>
+    <message>
+        <source>Hide this note; the messages dock keeps it</source>
+        <translation>Hide this note; the messages dock keeps it</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard jogging</source>
+        <translation>&amp;Keyboard jogging</translation>
+    </message>
+    <message>
+        <source>Off by default. When on, the arrow keys jog while this page is shown and the window has focus</source>
+        <translation>Off by default. When on, the arrow keys jog while this page is shown and the window has focus</translation>
+    </message>
+    <message>
+        <source>⌨ KEYBOARD JOGGING ON</source>
+        <translation>⌨ KEYBOARD JOGGING ON</translation>
+    </message>
+    <message>
+        <source>Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward. Hold to move, let go to stop. Not while typing in a field; leaving the page or the window stops.</source>
+        <translation>Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward. Hold to move, let go to stop. Not while typing in a field; leaving the page or the window stops.</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>Homing</translation>
+    </message>
+    <message>
+        <source>Apply o&amp;rder</source>
+        <translation>Apply o&amp;rder</translation>
+    </message>
+    <message>
+        <source>Write just the homing order to the controller now and read it back</source>
+        <translation>Write just the homing order to the controller now and read it back</translation>
+    </message>
+    <message>
+        <source>Home &amp;in order</source>
+        <translation>Home &amp;in order</translation>
+    </message>
+    <message>
+        <source>&amp;Zero coordinates</source>
+        <translation>&amp;Zero coordinates</translation>
+    </message>
+    <message>
+        <source>Make the present positions of all motors 0; nothing moves</source>
+        <translation>Make the present positions of all motors 0; nothing moves</translation>
+    </message>
+    <message>
+        <source>Re&amp;turn to data zero</source>
+        <translation>Re&amp;turn to data zero</translation>
+    </message>
+    <message>
+        <source>Drive every idle motor back to position 0</source>
+        <translation>Drive every idle motor back to position 0</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Outputs</translation>
+    </message>
+    <message>
+        <source>Output 1 o&amp;n</source>
+        <translation>Output 1 o&amp;n</translation>
+    </message>
+    <message>
+        <source>O&amp;utput 1 off</source>
+        <translation>O&amp;utput 1 off</translation>
+    </message>
+    <message>
+        <source>All out&amp;puts on</source>
+        <translation>All out&amp;puts on</translation>
+    </message>
+    <message>
+        <source>All &amp;outputs off</source>
+        <translation>All &amp;outputs off</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MotorPage</name>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Computed from the values shown, including edits not written yet.</source>
+        <translation>Computed from the values shown, including edits not written yet.</translation>
+    </message>
+    <message>
+        <source>Computed from the values shown.</source>
+        <translation>Computed from the values shown.</translation>
+    </message>
+    <message>
+        <source>Motor %1 parameters</source>
+        <translation>Motor %1 parameters</translation>
+    </message>
+    <message>
+        <source>Derived values</source>
+        <translation>Derived values</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>Motion</translation>
+    </message>
+    <message>
+        <source>&amp;Stop motor %1</source>
+        <translation>&amp;Stop motor %1</translation>
+    </message>
+    <message>
+        <source>Stops the motor at once, without a ramp. The E-STOP in the toolbar stops everything.</source>
+        <translation>Stops the motor at once, without a ramp. The E-STOP in the toolbar stops everything.</translation>
     </message>
 </context>
 <context>
     <name>stepcom::Parameter</name>
     <message>
         <source>%1: %2 is not one of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 is not one of %3</translation>
     </message>
     <message>
         <source>%1: %2 is out of range (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 is out of range (%3)</translation>
     </message>
     <message>
         <source>%1: no value given</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: no value given</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: &apos;%2&apos; is not a number</translation>
     </message>
     <message numerus="yes">
         <source>%1: &apos;%2&apos; has more than %n decimal(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1: &apos;%2&apos; has more than %n decimal</numerusform>
+            <numerusform>%1: &apos;%2&apos; has more than %n decimals</numerusform>
         </translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is far too large</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: &apos;%2&apos; is far too large</translation>
     </message>
     <message>
         <source>%1: not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: not a finite number</translation>
     </message>
     <message>
         <source>%1: %2 is far too large</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 is far too large</translation>
     </message>
     <message numerus="yes">
         <source>%1: %2 has more than %n decimal(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1: %2 has more than %n decimal</numerusform>
+            <numerusform>%1: %2 has more than %n decimals</numerusform>
         </translation>
     </message>
 </context>
@@ -567,185 +2164,348 @@
     <name>stepcom::ParameterField</name>
     <message>
         <source>Not read from the controller yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Not read from the controller yet</translation>
     </message>
     <message>
         <source>The controller holds this value</source>
-        <translation type="unfinished"></translation>
+        <translation>The controller holds this value</translation>
     </message>
     <message>
         <source>Edited, not written yet (the controller holds %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Edited, not written yet (the controller holds %1)</translation>
     </message>
     <message>
         <source>Edited, not written yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Edited, not written yet</translation>
     </message>
     <message>
         <source>Write failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Write failed: %1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::ParameterStore</name>
     <message>
         <source>unknown parameter %1</source>
-        <translation type="unfinished"></translation>
+        <translation>unknown parameter %1</translation>
     </message>
     <message>
         <source>%1 is read-only</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 is read-only</translation>
     </message>
     <message>
         <source>the controller holds %1 instead</source>
-        <translation type="unfinished"></translation>
+        <translation>the controller holds %1 instead</translation>
     </message>
     <message>
         <source>not written: an earlier write failed</source>
-        <translation type="unfinished"></translation>
+        <translation>not written: an earlier write failed</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PlotPage</name>
+    <message>
+        <source>Plots</source>
+        <translation>Plots</translation>
+    </message>
+    <message>
+        <source>Cannot write the picture “%1”.</source>
+        <translation>Cannot write the picture “%1”.</translation>
+    </message>
+    <message>
+        <source>Record status to CSV</source>
+        <translation>Record status to CSV</translation>
+    </message>
+    <message>
+        <source>Export plots as PNG</source>
+        <translation>Export plots as PNG</translation>
+    </message>
+    <message>
+        <source>Export visible samples as CSV</source>
+        <translation>Export visible samples as CSV</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG images (*.png)</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV files (*.csv)</translation>
+    </message>
+    <message>
+        <source>Saved “%1”.</source>
+        <translation>Saved “%1”.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to “%1”: %n sample(s)</source>
+        <translation>
+            <numerusform>Recording to “%1”: %n sample</numerusform>
+            <numerusform>Recording to “%1”: %n samples</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Not recording. Samples of the last %n minute(s) are kept for the plots and exports.</source>
+        <translation>
+            <numerusform>Not recording. Samples of the last %n minute are kept for the plots and exports.</numerusform>
+            <numerusform>Not recording. Samples of the last %n minutes are kept for the plots and exports.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Resume</source>
+        <translation>&amp;Resume</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <source>Freeze the plots; samples are still taken and recorded</source>
+        <translation>Freeze the plots; samples are still taken and recorded</translation>
+    </message>
+    <message>
+        <source>&amp;Fit</source>
+        <translation>&amp;Fit</translation>
+    </message>
+    <message>
+        <source>Show all of the data (or double-click a plot). Drag to zoom into a region, wheel to zoom, middle button to pan.</source>
+        <translation>Show all of the data (or double-click a plot). Drag to zoom into a region, wheel to zoom, middle button to pan.</translation>
+    </message>
+    <message>
+        <source>&amp;Clear path</source>
+        <translation>&amp;Clear path</translation>
+    </message>
+    <message>
+        <source>Start the tool path trace again from here</source>
+        <translation>Start the tool path trace again from here</translation>
+    </message>
+    <message>
+        <source>&amp;Window:</source>
+        <translation>&amp;Window:</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>How many seconds the position plot shows</source>
+        <translation>How many seconds the position plot shows</translation>
+    </message>
+    <message>
+        <source>Export P&amp;NG…</source>
+        <translation>Export P&amp;NG…</translation>
+    </message>
+    <message>
+        <source>Save both plots as they are shown as a PNG picture</source>
+        <translation>Save both plots as they are shown as a PNG picture</translation>
+    </message>
+    <message>
+        <source>Export CS&amp;V…</source>
+        <translation>Export CS&amp;V…</translation>
+    </message>
+    <message>
+        <source>Save the samples in the visible time range as CSV</source>
+        <translation>Save the samples in the visible time range as CSV</translation>
+    </message>
+    <message>
+        <source>&amp;Stop recording</source>
+        <translation>&amp;Stop recording</translation>
+    </message>
+    <message>
+        <source>&amp;Record CSV…</source>
+        <translation>&amp;Record CSV…</translation>
+    </message>
+    <message>
+        <source>Write every status sample to a CSV file as it arrives</source>
+        <translation>Write every status sample to a CSV file as it arrives</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Motor %1 (%2)</source>
+        <translation>Motor %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Tool path</source>
+        <translation>Tool path</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::Poller</name>
+    <message>
+        <source>poll %1/%2</source>
+        <translation>poll %1/%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PositionPlot</name>
+    <message>
+        <source>Cannot write the picture “%1”.</source>
+        <translation>Cannot write the picture “%1”.</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Position</translation>
+    </message>
+    <message>
+        <source>Position (%1)</source>
+        <translation>Position (%1)</translation>
+    </message>
+    <message>
+        <source>Drag to zoom into a region, wheel or +/- to zoom, middle button or arrow keys to pan, double-click or Home to fit. Zooming pauses the view.</source>
+        <translation>Drag to zoom into a region, wheel or +/- to zoom, middle button or arrow keys to pan, double-click or Home to fit. Zooming pauses the view.</translation>
+    </message>
+    <message>
+        <source>Time (s), 0 = %1</source>
+        <translation>Time (s), 0 = %1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimCommandLine</name>
     <message>
         <source>N</source>
-        <translation type="unfinished"></translation>
+        <translation>N</translation>
     </message>
     <message>
         <source>MS</source>
-        <translation type="unfinished"></translation>
+        <translation>MS</translation>
     </message>
     <message>
         <source>SHARE</source>
-        <translation type="unfinished"></translation>
+        <translation>SHARE</translation>
     </message>
     <message>
         <source>Serve Modbus RTU on a new pseudo-terminal (Unix).</source>
-        <translation type="unfinished"></translation>
+        <translation>Serve Modbus RTU on a new pseudo-terminal (Unix).</translation>
     </message>
     <message>
         <source>Make PATH a symlink to the pseudo-terminal.</source>
-        <translation type="unfinished"></translation>
+        <translation>Make PATH a symlink to the pseudo-terminal.</translation>
     </message>
     <message>
         <source>PATH</source>
-        <translation type="unfinished"></translation>
+        <translation>PATH</translation>
     </message>
     <message>
         <source>Answer whatever baud rate the client set (by default a client whose baud differs from register 40213 gets silence, as on a real line).</source>
-        <translation type="unfinished"></translation>
+        <translation>Answer whatever baud rate the client set (by default a client whose baud differs from register 40213 gets silence, as on a real line).</translation>
     </message>
     <message>
         <source>Serve Modbus TCP on [HOST:]PORT (127.0.0.1 unless --listen-any; port 0 picks a free one).</source>
-        <translation type="unfinished"></translation>
+        <translation>Serve Modbus TCP on [HOST:]PORT (127.0.0.1 unless --listen-any; port 0 picks a free one).</translation>
     </message>
     <message>
         <source>[HOST:]PORT</source>
-        <translation type="unfinished"></translation>
+        <translation>[HOST:]PORT</translation>
     </message>
     <message>
         <source>Listen for TCP on every interface.</source>
-        <translation type="unfinished"></translation>
+        <translation>Listen for TCP on every interface.</translation>
     </message>
     <message>
         <source>Refuse reads of reserved registers (exception 02) instead of reading 0.</source>
-        <translation type="unfinished"></translation>
+        <translation>Refuse reads of reserved registers (exception 02) instead of reading 0.</translation>
     </message>
     <message>
         <source>Device id 1-255 (overrides the saved one).</source>
-        <translation type="unfinished"></translation>
+        <translation>Device id 1-255 (overrides the saved one).</translation>
     </message>
     <message>
         <source>The simulator&apos;s flash: saved parameters are loaded from and saved to FILE.</source>
-        <translation type="unfinished"></translation>
+        <translation>The simulator&apos;s flash: saved parameters are loaded from and saved to FILE.</translation>
     </message>
     <message>
         <source>FILE</source>
-        <translation type="unfinished"></translation>
+        <translation>FILE</translation>
     </message>
     <message>
         <source>Use the register map FILE instead of the built-in one.</source>
-        <translation type="unfinished"></translation>
+        <translation>Use the register map FILE instead of the built-in one.</translation>
     </message>
     <message>
         <source>Answer no sooner than MS after a request (default: the map&apos;s, 35).</source>
-        <translation type="unfinished"></translation>
+        <translation>Answer no sooner than MS after a request (default: the map&apos;s, 35).</translation>
     </message>
     <message>
         <source>Add the bytes&apos; time on a line at N baud to every answer.</source>
-        <translation type="unfinished"></translation>
+        <translation>Add the bytes&apos; time on a line at N baud to every answer.</translation>
     </message>
     <message>
         <source>Drop a SHARE (0-1 or %) of the answers.</source>
-        <translation type="unfinished"></translation>
+        <translation>Drop a SHARE (0-1 or %) of the answers.</translation>
     </message>
     <message>
         <source>Break the CRC of a SHARE of the answers.</source>
-        <translation type="unfinished"></translation>
+        <translation>Break the CRC of a SHARE of the answers.</translation>
     </message>
     <message>
         <source>Answer a SHARE of the requests MS later.</source>
-        <translation type="unfinished"></translation>
+        <translation>Answer a SHARE of the requests MS later.</translation>
     </message>
     <message>
         <source>SHARE:MS</source>
-        <translation type="unfinished"></translation>
+        <translation>SHARE:MS</translation>
     </message>
     <message>
         <source>Answer a SHARE of the requests with exception CODE instead.</source>
-        <translation type="unfinished"></translation>
+        <translation>Answer a SHARE of the requests with exception CODE instead.</translation>
     </message>
     <message>
         <source>SHARE:CODE</source>
-        <translation type="unfinished"></translation>
+        <translation>SHARE:CODE</translation>
     </message>
     <message>
         <source>Hang up the port after every N answers (it comes back, see --hangup-pause).</source>
-        <translation type="unfinished"></translation>
+        <translation>Hang up the port after every N answers (it comes back, see --hangup-pause).</translation>
     </message>
     <message>
         <source>How long a hung-up port stays away (default 1000).</source>
-        <translation type="unfinished"></translation>
+        <translation>How long a hung-up port stays away (default 1000).</translation>
     </message>
     <message>
         <source>Seed of the fault dice (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Seed of the fault dice (default 1).</translation>
     </message>
     <message>
         <source>Set an input at start: INn=on|off|pulse (repeatable).</source>
-        <translation type="unfinished"></translation>
+        <translation>Set an input at start: INn=on|off|pulse (repeatable).</translation>
     </message>
     <message>
         <source>INn=STATE</source>
-        <translation type="unfinished"></translation>
+        <translation>INn=STATE</translation>
     </message>
     <message>
         <source>Travel of each axis between its limit switches (default 200).</source>
-        <translation type="unfinished"></translation>
+        <translation>Travel of each axis between its limit switches (default 200).</translation>
     </message>
     <message>
         <source>MM</source>
-        <translation type="unfinished"></translation>
+        <translation>MM</translation>
     </message>
     <message>
         <source>--tcp: &apos;%1&apos; is not [HOST:]PORT</source>
-        <translation type="unfinished"></translation>
+        <translation>--tcp: &apos;%1&apos; is not [HOST:]PORT</translation>
     </message>
     <message>
         <source>--input: &apos;%1&apos; is not INn=on|off|pulse</source>
-        <translation type="unfinished"></translation>
+        <translation>--input: &apos;%1&apos; is not INn=on|off|pulse</translation>
     </message>
     <message>
         <source>--%1: &apos;%2&apos; must be a whole number from %3 to %4</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1: &apos;%2&apos; must be a whole number from %3 to %4</translation>
     </message>
     <message>
         <source>--exception: the code must be 1-255</source>
-        <translation type="unfinished"></translation>
+        <translation>--exception: the code must be 1-255</translation>
     </message>
     <message>
         <source>--travel: &apos;%1&apos; must be a positive distance</source>
-        <translation type="unfinished"></translation>
+        <translation>--travel: &apos;%1&apos; must be a positive distance</translation>
     </message>
 </context>
 <context>
@@ -761,201 +2521,518 @@
   hangup [MS]            hang up the port; it comes back after MS
   help                   this text
   quit                   end the simulator</source>
-        <translation type="unfinished"></translation>
+        <translation>Commands:
+  status                 motors, inputs, outputs, link and traffic
+  in N on|off|pulse      drive input N by hand (pulse: on for 50 ms)
+  get KEY                show a register (e.g. get motor1.position)
+  set KEY VALUE          write a parameter as a client would (e.g. set motor1.speed 600)
+  do COMMAND             run a coil command (e.g. do motor1.move, do estop)
+  place N MM             put carriage N at MM on its travel by hand
+  hangup [MS]            hang up the port; it comes back after MS
+  help                   this text
+  quit                   end the simulator</translation>
     </message>
     <message>
         <source>the simulator is not running</source>
-        <translation type="unfinished"></translation>
+        <translation>the simulator is not running</translation>
     </message>
     <message>
         <source>usage: hangup [MS]</source>
-        <translation type="unfinished"></translation>
+        <translation>usage: hangup [MS]</translation>
     </message>
     <message>
         <source>hanging up</source>
-        <translation type="unfinished"></translation>
+        <translation>hanging up</translation>
     </message>
     <message>
         <source>unknown command &apos;%1&apos; (try help)</source>
-        <translation type="unfinished"></translation>
+        <translation>unknown command &apos;%1&apos; (try help)</translation>
     </message>
     <message>
         <source>usage: in N on|off|pulse</source>
-        <translation type="unfinished"></translation>
+        <translation>usage: in N on|off|pulse</translation>
     </message>
     <message>
         <source>usage: in N on|off|pulse, N from 1 to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>usage: in N on|off|pulse, N from 1 to %1</translation>
     </message>
     <message>
         <source>IN%1 is %2</source>
-        <translation type="unfinished"></translation>
+        <translation>IN%1 is %2</translation>
     </message>
     <message>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>on</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>off</translation>
     </message>
     <message>
         <source>usage: get KEY</source>
-        <translation type="unfinished"></translation>
+        <translation>usage: get KEY</translation>
     </message>
     <message>
         <source>%1: no such register</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: no such register</translation>
     </message>
     <message>
         <source>usage: set KEY VALUE</source>
-        <translation type="unfinished"></translation>
+        <translation>usage: set KEY VALUE</translation>
     </message>
     <message>
         <source>usage: do COMMAND</source>
-        <translation type="unfinished"></translation>
+        <translation>usage: do COMMAND</translation>
     </message>
     <message>
         <source>done: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>done: %1</translation>
     </message>
     <message>
         <source>usage: place N MM</source>
-        <translation type="unfinished"></translation>
+        <translation>usage: place N MM</translation>
     </message>
     <message>
         <source>carriage %1 at %2</source>
-        <translation type="unfinished"></translation>
+        <translation>carriage %1 at %2</translation>
     </message>
     <message>
         <source>rtu: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>rtu: %1</translation>
     </message>
     <message>
         <source>(hung up)</source>
-        <translation type="unfinished"></translation>
+        <translation>(hung up)</translation>
     </message>
     <message>
         <source>tcp: %1:%2</source>
-        <translation type="unfinished"></translation>
+        <translation>tcp: %1:%2</translation>
     </message>
     <message>
         <source>requests %1, answers %2 (exceptions %3), dropped %4, bad CRC %5, late %6, wrong baud %7</source>
-        <translation type="unfinished"></translation>
+        <translation>requests %1, answers %2 (exceptions %3), dropped %4, bad CRC %5, late %6, wrong baud %7</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimDevice</name>
     <message>
         <source>%1: not a writable parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: not a writable parameter</translation>
     </message>
     <message>
         <source>%1: not a command of the map</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: not a command of the map</translation>
     </message>
     <message>
         <source>%1: the device failed</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: the device failed</translation>
     </message>
     <message>
         <source>time %1 ms, mode %2, id %3, %4 baud</source>
-        <translation type="unfinished"></translation>
+        <translation>time %1 ms, mode %2, id %3, %4 baud</translation>
     </message>
     <message>
         <source>motor %1: position %2, %3, carriage at %4 of %5</source>
-        <translation type="unfinished"></translation>
+        <translation>motor %1: position %2, %3, carriage at %4 of %5</translation>
     </message>
     <message>
         <source>running</source>
-        <translation type="unfinished"></translation>
+        <translation>running</translation>
     </message>
     <message>
         <source>idle</source>
-        <translation type="unfinished"></translation>
+        <translation>idle</translation>
     </message>
     <message>
         <source>inputs:%1</source>
-        <translation type="unfinished"></translation>
+        <translation>inputs:%1</translation>
     </message>
     <message>
         <source>outputs:%1</source>
-        <translation type="unfinished"></translation>
+        <translation>outputs:%1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimRegisters</name>
     <message>
         <source>%1: not a writable parameter of the map</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: not a writable parameter of the map</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimState</name>
     <message>
         <source>cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>cannot write %1: %2</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>cannot read %1: %2</translation>
     </message>
     <message>
         <source>%1: not JSON (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: not JSON (%2)</translation>
     </message>
     <message>
         <source>%1: not a simulator state file</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: not a simulator state file</translation>
     </message>
     <message>
         <source>%1: parameter %2 is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: parameter %2 is not a number</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimTcpServer</name>
     <message>
         <source>cannot listen on %1:%2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>cannot listen on %1:%2: %3</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimWorker</name>
     <message>
         <source>RTU server: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>RTU server: %1</translation>
     </message>
     <message>
         <source>cannot open the pseudo-terminal: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>cannot open the pseudo-terminal: %1</translation>
     </message>
     <message>
         <source>Modbus RTU on a pseudo-terminal is not available on this system; use --tcp</source>
-        <translation type="unfinished"></translation>
+        <translation>Modbus RTU on a pseudo-terminal is not available on this system; use --tcp</translation>
     </message>
     <message>
         <source>cannot re-create the port: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>cannot re-create the port: %1</translation>
     </message>
 </context>
 <context>
-    <name>stepcom::WriteJob</name>
+    <name>stepcom::StatusDock</name>
     <message>
-        <source>could not reopen the port at the new baud: %1</source>
-        <translation type="unfinished"></translation>
+        <source>unknown</source>
+        <translation>unknown</translation>
     </message>
     <message>
-        <source>%1: wrote %2 but the controller holds %3</source>
-        <translation type="unfinished"></translation>
+        <source>Running</source>
+        <translation>Running</translation>
     </message>
     <message>
-        <source>%1: wrote %2 but could not read it back</source>
-        <translation type="unfinished"></translation>
+        <source>Stopped</source>
+        <translation>Stopped</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>on</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>off</translation>
+    </message>
+    <message>
+        <source>measuring…</source>
+        <translation>measuring…</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Inputs and outputs</source>
+        <translation>Inputs and outputs</translation>
+    </message>
+    <message>
+        <source>In</source>
+        <translation>In</translation>
+    </message>
+    <message>
+        <source>Out</source>
+        <translation>Out</translation>
+    </message>
+    <message>
+        <source>IN%1</source>
+        <translation>IN%1</translation>
+    </message>
+    <message>
+        <source>OUT%1</source>
+        <translation>OUT%1</translation>
+    </message>
+    <message>
+        <source>Update rate</source>
+        <translation>Update rate</translation>
+    </message>
+    <message>
+        <source>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</source>
+        <translation>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::StatusRecorder</name>
+    <message>
+        <source>Recording to “%1” stopped: %2</source>
+        <translation>Recording to “%1” stopped: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write “%1”: %2</source>
+        <translation>Cannot write “%1”: %2</translation>
+    </message>
+    <message>
+        <source>Cannot record: no file name given</source>
+        <translation>Cannot record: no file name given</translation>
+    </message>
+    <message>
+        <source>Cannot record to “%1”: %2</source>
+        <translation>Cannot record to “%1”: %2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TrafficModel</name>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation>Dir</translation>
+    </message>
+    <message>
+        <source>Bytes (hex)</source>
+        <translation>Bytes (hex)</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>Meaning</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TrafficView</name>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <source>C&amp;lear</source>
+        <translation>C&amp;lear</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copy</translation>
+    </message>
+    <message>
+        <source>&amp;Save…</source>
+        <translation>&amp;Save…</translation>
+    </message>
+    <message>
+        <source>Copy the selected rows (all rows when none are selected)</source>
+        <translation>Copy the selected rows (all rows when none are selected)</translation>
+    </message>
+    <message>
+        <source>Save traffic log</source>
+        <translation>Save traffic log</translation>
+    </message>
+    <message>
+        <source>Text files (*.txt *.log)</source>
+        <translation>Text files (*.txt *.log)</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2</source>
+        <translation>Could not save %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WiringCheck</name>
+    <message>
+        <source>positive limit</source>
+        <translation>positive limit</translation>
+    </message>
+    <message>
+        <source>negative limit</source>
+        <translation>negative limit</translation>
+    </message>
+    <message>
+        <source>home input</source>
+        <translation>home input</translation>
+    </message>
+    <message>
+        <source>single trigger</source>
+        <translation>single trigger</translation>
+    </message>
+    <message>
+        <source>forward/reverse trigger</source>
+        <translation>forward/reverse trigger</translation>
+    </message>
+    <message>
+        <source>hold-to-jog</source>
+        <translation>hold-to-jog</translation>
+    </message>
+    <message>
+        <source>fixed-distance trigger</source>
+        <translation>fixed-distance trigger</translation>
+    </message>
+    <message>
+        <source>as motor 1&apos;s positive limit</source>
+        <translation>as motor 1&apos;s positive limit</translation>
+    </message>
+    <message>
+        <source>as motor 1&apos;s negative limit</source>
+        <translation>as motor 1&apos;s negative limit</translation>
+    </message>
+    <message>
+        <source>to start motor 1</source>
+        <translation>to start motor 1</translation>
+    </message>
+    <message>
+        <source>to stop motor 1 (the next start keeps the direction)</source>
+        <translation>to stop motor 1 (the next start keeps the direction)</translation>
+    </message>
+    <message>
+        <source>to stop motor 1 (the next start reverses)</source>
+        <translation>to stop motor 1 (the next start reverses)</translation>
+    </message>
+    <message>
+        <source>to stop motor 1 (the next start goes forward)</source>
+        <translation>to stop motor 1 (the next start goes forward)</translation>
+    </message>
+    <message>
+        <source>to run motor 1 forward</source>
+        <translation>to run motor 1 forward</translation>
+    </message>
+    <message>
+        <source>to run motor 1 in reverse</source>
+        <translation>to run motor 1 in reverse</translation>
+    </message>
+    <message>
+        <source>to jog motor 1 forward while it is on</source>
+        <translation>to jog motor 1 forward while it is on</translation>
+    </message>
+    <message>
+        <source>to jog motor 1 in reverse while it is on</source>
+        <translation>to jog motor 1 in reverse while it is on</translation>
+    </message>
+    <message>
+        <source>to move motor 1 forward by its move distance</source>
+        <translation>to move motor 1 forward by its move distance</translation>
+    </message>
+    <message>
+        <source>to move motor 1 in reverse by its move distance</source>
+        <translation>to move motor 1 in reverse by its move distance</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 is both the positive and the negative limit</source>
+        <translation>Motor %1: %2 is both the positive and the negative limit</translation>
+    </message>
+    <message>
+        <source>Motor %1: only the positive limit is set (%2); nothing stops the motor at the negative end</source>
+        <translation>Motor %1: only the positive limit is set (%2); nothing stops the motor at the negative end</translation>
+    </message>
+    <message>
+        <source>Motor %1: only the negative limit is set (%2); nothing stops the motor at the positive end</source>
+        <translation>Motor %1: only the negative limit is set (%2); nothing stops the motor at the positive end</translation>
+    </message>
+    <message>
+        <source>Motor %1: no home input; homing runs in reverse until the negative limit or a stop and does not zero the position</source>
+        <translation>Motor %1: no home input; homing runs in reverse until the negative limit or a stop and does not zero the position</translation>
+    </message>
+    <message>
+        <source>Motor %1: the home input %2 is the positive limit, but homing runs in reverse, away from it; use the negative limit&apos;s input</source>
+        <translation>Motor %1: the home input %2 is the positive limit, but homing runs in reverse, away from it; use the negative limit&apos;s input</translation>
+    </message>
+    <message>
+        <source>Motor %1: the home input %2 is neither of its limits; usually the home input is the negative limit (%3)</source>
+        <translation>Motor %1: the home input %2 is neither of its limits; usually the home input is the negative limit (%3)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>motor %1 %2</source>
+        <translation>motor %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 is wired to more than one motor (%2): its switch acts on all of them</source>
+        <translation>%1 is wired to more than one motor (%2): its switch acts on all of them</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 is set as the %3, but system mode %4 (%5) ignores the limit settings</source>
+        <translation>Motor %1: %2 is set as the %3, but system mode %4 (%5) ignores the limit settings</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 is set as the %3, but system mode %4 (%5) ignores the limit settings and uses %2 %6</source>
+        <translation>Motor %1: %2 is set as the %3, but system mode %4 (%5) ignores the limit settings and uses %2 %6</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WiringWarnings</name>
+    <message>
+        <source>The wiring is not known yet: connect and read the controller.</source>
+        <translation>The wiring is not known yet: connect and read the controller.</translation>
+    </message>
+    <message>
+        <source>No suspicious wiring found.</source>
+        <translation>No suspicious wiring found.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WriteChangesDialog</name>
+    <message>
+        <source>Write changes to the controller</source>
+        <translation>Write changes to the controller</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Register</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <source>Controller holds</source>
+        <translation>Controller holds</translation>
+    </message>
+    <message>
+        <source>New value</source>
+        <translation>New value</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unknown</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) will be written and then read back to verify. They stay in the controller&apos;s RAM until you save to flash.</source>
+        <translation>
+            <numerusform>%n parameter will be written and then read back to verify. It stays in the controller&apos;s RAM until you save to flash.</numerusform>
+            <numerusform>%n parameters will be written and then read back to verify. They stay in the controller&apos;s RAM until you save to flash.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Write</source>
+        <translation>&amp;Write</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::XYPlot</name>
+    <message>
+        <source>Cannot write the picture “%1”.</source>
+        <translation>Cannot write the picture “%1”.</translation>
     </message>
 </context>
 <context>
     <name>stepcomctl</name>
+    <message>
+        <source>What to do.</source>
+        <translation>What to do.</translation>
+    </message>
     <message>
         <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
 
@@ -964,13 +3041,21 @@ Commands:
   read [KEY...]          read parameters (all when none are named)
   write KEY=VALUE...     write parameters in engineering units, then verify
   command NAME           pulse a command coil (e.g. motor1.stop, estop)
+  monitor                print the live status as one JSON object per line,
+                         until --count samples or Ctrl-C (--interval MS)
 
 Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>What to do.</source>
-        <translation type="unfinished"></translation>
+        <translation>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
+
+Commands:
+  params                 list every parameter and command of the register map
+  read [KEY...]          read parameters (all when none are named)
+  write KEY=VALUE...     write parameters in engineering units, then verify
+  command NAME           pulse a command coil (e.g. motor1.stop, estop)
+  monitor                print the live status as one JSON object per line,
+                         until --count samples or Ctrl-C (--interval MS)
+
+Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</translation>
     </message>
 </context>
 </TS>

@@ -2,560 +2,2151 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>stepcom</name>
+    <message>
+        <source>Commissioning window for a 2-axis stepper controller (Modbus RTU/TCP).</source>
+        <translation>两轴步进电机控制器调试窗口（Modbus RTU/TCP）。</translation>
+    </message>
+    <message>
+        <source>Start connected to the built-in simulator.</source>
+        <translation>启动后连接内置仿真器。</translation>
+    </message>
+    <message>
+        <source>Connect to this serial port at start.</source>
+        <translation>启动时连接此串口。</translation>
+    </message>
+    <message>
+        <source>path</source>
+        <translation>路径</translation>
+    </message>
+    <message>
+        <source>Connect to this Modbus TCP gateway at start.</source>
+        <translation>启动时连接此 Modbus TCP 网关。</translation>
+    </message>
+    <message>
+        <source>host:port</source>
+        <translation>主机:端口</translation>
+    </message>
+    <message>
+        <source>Baud rate (default 9600).</source>
+        <translation>波特率（默认 9600）。</translation>
+    </message>
+    <message>
+        <source>rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>Device id (default 1).</source>
+        <translation>设备 ID（默认 1）。</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>ID</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom-sim</name>
+    <message>
+        <source>A simulated 2-axis stepper controller speaking Modbus RTU on a pseudo-terminal and/or Modbus TCP. Without --pty or --tcp it serves a pseudo-terminal.</source>
+        <translation>模拟的两轴步进电机控制器，在伪终端上提供 Modbus RTU，和/或提供 Modbus TCP。未指定 --pty 或 --tcp 时使用伪终端。</translation>
+    </message>
+    <message>
+        <source>Read console commands from standard input even when it is not a terminal.</source>
+        <translation>即使标准输入不是终端，也从中读取控制台命令。</translation>
+    </message>
+    <message>
+        <source>stepcom-sim: %1</source>
+        <translation>stepcom-sim：%1</translation>
+    </message>
+    <message>
+        <source>port hung up</source>
+        <translation>端口已挂断</translation>
+    </message>
+    <message>
+        <source>port back: %1</source>
+        <translation>端口已恢复：%1</translation>
+    </message>
+    <message>
+        <source>stepcom-sim %1: device id %2, %3 baud, %4 motors</source>
+        <translation>stepcom-sim %1：设备 ID %2，波特率 %3，%4 个电机</translation>
+    </message>
+    <message>
+        <source>type &apos;help&apos; for the console commands</source>
+        <translation>输入 &apos;help&apos; 查看控制台命令</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusScanDialog</name>
+    <message>
+        <source>Scan bus</source>
+        <translation>扫描总线</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>扫描位置</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>端口：</translation>
+    </message>
+    <message>
+        <source>What to try</source>
+        <translation>扫描范围</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rates:</source>
+        <translation>波特率(&amp;B)：</translation>
+    </message>
+    <message>
+        <source>Try this baud rate (register 40213; the factory setting is 9600)</source>
+        <translation>尝试此波特率（寄存器 40213；出厂设置为 9600）</translation>
+    </message>
+    <message>
+        <source>Device &amp;ids:</source>
+        <translation>设备 ID(&amp;I)：</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>至</translation>
+    </message>
+    <message>
+        <source>First device id to try (register 40212; factory setting 1)</source>
+        <translation>要尝试的起始设备 ID（寄存器 40212；出厂设置为 1）</translation>
+    </message>
+    <message>
+        <source>Last device id to try; 247 is the highest standard Modbus address</source>
+        <translation>要尝试的结束设备 ID；247 是 Modbus 标准规定的最大地址</translation>
+    </message>
+    <message>
+        <source>Probe &amp;timeout:</source>
+        <translation>探测超时(&amp;T)：</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>How long to wait for an answer from each id. The controller answers after 35 ms; USB adapters add some latency.</source>
+        <translation>等待每个设备 ID 应答的时间。控制器在 35 ms 后应答；USB 转换器会增加一些延迟。</translation>
+    </message>
+    <message>
+        <source>Stop at the &amp;first controller found</source>
+        <translation>找到第一个控制器即停止(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Finish as soon as one controller answers</source>
+        <translation>只要有一个控制器应答就结束扫描</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>开始(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Start the scan; it only reads, nothing is written</source>
+        <translation>开始扫描；只读取，不写入任何数据</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>取消(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Stop the scan now</source>
+        <translation>立即停止扫描</translation>
+    </message>
+    <message>
+        <source>Controllers found</source>
+        <translation>找到的控制器</translation>
+    </message>
+    <message>
+        <source>Baud</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>Device id</source>
+        <translation>设备 ID</translation>
+    </message>
+    <message>
+        <source>Answer</source>
+        <translation>应答</translation>
+    </message>
+    <message>
+        <source>Double-click a controller to connect to it</source>
+        <translation>双击控制器即可连接</translation>
+    </message>
+    <message>
+        <source>C&amp;onnect</source>
+        <translation>连接(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Connect to the selected controller with its baud rate and id</source>
+        <translation>以所选控制器的波特率和设备 ID 连接该控制器</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>even</source>
+        <translation>偶</translation>
+    </message>
+    <message>
+        <source>odd</source>
+        <translation>奇</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>%1:%2 (Modbus TCP)</source>
+        <translation>%1:%2（Modbus TCP）</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1, parity %2, %n stop bit(s)</source>
+        <translation>
+            <numerusform>%1，%2校验，%n 位停止位</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>(no port chosen)</source>
+        <translation>（未选择端口）</translation>
+    </message>
+    <message>
+        <source>starting…</source>
+        <translation>正在启动…</translation>
+    </message>
+    <message>
+        <source>id %1 at %2 baud</source>
+        <translation>ID %1，波特率 %2</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>已停止</translation>
+    </message>
+    <message>
+        <source>StepCom is connected on this port: the scan disconnects first.</source>
+        <translation>StepCom 正通过此端口连接：扫描前会先断开连接。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Scanning… %n controller(s) found so far.</source>
+        <translation>
+            <numerusform>正在扫描… 目前已找到 %n 个控制器。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan finished: %n controller(s) found. Select one and press Connect.</source>
+        <translation>
+            <numerusform>扫描完成：找到 %n 个控制器。请选择一个，然后点击“连接”。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scan finished: no controller answered. Check the power, the wiring (A and B swapped?) and the port.</source>
+        <translation>扫描完成：没有控制器应答。请检查电源、接线（A、B 是否接反？）和端口。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan cancelled: %n controller(s) found.</source>
+        <translation>
+            <numerusform>扫描已取消：找到 %n 个控制器。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scan stopped: %1</source>
+        <translation>扫描已停止：%1</translation>
+    </message>
+    <message>
+        <source>Choose at least one baud rate.</source>
+        <translation>请至少选择一个波特率。</translation>
+    </message>
+    <message>
+        <source>Scan stopped: StepCom connected on this port.</source>
+        <translation>扫描已停止：StepCom 已通过此端口连接。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n probe(s), at most about %1 s. A scan only reads; nothing is written.</source>
+        <translation>
+            <numerusform>共探测 %n 次，最多约 %1 s。扫描只读取，不写入任何数据。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusScanner</name>
     <message>
         <source>no baud rate to try</source>
-        <translation type="unfinished"></translation>
+        <translation>没有可尝试的波特率</translation>
     </message>
     <message>
         <source>scan finished</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描完成</translation>
     </message>
     <message>
         <source>scan id %1 at %2 baud</source>
-        <translation type="unfinished"></translation>
+        <translation>扫描 ID %1，波特率 %2</translation>
     </message>
     <message>
         <source>answered (register 40001 = %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>已应答（寄存器 40001 = %1）</translation>
     </message>
     <message>
         <source>answered with an exception: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>应答异常：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ConnectionPage</name>
+    <message>
+        <source>Disconnected.</source>
+        <translation>已断开连接。</translation>
+    </message>
+    <message>
+        <source>Connection lost: %1</source>
+        <translation>连接中断：%1</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Connect through</source>
+        <translation>连接方式</translation>
+    </message>
+    <message>
+        <source>&amp;Serial (RTU)</source>
+        <translation>串口 RTU(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Modbus RTU over RS-485 or RS-232, e.g. a USB adapter</source>
+        <translation>经 RS-485 或 RS-232 的 Modbus RTU，例如使用 USB 转换器</translation>
+    </message>
+    <message>
+        <source>Modbus &amp;TCP</source>
+        <translation>Modbus TCP(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Modbus TCP, e.g. through an Ethernet-to-RS-485 gateway</source>
+        <translation>Modbus TCP，例如经以太网转 RS-485 网关</translation>
+    </message>
+    <message>
+        <source>Built-in si&amp;mulator</source>
+        <translation>内置仿真器(&amp;M)</translation>
+    </message>
+    <message>
+        <source>A simulated controller inside StepCom: try every page without a machine</source>
+        <translation>StepCom 内置的仿真控制器：无需设备即可试用所有页面</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>串口</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>端口(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>The serial port, e.g. /dev/ttyUSB0 or COM3. Any path can be typed: pseudo-terminals are not listed.</source>
+        <translation>串口，例如 /dev/ttyUSB0 或 COM3。可以输入任意路径：伪终端不会列出。</translation>
+    </message>
+    <message>
+        <source>/dev/ttyUSB0 or a path</source>
+        <translation>/dev/ttyUSB0 或其他路径</translation>
+    </message>
+    <message>
+        <source>Re&amp;fresh</source>
+        <translation>刷新(&amp;F)</translation>
+    </message>
+    <message>
+        <source>List the serial ports again (after plugging in an adapter)</source>
+        <translation>重新列出串口（插入转换器后使用）</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rate:</source>
+        <translation>波特率(&amp;B)：</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s baud rate (register 40213); factory setting 9600</source>
+        <translation>控制器的波特率（寄存器 40213）；出厂设置为 9600</translation>
+    </message>
+    <message>
+        <source>Parit&amp;y:</source>
+        <translation>校验(&amp;Y)：</translation>
+    </message>
+    <message>
+        <source>The controller uses no parity (8N1) unless set otherwise</source>
+        <translation>除非另有设置，控制器使用无校验（8N1）</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>无校验</translation>
+    </message>
+    <message>
+        <source>Even</source>
+        <translation>偶校验</translation>
+    </message>
+    <message>
+        <source>Odd</source>
+        <translation>奇校验</translation>
+    </message>
+    <message>
+        <source>St&amp;op bits:</source>
+        <translation>停止位(&amp;O)：</translation>
+    </message>
+    <message>
+        <source>The controller uses 1 stop bit</source>
+        <translation>控制器使用 1 位停止位</translation>
+    </message>
+    <message>
+        <source>Modbus TCP</source>
+        <translation>Modbus TCP</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>主机(&amp;H)：</translation>
+    </message>
+    <message>
+        <source>Host name or IP address of the gateway or controller</source>
+        <translation>网关或控制器的主机名或 IP 地址</translation>
+    </message>
+    <message>
+        <source>192.168.0.7</source>
+        <translation>192.168.0.7</translation>
+    </message>
+    <message>
+        <source>TCP p&amp;ort:</source>
+        <translation>TCP 端口(&amp;O)：</translation>
+    </message>
+    <message>
+        <source>TCP port of the Modbus server; 502 is the standard</source>
+        <translation>Modbus 服务器的 TCP 端口；标准端口为 502</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>Device &amp;id:</source>
+        <translation>设备 ID(&amp;I)：</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s Modbus address (register 40212); factory setting 1. Use Scan bus when it is not known.</source>
+        <translation>控制器的 Modbus 地址（寄存器 40212）；出厂设置为 1。不知道地址时请使用“扫描总线”。</translation>
+    </message>
+    <message>
+        <source>Tim&amp;eout:</source>
+        <translation>超时(&amp;E)：</translation>
+    </message>
+    <message>
+        <source>How long to wait for each answer before trying again</source>
+        <translation>每次等待应答的时间，超时后重试</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>&amp;Retries:</source>
+        <translation>重试次数(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>How often an unanswered request is sent again</source>
+        <translation>无应答的请求重新发送的次数</translation>
+    </message>
+    <message>
+        <source>Built-in simulator</source>
+        <translation>内置仿真器</translation>
+    </message>
+    <message>
+        <source>A simulated controller runs inside StepCom and answers like the real one: every page can be tried without a machine. Nothing reaches real hardware.</source>
+        <translation>仿真控制器在 StepCom 内部运行，应答方式与真实控制器相同：无需设备即可试用所有页面。不会向真实硬件发送任何数据。</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>通信链路</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>连接(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Connect and read every parameter (nothing is written)</source>
+        <translation>连接并读取所有参数（不写入任何数据）</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>断开(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Close the port; edits that were not written stay</source>
+        <translation>关闭端口；尚未写入的修改会保留</translation>
+    </message>
+    <message>
+        <source>Sc&amp;an bus…</source>
+        <translation>扫描总线(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Find controllers whose device id or baud rate is not known</source>
+        <translation>查找设备 ID 或波特率未知的控制器</translation>
+    </message>
+    <message>
+        <source>Cannot connect: %1.</source>
+        <translation>无法连接：%1。</translation>
+    </message>
+    <message>
+        <source>Could not connect to %1: %2</source>
+        <translation>无法连接到 %1：%2</translation>
+    </message>
+    <message>
+        <source>the built-in simulator</source>
+        <translation>内置仿真器</translation>
+    </message>
+    <message>
+        <source>Connected to the built-in simulator (%1).</source>
+        <translation>已连接到内置仿真器（%1）。</translation>
+    </message>
+    <message>
+        <source>Connected to %1.</source>
+        <translation>已连接到 %1。</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>正在连接 %1…</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>未连接。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlMonitor</name>
+    <message>
+        <source>link lost: %1</source>
+        <translation>连接中断：%1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::CtlOptions</name>
     <message>
         <source>Serial port of the controller (e.g. /dev/ttyUSB0, COM3).</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器所连接的串口（例如 /dev/ttyUSB0、COM3）。</translation>
     </message>
     <message>
         <source>path</source>
-        <translation type="unfinished"></translation>
+        <translation>路径</translation>
     </message>
     <message>
         <source>Modbus TCP gateway or simulator, HOST[:PORT] (port 502).</source>
-        <translation type="unfinished"></translation>
+        <translation>Modbus TCP 网关或仿真器，格式为 主机[:端口]（默认端口 502）。</translation>
     </message>
     <message>
         <source>host:port</source>
-        <translation type="unfinished"></translation>
+        <translation>主机:端口</translation>
     </message>
     <message>
         <source>Use the built-in simulated controller.</source>
-        <translation type="unfinished"></translation>
+        <translation>使用内置仿真控制器。</translation>
     </message>
     <message>
         <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600).</source>
-        <translation type="unfinished"></translation>
+        <translation>波特率：4800、9600、19200 或 38400（默认 9600）。</translation>
     </message>
     <message>
         <source>rate</source>
-        <translation type="unfinished"></translation>
+        <translation>波特率</translation>
     </message>
     <message>
         <source>Parity: none, even or odd (default none).</source>
-        <translation type="unfinished"></translation>
+        <translation>校验：none（无校验）、even（偶校验）或 odd（奇校验）（默认 none）。</translation>
     </message>
     <message>
         <source>parity</source>
-        <translation type="unfinished"></translation>
+        <translation>校验</translation>
     </message>
     <message>
         <source>Stop bits: 1 or 2 (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>停止位：1 或 2（默认 1）。</translation>
     </message>
     <message>
         <source>n</source>
-        <translation type="unfinished"></translation>
+        <translation>n</translation>
     </message>
     <message>
         <source>Device id 1-255 (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>设备 ID，1-255（默认 1）。</translation>
     </message>
     <message>
         <source>id</source>
-        <translation type="unfinished"></translation>
+        <translation>ID</translation>
     </message>
     <message>
         <source>Answer timeout in ms (default 500).</source>
-        <translation type="unfinished"></translation>
+        <translation>应答超时，单位 ms（默认 500）。</translation>
     </message>
     <message>
         <source>ms</source>
-        <translation type="unfinished"></translation>
+        <translation>ms</translation>
     </message>
     <message>
         <source>Retries after a timeout (default 2).</source>
-        <translation type="unfinished"></translation>
+        <translation>超时后的重试次数（默认 2）。</translation>
     </message>
     <message>
         <source>Register map file to use instead of the built-in one.</source>
-        <translation type="unfinished"></translation>
+        <translation>使用指定的寄存器映射文件代替内置映射。</translation>
     </message>
     <message>
         <source>file</source>
-        <translation type="unfinished"></translation>
+        <translation>文件</translation>
     </message>
     <message>
         <source>Machine-readable JSON output.</source>
-        <translation type="unfinished"></translation>
+        <translation>以机器可读的 JSON 格式输出。</translation>
     </message>
     <message>
         <source>Show the Modbus traffic on standard error.</source>
-        <translation type="unfinished"></translation>
+        <translation>在标准错误输出上显示 Modbus 通信报文。</translation>
     </message>
     <message>
         <source>Do not ask: needed for commands that destroy settings.</source>
-        <translation type="unfinished"></translation>
+        <translation>不询问确认：执行会清除设置的命令时必须指定。</translation>
     </message>
     <message>
         <source>After writing, save the parameters to flash.</source>
-        <translation type="unfinished"></translation>
+        <translation>写入后将参数保存到闪存。</translation>
     </message>
     <message>
         <source>monitor: number of samples (default: until stopped).</source>
-        <translation type="unfinished"></translation>
+        <translation>monitor：采样次数（默认：一直采样到停止）。</translation>
     </message>
     <message>
         <source>monitor: ms between samples (default: as fast as the link allows).</source>
-        <translation type="unfinished"></translation>
+        <translation>monitor：采样间隔，单位 ms（默认：通信链路允许的最快速度）。</translation>
     </message>
     <message>
         <source>give only one of --port, --tcp and --sim</source>
-        <translation type="unfinished"></translation>
+        <translation>--port、--tcp 和 --sim 只能指定其中一个</translation>
     </message>
     <message>
         <source>--tcp: &apos;%1&apos; is not HOST[:PORT]</source>
-        <translation type="unfinished"></translation>
+        <translation>--tcp：“%1”不符合 主机[:端口] 格式</translation>
     </message>
     <message>
         <source>--baud: &apos;%1&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>--baud：“%1”不是数字</translation>
     </message>
     <message>
         <source>--parity: &apos;%1&apos; is not none, even or odd</source>
-        <translation type="unfinished"></translation>
+        <translation>--parity：“%1”不是 none、even 或 odd</translation>
     </message>
     <message>
         <source>--stop-bits: &apos;%1&apos; is not 1 or 2</source>
-        <translation type="unfinished"></translation>
+        <translation>--stop-bits：“%1”不是 1 或 2</translation>
     </message>
     <message>
         <source>--id: &apos;%1&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>--id：“%1”不是数字</translation>
     </message>
     <message>
         <source>--timeout: &apos;%1&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>--timeout：“%1”不是数字</translation>
     </message>
     <message>
         <source>--retries: &apos;%1&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>--retries：“%1”不是数字</translation>
     </message>
     <message>
         <source>--count: &apos;%1&apos; is not a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>--count：“%1”不是正数</translation>
     </message>
     <message>
         <source>--interval: &apos;%1&apos; is not a number of ms</source>
-        <translation type="unfinished"></translation>
+        <translation>--interval：“%1”不是以 ms 为单位的数字</translation>
     </message>
     <message>
         <source>no command given (params, read, write, command)</source>
-        <translation type="unfinished"></translation>
+        <translation>未指定命令（params、read、write、command）</translation>
     </message>
 </context>
 <context>
     <name>stepcom::CtlRunner</name>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>done</source>
-        <translation type="unfinished"></translation>
+        <translation>完成</translation>
     </message>
     <message>
         <source>no controller given: use --port PATH, --tcp HOST[:PORT] or --sim</source>
-        <translation type="unfinished"></translation>
+        <translation>未指定控制器：请使用 --port 路径、--tcp 主机[:端口] 或 --sim</translation>
     </message>
     <message>
         <source>cannot connect to %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法连接到 %1：%2</translation>
     </message>
     <message>
         <source>cannot start the built-in simulator: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法启动内置仿真器：%1</translation>
     </message>
     <message>
         <source>unknown parameter &apos;%1&apos; (see: stepcomctl params)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知参数“%1”（参见：stepcomctl params）</translation>
     </message>
     <message>
         <source>%1 is a command and cannot be read</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 是命令，不能读取</translation>
     </message>
     <message>
         <source>write needs KEY=VALUE arguments</source>
-        <translation type="unfinished"></translation>
+        <translation>write 需要 参数名=值 形式的参数</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not KEY=VALUE</source>
-        <translation type="unfinished"></translation>
+        <translation>“%1”不符合 参数名=值 格式</translation>
     </message>
     <message>
         <source>%1 is a command: use &apos;stepcomctl command %1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 是命令：请使用“stepcomctl command %1”</translation>
     </message>
     <message>
         <source>%1 is read-only</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 为只读参数</translation>
     </message>
     <message>
         <source>nothing was written</source>
-        <translation type="unfinished"></translation>
+        <translation>未写入任何参数</translation>
     </message>
     <message>
         <source>(written, verified)</source>
-        <translation type="unfinished"></translation>
+        <translation>（已写入并验证）</translation>
     </message>
     <message>
         <source>not written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未写入：%1</translation>
     </message>
     <message>
         <source>this map has no save_to_flash command</source>
-        <translation type="unfinished"></translation>
+        <translation>此寄存器映射中没有 save_to_flash 命令</translation>
     </message>
     <message>
         <source>saved to flash</source>
-        <translation type="unfinished"></translation>
+        <translation>已保存到闪存</translation>
     </message>
     <message>
         <source>command needs exactly one command name (see: stepcomctl params)</source>
-        <translation type="unfinished"></translation>
+        <translation>command 需要且只能有一个命令名（参见：stepcomctl params）</translation>
     </message>
     <message>
         <source>%1 is a parameter, not a command: use read or write</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 是参数而不是命令：请使用 read 或 write</translation>
     </message>
     <message>
         <source>unknown command &apos;%1&apos; (see: stepcomctl params)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知命令“%1”（参见：stepcomctl params）</translation>
     </message>
     <message>
         <source>%1 destroys settings (%2); add --yes if you mean it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 会清除设置（%2）；确定要执行请加上 --yes</translation>
     </message>
     <message>
         <source>%1: done</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：完成</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor)</source>
+        <translation>未知命令“%1”（可用命令：params、read、write、command、monitor）</translation>
+    </message>
+    <message>
+        <source>monitor takes no arguments, only --count and --interval</source>
+        <translation>monitor 不接受参数，只能使用 --count 和 --interval 选项</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::DerivedValues</name>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>Pulses per revolution:</source>
+        <translation>每转脉冲数：</translation>
+    </message>
+    <message>
+        <source>Pulse rate at the set speed:</source>
+        <translation>设定速度下的脉冲频率：</translation>
+    </message>
+    <message>
+        <source>Linear speed:</source>
+        <translation>线速度：</translation>
+    </message>
+    <message>
+        <source>Revolutions per move:</source>
+        <translation>单次运行圈数：</translation>
+    </message>
+    <message>
+        <source>Pulses per move:</source>
+        <translation>单次运行脉冲数：</translation>
+    </message>
+    <message>
+        <source>Ramp to the set speed:</source>
+        <translation>加速到设定速度用时：</translation>
+    </message>
+    <message>
+        <source>Estimated move time:</source>
+        <translation>单次运行预计用时：</translation>
+    </message>
+    <message>
+        <source>360 / step angle × microsteps</source>
+        <translation>360 / 步距角 × 细分</translation>
+    </message>
+    <message>
+        <source>Speed (rpm) × pulses per revolution / 60: what the driver must accept</source>
+        <translation>速度 (rpm) × 每转脉冲数 / 60：驱动器必须能接收的脉冲频率</translation>
+    </message>
+    <message>
+        <source>Speed (rpm) × pitch / 60</source>
+        <translation>速度 (rpm) × 螺距 / 60</translation>
+    </message>
+    <message>
+        <source>Speed (rpm) × pitch</source>
+        <translation>速度 (rpm) × 螺距</translation>
+    </message>
+    <message>
+        <source>Move distance / pitch</source>
+        <translation>单次运行距离 / 螺距</translation>
+    </message>
+    <message>
+        <source>Move distance / pitch × pulses per revolution, in whole pulses as the controller sends them</source>
+        <translation>单次运行距离 / 螺距 × 每转脉冲数，按控制器实际发出的整数个脉冲计算</translation>
+    </message>
+    <message>
+        <source>(Pulse rate − start frequency) / accel/decel frequency: the rate rises by the accel/decel frequency every millisecond; braking takes as long</source>
+        <translation>（脉冲频率 − 启动频率）/ 加减频率：频率每毫秒升高一个加减频率值；减速所需时间相同</translation>
+    </message>
+    <message>
+        <source>A single move with its ramps up and down, as the simulator runs it (start frequency, accel/decel frequency per millisecond, speed)</source>
+        <translation>按仿真器的运行方式估算一次单次运行（含加速和减速）的时间（启动频率、每毫秒的加减频率、速度）</translation>
+    </message>
+    <message>
+        <source>units</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>%1 pulses/rev</source>
+        <translation>%1 脉冲/转</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>%1 %2/s</source>
+        <translation>%1 %2/s</translation>
+    </message>
+    <message>
+        <source>%1 %2/min</source>
+        <translation>%1 %2/min</translation>
+    </message>
+    <message>
+        <source>%1 rev</source>
+        <translation>%1 圈</translation>
+    </message>
+    <message>
+        <source>%1 pulses</source>
+        <translation>%1 个脉冲</translation>
+    </message>
+    <message>
+        <source>none (start frequency ≥ pulse rate)</source>
+        <translation>无（启动频率 ≥ 脉冲频率）</translation>
     </message>
 </context>
 <context>
     <name>stepcom::DeviceClient</name>
     <message>
         <source>nothing readable among the parameters asked for</source>
-        <translation type="unfinished"></translation>
+        <translation>所请求的参数中没有可读取的参数</translation>
     </message>
     <message>
         <source>read block %1/%2</source>
-        <translation type="unfinished"></translation>
+        <translation>读取数据块 %1/%2</translation>
     </message>
     <message>
         <source>unknown parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>未知参数</translation>
     </message>
     <message>
         <source>%1 is read-only</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 为只读参数</translation>
     </message>
     <message>
         <source>%1 is given twice</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 被指定了两次</translation>
+    </message>
+    <message>
+        <source>could not reopen the port at the new baud: %1</source>
+        <translation>无法以新波特率重新打开端口：%1</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2 but the controller holds %3</source>
+        <translation>%1：已写入 %2，但控制器中的值为 %3</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2 but could not read it back</source>
+        <translation>%1：已写入 %2，但无法回读</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::DevicePage</name>
+    <message>
+        <source>Device</source>
+        <translation>设备</translation>
+    </message>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>ID %1 at %2 baud</source>
+        <translation>ID %1，波特率 %2</translation>
+    </message>
+    <message>
+        <source>The controller holds %1</source>
+        <translation>控制器中的值：%1</translation>
+    </message>
+    <message>
+        <source>Not read yet</source>
+        <translation>尚未读取</translation>
+    </message>
+    <message>
+        <source>Changing the controller to %1…</source>
+        <translation>正在将控制器更改为 %1…</translation>
+    </message>
+    <message>
+        <source>The controller answers at %1. Save to flash to keep this after a power cycle.</source>
+        <translation>控制器已按 %1 应答。请保存到闪存，使其在断电重启后仍然有效。</translation>
+    </message>
+    <message>
+        <source>The controller does not answer with the new settings (%1). It may be using them anyway. Reconnect with the old settings (%2), or connect with the new ones on the Connection page.</source>
+        <translation>控制器未按新设置应答（%1），但它可能已经在使用新设置。请用原设置（%2）重新连接，或在“连接”页面用新设置连接。</translation>
+    </message>
+    <message>
+        <source>Reconnecting with the old settings (%1)…</source>
+        <translation>正在用原设置（%1）重新连接…</translation>
+    </message>
+    <message>
+        <source>Connected again with the old settings.</source>
+        <translation>已用原设置重新连接。</translation>
+    </message>
+    <message>
+        <source>Reconnecting with the old settings failed: %1.</source>
+        <translation>用原设置重新连接失败：%1。</translation>
+    </message>
+    <message>
+        <source>Saving to flash…</source>
+        <translation>正在保存到闪存…</translation>
+    </message>
+    <message>
+        <source>Saved to flash: the controller keeps its settings after a power cycle.</source>
+        <translation>已保存到闪存：控制器断电重启后仍保留这些设置。</translation>
+    </message>
+    <message>
+        <source>Saving to flash failed; see the messages.</source>
+        <translation>保存到闪存失败；请查看消息。</translation>
+    </message>
+    <message>
+        <source>Restoring the factory settings…</source>
+        <translation>正在恢复出厂设置…</translation>
+    </message>
+    <message>
+        <source>Factory settings restored; StepCom reads the controller again.</source>
+        <translation>已恢复出厂设置；StepCom 正在重新读取控制器。</translation>
+    </message>
+    <message>
+        <source>Restoring the factory settings failed; see the messages.</source>
+        <translation>恢复出厂设置失败；请查看消息。</translation>
+    </message>
+    <message>
+        <source>Change device ID and baud rate</source>
+        <translation>更改设备 ID 和波特率</translation>
+    </message>
+    <message>
+        <source>Change the controller from %1 to %2?</source>
+        <translation>将控制器从 %1 更改为 %2？</translation>
+    </message>
+    <message>
+        <source>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
+
+Every other master on the bus must use the new settings too, and no other device may use the new ID. Save to flash afterwards to keep them after a power cycle.</source>
+        <translation>控制器会立即切换。StepCom 随之切换并检查控制器是否应答；如果没有应答，可以用原设置重新连接。
+
+总线上的其他主站也必须改用新设置，并且新 ID 不能与其他设备重复。之后请保存到闪存，使设置在断电重启后仍然有效。</translation>
+    </message>
+    <message>
+        <source>&amp;Change</source>
+        <translation>更改(&amp;C)</translation>
+    </message>
+    <message>
+        <source>motors 1 to %1</source>
+        <translation>电机 1 至电机 %1</translation>
+    </message>
+    <message>
+        <source>the motor</source>
+        <translation>电机</translation>
+    </message>
+    <message>
+        <source>every motor parameter of %1: step angle, microsteps, start and accel/decel frequency, direction, speed, pitch, move distance</source>
+        <translation>%1的全部参数：步距角、细分、启动频率、加减频率、方向、速度、螺距、单次运行距离</translation>
+    </message>
+    <message>
+        <source>the limit and home inputs</source>
+        <translation>限位与原点信号输入口</translation>
+    </message>
+    <message>
+        <source>the homing order</source>
+        <translation>回零顺序</translation>
+    </message>
+    <message>
+        <source>the arc and line interpolation setup</source>
+        <translation>圆弧插补和直线插补设置</translation>
+    </message>
+    <message>
+        <source>the system mode and its number of round trips</source>
+        <translation>系统模式及往返次数</translation>
+    </message>
+    <message>
+        <source>These settings in the controller are replaced by the factory values:</source>
+        <translation>控制器中的以下设置将被出厂值替换：</translation>
+    </message>
+    <message>
+        <source>The device ID (%1) and the baud rate (%2) are kept, so StepCom stays connected. Edits not written yet stay in StepCom. The flash keeps the old settings until you save to flash.</source>
+        <translation>设备 ID（%1）和波特率（%2）保持不变，因此 StepCom 会保持连接。尚未写入的修改仍保留在 StepCom 中。在保存到闪存之前，闪存中仍是原来的设置。</translation>
+    </message>
+    <message>
+        <source>Restore factory settings</source>
+        <translation>恢复出厂设置</translation>
+    </message>
+    <message>
+        <source>Restore the controller&apos;s factory settings?</source>
+        <translation>要恢复控制器的出厂设置吗？</translation>
+    </message>
+    <message>
+        <source>&amp;Restore factory settings</source>
+        <translation>恢复出厂设置(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Device ID and baud rate</source>
+        <translation>设备 ID 和波特率</translation>
+    </message>
+    <message>
+        <source>Flash memory</source>
+        <translation>闪存</translation>
+    </message>
+    <message>
+        <source>Factory settings</source>
+        <translation>出厂设置</translation>
+    </message>
+    <message>
+        <source>Device &amp;ID:</source>
+        <translation>设备 ID(&amp;I)：</translation>
+    </message>
+    <message>
+        <source>&amp;Baud rate:</source>
+        <translation>波特率(&amp;B)：</translation>
+    </message>
+    <message>
+        <source>The device ID matters on RS-485, where several controllers share the bus. On Modbus TCP only the ID can be changed here.</source>
+        <translation>在 RS-485 上，多个控制器共用一条总线，设备 ID 用于区分它们。使用 Modbus TCP 时，这里只能更改设备 ID。</translation>
+    </message>
+    <message>
+        <source>&amp;Apply ID and baud…</source>
+        <translation>应用 ID 和波特率(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Reconnect with the &amp;old settings</source>
+        <translation>用原设置重新连接(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Written values take effect at once but live in working memory: without saving to flash, the controller forgets them when it is switched off.</source>
+        <translation>写入的值立即生效，但只保存在运行内存中：如果不保存到闪存，控制器断电后这些值将丢失。</translation>
+    </message>
+    <message>
+        <source>Changes not saved to flash.</source>
+        <translation>更改尚未保存到闪存。</translation>
+    </message>
+    <message>
+        <source>&amp;Save to flash</source>
+        <translation>保存到闪存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Puts every motor parameter, the limits, the homing order, the interpolation setup and the mode back to the factory values. The device ID and baud rate are kept.</source>
+        <translation>将所有电机参数、限位、回零顺序、插补设置和系统模式恢复为出厂值。设备 ID 和波特率保持不变。</translation>
+    </message>
+    <message>
+        <source>Restore &amp;factory settings…</source>
+        <translation>恢复出厂设置(&amp;F)…</translation>
     </message>
 </context>
 <context>
     <name>stepcom::DeviceSession</name>
     <message>
         <source>Cannot connect: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法连接：%1</translation>
     </message>
     <message>
         <source>Connected to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已连接到 %1</translation>
     </message>
     <message>
         <source>Link lost: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>连接中断：%1</translation>
     </message>
     <message>
         <source>Cannot start the built-in simulator: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法启动内置仿真器：%1</translation>
     </message>
     <message>
         <source>disconnected by the user</source>
-        <translation type="unfinished"></translation>
+        <translation>用户已断开连接</translation>
     </message>
     <message>
         <source>Reading failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>读取失败：%1</translation>
     </message>
     <message numerus="yes">
         <source>Read %n parameter(s) in %1 request(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>已读取 %n 个参数（共 %1 次请求）</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>Wrote and verified %n parameter(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>已写入并验证 %n 个参数</numerusform>
         </translation>
     </message>
     <message>
         <source>Unknown command %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未知命令 %1</translation>
     </message>
     <message>
         <source>%1: done</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：完成</translation>
     </message>
     <message>
         <source>E-STOP: not connected, nothing was sent</source>
-        <translation type="unfinished"></translation>
+        <translation>急停：未连接，未发送任何命令</translation>
     </message>
     <message>
         <source>emergency stop</source>
-        <translation type="unfinished"></translation>
+        <translation>急停</translation>
     </message>
     <message>
         <source>E-STOP sent</source>
-        <translation type="unfinished"></translation>
+        <translation>已发送急停</translation>
     </message>
     <message>
         <source>The controller answers at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器已按 %1 应答</translation>
     </message>
     <message>
         <source>The controller does not answer with the new settings: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器未按新设置应答：%1</translation>
+    </message>
+    <message>
+        <source>switching to %1</source>
+        <translation>正在切换到 %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::EmergencyStop</name>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>Emergency stop: all motors and outputs off (coil 00042). Key: %1</source>
+        <translation>急停：停止所有电机并关闭所有输出（线圈 00042）。快捷键：%1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::FaultInjector</name>
     <message>
         <source>&apos;%1&apos; is not a share between 0 and 1 (or 0%-100%)</source>
-        <translation type="unfinished"></translation>
+        <translation>“%1”不是 0 到 1 之间的比例（或 0%-100%）</translation>
     </message>
     <message>
         <source>&apos;%1&apos;: expected SHARE:NUMBER, e.g. 0.1:500</source>
-        <translation type="unfinished"></translation>
+        <translation>“%1”：应为 比例:数值 格式，例如 0.1:500</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::HomingOrderEditor</name>
+    <message>
+        <source>%1 is already the %2 in the homing order: a motor homes once. Set the %2 to %3 first.</source>
+        <translation>%1 已是回零顺序中的%2：每个电机只回零一次。请先将%2设为“%3”。</translation>
+    </message>
+    <message>
+        <source>no motor</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>%1, then %2</source>
+        <translation>先%1，后%2</translation>
+    </message>
+    <message>
+        <source>1st</source>
+        <translation>第 1 个</translation>
+    </message>
+    <message>
+        <source>2nd</source>
+        <translation>第 2 个</translation>
+    </message>
+    <message>
+        <source>1st to home:</source>
+        <translation>第 1 个回零：</translation>
+    </message>
+    <message>
+        <source>2nd to home:</source>
+        <translation>第 2 个回零：</translation>
+    </message>
+    <message>
+        <source>Not read from the controller yet</source>
+        <translation>尚未从控制器读取</translation>
+    </message>
+    <message>
+        <source>The controller holds this order</source>
+        <translation>与控制器中的回零顺序一致</translation>
+    </message>
+    <message>
+        <source>Edited, not written yet: apply the order</source>
+        <translation>已修改，尚未写入：请应用回零顺序</translation>
+    </message>
+    <message>
+        <source>Write failed: %1</source>
+        <translation>写入失败：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::InputsPage</name>
+    <message>
+        <source>Inputs and limits</source>
+        <translation>输入与限位</translation>
+    </message>
+    <message>
+        <source>System mode: not known yet.</source>
+        <translation>系统模式：尚未读取。</translation>
+    </message>
+    <message>
+        <source>System mode: %1. The limit and home settings apply.</source>
+        <translation>系统模式：%1。限位与原点设置有效。</translation>
+    </message>
+    <message>
+        <source>System mode: %1. Motor 1 uses IN1 and IN2 as its limits, IN3 stops it and IN4 starts it.</source>
+        <translation>系统模式：%1。电机 1 以 IN1、IN2 为正、反限位，IN3 急停，IN4 启动。</translation>
+    </message>
+    <message>
+        <source>System mode: %1. The limit settings are ignored: the inputs do what the mode says.</source>
+        <translation>系统模式：%1。限位设置无效：各输入口按该模式的规定动作。</translation>
+    </message>
+    <message>
+        <source>motor %1 positive limit</source>
+        <translation>电机 %1 正限位</translation>
+    </message>
+    <message>
+        <source>motor %1 negative limit</source>
+        <translation>电机 %1 反限位</translation>
+    </message>
+    <message>
+        <source>motor %1 home</source>
+        <translation>电机 %1 原点信号</translation>
+    </message>
+    <message>
+        <source>not used as a limit or home</source>
+        <translation>未用作限位或原点</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>开 (ON)</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>关 (OFF)</translation>
+    </message>
+    <message>
+        <source>Limit and home inputs</source>
+        <translation>限位与原点信号输入</translation>
+    </message>
+    <message>
+        <source>Wiring check</source>
+        <translation>接线检查</translation>
+    </message>
+    <message>
+        <source>Inputs (live)</source>
+        <translation>输入（实时）</translation>
+    </message>
+    <message>
+        <source>Outputs (live)</source>
+        <translation>输出（实时）</translation>
+    </message>
+    <message>
+        <source>Positive limit</source>
+        <translation>正限位</translation>
+    </message>
+    <message>
+        <source>Negative limit</source>
+        <translation>反限位</translation>
+    </message>
+    <message>
+        <source>Home input</source>
+        <translation>原点信号</translation>
+    </message>
+    <message>
+        <source>Motor &amp;%1:</source>
+        <translation>电机 &amp;%1：</translation>
+    </message>
+    <message>
+        <source>Homing runs in reverse until the home input is on, so the home input is usually the negative limit&apos;s input. Inputs are on with a 24 V negative (NPN) signal.</source>
+        <translation>回机械零时电机一直反转，直到原点信号有效，因此一般情况下原点与反限位设定为同一个输入口。输入端接入 24V 负极（NPN）信号时输入有效。</translation>
+    </message>
+    <message>
+        <source>Output %1</source>
+        <translation>输出 %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::JogController</name>
+    <message>
+        <source>Motor %1 has stopped now</source>
+        <translation>电机 %1 现已停止</translation>
+    </message>
+    <message>
+        <source>Keyboard jogging is on</source>
+        <translation>键盘点动已开启</translation>
+    </message>
+    <message>
+        <source>Keyboard jogging is off</source>
+        <translation>键盘点动已关闭</translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>正向</translation>
+    </message>
+    <message>
+        <source>reverse</source>
+        <translation>反向</translation>
+    </message>
+    <message>
+        <source>There is no motor %1</source>
+        <translation>没有电机 %1</translation>
+    </message>
+    <message>
+        <source>Keyboard jogging is off: motor %1 does not move</source>
+        <translation>键盘点动已关闭：电机 %1 不运行</translation>
+    </message>
+    <message>
+        <source>Not connected: motor %1 does not move</source>
+        <translation>未连接：电机 %1 不运行</translation>
+    </message>
+    <message>
+        <source>Motor %1 already jogs %2: let go of it first</source>
+        <translation>电机 %1 已在%2点动：请先松开</translation>
+    </message>
+    <message>
+        <source>Motor %1: the last jog command is still on its way; press again</source>
+        <translation>电机 %1：上一条点动命令仍在发送中；请重新按下</translation>
+    </message>
+    <message>
+        <source>Motor %1 may still be running after its stop: stop it before jogging</source>
+        <translation>电机 %1 在停止后可能仍在运行：请先使其停止再点动</translation>
+    </message>
+    <message>
+        <source>Motor %1 is moving (a single move, homing or another command): stop it before jogging</source>
+        <translation>电机 %1 正在运行（单次运行、回机械零或其他命令）：请先使其停止再点动</translation>
+    </message>
+    <message>
+        <source>Motor %1 has no %2 command in this map</source>
+        <translation>寄存器映射中没有电机 %1 的 %2 命令</translation>
+    </message>
+    <message>
+        <source>Motor %1: jog %2</source>
+        <translation>电机 %1：%2点动</translation>
+    </message>
+    <message>
+        <source>released</source>
+        <translation>已松开</translation>
+    </message>
+    <message>
+        <source>stop button</source>
+        <translation>停止按钮</translation>
+    </message>
+    <message>
+        <source>Motor %1 has no stop command in this map: use the emergency stop</source>
+        <translation>寄存器映射中没有电机 %1 的停止命令：请使用急停</translation>
+    </message>
+    <message>
+        <source>not connected, the stop could not be sent</source>
+        <translation>未连接，无法发送停止命令</translation>
+    </message>
+    <message>
+        <source>Not connected: the stop for motor %1 was not sent</source>
+        <translation>未连接：电机 %1 的停止命令未发送</translation>
+    </message>
+    <message>
+        <source>Motor %1: jog %2 failed: %3</source>
+        <translation>电机 %1：%2点动失败：%3</translation>
+    </message>
+    <message>
+        <source>the jog command failed</source>
+        <translation>点动命令失败</translation>
+    </message>
+    <message>
+        <source>Motor %1: the stop failed: %2</source>
+        <translation>电机 %1：停止失败：%2</translation>
+    </message>
+    <message>
+        <source>Motor %1 stopped (%2)</source>
+        <translation>电机 %1 已停止（%2）</translation>
+    </message>
+    <message>
+        <source>Motor %1 still runs after its stop (%2)! Use the emergency stop, then check the controller.</source>
+        <translation>电机 %1 在停止后仍在运行（%2）！请使用急停，然后检查控制器。</translation>
+    </message>
+    <message>
+        <source>Motor %1: could not check that it stopped: %2</source>
+        <translation>电机 %1：无法确认是否已停止：%2</translation>
+    </message>
+    <message>
+        <source>Motor %1 is possibly still running (%2). The stop goes out as soon as the link is back; if needed now, use the machine&apos;s own emergency stop.</source>
+        <translation>电机 %1 可能仍在运行（%2）。通信恢复后将立即发送停止命令；如需立即停止，请使用机器自身的急停。</translation>
+    </message>
+    <message>
+        <source>the link was lost while it moved: %1</source>
+        <translation>运行中通信中断：%1</translation>
+    </message>
+    <message>
+        <source>The link is back: stopping motor %1, which was possibly still running</source>
+        <translation>通信已恢复：正在停止可能仍在运行的电机 %1</translation>
+    </message>
+    <message>
+        <source>link back</source>
+        <translation>通信恢复</translation>
+    </message>
+    <message>
+        <source>Motor %1: jog %2 not done: %3</source>
+        <translation>电机 %1：%2点动未执行：%3</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::JogPanel</name>
+    <message>
+        <source>stop button</source>
+        <translation>停止按钮</translation>
+    </message>
+    <message>
+        <source>Single move</source>
+        <translation>单次运行</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>回机械零</translation>
+    </message>
+    <message>
+        <source>%1 done</source>
+        <translation>%1完成</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>未连接。</translation>
+    </message>
+    <message>
+        <source>Not read yet: %1.</source>
+        <translation>尚未读取：%1。</translation>
+    </message>
+    <message>
+        <source>%1 edited but not written: the controller moves by the values it holds. Write or revert the edit first.</source>
+        <translation>%1 已修改但尚未写入：控制器按其中保存的值运行。请先写入或还原该修改。</translation>
+    </message>
+    <message>
+        <source>The motor is moving.</source>
+        <translation>电机正在运行。</translation>
+    </message>
+    <message>
+        <source>This controller has no single move.</source>
+        <translation>此控制器没有单次运行功能。</translation>
+    </message>
+    <message>
+        <source>%1, %2, at %3</source>
+        <translation>%1，%2，%3</translation>
+    </message>
+    <message>
+        <source>Jogging forward</source>
+        <translation>正向点动中</translation>
+    </message>
+    <message>
+        <source>Jogging in reverse</source>
+        <translation>反向点动中</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>正在停止…</translation>
+    </message>
+    <message>
+        <source>STILL RUNNING after its stop: use the E-STOP</source>
+        <translation>停止后仍在运行！请按急停</translation>
+    </message>
+    <message>
+        <source>Possibly still running: the link was lost; the stop goes out when it is back</source>
+        <translation>可能仍在运行：通信已中断；通信恢复后将发送停止命令</translation>
+    </message>
+    <message>
+        <source>%1… running</source>
+        <translation>%1… 运行中</translation>
+    </message>
+    <message>
+        <source>%1…</source>
+        <translation>%1…</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>Idle</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Idle — %1</source>
+        <translation>停止 — %1</translation>
+    </message>
+    <message>
+        <source>Jogs at %1, the controller&apos;s value, until you apply %2.</source>
+        <translation>当前按控制器中的 %1 点动，应用后改为 %2。</translation>
+    </message>
+    <message>
+        <source>Move once by the distance shown, in the direction and at the speed shown (coil %1)</source>
+        <translation>按显示的距离、方向和速度运行一次（线圈 %1）</translation>
+    </message>
+    <message>
+        <source>No home input: runs in reverse until a limit or a stop, without zeroing.</source>
+        <translation>未设定原点信号：一直反转，直到碰到限位或收到停止命令，坐标不清零。</translation>
+    </message>
+    <message>
+        <source>Reverse until %1, then position 0.</source>
+        <translation>反转至 %1 有效，坐标归 0。</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>◀ Reverse</source>
+        <translation>◀ 反转</translation>
+    </message>
+    <message>
+        <source>Forward ▶</source>
+        <translation>正转 ▶</translation>
+    </message>
+    <message>
+        <source>Hold to run motor %1 in reverse; let go to stop</source>
+        <translation>按住时电机 %1 反转，松开即停止</translation>
+    </message>
+    <message>
+        <source>Hold to run motor %1 forward; let go to stop</source>
+        <translation>按住时电机 %1 正转，松开即停止</translation>
+    </message>
+    <message>
+        <source>Stop motor &amp;%1</source>
+        <translation>停止电机 &amp;%1</translation>
+    </message>
+    <message>
+        <source>Stop motor %1 at once, whatever started it</source>
+        <translation>立即停止电机 %1，无论是由什么启动的</translation>
+    </message>
+    <message>
+        <source>Position:</source>
+        <translation>实时坐标：</translation>
+    </message>
+    <message>
+        <source>Jog speed:</source>
+        <translation>点动速度：</translation>
+    </message>
+    <message>
+        <source>&amp;Apply speed</source>
+        <translation>应用速度(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Write just the jog speed to the controller now and read it back. The controller takes a new speed even while the motor runs. Other edits wait for &quot;Write changes&quot;.</source>
+        <translation>立即只将点动速度写入控制器并回读。电机运行中控制器也会采用新速度。其他修改需通过“写入更改”写入。</translation>
+    </message>
+    <message>
+        <source>Single move:</source>
+        <translation>单次运行：</translation>
+    </message>
+    <message>
+        <source>&amp;Single move</source>
+        <translation>单次运行(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Home:</source>
+        <translation>回机械零：</translation>
+    </message>
+    <message>
+        <source>Home &amp;motor %1</source>
+        <translation>电机 %1 回机械零(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Run motor %1 in reverse to its home input and set its position to 0</source>
+        <translation>电机 %1 反转到原点信号处，并将其坐标设为 0</translation>
     </message>
 </context>
 <context>
     <name>stepcom::LinkSettings</name>
     <message>
         <source>device id %1 is outside 1-255</source>
-        <translation type="unfinished"></translation>
+        <translation>设备 ID %1 超出范围 1-255</translation>
     </message>
     <message>
         <source>timeout %1 ms is outside 20-60000 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>超时 %1 ms 超出范围 20-60000 ms</translation>
     </message>
     <message>
         <source>retries %1 is outside 0-10</source>
-        <translation type="unfinished"></translation>
+        <translation>重试次数 %1 超出范围 0-10</translation>
     </message>
     <message>
         <source>no host given</source>
-        <translation type="unfinished"></translation>
+        <translation>未指定主机</translation>
     </message>
     <message>
         <source>TCP port %1 is outside 1-65535</source>
-        <translation type="unfinished"></translation>
+        <translation>TCP 端口 %1 超出范围 1-65535</translation>
     </message>
     <message>
         <source>no serial port given</source>
-        <translation type="unfinished"></translation>
+        <translation>未指定串口</translation>
     </message>
     <message>
         <source>baud %1 is not one of 4800, 9600, 19200, 38400</source>
-        <translation type="unfinished"></translation>
+        <translation>波特率 %1 不是 4800、9600、19200、38400 之一</translation>
     </message>
     <message>
         <source>stop bits must be 1 or 2</source>
-        <translation type="unfinished"></translation>
+        <translation>停止位必须为 1 或 2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::LinkStatus</name>
+    <message>
+        <source>Connected (simulator)</source>
+        <translation>已连接（仿真器）</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>已连接</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>正在连接…</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>%1 transactions/s · status %2 Hz</source>
+        <translation>%1 次通信/s · 状态刷新 %2 Hz</translation>
+    </message>
+    <message>
+        <source>errors: %1 (timeouts %2, CRC %3, exceptions %4)</source>
+        <translation>错误：%1（超时 %2，CRC %3，异常 %4）</translation>
+    </message>
+    <message>
+        <source>⚠ Not saved to flash</source>
+        <translation>⚠ 未保存到闪存</translation>
+    </message>
+    <message>
+        <source>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</source>
+        <translation>参数已写入，但尚未保存到控制器的闪存：控制器断电后将丢失。请使用“保存到闪存”。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MainWindow</name>
+    <message>
+        <source>About StepCom</source>
+        <translation>关于 StepCom</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;StepCom %1&lt;/b&gt;&lt;br&gt;Commissioning tool for 2-axis stepper controllers over Modbus RTU/TCP.&lt;br&gt;GPL-3.0-or-later.</source>
+        <translation>&lt;b&gt;StepCom %1&lt;/b&gt;&lt;br&gt;通过 Modbus RTU/TCP 调试两轴步进电机控制器的工具。&lt;br&gt;许可证：GPL-3.0-or-later。</translation>
+    </message>
+    <message>
+        <source>StepCom — stepper controller commissioning</source>
+        <translation>StepCom — 步进电机控制器调试</translation>
+    </message>
+    <message>
+        <source>&amp;Read all</source>
+        <translation>读取全部(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Read every parameter from the controller (%1)</source>
+        <translation>从控制器读取所有参数（%1）</translation>
+    </message>
+    <message>
+        <source>&amp;Write changes…</source>
+        <translation>写入更改(&amp;W)…</translation>
+    </message>
+    <message>
+        <source>Show the edited values, then write them and verify (%1)</source>
+        <translation>显示已修改的值，确认后写入并验证（%1）</translation>
+    </message>
+    <message>
+        <source>Re&amp;vert</source>
+        <translation>还原(&amp;V)</translation>
+    </message>
+    <message>
+        <source>Drop every edit and show what the controller holds</source>
+        <translation>放弃所有修改，显示控制器中的值</translation>
+    </message>
+    <message>
+        <source>&amp;Save to flash</source>
+        <translation>保存到闪存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save the controller&apos;s parameters to its non-volatile memory (coil 00096)</source>
+        <translation>将控制器参数保存到其非易失性存储器（线圈 00096）</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>断开(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Emergency stop</source>
+        <translation>急停(&amp;E)</translation>
+    </message>
+    <message>
+        <source>All motors and outputs off, at once (key: %1)</source>
+        <translation>立即停止所有电机并关闭所有输出（快捷键：%1）</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;About StepCom</source>
+        <translation>关于 StepCom(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>&amp;Device</source>
+        <translation>设备(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>主工具栏</translation>
+    </message>
+    <message>
+        <source>Traffic</source>
+        <translation>通信报文</translation>
+    </message>
+    <message>
+        <source>Messages</source>
+        <translation>消息</translation>
+    </message>
+    <message>
+        <source>Unwritten changes</source>
+        <translation>未写入的更改</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) were never written to the controller. Close anyway and lose them?</source>
+        <translation>
+            <numerusform>有 %n 个已修改的值尚未写入控制器。仍要关闭并放弃这些修改吗？</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>another page was chosen</source>
+        <translation>切换到了其他页面</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>窗口失去焦点</translation>
+    </message>
+    <message>
+        <source>the window closes</source>
+        <translation>窗口正在关闭</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MessageView</name>
+    <message>
+        <source>C&amp;lear messages</source>
+        <translation>清除消息(&amp;L)</translation>
     </message>
 </context>
 <context>
     <name>stepcom::Modbus</name>
     <message>
         <source>illegal function</source>
-        <translation type="unfinished"></translation>
+        <translation>非法功能</translation>
     </message>
     <message>
         <source>illegal data address</source>
-        <translation type="unfinished"></translation>
+        <translation>非法数据地址</translation>
     </message>
     <message>
         <source>illegal data value</source>
-        <translation type="unfinished"></translation>
+        <translation>非法数据值</translation>
     </message>
     <message>
         <source>server device failure</source>
-        <translation type="unfinished"></translation>
+        <translation>从站设备故障</translation>
     </message>
     <message>
         <source>acknowledge</source>
-        <translation type="unfinished"></translation>
+        <translation>确认</translation>
     </message>
     <message>
         <source>server device busy</source>
-        <translation type="unfinished"></translation>
+        <translation>从站设备忙</translation>
     </message>
     <message>
         <source>exception %1</source>
-        <translation type="unfinished"></translation>
+        <translation>异常 %1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::ModbusLink</name>
     <message>
         <source>no connection to %1 within %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 s 内未能连接到 %1</translation>
     </message>
     <message>
         <source>reconnecting</source>
-        <translation type="unfinished"></translation>
+        <translation>正在重新连接</translation>
     </message>
     <message>
         <source>serial port %1 does not exist (is the adapter plugged in?)</source>
-        <translation type="unfinished"></translation>
+        <translation>串口 %1 不存在（转换器是否已插好？）</translation>
     </message>
     <message>
         <source>no permission to open %1: add your user to the group that owns it (on Debian and Ubuntu: sudo usermod -aG dialout $USER), then log out and in again</source>
-        <translation type="unfinished"></translation>
+        <translation>没有打开 %1 的权限：请将当前用户加入该设备所属的用户组（Debian 和 Ubuntu 上执行：sudo usermod -aG dialout $USER），然后注销并重新登录</translation>
     </message>
     <message>
         <source>connecting to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>正在连接 %1</translation>
     </message>
     <message>
         <source>cannot open %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开 %1</translation>
     </message>
     <message>
         <source>connected to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已连接到 %1</translation>
     </message>
     <message>
         <source>connection closed</source>
-        <translation type="unfinished"></translation>
+        <translation>连接已关闭</translation>
     </message>
     <message>
         <source>the port reported an error</source>
-        <translation type="unfinished"></translation>
+        <translation>端口报告错误</translation>
     </message>
     <message>
         <source>link lost: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>连接中断：%1</translation>
     </message>
     <message>
         <source>link closed</source>
-        <translation type="unfinished"></translation>
+        <translation>通信链路已关闭</translation>
     </message>
     <message>
         <source>disconnected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已断开：%1</translation>
     </message>
     <message>
         <source>%1: not done, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：未执行，%2</translation>
     </message>
     <message>
         <source>%1: not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：未连接</translation>
     </message>
     <message>
         <source>%1: cancelled%2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：已取消%2</translation>
     </message>
     <message>
         <source>%1: could not send: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：无法发送：%2</translation>
     </message>
     <message>
         <source>%1: answer carried %2 registers, %3 were asked for</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：应答包含 %2 个寄存器，但请求的是 %3 个</translation>
     </message>
     <message>
         <source>%1: the controller refused: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：控制器返回异常：%2</translation>
     </message>
     <message>
         <source>%1: answers had a bad checksum (CRC)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：应答校验错误（CRC）</translation>
     </message>
     <message>
         <source>%1: no answer within %2 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 ms 内无应答</translation>
     </message>
     <message>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2</translation>
     </message>
     <message>
         <source> -- the controller may have acted on it</source>
-        <translation type="unfinished"></translation>
+        <translation>（控制器可能已执行该命令）</translation>
     </message>
     <message>
         <source>the port stopped responding (no answer and no timeout from the driver)</source>
-        <translation type="unfinished"></translation>
+        <translation>端口停止响应（驱动程序既无应答也未报告超时）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MotionPage</name>
+    <message>
+        <source>Homing in order</source>
+        <translation>顺序回机械零</translation>
+    </message>
+    <message>
+        <source>Returning to data zero</source>
+        <translation>回数据零</translation>
+    </message>
+    <message>
+        <source>Coordinates zeroed</source>
+        <translation>坐标已清零</translation>
+    </message>
+    <message>
+        <source>motor %1 at %2</source>
+        <translation>电机 %1 位于 %2</translation>
+    </message>
+    <message>
+        <source>%1: done (%2)</source>
+        <translation>%1：完成（%2）</translation>
+    </message>
+    <message>
+        <source>Jog and home</source>
+        <translation>点动与回零</translation>
+    </message>
+    <message>
+        <source>%1…</source>
+        <translation>%1…</translation>
+    </message>
+    <message>
+        <source>%1… motor %2 running</source>
+        <translation>%1… 电机 %2 运行中</translation>
+    </message>
+    <message>
+        <source>&quot;Home in order&quot; uses the order the controller holds (%1) until you apply the edit.</source>
+        <translation>在应用修改之前，“顺序回机械零”仍使用控制器中的回零顺序（%1）。</translation>
+    </message>
+    <message>
+        <source>Homes %1.</source>
+        <translation>回零顺序：%1。</translation>
+    </message>
+    <message>
+        <source>the page was left</source>
+        <translation>离开了此页面</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>窗口失去焦点</translation>
+    </message>
+    <message>
+        <source>&amp;Clear</source>
+        <translation>清除(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Hide this note; the messages dock keeps it</source>
+        <translation>隐藏此提示；“消息”窗口中仍会保留</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard jogging</source>
+        <translation>键盘点动(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Off by default. When on, the arrow keys jog while this page is shown and the window has focus</source>
+        <translation>默认关闭。开启后，在显示此页面且窗口获得焦点时，可用方向键点动</translation>
+    </message>
+    <message>
+        <source>⌨ KEYBOARD JOGGING ON</source>
+        <translation>⌨ 键盘点动已开启</translation>
+    </message>
+    <message>
+        <source>Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward. Hold to move, let go to stop. Not while typing in a field; leaving the page or the window stops.</source>
+        <translation>按键：← → 电机 1 反转/正转，↓ ↑ 电机 2 反转/正转。按住运行，松开停止。在输入框中输入时无效；离开此页面或窗口时电机停止。</translation>
+    </message>
+    <message>
+        <source>Homing</source>
+        <translation>回零</translation>
+    </message>
+    <message>
+        <source>Apply o&amp;rder</source>
+        <translation>应用顺序(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Write just the homing order to the controller now and read it back</source>
+        <translation>立即只将回零顺序写入控制器并回读</translation>
+    </message>
+    <message>
+        <source>Home &amp;in order</source>
+        <translation>顺序回机械零(&amp;I)</translation>
+    </message>
+    <message>
+        <source>&amp;Zero coordinates</source>
+        <translation>坐标清零(&amp;Z)</translation>
+    </message>
+    <message>
+        <source>Make the present positions of all motors 0; nothing moves</source>
+        <translation>将所有电机的当前坐标设为 0；电机不运动</translation>
+    </message>
+    <message>
+        <source>Re&amp;turn to data zero</source>
+        <translation>回数据零(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Drive every idle motor back to position 0</source>
+        <translation>让所有未运行的电机回到坐标 0</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>输出</translation>
+    </message>
+    <message>
+        <source>Output 1 o&amp;n</source>
+        <translation>第 1 路输出开(&amp;N)</translation>
+    </message>
+    <message>
+        <source>O&amp;utput 1 off</source>
+        <translation>第 1 路输出关(&amp;U)</translation>
+    </message>
+    <message>
+        <source>All out&amp;puts on</source>
+        <translation>输出全开(&amp;P)</translation>
+    </message>
+    <message>
+        <source>All &amp;outputs off</source>
+        <translation>输出全关(&amp;O)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MotorPage</name>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Computed from the values shown, including edits not written yet.</source>
+        <translation>根据当前显示的值计算，包括尚未写入的修改。</translation>
+    </message>
+    <message>
+        <source>Computed from the values shown.</source>
+        <translation>根据当前显示的值计算。</translation>
+    </message>
+    <message>
+        <source>Motor %1 parameters</source>
+        <translation>电机 %1 参数</translation>
+    </message>
+    <message>
+        <source>Derived values</source>
+        <translation>换算值</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>运行控制</translation>
+    </message>
+    <message>
+        <source>&amp;Stop motor %1</source>
+        <translation>停止电机 %1(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Stops the motor at once, without a ramp. The E-STOP in the toolbar stops everything.</source>
+        <translation>立即停止电机，不经减速。工具栏中的“急停”会停止所有电机并关闭所有输出。</translation>
     </message>
 </context>
 <context>
     <name>stepcom::Parameter</name>
     <message>
         <source>%1: %2 is not one of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 不是 %3 之一</translation>
     </message>
     <message>
         <source>%1: %2 is out of range (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 超出范围（%3）</translation>
     </message>
     <message>
         <source>%1: no value given</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：未给出数值</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：“%2”不是数字</translation>
     </message>
     <message numerus="yes">
         <source>%1: &apos;%2&apos; has more than %n decimal(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1：“%2”的小数超过 %n 位</numerusform>
         </translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is far too large</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：“%2”过大</translation>
     </message>
     <message>
         <source>%1: not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：不是有限数值</translation>
     </message>
     <message>
         <source>%1: %2 is far too large</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 过大</translation>
     </message>
     <message numerus="yes">
         <source>%1: %2 has more than %n decimal(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1：%2 的小数超过 %n 位</numerusform>
         </translation>
     </message>
 </context>
@@ -563,185 +2154,346 @@
     <name>stepcom::ParameterField</name>
     <message>
         <source>Not read from the controller yet</source>
-        <translation type="unfinished"></translation>
+        <translation>尚未从控制器读取</translation>
     </message>
     <message>
         <source>The controller holds this value</source>
-        <translation type="unfinished"></translation>
+        <translation>与控制器中的值一致</translation>
     </message>
     <message>
         <source>Edited, not written yet (the controller holds %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>已修改，尚未写入（控制器中的值为 %1）</translation>
     </message>
     <message>
         <source>Edited, not written yet</source>
-        <translation type="unfinished"></translation>
+        <translation>已修改，尚未写入</translation>
     </message>
     <message>
         <source>Write failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>写入失败：%1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::ParameterStore</name>
     <message>
         <source>unknown parameter %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未知参数 %1</translation>
     </message>
     <message>
         <source>%1 is read-only</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 为只读参数</translation>
     </message>
     <message>
         <source>the controller holds %1 instead</source>
-        <translation type="unfinished"></translation>
+        <translation>控制器中的值实际为 %1</translation>
     </message>
     <message>
         <source>not written: an earlier write failed</source>
-        <translation type="unfinished"></translation>
+        <translation>未写入：之前的写入失败</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PlotPage</name>
+    <message>
+        <source>Plots</source>
+        <translation>曲线图</translation>
+    </message>
+    <message>
+        <source>Cannot write the picture “%1”.</source>
+        <translation>无法写入图片“%1”。</translation>
+    </message>
+    <message>
+        <source>Record status to CSV</source>
+        <translation>将状态记录到 CSV</translation>
+    </message>
+    <message>
+        <source>Export plots as PNG</source>
+        <translation>将曲线图导出为 PNG</translation>
+    </message>
+    <message>
+        <source>Export visible samples as CSV</source>
+        <translation>将可见采样导出为 CSV</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 图片 (*.png)</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Saved “%1”.</source>
+        <translation>已保存“%1”。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to “%1”: %n sample(s)</source>
+        <translation>
+            <numerusform>正在记录到“%1”：%n 个采样</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Not recording. Samples of the last %n minute(s) are kept for the plots and exports.</source>
+        <translation>
+            <numerusform>未在记录。曲线图和导出保留最近 %n 分钟的采样。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Resume</source>
+        <translation>继续(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>暂停(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Freeze the plots; samples are still taken and recorded</source>
+        <translation>冻结曲线图；仍会继续采样和记录</translation>
+    </message>
+    <message>
+        <source>&amp;Fit</source>
+        <translation>全部显示(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Show all of the data (or double-click a plot). Drag to zoom into a region, wheel to zoom, middle button to pan.</source>
+        <translation>显示全部数据（或双击曲线图）。拖动可放大某个区域，滚轮缩放，按住中键平移。</translation>
+    </message>
+    <message>
+        <source>&amp;Clear path</source>
+        <translation>清除轨迹(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Start the tool path trace again from here</source>
+        <translation>从当前位置重新开始绘制运动轨迹</translation>
+    </message>
+    <message>
+        <source>&amp;Window:</source>
+        <translation>时间窗口(&amp;W)：</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>How many seconds the position plot shows</source>
+        <translation>坐标曲线显示的时间长度（秒）</translation>
+    </message>
+    <message>
+        <source>Export P&amp;NG…</source>
+        <translation>导出 PNG(&amp;N)…</translation>
+    </message>
+    <message>
+        <source>Save both plots as they are shown as a PNG picture</source>
+        <translation>将两个曲线图按当前显示保存为 PNG 图片</translation>
+    </message>
+    <message>
+        <source>Export CS&amp;V…</source>
+        <translation>导出 CSV(&amp;V)…</translation>
+    </message>
+    <message>
+        <source>Save the samples in the visible time range as CSV</source>
+        <translation>将可见时间范围内的采样保存为 CSV</translation>
+    </message>
+    <message>
+        <source>&amp;Stop recording</source>
+        <translation>停止记录(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Record CSV…</source>
+        <translation>记录 CSV(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Write every status sample to a CSV file as it arrives</source>
+        <translation>将收到的每个状态采样实时写入 CSV 文件</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Motor %1 (%2)</source>
+        <translation>电机 %1（%2）</translation>
+    </message>
+    <message>
+        <source>Tool path</source>
+        <translation>运动轨迹</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::Poller</name>
+    <message>
+        <source>poll %1/%2</source>
+        <translation>轮询 %1/%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PositionPlot</name>
+    <message>
+        <source>Cannot write the picture “%1”.</source>
+        <translation>无法写入图片“%1”。</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>坐标</translation>
+    </message>
+    <message>
+        <source>Position (%1)</source>
+        <translation>坐标（%1）</translation>
+    </message>
+    <message>
+        <source>Drag to zoom into a region, wheel or +/- to zoom, middle button or arrow keys to pan, double-click or Home to fit. Zooming pauses the view.</source>
+        <translation>拖动可放大某个区域，滚轮或 +/- 缩放，中键或方向键平移，双击或按 Home 键全部显示。缩放时视图暂停刷新。</translation>
+    </message>
+    <message>
+        <source>Time (s), 0 = %1</source>
+        <translation>时间（s），0 = %1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimCommandLine</name>
     <message>
         <source>N</source>
-        <translation type="unfinished"></translation>
+        <translation>N</translation>
     </message>
     <message>
         <source>MS</source>
-        <translation type="unfinished"></translation>
+        <translation>毫秒</translation>
     </message>
     <message>
         <source>SHARE</source>
-        <translation type="unfinished"></translation>
+        <translation>比例</translation>
     </message>
     <message>
         <source>Serve Modbus RTU on a new pseudo-terminal (Unix).</source>
-        <translation type="unfinished"></translation>
+        <translation>在新建的伪终端上提供 Modbus RTU 服务（Unix）。</translation>
     </message>
     <message>
         <source>Make PATH a symlink to the pseudo-terminal.</source>
-        <translation type="unfinished"></translation>
+        <translation>在指定路径创建指向该伪终端的符号链接。</translation>
     </message>
     <message>
         <source>PATH</source>
-        <translation type="unfinished"></translation>
+        <translation>路径</translation>
     </message>
     <message>
         <source>Answer whatever baud rate the client set (by default a client whose baud differs from register 40213 gets silence, as on a real line).</source>
-        <translation type="unfinished"></translation>
+        <translation>无论客户端设置何种波特率都应答（默认情况下，客户端波特率与寄存器 40213 不一致时不应答，与真实线路相同）。</translation>
     </message>
     <message>
         <source>Serve Modbus TCP on [HOST:]PORT (127.0.0.1 unless --listen-any; port 0 picks a free one).</source>
-        <translation type="unfinished"></translation>
+        <translation>在 [主机:]端口 上提供 Modbus TCP 服务（未指定 --listen-any 时主机为 127.0.0.1；端口为 0 时自动选择空闲端口）。</translation>
     </message>
     <message>
         <source>[HOST:]PORT</source>
-        <translation type="unfinished"></translation>
+        <translation>[主机:]端口</translation>
     </message>
     <message>
         <source>Listen for TCP on every interface.</source>
-        <translation type="unfinished"></translation>
+        <translation>在所有网络接口上监听 TCP 连接。</translation>
     </message>
     <message>
         <source>Refuse reads of reserved registers (exception 02) instead of reading 0.</source>
-        <translation type="unfinished"></translation>
+        <translation>拒绝读取预留寄存器（返回异常 02），而不是读出 0。</translation>
     </message>
     <message>
         <source>Device id 1-255 (overrides the saved one).</source>
-        <translation type="unfinished"></translation>
+        <translation>设备 ID，1-255（覆盖已保存的值）。</translation>
     </message>
     <message>
         <source>The simulator&apos;s flash: saved parameters are loaded from and saved to FILE.</source>
-        <translation type="unfinished"></translation>
+        <translation>仿真器的闪存：从该文件加载已保存的参数，并保存到该文件。</translation>
     </message>
     <message>
         <source>FILE</source>
-        <translation type="unfinished"></translation>
+        <translation>文件</translation>
     </message>
     <message>
         <source>Use the register map FILE instead of the built-in one.</source>
-        <translation type="unfinished"></translation>
+        <translation>使用指定的寄存器映射文件代替内置映射。</translation>
     </message>
     <message>
         <source>Answer no sooner than MS after a request (default: the map&apos;s, 35).</source>
-        <translation type="unfinished"></translation>
+        <translation>收到请求后至少经过指定的毫秒数才应答（默认：寄存器映射中的值，35）。</translation>
     </message>
     <message>
         <source>Add the bytes&apos; time on a line at N baud to every answer.</source>
-        <translation type="unfinished"></translation>
+        <translation>在每个应答上加上这些字节在波特率为 N 的线路上的传输时间。</translation>
     </message>
     <message>
         <source>Drop a SHARE (0-1 or %) of the answers.</source>
-        <translation type="unfinished"></translation>
+        <translation>按指定比例（0-1 或 %）丢弃应答。</translation>
     </message>
     <message>
         <source>Break the CRC of a SHARE of the answers.</source>
-        <translation type="unfinished"></translation>
+        <translation>按指定比例破坏应答的 CRC。</translation>
     </message>
     <message>
         <source>Answer a SHARE of the requests MS later.</source>
-        <translation type="unfinished"></translation>
+        <translation>按指定比例将请求的应答推迟指定的毫秒数。</translation>
     </message>
     <message>
         <source>SHARE:MS</source>
-        <translation type="unfinished"></translation>
+        <translation>比例:毫秒</translation>
     </message>
     <message>
         <source>Answer a SHARE of the requests with exception CODE instead.</source>
-        <translation type="unfinished"></translation>
+        <translation>按指定比例对请求改为应答指定代码的异常。</translation>
     </message>
     <message>
         <source>SHARE:CODE</source>
-        <translation type="unfinished"></translation>
+        <translation>比例:代码</translation>
     </message>
     <message>
         <source>Hang up the port after every N answers (it comes back, see --hangup-pause).</source>
-        <translation type="unfinished"></translation>
+        <translation>每 N 次应答后挂断端口（之后会恢复，参见 --hangup-pause）。</translation>
     </message>
     <message>
         <source>How long a hung-up port stays away (default 1000).</source>
-        <translation type="unfinished"></translation>
+        <translation>端口挂断后保持断开的时间，单位 ms（默认 1000）。</translation>
     </message>
     <message>
         <source>Seed of the fault dice (default 1).</source>
-        <translation type="unfinished"></translation>
+        <translation>故障随机数种子（默认 1）。</translation>
     </message>
     <message>
         <source>Set an input at start: INn=on|off|pulse (repeatable).</source>
-        <translation type="unfinished"></translation>
+        <translation>启动时设置输入：INn=on|off|pulse（可多次指定）。</translation>
     </message>
     <message>
         <source>INn=STATE</source>
-        <translation type="unfinished"></translation>
+        <translation>INn=状态</translation>
     </message>
     <message>
         <source>Travel of each axis between its limit switches (default 200).</source>
-        <translation type="unfinished"></translation>
+        <translation>各轴在两个限位开关之间的行程（默认 200）。</translation>
     </message>
     <message>
         <source>MM</source>
-        <translation type="unfinished"></translation>
+        <translation>mm</translation>
     </message>
     <message>
         <source>--tcp: &apos;%1&apos; is not [HOST:]PORT</source>
-        <translation type="unfinished"></translation>
+        <translation>--tcp：“%1”不符合 [主机:]端口 格式</translation>
     </message>
     <message>
         <source>--input: &apos;%1&apos; is not INn=on|off|pulse</source>
-        <translation type="unfinished"></translation>
+        <translation>--input：“%1”不符合 INn=on|off|pulse 格式</translation>
     </message>
     <message>
         <source>--%1: &apos;%2&apos; must be a whole number from %3 to %4</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1：“%2”必须是 %3 到 %4 之间的整数</translation>
     </message>
     <message>
         <source>--exception: the code must be 1-255</source>
-        <translation type="unfinished"></translation>
+        <translation>--exception：异常代码必须为 1-255</translation>
     </message>
     <message>
         <source>--travel: &apos;%1&apos; must be a positive distance</source>
-        <translation type="unfinished"></translation>
+        <translation>--travel：“%1”必须是正的距离值</translation>
     </message>
 </context>
 <context>
@@ -757,201 +2509,517 @@
   hangup [MS]            hang up the port; it comes back after MS
   help                   this text
   quit                   end the simulator</source>
-        <translation type="unfinished"></translation>
+        <translation>命令：
+  status                 电机、输入、输出、连接和通信统计
+  in N on|off|pulse      手动控制输入 N（pulse：接通 50 ms）
+  get 键名               显示寄存器（例如 get motor1.position）
+  set 键名 值            像客户端一样写入参数（例如 set motor1.speed 600）
+  do 命令                执行线圈命令（例如 do motor1.move、do estop）
+  place N 位置           手动将滑台 N 放到其行程上的指定位置（mm）
+  hangup [毫秒]          挂断端口；经过指定毫秒数后恢复
+  help                   显示本帮助
+  quit                   退出仿真器</translation>
     </message>
     <message>
         <source>the simulator is not running</source>
-        <translation type="unfinished"></translation>
+        <translation>仿真器未运行</translation>
     </message>
     <message>
         <source>usage: hangup [MS]</source>
-        <translation type="unfinished"></translation>
+        <translation>用法：hangup [毫秒]</translation>
     </message>
     <message>
         <source>hanging up</source>
-        <translation type="unfinished"></translation>
+        <translation>正在挂断</translation>
     </message>
     <message>
         <source>unknown command &apos;%1&apos; (try help)</source>
-        <translation type="unfinished"></translation>
+        <translation>未知命令“%1”（请输入 help 查看帮助）</translation>
     </message>
     <message>
         <source>usage: in N on|off|pulse</source>
-        <translation type="unfinished"></translation>
+        <translation>用法：in N on|off|pulse</translation>
     </message>
     <message>
         <source>usage: in N on|off|pulse, N from 1 to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>用法：in N on|off|pulse，N 为 1 到 %1</translation>
     </message>
     <message>
         <source>IN%1 is %2</source>
-        <translation type="unfinished"></translation>
+        <translation>IN%1：%2</translation>
     </message>
     <message>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>开 (ON)</translation>
     </message>
     <message>
         <source>off</source>
-        <translation type="unfinished"></translation>
+        <translation>关 (OFF)</translation>
     </message>
     <message>
         <source>usage: get KEY</source>
-        <translation type="unfinished"></translation>
+        <translation>用法：get 键名</translation>
     </message>
     <message>
         <source>%1: no such register</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：没有此寄存器</translation>
     </message>
     <message>
         <source>usage: set KEY VALUE</source>
-        <translation type="unfinished"></translation>
+        <translation>用法：set 键名 值</translation>
     </message>
     <message>
         <source>usage: do COMMAND</source>
-        <translation type="unfinished"></translation>
+        <translation>用法：do 命令</translation>
     </message>
     <message>
         <source>done: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>已执行：%1</translation>
     </message>
     <message>
         <source>usage: place N MM</source>
-        <translation type="unfinished"></translation>
+        <translation>用法：place N 位置</translation>
     </message>
     <message>
         <source>carriage %1 at %2</source>
-        <translation type="unfinished"></translation>
+        <translation>滑台 %1 位于 %2</translation>
     </message>
     <message>
         <source>rtu: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>RTU：%1</translation>
     </message>
     <message>
         <source>(hung up)</source>
-        <translation type="unfinished"></translation>
+        <translation>（已挂断）</translation>
     </message>
     <message>
         <source>tcp: %1:%2</source>
-        <translation type="unfinished"></translation>
+        <translation>TCP：%1:%2</translation>
     </message>
     <message>
         <source>requests %1, answers %2 (exceptions %3), dropped %4, bad CRC %5, late %6, wrong baud %7</source>
-        <translation type="unfinished"></translation>
+        <translation>请求 %1，应答 %2（异常 %3），丢弃 %4，CRC 错误 %5，延迟 %6，波特率不符 %7</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimDevice</name>
     <message>
         <source>%1: not a writable parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：不是可写参数</translation>
     </message>
     <message>
         <source>%1: not a command of the map</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：不是寄存器映射中的命令</translation>
     </message>
     <message>
         <source>%1: the device failed</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：设备执行失败</translation>
     </message>
     <message>
         <source>time %1 ms, mode %2, id %3, %4 baud</source>
-        <translation type="unfinished"></translation>
+        <translation>时间 %1 ms，模式 %2，ID %3，波特率 %4</translation>
     </message>
     <message>
         <source>motor %1: position %2, %3, carriage at %4 of %5</source>
-        <translation type="unfinished"></translation>
+        <translation>电机 %1：坐标 %2，%3，滑台位于 %4（行程 %5）</translation>
     </message>
     <message>
         <source>running</source>
-        <translation type="unfinished"></translation>
+        <translation>运行中</translation>
     </message>
     <message>
         <source>idle</source>
-        <translation type="unfinished"></translation>
+        <translation>停止</translation>
     </message>
     <message>
         <source>inputs:%1</source>
-        <translation type="unfinished"></translation>
+        <translation>输入:%1</translation>
     </message>
     <message>
         <source>outputs:%1</source>
-        <translation type="unfinished"></translation>
+        <translation>输出:%1</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimRegisters</name>
     <message>
         <source>%1: not a writable parameter of the map</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：不是寄存器映射中的可写参数</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimState</name>
     <message>
         <source>cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法写入 %1：%2</translation>
     </message>
     <message>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>无法读取 %1：%2</translation>
     </message>
     <message>
         <source>%1: not JSON (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：不是 JSON（%2）</translation>
     </message>
     <message>
         <source>%1: not a simulator state file</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：不是仿真器状态文件</translation>
     </message>
     <message>
         <source>%1: parameter %2 is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：参数 %2 不是数字</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimTcpServer</name>
     <message>
         <source>cannot listen on %1:%2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>无法在 %1:%2 上监听：%3</translation>
     </message>
 </context>
 <context>
     <name>stepcom::SimWorker</name>
     <message>
         <source>RTU server: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>RTU 服务器：%1</translation>
     </message>
     <message>
         <source>cannot open the pseudo-terminal: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开伪终端：%1</translation>
     </message>
     <message>
         <source>Modbus RTU on a pseudo-terminal is not available on this system; use --tcp</source>
-        <translation type="unfinished"></translation>
+        <translation>此系统不支持在伪终端上运行 Modbus RTU；请使用 --tcp</translation>
     </message>
     <message>
         <source>cannot re-create the port: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法重新创建端口：%1</translation>
     </message>
 </context>
 <context>
-    <name>stepcom::WriteJob</name>
+    <name>stepcom::StatusDock</name>
     <message>
-        <source>could not reopen the port at the new baud: %1</source>
-        <translation type="unfinished"></translation>
+        <source>unknown</source>
+        <translation>未知</translation>
     </message>
     <message>
-        <source>%1: wrote %2 but the controller holds %3</source>
-        <translation type="unfinished"></translation>
+        <source>Running</source>
+        <translation>运行中</translation>
     </message>
     <message>
-        <source>%1: wrote %2 but could not read it back</source>
-        <translation type="unfinished"></translation>
+        <source>Stopped</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>开 (ON)</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>关 (OFF)</translation>
+    </message>
+    <message>
+        <source>measuring…</source>
+        <translation>正在测量…</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Inputs and outputs</source>
+        <translation>输入与输出</translation>
+    </message>
+    <message>
+        <source>In</source>
+        <translation>输入</translation>
+    </message>
+    <message>
+        <source>Out</source>
+        <translation>输出</translation>
+    </message>
+    <message>
+        <source>IN%1</source>
+        <translation>IN%1</translation>
+    </message>
+    <message>
+        <source>OUT%1</source>
+        <translation>OUT%1</translation>
+    </message>
+    <message>
+        <source>Update rate</source>
+        <translation>刷新率</translation>
+    </message>
+    <message>
+        <source>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</source>
+        <translation>实际达到的每秒状态刷新次数（完整读取周期数，而不是设定的频率）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::StatusRecorder</name>
+    <message>
+        <source>Recording to “%1” stopped: %2</source>
+        <translation>记录到“%1”已停止：%2</translation>
+    </message>
+    <message>
+        <source>Cannot write “%1”: %2</source>
+        <translation>无法写入“%1”：%2</translation>
+    </message>
+    <message>
+        <source>Cannot record: no file name given</source>
+        <translation>无法记录：未指定文件名</translation>
+    </message>
+    <message>
+        <source>Cannot record to “%1”: %2</source>
+        <translation>无法记录到“%1”：%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TrafficModel</name>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Dir</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <source>Bytes (hex)</source>
+        <translation>字节（十六进制）</translation>
+    </message>
+    <message>
+        <source>Meaning</source>
+        <translation>含义</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TrafficView</name>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>暂停(&amp;P)</translation>
+    </message>
+    <message>
+        <source>C&amp;lear</source>
+        <translation>清除(&amp;L)</translation>
+    </message>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>复制(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Save…</source>
+        <translation>保存(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Copy the selected rows (all rows when none are selected)</source>
+        <translation>复制选中的行（未选中任何行时复制全部）</translation>
+    </message>
+    <message>
+        <source>Save traffic log</source>
+        <translation>保存通信报文记录</translation>
+    </message>
+    <message>
+        <source>Text files (*.txt *.log)</source>
+        <translation>文本文件 (*.txt *.log)</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2</source>
+        <translation>无法保存 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WiringCheck</name>
+    <message>
+        <source>positive limit</source>
+        <translation>正限位</translation>
+    </message>
+    <message>
+        <source>negative limit</source>
+        <translation>反限位</translation>
+    </message>
+    <message>
+        <source>home input</source>
+        <translation>原点信号</translation>
+    </message>
+    <message>
+        <source>single trigger</source>
+        <translation>单次触发运行</translation>
+    </message>
+    <message>
+        <source>forward/reverse trigger</source>
+        <translation>正反触发运行</translation>
+    </message>
+    <message>
+        <source>hold-to-jog</source>
+        <translation>正反点动运行</translation>
+    </message>
+    <message>
+        <source>fixed-distance trigger</source>
+        <translation>按设定距离触发运行</translation>
+    </message>
+    <message>
+        <source>as motor 1&apos;s positive limit</source>
+        <translation>作为电机 1 的正限位</translation>
+    </message>
+    <message>
+        <source>as motor 1&apos;s negative limit</source>
+        <translation>作为电机 1 的反限位</translation>
+    </message>
+    <message>
+        <source>to start motor 1</source>
+        <translation>用于启动电机 1</translation>
+    </message>
+    <message>
+        <source>to stop motor 1 (the next start keeps the direction)</source>
+        <translation>用于停止电机 1（下次启动保持原方向）</translation>
+    </message>
+    <message>
+        <source>to stop motor 1 (the next start reverses)</source>
+        <translation>用于停止电机 1（下次启动改为反向）</translation>
+    </message>
+    <message>
+        <source>to stop motor 1 (the next start goes forward)</source>
+        <translation>用于停止电机 1（下次启动为正向）</translation>
+    </message>
+    <message>
+        <source>to run motor 1 forward</source>
+        <translation>用于电机 1 正转</translation>
+    </message>
+    <message>
+        <source>to run motor 1 in reverse</source>
+        <translation>用于电机 1 反转</translation>
+    </message>
+    <message>
+        <source>to jog motor 1 forward while it is on</source>
+        <translation>用于电机 1 正向点动（输入有效期间运行）</translation>
+    </message>
+    <message>
+        <source>to jog motor 1 in reverse while it is on</source>
+        <translation>用于电机 1 反向点动（输入有效期间运行）</translation>
+    </message>
+    <message>
+        <source>to move motor 1 forward by its move distance</source>
+        <translation>用于电机 1 按单次运行距离正向运行</translation>
+    </message>
+    <message>
+        <source>to move motor 1 in reverse by its move distance</source>
+        <translation>用于电机 1 按单次运行距离反向运行</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 is both the positive and the negative limit</source>
+        <translation>电机 %1：%2 同时被设为正限位和反限位</translation>
+    </message>
+    <message>
+        <source>Motor %1: only the positive limit is set (%2); nothing stops the motor at the negative end</source>
+        <translation>电机 %1：只设定了正限位（%2），反向一端没有限位能使电机停止</translation>
+    </message>
+    <message>
+        <source>Motor %1: only the negative limit is set (%2); nothing stops the motor at the positive end</source>
+        <translation>电机 %1：只设定了反限位（%2），正向一端没有限位能使电机停止</translation>
+    </message>
+    <message>
+        <source>Motor %1: no home input; homing runs in reverse until the negative limit or a stop and does not zero the position</source>
+        <translation>电机 %1：未设定原点信号；回机械零时电机一直反转，直到碰到反限位或收到停止命令，且不会将坐标清零</translation>
+    </message>
+    <message>
+        <source>Motor %1: the home input %2 is the positive limit, but homing runs in reverse, away from it; use the negative limit&apos;s input</source>
+        <translation>电机 %1：原点信号 %2 是正限位，但回机械零时电机反转，会远离该开关；请使用反限位的输入口</translation>
+    </message>
+    <message>
+        <source>Motor %1: the home input %2 is neither of its limits; usually the home input is the negative limit (%3)</source>
+        <translation>电机 %1：原点信号 %2 不是该电机的任一限位；一般情况下原点与反限位（%3）为同一个输入口</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>motor %1 %2</source>
+        <translation>电机 %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 is wired to more than one motor (%2): its switch acts on all of them</source>
+        <translation>%1 被分配给多个电机（%2）：该开关会同时作用于这些电机</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 is set as the %3, but system mode %4 (%5) ignores the limit settings</source>
+        <translation>电机 %1：%2 被设为%3，但系统模式 %4（%5）下限位设置无效</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 is set as the %3, but system mode %4 (%5) ignores the limit settings and uses %2 %6</source>
+        <translation>电机 %1：%2 被设为%3，但系统模式 %4（%5）下限位设置无效，此时 %2 %6</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WiringWarnings</name>
+    <message>
+        <source>The wiring is not known yet: connect and read the controller.</source>
+        <translation>尚不知道接线设置：请连接控制器并读取参数。</translation>
+    </message>
+    <message>
+        <source>No suspicious wiring found.</source>
+        <translation>未发现可疑的接线。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WriteChangesDialog</name>
+    <message>
+        <source>Write changes to the controller</source>
+        <translation>将更改写入控制器</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Register</source>
+        <translation>寄存器</translation>
+    </message>
+    <message>
+        <source>Controller holds</source>
+        <translation>控制器中的值</translation>
+    </message>
+    <message>
+        <source>New value</source>
+        <translation>新值</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s) will be written and then read back to verify. They stay in the controller&apos;s RAM until you save to flash.</source>
+        <translation>
+            <numerusform>将写入 %n 个参数，然后回读验证。在保存到闪存之前，这些参数只保存在控制器的 RAM 中。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Write</source>
+        <translation>写入(&amp;W)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::XYPlot</name>
+    <message>
+        <source>Cannot write the picture “%1”.</source>
+        <translation>无法写入图片“%1”。</translation>
     </message>
 </context>
 <context>
     <name>stepcomctl</name>
+    <message>
+        <source>What to do.</source>
+        <translation>要执行的命令。</translation>
+    </message>
     <message>
         <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
 
@@ -960,13 +3028,21 @@ Commands:
   read [KEY...]          read parameters (all when none are named)
   write KEY=VALUE...     write parameters in engineering units, then verify
   command NAME           pulse a command coil (e.g. motor1.stop, estop)
+  monitor                print the live status as one JSON object per line,
+                         until --count samples or Ctrl-C (--interval MS)
 
 Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>What to do.</source>
-        <translation type="unfinished"></translation>
+        <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。
+
+命令：
+  params                 列出寄存器映射中的所有参数和命令
+  read [参数名...]       读取参数（未指定参数名时读取全部）
+  write 参数名=值...     以工程单位写入参数，然后回读验证
+  command 命令名         触发一个命令线圈（例如 motor1.stop、estop）
+  monitor                以每行一个 JSON 对象的形式输出实时状态，
+                         直到采满 --count 次或按下 Ctrl-C（采样间隔用 --interval 指定，单位 ms）
+
+退出码：0 成功，1 通信或设备错误，2 用法或数值验证错误。</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,7 @@
 #include "language.h"
 
 #include <QCoreApplication>
+#include <QEvent>
 #include <QLibraryInfo>
 #include <QLocale>
 
@@ -39,6 +40,9 @@ bool Language::setLanguage(const QString &language)
         QCoreApplication::installTranslator(&m_qt);
     m_current = language;
     QLocale::setDefault(QLocale(language));
+    // Qt posts LanguageChange; deliver it now so the whole window speaks the new language
+    // as soon as this returns (and map texts, read from current(), agree with tr() texts).
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
     Q_EMIT changed(language);
     return loaded || language == QLatin1String("en");
 }

@@ -2,15 +2,19 @@
 
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
+#include "device/jogcontroller.h" // jogging (issue 5)
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "language.h"
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
 #include "pages/inputspage.h"
+#include "pages/motionpage.h" // jogging (issue 5)
 #include "pages/motorpage.h"
+#include "pages/plotpage.h" // monitoring (issue 5)
 #include "widgets/linkstatus.h"
 #include "widgets/messageview.h"
+#include "widgets/statusdock.h" // monitoring (issue 5)
 #include "widgets/trafficview.h"
 
 #include <QAction>
@@ -27,6 +31,7 @@
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QTimer>
 #include <QToolButton>
 
 namespace stepcom {
@@ -51,14 +56,21 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     addPage(new ConnectionPage(session, this));
     for (int n = 1; n <= session->map().blockCount(QStringLiteral("motor")); ++n)
         addPage(new MotorPage(session, n, this));
+    addPage(m_motion = new MotionPage(session, this)); // jogging (issue 5)
     addPage(new InputsPage(session, this));
     addPage(new DevicePage(session, this));
+    addPage(new PlotPage(session, this)); // monitoring (issue 5)
     m_sidebar->setCurrentRow(0);
 
     createActions();
     createMenus();
     createDocks();
     m_linkStatus = new LinkStatus(session, this);
+    // --- jogging (issue 5): a page change stops every jog; jog messages go to the dock ---
+    connect(m_sidebar, &QListWidget::currentRowChanged, m_motion->jog(),
+            [this] { m_motion->jog()->stopAll(tr("another page was chosen")); });
+    connect(m_motion->jog(), &JogController::message, m_messages, &MessageView::add);
+    // --- end jogging ---
     statusBar()->addPermanentWidget(m_linkStatus);
 
     connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
@@ -198,6 +210,11 @@ void MainWindow::createDocks()
     m_messageDock->raise();
     m_viewMenu->addAction(m_trafficDock->toggleViewAction());
     m_viewMenu->addAction(m_messageDock->toggleViewAction());
+    // --- monitoring (issue 5): the live status beside every page ---
+    m_statusDock = new StatusDock(m_session, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
+    m_viewMenu->addAction(m_statusDock->toggleViewAction());
+    // --- end monitoring ---
 }
 
 void MainWindow::retranslate()
@@ -242,6 +259,8 @@ void MainWindow::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange)
         retranslate();
+    if (event->type() == QEvent::ActivationChange && !isActiveWindow()) // jogging (issue 5)
+        m_motion->jog()->stopAll(tr("the window lost focus"));
     QMainWindow::changeEvent(event);
 }
 
@@ -291,6 +310,21 @@ void MainWindow::closeEvent(QCloseEvent *event)
         m_closeQuestion->open();
         return;
     }
+    // --- jogging (issue 5): stop what is held and let the stop reach the wire (at most 1 s) ---
+    if (!m_jogStopAwaited &&
+        (m_motion->jog()->stopAll(tr("the window closes")) > 0 || m_motion->jog()->isBusy())) {
+        m_jogStopAwaited = true;
+        event->ignore();
+        const auto closeAgain = [this] {
+            if (isVisible())
+                close();
+        };
+        connect(m_motion->jog(), &JogController::settled, this, closeAgain,
+                Qt::SingleShotConnection);
+        QTimer::singleShot(1000, this, closeAgain);
+        return;
+    }
+    // --- end jogging ---
     saveLayout();
     event->accept();
 }

@@ -17,7 +17,9 @@ class DeviceSession;
 class EmergencyStop;
 class LinkStatus;
 class MessageView;
+class MotionPage; // jogging (issue 5)
 class Page;
+class StatusDock; // monitoring (issue 5)
 class TrafficView;
 class WriteChangesDialog;
 
@@ -36,8 +38,10 @@ public:
     const QList<Page *> &pages() const { return m_pages; }
     Page *currentPage() const;
     void showPage(int index);
+    StatusDock *statusDock() const { return m_statusDock; } // monitoring (issue 5)
     TrafficView *trafficView() const { return m_traffic; }
     MessageView *messageView() const { return m_messages; }
+    MotionPage *motionPage() const { return m_motion; } // jogging (issue 5)
     // The dialogs a test (or a curious user) may want to reach while they are open.
     WriteChangesDialog *writeDialog() const;
     QMessageBox *closeQuestion() const;
@@ -70,7 +74,10 @@ private:
     MessageView *m_messages = nullptr;
     QDockWidget *m_trafficDock = nullptr;
     QDockWidget *m_messageDock = nullptr;
+    StatusDock *m_statusDock = nullptr; // monitoring (issue 5)
     LinkStatus *m_linkStatus = nullptr;
+    MotionPage *m_motion = nullptr; // jogging (issue 5)
+    bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once
     QPointer<WriteChangesDialog> m_writeDialog;
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;

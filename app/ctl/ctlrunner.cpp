@@ -1,5 +1,7 @@
 #include "ctlrunner.h"
 
+#include "ctlmonitor.h"
+
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "sim/simhost.h"
@@ -76,8 +78,10 @@ void CtlRunner::start()
         runWrite();
     else if (c == QLatin1String("command"))
         runCommand();
+    else if (c == QLatin1String("monitor"))
+        runMonitor();
     else
-        fail(UsageError, tr("unknown command '%1' (params, read, write, command)").arg(c));
+        fail(UsageError, tr("unknown command '%1' (params, read, write, command, monitor)").arg(c));
 }
 
 void CtlRunner::fail(int code, const QString &message)
@@ -374,6 +378,19 @@ void CtlRunner::runCommand()
             m_out << tr("%1: done").arg(p->key) << Qt::endl;
             finish(Ok);
         });
+    });
+}
+
+void CtlRunner::runMonitor()
+{
+    if (!m_options.arguments.isEmpty()) {
+        fail(UsageError, tr("monitor takes no arguments, only --count and --interval"));
+        return;
+    }
+    connectThen([this] {
+        auto *monitor = new CtlMonitor(m_device, m_options.count, m_options.intervalMs, this);
+        connect(monitor, &CtlMonitor::finished, this, &CtlRunner::finish);
+        monitor->start();
     });
 }
 

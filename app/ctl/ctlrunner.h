@@ -34,6 +34,7 @@ private:
     void runRead();
     void runWrite();
     void runCommand();
+    void runMonitor();
     void fail(int code, const QString &message);
     void finish(int code);
     QString valueText(const Parameter &p, qint64 raw) const;

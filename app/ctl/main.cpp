@@ -22,7 +22,9 @@ int main(int argc, char *argv[])
         "  params                 list every parameter and command of the register map\n"
         "  read [KEY...]          read parameters (all when none are named)\n"
         "  write KEY=VALUE...     write parameters in engineering units, then verify\n"
-        "  command NAME           pulse a command coil (e.g. motor1.stop, estop)\n\n"
+        "  command NAME           pulse a command coil (e.g. motor1.stop, estop)\n"
+        "  monitor                print the live status as one JSON object per line,\n"
+        "                         until --count samples or Ctrl-C (--interval MS)\n\n"
         "Exit codes: 0 success, 1 link or device error, 2 usage or validation error."));
     parser.addHelpOption();
     parser.addVersionOption();

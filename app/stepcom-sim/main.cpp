@@ -12,15 +12,6 @@
 
 using namespace stepcom;
 
-namespace {
-
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("stepcom-sim", text);
-}
-
-} // namespace
-
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
@@ -30,22 +21,25 @@ int main(int argc, char *argv[])
     QTextStream err(stderr);
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        tr("A simulated 2-axis stepper controller speaking Modbus RTU on a pseudo-terminal "
-           "and/or Modbus TCP. Without --pty or --tcp it serves a pseudo-terminal."));
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "stepcom-sim",
+        "A simulated 2-axis stepper controller speaking Modbus RTU on a pseudo-terminal "
+        "and/or Modbus TCP. Without --pty or --tcp it serves a pseudo-terminal."));
     parser.addHelpOption();
     parser.addVersionOption();
     SimCommandLine::addOptions(parser);
     const QCommandLineOption consoleOption(
         QStringLiteral("console"),
-        tr("Read console commands from standard input even when it is not a terminal."));
+        QCoreApplication::translate(
+            "stepcom-sim",
+            "Read console commands from standard input even when it is not a terminal."));
     parser.addOption(consoleOption);
     parser.process(app);
 
     SimOptions options;
     QString error;
     if (!SimCommandLine::toOptions(parser, &options, &error)) {
-        err << tr("stepcom-sim: %1").arg(error) << Qt::endl;
+        err << QCoreApplication::translate("stepcom-sim", "stepcom-sim: %1").arg(error) << Qt::endl;
         return 2;
     }
     if (!options.rtu && !options.tcp)
@@ -58,17 +52,19 @@ int main(int argc, char *argv[])
     SimHost host;
     QObject::connect(&host, &SimHost::message, &app,
                      [&err](const QString &text) { err << text << Qt::endl; });
-    QObject::connect(&host, &SimHost::hungUp, &app,
-                     [&out] { out << tr("port hung up") << Qt::endl; });
+    QObject::connect(&host, &SimHost::hungUp, &app, [&out] {
+        out << QCoreApplication::translate("stepcom-sim", "port hung up") << Qt::endl;
+    });
     QObject::connect(&host, &SimHost::reopened, &app, [&out](const QString &path) {
-        out << tr("port back: %1").arg(path) << Qt::endl;
+        out << QCoreApplication::translate("stepcom-sim", "port back: %1").arg(path) << Qt::endl;
     });
     if (!host.start(options, &error)) {
-        err << tr("stepcom-sim: %1").arg(error) << Qt::endl;
+        err << QCoreApplication::translate("stepcom-sim", "stepcom-sim: %1").arg(error) << Qt::endl;
         return 1;
     }
     SimDevice *device = host.device();
-    out << tr("stepcom-sim %1: device id %2, %3 baud, %4 motors")
+    out << QCoreApplication::translate("stepcom-sim",
+                                       "stepcom-sim %1: device id %2, %3 baud, %4 motors")
                .arg(QStringLiteral(STEPCOM_VERSION))
                .arg(device->deviceId())
                .arg(device->baud())
@@ -87,7 +83,8 @@ int main(int argc, char *argv[])
     ConsoleReader *reader = nullptr;
     if (parser.isSet(consoleOption) || ConsoleReader::stdinIsTerminal()) {
         reader = new ConsoleReader(&app);
-        out << tr("type 'help' for the console commands") << Qt::endl;
+        out << QCoreApplication::translate("stepcom-sim", "type 'help' for the console commands")
+            << Qt::endl;
         QObject::connect(reader, &ConsoleReader::lineRead, &app, [&](const QString &line) {
             const SimConsole::Result r = console.execute(line);
             if (!r.text.isEmpty())

@@ -15,11 +15,8 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     , m_store(new ParameterStore(map, this))
     , m_poller(new Poller(m_client, m_store, this))
 {
-    QStringList status;
-    for (const Parameter *p : m_client->map().inGroup(QStringLiteral("status")))
-        status << p->key;
-    m_poller->setKeys(status);
-    m_poller->setIntervalMs(100);
+    m_poller->useStatusKeys(); // the full status; positions and running while a motor runs
+    m_poller->setIntervalMs(Poller::intervalFromEnvironment(100));
     m_link->traffic()->setMap(&m_client->map());
     connect(m_link, &ModbusLink::opened, this, [this](bool ok, const QString &reason) {
         Q_EMIT connected(ok, reason);

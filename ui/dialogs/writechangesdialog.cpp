@@ -28,8 +28,10 @@ WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, QWidget *par
     for (int row = 0; row < m_writes.size(); ++row) {
         const Parameter &p = *m_writes.at(row).parameter;
         const std::optional<qint64> device = store.deviceValue(p.key);
-        auto *name = new QTableWidgetItem(p.label.text(lang));
-        name->setToolTip(p.key);
+        // The key tells motor 1's speed from motor 2's where the label alone cannot.
+        auto *name =
+            new QTableWidgetItem(QStringLiteral("%1  (%2)").arg(p.label.text(lang), p.key));
+        name->setToolTip(p.help.text(lang));
         m_table->setItem(row, 0, name);
         m_table->setItem(row, 1, new QTableWidgetItem(p.registerName()));
         m_table->setItem(

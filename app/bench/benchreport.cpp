@@ -1,0 +1,204 @@
+#include "benchreport.h"
+
+#include <QDateTime>
+#include <QFile>
+#include <QSaveFile>
+#include <QSysInfo>
+#include <QThread>
+
+namespace stepcom::bench {
+
+namespace {
+
+constexpr double kCycleTarget = 1.10;
+constexpr double kCpuTargetPercent = 3.0;
+constexpr double kRssTargetMb = 150.0;
+
+QString ms(double v)
+{
+    return QString::number(v, 'f', 1);
+}
+
+QString spanText(const Span &s, const QString &what)
+{
+    return QStringLiteral("mean %1 ms (min %2, max %3; %4 %5)")
+        .arg(ms(s.mean), ms(s.min), ms(s.max))
+        .arg(s.count)
+        .arg(what);
+}
+
+Verdict::Result judge(bool pass)
+{
+    return pass ? Verdict::Result::Pass : Verdict::Result::Fail;
+}
+
+void addWindow(QList<Verdict> &rows, const QString &baud, const WindowResult &w, bool info)
+{
+    const QString suffix =
+        info ? QStringLiteral(" (built-in simulator, for information)") : QString();
+    if (!w.measured && w.note.isEmpty())
+        return; // not asked for (--no-window)
+    if (!w.measured) {
+        rows.append({baud, QStringLiteral("(d) window") + suffix, w.note, QString(), QString(),
+                     Verdict::Result::Error});
+        return;
+    }
+    QString measured = QStringLiteral("%1 % of one core over %2 s")
+                           .arg(QString::number(w.cpuPercent, 'f', 2))
+                           .arg(QString::number(w.seconds, 'f', 1));
+    if (w.pollsPerSec > 0)
+        measured += QStringLiteral(" (%1 requests/s)").arg(QString::number(w.pollsPerSec, 'f', 1));
+    rows.append({baud, QStringLiteral("(d) window CPU") + suffix, measured,
+                 QStringLiteral("< 3 % of one core"),
+                 QString::number(w.cpuPercent / kCpuTargetPercent, 'f', 2),
+                 info ? Verdict::Result::Info : judge(w.cpuPercent < kCpuTargetPercent)});
+    rows.append({baud, QStringLiteral("(d) window peak memory") + suffix,
+                 QStringLiteral("VmHWM %1 MB").arg(QString::number(w.peakRssMb, 'f', 1)),
+                 QStringLiteral("< 150 MB"), QString::number(w.peakRssMb / kRssTargetMb, 'f', 2),
+                 info ? Verdict::Result::Info : judge(w.peakRssMb < kRssTargetMb)});
+}
+
+} // namespace
+
+QList<Verdict> verdicts(const BaudResult &r)
+{
+    QList<Verdict> rows;
+    const QString baud = QString::number(r.baud);
+    if (!r.error.isEmpty()) {
+        rows.append({baud, QStringLiteral("measurement"), r.error, QString(), QString(),
+                     Verdict::Result::Error});
+        return rows;
+    }
+    const double cycleRatio = r.cycleMs.mean / r.statusOptimumMs;
+    rows.append({baud, QStringLiteral("(a) live status cycle at full rate"),
+                 spanText(r.cycleMs, QStringLiteral("cycles")) +
+                     QStringLiteral(", %1 reads").arg(r.readsPerCycle, 0, 'f', 0),
+                 QStringLiteral("optimum %1 ms, %2 reads; within 1.10×")
+                     .arg(ms(r.statusOptimumMs))
+                     .arg(r.statusOptimumReads),
+                 QStringLiteral("%1×").arg(QString::number(cycleRatio, 'f', 3)),
+                 judge(cycleRatio <= kCycleTarget && int(r.readsPerCycle) == r.statusOptimumReads &&
+                       r.fastCycles == 0)});
+    const double allRatio = r.readAllMs.mean / r.readAllOptimumMs;
+    rows.append({baud, QStringLiteral("(b) read-all"),
+                 spanText(r.readAllMs, QStringLiteral("runs")) +
+                     QStringLiteral(", %1 reads").arg(r.readAllReads),
+                 QStringLiteral("optimum %1 ms, %2 reads; within 1.10×, same reads")
+                     .arg(ms(r.readAllOptimumMs))
+                     .arg(r.readAllOptimumReads),
+                 QStringLiteral("%1×").arg(QString::number(allRatio, 'f', 3)),
+                 judge(allRatio <= kCycleTarget && r.readAllReads == r.readAllOptimumReads)});
+    rows.append({baud, QStringLiteral("(c) E-STOP dispatched, polling at full rate"),
+                 QStringLiteral("mean %1 ms, max %2 ms after the request (%3 stops); "
+                                "next on the wire every time: %4")
+                     .arg(ms(r.estopDispatchMs.mean), ms(r.estopDispatchMs.max))
+                     .arg(r.estopDispatchMs.count)
+                     .arg(r.estopAlwaysNext ? QStringLiteral("yes") : QStringLiteral("NO")),
+                 QStringLiteral("≤ the longest poll transaction, %1 ms").arg(ms(r.longestPollMs)),
+                 QString::number(r.estopDispatchMs.max / r.longestPollMs, 'f', 2),
+                 judge(r.estopAlwaysNext && r.estopDispatchMs.max <= r.longestPollMs)});
+    const double stopBound = r.longestPollMs + r.estopFrameMs;
+    rows.append({baud, QStringLiteral("(c) simulator stopped"),
+                 QStringLiteral("mean %1 ms, max %2 ms after the request")
+                     .arg(ms(r.estopStoppedMs.mean), ms(r.estopStoppedMs.max)),
+                 QStringLiteral("≤ %1 ms + its own request frame %2 ms")
+                     .arg(ms(r.longestPollMs), ms(r.estopFrameMs)),
+                 QString::number(r.estopStoppedMs.max / stopBound, 'f', 2),
+                 judge(r.estopStoppedMs.max <= stopBound)});
+    addWindow(rows, baud, r.window, false);
+    return rows;
+}
+
+QList<Verdict> builtinWindowVerdicts(const WindowResult &w)
+{
+    QList<Verdict> rows;
+    addWindow(rows, QStringLiteral("--sim"), w, true);
+    return rows;
+}
+
+QString table(const QList<Verdict> &rows, bool judged)
+{
+    QString out = QStringLiteral("| baud | target | measured | model / bound | ratio | result |\n"
+                                 "|---|---|---|---|---|---|\n");
+    for (const Verdict &v : rows) {
+        QString result;
+        switch (v.result) {
+        case Verdict::Result::Pass:
+            result = QStringLiteral("PASS");
+            break;
+        case Verdict::Result::Fail:
+            result = QStringLiteral("FAIL");
+            break;
+        case Verdict::Result::Info:
+            result = QStringLiteral("info");
+            break;
+        case Verdict::Result::Error:
+            result = QStringLiteral("ERROR");
+            break;
+        }
+        if (!judged && (v.result == Verdict::Result::Pass || v.result == Verdict::Result::Fail))
+            result += QStringLiteral(" (not judged)");
+        out += QStringLiteral("| %1 | %2 | %3 | %4 | %5 | %6 |\n")
+                   .arg(v.baud, v.target, v.measured, v.bound, v.ratio, result);
+    }
+    return out;
+}
+
+QString machineLine()
+{
+    QString cpu;
+    QFile info(QStringLiteral("/proc/cpuinfo"));
+    if (info.open(QIODevice::ReadOnly)) {
+        for (const QByteArray &line : info.readAll().split('\n')) {
+            if (line.startsWith("model name")) {
+                cpu = QString::fromUtf8(line.mid(line.indexOf(':') + 1).trimmed());
+                break;
+            }
+        }
+    }
+    // Other work on the machine shows up in every number: say how busy it was.
+    QString load;
+    QFile loadavg(QStringLiteral("/proc/loadavg"));
+    if (loadavg.open(QIODevice::ReadOnly))
+        load = QString::fromLatin1(loadavg.readAll().split(' ').value(0));
+    return QStringLiteral("Measured %1 on %2, %3 logical CPU(s), load average %4 at the end, "
+                          "%5, Qt %6.")
+        .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")),
+             cpu.isEmpty() ? QSysInfo::currentCpuArchitecture() : cpu)
+        .arg(QThread::idealThreadCount())
+        .arg(load.isEmpty() ? QStringLiteral("unknown") : load, QSysInfo::prettyProductName(),
+             QString::fromLatin1(qVersion()));
+}
+
+bool replaceResults(const QString &path, const QString &block, QString *error)
+{
+    const QByteArray begin = "<!-- bench:begin -->";
+    const QByteArray end = "<!-- bench:end -->";
+    QFile in(path);
+    if (!in.open(QIODevice::ReadOnly)) {
+        *error = in.errorString();
+        return false;
+    }
+    const QByteArray text = in.readAll();
+    in.close();
+    const qsizetype from = text.indexOf(begin);
+    const qsizetype to = text.indexOf(end);
+    if (from < 0 || to < from) {
+        *error = QStringLiteral("%1 has no %2 ... %3 block")
+                     .arg(path, QString::fromLatin1(begin), QString::fromLatin1(end));
+        return false;
+    }
+    QSaveFile out(path);
+    if (!out.open(QIODevice::WriteOnly)) {
+        *error = out.errorString();
+        return false;
+    }
+    out.write(text.left(from + begin.size()) + '\n' + block.toUtf8() + text.mid(to));
+    if (!out.commit()) {
+        *error = out.errorString();
+        return false;
+    }
+    return true;
+}
+
+} // namespace stepcom::bench

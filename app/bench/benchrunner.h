@@ -1,0 +1,17 @@
+#pragma once
+
+#include "benchtypes.h"
+
+#include <functional>
+
+namespace stepcom::bench {
+
+// Runs until `done` holds or `timeoutMs` passed, serving events meanwhile. The benchmark is a
+// script told top to bottom, not product code: a local event loop keeps it readable.
+bool waitUntil(const std::function<bool()> &done, int timeoutMs);
+
+// Measures (a) to (d) against a simulator with the wire-time model at `baud`, over real
+// Modbus RTU on a pseudo-terminal, with StepCom's own DeviceSession and Poller.
+BaudResult measureBaud(int baud, const BenchConfig &config);
+
+} // namespace stepcom::bench

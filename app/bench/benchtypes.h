@@ -1,0 +1,74 @@
+#pragma once
+
+#include <QString>
+
+#include <algorithm>
+
+namespace stepcom::bench {
+
+// How long to measure; --smoke makes every phase short and skips the verdicts.
+struct BenchConfig
+{
+    int cycles = 50;        // (a) status cycles measured
+    int readAlls = 5;       // (b) read-alls measured
+    int estopRounds = 8;    // (c) emergency stops
+    int windowSeconds = 10; // (d) CPU is averaged over this long
+    bool smoke = false;
+    QString stepcomPath; // the window binary for (d); empty: (d) skipped
+};
+
+struct Span
+{
+    double mean = 0;
+    double min = 0;
+    double max = 0;
+    int count = 0;
+    void add(double v)
+    {
+        min = count == 0 ? v : std::min(min, v);
+        max = count == 0 ? v : std::max(max, v);
+        mean = (mean * count + v) / (count + 1);
+        ++count;
+    }
+};
+
+struct WindowResult
+{
+    bool measured = false;
+    QString note;           // why not measured, or what was measured
+    double cpuPercent = 0;  // of one core, averaged over the measurement
+    double peakRssMb = 0;   // VmHWM
+    double pollsPerSec = 0; // requests the simulator answered, per second
+    double seconds = 0;
+};
+
+struct BaudResult
+{
+    int baud = 0;
+    QString error; // the measurement itself failed
+
+    // (a) live status cycle at full rate
+    double statusOptimumMs = 0;
+    int statusOptimumReads = 0;
+    Span cycleMs;
+    double readsPerCycle = 0;
+    int fastCycles = 0;
+
+    // (b) read-all
+    double readAllOptimumMs = 0;
+    int readAllOptimumReads = 0;
+    Span readAllMs;
+    int readAllReads = 0; // requests on the wire per read-all (the most seen)
+
+    // (c) emergency stop while polling at full rate
+    double longestPollMs = 0; // the longest single poll transaction seen, dispatch to answer
+    Span estopDispatchMs;     // request -> on its way to the wire
+    Span estopStoppedMs;      // request -> the simulator's motor stopped
+    bool estopAlwaysNext = true;
+    double estopFrameMs = 0; // the E-STOP request's own time on the wire (8 + 3.5 characters)
+
+    // (d) the window at full rate
+    WindowResult window;
+};
+
+} // namespace stepcom::bench

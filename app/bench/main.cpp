@@ -1,0 +1,103 @@
+// stepcom-bench: the numbers of docs/performance.md, measured over real Modbus RTU against the
+// simulator's wire-time model. `scripts/bench.sh` builds and runs it and updates the document.
+#include "benchreport.h"
+#include "benchrunner.h"
+#include "windowprobe.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
+#include <QTextStream>
+
+using namespace stepcom;
+using namespace stepcom::bench;
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("stepcom-bench"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(STEPCOM_VERSION));
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Measures StepCom against the simulator's wire-time model at 9600, 19200 and 38400 "
+        "baud: (a) the live status cycle, (b) read-all, (c) the emergency stop while polling at "
+        "full rate, (d) the window's CPU and memory while polling at full rate. Prints a table "
+        "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    parser.addOptions({
+        {QStringLiteral("smoke"),
+         QStringLiteral("One short round at 38400 baud; prints the table, judges nothing.")},
+        {QStringLiteral("baud"), QStringLiteral("Measure only at this baud (repeatable)."),
+         QStringLiteral("rate")},
+        {QStringLiteral("cycles"), QStringLiteral("(a) status cycles to measure (default 50)."),
+         QStringLiteral("n"), QStringLiteral("50")},
+        {QStringLiteral("window-seconds"),
+         QStringLiteral("(d) seconds to average the window's CPU over (default 10)."),
+         QStringLiteral("s"), QStringLiteral("10")},
+        {QStringLiteral("stepcom"),
+         QStringLiteral("The window binary for (d) (default: next to this program)."),
+         QStringLiteral("path")},
+        {QStringLiteral("no-window"), QStringLiteral("Skip (d).")},
+        {QStringLiteral("update-doc"),
+         QStringLiteral("Write the table between the bench markers of this Markdown file."),
+         QStringLiteral("file")},
+    });
+    parser.process(app);
+
+    BenchConfig config;
+    config.smoke = parser.isSet(QStringLiteral("smoke"));
+    config.cycles = std::max(2, parser.value(QStringLiteral("cycles")).toInt());
+    config.windowSeconds = std::max(1, parser.value(QStringLiteral("window-seconds")).toInt());
+    QList<int> bauds{9600, 19200, 38400};
+    if (config.smoke) {
+        bauds = {38400};
+        config.cycles = 5;
+        config.readAlls = 1;
+        config.estopRounds = 2;
+        config.windowSeconds = 2;
+    }
+    if (parser.isSet(QStringLiteral("baud"))) {
+        bauds.clear();
+        for (const QString &b : parser.values(QStringLiteral("baud")))
+            bauds << b.toInt();
+    }
+    if (!parser.isSet(QStringLiteral("no-window"))) {
+        config.stepcomPath =
+            parser.isSet(QStringLiteral("stepcom"))
+                ? parser.value(QStringLiteral("stepcom"))
+                : QDir(QCoreApplication::applicationDirPath()).filePath(QStringLiteral("stepcom"));
+    }
+
+    QList<Verdict> rows;
+    for (const int baud : std::as_const(bauds)) {
+        err << QStringLiteral("stepcom-bench: measuring at %1 baud ...").arg(baud) << Qt::endl;
+        rows += verdicts(measureBaud(baud, config));
+    }
+    if (!config.smoke && !config.stepcomPath.isEmpty()) {
+        err << QStringLiteral("stepcom-bench: the window with its built-in simulator ...")
+            << Qt::endl;
+        rows += builtinWindowVerdicts(measureWindow(config, nullptr, 0));
+    }
+
+    const QString result =
+        table(rows, !config.smoke) + QLatin1Char('\n') + machineLine() + QLatin1Char('\n');
+    out << result << Qt::flush;
+    if (parser.isSet(QStringLiteral("update-doc"))) {
+        QString error;
+        if (!replaceResults(parser.value(QStringLiteral("update-doc")), result, &error)) {
+            err << QStringLiteral("stepcom-bench: %1").arg(error) << Qt::endl;
+            return 2;
+        }
+    }
+    const bool failed = std::any_of(rows.cbegin(), rows.cend(), [&](const Verdict &v) {
+        // a smoke run fails only when something could not be measured at all
+        return v.result == Verdict::Result::Error ||
+               (!config.smoke && v.result == Verdict::Result::Fail);
+    });
+    return failed ? 1 : 0;
+}

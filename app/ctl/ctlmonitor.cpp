@@ -1,0 +1,117 @@
+#include "ctlmonitor.h"
+
+#include "bus/modbuslink.h"
+#include "device/deviceclient.h"
+#include "device/parameterstore.h"
+#include "poll/poller.h"
+#include "signalwatcher.h"
+
+#include <QDateTime>
+
+#include <cstdio>
+
+namespace stepcom {
+
+namespace {
+
+int rank(const Parameter *p)
+{
+    if (p->key.endsWith(QLatin1String(".position")))
+        return 0;
+    if (p->key.endsWith(QLatin1String(".running")))
+        return 1;
+    return 2;
+}
+
+// JSON string escaping for keys: map keys are plain ASCII, but a custom map may say otherwise.
+QString quoted(const QString &text)
+{
+    QString out = QStringLiteral("\"");
+    for (const QChar c : text) {
+        if (c == QLatin1Char('"') || c == QLatin1Char('\\'))
+            out += QLatin1Char('\\') + c;
+        else if (c.unicode() < 0x20)
+            out += QStringLiteral("\\u%1").arg(int(c.unicode()), 4, 16, QLatin1Char('0'));
+        else
+            out += c;
+    }
+    return out + QLatin1Char('"');
+}
+
+} // namespace
+
+CtlMonitor::CtlMonitor(DeviceClient *device, int count, int intervalMs, QObject *parent)
+    : QObject(parent)
+    , m_device(device)
+    , m_store(new ParameterStore(device->map(), this))
+    , m_poller(new Poller(device, m_store, this))
+    , m_count(count)
+    , m_out(stdout)
+    , m_err(stderr)
+{
+    m_poller->useStatusKeys();
+    m_poller->setIntervalMs(intervalMs);
+    for (const QString &key : Poller::statusKeys(device->map())) {
+        if (const Parameter *p = device->map().find(key))
+            m_params << p;
+    }
+    std::stable_sort(m_params.begin(), m_params.end(),
+                     [](const Parameter *a, const Parameter *b) { return rank(a) < rank(b); });
+    connect(m_poller, &Poller::cycleFinished, this, [this](bool ok, qint64) { onCycle(ok); });
+    connect(m_device->link(), &ModbusLink::lost, this, [this](const QString &reason) {
+        m_err << QStringLiteral("stepcomctl: ") << tr("link lost: %1").arg(reason) << Qt::endl;
+        end(1);
+    });
+}
+
+void CtlMonitor::start()
+{
+    // Ctrl-C and SIGTERM end the run between two lines, never in the middle of one.
+    m_signals = new SignalWatcher(this);
+    connect(m_signals, &SignalWatcher::terminationRequested, this, [this] { end(0); });
+    m_clock.start();
+    m_poller->start();
+}
+
+QString CtlMonitor::sampleLine(qint64 tMs) const
+{
+    QDateTime now = QDateTime::currentDateTime();
+    now = now.toOffsetFromUtc(now.offsetFromUtc()); // so the text carries the offset
+    QString line = QStringLiteral("{\"time\":\"%1\",\"t_ms\":%2")
+                       .arg(now.toString(Qt::ISODateWithMs))
+                       .arg(tMs);
+    for (const Parameter *p : m_params) {
+        const std::optional<qint64> raw = m_store->deviceValue(p->key);
+        line += QLatin1Char(',') + quoted(p->key) + QLatin1Char(':') +
+                (raw ? p->formatRaw(*raw) : QStringLiteral("null"));
+    }
+    return line + QLatin1Char('}');
+}
+
+void CtlMonitor::onCycle(bool ok)
+{
+    if (m_ended)
+        return;
+    if (!ok) {
+        // A bad moment on the line is no reason to stop watching: say so and go on.
+        m_err << QStringLiteral("stepcomctl: ") << m_poller->lastError() << Qt::endl;
+        return;
+    }
+    m_out << sampleLine(m_clock.elapsed()) << QLatin1Char('\n');
+    m_out.flush();
+    std::fflush(stdout);
+    if (m_count > 0 && ++m_printed >= m_count)
+        end(0);
+}
+
+void CtlMonitor::end(int exitCode)
+{
+    if (m_ended)
+        return;
+    m_ended = true;
+    m_poller->stop();
+    m_out.flush();
+    Q_EMIT finished(exitCode);
+}
+
+} // namespace stepcom

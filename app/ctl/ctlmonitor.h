@@ -1,0 +1,50 @@
+#pragma once
+
+#include <QElapsedTimer>
+#include <QList>
+#include <QObject>
+#include <QTextStream>
+
+namespace stepcom {
+
+class DeviceClient;
+class ParameterStore;
+class Poller;
+class SignalWatcher;
+struct Parameter;
+
+// `stepcomctl monitor`: polls the live status with the window's poller and prints one compact
+// JSON object per cycle -- {"time", "t_ms", then every status value in engineering units by map
+// key} -- flushed line by line, until --count samples or SIGINT/SIGTERM.
+class CtlMonitor : public QObject
+{
+    Q_OBJECT
+public:
+    // count < 1: until stopped; intervalMs 0: as fast as the link allows.
+    CtlMonitor(DeviceClient *device, int count, int intervalMs, QObject *parent = nullptr);
+    void start();
+    // One line for the values known now (null for what was never read).
+    QString sampleLine(qint64 tMs) const;
+
+Q_SIGNALS:
+    // 0 after --count samples or a signal, 1 when the link was lost.
+    void finished(int exitCode);
+
+private:
+    void onCycle(bool ok);
+    void end(int exitCode);
+
+    DeviceClient *m_device;
+    ParameterStore *m_store;
+    Poller *m_poller;
+    SignalWatcher *m_signals = nullptr;
+    QList<const Parameter *> m_params; // positions, running flags, then the rest of the status
+    int m_count;
+    int m_printed = 0;
+    bool m_ended = false;
+    QElapsedTimer m_clock;
+    QTextStream m_out;
+    QTextStream m_err;
+};
+
+} // namespace stepcom

@@ -1,0 +1,188 @@
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+#include "testpaths.h"
+
+#include <QDateTime>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTest>
+
+using namespace stepcom;
+using namespace stepcom::test;
+
+namespace {
+
+const QStringList kStatusKeys{
+    "motor1.position", "motor2.position", "motor1.running", "motor2.running", "io.in1", "io.in2",
+    "io.in3",          "io.in4",          "io.out1",        "io.out2",        "io.out3"};
+
+struct Run
+{
+    int exitCode = -1;
+    QList<QJsonObject> lines;
+    QStringList raw;
+    QString err;
+};
+
+} // namespace
+
+class TestMonitor : public QObject
+{
+    Q_OBJECT
+
+    // Runs stepcomctl without blocking the event loop; stops it with SIGTERM after
+    // `terminateAfter` lines when that is > 0.
+    Run ctl(const QStringList &args, int terminateAfter = 0)
+    {
+        QProcess p;
+        p.start(programPath(QStringLiteral("stepcomctl")), args);
+        if (!p.waitForStarted(5000))
+            return {};
+        Run r;
+        QByteArray out;
+        bool terminated = false;
+        for (int i = 0; i < 1500 && p.state() != QProcess::NotRunning; ++i) {
+            QTest::qWait(10);
+            out += p.readAllStandardOutput();
+            if (terminateAfter > 0 && !terminated && out.count('\n') >= terminateAfter) {
+                p.terminate();
+                terminated = true;
+            }
+        }
+        if (p.state() != QProcess::NotRunning) {
+            p.kill();
+            p.waitForFinished(1000);
+            return r;
+        }
+        out += p.readAllStandardOutput();
+        r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+        r.err = QString::fromUtf8(p.readAllStandardError());
+        for (const QByteArray &line : out.split('\n')) {
+            if (line.isEmpty())
+                continue;
+            r.raw << QString::fromUtf8(line);
+            r.lines << QJsonDocument::fromJson(line).object();
+        }
+        return r;
+    }
+
+    static void checkLines(const Run &r)
+    {
+        qint64 lastT = -1;
+        for (int i = 0; i < r.lines.size(); ++i) {
+            const QJsonObject &o = r.lines.at(i);
+            QVERIFY2(!o.isEmpty(), qPrintable(r.raw.at(i))); // valid JSON, an object
+            QVERIFY2(!r.raw.at(i).contains(QLatin1Char(' ')), "compact, one line");
+            QStringList keys = o.keys();
+            keys.sort();
+            QStringList expected = kStatusKeys + QStringList{"time", "t_ms"};
+            expected.sort();
+            QCOMPARE(keys, expected);
+            const QDateTime time =
+                QDateTime::fromString(o.value("time").toString(), Qt::ISODateWithMs);
+            QVERIFY2(time.isValid(), qPrintable(o.value("time").toString()));
+            QVERIFY(o.value("time").toString().contains(QLatin1Char('.'))); // milliseconds
+            QVERIFY(qAbs(time.secsTo(QDateTime::currentDateTime())) < 60);
+            const qint64 t = qint64(o.value("t_ms").toDouble());
+            QVERIFY2(t > lastT, qPrintable(r.raw.at(i)));
+            lastT = t;
+            for (const QString &key : kStatusKeys)
+                QVERIFY2(o.value(key).isDouble(), qPrintable(key)); // numbers, not text
+        }
+    }
+
+private Q_SLOTS:
+    void fiveSamplesFromTheBuiltInSimulator()
+    {
+        const Run r = ctl({"--sim", "monitor", "--count", "5"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(r.lines.size(), 5);
+        checkLines(r);
+        // the simulator's carriages stand at their start, in engineering units
+        QCOMPARE(r.lines.first().value("motor1.running").toInt(), 0);
+        QCOMPARE(r.lines.first().value("io.out1").toInt(), 0);
+    }
+
+    void positionsFollowAMovingMotor_data()
+    {
+        QTest::addColumn<bool>("tcp");
+        QTest::newRow("rtu") << false;
+        QTest::newRow("tcp") << true;
+    }
+    void positionsFollowAMovingMotor()
+    {
+        QFETCH(bool, tcp);
+        SimHost host;
+        SimOptions options;
+        options.rtu = !tcp;
+        options.tcp = tcp;
+        QString error;
+        QVERIFY2(host.start(options, &error), qPrintable(error));
+        QVERIFY(host.device()->command(QStringLiteral("motor1.forward")));
+        QVERIFY(host.device()->running(1));
+        const QStringList target =
+            tcp ? QStringList{"--tcp", QStringLiteral("127.0.0.1:%1").arg(host.tcpPort())}
+                : QStringList{"--port", host.rtuPath()};
+        const Run r = ctl(target + QStringList{"monitor", "--count", "6"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(r.lines.size(), 6);
+        checkLines(r);
+        double last = -1e9;
+        for (const QJsonObject &o : r.lines) {
+            QCOMPARE(o.value("motor1.running").toInt(), 1);
+            const double position = o.value("motor1.position").toDouble();
+            QVERIFY2(position > last, qPrintable(QString::number(position)));
+            last = position;
+            QCOMPARE(o.value("motor2.running").toInt(), 0);
+        }
+        QVERIFY(host.device()->command(QStringLiteral("motor1.stop")));
+    }
+
+    void intervalSpacesTheSamples()
+    {
+        const Run r = ctl({"--sim", "monitor", "--count", "3", "--interval", "300"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(r.lines.size(), 3);
+        checkLines(r);
+        for (int i = 1; i < r.lines.size(); ++i) {
+            const double gap =
+                r.lines.at(i).value("t_ms").toDouble() - r.lines.at(i - 1).value("t_ms").toDouble();
+            QVERIFY2(gap >= 250, qPrintable(QString::number(gap)));
+        }
+    }
+
+    void sigtermEndsCleanlyAfterAWholeLine()
+    {
+        const Run r = ctl({"--sim", "monitor"}, 2);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(r.lines.size() >= 2);
+        checkLines(r);
+    }
+
+    void usageErrors_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("argument") << QStringList{"--sim", "monitor", "motor1.position"};
+        QTest::newRow("count 0") << QStringList{"--sim", "monitor", "--count", "0"};
+        QTest::newRow("negative interval") << QStringList{"--sim", "monitor", "--interval", "-1"};
+    }
+    void usageErrors()
+    {
+        QFETCH(QStringList, args);
+        const Run r = ctl(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.lines.isEmpty());
+    }
+
+    void helpListsMonitor()
+    {
+        QProcess p;
+        p.start(programPath(QStringLiteral("stepcomctl")), {"--help"});
+        QVERIFY(p.waitForFinished(5000));
+        QVERIFY(QString::fromUtf8(p.readAllStandardOutput()).contains("monitor"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMonitor)
+#include "tst_monitor.moc"

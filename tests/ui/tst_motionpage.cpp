@@ -1,0 +1,390 @@
+#include "device/devicesession.h"
+#include "device/jogcontroller.h"
+#include "language.h"
+#include "mainwindow.h"
+#include "pages/motionpage.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+#include "widgets/homingordereditor.h"
+#include "widgets/jogbutton.h"
+#include "widgets/jogpanel.h"
+#include "widgets/led.h"
+#include "widgets/messageview.h"
+#include "widgets/parameterfield.h"
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTest>
+
+#include <memory>
+
+using namespace stepcom;
+using State = JogController::State;
+
+// The "Jog and home" page against the built-in simulator, offscreen.
+class TestMotionPage : public QObject
+{
+    Q_OBJECT
+    std::unique_ptr<DeviceSession> session;
+
+    SimDevice *sim() const { return session->simulator()->device(); }
+    qint64 simValue(const char *key) const { return sim()->value(QLatin1String(key)).value_or(-1); }
+    void connectSim()
+    {
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->connectSimulator();
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
+        QVERIFY(read.at(0).at(0).toBool());
+    }
+    static void showActive(QWidget *w)
+    {
+        w->resize(1100, 800);
+        w->show();
+        w->activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(w));
+    }
+    static void sendKey(QWidget *to, QEvent::Type type, int key, bool autoRepeat = false)
+    {
+        QKeyEvent e(type, key, Qt::NoModifier, QString(), autoRepeat);
+        QApplication::sendEvent(to, &e);
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QApplication::setOrganizationName(QStringLiteral("StepComTest"));
+        Language::instance().setLanguage(QStringLiteral("en"));
+    }
+    void init() { session = std::make_unique<DeviceSession>(); }
+    void cleanup() { session.reset(); }
+
+    void holdingTheButtonMovesAndLettingGoStops()
+    {
+        MotionPage page(session.get());
+        QCOMPARE(page.title(), QStringLiteral("Jog and home"));
+        QCOMPARE(page.motorCount(), 2);
+        page.jog()->setSettleMs(100);
+        JogPanel *p = page.panel(1);
+        QVERIFY(!p->forwardButton()->isEnabled()); // not connected
+        showActive(&page);
+        connectSim();
+        QTRY_VERIFY(p->forwardButton()->isEnabled());
+        QCOMPARE(p->runningLed()->state(), Led::State::Off);
+        QCOMPARE(p->positionText(), QStringLiteral("0.00 mm"));
+
+        QTest::mousePress(p->forwardButton(), Qt::LeftButton);
+        QTRY_VERIFY(sim()->running(1));
+        QTRY_COMPARE(p->runningLed()->state(), Led::State::On);
+        QCOMPARE(p->statusText(), QStringLiteral("Jogging forward"));
+        QTRY_VERIFY(p->positionText() != QStringLiteral("0.00 mm"));
+        QTest::mouseRelease(p->forwardButton(), Qt::LeftButton);
+        QTRY_VERIFY(!sim()->running(1));
+        QTRY_COMPARE(page.jog()->state(1), State::Idle);
+        QTRY_COMPARE(p->runningLed()->state(), Led::State::Off);
+
+        // Sliding off the button stops; sliding back does not restart.
+        QTest::mousePress(p->reverseButton(), Qt::LeftButton);
+        QTRY_VERIFY(sim()->running(1));
+        QTest::mouseMove(p->reverseButton(), QPoint(-30, -30));
+        QTRY_VERIFY(!sim()->running(1));
+        QTest::mouseMove(p->reverseButton(), p->reverseButton()->rect().center());
+        QTest::qWait(200);
+        QVERIFY(!sim()->running(1));
+        QTest::mouseRelease(p->reverseButton(), Qt::LeftButton);
+        QVERIFY(!page.bannerShown());
+
+        // The stop button stops whatever moves, at once.
+        QVERIFY(sim()->command(QStringLiteral("motor2.forward")));
+        QTest::mouseClick(page.panel(2)->stopButton(), Qt::LeftButton);
+        QTRY_VERIFY(!sim()->running(2));
+    }
+
+    void deactivationAndPageChangeStopAJog()
+    {
+        MainWindow window(session.get());
+        showActive(&window);
+        connectSim();
+        MotionPage *page = window.motionPage();
+        QVERIFY(page);
+        page->jog()->setSettleMs(100);
+        window.showPage(int(window.pages().indexOf(page)));
+        QCOMPARE(window.currentPage(), page);
+        JogButton *forward = page->panel(1)->forwardButton();
+
+        QTest::mousePress(forward, Qt::LeftButton);
+        QTRY_VERIFY(sim()->running(1));
+        QWidget other;
+        showActive(&other); // another window takes the focus
+        QTRY_VERIFY(!sim()->running(1));
+        QVERIFY(!forward->isHeld());
+        QTRY_COMPARE(page->jog()->state(1), State::Idle);
+
+        showActive(&window);
+        QTest::mousePress(forward, Qt::LeftButton);
+        QTRY_VERIFY(sim()->running(1));
+        window.showPage(0);
+        QTRY_VERIFY(!sim()->running(1));
+        QTRY_COMPARE(page->jog()->state(1), State::Idle);
+        QVERIFY(window.messageView()
+                    ->texts()
+                    .join(QLatin1Char('\n'))
+                    .contains(QLatin1String("Motor 1 stopped")));
+
+        // Closing the window with a jog held: the stop goes out before it goes away.
+        window.showPage(int(window.pages().indexOf(page)));
+        QTest::mousePress(page->panel(2)->reverseButton(), Qt::LeftButton);
+        QTRY_VERIFY(sim()->running(2));
+        window.close();
+        QTRY_VERIFY(!window.isVisible());
+        QVERIFY(!sim()->running(2));
+    }
+
+    void keyboardJoggingIsOptInAndStopsOnRelease()
+    {
+        MotionPage page(session.get());
+        page.jog()->setSettleMs(100);
+        showActive(&page);
+        connectSim();
+        QVERIFY(!page.keyboardCheck()->isChecked());
+        QVERIFY(page.keyboardIndicator()->isHidden());
+        QTest::keyPress(&page, Qt::Key_Right);
+        QTest::qWait(300);
+        QVERIFY(!sim()->running(1)); // off by default: keys do nothing
+        QTest::keyRelease(&page, Qt::Key_Right);
+
+        page.keyboardCheck()->click();
+        QVERIFY(page.jog()->keyboardEnabled());
+        QVERIFY(!page.keyboardIndicator()->isHidden());
+        QTest::keyPress(&page, Qt::Key_Right);
+        QTRY_VERIFY(sim()->running(1));
+        QCOMPARE(page.jog()->direction(1).value_or(JogController::Direction::Reverse),
+                 JogController::Direction::Forward);
+        // Auto-repeat (a release+press pair on X11) neither stops nor restarts.
+        sendKey(&page, QEvent::KeyRelease, Qt::Key_Right, true);
+        sendKey(&page, QEvent::KeyPress, Qt::Key_Right, true);
+        QTest::qWait(200);
+        QVERIFY(sim()->running(1));
+        QTest::keyRelease(&page, Qt::Key_Right);
+        QTRY_VERIFY(!sim()->running(1));
+
+        QTest::keyPress(&page, Qt::Key_Up); // motor 2 forward
+        QTRY_VERIFY(sim()->running(2));
+        QTest::keyRelease(&page, Qt::Key_Up);
+        QTRY_VERIFY(!sim()->running(2));
+
+        // A key held through a stop does not restart by repeating.
+        QTest::keyPress(&page, Qt::Key_Left);
+        QTRY_VERIFY(sim()->running(1));
+        page.jog()->stopAll(QStringLiteral("focus loss"));
+        QTRY_VERIFY(!sim()->running(1));
+        QTRY_COMPARE(page.jog()->state(1), State::Idle);
+        sendKey(&page, QEvent::KeyPress, Qt::Key_Left, true);
+        QTest::qWait(200);
+        QVERIFY(!sim()->running(1));
+        QTest::keyRelease(&page, Qt::Key_Left);
+
+        // The page alone (no main window) stops a key held when its window loses the focus.
+        QTest::keyPress(&page, Qt::Key_Down);
+        QTRY_VERIFY(sim()->running(2));
+        {
+            QWidget other;
+            showActive(&other);
+            QTRY_VERIFY(!sim()->running(2));
+            QTest::keyRelease(&other, Qt::Key_Down);
+        }
+        showActive(&page);
+        QTRY_COMPARE(page.jog()->state(2), State::Idle);
+
+        // Typing in a field keeps the arrows for the field.
+        QWidget *speed = page.panel(1)->speedField()->editor();
+        speed->setFocus();
+        QTRY_VERIFY(speed->hasFocus());
+        QTest::keyPress(speed, Qt::Key_Right);
+        QTest::qWait(200);
+        QVERIFY(!sim()->running(1));
+        QTest::keyRelease(speed, Qt::Key_Right);
+
+        page.keyboardCheck()->click();
+        QVERIFY(page.keyboardIndicator()->isHidden());
+        QTest::keyPress(&page, Qt::Key_Right);
+        QTest::qWait(200);
+        QVERIFY(!sim()->running(1));
+        QTest::keyRelease(&page, Qt::Key_Right);
+    }
+
+    void singleMoveAndHomingEndAtZero()
+    {
+        connectSim();
+        for (const char *k : {"motor1.speed", "motor2.speed"})
+            QVERIFY(sim()->setValue(QLatin1String(k), 1200)); // 100 mm/s: a quick test
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->readAll();
+        QTRY_COMPARE(read.size(), 1);
+        MotionPage page(session.get());
+        showActive(&page);
+        JogPanel *p = page.panel(1);
+        QCOMPARE(p->moveText(), QStringLiteral("10.00 mm, Forward, at 1200 rpm"));
+        QVERIFY(p->moveButton()->isEnabled());
+        QVERIFY(session->store()->edit(QStringLiteral("motor1.move_distance"), 2000).isEmpty());
+        QVERIFY(!p->moveButton()->isEnabled()); // the controller would move by what it holds
+        QVERIFY(p->moveButton()->toolTip().contains(QLatin1String("not written")));
+        session->store()->revert(QStringLiteral("motor1.move_distance"));
+        QVERIFY(p->moveButton()->isEnabled());
+
+        p->moveButton()->click();
+        QTRY_COMPARE(simValue("motor1.position"), 1000);
+        QTRY_COMPARE(p->statusText(), QStringLiteral("Idle — Single move done"));
+        p->homeButton()->click();
+        QTRY_VERIFY(p->statusText().startsWith(QLatin1String("Homing")));
+        QTRY_COMPARE(p->statusText(), QStringLiteral("Idle — Homing done"));
+        QCOMPARE(simValue("motor1.position"), 0);
+        QCOMPARE(p->positionText(), QStringLiteral("0.00 mm"));
+
+        // Both away from home, then home in the controller's order.
+        QVERIFY(sim()->command(QStringLiteral("motor1.move")));
+        QVERIFY(sim()->command(QStringLiteral("motor2.move")));
+        QTRY_VERIFY(!sim()->running(1) && !sim()->running(2));
+        QCOMPARE(simValue("motor2.position"), 1000);
+        QTRY_VERIFY(page.homeAllButton()->isEnabled());
+        page.homeAllButton()->click();
+        QTRY_VERIFY2(page.homingStatus().contains(QLatin1String("motor 1 running")),
+                     qPrintable(page.homingStatus()));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            page.homingStatus().startsWith(QLatin1String("Homing in order: done")), 5000);
+        QCOMPARE(simValue("motor1.position"), 0);
+        QCOMPARE(simValue("motor2.position"), 0);
+        QVERIFY2(page.homingStatus().contains(QLatin1String("motor 2 at 0.00 mm")),
+                 qPrintable(page.homingStatus()));
+    }
+
+    void homingOrderRefusesDuplicates()
+    {
+        connectSim();
+        MotionPage page(session.get());
+        HomingOrderEditor *order = page.homingOrder();
+        QCOMPARE(order->combo(0)->currentText(), QStringLiteral("Motor 1"));
+        QCOMPARE(order->combo(1)->currentText(), QStringLiteral("Motor 2"));
+        QVERIFY(!page.applyOrderButton()->isEnabled());
+        QVERIFY(!order->choose(0, 2)); // motor 2 is already 2nd
+        QVERIFY(page.bannerShown());
+        QVERIFY2(page.bannerText().contains(QLatin1String("Motor 2 is already the 2nd")),
+                 qPrintable(page.bannerText()));
+        QCOMPARE(order->combo(0)->currentText(), QStringLiteral("Motor 1"));
+        QVERIFY(!session->store()->hasEdits());
+        // The same through the list, as a user picks it.
+        Q_EMIT order->combo(1)->activated(order->combo(1)->findText(QStringLiteral("Motor 1")));
+        QCOMPARE(order->combo(1)->currentText(), QStringLiteral("Motor 2"));
+        QVERIFY(!session->store()->hasEdits());
+
+        QVERIFY(order->choose(1, 0));
+        QVERIFY(order->choose(0, 2));
+        QVERIFY(!page.homeAllButton()->isEnabled()); // edited: the controller holds another order
+        QVERIFY(page.applyOrderButton()->isEnabled());
+        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        page.applyOrderButton()->click();
+        QTRY_COMPARE(written.size(), 1);
+        QCOMPARE(simValue("homing.first"), 2);
+        QCOMPARE(simValue("homing.second"), 0);
+        QVERIFY(!session->store()->hasEdits());
+        QVERIFY(page.homeAllButton()->isEnabled());
+    }
+
+    void applySpeedWritesOnlyTheSpeed()
+    {
+        connectSim();
+        MotionPage page(session.get());
+        JogPanel *p = page.panel(2);
+        QVERIFY(!p->applySpeedButton()->isEnabled());
+        QVERIFY(session->store()->edit(QStringLiteral("motor2.microsteps"), 16).isEmpty());
+        p->speedField()->enterText(QStringLiteral("450"));
+        QVERIFY(p->applySpeedButton()->isEnabled());
+        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        p->applySpeedButton()->click();
+        QTRY_COMPARE(written.size(), 1);
+        QCOMPARE(simValue("motor2.speed"), 450);
+        QCOMPARE(simValue("motor2.microsteps"), 8); // the other edit waits for "Write changes"
+        QCOMPARE(session->store()->state(QStringLiteral("motor2.speed")),
+                 ParameterStore::State::InSync);
+        QCOMPARE(session->store()->state(QStringLiteral("motor2.microsteps")),
+                 ParameterStore::State::Edited);
+        QVERIFY(!p->applySpeedButton()->isEnabled());
+    }
+
+    void outputsShowInTheLeds()
+    {
+        connectSim();
+        MotionPage page(session.get());
+        QTRY_COMPARE(page.outputLed(1)->state(), Led::State::Off);
+        page.outputButton(QStringLiteral("output1_on"))->click();
+        QTRY_COMPARE(page.outputLed(1)->state(), Led::State::On);
+        QVERIFY(sim()->output(1));
+        QCOMPARE(page.outputLed(2)->state(), Led::State::Off);
+        page.outputButton(QStringLiteral("output1_off"))->click();
+        QTRY_COMPARE(page.outputLed(1)->state(), Led::State::Off);
+        page.outputButton(QStringLiteral("outputs_all_on"))->click();
+        QTRY_VERIFY(page.outputLed(1)->state() == Led::State::On &&
+                    page.outputLed(2)->state() == Led::State::On &&
+                    page.outputLed(3)->state() == Led::State::On);
+        page.outputButton(QStringLiteral("outputs_all_off"))->click();
+        QTRY_COMPARE(page.outputLed(3)->state(), Led::State::Off);
+        session->disconnectFrom();
+        QCOMPARE(page.outputLed(1)->state(), Led::State::Unknown);
+        QVERIFY(!page.outputButton(QStringLiteral("output1_on"))->isEnabled());
+    }
+
+    // Pictures to look at: STEPCOM_SCREENSHOTS=/tmp/shots tst_motionpage screenshots
+    void screenshots()
+    {
+        const QString dir = qEnvironmentVariable("STEPCOM_SCREENSHOTS");
+        if (dir.isEmpty())
+            QSKIP("set STEPCOM_SCREENSHOTS to a directory to render the page");
+        QDir().mkpath(dir);
+        connectSim();
+        QPalette dark;
+        dark.setColor(QPalette::Window, QColor(45, 45, 48));
+        dark.setColor(QPalette::WindowText, QColor(230, 230, 230));
+        dark.setColor(QPalette::Base, QColor(30, 30, 32));
+        dark.setColor(QPalette::Text, QColor(230, 230, 230));
+        dark.setColor(QPalette::Button, QColor(60, 60, 64));
+        dark.setColor(QPalette::ButtonText, QColor(230, 230, 230));
+        dark.setColor(QPalette::ToolTipBase, QColor(70, 62, 30));
+        dark.setColor(QPalette::ToolTipText, QColor(240, 230, 200));
+        dark.setColor(QPalette::Highlight, QColor(40, 90, 160));
+        dark.setColor(QPalette::HighlightedText, QColor(250, 250, 250));
+        for (const auto role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText})
+            dark.setColor(QPalette::Disabled, role, QColor(120, 120, 120));
+        const QPalette light = QApplication::palette();
+        for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")}) {
+            Language::instance().setLanguage(lang);
+            for (const bool isDark : {false, true}) {
+                QApplication::setPalette(isDark ? dark : light);
+                MotionPage page(session.get());
+                page.resize(page.sizeHint().expandedTo(QSize(1000, 760)));
+                page.show();
+                page.keyboardCheck()->setChecked(true);
+                session->store()->edit(QStringLiteral("motor1.speed"), 450);
+                page.homingOrder()->choose(0, 2);
+                QTest::mousePress(page.panel(2)->forwardButton(), Qt::LeftButton);
+                QTest::qWait(400);
+                page.grab().save(QStringLiteral("%1/motion-%2%3.png")
+                                     .arg(dir, lang, isDark ? QStringLiteral("-dark") : QString()));
+                QTest::mouseRelease(page.panel(2)->forwardButton(), Qt::LeftButton);
+                session->store()->revertAll();
+                QTest::qWait(300);
+            }
+        }
+        QApplication::setPalette(light);
+        Language::instance().setLanguage(QStringLiteral("en"));
+    }
+};
+
+QTEST_MAIN(TestMotionPage)
+#include "tst_motionpage.moc"

@@ -1,0 +1,92 @@
+#pragma once
+
+#include "page.h"
+
+#include <QHash>
+
+class QCheckBox;
+class QFrame;
+class QGroupBox;
+class QLabel;
+class QPushButton;
+
+namespace stepcom {
+
+class HomingOrderEditor;
+class JogActivity;
+class JogController;
+class JogKeys;
+class JogPanel;
+class Led;
+
+// "Jog and home": the part of commissioning where things move. Per motor a JogPanel (hold to
+// move, stop, jog speed, single move, home); the homing order and the sequence commands;
+// the outputs; opt-in keyboard jogging. Any jog stops when the page is left or hidden, the
+// window loses focus, or the link goes (the JogController's rules).
+class MotionPage : public Page
+{
+    Q_OBJECT
+public:
+    explicit MotionPage(DeviceSession *session, QWidget *parent = nullptr);
+    ~MotionPage() override;
+
+    QString title() const override;
+    QStringList keys() const override;
+
+    JogController *jog() const { return m_jog; }
+    JogPanel *panel(int motor) const { return m_panels.value(motor - 1); }
+    int motorCount() const { return int(m_panels.size()); }
+    HomingOrderEditor *homingOrder() const { return m_order; }
+    QPushButton *applyOrderButton() const { return m_applyOrder; }
+    QPushButton *homeAllButton() const { return m_homeAll; }
+    QPushButton *zeroButton() const { return m_zero; }
+    QPushButton *returnToZeroButton() const { return m_returnToZero; }
+    QPushButton *outputButton(const QString &commandKey) const;
+    Led *outputLed(int n) const { return m_outputLeds.value(n - 1); }
+    QCheckBox *keyboardCheck() const { return m_keyboard; }
+    QLabel *keyboardIndicator() const { return m_keyboardIndicator; }
+    QString homingStatus() const;
+    // The prominent note at the top: warnings from the jog controller and refused choices.
+    bool bannerShown() const;
+    QString bannerText() const;
+
+protected:
+    void retranslate() override;
+    void hideEvent(QHideEvent *event) override;
+    bool event(QEvent *event) override;
+
+private:
+    void buildHoming(QWidget *content);
+    void buildOutputs(QWidget *content);
+    void showBanner(const QString &text);
+    void setKeyboard(bool on);
+    void sessionCommand(const QString &key);
+    void refresh();
+
+    JogController *m_jog;
+    JogKeys *m_keys;
+    QList<JogPanel *> m_panels;
+    QFrame *m_banner;
+    QLabel *m_bannerIcon;
+    QLabel *m_bannerText;
+    QPushButton *m_bannerClear;
+    QCheckBox *m_keyboard;
+    QLabel *m_keyboardIndicator;
+    QLabel *m_keyboardHelp;
+    QGroupBox *m_homingBox = nullptr;
+    HomingOrderEditor *m_order = nullptr;
+    QPushButton *m_applyOrder = nullptr;
+    QLabel *m_orderNote = nullptr;
+    QPushButton *m_homeAll = nullptr;
+    QPushButton *m_zero = nullptr;
+    QPushButton *m_returnToZero = nullptr;
+    QLabel *m_homingStatus = nullptr;
+    JogActivity *m_sequence = nullptr;
+    QString m_sequenceDone;
+    QGroupBox *m_outputsBox = nullptr;
+    QHash<QString, QPushButton *> m_outputButtons;
+    QList<Led *> m_outputLeds;
+    QList<QLabel *> m_outputNames;
+};
+
+} // namespace stepcom
