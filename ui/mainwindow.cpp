@@ -30,8 +30,8 @@
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
-#include <QToolBar>
 #include <QTimer>
+#include <QToolBar>
 #include <QToolButton>
 
 namespace stepcom {
@@ -250,6 +250,9 @@ void MainWindow::retranslate()
     m_messageDock->setWindowTitle(tr("Messages"));
     for (int i = 0; i < m_pages.size(); ++i)
         m_sidebar->item(i)->setText(m_pages.at(i)->title());
+    // Every page title readable in either language, never wider than it must be.
+    m_sidebar->setMinimumWidth(m_sidebar->sizeHintForColumn(0) + 4 * m_sidebar->frameWidth() +
+                               fontMetrics().horizontalAdvance(QLatin1Char('x')) * 2);
     for (QAction *a : m_languages->actions())
         a->setChecked(a->objectName() ==
                       QStringLiteral("language_") + Language::instance().current());
@@ -336,7 +339,7 @@ void MainWindow::restoreLayout()
     if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray())) {
         // First start: room for a page beside the sidebar, docks a quarter of the height.
         const QFontMetrics fm = fontMetrics();
-        resize(fm.horizontalAdvance(QLatin1Char('x')) * 150, fm.height() * 48);
+        resize(fm.horizontalAdvance(QLatin1Char('x')) * 185, fm.height() * 50);
     }
     if (!restoreState(settings.value(QStringLiteral("state")).toByteArray()))
         resizeDocks({m_trafficDock, m_messageDock},
