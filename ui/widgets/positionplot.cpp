@@ -35,7 +35,7 @@ double niceStep(double span, int ticks)
 } // namespace
 
 PositionPlot::PositionPlot(StatusRecorder *recorder, QWidget *parent)
-    : QChartView(new QChart, parent)
+    : NavigableChartView(new QChart, parent)
     , m_recorder(recorder)
     , m_axisX(new QValueAxis(this))
     , m_axisY(new QValueAxis(this))
@@ -291,80 +291,17 @@ bool PositionPlot::exportCsv(const QString &path, QString *error) const
     return m_recorder->writeCsv(path, visibleSamples(), error);
 }
 
-void PositionPlot::wheelEvent(QWheelEvent *event)
+void PositionPlot::zoomAt(const QPointF &at, qreal f)
 {
     const QRectF area = chart()->plotArea();
-    const QPointF at = chart()->mapFromScene(mapToScene(event->position().toPoint()));
-    if (!area.contains(at) || event->angleDelta().y() == 0) {
-        event->ignore();
-        return;
-    }
-    // Zoom around the cursor: the value under it stays under it.
-    const qreal f = std::pow(1.2, event->angleDelta().y() / 120.0);
     const QRectF rect(at.x() - (at.x() - area.left()) / f, at.y() - (at.y() - area.top()) / f,
                       area.width() / f, area.height() / f);
     chart()->zoomIn(rect);
-    event->accept();
 }
 
-void PositionPlot::mousePressEvent(QMouseEvent *event)
+void PositionPlot::pan(qreal dx, qreal dy)
 {
-    if (event->button() == Qt::MiddleButton) {
-        m_panning = true;
-        m_panFrom = event->position().toPoint();
-        event->accept();
-        return;
-    }
-    QChartView::mousePressEvent(event);
-}
-
-void PositionPlot::mouseMoveEvent(QMouseEvent *event)
-{
-    if (m_panning) {
-        const QPoint delta = event->position().toPoint() - m_panFrom;
-        m_panFrom = event->position().toPoint();
-        chart()->scroll(-delta.x(), delta.y());
-        event->accept();
-        return;
-    }
-    QChartView::mouseMoveEvent(event);
-}
-
-void PositionPlot::mouseReleaseEvent(QMouseEvent *event)
-{
-    if (m_panning && event->button() == Qt::MiddleButton) {
-        m_panning = false;
-        event->accept();
-        return;
-    }
-    QChartView::mouseReleaseEvent(event);
-}
-
-void PositionPlot::mouseDoubleClickEvent(QMouseEvent *event)
-{
-    fit();
-    event->accept();
-}
-
-void PositionPlot::keyPressEvent(QKeyEvent *event)
-{
-    const qreal s = chart()->plotArea().width() / 10.0;
-    const QHash<int, std::function<void()>> keys{
-        {Qt::Key_Plus, [this] { zoom(1.25); }},
-        {Qt::Key_Equal, [this] { zoom(1.25); }},
-        {Qt::Key_Minus, [this] { zoom(0.8); }},
-        {Qt::Key_Left, [this, s] { chart()->scroll(-s, 0); }},
-        {Qt::Key_Right, [this, s] { chart()->scroll(s, 0); }},
-        {Qt::Key_Up, [this, s] { chart()->scroll(0, s); }},
-        {Qt::Key_Down, [this, s] { chart()->scroll(0, -s); }},
-        {Qt::Key_Home, [this] { fit(); }},
-        {Qt::Key_0, [this] { fit(); }}};
-    if (const auto action = keys.value(event->key())) {
-        action();
-        event->accept();
-        return;
-    }
-    QChartView::keyPressEvent(event);
+    chart()->scroll(dx, dy);
 }
 
 void PositionPlot::changeEvent(QEvent *event)

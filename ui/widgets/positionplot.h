@@ -2,7 +2,7 @@
 
 #include "poll/statusrecorder.h"
 
-#include <QChartView>
+#include "widgets/navigablechartview.h"
 #include <QTimer>
 
 class QLineSeries;
@@ -15,7 +15,7 @@ namespace stepcom {
 // replace() per series, so a plot on screen stays cheap at any poll rate. Zooming (rubber band,
 // wheel, +/-) or panning (middle drag, arrows) pauses the view; fit() goes back to autoscale.
 // While paused the recorder keeps recording; the view catches up on resume.
-class PositionPlot : public QChartView
+class PositionPlot : public NavigableChartView
 {
     Q_OBJECT
 public:
@@ -26,9 +26,10 @@ public:
     void setPaused(bool paused);
     bool isPaused() const { return m_paused; }
     // Autoscale both axes to the data shown; when live, also back to the sliding window.
-    void fit();
+    void fit() override;
     // Zoom around the centre (factor > 1 zooms in); pauses a live view.
-    void zoom(qreal factor);
+    void zoom(qreal factor) override;
+    void pan(qreal dx, qreal dy) override;
     void setMaxPointsPerSeries(int points) { m_maxPoints = std::max(16, points); }
     void setRefreshMs(int ms) { m_refreshTimer.setInterval(ms); }
 
@@ -48,13 +49,8 @@ Q_SIGNALS:
 
 protected:
     void changeEvent(QEvent *event) override;
+    void zoomAt(const QPointF &plotPoint, qreal factor) override;
     void showEvent(QShowEvent *event) override;
-    void wheelEvent(QWheelEvent *event) override;
-    void mousePressEvent(QMouseEvent *event) override;
-    void mouseMoveEvent(QMouseEvent *event) override;
-    void mouseReleaseEvent(QMouseEvent *event) override;
-    void mouseDoubleClickEvent(QMouseEvent *event) override;
-    void keyPressEvent(QKeyEvent *event) override;
 
 private:
     void scheduleRefresh();
@@ -79,8 +75,6 @@ private:
     qint64 m_originMs = 0;
     double m_low = 0.0;
     double m_high = 0.0;
-    QPoint m_panFrom;
-    bool m_panning = false;
 };
 
 } // namespace stepcom

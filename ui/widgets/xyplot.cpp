@@ -48,7 +48,7 @@ void includePoints(QRectF &bounds, bool &any, const QList<QPointF> &points)
 } // namespace
 
 XYPlot::XYPlot(QWidget *parent)
-    : QChartView(new QChart, parent)
+    : NavigableChartView(new QChart, parent)
     , m_axisX(new QValueAxis(this))
     , m_axisY(new QValueAxis(this))
     , m_traceSeries(new QLineSeries(this))
@@ -345,82 +345,15 @@ void XYPlot::resizeEvent(QResizeEvent *event)
     m_aspectTimer.start();
 }
 
-void XYPlot::wheelEvent(QWheelEvent *event)
+void XYPlot::zoomAt(const QPointF &at, qreal f)
 {
-    const QRectF area = chart()->plotArea();
-    const QPointF at = chart()->mapFromScene(mapToScene(event->position().toPoint()));
-    if (!area.contains(at) || event->angleDelta().y() == 0) {
-        event->ignore();
-        return;
-    }
-    // Zoom around the cursor: the point under it stays under it.
-    const qreal f = std::pow(1.2, event->angleDelta().y() / 120.0);
+    // The point under the cursor stays under it.
     const QPointF value = chart()->mapToValue(at, m_traceSeries);
     const QRectF r = visibleRect();
     setAutoFit(false);
     setView(QRectF(
         QPointF(value.x() - (value.x() - r.left()) / f, value.y() - (value.y() - r.top()) / f),
         r.size() / f));
-    event->accept();
-}
-
-void XYPlot::mousePressEvent(QMouseEvent *event)
-{
-    if (event->button() == Qt::MiddleButton) {
-        m_panning = true;
-        m_panFrom = event->position().toPoint();
-        event->accept();
-        return;
-    }
-    QChartView::mousePressEvent(event);
-}
-
-void XYPlot::mouseMoveEvent(QMouseEvent *event)
-{
-    if (m_panning) {
-        const QPoint delta = event->position().toPoint() - m_panFrom;
-        m_panFrom = event->position().toPoint();
-        pan(-delta.x(), delta.y());
-        event->accept();
-        return;
-    }
-    QChartView::mouseMoveEvent(event);
-}
-
-void XYPlot::mouseReleaseEvent(QMouseEvent *event)
-{
-    if (m_panning && event->button() == Qt::MiddleButton) {
-        m_panning = false;
-        event->accept();
-        return;
-    }
-    QChartView::mouseReleaseEvent(event);
-}
-
-void XYPlot::mouseDoubleClickEvent(QMouseEvent *event)
-{
-    fit();
-    event->accept();
-}
-
-void XYPlot::keyPressEvent(QKeyEvent *event)
-{
-    const qreal s = chart()->plotArea().width() / 10.0;
-    const QHash<int, std::function<void()>> keys{{Qt::Key_Plus, [this] { zoom(1.25); }},
-                                                 {Qt::Key_Equal, [this] { zoom(1.25); }},
-                                                 {Qt::Key_Minus, [this] { zoom(0.8); }},
-                                                 {Qt::Key_Left, [this, s] { pan(-s, 0); }},
-                                                 {Qt::Key_Right, [this, s] { pan(s, 0); }},
-                                                 {Qt::Key_Up, [this, s] { pan(0, s); }},
-                                                 {Qt::Key_Down, [this, s] { pan(0, -s); }},
-                                                 {Qt::Key_Home, [this] { fit(); }},
-                                                 {Qt::Key_0, [this] { fit(); }}};
-    if (const auto action = keys.value(event->key())) {
-        action();
-        event->accept();
-        return;
-    }
-    QChartView::keyPressEvent(event);
 }
 
 void XYPlot::changeEvent(QEvent *event)

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <QChartView>
+#include "widgets/navigablechartview.h"
 #include <QHash>
 #include <QTimer>
 
@@ -19,7 +19,7 @@ namespace stepcom {
 // Follows the data (autoFit) until the user zooms (drag, wheel, +/-) or pans (middle drag,
 // arrows); fit() or a double-click follows again. Updates are batched: a burst of calls
 // redraws once, and nothing is redrawn while hidden.
-class XYPlot : public QChartView
+class XYPlot : public NavigableChartView
 {
     Q_OBJECT
 public:
@@ -54,10 +54,10 @@ public:
     void setAutoFit(bool on);
     bool autoFit() const { return m_autoFit; }
     // Show everything and follow the data again.
-    void fit();
+    void fit() override;
     // Zoom around the centre (factor > 1 zooms in) and pan by pixels; both stop autoFit.
-    void zoom(qreal factor);
-    void pan(qreal dx, qreal dy);
+    void zoom(qreal factor) override;
+    void pan(qreal dx, qreal dy) override;
     QRectF visibleRect() const;
     // Draw pending changes now instead of on the next turn of the event loop.
     void flush();
@@ -69,14 +69,9 @@ Q_SIGNALS:
 
 protected:
     void changeEvent(QEvent *event) override;
+    void zoomAt(const QPointF &plotPoint, qreal factor) override;
     void showEvent(QShowEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
-    void wheelEvent(QWheelEvent *event) override;
-    void mousePressEvent(QMouseEvent *event) override;
-    void mouseMoveEvent(QMouseEvent *event) override;
-    void mouseReleaseEvent(QMouseEvent *event) override;
-    void mouseDoubleClickEvent(QMouseEvent *event) override;
-    void keyPressEvent(QKeyEvent *event) override;
 
 private:
     void schedule();
@@ -100,8 +95,6 @@ private:
     bool m_settingRange = false; // our own range changes are not the user zooming
     QTimer m_flushTimer;
     QTimer m_aspectTimer; // squares the view after a rubber-band zoom
-    QPoint m_panFrom;
-    bool m_panning = false;
 };
 
 } // namespace stepcom
