@@ -2774,6 +2774,22 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</source>
         <translation>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</translation>
     </message>
+    <message>
+        <source>&amp;Poll every</source>
+        <translation>&amp;Poll every</translation>
+    </message>
+    <message>
+        <source>How often the status is read. Full rate reads again as soon as a cycle ends; the link decides how fast that is.</source>
+        <translation>How often the status is read. Full rate reads again as soon as a cycle ends; the link decides how fast that is.</translation>
+    </message>
+    <message>
+        <source>full rate</source>
+        <translation>full rate</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::StatusRecorder</name>

@@ -2762,6 +2762,22 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</source>
         <translation>实际达到的每秒状态刷新次数（完整读取周期数，而不是设定的频率）</translation>
     </message>
+    <message>
+        <source>&amp;Poll every</source>
+        <translation>轮询间隔(&amp;P)</translation>
+    </message>
+    <message>
+        <source>How often the status is read. Full rate reads again as soon as a cycle ends; the link decides how fast that is.</source>
+        <translation>读取状态的频率。“最快”表示一个周期结束后立即再次读取，速度由通信链路决定。</translation>
+    </message>
+    <message>
+        <source>full rate</source>
+        <translation>最快</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::StatusRecorder</name>

@@ -1,8 +1,10 @@
+#include "bus/modbuslink.h"
 #include "device/devicesession.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "page.h"
 #include "pages/plotpage.h"
+#include "poll/poller.h"
 #include "poll/statusrecorder.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
@@ -13,6 +15,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
 #include <QFile>
 #include <QFileDialog>
@@ -23,6 +26,7 @@
 #include <QLineSeries>
 #include <QPushButton>
 #include <QSet>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -172,6 +176,29 @@ private Q_SLOTS:
         };
         QTRY_VERIFY_WITH_TIMEOUT(rate() > 0.5, 4000);
         QVERIFY2(dock.rateText().endsWith(QLatin1String(" Hz")), qPrintable(dock.rateText()));
+    }
+
+    void pollIntervalIsChosenAndRemembered()
+    {
+        connectSim();
+        auto dock = std::make_unique<StatusDock>(session.get());
+        QComboBox *box = dock->intervalBox();
+        const int slow = box->findData(500);
+        QVERIFY(slow >= 0);
+        box->setCurrentIndex(slow);
+        Q_EMIT box->activated(slow);
+        QCOMPARE(session->statusPoller()->intervalMs(), 500);
+        // about two cycles a second now
+        const quint64 before = session->link()->stats().requests;
+        QTest::qWait(1100);
+        QVERIFY2(session->link()->stats().requests - before <= 8,
+                 qPrintable(QString::number(session->link()->stats().requests - before)));
+        // a new dock (the next start) applies the remembered choice
+        session->statusPoller()->setIntervalMs(100);
+        dock = std::make_unique<StatusDock>(session.get());
+        QCOMPARE(session->statusPoller()->intervalMs(), 500);
+        QCOMPARE(dock->intervalBox()->currentData().toInt(), 500);
+        QSettings().remove(QStringLiteral("monitor/pollIntervalMs"));
     }
 
     void dockFollowsTheMapsCounts()

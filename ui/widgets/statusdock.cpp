@@ -5,12 +5,14 @@
 #include "poll/poller.h"
 #include "widgets/led.h"
 
+#include <QComboBox>
 #include <QEvent>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QSettings>
 #include <QVBoxLayout>
 
 namespace stepcom {
@@ -121,6 +123,33 @@ StatusDock::StatusDock(DeviceSession *session, QWidget *parent)
     rateRow->addWidget(m_rateCaption);
     rateRow->addWidget(m_rate, 1);
     rows->addLayout(rateRow);
+    // How often to poll: full rate watches a move closely; slower leaves the bus to others.
+    auto *intervalRow = new QHBoxLayout;
+    m_intervalCaption = new QLabel(content);
+    m_interval = new QComboBox(content);
+    m_interval->setObjectName(QStringLiteral("pollInterval"));
+    for (int ms : {0, 100, 250, 500, 1000})
+        m_interval->addItem(QString(), ms);
+    m_intervalCaption->setBuddy(m_interval);
+    intervalRow->addWidget(m_intervalCaption);
+    intervalRow->addWidget(m_interval, 1);
+    rows->addLayout(intervalRow);
+    Poller *poller = session->statusPoller();
+    // STEPCOM_POLL_INTERVAL_MS (benchmarks, scripts) wins over the remembered choice.
+    if (!qEnvironmentVariableIsSet("STEPCOM_POLL_INTERVAL_MS"))
+        poller->setIntervalMs(
+            QSettings()
+                .value(QStringLiteral("monitor/pollIntervalMs"), poller->intervalMs())
+                .toInt());
+    const int current = m_interval->findData(poller->intervalMs());
+    if (current < 0)
+        m_interval->addItem(QString(), poller->intervalMs());
+    m_interval->setCurrentIndex(current < 0 ? m_interval->count() - 1 : current);
+    connect(m_interval, &QComboBox::activated, this, [this](int index) {
+        const int ms = m_interval->itemData(index).toInt();
+        m_session->statusPoller()->setIntervalMs(ms);
+        QSettings().setValue(QStringLiteral("monitor/pollIntervalMs"), ms);
+    });
     rows->addStretch(1);
     setWidget(content);
 
@@ -231,6 +260,13 @@ void StatusDock::retranslate()
     for (int i = 0; i < m_outputNames.size(); ++i)
         m_outputNames.at(i)->setText(tr("OUT%1").arg(i + 1));
     m_rateCaption->setText(tr("Update rate"));
+    m_intervalCaption->setText(tr("&Poll every"));
+    m_interval->setToolTip(tr("How often the status is read. Full rate reads again as soon as a "
+                              "cycle ends; the link decides how fast that is."));
+    for (int i = 0; i < m_interval->count(); ++i) {
+        const int ms = m_interval->itemData(i).toInt();
+        m_interval->setItemText(i, ms == 0 ? tr("full rate") : tr("%1 ms").arg(ms));
+    }
     const QString rateTip = tr("Status updates per second actually achieved by the poller "
                                "(complete read cycles, not the configured rate)");
     m_rateCaption->setToolTip(rateTip);

@@ -6,6 +6,8 @@
 class QGroupBox;
 class QLabel;
 
+class QComboBox;
+
 namespace stepcom {
 
 class DeviceSession;
@@ -30,6 +32,8 @@ public:
     Led *inputLed(int n) const { return m_inputLeds.value(n - 1); }
     Led *outputLed(int n) const { return m_outputLeds.value(n - 1); }
     QString rateText() const;
+    // The poll interval chooser (ms as item data; 0 = as fast as the link allows).
+    QComboBox *intervalBox() const { return m_interval; }
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -58,6 +62,8 @@ private:
     QList<QLabel *> m_outputNames;
     QLabel *m_rateCaption;
     QLabel *m_rate;
+    QLabel *m_intervalCaption;
+    QComboBox *m_interval;
     QTimer m_refresh; // coalesces the store's per-key signals into one update a cycle
     QTimer m_rateTimer;
 };
