@@ -1,5 +1,7 @@
 #include "map/registermap.h"
 
+#include "testmaps.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -112,16 +114,8 @@ private Q_SLOTS:
 
     void moreAxesIsAChangeOfData()
     {
-        QFile file(QStringLiteral(":/maps/controller.json"));
-        QVERIFY(file.open(QIODevice::ReadOnly));
-        QJsonObject top = QJsonDocument::fromJson(file.readAll()).object();
-        QJsonArray blocks = top.value(QStringLiteral("blocks")).toArray();
-        QJsonObject motor = blocks.at(0).toObject();
-        motor.insert(QStringLiteral("count"), 3);
-        blocks[0] = motor;
-        top.insert(QStringLiteral("blocks"), blocks);
         QStringList errors;
-        const auto map = RegisterMap::fromJson(json(top), &errors);
+        const auto map = stepcom::test::builtinMapWithMotors(3, &errors);
         QVERIFY2(map, qPrintable(errors.join(QLatin1Char('\n'))));
         QCOMPARE(map->blockCount(QStringLiteral("motor")), 3);
         QCOMPARE(map->find(QStringLiteral("motor3.step_angle"))->plc, 40021);

@@ -1,5 +1,7 @@
 #include "sim/simdevice.h"
 
+#include "testmaps.h"
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -326,17 +328,8 @@ private Q_SLOTS:
 
     void threeMotorMapGivesThreeAxes()
     {
-        QFile f(QStringLiteral(":/maps/controller.json"));
-        QVERIFY(f.open(QIODevice::ReadOnly));
-        QJsonObject root = QJsonDocument::fromJson(f.readAll()).object();
-        QJsonArray blocks = root.value(QStringLiteral("blocks")).toArray();
-        QJsonObject motor = blocks.at(0).toObject();
-        QCOMPARE(motor.value(QStringLiteral("prefix")).toString(), QStringLiteral("motor"));
-        motor.insert(QStringLiteral("count"), 3);
-        blocks.replace(0, motor);
-        root.insert(QStringLiteral("blocks"), blocks);
         QStringList errors;
-        const auto map = RegisterMap::fromJson(QJsonDocument(root).toJson(), &errors);
+        const auto map = stepcom::test::builtinMapWithMotors(3, &errors);
         QVERIFY2(map, qPrintable(errors.join(QLatin1Char('\n'))));
         SimDevice d(*map);
         QCOMPARE(d.motorCount(), 3);

@@ -13,6 +13,10 @@
 #include "widgets/statusdock.h"
 #include "widgets/xyplot.h"
 
+#include "testmaps.h"
+
+#include "darkpalette.h"
+
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
@@ -203,16 +207,8 @@ private Q_SLOTS:
 
     void dockFollowsTheMapsCounts()
     {
-        QFile f(QStringLiteral(":/maps/controller.json"));
-        QVERIFY(f.open(QIODevice::ReadOnly));
-        QJsonObject root = QJsonDocument::fromJson(f.readAll()).object();
-        QJsonArray blocks = root.value(QStringLiteral("blocks")).toArray();
-        QJsonObject motor = blocks.at(0).toObject();
-        motor.insert(QStringLiteral("count"), 3);
-        blocks.replace(0, motor);
-        root.insert(QStringLiteral("blocks"), blocks);
         QStringList errors;
-        const auto map = RegisterMap::fromJson(QJsonDocument(root).toJson(), &errors);
+        const auto map = stepcom::test::builtinMapWithMotors(3, &errors);
         QVERIFY2(map, qPrintable(errors.join(QLatin1Char('\n'))));
         DeviceSession three(*map);
         StatusDock dock(&three);
@@ -410,16 +406,7 @@ private Q_SLOTS:
         connectSim();
         sim()->setInput(4, SimDevice::InputForce::On); // IN3 would be motor 2's limit
         QVERIFY(sim()->command(QStringLiteral("output1_on")));
-        QPalette dark;
-        dark.setColor(QPalette::Window, QColor(45, 45, 48));
-        dark.setColor(QPalette::WindowText, QColor(230, 230, 230));
-        dark.setColor(QPalette::Base, QColor(30, 30, 32));
-        dark.setColor(QPalette::Text, QColor(230, 230, 230));
-        dark.setColor(QPalette::Button, QColor(60, 60, 64));
-        dark.setColor(QPalette::ButtonText, QColor(230, 230, 230));
-        dark.setColor(QPalette::Mid, QColor(90, 90, 90));
-        for (const auto role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText})
-            dark.setColor(QPalette::Disabled, role, QColor(120, 120, 120));
+        const QPalette dark = stepcom::test::darkPalette();
         const QPalette light = QApplication::palette();
         auto page = shownPlotPage();
         StatusDock dock(session.get());

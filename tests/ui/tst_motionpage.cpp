@@ -12,6 +12,8 @@
 #include "widgets/messageview.h"
 #include "widgets/parameterfield.h"
 
+#include "darkpalette.h"
+
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
@@ -348,19 +350,7 @@ private Q_SLOTS:
             QSKIP("set STEPCOM_SCREENSHOTS to a directory to render the page");
         QDir().mkpath(dir);
         connectSim();
-        QPalette dark;
-        dark.setColor(QPalette::Window, QColor(45, 45, 48));
-        dark.setColor(QPalette::WindowText, QColor(230, 230, 230));
-        dark.setColor(QPalette::Base, QColor(30, 30, 32));
-        dark.setColor(QPalette::Text, QColor(230, 230, 230));
-        dark.setColor(QPalette::Button, QColor(60, 60, 64));
-        dark.setColor(QPalette::ButtonText, QColor(230, 230, 230));
-        dark.setColor(QPalette::ToolTipBase, QColor(70, 62, 30));
-        dark.setColor(QPalette::ToolTipText, QColor(240, 230, 200));
-        dark.setColor(QPalette::Highlight, QColor(40, 90, 160));
-        dark.setColor(QPalette::HighlightedText, QColor(250, 250, 250));
-        for (const auto role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText})
-            dark.setColor(QPalette::Disabled, role, QColor(120, 120, 120));
+        const QPalette dark = stepcom::test::darkPalette();
         const QPalette light = QApplication::palette();
         for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")}) {
             Language::instance().setLanguage(lang);

@@ -12,6 +12,10 @@
 #include "widgets/parameterform.h"
 #include "widgets/wiringwarnings.h"
 
+#include "testmaps.h"
+
+#include "darkpalette.h"
+
 #include <QApplication>
 #include <QDir>
 #include <QFile>
@@ -106,16 +110,8 @@ private Q_SLOTS:
 
     void anyMotorCountOfTheMap()
     {
-        QFile f(QStringLiteral(":/maps/controller.json"));
-        QVERIFY(f.open(QIODevice::ReadOnly));
-        QJsonObject root = QJsonDocument::fromJson(f.readAll()).object();
-        QJsonArray blocks = root.value(QStringLiteral("blocks")).toArray();
-        QJsonObject motor = blocks.at(0).toObject();
-        motor.insert(QStringLiteral("count"), 3);
-        blocks.replace(0, motor);
-        root.insert(QStringLiteral("blocks"), blocks);
         QStringList errors;
-        const auto map = RegisterMap::fromJson(QJsonDocument(root).toJson(), &errors);
+        const auto map = stepcom::test::builtinMapWithMotors(3, &errors);
         QVERIFY2(map, qPrintable(errors.join(QLatin1Char('\n'))));
         DeviceSession three(*map);
         MotorPage page(&three, 3);
@@ -321,19 +317,7 @@ private Q_SLOTS:
         session->store()->setUnsavedToFlash(true);
         sim()->setInput(4, SimDevice::InputForce::On);
         QTest::qWait(400);
-        QPalette dark;
-        dark.setColor(QPalette::Window, QColor(45, 45, 48));
-        dark.setColor(QPalette::WindowText, QColor(230, 230, 230));
-        dark.setColor(QPalette::Base, QColor(30, 30, 32));
-        dark.setColor(QPalette::AlternateBase, QColor(55, 55, 58));
-        dark.setColor(QPalette::Text, QColor(230, 230, 230));
-        dark.setColor(QPalette::Button, QColor(60, 60, 64));
-        dark.setColor(QPalette::ButtonText, QColor(230, 230, 230));
-        dark.setColor(QPalette::ToolTipBase, QColor(70, 62, 30));
-        dark.setColor(QPalette::ToolTipText, QColor(240, 230, 200));
-        dark.setColor(QPalette::Mid, QColor(90, 90, 90));
-        for (const auto role : {QPalette::WindowText, QPalette::Text, QPalette::ButtonText})
-            dark.setColor(QPalette::Disabled, role, QColor(120, 120, 120));
+        const QPalette dark = stepcom::test::darkPalette();
         const QPalette light = QApplication::palette();
         for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")}) {
             Language::instance().setLanguage(lang);

@@ -1,12 +1,34 @@
 #include "widgets/navigablechartview.h"
 
 #include <QKeyEvent>
+#include <QLegend>
 #include <QMouseEvent>
+#include <QValueAxis>
 #include <QWheelEvent>
 
 #include <cmath>
 
 namespace stepcom {
+
+void NavigableChartView::styleChart(std::initializer_list<QValueAxis *> axes)
+{
+    const QPalette pal = palette();
+    QChart *c = chart();
+    c->setBackgroundBrush(pal.brush(QPalette::Base));
+    c->setBackgroundPen(Qt::NoPen);
+    c->legend()->setLabelColor(pal.color(QPalette::Text));
+    c->legend()->setFont(font());
+    QColor grid = pal.color(QPalette::Text);
+    grid.setAlphaF(0.15);
+    for (QValueAxis *axis : axes) {
+        axis->setLabelsBrush(pal.brush(QPalette::Text));
+        axis->setTitleBrush(pal.brush(QPalette::Text));
+        axis->setLabelsFont(font());
+        axis->setTitleFont(font());
+        axis->setLinePen(QPen(pal.color(QPalette::Mid), 1));
+        axis->setGridLinePen(QPen(grid, 1));
+    }
+}
 
 void NavigableChartView::wheelEvent(QWheelEvent *event)
 {

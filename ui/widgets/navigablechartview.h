@@ -2,6 +2,8 @@
 
 #include <QChartView>
 
+class QValueAxis;
+
 namespace stepcom {
 
 // A chart view that every plot of StepCom navigates the same way: wheel zooms around the
@@ -21,6 +23,10 @@ public:
 protected:
     // Zoom by `factor` keeping `plotPoint` (chart coordinates) where it is.
     virtual void zoomAt(const QPointF &plotPoint, qreal factor) = 0;
+
+    // Background, legend and axes from the palette and font, so plots follow a dark palette
+    // and the scale factor like every other widget.
+    void styleChart(std::initializer_list<QValueAxis *> axes);
 
     void wheelEvent(QWheelEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;

@@ -366,21 +366,7 @@ void XYPlot::changeEvent(QEvent *event)
 void XYPlot::applyPalette()
 {
     const QPalette pal = palette();
-    QChart *c = chart();
-    c->setBackgroundBrush(pal.brush(QPalette::Base));
-    c->setBackgroundPen(Qt::NoPen);
-    c->legend()->setLabelColor(pal.color(QPalette::Text));
-    c->legend()->setFont(font());
-    QColor grid = pal.color(QPalette::Text);
-    grid.setAlphaF(0.15);
-    for (QValueAxis *axis : {m_axisX, m_axisY}) {
-        axis->setLabelsBrush(pal.brush(QPalette::Text));
-        axis->setTitleBrush(pal.brush(QPalette::Text));
-        axis->setLabelsFont(font());
-        axis->setTitleFont(font());
-        axis->setLinePen(QPen(pal.color(QPalette::Mid), 1));
-        axis->setGridLinePen(QPen(grid, 1));
-    }
+    styleChart({m_axisX, m_axisY});
     QPen trace = m_traceSeries->pen();
     trace.setWidthF(2.0);
     m_traceSeries->setPen(trace);
