@@ -161,7 +161,7 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
 
     connect(m_mode, &QComboBox::activated, this,
             [this](int index) { confirmMode(m_mode->itemData(index).toInt()); });
-    connect(m_mode, &QComboBox::currentIndexChanged, this, &ModesPage::refresh);
+    connect(m_mode, &QComboBox::currentIndexChanged, this, &ModesPage::describe);
     connect(m_write, &QPushButton::clicked, this, &ModesPage::openWriteDialog);
     connect(session->store(), &ParameterStore::valueChanged, this, [this](const QString &k) {
         if (k == kModeKey || k == kTripsKey)
@@ -233,6 +233,7 @@ void ModesPage::confirmMode(int mode)
     box->setAttribute(Qt::WA_DeleteOnClose);
     m_confirmation = box;
     connect(box, &QMessageBox::finished, this, [this, p, mode](int result) {
+        m_confirmation.clear();
         if (result == QMessageBox::Yes && session()->isConnected())
             session()->write({ParameterWrite{p, mode}});
         refresh();
@@ -271,6 +272,14 @@ void ModesPage::refresh()
         }
     }
     m_mode->setEnabled(connected && device.has_value() && !m_confirmation);
+    describe();
+    bool edited = session()->store()->entry(kTripsKey).edited.has_value();
+    m_write->setEnabled(connected && edited);
+}
+
+void ModesPage::describe()
+{
+    const std::optional<qint64> device = deviceMode();
     const int shown = shownMode();
     m_current->setText(!device       ? tr("The controller's mode is not known yet.")
                        : device == 0 ? tr("The controller runs normally.")
@@ -292,8 +301,6 @@ void ModesPage::refresh()
             item->setBackground(device == r ? palette().brush(QPalette::AlternateBase) : QBrush());
         }
     }
-    bool edited = session()->store()->entry(kTripsKey).edited.has_value();
-    m_write->setEnabled(connected && edited);
 }
 
 void ModesPage::retranslate()

@@ -45,7 +45,10 @@ protected:
     void retranslate() override;
 
 private:
+    // The list shows what the controller holds (unless a change is being asked).
     void refresh();
+    // The explanation, the warning and the table for the mode the list shows.
+    void describe();
     void confirmMode(int mode);
     void openWriteDialog();
     std::optional<qint64> deviceMode() const;
