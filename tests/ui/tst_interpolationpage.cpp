@@ -1,6 +1,7 @@
 #include "device/devicesession.h"
 #include "dialogs/writechangesdialog.h"
 #include "language.h"
+#include "mainwindow.h"
 #include "pages/interpolationpage.h"
 #include "pages/modespage.h"
 #include "sim/simdevice.h"
@@ -276,6 +277,52 @@ private Q_SLOTS:
         QVERIFY2(page.preview()->exportPng(file, &error), qPrintable(error));
         QVERIFY(!QImage(file).isNull());
         page.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-page.png")));
+    }
+
+    // Both pages are in the window; an arc run there, pictured in both languages (the pictures
+    // land in the temporary directory for a look).
+    void inTheWindow()
+    {
+        MainWindow window(session.get());
+        window.resize(1500, 950);
+        window.show();
+        InterpolationPage *page = nullptr;
+        int index = -1;
+        for (int i = 0; i < window.pages().size(); ++i) {
+            if (auto *p = qobject_cast<InterpolationPage *>(window.pages().at(i))) {
+                page = p;
+                index = i;
+            }
+        }
+        QVERIFY(page);
+        QVERIFY(std::any_of(window.pages().cbegin(), window.pages().cend(),
+                            [](Page *p) { return qobject_cast<ModesPage *>(p) != nullptr; }));
+        window.showPage(index);
+        connectSim();
+        PathEditor *arc = page->arcEditor();
+        const QList<QPair<const char *, const char *>> values = {
+            {"arc.enabled", "1"},  {"arc.mode", "1"},     {"arc.start_x", "20"},
+            {"arc.start_y", "5"},  {"arc.end_x", "5"},    {"arc.end_y", "20"},
+            {"arc.middle_x", "9"}, {"arc.middle_y", "9"}, {"arc.direction", "0"},
+            {"arc.speed", "600"}};
+        for (const auto &[key, value] : values)
+            enter(arc, QLatin1String(key), QLatin1String(value));
+        QVERIFY2(arc->geometry().valid, qPrintable(arc->geometry().error));
+        writeThroughDialog(arc);
+        page->updatePreview();
+        window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-before.png")));
+        runToEnd(arc, page->preview(), 500, 2000);
+        page->updatePreview();
+        window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-after.png")));
+        Language::instance().setLanguage(QStringLiteral("zh_CN"));
+        QCOMPARE(page->title(), page->title()); // retranslated without a crash
+        window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-zh.png")));
+        window.showPage(index + 1);
+        QTest::qWait(200); // the layouts settle
+        window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-modes-zh.png")));
+        Language::instance().setLanguage(QStringLiteral("en"));
+        QTest::qWait(200);
+        window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-modes.png")));
     }
 
     void modeChangeAsksFirst()

@@ -46,6 +46,9 @@ InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
     m_previewTimer.setSingleShot(true);
     m_previewTimer.setInterval(0);
     connect(&m_previewTimer, &QTimer::timeout, this, &InterpolationPage::updatePreview);
+    m_positionTimer.setSingleShot(true);
+    m_positionTimer.setInterval(0);
+    connect(&m_positionTimer, &QTimer::timeout, this, &InterpolationPage::positionChanged);
     for (PathEditor *e : {m_arc, m_line}) {
         connect(e, &PathEditor::changed, this, [this, e] {
             if (e == currentEditor())
@@ -55,8 +58,8 @@ InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
     }
     connect(m_tabs, &QTabWidget::currentChanged, this, &InterpolationPage::schedulePreview);
     connect(session->store(), &ParameterStore::valueChanged, this, [this](const QString &k) {
-        if (k.endsWith(QLatin1String(".position")))
-            positionChanged();
+        if (k.endsWith(QLatin1String(".position")) && !m_positionTimer.isActive())
+            m_positionTimer.start(); // x and y of one poll make one point of the trace
     });
     connect(session, &DeviceSession::disconnected, m_preview, &InterpolationPreview::clearPosition);
     retranslate();

@@ -45,6 +45,7 @@ private:
     InterpolationPreview *m_preview;
     QSplitter *m_splitter;
     QTimer m_previewTimer;
+    QTimer m_positionTimer;
 };
 
 } // namespace stepcom

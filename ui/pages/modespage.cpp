@@ -7,6 +7,7 @@
 #include "widgets/parameterform.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -137,7 +138,10 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
     m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
     m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    m_table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    m_table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // As wide as the page gives it, as tall as its rows then are (fitTable()).
+    m_table->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+    m_table->installEventFilter(this);
     for (int r = 0; r < kModeCount; ++r) {
         for (int c = 0; c < 6; ++c)
             m_table->setItem(r, c, new QTableWidgetItem);
@@ -181,6 +185,23 @@ QString ModesPage::title() const
 QStringList ModesPage::keys() const
 {
     return {kModeKey, kTripsKey};
+}
+
+bool ModesPage::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_table && event->type() == QEvent::Resize)
+        fitTable();
+    return Page::eventFilter(watched, event);
+}
+
+void ModesPage::fitTable()
+{
+    m_table->resizeRowsToContents();
+    int height = m_table->horizontalHeader()->height() + 2 * m_table->frameWidth();
+    for (int r = 0; r < m_table->rowCount(); ++r)
+        height += m_table->rowHeight(r);
+    if (m_table->height() != height)
+        m_table->setFixedHeight(height);
 }
 
 std::optional<qint64> ModesPage::deviceMode() const
@@ -329,6 +350,7 @@ void ModesPage::retranslate()
     m_tripsNote->setText(tr("Only used in mode 1 (round trip): how many round trips motor 1 "
                             "makes after a start; 0 = endless."));
     m_write->setText(tr("&Write changes…"));
+    fitTable();
     refresh();
 }
 

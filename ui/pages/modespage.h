@@ -43,10 +43,12 @@ public:
 
 protected:
     void retranslate() override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     // The list shows what the controller holds (unless a change is being asked).
     void refresh();
+    void fitTable();
     // The explanation, the warning and the table for the mode the list shows.
     void describe();
     void confirmMode(int mode);

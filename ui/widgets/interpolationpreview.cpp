@@ -79,6 +79,7 @@ InterpolationPreview::InterpolationPreview(QWidget *parent)
     : QWidget(parent)
     , m_plot(new XYPlot(this))
     , m_message(new QLabel(this))
+    , m_key(new QLabel(this))
     , m_status(new QLabel(this))
     , m_fit(new QPushButton(this))
     , m_export(new QPushButton(this))
@@ -98,6 +99,9 @@ InterpolationPreview::InterpolationPreview(QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_message);
     layout->addWidget(m_plot, 1);
+    m_key->setWordWrap(true);
+    m_key->setTextFormat(Qt::RichText);
+    layout->addWidget(m_key);
     auto *buttons = new QHBoxLayout;
     buttons->addWidget(m_status, 1);
     buttons->addWidget(m_fit);
@@ -174,6 +178,10 @@ void InterpolationPreview::redraw()
     approachColour.setAlphaF(0.6);
 
     m_plot->clearPaths();
+    // The real run in its own colour, apart from the planned path.
+    QPen tracePen = m_plot->traceSeries()->pen();
+    tracePen.setColor(QColor(230, 120, 0));
+    m_plot->traceSeries()->setPen(tracePen);
     auto style = [this](const QString &id, const QColor &colour, Qt::PenStyle penStyle,
                         double width) {
         if (QXYSeries *s = m_plot->series(id)) {
@@ -203,8 +211,9 @@ void InterpolationPreview::redraw()
     if (g.valid && g.path) {
         m_plot->setPath(kPath, sampled(*g.path), g.arc ? tr("Arc") : tr("Line"));
         style(kPath, pathColour, Qt::SolidLine, 2.5);
-        const double extent = std::max({g.length / 12, g.arc ? g.radius() / 6 : 0.0, 0.01});
-        const double size = std::min(extent, g.length / 4);
+        // Arrowheads a small part of the drawing, whatever its scale.
+        const double extent = g.arc ? std::min(2 * g.radius(), g.length) : g.length;
+        const double size = std::max(0.01, extent * 0.05);
         for (int i = 0; i < kArrows; ++i) {
             const QString id = kArrow.arg(i);
             m_plot->setPath(id, arrowhead(*g.path, g.length * (i + 1) / (kArrows + 0.5), size));
@@ -255,6 +264,21 @@ void InterpolationPreview::redraw()
                           "together, each at its own speed, so the last one finishes alone.")
                      : tr("Dashed: the approach from the current position (the motors' "
                           "parameters are not known yet: drawn as equal speeds).");
+    // The key to the drawing (the chart's legend would take the plot's room).
+    auto swatch = [](const QColor &c, const QString &symbol, const QString &text) {
+        return QStringLiteral("<span style=\"color:%1\">%2</span>&nbsp;%3")
+            .arg(c.name(), symbol, text.toHtmlEscaped());
+    };
+    QStringList key{swatch(pathColour, QStringLiteral("━"), tr("path, arrowheads: direction")),
+                    swatch(approachColour, QStringLiteral("┅"), tr("approach")),
+                    swatch(QColor(230, 120, 0), QStringLiteral("━"), tr("real run")),
+                    swatch(QColor(40, 170, 60), QStringLiteral("●"), tr("start")),
+                    swatch(QColor(220, 60, 60), QStringLiteral("■"), tr("end"))};
+    if (g.middle)
+        key << swatch(QColor(230, 160, 0), QStringLiteral("▲"), tr("middle point"));
+    if (g.centre)
+        key << swatch(pal.color(QPalette::Text), QStringLiteral("★"), tr("centre"));
+    m_key->setText(key.join(QStringLiteral(" &nbsp; ")));
     m_status->setText(status);
 }
 

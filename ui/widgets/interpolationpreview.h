@@ -49,6 +49,7 @@ private:
 
     XYPlot *m_plot;
     QLabel *m_message;
+    QLabel *m_key;
     QLabel *m_status;
     QPushButton *m_fit;
     QPushButton *m_export;
