@@ -224,7 +224,8 @@ private Q_SLOTS:
         QCOMPARE(a.points.size(), 3);
         QVERIFY(near(a.points.at(1).y, 5));
         // y brakes into 5 while x cruises on: at 300 rpm, 5 per revolution, 1600 pulses per
-        // revolution y takes 290 ms; x ramps 95 ms (1.25) and cruises 195 ms at 25 per second.
+        // revolution y takes about 280 ms, x ramps 95 ms (1.25) and then cruises at 25 per
+        // second, so x is past 5 when y arrives (about 6).
         QVERIFY2(near(a.points.at(1).x, 6.125, 0.15),
                  qPrintable(QString::number(a.points.at(1).x)));
         // The simulator's approach passes that corner.

@@ -129,11 +129,17 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
     connect(session, &DeviceSession::connected, this, &PathEditor::update);
     connect(session, &DeviceSession::disconnected, this, &PathEditor::update);
     connect(m_write, &QPushButton::clicked, this, &PathEditor::openWriteDialog);
+    m_startSent.setSingleShot(true);
+    m_startSent.setInterval(1500);
+    connect(&m_startSent, &QTimer::timeout, this, &PathEditor::update);
     connect(m_start, &QPushButton::clicked, this, [this] {
         // Checked again at the click: nothing but what is shown and held by the controller.
         if (!startBlockedReason().isEmpty())
             return;
         m_session->command(m_prefix + QStringLiteral("start"));
+        // Until the poll shows the motors running, a second click must not start it again.
+        m_startSent.start();
+        update();
         Q_EMIT started();
     });
     connect(m_stop, &QPushButton::clicked, this,
@@ -248,6 +254,8 @@ QString PathEditor::startBlockedReason() const
                         "write it.");
     if (anyMotorRunning())
         return tr("A motor is moving: wait until it stops, or stop it.");
+    if (m_startSent.isActive())
+        return tr("Starting…");
     return {};
 }
 
@@ -316,6 +324,8 @@ void PathEditor::update()
     }
 
     const bool connected = m_session->isConnected();
+    if (anyMotorRunning() || !connected)
+        m_startSent.stop(); // the poll saw it start
     const QString reason = startBlockedReason();
     m_start->setEnabled(reason.isEmpty());
     m_reason->setText(reason.isEmpty() ? tr("Ready: Start runs the path shown, as written.")

@@ -5,6 +5,7 @@
 #include "dialogs/writechangesdialog.h"
 
 #include <QPointer>
+#include <QTimer>
 #include <QWidget>
 
 #include <optional>
@@ -92,6 +93,7 @@ private:
     QPushButton *m_stop;
     QLabel *m_reason;
     QPointer<WriteChangesDialog> m_writeDialog;
+    QTimer m_startSent; // a start was sent and the poll has not seen it yet
 };
 
 } // namespace stepcom
