@@ -233,6 +233,7 @@ private Q_SLOTS:
         QVERIFY(page.preview()->message().startsWith(QStringLiteral("Invalid")));
         QVERIFY(page.preview()->message().contains(QStringLiteral("end radius 10.44")));
         QVERIFY(page.preview()->plot()->pathIds().contains(QStringLiteral("invalid")));
+        page.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-invalid.png")));
         QTest::keyClick(endY, Qt::Key_Return);
         QVERIFY(session->store()->entry(QStringLiteral("arc.end_y")).edited);
         QVERIFY(!arc->startButton()->isEnabled());

@@ -13,6 +13,7 @@
 #include <QStandardPaths>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -147,8 +148,30 @@ void InterpolationPreview::setAxisTitles(const QString &x, const QString &y)
 void InterpolationPreview::setGeometry(const Geometry &geometry,
                                        const std::optional<interpolation::Approach> &approach)
 {
+    // The page asks on every poll; the chart is rebuilt only when the drawing changes.
+    auto same = [](const Point &a, const Point &b) { return a.x == b.x && a.y == b.y; };
+    auto sameOpt = [&same](const std::optional<Point> &a, const std::optional<Point> &b) {
+        return a.has_value() == b.has_value() && (!a || same(*a, *b));
+    };
+    auto sameApproach = [&same](const std::optional<interpolation::Approach> &a,
+                                const std::optional<interpolation::Approach> &b) {
+        if (a.has_value() != b.has_value())
+            return false;
+        if (!a)
+            return true;
+        return a->exact == b->exact && a->points.size() == b->points.size() &&
+               std::equal(a->points.cbegin(), a->points.cend(), b->points.cbegin(), same);
+    };
+    const Geometry &g = m_geometry;
+    if (m_drawn && g.valid == geometry.valid && g.arc == geometry.arc &&
+        g.error == geometry.error && g.notes == geometry.notes && same(g.start, geometry.start) &&
+        same(g.end, geometry.end) && sameOpt(g.centre, geometry.centre) &&
+        sameOpt(g.middle, geometry.middle) && g.sweepDegrees == geometry.sweepDegrees &&
+        g.startRadius == geometry.startRadius && sameApproach(m_approach, approach))
+        return;
     m_geometry = geometry;
     m_approach = approach;
+    m_drawn = true;
     redraw();
 }
 

@@ -56,6 +56,7 @@ private:
     QPointer<QFileDialog> m_dialog;
     interpolation::Geometry m_geometry;
     std::optional<interpolation::Approach> m_approach;
+    bool m_drawn = false;
 };
 
 } // namespace stepcom
