@@ -12,11 +12,6 @@ namespace stepcom::interpolation {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("stepcom::InterpolationGeometry", text);
-}
-
 // Two points closer than half a register count are the same point for the controller.
 constexpr double kSamePoint = 0.005;
 
@@ -125,20 +120,26 @@ Geometry arc(const ArcInput &in)
     if (in.mode == ArcMode::ThreePoints) {
         g.middle = in.middle;
         if (same(in.start, in.end)) {
-            g.error = tr("Start and end are the same point: three points cannot describe a full "
-                         "circle. Use the centre mode for a full circle.");
+            g.error = QCoreApplication::translate(
+                "stepcom::InterpolationGeometry",
+                "Start and end are the same point: three points cannot describe a full "
+                "circle. Use the centre mode for a full circle.");
             return g;
         }
         if (same(in.middle, in.start) || same(in.middle, in.end)) {
-            g.error = tr("The middle point %1 is the same as the start or the end point: three "
-                         "distinct points are needed.")
+            g.error = QCoreApplication::translate(
+                          "stepcom::InterpolationGeometry",
+                          "The middle point %1 is the same as the start or the end point: three "
+                          "distinct points are needed.")
                           .arg(pointText(in.middle));
             return g;
         }
         const std::optional<Point> c = InterpolationPath::circleCentre(in.start, in.middle, in.end);
         if (!c) {
-            g.error = tr("Start, middle and end are on one straight line: no circle passes "
-                         "through them. Use the line editor for a straight move.");
+            g.error = QCoreApplication::translate(
+                "stepcom::InterpolationGeometry",
+                "Start, middle and end are on one straight line: no circle passes "
+                "through them. Use the line editor for a straight move.");
             return g;
         }
         g.centre = *c;
@@ -150,16 +151,20 @@ Geometry arc(const ArcInput &in)
     g.endRadius = distance(in.end, c);
     g.radiusDifference = std::abs(g.endRadius - g.startRadius);
     if (g.startRadius < kSamePoint) {
-        g.error = tr("The start point is the centre: the radius is zero.");
+        g.error = QCoreApplication::translate("stepcom::InterpolationGeometry",
+                                              "The start point is the centre: the radius is zero.");
         return g;
     }
     if (g.endRadius < kSamePoint) {
-        g.error = tr("The end point is the centre: the radius is zero.");
+        g.error = QCoreApplication::translate("stepcom::InterpolationGeometry",
+                                              "The end point is the centre: the radius is zero.");
         return g;
     }
     if (g.radiusDifference > kRadiusTolerance + 1e-9) {
-        g.error = tr("Start and end are not the same distance from the centre: start radius %1, "
-                     "end radius %2, difference %3 (at most %4 allowed).")
+        g.error = QCoreApplication::translate(
+                      "stepcom::InterpolationGeometry",
+                      "Start and end are not the same distance from the centre: start radius %1, "
+                      "end radius %2, difference %3 (at most %4 allowed).")
                       .arg(number(g.startRadius), number(g.endRadius), number(g.radiusDifference),
                            number(kRadiusTolerance));
         return g;
@@ -167,17 +172,22 @@ Geometry arc(const ArcInput &in)
     const std::optional<InterpolationPath> path =
         InterpolationPath::arcAroundCentre(in.start, in.end, c, in.counterClockwise);
     if (!path) {
-        g.error = tr("The start point is the centre: the radius is zero.");
+        g.error = QCoreApplication::translate("stepcom::InterpolationGeometry",
+                                              "The start point is the centre: the radius is zero.");
         return g;
     }
     fillArc(g, *path);
     g.fullCircle = same(in.start, in.end);
     if (g.fullCircle)
-        g.notes << tr("Start and end are the same point: this is a full circle.");
+        g.notes << QCoreApplication::translate(
+            "stepcom::InterpolationGeometry",
+            "Start and end are the same point: this is a full circle.");
     if (in.mode == ArcMode::ThreePoints && !sweepContains(*path, in.middle))
-        g.notes << tr("The arc in the chosen direction does not pass through the middle point: "
-                      "the controller goes the other way round the circle. Change the direction "
-                      "to pass through it.");
+        g.notes << QCoreApplication::translate(
+            "stepcom::InterpolationGeometry",
+            "The arc in the chosen direction does not pass through the middle point: "
+            "the controller goes the other way round the circle. Change the direction "
+            "to pass through it.");
     g.valid = true;
     return g;
 }
@@ -188,7 +198,9 @@ Geometry line(Point start, Point end)
     g.start = start;
     g.end = end;
     if (same(start, end)) {
-        g.error = tr("Start and end are the same point %1: the line has no length.")
+        g.error = QCoreApplication::translate(
+                      "stepcom::InterpolationGeometry",
+                      "Start and end are the same point %1: the line has no length.")
                       .arg(pointText(start));
         return g;
     }
