@@ -12,6 +12,8 @@
 #include "widgets/patheditor.h"
 #include "widgets/xyplot.h"
 
+#include "darkpalette.h"
+
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
@@ -318,6 +320,11 @@ private Q_SLOTS:
         runToEnd(arc, page->preview(), 500, 2000);
         page->updatePreview();
         window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-after.png")));
+        const QPalette light = QApplication::palette();
+        QApplication::setPalette(test::darkPalette());
+        QTest::qWait(100);
+        window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-dark.png")));
+        QApplication::setPalette(light);
         Language::instance().setLanguage(QStringLiteral("zh_CN"));
         QCOMPARE(page->title(), page->title()); // retranslated without a crash
         window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-zh.png")));

@@ -195,12 +195,16 @@ void InterpolationPreview::redraw()
 {
     const Geometry &g = m_geometry;
     const QPalette pal = palette();
-    const QColor pathColour = pal.color(QPalette::Highlight);
+    // The selection colour, lightened on a dark background so the path stands out.
+    const bool dark = pal.color(QPalette::Base).lightness() < 128;
+    const QColor pathColour =
+        dark ? pal.color(QPalette::Highlight).lighter(170) : pal.color(QPalette::Highlight);
     const QColor bad(220, 40, 40);
     QColor approachColour = pal.color(QPalette::Text);
     approachColour.setAlphaF(0.6);
 
     m_plot->clearPaths();
+    m_plot->chart()->legend()->setVisible(false); // the key below says it in full
     // The real run in its own colour, apart from the planned path.
     QPen tracePen = m_plot->traceSeries()->pen();
     tracePen.setColor(QColor(230, 120, 0));
