@@ -2,6 +2,7 @@
 #include "device/devicesession.h"
 #include "dialogs/profilecomparedialog.h"
 #include "language.h"
+#include "mainwindow.h"
 #include "profile/profilefile.h"
 #include "profileactions.h"
 #include "sim/simdevice.h"
@@ -237,6 +238,20 @@ private Q_SLOTS:
         QTRY_COMPARE(actions.compareDialog()->checkedKeys(), QStringList{"motor2.speed"});
         QCOMPARE(simValue("motor2.speed"), speed);
         actions.compareDialog()->close();
+    }
+
+    void fileMenuHasTheProfileActions()
+    {
+        MainWindow w(session.get());
+        for (const char *name : {"openProfile", "saveProfileFromDevice", "saveProfileFromEdited",
+                                 "commissioningReport"}) {
+            QAction *a = w.action(QLatin1String(name));
+            QVERIFY2(a, name);
+            QVERIFY2(!a->text().isEmpty(), name);
+        }
+        QVERIFY(w.profileActions());
+        QVERIFY(!w.action(QStringLiteral("saveProfileFromDevice"))->isEnabled()); // offline
+        QVERIFY(w.action(QStringLiteral("openProfile"))->isEnabled()); // opening never writes
     }
 
     void reportFromTheWindow()
