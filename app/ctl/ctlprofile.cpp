@@ -8,8 +8,9 @@
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
-#include <QLocale>
+#include <QTranslator>
 
 namespace stepcom {
 
@@ -245,6 +246,15 @@ void CtlRunner::runReport()
         fail(UsageError, tr("%1: the report is written as .pdf or .html").arg(path));
         return;
     }
+    if (m_options.language != QLatin1String("en")) {
+        // The translations are compiled into stepcom_core (:/i18n), as for the window.
+        auto *translator = new QTranslator(this);
+        if (!translator->load(QStringLiteral(":/i18n/stepcom_%1.qm").arg(m_options.language))) {
+            fail(UsageError, tr("no %1 translation is built in").arg(m_options.language));
+            return;
+        }
+        QCoreApplication::installTranslator(translator);
+    }
     connectThen([this, path] {
         m_device->readAll([this, path](const ReadOutcome &r) {
             if (!r.ok) {
@@ -261,7 +271,7 @@ void CtlRunner::runReport()
             input.title = m_options.name;
             input.notes = m_options.notes;
             input.date = QDateTime::currentDateTime();
-            input.locale = QLocale().name();
+            input.locale = m_options.language;
             if (const QString e = CommissioningReport(input).write(path); !e.isEmpty()) {
                 fail(UsageError, e);
                 return;

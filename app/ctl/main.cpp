@@ -62,7 +62,8 @@ int main(int argc, char *argv[])
         "                         them and asking (--yes skips the question), then verify;\n"
         "                         --include-link also writes device id and baud,\n"
         "                         --save-to-flash saves afterwards\n"
-        "  report FILE.pdf|.html  write the commissioning report (--name, --notes)\n\n"
+        "  report FILE.pdf|.html  write the commissioning report (--name, --notes,\n"
+        "                         --lang en|zh_CN)\n\n"
         "Exit codes: 0 success, 1 link or device error, 2 usage or validation error."));
     parser.addHelpOption();
     parser.addVersionOption();

@@ -271,6 +271,16 @@ private Q_SLOTS:
         QVERIFY(text.contains("motor2.step_angle"));
         QVERIFY(text.contains("40213 · 0x00D4"));
         QCOMPARE(writeFrames(device->requests()).size(), 0);
+        const Run zh = ctl({QStringLiteral("report"), file("r-zh.html"), QStringLiteral("--lang"),
+                            QStringLiteral("zh_CN")});
+        QVERIFY2(zh.exitCode == 0, qPrintable(zh.err));
+        QFile z(file("r-zh.html"));
+        QVERIFY(z.open(QIODevice::ReadOnly));
+        QVERIFY(QString::fromUtf8(z.readAll()).contains(QStringLiteral("步距角")));
+        QCOMPARE(ctl({QStringLiteral("report"), file("x.pdf"), QStringLiteral("--lang"),
+                      QStringLiteral("fr")})
+                     .exitCode,
+                 2);
         const Run bad = ctl({QStringLiteral("report"), file("r.docx")});
         QCOMPARE(bad.exitCode, 2);
         QVERIFY(bad.err.contains(QStringLiteral(".pdf or .html")));
