@@ -20,7 +20,8 @@ struct ProfileDifference
     std::optional<qint64> device;  // nullopt: not known (not read, not connected)
     std::optional<qint64> profile; // nullopt: the profile does not hold it (link settings)
     bool linkSetting = false;      // device.id / device.baud: applied only when chosen
-    bool differs() const { return profile.has_value() && device != profile; }
+    // Only known values differ: a value not read (not connected) is unknown, not different.
+    bool differs() const { return profile.has_value() && device.has_value() && device != profile; }
 };
 
 // Compares a profile with what a controller holds and turns a choice of rows into writes.

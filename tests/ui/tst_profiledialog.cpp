@@ -147,6 +147,23 @@ private Q_SLOTS:
         QCOMPARE(visibleRows(t), 2); // arc.speed and the device id
     }
 
+    void offlineEverythingIsUnknownNotDifferent()
+    {
+        Profile p;
+        p.values.insert(QStringLiteral("motor1.speed"), 300);
+        ProfileCompareDialog dialog(session.get(), p, QStringLiteral("p.json"), window.get());
+        dialog.open();
+        QVERIFY(dialog.checkedKeys().isEmpty());
+        QVERIFY(!dialog.applyButton()->isEnabled());
+        QCOMPARE(dialog.table()
+                     ->item(dialog.rowOf(QStringLiteral("motor1.speed")),
+                            ProfileCompareDialog::DeviceColumn)
+                     ->text(),
+                 QStringLiteral("—"));
+        dialog.differencesOnly()->setChecked(true);
+        QCOMPARE(visibleRows(dialog.table()), 0);
+    }
+
     void mismatchesAreNamed()
     {
         connectSim();

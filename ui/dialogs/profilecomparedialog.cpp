@@ -223,7 +223,12 @@ void ProfileCompareDialog::rebuild()
     m_table->resizeColumnToContents(ProfileColumn);
     m_table->resizeColumnToContents(UnitColumn);
     m_table->resizeColumnToContents(KeyColumn);
-    m_summary->setText(differing == 0
+    const bool unknown = std::any_of(m_rows.cbegin(), m_rows.cend(),
+                                     [](const auto &r) { return r.profile && !r.device; });
+    m_summary->setText(unknown && differing == 0
+                           ? tr("The controller's values are not known yet: connect, and they "
+                                "are read.")
+                       : differing == 0
                            ? tr("The controller holds every value of the profile.")
                            : tr("%n value(s) differ; %1 checked to be written.", nullptr, differing)
                                  .arg(checkedKeys().size()));
