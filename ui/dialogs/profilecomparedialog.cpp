@@ -112,7 +112,10 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
     connect(session, &DeviceSession::commandFinished, this, [this](const QString &key, bool ok) {
         if (key != kSaveToFlash || m_saveToFlash->isHidden())
             return;
-        m_result->setText(m_result->text() + QLatin1Char('\n') +
+        QString text = m_result->text();
+        if (ok) // the warning about power-off no longer holds
+            text.remove(QLatin1Char('\n') + forgetWarning());
+        m_result->setText(text + QLatin1Char('\n') +
                           (ok ? tr("Saved to flash: the controller keeps these values after "
                                    "power-off.")
                               : tr("Saving to flash failed (see Messages).")));
@@ -139,11 +142,26 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
         session->readAll();
 }
 
+QString ProfileCompareDialog::forgetWarning()
+{
+    return tr("The controller forgets these values at power-off unless they are saved to "
+              "flash.");
+}
+
+QString ProfileCompareDialog::labelOf(const Parameter &p)
+{
+    // "Step angle" is in every motor block: say which motor.
+    const QString label = p.label.text(Language::instance().current());
+    if (p.instance > 0 && p.block == QLatin1String("motor") &&
+        !label.contains(QString::number(p.instance)))
+        return tr("Motor %1 · %2").arg(p.instance).arg(label);
+    return label;
+}
+
 QString ProfileCompareDialog::nameOf(const QString &key) const
 {
     const Parameter *p = m_session->map().find(key);
-    return p ? QStringLiteral("%1 (%2)").arg(p->label.text(Language::instance().current()), key)
-             : key;
+    return p ? QStringLiteral("%1 (%2)").arg(labelOf(*p), key) : key;
 }
 
 void ProfileCompareDialog::refreshValues()
@@ -190,7 +208,7 @@ void ProfileCompareDialog::rebuild()
             return (!p.values.isEmpty() && shown != n) ? QStringLiteral("%1 (%2)").arg(n, shown)
                                                        : n;
         };
-        QString label = p.label.text(lang);
+        QString label = labelOf(p);
         if (r.linkSetting)
             label += QStringLiteral(" — ") + tr("link setting");
         const QStringList cells{QString(),         label,  number(r.device),
@@ -355,9 +373,7 @@ void ProfileCompareDialog::finishApply(const QList<ParameterWrite> &writes,
         text += QLatin1Char('\n') + tr("Problems:") + QLatin1Char('\n') +
                 problems.join(QLatin1Char('\n'));
     if (!verified.isEmpty())
-        text += QLatin1Char('\n') +
-                tr("The controller forgets these values at power-off unless they are saved "
-                   "to flash.");
+        text += QLatin1Char('\n') + forgetWarning();
     m_result->setText(text);
     m_saveToFlash->setVisible(!verified.isEmpty());
     m_saveToFlash->setEnabled(!verified.isEmpty());

@@ -71,6 +71,8 @@ private:
     void onItemChanged(int row, int column);
     void finishApply(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
     QString nameOf(const QString &key) const;
+    static QString labelOf(const Parameter &p);
+    static QString forgetWarning();
 
     DeviceSession *m_session;
     Profile m_profile;
