@@ -19,30 +19,25 @@ namespace {
 
 const QString kFormat = QStringLiteral("stepcom-profile");
 
-QString tr(const char *text, int n = -1)
-{
-    return QCoreApplication::translate("stepcom::ProfileFile", text, nullptr, n);
-}
-
 QString typeName(const QJsonValue &v)
 {
     switch (v.type()) {
     case QJsonValue::Null:
-        return tr("null");
+        return ProfileFile::tr("null");
     case QJsonValue::Bool:
-        return tr("true/false");
+        return ProfileFile::tr("true/false");
     case QJsonValue::Double:
-        return tr("a number");
+        return ProfileFile::tr("a number");
     case QJsonValue::String:
-        return tr("a text \"%1\"").arg(v.toString().left(40));
+        return ProfileFile::tr("a text \"%1\"").arg(v.toString().left(40));
     case QJsonValue::Array:
-        return tr("a list");
+        return ProfileFile::tr("a list");
     case QJsonValue::Object:
-        return tr("an object");
+        return ProfileFile::tr("an object");
     case QJsonValue::Undefined:
         break;
     }
-    return tr("nothing");
+    return ProfileFile::tr("nothing");
 }
 
 // A whole number that fits an int, or nullopt.
@@ -100,10 +95,10 @@ QStringList duplicateKeys(const QByteArray &bytes)
             lastKey = key;
             if (stack.last().keys.contains(key)) {
                 const QString where = stack.last().name;
-                found
-                    << (where.isEmpty()
-                            ? tr("the key \"%1\" appears more than once").arg(key)
-                            : tr("\"%1\": the key \"%2\" appears more than once").arg(where, key));
+                found << (where.isEmpty()
+                              ? ProfileFile::tr("the key \"%1\" appears more than once").arg(key)
+                              : ProfileFile::tr("\"%1\": the key \"%2\" appears more than once")
+                                    .arg(where, key));
             } else {
                 stack.last().keys.insert(key);
             }
@@ -123,12 +118,12 @@ public:
     {
         ProfileParseResult result;
         if (bytes.trimmed().isEmpty()) {
-            result.errors << tr("the file is empty");
+            result.errors << ProfileFile::tr("the file is empty");
             return result;
         }
         if (bytes.size() > ProfileFile::MaxBytes) {
-            result.errors
-                << tr("the file is %1 bytes: far too large for a profile").arg(bytes.size());
+            result.errors << ProfileFile::tr("the file is %1 bytes: far too large for a profile")
+                                 .arg(bytes.size());
             return result;
         }
         QJsonParseError parseError;
@@ -139,14 +134,14 @@ public:
             // Qt's offset is just past the character it could not take; people count that
             // character itself.
             ProfileFile::lineColumn(bytes, parseError.offset - 1, &line, &column);
-            result.errors << tr("not valid JSON at line %1, column %2: %3")
+            result.errors << ProfileFile::tr("not valid JSON at line %1, column %2: %3")
                                  .arg(line)
                                  .arg(column)
                                  .arg(parseError.errorString());
             return result;
         }
         if (!doc.isObject()) {
-            result.errors << tr("the file holds a JSON list, not a profile object");
+            result.errors << ProfileFile::tr("the file holds a JSON list, not a profile object");
             return result;
         }
         m_errors = duplicateKeys(bytes);
@@ -155,7 +150,7 @@ public:
         if (m_errors.size() > ProfileFile::MaxErrors) {
             const qsizetype more = m_errors.size() - ProfileFile::MaxErrors;
             m_errors = m_errors.mid(0, ProfileFile::MaxErrors);
-            m_errors << tr("… and %1 more problems").arg(more);
+            m_errors << ProfileFile::tr("… and %1 more problems").arg(more);
         }
         result.errors = m_errors;
         if (m_errors.isEmpty())
@@ -169,9 +164,9 @@ private:
         for (auto it = o.begin(); it != o.end(); ++it) {
             if (!allowed.contains(it.key()))
                 m_errors << (where.isEmpty()
-                                 ? tr("unknown field \"%1\" (allowed: %2)")
+                                 ? ProfileFile::tr("unknown field \"%1\" (allowed: %2)")
                                        .arg(it.key(), allowed.join(QLatin1String(", ")))
-                                 : tr("\"%1\": unknown field \"%2\" (allowed: %3)")
+                                 : ProfileFile::tr("\"%1\": unknown field \"%2\" (allowed: %3)")
                                        .arg(where, it.key(), allowed.join(QLatin1String(", "))));
         }
     }
@@ -181,25 +176,28 @@ private:
         const QJsonValue format = top.value(QLatin1String("format"));
         if (format.toString() != kFormat) {
             if (format.toString() == QLatin1String("stepcom-register-map"))
-                m_errors << tr("this is a register map, not a profile");
+                m_errors << ProfileFile::tr("this is a register map, not a profile");
             else
-                m_errors << tr("not a StepCom profile: \"format\" must be \"%1\", found %2")
+                m_errors << ProfileFile::tr(
+                                "not a StepCom profile: \"format\" must be \"%1\", found %2")
                                 .arg(kFormat, typeName(format));
             return; // nothing else in it can be trusted
         }
         const auto schema = wholeNumber(top.value(QLatin1String("schema")));
         if (!schema) {
-            m_errors << tr("\"schema\" must be a whole number, found %1")
+            m_errors << ProfileFile::tr("\"schema\" must be a whole number, found %1")
                             .arg(typeName(top.value(QLatin1String("schema"))));
             return;
         }
         if (*schema != ProfileFile::Schema) {
             m_errors << (*schema > ProfileFile::Schema
-                             ? tr("profile schema %1 is newer than this StepCom reads (%2): "
-                                  "update StepCom")
+                             ? ProfileFile::tr(
+                                   "profile schema %1 is newer than this StepCom reads (%2): "
+                                   "update StepCom")
                                    .arg(*schema)
                                    .arg(ProfileFile::Schema)
-                             : tr("profile schema %1 is unknown (this StepCom reads %2)")
+                             : ProfileFile::tr(
+                                   "profile schema %1 is unknown (this StepCom reads %2)")
                                    .arg(*schema)
                                    .arg(ProfileFile::Schema));
             return;
@@ -217,7 +215,8 @@ private:
     bool readMap(const QJsonValue &value, Profile *profile)
     {
         if (!value.isObject()) {
-            m_errors << tr("\"map\" must be an object {\"id\": …, \"version\": …}, found %1")
+            m_errors << ProfileFile::tr(
+                            "\"map\" must be an object {\"id\": …, \"version\": …}, found %1")
                             .arg(typeName(value));
             return false;
         }
@@ -226,17 +225,19 @@ private:
         const QJsonValue id = o.value(QLatin1String("id"));
         const auto version = wholeNumber(o.value(QLatin1String("version")));
         if (!id.isString()) {
-            m_errors << tr("\"map\": \"id\" must be a text, found %1").arg(typeName(id));
+            m_errors
+                << ProfileFile::tr("\"map\": \"id\" must be a text, found %1").arg(typeName(id));
             return false;
         }
         if (!version) {
-            m_errors << tr("\"map\": \"version\" must be a whole number, found %1")
+            m_errors << ProfileFile::tr("\"map\": \"version\" must be a whole number, found %1")
                             .arg(typeName(o.value(QLatin1String("version"))));
             return false;
         }
         if (id.toString() != m_map.id() || *version != m_map.version()) {
-            m_errors << tr("the profile is for register map \"%1\" version %2, but the "
-                           "controller's map is \"%3\" version %4")
+            m_errors << ProfileFile::tr(
+                            "the profile is for register map \"%1\" version %2, but the "
+                            "controller's map is \"%3\" version %4")
                             .arg(id.toString().left(60))
                             .arg(*version)
                             .arg(m_map.id())
@@ -251,7 +252,8 @@ private:
     void readMetadata(const QJsonValue &value, Profile *profile)
     {
         if (!value.isObject()) {
-            m_errors << tr("\"metadata\" must be an object, found %1").arg(typeName(value));
+            m_errors
+                << ProfileFile::tr("\"metadata\" must be an object, found %1").arg(typeName(value));
             return;
         }
         const QJsonObject o = value.toObject();
@@ -265,7 +267,7 @@ private:
             if (v.isUndefined())
                 return;
             if (!v.isString())
-                m_errors << tr("\"metadata\": \"%1\" must be a text, found %2")
+                m_errors << ProfileFile::tr("\"metadata\": \"%1\" must be a text, found %2")
                                 .arg(QLatin1String(field), typeName(v));
             else
                 *out = v.toString();
@@ -278,8 +280,8 @@ private:
         if (!created.isEmpty()) {
             profile->created = QDateTime::fromString(created, Qt::ISODate);
             if (!profile->created.isValid())
-                m_errors << tr("\"metadata\": \"created\" is not a date and time "
-                               "(2024-05-31T14:02:00Z): \"%1\"")
+                m_errors << ProfileFile::tr("\"metadata\": \"created\" is not a date and time "
+                                            "(2024-05-31T14:02:00Z): \"%1\"")
                                 .arg(created.left(40));
         }
         auto link = [&](const char *field, const char *key, int *out) {
@@ -289,8 +291,9 @@ private:
             const auto n = wholeNumber(v);
             const Parameter *p = m_map.find(QLatin1String(key));
             if (!n || (p && !p->checkRaw(*n).isEmpty()))
-                m_errors << tr("\"metadata\": \"%1\" must be a %2, found %3")
-                                .arg(QLatin1String(field), p ? p->rangeText() : tr("whole number"),
+                m_errors << ProfileFile::tr("\"metadata\": \"%1\" must be a %2, found %3")
+                                .arg(QLatin1String(field),
+                                     p ? p->rangeText() : ProfileFile::tr("whole number"),
                                      v.isDouble() ? QString::number(v.toDouble(), 'g', 17)
                                                   : typeName(v));
             else
@@ -303,8 +306,8 @@ private:
     void readValues(const QJsonValue &value, Profile *profile)
     {
         if (!value.isObject()) {
-            m_errors
-                << tr("\"values\" must be an object of key: value, found %1").arg(typeName(value));
+            m_errors << ProfileFile::tr("\"values\" must be an object of key: value, found %1")
+                            .arg(typeName(value));
             return;
         }
         const QJsonObject o = value.toObject();
@@ -312,20 +315,22 @@ private:
             const QString key = it.key();
             const Parameter *p = m_map.find(key);
             if (!p) {
-                m_errors << tr("unknown parameter \"%1\" (not in register map \"%2\")")
+                m_errors << ProfileFile::tr("unknown parameter \"%1\" (not in register map \"%2\")")
                                 .arg(key.left(60), m_map.identity());
                 continue;
             }
             if (!p->writable()) {
-                m_errors << (p->isCoil() ? tr("\"%1\" is a command, not a setting").arg(key)
-                                         : tr("\"%1\" is read-only (a status value), not a "
-                                              "setting")
-                                               .arg(key));
+                m_errors << (p->isCoil()
+                                 ? ProfileFile::tr("\"%1\" is a command, not a setting").arg(key)
+                                 : ProfileFile::tr("\"%1\" is read-only (a status value), not a "
+                                                   "setting")
+                                       .arg(key));
                 continue;
             }
             const QJsonValue v = it.value();
             if (!v.isDouble()) {
-                m_errors << tr("%1: expected a number, found %2").arg(key, typeName(v));
+                m_errors
+                    << ProfileFile::tr("%1: expected a number, found %2").arg(key, typeName(v));
                 continue;
             }
             QString why;
@@ -338,7 +343,7 @@ private:
         }
         for (const Parameter *p : Profile::profileParameters(m_map, false)) {
             if (!o.contains(p->key))
-                m_errors << tr("missing \"%1\" (%2)").arg(p->key, p->label.en);
+                m_errors << ProfileFile::tr("missing \"%1\" (%2)").arg(p->key, p->label.en);
         }
     }
 
@@ -368,7 +373,7 @@ ProfileParseResult ProfileFile::parse(const QByteArray &bytes, const RegisterMap
 {
     if (!map.isValid()) {
         ProfileParseResult r;
-        r.errors << tr("no register map to check the profile against");
+        r.errors << ProfileFile::tr("no register map to check the profile against");
         return r;
     }
     return Parser(map).run(bytes);
@@ -379,15 +384,17 @@ ProfileParseResult ProfileFile::load(const QString &path, const RegisterMap &map
     ProfileParseResult r;
     QFile file(path);
     if (!QFileInfo(path).isFile()) {
-        r.errors << tr("%1: no such file").arg(path);
+        r.errors << ProfileFile::tr("%1: no such file").arg(path);
         return r;
     }
     if (file.size() > MaxBytes) {
-        r.errors << tr("%1: %2 bytes, far too large for a profile").arg(path).arg(file.size());
+        r.errors << ProfileFile::tr("%1: %2 bytes, far too large for a profile")
+                        .arg(path)
+                        .arg(file.size());
         return r;
     }
     if (!file.open(QIODevice::ReadOnly)) {
-        r.errors << tr("%1: %2").arg(path, file.errorString());
+        r.errors << ProfileFile::tr("%1: %2").arg(path, file.errorString());
         return r;
     }
     r = parse(file.readAll(), map);
@@ -427,15 +434,15 @@ QString ProfileFile::save(const QString &path, const Profile &profile, const Reg
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return tr("cannot write %1: %2").arg(path, file.errorString());
+        return ProfileFile::tr("cannot write %1: %2").arg(path, file.errorString());
     const QByteArray json = toJson(profile, map);
     if (file.write(json) != json.size()) {
         const QString why = file.errorString();
         file.cancelWriting();
-        return tr("cannot write %1: %2").arg(path, why);
+        return ProfileFile::tr("cannot write %1: %2").arg(path, why);
     }
     if (!file.commit())
-        return tr("cannot write %1: %2").arg(path, file.errorString());
+        return ProfileFile::tr("cannot write %1: %2").arg(path, file.errorString());
     return {};
 }
 

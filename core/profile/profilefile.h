@@ -3,6 +3,7 @@
 #include "profile/profile.h"
 
 #include <QByteArray>
+#include <QCoreApplication>
 #include <QStringList>
 
 #include <optional>
@@ -24,6 +25,7 @@ struct ProfileParseResult
 // identity, metadata and the values in engineering units keyed by map keys.
 class ProfileFile
 {
+    Q_DECLARE_TR_FUNCTIONS(stepcom::ProfileFile)
 public:
     static constexpr int Schema = 1;
     static constexpr qsizetype MaxBytes = 1024 * 1024; // a real profile is a few kB
