@@ -5,6 +5,7 @@
 
 #include <QBuffer>
 #include <QFileInfo>
+#include <QFont>
 #include <QPdfWriter>
 #include <QSaveFile>
 #include <QTextDocument>
@@ -228,6 +229,15 @@ QImage CommissioningReport::picture() const
 std::unique_ptr<QTextDocument> CommissioningReport::document() const
 {
     auto doc = std::make_unique<QTextDocument>();
+    if (m_in.locale.startsWith(QLatin1String("zh"))) {
+        // One CJK font for every cell: mixed fallback fonts give rows of uneven height, and
+        // QTextDocument then splits a table row across two pages.
+        QFont font = doc->defaultFont();
+        font.setFamilies({QStringLiteral("Noto Sans CJK SC"), QStringLiteral("Source Han Sans SC"),
+                          QStringLiteral("WenQuanYi Micro Hei"), QStringLiteral("Microsoft YaHei"),
+                          QStringLiteral("PingFang SC")});
+        doc->setDefaultFont(font);
+    }
     doc->addResource(QTextDocument::ImageResource, QUrl(kImageName), picture());
     doc->setHtml(html(kImageName));
     return doc;
