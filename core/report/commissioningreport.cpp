@@ -6,6 +6,8 @@
 #include <QBuffer>
 #include <QFileInfo>
 #include <QFont>
+#include <QFontInfo>
+#include <QFontMetricsF>
 #include <QPdfWriter>
 #include <QSaveFile>
 #include <QTextDocument>
@@ -230,13 +232,19 @@ std::unique_ptr<QTextDocument> CommissioningReport::document() const
 {
     auto doc = std::make_unique<QTextDocument>();
     if (m_in.locale.startsWith(QLatin1String("zh"))) {
-        // One CJK font for every cell: mixed fallback fonts give rows of uneven height, and
-        // QTextDocument then splits a table row across two pages.
+        // Han characters from a Simplified Chinese font (the system's fallback may pick the
+        // Japanese glyph variants); Latin text and digits stay in the default font, whose
+        // glyphs PDF readers map back to text reliably.
         QFont font = doc->defaultFont();
-        font.setFamilies({QStringLiteral("Noto Sans CJK SC"), QStringLiteral("Source Han Sans SC"),
+        font.setFamilies({QFontInfo(font).family(), QStringLiteral("Noto Sans CJK SC"),
+                          QStringLiteral("Source Han Sans SC"),
                           QStringLiteral("WenQuanYi Micro Hei"), QStringLiteral("Microsoft YaHei"),
                           QStringLiteral("PingFang SC")});
         doc->setDefaultFont(font);
+        // Latin and Han lines differ in height; one fixed line height keeps every cell of a row
+        // equal, so a row is never split across two pages.
+        doc->setDefaultStyleSheet(QStringLiteral("td, th { line-height: %1px; }")
+                                      .arg(qRound(QFontMetricsF(font).height() * 1.25)));
     }
     doc->addResource(QTextDocument::ImageResource, QUrl(kImageName), picture());
     doc->setHtml(html(kImageName));
