@@ -1,5 +1,6 @@
 // stepcom-sim: the simulated controller as a program of its own.
 #include "consolereader.h"
+#include "i18n/translators.h"
 #include "signalwatcher.h"
 #include "sim/simcommandline.h"
 #include "sim/simconsole.h"
@@ -20,6 +21,16 @@ int main(int argc, char *argv[])
     QTextStream out(stdout);
     QTextStream err(stderr);
 
+    // The language first: the help and every message are translated when they are built.
+    Translators translators;
+    const QString language = Translators::languageFromArguments(QCoreApplication::arguments());
+    if (!Translators::available().contains(language)) {
+        err << QStringLiteral("stepcom-sim: ") << Translators::unknownLanguageMessage(language)
+            << Qt::endl;
+        return 2;
+    }
+    translators.install(language);
+
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
         "stepcom-sim",
@@ -34,6 +45,7 @@ int main(int argc, char *argv[])
             "stepcom-sim",
             "Read console commands from standard input even when it is not a terminal."));
     parser.addOption(consoleOption);
+    parser.addOption(Translators::languageOption());
     parser.process(app);
 
     SimOptions options;

@@ -110,7 +110,10 @@ bool SimWorker::openRtu(QString *error)
     return true;
 #else
     if (error)
-        *error = tr("Modbus RTU on a pseudo-terminal is not available on this system; use --tcp");
+        *error = tr("Modbus RTU on a pseudo-terminal (--pty, --link) is not available on this "
+                    "system (pseudo-terminals are Unix only). Use Modbus TCP instead: "
+                    "stepcom-sim --tcp 5020, then connect StepCom or stepcomctl with --tcp "
+                    "127.0.0.1:5020.");
     return false;
 #endif
 }
