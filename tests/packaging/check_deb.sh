@@ -55,6 +55,14 @@ done
 ! grep -q 'stepcom-bench\|stepcom-svg2png\|/tst_\|\.a$\|/include/' <<<"$contents" \
     || fail "the package holds build-only files: $(grep 'stepcom-bench\|stepcom-svg2png\|/tst_\|\.a$\|/include/' <<<"$contents")"
 
+# `cmake --install` into a DESTDIR installs the same files as the package.
+DESTDIR="$scratch/destdir" cmake --install "$build" --prefix /usr >"$scratch/install.log" 2>&1 \
+    || { cat "$scratch/install.log" >&2; fail "cmake --install into a DESTDIR failed"; }
+installed=$(cd "$scratch/destdir" && find . -type f | sort)
+packaged=$(dpkg-deb -c "$deb" | awk '$1 !~ /^d/ {print $6}' | sort)
+[[ $installed == "$packaged" ]] \
+    || fail "cmake --install and the package differ: $(diff <(echo "$installed") <(echo "$packaged"))"
+
 # Unpacked into a scratch root, the files are what they claim to be and the programs run.
 root=$scratch/root
 dpkg -x "$deb" "$root"
