@@ -9,7 +9,7 @@ set(CPACK_PACKAGE_NAME stepcom)
 set(CPACK_PACKAGE_VENDOR "StepCom contributors")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "commissioning tool for a 2-axis Modbus RTU stepper controller")
-set(CPACK_PACKAGE_DESCRIPTION
+string(CONCAT CPACK_PACKAGE_DESCRIPTION
     "StepCom finds a 2-axis stepper-motor controller on an RS-485/RS-232 line (Modbus RTU) or\n"
     "behind a Modbus TCP gateway, reads and sets each motor's parameters, limit and home\n"
     "inputs and homing order, jogs and homes the axes, runs arc and line interpolation, and\n"

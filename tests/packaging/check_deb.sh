@@ -32,6 +32,11 @@ field() { dpkg-deb -f "$deb" "$1"; }
 [[ $(field Package) == stepcom ]] || fail "Package is '$(field Package)'"
 [[ $(field Version) == "$version" ]] || fail "Version is '$(field Version)', not $version"
 [[ $(field Architecture) == "$arch" ]] || fail "Architecture is '$(field Architecture)'"
+description=$(field Description)
+[[ $description == "commissioning tool for a 2-axis Modbus RTU stepper controller"$'\n'* ]] \
+    || fail "the Description's synopsis is wrong: $description"
+[[ $description != *";"* ]] || fail "the Description holds a CMake list separator: $description"
+grep -qx '  \.' <<<"$(dpkg-deb -I "$deb")" || fail "the Description's empty line is not ' .'"
 depends=$(field Depends)
 for lib in libc6 libqt6core6 libqt6serialbus6 libqt6serialport6 libqt6network6 libqt6gui6 \
            libqt6widgets6 libqt6svg6 libqt6charts6; do
@@ -67,8 +72,8 @@ packaged=$(dpkg-deb -c "$deb" | awk '$1 !~ /^d/ {print $6}' | sort)
 root=$scratch/root
 dpkg -x "$deb" "$root"
 for s in "${sizes[@]}"; do
-    file -b "$root/usr/share/icons/hicolor/${s}x${s}/apps/stepcom.png" \
-        | grep -q "PNG image data, $s x $s," || fail "the ${s}x${s} icon is not a $s px PNG"
+    grep -q "PNG image data, $s x $s," <<<"$(file -b "$root/usr/share/icons/hicolor/${s}x${s}/apps/stepcom.png")" \
+        || fail "the ${s}x${s} icon is not a $s px PNG"
 done
 for p in stepcomctl stepcom-sim; do
     page=$(gzip -dc "$root/usr/share/man/man1/$p.1.gz")
