@@ -992,7 +992,7 @@
     <message numerus="yes">
         <source>%n value(s) differ (controller -&gt; profile)</source>
         <translation>
-            <numerusform>%n value differ (controller -&gt; profile)</numerusform>
+            <numerusform>%n value differs (controller -&gt; profile)</numerusform>
             <numerusform>%n values differ (controller -&gt; profile)</numerusform>
         </translation>
     </message>
@@ -1015,7 +1015,7 @@
     <message numerus="yes">
         <source>Write these %n value(s) to the controller? [y/N] </source>
         <translation>
-            <numerusform>Write these %n value to the controller? [y/N] </numerusform>
+            <numerusform>Write %n value to the controller? [y/N] </numerusform>
             <numerusform>Write these %n values to the controller? [y/N] </numerusform>
         </translation>
     </message>
@@ -3323,7 +3323,7 @@ Every other master on the bus must use the new settings too, and no other device
     <message numerus="yes">
         <source>%n value(s) are not known yet (read all first): %1</source>
         <translation>
-            <numerusform>%n value are not known yet (read all first): %1</numerusform>
+            <numerusform>%n value is not known yet (read all first): %1</numerusform>
             <numerusform>%n values are not known yet (read all first): %1</numerusform>
         </translation>
     </message>
@@ -3380,7 +3380,7 @@ Every other master on the bus must use the new settings too, and no other device
     <message numerus="yes">
         <source>%n value(s) differ; %1 checked to be written.</source>
         <translation>
-            <numerusform>%n value differ; %1 checked to be written.</numerusform>
+            <numerusform>%n value differs; %1 checked to be written.</numerusform>
             <numerusform>%n values differ; %1 checked to be written.</numerusform>
         </translation>
     </message>
@@ -3391,7 +3391,7 @@ Every other master on the bus must use the new settings too, and no other device
     <message numerus="yes">
         <source>Writing %n value(s), then reading them back…</source>
         <translation>
-            <numerusform>Writing %n value, then reading them back…</numerusform>
+            <numerusform>Writing %n value, then reading it back…</numerusform>
             <numerusform>Writing %n values, then reading them back…</numerusform>
         </translation>
     </message>
@@ -3815,6 +3815,26 @@ Every other master on the bus must use the new settings too, and no other device
         <source>--travel: &apos;%1&apos; must be a positive distance</source>
         <translation>--travel: &apos;%1&apos; must be a positive distance</translation>
     </message>
+    <message>
+        <source>Serve Modbus RTU on the serial PORT (e.g. COM10, one end of a com0com pair, or /dev/ttyUSB1) at the device&apos;s baud rate, 8N1.</source>
+        <translation>Serve Modbus RTU on the serial PORT (e.g. COM10, one end of a com0com pair, or /dev/ttyUSB1) at the device&apos;s baud rate, 8N1.</translation>
+    </message>
+    <message>
+        <source>PORT</source>
+        <translation>PORT</translation>
+    </message>
+    <message>
+        <source>--serial: no port given</source>
+        <translation>--serial: no port given</translation>
+    </message>
+    <message>
+        <source>--serial: give either --serial or --pty/--link, not both</source>
+        <translation>--serial: give either --serial or --pty/--link, not both</translation>
+    </message>
+    <message>
+        <source>--corrupt-crc works on the pseudo-terminal only, not with --serial</source>
+        <translation>--corrupt-crc works on the pseudo-terminal only, not with --serial</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimConsole</name>
@@ -4008,12 +4028,16 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>cannot open the pseudo-terminal: %1</translation>
     </message>
     <message>
-        <source>Modbus RTU on a pseudo-terminal is not available on this system; use --tcp</source>
-        <translation>Modbus RTU on a pseudo-terminal is not available on this system; use --tcp</translation>
-    </message>
-    <message>
         <source>cannot re-create the port: %1</source>
         <translation>cannot re-create the port: %1</translation>
+    </message>
+    <message>
+        <source>Modbus RTU on a pseudo-terminal (--pty, --link) is not available on this system (pseudo-terminals are Unix only). Use Modbus TCP instead: stepcom-sim --tcp 5020, then connect StepCom or stepcomctl with --tcp 127.0.0.1:5020; or serve a serial port with --serial, e.g. one end of a com0com virtual port pair (--serial COM10, StepCom on COM11).</source>
+        <translation>Modbus RTU on a pseudo-terminal (--pty, --link) is not available on this system (pseudo-terminals are Unix only). Use Modbus TCP instead: stepcom-sim --tcp 5020, then connect StepCom or stepcomctl with --tcp 127.0.0.1:5020; or serve a serial port with --serial, e.g. one end of a com0com virtual port pair (--serial COM10, StepCom on COM11).</translation>
+    </message>
+    <message>
+        <source>cannot open the serial port %1: %2</source>
+        <translation>cannot open the serial port %1: %2</translation>
     </message>
 </context>
 <context>
@@ -4170,6 +4194,21 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Could not save %1: %2</source>
         <translation>Could not save %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::Translators</name>
+    <message>
+        <source>Language of the program: en or zh_CN (default: the system&apos;s, from LANGUAGE, LC_ALL, LC_MESSAGES or LANG).</source>
+        <translation>Language of the program: en or zh_CN (default: the system&apos;s, from LANGUAGE, LC_ALL, LC_MESSAGES or LANG).</translation>
+    </message>
+    <message>
+        <source>language</source>
+        <translation>language</translation>
+    </message>
+    <message>
+        <source>unknown language &apos;%1&apos; (known: %2)</source>
+        <translation>unknown language &apos;%1&apos; (known: %2)</translation>
     </message>
 </context>
 <context>

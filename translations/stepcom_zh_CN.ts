@@ -3793,6 +3793,26 @@ Every other master on the bus must use the new settings too, and no other device
         <source>--travel: &apos;%1&apos; must be a positive distance</source>
         <translation>--travel：“%1”必须是正的距离值</translation>
     </message>
+    <message>
+        <source>Serve Modbus RTU on the serial PORT (e.g. COM10, one end of a com0com pair, or /dev/ttyUSB1) at the device&apos;s baud rate, 8N1.</source>
+        <translation>在串口 PORT 上提供 Modbus RTU 服务（例如 COM10、com0com 虚拟串口对的一端或 /dev/ttyUSB1），使用设备的波特率，8N1。</translation>
+    </message>
+    <message>
+        <source>PORT</source>
+        <translation>端口</translation>
+    </message>
+    <message>
+        <source>--serial: no port given</source>
+        <translation>--serial：未指定端口</translation>
+    </message>
+    <message>
+        <source>--serial: give either --serial or --pty/--link, not both</source>
+        <translation>--serial：只能指定 --serial 或 --pty/--link 之一，不能同时指定</translation>
+    </message>
+    <message>
+        <source>--corrupt-crc works on the pseudo-terminal only, not with --serial</source>
+        <translation>--corrupt-crc 仅适用于伪终端，不能与 --serial 同时使用</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimConsole</name>
@@ -3986,12 +4006,16 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>无法打开伪终端：%1</translation>
     </message>
     <message>
-        <source>Modbus RTU on a pseudo-terminal is not available on this system; use --tcp</source>
-        <translation>此系统不支持在伪终端上运行 Modbus RTU；请使用 --tcp</translation>
-    </message>
-    <message>
         <source>cannot re-create the port: %1</source>
         <translation>无法重新创建端口：%1</translation>
+    </message>
+    <message>
+        <source>Modbus RTU on a pseudo-terminal (--pty, --link) is not available on this system (pseudo-terminals are Unix only). Use Modbus TCP instead: stepcom-sim --tcp 5020, then connect StepCom or stepcomctl with --tcp 127.0.0.1:5020; or serve a serial port with --serial, e.g. one end of a com0com virtual port pair (--serial COM10, StepCom on COM11).</source>
+        <translation>此系统不支持在伪终端上运行 Modbus RTU（--pty、--link）（伪终端仅在 Unix 上可用）。请改用 Modbus TCP：stepcom-sim --tcp 5020，然后用 --tcp 127.0.0.1:5020 连接 StepCom 或 stepcomctl；或者用 --serial 在串口上提供服务，例如 com0com 虚拟串口对的一端（--serial COM10，StepCom 连接 COM11）。</translation>
+    </message>
+    <message>
+        <source>cannot open the serial port %1: %2</source>
+        <translation>无法打开串口 %1：%2</translation>
     </message>
 </context>
 <context>
@@ -4148,6 +4172,21 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::Translators</name>
+    <message>
+        <source>Language of the program: en or zh_CN (default: the system&apos;s, from LANGUAGE, LC_ALL, LC_MESSAGES or LANG).</source>
+        <translation>程序语言：en 或 zh_CN（默认：系统语言，取自 LANGUAGE、LC_ALL、LC_MESSAGES 或 LANG）。</translation>
+    </message>
+    <message>
+        <source>language</source>
+        <translation>语言</translation>
+    </message>
+    <message>
+        <source>unknown language &apos;%1&apos; (known: %2)</source>
+        <translation>未知语言“%1”（可用：%2）</translation>
     </message>
 </context>
 <context>

@@ -97,7 +97,7 @@ private Q_SLOTS:
                               QStringLiteral("Line 3"), QStringLiteral("--notes"),
                               QStringLiteral("after the gearbox change")});
         QVERIFY2(dump.exitCode == 0, qPrintable(dump.err));
-        QVERIFY(dump.out.contains(QStringLiteral("saved 44 parameter(s)")));
+        QVERIFY(dump.out.contains(QStringLiteral("saved 44 parameters")));
         const ProfileParseResult saved = ProfileFile::load(file("a.json"), RegisterMap::builtin());
         QVERIFY2(saved.ok(), qPrintable(saved.errors.join(QLatin1Char('\n'))));
         QCOMPARE(saved.profile->name, QStringLiteral("Line 3"));
@@ -121,7 +121,7 @@ private Q_SLOTS:
         QVERIFY2(r.out.contains(QStringLiteral("motor1.speed: 450 rpm -> 300 rpm")),
                  qPrintable(r.out));
         QVERIFY(r.out.contains(QStringLiteral("arc.direction: Clockwise -> Counter-clockwise")));
-        QVERIFY(r.out.contains(QStringLiteral("2 value(s) differ")));
+        QVERIFY(r.out.contains(QStringLiteral("2 values differ")));
         QCOMPARE(writeFrames(device->requests()).size(), 0);
     }
 
@@ -189,7 +189,7 @@ private Q_SLOTS:
         device->registers[5] = 450;
         const Run r = ctl({QStringLiteral("apply"), machineA()}, answer);
         QCOMPARE(r.exitCode, exitCode);
-        QVERIFY(r.out.contains(QStringLiteral("Write these 1 value(s) to the controller? [y/N]")));
+        QVERIFY(r.out.contains(QStringLiteral("Write 1 value to the controller? [y/N]")));
         QCOMPARE(writeFrames(device->requests()).size(), writes);
         QCOMPARE(device->registers[5], quint16(writes ? 300 : 450));
         if (!writes)
