@@ -52,8 +52,6 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("name"), tr("dump, report: name of the profile or the machine."),
          tr("text")},
         {QStringLiteral("notes"), tr("dump, report: notes to record."), tr("text")},
-        {QStringLiteral("lang"), tr("report: language of the report, en or zh_CN (default en)."),
-         tr("language"), QStringLiteral("en")},
         {QStringLiteral("count"), tr("monitor: number of samples (default: until stopped)."),
          tr("n")},
         {QStringLiteral("interval"),
@@ -121,9 +119,6 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.includeLink = parser.isSet(QStringLiteral("include-link"));
     o.name = parser.value(QStringLiteral("name"));
     o.notes = parser.value(QStringLiteral("notes"));
-    o.language = parser.value(QStringLiteral("lang"));
-    if (o.language != QLatin1String("en") && o.language != QLatin1String("zh_CN"))
-        return tr("--lang: '%1' is not en or zh_CN").arg(o.language);
     const QStringList positional = parser.positionalArguments();
     if (positional.isEmpty())
         return tr("no command given (params, read, write, command, monitor, dump, diff, apply, "

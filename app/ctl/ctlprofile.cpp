@@ -10,7 +10,6 @@
 
 #include <QCoreApplication>
 #include <QFileInfo>
-#include <QTranslator>
 
 namespace stepcom {
 
@@ -246,15 +245,7 @@ void CtlRunner::runReport()
         fail(UsageError, tr("%1: the report is written as .pdf or .html").arg(path));
         return;
     }
-    if (m_options.language != QLatin1String("en")) {
-        // The translations are compiled into stepcom_core (:/i18n), as for the window.
-        auto *translator = new QTranslator(this);
-        if (!translator->load(QStringLiteral(":/i18n/stepcom_%1.qm").arg(m_options.language))) {
-            fail(UsageError, tr("no %1 translation is built in").arg(m_options.language));
-            return;
-        }
-        QCoreApplication::installTranslator(translator);
-    }
+    // The report speaks the program's language (--lang or the environment), installed in main().
     connectThen([this, path] {
         m_device->readAll([this, path](const ReadOutcome &r) {
             if (!r.ok) {

@@ -23,6 +23,7 @@ bool wantsReport(int argc, char *argv[])
         args << QString::fromLocal8Bit(argv[i]);
     QCommandLineParser parser;
     CtlOptions::addOptions(parser);
+    parser.addOption(Translators::languageOption());
     parser.addHelpOption();
     parser.addVersionOption();
     return parser.parse(args) && parser.positionalArguments().value(0) == QLatin1String("report");
@@ -97,6 +98,7 @@ int main(int argc, char *argv[])
         err << QStringLiteral("stepcomctl: ") << problem << Qt::endl;
         return CtlRunner::UsageError;
     }
+    options.language = language; // the report is written in the program's language
     RegisterMap map = RegisterMap::builtin();
     if (!options.mapFile.isEmpty()) {
         QStringList errors;

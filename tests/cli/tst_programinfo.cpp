@@ -106,6 +106,8 @@ private Q_SLOTS:
                  qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("--lang <language>")), qPrintable(r.out));
         QVERIFY2(!hasHan(r.out), qPrintable(r.out));
+        // Two parts adding the same option make QCommandLineParser complain on stderr.
+        QVERIFY2(!r.err.contains(QStringLiteral("QCommandLineParser")), qPrintable(r.err));
     }
 
     // The help in Chinese, however the environment or the command line asks for it.
