@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what StepCom needs from Debian/Ubuntu packages, only what is missing.
 #   scripts/deps.sh          build and run
-#   scripts/deps.sh --test   also the test peers (mbpoll, socat, pymodbus, Xvfb)
+#   scripts/deps.sh --test   also the test peers (mbpoll, socat, pymodbus, Xvfb) and clang with
+#                            libFuzzer (scripts/fuzz.sh)
 set -euo pipefail
 
 packages=(build-essential cmake ninja-build pkg-config
@@ -10,7 +11,7 @@ packages=(build-essential cmake ninja-build pkg-config
           qt6-translations-l10n libgl-dev
           qt6-qpa-plugins fonts-noto-cjk)
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(mbpoll socat python3-pymodbus xvfb xauth dpkg-dev file)
+    packages+=(mbpoll socat python3-pymodbus xvfb xauth dpkg-dev file clang libclang-rt-dev)
 fi
 
 missing=()

@@ -54,6 +54,9 @@ void checkHolding(const RegisterMap &map, const Parameter &p)
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
+    // The real map is built in (also in the standalone fuzz build, for the profile target).
+    static const bool builtinLoads = RegisterMap::builtin().isValid();
+    STEPCOM_FUZZ_CHECK(builtinLoads, QStringLiteral("the built-in map does not load"));
     QStringList errors;
     const std::optional<RegisterMap> map = RegisterMap::fromJson(fuzz::bytes(data, size), &errors);
     for (const QString &e : std::as_const(errors))
