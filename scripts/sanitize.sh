@@ -14,8 +14,8 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DSTEPCOM_SANITIZE=ON \
 cmake --build "$build" --parallel "${JOBS:-$(nproc)}"
 
 # halt_on_error + abort: the first report ends the test with a failure and a stack trace.
-# Leaks: ours are real findings; the suppressions file names only third-party libraries
-# (fontconfig, the GL/X stacks Qt loads) whose caches live until exit on purpose.
+# Leaks: ours are real findings; tests/sanitizers/lsan.supp may name only third-party
+# libraries whose caches live until exit on purpose (none needed so far).
 supp="$PWD/tests/sanitizers"
 export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1:detect_odr_violation=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$supp/ubsan.supp${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
