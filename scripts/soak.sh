@@ -2,7 +2,7 @@
 # The long soak: the simulator on a bad line (lost, corrupt, late and exception answers, a
 # hang-up every few hundred answers) for STEPCOM_SOAK_TRANSACTIONS Modbus transactions while
 # polling, jogging and writing. See docs/testing.md.
-#   scripts/soak.sh                 20000 transactions (about 20 minutes)
+#   scripts/soak.sh                 20000 transactions (about 22 minutes)
 #   scripts/soak.sh 100000 [seed]   longer, other fault dice
 set -euo pipefail
 cd "$(dirname "$0")/.."
