@@ -6,3 +6,13 @@ scripts/deps.sh --test
 scripts/build.sh
 build=${BUILD_DIR:-build}
 ctest --test-dir "$build" --output-on-failure --timeout 300 -j 2 "$@"
+[[ $# -gt 0 ]] && exit 0 # a chosen subset of the tests: nothing more
+
+# The fuzz targets for a minute each (docs/testing.md); STEPCOM_TEST_FUZZ=0 leaves them out.
+if [[ ${STEPCOM_TEST_FUZZ:-1} != 0 ]]; then
+    FUZZ_SECONDS=${FUZZ_SECONDS:-60} scripts/fuzz.sh
+fi
+# The whole suite again under ASan + UBSan: a second full build, so only on request.
+if [[ ${STEPCOM_TEST_SANITIZE:-0} != 0 ]]; then
+    scripts/sanitize.sh
+fi

@@ -141,6 +141,7 @@ void DeviceSession::write(const QList<ParameterWrite> &writes,
     const LinkSettings before = m_link->settings();
     m_client->write(writes, [this, writes, before, done](const WriteOutcome &outcome) {
         m_store->applyWriteOutcome(writes, outcome);
+        readBackUncertain(writes, outcome);
         if (outcome.ok) {
             say(Severity::Info,
                 tr("Wrote and verified %n parameter(s)", nullptr, int(outcome.written.size())));
@@ -157,6 +158,24 @@ void DeviceSession::write(const QList<ParameterWrite> &writes,
             done(outcome);
         Q_EMIT writeFinished(outcome);
     });
+}
+
+void DeviceSession::readBackUncertain(const QList<ParameterWrite> &writes,
+                                      const WriteOutcome &outcome)
+{
+    QList<const Parameter *> uncertain; // sent, but failed: the store forgot their value
+    for (const ParameterWrite &w : writes) {
+        const QString &key = w.parameter->key;
+        bool mismatched = false;
+        for (const WriteMismatch &m : outcome.mismatches)
+            mismatched = mismatched || m.key == key;
+        if (!outcome.written.contains(key) && !outcome.notWritten.contains(key) && !mismatched)
+            uncertain << w.parameter;
+    }
+    if (uncertain.isEmpty() || !m_link->isConnected())
+        return;
+    m_client->read(uncertain, Priority::Command,
+                   [this](const ReadOutcome &r) { m_store->setDeviceValues(r.values); });
 }
 
 void DeviceSession::command(const QString &key)

@@ -72,6 +72,9 @@ Q_SIGNALS:
 
 private:
     void say(Severity severity, const QString &text);
+    // After a failed write, read back what the controller holds for the keys whose request went
+    // out without a good answer.
+    void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
 
     ModbusLink *m_link;
     DeviceClient *m_client;

@@ -147,6 +147,10 @@ void ParameterStore::applyWriteOutcome(const QList<ParameterWrite> &writes,
                 e.error = QCoreApplication::translate("stepcom::ParameterStore",
                                                       "not written: an earlier write failed");
             } else {
+                // Sent, but no good answer: a lost or late answer may well mean the controller
+                // took the value. What it holds is unknown until read again (DeviceSession
+                // reads it back), never the old value by assumption.
+                e.device.reset();
                 e.error = outcome.errors.isEmpty() ? QStringLiteral("write failed")
                                                    : outcome.errors.first();
             }

@@ -5,6 +5,7 @@
 #include <QRegularExpression>
 
 #include <algorithm>
+#include <cmath>
 
 namespace stepcom {
 
@@ -12,9 +13,26 @@ namespace {
 
 const QString kFormat = QStringLiteral("stepcom-register-map");
 
+// Beyond 2^53 a double no longer holds every whole number, and beyond 2^63 converting it to an
+// integer is undefined; no number in a map comes anywhere near.
+constexpr double kLargestWhole = 9007199254740992.0; // 2^53
+
 bool isWholeNumber(const QJsonValue &v)
 {
-    return v.isDouble() && v.toDouble() == double(qint64(v.toDouble()));
+    if (!v.isDouble())
+        return false;
+    const double d = v.toDouble();
+    return std::fabs(d) <= kLargestWhole && d == std::trunc(d);
+}
+
+// A number from the map times its scale as a raw value, saturated far beyond any register's
+// width (so 1e300 is "does not fit", never an undefined conversion).
+qint64 scaledRaw(const QJsonValue &v, int scale)
+{
+    const double d = v.toDouble() * scale;
+    if (!(std::fabs(d) <= kLargestWhole)) // NaN included
+        return d < 0 ? -qint64(kLargestWhole) : qint64(kLargestWhole);
+    return qint64(std::llround(d));
 }
 
 QString hex(quint16 a)
@@ -211,7 +229,8 @@ void RegisterMapLoader::loadEnums(const QJsonValue &value)
             EnumValue v;
             if (!isWholeNumber(item.value(QStringLiteral("value"))))
                 error(itemWhere, QStringLiteral("value"), QStringLiteral("must be a whole number"));
-            v.value = qint64(item.value(QStringLiteral("value")).toDouble());
+            else
+                v.value = qint64(item.value(QStringLiteral("value")).toDouble());
             if (auto label = text(item, QStringLiteral("label"), itemWhere, true))
                 v.label = *label;
             values << v;
@@ -308,18 +327,20 @@ void RegisterMapLoader::loadEntry(const QJsonObject &e, const QString &where, co
         error(where, QStringLiteral("plc"), QStringLiteral("missing or not a whole number"));
         return;
     }
-    p.plc = plcValue.toInt() + (n > 0 ? (n - 1) * stride : 0);
+    // In 64 bits: a large plc or stride must give "outside", not an overflow.
+    const qint64 plc = qint64(plcValue.toDouble()) + (n > 0 ? qint64(n - 1) * stride : 0);
     const int base = p.isHolding() ? 40001 : 1;
     const int last = p.isHolding() ? 49999 : 9999;
-    if (p.plc < base || p.plc > last) {
+    if (plc < base || plc > last) {
         error(where, QStringLiteral("plc"),
               QStringLiteral("%1 is outside %2-%3 for a %4")
-                  .arg(p.plc)
+                  .arg(plc)
                   .arg(base, 5, 10, QLatin1Char('0'))
                   .arg(last, 5, 10, QLatin1Char('0'))
                   .arg(kind));
         return;
     }
+    p.plc = int(plc);
     p.address = quint16(p.plc - base);
 
     p.group = e.value(QStringLiteral("group")).toString();
@@ -392,8 +413,8 @@ void RegisterMapLoader::loadEntry(const QJsonObject &e, const QString &where, co
                 error(where, QStringLiteral("min"), QStringLiteral("missing (or give an enum)"));
             if (!maxV.isDouble())
                 error(where, QStringLiteral("max"), QStringLiteral("missing (or give an enum)"));
-            p.rawMin = qint64(std::llround(minV.toDouble() * p.scale));
-            p.rawMax = qint64(std::llround(maxV.toDouble() * p.scale));
+            p.rawMin = scaledRaw(minV, p.scale);
+            p.rawMax = scaledRaw(maxV, p.scale);
             if (minV.isDouble() && maxV.isDouble()) {
                 if (p.rawMin > p.rawMax)
                     error(where, QStringLiteral("min"), QStringLiteral("is greater than max"));

@@ -1,6 +1,7 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "device/devicesession.h"
+#include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 
@@ -56,6 +57,66 @@ private Q_SLOTS:
         QTRY_COMPARE(done.size(), 1);
         QVERIFY(done.at(0).at(1).toBool());
         QVERIFY(!session->store()->unsavedToFlash());
+    }
+
+    void writeWhoseAnswerIsLostIsNeverTakenForTheOldValue()
+    {
+        // The controller takes the new speed but every answer to a write is lost (found by the
+        // soak test's truth check): the write is reported failed, the edit is kept as failed,
+        // and the store never goes on claiming the controller holds the old value; it reads
+        // back what the controller holds.
+        test::ScriptedDevice device;
+        QString error;
+        QVERIFY2(device.open(&error), qPrintable(error));
+        device.registers = QList<quint16>(320, 0);
+        const quint16 speed = session->map().find(QStringLiteral("motor1.speed"))->address;
+        device.registers[speed] = 300;
+        device.setResponder([&](const QByteArray &req, int) -> std::optional<QByteArray> {
+            const auto word = [&](int at) {
+                return quint16((quint8(req.at(at)) << 8) | quint8(req.at(at + 1)));
+            };
+            switch (quint8(req.at(1))) {
+            case 0x03: {
+                QByteArray answer = req.left(2);
+                answer.append(char(word(4) * 2));
+                for (int i = 0; i < word(4); ++i) {
+                    answer.append(char(device.registers[word(2) + i] >> 8));
+                    answer.append(char(device.registers[word(2) + i] & 0xFF));
+                }
+                return test::withCrc(answer);
+            }
+            case 0x06:
+                device.registers[word(2)] = word(4);
+                return std::nullopt; // acted, but the answer never arrives
+            case 0x10:
+                for (int i = 0; i < word(4); ++i)
+                    device.registers[word(2) + i] = word(7 + 2 * i);
+                return std::nullopt;
+            default:
+                return std::nullopt;
+            }
+        });
+        LinkSettings s;
+        s.portName = device.clientPath();
+        s.timeoutMs = 200;
+        s.retries = 1;
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->connectTo(s);
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
+        const QString key = QStringLiteral("motor1.speed");
+        QCOMPARE(*session->store()->deviceValue(key), 300);
+
+        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        QVERIFY(session->store()->edit(key, 450).isEmpty());
+        session->writeChanges();
+        QTRY_COMPARE_WITH_TIMEOUT(written.size(), 1, 10000);
+        QCOMPARE(device.registers[speed], quint16(450)); // it did arrive
+        QCOMPARE(session->store()->state(key), ParameterStore::State::WriteFailed);
+        QVERIFY(session->store()->deviceValue(key) != std::optional<qint64>(300));
+        // Read back: the controller holds what was typed, so nothing is pending any more.
+        QTRY_COMPARE_WITH_TIMEOUT(session->store()->deviceValue(key), std::optional<qint64>(450),
+                                  5000);
+        QCOMPARE(session->store()->state(key), ParameterStore::State::InSync);
     }
 
     void statusIsPolled()

@@ -76,6 +76,19 @@ private Q_SLOTS:
         QCOMPARE(unsaved.size(), 1);
     }
 
+    void aWriteWithoutAnswerLeavesTheDeviceValueUnknown()
+    {
+        ParameterStore store(map);
+        store.setDeviceValues({{QStringLiteral("motor1.speed"), 300}});
+        store.edit(QStringLiteral("motor1.speed"), 450);
+        WriteOutcome outcome; // sent, timed out: neither written nor "not written"
+        outcome.errors = {QStringLiteral("motor1.speed: no answer")};
+        store.applyWriteOutcome(store.pendingWrites(), outcome);
+        QCOMPARE(store.state(QStringLiteral("motor1.speed")), ParameterStore::State::WriteFailed);
+        QCOMPARE(store.deviceValue(QStringLiteral("motor1.speed")), std::nullopt); // not 300
+        QCOMPARE(*store.shownValue(QStringLiteral("motor1.speed")), 450);
+    }
+
     void forgettingKeepsEdits()
     {
         ParameterStore store(map);

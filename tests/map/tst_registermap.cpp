@@ -167,6 +167,42 @@ private Q_SLOTS:
         QTest::newRow("bad access")
             << json(withEntry(0, QStringLiteral("access"), QStringLiteral("x")))
             << QStringLiteral("field 'access': must be \"r\" or \"rw\"");
+        // Found by fuzzing (tests/fuzz): numbers far beyond any register were undefined
+        // conversions or an int overflow; now they are plain errors.
+        QJsonObject hugeVersion = miniMap();
+        hugeVersion.insert(QStringLiteral("version"), 1e300);
+        QTest::newRow("huge version")
+            << json(hugeVersion) << QStringLiteral("field 'version': must be a whole number");
+        QTest::newRow("huge max") << json(withEntry(0, QStringLiteral("max"), 1e300))
+                                  << QStringLiteral("field 'max': does not fit unsigned 16 bits");
+        QTest::newRow("huge min") << json(withEntry(0, QStringLiteral("min"), -1e300))
+                                  << QStringLiteral("field 'min': does not fit unsigned 16 bits");
+        QJsonObject hugeStride = miniMap();
+        QJsonObject strided = withEntry(0, QStringLiteral("stride"), 2147483647)
+                                  .value(QStringLiteral("entries"))
+                                  .toArray()
+                                  .at(0)
+                                  .toObject();
+        strided.insert(QStringLiteral("key"), QStringLiteral("speed"));
+        hugeStride.insert(QStringLiteral("blocks"),
+                          QJsonArray{QJsonObject{
+                              {QStringLiteral("prefix"), QStringLiteral("m")},
+                              {QStringLiteral("count"), 32},
+                              {QStringLiteral("label"), miniMap().value(QStringLiteral("name"))},
+                              {QStringLiteral("entries"), QJsonArray{strided}}}});
+        QTest::newRow("huge stride")
+            << json(hugeStride)
+            << QStringLiteral("entry 'm2.speed', field 'plc': 2147523648 is outside 40001-49999");
+        QJsonObject hugeEnum = miniMap();
+        hugeEnum.insert(
+            QStringLiteral("enums"),
+            QJsonObject{{QStringLiteral("e"),
+                         QJsonArray{QJsonObject{{QStringLiteral("value"), 1e300},
+                                                {QStringLiteral("label"),
+                                                 miniMap().value(QStringLiteral("name"))}}}}});
+        QTest::newRow("huge enum value")
+            << json(hugeEnum)
+            << QStringLiteral("enum 'e'[0], field 'value': must be a whole number");
         QTest::newRow("broken json")
             << QByteArray("{\n  \"format\": \"stepcom-register-map\",\n  oops\n}")
             << QStringLiteral("invalid JSON at line 3");
