@@ -140,14 +140,19 @@ void CtlRunner::connectThen(std::function<void()> next)
                 [this](const TrafficEntry &e) { m_err << TrafficLog::format(e) << Qt::endl; });
     }
     m_device = new DeviceClient(m_link, m_map, this);
-    connect(m_link, &ModbusLink::opened, this, [this, next](bool ok, const QString &reason) {
-        if (!ok) {
-            fail(DeviceError,
-                 tr("cannot connect to %1: %2").arg(m_options.link.describe(), reason));
-            return;
-        }
-        next();
-    });
+    // Only the first opening runs the command: a write of device.baud reopens the link at the
+    // new baud, and that must not start the command a second time.
+    connect(
+        m_link, &ModbusLink::opened, this,
+        [this, next](bool ok, const QString &reason) {
+            if (!ok) {
+                fail(DeviceError,
+                     tr("cannot connect to %1: %2").arg(m_options.link.describe(), reason));
+                return;
+            }
+            next();
+        },
+        Qt::SingleShotConnection);
     m_link->open(m_options.link);
 }
 

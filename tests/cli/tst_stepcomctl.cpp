@@ -230,6 +230,19 @@ private Q_SLOTS:
         QVERIFY(r.out.contains(QStringLiteral("device.baud = 9600")));
     }
 
+    // Writing the baud reopens the link at the new rate; that must not run the command again
+    // (it did: the second run's read-back was cut off by the reopening, exit 1).
+    void baudChangeFollowsAndVerifiesOnce()
+    {
+        const Run r =
+            ctl({"--sim", "--verbose", "write", "device.baud=19200", "device.id=5"}, false);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains(
+            QStringLiteral("device.baud = 19200 (19200 baud)  (written, verified)")));
+        QVERIFY(r.out.contains(QStringLiteral("device.id = 5  (written, verified)")));
+        QCOMPARE(r.err.count(QStringLiteral("write 40213 (device.baud)")), 1);
+    }
+
     void paramsJsonListsTheMap()
     {
         const Run r = ctl({QStringLiteral("--json"), QStringLiteral("params")}, false);
