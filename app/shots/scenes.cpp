@@ -1,0 +1,252 @@
+#include "scenes.h"
+
+#include "device/devicesession.h"
+#include "device/jogcontroller.h"
+#include "dialogs/busscandialog.h"
+#include "dialogs/writechangesdialog.h"
+#include "mainwindow.h"
+#include "pages/connectionpage.h"
+#include "pages/motionpage.h"
+#include "pages/motorpage.h"
+#include "pages/plotpage.h"
+#include "shooter.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+#include "widgets/parameterfield.h"
+
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QPushButton>
+
+namespace stepcom {
+
+namespace {
+
+using Direction = JogController::Direction;
+
+ParameterField *field(MainWindow *window, const QString &key)
+{
+    for (ParameterField *f : window->findChildren<ParameterField *>()) {
+        if (f->parameter().key == key)
+            return f;
+    }
+    return nullptr;
+}
+
+bool idle(Shooter &s)
+{
+    SimDevice *sim = s.session()->simulator()->device();
+    return !s.session()->isConnected() ||
+           (!s.window()->motionPage()->jog()->isBusy() && !sim->running(1) && !sim->running(2));
+}
+
+// Jog `motor` for `ms` the way a technician does (press, hold, let go) and wait until it stands.
+void jog(Shooter &s, int motor, Direction direction, int ms)
+{
+    Script &script = s.script();
+    script.then([&s, motor, direction] {
+        if (!s.window()->motionPage()->jog()->press(motor, direction))
+            s.script().fail(QStringLiteral("motor %1 did not start jogging").arg(motor));
+    });
+    script.sleep(ms);
+    script.then([&s, motor] { s.window()->motionPage()->jog()->release(motor); });
+    script.waitFor(QStringLiteral("motor %1 to stand still").arg(motor), [&s] { return idle(s); });
+}
+
+// Positions away from zero and a trace in the plots: the pictures of a machine that moved.
+void warmup(Shooter &s)
+{
+    jog(s, 1, Direction::Forward, 1200);
+    jog(s, 2, Direction::Forward, 800);
+    jog(s, 1, Direction::Reverse, 500);
+}
+
+// The jog page while motor 1 runs: the lamp, the live position, the stop button.
+void jogging(Shooter &s)
+{
+    const int page = s.pageIndex<MotionPage>();
+    Script &script = s.script();
+    script.then([&s, page] { s.window()->showPage(page); });
+    script.sleep(200);
+    script.then([&s] {
+        if (!s.window()->motionPage()->jog()->press(1, Direction::Forward))
+            s.script().fail(QStringLiteral("motor 1 did not start jogging"));
+    });
+    script.sleep(800);
+    s.shoot(Shooter::sceneFileName(QStringLiteral("jogging"))); // not a page change: it would stop
+    script.then([&s] { s.window()->motionPage()->jog()->release(1); });
+    script.waitFor(QStringLiteral("motor 1 to stand still"), [&s] { return idle(s); });
+}
+
+// Both motors driving back to position 0 ("Return to data zero", not a jog: a page change does
+// not stop it), watched on the Plots page.
+void plotsMoving(Shooter &s)
+{
+    Script &script = s.script();
+    script.then([&s] {
+        QPushButton *button = s.window()->motionPage()->returnToZeroButton();
+        if (!button->isEnabled()) {
+            s.script().fail(QStringLiteral("\"Return to data zero\" is disabled"));
+            return;
+        }
+        button->click();
+    });
+    script.waitFor(QStringLiteral("a motor to run"), [&s] {
+        SimDevice *sim = s.session()->simulator()->device();
+        return sim->running(1) || sim->running(2);
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("plots-moving")), s.pageIndex<PlotPage>());
+    script.waitFor(QStringLiteral("the motors to stand still"), [&s] { return idle(s); });
+}
+
+QDockWidget *dock(Shooter &s, const char *name)
+{
+    return s.window()->findChild<QDockWidget *>(QLatin1String(name));
+}
+
+// The traffic log in front of the messages, over the first motor page.
+void traffic(Shooter &s)
+{
+    auto height = std::make_shared<int>(0);
+    s.script().then([&s, height] {
+        QDockWidget *d = dock(s, "trafficDock");
+        if (!d) {
+            s.script().fail(QStringLiteral("the window has no traffic dock"));
+            return;
+        }
+        d->raise();
+        // Tall enough for a dozen frames.
+        *height = d->height();
+        s.window()->resizeDocks({d}, {s.window()->height() * 2 / 5}, Qt::Vertical);
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("traffic")), s.pageIndex<MotorPage>());
+    s.script().then([&s, height] {
+        s.window()->resizeDocks({dock(s, "trafficDock")}, {*height}, Qt::Vertical);
+        if (QDockWidget *d = dock(s, "messageDock"))
+            d->raise();
+    });
+}
+
+// Two edits held on the first motor page, the write dialog listing them; then written, and the
+// status bar's "not saved to flash".
+void writeChanges(Shooter &s)
+{
+    Script &script = s.script();
+    script.then([&s] {
+        s.window()->showPage(s.pageIndex<MotorPage>());
+        ParameterField *speed = field(s.window(), QStringLiteral("motor1.speed"));
+        ParameterField *accel = field(s.window(), QStringLiteral("motor1.accel_frequency"));
+        if (!speed || !accel) {
+            s.script().fail(QStringLiteral("motor 1's speed or acceleration field is missing"));
+            return;
+        }
+        speed->enterText(QStringLiteral("450"));
+        accel->enterText(QStringLiteral("1200"));
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("edited")));
+    script.then([&s] { s.window()->writeChanges(); });
+    script.waitFor(QStringLiteral("the write dialog"), [&s] {
+        return s.window()->writeDialog() && s.window()->writeDialog()->isVisible();
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("write-changes")), -1,
+            [&s]() -> QWidget * { return s.window()->writeDialog(); });
+    script.then([&s] {
+        auto *write =
+            s.window()->writeDialog()->findChild<QPushButton *>(QStringLiteral("writeButton"));
+        if (!write) {
+            s.script().fail(QStringLiteral("the write dialog has no write button"));
+            return;
+        }
+        write->click();
+    });
+    script.waitFor(QStringLiteral("the write to be verified"), [&s] {
+        return !s.session()->store()->hasEdits() && s.session()->store()->unsavedToFlash();
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("not-saved-to-flash")));
+}
+
+// A controller at id 7 that nobody remembers: the bus scan finds it.
+void busScan(Shooter &s)
+{
+    Script &script = s.script();
+    script.then([&s] {
+        SimHost *sim = s.extraSimulator(7);
+        if (!sim)
+            return;
+        auto *page = qobject_cast<ConnectionPage *>(
+            s.window()->pages().value(s.pageIndex<ConnectionPage>()));
+        if (!page) {
+            s.script().fail(QStringLiteral("the window has no connection page"));
+            return;
+        }
+        s.window()->showPage(s.pageIndex<ConnectionPage>());
+        BusScanDialog *dialog = page->openBusScan();
+        LinkSettings base;
+        base.portName = sim->rtuPath();
+        dialog->setBaseSettings(base);
+        dialog->setCheckedBauds({9600, 19200});
+        dialog->setIdRange(1, 10);
+        dialog->setProbeTimeoutMs(80);
+        dialog->startScan();
+    });
+    const auto dialog = [&s]() -> BusScanDialog * {
+        auto *page = qobject_cast<ConnectionPage *>(
+            s.window()->pages().value(s.pageIndex<ConnectionPage>()));
+        return page ? page->scanDialog() : nullptr;
+    };
+    script.waitFor(
+        QStringLiteral("the bus scan to finish"),
+        [dialog] { return dialog() && !dialog()->isScanning() && dialog()->foundCount() > 0; },
+        30000);
+    s.shoot(Shooter::sceneFileName(QStringLiteral("bus-scan")), -1, dialog);
+    script.then([dialog] { dialog()->reject(); });
+}
+
+// A serial port that is not there: what the connection page says. Last, as it disconnects.
+void portMissing(Shooter &s)
+{
+    Script &script = s.script();
+    const int index = s.pageIndex<ConnectionPage>();
+    script.then([&s] { s.session()->disconnectFrom(); });
+    script.waitFor(QStringLiteral("the disconnect"), [&s] { return !s.session()->isConnected(); });
+    auto port = std::make_shared<QString>();
+    script.then([&s, index, port] {
+        // A name that does not exist here, so the picture never talks to a real adapter.
+        for (int n = 0; n < 100 && port->isEmpty(); ++n) {
+            const QString candidate = QStringLiteral("/dev/ttyUSB%1").arg(n);
+            if (!QFileInfo::exists(candidate))
+                *port = candidate;
+        }
+        auto *page = qobject_cast<ConnectionPage *>(s.window()->pages().value(index));
+        s.window()->showPage(index);
+        LinkSettings settings;
+        settings.portName = *port;
+        page->applySettings(settings);
+        page->setTransport(ConnectionPage::Transport::Serial);
+        page->connectNow();
+    });
+    script.waitFor(QStringLiteral("the connection attempt to fail"), [&s, index, port] {
+        auto *page = qobject_cast<ConnectionPage *>(s.window()->pages().value(index));
+        return !s.session()->isConnected() && page->statusText().contains(*port);
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("port-missing")));
+}
+
+} // namespace
+
+const QList<Scene> &scenes()
+{
+    using W = Scene::When;
+    static const QList<Scene> table = {
+        {QStringLiteral("warmup"), W::BeforePages, &warmup},
+        {QStringLiteral("jogging"), W::AfterPages, &jogging},
+        {QStringLiteral("plots-moving"), W::AfterPages, &plotsMoving},
+        {QStringLiteral("traffic"), W::AfterPages, &traffic},
+        {QStringLiteral("bus-scan"), W::AfterPages, &busScan},
+        {QStringLiteral("write-changes"), W::AfterPages, &writeChanges},
+        {QStringLiteral("port-missing"), W::AfterPages, &portMissing},
+    };
+    return table;
+}
+
+} // namespace stepcom

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Regenerates the user guide's screenshots (docs/images/en, docs/images/zh_CN) from the real
+# window on the built-in simulator, offscreen: installs what is missing, builds, runs
+# stepcom-shots. Extra arguments go to stepcom-shots (e.g. --lang en, --scene bus-scan).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/deps.sh
+scripts/build.sh
+build=${BUILD_DIR:-build}
+# Chinese text needs a CJK font (fonts-noto-cjk, installed by deps.sh).
+fc-list :lang=zh family | grep -q . || echo "screenshots: warning: no Chinese font found" >&2
+QT_QPA_PLATFORM=offscreen LC_ALL=C.UTF-8 "$build/app/stepcom-shots" --out docs/images "$@"
+du -sh docs/images
