@@ -44,7 +44,9 @@ int main(int argc, char *argv[])
                                         QStringLiteral("Window size (default 1280x800)."),
                                         QStringLiteral("WxH"), QStringLiteral("1280x800"));
     const QCommandLineOption sceneOption(
-        QStringLiteral("scene"), QStringLiteral("Only this scene besides the pages (repeatable)."),
+        QStringLiteral("scene"),
+        QStringLiteral("Only this scene besides the pages (repeatable); the other pictures "
+                       "in the directory are kept. Without it, old pictures are removed."),
         QStringLiteral("name"));
     const QCommandLineOption listOption(QStringLiteral("list-scenes"),
                                         QStringLiteral("Print the scene names and exit."));

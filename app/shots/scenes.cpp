@@ -6,6 +6,7 @@
 #include "dialogs/writechangesdialog.h"
 #include "mainwindow.h"
 #include "pages/connectionpage.h"
+#include "pages/inputspage.h"
 #include "pages/motionpage.h"
 #include "pages/motorpage.h"
 #include "pages/plotpage.h"
@@ -165,6 +166,31 @@ void writeChanges(Shooter &s)
     s.shoot(Shooter::sceneFileName(QStringLiteral("not-saved-to-flash")));
 }
 
+// A wiring mistake, held as an edit (nothing written): motor 2's home input on its positive
+// limit. The wiring check judges the values shown, edits included.
+void wiringWarning(Shooter &s)
+{
+    Script &script = s.script();
+    script.then([&s] {
+        ParameterField *home = field(s.window(), QStringLiteral("motor2.home_input"));
+        if (!home) {
+            s.script().fail(QStringLiteral("motor 2's home input field is missing"));
+            return;
+        }
+        const auto input =
+            s.session()->store()->shownValue(QStringLiteral("motor2.limit_positive"));
+        if (!input || *input == 0) {
+            s.script().fail(QStringLiteral("motor 2 has no positive limit input to misuse"));
+            return;
+        }
+        home->enterText(QString::number(*input));
+        if (!s.session()->store()->hasEdits())
+            s.script().fail(QStringLiteral("the home input edit was refused"));
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("wiring-warning")), s.pageIndex<InputsPage>());
+    script.then([&s] { s.session()->store()->revertAll(); });
+}
+
 // A controller at id 7 that nobody remembers: the bus scan finds it.
 void busScan(Shooter &s)
 {
@@ -242,6 +268,7 @@ const QList<Scene> &scenes()
         {QStringLiteral("jogging"), W::AfterPages, &jogging},
         {QStringLiteral("plots-moving"), W::AfterPages, &plotsMoving},
         {QStringLiteral("traffic"), W::AfterPages, &traffic},
+        {QStringLiteral("wiring-warning"), W::AfterPages, &wiringWarning},
         {QStringLiteral("bus-scan"), W::AfterPages, &busScan},
         {QStringLiteral("write-changes"), W::AfterPages, &writeChanges},
         {QStringLiteral("port-missing"), W::AfterPages, &portMissing},

@@ -105,9 +105,12 @@ void Shooter::openWindow(const QString &language)
         m_script.fail(QStringLiteral("cannot create %1").arg(dir.path()));
         return;
     }
-    // Pictures of pages that no longer exist must not linger.
-    for (const QString &old : dir.entryList({QStringLiteral("*.png")}, QDir::Files))
-        dir.remove(old);
+    // Pictures of pages and scenes that no longer exist must not linger (a run of chosen
+    // scenes only replaces what it takes).
+    if (m_options.onlyScenes.isEmpty()) {
+        for (const QString &old : dir.entryList({QStringLiteral("*.png")}, QDir::Files))
+            dir.remove(old);
+    }
 
     m_session = std::make_unique<DeviceSession>();
     m_readOk = false;
