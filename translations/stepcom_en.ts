@@ -1658,6 +1658,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>stop bits must be 1 or 2</source>
         <translation>stop bits must be 1 or 2</translation>
     </message>
+    <message>
+        <source>%1:%2 · id %3</source>
+        <translation>%1:%2 · id %3</translation>
+    </message>
+    <message>
+        <source>%1 · %2 8%3%4 · id %5</source>
+        <translation>%1 · %2 8%3%4 · id %5</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::LinkStatus</name>
@@ -1951,6 +1959,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the port stopped responding (no answer and no timeout from the driver)</source>
         <translation>the port stopped responding (no answer and no timeout from the driver)</translation>
+    </message>
+    <message>
+        <source>coil %1</source>
+        <translation>coil %1</translation>
     </message>
 </context>
 <context>

@@ -1651,6 +1651,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>stop bits must be 1 or 2</source>
         <translation>停止位必须为 1 或 2</translation>
     </message>
+    <message>
+        <source>%1:%2 · id %3</source>
+        <translation>%1:%2 · 站号 %3</translation>
+    </message>
+    <message>
+        <source>%1 · %2 8%3%4 · id %5</source>
+        <translation>%1 · %2 8%3%4 · 站号 %5</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::LinkStatus</name>
@@ -1943,6 +1951,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the port stopped responding (no answer and no timeout from the driver)</source>
         <translation>端口停止响应（驱动程序既无应答也未报告超时）</translation>
+    </message>
+    <message>
+        <source>coil %1</source>
+        <translation>线圈 %1</translation>
     </message>
 </context>
 <context>

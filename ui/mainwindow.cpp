@@ -9,7 +9,9 @@
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
 #include "pages/inputspage.h"
-#include "pages/motionpage.h" // jogging (issue 5)
+#include "pages/interpolationpage.h" // interpolation (issue 6)
+#include "pages/modespage.h"         // special modes (issue 6)
+#include "pages/motionpage.h"        // jogging (issue 5)
 #include "pages/motorpage.h"
 #include "pages/plotpage.h" // monitoring (issue 5)
 #include "widgets/linkstatus.h"
@@ -58,6 +60,8 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
         addPage(new MotorPage(session, n, this));
     addPage(m_motion = new MotionPage(session, this)); // jogging (issue 5)
     addPage(new InputsPage(session, this));
+    addPage(new InterpolationPage(session, this)); // interpolation (issue 6)
+    addPage(new ModesPage(session, this));         // special modes (issue 6)
     addPage(new DevicePage(session, this));
     addPage(new PlotPage(session, this)); // monitoring (issue 5)
     m_sidebar->setCurrentRow(0);

@@ -46,11 +46,11 @@ bool LinkSettings::parseParity(const QString &text, QSerialPort::Parity *parity)
 QString LinkSettings::describe() const
 {
     if (transport == Transport::Tcp)
-        return QStringLiteral("%1:%2 · id %3").arg(host).arg(tcpPort).arg(deviceId);
+        return tr("%1:%2 · id %3").arg(host).arg(tcpPort).arg(deviceId);
     const QChar p = parity == QSerialPort::EvenParity  ? QLatin1Char('E')
                     : parity == QSerialPort::OddParity ? QLatin1Char('O')
                                                        : QLatin1Char('N');
-    return QStringLiteral("%1 · %2 8%3%4 · id %5")
+    return tr("%1 · %2 8%3%4 · id %5")
         .arg(portName)
         .arg(baud)
         .arg(p)

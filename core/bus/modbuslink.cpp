@@ -453,7 +453,7 @@ QString ModbusLink::describe(const Request &request) const
 {
     QString where;
     if (request.type == Request::Type::WriteCoil)
-        where = QStringLiteral("coil %1").arg(request.address + 1, 5, 10, QLatin1Char('0'));
+        where = tr("coil %1").arg(request.address + 1, 5, 10, QLatin1Char('0'));
     else
         where = QStringLiteral("%1 (0x%2)")
                     .arg(40001 + request.address)

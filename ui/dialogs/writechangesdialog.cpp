@@ -12,9 +12,27 @@
 
 namespace stepcom {
 
+namespace {
+
+QList<ParameterWrite> writesOf(const ParameterStore &store, const QStringList &keys)
+{
+    QList<ParameterWrite> writes = store.pendingWrites();
+    if (!keys.isEmpty())
+        writes.removeIf(
+            [&keys](const ParameterWrite &w) { return !keys.contains(w.parameter->key); });
+    return writes;
+}
+
+} // namespace
+
 WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, QWidget *parent)
+    : WriteChangesDialog(store, QStringList(), parent)
+{}
+
+WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, const QStringList &keys,
+                                       QWidget *parent)
     : QDialog(parent)
-    , m_writes(store.pendingWrites())
+    , m_writes(writesOf(store, keys))
     , m_table(new QTableWidget(int(m_writes.size()), 4, this))
     , m_summary(new QLabel(this))
 {

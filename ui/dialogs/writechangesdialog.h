@@ -18,6 +18,9 @@ class WriteChangesDialog : public QDialog
     Q_OBJECT
 public:
     WriteChangesDialog(const ParameterStore &store, QWidget *parent = nullptr);
+    // Only the edits of `keys` (a page's own parameters); the others stay held.
+    WriteChangesDialog(const ParameterStore &store, const QStringList &keys,
+                       QWidget *parent = nullptr);
     // The writes shown, as they will be sent if the user accepts.
     const QList<ParameterWrite> &writes() const { return m_writes; }
     QTableWidget *table() const { return m_table; }

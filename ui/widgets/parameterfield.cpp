@@ -47,6 +47,7 @@ ParameterField::ParameterField(ParameterStore *store, const Parameter &parameter
         m_line->setMinimumWidth(
             m_line->fontMetrics().horizontalAdvance(widest + QStringLiteral("00")));
         connect(m_line, &QLineEdit::editingFinished, this, &ParameterField::commitText);
+        connect(m_line, &QLineEdit::textEdited, this, &ParameterField::typing);
         layout->addWidget(m_line, 1);
         m_unit = new QLabel(parameter.unit, this);
         m_unit->setMinimumWidth(m_unit->fontMetrics().horizontalAdvance(QStringLiteral("rpm__")));
@@ -123,6 +124,20 @@ void ParameterField::enterText(const QString &text)
     m_line->setText(text);
     m_line->setModified(true);
     commitText();
+}
+
+std::optional<qint64> ParameterField::typedRaw() const
+{
+    if (isTyping()) {
+        if (const auto raw = m_parameter.parse(m_line->text(), nullptr))
+            return raw;
+    }
+    return m_store->shownValue(m_parameter.key);
+}
+
+bool ParameterField::isTyping() const
+{
+    return m_line && m_line->isModified();
 }
 
 void ParameterField::commitText()

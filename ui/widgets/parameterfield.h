@@ -2,6 +2,8 @@
 
 #include <QWidget>
 
+#include <optional>
+
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -24,10 +26,17 @@ public:
     QWidget *editor() const;
     // What a user would do: type text and press Enter, or pick an enum entry by value.
     void enterText(const QString &text);
+    // What the editor shows now as a raw value: the text being typed when it parses (not yet
+    // held in the store), else the store's shown value. For previews that follow the typing.
+    std::optional<qint64> typedRaw() const;
+    // The text being typed differs from what the store holds (Enter or leaving holds it).
+    bool isTyping() const;
     void retranslate();
 
 Q_SIGNALS:
     void rejected(const QString &why);
+    // The user changed the text (each keystroke), before it is held as an edit.
+    void typing();
 
 protected:
     void changeEvent(QEvent *event) override;

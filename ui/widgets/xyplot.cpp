@@ -129,6 +129,11 @@ void XYPlot::setSeries(const QString &id, bool dots, const QList<QPointF> &point
     schedule();
 }
 
+QXYSeries *XYPlot::traceSeries() const
+{
+    return m_traceSeries;
+}
+
 void XYPlot::setPath(const QString &id, const QList<QPointF> &points, const QString &name)
 {
     setSeries(id, false, points, name);

@@ -33,6 +33,9 @@ public:
     void clearPaths();
     QStringList pathIds() const { return m_paths.keys(); }
     QList<QPointF> path(const QString &id) const;
+    // The series of a path or point set, to style it (pen, marker shape); nullptr if unknown.
+    QXYSeries *series(const QString &id) const { return m_paths.value(id); }
+    QXYSeries *traceSeries() const;
 
     // The trace: a point equal to the last one is skipped (a tool at rest adds nothing); the
     // oldest points go beyond traceLimit.

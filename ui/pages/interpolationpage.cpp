@@ -1,0 +1,119 @@
+#include "pages/interpolationpage.h"
+
+#include "device/devicesession.h"
+#include "widgets/interpolationpreview.h"
+#include "widgets/patheditor.h"
+
+#include <QHBoxLayout>
+#include <QScrollArea>
+#include <QSplitter>
+#include <QTabWidget>
+
+namespace stepcom {
+
+namespace {
+
+QScrollArea *scrolled(QWidget *content, QWidget *parent)
+{
+    auto *scroll = new QScrollArea(parent);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(content);
+    return scroll;
+}
+
+} // namespace
+
+InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
+    : Page(session, parent)
+{
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_splitter = new QSplitter(this);
+    layout->addWidget(m_splitter);
+    m_tabs = new QTabWidget(m_splitter);
+    m_arc = new PathEditor(session, PathEditor::Kind::Arc);
+    m_line = new PathEditor(session, PathEditor::Kind::Line);
+    m_tabs->addTab(scrolled(m_arc, m_tabs), QString());
+    m_tabs->addTab(scrolled(m_line, m_tabs), QString());
+    m_preview = new InterpolationPreview(m_splitter);
+    m_splitter->addWidget(m_tabs);
+    m_splitter->addWidget(m_preview);
+    m_splitter->setStretchFactor(0, 2);
+    m_splitter->setStretchFactor(1, 3);
+
+    // A burst of changes (a read of every value, each keystroke) redraws once.
+    m_previewTimer.setSingleShot(true);
+    m_previewTimer.setInterval(0);
+    connect(&m_previewTimer, &QTimer::timeout, this, &InterpolationPage::updatePreview);
+    m_positionTimer.setSingleShot(true);
+    m_positionTimer.setInterval(0);
+    connect(&m_positionTimer, &QTimer::timeout, this, &InterpolationPage::positionChanged);
+    for (PathEditor *e : {m_arc, m_line}) {
+        connect(e, &PathEditor::changed, this, [this, e] {
+            if (e == currentEditor())
+                schedulePreview();
+        });
+        connect(e, &PathEditor::started, m_preview, &InterpolationPreview::restartTrace);
+    }
+    connect(m_tabs, &QTabWidget::currentChanged, this, &InterpolationPage::schedulePreview);
+    connect(session->store(), &ParameterStore::valueChanged, this, [this](const QString &k) {
+        if (k.endsWith(QLatin1String(".position")) && !m_positionTimer.isActive())
+            m_positionTimer.start(); // x and y of one poll make one point of the trace
+    });
+    connect(session, &DeviceSession::disconnected, m_preview, &InterpolationPreview::clearPosition);
+    retranslate();
+    updatePreview();
+}
+
+QString InterpolationPage::title() const
+{
+    return tr("Interpolation");
+}
+
+QStringList InterpolationPage::keys() const
+{
+    return m_arc->keys() + m_line->keys();
+}
+
+PathEditor *InterpolationPage::currentEditor() const
+{
+    return m_tabs->currentIndex() == 1 ? m_line : m_arc;
+}
+
+void InterpolationPage::schedulePreview()
+{
+    if (!m_previewTimer.isActive())
+        m_previewTimer.start();
+}
+
+void InterpolationPage::updatePreview()
+{
+    m_previewTimer.stop();
+    const PathEditor *e = currentEditor();
+    const interpolation::Geometry g = e->geometry();
+    m_preview->setGeometry(g, g.valid ? e->approach(g) : std::nullopt);
+}
+
+void InterpolationPage::positionChanged()
+{
+    const std::optional<QPointF> p = m_arc->position();
+    if (!p)
+        return;
+    m_preview->setPosition(*p);
+}
+
+void InterpolationPage::retranslate()
+{
+    m_tabs->setTabText(0, tr("Arc"));
+    m_tabs->setTabText(1, tr("Line"));
+    m_arc->retranslate();
+    m_line->retranslate();
+    const QString unit = [this] {
+        const Parameter *p = session()->map().find(QStringLiteral("arc.start_x"));
+        return p ? p->unit : QString();
+    }();
+    m_preview->setAxisTitles(tr("Motor 1 (X) [%1]").arg(unit), tr("Motor 2 (Y) [%1]").arg(unit));
+}
+
+} // namespace stepcom
