@@ -7,6 +7,8 @@
 #include "mainwindow.h"
 #include "pages/connectionpage.h"
 #include "pages/inputspage.h"
+#include "pages/interpolationpage.h"
+#include "pages/modespage.h"
 #include "pages/motionpage.h"
 #include "pages/motorpage.h"
 #include "pages/plotpage.h"
@@ -14,10 +16,13 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "widgets/parameterfield.h"
+#include "widgets/patheditor.h"
 
 #include <QDockWidget>
 #include <QFileInfo>
+#include <QMessageBox>
 #include <QPushButton>
+#include <QTabWidget>
 
 namespace stepcom {
 
@@ -191,6 +196,112 @@ void wiringWarning(Shooter &s)
     script.then([&s] { s.session()->store()->revertAll(); });
 }
 
+// The arc tab with a quarter circle written to the controller, running: the preview with the
+// approach, the path and the live trace of the real run.
+void arcRunning(Shooter &s)
+{
+    Script &script = s.script();
+    const int page = s.pageIndex<InterpolationPage>();
+    script.then([&s, page] {
+        auto *interpolation = qobject_cast<InterpolationPage *>(s.window()->pages().value(page));
+        if (!interpolation) {
+            s.script().fail(QStringLiteral("the window has no interpolation page"));
+            return;
+        }
+        s.window()->showPage(page);
+        interpolation->tabs()->setCurrentIndex(0);
+        const QList<std::pair<const char *, const char *>> values = {
+            {"arc.enabled", "1"},   {"arc.mode", "0"},      {"arc.start_x", "40"},
+            {"arc.start_y", "20"},  {"arc.end_x", "20"},    {"arc.end_y", "40"},
+            {"arc.center_x", "20"}, {"arc.center_y", "20"}, {"arc.direction", "1"},
+            {"arc.speed", "120"}};
+        for (const auto &[key, value] : values) {
+            ParameterField *f = field(s.window(), QLatin1String(key));
+            if (!f) {
+                s.script().fail(
+                    QStringLiteral("the arc editor has no field %1").arg(QLatin1String(key)));
+                return;
+            }
+            f->enterText(QLatin1String(value));
+        }
+        s.session()->writeChanges();
+    });
+    script.waitFor(QStringLiteral("the arc to be written"),
+                   [&s] { return !s.session()->store()->hasEdits(); });
+    script.waitFor(QStringLiteral("Start arc to be enabled"), [&s, page] {
+        auto *p = qobject_cast<InterpolationPage *>(s.window()->pages().value(page));
+        return p->arcEditor()->startButton()->isEnabled();
+    });
+    script.then([&s, page] {
+        qobject_cast<InterpolationPage *>(s.window()->pages().value(page))
+            ->arcEditor()
+            ->startButton()
+            ->click();
+    });
+    script.sleep(3000);
+    s.shoot(Shooter::sceneFileName(QStringLiteral("arc-running")));
+    script.waitFor(
+        QStringLiteral("the arc to end"), [&s] { return idle(s); }, 30000);
+}
+
+// The line tab while a line is being typed: the preview follows before anything is written.
+void lineEdited(Shooter &s)
+{
+    Script &script = s.script();
+    const int page = s.pageIndex<InterpolationPage>();
+    script.then([&s, page] {
+        auto *interpolation = qobject_cast<InterpolationPage *>(s.window()->pages().value(page));
+        if (!interpolation) {
+            s.script().fail(QStringLiteral("the window has no interpolation page"));
+            return;
+        }
+        s.window()->showPage(page);
+        interpolation->tabs()->setCurrentIndex(1);
+        const QList<std::pair<const char *, const char *>> values = {
+            {"line.enabled", "1"}, {"line.start_x", "10"}, {"line.start_y", "5"},
+            {"line.end_x", "60"},  {"line.end_y", "35"},   {"line.speed", "200"}};
+        for (const auto &[key, value] : values) {
+            if (ParameterField *f = field(s.window(), QLatin1String(key)))
+                f->enterText(QLatin1String(value));
+            else
+                s.script().fail(
+                    QStringLiteral("the line editor has no field %1").arg(QLatin1String(key)));
+        }
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("line-edited")));
+    script.then([&s, page] {
+        s.session()->store()->revertAll();
+        qobject_cast<InterpolationPage *>(s.window()->pages().value(page))
+            ->tabs()
+            ->setCurrentIndex(0);
+    });
+}
+
+// Choosing a special mode asks first; the picture is taken with the question open, and the
+// answer is No: nothing is written.
+void modeQuestion(Shooter &s)
+{
+    Script &script = s.script();
+    const int page = s.pageIndex<ModesPage>();
+    const auto modes = [&s, page] {
+        return qobject_cast<ModesPage *>(s.window()->pages().value(page));
+    };
+    script.then([&s, page, modes] {
+        if (!modes()) {
+            s.script().fail(QStringLiteral("the window has no modes page"));
+            return;
+        }
+        s.window()->showPage(page);
+        modes()->chooseMode(3);
+    });
+    script.waitFor(QStringLiteral("the mode question"), [modes] {
+        return modes()->confirmation() && modes()->confirmation()->isVisible();
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("mode-question")), -1,
+            [modes]() -> QWidget * { return modes()->confirmation(); });
+    script.then([modes] { modes()->confirmation()->reject(); });
+}
+
 // A controller at id 7 that nobody remembers: the bus scan finds it.
 void busScan(Shooter &s)
 {
@@ -269,6 +380,9 @@ const QList<Scene> &scenes()
         {QStringLiteral("plots-moving"), W::AfterPages, &plotsMoving},
         {QStringLiteral("traffic"), W::AfterPages, &traffic},
         {QStringLiteral("wiring-warning"), W::AfterPages, &wiringWarning},
+        {QStringLiteral("arc-running"), W::AfterPages, &arcRunning},
+        {QStringLiteral("line-edited"), W::AfterPages, &lineEdited},
+        {QStringLiteral("mode-question"), W::AfterPages, &modeQuestion},
         {QStringLiteral("bus-scan"), W::AfterPages, &busScan},
         {QStringLiteral("write-changes"), W::AfterPages, &writeChanges},
         {QStringLiteral("port-missing"), W::AfterPages, &portMissing},
