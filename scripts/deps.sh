@@ -10,7 +10,7 @@ packages=(build-essential cmake ninja-build pkg-config
           qt6-translations-l10n libgl-dev
           qt6-qpa-plugins fonts-noto-cjk)
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(mbpoll socat python3-pymodbus xvfb xauth dpkg-dev file)
+    packages+=(mbpoll socat python3-pymodbus xvfb xauth dpkg-dev file poppler-utils)
 fi
 
 missing=()

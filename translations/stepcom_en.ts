@@ -1335,6 +1335,183 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::InterpolationGeometry</name>
+    <message>
+        <source>Start and end are the same point: three points cannot describe a full circle. Use the centre mode for a full circle.</source>
+        <translation>Start and end are the same point: three points cannot describe a full circle. Use the centre mode for a full circle.</translation>
+    </message>
+    <message>
+        <source>The middle point %1 is the same as the start or the end point: three distinct points are needed.</source>
+        <translation>The middle point %1 is the same as the start or the end point: three distinct points are needed.</translation>
+    </message>
+    <message>
+        <source>Start, middle and end are on one straight line: no circle passes through them. Use the line editor for a straight move.</source>
+        <translation>Start, middle and end are on one straight line: no circle passes through them. Use the line editor for a straight move.</translation>
+    </message>
+    <message>
+        <source>The start point is the centre: the radius is zero.</source>
+        <translation>The start point is the centre: the radius is zero.</translation>
+    </message>
+    <message>
+        <source>The end point is the centre: the radius is zero.</source>
+        <translation>The end point is the centre: the radius is zero.</translation>
+    </message>
+    <message>
+        <source>Start and end are not the same distance from the centre: start radius %1, end radius %2, difference %3 (at most %4 allowed).</source>
+        <translation>Start and end are not the same distance from the centre: start radius %1, end radius %2, difference %3 (at most %4 allowed).</translation>
+    </message>
+    <message>
+        <source>Start and end are the same point: this is a full circle.</source>
+        <translation>Start and end are the same point: this is a full circle.</translation>
+    </message>
+    <message>
+        <source>The arc in the chosen direction does not pass through the middle point: the controller goes the other way round the circle. Change the direction to pass through it.</source>
+        <translation>The arc in the chosen direction does not pass through the middle point: the controller goes the other way round the circle. Change the direction to pass through it.</translation>
+    </message>
+    <message>
+        <source>Start and end are the same point %1: the line has no length.</source>
+        <translation>Start and end are the same point %1: the line has no length.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::InterpolationPage</name>
+    <message>
+        <source>Interpolation</source>
+        <translation>Interpolation</translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation>Arc</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) [%1]</source>
+        <translation>Motor 1 (X) [%1]</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) [%1]</source>
+        <translation>Motor 2 (Y) [%1]</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::InterpolationPreview</name>
+    <message>
+        <source>&amp;Fit</source>
+        <translation>&amp;Fit</translation>
+    </message>
+    <message>
+        <source>Show the whole path again (or double-click the plot)</source>
+        <translation>Show the whole path again (or double-click the plot)</translation>
+    </message>
+    <message>
+        <source>Export P&amp;NG…</source>
+        <translation>Export P&amp;NG…</translation>
+    </message>
+    <message>
+        <source>Save the preview as it is shown as a PNG picture</source>
+        <translation>Save the preview as it is shown as a PNG picture</translation>
+    </message>
+    <message>
+        <source>Real run</source>
+        <translation>Real run</translation>
+    </message>
+    <message>
+        <source>Drag to zoom into a region, wheel or +/- to zoom, middle button or arrow keys to pan, double-click to fit.</source>
+        <translation>Drag to zoom into a region, wheel or +/- to zoom, middle button or arrow keys to pan, double-click to fit.</translation>
+    </message>
+    <message>
+        <source>Approach</source>
+        <translation>Approach</translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation>Arc</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <source>Invalid</source>
+        <translation>Invalid</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>End</translation>
+    </message>
+    <message>
+        <source>Middle point</source>
+        <translation>Middle point</translation>
+    </message>
+    <message>
+        <source>Centre (computed)</source>
+        <translation>Centre (computed)</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>Centre</translation>
+    </message>
+    <message>
+        <source>Invalid: %1</source>
+        <translation>Invalid: %1</translation>
+    </message>
+    <message>
+        <source>Dashed: the approach from the current position; both axes start together, each at its own speed, so the last one finishes alone.</source>
+        <translation>Dashed: the approach from the current position; both axes start together, each at its own speed, so the last one finishes alone.</translation>
+    </message>
+    <message>
+        <source>Dashed: the approach from the current position (the motors&apos; parameters are not known yet: drawn as equal speeds).</source>
+        <translation>Dashed: the approach from the current position (the motors&apos; parameters are not known yet: drawn as equal speeds).</translation>
+    </message>
+    <message>
+        <source>path, arrowheads: direction</source>
+        <translation>path, arrowheads: direction</translation>
+    </message>
+    <message>
+        <source>approach</source>
+        <translation>approach</translation>
+    </message>
+    <message>
+        <source>real run</source>
+        <translation>real run</translation>
+    </message>
+    <message>
+        <source>start</source>
+        <translation>start</translation>
+    </message>
+    <message>
+        <source>end</source>
+        <translation>end</translation>
+    </message>
+    <message>
+        <source>middle point</source>
+        <translation>middle point</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>centre</translation>
+    </message>
+    <message>
+        <source>Export the preview as PNG</source>
+        <translation>Export the preview as PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG images (*.png)</translation>
+    </message>
+    <message>
+        <source>Saved “%1”.</source>
+        <translation>Saved “%1”.</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::JogController</name>
     <message>
         <source>Motor %1 has stopped now</source>
@@ -1966,6 +2143,197 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ModesPage</name>
+    <message>
+        <source>Normal operation (factory setting): the motors run from commands (this program, the bus); the inputs are the limits and home inputs chosen in the limit settings.</source>
+        <translation>Normal operation (factory setting): the motors run from commands (this program, the bus); the inputs are the limits and home inputs chosen in the limit settings.</translation>
+    </message>
+    <message>
+        <source>as set in the limit settings</source>
+        <translation>as set in the limit settings</translation>
+    </message>
+    <message>
+        <source>Motor 1 only. A start on IN4 runs it forward to the positive limit (IN1), then in reverse to the negative limit (IN2): one round trip, repeated the round-trip count of times (0 = endless). The speed comes from the on-board or external potentiometer.</source>
+        <translation>Motor 1 only. A start on IN4 runs it forward to the positive limit (IN1), then in reverse to the negative limit (IN2): one round trip, repeated the round-trip count of times (0 = endless). The speed comes from the on-board or external potentiometer.</translation>
+    </message>
+    <message>
+        <source>positive limit</source>
+        <translation>positive limit</translation>
+    </message>
+    <message>
+        <source>negative limit</source>
+        <translation>negative limit</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <translation>emergency stop</translation>
+    </message>
+    <message>
+        <source>start (forward)</source>
+        <translation>start (forward)</translation>
+    </message>
+    <message>
+        <source>Motor 1 runs on a short pulse: IN1 starts it (forward the first time), IN2-IN4 stop it and choose the direction of the next start. The limit settings are ignored.</source>
+        <translation>Motor 1 runs on a short pulse: IN1 starts it (forward the first time), IN2-IN4 stop it and choose the direction of the next start. The limit settings are ignored.</translation>
+    </message>
+    <message>
+        <source>start (forward the first time)</source>
+        <translation>start (forward the first time)</translation>
+    </message>
+    <message>
+        <source>stop; next start keeps the direction</source>
+        <translation>stop; next start keeps the direction</translation>
+    </message>
+    <message>
+        <source>stop; next start reverses</source>
+        <translation>stop; next start reverses</translation>
+    </message>
+    <message>
+        <source>stop; next start goes forward</source>
+        <translation>stop; next start goes forward</translation>
+    </message>
+    <message>
+        <source>Motor 1 runs forward on a pulse on IN1 and in reverse on a pulse on IN2; IN3 and IN4 are its limits. The limit settings are ignored.</source>
+        <translation>Motor 1 runs forward on a pulse on IN1 and in reverse on a pulse on IN2; IN3 and IN4 are its limits. The limit settings are ignored.</translation>
+    </message>
+    <message>
+        <source>run forward</source>
+        <translation>run forward</translation>
+    </message>
+    <message>
+        <source>run reverse</source>
+        <translation>run reverse</translation>
+    </message>
+    <message>
+        <source>positive limit: stops a forward run, only reverse allowed then</source>
+        <translation>positive limit: stops a forward run, only reverse allowed then</translation>
+    </message>
+    <message>
+        <source>negative limit: stops a reverse run</source>
+        <translation>negative limit: stops a reverse run</translation>
+    </message>
+    <message>
+        <source>Motor 1 runs while IN1 (forward) or IN2 (reverse) is held and stops when it is released; IN3 and IN4 are its limits. The limit settings are ignored.</source>
+        <translation>Motor 1 runs while IN1 (forward) or IN2 (reverse) is held and stops when it is released; IN3 and IN4 are its limits. The limit settings are ignored.</translation>
+    </message>
+    <message>
+        <source>held: forward; released: stop</source>
+        <translation>held: forward; released: stop</translation>
+    </message>
+    <message>
+        <source>held: reverse; released: stop</source>
+        <translation>held: reverse; released: stop</translation>
+    </message>
+    <message>
+        <source>Each pulse on IN1 moves motor 1 forward by its set move distance, each pulse on IN2 in reverse; IN3 and IN4 are its limits. The limit settings are ignored.</source>
+        <translation>Each pulse on IN1 moves motor 1 forward by its set move distance, each pulse on IN2 in reverse; IN3 and IN4 are its limits. The limit settings are ignored.</translation>
+    </message>
+    <message>
+        <source>forward by the set distance</source>
+        <translation>forward by the set distance</translation>
+    </message>
+    <message>
+        <source>reverse by the set distance</source>
+        <translation>reverse by the set distance</translation>
+    </message>
+    <message>
+        <source>Special modes</source>
+        <translation>Special modes</translation>
+    </message>
+    <message>
+        <source>IN%1: %2</source>
+        <translation>IN%1: %2</translation>
+    </message>
+    <message>
+        <source>The limit settings are ignored in this mode.</source>
+        <translation>The limit settings are ignored in this mode.</translation>
+    </message>
+    <message>
+        <source>Change the system mode</source>
+        <translation>Change the system mode</translation>
+    </message>
+    <message>
+        <source>Change the controller to mode %1 “%2”? This changes what the machine&apos;s inputs IN1-IN4 do, at once.</source>
+        <translation>Change the controller to mode %1 “%2”? This changes what the machine&apos;s inputs IN1-IN4 do, at once.</translation>
+    </message>
+    <message>
+        <source>Change mode</source>
+        <translation>Change mode</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s mode is not known yet.</source>
+        <translation>The controller&apos;s mode is not known yet.</translation>
+    </message>
+    <message>
+        <source>The controller runs normally.</source>
+        <translation>The controller runs normally.</translation>
+    </message>
+    <message>
+        <source>The controller is in special mode %1.</source>
+        <translation>The controller is in special mode %1.</translation>
+    </message>
+    <message>
+        <source>System mode (40300)</source>
+        <translation>System mode (40300)</translation>
+    </message>
+    <message>
+        <source>&amp;Mode:</source>
+        <translation>&amp;Mode:</translation>
+    </message>
+    <message>
+        <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything; only IN3 and IN4 act as limits, as the table shows. Wire them before using these modes.</source>
+        <translation>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything; only IN3 and IN4 act as limits, as the table shows. Wire them before using these modes.</translation>
+    </message>
+    <message>
+        <source>What the inputs do in each mode (motor 1; short pulses unless “held”)</source>
+        <translation>What the inputs do in each mode (motor 1; short pulses unless “held”)</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Mode</translation>
+    </message>
+    <message>
+        <source>IN1</source>
+        <translation>IN1</translation>
+    </message>
+    <message>
+        <source>IN2</source>
+        <translation>IN2</translation>
+    </message>
+    <message>
+        <source>IN3</source>
+        <translation>IN3</translation>
+    </message>
+    <message>
+        <source>IN4</source>
+        <translation>IN4</translation>
+    </message>
+    <message>
+        <source>Limit settings</source>
+        <translation>Limit settings</translation>
+    </message>
+    <message>
+        <source>ignored</source>
+        <translation>ignored</translation>
+    </message>
+    <message>
+        <source>used</source>
+        <translation>used</translation>
+    </message>
+    <message>
+        <source>Round trips (40301)</source>
+        <translation>Round trips (40301)</translation>
+    </message>
+    <message>
+        <source>Only used in mode 1 (round trip): how many round trips motor 1 makes after a start; 0 = endless.</source>
+        <translation>Only used in mode 1 (round trip): how many round trips motor 1 makes after a start; 0 = endless.</translation>
+    </message>
+    <message>
+        <source>&amp;Write changes…</source>
+        <translation>&amp;Write changes…</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::MotionPage</name>
     <message>
         <source>Homing in order</source>
@@ -2212,6 +2580,173 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not written: an earlier write failed</source>
         <translation>not written: an earlier write failed</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PathEditor</name>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>Centre</translation>
+    </message>
+    <message>
+        <source>Start / end radius</source>
+        <translation>Start / end radius</translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation>Sweep</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>Path length</translation>
+    </message>
+    <message>
+        <source>Path speed</source>
+        <translation>Path speed</translation>
+    </message>
+    <message>
+        <source>Estimated time</source>
+        <translation>Estimated time</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>Not connected.</translation>
+    </message>
+    <message>
+        <source>A value is being typed: press Enter to keep it, then write it.</source>
+        <translation>A value is being typed: press Enter to keep it, then write it.</translation>
+    </message>
+    <message>
+        <source>Changes not written yet: write them first, so the controller runs what the preview shows.</source>
+        <translation>Changes not written yet: write them first, so the controller runs what the preview shows.</translation>
+    </message>
+    <message>
+        <source>Not read from the controller yet.</source>
+        <translation>Not read from the controller yet.</translation>
+    </message>
+    <message>
+        <source>The geometry is invalid: %1</source>
+        <translation>The geometry is invalid: %1</translation>
+    </message>
+    <message>
+        <source>Arc interpolation is off (40182): choose “Motors 1+2 interpolate” and write it.</source>
+        <translation>Arc interpolation is off (40182): choose “Motors 1+2 interpolate” and write it.</translation>
+    </message>
+    <message>
+        <source>Line interpolation is off (40202): choose “Motors 1+2 interpolate” and write it.</source>
+        <translation>Line interpolation is off (40202): choose “Motors 1+2 interpolate” and write it.</translation>
+    </message>
+    <message>
+        <source>A motor is moving: wait until it stops, or stop it.</source>
+        <translation>A motor is moving: wait until it stops, or stop it.</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Starting…</translation>
+    </message>
+    <message>
+        <source> — computed from the three points</source>
+        <translation> — computed from the three points</translation>
+    </message>
+    <message>
+        <source>%1 / %2 (difference %3, at most %4)</source>
+        <translation>%1 / %2 (difference %3, at most %4)</translation>
+    </message>
+    <message>
+        <source>%1° (full circle)</source>
+        <translation>%1° (full circle)</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>%1 rpm = %2 %3/s</source>
+        <translation>%1 rpm = %2 %3/s</translation>
+    </message>
+    <message>
+        <source>%1 (approach %2 + path %3)</source>
+        <translation>%1 (approach %2 + path %3)</translation>
+    </message>
+    <message>
+        <source>Ready: Start runs the path shown, as written.</source>
+        <translation>Ready: Start runs the path shown, as written.</translation>
+    </message>
+    <message>
+        <source>Arc parameters</source>
+        <translation>Arc parameters</translation>
+    </message>
+    <message>
+        <source>Line parameters</source>
+        <translation>Line parameters</translation>
+    </message>
+    <message>
+        <source>What the controller will do</source>
+        <translation>What the controller will do</translation>
+    </message>
+    <message>
+        <source>Run the arc</source>
+        <translation>Run the arc</translation>
+    </message>
+    <message>
+        <source>Run the line</source>
+        <translation>Run the line</translation>
+    </message>
+    <message>
+        <source>Estimated time: the approach from where the axes are now (each axis on its own at its own speed) plus the path, driven at the set speed as motor 1 revolutions per minute with motor 1&apos;s start frequency, acceleration and pitch, as the simulator runs it. A real controller may differ.</source>
+        <translation>Estimated time: the approach from where the axes are now (each axis on its own at its own speed) plus the path, driven at the set speed as motor 1 revolutions per minute with motor 1&apos;s start frequency, acceleration and pitch, as the simulator runs it. A real controller may differ.</translation>
+    </message>
+    <message>
+        <source>&amp;Write changes…</source>
+        <translation>&amp;Write changes…</translation>
+    </message>
+    <message>
+        <source>Write this editor&apos;s changes to the controller and read them back</source>
+        <translation>Write this editor&apos;s changes to the controller and read them back</translation>
+    </message>
+    <message>
+        <source>Start arc</source>
+        <translation>Start arc</translation>
+    </message>
+    <message>
+        <source>Start line</source>
+        <translation>Start line</translation>
+    </message>
+    <message>
+        <source>Coil 00100: each axis first moves to the start point on its own, then both follow the arc</source>
+        <translation>Coil 00100: each axis first moves to the start point on its own, then both follow the arc</translation>
+    </message>
+    <message>
+        <source>Coil 00102: each axis first moves to the start point on its own, then both follow the line</source>
+        <translation>Coil 00102: each axis first moves to the start point on its own, then both follow the line</translation>
+    </message>
+    <message>
+        <source>Stop arc</source>
+        <translation>Stop arc</translation>
+    </message>
+    <message>
+        <source>Stop line</source>
+        <translation>Stop line</translation>
+    </message>
+    <message>
+        <source>Coil 00101, sent ahead of everything queued</source>
+        <translation>Coil 00101, sent ahead of everything queued</translation>
+    </message>
+    <message>
+        <source>Coil 00103, sent ahead of everything queued</source>
+        <translation>Coil 00103, sent ahead of everything queued</translation>
     </message>
 </context>
 <context>

@@ -1328,6 +1328,183 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::InterpolationGeometry</name>
+    <message>
+        <source>Start and end are the same point: three points cannot describe a full circle. Use the centre mode for a full circle.</source>
+        <translation>起点与终点相同：三点无法描述整圆。整圆请使用圆心模式。</translation>
+    </message>
+    <message>
+        <source>The middle point %1 is the same as the start or the end point: three distinct points are needed.</source>
+        <translation>中间点 %1 与起点或终点相同：需要三个不同的点。</translation>
+    </message>
+    <message>
+        <source>Start, middle and end are on one straight line: no circle passes through them. Use the line editor for a straight move.</source>
+        <translation>起点、中间点和终点在同一直线上：没有圆经过这三点。直线运动请使用直线编辑器。</translation>
+    </message>
+    <message>
+        <source>The start point is the centre: the radius is zero.</source>
+        <translation>起点即圆心：半径为零。</translation>
+    </message>
+    <message>
+        <source>The end point is the centre: the radius is zero.</source>
+        <translation>终点即圆心：半径为零。</translation>
+    </message>
+    <message>
+        <source>Start and end are not the same distance from the centre: start radius %1, end radius %2, difference %3 (at most %4 allowed).</source>
+        <translation>起点和终点到圆心的距离不相等：起点半径 %1，终点半径 %2，差值 %3（最大允许 %4）。</translation>
+    </message>
+    <message>
+        <source>Start and end are the same point: this is a full circle.</source>
+        <translation>起点与终点相同：这是一个整圆。</translation>
+    </message>
+    <message>
+        <source>The arc in the chosen direction does not pass through the middle point: the controller goes the other way round the circle. Change the direction to pass through it.</source>
+        <translation>按所选方向运行的圆弧不经过中间点：控制器会沿圆的另一侧运行。请更改方向以经过中间点。</translation>
+    </message>
+    <message>
+        <source>Start and end are the same point %1: the line has no length.</source>
+        <translation>起点与终点是同一点 %1：直线长度为零。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::InterpolationPage</name>
+    <message>
+        <source>Interpolation</source>
+        <translation>插补</translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>Motor 1 (X) [%1]</source>
+        <translation>电机 1 (X) [%1]</translation>
+    </message>
+    <message>
+        <source>Motor 2 (Y) [%1]</source>
+        <translation>电机 2 (Y) [%1]</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::InterpolationPreview</name>
+    <message>
+        <source>&amp;Fit</source>
+        <translation>全部显示(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Show the whole path again (or double-click the plot)</source>
+        <translation>重新显示整个路径（或双击图表）</translation>
+    </message>
+    <message>
+        <source>Export P&amp;NG…</source>
+        <translation>导出 PNG(&amp;N)…</translation>
+    </message>
+    <message>
+        <source>Save the preview as it is shown as a PNG picture</source>
+        <translation>将当前显示的预览保存为 PNG 图片</translation>
+    </message>
+    <message>
+        <source>Real run</source>
+        <translation>实际运行</translation>
+    </message>
+    <message>
+        <source>Drag to zoom into a region, wheel or +/- to zoom, middle button or arrow keys to pan, double-click to fit.</source>
+        <translation>拖动可放大某个区域，滚轮或 +/- 缩放，中键或方向键平移，双击全部显示。</translation>
+    </message>
+    <message>
+        <source>Approach</source>
+        <translation>趋近移动</translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>Invalid</source>
+        <translation>无效</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>起点</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>终点</translation>
+    </message>
+    <message>
+        <source>Middle point</source>
+        <translation>中间点</translation>
+    </message>
+    <message>
+        <source>Centre (computed)</source>
+        <translation>圆心（计算值）</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>圆心</translation>
+    </message>
+    <message>
+        <source>Invalid: %1</source>
+        <translation>无效：%1</translation>
+    </message>
+    <message>
+        <source>Dashed: the approach from the current position; both axes start together, each at its own speed, so the last one finishes alone.</source>
+        <translation>虚线：从当前位置到起点的趋近移动；两轴同时启动，各自以自身速度运行，因此较晚到达的一轴最后单独运行。</translation>
+    </message>
+    <message>
+        <source>Dashed: the approach from the current position (the motors&apos; parameters are not known yet: drawn as equal speeds).</source>
+        <translation>虚线：从当前位置到起点的趋近移动（电机参数尚未读取：按相同速度绘制）。</translation>
+    </message>
+    <message>
+        <source>path, arrowheads: direction</source>
+        <translation>路径，箭头：方向</translation>
+    </message>
+    <message>
+        <source>approach</source>
+        <translation>趋近移动</translation>
+    </message>
+    <message>
+        <source>real run</source>
+        <translation>实际运行</translation>
+    </message>
+    <message>
+        <source>start</source>
+        <translation>起点</translation>
+    </message>
+    <message>
+        <source>end</source>
+        <translation>终点</translation>
+    </message>
+    <message>
+        <source>middle point</source>
+        <translation>中间点</translation>
+    </message>
+    <message>
+        <source>centre</source>
+        <translation>圆心</translation>
+    </message>
+    <message>
+        <source>Export the preview as PNG</source>
+        <translation>将预览导出为 PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 图片 (*.png)</translation>
+    </message>
+    <message>
+        <source>Saved “%1”.</source>
+        <translation>已保存“%1”。</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::JogController</name>
     <message>
         <source>Motor %1 has stopped now</source>
@@ -1958,6 +2135,197 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ModesPage</name>
+    <message>
+        <source>Normal operation (factory setting): the motors run from commands (this program, the bus); the inputs are the limits and home inputs chosen in the limit settings.</source>
+        <translation>常规模式（出厂设置）：电机由命令（本程序、总线）控制；输入为限位设置中选定的限位和原点输入。</translation>
+    </message>
+    <message>
+        <source>as set in the limit settings</source>
+        <translation>按限位设置</translation>
+    </message>
+    <message>
+        <source>Motor 1 only. A start on IN4 runs it forward to the positive limit (IN1), then in reverse to the negative limit (IN2): one round trip, repeated the round-trip count of times (0 = endless). The speed comes from the on-board or external potentiometer.</source>
+        <translation>仅电机 1。IN4 启动后正转至正限位 (IN1)，再反转至负限位 (IN2)，为一次往返；按往返次数重复（0 表示无限次）。速度由板载或外接电位器调节。</translation>
+    </message>
+    <message>
+        <source>positive limit</source>
+        <translation>正限位</translation>
+    </message>
+    <message>
+        <source>negative limit</source>
+        <translation>负限位</translation>
+    </message>
+    <message>
+        <source>emergency stop</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>start (forward)</source>
+        <translation>启动（正转）</translation>
+    </message>
+    <message>
+        <source>Motor 1 runs on a short pulse: IN1 starts it (forward the first time), IN2-IN4 stop it and choose the direction of the next start. The limit settings are ignored.</source>
+        <translation>电机 1 由短脉冲触发：IN1 启动（首次正转），IN2-IN4 停止并决定下次启动的方向。限位设置失效。</translation>
+    </message>
+    <message>
+        <source>start (forward the first time)</source>
+        <translation>启动（首次正转）</translation>
+    </message>
+    <message>
+        <source>stop; next start keeps the direction</source>
+        <translation>停止；下次启动保持原方向</translation>
+    </message>
+    <message>
+        <source>stop; next start reverses</source>
+        <translation>停止；下次启动反向</translation>
+    </message>
+    <message>
+        <source>stop; next start goes forward</source>
+        <translation>停止；下次启动正转</translation>
+    </message>
+    <message>
+        <source>Motor 1 runs forward on a pulse on IN1 and in reverse on a pulse on IN2; IN3 and IN4 are its limits. The limit settings are ignored.</source>
+        <translation>IN1 触发电机 1 正转，IN2 触发反转；IN3 和 IN4 为其限位。限位设置失效。</translation>
+    </message>
+    <message>
+        <source>run forward</source>
+        <translation>正转运行</translation>
+    </message>
+    <message>
+        <source>run reverse</source>
+        <translation>反转运行</translation>
+    </message>
+    <message>
+        <source>positive limit: stops a forward run, only reverse allowed then</source>
+        <translation>正限位：停止正转，之后只允许反转</translation>
+    </message>
+    <message>
+        <source>negative limit: stops a reverse run</source>
+        <translation>负限位：停止反转</translation>
+    </message>
+    <message>
+        <source>Motor 1 runs while IN1 (forward) or IN2 (reverse) is held and stops when it is released; IN3 and IN4 are its limits. The limit settings are ignored.</source>
+        <translation>按住 IN1（正转）或 IN2（反转）时电机 1 运行，松开即停止；IN3 和 IN4 为其限位。限位设置失效。</translation>
+    </message>
+    <message>
+        <source>held: forward; released: stop</source>
+        <translation>按住：正转；松开：停止</translation>
+    </message>
+    <message>
+        <source>held: reverse; released: stop</source>
+        <translation>按住：反转；松开：停止</translation>
+    </message>
+    <message>
+        <source>Each pulse on IN1 moves motor 1 forward by its set move distance, each pulse on IN2 in reverse; IN3 and IN4 are its limits. The limit settings are ignored.</source>
+        <translation>IN1 每触发一次，电机 1 正转设定距离；IN2 每触发一次反转设定距离；IN3 和 IN4 为其限位。限位设置失效。</translation>
+    </message>
+    <message>
+        <source>forward by the set distance</source>
+        <translation>正转设定距离</translation>
+    </message>
+    <message>
+        <source>reverse by the set distance</source>
+        <translation>反转设定距离</translation>
+    </message>
+    <message>
+        <source>Special modes</source>
+        <translation>特殊功能模式</translation>
+    </message>
+    <message>
+        <source>IN%1: %2</source>
+        <translation>IN%1：%2</translation>
+    </message>
+    <message>
+        <source>The limit settings are ignored in this mode.</source>
+        <translation>此模式下限位设置无效。</translation>
+    </message>
+    <message>
+        <source>Change the system mode</source>
+        <translation>更改系统模式</translation>
+    </message>
+    <message>
+        <source>Change the controller to mode %1 “%2”? This changes what the machine&apos;s inputs IN1-IN4 do, at once.</source>
+        <translation>将控制器切换到模式 %1“%2”？这会立即改变机器输入 IN1-IN4 的作用。</translation>
+    </message>
+    <message>
+        <source>Change mode</source>
+        <translation>更改模式</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s mode is not known yet.</source>
+        <translation>尚未读取控制器的模式。</translation>
+    </message>
+    <message>
+        <source>The controller runs normally.</source>
+        <translation>控制器处于常规模式。</translation>
+    </message>
+    <message>
+        <source>The controller is in special mode %1.</source>
+        <translation>控制器处于特殊模式 %1。</translation>
+    </message>
+    <message>
+        <source>System mode (40300)</source>
+        <translation>系统模式 (40300)</translation>
+    </message>
+    <message>
+        <source>&amp;Mode:</source>
+        <translation>模式(&amp;M)：</translation>
+    </message>
+    <message>
+        <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything; only IN3 and IN4 act as limits, as the table shows. Wire them before using these modes.</source>
+        <translation>模式 2-5 下限位设置全部失效：为电机设置的限位和原点输入不再停止任何运动；只有 IN3 和 IN4 按下表充当限位。使用这些模式前请先接好它们。</translation>
+    </message>
+    <message>
+        <source>What the inputs do in each mode (motor 1; short pulses unless “held”)</source>
+        <translation>各模式下输入的作用（电机 1；除注明“按住”外均为短脉冲触发）</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>模式</translation>
+    </message>
+    <message>
+        <source>IN1</source>
+        <translation>IN1</translation>
+    </message>
+    <message>
+        <source>IN2</source>
+        <translation>IN2</translation>
+    </message>
+    <message>
+        <source>IN3</source>
+        <translation>IN3</translation>
+    </message>
+    <message>
+        <source>IN4</source>
+        <translation>IN4</translation>
+    </message>
+    <message>
+        <source>Limit settings</source>
+        <translation>限位设置</translation>
+    </message>
+    <message>
+        <source>ignored</source>
+        <translation>失效</translation>
+    </message>
+    <message>
+        <source>used</source>
+        <translation>有效</translation>
+    </message>
+    <message>
+        <source>Round trips (40301)</source>
+        <translation>往返次数 (40301)</translation>
+    </message>
+    <message>
+        <source>Only used in mode 1 (round trip): how many round trips motor 1 makes after a start; 0 = endless.</source>
+        <translation>仅用于模式 1（往返运行）：电机 1 启动后的往返次数；0 表示无限次。</translation>
+    </message>
+    <message>
+        <source>&amp;Write changes…</source>
+        <translation>写入更改(&amp;W)…</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::MotionPage</name>
     <message>
         <source>Homing in order</source>
@@ -2202,6 +2570,173 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not written: an earlier write failed</source>
         <translation>未写入：之前的写入失败</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PathEditor</name>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 分 %2 秒</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>半径</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>圆心</translation>
+    </message>
+    <message>
+        <source>Start / end radius</source>
+        <translation>起点 / 终点半径</translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation>圆心角</translation>
+    </message>
+    <message>
+        <source>Path length</source>
+        <translation>路径长度</translation>
+    </message>
+    <message>
+        <source>Path speed</source>
+        <translation>路径速度</translation>
+    </message>
+    <message>
+        <source>Estimated time</source>
+        <translation>预计时间</translation>
+    </message>
+    <message>
+        <source>Not connected.</source>
+        <translation>未连接。</translation>
+    </message>
+    <message>
+        <source>A value is being typed: press Enter to keep it, then write it.</source>
+        <translation>正在输入数值：按回车确认，然后写入。</translation>
+    </message>
+    <message>
+        <source>Changes not written yet: write them first, so the controller runs what the preview shows.</source>
+        <translation>更改尚未写入：请先写入，使控制器运行的正是预览所示路径。</translation>
+    </message>
+    <message>
+        <source>Not read from the controller yet.</source>
+        <translation>尚未从控制器读取。</translation>
+    </message>
+    <message>
+        <source>The geometry is invalid: %1</source>
+        <translation>几何参数无效：%1</translation>
+    </message>
+    <message>
+        <source>Arc interpolation is off (40182): choose “Motors 1+2 interpolate” and write it.</source>
+        <translation>圆弧插补已关闭 (40182)：请选择“电机 1、2 插补”并写入。</translation>
+    </message>
+    <message>
+        <source>Line interpolation is off (40202): choose “Motors 1+2 interpolate” and write it.</source>
+        <translation>直线插补已关闭 (40202)：请选择“电机 1、2 插补”并写入。</translation>
+    </message>
+    <message>
+        <source>A motor is moving: wait until it stops, or stop it.</source>
+        <translation>有电机正在运行：请等待其停止，或将其停止。</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>正在启动…</translation>
+    </message>
+    <message>
+        <source> — computed from the three points</source>
+        <translation> — 由三点计算得出</translation>
+    </message>
+    <message>
+        <source>%1 / %2 (difference %3, at most %4)</source>
+        <translation>%1 / %2（差值 %3，最大允许 %4）</translation>
+    </message>
+    <message>
+        <source>%1° (full circle)</source>
+        <translation>%1°（整圆）</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>%1 rpm = %2 %3/s</source>
+        <translation>%1 rpm = %2 %3/s</translation>
+    </message>
+    <message>
+        <source>%1 (approach %2 + path %3)</source>
+        <translation>%1（趋近 %2 + 路径 %3）</translation>
+    </message>
+    <message>
+        <source>Ready: Start runs the path shown, as written.</source>
+        <translation>就绪：启动将按已写入的参数运行所示路径。</translation>
+    </message>
+    <message>
+        <source>Arc parameters</source>
+        <translation>圆弧参数</translation>
+    </message>
+    <message>
+        <source>Line parameters</source>
+        <translation>直线参数</translation>
+    </message>
+    <message>
+        <source>What the controller will do</source>
+        <translation>控制器将执行的运动</translation>
+    </message>
+    <message>
+        <source>Run the arc</source>
+        <translation>运行圆弧</translation>
+    </message>
+    <message>
+        <source>Run the line</source>
+        <translation>运行直线</translation>
+    </message>
+    <message>
+        <source>Estimated time: the approach from where the axes are now (each axis on its own at its own speed) plus the path, driven at the set speed as motor 1 revolutions per minute with motor 1&apos;s start frequency, acceleration and pitch, as the simulator runs it. A real controller may differ.</source>
+        <translation>预计时间：从当前位置的趋近移动（各轴以自身速度单独运行）加上路径运行；路径按设定速度（以电机 1 的转速计）并使用电机 1 的启动频率、加速度和螺距计算，与仿真器一致。实际控制器可能有所不同。</translation>
+    </message>
+    <message>
+        <source>&amp;Write changes…</source>
+        <translation>写入更改(&amp;W)…</translation>
+    </message>
+    <message>
+        <source>Write this editor&apos;s changes to the controller and read them back</source>
+        <translation>将本编辑器的更改写入控制器并回读校验</translation>
+    </message>
+    <message>
+        <source>Start arc</source>
+        <translation>启动圆弧</translation>
+    </message>
+    <message>
+        <source>Start line</source>
+        <translation>启动直线</translation>
+    </message>
+    <message>
+        <source>Coil 00100: each axis first moves to the start point on its own, then both follow the arc</source>
+        <translation>线圈 00100：各轴先单独运行到起点，然后两轴沿圆弧插补运行</translation>
+    </message>
+    <message>
+        <source>Coil 00102: each axis first moves to the start point on its own, then both follow the line</source>
+        <translation>线圈 00102：各轴先单独运行到起点，然后两轴沿直线插补运行</translation>
+    </message>
+    <message>
+        <source>Stop arc</source>
+        <translation>停止圆弧</translation>
+    </message>
+    <message>
+        <source>Stop line</source>
+        <translation>停止直线</translation>
+    </message>
+    <message>
+        <source>Coil 00101, sent ahead of everything queued</source>
+        <translation>线圈 00101，优先于所有排队请求发送</translation>
+    </message>
+    <message>
+        <source>Coil 00103, sent ahead of everything queued</source>
+        <translation>线圈 00103，优先于所有排队请求发送</translation>
     </message>
 </context>
 <context>

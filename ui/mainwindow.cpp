@@ -14,6 +14,7 @@
 #include "pages/motionpage.h"        // jogging (issue 5)
 #include "pages/motorpage.h"
 #include "pages/plotpage.h" // monitoring (issue 5)
+#include "profileactions.h" // profiles (issue 7)
 #include "widgets/linkstatus.h"
 #include "widgets/messageview.h"
 #include "widgets/statusdock.h" // monitoring (issue 5)
@@ -75,6 +76,12 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
             [this] { m_motion->jog()->stopAll(tr("another page was chosen")); });
     connect(m_motion->jog(), &JogController::message, m_messages, &MessageView::add);
     // --- end jogging ---
+    connect(m_profiles, &ProfileActions::finished, this, // profiles (issue 7)
+            [this](bool ok, const QString &text) {
+                m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,
+                                text);
+                statusBar()->showMessage(text, 5000);
+            });
     statusBar()->addPermanentWidget(m_linkStatus);
 
     connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
@@ -186,6 +193,16 @@ void MainWindow::createActions()
 void MainWindow::createMenus()
 {
     m_fileMenu = menuBar()->addMenu(QString());
+    // --- profiles (issue 7): open/compare/apply, save, recent, the commissioning report ---
+    m_profiles = new ProfileActions(m_session, this);
+    m_fileMenu->addAction(m_profiles->openAction());
+    m_fileMenu->addMenu(m_profiles->recentMenu());
+    m_fileMenu->addAction(m_profiles->saveFromDeviceAction());
+    m_fileMenu->addAction(m_profiles->saveFromEditedAction());
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_profiles->reportAction());
+    m_fileMenu->addSeparator();
+    // --- end profiles ---
     m_fileMenu->addAction(m_quit);
     m_deviceMenu = menuBar()->addMenu(QString());
     m_deviceMenu->addActions({m_readAll, m_write, m_revert, m_save});
@@ -248,6 +265,7 @@ void MainWindow::retranslate()
     m_quit->setText(tr("&Quit"));
     m_about->setText(tr("&About StepCom"));
     m_fileMenu->setTitle(tr("&File"));
+    m_profiles->retranslate(); // profiles (issue 7)
     m_deviceMenu->setTitle(tr("&Device"));
     m_viewMenu->setTitle(tr("&View"));
     m_languageMenu->setTitle(tr("&Language"));

@@ -19,7 +19,8 @@ class LinkStatus;
 class MessageView;
 class MotionPage; // jogging (issue 5)
 class Page;
-class StatusDock; // monitoring (issue 5)
+class ProfileActions; // profiles (issue 7)
+class StatusDock;     // monitoring (issue 5)
 class TrafficView;
 class WriteChangesDialog;
 
@@ -41,7 +42,8 @@ public:
     StatusDock *statusDock() const { return m_statusDock; } // monitoring (issue 5)
     TrafficView *trafficView() const { return m_traffic; }
     MessageView *messageView() const { return m_messages; }
-    MotionPage *motionPage() const { return m_motion; } // jogging (issue 5)
+    MotionPage *motionPage() const { return m_motion; }           // jogging (issue 5)
+    ProfileActions *profileActions() const { return m_profiles; } // profiles (issue 7)
     // The dialogs a test (or a curious user) may want to reach while they are open.
     WriteChangesDialog *writeDialog() const;
     QMessageBox *closeQuestion() const;
@@ -76,8 +78,9 @@ private:
     QDockWidget *m_messageDock = nullptr;
     StatusDock *m_statusDock = nullptr; // monitoring (issue 5)
     LinkStatus *m_linkStatus = nullptr;
-    MotionPage *m_motion = nullptr; // jogging (issue 5)
-    bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once
+    MotionPage *m_motion = nullptr;       // jogging (issue 5)
+    ProfileActions *m_profiles = nullptr; // profiles (issue 7)
+    bool m_jogStopAwaited = false;        // jogging (issue 5): close waited for the stops once
     QPointer<WriteChangesDialog> m_writeDialog;
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;

@@ -47,6 +47,13 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("verbose"), tr("Show the Modbus traffic on standard error.")},
         {QStringLiteral("yes"), tr("Do not ask: needed for commands that destroy settings.")},
         {QStringLiteral("save-to-flash"), tr("After writing, save the parameters to flash.")},
+        {QStringLiteral("include-link"),
+         tr("dump, apply: include the device id and baud (apply writes them only with this).")},
+        {QStringLiteral("name"), tr("dump, report: name of the profile or the machine."),
+         tr("text")},
+        {QStringLiteral("notes"), tr("dump, report: notes to record."), tr("text")},
+        {QStringLiteral("lang"), tr("report: language of the report, en or zh_CN (default en)."),
+         tr("language"), QStringLiteral("en")},
         {QStringLiteral("count"), tr("monitor: number of samples (default: until stopped)."),
          tr("n")},
         {QStringLiteral("interval"),
@@ -111,9 +118,16 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.verbose = parser.isSet(QStringLiteral("verbose"));
     o.yes = parser.isSet(QStringLiteral("yes"));
     o.saveToFlash = parser.isSet(QStringLiteral("save-to-flash"));
+    o.includeLink = parser.isSet(QStringLiteral("include-link"));
+    o.name = parser.value(QStringLiteral("name"));
+    o.notes = parser.value(QStringLiteral("notes"));
+    o.language = parser.value(QStringLiteral("lang"));
+    if (o.language != QLatin1String("en") && o.language != QLatin1String("zh_CN"))
+        return tr("--lang: '%1' is not en or zh_CN").arg(o.language);
     const QStringList positional = parser.positionalArguments();
     if (positional.isEmpty())
-        return tr("no command given (params, read, write, command)");
+        return tr("no command given (params, read, write, command, monitor, dump, diff, apply, "
+                  "report)");
     o.command = positional.first();
     o.arguments = positional.mid(1);
     if (o.target != Target::None) {

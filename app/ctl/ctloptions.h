@@ -18,6 +18,10 @@ struct CtlOptions
     bool verbose = false;
     bool yes = false;
     bool saveToFlash = false;
+    bool includeLink = false;                // dump/apply: device.id and device.baud too
+    QString name;                            // dump/report: the profile's or the machine's name
+    QString notes;                           // dump/report
+    QString language = QStringLiteral("en"); // report: en or zh_CN
     int count = -1;
     int intervalMs = 0;
     QString command;

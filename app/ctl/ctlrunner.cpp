@@ -80,8 +80,18 @@ void CtlRunner::start()
         runCommand();
     else if (c == QLatin1String("monitor"))
         runMonitor();
+    else if (c == QLatin1String("dump"))
+        runDump();
+    else if (c == QLatin1String("diff"))
+        runDiff();
+    else if (c == QLatin1String("apply"))
+        runApply();
+    else if (c == QLatin1String("report"))
+        runReport();
     else
-        fail(UsageError, tr("unknown command '%1' (params, read, write, command, monitor)").arg(c));
+        fail(UsageError, tr("unknown command '%1' (params, read, write, command, monitor, dump, "
+                            "diff, apply, report)")
+                             .arg(c));
 }
 
 void CtlRunner::fail(int code, const QString &message)

@@ -11,6 +11,7 @@ namespace stepcom {
 
 class ModbusLink;
 class SimHost;
+struct Profile;
 
 // Runs one stepcomctl command against a controller and reports an exit code:
 // 0 success, 1 link or device error, 2 usage or validation error.
@@ -35,6 +36,15 @@ private:
     void runWrite();
     void runCommand();
     void runMonitor();
+    // Profiles and the report (ctlprofile.cpp).
+    void runDump();
+    void runDiff();
+    void runApply();
+    void runReport();
+    bool loadProfileArgument(const QString &command, Profile *out);
+    void confirmThenApply(const QList<ParameterWrite> &writes);
+    void applyWrites(const QList<ParameterWrite> &writes);
+    void saveToFlashThenFinish();
     void fail(int code, const QString &message);
     void finish(int code);
     QString valueText(const Parameter &p, qint64 raw) const;

@@ -4,13 +4,42 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QGuiApplication>
 #include <QTextStream>
+
+#include <memory>
 
 using namespace stepcom;
 
+namespace {
+
+// Only `report` draws (QTextDocument, QPdfWriter, QPainter) and needs a QGuiApplication; every
+// other command stays a plain QCoreApplication that runs without any display.
+bool wantsReport(int argc, char *argv[])
+{
+    QStringList args;
+    for (int i = 0; i < argc; ++i)
+        args << QString::fromLocal8Bit(argv[i]);
+    QCommandLineParser parser;
+    CtlOptions::addOptions(parser);
+    parser.addHelpOption();
+    parser.addVersionOption();
+    return parser.parse(args) && parser.positionalArguments().value(0) == QLatin1String("report");
+}
+
+} // namespace
+
 int main(int argc, char *argv[])
 {
-    QCoreApplication app(argc, argv);
+    std::unique_ptr<QCoreApplication> application;
+    if (wantsReport(argc, argv)) {
+        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+            qputenv("QT_QPA_PLATFORM", "offscreen"); // a report needs no screen
+        application = std::make_unique<QGuiApplication>(argc, argv);
+    } else {
+        application = std::make_unique<QCoreApplication>(argc, argv);
+    }
+    QCoreApplication &app = *application;
     QCoreApplication::setApplicationName(QStringLiteral("stepcomctl"));
     QCoreApplication::setApplicationVersion(QStringLiteral(STEPCOM_VERSION));
 
@@ -24,7 +53,17 @@ int main(int argc, char *argv[])
         "  write KEY=VALUE...     write parameters in engineering units, then verify\n"
         "  command NAME           pulse a command coil (e.g. motor1.stop, estop)\n"
         "  monitor                print the live status as one JSON object per line,\n"
-        "                         until --count samples or Ctrl-C (--interval MS)\n\n"
+        "                         until --count samples or Ctrl-C (--interval MS)\n"
+        "  dump FILE              read every setting and save it as a profile file\n"
+        "                         (--name, --notes; --include-link adds id and baud)\n"
+        "  diff FILE              compare the controller with a profile; exit 0 same,\n"
+        "                         1 different, 2 bad file, 3 link or device error\n"
+        "  apply FILE             write the profile's values that differ, after showing\n"
+        "                         them and asking (--yes skips the question), then verify;\n"
+        "                         --include-link also writes device id and baud,\n"
+        "                         --save-to-flash saves afterwards\n"
+        "  report FILE.pdf|.html  write the commissioning report (--name, --notes,\n"
+        "                         --lang en|zh_CN)\n\n"
         "Exit codes: 0 success, 1 link or device error, 2 usage or validation error."));
     parser.addHelpOption();
     parser.addVersionOption();

@@ -133,11 +133,13 @@ void DeviceSession::writeChanges()
     write(m_store->pendingWrites());
 }
 
-void DeviceSession::write(const QList<ParameterWrite> &writes)
+void DeviceSession::write(const QList<ParameterWrite> &writes,
+                          std::function<void(const WriteOutcome &)> done)
 {
     if (writes.isEmpty())
         return;
-    m_client->write(writes, [this, writes](const WriteOutcome &outcome) {
+    const LinkSettings before = m_link->settings();
+    m_client->write(writes, [this, writes, before, done](const WriteOutcome &outcome) {
         m_store->applyWriteOutcome(writes, outcome);
         if (outcome.ok) {
             say(Severity::Info,
@@ -146,6 +148,13 @@ void DeviceSession::write(const QList<ParameterWrite> &writes)
             for (const QString &e : outcome.errors)
                 say(Severity::Error, e);
         }
+        // A write that carried device.id or device.baud (a profile applied with its link
+        // settings) moved the link: tell the pages, as changeLink() does.
+        const LinkSettings now = m_link->settings();
+        if (now.deviceId != before.deviceId || now.baud != before.baud)
+            Q_EMIT linkChanged(now);
+        if (done)
+            done(outcome);
         Q_EMIT writeFinished(outcome);
     });
 }

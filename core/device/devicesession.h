@@ -46,7 +46,9 @@ public:
     void readAll();
     // Write every edit held in the store, verify, and update the store.
     void writeChanges();
-    void write(const QList<ParameterWrite> &writes);
+    // `done` (optional) hears this write's outcome, after the store has taken it.
+    void write(const QList<ParameterWrite> &writes,
+               std::function<void(const WriteOutcome &)> done = {});
     // Pulse a command coil by key; emergency ones jump the queue.
     void command(const QString &key);
     // Always goes out at once, ahead of everything queued; never asks.

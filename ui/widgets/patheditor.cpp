@@ -295,14 +295,16 @@ void PathEditor::update()
     const std::optional<double> pathMs =
         g.valid && rpm ? interpolation::pathTimeMs(g.length, *rpm, m1) : std::nullopt;
     const std::optional<interpolation::Approach> a = g.valid ? approach(g) : std::nullopt;
+    const double approachMs = a && a->timeMs ? *a->timeMs : 0.0;
+    const double pathTimeMs = pathMs.value_or(0.0);
     if (!pathMs)
         m_time->setText(none);
-    else if (a && a->timeMs && *a->timeMs > 0)
-        m_time->setText(
-            tr("%1 (approach %2 + path %3)")
-                .arg(duration(*a->timeMs + *pathMs), duration(*a->timeMs), duration(*pathMs)));
+    else if (approachMs > 0)
+        m_time->setText(tr("%1 (approach %2 + path %3)")
+                            .arg(duration(approachMs + pathTimeMs), duration(approachMs),
+                                 duration(pathTimeMs)));
     else
-        m_time->setText(duration(*pathMs));
+        m_time->setText(duration(pathTimeMs));
     QPalette pal = m_problem->palette();
     pal.setColor(QPalette::WindowText,
                  g.valid ? palette().color(QPalette::WindowText) : QColor(220, 40, 40));

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <QDateTime>
+#include <QMap>
+#include <QString>
+
+namespace stepcom {
+
+class RegisterMap;
+struct Parameter;
+
+// A controller's settings as a file: every read-write parameter of one register map, in raw
+// units (what the wire holds), plus who/what/when. Keys are map keys; device.id and device.baud
+// are optional (a profile is usually meant for the next machine, which keeps its own link).
+struct Profile
+{
+    QString mapId;
+    int mapVersion = 0;
+    QString name;
+    QString notes;
+    QDateTime created; // UTC
+    QString stepcomVersion;
+    int deviceId = 0; // metadata: the controller it was saved from (0 = unknown)
+    int baud = 0;
+    QMap<QString, qint64> values; // raw, by key, ordered by key
+
+    // The parameters a profile holds for `map`: every read-write holding register; the link
+    // settings only when `withLink`.
+    static QList<const Parameter *> profileParameters(const RegisterMap &map, bool withLink);
+    // device.id and device.baud: applied only when asked for explicitly.
+    static bool isLinkSetting(const QString &key);
+    // A profile for `map` from raw values (those it does not hold are skipped); the metadata
+    // stepcomVersion and created are filled in.
+    static Profile fromValues(const RegisterMap &map, const QHash<QString, qint64> &raw,
+                              bool withLink);
+};
+
+} // namespace stepcom

@@ -1,0 +1,168 @@
+#include "profile/profilefile.h"
+#include "report/commissioningreport.h"
+#include "report/xypicture.h"
+#include "testpaths.h"
+
+#include <QFile>
+#include <QGuiApplication>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTextDocument>
+
+using namespace stepcom;
+using namespace stepcom::test;
+
+// The commissioning report renders offscreen to PDF and HTML, in English and Chinese.
+class TestReport : public QObject
+{
+    Q_OBJECT
+    QTemporaryDir dir;
+
+    ReportInput input(const QString &locale = QString()) const
+    {
+        QFile f(sourcePath(QStringLiteral("tests/profile/data/machine-a.json")));
+        if (!f.open(QIODevice::ReadOnly))
+            qFatal("no machine-a.json");
+        const Profile p = *ProfileFile::parse(f.readAll(), RegisterMap::builtin()).profile;
+        ReportInput in;
+        in.map = RegisterMap::builtin();
+        for (auto it = p.values.cbegin(); it != p.values.cend(); ++it)
+            in.values.insert(it.key(), it.value());
+        in.values.insert(QStringLiteral("device.id"), 3);
+        in.values.insert(QStringLiteral("device.baud"), 19200);
+        in.values.insert(QStringLiteral("motor1.position"), -250);
+        in.values[QStringLiteral("arc.enabled")] = 1;
+        in.link = QStringLiteral("/dev/ttyUSB0 · 19200 8N1 · id 3");
+        in.deviceId = 3;
+        in.title = QStringLiteral("Machine A");
+        in.notes = QStringLiteral("Commissioned by <Li Wei> & team");
+        in.date = QDateTime(QDate(2024, 6, 1), QTime(9, 30));
+        in.locale = locale;
+        return in;
+    }
+    static QString pdfText(const QString &path)
+    {
+        QProcess p;
+        p.start(QStringLiteral("pdftotext"),
+                {QStringLiteral("-enc"), QStringLiteral("UTF-8"), path, QStringLiteral("-")});
+        if (!p.waitForFinished(20000))
+            return {};
+        // NFKC: pdftotext may name a glyph by its Kangxi radical (⾓ for 角); same glyph.
+        return QString::fromUtf8(p.readAllStandardOutput())
+            .normalized(QString::NormalizationForm_KC);
+    }
+    static bool havePdfToText()
+    {
+        return !QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty();
+    }
+
+private Q_SLOTS:
+    void pdfRendersOffscreen()
+    {
+        const QString path = dir.filePath(QStringLiteral("report.pdf"));
+        QCOMPARE(CommissioningReport(input()).write(path), QString());
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray bytes = f.readAll();
+        QVERIFY(bytes.startsWith("%PDF-"));
+        QVERIFY(bytes.size() > 20000); // text, tables and the picture
+        if (!havePdfToText())
+            QSKIP("pdftotext (poppler-utils) is not installed: the text was not checked");
+        const QString text = pdfText(path);
+        for (const char *s : {"Commissioning report", "Machine A", "motor1.step_angle",
+                              "40001 · 0x0000", "1.80", "IN1", "Motor 1", "Counter-clockwise",
+                              "/dev/ttyUSB0", "19200", "Li Wei", "Homing order"})
+            QVERIFY2(text.contains(QString::fromUtf8(s)), s);
+    }
+
+    void chinesePdfCarriesTheGlyphs()
+    {
+        const QString path = dir.filePath(QStringLiteral("report-zh.pdf"));
+        QCOMPARE(CommissioningReport(input(QStringLiteral("zh_CN"))).write(path), QString());
+        if (!havePdfToText())
+            QSKIP("pdftotext (poppler-utils) is not installed");
+        const QString text = pdfText(path);
+        // Map labels in Chinese: the PDF holds real CJK glyphs, not empty boxes.
+        // (步距角 is not checked: readers map its 角 glyph back to the radical ⻆, same shape.)
+        for (const char *s : {"细分", "加减频率", "逆圆弧", "两轴步进电机控制器 (stepper2/1)"})
+            QVERIFY2(text.contains(QString::fromUtf8(s)), qPrintable(text.left(2000)));
+    }
+
+    void htmlHoldsEveryParameterAndThePicture()
+    {
+        const QString path = dir.filePath(QStringLiteral("report.html"));
+        QCOMPARE(CommissioningReport(input()).write(path), QString());
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString html = QString::fromUtf8(f.readAll());
+        for (const Parameter &p : RegisterMap::builtin().parameters()) {
+            if (!p.writable())
+                continue;
+            QVERIFY2(html.contains(p.key), qPrintable(p.key));
+            QVERIFY2(html.contains(p.registerName()), qPrintable(p.key));
+        }
+        QVERIFY(html.contains(QStringLiteral("<img src=\"data:image/png;base64,")));
+        QVERIFY(html.contains(QStringLiteral("&lt;Li Wei&gt; &amp; team"))); // escaped
+        QVERIFY(html.contains(QStringLiteral("Motor 2")));
+        QVERIFY(!html.contains(QStringLiteral("Motor 0")));
+    }
+
+    void documentHasThePictureAsAResource()
+    {
+        const auto doc = CommissioningReport(input()).document();
+        const QVariant image =
+            doc->resource(QTextDocument::ImageResource, QUrl(QStringLiteral("stepcom-xy.png")));
+        QVERIFY(image.canConvert<QImage>());
+        QVERIFY(!image.value<QImage>().isNull());
+        QVERIFY(doc->toPlainText().contains(QStringLiteral("motor2.pitch")));
+    }
+
+    void pictureDrawsTheArcAndTheLine()
+    {
+        const ReportInput in = input();
+        const QImage image = XyPicture(in.map, in.values).render(QSize(300, 300));
+        int blue = 0;
+        int orange = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                blue += c.blue() > 150 && c.red() < 100 ? 1 : 0;
+                orange += c.red() > 180 && c.green() > 80 && c.green() < 150 && c.blue() < 80;
+            }
+        }
+        QVERIFY2(blue > 100, qPrintable(QString::number(blue)));
+        QVERIFY2(orange > 100, qPrintable(QString::number(orange)));
+    }
+
+    void undrawableArcIsSaid()
+    {
+        ReportInput in = input();
+        in.values[QStringLiteral("arc.mode")] = 1;       // start, end, middle point
+        in.values[QStringLiteral("arc.middle_x")] = 500; // (5, 0): on the line start-end
+        in.values[QStringLiteral("arc.middle_y")] = 0;
+        QCOMPARE(XyPicture(in.map, in.values).arcProblem(),
+                 QStringLiteral("start, middle and end point are on one line"));
+        QVERIFY(CommissioningReport(in)
+                    .html(QStringLiteral("x.png"))
+                    .contains(QStringLiteral("The arc cannot be drawn")));
+        in.values[QStringLiteral("arc.mode")] = 0;
+        in.values[QStringLiteral("arc.center_x")] = 0; // the start point
+        QCOMPARE(XyPicture(in.map, in.values).arcProblem(),
+                 QStringLiteral("the start point is the centre"));
+    }
+
+    void badTargetsAreNamed()
+    {
+        const QString txt = dir.filePath(QStringLiteral("report.txt"));
+        QVERIFY(CommissioningReport(input()).write(txt).contains(QStringLiteral(".pdf or .html")));
+        const QString nowhere = dir.filePath(QStringLiteral("no/such/dir/r.pdf"));
+        const QString e = CommissioningReport(input()).write(nowhere);
+        QVERIFY2(e.contains(nowhere), qPrintable(e));
+        QVERIFY(!QFile::exists(nowhere));
+    }
+};
+
+QTEST_MAIN(TestReport)
+#include "tst_report.moc"

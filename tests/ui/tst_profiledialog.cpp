@@ -1,0 +1,290 @@
+#include "bus/modbuslink.h"
+#include "device/devicesession.h"
+#include "dialogs/profilecomparedialog.h"
+#include "language.h"
+#include "mainwindow.h"
+#include "profile/profilefile.h"
+#include "profileactions.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+#include "testpaths.h"
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QLabel>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <memory>
+
+using namespace stepcom;
+
+// Open a profile, compare, apply checked rows -- against the built-in simulator, offscreen.
+class TestProfileDialog : public QObject
+{
+    Q_OBJECT
+    std::unique_ptr<DeviceSession> session;
+    std::unique_ptr<QWidget> window;
+    QTemporaryDir dir;
+
+    SimDevice *sim() const { return session->simulator()->device(); }
+    qint64 simValue(const char *key) const { return sim()->value(QLatin1String(key)).value_or(-1); }
+    void connectSim()
+    {
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->connectSimulator();
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
+        QVERIFY(read.at(0).at(0).toBool());
+    }
+    // The controller's values with three changes (and another device id).
+    Profile changedProfile() const
+    {
+        QHash<QString, qint64> values;
+        for (const Parameter *p : Profile::profileParameters(session->map(), true))
+            values.insert(p->key, *session->store()->deviceValue(p->key));
+        Profile p = Profile::fromValues(session->map(), values, true);
+        p.name = QStringLiteral("Machine B");
+        p.values[QStringLiteral("motor1.speed")] += 11;
+        p.values[QStringLiteral("motor2.pitch")] += 250; // 32-bit
+        p.values[QStringLiteral("arc.speed")] += 5;
+        p.values[QStringLiteral("device.id")] = 7;
+        return p;
+    }
+    int visibleRows(QTableWidget *t) const
+    {
+        int n = 0;
+        for (int r = 0; r < t->rowCount(); ++r)
+            n += t->isRowHidden(r) ? 0 : 1;
+        return n;
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QApplication::setOrganizationName(QStringLiteral("StepComTest"));
+        Language::instance().setLanguage(QStringLiteral("en"));
+    }
+    void init()
+    {
+        session = std::make_unique<DeviceSession>();
+        window = std::make_unique<QWidget>();
+    }
+    void cleanup()
+    {
+        window.reset();
+        session.reset();
+    }
+
+    void compareAndApplyOnlyTheCheckedRows()
+    {
+        connectSim();
+        const Profile profile = changedProfile();
+        const qint64 speed = simValue("motor1.speed");
+        const qint64 arcSpeed = simValue("arc.speed");
+        ProfileCompareDialog dialog(session.get(), profile, QStringLiteral("b.json"), window.get());
+        dialog.open();
+        QTableWidget *t = dialog.table();
+        QTRY_COMPARE(t->rowCount(), int(Profile::profileParameters(session->map(), true).size()));
+        // Opening (and the fresh read it does) writes nothing.
+        QTRY_VERIFY(!dialog.isBusy());
+        QCOMPARE(simValue("motor1.speed"), speed);
+
+        QCOMPARE(dialog.checkedKeys(),
+                 (QStringList{"motor1.speed", "motor2.pitch", "arc.speed"})); // differing rows
+        const int idRow = dialog.rowOf(QStringLiteral("device.id"));
+        QVERIFY(!(t->item(idRow, 0)->flags() & Qt::ItemIsUserCheckable)); // needs the opt-in
+        const int speedRow = dialog.rowOf(QStringLiteral("motor1.speed"));
+        QCOMPARE(t->item(speedRow, ProfileCompareDialog::DeviceColumn)->text(),
+                 QString::number(speed));
+        QCOMPARE(t->item(speedRow, ProfileCompareDialog::ProfileColumn)->text(),
+                 QString::number(speed + 11));
+        QCOMPARE(t->item(speedRow, ProfileCompareDialog::UnitColumn)->text(),
+                 QStringLiteral("rpm"));
+        QVERIFY(t->item(speedRow, 1)->background() !=
+                t->item(dialog.rowOf(QStringLiteral("motor1.microsteps")), 1)->background());
+
+        dialog.differencesOnly()->setChecked(true);
+        QCOMPARE(visibleRows(t), 4); // three settings and the device id
+        dialog.differencesOnly()->setChecked(false);
+        QCOMPARE(visibleRows(t), t->rowCount());
+
+        // The user unchecks arc.speed: only the two other rows are written.
+        t->item(dialog.rowOf(QStringLiteral("arc.speed")), 0)->setCheckState(Qt::Unchecked);
+        QCOMPARE(dialog.checkedKeys(), (QStringList{"motor1.speed", "motor2.pitch"}));
+        QVERIFY(dialog.applyButton()->isEnabled());
+        QSignalSpy applied(&dialog, &ProfileCompareDialog::applied);
+        QTest::mouseClick(dialog.applyButton(), Qt::LeftButton);
+        QVERIFY(dialog.isBusy());
+        QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
+        QVERIFY(applied.at(0).at(0).toBool());
+        QCOMPARE(applied.at(0).at(1).toStringList(), (QStringList{"motor1.speed", "motor2.pitch"}));
+        QCOMPARE(simValue("motor1.speed"), speed + 11);
+        QCOMPARE(simValue("motor2.pitch"), profile.values.value(QStringLiteral("motor2.pitch")));
+        QCOMPARE(simValue("arc.speed"), arcSpeed); // unchecked: untouched
+        QCOMPARE(simValue("device.id"), 1);
+        QVERIFY(dialog.resultLabel()->text().contains(QStringLiteral("Wrote and verified 2")));
+
+        // Then Save to flash is offered.
+        QVERIFY(dialog.saveToFlashButton()->isVisible());
+        QSignalSpy command(session.get(), &DeviceSession::commandFinished);
+        QTest::mouseClick(dialog.saveToFlashButton(), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(command.size(), 1, 10000);
+        QCOMPARE(command.at(0).at(0).toString(), QStringLiteral("save_to_flash"));
+        QVERIFY(dialog.resultLabel()->text().contains(QStringLiteral("Saved to flash")));
+        // Written rows now match; arc.speed still differs and stays unchecked (the user's
+        // choice is kept).
+        QTRY_COMPARE(t->item(speedRow, ProfileCompareDialog::DeviceColumn)->text(),
+                     QString::number(speed + 11));
+        QVERIFY(dialog.checkedKeys().isEmpty());
+        dialog.differencesOnly()->setChecked(true);
+        QCOMPARE(visibleRows(t), 2); // arc.speed and the device id
+    }
+
+    void offlineEverythingIsUnknownNotDifferent()
+    {
+        Profile p;
+        p.values.insert(QStringLiteral("motor1.speed"), 300);
+        ProfileCompareDialog dialog(session.get(), p, QStringLiteral("p.json"), window.get());
+        dialog.open();
+        QVERIFY(dialog.checkedKeys().isEmpty());
+        QVERIFY(!dialog.applyButton()->isEnabled());
+        QCOMPARE(dialog.table()
+                     ->item(dialog.rowOf(QStringLiteral("motor1.speed")),
+                            ProfileCompareDialog::DeviceColumn)
+                     ->text(),
+                 QStringLiteral("—"));
+        dialog.differencesOnly()->setChecked(true);
+        QCOMPARE(visibleRows(dialog.table()), 0);
+    }
+
+    void mismatchesAreNamed()
+    {
+        connectSim();
+        Profile profile = changedProfile();
+        ProfileCompareDialog dialog(session.get(), profile, QStringLiteral("b.json"), window.get());
+        dialog.open();
+        QTRY_VERIFY(!dialog.checkedKeys().isEmpty());
+        // The link goes away while the write is queued: nothing can be written or verified,
+        // and the dialog names the values that were not.
+        QSignalSpy applied(&dialog, &ProfileCompareDialog::applied);
+        dialog.apply();
+        session->disconnectFrom();
+        QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
+        QVERIFY(!applied.at(0).at(0).toBool());
+        const QString text = dialog.resultLabel()->text();
+        QVERIFY2(text.contains(QStringLiteral("Problems:")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("motor1.speed")), qPrintable(text));
+        QVERIFY(!dialog.applyButton()->isEnabled()); // not connected any more
+    }
+
+    void linkSettingsNeedTheOptInAndTheLinkFollows()
+    {
+        connectSim();
+        Profile profile = changedProfile();
+        profile.values = {{QStringLiteral("device.id"), 7}};
+        for (const Parameter *p : Profile::profileParameters(session->map(), false))
+            profile.values.insert(p->key, *session->store()->deviceValue(p->key));
+        ProfileCompareDialog dialog(session.get(), profile, QStringLiteral("id.json"),
+                                    window.get());
+        dialog.open();
+        QTRY_VERIFY(!dialog.isBusy());
+        QVERIFY(dialog.checkedKeys().isEmpty());
+        QVERIFY(!dialog.applyButton()->isEnabled());
+        dialog.includeLink()->setChecked(true);
+        QCOMPARE(dialog.checkedKeys(), QStringList{"device.id"});
+        QSignalSpy linkChanged(session.get(), &DeviceSession::linkChanged);
+        QSignalSpy applied(&dialog, &ProfileCompareDialog::applied);
+        dialog.apply();
+        QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
+        QVERIFY2(applied.at(0).at(0).toBool(),
+                 qPrintable(applied.at(0).at(2).toStringList().join(QLatin1Char('\n'))));
+        QCOMPARE(simValue("device.id"), 7);
+        QCOMPARE(session->link()->settings().deviceId, 7); // the link followed
+        QCOMPARE(linkChanged.size(), 1);
+    }
+
+    void actionsOpenSaveAndRemember()
+    {
+        ProfileActions actions(session.get(), window.get());
+        QVERIFY(!actions.saveFromDeviceAction()->isEnabled());
+        QVERIFY(!actions.saveFromEditedAction()->isEnabled()); // nothing known yet
+        // A broken file: every problem shown, no dialog, nothing written.
+        QVERIFY(!actions.openFile(
+            test::sourcePath(QStringLiteral("tests/profile/corpus/unknown-key.json"))));
+        QVERIFY(actions.errorBox());
+        QVERIFY(actions.errorBox()->detailedText().contains(
+            QStringLiteral("unknown parameter \"motor3.speed\"")));
+        QVERIFY(!actions.compareDialog());
+
+        connectSim();
+        QTRY_VERIFY(actions.saveFromDeviceAction()->isEnabled());
+        const QString fromDevice = dir.filePath(QStringLiteral("device.json"));
+        QSignalSpy finished(&actions, &ProfileActions::finished);
+        actions.saveFromDeviceFile(fromDevice);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
+        QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+        const ProfileParseResult saved = ProfileFile::load(fromDevice, session->map());
+        QVERIFY(saved.ok());
+        QCOMPARE(saved.profile->values.value(QStringLiteral("motor1.speed")),
+                 simValue("motor1.speed"));
+        QCOMPARE(saved.profile->values.value(QStringLiteral("device.id")), 1);
+
+        // From the edited values: the edit goes into the file, nothing to the controller.
+        const qint64 speed = simValue("motor2.speed");
+        QCOMPARE(session->store()->edit(QStringLiteral("motor2.speed"), speed + 1), QString());
+        const QString fromEdits = dir.filePath(QStringLiteral("edited.json"));
+        QVERIFY(actions.saveFromEditedFile(fromEdits));
+        const ProfileParseResult edited = ProfileFile::load(fromEdits, session->map());
+        QVERIFY(edited.ok());
+        QCOMPARE(edited.profile->values.value(QStringLiteral("motor2.speed")), speed + 1);
+        QCOMPARE(simValue("motor2.speed"), speed);
+
+        QCOMPARE(ProfileActions::recentFiles().mid(0, 2), (QStringList{fromEdits, fromDevice}));
+        QVERIFY(actions.recentMenu()->actions().size() >= 2);
+
+        // Opening the edited profile shows the one difference; nothing is written by opening.
+        QVERIFY(actions.openFile(fromEdits));
+        QVERIFY(actions.compareDialog());
+        QTRY_COMPARE(actions.compareDialog()->checkedKeys(), QStringList{"motor2.speed"});
+        QCOMPARE(simValue("motor2.speed"), speed);
+        actions.compareDialog()->close();
+    }
+
+    void fileMenuHasTheProfileActions()
+    {
+        MainWindow w(session.get());
+        for (const char *name : {"openProfile", "saveProfileFromDevice", "saveProfileFromEdited",
+                                 "commissioningReport"}) {
+            QAction *a = w.action(QLatin1String(name));
+            QVERIFY2(a, name);
+            QVERIFY2(!a->text().isEmpty(), name);
+        }
+        QVERIFY(w.profileActions());
+        QVERIFY(!w.action(QStringLiteral("saveProfileFromDevice"))->isEnabled()); // offline
+        QVERIFY(w.action(QStringLiteral("openProfile"))->isEnabled()); // opening never writes
+    }
+
+    void reportFromTheWindow()
+    {
+        ProfileActions actions(session.get(), window.get());
+        connectSim();
+        const QString path = dir.filePath(QStringLiteral("report.pdf"));
+        QSignalSpy finished(&actions, &ProfileActions::finished);
+        actions.reportFile(path, QStringLiteral("first machine"));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+        QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.read(5), QByteArray("%PDF-"));
+    }
+};
+
+QTEST_MAIN(TestProfileDialog)
+#include "tst_profiledialog.moc"

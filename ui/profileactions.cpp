@@ -1,0 +1,326 @@
+#include "profileactions.h"
+
+#include "bus/modbuslink.h"
+#include "device/devicesession.h"
+#include "dialogs/profilecomparedialog.h"
+#include "language.h"
+#include "profile/profilefile.h"
+#include "report/commissioningreport.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+
+namespace stepcom {
+
+namespace {
+const QString kGroup = QStringLiteral("profiles");
+const QString kRecent = QStringLiteral("recent");
+const QString kDirectory = QStringLiteral("lastDirectory");
+constexpr int kMaxRecent = 8;
+} // namespace
+
+ProfileActions::ProfileActions(DeviceSession *session, QWidget *window)
+    : QObject(window)
+    , m_session(session)
+    , m_window(window)
+    , m_open(new QAction(this))
+    , m_saveFromDevice(new QAction(this))
+    , m_saveFromEdited(new QAction(this))
+    , m_report(new QAction(this))
+    , m_recent(new QMenu(window))
+{
+    m_open->setObjectName(QStringLiteral("openProfile"));
+    m_open->setShortcut(QKeySequence::Open);
+    m_saveFromDevice->setObjectName(QStringLiteral("saveProfileFromDevice"));
+    m_saveFromEdited->setObjectName(QStringLiteral("saveProfileFromEdited"));
+    m_report->setObjectName(QStringLiteral("commissioningReport"));
+    m_recent->setObjectName(QStringLiteral("recentProfiles"));
+    connect(m_open, &QAction::triggered, this, &ProfileActions::chooseOpen);
+    connect(m_saveFromDevice, &QAction::triggered, this, [this] { chooseSave(true); });
+    connect(m_saveFromEdited, &QAction::triggered, this, [this] { chooseSave(false); });
+    connect(m_report, &QAction::triggered, this, &ProfileActions::chooseReport);
+    connect(session, &DeviceSession::linkStateChanged, this, &ProfileActions::updateActions);
+    connect(session->store(), &ParameterStore::valueChanged, this, &ProfileActions::updateActions);
+    retranslate();
+    rebuildRecent();
+    updateActions();
+}
+
+ProfileCompareDialog *ProfileActions::compareDialog() const
+{
+    return m_compare;
+}
+
+QMessageBox *ProfileActions::errorBox() const
+{
+    return m_errorBox;
+}
+
+void ProfileActions::retranslate()
+{
+    m_open->setText(tr("&Open profile…"));
+    m_open->setToolTip(tr("Compare a profile file with the controller; nothing is written until "
+                          "you apply checked rows"));
+    m_saveFromDevice->setText(tr("Save profile from &device…"));
+    m_saveFromDevice->setToolTip(tr("Read every parameter, then save them as a profile file"));
+    m_saveFromEdited->setText(tr("Save profile from &edited values…"));
+    m_saveFromEdited->setToolTip(
+        tr("Save the values the pages show (edits included) as a profile file"));
+    m_report->setText(tr("Commissioning &report…"));
+    m_report->setToolTip(tr("Read everything, then write the commissioning sheet as PDF or "
+                            "HTML"));
+    m_recent->setTitle(tr("Recent &profiles"));
+    rebuildRecent();
+}
+
+void ProfileActions::updateActions()
+{
+    const bool connected = m_session->isConnected();
+    m_saveFromDevice->setEnabled(connected);
+    m_report->setEnabled(connected);
+    bool known = true;
+    for (const Parameter *p : Profile::profileParameters(m_session->map(), false))
+        known = known && m_session->store()->shownValue(p->key).has_value();
+    m_saveFromEdited->setEnabled(known);
+}
+
+QString ProfileActions::lastDirectory() const
+{
+    QSettings settings;
+    settings.beginGroup(kGroup);
+    return settings.value(kDirectory, QDir::homePath()).toString();
+}
+
+QStringList ProfileActions::recentFiles()
+{
+    QSettings settings;
+    settings.beginGroup(kGroup);
+    return settings.value(kRecent).toStringList();
+}
+
+void ProfileActions::addRecent(const QString &path)
+{
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    QStringList recent = recentFiles();
+    recent.removeAll(absolute);
+    recent.prepend(absolute);
+    while (recent.size() > kMaxRecent)
+        recent.removeLast();
+    QSettings settings;
+    settings.beginGroup(kGroup);
+    settings.setValue(kRecent, recent);
+    settings.setValue(kDirectory, QFileInfo(absolute).absolutePath());
+    rebuildRecent();
+}
+
+void ProfileActions::rebuildRecent()
+{
+    m_recent->clear();
+    const QStringList recent = recentFiles();
+    for (int i = 0; i < recent.size(); ++i) {
+        const QString path = recent.at(i);
+        QAction *a = m_recent->addAction(
+            QStringLiteral("&%1 %2").arg(i + 1).arg(QFileInfo(path).fileName()));
+        a->setToolTip(path);
+        connect(a, &QAction::triggered, this, [this, path] { openFile(path); });
+    }
+    if (recent.isEmpty())
+        m_recent->addAction(tr("(none)"))->setEnabled(false);
+}
+
+void ProfileActions::showErrors(const QString &title, const QStringList &errors)
+{
+    if (m_errorBox)
+        m_errorBox->close();
+    m_errorBox =
+        new QMessageBox(QMessageBox::Warning, title,
+                        errors.value(0) + (errors.size() > 1 ? QStringLiteral("\n…") : QString()),
+                        QMessageBox::Close, m_window);
+    m_errorBox->setObjectName(QStringLiteral("profileErrorBox"));
+    m_errorBox->setDetailedText(errors.join(QLatin1Char('\n')));
+    m_errorBox->setInformativeText(tr("Nothing was written to the controller."));
+    m_errorBox->setAttribute(Qt::WA_DeleteOnClose);
+    m_errorBox->open();
+    for (const QString &e : errors)
+        Q_EMIT finished(false, e);
+}
+
+void ProfileActions::chooseOpen()
+{
+    auto *dialog = new QFileDialog(m_window, tr("Open profile"), lastDirectory(),
+                                   tr("StepCom profiles (*.json);;All files (*)"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setFileMode(QFileDialog::ExistingFile);
+    connect(dialog, &QFileDialog::fileSelected, this, &ProfileActions::openFile);
+    dialog->open();
+}
+
+void ProfileActions::chooseSave(bool fromDevice)
+{
+    auto *dialog = new QFileDialog(m_window,
+                                   fromDevice ? tr("Save profile from the device")
+                                              : tr("Save profile from the edited values"),
+                                   lastDirectory(), tr("StepCom profiles (*.json)"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setAcceptMode(QFileDialog::AcceptSave);
+    dialog->setDefaultSuffix(QStringLiteral("json"));
+    connect(dialog, &QFileDialog::fileSelected, this, [this, fromDevice](const QString &path) {
+        if (fromDevice)
+            saveFromDeviceFile(path);
+        else
+            saveFromEditedFile(path);
+    });
+    dialog->open();
+}
+
+void ProfileActions::chooseReport()
+{
+    auto *notes = new QInputDialog(m_window);
+    notes->setAttribute(Qt::WA_DeleteOnClose);
+    notes->setWindowTitle(tr("Commissioning report"));
+    notes->setLabelText(tr("Notes for the report (machine, place, who commissioned it):"));
+    notes->setOption(QInputDialog::UsePlainTextEditForTextInput);
+    connect(notes, &QInputDialog::textValueSelected, this, [this](const QString &text) {
+        auto *dialog = new QFileDialog(m_window, tr("Save the commissioning report"),
+                                       lastDirectory(), tr("PDF (*.pdf);;HTML (*.html)"));
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->setAcceptMode(QFileDialog::AcceptSave);
+        dialog->setDefaultSuffix(QStringLiteral("pdf"));
+        connect(dialog, &QFileDialog::fileSelected, this,
+                [this, text](const QString &path) { reportFile(path, text); });
+        dialog->open();
+    });
+    notes->open();
+}
+
+bool ProfileActions::openFile(const QString &path)
+{
+    const ProfileParseResult r = ProfileFile::load(path, m_session->map());
+    if (!r.ok()) {
+        showErrors(tr("The profile cannot be used"), r.errors);
+        return false;
+    }
+    addRecent(path);
+    if (m_compare)
+        m_compare->close();
+    m_compare =
+        new ProfileCompareDialog(m_session, *r.profile, QFileInfo(path).fileName(), m_window);
+    m_compare->setAttribute(Qt::WA_DeleteOnClose);
+    connect(m_compare, &ProfileCompareDialog::applied, this,
+            [this](bool ok, const QStringList &verified, const QStringList &problems) {
+                Q_EMIT finished(ok, tr("Profile applied: %n value(s) written and verified", nullptr,
+                                       int(verified.size())));
+                for (const QString &p : problems)
+                    Q_EMIT finished(false, p);
+            });
+    m_compare->open();
+    Q_EMIT finished(true, tr("Opened profile %1").arg(path));
+    return true;
+}
+
+void ProfileActions::saveFromDeviceFile(const QString &path)
+{
+    if (!m_session->isConnected()) {
+        showErrors(tr("Save profile"), {tr("Connect to a controller first.")});
+        return;
+    }
+    const QList<const Parameter *> params = Profile::profileParameters(m_session->map(), true);
+    QPointer<ProfileActions> self(this);
+    m_session->client()->read(params, Priority::Read, [self, path](const ReadOutcome &r) {
+        if (!self)
+            return;
+        self->m_session->store()->setDeviceValues(r.values);
+        if (!r.ok) {
+            self->showErrors(tr("Save profile"), QStringList{tr("Nothing was saved: the "
+                                                                "controller could not be read "
+                                                                "completely.")} +
+                                                     r.errors);
+            return;
+        }
+        Profile profile = Profile::fromValues(self->m_session->map(), r.values, true);
+        profile.name = QFileInfo(path).completeBaseName();
+        profile.deviceId = self->m_session->link()->settings().deviceId;
+        if (const QString e = ProfileFile::save(path, profile, self->m_session->map());
+            !e.isEmpty()) {
+            self->showErrors(tr("Save profile"), {e});
+            return;
+        }
+        self->addRecent(path);
+        Q_EMIT self->finished(true, tr("Saved the controller's %n parameter(s) to %1", nullptr,
+                                       int(profile.values.size()))
+                                        .arg(path));
+    });
+}
+
+bool ProfileActions::saveFromEditedFile(const QString &path)
+{
+    QHash<QString, qint64> values;
+    QStringList unknown;
+    for (const Parameter *p : Profile::profileParameters(m_session->map(), true)) {
+        if (const auto v = m_session->store()->shownValue(p->key))
+            values.insert(p->key, *v);
+        else if (!Profile::isLinkSetting(p->key))
+            unknown << p->key;
+    }
+    if (!unknown.isEmpty()) {
+        showErrors(tr("Save profile"), {tr("%n value(s) are not known yet (read all first): %1",
+                                           nullptr, int(unknown.size()))
+                                            .arg(unknown.join(QLatin1String(", ")))});
+        return false;
+    }
+    Profile profile = Profile::fromValues(m_session->map(), values, true);
+    profile.name = QFileInfo(path).completeBaseName();
+    if (m_session->isConnected())
+        profile.deviceId = m_session->link()->settings().deviceId;
+    if (const QString e = ProfileFile::save(path, profile, m_session->map()); !e.isEmpty()) {
+        showErrors(tr("Save profile"), {e});
+        return false;
+    }
+    addRecent(path);
+    Q_EMIT finished(true, tr("Saved %n value(s) as shown (edits included) to %1", nullptr,
+                             int(profile.values.size()))
+                              .arg(path));
+    return true;
+}
+
+void ProfileActions::reportFile(const QString &path, const QString &notes)
+{
+    if (!m_session->isConnected()) {
+        showErrors(tr("Commissioning report"), {tr("Connect to a controller first.")});
+        return;
+    }
+    QPointer<ProfileActions> self(this);
+    m_session->client()->readAll([self, path, notes](const ReadOutcome &r) {
+        if (!self)
+            return;
+        self->m_session->store()->setDeviceValues(r.values);
+        if (!r.ok) {
+            self->showErrors(tr("Commissioning report"),
+                             QStringList{tr("No report: the controller could not be read "
+                                            "completely.")} +
+                                 r.errors);
+            return;
+        }
+        ReportInput input;
+        input.map = self->m_session->map();
+        input.values = r.values;
+        input.link = self->m_session->link()->settings().describe();
+        input.deviceId = self->m_session->link()->settings().deviceId;
+        input.notes = notes;
+        input.date = QDateTime::currentDateTime();
+        input.locale = Language::instance().current();
+        if (const QString e = CommissioningReport(input).write(path); !e.isEmpty()) {
+            self->showErrors(tr("Commissioning report"), {e});
+            return;
+        }
+        Q_EMIT self->finished(true, tr("Commissioning report written to %1").arg(path));
+    });
+}
+
+} // namespace stepcom

@@ -1,0 +1,72 @@
+#pragma once
+
+#include <QObject>
+#include <QPointer>
+#include <QStringList>
+
+class QAction;
+class QMenu;
+class QMessageBox;
+class QWidget;
+
+namespace stepcom {
+
+class DeviceSession;
+class ProfileCompareDialog;
+
+// The File menu's profile and report actions: open a profile (compare, never write by itself),
+// save one from the device or from the edited values, recent profiles, the commissioning
+// report. File choosers and messages are non-modal; the *File() methods do the work and are
+// what tests call.
+class ProfileActions : public QObject
+{
+    Q_OBJECT
+public:
+    ProfileActions(DeviceSession *session, QWidget *window);
+
+    QAction *openAction() const { return m_open; }
+    QAction *saveFromDeviceAction() const { return m_saveFromDevice; }
+    QAction *saveFromEditedAction() const { return m_saveFromEdited; }
+    QAction *reportAction() const { return m_report; }
+    QMenu *recentMenu() const { return m_recent; }
+    ProfileCompareDialog *compareDialog() const;
+    QMessageBox *errorBox() const;
+
+    static QStringList recentFiles();
+    void retranslate();
+
+    // Parse, then show the comparison; a bad file shows every problem and writes nothing.
+    bool openFile(const QString &path);
+    // Read everything from the controller, then save (done reports the outcome).
+    void saveFromDeviceFile(const QString &path);
+    // Save what the window shows: the edits where there are any, else the controller's values.
+    bool saveFromEditedFile(const QString &path);
+    // Read everything, then write the report as PDF or HTML by the file's suffix.
+    void reportFile(const QString &path, const QString &notes);
+
+Q_SIGNALS:
+    // Every outcome, for the message dock; ok = false for errors.
+    void finished(bool ok, const QString &message);
+
+private:
+    void chooseOpen();
+    void chooseSave(bool fromDevice);
+    void chooseReport();
+    void addRecent(const QString &path);
+    void rebuildRecent();
+    void showErrors(const QString &title, const QStringList &errors);
+    void updateActions();
+    QString lastDirectory() const;
+
+    DeviceSession *m_session;
+    QWidget *m_window;
+    QAction *m_open;
+    QAction *m_saveFromDevice;
+    QAction *m_saveFromEdited;
+    QAction *m_report;
+    QMenu *m_recent;
+    QPointer<ProfileCompareDialog> m_compare;
+    QPointer<QMessageBox> m_errorBox;
+};
+
+} // namespace stepcom
