@@ -3,6 +3,7 @@
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
 #include "dialogs/busscandialog.h"
+#include "dialogs/profilecomparedialog.h"
 #include "dialogs/writechangesdialog.h"
 #include "mainwindow.h"
 #include "pages/connectionpage.h"
@@ -12,6 +13,7 @@
 #include "pages/motionpage.h"
 #include "pages/motorpage.h"
 #include "pages/plotpage.h"
+#include "profileactions.h"
 #include "shooter.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
@@ -19,6 +21,7 @@
 #include "widgets/patheditor.h"
 
 #include <QDockWidget>
+#include <QFile>
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QPushButton>
@@ -302,6 +305,72 @@ void modeQuestion(Shooter &s)
     script.then([modes] { modes()->confirmation()->reject(); });
 }
 
+ProfileActions *profiles(Shooter &s)
+{
+    ProfileActions *actions = s.window()->profileActions();
+    if (!actions)
+        s.script().fail(QStringLiteral("the window has no profile actions"));
+    return actions;
+}
+
+// A profile of the next machine (two values differ from the controller) opened: the comparison,
+// before anything is written.
+void profileCompare(Shooter &s)
+{
+    Script &script = s.script();
+    const QString path = s.scratchPath(QStringLiteral("machine-a.json"));
+    script.then([&s, path] {
+        ProfileActions *actions = profiles(s);
+        ParameterField *speed = field(s.window(), QStringLiteral("motor1.speed"));
+        ParameterField *micro = field(s.window(), QStringLiteral("motor2.microsteps"));
+        if (!actions || !speed || !micro) {
+            s.script().fail(QStringLiteral("no profile actions or motor fields"));
+            return;
+        }
+        s.window()->showPage(s.pageIndex<MotorPage>());
+        speed->enterText(QStringLiteral("600"));
+        micro->enterText(QStringLiteral("16"));
+        const bool saved = actions->saveFromEditedFile(path);
+        s.session()->store()->revertAll();
+        if (!saved || !actions->openFile(path))
+            s.script().fail(
+                QStringLiteral("the profile %1 could not be saved and opened").arg(path));
+    });
+    const auto dialog = [&s]() -> ProfileCompareDialog * {
+        return s.window()->profileActions()->compareDialog();
+    };
+    script.waitFor(QStringLiteral("the comparison"), [dialog] {
+        return dialog() && dialog()->isVisible() && !dialog()->isBusy() &&
+               dialog()->applyButton()->isEnabled();
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("profile-compare")), -1, dialog);
+    script.then([dialog] { dialog()->reject(); });
+}
+
+// A broken profile: every problem named, nothing written.
+void profileError(Shooter &s)
+{
+    Script &script = s.script();
+    const QString path = s.scratchPath(QStringLiteral("broken.json"));
+    script.then([&s, path] {
+        QFile file(path);
+        if (!file.open(QIODevice::WriteOnly) ||
+            file.write("{\n  \"format\": \"stepcom-profile\",\n  \"schema\": 1,\n  \"values\": {\n"
+                       "    \"motor1.speed\": 300,,\n") < 0) {
+            s.script().fail(QStringLiteral("cannot write %1").arg(path));
+            return;
+        }
+        file.close();
+        if (ProfileActions *actions = profiles(s); actions && actions->openFile(path))
+            s.script().fail(QStringLiteral("the broken profile was accepted"));
+    });
+    const auto box = [&s]() -> QWidget * { return s.window()->profileActions()->errorBox(); };
+    script.waitFor(QStringLiteral("the profile error"),
+                   [box] { return box() && box()->isVisible(); });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("profile-error")), -1, box);
+    script.then([&s] { s.window()->profileActions()->errorBox()->close(); });
+}
+
 // A controller at id 7 that nobody remembers: the bus scan finds it.
 void busScan(Shooter &s)
 {
@@ -384,6 +453,8 @@ const QList<Scene> &scenes()
         {QStringLiteral("line-edited"), W::AfterPages, &lineEdited},
         {QStringLiteral("mode-question"), W::AfterPages, &modeQuestion},
         {QStringLiteral("bus-scan"), W::AfterPages, &busScan},
+        {QStringLiteral("profile-compare"), W::AfterPages, &profileCompare},
+        {QStringLiteral("profile-error"), W::AfterPages, &profileError},
         {QStringLiteral("write-changes"), W::AfterPages, &writeChanges},
         {QStringLiteral("port-missing"), W::AfterPages, &portMissing},
     };

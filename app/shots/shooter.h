@@ -7,6 +7,7 @@
 #include <QDir>
 #include <QSize>
 #include <QStringList>
+#include <QTemporaryDir>
 
 #include <memory>
 
@@ -60,6 +61,8 @@ public:
     // A second simulated controller on a pty, for the scan scene; null when it cannot start
     // (the reason goes to the script).
     SimHost *extraSimulator(int deviceId);
+    // A path for a scratch file (profiles the scenes save and open), removed at the end.
+    QString scratchPath(const QString &fileName) const { return m_scratch.filePath(fileName); }
 
     QStringList written() const { return m_written; }
     // The script ran to its end (successfully or not).
@@ -82,6 +85,7 @@ private:
     std::unique_ptr<DeviceSession> m_session;
     std::unique_ptr<MainWindow> m_window;
     std::unique_ptr<SimHost> m_extraSim;
+    QTemporaryDir m_scratch;
     QStringList m_written;
     bool m_readOk = false;
     bool m_done = false;
