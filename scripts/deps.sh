@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # Installs what StepCom needs from Debian/Ubuntu packages, only what is missing.
 #   scripts/deps.sh          build and run
-#   scripts/deps.sh --test   also the test peers (mbpoll, socat, pymodbus, Xvfb)
+#   scripts/deps.sh --test   also the test peers (mbpoll, socat, pymodbus, Xvfb) and the
+#                            package checks (dpkg-dev, desktop-file-utils, appstream)
 set -euo pipefail
 
 packages=(build-essential cmake ninja-build pkg-config
           qt6-base-dev qt6-serialbus-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools
           qt6-l10n-tools qt6-charts-dev libqt6opengl6-dev libxkbcommon-dev qt6-svg-dev
           qt6-translations-l10n libgl-dev
-          qt6-qpa-plugins fonts-noto-cjk)
+          qt6-qpa-plugins fonts-noto-cjk help2man)
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(mbpoll socat python3-pymodbus xvfb xauth dpkg-dev file poppler-utils)
+    packages+=(mbpoll socat python3-pymodbus xvfb xauth dpkg-dev file poppler-utils
+               desktop-file-utils appstream)
 fi
 
 missing=()

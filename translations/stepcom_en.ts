@@ -301,6 +301,185 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CommissioningReport</name>
+    <message>
+        <source>Controller</source>
+        <translation>Controller</translation>
+    </message>
+    <message>
+        <source>Device id</source>
+        <translation>Device id</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Link</translation>
+    </message>
+    <message>
+        <source>Baud rate (register)</source>
+        <translation>Baud rate (register)</translation>
+    </message>
+    <message>
+        <source>Register map</source>
+        <translation>Register map</translation>
+    </message>
+    <message>
+        <source>round trips: %1</source>
+        <translation>round trips: %1</translation>
+    </message>
+    <message>
+        <source>System mode</source>
+        <translation>System mode</translation>
+    </message>
+    <message>
+        <source>Homing order</source>
+        <translation>Homing order</translation>
+    </message>
+    <message>
+        <source>first: %1, then: %2</source>
+        <translation>first: %1, then: %2</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Date</translation>
+    </message>
+    <message>
+        <source>StepCom version</source>
+        <translation>StepCom version</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>Parameters</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Value</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Key</translation>
+    </message>
+    <message>
+        <source>Register</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <source>Input wiring</source>
+        <translation>Input wiring</translation>
+    </message>
+    <message>
+        <source>Motor</source>
+        <translation>Motor</translation>
+    </message>
+    <message>
+        <source>Positive limit</source>
+        <translation>Positive limit</translation>
+    </message>
+    <message>
+        <source>Negative limit</source>
+        <translation>Negative limit</translation>
+    </message>
+    <message>
+        <source>Home input</source>
+        <translation>Home input</translation>
+    </message>
+    <message>
+        <source>No suspicious wiring found.</source>
+        <translation>No suspicious wiring found.</translation>
+    </message>
+    <message>
+        <source>Arc and line interpolation</source>
+        <translation>Arc and line interpolation</translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation>Arc</translation>
+    </message>
+    <message>
+        <source>Arc mode</source>
+        <translation>Arc mode</translation>
+    </message>
+    <message>
+        <source>Arc start</source>
+        <translation>Arc start</translation>
+    </message>
+    <message>
+        <source>Arc end</source>
+        <translation>Arc end</translation>
+    </message>
+    <message>
+        <source>Arc centre</source>
+        <translation>Arc centre</translation>
+    </message>
+    <message>
+        <source>Arc middle point</source>
+        <translation>Arc middle point</translation>
+    </message>
+    <message>
+        <source>Arc direction</source>
+        <translation>Arc direction</translation>
+    </message>
+    <message>
+        <source>Arc speed</source>
+        <translation>Arc speed</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <source>Line start</source>
+        <translation>Line start</translation>
+    </message>
+    <message>
+        <source>Line end</source>
+        <translation>Line end</translation>
+    </message>
+    <message>
+        <source>Line speed</source>
+        <translation>Line speed</translation>
+    </message>
+    <message>
+        <source>The arc cannot be drawn: %1</source>
+        <translation>The arc cannot be drawn: %1</translation>
+    </message>
+    <message>
+        <source>XY picture of the arc and the line</source>
+        <translation>XY picture of the arc and the line</translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation>Commissioning report</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notes</translation>
+    </message>
+    <message>
+        <source>Signature: ____________________</source>
+        <translation>Signature: ____________________</translation>
+    </message>
+    <message>
+        <source>%1: the report is written as .pdf or .html, not .%2</source>
+        <translation>%1: the report is written as .pdf or .html, not .%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ConnectionPage</name>
     <message>
         <source>Disconnected.</source>
@@ -669,8 +848,36 @@
         <translation>--interval: &apos;%1&apos; is not a number of ms</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command)</source>
-        <translation>no command given (params, read, write, command)</translation>
+        <source>dump, apply: include the device id and baud (apply writes them only with this).</source>
+        <translation>dump, apply: include the device id and baud (apply writes them only with this).</translation>
+    </message>
+    <message>
+        <source>dump, report: name of the profile or the machine.</source>
+        <translation>dump, report: name of the profile or the machine.</translation>
+    </message>
+    <message>
+        <source>text</source>
+        <translation>text</translation>
+    </message>
+    <message>
+        <source>dump, report: notes to record.</source>
+        <translation>dump, report: notes to record.</translation>
+    </message>
+    <message>
+        <source>report: language of the report, en or zh_CN (default en).</source>
+        <translation>report: language of the report, en or zh_CN (default en).</translation>
+    </message>
+    <message>
+        <source>language</source>
+        <translation>language</translation>
+    </message>
+    <message>
+        <source>--lang: &apos;%1&apos; is not en or zh_CN</source>
+        <translation>--lang: &apos;%1&apos; is not en or zh_CN</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
+        <translation>no command given (params, read, write, command, monitor, dump, diff, apply, report)</translation>
     </message>
 </context>
 <context>
@@ -756,12 +963,97 @@
         <translation>%1: done</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor)</source>
-        <translation>unknown command &apos;%1&apos; (params, read, write, command, monitor)</translation>
-    </message>
-    <message>
         <source>monitor takes no arguments, only --count and --interval</source>
         <translation>monitor takes no arguments, only --count and --interval</translation>
+    </message>
+    <message>
+        <source>%1 needs exactly one profile file</source>
+        <translation>%1 needs exactly one profile file</translation>
+    </message>
+    <message>
+        <source>dump needs exactly one file to write the profile to</source>
+        <translation>dump needs exactly one file to write the profile to</translation>
+    </message>
+    <message>
+        <source>nothing was saved: the controller could not be read completely</source>
+        <translation>nothing was saved: the controller could not be read completely</translation>
+    </message>
+    <message numerus="yes">
+        <source>saved %n parameter(s) of %1 to %2</source>
+        <translation>
+            <numerusform>saved %n parameter of %1 to %2</numerusform>
+            <numerusform>saved %n parameters of %1 to %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the controller holds every value of the profile</source>
+        <translation>the controller holds every value of the profile</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) differ (controller -&gt; profile)</source>
+        <translation>
+            <numerusform>%n value differ (controller -&gt; profile)</numerusform>
+            <numerusform>%n values differ (controller -&gt; profile)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>note: device.baud changes the controller&apos;s serial side only</source>
+        <translation>note: device.baud changes the controller&apos;s serial side only</translation>
+    </message>
+    <message>
+        <source>not applied (needs --include-link): %1</source>
+        <translation>not applied (needs --include-link): %1</translation>
+    </message>
+    <message>
+        <source>will write %1</source>
+        <translation>will write %1</translation>
+    </message>
+    <message>
+        <source>the controller already holds the profile&apos;s values</source>
+        <translation>the controller already holds the profile&apos;s values</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write these %n value(s) to the controller? [y/N] </source>
+        <translation>
+            <numerusform>Write these %n value to the controller? [y/N] </numerusform>
+            <numerusform>Write these %n values to the controller? [y/N] </numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not confirmed: nothing was written</source>
+        <translation>not confirmed: nothing was written</translation>
+    </message>
+    <message>
+        <source>no answer on standard input: nothing was written (use --yes)</source>
+        <translation>no answer on standard input: nothing was written (use --yes)</translation>
+    </message>
+    <message>
+        <source>not saved to flash: the controller forgets these values at power-off (use --save-to-flash)</source>
+        <translation>not saved to flash: the controller forgets these values at power-off (use --save-to-flash)</translation>
+    </message>
+    <message>
+        <source>report needs exactly one file (.pdf or .html)</source>
+        <translation>report needs exactly one file (.pdf or .html)</translation>
+    </message>
+    <message>
+        <source>%1: the report is written as .pdf or .html</source>
+        <translation>%1: the report is written as .pdf or .html</translation>
+    </message>
+    <message>
+        <source>no %1 translation is built in</source>
+        <translation>no %1 translation is built in</translation>
+    </message>
+    <message>
+        <source>no report: the controller could not be read completely</source>
+        <translation>no report: the controller could not be read completely</translation>
+    </message>
+    <message>
+        <source>report written to %1</source>
+        <translation>report written to %1</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</source>
+        <translation>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</translation>
     </message>
 </context>
 <context>
@@ -2913,6 +3205,475 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileActions</name>
+    <message>
+        <source>&amp;Open profile…</source>
+        <translation>&amp;Open profile…</translation>
+    </message>
+    <message>
+        <source>Compare a profile file with the controller; nothing is written until you apply checked rows</source>
+        <translation>Compare a profile file with the controller; nothing is written until you apply checked rows</translation>
+    </message>
+    <message>
+        <source>Save profile from &amp;device…</source>
+        <translation>Save profile from &amp;device…</translation>
+    </message>
+    <message>
+        <source>Read every parameter, then save them as a profile file</source>
+        <translation>Read every parameter, then save them as a profile file</translation>
+    </message>
+    <message>
+        <source>Save profile from &amp;edited values…</source>
+        <translation>Save profile from &amp;edited values…</translation>
+    </message>
+    <message>
+        <source>Save the values the pages show (edits included) as a profile file</source>
+        <translation>Save the values the pages show (edits included) as a profile file</translation>
+    </message>
+    <message>
+        <source>Commissioning &amp;report…</source>
+        <translation>Commissioning &amp;report…</translation>
+    </message>
+    <message>
+        <source>Read everything, then write the commissioning sheet as PDF or HTML</source>
+        <translation>Read everything, then write the commissioning sheet as PDF or HTML</translation>
+    </message>
+    <message>
+        <source>Recent &amp;profiles</source>
+        <translation>Recent &amp;profiles</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(none)</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the controller.</source>
+        <translation>Nothing was written to the controller.</translation>
+    </message>
+    <message>
+        <source>Open profile</source>
+        <translation>Open profile</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom profiles (*.json);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Save profile from the device</source>
+        <translation>Save profile from the device</translation>
+    </message>
+    <message>
+        <source>Save profile from the edited values</source>
+        <translation>Save profile from the edited values</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom profiles (*.json)</translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation>Commissioning report</translation>
+    </message>
+    <message>
+        <source>Notes for the report (machine, place, who commissioned it):</source>
+        <translation>Notes for the report (machine, place, who commissioned it):</translation>
+    </message>
+    <message>
+        <source>Save the commissioning report</source>
+        <translation>Save the commissioning report</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>The profile cannot be used</source>
+        <translation>The profile cannot be used</translation>
+    </message>
+    <message numerus="yes">
+        <source>Profile applied: %n value(s) written and verified</source>
+        <translation>
+            <numerusform>Profile applied: %n value written and verified</numerusform>
+            <numerusform>Profile applied: %n values written and verified</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Opened profile %1</source>
+        <translation>Opened profile %1</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>Save profile</translation>
+    </message>
+    <message>
+        <source>Connect to a controller first.</source>
+        <translation>Connect to a controller first.</translation>
+    </message>
+    <message>
+        <source>Nothing was saved: the controller could not be read completely.</source>
+        <translation>Nothing was saved: the controller could not be read completely.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved the controller&apos;s %n parameter(s) to %1</source>
+        <translation>
+            <numerusform>Saved the controller&apos;s %n parameter to %1</numerusform>
+            <numerusform>Saved the controller&apos;s %n parameters to %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) are not known yet (read all first): %1</source>
+        <translation>
+            <numerusform>%n value are not known yet (read all first): %1</numerusform>
+            <numerusform>%n values are not known yet (read all first): %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n value(s) as shown (edits included) to %1</source>
+        <translation>
+            <numerusform>Saved %n value as shown (edits included) to %1</numerusform>
+            <numerusform>Saved %n values as shown (edits included) to %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No report: the controller could not be read completely.</source>
+        <translation>No report: the controller could not be read completely.</translation>
+    </message>
+    <message>
+        <source>Commissioning report written to %1</source>
+        <translation>Commissioning report written to %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileCompareDialog</name>
+    <message>
+        <source>Saved to flash: the controller keeps these values after power-off.</source>
+        <translation>Saved to flash: the controller keeps these values after power-off.</translation>
+    </message>
+    <message>
+        <source>Saving to flash failed (see Messages).</source>
+        <translation>Saving to flash failed (see Messages).</translation>
+    </message>
+    <message>
+        <source>The controller forgets these values at power-off unless they are saved to flash.</source>
+        <translation>The controller forgets these values at power-off unless they are saved to flash.</translation>
+    </message>
+    <message>
+        <source>Motor %1 · %2</source>
+        <translation>Motor %1 · %2</translation>
+    </message>
+    <message>
+        <source>link setting</source>
+        <translation>link setting</translation>
+    </message>
+    <message>
+        <source>The profile does not hold this value</source>
+        <translation>The profile does not hold this value</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s values are not known yet: connect, and they are read.</source>
+        <translation>The controller&apos;s values are not known yet: connect, and they are read.</translation>
+    </message>
+    <message>
+        <source>The controller holds every value of the profile.</source>
+        <translation>The controller holds every value of the profile.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) differ; %1 checked to be written.</source>
+        <translation>
+            <numerusform>%n value differ; %1 checked to be written.</numerusform>
+            <numerusform>%n values differ; %1 checked to be written.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Connect to a controller to apply</source>
+        <translation>Connect to a controller to apply</translation>
+    </message>
+    <message numerus="yes">
+        <source>Writing %n value(s), then reading them back…</source>
+        <translation>
+            <numerusform>Writing %n value, then reading them back…</numerusform>
+            <numerusform>Writing %n values, then reading them back…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: wrote %2, the controller holds %3</source>
+        <translation>%1: wrote %2, the controller holds %3</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2, could not read it back</source>
+        <translation>%1: wrote %2, could not read it back</translation>
+    </message>
+    <message>
+        <source>%1: not written</source>
+        <translation>%1: not written</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wrote and verified %n value(s).</source>
+        <translation>
+            <numerusform>Wrote and verified %n value.</numerusform>
+            <numerusform>Wrote and verified %n values.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Problems:</source>
+        <translation>Problems:</translation>
+    </message>
+    <message>
+        <source>Profile %1 — compare and apply</source>
+        <translation>Profile %1 — compare and apply</translation>
+    </message>
+    <message>
+        <source>Profile &quot;%1&quot; from %2</source>
+        <translation>Profile &quot;%1&quot; from %2</translation>
+    </message>
+    <message>
+        <source>saved %1</source>
+        <translation>saved %1</translation>
+    </message>
+    <message>
+        <source>from controller id %1</source>
+        <translation>from controller id %1</translation>
+    </message>
+    <message>
+        <source>Opening a profile writes nothing. Check the rows to write, then Apply.</source>
+        <translation>Opening a profile writes nothing. Check the rows to write, then Apply.</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Apply</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Controller</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profile</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Key</translation>
+    </message>
+    <message>
+        <source>Differences only</source>
+        <translation>Differences only</translation>
+    </message>
+    <message>
+        <source>Also apply the device id and baud (the connection follows)</source>
+        <translation>Also apply the device id and baud (the connection follows)</translation>
+    </message>
+    <message>
+        <source>Check differing</source>
+        <translation>Check differing</translation>
+    </message>
+    <message>
+        <source>Check none</source>
+        <translation>Check none</translation>
+    </message>
+    <message>
+        <source>Apply checked</source>
+        <translation>Apply checked</translation>
+    </message>
+    <message>
+        <source>Save to flash</source>
+        <translation>Save to flash</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileDiff</name>
+    <message>
+        <source>%1: the profile holds no value</source>
+        <translation>%1: the profile holds no value</translation>
+    </message>
+    <message>
+        <source>(unknown)</source>
+        <translation>(unknown)</translation>
+    </message>
+    <message>
+        <source>(not in the profile)</source>
+        <translation>(not in the profile)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileFile</name>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>true/false</source>
+        <translation>true/false</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>a number</translation>
+    </message>
+    <message>
+        <source>a text &quot;%1&quot;</source>
+        <translation>a text &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>a list</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>an object</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nothing</translation>
+    </message>
+    <message>
+        <source>the key &quot;%1&quot; appears more than once</source>
+        <translation>the key &quot;%1&quot; appears more than once</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: the key &quot;%2&quot; appears more than once</source>
+        <translation>&quot;%1&quot;: the key &quot;%2&quot; appears more than once</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>the file is empty</translation>
+    </message>
+    <message>
+        <source>the file is %1 bytes: far too large for a profile</source>
+        <translation>the file is %1 bytes: far too large for a profile</translation>
+    </message>
+    <message>
+        <source>not valid JSON at line %1, column %2: %3</source>
+        <translation>not valid JSON at line %1, column %2: %3</translation>
+    </message>
+    <message>
+        <source>the file holds a JSON list, not a profile object</source>
+        <translation>the file holds a JSON list, not a profile object</translation>
+    </message>
+    <message>
+        <source>… and %1 more problems</source>
+        <translation>… and %1 more problems</translation>
+    </message>
+    <message>
+        <source>unknown field &quot;%1&quot; (allowed: %2)</source>
+        <translation>unknown field &quot;%1&quot; (allowed: %2)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: unknown field &quot;%2&quot; (allowed: %3)</source>
+        <translation>&quot;%1&quot;: unknown field &quot;%2&quot; (allowed: %3)</translation>
+    </message>
+    <message>
+        <source>this is a register map, not a profile</source>
+        <translation>this is a register map, not a profile</translation>
+    </message>
+    <message>
+        <source>not a StepCom profile: &quot;format&quot; must be &quot;%1&quot;, found %2</source>
+        <translation>not a StepCom profile: &quot;format&quot; must be &quot;%1&quot;, found %2</translation>
+    </message>
+    <message>
+        <source>&quot;schema&quot; must be a whole number, found %1</source>
+        <translation>&quot;schema&quot; must be a whole number, found %1</translation>
+    </message>
+    <message>
+        <source>profile schema %1 is newer than this StepCom reads (%2): update StepCom</source>
+        <translation>profile schema %1 is newer than this StepCom reads (%2): update StepCom</translation>
+    </message>
+    <message>
+        <source>profile schema %1 is unknown (this StepCom reads %2)</source>
+        <translation>profile schema %1 is unknown (this StepCom reads %2)</translation>
+    </message>
+    <message>
+        <source>&quot;map&quot; must be an object {&quot;id&quot;: …, &quot;version&quot;: …}, found %1</source>
+        <translation>&quot;map&quot; must be an object {&quot;id&quot;: …, &quot;version&quot;: …}, found %1</translation>
+    </message>
+    <message>
+        <source>&quot;map&quot;: &quot;id&quot; must be a text, found %1</source>
+        <translation>&quot;map&quot;: &quot;id&quot; must be a text, found %1</translation>
+    </message>
+    <message>
+        <source>&quot;map&quot;: &quot;version&quot; must be a whole number, found %1</source>
+        <translation>&quot;map&quot;: &quot;version&quot; must be a whole number, found %1</translation>
+    </message>
+    <message>
+        <source>the profile is for register map &quot;%1&quot; version %2, but the controller&apos;s map is &quot;%3&quot; version %4</source>
+        <translation>the profile is for register map &quot;%1&quot; version %2, but the controller&apos;s map is &quot;%3&quot; version %4</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot; must be an object, found %1</source>
+        <translation>&quot;metadata&quot; must be an object, found %1</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;%1&quot; must be a text, found %2</source>
+        <translation>&quot;metadata&quot;: &quot;%1&quot; must be a text, found %2</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;created&quot; is not a date and time (2024-05-31T14:02:00Z): &quot;%1&quot;</source>
+        <translation>&quot;metadata&quot;: &quot;created&quot; is not a date and time (2024-05-31T14:02:00Z): &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;%1&quot; must be a %2, found %3</source>
+        <translation>&quot;metadata&quot;: &quot;%1&quot; must be a %2, found %3</translation>
+    </message>
+    <message>
+        <source>whole number</source>
+        <translation>whole number</translation>
+    </message>
+    <message>
+        <source>&quot;values&quot; must be an object of key: value, found %1</source>
+        <translation>&quot;values&quot; must be an object of key: value, found %1</translation>
+    </message>
+    <message>
+        <source>unknown parameter &quot;%1&quot; (not in register map &quot;%2&quot;)</source>
+        <translation>unknown parameter &quot;%1&quot; (not in register map &quot;%2&quot;)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a command, not a setting</source>
+        <translation>&quot;%1&quot; is a command, not a setting</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is read-only (a status value), not a setting</source>
+        <translation>&quot;%1&quot; is read-only (a status value), not a setting</translation>
+    </message>
+    <message>
+        <source>%1: expected a number, found %2</source>
+        <translation>%1: expected a number, found %2</translation>
+    </message>
+    <message>
+        <source>missing &quot;%1&quot; (%2)</source>
+        <translation>missing &quot;%1&quot; (%2)</translation>
+    </message>
+    <message>
+        <source>no register map to check the profile against</source>
+        <translation>no register map to check the profile against</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1: no such file</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes, far too large for a profile</source>
+        <translation>%1: %2 bytes, far too large for a profile</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SimCommandLine</name>
     <message>
         <source>N</source>
@@ -3591,6 +4352,45 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::XyPicture</name>
+    <message>
+        <source>start, middle and end point are on one line</source>
+        <translation>start, middle and end point are on one line</translation>
+    </message>
+    <message>
+        <source>the start point is the centre</source>
+        <translation>the start point is the centre</translation>
+    </message>
+    <message>
+        <source>X: motor 1</source>
+        <translation>X: motor 1</translation>
+    </message>
+    <message>
+        <source>Y: motor 2</source>
+        <translation>Y: motor 2</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>on</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>off</translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation>Arc</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <source>● start   ○ end   dashed: interpolation off</source>
+        <translation>● start   ○ end   dashed: interpolation off</translation>
+    </message>
+</context>
+<context>
     <name>stepcomctl</name>
     <message>
         <source>What to do.</source>
@@ -3606,6 +4406,16 @@ Commands:
   command NAME           pulse a command coil (e.g. motor1.stop, estop)
   monitor                print the live status as one JSON object per line,
                          until --count samples or Ctrl-C (--interval MS)
+  dump FILE              read every setting and save it as a profile file
+                         (--name, --notes; --include-link adds id and baud)
+  diff FILE              compare the controller with a profile; exit 0 same,
+                         1 different, 2 bad file, 3 link or device error
+  apply FILE             write the profile&apos;s values that differ, after showing
+                         them and asking (--yes skips the question), then verify;
+                         --include-link also writes device id and baud,
+                         --save-to-flash saves afterwards
+  report FILE.pdf|.html  write the commissioning report (--name, --notes,
+                         --lang en|zh_CN)
 
 Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
         <translation>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
@@ -3617,6 +4427,16 @@ Commands:
   command NAME           pulse a command coil (e.g. motor1.stop, estop)
   monitor                print the live status as one JSON object per line,
                          until --count samples or Ctrl-C (--interval MS)
+  dump FILE              read every setting and save it as a profile file
+                         (--name, --notes; --include-link adds id and baud)
+  diff FILE              compare the controller with a profile; exit 0 same,
+                         1 different, 2 bad file, 3 link or device error
+  apply FILE             write the profile&apos;s values that differ, after showing
+                         them and asking (--yes skips the question), then verify;
+                         --include-link also writes device id and baud,
+                         --save-to-flash saves afterwards
+  report FILE.pdf|.html  write the commissioning report (--name, --notes,
+                         --lang en|zh_CN)
 
 Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</translation>
     </message>

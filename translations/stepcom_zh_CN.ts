@@ -296,6 +296,185 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CommissioningReport</name>
+    <message>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>Device id</source>
+        <translation>设备地址</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Baud rate (register)</source>
+        <translation>波特率（寄存器）</translation>
+    </message>
+    <message>
+        <source>Register map</source>
+        <translation>寄存器表</translation>
+    </message>
+    <message>
+        <source>round trips: %1</source>
+        <translation>往返次数：%1</translation>
+    </message>
+    <message>
+        <source>System mode</source>
+        <translation>系统模式</translation>
+    </message>
+    <message>
+        <source>Homing order</source>
+        <translation>回零顺序</translation>
+    </message>
+    <message>
+        <source>first: %1, then: %2</source>
+        <translation>先：%1，后：%2</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>StepCom version</source>
+        <translation>StepCom 版本</translation>
+    </message>
+    <message>
+        <source>Parameters</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>键名</translation>
+    </message>
+    <message>
+        <source>Register</source>
+        <translation>寄存器</translation>
+    </message>
+    <message>
+        <source>Input wiring</source>
+        <translation>输入接线</translation>
+    </message>
+    <message>
+        <source>Motor</source>
+        <translation>电机</translation>
+    </message>
+    <message>
+        <source>Positive limit</source>
+        <translation>正限位</translation>
+    </message>
+    <message>
+        <source>Negative limit</source>
+        <translation>负限位</translation>
+    </message>
+    <message>
+        <source>Home input</source>
+        <translation>原点输入</translation>
+    </message>
+    <message>
+        <source>No suspicious wiring found.</source>
+        <translation>未发现可疑接线。</translation>
+    </message>
+    <message>
+        <source>Arc and line interpolation</source>
+        <translation>圆弧与直线插补</translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <source>Arc mode</source>
+        <translation>圆弧模式</translation>
+    </message>
+    <message>
+        <source>Arc start</source>
+        <translation>圆弧起点</translation>
+    </message>
+    <message>
+        <source>Arc end</source>
+        <translation>圆弧终点</translation>
+    </message>
+    <message>
+        <source>Arc centre</source>
+        <translation>圆弧圆心</translation>
+    </message>
+    <message>
+        <source>Arc middle point</source>
+        <translation>圆弧中间点</translation>
+    </message>
+    <message>
+        <source>Arc direction</source>
+        <translation>圆弧方向</translation>
+    </message>
+    <message>
+        <source>Arc speed</source>
+        <translation>圆弧速度</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>Line start</source>
+        <translation>直线起点</translation>
+    </message>
+    <message>
+        <source>Line end</source>
+        <translation>直线终点</translation>
+    </message>
+    <message>
+        <source>Line speed</source>
+        <translation>直线速度</translation>
+    </message>
+    <message>
+        <source>The arc cannot be drawn: %1</source>
+        <translation>无法绘制圆弧：%1</translation>
+    </message>
+    <message>
+        <source>XY picture of the arc and the line</source>
+        <translation>圆弧与直线的 XY 图</translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation>调试报告</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>Signature: ____________________</source>
+        <translation>签字：____________________</translation>
+    </message>
+    <message>
+        <source>%1: the report is written as .pdf or .html, not .%2</source>
+        <translation>%1：报告只能保存为 .pdf 或 .html，不能是 .%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ConnectionPage</name>
     <message>
         <source>Disconnected.</source>
@@ -664,8 +843,36 @@
         <translation>--interval：“%1”不是以 ms 为单位的数字</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command)</source>
-        <translation>未指定命令（params、read、write、command）</translation>
+        <source>dump, apply: include the device id and baud (apply writes them only with this).</source>
+        <translation>dump、apply：包括设备地址和波特率（apply 只有加此选项才写入它们）。</translation>
+    </message>
+    <message>
+        <source>dump, report: name of the profile or the machine.</source>
+        <translation>dump、report：参数文件或机器的名称。</translation>
+    </message>
+    <message>
+        <source>text</source>
+        <translation>文本</translation>
+    </message>
+    <message>
+        <source>dump, report: notes to record.</source>
+        <translation>dump、report：要记录的备注。</translation>
+    </message>
+    <message>
+        <source>report: language of the report, en or zh_CN (default en).</source>
+        <translation>report：报告语言，en 或 zh_CN（默认 en）。</translation>
+    </message>
+    <message>
+        <source>language</source>
+        <translation>语言</translation>
+    </message>
+    <message>
+        <source>--lang: &apos;%1&apos; is not en or zh_CN</source>
+        <translation>--lang：&apos;%1&apos; 不是 en 或 zh_CN</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
+        <translation>未给出命令（params、read、write、command、monitor、dump、diff、apply、report）</translation>
     </message>
 </context>
 <context>
@@ -751,12 +958,94 @@
         <translation>%1：完成</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor)</source>
-        <translation>未知命令“%1”（可用命令：params、read、write、command、monitor）</translation>
-    </message>
-    <message>
         <source>monitor takes no arguments, only --count and --interval</source>
         <translation>monitor 不接受参数，只能使用 --count 和 --interval 选项</translation>
+    </message>
+    <message>
+        <source>%1 needs exactly one profile file</source>
+        <translation>%1 需要且只需要一个参数文件</translation>
+    </message>
+    <message>
+        <source>dump needs exactly one file to write the profile to</source>
+        <translation>dump 需要且只需要一个用于保存参数的文件</translation>
+    </message>
+    <message>
+        <source>nothing was saved: the controller could not be read completely</source>
+        <translation>未保存任何内容：无法完整读取控制器</translation>
+    </message>
+    <message numerus="yes">
+        <source>saved %n parameter(s) of %1 to %2</source>
+        <translation>
+            <numerusform>已将 %1 的 %n 个参数保存到 %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the controller holds every value of the profile</source>
+        <translation>控制器中的值与参数文件完全一致</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) differ (controller -&gt; profile)</source>
+        <translation>
+            <numerusform>%n 个值不同（控制器 -&gt; 参数文件）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>note: device.baud changes the controller&apos;s serial side only</source>
+        <translation>注意：device.baud 只改变控制器串口一侧</translation>
+    </message>
+    <message>
+        <source>not applied (needs --include-link): %1</source>
+        <translation>未应用（需要 --include-link）：%1</translation>
+    </message>
+    <message>
+        <source>will write %1</source>
+        <translation>将写入 %1</translation>
+    </message>
+    <message>
+        <source>the controller already holds the profile&apos;s values</source>
+        <translation>控制器中已是参数文件的值</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write these %n value(s) to the controller? [y/N] </source>
+        <translation>
+            <numerusform>将这 %n 个值写入控制器吗？[y/N] </numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not confirmed: nothing was written</source>
+        <translation>未确认：未写入任何内容</translation>
+    </message>
+    <message>
+        <source>no answer on standard input: nothing was written (use --yes)</source>
+        <translation>标准输入没有回答：未写入任何内容（可使用 --yes）</translation>
+    </message>
+    <message>
+        <source>not saved to flash: the controller forgets these values at power-off (use --save-to-flash)</source>
+        <translation>未保存到闪存：控制器断电后会丢失这些值（可使用 --save-to-flash）</translation>
+    </message>
+    <message>
+        <source>report needs exactly one file (.pdf or .html)</source>
+        <translation>report 需要且只需要一个文件（.pdf 或 .html）</translation>
+    </message>
+    <message>
+        <source>%1: the report is written as .pdf or .html</source>
+        <translation>%1：报告只能保存为 .pdf 或 .html</translation>
+    </message>
+    <message>
+        <source>no %1 translation is built in</source>
+        <translation>未内置 %1 翻译</translation>
+    </message>
+    <message>
+        <source>no report: the controller could not be read completely</source>
+        <translation>未生成报告：无法完整读取控制器</translation>
+    </message>
+    <message>
+        <source>report written to %1</source>
+        <translation>报告已写入 %1</translation>
+    </message>
+    <message>
+        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</source>
+        <translation>未知命令 &apos;%1&apos;（params、read、write、command、monitor、dump、diff、apply、report）</translation>
     </message>
 </context>
 <context>
@@ -2901,6 +3190,468 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileActions</name>
+    <message>
+        <source>&amp;Open profile…</source>
+        <translation>打开参数文件(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Compare a profile file with the controller; nothing is written until you apply checked rows</source>
+        <translation>将参数文件与控制器比较；在应用勾选的行之前不会写入任何内容</translation>
+    </message>
+    <message>
+        <source>Save profile from &amp;device…</source>
+        <translation>从设备保存参数文件(&amp;D)…</translation>
+    </message>
+    <message>
+        <source>Read every parameter, then save them as a profile file</source>
+        <translation>读取全部参数，然后保存为参数文件</translation>
+    </message>
+    <message>
+        <source>Save profile from &amp;edited values…</source>
+        <translation>从编辑值保存参数文件(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>Save the values the pages show (edits included) as a profile file</source>
+        <translation>将页面上显示的值（包括未写入的编辑）保存为参数文件</translation>
+    </message>
+    <message>
+        <source>Commissioning &amp;report…</source>
+        <translation>调试报告(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Read everything, then write the commissioning sheet as PDF or HTML</source>
+        <translation>读取全部数据，然后将调试报告保存为 PDF 或 HTML</translation>
+    </message>
+    <message>
+        <source>Recent &amp;profiles</source>
+        <translation>最近的参数文件(&amp;P)</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>Nothing was written to the controller.</source>
+        <translation>未向控制器写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Open profile</source>
+        <translation>打开参数文件</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom 参数文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Save profile from the device</source>
+        <translation>从设备保存参数文件</translation>
+    </message>
+    <message>
+        <source>Save profile from the edited values</source>
+        <translation>从编辑值保存参数文件</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom 参数文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation>调试报告</translation>
+    </message>
+    <message>
+        <source>Notes for the report (machine, place, who commissioned it):</source>
+        <translation>报告备注（机器、地点、调试人员）：</translation>
+    </message>
+    <message>
+        <source>Save the commissioning report</source>
+        <translation>保存调试报告</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>The profile cannot be used</source>
+        <translation>无法使用该参数文件</translation>
+    </message>
+    <message numerus="yes">
+        <source>Profile applied: %n value(s) written and verified</source>
+        <translation>
+            <numerusform>已应用参数文件：写入并校验 %n 个值</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Opened profile %1</source>
+        <translation>已打开参数文件 %1</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>保存参数文件</translation>
+    </message>
+    <message>
+        <source>Connect to a controller first.</source>
+        <translation>请先连接控制器。</translation>
+    </message>
+    <message>
+        <source>Nothing was saved: the controller could not be read completely.</source>
+        <translation>未保存任何内容：无法完整读取控制器。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved the controller&apos;s %n parameter(s) to %1</source>
+        <translation>
+            <numerusform>已将控制器的 %n 个参数保存到 %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) are not known yet (read all first): %1</source>
+        <translation>
+            <numerusform>%n 个值尚未知（请先全部读取）：%1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n value(s) as shown (edits included) to %1</source>
+        <translation>
+            <numerusform>已将显示的 %n 个值（包括编辑）保存到 %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No report: the controller could not be read completely.</source>
+        <translation>未生成报告：无法完整读取控制器。</translation>
+    </message>
+    <message>
+        <source>Commissioning report written to %1</source>
+        <translation>调试报告已写入 %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileCompareDialog</name>
+    <message>
+        <source>Saved to flash: the controller keeps these values after power-off.</source>
+        <translation>已保存到闪存：控制器断电后仍保留这些值。</translation>
+    </message>
+    <message>
+        <source>Saving to flash failed (see Messages).</source>
+        <translation>保存到闪存失败（见“消息”）。</translation>
+    </message>
+    <message>
+        <source>The controller forgets these values at power-off unless they are saved to flash.</source>
+        <translation>除非保存到闪存，否则控制器断电后会丢失这些值。</translation>
+    </message>
+    <message>
+        <source>Motor %1 · %2</source>
+        <translation>电机 %1 · %2</translation>
+    </message>
+    <message>
+        <source>link setting</source>
+        <translation>通信设置</translation>
+    </message>
+    <message>
+        <source>The profile does not hold this value</source>
+        <translation>参数文件中没有该值</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s values are not known yet: connect, and they are read.</source>
+        <translation>尚不知道控制器中的值：连接后会读取。</translation>
+    </message>
+    <message>
+        <source>The controller holds every value of the profile.</source>
+        <translation>控制器中的值与参数文件完全一致。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) differ; %1 checked to be written.</source>
+        <translation>
+            <numerusform>%n 个值不同；已勾选 %1 个待写入。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Connect to a controller to apply</source>
+        <translation>连接控制器后才能应用</translation>
+    </message>
+    <message numerus="yes">
+        <source>Writing %n value(s), then reading them back…</source>
+        <translation>
+            <numerusform>正在写入 %n 个值，然后回读……</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: wrote %2, the controller holds %3</source>
+        <translation>%1：写入 %2，控制器中为 %3</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2, could not read it back</source>
+        <translation>%1：写入 %2，无法回读</translation>
+    </message>
+    <message>
+        <source>%1: not written</source>
+        <translation>%1：未写入</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wrote and verified %n value(s).</source>
+        <translation>
+            <numerusform>已写入并校验 %n 个值。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Problems:</source>
+        <translation>问题：</translation>
+    </message>
+    <message>
+        <source>Profile %1 — compare and apply</source>
+        <translation>参数文件 %1 — 比较与应用</translation>
+    </message>
+    <message>
+        <source>Profile &quot;%1&quot; from %2</source>
+        <translation>参数文件 &quot;%1&quot;，来自 %2</translation>
+    </message>
+    <message>
+        <source>saved %1</source>
+        <translation>保存于 %1</translation>
+    </message>
+    <message>
+        <source>from controller id %1</source>
+        <translation>来自设备地址 %1 的控制器</translation>
+    </message>
+    <message>
+        <source>Opening a profile writes nothing. Check the rows to write, then Apply.</source>
+        <translation>打开参数文件不会写入任何内容。勾选要写入的行，然后点击应用。</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>应用</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>参数文件</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>键名</translation>
+    </message>
+    <message>
+        <source>Differences only</source>
+        <translation>只显示不同项</translation>
+    </message>
+    <message>
+        <source>Also apply the device id and baud (the connection follows)</source>
+        <translation>同时应用设备地址和波特率（连接随之切换）</translation>
+    </message>
+    <message>
+        <source>Check differing</source>
+        <translation>勾选不同项</translation>
+    </message>
+    <message>
+        <source>Check none</source>
+        <translation>全部取消勾选</translation>
+    </message>
+    <message>
+        <source>Apply checked</source>
+        <translation>应用勾选项</translation>
+    </message>
+    <message>
+        <source>Save to flash</source>
+        <translation>保存到闪存</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileDiff</name>
+    <message>
+        <source>%1: the profile holds no value</source>
+        <translation>%1：参数文件中没有该值</translation>
+    </message>
+    <message>
+        <source>(unknown)</source>
+        <translation>（未知）</translation>
+    </message>
+    <message>
+        <source>(not in the profile)</source>
+        <translation>（参数文件中没有）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileFile</name>
+    <message>
+        <source>null</source>
+        <translation>null（空值）</translation>
+    </message>
+    <message>
+        <source>true/false</source>
+        <translation>true/false（布尔值）</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>一个数字</translation>
+    </message>
+    <message>
+        <source>a text &quot;%1&quot;</source>
+        <translation>文本 &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>一个列表</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>一个对象</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>the key &quot;%1&quot; appears more than once</source>
+        <translation>键 &quot;%1&quot; 出现了不止一次</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: the key &quot;%2&quot; appears more than once</source>
+        <translation>&quot;%1&quot;：键 &quot;%2&quot; 出现了不止一次</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>文件为空</translation>
+    </message>
+    <message>
+        <source>the file is %1 bytes: far too large for a profile</source>
+        <translation>文件有 %1 字节：作为参数文件太大了</translation>
+    </message>
+    <message>
+        <source>not valid JSON at line %1, column %2: %3</source>
+        <translation>第 %1 行第 %2 列不是有效的 JSON：%3</translation>
+    </message>
+    <message>
+        <source>the file holds a JSON list, not a profile object</source>
+        <translation>文件内容是 JSON 列表，而不是参数文件对象</translation>
+    </message>
+    <message>
+        <source>… and %1 more problems</source>
+        <translation>…… 以及另外 %1 个问题</translation>
+    </message>
+    <message>
+        <source>unknown field &quot;%1&quot; (allowed: %2)</source>
+        <translation>未知字段 &quot;%1&quot;（允许：%2）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: unknown field &quot;%2&quot; (allowed: %3)</source>
+        <translation>&quot;%1&quot;：未知字段 &quot;%2&quot;（允许：%3）</translation>
+    </message>
+    <message>
+        <source>this is a register map, not a profile</source>
+        <translation>这是寄存器表文件，不是参数文件</translation>
+    </message>
+    <message>
+        <source>not a StepCom profile: &quot;format&quot; must be &quot;%1&quot;, found %2</source>
+        <translation>不是 StepCom 参数文件：&quot;format&quot; 应为 &quot;%1&quot;，实际为 %2</translation>
+    </message>
+    <message>
+        <source>&quot;schema&quot; must be a whole number, found %1</source>
+        <translation>&quot;schema&quot; 应为整数，实际为 %1</translation>
+    </message>
+    <message>
+        <source>profile schema %1 is newer than this StepCom reads (%2): update StepCom</source>
+        <translation>参数文件格式版本 %1 比本 StepCom 支持的版本（%2）新：请更新 StepCom</translation>
+    </message>
+    <message>
+        <source>profile schema %1 is unknown (this StepCom reads %2)</source>
+        <translation>未知的参数文件格式版本 %1（本 StepCom 支持 %2）</translation>
+    </message>
+    <message>
+        <source>&quot;map&quot; must be an object {&quot;id&quot;: …, &quot;version&quot;: …}, found %1</source>
+        <translation>&quot;map&quot; 应为对象 {&quot;id&quot;: …, &quot;version&quot;: …}，实际为 %1</translation>
+    </message>
+    <message>
+        <source>&quot;map&quot;: &quot;id&quot; must be a text, found %1</source>
+        <translation>&quot;map&quot;：&quot;id&quot; 应为文本，实际为 %1</translation>
+    </message>
+    <message>
+        <source>&quot;map&quot;: &quot;version&quot; must be a whole number, found %1</source>
+        <translation>&quot;map&quot;：&quot;version&quot; 应为整数，实际为 %1</translation>
+    </message>
+    <message>
+        <source>the profile is for register map &quot;%1&quot; version %2, but the controller&apos;s map is &quot;%3&quot; version %4</source>
+        <translation>该参数文件属于寄存器表 &quot;%1&quot; 版本 %2，但控制器的寄存器表是 &quot;%3&quot; 版本 %4</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot; must be an object, found %1</source>
+        <translation>&quot;metadata&quot; 应为对象，实际为 %1</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;%1&quot; must be a text, found %2</source>
+        <translation>&quot;metadata&quot;：&quot;%1&quot; 应为文本，实际为 %2</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;created&quot; is not a date and time (2024-05-31T14:02:00Z): &quot;%1&quot;</source>
+        <translation>&quot;metadata&quot;：&quot;created&quot; 不是日期时间（2024-05-31T14:02:00Z）：&quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;%1&quot; must be a %2, found %3</source>
+        <translation>&quot;metadata&quot;：&quot;%1&quot; 应为 %2，实际为 %3</translation>
+    </message>
+    <message>
+        <source>whole number</source>
+        <translation>整数</translation>
+    </message>
+    <message>
+        <source>&quot;values&quot; must be an object of key: value, found %1</source>
+        <translation>&quot;values&quot; 应为 键: 值 形式的对象，实际为 %1</translation>
+    </message>
+    <message>
+        <source>unknown parameter &quot;%1&quot; (not in register map &quot;%2&quot;)</source>
+        <translation>未知参数 &quot;%1&quot;（不在寄存器表 &quot;%2&quot; 中）</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a command, not a setting</source>
+        <translation>&quot;%1&quot; 是命令，不是设置参数</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is read-only (a status value), not a setting</source>
+        <translation>&quot;%1&quot; 是只读的状态值，不是设置参数</translation>
+    </message>
+    <message>
+        <source>%1: expected a number, found %2</source>
+        <translation>%1：应为数字，实际为 %2</translation>
+    </message>
+    <message>
+        <source>missing &quot;%1&quot; (%2)</source>
+        <translation>缺少 &quot;%1&quot;（%2）</translation>
+    </message>
+    <message>
+        <source>no register map to check the profile against</source>
+        <translation>没有可用于检查参数文件的寄存器表</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1：文件不存在</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes, far too large for a profile</source>
+        <translation>%1：%2 字节，作为参数文件太大了</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SimCommandLine</name>
     <message>
         <source>N</source>
@@ -3578,6 +4329,45 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::XyPicture</name>
+    <message>
+        <source>start, middle and end point are on one line</source>
+        <translation>起点、中间点和终点在一条直线上</translation>
+    </message>
+    <message>
+        <source>the start point is the centre</source>
+        <translation>起点与圆心重合</translation>
+    </message>
+    <message>
+        <source>X: motor 1</source>
+        <translation>X：电机 1</translation>
+    </message>
+    <message>
+        <source>Y: motor 2</source>
+        <translation>Y：电机 2</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>开</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>关</translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>● start   ○ end   dashed: interpolation off</source>
+        <translation>● 起点   ○ 终点   虚线：插补关闭</translation>
+    </message>
+</context>
+<context>
     <name>stepcomctl</name>
     <message>
         <source>What to do.</source>
@@ -3593,19 +4383,39 @@ Commands:
   command NAME           pulse a command coil (e.g. motor1.stop, estop)
   monitor                print the live status as one JSON object per line,
                          until --count samples or Ctrl-C (--interval MS)
+  dump FILE              read every setting and save it as a profile file
+                         (--name, --notes; --include-link adds id and baud)
+  diff FILE              compare the controller with a profile; exit 0 same,
+                         1 different, 2 bad file, 3 link or device error
+  apply FILE             write the profile&apos;s values that differ, after showing
+                         them and asking (--yes skips the question), then verify;
+                         --include-link also writes device id and baud,
+                         --save-to-flash saves afterwards
+  report FILE.pdf|.html  write the commissioning report (--name, --notes,
+                         --lang en|zh_CN)
 
 Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
         <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。
 
 命令：
-  params                 列出寄存器映射中的所有参数和命令
-  read [参数名...]       读取参数（未指定参数名时读取全部）
-  write 参数名=值...     以工程单位写入参数，然后回读验证
-  command 命令名         触发一个命令线圈（例如 motor1.stop、estop）
-  monitor                以每行一个 JSON 对象的形式输出实时状态，
-                         直到采满 --count 次或按下 Ctrl-C（采样间隔用 --interval 指定，单位 ms）
+  params                 列出寄存器表中的全部参数和命令
+  read [KEY...]          读取参数（未指定时读取全部）
+  write KEY=VALUE...     以工程单位写入参数，然后校验
+  command NAME           触发一个命令线圈（例如 motor1.stop、estop）
+  monitor                以每行一个 JSON 对象输出实时状态，
+                         直到 --count 个样本或 Ctrl-C（--interval MS）
+  dump FILE              读取全部设置并保存为参数文件
+                         （--name、--notes；--include-link 包括地址和波特率）
+  diff FILE              将控制器与参数文件比较；退出码 0 相同，
+                         1 不同，2 文件错误，3 连接或设备错误
+  apply FILE             写入参数文件中不同的值：先列出并询问
+                         （--yes 跳过询问），然后校验；
+                         --include-link 同时写入设备地址和波特率，
+                         --save-to-flash 之后保存到闪存
+  report FILE.pdf|.html  生成调试报告（--name、--notes、
+                         --lang en|zh_CN）
 
-退出码：0 成功，1 通信或设备错误，2 用法或数值验证错误。</translation>
+退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
     </message>
 </context>
 </TS>

@@ -1,7 +1,8 @@
 #pragma once
 
+#include "i18n/translators.h"
+
 #include <QObject>
-#include <QTranslator>
 
 namespace stepcom {
 
@@ -14,10 +15,10 @@ public:
     static Language &instance();
     // "en" or "zh_CN".
     QString current() const { return m_current; }
-    static QStringList available() { return {QStringLiteral("en"), QStringLiteral("zh_CN")}; }
+    static QStringList available() { return Translators::available(); }
     // The language's own name, for menus ("English", "简体中文").
     static QString nativeName(const QString &language);
-    // Follow the system locale (Chinese locales get Chinese, everything else English).
+    // Follow the system locale (Translators::systemLanguage()).
     static QString systemDefault();
     bool setLanguage(const QString &language);
 
@@ -26,8 +27,7 @@ Q_SIGNALS:
 
 private:
     Language() = default;
-    QTranslator m_app;
-    QTranslator m_qt;
+    Translators m_translators;
     QString m_current = QStringLiteral("en");
 };
 

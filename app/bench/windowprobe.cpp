@@ -10,15 +10,21 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#ifdef Q_OS_UNIX
 #include <unistd.h>
+#endif
 
 namespace stepcom::bench {
 
 namespace {
 
-// utime + stime of a process, in seconds; -1 when it cannot be read.
+// utime + stime of a process, in seconds; -1 when it cannot be read (Linux /proc only).
 double cpuSeconds(qint64 pid)
 {
+#ifndef Q_OS_UNIX
+    Q_UNUSED(pid)
+    return -1;
+#else
     QFile file(QStringLiteral("/proc/%1/stat").arg(pid));
     if (!file.open(QIODevice::ReadOnly))
         return -1;
@@ -29,6 +35,7 @@ double cpuSeconds(qint64 pid)
         return -1;
     const double ticks = double(fields.at(11).toLongLong() + fields.at(12).toLongLong());
     return ticks / double(sysconf(_SC_CLK_TCK));
+#endif
 }
 
 // A line of /proc/<pid>/status in MB ("VmHWM:   81234 kB"); -1 when missing.

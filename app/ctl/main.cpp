@@ -1,5 +1,6 @@
 #include "ctloptions.h"
 #include "ctlrunner.h"
+#include "i18n/translators.h"
 #include "map/registermap.h"
 
 #include <QCommandLineParser>
@@ -42,6 +43,17 @@ int main(int argc, char *argv[])
     QCoreApplication &app = *application;
     QCoreApplication::setApplicationName(QStringLiteral("stepcomctl"));
     QCoreApplication::setApplicationVersion(QStringLiteral(STEPCOM_VERSION));
+    QTextStream err(stderr);
+
+    // The language first: the help and every message are translated when they are built.
+    Translators translators;
+    const QString language = Translators::languageFromArguments(QCoreApplication::arguments());
+    if (!Translators::available().contains(language)) {
+        err << QStringLiteral("stepcomctl: ") << Translators::unknownLanguageMessage(language)
+            << Qt::endl;
+        return CtlRunner::UsageError;
+    }
+    translators.install(language);
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
@@ -70,7 +82,7 @@ int main(int argc, char *argv[])
     parser.addPositionalArgument(QStringLiteral("command"),
                                  QCoreApplication::translate("stepcomctl", "What to do."));
     CtlOptions::addOptions(parser);
-    QTextStream err(stderr);
+    parser.addOption(Translators::languageOption());
     if (!parser.parse(QCoreApplication::arguments())) {
         err << QStringLiteral("stepcomctl: ") << parser.errorText() << Qt::endl;
         return CtlRunner::UsageError;

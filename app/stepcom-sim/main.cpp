@@ -1,5 +1,6 @@
 // stepcom-sim: the simulated controller as a program of its own.
 #include "consolereader.h"
+#include "i18n/translators.h"
 #include "signalwatcher.h"
 #include "sim/simcommandline.h"
 #include "sim/simconsole.h"
@@ -20,6 +21,16 @@ int main(int argc, char *argv[])
     QTextStream out(stdout);
     QTextStream err(stderr);
 
+    // The language first: the help and every message are translated when they are built.
+    Translators translators;
+    const QString language = Translators::languageFromArguments(QCoreApplication::arguments());
+    if (!Translators::available().contains(language)) {
+        err << QStringLiteral("stepcom-sim: ") << Translators::unknownLanguageMessage(language)
+            << Qt::endl;
+        return 2;
+    }
+    translators.install(language);
+
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
         "stepcom-sim",
@@ -34,6 +45,7 @@ int main(int argc, char *argv[])
             "stepcom-sim",
             "Read console commands from standard input even when it is not a terminal."));
     parser.addOption(consoleOption);
+    parser.addOption(Translators::languageOption());
     parser.process(app);
 
     SimOptions options;
@@ -42,7 +54,7 @@ int main(int argc, char *argv[])
         err << QCoreApplication::translate("stepcom-sim", "stepcom-sim: %1").arg(error) << Qt::endl;
         return 2;
     }
-    if (!options.rtu && !options.tcp)
+    if (!options.rtu && !options.tcp && options.serialPort.isEmpty())
         options.rtu = true;
 
     // Before anything is opened, so Ctrl-C during start-up still ends cleanly.
@@ -75,6 +87,8 @@ int main(int argc, char *argv[])
         if (!options.linkPath.isEmpty())
             out << QStringLiteral("link: %1").arg(options.linkPath) << Qt::endl;
     }
+    if (!options.serialPort.isEmpty())
+        out << QStringLiteral("serial: %1").arg(options.serialPort) << Qt::endl;
     if (options.tcp)
         out << QStringLiteral("tcp: %1:%2").arg(host.tcpAddress().toString()).arg(host.tcpPort())
             << Qt::endl;

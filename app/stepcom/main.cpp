@@ -1,9 +1,12 @@
 #include "device/devicesession.h"
+#include "i18n/translators.h"
 #include "language.h"
 #include "mainwindow.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QIcon>
+#include <QTextStream>
 
 using namespace stepcom;
 
@@ -15,17 +18,23 @@ int main(int argc, char *argv[])
     QApplication::setApplicationDisplayName(QStringLiteral("StepCom"));
     QApplication::setApplicationVersion(QStringLiteral(STEPCOM_VERSION));
 
+    // Matches the installed org.stepcom.StepCom.desktop (the window's icon and name on Wayland).
+    QGuiApplication::setDesktopFileName(QStringLiteral("org.stepcom.StepCom"));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/stepcom.svg")));
+
+    // The language must be known before any translated text is built, help included.
+    const QString language = Translators::languageFromArguments(QApplication::arguments());
+    if (!Translators::available().contains(language)) {
+        QTextStream(stderr) << QStringLiteral("stepcom: ")
+                            << Translators::unknownLanguageMessage(language) << Qt::endl;
+        return 2;
+    }
+    Language::instance().setLanguage(language);
+
     QCommandLineParser parser;
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption langOption(QStringLiteral("lang"), QStringLiteral("en or zh_CN"),
-                                        QStringLiteral("language"));
-    parser.addOption(langOption);
-    // The language must be known before any translated text is built, help included.
-    parser.parse(QApplication::arguments());
-    Language::instance().setLanguage(parser.isSet(langOption) ? parser.value(langOption)
-                                                              : Language::systemDefault());
-
+    parser.addOption(Translators::languageOption());
     parser.setApplicationDescription(QApplication::translate(
         "stepcom", "Commissioning window for a 2-axis stepper controller (Modbus RTU/TCP)."));
     const QCommandLineOption simOption(

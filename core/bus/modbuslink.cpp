@@ -43,6 +43,10 @@ ModbusLink::~ModbusLink()
     m_openPending = false;
     if (m_client) {
         m_client->disconnect(this);
+        // A reply still pending finishes (with an error) when the device disconnects: nobody
+        // may hear of it now, the owners of the callbacks are being destroyed.
+        for (QModbusReply *reply : m_client->findChildren<QModbusReply *>())
+            reply->disconnect(this);
         m_client->disconnectDevice();
         delete m_client; // replies are its children and die with it; nothing can answer now
     }

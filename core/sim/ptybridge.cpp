@@ -399,7 +399,7 @@ PtyBridge::~PtyBridge() = default;
 bool PtyBridge::open(QString *error)
 {
     if (error)
-        *error = QStringLiteral("pseudo-terminals are not available on this platform");
+        *error = QStringLiteral("pseudo-terminals are Unix only; use Modbus TCP (--tcp)");
     return false;
 }
 
@@ -438,7 +438,7 @@ bool PtyBridge::createLink(Side side, const QString &linkPath, QString *error)
     Q_UNUSED(side)
     Q_UNUSED(linkPath)
     if (error)
-        *error = QStringLiteral("pseudo-terminals are not available on this platform");
+        *error = QStringLiteral("pseudo-terminals are Unix only; use Modbus TCP (--tcp)");
     return false;
 }
 

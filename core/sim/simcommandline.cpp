@@ -32,6 +32,10 @@ void SimCommandLine::addOptions(QCommandLineParser &p)
     p.addOption({QStringLiteral("pty"), tr("Serve Modbus RTU on a new pseudo-terminal (Unix).")});
     p.addOption(
         {QStringLiteral("link"), tr("Make PATH a symlink to the pseudo-terminal."), tr("PATH")});
+    p.addOption({QStringLiteral("serial"),
+                 tr("Serve Modbus RTU on the serial PORT (e.g. COM10, one end of a com0com "
+                    "pair, or /dev/ttyUSB1) at the device's baud rate, 8N1."),
+                 tr("PORT")});
     p.addOption({QStringLiteral("no-baud-check"),
                  tr("Answer whatever baud rate the client set (by default a client whose baud "
                     "differs from register 40213 gets silence, as on a real line).")});
@@ -145,6 +149,13 @@ bool SimCommandLine::toOptions(const QCommandLineParser &p, SimOptions *o, QStri
     o->rtu = p.isSet(QStringLiteral("pty")) || p.isSet(QStringLiteral("link"));
     o->linkPath = p.value(QStringLiteral("link"));
     o->checkBaud = !p.isSet(QStringLiteral("no-baud-check"));
+    o->serialPort = p.value(QStringLiteral("serial"));
+    if (p.isSet(QStringLiteral("serial")) && o->serialPort.isEmpty())
+        return fail(tr("--serial: no port given"));
+    if (!o->serialPort.isEmpty() && o->rtu)
+        return fail(tr("--serial: give either --serial or --pty/--link, not both"));
+    if (!o->serialPort.isEmpty() && p.isSet(QStringLiteral("corrupt-crc")))
+        return fail(tr("--corrupt-crc works on the pseudo-terminal only, not with --serial"));
     if (p.isSet(QStringLiteral("tcp"))) {
         o->tcp = true;
         if (!parseTcp(p.value(QStringLiteral("tcp")), &o->tcpAddress, &o->tcpPort, error))

@@ -20,6 +20,10 @@ struct SimOptions
     bool rtu = false;      // Modbus RTU on a pseudo-terminal (Unix only)
     QString linkPath;      // a symlink to the pty, optional
     bool checkBaud = true; // silence when the client's baud differs from register 40213
+    // Modbus RTU on this serial port instead of a pty (every platform): a USB-RS485 adapter,
+    // or one end of a virtual null-modem pair (com0com on Windows, socat on Unix). It runs
+    // at the device's baud rate (register 40213), 8N1, and follows it when it changes.
+    QString serialPort;
 
     bool tcp = false; // Modbus TCP
     QHostAddress tcpAddress = QHostAddress(QHostAddress::LocalHost);

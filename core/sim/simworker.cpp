@@ -33,8 +33,23 @@ bool SimWorker::open(QString *error)
         QMetaObject::invokeMethod(
             this,
             [this] {
-                if (m_rtu)
-                    m_rtu->setServerAddress(m_device->deviceId());
+                if (!m_rtu)
+                    return;
+                m_rtu->setServerAddress(m_device->deviceId());
+                // The controller moves to a new baud at once; the port follows once the
+                // answer to the write has left (the answer delay plus its bytes' time).
+                if (serialMode() &&
+                    m_rtu->connectionParameter(QModbusDevice::SerialBaudRateParameter).toInt() !=
+                        m_device->baud()) {
+                    QTimer::singleShot(300, this, [this] {
+                        if (!m_rtu || m_rtu->state() != QModbusDevice::ConnectedState)
+                            return; // hung up or closed: it reopens at the new baud anyway
+                        m_rtu->disconnectDevice();
+                        QString why;
+                        if (!openSerial(&why))
+                            Q_EMIT message(why);
+                    });
+                }
             },
             Qt::QueuedConnection);
     });
@@ -48,6 +63,8 @@ bool SimWorker::open(QString *error)
         m_sync->start(50);
     }
     if (m_options.rtu && !openRtu(error))
+        return false;
+    if (serialMode() && !openSerial(error))
         return false;
     if (m_options.tcp) {
         m_tcp = new SimTcpServer(m_responder.get(), this);
@@ -110,14 +127,51 @@ bool SimWorker::openRtu(QString *error)
     return true;
 #else
     if (error)
-        *error = tr("Modbus RTU on a pseudo-terminal is not available on this system; use --tcp");
+        *error = tr("Modbus RTU on a pseudo-terminal (--pty, --link) is not available on this "
+                    "system (pseudo-terminals are Unix only). Use Modbus TCP instead: "
+                    "stepcom-sim --tcp 5020, then connect StepCom or stepcomctl with --tcp "
+                    "127.0.0.1:5020; or serve a serial port with --serial, e.g. one end of a "
+                    "com0com virtual port pair (--serial COM10, StepCom on COM11).");
     return false;
 #endif
+}
+
+bool SimWorker::openSerial(QString *error)
+{
+    if (!m_rtu) {
+        // No client end to look at: the line itself enforces the baud rate.
+        m_rtu = new SimRtuServer(m_responder.get(), {}, this);
+        connect(m_rtu, &SimRtuServer::hangUpRequested, this, &SimWorker::scheduleHangUp);
+        connect(m_rtu, &QModbusDevice::errorOccurred, this, [this](QModbusDevice::Error e) {
+            if (e != QModbusDevice::NoError)
+                Q_EMIT message(tr("RTU server: %1").arg(m_rtu->errorString()));
+        });
+    }
+    m_rtu->setConnectionParameter(QModbusDevice::SerialPortNameParameter, m_options.serialPort);
+    m_rtu->setConnectionParameter(QModbusDevice::SerialBaudRateParameter, m_device->baud());
+    m_rtu->setConnectionParameter(QModbusDevice::SerialParityParameter, QSerialPort::NoParity);
+    m_rtu->setConnectionParameter(QModbusDevice::SerialDataBitsParameter, QSerialPort::Data8);
+    m_rtu->setConnectionParameter(QModbusDevice::SerialStopBitsParameter, QSerialPort::OneStop);
+    m_rtu->setServerAddress(m_device->deviceId());
+    if (!m_rtu->connectDevice() || m_rtu->state() != QModbusDevice::ConnectedState) {
+        if (error)
+            *error = tr("cannot open the serial port %1: %2")
+                         .arg(m_options.serialPort, m_rtu->errorString());
+        return false;
+    }
+    return true;
 }
 
 void SimWorker::reopenRtu()
 {
     QString error;
+    if (serialMode()) {
+        if (openSerial(&error))
+            Q_EMIT reopened(m_options.serialPort);
+        else
+            Q_EMIT message(tr("cannot re-create the port: %1").arg(error));
+        return;
+    }
     if (openRtu(&error))
         Q_EMIT reopened(m_ptyPath);
     else
@@ -133,6 +187,10 @@ void SimWorker::scheduleHangUp()
 void SimWorker::hangUp(int pauseMs)
 {
     const int pause = pauseMs >= 0 ? pauseMs : m_options.faults.hangupPauseMs;
+    if (serialMode() && m_rtu && m_rtu->state() == QModbusDevice::ConnectedState) {
+        m_rtu->disconnectDevice();
+        m_reopen->start(pause);
+    }
 #ifdef Q_OS_UNIX
     if (m_bridge && m_bridge->isOpen()) {
         m_rtu->disconnectDevice();
@@ -155,9 +213,9 @@ void SimWorker::close()
         m_reopen->stop();
     if (m_sync)
         m_sync->stop();
-#ifdef Q_OS_UNIX
     if (m_rtu)
         m_rtu->disconnectDevice();
+#ifdef Q_OS_UNIX
     if (m_bridge)
         m_bridge->close();
 #endif

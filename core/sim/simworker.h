@@ -21,7 +21,8 @@ class SimRtuServer;
 class SimTcpServer;
 
 // The transports of a SimHost, living in the simulator's own thread: the pty bridge with the
-// RTU server on its device side, the TCP server, hang-ups and their recovery.
+// RTU server on its device side (or the RTU server on a serial port), the TCP server, hang-ups
+// and their recovery.
 class SimWorker : public QObject
 {
     Q_OBJECT
@@ -48,6 +49,9 @@ Q_SIGNALS:
 
 private:
     bool openRtu(QString *error);
+    // Modbus RTU on SimOptions::serialPort at the device's baud.
+    bool openSerial(QString *error);
+    bool serialMode() const { return !m_options.serialPort.isEmpty(); }
     void reopenRtu();
     void scheduleHangUp();
 

@@ -139,6 +139,21 @@ private Q_SLOTS:
         QCOMPARE(second.result.values, QVector<quint16>{7});
     }
 
+    // Destroying the link with a request in flight tells no one: the objects behind the
+    // callbacks are going away too (stepcomctl crashed here when its runner was destroyed).
+    void destroyedWithARequestInFlightCallsNoOne()
+    {
+        device->setResponder(
+            [](const QByteArray &, int) -> std::optional<QByteArray> { return std::nullopt; });
+        openLink(5000, 0);
+        QSignalSpy received(device.get(), &ScriptedDevice::requestReceived);
+        bool called = false;
+        link->submit(Request::read(0, 1), [&called](const Result &) { called = true; });
+        QTRY_COMPARE(received.size(), 1); // on the wire, waiting for its answer
+        link.reset();
+        QVERIFY(!called);
+    }
+
     void badCrcIsCountedAndRetried()
     {
         device->setResponder([](const QByteArray &r, int index) {

@@ -1,0 +1,195 @@
+// --version and --help of the three programs, and the language of their help: the same
+// translators as the window (StepCom's compiled-in catalogue and Qt's qtbase one), chosen by
+// --lang or by LANGUAGE / LC_ALL / LANG.
+#include "testpaths.h"
+
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QTest>
+#include <QTranslator>
+
+using namespace stepcom::test;
+
+namespace {
+
+struct Run
+{
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+// Runs a program that only prints and exits (no device involved).
+Run run(const QString &program, const QStringList &args, const QStringList &environment)
+{
+    QProcess p;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const char *name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"})
+        env.remove(QString::fromLatin1(name));
+    for (const QString &setting : environment)
+        env.insert(setting.section(QLatin1Char('='), 0, 0), setting.section(QLatin1Char('='), 1));
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    p.setProcessEnvironment(env);
+    p.start(programPath(program), args);
+    Run r;
+    if (!p.waitForStarted(10000) || !p.waitForFinished(30000)) {
+        p.kill();
+        p.waitForFinished();
+        r.err = QStringLiteral("did not start or did not end: ") + p.errorString();
+        return r;
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+bool hasHan(const QString &text)
+{
+    static const QRegularExpression han(QStringLiteral("\\p{Han}"));
+    return han.match(text).hasMatch();
+}
+
+} // namespace
+
+class TestProgramInfo : public QObject
+{
+    Q_OBJECT
+    QTranslator stepcomZh;
+    QTranslator qtZh;
+
+    // What a text becomes in Chinese, from the same catalogues the programs load.
+    QString zh(const char *context, const char *source) const
+    {
+        const QString app = stepcomZh.translate(context, source);
+        if (!app.isEmpty())
+            return app;
+        return qtZh.translate(context, source);
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(stepcomZh.load(QStringLiteral(":/i18n/stepcom_zh_CN.qm")));
+        QVERIFY2(qtZh.load(QLocale(QStringLiteral("zh_CN")), QStringLiteral("qtbase"),
+                           QStringLiteral("_"), QLibraryInfo::path(QLibraryInfo::TranslationsPath)),
+                 "qtbase_zh_CN.qm is missing: install qt6-translations-l10n (scripts/deps.sh)");
+    }
+
+    void version_data()
+    {
+        QTest::addColumn<QString>("program");
+        QTest::newRow("stepcomctl") << QStringLiteral("stepcomctl");
+        QTest::newRow("stepcom-sim") << QStringLiteral("stepcom-sim");
+        QTest::newRow("stepcom") << QStringLiteral("stepcom");
+    }
+    void version()
+    {
+        QFETCH(QString, program);
+        for (const QString &option : {QStringLiteral("--version"), QStringLiteral("-v")}) {
+            const Run r = run(program, {option}, {QStringLiteral("LC_ALL=C.UTF-8")});
+            QCOMPARE(r.exitCode, 0);
+            QCOMPARE(r.out.trimmed(), program + QLatin1Char(' ') + QStringLiteral(STEPCOM_VERSION));
+        }
+    }
+
+    // The help in English under an English or C locale: Qt's texts, the program's own options.
+    void helpInEnglish_data() { version_data(); }
+    void helpInEnglish()
+    {
+        QFETCH(QString, program);
+        const Run r = run(program, {QStringLiteral("--help")}, {QStringLiteral("LANG=C.UTF-8")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(r.out.contains(QStringLiteral("Displays help on commandline options.")),
+                 qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("--lang <language>")), qPrintable(r.out));
+        QVERIFY2(!hasHan(r.out), qPrintable(r.out));
+    }
+
+    // The help in Chinese, however the environment or the command line asks for it.
+    void helpInChinese_data()
+    {
+        QTest::addColumn<QString>("program");
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QStringList>("environment");
+        QTest::addColumn<QString>("context"); // a text of the program's own, to find in Chinese
+        QTest::addColumn<QString>("source");
+        const QString ctl = QStringLiteral("stepcomctl");
+        const QStringList help{QStringLiteral("--help")};
+        const QString ctlContext = QStringLiteral("stepcom::CtlOptions");
+        const QString ctlText = QStringLiteral("Use the built-in simulated controller.");
+        QTest::newRow("stepcomctl LANGUAGE, C locale")
+            << ctl << help
+            << QStringList{QStringLiteral("LANGUAGE=zh_CN"), QStringLiteral("LC_ALL=C.UTF-8")}
+            << ctlContext << ctlText;
+        QTest::newRow("stepcomctl LC_ALL")
+            << ctl << help << QStringList{QStringLiteral("LC_ALL=zh_CN.UTF-8")} << ctlContext
+            << ctlText;
+        QTest::newRow("stepcomctl LANG")
+            << ctl << help << QStringList{QStringLiteral("LANG=zh_CN.UTF-8")} << ctlContext
+            << ctlText;
+        QTest::newRow("stepcomctl --lang")
+            << ctl
+            << QStringList{QStringLiteral("--lang"), QStringLiteral("zh_CN"),
+                           QStringLiteral("--help")}
+            << QStringList{QStringLiteral("LC_ALL=C.UTF-8")} << ctlContext << ctlText;
+        QTest::newRow("stepcom-sim LANGUAGE")
+            << QStringLiteral("stepcom-sim") << help
+            << QStringList{QStringLiteral("LANGUAGE=zh_CN:en"), QStringLiteral("LANG=en_US.UTF-8")}
+            << QStringLiteral("stepcom::SimCommandLine")
+            << QStringLiteral("Listen for TCP on every interface.");
+        QTest::newRow("stepcom LANG")
+            << QStringLiteral("stepcom") << help << QStringList{QStringLiteral("LANG=zh_CN.UTF-8")}
+            << QStringLiteral("stepcom")
+            << QStringLiteral("Start connected to the built-in simulator.");
+    }
+    void helpInChinese()
+    {
+        QFETCH(QString, program);
+        QFETCH(QStringList, args);
+        QFETCH(QStringList, environment);
+        QFETCH(QString, context);
+        QFETCH(QString, source);
+        const Run r = run(program, args, environment);
+        QCOMPARE(r.exitCode, 0);
+        // Qt's own option texts come from qtbase_zh_CN.qm, the program's from stepcom_zh_CN.qm.
+        const QString qtHelp = zh("QCommandLineParser", "Displays help on commandline options.");
+        const QString qtUsage = zh("QCommandLineParser", "Usage: %1").arg(QString());
+        const QString own = zh(context.toUtf8().constData(), source.toUtf8().constData());
+        QVERIFY(hasHan(qtHelp));
+        QVERIFY2(hasHan(own), qPrintable(QStringLiteral("no Chinese for ") + source));
+        QVERIFY2(r.out.contains(qtHelp), qPrintable(r.out));
+        QVERIFY2(r.out.contains(qtUsage.trimmed()), qPrintable(r.out));
+        QVERIFY2(r.out.contains(own), qPrintable(r.out));
+        QVERIFY2(!r.out.contains(QStringLiteral("Displays help on commandline options.")),
+                 qPrintable(r.out));
+    }
+
+    // Chinese is asked for but English is preferred: English.
+    void languagePreferenceOrder()
+    {
+        const Run r =
+            run(QStringLiteral("stepcomctl"), {QStringLiteral("--help")},
+                {QStringLiteral("LANGUAGE=en:zh_CN"), QStringLiteral("LANG=zh_CN.UTF-8")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY2(!hasHan(r.out), qPrintable(r.out));
+    }
+
+    void unknownLanguage_data() { version_data(); }
+    void unknownLanguage()
+    {
+        QFETCH(QString, program);
+        const Run r = run(
+            program, {QStringLiteral("--lang"), QStringLiteral("fr"), QStringLiteral("--version")},
+            {QStringLiteral("LC_ALL=C.UTF-8")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("unknown language 'fr' (known: en, zh_CN)")),
+                 qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestProgramInfo)
+#include "tst_programinfo.moc"
