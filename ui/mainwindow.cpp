@@ -96,6 +96,9 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
             showPage(1); // connected: on to the first motor
     });
     retranslate();
+    // The sidebar as wide as its titles, not as wide as a list's default size hint (256 px):
+    // that left a strip of nothing between the sidebar and the page. The page takes the rest.
+    splitter->setSizes({m_sidebar->minimumWidth(), width()});
     updateActions();
     restoreLayout();
 }

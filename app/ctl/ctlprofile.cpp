@@ -72,13 +72,14 @@ void CtlRunner::runDiff()
     Profile profile;
     if (!loadProfileArgument(QStringLiteral("diff"), &profile))
         return;
+    m_linkError = 3; // 1 means "different" here
     connectThen([this, profile] {
         m_device->read(Profile::profileParameters(m_map, true), Priority::Read,
                        [this, profile](const ReadOutcome &r) {
                            if (!r.ok) {
                                for (const QString &e : r.errors)
                                    m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-                               finish(3); // 1 means "different" here
+                               finish(m_linkError);
                                return;
                            }
                            const auto diffs = ProfileDiff::differences(

@@ -146,7 +146,7 @@ void CtlRunner::connectThen(std::function<void()> next)
         m_link, &ModbusLink::opened, this,
         [this, next](bool ok, const QString &reason) {
             if (!ok) {
-                fail(DeviceError,
+                fail(m_linkError,
                      tr("cannot connect to %1: %2").arg(m_options.link.describe(), reason));
                 return;
             }
@@ -170,7 +170,7 @@ bool CtlRunner::startSimulator()
 #endif
     QString error;
     if (!m_sim->start(sim, &error)) {
-        fail(DeviceError, tr("cannot start the built-in simulator: %1").arg(error));
+        fail(m_linkError, tr("cannot start the built-in simulator: %1").arg(error));
         return false;
     }
     if (sim.rtu) {

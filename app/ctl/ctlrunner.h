@@ -56,6 +56,9 @@ private:
     DeviceClient *m_device = nullptr;
     QTextStream m_out;
     QTextStream m_err;
+    // The exit code of a link that cannot be opened or read: DeviceError, except for diff,
+    // where 1 already means "different".
+    int m_linkError = DeviceError;
     bool m_finished = false;
 };
 

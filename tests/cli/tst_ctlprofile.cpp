@@ -254,6 +254,15 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 3); // 1 means "different" for diff
     }
 
+    void missingPortIsALinkErrorForDiff()
+    {
+        const Run r =
+            ctl({QStringLiteral("--port"), file("no-such-tty"), QStringLiteral("diff"), machineA()},
+                {}, false);
+        QCOMPARE(r.exitCode, 3); // not 1, which would read as "different"
+        QVERIFY2(r.err.contains(QStringLiteral("does not exist")), qPrintable(r.err));
+    }
+
     void reportWritesPdfAndHtml()
     {
         const Run pdf = ctl({QStringLiteral("report"), file("r.pdf"), QStringLiteral("--notes"),

@@ -70,6 +70,9 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
     if (!index.isValid() || index.row() >= m_entries.size())
         return {};
     const TrafficEntry &e = m_entries.at(index.row());
+    // Long frames are cut in the table (the meaning must stay in view): the whole text on hover.
+    if (role == Qt::ToolTipRole && index.column() >= 2)
+        return data(index, Qt::DisplayRole);
     if (role == Qt::DisplayRole) {
         switch (index.column()) {
         case 0:
@@ -119,6 +122,12 @@ TrafficView::TrafficView(QWidget *parent)
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    // A read-all answer is over 100 bytes: sized to its contents, the bytes column would push
+    // the decoded meaning out of view. Room for a request (8 bytes) and a short answer; the
+    // user can widen it, and the tooltip has the whole frame.
+    m_table->horizontalHeader()->setSectionResizeMode(2, QHeaderView::Interactive);
+    m_table->setColumnWidth(2, QFontMetrics(m_table->font()).horizontalAdvance(QLatin1Char('0')) *
+                                   3 * 20);
     connect(m_model, &QAbstractItemModel::rowsInserted, m_table, [this] {
         if (!m_pause->isChecked())
             m_table->scrollToBottom();
