@@ -864,18 +864,6 @@
         <translation>dump, report: notes to record.</translation>
     </message>
     <message>
-        <source>report: language of the report, en or zh_CN (default en).</source>
-        <translation>report: language of the report, en or zh_CN (default en).</translation>
-    </message>
-    <message>
-        <source>language</source>
-        <translation>language</translation>
-    </message>
-    <message>
-        <source>--lang: &apos;%1&apos; is not en or zh_CN</source>
-        <translation>--lang: &apos;%1&apos; is not en or zh_CN</translation>
-    </message>
-    <message>
         <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
         <translation>no command given (params, read, write, command, monitor, dump, diff, apply, report)</translation>
     </message>
@@ -1038,10 +1026,6 @@
     <message>
         <source>%1: the report is written as .pdf or .html</source>
         <translation>%1: the report is written as .pdf or .html</translation>
-    </message>
-    <message>
-        <source>no %1 translation is built in</source>
-        <translation>no %1 translation is built in</translation>
     </message>
     <message>
         <source>no report: the controller could not be read completely</source>

@@ -859,18 +859,6 @@
         <translation>dump、report：要记录的备注。</translation>
     </message>
     <message>
-        <source>report: language of the report, en or zh_CN (default en).</source>
-        <translation>report：报告语言，en 或 zh_CN（默认 en）。</translation>
-    </message>
-    <message>
-        <source>language</source>
-        <translation>语言</translation>
-    </message>
-    <message>
-        <source>--lang: &apos;%1&apos; is not en or zh_CN</source>
-        <translation>--lang：&apos;%1&apos; 不是 en 或 zh_CN</translation>
-    </message>
-    <message>
         <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
         <translation>未给出命令（params、read、write、command、monitor、dump、diff、apply、report）</translation>
     </message>
@@ -1030,10 +1018,6 @@
     <message>
         <source>%1: the report is written as .pdf or .html</source>
         <translation>%1：报告只能保存为 .pdf 或 .html</translation>
-    </message>
-    <message>
-        <source>no %1 translation is built in</source>
-        <translation>未内置 %1 翻译</translation>
     </message>
     <message>
         <source>no report: the controller could not be read completely</source>
