@@ -2557,10 +2557,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>&amp;Mode:</translation>
     </message>
     <message>
-        <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything; only IN3 and IN4 act as limits, as the table shows. Wire them before using these modes.</source>
-        <translation>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything; only IN3 and IN4 act as limits, as the table shows. Wire them before using these modes.</translation>
-    </message>
-    <message>
         <source>What the inputs do in each mode (motor 1; short pulses unless “held”)</source>
         <translation>What the inputs do in each mode (motor 1; short pulses unless “held”)</translation>
     </message>
@@ -2607,6 +2603,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&amp;Write changes…</source>
         <translation>&amp;Write changes…</translation>
+    </message>
+    <message>
+        <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</source>
+        <translation>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</translation>
     </message>
 </context>
 <context>

@@ -2546,10 +2546,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>模式(&amp;M)：</translation>
     </message>
     <message>
-        <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything; only IN3 and IN4 act as limits, as the table shows. Wire them before using these modes.</source>
-        <translation>模式 2-5 下限位设置全部失效：为电机设置的限位和原点输入不再停止任何运动；只有 IN3 和 IN4 按下表充当限位。使用这些模式前请先接好它们。</translation>
-    </message>
-    <message>
         <source>What the inputs do in each mode (motor 1; short pulses unless “held”)</source>
         <translation>各模式下输入的作用（电机 1；除注明“按住”外均为短脉冲触发）</translation>
     </message>
@@ -2596,6 +2592,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&amp;Write changes…</source>
         <translation>写入更改(&amp;W)…</translation>
+    </message>
+    <message>
+        <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</source>
+        <translation>模式 2-5 忽略限位设置：为电机设置的限位和原点输入不再起作用。模式 3-5 中只有 IN3 和 IN4 作为限位；模式 2 中没有任何限位（IN2-IN4 只用于停止）。使用这些模式前，请先接好并测试这些输入。</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
+#include "i18n/translators.h"
 #include "poll/poller.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
@@ -186,9 +187,10 @@ void DeviceSession::command(const QString &key)
         Q_EMIT commandFinished(key, false);
         return;
     }
-    m_client->command(*p, [this, key](const Result &r) {
+    const QString label = p->label.text(Translators::current());
+    m_client->command(*p, [this, key, label](const Result &r) {
         if (r.ok)
-            say(Severity::Info, tr("%1: done").arg(key));
+            say(Severity::Info, tr("%1: done").arg(label));
         else
             say(Severity::Error, r.errorText);
         if (r.ok && key == QLatin1String("save_to_flash"))

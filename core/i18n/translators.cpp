@@ -7,6 +7,8 @@
 
 namespace stepcom {
 
+QString Translators::s_current = QStringLiteral("en");
+
 Translators::~Translators()
 {
     uninstall();
@@ -71,7 +73,13 @@ bool Translators::install(const QString &language)
                   QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QCoreApplication::installTranslator(&m_qt);
     m_installed = true;
+    s_current = language;
     return loaded || language == QLatin1String("en");
+}
+
+QString Translators::current()
+{
+    return s_current;
 }
 
 void Translators::uninstall()
@@ -82,6 +90,7 @@ void Translators::uninstall()
     QCoreApplication::removeTranslator(&m_app);
     QCoreApplication::removeTranslator(&m_qt);
     m_installed = false;
+    s_current = QStringLiteral("en");
 }
 
 } // namespace stepcom

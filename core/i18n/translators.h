@@ -38,11 +38,15 @@ public:
     // from the Qt installation; without it Qt's few texts stay English).
     bool install(const QString &language);
     void uninstall();
+    // The language installed last ("en" when none): for texts the map carries in both
+    // languages (parameter labels), so they match the translated messages around them.
+    static QString current();
 
 private:
     QTranslator m_app;
     QTranslator m_qt;
     bool m_installed = false;
+    static QString s_current;
 };
 
 } // namespace stepcom

@@ -334,8 +334,9 @@ void ModesPage::retranslate()
         m_mode->setItemText(
             i, QStringLiteral("%1 — %2").arg(i).arg(p ? p->displayRaw(i, lang) : QString()));
     m_warning->setText(tr("Modes 2-5 ignore the limit settings: the limit and home inputs set "
-                          "for the motors no longer stop anything; only IN3 and IN4 act as "
-                          "limits, as the table shows. Wire them before using these modes."));
+                          "for the motors no longer stop anything. In modes 3-5 only IN3 and "
+                          "IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire "
+                          "and test them before using these modes."));
     m_tableBox->setTitle(tr("What the inputs do in each mode (motor 1; short pulses unless "
                             "“held”)"));
     m_table->setHorizontalHeaderLabels(
