@@ -1404,13 +1404,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Reading failed: %1</translation>
     </message>
     <message numerus="yes">
-        <source>Read %n parameter(s) in %1 request(s)</source>
-        <translation>
-            <numerusform>Read %n parameter in %1 request(s)</numerusform>
-            <numerusform>Read %n parameters in %1 request(s)</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>Wrote and verified %n parameter(s)</source>
         <translation>
             <numerusform>Wrote and verified %n parameter</numerusform>
@@ -1448,6 +1441,25 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>switching to %1</source>
         <translation>switching to %1</translation>
+    </message>
+    <message>
+        <source>Read %1 in %2</source>
+        <comment>%1: n parameters, %2: n requests</comment>
+        <translation>Read %1 in %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s)</source>
+        <translation>
+            <numerusform>%n parameter</numerusform>
+            <numerusform>%n parameters</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s)</source>
+        <translation>
+            <numerusform>%n request</numerusform>
+            <numerusform>%n requests</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -1396,12 +1396,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>读取失败：%1</translation>
     </message>
     <message numerus="yes">
-        <source>Read %n parameter(s) in %1 request(s)</source>
-        <translation>
-            <numerusform>已读取 %n 个参数（共 %1 次请求）</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
         <source>Wrote and verified %n parameter(s)</source>
         <translation>
             <numerusform>已写入并验证 %n 个参数</numerusform>
@@ -1438,6 +1432,23 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>switching to %1</source>
         <translation>正在切换到 %1</translation>
+    </message>
+    <message>
+        <source>Read %1 in %2</source>
+        <comment>%1: n parameters, %2: n requests</comment>
+        <translation>已读取 %1，共 %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parameter(s)</source>
+        <translation>
+            <numerusform>%n 个参数</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n request(s)</source>
+        <translation>
+            <numerusform>%n 次请求</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -122,9 +122,9 @@ void DeviceSession::readAll()
         if (!r.ok)
             say(Severity::Error, tr("Reading failed: %1").arg(r.errors.join(QLatin1String("; "))));
         else
-            say(Severity::Info,
-                tr("Read %n parameter(s) in %1 request(s)", nullptr, int(r.values.size()))
-                    .arg(r.reads));
+            say(Severity::Info, tr("Read %1 in %2", "%1: n parameters, %2: n requests")
+                                    .arg(tr("%n parameter(s)", nullptr, int(r.values.size())),
+                                         tr("%n request(s)", nullptr, r.reads)));
         Q_EMIT readFinished(r.ok);
     });
 }
