@@ -349,19 +349,7 @@ void CtlRunner::runWrite()
                 finish(Ok);
                 return;
             }
-            const Parameter *save = m_map.find(QStringLiteral("save_to_flash"));
-            if (!save) {
-                fail(DeviceError, tr("this map has no save_to_flash command"));
-                return;
-            }
-            m_device->command(*save, [this](const Result &r) {
-                if (!r.ok) {
-                    fail(DeviceError, r.errorText);
-                    return;
-                }
-                m_out << tr("saved to flash") << Qt::endl;
-                finish(Ok);
-            });
+            saveToFlashThenFinish();
         });
     });
 }

@@ -1,5 +1,6 @@
 #include "map/registermap.h"
 #include "profile/profilefile.h"
+#include "programrun.h"
 #include "scripteddevice.h"
 #include "testpaths.h"
 
@@ -13,12 +14,7 @@ using namespace stepcom::test;
 
 namespace {
 
-struct Run
-{
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
+using Run = ProgramRun;
 
 QList<QByteArray> writeFrames(const QList<QByteArray> &requests)
 {
@@ -43,23 +39,13 @@ class TestCtlProfile : public QObject
     // `input` goes to its standard input, which is then closed.
     Run ctl(const QStringList &args, const QByteArray &input = {}, bool withPort = true)
     {
-        QProcess p;
         const QStringList link{QStringLiteral("--port"),    device->clientPath(),
                                QStringLiteral("--timeout"), QStringLiteral("300"),
                                QStringLiteral("--retries"), QStringLiteral("0")};
-        p.start(programPath(QStringLiteral("stepcomctl")),
-                (withPort ? link : QStringList()) + args);
-        if (!p.waitForStarted(5000))
-            return {};
-        p.write(input);
-        p.closeWriteChannel();
-        for (int i = 0; i < 2000 && p.state() != QProcess::NotRunning; ++i)
-            QTest::qWait(10);
-        Run r;
-        r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-        r.out = QString::fromUtf8(p.readAllStandardOutput());
-        r.err = QString::fromUtf8(p.readAllStandardError());
-        return r;
+        ProgramOptions options;
+        options.input = input;
+        return runProgram(QStringLiteral("stepcomctl"), (withPort ? link : QStringList()) + args,
+                          options);
     }
     QString file(const char *name) const { return dir.filePath(QLatin1String(name)); }
     // Loads a profile into the fake controller's registers.

@@ -1,6 +1,7 @@
 // --version and --help of the three programs, and the language of their help: the same
 // translators as the window (StepCom's compiled-in catalogue and Qt's qtbase one), chosen by
 // --lang or by LANGUAGE / LC_ALL / LANG.
+#include "programrun.h"
 #include "testpaths.h"
 
 #include <QLibraryInfo>
@@ -14,36 +15,16 @@ using namespace stepcom::test;
 
 namespace {
 
-struct Run
-{
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
+using Run = ProgramRun;
 
 // Runs a program that only prints and exits (no device involved).
 Run run(const QString &program, const QStringList &args, const QStringList &environment)
 {
-    QProcess p;
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    for (const char *name : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"})
-        env.remove(QString::fromLatin1(name));
-    for (const QString &setting : environment)
-        env.insert(setting.section(QLatin1Char('='), 0, 0), setting.section(QLatin1Char('='), 1));
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-    p.setProcessEnvironment(env);
-    p.start(programPath(program), args);
-    Run r;
-    if (!p.waitForStarted(10000) || !p.waitForFinished(30000)) {
-        p.kill();
-        p.waitForFinished();
-        r.err = QStringLiteral("did not start or did not end: ") + p.errorString();
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = QString::fromUtf8(p.readAllStandardOutput());
-    r.err = QString::fromUtf8(p.readAllStandardError());
-    return r;
+    ProgramOptions options;
+    options.cleanLocale = true;
+    options.environment = environment + QStringList{QStringLiteral("QT_QPA_PLATFORM=offscreen")};
+    options.timeoutMs = 30000;
+    return runProgram(program, args, options);
 }
 
 bool hasHan(const QString &text)

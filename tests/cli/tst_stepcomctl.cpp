@@ -1,3 +1,4 @@
+#include "programrun.h"
 #include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
@@ -13,12 +14,7 @@ using namespace stepcom::test;
 
 namespace {
 
-struct Run
-{
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
+using Run = ProgramRun;
 
 } // namespace
 
@@ -30,21 +26,10 @@ class TestStepcomctl : public QObject
     // Runs stepcomctl without blocking the event loop, so the fake device keeps answering.
     Run ctl(const QStringList &args, bool withPort = true)
     {
-        QProcess p;
-        QStringList all = withPort ? QStringList{QStringLiteral("--port"),    device->clientPath(),
-                                                 QStringLiteral("--timeout"), QStringLiteral("200"),
-                                                 QStringLiteral("--retries"), QStringLiteral("0")}
-                                   : QStringList{};
-        p.start(programPath(QStringLiteral("stepcomctl")), all + args);
-        if (!p.waitForStarted(5000))
-            return {};
-        for (int i = 0; i < 1000 && p.state() != QProcess::NotRunning; ++i)
-            QTest::qWait(10);
-        Run r;
-        r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-        r.out = QString::fromUtf8(p.readAllStandardOutput());
-        r.err = QString::fromUtf8(p.readAllStandardError());
-        return r;
+        const QStringList link{QStringLiteral("--port"),    device->clientPath(),
+                               QStringLiteral("--timeout"), QStringLiteral("200"),
+                               QStringLiteral("--retries"), QStringLiteral("0")};
+        return runProgram(QStringLiteral("stepcomctl"), (withPort ? link : QStringList()) + args);
     }
 
 private Q_SLOTS:
