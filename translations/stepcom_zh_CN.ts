@@ -4183,6 +4183,11 @@ Every other master on the bus must use the new settings too, and no other device
         <source>unknown language &apos;%1&apos; (known: %2)</source>
         <translation>未知语言“%1”（可用：%2）</translation>
     </message>
+    <message>
+        <source>, </source>
+        <comment>between the items of a list</comment>
+        <translation>、</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::WiringCheck</name>

@@ -1,5 +1,7 @@
 #include "device/wiringcheck.h"
 
+#include "i18n/translators.h"
+
 #include <QCoreApplication>
 #include <QMap>
 
@@ -193,7 +195,7 @@ QList<WiringWarning> checkWiring(const QList<MotorWiring> &motors, std::optional
                             "stepcom::WiringCheck",
                             "%1 is wired to more than one motor (%2): its switch acts on "
                             "all of them")
-                            .arg(inputName(it.key()), parts.join(QLatin1String(", ")))));
+                            .arg(inputName(it.key()), Translators::joinList(parts))));
     }
 
     const int mode = systemMode.value_or(0);

@@ -82,6 +82,12 @@ QString Translators::current()
     return s_current;
 }
 
+QString Translators::joinList(const QStringList &items)
+{
+    return items.join(
+        QCoreApplication::translate("stepcom::Translators", ", ", "between the items of a list"));
+}
+
 void Translators::uninstall()
 {
     m_installed = m_installed && QCoreApplication::instance(); // none left at static exit

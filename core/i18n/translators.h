@@ -41,6 +41,8 @@ public:
     // The language installed last ("en" when none): for texts the map carries in both
     // languages (parameter labels), so they match the translated messages around them.
     static QString current();
+    // Items of a list in the installed language: "a, b, c" in English, "a、b、c" in Chinese.
+    static QString joinList(const QStringList &items);
 
 private:
     QTranslator m_app;

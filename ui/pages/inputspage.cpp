@@ -1,6 +1,7 @@
 #include "pages/inputspage.h"
 
 #include "device/devicesession.h"
+#include "i18n/translators.h"
 #include "language.h"
 #include "widgets/led.h"
 #include "widgets/parameterfield.h"
@@ -230,7 +231,7 @@ void InputsPage::updateWiring()
                 uses << tr("motor %1 home").arg(m.motor);
         }
         m_inputUses.at(i)->setText(uses.isEmpty() ? tr("not used as a limit or home")
-                                                  : uses.join(QLatin1String(", ")));
+                                                  : Translators::joinList(uses));
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
+#include "i18n/translators.h"
 #include "language.h"
 #include "widgets/homingordereditor.h"
 #include "widgets/jogactivity.h"
@@ -200,7 +201,7 @@ void MotionPage::buildHoming(QWidget *content)
         QStringList where;
         for (JogPanel *p : std::as_const(m_panels))
             where << tr("motor %1 at %2").arg(p->motor()).arg(p->positionText());
-        m_sequenceDone = tr("%1: done (%2)").arg(what, where.join(QLatin1String(", ")));
+        m_sequenceDone = tr("%1: done (%2)").arg(what, Translators::joinList(where));
         refresh();
     });
     connect(m_order, &HomingOrderEditor::rejected, this, &MotionPage::showBanner);
@@ -299,7 +300,7 @@ QString MotionPage::homingStatus() const
         motors << QString::number(n);
     if (motors.isEmpty())
         return tr("%1…").arg(m_sequence->what());
-    return tr("%1… motor %2 running").arg(m_sequence->what(), motors.join(QLatin1String(", ")));
+    return tr("%1… motor %2 running").arg(m_sequence->what(), Translators::joinList(motors));
 }
 
 void MotionPage::refresh()

@@ -1,6 +1,7 @@
 #include "widgets/jogpanel.h"
 
 #include "device/devicesession.h"
+#include "i18n/translators.h"
 #include "language.h"
 #include "widgets/jogactivity.h"
 #include "widgets/jogbutton.h"
@@ -219,11 +220,11 @@ QString JogPanel::moveBlocker() const
             edited << p->label.text(lang);
     }
     if (!unknown.isEmpty())
-        return tr("Not read yet: %1.").arg(unknown.join(QLatin1String(", ")));
+        return tr("Not read yet: %1.").arg(Translators::joinList(unknown));
     if (!edited.isEmpty())
         return tr("%1 edited but not written: the controller moves by the values it holds. "
                   "Write or revert the edit first.")
-            .arg(edited.join(QLatin1String(", ")));
+            .arg(Translators::joinList(edited));
     if (motorBusy())
         return tr("The motor is moving.");
     return {};
