@@ -199,6 +199,30 @@ void wiringWarning(Shooter &s)
     script.then([&s] { s.session()->store()->revertAll(); });
 }
 
+// Shows the interpolation page's tab (0 arc, 1 line) and types the values into its fields;
+// false (and the script failed) when the page or a field is missing.
+bool typeInterpolation(Shooter &s, int page, int tab,
+                       const QList<std::pair<const char *, const char *>> &values)
+{
+    auto *interpolation = qobject_cast<InterpolationPage *>(s.window()->pages().value(page));
+    if (!interpolation) {
+        s.script().fail(QStringLiteral("the window has no interpolation page"));
+        return false;
+    }
+    s.window()->showPage(page);
+    interpolation->tabs()->setCurrentIndex(tab);
+    for (const auto &[key, value] : values) {
+        ParameterField *f = field(s.window(), QLatin1String(key));
+        if (!f) {
+            s.script().fail(
+                QStringLiteral("the interpolation page has no field %1").arg(QLatin1String(key)));
+            return false;
+        }
+        f->enterText(QLatin1String(value));
+    }
+    return true;
+}
+
 // The arc tab with a quarter circle written to the controller, running: the preview with the
 // approach, the path and the live trace of the real run.
 void arcRunning(Shooter &s)
@@ -206,27 +230,13 @@ void arcRunning(Shooter &s)
     Script &script = s.script();
     const int page = s.pageIndex<InterpolationPage>();
     script.then([&s, page] {
-        auto *interpolation = qobject_cast<InterpolationPage *>(s.window()->pages().value(page));
-        if (!interpolation) {
-            s.script().fail(QStringLiteral("the window has no interpolation page"));
-            return;
-        }
-        s.window()->showPage(page);
-        interpolation->tabs()->setCurrentIndex(0);
         const QList<std::pair<const char *, const char *>> values = {
             {"arc.enabled", "1"},   {"arc.mode", "0"},      {"arc.start_x", "40"},
             {"arc.start_y", "20"},  {"arc.end_x", "20"},    {"arc.end_y", "40"},
             {"arc.center_x", "20"}, {"arc.center_y", "20"}, {"arc.direction", "1"},
             {"arc.speed", "120"}};
-        for (const auto &[key, value] : values) {
-            ParameterField *f = field(s.window(), QLatin1String(key));
-            if (!f) {
-                s.script().fail(
-                    QStringLiteral("the arc editor has no field %1").arg(QLatin1String(key)));
-                return;
-            }
-            f->enterText(QLatin1String(value));
-        }
+        if (!typeInterpolation(s, page, 0, values))
+            return;
         s.session()->writeChanges();
     });
     script.waitFor(QStringLiteral("the arc to be written"),
@@ -253,23 +263,13 @@ void lineEdited(Shooter &s)
     Script &script = s.script();
     const int page = s.pageIndex<InterpolationPage>();
     script.then([&s, page] {
-        auto *interpolation = qobject_cast<InterpolationPage *>(s.window()->pages().value(page));
-        if (!interpolation) {
-            s.script().fail(QStringLiteral("the window has no interpolation page"));
-            return;
-        }
-        s.window()->showPage(page);
-        interpolation->tabs()->setCurrentIndex(1);
-        const QList<std::pair<const char *, const char *>> values = {
-            {"line.enabled", "1"}, {"line.start_x", "10"}, {"line.start_y", "5"},
-            {"line.end_x", "60"},  {"line.end_y", "35"},   {"line.speed", "200"}};
-        for (const auto &[key, value] : values) {
-            if (ParameterField *f = field(s.window(), QLatin1String(key)))
-                f->enterText(QLatin1String(value));
-            else
-                s.script().fail(
-                    QStringLiteral("the line editor has no field %1").arg(QLatin1String(key)));
-        }
+        typeInterpolation(s, page, 1,
+                          {{"line.enabled", "1"},
+                           {"line.start_x", "10"},
+                           {"line.start_y", "5"},
+                           {"line.end_x", "60"},
+                           {"line.end_y", "35"},
+                           {"line.speed", "200"}});
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("line-edited")));
     script.then([&s, page] {

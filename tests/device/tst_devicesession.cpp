@@ -76,15 +76,8 @@ private Q_SLOTS:
                 return quint16((quint8(req.at(at)) << 8) | quint8(req.at(at + 1)));
             };
             switch (quint8(req.at(1))) {
-            case 0x03: {
-                QByteArray answer = req.left(2);
-                answer.append(char(word(4) * 2));
-                for (int i = 0; i < word(4); ++i) {
-                    answer.append(char(device.registers[word(2) + i] >> 8));
-                    answer.append(char(device.registers[word(2) + i] & 0xFF));
-                }
-                return test::withCrc(answer);
-            }
+            case 0x03:
+                return device.registerDevice(req);
             case 0x06:
                 device.registers[word(2)] = word(4);
                 return std::nullopt; // acted, but the answer never arrives

@@ -34,6 +34,9 @@ public:
     void setAnswerDelayMs(int ms) { m_delayMs = ms; }
     // A device with 320 registers, answering FC03/06/10/05 correctly (writes are stored).
     void useRegisterDevice(int deviceId = 1);
+    // What that register device answers to one request: responders that misbehave on some
+    // requests hand the others on to it.
+    std::optional<QByteArray> registerDevice(const QByteArray &request, int deviceId = 1);
     QList<quint16> registers;
     const QList<QByteArray> &requests() const { return m_requests; }
     PtyBridge &bridge() { return m_bridge; }
@@ -43,7 +46,6 @@ Q_SIGNALS:
 
 private:
     void onBytes(const QByteArray &bytes);
-    std::optional<QByteArray> registerDevice(const QByteArray &request, int deviceId);
 
     PtyBridge m_bridge;
     QByteArray m_buffer;
