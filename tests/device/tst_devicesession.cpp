@@ -4,6 +4,7 @@
 #include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -15,13 +16,7 @@ class TestDeviceSession : public QObject
     Q_OBJECT
     std::unique_ptr<DeviceSession> session;
 
-    void connectSim()
-    {
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectSimulator();
-        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QVERIFY(read.at(0).at(0).toBool());
-    }
+    void connectSim() { test::connectToSimulator(*session); }
     SimDevice *sim() const { return session->simulator()->device(); }
 
 private Q_SLOTS:

@@ -4,6 +4,7 @@
 #include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -23,13 +24,7 @@ class TestJogController : public QObject
     std::unique_ptr<JogController> jog;
 
     SimDevice *sim() const { return session->simulator()->device(); }
-    void connectSim()
-    {
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectSimulator();
-        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QVERIFY(read.at(0).at(0).toBool());
-    }
+    void connectSim() { test::connectToSimulator(*session); }
     static QStringList texts(const QSignalSpy &spy, int column)
     {
         QStringList all;

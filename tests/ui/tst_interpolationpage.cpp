@@ -6,6 +6,7 @@
 #include "pages/modespage.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 #include "widgets/interpolationpreview.h"
 #include "widgets/parameterfield.h"
 #include "widgets/parameterform.h"
@@ -39,13 +40,7 @@ class TestInterpolationPage : public QObject
 
     SimDevice *sim() const { return session->simulator()->device(); }
     qint64 simValue(const QString &key) const { return sim()->value(key).value_or(-99999); }
-    void connectSim()
-    {
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectSimulator();
-        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QVERIFY(read.at(0).at(0).toBool());
-    }
+    void connectSim() { test::connectToSimulator(*session); }
     static void enter(PathEditor *e, const QString &key, const QString &text)
     {
         ParameterField *f = e->form()->field(key);

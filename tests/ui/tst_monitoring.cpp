@@ -8,6 +8,7 @@
 #include "poll/statusrecorder.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 #include "widgets/led.h"
 #include "widgets/positionplot.h"
 #include "widgets/statusdock.h"
@@ -48,13 +49,7 @@ class TstMonitoring : public QObject
     std::unique_ptr<DeviceSession> session;
 
     SimDevice *sim() const { return session->simulator()->device(); }
-    void connectSim()
-    {
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectSimulator();
-        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QVERIFY(read.at(0).at(0).toBool());
-    }
+    void connectSim() { test::connectToSimulator(*session); }
     QString simPositionText(int motor) const
     {
         const Parameter *p = session->map().find(QStringLiteral("motor%1.position").arg(motor));

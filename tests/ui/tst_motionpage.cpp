@@ -5,6 +5,7 @@
 #include "pages/motionpage.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 #include "widgets/homingordereditor.h"
 #include "widgets/jogbutton.h"
 #include "widgets/jogpanel.h"
@@ -38,13 +39,7 @@ class TestMotionPage : public QObject
 
     SimDevice *sim() const { return session->simulator()->device(); }
     qint64 simValue(const char *key) const { return sim()->value(QLatin1String(key)).value_or(-1); }
-    void connectSim()
-    {
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectSimulator();
-        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QVERIFY(read.at(0).at(0).toBool());
-    }
+    void connectSim() { test::connectToSimulator(*session); }
     static void showActive(QWidget *w)
     {
         w->resize(1100, 800);

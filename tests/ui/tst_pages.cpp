@@ -6,6 +6,7 @@
 #include "pages/motorpage.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 #include "widgets/derivedvalues.h"
 #include "widgets/led.h"
 #include "widgets/parameterfield.h"
@@ -42,13 +43,7 @@ class TstPages : public QObject
 
     SimDevice *sim() const { return session->simulator()->device(); }
     qint64 simValue(const char *key) const { return sim()->value(QLatin1String(key)).value_or(-1); }
-    void connectSim()
-    {
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectSimulator();
-        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QVERIFY(read.at(0).at(0).toBool());
-    }
+    void connectSim() { test::connectToSimulator(*session); }
     void readAgain()
     {
         QSignalSpy read(session.get(), &DeviceSession::readFinished);

@@ -7,6 +7,7 @@
 #include "profileactions.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 #include "testpaths.h"
 
 #include <QApplication>
@@ -35,13 +36,7 @@ class TestProfileDialog : public QObject
 
     SimDevice *sim() const { return session->simulator()->device(); }
     qint64 simValue(const char *key) const { return sim()->value(QLatin1String(key)).value_or(-1); }
-    void connectSim()
-    {
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectSimulator();
-        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QVERIFY(read.at(0).at(0).toBool());
-    }
+    void connectSim() { test::connectToSimulator(*session); }
     // The controller's values with three changes (and another device id).
     Profile changedProfile() const
     {
