@@ -47,6 +47,8 @@ QString LinkSettings::describe() const
 {
     if (transport == Transport::Tcp)
         return tr("%1:%2 · id %3").arg(host).arg(tcpPort).arg(deviceId);
+    if (transport == Transport::RtuTcp)
+        return tr("%1:%2 (RTU over TCP) · id %3").arg(host).arg(tcpPort).arg(deviceId);
     const QChar p = parity == QSerialPort::EvenParity  ? QLatin1Char('E')
                     : parity == QSerialPort::OddParity ? QLatin1Char('O')
                                                        : QLatin1Char('N');
@@ -66,7 +68,15 @@ QString LinkSettings::validate() const
         return tr("timeout %1 ms is outside 20-60000 ms").arg(timeoutMs);
     if (retries < 0 || retries > 10)
         return tr("retries %1 is outside 0-10").arg(retries);
-    if (transport == Transport::Tcp) {
+    if (answerDelayMs < 0 || answerDelayMs > 1000)
+        return tr("answer delay %1 ms is outside 0-1000 ms").arg(answerDelayMs);
+    if (turnaroundMs < 0 || turnaroundMs > 1000)
+        return tr("turnaround %1 ms is outside 0-1000 ms").arg(turnaroundMs);
+    if (answerDelayMs >= timeoutMs)
+        return tr("the answer delay (%1 ms) must be shorter than the timeout (%2 ms)")
+            .arg(answerDelayMs)
+            .arg(timeoutMs);
+    if (isNetwork()) {
         if (host.trimmed().isEmpty())
             return tr("no host given");
         if (tcpPort < 1 || tcpPort > 65535)
@@ -84,7 +94,7 @@ QString LinkSettings::validate() const
 
 double LinkSettings::charTimeMs() const
 {
-    if (transport == Transport::Tcp || baud <= 0)
+    if (isNetwork() || baud <= 0)
         return 0.0;
     return 10000.0 / baud;
 }
@@ -94,7 +104,8 @@ bool operator==(const LinkSettings &a, const LinkSettings &b)
     return a.transport == b.transport && a.portName == b.portName && a.baud == b.baud &&
            a.parity == b.parity && a.stopBits == b.stopBits && a.host == b.host &&
            a.tcpPort == b.tcpPort && a.deviceId == b.deviceId && a.timeoutMs == b.timeoutMs &&
-           a.retries == b.retries;
+           a.retries == b.retries && a.answerDelayMs == b.answerDelayMs && a.echo == b.echo &&
+           a.turnaroundMs == b.turnaroundMs;
 }
 
 } // namespace stepcom

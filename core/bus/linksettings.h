@@ -8,7 +8,9 @@ namespace stepcom {
 // How to reach one controller. Defaults are the controller's factory settings.
 struct LinkSettings
 {
-    enum class Transport { Rtu, Tcp };
+    // Rtu: a serial port; Tcp: Modbus TCP (MBAP); RtuTcp: RTU frames with CRC over a plain TCP
+    // socket, as transparent RS-485/Ethernet converters pass them on.
+    enum class Transport { Rtu, Tcp, RtuTcp };
     Transport transport = Transport::Rtu;
     QString portName; // serial device path or name (/dev/ttyUSB0, COM3, a pty path)
     int baud = 9600;
@@ -21,6 +23,19 @@ struct LinkSettings
     // delay; 500 ms leaves room for USB adapters' latency.
     int timeoutMs = 500;
     int retries = 2;
+    // The controller answers no sooner than this after a request (the manual: 35 ms); an
+    // answer that arrives sooner belongs to an older request and is discarded.
+    int answerDelayMs = 35;
+    // The adapter returns every byte it sends (half-duplex adapters without echo suppression):
+    // the request's own bytes are removed before the answer is read.
+    bool echo = false;
+    // Extra silence after an answer before the next request, for converters that need it.
+    int turnaroundMs = 0;
+
+    // Host and port rather than a serial port (Modbus TCP or RTU over TCP).
+    bool isNetwork() const { return transport != Transport::Rtu; }
+    // RTU frames with CRC (a serial port or a transparent converter).
+    bool isRtuFraming() const { return transport != Transport::Tcp; }
 
     // "/dev/ttyUSB0 · 9600 8N1 · id 1" or "192.168.0.7:502 · id 1".
     QString describe() const;

@@ -13,6 +13,8 @@ struct LinkStats
     quint64 crcErrors = 0;
     quint64 mismatches = 0; // answers that did not fit the request (wrong count, wrong function)
     quint64 exceptions = 0;
+    quint64 stale = 0;  // stale/foreign answers discarded (late, another device, wrong content)
+    quint64 echoes = 0; // the request's own bytes came back and the echo option was off
     QMap<int, quint64> exceptionsByCode;
     quint64 failed = 0; // transactions that ended in an error after all retries
     quint64 bytesSent = 0;
@@ -23,7 +25,13 @@ struct LinkStats
     double meanRoundTripMs = 0.0;
 
     void addRoundTrip(qint64 ms);
-    quint64 errors() const { return timeouts + crcErrors + mismatches + exceptions; }
+    quint64 errors() const
+    {
+        return timeouts + crcErrors + mismatches + exceptions + stale + echoes;
+    }
+    // An answer timeout that fits the round trips measured so far (the slowest with half
+    // again plus 50 ms, in steps of 50 ms, at least 100 ms); -1 until 5 answers were timed.
+    int suggestedTimeoutMs() const;
 };
 
 } // namespace stepcom

@@ -1,12 +1,13 @@
 #include "bus/modbuslink.h"
 
+#include "bus/linkanswer.h"
+#include "bus/modbustcpbackend.h"
+#include "bus/rtutransport.h"
 #include "bus/trafficlog.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QLoggingCategory>
-#include <QModbusRtuSerialClient>
-#include <QModbusTcpClient>
 
 Q_LOGGING_CATEGORY(lcBus, "stepcom.bus", QtWarningMsg)
 
@@ -16,6 +17,36 @@ namespace {
 
 // Margin over the transaction timeout before we decide the port itself has hung.
 constexpr int kWatchdogGraceMs = 1500;
+
+QModbusRequest toPdu(const Request &req)
+{
+    QByteArray data;
+    const auto put = [&data](int word) {
+        data.append(char((word >> 8) & 0xFF));
+        data.append(char(word & 0xFF));
+    };
+    put(req.address);
+    switch (req.type) {
+    case Request::Type::ReadHolding:
+        put(req.count);
+        return QModbusRequest(QModbusPdu::ReadHoldingRegisters, data);
+    case Request::Type::WriteCoil:
+        put(req.coilOn ? 0xFF00 : 0x0000);
+        return QModbusRequest(QModbusPdu::WriteSingleCoil, data);
+    case Request::Type::WriteHolding:
+        break;
+    }
+    // One value goes out as FC06, more as one FC10: a 32-bit value is never split.
+    if (req.values.size() == 1) {
+        put(req.values.first());
+        return QModbusRequest(QModbusPdu::WriteSingleRegister, data);
+    }
+    put(int(req.values.size()));
+    data.append(char(req.values.size() * 2));
+    for (quint16 v : req.values)
+        put(v);
+    return QModbusRequest(QModbusPdu::WriteMultipleRegisters, data);
+}
 
 } // namespace
 
@@ -33,22 +64,17 @@ ModbusLink::ModbusLink(QObject *parent)
                      .arg(m_settings.describe())
                      .arg(m_connectTimer.interval() / 1000.0));
     });
-    WireTap::attach(
-        this, [this](WireTap::Frame frame, const QByteArray &raw) { onWireFrame(frame, raw); });
 }
 
 ModbusLink::~ModbusLink()
 {
-    WireTap::detach(this);
     m_openPending = false;
-    if (m_client) {
-        m_client->disconnect(this);
-        // A reply still pending finishes (with an error) when the device disconnects: nobody
-        // may hear of it now, the owners of the callbacks are being destroyed.
-        for (QModbusReply *reply : m_client->findChildren<QModbusReply *>())
-            reply->disconnect(this);
-        m_client->disconnectDevice();
-        delete m_client; // replies are its children and die with it; nothing can answer now
+    if (m_backend) {
+        // A transaction still pending must tell no one: the owners of the callbacks are being
+        // destroyed.
+        m_backend->disconnect(this);
+        m_backend->close();
+        delete m_backend;
     }
 }
 
@@ -59,6 +85,13 @@ void ModbusLink::setState(State state, const QString &reason)
     m_state = state;
     qCDebug(lcBus) << "link state" << state << reason;
     Q_EMIT stateChanged(state, reason);
+}
+
+void ModbusLink::setQuietTimeMs(int ms)
+{
+    m_quietMs = ms;
+    if (m_backend)
+        m_backend->setQuietTimeMs(ms);
 }
 
 void ModbusLink::open(const LinkSettings &settings)
@@ -76,12 +109,17 @@ void ModbusLink::open(const LinkSettings &settings)
         return;
     }
     if (settings.transport == LinkSettings::Transport::Rtu) {
-        // Tell the technician what is wrong before Qt's generic "cannot open".
+        // Tell the technician what is wrong before the port's generic "cannot open".
         const QFileInfo info(settings.portName);
         if (settings.portName.startsWith(QLatin1Char('/'))) {
             if (!info.exists()) {
                 failLink(tr("serial port %1 does not exist (is the adapter plugged in?)")
                              .arg(settings.portName));
+                return;
+            }
+            if (const QString why = RtuTransport::notASerialPort(settings.portName);
+                !why.isEmpty()) {
+                failLink(why);
                 return;
             }
             if (!info.isReadable() || !info.isWritable()) {
@@ -92,42 +130,36 @@ void ModbusLink::open(const LinkSettings &settings)
                 return;
             }
         }
-        auto *rtu = new QModbusRtuSerialClient(this);
-        rtu->setConnectionParameter(QModbusDevice::SerialPortNameParameter, settings.portName);
-        // Qt defaults to 19200 baud, even parity: set every serial parameter explicitly.
-        rtu->setConnectionParameter(QModbusDevice::SerialBaudRateParameter, settings.baud);
-        rtu->setConnectionParameter(QModbusDevice::SerialParityParameter, settings.parity);
-        rtu->setConnectionParameter(QModbusDevice::SerialDataBitsParameter, QSerialPort::Data8);
-        rtu->setConnectionParameter(QModbusDevice::SerialStopBitsParameter, settings.stopBits);
-        m_client = rtu;
-    } else {
-        auto *tcp = new QModbusTcpClient(this);
-        tcp->setConnectionParameter(QModbusDevice::NetworkAddressParameter, settings.host);
-        tcp->setConnectionParameter(QModbusDevice::NetworkPortParameter, settings.tcpPort);
-        m_client = tcp;
     }
-    m_client->setTimeout(settings.timeoutMs);
-    m_client->setNumberOfRetries(0); // retries are ours, so emergencies can cut in between
-    connect(m_client, &QModbusDevice::stateChanged, this,
-            [this](QModbusDevice::State s) { onClientState(int(s)); });
-    connect(m_client, &QModbusDevice::errorOccurred, this,
-            [this](QModbusDevice::Error e) { onClientError(int(e)); });
+    if (settings.transport == LinkSettings::Transport::Tcp)
+        m_backend = new ModbusTcpBackend(this);
+    else
+        m_backend = new RtuTransport(this);
+    m_backend->setQuietTimeMs(m_quietMs);
+    connect(m_backend, &LinkBackend::opened, this, &ModbusLink::onBackendOpened);
+    connect(m_backend, &LinkBackend::failed, this, &ModbusLink::failLink);
+    connect(m_backend, &LinkBackend::answered, this, &ModbusLink::onAnswered);
+    connect(m_backend, &LinkBackend::frame, this, &ModbusLink::onFrame);
     m_traffic->addEvent(tr("connecting to %1").arg(settings.describe()));
-    if (!m_client->connectDevice()) {
-        // The client may already have reported the error and been torn down inside the call.
-        if (m_client)
-            failLink(m_client->errorString().isEmpty()
-                         ? tr("cannot open %1").arg(settings.describe())
-                         : m_client->errorString());
-        return;
-    }
-    if (!m_client)
-        return;
-    if (m_client->state() == QModbusDevice::ConnectedState) {
-        onClientState(int(QModbusDevice::ConnectedState));
-    } else {
+    const quint64 attempt = m_attempt;
+    m_backend->open(settings);
+    if (attempt == m_attempt && m_state == State::Connecting)
         m_connectTimer.start(std::max(3000, settings.timeoutMs * 4));
+}
+
+void ModbusLink::onBackendOpened(bool ok, const QString &reason)
+{
+    if (m_state != State::Connecting)
+        return;
+    if (!ok) {
+        failLink(reason.isEmpty() ? tr("cannot open %1").arg(m_settings.describe()) : reason);
+        return;
     }
+    m_connectTimer.stop();
+    setState(State::Connected, m_settings.describe());
+    m_traffic->addEvent(tr("connected to %1").arg(m_settings.describe()));
+    finishOpen(true, QString());
+    schedulePump(0);
 }
 
 void ModbusLink::finishOpen(bool ok, const QString &reason)
@@ -139,43 +171,9 @@ void ModbusLink::finishOpen(bool ok, const QString &reason)
     Q_EMIT opened(ok, reason);
 }
 
-void ModbusLink::onClientState(int s)
-{
-    const auto state = QModbusDevice::State(s);
-    if (state == QModbusDevice::ConnectedState && m_state == State::Connecting) {
-        m_sinceQuiet.start();
-        m_quietRemainingMs = 0;
-        setState(State::Connected, m_settings.describe());
-        m_traffic->addEvent(tr("connected to %1").arg(m_settings.describe()));
-        finishOpen(true, QString());
-        schedulePump(0);
-    } else if (state == QModbusDevice::UnconnectedState && m_state != State::Disconnected &&
-               !m_failing) {
-        // Qt sets the state before the error that explains it: give the error a moment.
-        const quint64 attempt = m_attempt;
-        QTimer::singleShot(0, this, [this, attempt] {
-            if (attempt != m_attempt || m_failing || m_state == State::Disconnected)
-                return;
-            failLink(m_client && !m_client->errorString().isEmpty() ? m_client->errorString()
-                                                                    : tr("connection closed"));
-        });
-    }
-}
-
-void ModbusLink::onClientError(int e)
-{
-    const auto error = QModbusDevice::Error(e);
-    // Per-reply errors arrive on the reply; these are the link-level ones.
-    if (error == QModbusDevice::ConnectionError || error == QModbusDevice::ReadError ||
-        error == QModbusDevice::WriteError || error == QModbusDevice::ConfigurationError) {
-        const QString text = m_client ? m_client->errorString() : QString();
-        failLink(text.isEmpty() ? tr("the port reported an error") : text);
-    }
-}
-
 void ModbusLink::failLink(const QString &reason)
 {
-    // Qt 6.4 repeats port errors in a tight loop once the device vanished: act once.
+    // A vanished port repeats its errors: act once.
     if (m_failing || m_state == State::Disconnected) {
         if (m_openPending)
             finishOpen(false, reason);
@@ -196,15 +194,12 @@ void ModbusLink::close(const QString &reason)
     m_watchdog.stop();
     m_pumpTimer.stop();
     m_connectTimer.stop();
-    if (m_client) {
-        QModbusClient *client = std::exchange(m_client, nullptr);
-        client->disconnect(this);
-        client->disconnectDevice();
-        // Its replies are children: deleting later lets any finished() already queued run
-        // harmlessly instead of into freed memory.
-        client->deleteLater();
+    if (m_backend) {
+        LinkBackend *backend = std::exchange(m_backend, nullptr);
+        backend->disconnect(this);
+        backend->close();
+        backend->deleteLater();
     }
-    m_reply.clear();
     const QString why = reason.isEmpty() ? tr("link closed") : reason;
     failAll(why);
     if (m_state != State::Disconnected)
@@ -280,138 +275,130 @@ void ModbusLink::schedulePump(int delayMs)
 
 void ModbusLink::pump()
 {
-    if (m_state != State::Connected || m_inFlight || m_queue.isEmpty() || !m_client)
+    if (m_state != State::Connected || m_inFlight || m_queue.isEmpty() || !m_backend)
         return;
-    const qint64 quietLeft = m_quietRemainingMs - m_sinceQuiet.elapsed();
-    if (quietLeft > 0) {
-        schedulePump(int(quietLeft));
+    if (const qint64 left = m_notBefore.remainingTime(); left > 0) {
+        schedulePump(int(left));
         return;
     }
-    // In flight before it is sent: a TCP client writes (and logs the frame) inside the call.
     m_inFlight = m_queue.takeNext();
     m_inFlight->attempts += 1;
-    const Request req = m_inFlight->request;
-    const int id = m_settings.deviceId;
     ++m_stats.requests;
-    m_sentAt.start();
-    Q_EMIT dispatched(m_inFlight->id, req);
-    QModbusReply *reply = nullptr;
-    switch (req.type) {
-    case Request::Type::ReadHolding:
-        reply = m_client->sendReadRequest(
-            QModbusDataUnit(QModbusDataUnit::HoldingRegisters, req.address, req.count), id);
-        break;
-    case Request::Type::WriteHolding:
-        // One value goes out as FC06, more as one FC10: a 32-bit value is never split.
-        reply = m_client->sendWriteRequest(
-            QModbusDataUnit(QModbusDataUnit::HoldingRegisters, req.address, req.values), id);
-        break;
-    case Request::Type::WriteCoil:
-        reply = m_client->sendWriteRequest(
-            QModbusDataUnit(QModbusDataUnit::Coils, req.address,
-                            QList<quint16>{req.coilOn ? quint16(1) : quint16(0)}),
-            id);
-        break;
-    }
-    if (!m_inFlight)
-        return; // the link failed while sending; everything was reported by failLink
-    if (!reply) {
-        Result r;
-        r.error = QModbusDevice::WriteError;
-        r.attempts = m_inFlight->attempts;
-        r.errorText = tr("%1: could not send: %2")
-                          .arg(describe(req), m_client ? m_client->errorString() : QString());
-        complete(*std::exchange(m_inFlight, std::nullopt), r);
-        schedulePump(0);
-        return;
-    }
-    m_reply = reply;
-    if (reply->isFinished()) {
-        onReplyFinished(reply);
-        return;
-    }
-    connect(reply, &QModbusReply::finished, this, [this, reply] { onReplyFinished(reply); });
-    m_watchdog.start(m_settings.timeoutMs + kWatchdogGraceMs);
+    Q_EMIT dispatched(m_inFlight->id, m_inFlight->request);
+    // The transport waits for the silences the line needs; the watchdog covers that too.
+    m_watchdog.start(m_settings.timeoutMs + m_quietMs + m_settings.turnaroundMs + kWatchdogGraceMs);
+    m_backend->send(m_settings.deviceId, toPdu(m_inFlight->request), m_settings.timeoutMs);
 }
 
-void ModbusLink::onReplyFinished(QModbusReply *reply)
+QString ModbusLink::noAnswerText(const Request &req, const LinkAnswer &a) const
 {
-    reply->deleteLater(); // only now: deleting an unfinished reply can crash Qt 6.4
-    if (reply != m_reply || !m_inFlight)
+    if (a.crcErrors > 0 && a.discarded.size() == a.crcErrors)
+        return tr("%1: answers had a bad checksum (CRC)").arg(describe(req));
+    QString text = tr("%1: no answer within %2 ms").arg(describe(req)).arg(m_settings.timeoutMs);
+    if (!a.discarded.isEmpty())
+        text += tr(" (discarded: %1)").arg(a.discarded.join(QStringLiteral("; ")));
+    if (a.discarded.isEmpty() && a.crcErrors == 0 && !a.onlyEcho) {
+        if (m_settings.isNetwork())
+            text += tr(" -- check the device id (%1), the host and port, and the converter's "
+                       "serial settings; the bus scan finds controllers")
+                        .arg(m_settings.deviceId);
+        else
+            text += tr(" -- check the device id (%1), the baud rate and parity (%2), the A/B "
+                       "wiring; the bus scan finds controllers")
+                        .arg(m_settings.deviceId)
+                        .arg(QStringLiteral("%1 8%2%3")
+                                 .arg(m_settings.baud)
+                                 .arg(LinkSettings::parityName(m_settings.parity).at(0).toUpper())
+                                 .arg(m_settings.stopBits == QSerialPort::TwoStop ? 2 : 1));
+    }
+    if (a.onlyEcho)
+        text += tr(" -- only the request's own bytes came back: the controller did not answer, "
+                   "or the adapter does not echo (then turn the echo option off)");
+    return text;
+}
+
+void ModbusLink::onAnswered(const LinkAnswer &a)
+{
+    if (!m_inFlight)
         return;
     m_watchdog.stop();
-    m_reply.clear();
     QueuedRequest item = *std::exchange(m_inFlight, std::nullopt);
     const Request &req = item.request;
-    const qint64 elapsed = m_sentAt.elapsed();
-
-    const auto intermediate = reply->intermediateErrors();
-    for (QModbusDevice::IntermediateError e : intermediate) {
-        if (e == QModbusDevice::ResponseCrcError)
-            ++m_stats.crcErrors;
-        else if (e == QModbusDevice::ResponseRequestMismatch)
-            ++m_stats.mismatches;
-    }
+    m_stats.crcErrors += quint64(a.crcErrors);
+    const int stale = int(a.discarded.size()) - a.crcErrors;
+    if (stale > 0)
+        m_stats.stale += quint64(stale);
+    for (const QString &why : a.discarded)
+        m_traffic->addEvent(tr("stale/foreign answer discarded: %1").arg(why));
 
     Result r;
     r.attempts = item.attempts;
-    r.error = reply->error();
     bool retry = false;
-    if (r.error == QModbusDevice::NoError) {
-        const QModbusDataUnit unit = reply->result();
-        if (req.type == Request::Type::ReadHolding &&
-            (unit.valueCount() != req.count || unit.startAddress() != req.address)) {
-            // Qt matches answers by id and function only: a stray answer to an older request
-            // shows up here with the wrong size.
-            ++m_stats.mismatches;
-            r.error = QModbusDevice::UnknownError;
-            r.errorText = tr("%1: answer carried %2 registers, %3 were asked for")
-                              .arg(describe(req))
-                              .arg(unit.valueCount())
-                              .arg(req.count);
-            retry = true;
-        } else {
-            ++m_stats.answers;
-            m_stats.addRoundTrip(elapsed);
-            r.ok = true;
-            r.roundTripMs = elapsed;
-            if (req.type == Request::Type::ReadHolding)
-                r.values = unit.values();
-        }
-    } else if (r.error == QModbusDevice::ProtocolError && reply->rawResult().data().size() == 1) {
-        // An exception answer carries just its code. (QModbusPdu::isException() trips UBSan on
-        // Qt 6.4: the function code is stored sign-extended.)
+    int retryPauseMs = 0;
+    switch (a.kind) {
+    case LinkAnswer::Kind::Answer:
         ++m_stats.answers;
-        ++m_stats.exceptions;
-        r.exceptionCode = quint8(reply->rawResult().data().at(0));
-        ++m_stats.exceptionsByCode[r.exceptionCode];
-        r.errorText =
-            tr("%1: the controller refused: %2").arg(describe(req), exceptionText(r.exceptionCode));
-    } else if (r.error == QModbusDevice::TimeoutError) {
+        if (const int code = a.exceptionCode; code != 0) {
+            ++m_stats.exceptions;
+            ++m_stats.exceptionsByCode[code];
+            r.error = QModbusDevice::ProtocolError;
+            r.exceptionCode = code;
+            r.errorText =
+                tr("%1: the controller refused: %2").arg(describe(req), exceptionText(code));
+            // Busy means it did not act: even a motion command may go again, after a pause.
+            if (code == 6 && item.attempts <= m_settings.retries) {
+                retry = true;
+                retryPauseMs = kBusyPauseMs;
+            }
+            break;
+        }
+        m_stats.addRoundTrip(a.roundTripMs);
+        r.ok = true;
+        r.roundTripMs = a.roundTripMs;
+        if (req.type == Request::Type::ReadHolding) {
+            const QByteArray d = a.response.data(); // byte count, then the registers
+            for (int at = 1; at + 1 < d.size(); at += 2)
+                r.values << quint16((quint8(d.at(at)) << 8) | quint8(d.at(at + 1)));
+        }
+        // A write that needed another try: the read-back must not meet a late answer.
+        if (item.attempts > 1 && req.type == Request::Type::WriteHolding)
+            m_backend->requireQuiet();
+        break;
+    case LinkAnswer::Kind::Timeout:
         ++m_stats.timeouts;
-        const bool crc = intermediate.contains(QModbusDevice::ResponseCrcError);
-        r.errorText =
-            crc ? tr("%1: answers had a bad checksum (CRC)").arg(describe(req))
-                : tr("%1: no answer within %2 ms").arg(describe(req)).arg(m_settings.timeoutMs);
-        retry = true;
-    } else {
-        r.errorText = tr("%1: %2").arg(describe(req), reply->errorString());
+        r.error = QModbusDevice::TimeoutError;
+        r.errorText = noAnswerText(req, a);
+        retry = req.retryable && item.attempts <= m_settings.retries;
+        if (!retry && req.type == Request::Type::WriteCoil) {
+            r.mayHaveActed = true;
+            r.errorText += tr(" -- the controller may have acted on it");
+        }
+        break;
+    case LinkAnswer::Kind::Echo:
+        ++m_stats.echoes;
+        r.error = QModbusDevice::ProtocolError;
+        r.errorText = tr("%1: the request's own bytes came back before any answer: the adapter "
+                         "echoes what it sends. Turn on \"the adapter echoes what it sends\" "
+                         "(stepcomctl --echo)")
+                          .arg(describe(req));
+        r.mayHaveActed = req.type == Request::Type::WriteCoil;
+        Q_EMIT echoDetected();
+        break;
+    case LinkAnswer::Kind::Failed:
+        r.error = QModbusDevice::WriteError;
+        r.errorText = tr("%1: could not send: %2").arg(describe(req), a.errorText);
+        break;
     }
 
-    if (!r.ok && retry) {
-        // Let a late answer drain before anything else goes out.
-        m_sinceQuiet.start();
-        m_quietRemainingMs = m_quietMs;
+    if (!r.ok && (retry || a.kind == LinkAnswer::Kind::Timeout))
         m_traffic->addEvent(r.errorText);
-        if (req.retryable && item.attempts <= m_settings.retries) {
-            m_queue.pushFront(std::move(item));
-            Q_EMIT statsChanged();
-            schedulePump(m_quietMs);
-            return;
-        }
-        r.mayHaveActed = req.type == Request::Type::WriteCoil;
-        if (r.mayHaveActed)
-            r.errorText += tr(" -- the controller may have acted on it");
+    if (retry && m_backend) {
+        m_queue.pushFront(std::move(item));
+        if (retryPauseMs > 0)
+            m_notBefore.setRemainingTime(retryPauseMs);
+        Q_EMIT statsChanged();
+        schedulePump(retryPauseMs);
+        return;
     }
     if (!r.ok)
         ++m_stats.failed;
@@ -436,21 +423,14 @@ void ModbusLink::complete(QueuedRequest item, Result result)
         item.callback(result);
 }
 
-void ModbusLink::onWireFrame(WireTap::Frame frame, const QByteArray &raw)
+void ModbusLink::onFrame(bool sent, const QByteArray &raw, int pduOffset, int crcBytes)
 {
-    if (!m_client || !m_inFlight)
-        return;
-    const bool tcpLink = m_settings.transport == LinkSettings::Transport::Tcp;
-    const bool tcpFrame = frame == WireTap::Frame::TcpSent || frame == WireTap::Frame::TcpReceived;
-    if (tcpLink != tcpFrame)
-        return;
-    const bool sent = frame == WireTap::Frame::RtuSent || frame == WireTap::Frame::TcpSent;
     if (sent)
         m_stats.bytesSent += quint64(raw.size());
     else
         m_stats.bytesReceived += quint64(raw.size());
     m_traffic->addFrame(sent ? TrafficEntry::Direction::Sent : TrafficEntry::Direction::Received,
-                        raw, tcpFrame ? 7 : 1, tcpFrame ? 0 : 2, &m_inFlight->request);
+                        raw, pduOffset, crcBytes, m_inFlight ? &m_inFlight->request : nullptr);
 }
 
 QString ModbusLink::describe(const Request &request) const

@@ -4,24 +4,22 @@
 #include "bus/linkstats.h"
 #include "bus/request.h"
 #include "bus/requestqueue.h"
-#include "bus/wiretap.h"
 
-#include <QElapsedTimer>
+#include <QDeadlineTimer>
 #include <QObject>
-#include <QPointer>
 #include <QTimer>
-
-class QModbusClient;
-class QModbusReply;
 
 namespace stepcom {
 
+class LinkBackend;
+struct LinkAnswer;
 class TrafficLog;
 
-// The only code that touches QModbusClient. One transaction on the wire at a time, taken from
-// a priority queue (emergency > commands and writes > reads > polling); our own retries, so an
-// emergency stop can go out between two attempts of a poll; our own watchdog, because a
-// vanished port leaves Qt 6.4's pending reply unfinished forever.
+// The link to one line. One transaction on the wire at a time, taken from a priority queue
+// (emergency > commands and writes > reads > polling); our own retries, so an emergency stop
+// can go out between two attempts of a poll; our own watchdog, because a vanished port can
+// leave a transaction unfinished forever. The line itself is a LinkBackend: StepCom's own RTU
+// transport (serial port or RTU over TCP) or QModbusTcpClient for Modbus TCP.
 class ModbusLink : public QObject
 {
     Q_OBJECT
@@ -41,6 +39,8 @@ public:
     const LinkSettings &settings() const { return m_settings; }
     // After the controller's id changed (register 40212) the link follows without reopening.
     void setDeviceId(int id) { m_settings.deviceId = id; }
+    // Pause before retrying a request the controller refused as busy (exception 06).
+    static constexpr int kBusyPauseMs = 200;
 
     // Queue a request; `callback` runs once with the result (not if `context` died first).
     quint64 submit(Request request, ResultCallback callback, QObject *context = nullptr);
@@ -51,7 +51,7 @@ public:
 
     // Silence after a timeout or a bad answer before the next request, so a late answer to
     // the old request cannot be taken for the answer to the new one.
-    void setQuietTimeMs(int ms) { m_quietMs = ms; }
+    void setQuietTimeMs(int ms);
     int quietTimeMs() const { return m_quietMs; }
 
     const LinkStats &stats() const { return m_stats; }
@@ -67,36 +67,36 @@ Q_SIGNALS:
     void dispatched(quint64 id, const stepcom::Request &request);
     void finished(quint64 id, const stepcom::Request &request, const stepcom::Result &result);
     void statsChanged();
+    // The request's own bytes came back before the answer and the echo option is off: the
+    // adapter echoes what it sends (offer the option).
+    void echoDetected();
 
 private:
     void setState(State state, const QString &reason);
     void finishOpen(bool ok, const QString &reason);
-    void onClientState(int state);
-    void onClientError(int error);
+    void onBackendOpened(bool ok, const QString &reason);
     void pump();
     void schedulePump(int delayMs);
-    void onReplyFinished(QModbusReply *reply);
+    void onAnswered(const LinkAnswer &answer);
     void onWatchdog();
     void complete(QueuedRequest item, Result result);
     void failLink(const QString &reason);
     void failAll(const QString &reason);
-    void onWireFrame(WireTap::Frame frame, const QByteArray &raw);
+    void onFrame(bool sent, const QByteArray &raw, int pduOffset, int crcBytes);
     QString describe(const Request &request) const;
+    QString noAnswerText(const Request &request, const LinkAnswer &answer) const;
 
     LinkSettings m_settings;
     State m_state = State::Disconnected;
-    QModbusClient *m_client = nullptr;
+    LinkBackend *m_backend = nullptr;
     bool m_openPending = false;
     QTimer m_connectTimer;
     RequestQueue m_queue;
     std::optional<QueuedRequest> m_inFlight;
-    QPointer<QModbusReply> m_reply;
-    QElapsedTimer m_sentAt;
     QTimer m_watchdog;
     QTimer m_pumpTimer;
-    QElapsedTimer m_sinceQuiet;
-    int m_quietRemainingMs = 0;
     int m_quietMs = 100;
+    QDeadlineTimer m_notBefore; // a busy controller gets a pause before the next request
     quint64 m_nextId = 1;
     LinkStats m_stats;
     TrafficLog *m_traffic;

@@ -31,6 +31,8 @@ public:
     bool open(QString *error);
     QString clientPath() const { return m_bridge.path(PtyBridge::Side::A); }
     void setResponder(Responder responder) { m_responder = std::move(responder); }
+    // Like the real controller, answers leave no sooner than 35 ms after the request: the link
+    // discards sooner ones as late answers to an older request.
     void setAnswerDelayMs(int ms) { m_delayMs = ms; }
     // A device with 320 registers, answering FC03/06/10/05 correctly (writes are stored).
     void useRegisterDevice(int deviceId = 1);
@@ -51,7 +53,7 @@ private:
     QByteArray m_buffer;
     QList<QByteArray> m_requests;
     Responder m_responder;
-    int m_delayMs = 0;
+    int m_delayMs = 35;
 };
 
 } // namespace stepcom::test

@@ -1,0 +1,43 @@
+#pragma once
+
+#include "bus/linkanswer.h"
+#include "bus/linksettings.h"
+
+#include <QObject>
+
+namespace stepcom {
+
+// What ModbusLink needs from a transport: open it, put one request on the line at a time, and
+// hear how that attempt ended. The line's timing (silences, quiet time after trouble) is the
+// transport's, because only it sees every byte.
+class LinkBackend : public QObject
+{
+    Q_OBJECT
+public:
+    using QObject::QObject;
+
+    // `opened(ok, reason)` follows exactly once (possibly from inside this call).
+    virtual void open(const LinkSettings &settings) = 0;
+    // Stop; no signal follows.
+    virtual void close() = 0;
+    // One request to `unit`; `answered` follows once, unless the link fails or closes first.
+    virtual void send(int unit, const QModbusRequest &request, int timeoutMs) = 0;
+    // After trouble the line must have been quiet this long before the next request.
+    virtual void setQuietTimeMs(int ms) = 0;
+    // Make the next request wait for the quiet time (a retried write's read-back).
+    virtual void requireQuiet() = 0;
+    virtual void setDeviceId(int) {}
+
+Q_SIGNALS:
+    void opened(bool ok, const QString &reason);
+    // The link died on its own after it was open (port vanished, connection closed).
+    void failed(const QString &reason);
+    // The request left (after the silences it had to wait for).
+    void sent();
+    void answered(const stepcom::LinkAnswer &answer);
+    // Bytes that crossed the line: `pduOffset` where the function code starts, `crcBytes` at
+    // the end.
+    void frame(bool sent, const QByteArray &raw, int pduOffset, int crcBytes);
+};
+
+} // namespace stepcom

@@ -1,0 +1,364 @@
+#include "bus/rtutransport.h"
+
+#include "bus/answercheck.h"
+#include "bus/rtuframe.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QSerialPort>
+#include <QTcpSocket>
+
+#include <cmath>
+
+#ifdef Q_OS_UNIX
+#include <fcntl.h>
+#include <unistd.h>
+#endif
+
+namespace stepcom {
+
+namespace {
+
+// An echo comes back while the request is still being sent, give or take the adapter's
+// USB latency; an identical FC05/06 frame later than this is an answer (or a stale one).
+constexpr double kEchoSlackMs = 20.0;
+
+} // namespace
+
+RtuTransport::RtuTransport(QObject *parent)
+    : LinkBackend(parent)
+{
+    m_clock.start();
+    m_writeTimer.setSingleShot(true);
+    m_writeTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_writeTimer, &QTimer::timeout, this, &RtuTransport::scheduleWrite);
+    m_timeoutTimer.setSingleShot(true);
+    m_timeoutTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timeoutTimer, &QTimer::timeout, this, &RtuTransport::onTimeout);
+}
+
+RtuTransport::~RtuTransport()
+{
+    close();
+}
+
+QString RtuTransport::notASerialPort(const QString &path)
+{
+#ifdef Q_OS_UNIX
+    const QFileInfo info(path);
+    if (!path.startsWith(QLatin1Char('/')) || !info.exists())
+        return {};
+    const QString why =
+        QCoreApplication::translate("stepcom::RtuTransport",
+                                    "%1 is not a serial port (give the adapter's device, e.g. "
+                                    "/dev/ttyUSB0 or a /dev/serial/by-id/ link)")
+            .arg(path);
+    if (info.isFile() || info.isDir())
+        return why;
+    const int fd = ::open(QFile::encodeName(path).constData(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+    if (fd < 0)
+        return {}; // permission and the like: the caller and the port say it better
+    const bool tty = ::isatty(fd) == 1;
+    ::close(fd);
+    return tty ? QString() : why;
+#else
+    Q_UNUSED(path);
+    return {};
+#endif
+}
+
+void RtuTransport::open(const LinkSettings &settings)
+{
+    close();
+    m_settings = settings;
+    m_opening = true;
+    m_failing = false;
+    m_lastRxMs = -1;
+    m_needQuiet = false;
+    if (settings.transport == LinkSettings::Transport::RtuTcp) {
+        // The converter's line has its own baud, unknown here: count no wire time, so the
+        // earliest-answer rule rests on the answer delay alone.
+        m_byteMs = 0;
+        m_gapMs = 0;
+        auto *socket = new QTcpSocket(this);
+        m_device = socket;
+        connect(socket, &QTcpSocket::connected, this, [this, socket] {
+            socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+            if (m_opening) {
+                m_opening = false;
+                Q_EMIT opened(true, QString());
+            }
+        });
+        connect(socket, &QTcpSocket::errorOccurred, this,
+                [this, socket](QAbstractSocket::SocketError) { fail(socket->errorString()); });
+        connect(socket, &QTcpSocket::disconnected, this, [this] {
+            fail(QCoreApplication::translate("stepcom::RtuTransport",
+                                             "the converter closed the connection"));
+        });
+        connect(socket, &QTcpSocket::readyRead, this, &RtuTransport::onReadyRead);
+        socket->connectToHost(settings.host, quint16(settings.tcpPort));
+        return;
+    }
+    auto *port = new QSerialPort(this);
+    m_device = port;
+    port->setPortName(settings.portName);
+    port->setBaudRate(settings.baud);
+    port->setParity(settings.parity);
+    port->setDataBits(QSerialPort::Data8);
+    port->setStopBits(settings.stopBits);
+    port->setFlowControl(QSerialPort::NoFlowControl);
+    // A pseudo-terminal moves bytes without a wire: no frame time, no silences to keep (the
+    // simulator's wire model counts them itself).
+    const bool pty =
+        QFileInfo(settings.portName).canonicalFilePath().startsWith(QLatin1String("/dev/pts/"));
+    const int bits = 1 + 8 + (settings.parity == QSerialPort::NoParity ? 0 : 1) +
+                     (settings.stopBits == QSerialPort::TwoStop ? 2 : 1);
+    m_byteMs = pty ? 0.0 : RtuFrame::charsMs(1, settings.baud, bits);
+    m_gapMs = 3.5 * m_byteMs;
+    if (!port->open(QIODevice::ReadWrite)) {
+        const QString why = port->errorString();
+        delete port;
+        m_opening = false;
+        Q_EMIT opened(false,
+                      QCoreApplication::translate("stepcom::RtuTransport", "cannot open %1: %2")
+                          .arg(settings.portName, why));
+        return;
+    }
+    connect(port, &QSerialPort::errorOccurred, this, [this, port](QSerialPort::SerialPortError e) {
+        if (e != QSerialPort::NoError && e != QSerialPort::TimeoutError)
+            fail(port->errorString());
+    });
+    connect(port, &QSerialPort::readyRead, this, &RtuTransport::onReadyRead);
+    port->clear(); // whatever waited in the driver belongs to no request of ours
+    m_opening = false;
+    Q_EMIT opened(true, QString());
+}
+
+void RtuTransport::close()
+{
+    m_writeTimer.stop();
+    m_timeoutTimer.stop();
+    m_pending.reset();
+    m_waiting = false;
+    m_rx.clear();
+    m_stray.clear();
+    m_discarded.clear();
+    m_crcErrors = 0;
+    if (QIODevice *device = m_device.data()) {
+        m_device.clear();
+        device->disconnect(this);
+        device->close();
+        device->deleteLater();
+    }
+    m_opening = false;
+}
+
+void RtuTransport::fail(const QString &reason)
+{
+    // Qt 6.4 repeats the errors of a vanished port in a tight loop: act once.
+    if (m_failing)
+        return;
+    m_failing = true;
+    const bool opening = m_opening;
+    close();
+    if (opening)
+        Q_EMIT opened(false, reason);
+    else
+        Q_EMIT failed(reason);
+}
+
+void RtuTransport::requireQuiet()
+{
+    m_needQuiet = true;
+    m_quietFromMs = nowMs();
+}
+
+void RtuTransport::send(int unit, const QModbusRequest &request, int timeoutMs)
+{
+    Pending p;
+    p.unit = unit;
+    p.request = request;
+    p.adu = RtuFrame::adu(unit, request);
+    p.timeoutMs = timeoutMs;
+    m_pending = p;
+    m_waiting = false;
+    scheduleWrite();
+}
+
+void RtuTransport::scheduleWrite()
+{
+    if (!m_pending || m_waiting || !m_device)
+        return;
+    const double now = nowMs();
+    double at = now;
+    if (m_lastRxMs >= 0)
+        at = std::max(at, m_lastRxMs + std::max(m_gapMs, double(m_settings.turnaroundMs)));
+    if (m_needQuiet) // drain: the line has to be silent for the quiet time first
+        at = std::max(at, std::max(m_quietFromMs, m_lastRxMs) + m_quietMs);
+    if (at > now + 0.05) {
+        m_writeTimer.start(int(std::ceil(at - now)));
+        return;
+    }
+    writeNow();
+}
+
+void RtuTransport::writeNow()
+{
+    m_needQuiet = false;
+    if (!m_stray.isEmpty())
+        discard(std::exchange(m_stray, {}),
+                QCoreApplication::translate("stepcom::RtuTransport",
+                                            "bytes that arrived between two requests"));
+    m_rx.clear();
+    m_echoStripped = false;
+    const QByteArray &adu = m_pending->adu;
+    const qint64 written = m_device->write(adu);
+    if (written != adu.size()) {
+        LinkAnswer a;
+        a.kind = LinkAnswer::Kind::Failed;
+        a.errorText = m_device->errorString();
+        finish(a);
+        return;
+    }
+    m_sentAtMs = nowMs();
+    m_waiting = true;
+    const double frameMs = m_byteMs * double(adu.size());
+    m_earliestMs = frameMs + m_settings.answerDelayMs - kEarlyMarginMs;
+    // The timeout counts from the end of the request on the line.
+    m_timeoutTimer.start(m_pending->timeoutMs + int(std::ceil(frameMs)));
+    Q_EMIT frame(true, adu, 1, 2);
+    Q_EMIT sent();
+}
+
+void RtuTransport::onReadyRead()
+{
+    if (!m_device)
+        return;
+    const QByteArray bytes = m_device->readAll();
+    if (bytes.isEmpty())
+        return;
+    m_lastRxMs = nowMs();
+    if (!m_waiting) {
+        // Nobody asked: a late answer. The next request waits until the line is quiet.
+        m_stray += bytes;
+        m_needQuiet = true;
+        m_quietFromMs = m_lastRxMs;
+        return;
+    }
+    m_rx += bytes;
+    processBuffer();
+}
+
+void RtuTransport::discard(const QByteArray &bytes, const QString &why)
+{
+    if (!bytes.isEmpty())
+        Q_EMIT frame(false, bytes, 1, 2);
+    m_discarded << why;
+}
+
+void RtuTransport::processBuffer()
+{
+    const auto tr = [](const char *text) {
+        return QCoreApplication::translate("stepcom::RtuTransport", text);
+    };
+    while (m_waiting && !m_rx.isEmpty()) {
+        const QByteArray &adu = m_pending->adu;
+        const double at = nowMs() - m_sentAtMs;
+        if (m_rx.size() < adu.size() && adu.startsWith(m_rx))
+            return; // the start of the echo (or of a write's answer): wait for the rest
+        if (m_rx.startsWith(adu)) {
+            const int fc = quint8(adu.at(1));
+            const bool looksLikeAnswer = fc == 0x05 || fc == 0x06;
+            if (m_settings.echo && !m_echoStripped) {
+                m_echoStripped = true;
+                Q_EMIT frame(false, adu, 1, 2);
+                m_rx.remove(0, int(adu.size()));
+                continue;
+            }
+            if (!m_settings.echo &&
+                (!looksLikeAnswer || at <= m_byteMs * double(adu.size()) + kEchoSlackMs)) {
+                Q_EMIT frame(false, adu, 1, 2);
+                m_rx.remove(0, int(adu.size()));
+                LinkAnswer a;
+                a.kind = LinkAnswer::Kind::Echo;
+                finish(a);
+                return;
+            }
+        }
+        const int length = RtuFrame::answerLength(m_rx);
+        if (length == 0)
+            return;
+        if (length < 0 || length > 256) {
+            discard(std::exchange(m_rx, {}), tr("bytes that are no answer frame"));
+            return;
+        }
+        if (m_rx.size() < length)
+            return;
+        const QByteArray f = m_rx.left(length);
+        m_rx.remove(0, length);
+        if (!RtuFrame::crcOk(f)) {
+            // The rest of the burst cannot be framed reliably either.
+            ++m_crcErrors;
+            discard(f + std::exchange(m_rx, {}), tr("an answer with a bad checksum (CRC)"));
+            return;
+        }
+        if (quint8(f.at(0)) != m_pending->unit) {
+            discard(
+                f,
+                tr("an answer from device %1, not %2").arg(quint8(f.at(0))).arg(m_pending->unit));
+            continue;
+        }
+        if (at < m_earliestMs) {
+            discard(f, tr("an answer %1 ms after the request, sooner than the controller can "
+                          "answer (%2 ms): a late answer to an older request")
+                           .arg(at, 0, 'f', 1)
+                           .arg(m_earliestMs + kEarlyMarginMs, 0, 'f', 1));
+            continue;
+        }
+        const int fc = quint8(f.at(1));
+        const QByteArray data = f.mid(2, f.size() - 4);
+        if (const QString why = AnswerCheck::mismatch(m_pending->request, fc, data);
+            !why.isEmpty()) {
+            discard(f, why);
+            continue;
+        }
+        Q_EMIT frame(false, f, 1, 2);
+        LinkAnswer a;
+        a.kind = LinkAnswer::Kind::Answer;
+        a.response = RtuFrame::response(f);
+        a.exceptionCode = AnswerCheck::exceptionCode(fc, data);
+        a.roundTripMs = qint64(std::llround(at));
+        finish(a);
+        return;
+    }
+}
+
+void RtuTransport::onTimeout()
+{
+    if (!m_waiting)
+        return;
+    LinkAnswer a;
+    a.kind = LinkAnswer::Kind::Timeout;
+    a.onlyEcho = m_echoStripped && m_rx.isEmpty();
+    if (!m_rx.isEmpty())
+        discard(std::exchange(m_rx, {}),
+                QCoreApplication::translate("stepcom::RtuTransport", "an incomplete answer"));
+    finish(a);
+}
+
+void RtuTransport::finish(LinkAnswer answer)
+{
+    m_timeoutTimer.stop();
+    m_waiting = false;
+    m_pending.reset();
+    answer.discarded = std::exchange(m_discarded, {});
+    answer.crcErrors = std::exchange(m_crcErrors, 0);
+    if (answer.kind != LinkAnswer::Kind::Answer || !answer.discarded.isEmpty() || !m_rx.isEmpty()) {
+        // Something else is talking on the line: let it finish before the next request.
+        m_stray += std::exchange(m_rx, {});
+        requireQuiet();
+    }
+    Q_EMIT answered(answer);
+}
+
+} // namespace stepcom
