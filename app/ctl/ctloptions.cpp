@@ -29,7 +29,22 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          tr("path")},
         {QStringLiteral("tcp"), tr("Modbus TCP gateway or simulator, HOST[:PORT] (port 502)."),
          tr("host:port")},
+        {QStringLiteral("rtu-tcp"),
+         tr("RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, "
+            "HOST:PORT."),
+         tr("host:port")},
         {QStringLiteral("sim"), tr("Use the built-in simulated controller.")},
+        {QStringLiteral("echo"),
+         tr("The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo "
+            "suppression): remove the request's own bytes before the answer.")},
+        {QStringLiteral("answer-delay"),
+         tr("The controller answers no sooner than this after a request; sooner answers are "
+            "discarded as late answers to an older one (default 35)."),
+         tr("ms"), QStringLiteral("35")},
+        {QStringLiteral("turnaround"),
+         tr("Extra silence after an answer before the next request, for converters that need "
+            "it (default 0)."),
+         tr("ms"), QStringLiteral("0")},
         {QStringLiteral("baud"), tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600)."),
          tr("rate"), QStringLiteral("9600")},
         {QStringLiteral("parity"), tr("Parity: none, even or odd (default none)."), tr("parity"),
@@ -64,11 +79,11 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
 QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out)
 {
     CtlOptions o;
-    const int targets = int(parser.isSet(QStringLiteral("port"))) +
-                        int(parser.isSet(QStringLiteral("tcp"))) +
-                        int(parser.isSet(QStringLiteral("sim")));
+    const int targets =
+        int(parser.isSet(QStringLiteral("port"))) + int(parser.isSet(QStringLiteral("tcp"))) +
+        int(parser.isSet(QStringLiteral("rtu-tcp"))) + int(parser.isSet(QStringLiteral("sim")));
     if (targets > 1)
-        return tr("give only one of --port, --tcp and --sim");
+        return tr("give only one of --port, --tcp, --rtu-tcp and --sim");
     if (parser.isSet(QStringLiteral("port"))) {
         o.target = Target::Port;
         o.link.transport = LinkSettings::Transport::Rtu;
@@ -82,6 +97,17 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         o.link.tcpPort = 502;
         if (colon >= 0 && !toInt(value.mid(colon + 1), &o.link.tcpPort))
             return tr("--tcp: '%1' is not HOST[:PORT]").arg(value);
+    } else if (parser.isSet(QStringLiteral("rtu-tcp"))) {
+        // Reached like a Modbus TCP gateway (a host, no baud of ours), framed as RTU.
+        o.target = Target::Tcp;
+        o.link.transport = LinkSettings::Transport::RtuTcp;
+        const QString value = parser.value(QStringLiteral("rtu-tcp"));
+        const qsizetype colon = value.lastIndexOf(QLatin1Char(':'));
+        o.link.host = colon < 0 ? QString() : value.left(colon);
+        if (colon <= 0 || !toInt(value.mid(colon + 1), &o.link.tcpPort))
+            return tr("--rtu-tcp: '%1' is not HOST:PORT (converters have no standard port: "
+                      "see its settings page)")
+                .arg(value);
     } else if (parser.isSet(QStringLiteral("sim"))) {
         o.target = Target::Sim;
     }
@@ -103,6 +129,15 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         return tr("--timeout: '%1' is not a number").arg(parser.value(QStringLiteral("timeout")));
     if (!toInt(parser.value(QStringLiteral("retries")), &o.link.retries))
         return tr("--retries: '%1' is not a number").arg(parser.value(QStringLiteral("retries")));
+    if (!toInt(parser.value(QStringLiteral("answer-delay")), &o.link.answerDelayMs))
+        return tr("--answer-delay: '%1' is not a number of ms")
+            .arg(parser.value(QStringLiteral("answer-delay")));
+    if (!toInt(parser.value(QStringLiteral("turnaround")), &o.link.turnaroundMs))
+        return tr("--turnaround: '%1' is not a number of ms")
+            .arg(parser.value(QStringLiteral("turnaround")));
+    o.link.echo = parser.isSet(QStringLiteral("echo"));
+    if (o.link.echo && o.target == Target::Tcp && o.link.transport == LinkSettings::Transport::Tcp)
+        return tr("--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp");
     if (parser.isSet(QStringLiteral("count")) &&
         (!toInt(parser.value(QStringLiteral("count")), &o.count) || o.count < 1))
         return tr("--count: '%1' is not a positive number")

@@ -165,6 +165,7 @@ bool CtlRunner::startSimulator()
     sim.map = m_map;
 #ifdef Q_OS_UNIX
     sim.rtu = true;
+    sim.echo = m_options.link.echo; // rehearse an echoing adapter
 #else
     sim.tcp = true;
 #endif

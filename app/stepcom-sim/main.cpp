@@ -54,7 +54,7 @@ int main(int argc, char *argv[])
         err << QCoreApplication::translate("stepcom-sim", "stepcom-sim: %1").arg(error) << Qt::endl;
         return 2;
     }
-    if (!options.rtu && !options.tcp && options.serialPort.isEmpty())
+    if (!options.rtu && !options.tcp && !options.rtuTcp && options.serialPort.isEmpty())
         options.rtu = true;
 
     // Before anything is opened, so Ctrl-C during start-up still ends cleanly.
@@ -91,6 +91,11 @@ int main(int argc, char *argv[])
         out << QStringLiteral("serial: %1").arg(options.serialPort) << Qt::endl;
     if (options.tcp)
         out << QStringLiteral("tcp: %1:%2").arg(host.tcpAddress().toString()).arg(host.tcpPort())
+            << Qt::endl;
+    if (options.rtuTcp)
+        out << QStringLiteral("rtu-tcp: %1:%2")
+                   .arg(host.tcpAddress().toString())
+                   .arg(host.rtuTcpPort())
             << Qt::endl;
 
     SimConsole console(&host);

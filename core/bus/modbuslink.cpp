@@ -360,8 +360,9 @@ void ModbusLink::onAnswered(const LinkAnswer &a)
             for (int at = 1; at + 1 < d.size(); at += 2)
                 r.values << quint16((quint8(d.at(at)) << 8) | quint8(d.at(at + 1)));
         }
-        // A write that needed another try: the read-back must not meet a late answer.
-        if (item.attempts > 1 && req.type == Request::Type::WriteHolding)
+        // Another try was needed: the answers of the earlier ones may still come, and the next
+        // request (a write's read-back) must not meet them.
+        if (item.attempts > 1)
             m_backend->requireQuiet();
         break;
     case LinkAnswer::Kind::Timeout:

@@ -130,6 +130,9 @@ void RtuTransport::open(const LinkSettings &settings)
     });
     connect(port, &QSerialPort::readyRead, this, &RtuTransport::onReadyRead);
     port->clear(); // whatever waited in the driver belongs to no request of ours
+    // An answer to a program that used the line before may still be on its way: the first
+    // request waits until the line has been quiet.
+    requireQuiet();
     m_opening = false;
     Q_EMIT opened(true, QString());
 }
@@ -142,6 +145,8 @@ void RtuTransport::close()
     m_waiting = false;
     m_rx.clear();
     m_stray.clear();
+    m_strayParsed = 0;
+    m_owed.clear();
     m_discarded.clear();
     m_crcErrors = 0;
     if (QIODevice *device = m_device.data()) {
@@ -177,6 +182,7 @@ void RtuTransport::send(int unit, const QModbusRequest &request, int timeoutMs)
 {
     Pending p;
     p.unit = unit;
+    m_unit = unit;
     p.request = request;
     p.adu = RtuFrame::adu(unit, request);
     p.timeoutMs = timeoutMs;
@@ -195,6 +201,12 @@ void RtuTransport::scheduleWrite()
         at = std::max(at, m_lastRxMs + std::max(m_gapMs, double(m_settings.turnaroundMs)));
     if (m_needQuiet) // drain: the line has to be silent for the quiet time first
         at = std::max(at, std::max(m_quietFromMs, m_lastRxMs) + m_quietMs);
+    // An answer still owed to another request would be taken for this one's: wait for it.
+    pruneOwed();
+    for (const Owed &o : std::as_const(m_owed)) {
+        if (o.adu != m_pending->adu)
+            at = std::max(at, o.untilMs);
+    }
     if (at > now + 0.05) {
         m_writeTimer.start(int(std::ceil(at - now)));
         return;
@@ -205,6 +217,7 @@ void RtuTransport::scheduleWrite()
 void RtuTransport::writeNow()
 {
     m_needQuiet = false;
+    m_strayParsed = 0;
     if (!m_stray.isEmpty())
         discard(std::exchange(m_stray, {}),
                 QCoreApplication::translate("stepcom::RtuTransport",
@@ -243,6 +256,8 @@ void RtuTransport::onReadyRead()
         m_stray += bytes;
         m_needQuiet = true;
         m_quietFromMs = m_lastRxMs;
+        takeStrayFrames();
+        scheduleWrite(); // a request waiting for an owed answer may go sooner now
         return;
     }
     m_rx += bytes;
@@ -308,6 +323,32 @@ void RtuTransport::processBuffer()
                 tr("an answer from device %1, not %2").arg(quint8(f.at(0))).arg(m_pending->unit));
             continue;
         }
+        pruneOwed();
+        if (!m_owed.isEmpty()) {
+            // The controller answers in order: this is the oldest owed answer.
+            const Owed owed = m_owed.takeFirst();
+            if (owed.adu != adu) {
+                discard(f, tr("a late answer to an earlier request"));
+                continue;
+            }
+            // An earlier attempt of this very request: its answer is this one's too.
+            if (const QString why = AnswerCheck::mismatch(m_pending->request, quint8(f.at(1)),
+                                                          f.mid(2, f.size() - 4));
+                !why.isEmpty()) {
+                discard(f, why);
+                continue;
+            }
+            Q_EMIT frame(false, f, 1, 2);
+            // ...and this attempt's own answer may still come.
+            m_owed.append({adu, m_sentAtMs + kOwedTimeouts * m_pending->timeoutMs});
+            LinkAnswer a;
+            a.kind = LinkAnswer::Kind::Answer;
+            a.response = RtuFrame::response(f);
+            a.exceptionCode = AnswerCheck::exceptionCode(quint8(f.at(1)), f.mid(2, f.size() - 4));
+            a.roundTripMs = qint64(std::llround(at));
+            finish(a);
+            return;
+        }
         if (at < m_earliestMs) {
             discard(f, tr("an answer %1 ms after the request, sooner than the controller can "
                           "answer (%2 ms): a late answer to an older request")
@@ -337,6 +378,7 @@ void RtuTransport::onTimeout()
 {
     if (!m_waiting)
         return;
+    m_owed.append({m_pending->adu, m_sentAtMs + kOwedTimeouts * m_pending->timeoutMs});
     LinkAnswer a;
     a.kind = LinkAnswer::Kind::Timeout;
     a.onlyEcho = m_echoStripped && m_rx.isEmpty();
@@ -344,6 +386,30 @@ void RtuTransport::onTimeout()
         discard(std::exchange(m_rx, {}),
                 QCoreApplication::translate("stepcom::RtuTransport", "an incomplete answer"));
     finish(a);
+}
+
+void RtuTransport::pruneOwed()
+{
+    const double now = nowMs();
+    m_owed.removeIf([now](const Owed &o) { return o.untilMs <= now; });
+}
+
+void RtuTransport::takeStrayFrames()
+{
+    // Each complete frame of our unit between requests is the oldest owed answer.
+    while (true) {
+        const QByteArray rest = m_stray.mid(m_strayParsed);
+        const int length = RtuFrame::answerLength(rest);
+        if (length <= 0 || rest.size() < length)
+            return;
+        const QByteArray f = rest.left(length);
+        if (!RtuFrame::crcOk(f))
+            return; // noise: the rest cannot be framed; it is discarded with the next request
+        m_strayParsed += length;
+        pruneOwed();
+        if (!m_owed.isEmpty() && quint8(f.at(0)) == m_unit)
+            m_owed.removeFirst();
+    }
 }
 
 void RtuTransport::finish(LinkAnswer answer)
@@ -356,6 +422,7 @@ void RtuTransport::finish(LinkAnswer answer)
     if (answer.kind != LinkAnswer::Kind::Answer || !answer.discarded.isEmpty() || !m_rx.isEmpty()) {
         // Something else is talking on the line: let it finish before the next request.
         m_stray += std::exchange(m_rx, {});
+        takeStrayFrames();
         requireQuiet();
     }
     Q_EMIT answered(answer);

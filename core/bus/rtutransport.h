@@ -40,6 +40,10 @@ public:
     static QString notASerialPort(const QString &path);
     // An answer sooner than the request's frame plus the answer delay minus this is stale.
     static constexpr double kEarlyMarginMs = 3.0;
+    // How long after an attempt that timed out its answer is still expected, in timeouts: a
+    // different request waits until then (or until that answer came), the same request may
+    // go again and take it.
+    static constexpr int kOwedTimeouts = 2;
 
 private:
     struct Pending
@@ -48,6 +52,14 @@ private:
         QModbusRequest request;
         QByteArray adu;
         int timeoutMs = 500;
+    };
+
+    // An attempt that timed out: its answer may still come, and a controller answers in
+    // order, so the next frames are its until it came or `untilMs` passed.
+    struct Owed
+    {
+        QByteArray adu;
+        double untilMs = 0;
     };
 
     double nowMs() const { return double(m_clock.nsecsElapsed()) / 1e6; }
@@ -59,6 +71,8 @@ private:
     void discard(const QByteArray &bytes, const QString &why);
     void finish(LinkAnswer answer);
     void onTimeout();
+    void pruneOwed();
+    void takeStrayFrames();
 
     LinkSettings m_settings;
     QPointer<QIODevice> m_device;
@@ -80,6 +94,9 @@ private:
     QByteArray m_stray; // bytes that arrived between transactions
     QStringList m_discarded;
     int m_crcErrors = 0;
+    QList<Owed> m_owed;
+    int m_unit = 1;
+    int m_strayParsed = 0; // bytes of m_stray already cut into frames
     QTimer m_writeTimer;
     QTimer m_timeoutTimer;
 };

@@ -43,6 +43,14 @@ void SimCommandLine::addOptions(QCommandLineParser &p)
                  tr("Serve Modbus TCP on [HOST:]PORT (127.0.0.1 unless --listen-any; port 0 "
                     "picks a free one)."),
                  tr("[HOST:]PORT")});
+    p.addOption({QStringLiteral("rtu-tcp"),
+                 tr("Serve Modbus RTU frames over plain TCP on [HOST:]PORT, as a transparent "
+                    "RS-485/Ethernet converter passes them on (port 0 picks a free one)."),
+                 tr("[HOST:]PORT")});
+    p.addOption({QStringLiteral("echo"),
+                 tr("Send every byte the client sends straight back to it first, as a "
+                    "half-duplex USB-RS485 adapter without echo suppression does (pty and "
+                    "--rtu-tcp).")});
     p.addOption({QStringLiteral("listen-any"), tr("Listen for TCP on every interface.")});
     p.addOption({QStringLiteral("strict-reads"),
                  tr("Refuse reads of reserved registers (exception 02) instead of reading 0.")});
@@ -161,6 +169,21 @@ bool SimCommandLine::toOptions(const QCommandLineParser &p, SimOptions *o, QStri
         if (!parseTcp(p.value(QStringLiteral("tcp")), &o->tcpAddress, &o->tcpPort, error))
             return false;
     }
+    if (p.isSet(QStringLiteral("rtu-tcp"))) {
+        o->rtuTcp = true;
+        QHostAddress address = o->tcpAddress;
+        if (!parseTcp(p.value(QStringLiteral("rtu-tcp")), &address, &o->rtuTcpPort, error)) {
+            if (error)
+                error->replace(QStringLiteral("--tcp"), QStringLiteral("--rtu-tcp"));
+            return false;
+        }
+        if (p.isSet(QStringLiteral("tcp")) && address != o->tcpAddress)
+            return fail(tr("--rtu-tcp and --tcp must listen on the same host"));
+        o->tcpAddress = address;
+    }
+    o->echo = p.isSet(QStringLiteral("echo"));
+    if (o->echo && !o->serialPort.isEmpty())
+        return fail(tr("--echo works on the pseudo-terminal and --rtu-tcp, not with --serial"));
     if (p.isSet(QStringLiteral("listen-any")))
         o->tcpAddress = QHostAddress(QHostAddress::Any);
     o->statePath = p.value(QStringLiteral("state"));

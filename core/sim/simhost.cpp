@@ -72,6 +72,7 @@ bool SimHost::start(const SimOptions &options, QString *error)
         return false;
     }
     m_tcpPort = m_worker->tcpPort();
+    m_rtuTcpPort = m_worker->rtuTcpPort();
     return true;
 }
 
@@ -88,6 +89,7 @@ void SimHost::stop()
     delete m_thread;
     m_thread = nullptr;
     m_tcpPort = 0;
+    m_rtuTcpPort = 0;
     QMutexLocker lock(&m_pathMutex);
     m_ptyPath.clear();
 }

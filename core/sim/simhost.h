@@ -51,6 +51,8 @@ public:
     QString rtuPath() const;
     QString ptyPath() const;
     quint16 tcpPort() const { return m_tcpPort; }
+    // RTU over TCP (SimOptions::rtuTcp), on tcpAddress().
+    quint16 rtuTcpPort() const { return m_rtuTcpPort; }
     QHostAddress tcpAddress() const { return m_options.tcpAddress; }
     const SimOptions &options() const { return m_options; }
 
@@ -73,6 +75,7 @@ private:
     QThread *m_thread = nullptr;
     SimWorker *m_worker = nullptr;
     quint16 m_tcpPort = 0;
+    quint16 m_rtuTcpPort = 0;
     mutable QMutex m_pathMutex;
     QString m_ptyPath;
 };

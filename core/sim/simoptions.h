@@ -25,6 +25,14 @@ struct SimOptions
     // at the device's baud rate (register 40213), 8N1, and follows it when it changes.
     QString serialPort;
 
+    // The adapter hears itself: every byte the client sends on the pty (or over RTU over TCP)
+    // comes straight back to it, as on half-duplex USB-RS485 adapters without echo suppression.
+    bool echo = false;
+
+    // Modbus RTU frames over plain TCP, as behind a transparent RS-485/Ethernet converter.
+    bool rtuTcp = false;
+    quint16 rtuTcpPort = 0; // 0: any free port, see SimHost::rtuTcpPort()
+
     bool tcp = false; // Modbus TCP
     QHostAddress tcpAddress = QHostAddress(QHostAddress::LocalHost);
     quint16 tcpPort = 0; // 0: any free port, see SimHost::tcpPort()

@@ -4,6 +4,7 @@
 #include "sim/simdevice.h"
 #include "sim/simresponder.h"
 #include "sim/simrtuserver.h"
+#include "sim/simrtutcpserver.h"
 #include "sim/simtcpserver.h"
 
 #include <QModbusDevice>
@@ -73,6 +74,13 @@ bool SimWorker::open(QString *error)
         m_tcpPort = m_tcp->port();
         connect(m_tcp, &SimTcpServer::hangUpRequested, this, &SimWorker::scheduleHangUp);
     }
+    if (m_options.rtuTcp) {
+        m_rtuTcp = new SimRtuTcpServer(m_responder.get(), m_options.echo, this);
+        if (!m_rtuTcp->listen(m_options.tcpAddress, m_options.rtuTcpPort, error))
+            return false;
+        m_rtuTcpPort = m_rtuTcp->port();
+        connect(m_rtuTcp, &SimRtuTcpServer::hangUpRequested, this, &SimWorker::scheduleHangUp);
+    }
     return true;
 }
 
@@ -83,6 +91,9 @@ bool SimWorker::openRtu(QString *error)
         m_bridge = new PtyBridge(this);
         // Side A is the controller, side B the client's end.
         m_bridge->setTap([this](PtyBridge::Side from, const QByteArray &bytes) {
+            // An echoing adapter: the client hears its own bytes at once.
+            if (from == PtyBridge::Side::B && m_options.echo && !bytes.isEmpty())
+                m_bridge->inject(PtyBridge::Side::B, bytes);
             if (from != PtyBridge::Side::A || !m_rtu || bytes.isEmpty() || !m_rtu->takeCorruptCrc())
                 return bytes;
             QByteArray bad = bytes;
@@ -203,6 +214,8 @@ void SimWorker::hangUp(int pauseMs)
 #endif
     if (m_tcp)
         m_tcp->hangUp(pause);
+    if (m_rtuTcp)
+        m_rtuTcp->hangUp(pause);
     Q_EMIT hungUp();
 }
 
@@ -221,6 +234,10 @@ void SimWorker::close()
 #endif
     if (m_tcp)
         m_tcp->close();
+    if (m_rtuTcp)
+        m_rtuTcp->close();
+    delete m_rtuTcp;
+    m_rtuTcp = nullptr;
     delete m_rtu;
     m_rtu = nullptr;
     delete m_bridge;

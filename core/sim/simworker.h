@@ -19,6 +19,7 @@ class SimDevice;
 class SimResponder;
 class SimRtuServer;
 class SimTcpServer;
+class SimRtuTcpServer;
 
 // The transports of a SimHost, living in the simulator's own thread: the pty bridge with the
 // RTU server on its device side (or the RTU server on a serial port), the TCP server, hang-ups
@@ -38,6 +39,7 @@ public:
 
     QString ptyPath() const { return m_ptyPath; }
     quint16 tcpPort() const { return m_tcpPort; }
+    quint16 rtuTcpPort() const { return m_rtuTcpPort; }
     SimResponder *responder() const { return m_responder.get(); }
     // Called from the worker's thread whenever the pty path changes (empty while hung up).
     std::function<void(const QString &)> onPtyPath;
@@ -61,10 +63,12 @@ private:
     PtyBridge *m_bridge = nullptr;
     SimRtuServer *m_rtu = nullptr;
     SimTcpServer *m_tcp = nullptr;
+    SimRtuTcpServer *m_rtuTcp = nullptr;
     QTimer *m_reopen = nullptr;
     QTimer *m_sync = nullptr; // keeps the model close to real time between requests
     QString m_ptyPath;
     quint16 m_tcpPort = 0;
+    quint16 m_rtuTcpPort = 0;
 };
 
 } // namespace stepcom
