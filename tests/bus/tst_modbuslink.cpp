@@ -233,6 +233,35 @@ private Q_SLOTS:
             qPrintable(o.result.errorText));
     }
 
+    // Regression: an FC06 answer for another address (01 06 00 50 ...) to a write of 00 B0 was
+    // taken; and an answer sooner than the controller can answer is a late one.
+    void foreignAndEarlyAnswersAreDiscarded()
+    {
+        device->setResponder([this](const QByteArray &r, int index) -> std::optional<QByteArray> {
+            if (index == 0) {
+                // At once (too soon, another value), then one for 0x0050, then the real one.
+                device->bridge().inject(PtyBridge::Side::A, withCrc(fromHex("01 06 00 B0 00 02")));
+                QTimer::singleShot(40, this, [this] {
+                    device->bridge().inject(PtyBridge::Side::A,
+                                            withCrc(fromHex("01 06 00 50 00 01")));
+                });
+                QTimer::singleShot(80, this,
+                                   [this, r] { device->bridge().inject(PtyBridge::Side::A, r); });
+            }
+            return std::nullopt;
+        });
+        openLink(300, 0);
+        Outcome o;
+        link->submit(Request::write(0xB0, {1}), into(&o));
+        QTRY_VERIFY(o.done);
+        QVERIFY2(o.result.ok, qPrintable(o.result.errorText));
+        QCOMPARE(link->stats().stale, quint64(2));
+        bool logged = false;
+        for (const TrafficEntry &e : link->traffic()->entries())
+            logged |= e.summary.contains(QStringLiteral("stale/foreign answer"));
+        QVERIFY(logged);
+    }
+
     void motionCommandIsNeverRetried()
     {
         openLink(80, 3); // silent device

@@ -1,0 +1,278 @@
+// The link on a bad line against the simulator: late answers, an echoing adapter, RTU over
+// TCP. Whatever the line does, nothing is reported done that the controller does not hold.
+#include "bus/modbuslink.h"
+#include "bus/trafficlog.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+
+#include <QDeadlineTimer>
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace stepcom;
+
+namespace {
+
+struct Outcome
+{
+    bool done = false;
+    Result result;
+};
+
+// Single-register parameters with their protocol addresses.
+const QList<std::pair<QString, quint16>> &keys()
+{
+    static const QList<std::pair<QString, quint16>> k{
+        {QStringLiteral("motor1.speed"), 5},
+        {QStringLiteral("motor2.speed"), 15},
+        {QStringLiteral("motor1.start_frequency"), 2},
+        {QStringLiteral("motor2.start_frequency"), 12},
+        {QStringLiteral("motor1.accel_frequency"), 3},
+        {QStringLiteral("motor2.accel_frequency"), 13},
+    };
+    return k;
+}
+
+} // namespace
+
+class TestLineAnswers : public QObject
+{
+    Q_OBJECT
+
+    std::unique_ptr<SimHost> host;
+    std::unique_ptr<ModbusLink> link;
+
+    bool startSim(const SimOptions &options)
+    {
+        host = std::make_unique<SimHost>();
+        QString error;
+        if (!host->start(options, &error)) {
+            qWarning() << error;
+            return false;
+        }
+        return true;
+    }
+    bool openLink(LinkSettings s)
+    {
+        link = std::make_unique<ModbusLink>();
+        QSignalSpy opened(link.get(), &ModbusLink::opened);
+        link->open(s);
+        if (!opened.wait(5000) && opened.isEmpty())
+            return false;
+        return opened.at(0).at(0).toBool();
+    }
+    Result run(const Request &request)
+    {
+        Outcome o;
+        link->submit(request, [&o](const Result &r) {
+            o.done = true;
+            o.result = r;
+        });
+        // Every request ends (timeouts and retries included) well within this.
+        QDeadlineTimer limit(30000);
+        while (!o.done && !limit.hasExpired())
+            QTest::qWait(5);
+        if (!o.done)
+            o.result.errorText = QStringLiteral("the request never ended");
+        return o.result;
+    }
+
+private Q_SLOTS:
+    void cleanup()
+    {
+        link.reset();
+        host.reset();
+    }
+
+    // Late answers at several rates and delays while reading, writing and commanding: every
+    // value reported read is the controller's, every write reported done is held by it, every
+    // command reported done happened.
+    void lateAnswersNeverPassForAnother_data()
+    {
+        QTest::addColumn<double>("share");
+        QTest::addColumn<int>("lateMs");
+        QTest::addColumn<int>("timeoutMs");
+        QTest::addColumn<bool>("overTcp");
+        QTest::newRow("half 700 ms late, timeout 500") << 0.5 << 700 << 500 << false;
+        QTest::newRow("a third 300 ms late, timeout 250") << 0.33 << 300 << 250 << false;
+        QTest::newRow("half 120 ms late, timeout 100") << 0.5 << 120 << 100 << false;
+        QTest::newRow("RTU over TCP, half 400 ms late") << 0.5 << 400 << 300 << true;
+    }
+    void lateAnswersNeverPassForAnother()
+    {
+        QFETCH(double, share);
+        QFETCH(int, lateMs);
+        QFETCH(int, timeoutMs);
+        QFETCH(bool, overTcp);
+        SimOptions options;
+        options.rtu = !overTcp;
+        options.rtuTcp = overTcp;
+        options.faults.late = share;
+        options.faults.lateMs = lateMs;
+        options.faults.seed = 11;
+        QVERIFY(startSim(options));
+        for (int i = 0; i < keys().size(); ++i)
+            QVERIFY(host->device()->setValue(keys().at(i).first, 101 + i));
+        LinkSettings s;
+        if (overTcp) {
+            s.transport = LinkSettings::Transport::RtuTcp;
+            s.tcpPort = host->rtuTcpPort();
+        } else {
+            s.portName = host->rtuPath();
+        }
+        s.timeoutMs = timeoutMs;
+        s.retries = 2;
+        QVERIFY(openLink(s));
+        int ok = 0;
+        for (int round = 0; round < 1; ++round) {
+            for (int i = 0; i < keys().size(); ++i) {
+                const auto &[key, address] = keys().at(i);
+                const Result read = run(Request::read(address, 1));
+                if (read.ok) {
+                    ++ok;
+                    QCOMPARE(qint64(read.values.value(0)), *host->device()->value(key));
+                }
+                const quint16 value = quint16(200 + 10 * round + i);
+                const Result write = run(Request::write(address, {value}));
+                if (write.ok) {
+                    ++ok;
+                    QCOMPARE(*host->device()->value(key), qint64(value));
+                }
+            }
+            // Output 1 on (00049) and off (00050): done only when the controller did it.
+            for (const bool on : {true, false}) {
+                Request coil = Request::coil(on ? 48 : 49, true);
+                coil.retryable = false;
+                const Result r = run(coil);
+                if (r.ok) {
+                    ++ok;
+                    QCOMPARE(*host->device()->value(QStringLiteral("io.out1")), qint64(on));
+                }
+            }
+        }
+        QVERIFY2(ok > 0, "nothing at all succeeded");
+        QVERIFY(host->stats().late > 0);
+        qInfo("%d of %d succeeded; %llu stale answers discarded", ok, 2 * int(keys().size()) + 2,
+              link->stats().stale);
+    }
+
+    // An FC06 answer for another address (01 06 00 50 ... to a write of 00 B0) is not the answer.
+    void echoOffIsDetectedAndSuggested()
+    {
+        SimOptions options;
+        options.rtu = true;
+        options.echo = true;
+        QVERIFY(startSim(options));
+        LinkSettings s;
+        s.portName = host->rtuPath();
+        s.timeoutMs = 300;
+        QVERIFY(openLink(s));
+        QSignalSpy echo(link.get(), &ModbusLink::echoDetected);
+        const Result read = run(Request::read(5, 1));
+        QVERIFY(!read.ok);
+        QVERIFY2(read.errorText.contains(QStringLiteral("echoes what it sends")),
+                 qPrintable(read.errorText));
+        QVERIFY2(read.errorText.contains(QStringLiteral("--echo")), qPrintable(read.errorText));
+        QCOMPARE(echo.size(), 1);
+        Request estop = Request::coil(41, true, Priority::Emergency);
+        estop.retryable = false;
+        const Result command = run(estop);
+        QVERIFY2(!command.ok, "an echo was taken for the answer to a command");
+        QCOMPARE(link->stats().echoes, quint64(2));
+    }
+
+    void echoOnWorks_data()
+    {
+        QTest::addColumn<bool>("overTcp");
+        QTest::newRow("pty") << false;
+        QTest::newRow("RTU over TCP") << true;
+    }
+    void echoOnWorks()
+    {
+        QFETCH(bool, overTcp);
+        SimOptions options;
+        options.rtu = !overTcp;
+        options.rtuTcp = overTcp;
+        options.echo = true;
+        QVERIFY(startSim(options));
+        LinkSettings s;
+        if (overTcp) {
+            s.transport = LinkSettings::Transport::RtuTcp;
+            s.tcpPort = host->rtuTcpPort();
+        } else {
+            s.portName = host->rtuPath();
+        }
+        s.echo = true;
+        QVERIFY(openLink(s));
+        QVERIFY(host->device()->setValue(QStringLiteral("motor1.speed"), 321));
+        const Result read = run(Request::read(5, 1));
+        QVERIFY2(read.ok, qPrintable(read.errorText));
+        QCOMPARE(read.values, QVector<quint16>{321});
+        const Result write = run(Request::write(15, {222}));
+        QVERIFY2(write.ok, qPrintable(write.errorText));
+        QCOMPARE(*host->device()->value(QStringLiteral("motor2.speed")), 222);
+        const Result block = run(Request::write(6, {0x1234, 0}));
+        QVERIFY2(block.ok, qPrintable(block.errorText));
+        const Result on = run(Request::coil(48, true));
+        QVERIFY2(on.ok, qPrintable(on.errorText));
+        QCOMPARE(*host->device()->value(QStringLiteral("io.out1")), 1);
+        QCOMPARE(link->stats().echoes, quint64(0));
+        QCOMPARE(link->stats().stale, quint64(0));
+    }
+
+    // RTU over TCP: the manual's frames reach the controller and its answers come back.
+    void rtuOverTcpReadWriteCommand()
+    {
+        SimOptions options;
+        options.rtuTcp = true;
+        QVERIFY(startSim(options));
+        LinkSettings s;
+        s.transport = LinkSettings::Transport::RtuTcp;
+        s.tcpPort = host->rtuTcpPort();
+        QVERIFY(openLink(s));
+        const Result read = run(Request::read(0, 2));
+        QVERIFY2(read.ok, qPrintable(read.errorText));
+        QCOMPARE(read.values, (QVector<quint16>{180, 8}));
+        const Result write = run(Request::write(1, {4}));
+        QVERIFY2(write.ok, qPrintable(write.errorText));
+        QCOMPARE(*host->device()->value(QStringLiteral("motor1.microsteps")), 4);
+        const Result coil = run(Request::coil(48, true));
+        QVERIFY2(coil.ok, qPrintable(coil.errorText));
+        QCOMPARE(*host->device()->value(QStringLiteral("io.out1")), 1);
+        // Another id is silence, and says what to check.
+        link->setDeviceId(7);
+        const Result none = run(Request::read(0, 1));
+        QVERIFY(!none.ok);
+        QVERIFY2(none.errorText.contains(QStringLiteral("device id (7)")),
+                 qPrintable(none.errorText));
+        // The traffic log shows the RTU frames, CRC included.
+        bool sawFrame = false;
+        for (const TrafficEntry &e : link->traffic()->entries())
+            sawFrame |= e.bytes == QByteArray::fromHex("010300000002C40B");
+        QVERIFY(sawFrame);
+    }
+
+    // A busy controller (exception 06) did nothing: the request goes again after a pause.
+    void busyIsRetriedAfterAPause()
+    {
+        SimOptions options;
+        options.rtu = true;
+        options.faults.exception = 0.5;
+        options.faults.exceptionCode = 6;
+        options.faults.seed = 5;
+        QVERIFY(startSim(options));
+        LinkSettings s;
+        s.portName = host->rtuPath();
+        s.retries = 6;
+        QVERIFY(openLink(s));
+        for (int i = 0; i < 6; ++i) {
+            const Result write = run(Request::write(5, {quint16(400 + i)}));
+            QVERIFY2(write.ok, qPrintable(write.errorText));
+            QCOMPARE(*host->device()->value(QStringLiteral("motor1.speed")), 400 + i);
+        }
+        QVERIFY(link->stats().exceptionsByCode.value(6) > 0);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestLineAnswers)
+#include "tst_lineanswers.moc"
