@@ -18,7 +18,7 @@ void BusScanner::start(const LinkSettings &base, const QList<int> &bauds, int fi
 {
     cancel();
     m_base = base;
-    m_bauds = base.transport == LinkSettings::Transport::Tcp ? QList<int>{base.baud} : bauds;
+    m_bauds = base.isNetwork() ? QList<int>{base.baud} : bauds;
     m_firstId = std::clamp(firstId, 1, 255);
     m_lastId = std::clamp(lastId, m_firstId, 255);
     m_timeoutMs = std::max(20, probeTimeoutMs);

@@ -2,6 +2,7 @@
 // TCP. Whatever the line does, nothing is reported done that the controller does not hold.
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
+#include "device/busscanner.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 
@@ -250,6 +251,25 @@ private Q_SLOTS:
         for (const TrafficEntry &e : link->traffic()->entries())
             sawFrame |= e.bytes == QByteArray::fromHex("010300000002C40B");
         QVERIFY(sawFrame);
+    }
+
+    // The bus scan over a transparent converter: ids only (the converter's baud is its own).
+    void scanOverRtuTcpFindsTheController()
+    {
+        SimOptions options;
+        options.rtuTcp = true;
+        options.deviceId = 3;
+        QVERIFY(startSim(options));
+        LinkSettings base;
+        base.transport = LinkSettings::Transport::RtuTcp;
+        base.tcpPort = host->rtuTcpPort();
+        BusScanner scanner;
+        QSignalSpy finished(&scanner, &BusScanner::finished);
+        scanner.start(base, {9600, 19200}, 1, 5, 150);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+        QCOMPARE(scanner.total(), 5); // one baud: the converter's
+        QCOMPARE(scanner.found().size(), 1);
+        QCOMPARE(scanner.found().first().deviceId, 3);
     }
 
     // A busy controller (exception 06) did nothing: the request goes again after a pause.

@@ -28,7 +28,7 @@ bool samePort(const LinkSettings &a, const LinkSettings &b)
 {
     if (a.transport != b.transport)
         return false;
-    if (a.transport == LinkSettings::Transport::Tcp)
+    if (a.isNetwork())
         return a.host == b.host && a.tcpPort == b.tcpPort;
     if (a.portName == b.portName)
         return true;
@@ -256,8 +256,12 @@ QString BusScanDialog::parityText(QSerialPort::Parity parity)
 void BusScanDialog::setBaseSettings(const LinkSettings &base)
 {
     m_base = base;
-    const bool tcp = base.transport == LinkSettings::Transport::Tcp;
-    m_port->setText(tcp ? tr("%1:%2 (Modbus TCP)").arg(base.host).arg(base.tcpPort)
+    const bool tcp = base.isNetwork();
+    m_port->setText(tcp ? (base.transport == LinkSettings::Transport::Tcp
+                               ? tr("%1:%2 (Modbus TCP)")
+                               : tr("%1:%2 (RTU over TCP)"))
+                              .arg(base.host)
+                              .arg(base.tcpPort)
                         : tr("%1, parity %2, %n stop bit(s)", nullptr,
                              base.stopBits == QSerialPort::TwoStop ? 2 : 1)
                               .arg(base.portName.isEmpty() ? tr("(no port chosen)") : base.portName,
@@ -300,7 +304,7 @@ void BusScanDialog::setStopAtFirst(bool stop)
 
 QList<int> BusScanDialog::scanOrder() const
 {
-    if (m_base.transport == LinkSettings::Transport::Tcp)
+    if (m_base.isNetwork())
         return {m_base.baud};
     // The most likely first: the port's current baud, the factory 9600, then the rest.
     QList<int> order;

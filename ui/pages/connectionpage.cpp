@@ -7,6 +7,7 @@
 #include "widgets/led.h"
 
 #include <QButtonGroup>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -157,6 +158,8 @@ void ConnectionPage::buildUi()
     m_tcpBox = new QGroupBox(this);
     m_tcpForm = newForm(m_tcpBox);
     m_tcpForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    m_tcpMode = addRow(m_tcpForm, newCombo(m_tcpBox, {{QString(), 0}, {QString(), 1}}));
+    m_tcpMode->setObjectName(QStringLiteral("tcpMode"));
     m_host = addRow(m_tcpForm, new QLineEdit(m_tcpBox));
     m_host->setObjectName(QStringLiteral("host"));
     m_tcpPort = addRow(m_tcpForm, newSpin(m_tcpBox, 1, 65535));
@@ -167,6 +170,11 @@ void ConnectionPage::buildUi()
     m_deviceId = addRow(m_deviceForm, newSpin(m_deviceBox, 1, 255));
     m_timeout = addRow(m_deviceForm, newSpin(m_deviceBox, 20, 60000, 50));
     m_retries = addRow(m_deviceForm, newSpin(m_deviceBox, 0, 10));
+    m_answerDelay = addRow(m_deviceForm, newSpin(m_deviceBox, 0, 1000));
+    m_turnaround = addRow(m_deviceForm, newSpin(m_deviceBox, 0, 1000));
+    m_echo = new QCheckBox(m_deviceBox);
+    m_echo->setObjectName(QStringLiteral("echo"));
+    m_deviceForm->addRow(m_echo);
 
     m_simBox = new QGroupBox(this);
     m_simText = new QLabel(m_simBox);
@@ -206,9 +214,10 @@ void ConnectionPage::buildUi()
     outer->addLayout(column, 3);
     outer->addStretch(1);
 
-    QWidget *order[] = {m_serialRadio, m_tcpRadio, m_simRadio,   m_port,    m_refresh,  m_baud,
-                        m_parity,      m_stopBits, m_host,       m_tcpPort, m_deviceId, m_timeout,
-                        m_retries,     m_connect,  m_disconnect, m_scan};
+    QWidget *order[] = {m_serialRadio, m_tcpRadio, m_simRadio, m_port,       m_refresh,
+                        m_baud,        m_parity,   m_stopBits, m_tcpMode,    m_host,
+                        m_tcpPort,     m_deviceId, m_timeout,  m_retries,    m_answerDelay,
+                        m_turnaround,  m_echo,     m_connect,  m_disconnect, m_scan};
     for (size_t i = 1; i < std::size(order); ++i)
         setTabOrder(order[i - 1], order[i]);
 }
@@ -245,7 +254,12 @@ void ConnectionPage::retranslate()
     m_parity->setItemText(2, tr("Odd"));
     setRow(m_serialForm, m_stopBits, tr("St&op bits:"), tr("The controller uses 1 stop bit"));
 
-    m_tcpBox->setTitle(tr("Modbus TCP"));
+    m_tcpBox->setTitle(tr("Network"));
+    setRow(m_tcpForm, m_tcpMode, tr("&Protocol:"),
+           tr("Modbus TCP for a Modbus gateway; a transparent RS-485/Ethernet converter passes "
+              "Modbus RTU frames (with CRC) over TCP, the default mode of most cheap converters"));
+    m_tcpMode->setItemText(0, tr("Modbus TCP"));
+    m_tcpMode->setItemText(1, tr("RS-485/Ethernet converter (transparent)"));
     setRow(m_tcpForm, m_host, tr("&Host:"),
            tr("Host name or IP address of the gateway or controller"));
     m_host->setPlaceholderText(tr("192.168.0.7"));
@@ -261,6 +275,18 @@ void ConnectionPage::retranslate()
     m_timeout->setSuffix(tr(" ms"));
     setRow(m_deviceForm, m_retries, tr("&Retries:"),
            tr("How often an unanswered request is sent again"));
+    setRow(m_deviceForm, m_answerDelay, tr("&Answer delay:"),
+           tr("The controller answers no sooner than this after a request (35 ms by its "
+              "manual); an answer that comes sooner belongs to an older request and is "
+              "discarded"));
+    m_answerDelay->setSuffix(tr(" ms"));
+    setRow(m_deviceForm, m_turnaround, tr("T&urnaround:"),
+           tr("Extra silence after an answer before the next request, for converters that need "
+              "it"));
+    m_turnaround->setSuffix(tr(" ms"));
+    m_echo->setText(tr("The adapter &echoes what it sends"));
+    m_echo->setToolTip(tr("For half-duplex USB-RS485 adapters without echo suppression: the "
+                          "request's own bytes are removed before the answer is read"));
 
     m_simBox->setTitle(tr("Built-in simulator"));
     m_simText->setText(tr("A simulated controller runs inside StepCom and answers like the real "
@@ -339,8 +365,9 @@ void ConnectionPage::refreshPorts()
 LinkSettings ConnectionPage::currentSettings() const
 {
     LinkSettings s;
-    s.transport = m_realTransport == Transport::Tcp ? LinkSettings::Transport::Tcp
-                                                    : LinkSettings::Transport::Rtu;
+    s.transport = m_realTransport != Transport::Tcp       ? LinkSettings::Transport::Rtu
+                  : m_tcpMode->currentData().toInt() == 1 ? LinkSettings::Transport::RtuTcp
+                                                          : LinkSettings::Transport::Tcp;
     s.portName = portFromCombo();
     s.baud = m_baud->currentData().toInt();
     s.parity = QSerialPort::Parity(m_parity->currentData().toInt());
@@ -350,6 +377,9 @@ LinkSettings ConnectionPage::currentSettings() const
     s.deviceId = m_deviceId->value();
     s.timeoutMs = m_timeout->value();
     s.retries = m_retries->value();
+    s.answerDelayMs = m_answerDelay->value();
+    s.turnaroundMs = m_turnaround->value();
+    s.echo = m_echo->isChecked();
     return s;
 }
 
@@ -365,7 +395,11 @@ void ConnectionPage::applySettings(const LinkSettings &s)
     m_deviceId->setValue(s.deviceId);
     m_timeout->setValue(s.timeoutMs);
     m_retries->setValue(s.retries);
-    setTransport(s.transport == LinkSettings::Transport::Tcp ? Transport::Tcp : Transport::Serial);
+    m_answerDelay->setValue(s.answerDelayMs);
+    m_turnaround->setValue(s.turnaroundMs);
+    m_echo->setChecked(s.echo);
+    m_tcpMode->setCurrentIndex(s.transport == LinkSettings::Transport::RtuTcp ? 1 : 0);
+    setTransport(s.isNetwork() ? Transport::Tcp : Transport::Serial);
 }
 
 void ConnectionPage::loadSettings()
@@ -376,9 +410,10 @@ void ConnectionPage::loadSettings()
         return settings.value(QLatin1String(key), fallback);
     };
     LinkSettings s;
-    s.transport = value("transport", {}).toString() == QLatin1String("tcp")
-                      ? LinkSettings::Transport::Tcp
-                      : LinkSettings::Transport::Rtu;
+    const QString transport = value("transport", {}).toString();
+    s.transport = transport == QLatin1String("tcp")       ? LinkSettings::Transport::Tcp
+                  : transport == QLatin1String("rtu-tcp") ? LinkSettings::Transport::RtuTcp
+                                                          : LinkSettings::Transport::Rtu;
     s.portName = value("port", s.portName).toString();
     s.baud = value("baud", s.baud).toInt();
     LinkSettings::parseParity(value("parity", {}).toString(), &s.parity); // keeps none if unknown
@@ -388,6 +423,9 @@ void ConnectionPage::loadSettings()
     s.deviceId = value("deviceId", s.deviceId).toInt();
     s.timeoutMs = value("timeoutMs", s.timeoutMs).toInt();
     s.retries = value("retries", s.retries).toInt();
+    s.answerDelayMs = value("answerDelayMs", s.answerDelayMs).toInt();
+    s.turnaroundMs = value("turnaroundMs", s.turnaroundMs).toInt();
+    s.echo = value("echo", s.echo).toBool();
     applySettings(s);
     if (value("simulator", false).toBool())
         setTransport(Transport::Simulator);
@@ -402,8 +440,9 @@ void ConnectionPage::saveSettings() const
         settings.setValue(QLatin1String(key), v);
     };
     // The real link and the simulator choice apart, so choosing the simulator keeps the port.
-    const bool tcp = s.transport == LinkSettings::Transport::Tcp;
-    set("transport", tcp ? QStringLiteral("tcp") : QStringLiteral("serial"));
+    set("transport", s.transport == LinkSettings::Transport::Tcp      ? QStringLiteral("tcp")
+                     : s.transport == LinkSettings::Transport::RtuTcp ? QStringLiteral("rtu-tcp")
+                                                                      : QStringLiteral("serial"));
     set("simulator", transport() == Transport::Simulator);
     set("port", s.portName);
     set("baud", s.baud);
@@ -414,6 +453,9 @@ void ConnectionPage::saveSettings() const
     set("deviceId", s.deviceId);
     set("timeoutMs", s.timeoutMs);
     set("retries", s.retries);
+    set("answerDelayMs", s.answerDelayMs);
+    set("turnaroundMs", s.turnaroundMs);
+    set("echo", s.echo);
 }
 
 void ConnectionPage::connectNow()

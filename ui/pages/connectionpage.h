@@ -8,6 +8,7 @@
 #include <functional>
 
 class QButtonGroup;
+class QCheckBox;
 class QComboBox;
 class QFormLayout;
 class QGroupBox;
@@ -92,12 +93,16 @@ private:
     QFormLayout *m_tcpForm = nullptr;
     QLineEdit *m_host = nullptr;
     QSpinBox *m_tcpPort = nullptr;
+    QComboBox *m_tcpMode = nullptr; // Modbus TCP, or RTU frames through a transparent converter
 
     QGroupBox *m_deviceBox = nullptr;
     QFormLayout *m_deviceForm = nullptr;
     QSpinBox *m_deviceId = nullptr;
     QSpinBox *m_timeout = nullptr;
     QSpinBox *m_retries = nullptr;
+    QSpinBox *m_answerDelay = nullptr;
+    QSpinBox *m_turnaround = nullptr;
+    QCheckBox *m_echo = nullptr;
 
     QGroupBox *m_simBox = nullptr;
     QLabel *m_simText = nullptr;

@@ -196,7 +196,7 @@ int DevicePage::chosenBaud() const
 
 QString DevicePage::describe(int id, int baud) const
 {
-    if (session()->settings().transport == LinkSettings::Transport::Tcp || baud <= 0)
+    if (session()->settings().isNetwork() || baud <= 0)
         return tr("ID %1").arg(id);
     return tr("ID %1 at %2 baud").arg(id).arg(baud);
 }
@@ -222,7 +222,7 @@ void DevicePage::showDeviceValues()
 void DevicePage::updateEnabled()
 {
     const bool connected = session()->isConnected();
-    const bool tcp = session()->settings().transport == LinkSettings::Transport::Tcp;
+    const bool tcp = session()->settings().isNetwork();
     const auto id = session()->store()->deviceValue(kId);
     const auto baud = session()->store()->deviceValue(kBaud);
     const bool changed = id && baud && (m_id->value() != *id || (!tcp && chosenBaud() != *baud));
