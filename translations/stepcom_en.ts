@@ -76,6 +76,29 @@
     </message>
 </context>
 <context>
+    <name>stepcom::AnswerCheck</name>
+    <message>
+        <source>function %1 answered a request of function %2</source>
+        <translation>function %1 answered a request of function %2</translation>
+    </message>
+    <message>
+        <source>exception answer of %1 bytes</source>
+        <translation>exception answer of %1 bytes</translation>
+    </message>
+    <message>
+        <source>FC03 answer carried %1 registers, %2 were asked for</source>
+        <translation>FC03 answer carried %1 registers, %2 were asked for</translation>
+    </message>
+    <message>
+        <source>FC%1 answer for 0x%2 = 0x%3, the request wrote 0x%4 = 0x%5</source>
+        <translation>FC%1 answer for 0x%2 = 0x%3, the request wrote 0x%4 = 0x%5</translation>
+    </message>
+    <message>
+        <source>FC10 answer for %1 registers at 0x%2, the request wrote %3 at 0x%4</source>
+        <translation>FC10 answer for %1 registers at 0x%2, the request wrote %3 at 0x%4</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusScanDialog</name>
     <message>
         <source>Scan bus</source>
@@ -275,6 +298,10 @@
             <numerusform>%n probe, at most about %1 s. A scan only reads; nothing is written.</numerusform>
             <numerusform>%n probes, at most about %1 s. A scan only reads; nothing is written.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1:%2 (RTU over TCP)</source>
+        <translation>%1:%2 (RTU over TCP)</translation>
     </message>
 </context>
 <context>
@@ -701,12 +728,56 @@
         <source>Not connected.</source>
         <translation>Not connected.</translation>
     </message>
+    <message>
+        <source>Network</source>
+        <translation>Network</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protocol:</translation>
+    </message>
+    <message>
+        <source>Modbus TCP for a Modbus gateway; a transparent RS-485/Ethernet converter passes Modbus RTU frames (with CRC) over TCP, the default mode of most cheap converters</source>
+        <translation>Modbus TCP for a Modbus gateway; a transparent RS-485/Ethernet converter passes Modbus RTU frames (with CRC) over TCP, the default mode of most cheap converters</translation>
+    </message>
+    <message>
+        <source>RS-485/Ethernet converter (transparent)</source>
+        <translation>RS-485/Ethernet converter (transparent)</translation>
+    </message>
+    <message>
+        <source>&amp;Answer delay:</source>
+        <translation>&amp;Answer delay:</translation>
+    </message>
+    <message>
+        <source>The controller answers no sooner than this after a request (35 ms by its manual); an answer that comes sooner belongs to an older request and is discarded</source>
+        <translation>The controller answers no sooner than this after a request (35 ms by its manual); an answer that comes sooner belongs to an older request and is discarded</translation>
+    </message>
+    <message>
+        <source>T&amp;urnaround:</source>
+        <translation>T&amp;urnaround:</translation>
+    </message>
+    <message>
+        <source>Extra silence after an answer before the next request, for converters that need it</source>
+        <translation>Extra silence after an answer before the next request, for converters that need it</translation>
+    </message>
+    <message>
+        <source>The adapter &amp;echoes what it sends</source>
+        <translation>The adapter &amp;echoes what it sends</translation>
+    </message>
+    <message>
+        <source>For half-duplex USB-RS485 adapters without echo suppression: the request&apos;s own bytes are removed before the answer is read</source>
+        <translation>For half-duplex USB-RS485 adapters without echo suppression: the request&apos;s own bytes are removed before the answer is read</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>link lost: %1</source>
         <translation>link lost: %1</translation>
+    </message>
+    <message>
+        <source>no sample was read: every poll failed (see the errors above)</source>
+        <translation>no sample was read: every poll failed (see the errors above)</translation>
     </message>
 </context>
 <context>
@@ -808,10 +879,6 @@
         <translation>monitor: ms between samples (default: as fast as the link allows).</translation>
     </message>
     <message>
-        <source>give only one of --port, --tcp and --sim</source>
-        <translation>give only one of --port, --tcp and --sim</translation>
-    </message>
-    <message>
         <source>--tcp: &apos;%1&apos; is not HOST[:PORT]</source>
         <translation>--tcp: &apos;%1&apos; is not HOST[:PORT]</translation>
     </message>
@@ -866,6 +933,42 @@
     <message>
         <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
         <translation>no command given (params, read, write, command, monitor, dump, diff, apply, report)</translation>
+    </message>
+    <message>
+        <source>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</source>
+        <translation>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</translation>
+    </message>
+    <message>
+        <source>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): remove the request&apos;s own bytes before the answer.</source>
+        <translation>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): remove the request&apos;s own bytes before the answer.</translation>
+    </message>
+    <message>
+        <source>The controller answers no sooner than this after a request; sooner answers are discarded as late answers to an older one (default 35).</source>
+        <translation>The controller answers no sooner than this after a request; sooner answers are discarded as late answers to an older one (default 35).</translation>
+    </message>
+    <message>
+        <source>Extra silence after an answer before the next request, for converters that need it (default 0).</source>
+        <translation>Extra silence after an answer before the next request, for converters that need it (default 0).</translation>
+    </message>
+    <message>
+        <source>give only one of --port, --tcp, --rtu-tcp and --sim</source>
+        <translation>give only one of --port, --tcp, --rtu-tcp and --sim</translation>
+    </message>
+    <message>
+        <source>--rtu-tcp: &apos;%1&apos; is not HOST:PORT (converters have no standard port: see its settings page)</source>
+        <translation>--rtu-tcp: &apos;%1&apos; is not HOST:PORT (converters have no standard port: see its settings page)</translation>
+    </message>
+    <message>
+        <source>--answer-delay: &apos;%1&apos; is not a number of ms</source>
+        <translation>--answer-delay: &apos;%1&apos; is not a number of ms</translation>
+    </message>
+    <message>
+        <source>--turnaround: &apos;%1&apos; is not a number of ms</source>
+        <translation>--turnaround: &apos;%1&apos; is not a number of ms</translation>
+    </message>
+    <message>
+        <source>--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp</source>
+        <translation>--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp</translation>
     </message>
 </context>
 <context>
@@ -2131,6 +2234,22 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1 · %2 8%3%4 · id %5</source>
         <translation>%1 · %2 8%3%4 · id %5</translation>
     </message>
+    <message>
+        <source>%1:%2 (RTU over TCP) · id %3</source>
+        <translation>%1:%2 (RTU over TCP) · id %3</translation>
+    </message>
+    <message>
+        <source>answer delay %1 ms is outside 0-1000 ms</source>
+        <translation>answer delay %1 ms is outside 0-1000 ms</translation>
+    </message>
+    <message>
+        <source>turnaround %1 ms is outside 0-1000 ms</source>
+        <translation>turnaround %1 ms is outside 0-1000 ms</translation>
+    </message>
+    <message>
+        <source>the answer delay (%1 ms) must be shorter than the timeout (%2 ms)</source>
+        <translation>the answer delay (%1 ms) must be shorter than the timeout (%2 ms)</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::LinkStatus</name>
@@ -2398,10 +2517,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>%1: could not send: %2</translation>
     </message>
     <message>
-        <source>%1: answer carried %2 registers, %3 were asked for</source>
-        <translation>%1: answer carried %2 registers, %3 were asked for</translation>
-    </message>
-    <message>
         <source>%1: the controller refused: %2</source>
         <translation>%1: the controller refused: %2</translation>
     </message>
@@ -2414,10 +2529,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>%1: no answer within %2 ms</translation>
     </message>
     <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
         <source> -- the controller may have acted on it</source>
         <translation> -- the controller may have acted on it</translation>
     </message>
@@ -2428,6 +2539,30 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>coil %1</source>
         <translation>coil %1</translation>
+    </message>
+    <message>
+        <source> (discarded: %1)</source>
+        <translation> (discarded: %1)</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers</source>
+        <translation> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers</source>
+        <translation> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers</translation>
+    </message>
+    <message>
+        <source> -- only the request&apos;s own bytes came back: the controller did not answer, or the adapter does not echo (then turn the echo option off)</source>
+        <translation> -- only the request&apos;s own bytes came back: the controller did not answer, or the adapter does not echo (then turn the echo option off)</translation>
+    </message>
+    <message>
+        <source>stale/foreign answer discarded: %1</source>
+        <translation>stale/foreign answer discarded: %1</translation>
+    </message>
+    <message>
+        <source>%1: the request&apos;s own bytes came back before any answer: the adapter echoes what it sends. Turn on &quot;the adapter echoes what it sends&quot; (stepcomctl --echo)</source>
+        <translation>%1: the request&apos;s own bytes came back before any answer: the adapter echoes what it sends. Turn on &quot;the adapter echoes what it sends&quot; (stepcomctl --echo)</translation>
     </message>
 </context>
 <context>
@@ -3168,9 +3303,16 @@ Every other master on the bus must use the new settings too, and no other device
 </context>
 <context>
     <name>stepcom::Poller</name>
+    <message numerus="yes">
+        <source>… %n in all</source>
+        <translation>
+            <numerusform>… %n in all</numerusform>
+            <numerusform>… %n in all</numerusform>
+        </translation>
+    </message>
     <message>
-        <source>poll %1/%2</source>
-        <translation>poll %1/%2</translation>
+        <source>poll %1/%2 (%3)</source>
+        <translation>poll %1/%2 (%3)</translation>
     </message>
 </context>
 <context>
@@ -3670,6 +3812,60 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::RegisterMap</name>
+    <message>
+        <source>%1: not a register map file (not a regular file)</source>
+        <translation>%1: not a register map file (not a regular file)</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes is too large for a register map (at most %3 MiB)</source>
+        <translation>%1: %2 bytes is too large for a register map (at most %3 MiB)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::RtuTransport</name>
+    <message>
+        <source>%1 is not a serial port (give the adapter&apos;s device, e.g. /dev/ttyUSB0 or a /dev/serial/by-id/ link)</source>
+        <translation>%1 is not a serial port (give the adapter&apos;s device, e.g. /dev/ttyUSB0 or a /dev/serial/by-id/ link)</translation>
+    </message>
+    <message>
+        <source>the converter closed the connection</source>
+        <translation>the converter closed the connection</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>cannot open %1: %2</translation>
+    </message>
+    <message>
+        <source>bytes that arrived between two requests</source>
+        <translation>bytes that arrived between two requests</translation>
+    </message>
+    <message>
+        <source>bytes that are no answer frame</source>
+        <translation>bytes that are no answer frame</translation>
+    </message>
+    <message>
+        <source>an answer with a bad checksum (CRC)</source>
+        <translation>an answer with a bad checksum (CRC)</translation>
+    </message>
+    <message>
+        <source>an answer from device %1, not %2</source>
+        <translation>an answer from device %1, not %2</translation>
+    </message>
+    <message>
+        <source>a late answer to an earlier request</source>
+        <translation>a late answer to an earlier request</translation>
+    </message>
+    <message>
+        <source>an answer %1 ms after the request, sooner than the controller can answer (%2 ms): a late answer to an older request</source>
+        <translation>an answer %1 ms after the request, sooner than the controller can answer (%2 ms): a late answer to an older request</translation>
+    </message>
+    <message>
+        <source>an incomplete answer</source>
+        <translation>an incomplete answer</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SimCommandLine</name>
     <message>
         <source>N</source>
@@ -3831,6 +4027,22 @@ Every other master on the bus must use the new settings too, and no other device
         <source>--corrupt-crc works on the pseudo-terminal only, not with --serial</source>
         <translation>--corrupt-crc works on the pseudo-terminal only, not with --serial</translation>
     </message>
+    <message>
+        <source>Serve Modbus RTU frames over plain TCP on [HOST:]PORT, as a transparent RS-485/Ethernet converter passes them on (port 0 picks a free one).</source>
+        <translation>Serve Modbus RTU frames over plain TCP on [HOST:]PORT, as a transparent RS-485/Ethernet converter passes them on (port 0 picks a free one).</translation>
+    </message>
+    <message>
+        <source>Send every byte the client sends straight back to it first, as a half-duplex USB-RS485 adapter without echo suppression does (pty and --rtu-tcp).</source>
+        <translation>Send every byte the client sends straight back to it first, as a half-duplex USB-RS485 adapter without echo suppression does (pty and --rtu-tcp).</translation>
+    </message>
+    <message>
+        <source>--rtu-tcp and --tcp must listen on the same host</source>
+        <translation>--rtu-tcp and --tcp must listen on the same host</translation>
+    </message>
+    <message>
+        <source>--echo works on the pseudo-terminal and --rtu-tcp, not with --serial</source>
+        <translation>--echo works on the pseudo-terminal and --rtu-tcp, not with --serial</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimConsole</name>
@@ -3981,6 +4193,13 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1: not a writable parameter of the map</source>
         <translation>%1: not a writable parameter of the map</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SimRtuTcpServer</name>
+    <message>
+        <source>cannot listen for RTU over TCP on %1:%2: %3</source>
+        <translation>cannot listen for RTU over TCP on %1:%2: %3</translation>
     </message>
 </context>
 <context>

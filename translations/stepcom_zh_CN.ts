@@ -76,6 +76,29 @@
     </message>
 </context>
 <context>
+    <name>stepcom::AnswerCheck</name>
+    <message>
+        <source>function %1 answered a request of function %2</source>
+        <translation>功能码 %1 的应答对应的是功能码 %2 的请求</translation>
+    </message>
+    <message>
+        <source>exception answer of %1 bytes</source>
+        <translation>%1 字节的异常应答</translation>
+    </message>
+    <message>
+        <source>FC03 answer carried %1 registers, %2 were asked for</source>
+        <translation>FC03 应答带有 %1 个寄存器，请求的是 %2 个</translation>
+    </message>
+    <message>
+        <source>FC%1 answer for 0x%2 = 0x%3, the request wrote 0x%4 = 0x%5</source>
+        <translation>FC%1 应答为 0x%2 = 0x%3，请求写的是 0x%4 = 0x%5</translation>
+    </message>
+    <message>
+        <source>FC10 answer for %1 registers at 0x%2, the request wrote %3 at 0x%4</source>
+        <translation>FC10 应答为 0x%2 处 %1 个寄存器，请求在 0x%4 处写了 %3 个</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusScanDialog</name>
     <message>
         <source>Scan bus</source>
@@ -270,6 +293,10 @@
         <translation>
             <numerusform>共探测 %n 次，最多约 %1 s。扫描只读取，不写入任何数据。</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1:%2 (RTU over TCP)</source>
+        <translation>%1:%2（TCP 上的 RTU）</translation>
     </message>
 </context>
 <context>
@@ -696,12 +723,56 @@
         <source>Not connected.</source>
         <translation>未连接。</translation>
     </message>
+    <message>
+        <source>Network</source>
+        <translation>网络</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>协议(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>Modbus TCP for a Modbus gateway; a transparent RS-485/Ethernet converter passes Modbus RTU frames (with CRC) over TCP, the default mode of most cheap converters</source>
+        <translation>Modbus 网关用 Modbus TCP；透明模式的 RS-485/以太网转换器通过 TCP 原样传送 Modbus RTU 帧（带 CRC），这是大多数廉价转换器的默认模式</translation>
+    </message>
+    <message>
+        <source>RS-485/Ethernet converter (transparent)</source>
+        <translation>RS-485/以太网转换器（透明传输）</translation>
+    </message>
+    <message>
+        <source>&amp;Answer delay:</source>
+        <translation>应答延时(&amp;A)：</translation>
+    </message>
+    <message>
+        <source>The controller answers no sooner than this after a request (35 ms by its manual); an answer that comes sooner belongs to an older request and is discarded</source>
+        <translation>控制器在请求之后至少经过这段时间才应答（说明书规定 35 ms）；更早到达的应答属于之前的请求，将被丢弃</translation>
+    </message>
+    <message>
+        <source>T&amp;urnaround:</source>
+        <translation>转换间隔(&amp;U)：</translation>
+    </message>
+    <message>
+        <source>Extra silence after an answer before the next request, for converters that need it</source>
+        <translation>收到应答后、发送下一个请求前额外的静默时间，供需要它的转换器使用</translation>
+    </message>
+    <message>
+        <source>The adapter &amp;echoes what it sends</source>
+        <translation>适配器会回显发送的数据(&amp;E)</translation>
+    </message>
+    <message>
+        <source>For half-duplex USB-RS485 adapters without echo suppression: the request&apos;s own bytes are removed before the answer is read</source>
+        <translation>用于没有回显抑制的半双工 USB-RS485 适配器：读取应答前先去掉请求自身的字节</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>link lost: %1</source>
         <translation>连接中断：%1</translation>
+    </message>
+    <message>
+        <source>no sample was read: every poll failed (see the errors above)</source>
+        <translation>没有读到任何样本：每次轮询都失败了（见上面的错误）</translation>
     </message>
 </context>
 <context>
@@ -803,10 +874,6 @@
         <translation>monitor：采样间隔，单位 ms（默认：通信链路允许的最快速度）。</translation>
     </message>
     <message>
-        <source>give only one of --port, --tcp and --sim</source>
-        <translation>--port、--tcp 和 --sim 只能指定其中一个</translation>
-    </message>
-    <message>
         <source>--tcp: &apos;%1&apos; is not HOST[:PORT]</source>
         <translation>--tcp：“%1”不符合 主机[:端口] 格式</translation>
     </message>
@@ -861,6 +928,42 @@
     <message>
         <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
         <translation>未给出命令（params、read、write、command、monitor、dump、diff、apply、report）</translation>
+    </message>
+    <message>
+        <source>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</source>
+        <translation>透明模式的 RS-485/以太网转换器：通过 TCP 传送 Modbus RTU 帧，主机:端口。</translation>
+    </message>
+    <message>
+        <source>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): remove the request&apos;s own bytes before the answer.</source>
+        <translation>适配器会回显发送的数据（没有回显抑制的半双工 USB-RS485 适配器）：在应答之前去掉请求自身的字节。</translation>
+    </message>
+    <message>
+        <source>The controller answers no sooner than this after a request; sooner answers are discarded as late answers to an older one (default 35).</source>
+        <translation>控制器在请求之后至少经过这段时间才应答；更早的应答被视为之前请求的迟到应答而丢弃（默认 35）。</translation>
+    </message>
+    <message>
+        <source>Extra silence after an answer before the next request, for converters that need it (default 0).</source>
+        <translation>收到应答后、发送下一个请求前额外的静默时间，供需要它的转换器使用（默认 0）。</translation>
+    </message>
+    <message>
+        <source>give only one of --port, --tcp, --rtu-tcp and --sim</source>
+        <translation>--port、--tcp、--rtu-tcp 和 --sim 只能给出一个</translation>
+    </message>
+    <message>
+        <source>--rtu-tcp: &apos;%1&apos; is not HOST:PORT (converters have no standard port: see its settings page)</source>
+        <translation>--rtu-tcp：“%1”不是 主机:端口（转换器没有标准端口：请查看它的设置页面）</translation>
+    </message>
+    <message>
+        <source>--answer-delay: &apos;%1&apos; is not a number of ms</source>
+        <translation>--answer-delay：“%1”不是毫秒数</translation>
+    </message>
+    <message>
+        <source>--turnaround: &apos;%1&apos; is not a number of ms</source>
+        <translation>--turnaround：“%1”不是毫秒数</translation>
+    </message>
+    <message>
+        <source>--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp</source>
+        <translation>--echo：Modbus TCP 没有回显；此选项用于 --port 和 --rtu-tcp</translation>
     </message>
 </context>
 <context>
@@ -2120,6 +2223,22 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1 · %2 8%3%4 · id %5</source>
         <translation>%1 · %2 8%3%4 · 站号 %5</translation>
     </message>
+    <message>
+        <source>%1:%2 (RTU over TCP) · id %3</source>
+        <translation>%1:%2（TCP 上的 RTU）· 站号 %3</translation>
+    </message>
+    <message>
+        <source>answer delay %1 ms is outside 0-1000 ms</source>
+        <translation>应答延时 %1 ms 超出 0-1000 ms</translation>
+    </message>
+    <message>
+        <source>turnaround %1 ms is outside 0-1000 ms</source>
+        <translation>转换间隔 %1 ms 超出 0-1000 ms</translation>
+    </message>
+    <message>
+        <source>the answer delay (%1 ms) must be shorter than the timeout (%2 ms)</source>
+        <translation>应答延时（%1 ms）必须短于超时（%2 ms）</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::LinkStatus</name>
@@ -2386,10 +2505,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>%1：无法发送：%2</translation>
     </message>
     <message>
-        <source>%1: answer carried %2 registers, %3 were asked for</source>
-        <translation>%1：应答包含 %2 个寄存器，但请求的是 %3 个</translation>
-    </message>
-    <message>
         <source>%1: the controller refused: %2</source>
         <translation>%1：控制器返回异常：%2</translation>
     </message>
@@ -2402,10 +2517,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>%1：%2 ms 内无应答</translation>
     </message>
     <message>
-        <source>%1: %2</source>
-        <translation>%1：%2</translation>
-    </message>
-    <message>
         <source> -- the controller may have acted on it</source>
         <translation>（控制器可能已执行该命令）</translation>
     </message>
@@ -2416,6 +2527,30 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>coil %1</source>
         <translation>线圈 %1</translation>
+    </message>
+    <message>
+        <source> (discarded: %1)</source>
+        <translation>（已丢弃：%1）</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers</source>
+        <translation> —— 请检查站号（%1）、主机和端口以及转换器的串口设置；总线扫描可以找到控制器</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers</source>
+        <translation> —— 请检查站号（%1）、波特率和校验（%2）以及 A/B 接线；总线扫描可以找到控制器</translation>
+    </message>
+    <message>
+        <source> -- only the request&apos;s own bytes came back: the controller did not answer, or the adapter does not echo (then turn the echo option off)</source>
+        <translation> —— 只收到了请求自身的字节：控制器没有应答，或者适配器并不回显（那样请关闭回显选项）</translation>
+    </message>
+    <message>
+        <source>stale/foreign answer discarded: %1</source>
+        <translation>已丢弃过时/无关的应答：%1</translation>
+    </message>
+    <message>
+        <source>%1: the request&apos;s own bytes came back before any answer: the adapter echoes what it sends. Turn on &quot;the adapter echoes what it sends&quot; (stepcomctl --echo)</source>
+        <translation>%1：在任何应答之前先收到了请求自身的字节：适配器会回显发送的数据。请打开“适配器会回显发送的数据”（stepcomctl --echo）</translation>
     </message>
 </context>
 <context>
@@ -3152,9 +3287,15 @@ Every other master on the bus must use the new settings too, and no other device
 </context>
 <context>
     <name>stepcom::Poller</name>
+    <message numerus="yes">
+        <source>… %n in all</source>
+        <translation>
+            <numerusform>… 共 %n 个</numerusform>
+        </translation>
+    </message>
     <message>
-        <source>poll %1/%2</source>
-        <translation>轮询 %1/%2</translation>
+        <source>poll %1/%2 (%3)</source>
+        <translation>轮询 %1/%2（%3）</translation>
     </message>
 </context>
 <context>
@@ -3647,6 +3788,60 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::RegisterMap</name>
+    <message>
+        <source>%1: not a register map file (not a regular file)</source>
+        <translation>%1：不是寄存器映射文件（不是普通文件）</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes is too large for a register map (at most %3 MiB)</source>
+        <translation>%1：%2 字节对寄存器映射来说太大（最多 %3 MiB）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::RtuTransport</name>
+    <message>
+        <source>%1 is not a serial port (give the adapter&apos;s device, e.g. /dev/ttyUSB0 or a /dev/serial/by-id/ link)</source>
+        <translation>%1 不是串口（请给出适配器的设备，例如 /dev/ttyUSB0 或 /dev/serial/by-id/ 下的链接）</translation>
+    </message>
+    <message>
+        <source>the converter closed the connection</source>
+        <translation>转换器关闭了连接</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>bytes that arrived between two requests</source>
+        <translation>在两个请求之间到达的字节</translation>
+    </message>
+    <message>
+        <source>bytes that are no answer frame</source>
+        <translation>不是应答帧的字节</translation>
+    </message>
+    <message>
+        <source>an answer with a bad checksum (CRC)</source>
+        <translation>校验和（CRC）错误的应答</translation>
+    </message>
+    <message>
+        <source>an answer from device %1, not %2</source>
+        <translation>来自站号 %1 而不是 %2 的应答</translation>
+    </message>
+    <message>
+        <source>a late answer to an earlier request</source>
+        <translation>之前某个请求的迟到应答</translation>
+    </message>
+    <message>
+        <source>an answer %1 ms after the request, sooner than the controller can answer (%2 ms): a late answer to an older request</source>
+        <translation>请求后 %1 ms 的应答，早于控制器能够应答的时间（%2 ms）：是之前请求的迟到应答</translation>
+    </message>
+    <message>
+        <source>an incomplete answer</source>
+        <translation>不完整的应答</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SimCommandLine</name>
     <message>
         <source>N</source>
@@ -3808,6 +4003,22 @@ Every other master on the bus must use the new settings too, and no other device
         <source>--corrupt-crc works on the pseudo-terminal only, not with --serial</source>
         <translation>--corrupt-crc 仅适用于伪终端，不能与 --serial 同时使用</translation>
     </message>
+    <message>
+        <source>Serve Modbus RTU frames over plain TCP on [HOST:]PORT, as a transparent RS-485/Ethernet converter passes them on (port 0 picks a free one).</source>
+        <translation>在 [主机:]端口 上通过普通 TCP 提供 Modbus RTU 帧，如同透明模式的 RS-485/以太网转换器那样转发（端口 0 表示任选一个空闲端口）。</translation>
+    </message>
+    <message>
+        <source>Send every byte the client sends straight back to it first, as a half-duplex USB-RS485 adapter without echo suppression does (pty and --rtu-tcp).</source>
+        <translation>先把客户端发送的每个字节原样送回给它，就像没有回显抑制的半双工 USB-RS485 适配器那样（伪终端和 --rtu-tcp）。</translation>
+    </message>
+    <message>
+        <source>--rtu-tcp and --tcp must listen on the same host</source>
+        <translation>--rtu-tcp 和 --tcp 必须监听同一个主机</translation>
+    </message>
+    <message>
+        <source>--echo works on the pseudo-terminal and --rtu-tcp, not with --serial</source>
+        <translation>--echo 只用于伪终端和 --rtu-tcp，不能与 --serial 一起使用</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimConsole</name>
@@ -3958,6 +4169,13 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1: not a writable parameter of the map</source>
         <translation>%1：不是寄存器映射中的可写参数</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SimRtuTcpServer</name>
+    <message>
+        <source>cannot listen for RTU over TCP on %1:%2: %3</source>
+        <translation>无法在 %1:%2 上监听 TCP 上的 RTU：%3</translation>
     </message>
 </context>
 <context>

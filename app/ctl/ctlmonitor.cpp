@@ -100,7 +100,7 @@ void CtlMonitor::onCycle(bool ok)
     m_out << sampleLine(m_clock.elapsed()) << QLatin1Char('\n');
     m_out.flush();
     std::fflush(stdout);
-    if (m_count > 0 && ++m_printed >= m_count)
+    if (++m_printed >= m_count && m_count > 0)
         end(0);
 }
 
@@ -110,6 +110,12 @@ void CtlMonitor::end(int exitCode)
         return;
     m_ended = true;
     m_poller->stop();
+    if (exitCode == 0 && m_printed == 0) {
+        // Stopped before a single sample: that is no successful run.
+        m_err << QStringLiteral("stepcomctl: ")
+              << tr("no sample was read: every poll failed (see the errors above)") << Qt::endl;
+        exitCode = 1;
+    }
     m_out.flush();
     Q_EMIT finished(exitCode);
 }

@@ -4,6 +4,7 @@
 
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
+#include "bus/wiretap.h"
 #include "sim/simhost.h"
 
 #include <QCoreApplication>
@@ -135,6 +136,7 @@ void CtlRunner::connectThen(std::function<void()> next)
         return;
     m_link = new ModbusLink(this);
     m_link->traffic()->setMap(&m_map);
+    WireTap::setPassThrough(m_options.verbose);
     if (m_options.verbose) {
         connect(m_link->traffic(), &TrafficLog::entryAdded, this,
                 [this](const TrafficEntry &e) { m_err << TrafficLog::format(e) << Qt::endl; });

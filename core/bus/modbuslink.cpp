@@ -4,6 +4,7 @@
 #include "bus/modbustcpbackend.h"
 #include "bus/rtutransport.h"
 #include "bus/trafficlog.h"
+#include "bus/wiretap.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -54,6 +55,7 @@ ModbusLink::ModbusLink(QObject *parent)
     : QObject(parent)
     , m_traffic(new TrafficLog(this))
 {
+    WireTap::install(); // qt.modbus warnings (the simulator's, the TCP client's) off stderr
     m_watchdog.setSingleShot(true);
     connect(&m_watchdog, &QTimer::timeout, this, &ModbusLink::onWatchdog);
     m_pumpTimer.setSingleShot(true);

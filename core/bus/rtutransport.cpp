@@ -290,8 +290,10 @@ void RtuTransport::processBuffer()
                 m_rx.remove(0, int(adu.size()));
                 continue;
             }
-            if (!m_settings.echo &&
-                (!looksLikeAnswer || at <= m_byteMs * double(adu.size()) + kEchoSlackMs)) {
+            // An echo comes while the request is sent, an answer no sooner than it can.
+            const bool tooSoonForAnAnswer =
+                at < m_earliestMs && at <= m_byteMs * double(adu.size()) + kEchoSlackMs;
+            if (!m_settings.echo && (!looksLikeAnswer || tooSoonForAnAnswer)) {
                 Q_EMIT frame(false, adu, 1, 2);
                 m_rx.remove(0, int(adu.size()));
                 LinkAnswer a;

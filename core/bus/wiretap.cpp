@@ -55,8 +55,10 @@ void messageHandler(QtMsgType type, const QMessageLogContext &context, const QSt
             for (const auto &sink : std::as_const(sinks))
                 sink(frame, raw);
         }
-        // Qt's own modbus chatter stays quiet unless asked for; warnings still show.
-        if (!r.passThrough && type == QtDebugMsg)
+        // Qt's own modbus chatter (its warnings about frames on a bad line too) stays quiet
+        // unless asked for: StepCom reports what went wrong in its own words.
+        Q_UNUSED(type);
+        if (!r.passThrough)
             return;
     }
     if (r.previousHandler)
@@ -85,18 +87,36 @@ bool WireTap::parse(const QString &message, Frame *frame, QByteArray *raw)
     return true;
 }
 
-void WireTap::attach(QObject *owner, Sink sink)
+void WireTap::install()
 {
     Registry &r = registry();
     {
         QMutexLocker lock(&r.mutex);
-        r.sinks.insert(owner, std::move(sink));
         if (!r.installed) {
             r.installed = true;
             r.passThrough =
                 qEnvironmentVariable("QT_LOGGING_RULES").contains(QLatin1String("qt.modbus"));
             r.previousHandler = qInstallMessageHandler(messageHandler);
         }
+    }
+}
+
+void WireTap::setPassThrough(bool passThrough)
+{
+    install();
+    Registry &r = registry();
+    QMutexLocker lock(&r.mutex);
+    r.passThrough = passThrough ||
+                    qEnvironmentVariable("QT_LOGGING_RULES").contains(QLatin1String("qt.modbus"));
+}
+
+void WireTap::attach(QObject *owner, Sink sink)
+{
+    install();
+    Registry &r = registry();
+    {
+        QMutexLocker lock(&r.mutex);
+        r.sinks.insert(owner, std::move(sink));
     }
     static bool filterInstalled = false;
     if (!filterInstalled) {

@@ -22,6 +22,11 @@ public:
     static void attach(QObject *owner, Sink sink);
     static void detach(QObject *owner);
 
+    // Install the message handler now: Qt's qt.modbus messages (warnings included) stay off
+    // standard error unless `passThrough` (--verbose, or QT_LOGGING_RULES naming qt.modbus).
+    static void install();
+    static void setPassThrough(bool passThrough);
+
     // Parse one qt.modbus message; returns false when it carries no frame. Exposed for tests.
     static bool parse(const QString &message, Frame *frame, QByteArray *raw);
 };

@@ -2,7 +2,9 @@
 
 #include "map/registermaploader.h"
 
+#include <QCoreApplication>
 #include <QFile>
+#include <QFileInfo>
 
 namespace stepcom {
 
@@ -26,6 +28,26 @@ const RegisterMap &RegisterMap::builtin()
 
 std::optional<RegisterMap> RegisterMap::loadFile(const QString &path, QStringList *errors)
 {
+    // Checked before reading: /dev/zero or a huge file would be read until memory runs out.
+    const QFileInfo info(path);
+    if (info.exists() && !info.isFile()) {
+        if (errors)
+            *errors << QCoreApplication::translate("stepcom::RegisterMap",
+                                                   "%1: not a register map file (not a regular "
+                                                   "file)")
+                           .arg(path);
+        return std::nullopt;
+    }
+    if (info.size() > kMaxFileBytes) {
+        if (errors)
+            *errors << QCoreApplication::translate("stepcom::RegisterMap",
+                                                   "%1: %2 bytes is too large for a register map "
+                                                   "(at most %3 MiB)")
+                           .arg(path)
+                           .arg(info.size())
+                           .arg(kMaxFileBytes / (1024 * 1024));
+        return std::nullopt;
+    }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         if (errors)
@@ -33,7 +55,7 @@ std::optional<RegisterMap> RegisterMap::loadFile(const QString &path, QStringLis
         return std::nullopt;
     }
     QStringList found;
-    auto map = fromJson(file.readAll(), &found);
+    auto map = fromJson(file.read(kMaxFileBytes + 1), &found);
     if (errors) {
         for (const QString &e : std::as_const(found))
             *errors << QStringLiteral("%1: %2").arg(path, e);

@@ -26,6 +26,8 @@ public:
     static const RegisterMap &builtin();
     // Load and validate; on failure nullopt and one message per problem, each naming the
     // entry and the field.
+    // A map file larger than this is refused before it is read.
+    static constexpr qint64 kMaxFileBytes = 4 * 1024 * 1024;
     static std::optional<RegisterMap> loadFile(const QString &path, QStringList *errors);
     static std::optional<RegisterMap> fromJson(const QByteArray &json, QStringList *errors);
 

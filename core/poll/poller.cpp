@@ -163,7 +163,18 @@ void Poller::readBlock(int index)
 {
     const ReadBlock &block = m_cycleBlocks.at(index);
     Request request = Request::read(block.address, block.count, Priority::Poll);
-    request.what = tr("poll %1/%2").arg(index + 1).arg(m_cycleBlocks.size());
+    // Name what the block reads, so a failing poll says which values are missing.
+    QStringList names;
+    for (const Parameter *p : std::as_const(m_cycleParams)) {
+        if (p->address >= block.address && p->address <= block.lastAddress())
+            names << p->key;
+    }
+    if (names.size() > 4)
+        names = names.mid(0, 3) << tr("… %n in all", nullptr, int(names.size()));
+    request.what = tr("poll %1/%2 (%3)")
+                       .arg(index + 1)
+                       .arg(m_cycleBlocks.size())
+                       .arg(names.join(QStringLiteral(", ")));
     const quint64 generation = m_generation;
     m_outstanding = true;
     m_client->link()->submit(

@@ -5,6 +5,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace stepcom;
@@ -78,6 +79,23 @@ class TestRegisterMap : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
+    // Regression: --map /dev/zero grew to 24 GB and was killed.
+    void hugeOrEndlessMapFilesAreRefusedBeforeReading()
+    {
+        QStringList errors;
+        QVERIFY(!RegisterMap::loadFile(QStringLiteral("/dev/zero"), &errors));
+        QVERIFY2(errors.join(QLatin1Char(' ')).contains(QStringLiteral("not a regular file")),
+                 qPrintable(errors.join(QLatin1Char(' '))));
+        QTemporaryDir dir;
+        QFile big(dir.filePath(QStringLiteral("big.json")));
+        QVERIFY(big.open(QIODevice::WriteOnly));
+        QVERIFY(big.resize(RegisterMap::kMaxFileBytes + 1)); // sparse: costs no disk
+        big.close();
+        errors.clear();
+        QVERIFY(!RegisterMap::loadFile(big.fileName(), &errors));
+        QVERIFY2(errors.join(QLatin1Char(' ')).contains(QStringLiteral("too large")),
+                 qPrintable(errors.join(QLatin1Char(' '))));
+    }
     void builtinMatchesTheManual()
     {
         const RegisterMap &map = RegisterMap::builtin();

@@ -269,6 +269,8 @@ private Q_SLOTS:
         options.rtu = true;
         options.linkPath = linkPath;
         options.answerDelayMs = 5; // more transactions a second; the faults are what counts
+        options.echo = qEnvironmentVariable("SOAK_NOECHO")
+                           .isEmpty(); // an adapter that hears itself, on top of everything
         options.faults.drop = 0.03;
         options.faults.corruptCrc = 0.03;
         options.faults.late = 0.03;
@@ -311,6 +313,8 @@ private Q_SLOTS:
         s.portName = linkPath;
         s.timeoutMs = 250;
         s.retries = 2;
+        s.answerDelayMs = 5; // the simulator's, or its answers would be too soon to be answers
+        s.echo = qEnvironmentVariable("SOAK_NOECHO").isEmpty();
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
         session->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty(), 30000);
