@@ -1,7 +1,8 @@
 // Soak: thousands of Modbus transactions against the simulator on a bad line -- lost answers,
 // broken CRCs, late answers, exception answers and the port hanging up every few hundred
-// answers -- while the status poller runs, motors are jogged and parameters written, the way a
-// technician would. It asserts what the tool promises on such a line:
+// answers, through an adapter that echoes every byte it sends -- while the status poller runs,
+// motors are jogged and parameters written, the way a technician would. It asserts what the tool
+// promises on such a line:
 //   - no crash, no hang: every write, jog and request ends, within generous bounds (QTRY_);
 //   - the link recovers: after every hang-up the session connects again and reads;
 //   - every failed write is reported, and never shown as written: a key is "in sync" only when
@@ -269,8 +270,7 @@ private Q_SLOTS:
         options.rtu = true;
         options.linkPath = linkPath;
         options.answerDelayMs = 5; // more transactions a second; the faults are what counts
-        options.echo = qEnvironmentVariable("SOAK_NOECHO")
-                           .isEmpty(); // an adapter that hears itself, on top of everything
+        options.echo = true;       // an adapter that hears itself, on top of everything
         options.faults.drop = 0.03;
         options.faults.corruptCrc = 0.03;
         options.faults.late = 0.03;
@@ -314,7 +314,7 @@ private Q_SLOTS:
         s.timeoutMs = 250;
         s.retries = 2;
         s.answerDelayMs = 5; // the simulator's, or its answers would be too soon to be answers
-        s.echo = qEnvironmentVariable("SOAK_NOECHO").isEmpty();
+        s.echo = true;
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
         session->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty(), 30000);
