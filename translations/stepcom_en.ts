@@ -2274,16 +2274,20 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>%1 transactions/s · status %2 Hz</translation>
     </message>
     <message>
-        <source>errors: %1 (timeouts %2, CRC %3, exceptions %4)</source>
-        <translation>errors: %1 (timeouts %2, CRC %3, exceptions %4)</translation>
-    </message>
-    <message>
         <source>⚠ Not saved to flash</source>
         <translation>⚠ Not saved to flash</translation>
     </message>
     <message>
         <source>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</source>
         <translation>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</translation>
+    </message>
+    <message>
+        <source>errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)</source>
+        <translation>errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)</translation>
+    </message>
+    <message>
+        <source>Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms (now %5 ms)</source>
+        <translation>Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms (now %5 ms)</translation>
     </message>
 </context>
 <context>

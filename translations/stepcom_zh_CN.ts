@@ -2263,16 +2263,20 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>%1 次通信/s · 状态刷新 %2 Hz</translation>
     </message>
     <message>
-        <source>errors: %1 (timeouts %2, CRC %3, exceptions %4)</source>
-        <translation>错误：%1（超时 %2，CRC %3，异常 %4）</translation>
-    </message>
-    <message>
         <source>⚠ Not saved to flash</source>
         <translation>⚠ 未保存到闪存</translation>
     </message>
     <message>
         <source>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</source>
         <translation>参数已写入，但尚未保存到控制器的闪存：控制器断电后将丢失。请使用“保存到闪存”。</translation>
+    </message>
+    <message>
+        <source>errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)</source>
+        <translation>错误：%1（超时 %2，CRC %3，异常 %4，过时应答 %5）</translation>
+    </message>
+    <message>
+        <source>Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms (now %5 ms)</source>
+        <translation>往返时间 %1-%2 ms（平均 %3 ms）；建议的应答超时 %4 ms（当前 %5 ms）</translation>
     </message>
 </context>
 <context>

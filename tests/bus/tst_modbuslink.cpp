@@ -262,6 +262,20 @@ private Q_SLOTS:
         QVERIFY(logged);
     }
 
+    // The timeout suggested with the link statistics follows the measured round trips.
+    void suggestedTimeoutFollowsTheRoundTrips()
+    {
+        LinkStats stats;
+        for (const qint64 ms : {40, 45, 52, 61}) {
+            ++stats.answers;
+            stats.addRoundTrip(ms);
+        }
+        QCOMPARE(stats.suggestedTimeoutMs(), -1); // too few to say
+        ++stats.answers;
+        stats.addRoundTrip(230);
+        QCOMPARE(stats.suggestedTimeoutMs(), 400); // 230 * 1.5 + 50 = 395, in 50 ms steps
+    }
+
     void motionCommandIsNeverRetried()
     {
         openLink(80, 3); // silent device

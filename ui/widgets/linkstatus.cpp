@@ -73,11 +73,24 @@ void LinkStatus::refresh()
                                               .arg(m_perSecond, 0, 'f', 1)
                                               .arg(m_session->statusPoller()->rate(), 0, 'f', 1)
                                         : QString());
-    m_errors->setText(tr("errors: %1 (timeouts %2, CRC %3, exceptions %4)")
+    m_errors->setText(tr("errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)")
                           .arg(s.errors())
                           .arg(s.timeouts)
                           .arg(s.crcErrors)
-                          .arg(s.exceptions));
+                          .arg(s.exceptions)
+                          .arg(s.stale + s.echoes));
+    // The measured round trips, and the timeout they suggest (a line slower than the setting
+    // times out where it need not; a much faster one waits longer than it need).
+    const int suggested = s.suggestedTimeoutMs();
+    m_errors->setToolTip(
+        suggested < 0 ? QString()
+                      : tr("Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms "
+                           "(now %5 ms)")
+                            .arg(s.minRoundTripMs)
+                            .arg(s.maxRoundTripMs)
+                            .arg(s.meanRoundTripMs, 0, 'f', 0)
+                            .arg(suggested)
+                            .arg(link->settings().timeoutMs));
     m_unsaved->setText(m_session->store()->unsavedToFlash() ? tr("⚠ Not saved to flash")
                                                             : QString());
     m_unsaved->setToolTip(
