@@ -2966,6 +2966,10 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%1: %2 has more than %n decimals</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not one of %3</source>
+        <translation>%1: &apos;%2&apos; is not one of %3</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ParameterField</name>

@@ -2952,6 +2952,10 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%1：%2 的小数超过 %n 位</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not one of %3</source>
+        <translation>%1：“%2”不是 %3 之一</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ParameterField</name>

@@ -130,11 +130,15 @@ void RtuTransport::open(const LinkSettings &settings)
     });
     connect(port, &QSerialPort::readyRead, this, &RtuTransport::onReadyRead);
     port->clear(); // whatever waited in the driver belongs to no request of ours
-    // An answer to a program that used the line before may still be on its way: the first
-    // request waits until the line has been quiet.
+    // An answer to a program that used the line before may still be on its way: the link is
+    // open once the line has been quiet for a moment (bytes meanwhile are discarded).
     requireQuiet();
-    m_opening = false;
-    Q_EMIT opened(true, QString());
+    QTimer::singleShot(m_quietMs, this, [this, device = QPointer<QIODevice>(port)] {
+        if (!m_opening || m_device != device)
+            return;
+        m_opening = false;
+        Q_EMIT opened(true, QString());
+    });
 }
 
 void RtuTransport::close()

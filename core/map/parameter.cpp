@@ -126,6 +126,11 @@ std::optional<qint64> Parameter::parse(const QString &input, QString *error) con
         } else if (c.isDigit() && c.unicode() < 128) {
             (seenPoint ? fractionDigits : wholeDigits) += c;
         } else {
+            // For a choice, name what it can be rather than asking for a number.
+            if (!values.isEmpty())
+                return fail(
+                    QCoreApplication::translate("stepcom::Parameter", "%1: '%2' is not one of %3")
+                        .arg(key, input, rangeText()));
             return fail(
                 QCoreApplication::translate("stepcom::Parameter", "%1: '%2' is not a number")
                     .arg(key, input));

@@ -77,6 +77,11 @@ private Q_SLOTS:
         QTest::newRow("not in enum") << "device.baud"
                                      << "115200"
                                      << "is not one of";
+        // Regression: IN7 was "not a number"; the allowed names are listed.
+        QTest::newRow("unknown choice")
+            << "motor1.limit_positive"
+            << "IN7"
+            << "'IN7' is not one of 0 (None), 1 (IN1), 2 (IN2), 3 (IN3), 4 (IN4)";
         QTest::newRow("huge") << "arc.start_x"
                               << "99999999999999999999"
                               << "far too large";

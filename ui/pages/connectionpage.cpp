@@ -170,8 +170,20 @@ void ConnectionPage::buildUi()
     m_deviceId = addRow(m_deviceForm, newSpin(m_deviceBox, 1, 255));
     m_timeout = addRow(m_deviceForm, newSpin(m_deviceBox, 20, 60000, 50));
     m_retries = addRow(m_deviceForm, newSpin(m_deviceBox, 0, 10));
-    m_answerDelay = addRow(m_deviceForm, newSpin(m_deviceBox, 0, 1000));
-    m_turnaround = addRow(m_deviceForm, newSpin(m_deviceBox, 0, 1000));
+    // Answer delay and turnaround share a row: both are line timing, rarely changed.
+    auto *timing = new QWidget(m_deviceBox);
+    auto *timingRow = new QHBoxLayout(timing);
+    timingRow->setContentsMargins(0, 0, 0, 0);
+    m_answerDelay = newSpin(timing, 0, 1000);
+    m_turnaround = newSpin(timing, 0, 1000);
+    m_turnaroundLabel = new QLabel(timing);
+    m_turnaroundLabel->setBuddy(m_turnaround);
+    timingRow->addWidget(m_answerDelay);
+    timingRow->addWidget(m_turnaroundLabel);
+    timingRow->addWidget(m_turnaround);
+    timingRow->addStretch();
+    m_timing = addRow(m_deviceForm, timing);
+    qobject_cast<QLabel *>(m_deviceForm->labelForField(timing))->setBuddy(m_answerDelay);
     m_echo = new QCheckBox(m_deviceBox);
     m_echo->setObjectName(QStringLiteral("echo"));
     m_deviceForm->addRow(m_echo);
@@ -275,14 +287,16 @@ void ConnectionPage::retranslate()
     m_timeout->setSuffix(tr(" ms"));
     setRow(m_deviceForm, m_retries, tr("&Retries:"),
            tr("How often an unanswered request is sent again"));
-    setRow(m_deviceForm, m_answerDelay, tr("&Answer delay:"),
-           tr("The controller answers no sooner than this after a request (35 ms by its "
-              "manual); an answer that comes sooner belongs to an older request and is "
-              "discarded"));
+    setRow(m_deviceForm, m_timing, tr("&Answer delay:"), QString());
+    m_answerDelay->setToolTip(
+        tr("The controller answers no sooner than this after a request (35 ms by its "
+           "manual); an answer that comes sooner belongs to an older request and is "
+           "discarded"));
     m_answerDelay->setSuffix(tr(" ms"));
-    setRow(m_deviceForm, m_turnaround, tr("T&urnaround:"),
-           tr("Extra silence after an answer before the next request, for converters that need "
-              "it"));
+    m_turnaroundLabel->setText(tr("T&urnaround:"));
+    m_turnaround->setToolTip(
+        tr("Extra silence after an answer before the next request, for converters that need "
+           "it"));
     m_turnaround->setSuffix(tr(" ms"));
     m_echo->setText(tr("The adapter &echoes what it sends"));
     m_echo->setToolTip(tr("For half-duplex USB-RS485 adapters without echo suppression: the "

@@ -100,7 +100,9 @@ private:
     QSpinBox *m_deviceId = nullptr;
     QSpinBox *m_timeout = nullptr;
     QSpinBox *m_retries = nullptr;
+    QWidget *m_timing = nullptr; // the answer delay and turnaround row
     QSpinBox *m_answerDelay = nullptr;
+    QLabel *m_turnaroundLabel = nullptr;
     QSpinBox *m_turnaround = nullptr;
     QCheckBox *m_echo = nullptr;
 
