@@ -4,6 +4,7 @@
 #include "scripteddevice.h"
 
 #include <QSignalSpy>
+#include <QTemporaryFile>
 #include <QTest>
 
 using namespace stepcom;
@@ -357,8 +358,18 @@ private Q_SLOTS:
         link->open(s);
         QTRY_COMPARE(opened.size(), 1);
         QVERIFY(!opened.at(0).at(0).toBool());
-        QVERIFY(!opened.at(0).at(1).toString().isEmpty());
+        QVERIFY2(opened.at(0).at(1).toString().contains(
+                     QStringLiteral("/dev/null is not a serial port")),
+                 qPrintable(opened.at(0).at(1).toString()));
         QCOMPARE(link->state(), ModbusLink::State::Disconnected);
+        // A regular file too.
+        QTemporaryFile file;
+        QVERIFY(file.open());
+        s.portName = file.fileName();
+        link->open(s);
+        QTRY_COMPARE(opened.size(), 2);
+        QVERIFY2(opened.at(1).at(1).toString().contains(QStringLiteral("is not a serial port")),
+                 qPrintable(opened.at(1).at(1).toString()));
     }
 
     void badSettingsAreRefused()

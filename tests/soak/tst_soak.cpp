@@ -1,8 +1,8 @@
 // Soak: thousands of Modbus transactions against the simulator on a bad line -- lost answers,
 // broken CRCs, late answers, exception answers and the port hanging up every few hundred
-// answers, through an adapter that echoes every byte it sends -- while the status poller runs,
-// motors are jogged and parameters written, the way a technician would. It asserts what the tool
-// promises on such a line:
+// answers, optionally through an adapter that echoes every byte it sends -- while the status poller
+// runs, motors are jogged and parameters written, the way a technician would. It asserts what the
+// tool promises on such a line:
 //   - no crash, no hang: every write, jog and request ends, within generous bounds (QTRY_);
 //   - the link recovers: after every hang-up the session connects again and reads;
 //   - every failed write is reported, and never shown as written: a key is "in sync" only when
@@ -314,7 +314,7 @@ private Q_SLOTS:
         s.timeoutMs = 250;
         s.retries = 2;
         s.answerDelayMs = 5; // the simulator's, or its answers would be too soon to be answers
-        s.echo = true;
+        s.echo = sim->options().echo;
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
         session->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty(), 30000);
