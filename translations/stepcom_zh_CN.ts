@@ -473,6 +473,50 @@
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
+    <message>
+        <source>Controller (as the profile records it)</source>
+        <translation>控制器（参数文件中的记录）</translation>
+    </message>
+    <message>
+        <source>none: made from a file, not read from a controller</source>
+        <translation>无：根据文件生成，未读取控制器</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>the profile was made with %1</source>
+        <translation>参数文件由 %1 生成</translation>
+    </message>
+    <message>
+        <source>Profile file</source>
+        <translation>参数文件</translation>
+    </message>
+    <message>
+        <source>Profile saved</source>
+        <translation>参数文件保存于</translation>
+    </message>
+    <message>
+        <source>%1 by StepCom %2</source>
+        <translation>%1，StepCom %2</translation>
+    </message>
+    <message>
+        <source>Report date</source>
+        <translation>报告日期</translation>
+    </message>
+    <message>
+        <source>What of the profile this register map cannot show</source>
+        <translation>此寄存器表无法显示的参数文件内容</translation>
+    </message>
+    <message>
+        <source>Commissioning report (from a profile file)</source>
+        <translation>调试报告（来自参数文件）</translation>
+    </message>
+    <message>
+        <source>Made from the profile file %1, not read from a controller: these are the values the file holds; a controller may hold others.</source>
+        <translation>根据参数文件 %1 生成，未读取控制器：这些是文件中的值，控制器中的值可能不同。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -862,6 +906,14 @@
         <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
         <translation>未给出命令（params、read、write、command、monitor、dump、diff、apply、report）</translation>
     </message>
+    <message>
+        <source>report: make the report from this profile file, not from a controller.</source>
+        <translation>report：根据此参数文件生成报告，而不是读取控制器。</translation>
+    </message>
+    <message>
+        <source>profile</source>
+        <translation>参数文件</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlRunner</name>
@@ -1030,6 +1082,84 @@
     <message>
         <source>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</source>
         <translation>未知命令 &apos;%1&apos;（params、read、write、command、monitor、dump、diff、apply、report）</translation>
+    </message>
+    <message>
+        <source>diff needs one profile file (compared with the controller) or two (compared with each other)</source>
+        <translation>diff 需要一个参数文件（与控制器比较）或两个参数文件（互相比较）</translation>
+    </message>
+    <message>
+        <source>left out of the comparison:</source>
+        <translation>未参与比较：</translation>
+    </message>
+    <message numerus="yes">
+        <source>the controller holds every value both maps have; %n left out</source>
+        <translation>
+            <numerusform>控制器中已是两个寄存器表共有的全部值；%n 个值未参与比较</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing was compared</source>
+        <translation>未进行任何比较</translation>
+    </message>
+    <message>
+        <source>A = %1: &quot;%2&quot;, register map %3</source>
+        <translation>A = %1：“%2”，寄存器表 %3</translation>
+    </message>
+    <message>
+        <source>B = %1: &quot;%2&quot;, register map %3</source>
+        <translation>B = %1：“%2”，寄存器表 %3</translation>
+    </message>
+    <message>
+        <source>differ (A -&gt; B):</source>
+        <translation>不同（A -&gt; B）：</translation>
+    </message>
+    <message>
+        <source>only in A (%1):</source>
+        <translation>只在 A 中（%1）：</translation>
+    </message>
+    <message>
+        <source>only in B (%1):</source>
+        <translation>只在 B 中（%1）：</translation>
+    </message>
+    <message>
+        <source>not settings of register map %1, or out of its range (as the files hold them, A -&gt; B):</source>
+        <translation>不是寄存器表 %1 的设置参数，或超出其范围（按文件中的原值，A -&gt; B）：</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>the two profiles hold the same values</source>
+        <translation>两个参数文件的值完全相同</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map</source>
+        <translation>%1 个不同，%2 个只在 A 中，%3 个只在 B 中，%4 个超出此寄存器表</translation>
+    </message>
+    <message>
+        <source>not applied:</source>
+        <translation>不应用：</translation>
+    </message>
+    <message>
+        <source>the profile holds no setting of this map: nothing to apply</source>
+        <translation>参数文件中没有此寄存器表的任何设置参数：无可应用</translation>
+    </message>
+    <message>
+        <source>the controller already holds every value both maps have</source>
+        <translation>控制器中已是两个寄存器表共有的全部值</translation>
+    </message>
+    <message>
+        <source>no report: %1 is not a profile StepCom can read</source>
+        <translation>未生成报告：%1 不是 StepCom 可读取的参数文件</translation>
+    </message>
+    <message>
+        <source>not in the report:</source>
+        <translation>报告中未包含：</translation>
+    </message>
+    <message>
+        <source>report written to %1, made from the profile file %2 (no controller was read)</source>
+        <translation>报告已写入 %1，根据参数文件 %2 生成（未读取控制器）</translation>
     </message>
 </context>
 <context>
@@ -3645,6 +3775,37 @@ Every other master on the bus must use the new settings too, and no other device
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
+    <message>
+        <source>not in register map &quot;%1&quot;</source>
+        <translation>不在寄存器表 &quot;%1&quot; 中</translation>
+    </message>
+    <message>
+        <source>a command in register map &quot;%1&quot;, not a setting</source>
+        <translation>在寄存器表 &quot;%1&quot; 中是命令，不是设置参数</translation>
+    </message>
+    <message>
+        <source>a status value in register map &quot;%1&quot;, not a setting</source>
+        <translation>在寄存器表 &quot;%1&quot; 中是状态值，不是设置参数</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileVariance</name>
+    <message>
+        <source>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</source>
+        <translation>参数文件由寄存器表 &quot;%1&quot; 生成；当前寄存器表是 &quot;%2&quot;：只能应用两者共有的设置参数</translation>
+    </message>
+    <message>
+        <source>unknown to this map: %1 = %2 (%3)</source>
+        <translation>此寄存器表中没有：%1 = %2（%3）</translation>
+    </message>
+    <message>
+        <source>cannot be applied: %1</source>
+        <translation>无法应用：%1</translation>
+    </message>
+    <message>
+        <source>not in the profile: %1 (%2)</source>
+        <translation>参数文件中没有：%1（%2）</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimCommandLine</name>
@@ -4426,12 +4587,15 @@ Commands:
                          (--name, --notes; --include-link adds id and baud)
   diff FILE              compare the controller with a profile; exit 0 same,
                          1 different, 2 bad file, 3 link or device error
+  diff A.json B.json     compare two profiles, no controller needed; exit 0
+                         same, 1 different, 2 bad file
   apply FILE             write the profile&apos;s values that differ, after showing
                          them and asking (--yes skips the question), then verify;
                          --include-link also writes device id and baud,
                          --save-to-flash saves afterwards
   report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN)
+                         --lang en|zh_CN; --from PROFILE: from a profile
+                         file, no controller needed)
 
 Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
         <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。
@@ -4447,12 +4611,15 @@ Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</sou
                          （--name、--notes；--include-link 包括地址和波特率）
   diff FILE              将控制器与参数文件比较；退出码 0 相同，
                          1 不同，2 文件错误，3 连接或设备错误
+  diff A.json B.json     比较两个参数文件，无需控制器；退出码 0 相同，
+                         1 不同，2 文件错误
   apply FILE             写入参数文件中不同的值：先列出并询问
                          （--yes 跳过询问），然后校验；
                          --include-link 同时写入设备地址和波特率，
                          --save-to-flash 之后保存到闪存
   report FILE.pdf|.html  生成调试报告（--name、--notes、
-                         --lang en|zh_CN）
+                         --lang en|zh_CN；--from PROFILE：根据参数文件
+                         生成，无需控制器）
 
 退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
     </message>

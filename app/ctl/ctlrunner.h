@@ -42,6 +42,12 @@ private:
     void runApply();
     void runReport();
     bool loadProfileArgument(const QString &command, Profile *out);
+    // Profiles of other maps are read too; problems go to standard error, false then.
+    bool loadProfile(const QString &path, Profile *out);
+    // What of a profile of another map is left out, under `heading` (nothing when all fits).
+    void printLeftOut(const Profile &profile, const QString &heading);
+    void runDiffFiles();
+    void runReportFromFile(const QString &path);
     void confirmThenApply(const QList<ParameterWrite> &writes);
     void applyWrites(const QList<ParameterWrite> &writes);
     void saveToFlashThenFinish();

@@ -71,12 +71,15 @@ int main(int argc, char *argv[])
         "                         (--name, --notes; --include-link adds id and baud)\n"
         "  diff FILE              compare the controller with a profile; exit 0 same,\n"
         "                         1 different, 2 bad file, 3 link or device error\n"
+        "  diff A.json B.json     compare two profiles, no controller needed; exit 0\n"
+        "                         same, 1 different, 2 bad file\n"
         "  apply FILE             write the profile's values that differ, after showing\n"
         "                         them and asking (--yes skips the question), then verify;\n"
         "                         --include-link also writes device id and baud,\n"
         "                         --save-to-flash saves afterwards\n"
         "  report FILE.pdf|.html  write the commissioning report (--name, --notes,\n"
-        "                         --lang en|zh_CN)\n\n"
+        "                         --lang en|zh_CN; --from PROFILE: from a profile\n"
+        "                         file, no controller needed)\n\n"
         "Exit codes: 0 success, 1 link or device error, 2 usage or validation error."));
     parser.addHelpOption();
     parser.addVersionOption();
