@@ -1,7 +1,7 @@
 #include "report/xypicture.h"
 
 #include "map/registermap.h"
-#include "sim/interpolationpath.h"
+#include "motion/interpolationpath.h"
 
 #include <QPainter>
 #include <QPainterPath>

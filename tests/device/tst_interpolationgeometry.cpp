@@ -1,5 +1,5 @@
-#include "device/interpolationgeometry.h"
 #include "map/registermap.h"
+#include "motion/interpolationgeometry.h"
 #include "sim/simdevice.h"
 
 #include <QTest>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/interpolationgeometry.h"
+#include "motion/interpolationgeometry.h"
 
 #include "dialogs/writechangesdialog.h"
 

@@ -1,6 +1,6 @@
-#include "device/motorderived.h"
+#include "motion/motorderived.h"
 
-#include "sim/rampmover.h"
+#include "motion/rampmover.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "sim/rampmover.h"
+#include "motion/rampmover.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "device/interpolationgeometry.h"
+#include "motion/interpolationgeometry.h"
 
 #include "map/registermap.h"
 

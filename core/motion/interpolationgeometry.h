@@ -1,7 +1,7 @@
 #pragma once
 
-#include "device/motorderived.h"
-#include "sim/interpolationpath.h"
+#include "motion/interpolationpath.h"
+#include "motion/motorderived.h"
 
 #include <QList>
 #include <QString>
