@@ -1,7 +1,5 @@
 #include "motion/interpolationgeometry.h"
 
-#include "map/registermap.h"
-
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -11,9 +9,6 @@
 namespace stepcom::interpolation {
 
 namespace {
-
-// Two points closer than half a register count are the same point for the controller.
-constexpr double kSamePoint = 0.005;
 
 double distance(Point a, Point b)
 {
@@ -57,61 +52,9 @@ bool sweepContains(const InterpolationPath &path, Point p)
     return along <= std::abs(path.sweep()) + 1e-9;
 }
 
-bool positive(const std::optional<double> &v)
-{
-    return v && std::isfinite(*v) && *v > 0;
-}
-
-struct AxisRates
-{
-    double stepsPerUnit = 0;
-    double start = 0; // pulses per ms
-    double top = 0;
-    double accel = 0; // pulses per ms per ms
-};
-
-std::optional<AxisRates> ratesOf(const MotorParameters &m, double rpm)
-{
-    const std::optional<double> ppr =
-        m.stepAngle && m.microsteps ? motorderived::pulsesPerRevolution(*m.stepAngle, *m.microsteps)
-                                    : std::nullopt;
-    if (!ppr || !positive(m.pitch) || !positive(m.startHz) || !positive(m.accelHzPerMs) ||
-        !(rpm > 0))
-        return std::nullopt;
-    AxisRates r;
-    r.stepsPerUnit = *ppr / *m.pitch;
-    r.top = rpm * *ppr / 60.0 / 1000.0;
-    r.start = std::min(*m.startHz / 1000.0, r.top);
-    r.accel = *m.accelHzPerMs / 1000.0;
-    return r;
-}
-
-// How far (pulses) a move of `total` pulses has gone after `t` ms: the continuous trapezoid of
-// RampMover (start at the start rate, gain accel per ms, brake to arrive at the start rate).
-double travelledAt(double total, const AxisRates &r, double t)
-{
-    const double rampDistance = (r.top * r.top - r.start * r.start) / (2 * r.accel);
-    double peak = r.top;
-    double rampMs = (r.top - r.start) / r.accel;
-    double cruiseMs = 0;
-    if (2 * rampDistance > total) {
-        peak = std::sqrt(r.start * r.start + r.accel * total);
-        rampMs = (peak - r.start) / r.accel;
-    } else {
-        cruiseMs = (total - 2 * rampDistance) / r.top;
-    }
-    const double up = r.start * rampMs + r.accel * rampMs * rampMs / 2;
-    if (t <= rampMs)
-        return std::min(total, r.start * t + r.accel * t * t / 2);
-    if (t <= rampMs + cruiseMs)
-        return std::min(total, up + peak * (t - rampMs));
-    const double d = t - rampMs - cruiseMs;
-    return std::min(total, up + peak * cruiseMs + peak * d - r.accel * d * d / 2);
-}
-
 } // namespace
 
-Geometry arc(const ArcInput &in)
+Geometry arc(const ArcSetup &in)
 {
     Geometry g;
     g.arc = true;
@@ -134,7 +77,7 @@ Geometry arc(const ArcInput &in)
                           .arg(pointText(in.middle));
             return g;
         }
-        const std::optional<Point> c = InterpolationPath::circleCentre(in.start, in.middle, in.end);
+        const std::optional<Point> c = arcCentre(in);
         if (!c) {
             g.error = QCoreApplication::translate(
                 "stepcom::InterpolationGeometry",
@@ -169,8 +112,7 @@ Geometry arc(const ArcInput &in)
                            number(kRadiusTolerance));
         return g;
     }
-    const std::optional<InterpolationPath> path =
-        InterpolationPath::arcAroundCentre(in.start, in.end, c, in.counterClockwise);
+    const std::optional<InterpolationPath> path = arcPath(in).path;
     if (!path) {
         g.error = QCoreApplication::translate("stepcom::InterpolationGeometry",
                                               "The start point is the centre: the radius is zero.");
@@ -208,92 +150,6 @@ Geometry line(Point start, Point end)
     g.length = g.path->length();
     g.valid = true;
     return g;
-}
-
-std::optional<double> pathUnitsPerSecond(double speedRpm, const MotorParameters &motor1)
-{
-    if (!motor1.pitch)
-        return std::nullopt;
-    return motorderived::unitsPerSecond(speedRpm, *motor1.pitch);
-}
-
-std::optional<double> pathTimeMs(double length, double speedRpm, const MotorParameters &motor1)
-{
-    const std::optional<AxisRates> r = ratesOf(motor1, speedRpm);
-    if (!r || !(length > 0))
-        return std::nullopt;
-    const auto pulses = qint64(std::llround(length * r->stepsPerUnit));
-    if (pulses == 0)
-        return 0.0;
-    return motorderived::moveTimeMs(pulses, *motor1.startHz, *motor1.accelHzPerMs, r->top * 1000.0);
-}
-
-Approach approach(Point from, Point to, const MotorParameters &motor1,
-                  const MotorParameters &motor2)
-{
-    Approach a;
-    a.points << from;
-    const double dx = to.x - from.x;
-    const double dy = to.y - from.y;
-    if (std::abs(dx) < kSamePoint && std::abs(dy) < kSamePoint)
-        return a; // already there: no approach
-    const std::optional<AxisRates> rx = ratesOf(motor1, motor1.rpm.value_or(0));
-    const std::optional<AxisRates> ry = ratesOf(motor2, motor2.rpm.value_or(0));
-    a.exact = rx && ry;
-    double tx = std::abs(dx);
-    double ty = std::abs(dy);
-    double px = 0; // pulses of each axis's move
-    double py = 0;
-    if (a.exact) {
-        px = std::round(std::abs(dx) * rx->stepsPerUnit);
-        py = std::round(std::abs(dy) * ry->stepsPerUnit);
-        auto timeOf = [](double pulses, const MotorParameters &m, const AxisRates &r) {
-            return pulses < 1 ? 0.0
-                              : motorderived::moveTimeMs(qint64(pulses), *m.startHz,
-                                                         *m.accelHzPerMs, r.top * 1000.0)
-                                    .value_or(0.0);
-        };
-        tx = timeOf(px, motor1, *rx);
-        ty = timeOf(py, motor2, *ry);
-        a.timeMs = std::max(tx, ty);
-    }
-    if (std::abs(dx) >= kSamePoint && std::abs(dy) >= kSamePoint && std::abs(tx - ty) > 1e-6) {
-        Point corner;
-        if (tx < ty) { // x arrives first; where is y then?
-            const double done = a.exact ? travelledAt(py, *ry, tx) / ry->stepsPerUnit : tx;
-            corner = {to.x, from.y + std::copysign(std::min(done, std::abs(dy)), dy)};
-        } else {
-            const double done = a.exact ? travelledAt(px, *rx, ty) / rx->stepsPerUnit : ty;
-            corner = {from.x + std::copysign(std::min(done, std::abs(dx)), dx), to.y};
-        }
-        a.points << corner;
-    }
-    a.points << to;
-    return a;
-}
-
-MotorParameters motorParameters(const RegisterMap &map, int motor,
-                                const std::function<std::optional<qint64>(const QString &)> &raw)
-{
-    auto value = [&](const char *local) -> std::optional<double> {
-        const Parameter *p =
-            map.blockParameter(QStringLiteral("motor"), motor, QLatin1String(local));
-        if (!p)
-            return std::nullopt;
-        const std::optional<qint64> r = raw(p->key);
-        if (!r)
-            return std::nullopt;
-        return p->toEngineering(*r);
-    };
-    MotorParameters m;
-    m.stepAngle = value("step_angle");
-    m.microsteps = value("microsteps");
-    m.startHz = value("start_frequency");
-    m.accelHzPerMs = value("accel_frequency");
-    m.rpm = value("speed");
-    m.pitch = value("pitch");
-    m.distance = value("move_distance");
-    return m;
 }
 
 } // namespace stepcom::interpolation
