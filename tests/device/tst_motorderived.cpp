@@ -1,4 +1,4 @@
-#include "device/motorderived.h"
+#include "motion/motorderived.h"
 #include "sim/simdevice.h"
 
 #include <QElapsedTimer>

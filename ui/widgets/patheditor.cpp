@@ -181,7 +181,7 @@ Geometry PathEditor::geometry() const
 {
     if (m_kind == Kind::Line)
         return interpolation::line(typedPoint("start"), typedPoint("end"));
-    interpolation::ArcInput in;
+    interpolation::ArcSetup in;
     in.mode = typed("mode").value_or(0) == 1 ? interpolation::ArcMode::ThreePoints
                                              : interpolation::ArcMode::Centre;
     in.start = typedPoint("start");
