@@ -4,8 +4,8 @@
 
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
-#include "poll/poller.h"
-#include "poll/readplanner.h"
+#include "device/poller.h"
+#include "device/readplanner.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

@@ -3,7 +3,7 @@
 #include "bus/modbuslink.h"
 #include "device/deviceclient.h"
 #include "device/parameterstore.h"
-#include "poll/poller.h"
+#include "device/poller.h"
 #include "signalwatcher.h"
 
 #include <QDateTime>

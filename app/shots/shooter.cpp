@@ -1,10 +1,10 @@
 #include "shooter.h"
 
 #include "device/devicesession.h"
+#include "device/poller.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "page.h"
-#include "poll/poller.h"
 #include "scenes.h"
 #include "sim/simhost.h"
 

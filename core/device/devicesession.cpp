@@ -2,8 +2,8 @@
 
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
+#include "device/poller.h"
 #include "i18n/translators.h"
-#include "poll/poller.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

@@ -2,7 +2,7 @@
 
 #include "bus/modbuslink.h"
 #include "bus/request.h"
-#include "poll/poller.h"
+#include "device/poller.h"
 
 #include <QTimer>
 

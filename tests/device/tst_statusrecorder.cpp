@@ -1,7 +1,7 @@
 #include "device/devicesession.h"
 #include "device/parameterstore.h"
-#include "poll/poller.h"
-#include "poll/statusrecorder.h"
+#include "device/poller.h"
+#include "device/statusrecorder.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

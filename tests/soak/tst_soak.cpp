@@ -16,7 +16,7 @@
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
-#include "poll/poller.h"
+#include "device/poller.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

@@ -1,7 +1,7 @@
 #include "widgets/jogactivity.h"
 
 #include "device/devicesession.h"
-#include "poll/poller.h"
+#include "device/poller.h"
 
 namespace stepcom {
 

@@ -2,7 +2,7 @@
 
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
-#include "poll/poller.h"
+#include "device/poller.h"
 
 #include <QDateTime>
 #include <QEvent>

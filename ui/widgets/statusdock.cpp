@@ -1,8 +1,8 @@
 #include "widgets/statusdock.h"
 
 #include "device/devicesession.h"
+#include "device/poller.h"
 #include "language.h"
-#include "poll/poller.h"
 #include "widgets/led.h"
 
 #include <QComboBox>

@@ -2,7 +2,7 @@
 #include "device/deviceclient.h"
 #include "device/devicesession.h"
 #include "device/parameterstore.h"
-#include "poll/poller.h"
+#include "device/poller.h"
 #include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
