@@ -1461,6 +1461,26 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n requests</numerusform>
         </translation>
     </message>
+    <message>
+        <source>the built-in simulator was replaced</source>
+        <translation>the built-in simulator was replaced</translation>
+    </message>
+    <message>
+        <source>this program has no built-in simulator</source>
+        <translation>this program has no built-in simulator</translation>
+    </message>
+    <message>
+        <source>the page was left</source>
+        <translation>the page was left</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>the window lost focus</translation>
+    </message>
+    <message>
+        <source>the window closes</source>
+        <translation>the window closes</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::EmergencyStop</name>
@@ -2280,18 +2300,6 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n edited values were never written to the controller. Close anyway and lose them?</numerusform>
         </translation>
     </message>
-    <message>
-        <source>another page was chosen</source>
-        <translation>another page was chosen</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>the window lost focus</translation>
-    </message>
-    <message>
-        <source>the window closes</source>
-        <translation>the window closes</translation>
-    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -2662,14 +2670,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Homes %1.</source>
         <translation>Homes %1.</translation>
-    </message>
-    <message>
-        <source>the page was left</source>
-        <translation>the page was left</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>the window lost focus</translation>
     </message>
     <message>
         <source>&amp;Clear</source>

@@ -1450,6 +1450,26 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n 次请求</numerusform>
         </translation>
     </message>
+    <message>
+        <source>the built-in simulator was replaced</source>
+        <translation>内置模拟器已被替换</translation>
+    </message>
+    <message>
+        <source>this program has no built-in simulator</source>
+        <translation>此程序没有内置模拟器</translation>
+    </message>
+    <message>
+        <source>the page was left</source>
+        <translation>离开了此页面</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>窗口失去焦点</translation>
+    </message>
+    <message>
+        <source>the window closes</source>
+        <translation>窗口正在关闭</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::EmergencyStop</name>
@@ -2268,18 +2288,6 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>有 %n 个已修改的值尚未写入控制器。仍要关闭并放弃这些修改吗？</numerusform>
         </translation>
     </message>
-    <message>
-        <source>another page was chosen</source>
-        <translation>切换到了其他页面</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>窗口失去焦点</translation>
-    </message>
-    <message>
-        <source>the window closes</source>
-        <translation>窗口正在关闭</translation>
-    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -2650,14 +2658,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Homes %1.</source>
         <translation>回零顺序：%1。</translation>
-    </message>
-    <message>
-        <source>the page was left</source>
-        <translation>离开了此页面</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>窗口失去焦点</translation>
     </message>
     <message>
         <source>&amp;Clear</source>

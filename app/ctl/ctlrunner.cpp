@@ -2,9 +2,8 @@
 
 #include "ctlmonitor.h"
 
-#include "bus/modbuslink.h"
-#include "bus/trafficlog.h"
-#include "sim/simhost.h"
+#include "device/simulatorstarter.h"
+#include "sim/builtinsimulator.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -107,8 +106,8 @@ void CtlRunner::finish(int code)
     m_finished = true;
     m_out.flush();
     m_err.flush();
-    if (m_link)
-        m_link->close(tr("done"));
+    if (m_session && m_session->linkState() != DeviceSession::LinkState::Disconnected)
+        m_session->disconnectFrom(tr("done"));
     QTimer::singleShot(0, this, [this, code] { Q_EMIT finished(code); });
 }
 
@@ -131,57 +130,38 @@ void CtlRunner::connectThen(std::function<void()> next)
         fail(UsageError, tr("no controller given: use --port PATH, --tcp HOST[:PORT] or --sim"));
         return;
     }
-    if (m_options.target == CtlOptions::Target::Sim && !startSimulator())
-        return;
-    m_link = new ModbusLink(this);
-    m_link->traffic()->setMap(&m_map);
+    // One-shot: no read-all after connecting, no status poll; each command reads what it names.
+    m_session = new DeviceSession(m_map, this);
+    m_session->setLive(false);
     if (m_options.verbose) {
-        connect(m_link->traffic(), &TrafficLog::entryAdded, this,
+        connect(m_session->traffic(), &TrafficLog::entryAdded, this,
                 [this](const TrafficEntry &e) { m_err << TrafficLog::format(e) << Qt::endl; });
     }
-    m_device = new DeviceClient(m_link, m_map, this);
     // Only the first opening runs the command: a write of device.baud reopens the link at the
     // new baud, and that must not start the command a second time.
     connect(
-        m_link, &ModbusLink::opened, this,
+        m_session, &DeviceSession::connected, this,
         [this, next](bool ok, const QString &reason) {
             if (!ok) {
-                fail(m_linkError,
-                     tr("cannot connect to %1: %2").arg(m_options.link.describe(), reason));
+                const bool simDown =
+                    m_session->simulatorStarter() && !m_session->simulatorStarter()->isRunning();
+                fail(m_linkError, simDown
+                                      ? tr("cannot start the built-in simulator: %1").arg(reason)
+                                      : tr("cannot connect to %1: %2")
+                                            .arg(m_session->settings().describe(), reason));
                 return;
             }
             next();
         },
         Qt::SingleShotConnection);
-    m_link->open(m_options.link);
-}
-
-bool CtlRunner::startSimulator()
-{
-    // The built-in controller runs in this process; on Unix it is reached over a
-    // pseudo-terminal, so --sim takes the same RTU path as a real adapter.
-    m_sim = new SimHost(this);
-    SimOptions sim;
-    sim.map = m_map;
-#ifdef Q_OS_UNIX
-    sim.rtu = true;
-#else
-    sim.tcp = true;
-#endif
-    QString error;
-    if (!m_sim->start(sim, &error)) {
-        fail(m_linkError, tr("cannot start the built-in simulator: %1").arg(error));
-        return false;
-    }
-    if (sim.rtu) {
-        m_options.link.transport = LinkSettings::Transport::Rtu;
-        m_options.link.portName = m_sim->rtuPath();
+    if (m_options.target == CtlOptions::Target::Sim) {
+        // The built-in controller runs in this process; on Unix it is reached over a
+        // pseudo-terminal, so --sim takes the same RTU path as a real adapter.
+        m_session->setSimulator(std::make_unique<BuiltinSimulator>());
+        m_session->connectSimulator();
     } else {
-        m_options.link.transport = LinkSettings::Transport::Tcp;
-        m_options.link.host = m_sim->tcpAddress().toString();
-        m_options.link.tcpPort = m_sim->tcpPort();
+        m_session->connectTo(m_options.link);
     }
-    return true;
 }
 
 void CtlRunner::runParams()
@@ -254,7 +234,7 @@ void CtlRunner::runRead()
     if (params.isEmpty())
         params = m_map.holdings();
     connectThen([this, params] {
-        m_device->read(params, Priority::Read, [this, params](const ReadOutcome &r) {
+        m_session->read(params, [this, params](const ReadOutcome &r) {
             if (m_options.json) {
                 QJsonObject o;
                 for (const Parameter *p : params) {
@@ -323,7 +303,7 @@ void CtlRunner::runWrite()
         return;
     }
     connectThen([this, writes] {
-        m_device->write(writes, [this, writes](const WriteOutcome &w) {
+        m_session->write(writes, [this, writes](const WriteOutcome &w) {
             for (const ParameterWrite &pw : writes) {
                 const bool verified = w.written.contains(pw.parameter->key) &&
                                       std::none_of(w.mismatches.cbegin(), w.mismatches.cend(),
@@ -373,7 +353,7 @@ void CtlRunner::runCommand()
         return;
     }
     connectThen([this, p] {
-        m_device->command(*p, [this, p](const Result &r) {
+        m_session->command(*p, [this, p](const Result &r) {
             if (!r.ok) {
                 fail(DeviceError, r.errorText);
                 return;
@@ -391,7 +371,7 @@ void CtlRunner::runMonitor()
         return;
     }
     connectThen([this] {
-        auto *monitor = new CtlMonitor(m_device, m_options.count, m_options.intervalMs, this);
+        auto *monitor = new CtlMonitor(m_session, m_options.count, m_options.intervalMs, this);
         connect(monitor, &CtlMonitor::finished, this, &CtlRunner::finish);
         monitor->start();
     });

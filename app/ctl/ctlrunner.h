@@ -1,7 +1,7 @@
 #pragma once
 
 #include "ctloptions.h"
-#include "device/deviceclient.h"
+#include "device/devicesession.h"
 #include "map/registermap.h"
 
 #include <QObject>
@@ -9,8 +9,6 @@
 
 namespace stepcom {
 
-class ModbusLink;
-class SimHost;
 struct Profile;
 
 // Runs one stepcomctl command against a controller and reports an exit code:
@@ -30,7 +28,6 @@ Q_SIGNALS:
 
 private:
     void connectThen(std::function<void()> next);
-    bool startSimulator();
     void runParams();
     void runRead();
     void runWrite();
@@ -51,9 +48,7 @@ private:
 
     CtlOptions m_options;
     RegisterMap m_map;
-    SimHost *m_sim = nullptr;
-    ModbusLink *m_link = nullptr;
-    DeviceClient *m_device = nullptr;
+    DeviceSession *m_session = nullptr;
     QTextStream m_out;
     QTextStream m_err;
     // The exit code of a link that cannot be opened or read: DeviceError, except for diff,

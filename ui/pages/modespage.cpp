@@ -151,7 +151,7 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
 
     m_tripsBox = new QGroupBox(content);
     auto *tripsLayout = new QVBoxLayout(m_tripsBox);
-    m_form = new ParameterForm(session->store(), m_tripsBox);
+    m_form = new ParameterForm(session->parameters(), m_tripsBox);
     m_form->addParameter(kTripsKey);
     tripsLayout->addWidget(m_form);
     m_tripsNote = new QLabel(m_tripsBox);
@@ -167,11 +167,11 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
             [this](int index) { confirmMode(m_mode->itemData(index).toInt()); });
     connect(m_mode, &QComboBox::currentIndexChanged, this, &ModesPage::describe);
     connect(m_write, &QPushButton::clicked, this, &ModesPage::openWriteDialog);
-    connect(session->store(), &ParameterStore::valueChanged, this, [this](const QString &k) {
+    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
         if (k == kModeKey || k == kTripsKey)
             refresh();
     });
-    connect(session->store(), &ParameterStore::editsChanged, this, &ModesPage::refresh);
+    connect(session->parameters(), &ParameterStore::editsChanged, this, &ModesPage::refresh);
     connect(session, &DeviceSession::linkStateChanged, this, &ModesPage::refresh);
     connect(session, &DeviceSession::disconnected, this, &ModesPage::refresh);
     retranslate();
@@ -206,7 +206,7 @@ void ModesPage::fitTable()
 
 std::optional<qint64> ModesPage::deviceMode() const
 {
-    return session()->store()->deviceValue(kModeKey);
+    return session()->parameters()->deviceValue(kModeKey);
 }
 
 int ModesPage::shownMode() const
@@ -269,7 +269,7 @@ void ModesPage::openWriteDialog()
         return;
     if (m_writeDialog)
         m_writeDialog->close();
-    m_writeDialog = new WriteChangesDialog(*session()->store(), {kTripsKey}, this);
+    m_writeDialog = new WriteChangesDialog(*session()->parameters(), {kTripsKey}, this);
     m_writeDialog->setAttribute(Qt::WA_DeleteOnClose);
     if (m_writeDialog->writes().isEmpty()) {
         m_writeDialog->deleteLater();
@@ -294,7 +294,7 @@ void ModesPage::refresh()
     }
     m_mode->setEnabled(connected && device.has_value() && !m_confirmation);
     describe();
-    bool edited = session()->store()->entry(kTripsKey).edited.has_value();
+    bool edited = session()->parameters()->entry(kTripsKey).edited.has_value();
     m_write->setEnabled(connected && edited);
 }
 
