@@ -1028,8 +1028,8 @@
         <translation>报告已写入 %1</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>未知命令 &apos;%1&apos;（params、read、write、command、monitor、dump、diff、apply、report）</translation>
+        <source>unknown command &apos;%1&apos; (%2)</source>
+        <translation>未知命令 &apos;%1&apos;（%2）</translation>
     </message>
 </context>
 <context>
@@ -4413,48 +4413,66 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>要执行的命令。</translation>
     </message>
     <message>
-        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
-
-Commands:
-  params                 list every parameter and command of the register map
-  read [KEY...]          read parameters (all when none are named)
-  write KEY=VALUE...     write parameters in engineering units, then verify
-  command NAME           pulse a command coil (e.g. motor1.stop, estop)
-  monitor                print the live status as one JSON object per line,
-                         until --count samples or Ctrl-C (--interval MS)
-  dump FILE              read every setting and save it as a profile file
-                         (--name, --notes; --include-link adds id and baud)
-  diff FILE              compare the controller with a profile; exit 0 same,
-                         1 different, 2 bad file, 3 link or device error
-  apply FILE             write the profile&apos;s values that differ, after showing
-                         them and asking (--yes skips the question), then verify;
-                         --include-link also writes device id and baud,
-                         --save-to-flash saves afterwards
-  report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN)
-
-Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。
-
-命令：
-  params                 列出寄存器表中的全部参数和命令
-  read [KEY...]          读取参数（未指定时读取全部）
-  write KEY=VALUE...     以工程单位写入参数，然后校验
-  command NAME           触发一个命令线圈（例如 motor1.stop、estop）
-  monitor                以每行一个 JSON 对象输出实时状态，
-                         直到 --count 个样本或 Ctrl-C（--interval MS）
-  dump FILE              读取全部设置并保存为参数文件
-                         （--name、--notes；--include-link 包括地址和波特率）
-  diff FILE              将控制器与参数文件比较；退出码 0 相同，
-                         1 不同，2 文件错误，3 连接或设备错误
-  apply FILE             写入参数文件中不同的值：先列出并询问
-                         （--yes 跳过询问），然后校验；
-                         --include-link 同时写入设备地址和波特率，
-                         --save-to-flash 之后保存到闪存
-  report FILE.pdf|.html  生成调试报告（--name、--notes、
-                         --lang en|zh_CN）
-
-退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
+        <source>list every parameter and command of the register map</source>
+        <translation>列出寄存器表中的全部参数和命令</translation>
+    </message>
+    <message>
+        <source>read parameters (all when none are named)</source>
+        <translation>读取参数（未指定时读取全部）</translation>
+    </message>
+    <message>
+        <source>write parameters in engineering units, then verify</source>
+        <translation>以工程单位写入参数，然后校验</translation>
+    </message>
+    <message>
+        <source>pulse a command coil (e.g. motor1.stop, estop)</source>
+        <translation>触发一个命令线圈（例如 motor1.stop、estop）</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS)</source>
+        <translation>以每行一个 JSON 对象输出实时状态，
+直到 --count 个样本或 Ctrl-C（--interval MS）</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud)</source>
+        <translation>读取全部设置并保存为参数文件
+（--name、--notes；--include-link 包括地址和波特率）</translation>
+    </message>
+    <message>
+        <source>compare the controller with a profile; exit 0 same,
+1 different, 2 bad file, 3 link or device error</source>
+        <translation>将控制器与参数文件比较；退出码 0 相同，
+1 不同，2 文件错误，3 连接或设备错误</translation>
+    </message>
+    <message>
+        <source>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards</source>
+        <translation>写入参数文件中不同的值：先列出并询问
+（--yes 跳过询问），然后校验；
+--include-link 同时写入设备地址和波特率，
+--save-to-flash 之后保存到闪存</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN)</source>
+        <translation>生成调试报告（--name、--notes、
+--lang en|zh_CN）</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>命令：</translation>
+    </message>
+    <message>
+        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</source>
+        <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。</translation>
+    </message>
+    <message>
+        <source>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
+        <translation>退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
     </message>
 </context>
 </TS>

@@ -3,6 +3,7 @@
 #include "ctlmonitor.h"
 
 #include "device/simulatorstarter.h"
+#include "i18n/translators.h"
 #include "sim/builtinsimulator.h"
 
 #include <QCoreApplication>
@@ -66,31 +67,79 @@ CtlRunner::CtlRunner(const CtlOptions &options, const RegisterMap &map, QObject 
     , m_err(stderr)
 {}
 
+const QList<CtlCommand> &CtlRunner::commands()
+{
+    static const QList<CtlCommand> table{
+        {"params", "params",
+         QT_TRANSLATE_NOOP("stepcomctl", "list every parameter and command of the register map"),
+         &CtlRunner::runParams},
+        {"read", "read [KEY...]",
+         QT_TRANSLATE_NOOP("stepcomctl", "read parameters (all when none are named)"),
+         &CtlRunner::runRead},
+        {"write", "write KEY=VALUE...",
+         QT_TRANSLATE_NOOP("stepcomctl", "write parameters in engineering units, then verify"),
+         &CtlRunner::runWrite},
+        {"command", "command NAME",
+         QT_TRANSLATE_NOOP("stepcomctl", "pulse a command coil (e.g. motor1.stop, estop)"),
+         &CtlRunner::runCommand},
+        {"monitor", "monitor",
+         QT_TRANSLATE_NOOP("stepcomctl", "print the live status as one JSON object per line,\n"
+                                         "until --count samples or Ctrl-C (--interval MS)"),
+         &CtlRunner::runMonitor},
+        {"dump", "dump FILE",
+         QT_TRANSLATE_NOOP("stepcomctl", "read every setting and save it as a profile file\n"
+                                         "(--name, --notes; --include-link adds id and baud)"),
+         &CtlRunner::runDump},
+        {"diff", "diff FILE",
+         QT_TRANSLATE_NOOP("stepcomctl", "compare the controller with a profile; exit 0 same,\n"
+                                         "1 different, 2 bad file, 3 link or device error"),
+         &CtlRunner::runDiff},
+        {"apply", "apply FILE",
+         QT_TRANSLATE_NOOP("stepcomctl",
+                           "write the profile's values that differ, after showing\n"
+                           "them and asking (--yes skips the question), then verify;\n"
+                           "--include-link also writes device id and baud,\n"
+                           "--save-to-flash saves afterwards"),
+         &CtlRunner::runApply},
+        {"report", "report FILE.pdf|.html",
+         QT_TRANSLATE_NOOP("stepcomctl", "write the commissioning report (--name, --notes,\n"
+                                         "--lang en|zh_CN)"),
+         &CtlRunner::runReport},
+    };
+    return table;
+}
+
+QString CtlRunner::commandsHelp()
+{
+    // "  usage<padded to 23>help", continuation lines indented under the help.
+    QString text = QCoreApplication::translate("stepcomctl", "Commands:") + QLatin1Char('\n');
+    for (const CtlCommand &c : commands()) {
+        const QStringList lines =
+            QCoreApplication::translate("stepcomctl", c.help).split(QLatin1Char('\n'));
+        text += QStringLiteral("  %1%2\n").arg(QLatin1String(c.usage), -23).arg(lines.first());
+        for (qsizetype i = 1; i < lines.size(); ++i)
+            text += QString(25, QLatin1Char(' ')) + lines.at(i) + QLatin1Char('\n');
+    }
+    return text;
+}
+
+QString CtlRunner::unknownCommandMessage(const QString &name)
+{
+    QStringList names;
+    for (const CtlCommand &c : commands())
+        names << QLatin1String(c.name);
+    return tr("unknown command '%1' (%2)").arg(name, Translators::joinList(names));
+}
+
 void CtlRunner::start()
 {
-    const QString &c = m_options.command;
-    if (c == QLatin1String("params"))
-        runParams();
-    else if (c == QLatin1String("read"))
-        runRead();
-    else if (c == QLatin1String("write"))
-        runWrite();
-    else if (c == QLatin1String("command"))
-        runCommand();
-    else if (c == QLatin1String("monitor"))
-        runMonitor();
-    else if (c == QLatin1String("dump"))
-        runDump();
-    else if (c == QLatin1String("diff"))
-        runDiff();
-    else if (c == QLatin1String("apply"))
-        runApply();
-    else if (c == QLatin1String("report"))
-        runReport();
-    else
-        fail(UsageError, tr("unknown command '%1' (params, read, write, command, monitor, dump, "
-                            "diff, apply, report)")
-                             .arg(c));
+    for (const CtlCommand &c : commands()) {
+        if (m_options.command == QLatin1String(c.name)) {
+            (this->*c.run)();
+            return;
+        }
+    }
+    fail(UsageError, unknownCommandMessage(m_options.command));
 }
 
 void CtlRunner::fail(int code, const QString &message)

@@ -10,6 +10,17 @@
 namespace stepcom {
 
 struct Profile;
+class CtlRunner;
+
+// One stepcomctl command: its name, how it is called, its help (English source, translated in
+// the "stepcomctl" context) and the runner's handler.
+struct CtlCommand
+{
+    const char *name;
+    const char *usage;
+    const char *help;
+    void (CtlRunner::*run)();
+};
 
 // Runs one stepcomctl command against a controller and reports an exit code:
 // 0 success, 1 link or device error, 2 usage or validation error.
@@ -22,6 +33,13 @@ public:
     CtlRunner(const CtlOptions &options, const RegisterMap &map, QObject *parent = nullptr);
     // Starts the command; `finished` follows once.
     void start();
+
+    // Every command, in the order the help lists them.
+    static const QList<CtlCommand> &commands();
+    // The "Commands:" part of --help, built from the table.
+    static QString commandsHelp();
+    // The message for a command that is not in the table.
+    static QString unknownCommandMessage(const QString &name);
 
 Q_SIGNALS:
     void finished(int exitCode);
