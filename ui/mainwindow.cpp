@@ -18,6 +18,7 @@
 #include "widgets/messageview.h"
 #include "widgets/statusdock.h" // monitoring (issue 5)
 #include "widgets/trafficview.h"
+#include "writeflow.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -46,6 +47,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     , m_stack(new QStackedWidget(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
+    m_writeFlow = new WriteFlow(session, this);
     auto *splitter = new QSplitter(this);
     splitter->addWidget(m_sidebar);
     splitter->addWidget(m_stack);
@@ -112,7 +114,7 @@ void MainWindow::addPage(Page *page)
 
 WriteChangesDialog *MainWindow::writeDialog() const
 {
-    return m_writeDialog;
+    return m_writeFlow->dialog();
 }
 
 QMessageBox *MainWindow::closeQuestion() const
@@ -303,15 +305,7 @@ void MainWindow::updateActions()
 
 void MainWindow::writeChanges()
 {
-    if (!m_session->parameters()->hasEdits() || !m_session->isConnected())
-        return;
-    if (m_writeDialog)
-        m_writeDialog->close();
-    m_writeDialog = new WriteChangesDialog(*m_session->parameters(), this);
-    m_writeDialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(m_writeDialog, &QDialog::accepted, this,
-            [this, dialog = m_writeDialog.data()] { m_session->write(dialog->writes()); });
-    m_writeDialog->open();
+    m_writeFlow->openAll();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)

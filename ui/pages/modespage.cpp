@@ -96,6 +96,7 @@ constexpr int kModeCount = int(std::size(kModes));
 ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
 {
+    m_writeFlow = new WriteFlow(session, this);
     QWidget *content = scrollableContent();
     auto *layout = new QVBoxLayout(content);
 
@@ -265,19 +266,7 @@ void ModesPage::confirmMode(int mode)
 
 void ModesPage::openWriteDialog()
 {
-    if (!session()->isConnected())
-        return;
-    if (m_writeDialog)
-        m_writeDialog->close();
-    m_writeDialog = new WriteChangesDialog(*session()->parameters(), {kTripsKey}, this);
-    m_writeDialog->setAttribute(Qt::WA_DeleteOnClose);
-    if (m_writeDialog->writes().isEmpty()) {
-        m_writeDialog->deleteLater();
-        return;
-    }
-    connect(m_writeDialog, &QDialog::accepted, this,
-            [this, dialog = m_writeDialog.data()] { session()->write(dialog->writes()); });
-    m_writeDialog->open();
+    m_writeFlow->openFor({kTripsKey});
 }
 
 void ModesPage::refresh()

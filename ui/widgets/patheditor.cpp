@@ -49,6 +49,7 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
     , m_prefix(kind == Kind::Arc ? QStringLiteral("arc.") : QStringLiteral("line."))
 {
     setObjectName(kind == Kind::Arc ? QStringLiteral("arcEditor") : QStringLiteral("lineEditor"));
+    m_writeFlow = new WriteFlow(session, this);
     ParameterStore *store = session->parameters();
     auto *layout = new QVBoxLayout(this);
 
@@ -343,19 +344,7 @@ void PathEditor::update()
 
 void PathEditor::openWriteDialog()
 {
-    if (!m_session->isConnected())
-        return;
-    if (m_writeDialog)
-        m_writeDialog->close();
-    m_writeDialog = new WriteChangesDialog(*m_session->parameters(), m_keys, this);
-    m_writeDialog->setAttribute(Qt::WA_DeleteOnClose);
-    if (m_writeDialog->writes().isEmpty()) {
-        m_writeDialog->deleteLater();
-        return;
-    }
-    connect(m_writeDialog, &QDialog::accepted, this,
-            [this, dialog = m_writeDialog.data()] { m_session->write(dialog->writes()); });
-    m_writeDialog->open();
+    m_writeFlow->openFor(m_keys);
 }
 
 void PathEditor::retranslate()
