@@ -1088,8 +1088,8 @@
         <translation>report written to %1</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</translation>
+        <source>unknown command &apos;%1&apos; (%2)</source>
+        <translation>unknown command &apos;%1&apos; (%2)</translation>
     </message>
     <message>
         <source>diff needs one profile file (compared with the controller) or two (compared with each other)</source>
@@ -1591,6 +1591,26 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n request</numerusform>
             <numerusform>%n requests</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>the built-in simulator was replaced</source>
+        <translation>the built-in simulator was replaced</translation>
+    </message>
+    <message>
+        <source>this program has no built-in simulator</source>
+        <translation>this program has no built-in simulator</translation>
+    </message>
+    <message>
+        <source>the page was left</source>
+        <translation>the page was left</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>the window lost focus</translation>
+    </message>
+    <message>
+        <source>the window closes</source>
+        <translation>the window closes</translation>
     </message>
 </context>
 <context>
@@ -2411,18 +2431,6 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n edited values were never written to the controller. Close anyway and lose them?</numerusform>
         </translation>
     </message>
-    <message>
-        <source>another page was chosen</source>
-        <translation>another page was chosen</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>the window lost focus</translation>
-    </message>
-    <message>
-        <source>the window closes</source>
-        <translation>the window closes</translation>
-    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -2793,14 +2801,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Homes %1.</source>
         <translation>Homes %1.</translation>
-    </message>
-    <message>
-        <source>the page was left</source>
-        <translation>the page was left</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>the window lost focus</translation>
     </message>
     <message>
         <source>&amp;Clear</source>
@@ -4599,54 +4599,74 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>What to do.</translation>
     </message>
     <message>
-        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
-
-Commands:
-  params                 list every parameter and command of the register map
-  read [KEY...]          read parameters (all when none are named)
-  write KEY=VALUE...     write parameters in engineering units, then verify
-  command NAME           pulse a command coil (e.g. motor1.stop, estop)
-  monitor                print the live status as one JSON object per line,
-                         until --count samples or Ctrl-C (--interval MS)
-  dump FILE              read every setting and save it as a profile file
-                         (--name, --notes; --include-link adds id and baud)
-  diff FILE              compare the controller with a profile; exit 0 same,
-                         1 different, 2 bad file, 3 link or device error
-  diff A.json B.json     compare two profiles, no controller needed; exit 0
-                         same, 1 different, 2 bad file
-  apply FILE             write the profile&apos;s values that differ, after showing
-                         them and asking (--yes skips the question), then verify;
-                         --include-link also writes device id and baud,
-                         --save-to-flash saves afterwards
-  report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN; --from PROFILE: from a profile
-                         file, no controller needed)
-
-Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
-
-Commands:
-  params                 list every parameter and command of the register map
-  read [KEY...]          read parameters (all when none are named)
-  write KEY=VALUE...     write parameters in engineering units, then verify
-  command NAME           pulse a command coil (e.g. motor1.stop, estop)
-  monitor                print the live status as one JSON object per line,
-                         until --count samples or Ctrl-C (--interval MS)
-  dump FILE              read every setting and save it as a profile file
-                         (--name, --notes; --include-link adds id and baud)
-  diff FILE              compare the controller with a profile; exit 0 same,
-                         1 different, 2 bad file, 3 link or device error
-  diff A.json B.json     compare two profiles, no controller needed; exit 0
-                         same, 1 different, 2 bad file
-  apply FILE             write the profile&apos;s values that differ, after showing
-                         them and asking (--yes skips the question), then verify;
-                         --include-link also writes device id and baud,
-                         --save-to-flash saves afterwards
-  report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN; --from PROFILE: from a profile
-                         file, no controller needed)
-
-Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</translation>
+        <source>list every parameter and command of the register map</source>
+        <translation>list every parameter and command of the register map</translation>
+    </message>
+    <message>
+        <source>read parameters (all when none are named)</source>
+        <translation>read parameters (all when none are named)</translation>
+    </message>
+    <message>
+        <source>write parameters in engineering units, then verify</source>
+        <translation>write parameters in engineering units, then verify</translation>
+    </message>
+    <message>
+        <source>pulse a command coil (e.g. motor1.stop, estop)</source>
+        <translation>pulse a command coil (e.g. motor1.stop, estop)</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS)</source>
+        <translation>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS)</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud)</source>
+        <translation>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud)</translation>
+    </message>
+    <message>
+        <source>compare the controller with a profile; exit 0 same,
+1 different, 2 bad file, 3 link or device error</source>
+        <translation>compare the controller with a profile; exit 0 same,
+1 different, 2 bad file, 3 link or device error</translation>
+    </message>
+    <message>
+        <source>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards</source>
+        <translation>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>Commands:</translation>
+    </message>
+    <message>
+        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</source>
+        <translation>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</translation>
+    </message>
+    <message>
+        <source>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
+        <translation>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</translation>
+    </message>
+    <message>
+        <source>compare two profiles, no controller needed; exit 0
+same, 1 different, 2 bad file</source>
+        <translation>compare two profiles, no controller needed; exit 0
+same, 1 different, 2 bad file</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file, no controller needed)</source>
+        <translation>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file, no controller needed)</translation>
     </message>
 </context>
 </TS>

@@ -1080,8 +1080,8 @@
         <translation>报告已写入 %1</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>未知命令 &apos;%1&apos;（params、read、write、command、monitor、dump、diff、apply、report）</translation>
+        <source>unknown command &apos;%1&apos; (%2)</source>
+        <translation>未知命令 &apos;%1&apos;（%2）</translation>
     </message>
     <message>
         <source>diff needs one profile file (compared with the controller) or two (compared with each other)</source>
@@ -1579,6 +1579,26 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>
             <numerusform>%n 次请求</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>the built-in simulator was replaced</source>
+        <translation>内置模拟器已被替换</translation>
+    </message>
+    <message>
+        <source>this program has no built-in simulator</source>
+        <translation>此程序没有内置模拟器</translation>
+    </message>
+    <message>
+        <source>the page was left</source>
+        <translation>离开了此页面</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>窗口失去焦点</translation>
+    </message>
+    <message>
+        <source>the window closes</source>
+        <translation>窗口正在关闭</translation>
     </message>
 </context>
 <context>
@@ -2398,18 +2418,6 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>有 %n 个已修改的值尚未写入控制器。仍要关闭并放弃这些修改吗？</numerusform>
         </translation>
     </message>
-    <message>
-        <source>another page was chosen</source>
-        <translation>切换到了其他页面</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>窗口失去焦点</translation>
-    </message>
-    <message>
-        <source>the window closes</source>
-        <translation>窗口正在关闭</translation>
-    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -2780,14 +2788,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Homes %1.</source>
         <translation>回零顺序：%1。</translation>
-    </message>
-    <message>
-        <source>the page was left</source>
-        <translation>离开了此页面</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>窗口失去焦点</translation>
     </message>
     <message>
         <source>&amp;Clear</source>
@@ -4574,54 +4574,74 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>要执行的命令。</translation>
     </message>
     <message>
-        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
-
-Commands:
-  params                 list every parameter and command of the register map
-  read [KEY...]          read parameters (all when none are named)
-  write KEY=VALUE...     write parameters in engineering units, then verify
-  command NAME           pulse a command coil (e.g. motor1.stop, estop)
-  monitor                print the live status as one JSON object per line,
-                         until --count samples or Ctrl-C (--interval MS)
-  dump FILE              read every setting and save it as a profile file
-                         (--name, --notes; --include-link adds id and baud)
-  diff FILE              compare the controller with a profile; exit 0 same,
-                         1 different, 2 bad file, 3 link or device error
-  diff A.json B.json     compare two profiles, no controller needed; exit 0
-                         same, 1 different, 2 bad file
-  apply FILE             write the profile&apos;s values that differ, after showing
-                         them and asking (--yes skips the question), then verify;
-                         --include-link also writes device id and baud,
-                         --save-to-flash saves afterwards
-  report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN; --from PROFILE: from a profile
-                         file, no controller needed)
-
-Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。
-
-命令：
-  params                 列出寄存器表中的全部参数和命令
-  read [KEY...]          读取参数（未指定时读取全部）
-  write KEY=VALUE...     以工程单位写入参数，然后校验
-  command NAME           触发一个命令线圈（例如 motor1.stop、estop）
-  monitor                以每行一个 JSON 对象输出实时状态，
-                         直到 --count 个样本或 Ctrl-C（--interval MS）
-  dump FILE              读取全部设置并保存为参数文件
-                         （--name、--notes；--include-link 包括地址和波特率）
-  diff FILE              将控制器与参数文件比较；退出码 0 相同，
-                         1 不同，2 文件错误，3 连接或设备错误
-  diff A.json B.json     比较两个参数文件，无需控制器；退出码 0 相同，
-                         1 不同，2 文件错误
-  apply FILE             写入参数文件中不同的值：先列出并询问
-                         （--yes 跳过询问），然后校验；
-                         --include-link 同时写入设备地址和波特率，
-                         --save-to-flash 之后保存到闪存
-  report FILE.pdf|.html  生成调试报告（--name、--notes、
-                         --lang en|zh_CN；--from PROFILE：根据参数文件
-                         生成，无需控制器）
-
-退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
+        <source>list every parameter and command of the register map</source>
+        <translation>列出寄存器表中的全部参数和命令</translation>
+    </message>
+    <message>
+        <source>read parameters (all when none are named)</source>
+        <translation>读取参数（未指定时读取全部）</translation>
+    </message>
+    <message>
+        <source>write parameters in engineering units, then verify</source>
+        <translation>以工程单位写入参数，然后校验</translation>
+    </message>
+    <message>
+        <source>pulse a command coil (e.g. motor1.stop, estop)</source>
+        <translation>触发一个命令线圈（例如 motor1.stop、estop）</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS)</source>
+        <translation>以每行一个 JSON 对象输出实时状态，
+直到 --count 个样本或 Ctrl-C（--interval MS）</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud)</source>
+        <translation>读取全部设置并保存为参数文件
+（--name、--notes；--include-link 包括地址和波特率）</translation>
+    </message>
+    <message>
+        <source>compare the controller with a profile; exit 0 same,
+1 different, 2 bad file, 3 link or device error</source>
+        <translation>将控制器与参数文件比较；退出码 0 相同，
+1 不同，2 文件错误，3 连接或设备错误</translation>
+    </message>
+    <message>
+        <source>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards</source>
+        <translation>写入参数文件中不同的值：先列出并询问
+（--yes 跳过询问），然后校验；
+--include-link 同时写入设备地址和波特率，
+--save-to-flash 之后保存到闪存</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>命令：</translation>
+    </message>
+    <message>
+        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</source>
+        <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。</translation>
+    </message>
+    <message>
+        <source>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
+        <translation>退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
+    </message>
+    <message>
+        <source>compare two profiles, no controller needed; exit 0
+same, 1 different, 2 bad file</source>
+        <translation>比较两个参数文件，无需控制器；退出码 0 相同，
+1 不同，2 文件错误</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file, no controller needed)</source>
+        <translation>生成调试报告（--name、--notes、
+--lang en|zh_CN；--from PROFILE：根据参数文件
+生成，无需控制器）</translation>
     </message>
 </context>
 </TS>

@@ -3,7 +3,6 @@
 
 #include "consolereader.h"
 
-#include "bus/modbuslink.h"
 #include "profile/profilecomparison.h"
 #include "profile/profilediff.h"
 #include "profile/profilefile.h"
@@ -66,31 +65,29 @@ void CtlRunner::runDump()
     }
     const QString path = m_options.arguments.first();
     connectThen([this, path] {
-        m_device->read(
-            Profile::profileParameters(m_map, true), Priority::Read,
-            [this, path](const ReadOutcome &r) {
-                if (!r.ok) {
-                    for (const QString &e : r.errors)
-                        m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-                    fail(DeviceError, tr("nothing was saved: the controller could "
-                                         "not be read completely"));
-                    return;
-                }
-                Profile profile = Profile::fromValues(m_map, r.values, m_options.includeLink);
-                profile.name =
-                    m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
-                profile.notes = m_options.notes;
-                profile.deviceId = m_link->settings().deviceId;
-                if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
-                    fail(UsageError, e);
-                    return;
-                }
-                m_out << tr("saved %n parameter(s) of %1 to %2", nullptr,
-                            int(profile.values.size()))
-                             .arg(m_link->settings().describe(), path)
-                      << Qt::endl;
-                finish(Ok);
-            });
+        m_session->read(Profile::profileParameters(m_map, true), [this,
+                                                                  path](const ReadOutcome &r) {
+            if (!r.ok) {
+                for (const QString &e : r.errors)
+                    m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+                fail(DeviceError, tr("nothing was saved: the controller could "
+                                     "not be read completely"));
+                return;
+            }
+            Profile profile = Profile::fromValues(m_map, r.values, m_options.includeLink);
+            profile.name =
+                m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
+            profile.notes = m_options.notes;
+            profile.deviceId = m_session->settings().deviceId;
+            if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
+                fail(UsageError, e);
+                return;
+            }
+            m_out << tr("saved %n parameter(s) of %1 to %2", nullptr, int(profile.values.size()))
+                         .arg(m_session->settings().describe(), path)
+                  << Qt::endl;
+            finish(Ok);
+        });
     });
 }
 
@@ -110,9 +107,8 @@ void CtlRunner::runDiff()
         return;
     m_linkError = 3; // 1 means "different" here
     connectThen([this, profile] {
-        m_device->read(
-            Profile::profileParameters(m_map, true), Priority::Read,
-            [this, profile](const ReadOutcome &r) {
+        m_session->read(
+            Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
                 if (!r.ok) {
                     for (const QString &e : r.errors)
                         m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
@@ -228,9 +224,8 @@ void CtlRunner::runApply()
               << tr("note: device.baud changes the controller's serial side only") << Qt::endl;
     }
     connectThen([this, profile] {
-        m_device->read(
-            Profile::profileParameters(m_map, true), Priority::Read,
-            [this, profile](const ReadOutcome &r) {
+        m_session->read(
+            Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
                 if (!r.ok) {
                     for (const QString &e : r.errors)
                         m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
@@ -309,7 +304,7 @@ void CtlRunner::confirmThenApply(const QList<ParameterWrite> &writes)
 
 void CtlRunner::applyWrites(const QList<ParameterWrite> &writes)
 {
-    m_device->write(writes, [this, writes](const WriteOutcome &w) {
+    m_session->write(writes, [this, writes](const WriteOutcome &w) {
         for (const ParameterWrite &pw : writes) {
             const bool verified =
                 w.written.contains(pw.parameter->key) &&
@@ -347,7 +342,7 @@ void CtlRunner::saveToFlashThenFinish()
         fail(DeviceError, tr("this map has no save_to_flash command"));
         return;
     }
-    m_device->command(*save, [this](const Result &r) {
+    m_session->command(*save, [this](const Result &r) {
         if (!r.ok) {
             fail(DeviceError, r.errorText);
             return;
@@ -376,7 +371,7 @@ void CtlRunner::runReport()
     }
     // The report speaks the program's language (--lang or the environment), installed in main().
     connectThen([this, path] {
-        m_device->readAll([this, path](const ReadOutcome &r) {
+        m_session->readAll([this, path](const ReadOutcome &r) {
             if (!r.ok) {
                 for (const QString &e : r.errors)
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
@@ -386,8 +381,8 @@ void CtlRunner::runReport()
             ReportInput input;
             input.map = m_map;
             input.values = r.values;
-            input.link = m_link->settings().describe();
-            input.deviceId = m_link->settings().deviceId;
+            input.link = m_session->settings().describe();
+            input.deviceId = m_session->settings().deviceId;
             input.title = m_options.name;
             input.notes = m_options.notes;
             input.date = QDateTime::currentDateTime();

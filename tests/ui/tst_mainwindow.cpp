@@ -1,5 +1,6 @@
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
+#include "device/sessioninternals.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "language.h"
@@ -7,6 +8,7 @@
 #include "page.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 #include "widgets/parameterfield.h"
 #include "widgets/parameterform.h"
 
@@ -29,7 +31,7 @@ class TestMainWindow : public QObject
     std::unique_ptr<DeviceSession> session;
     std::unique_ptr<MainWindow> window;
 
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
     ParameterField *field(const QString &key) const
     {
         for (ParameterField *f : window->findChildren<ParameterField *>()) {
@@ -53,6 +55,7 @@ private Q_SLOTS:
         window = std::make_unique<MainWindow>(session.get());
         window->show();
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        test::useBuiltinSimulator(*session);
         session->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
     }
@@ -68,7 +71,7 @@ private Q_SLOTS:
         ParameterField *speed = field(QStringLiteral("motor1.speed"));
         QVERIFY(speed);
         speed->enterText(QStringLiteral("450"));
-        QCOMPARE(session->store()->state(QStringLiteral("motor1.speed")),
+        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
                  ParameterStore::State::Edited);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // nothing written yet
         QVERIFY(window->action(QStringLiteral("writeChanges"))->isEnabled());
@@ -82,15 +85,15 @@ private Q_SLOTS:
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
         window->writeDialog()->findChild<QPushButton *>(QStringLiteral("writeButton"))->click();
         QTRY_COMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
-        QTRY_COMPARE(session->store()->state(QStringLiteral("motor1.speed")),
+        QTRY_COMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
                      ParameterStore::State::InSync);
-        QVERIFY(session->store()->unsavedToFlash());
+        QVERIFY(session->parameters()->unsavedToFlash());
     }
 
     void rejectedValueWritesNothing()
     {
         int writes = 0;
-        connect(session->link(), &ModbusLink::dispatched, this,
+        connect(SessionInternals::link(*session), &ModbusLink::dispatched, this,
                 [&writes](quint64, const Request &r) {
                     writes += r.type != Request::Type::ReadHolding ? 1 : 0;
                 });
@@ -99,7 +102,7 @@ private Q_SLOTS:
         speed->enterText(QStringLiteral("99999"));
         QCOMPARE(rejected.size(), 1);
         QVERIFY(rejected.at(0).at(0).toString().contains(QStringLiteral("out of range")));
-        QVERIFY(!session->store()->hasEdits());
+        QVERIFY(!session->parameters()->hasEdits());
         QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
         QTest::qWait(300);
         QCOMPARE(writes, 0);
@@ -116,7 +119,7 @@ private Q_SLOTS:
         window->writeChanges();
         QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
         QStringList order;
-        connect(session->link(), &ModbusLink::dispatched, this,
+        connect(SessionInternals::link(*session), &ModbusLink::dispatched, this,
                 [&order](quint64, const Request &r) { order << r.what; });
         session->readAll(); // a queue of work in front
         QTest::keyClick(window->writeDialog()->table(), Qt::Key_F12);

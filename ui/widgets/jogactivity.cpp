@@ -1,7 +1,6 @@
 #include "widgets/jogactivity.h"
 
 #include "device/devicesession.h"
-#include "poll/poller.h"
 
 namespace stepcom {
 
@@ -10,7 +9,7 @@ JogActivity::JogActivity(DeviceSession *session, const QStringList &runningKeys,
     , m_session(session)
     , m_keys(runningKeys)
 {
-    connect(session->statusPoller(), &Poller::cycleFinished, this,
+    connect(session, &DeviceSession::statusCycleFinished, this,
             [this](bool ok, qint64) { onCycle(ok); });
     connect(session, &DeviceSession::disconnected, this, &JogActivity::clear);
 }
@@ -36,7 +35,7 @@ QList<int> JogActivity::running() const
 {
     QList<int> on;
     for (int i = 0; i < m_keys.size(); ++i) {
-        if (m_session->store()->deviceValue(m_keys.at(i)).value_or(0) != 0)
+        if (m_session->parameters()->deviceValue(m_keys.at(i)).value_or(0) != 0)
             on << i + 1;
     }
     return on;

@@ -4,6 +4,7 @@
 #include "motion/interpolationtiming.h"
 
 #include "dialogs/writechangesdialog.h"
+#include "writeflow.h"
 
 #include <QPointer>
 #include <QTimer>
@@ -43,7 +44,7 @@ public:
     QPushButton *stopButton() const { return m_stop; }
     QPushButton *writeButton() const { return m_write; }
     QLabel *startReason() const { return m_reason; }
-    WriteChangesDialog *writeDialog() const { return m_writeDialog; }
+    WriteChangesDialog *writeDialog() const { return m_writeFlow->dialog(); }
 
     // The geometry of what the fields show now, typing included.
     interpolation::Geometry geometry() const;
@@ -93,7 +94,7 @@ private:
     QPushButton *m_start;
     QPushButton *m_stop;
     QLabel *m_reason;
-    QPointer<WriteChangesDialog> m_writeDialog;
+    WriteFlow *m_writeFlow = nullptr;
     QTimer m_startSent; // a start was sent and the poll has not seen it yet
 };
 
