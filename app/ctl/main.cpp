@@ -76,10 +76,11 @@ int main(int argc, char *argv[])
         "  apply FILE             write the profile's values that differ, after showing\n"
         "                         them and asking (--yes skips the question), then verify;\n"
         "                         --include-link also writes device id and baud,\n"
-        "                         --save-to-flash saves afterwards\n"
+        "                         --save-to-flash saves afterwards; the settings it\n"
+        "                         replaces are saved as a backup first (--no-backup)\n"
         "  report FILE.pdf|.html  write the commissioning report (--name, --notes,\n"
         "                         --lang en|zh_CN; --from PROFILE: from a profile\n"
-        "                         file, no controller needed)\n\n"
+        "                         file and its checklist, no controller needed)\n\n"
         "Exit codes: 0 success, 1 link or device error, 2 usage or validation error."));
     parser.addHelpOption();
     parser.addVersionOption();
