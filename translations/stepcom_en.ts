@@ -76,6 +76,41 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BackupStore</name>
+    <message>
+        <source>apply a profile</source>
+        <translation>apply a profile</translation>
+    </message>
+    <message>
+        <source>factory reset</source>
+        <translation>factory reset</translation>
+    </message>
+    <message>
+        <source>save to flash</source>
+        <translation>save to flash</translation>
+    </message>
+    <message>
+        <source>device id change</source>
+        <translation>device id change</translation>
+    </message>
+    <message>
+        <source>baud rate change</source>
+        <translation>baud rate change</translation>
+    </message>
+    <message>
+        <source>cannot create the backup folder %1</source>
+        <translation>cannot create the backup folder %1</translation>
+    </message>
+    <message>
+        <source>no settings to back up: the controller was not read</source>
+        <translation>no settings to back up: the controller was not read</translation>
+    </message>
+    <message>
+        <source>Backup before %1</source>
+        <translation>Backup before %1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusScanDialog</name>
     <message>
         <source>Scan bus</source>
@@ -301,6 +336,466 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CertificateSection</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Commissioning checklist</source>
+        <translation>Commissioning checklist</translation>
+    </message>
+    <message>
+        <source>No commissioning checklist was recorded for this machine: this report shows settings, not tests.</source>
+        <translation>No commissioning checklist was recorded for this machine: this report shows settings, not tests.</translation>
+    </message>
+    <message>
+        <source>Checklist file: %1</source>
+        <translation>Checklist file: %1</translation>
+    </message>
+    <message>
+        <source>The checklist was last run with other settings (fingerprint %1); this report&apos;s settings have the fingerprint %2.</source>
+        <translation>The checklist was last run with other settings (fingerprint %1); this report&apos;s settings have the fingerprint %2.</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Step</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Result</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Measured</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Note</translation>
+    </message>
+    <message>
+        <source>%1 (attempt %2)</source>
+        <translation>%1 (attempt %2)</translation>
+    </message>
+    <message>
+        <source>Software travel limits</source>
+        <translation>Software travel limits</translation>
+    </message>
+    <message>
+        <source>StepCom&apos;s own limits for steps, moves to a position and jogs; not controller registers. The limit switches stay the machine&apos;s protection.</source>
+        <translation>StepCom&apos;s own limits for steps, moves to a position and jogs; not controller registers. The limit switches stay the machine&apos;s protection.</translation>
+    </message>
+    <message>
+        <source>Motor</source>
+        <translation>Motor</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>open</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Signatures</source>
+        <translation>Signatures</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Role</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Signature</source>
+        <translation>Signature</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Date</translation>
+    </message>
+    <message>
+        <source>Commissioned by</source>
+        <translation>Commissioned by</translation>
+    </message>
+    <message>
+        <source>Accepted by (customer)</source>
+        <translation>Accepted by (customer)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::Checklist</name>
+    <message>
+        <source>%1: a result is passed, failed or skipped, not pending</source>
+        <translation>%1: a result is passed, failed or skipped, not pending</translation>
+    </message>
+    <message>
+        <source>%1: the attempt has no valid time</source>
+        <translation>%1: the attempt has no valid time</translation>
+    </message>
+    <message>
+        <source>%1: the note has %2 characters (at most %3)</source>
+        <translation>%1: the note has %2 characters (at most %3)</translation>
+    </message>
+    <message>
+        <source>%1: %2 measurements (at most %3)</source>
+        <translation>%1: %2 measurements (at most %3)</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a measurement key (1-40 of a-z, 0-9, _ and .)</source>
+        <translation>%1: &quot;%2&quot; is not a measurement key (1-40 of a-z, 0-9, _ and .)</translation>
+    </message>
+    <message>
+        <source>%1: the measurement &quot;%2&quot; is too long</source>
+        <translation>%1: the measurement &quot;%2&quot; is too long</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a step of this checklist</source>
+        <translation>&quot;%1&quot; is not a step of this checklist</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a step of this checklist (%2 motor(s))</source>
+        <translation>&quot;%1&quot; is not a step of this checklist (%2 motor(s))</translation>
+    </message>
+    <message>
+        <source>%1: %2 attempts (at most %3)</source>
+        <translation>%1: %2 attempts (at most %3)</translation>
+    </message>
+    <message>
+        <source>%1: the attempts must be numbered upwards (found %2 after %3)</source>
+        <translation>%1: the attempts must be numbered upwards (found %2 after %3)</translation>
+    </message>
+    <message>
+        <source>Not started</source>
+        <translation>Not started</translation>
+    </message>
+    <message>
+        <source>In progress: not every step was run</source>
+        <translation>In progress: not every step was run</translation>
+    </message>
+    <message>
+        <source>Failed: at least one step failed</source>
+        <translation>Failed: at least one step failed</translation>
+    </message>
+    <message>
+        <source>Passed, with skipped steps</source>
+        <translation>Passed, with skipped steps</translation>
+    </message>
+    <message>
+        <source>Passed: every step passed</source>
+        <translation>Passed: every step passed</translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps passed, %3 failed, %4 skipped, %5 not run</source>
+        <translation>%1 of %2 steps passed, %3 failed, %4 skipped, %5 not run</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistFile</name>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>true/false</source>
+        <translation>true/false</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>a number</translation>
+    </message>
+    <message>
+        <source>a text</source>
+        <translation>a text</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>a list</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>an object</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nothing</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>the file is empty</translation>
+    </message>
+    <message>
+        <source>the file is %1 bytes: far too large for a checklist</source>
+        <translation>the file is %1 bytes: far too large for a checklist</translation>
+    </message>
+    <message>
+        <source>not valid JSON at line %1, column %2: %3</source>
+        <translation>not valid JSON at line %1, column %2: %3</translation>
+    </message>
+    <message>
+        <source>the file holds a JSON list, not a checklist</source>
+        <translation>the file holds a JSON list, not a checklist</translation>
+    </message>
+    <message>
+        <source>… and %1 more problems</source>
+        <translation>… and %1 more problems</translation>
+    </message>
+    <message>
+        <source>%1unknown field &quot;%2&quot; (allowed: %3)</source>
+        <translation>%1unknown field &quot;%2&quot; (allowed: %3)</translation>
+    </message>
+    <message>
+        <source>%1&quot;%2&quot; must be a text, found %3</source>
+        <translation>%1&quot;%2&quot; must be a text, found %3</translation>
+    </message>
+    <message>
+        <source>this is a profile, not a checklist</source>
+        <translation>this is a profile, not a checklist</translation>
+    </message>
+    <message>
+        <source>not a StepCom checklist: &quot;format&quot; must be &quot;%1&quot;</source>
+        <translation>not a StepCom checklist: &quot;format&quot; must be &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>checklist schema %1 is newer than this StepCom reads (%2): update StepCom</source>
+        <translation>checklist schema %1 is newer than this StepCom reads (%2): update StepCom</translation>
+    </message>
+    <message>
+        <source>&quot;schema&quot; must be %1</source>
+        <translation>&quot;schema&quot; must be %1</translation>
+    </message>
+    <message>
+        <source>the checklist is for register map &quot;%1&quot;, but this map is &quot;%2&quot;</source>
+        <translation>the checklist is for register map &quot;%1&quot;, but this map is &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>&quot;machine&quot; and &quot;settingsFingerprint&quot; hold at most 200 characters</source>
+        <translation>&quot;machine&quot; and &quot;settingsFingerprint&quot; hold at most 200 characters</translation>
+    </message>
+    <message>
+        <source>&quot;steps&quot; must be a list, found %1</source>
+        <translation>&quot;steps&quot; must be a list, found %1</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>step %1</translation>
+    </message>
+    <message>
+        <source>%1: must be an object, found %2</source>
+        <translation>%1: must be an object, found %2</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; appears more than once</source>
+        <translation>%1: &quot;%2&quot; appears more than once</translation>
+    </message>
+    <message>
+        <source>%1: &quot;attempts&quot; must be a list, found %2</source>
+        <translation>%1: &quot;attempts&quot; must be a list, found %2</translation>
+    </message>
+    <message>
+        <source>%1: &quot;attempt&quot; must be a whole number from 1</source>
+        <translation>%1: &quot;attempt&quot; must be a whole number from 1</translation>
+    </message>
+    <message>
+        <source>%1: &quot;result&quot; must be passed, failed or skipped, found &quot;%2&quot;</source>
+        <translation>%1: &quot;result&quot; must be passed, failed or skipped, found &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>%1: &quot;time&quot; is not a date and time (2024-05-31T14:02:00Z): &quot;%2&quot;</source>
+        <translation>%1: &quot;time&quot; is not a date and time (2024-05-31T14:02:00Z): &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>%1: &quot;measurements&quot; must be a list, found %2</source>
+        <translation>%1: &quot;measurements&quot; must be a list, found %2</translation>
+    </message>
+    <message>
+        <source>no register map to check the checklist against</source>
+        <translation>no register map to check the checklist against</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1: no such file</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes, far too large for a checklist</source>
+        <translation>%1: %2 bytes, far too large for a checklist</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistStep</name>
+    <message>
+        <source>Not run</source>
+        <translation>Not run</translation>
+    </message>
+    <message>
+        <source>Passed</source>
+        <translation>Passed</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Failed</translation>
+    </message>
+    <message>
+        <source>Skipped</source>
+        <translation>Skipped</translation>
+    </message>
+    <message>
+        <source>direction</source>
+        <translation>direction</translation>
+    </message>
+    <message>
+        <source>travel calibration</source>
+        <translation>travel calibration</translation>
+    </message>
+    <message>
+        <source>positive limit input</source>
+        <translation>positive limit input</translation>
+    </message>
+    <message>
+        <source>negative limit input</source>
+        <translation>negative limit input</translation>
+    </message>
+    <message>
+        <source>home input</source>
+        <translation>home input</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>homing</translation>
+    </message>
+    <message>
+        <source>Machine: homing order</source>
+        <translation>Machine: homing order</translation>
+    </message>
+    <message>
+        <source>Machine: interpolation test</source>
+        <translation>Machine: interpolation test</translation>
+    </message>
+    <message>
+        <source>Machine: save to flash and read back</source>
+        <translation>Machine: save to flash and read back</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2</source>
+        <translation>Motor %1: %2</translation>
+    </message>
+    <message>
+        <source>Move motor %1 a small step forward. Did the axis move toward + ? No offers to flip its direction register.</source>
+        <translation>Move motor %1 a small step forward. Did the axis move toward + ? No offers to flip its direction register.</translation>
+    </message>
+    <message>
+        <source>Move motor %1 by a distance you choose, measure what the axis really moved and type it in: StepCom proposes the corrected pitch (pitch × measured ÷ commanded).</source>
+        <translation>Move motor %1 by a distance you choose, measure what the axis really moved and type it in: StepCom proposes the corrected pitch (pitch × measured ÷ commanded).</translation>
+    </message>
+    <message>
+        <source>Press the positive limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</source>
+        <translation>Press the positive limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</translation>
+    </message>
+    <message>
+        <source>Press the negative limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</source>
+        <translation>Press the negative limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</translation>
+    </message>
+    <message>
+        <source>Press the home switch of motor %1 by hand (often the negative limit&apos;s switch): StepCom compares the input that changed with the configuration.</source>
+        <translation>Press the home switch of motor %1 by hand (often the negative limit&apos;s switch): StepCom compares the input that changed with the configuration.</translation>
+    </message>
+    <message>
+        <source>Home motor %1 and check that it ended on its home switch, referenced.</source>
+        <translation>Home motor %1 and check that it ended on its home switch, referenced.</translation>
+    </message>
+    <message>
+        <source>Home the machine in the configured order and check that every axis in the order ended referenced.</source>
+        <translation>Home the machine in the configured order and check that every axis in the order ended referenced.</translation>
+    </message>
+    <message>
+        <source>Run the configured arc or line and check that the axes ended at its end point.</source>
+        <translation>Run the configured arc or line and check that the axes ended at its end point.</translation>
+    </message>
+    <message>
+        <source>Save the parameters to flash, read them back and compare them with what was written.</source>
+        <translation>Save the parameters to flash, read them back and compare them with what was written.</translation>
+    </message>
+    <message>
+        <source>Commanded distance</source>
+        <translation>Commanded distance</translation>
+    </message>
+    <message>
+        <source>Measured distance</source>
+        <translation>Measured distance</translation>
+    </message>
+    <message>
+        <source>Pitch before</source>
+        <translation>Pitch before</translation>
+    </message>
+    <message>
+        <source>Pitch after</source>
+        <translation>Pitch after</translation>
+    </message>
+    <message>
+        <source>Moved toward +</source>
+        <translation>Moved toward +</translation>
+    </message>
+    <message>
+        <source>Direction before</source>
+        <translation>Direction before</translation>
+    </message>
+    <message>
+        <source>Direction after</source>
+        <translation>Direction after</translation>
+    </message>
+    <message>
+        <source>Input configured</source>
+        <translation>Input configured</translation>
+    </message>
+    <message>
+        <source>Input that answered</source>
+        <translation>Input that answered</translation>
+    </message>
+    <message>
+        <source>Fix written</source>
+        <translation>Fix written</translation>
+    </message>
+    <message>
+        <source>End position</source>
+        <translation>End position</translation>
+    </message>
+    <message>
+        <source>Expected end</source>
+        <translation>Expected end</translation>
+    </message>
+    <message>
+        <source>Homing order</source>
+        <translation>Homing order</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>Read back</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CommissioningReport</name>
     <message>
         <source>Controller</source>
@@ -467,10 +962,6 @@
         <translation>Notes</translation>
     </message>
     <message>
-        <source>Signature: ____________________</source>
-        <translation>Signature: ____________________</translation>
-    </message>
-    <message>
         <source>%1: the report is written as .pdf or .html, not .%2</source>
         <translation>%1: the report is written as .pdf or .html, not .%2</translation>
     </message>
@@ -521,6 +1012,10 @@
     <message>
         <source>Made from the profile file %1, not read from a controller: these are the values the file holds; a controller may hold others.</source>
         <translation>Made from the profile file %1, not read from a controller: these are the values the file holds; a controller may hold others.</translation>
+    </message>
+    <message>
+        <source>Settings fingerprint</source>
+        <translation>Settings fingerprint</translation>
     </message>
 </context>
 <context>
@@ -919,6 +1414,10 @@
         <source>profile</source>
         <translation>profile</translation>
     </message>
+    <message>
+        <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
+        <translation>apply: do not save a backup of the controller&apos;s settings before writing.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlRunner</name>
@@ -1169,6 +1668,22 @@
     <message>
         <source>report written to %1, made from the profile file %2 (no controller was read)</source>
         <translation>report written to %1, made from the profile file %2 (no controller was read)</translation>
+    </message>
+    <message>
+        <source>no backup of the controller&apos;s settings could be saved (%1): nothing was written (--no-backup applies without one)</source>
+        <translation>no backup of the controller&apos;s settings could be saved (%1): nothing was written (--no-backup applies without one)</translation>
+    </message>
+    <message>
+        <source>backup of the controller&apos;s settings: %1</source>
+        <translation>backup of the controller&apos;s settings: %1</translation>
+    </message>
+    <message>
+        <source>no report: the checklist beside the profile cannot be read</source>
+        <translation>no report: the checklist beside the profile cannot be read</translation>
+    </message>
+    <message>
+        <source>with the commissioning checklist %1: %2</source>
+        <translation>with the commissioning checklist %1: %2</translation>
     </message>
 </context>
 <context>
@@ -1614,6 +2129,17 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::DirectionCheck</name>
+    <message>
+        <source>motor %1 has no direction register in this register map</source>
+        <translation>motor %1 has no direction register in this register map</translation>
+    </message>
+    <message>
+        <source>%1 does not have exactly two values: StepCom cannot flip it</source>
+        <translation>%1 does not have exactly two values: StepCom cannot flip it</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::EmergencyStop</name>
     <message>
         <source>E-STOP</source>
@@ -1680,6 +2206,57 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>Write failed: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::InputTest</name>
+    <message>
+        <source>positive limit</source>
+        <translation>positive limit</translation>
+    </message>
+    <message>
+        <source>negative limit</source>
+        <translation>negative limit</translation>
+    </message>
+    <message>
+        <source>home switch</source>
+        <translation>home switch</translation>
+    </message>
+    <message>
+        <source>the %1 of motor %2</source>
+        <translation>the %1 of motor %2</translation>
+    </message>
+    <message>
+        <source>No input changed while %1 was pressed, and none is configured for it. If the machine has no such switch, skip this step; otherwise check the switch, its wiring and its 24 V supply.</source>
+        <translation>No input changed while %1 was pressed, and none is configured for it. If the machine has no such switch, skip this step; otherwise check the switch, its wiring and its 24 V supply.</translation>
+    </message>
+    <message>
+        <source>No input changed while %1 was pressed (configured: %2). Check the switch, its wiring and its 24 V supply (the inputs are active on a 24 V negative signal), then try again.</source>
+        <translation>No input changed while %1 was pressed (configured: %2). Check the switch, its wiring and its 24 V supply (the inputs are active on a 24 V negative signal), then try again.</translation>
+    </message>
+    <message>
+        <source>Several inputs changed while %1 was pressed (%2): press only this switch and try again.</source>
+        <translation>Several inputs changed while %1 was pressed (%2): press only this switch and try again.</translation>
+    </message>
+    <message>
+        <source>%1 is also configured as the %2 of motor %3</source>
+        <translation>%1 is also configured as the %2 of motor %3</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, as configured.</source>
+        <translation>%1 answered for %2, as configured.</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, which is not configured (none). Proposed: %3.</source>
+        <translation>%1 answered for %2, which is not configured (none). Proposed: %3.</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, but %3 is configured: the wiring and the configuration disagree. Proposed: %4 (or rewire the switch to %3).</source>
+        <translation>%1 answered for %2, but %3 is configured: the wiring and the configuration disagree. Proposed: %4 (or rewire the switch to %3).</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, and this register map cannot name %1 there.</source>
+        <translation>%1 answered for %2, and this register map cannot name %1 there.</translation>
     </message>
 </context>
 <context>
@@ -3811,6 +4388,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>a status value in register map &quot;%1&quot;, not a setting</source>
         <translation>a status value in register map &quot;%1&quot;, not a setting</translation>
     </message>
+    <message>
+        <source>&quot;stepcom&quot; must be an object, found %1</source>
+        <translation>&quot;stepcom&quot; must be an object, found %1</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;backup&quot; must be {&quot;operation&quot;: one of %1, &quot;device&quot;: text}</source>
+        <translation>&quot;metadata&quot;: &quot;backup&quot; must be {&quot;operation&quot;: one of %1, &quot;device&quot;: text}</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</source>
+        <translation>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileVariance</name>
@@ -4375,6 +4964,124 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::TravelCalibration</name>
+    <message>
+        <source>commanded distance</source>
+        <translation>commanded distance</translation>
+    </message>
+    <message>
+        <source>measured distance</source>
+        <translation>measured distance</translation>
+    </message>
+    <message>
+        <source>the %1 must be more than 0 %2, found %3</source>
+        <translation>the %1 must be more than 0 %2, found %3</translation>
+    </message>
+    <message>
+        <source>not a number</source>
+        <translation>not a number</translation>
+    </message>
+    <message>
+        <source>the %1 %2 %3 is not a distance on a machine</source>
+        <translation>the %1 %2 %3 is not a distance on a machine</translation>
+    </message>
+    <message>
+        <source>the current pitch (%1) cannot be corrected: %2</source>
+        <translation>the current pitch (%1) cannot be corrected: %2</translation>
+    </message>
+    <message>
+        <source>it must be more than 0</source>
+        <translation>it must be more than 0</translation>
+    </message>
+    <message>
+        <source>the distances must be at least 0.001 %1</source>
+        <translation>the distances must be at least 0.001 %1</translation>
+    </message>
+    <message>
+        <source>%1 %2 measured for %3 %2 commanded is off by a factor of %4: that is not a calibration error. Check the microsteps (driver DIP switches and register), the step angle and the pitch, then measure again</source>
+        <translation>%1 %2 measured for %3 %2 commanded is off by a factor of %4: that is not a calibration error. Check the microsteps (driver DIP switches and register), the step angle and the pitch, then measure again</translation>
+    </message>
+    <message>
+        <source>the corrected pitch would be %1 %2: %3</source>
+        <translation>the corrected pitch would be %1 %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TravelLimits</name>
+    <message>
+        <source>motor %1: this register map has no such axis</source>
+        <translation>motor %1: this register map has no such axis</translation>
+    </message>
+    <message>
+        <source>motor %1, software travel limit %2: %3</source>
+        <translation>motor %1, software travel limit %2: %3</translation>
+    </message>
+    <message>
+        <source>motor %1: the software travel limit min (%2) must be below max (%3)</source>
+        <translation>motor %1: the software travel limit min (%2) must be below max (%3)</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is not a position</source>
+        <translation>motor %1: %2 is not a position</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is beyond the software travel limit max %3</source>
+        <translation>motor %1: %2 is beyond the software travel limit max %3</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is beyond the software travel limit min %3</source>
+        <translation>motor %1: %2 is beyond the software travel limit min %3</translation>
+    </message>
+    <message>
+        <source>motor %1 is at %2, at or beyond its software travel limit max %3: it may only jog toward −</source>
+        <translation>motor %1 is at %2, at or beyond its software travel limit max %3: it may only jog toward −</translation>
+    </message>
+    <message>
+        <source>motor %1 is at %2, at or beyond its software travel limit min %3: it may only jog toward +</source>
+        <translation>motor %1 is at %2, at or beyond its software travel limit min %3: it may only jog toward +</translation>
+    </message>
+    <message>
+        <source>motor %1 reached its software travel limit max %2 (polled at %3): stop</source>
+        <translation>motor %1 reached its software travel limit max %2 (polled at %3): stop</translation>
+    </message>
+    <message>
+        <source>motor %1 reached its software travel limit min %2 (polled at %3): stop</source>
+        <translation>motor %1 reached its software travel limit min %2 (polled at %3): stop</translation>
+    </message>
+    <message>
+        <source>up to %1 beyond a software limit at %2/s (reaction %3 ms: poll %4 ms, read %5 ms, stop %6 ms)</source>
+        <translation>up to %1 beyond a software limit at %2/s (reaction %3 ms: poll %4 ms, read %5 ms, stop %6 ms)</translation>
+    </message>
+    <message>
+        <source>braking %1 ms included</source>
+        <translation>braking %1 ms included</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot; must be an object {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</source>
+        <translation>&quot;travelLimits&quot; must be an object {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: unknown axis &quot;%1&quot; (this map has motor1 .. motor%2)</source>
+        <translation>&quot;travelLimits&quot;: unknown axis &quot;%1&quot; (this map has motor1 .. motor%2)</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot; must be an object {&quot;min&quot;: …, &quot;max&quot;: …}</source>
+        <translation>&quot;travelLimits&quot;: &quot;%1&quot; must be an object {&quot;min&quot;: …, &quot;max&quot;: …}</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot;: unknown field &quot;%2&quot; (allowed: min, max)</source>
+        <translation>&quot;travelLimits&quot;: &quot;%1&quot;: unknown field &quot;%2&quot; (allowed: min, max)</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot;: &quot;%2&quot; must be a number</source>
+        <translation>&quot;travelLimits&quot;: &quot;%1&quot;: &quot;%2&quot; must be a number</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</source>
+        <translation>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::WiringCheck</name>
     <message>
         <source>positive limit</source>
@@ -4633,16 +5340,6 @@ until --count samples or Ctrl-C (--interval MS)</translation>
 1 different, 2 bad file, 3 link or device error</translation>
     </message>
     <message>
-        <source>write the profile&apos;s values that differ, after showing
-them and asking (--yes skips the question), then verify;
---include-link also writes device id and baud,
---save-to-flash saves afterwards</source>
-        <translation>write the profile&apos;s values that differ, after showing
-them and asking (--yes skips the question), then verify;
---include-link also writes device id and baud,
---save-to-flash saves afterwards</translation>
-    </message>
-    <message>
         <source>Commands:</source>
         <translation>Commands:</translation>
     </message>
@@ -4661,12 +5358,24 @@ same, 1 different, 2 bad file</source>
 same, 1 different, 2 bad file</translation>
     </message>
     <message>
+        <source>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards; the settings it
+replaces are saved as a backup first (--no-backup)</source>
+        <translation>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards; the settings it
+replaces are saved as a backup first (--no-backup)</translation>
+    </message>
+    <message>
         <source>write the commissioning report (--name, --notes,
 --lang en|zh_CN; --from PROFILE: from a profile
-file, no controller needed)</source>
+file and its checklist, no controller needed)</source>
         <translation>write the commissioning report (--name, --notes,
 --lang en|zh_CN; --from PROFILE: from a profile
-file, no controller needed)</translation>
+file and its checklist, no controller needed)</translation>
     </message>
 </context>
 </TS>

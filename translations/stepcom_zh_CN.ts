@@ -76,6 +76,41 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BackupStore</name>
+    <message>
+        <source>apply a profile</source>
+        <translation>应用参数文件</translation>
+    </message>
+    <message>
+        <source>factory reset</source>
+        <translation>恢复出厂参数</translation>
+    </message>
+    <message>
+        <source>save to flash</source>
+        <translation>保存到闪存</translation>
+    </message>
+    <message>
+        <source>device id change</source>
+        <translation>修改设备地址</translation>
+    </message>
+    <message>
+        <source>baud rate change</source>
+        <translation>修改波特率</translation>
+    </message>
+    <message>
+        <source>cannot create the backup folder %1</source>
+        <translation>无法创建备份文件夹 %1</translation>
+    </message>
+    <message>
+        <source>no settings to back up: the controller was not read</source>
+        <translation>没有可备份的设置：未读取控制器</translation>
+    </message>
+    <message>
+        <source>Backup before %1</source>
+        <translation>%1前的备份</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusScanDialog</name>
     <message>
         <source>Scan bus</source>
@@ -296,6 +331,466 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CertificateSection</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Commissioning checklist</source>
+        <translation>调试检查表</translation>
+    </message>
+    <message>
+        <source>No commissioning checklist was recorded for this machine: this report shows settings, not tests.</source>
+        <translation>此机器没有记录调试检查表：本报告只列出设置，不包含测试结果。</translation>
+    </message>
+    <message>
+        <source>Checklist file: %1</source>
+        <translation>检查表文件：%1</translation>
+    </message>
+    <message>
+        <source>The checklist was last run with other settings (fingerprint %1); this report&apos;s settings have the fingerprint %2.</source>
+        <translation>检查表最后一次执行时的设置不同（指纹 %1）；本报告中设置的指纹为 %2。</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>步骤</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>测量值</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>%1 (attempt %2)</source>
+        <translation>%1（第 %2 次）</translation>
+    </message>
+    <message>
+        <source>Software travel limits</source>
+        <translation>软件行程限位</translation>
+    </message>
+    <message>
+        <source>StepCom&apos;s own limits for steps, moves to a position and jogs; not controller registers. The limit switches stay the machine&apos;s protection.</source>
+        <translation>StepCom 自身对步进、定位运行和点动的限制，不是控制器寄存器。机器的保护仍然是限位开关。</translation>
+    </message>
+    <message>
+        <source>Motor</source>
+        <translation>电机</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>最小</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>最大</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Signatures</source>
+        <translation>签字</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>职责</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>姓名</translation>
+    </message>
+    <message>
+        <source>Signature</source>
+        <translation>签名</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>Commissioned by</source>
+        <translation>调试人</translation>
+    </message>
+    <message>
+        <source>Accepted by (customer)</source>
+        <translation>验收人（客户）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::Checklist</name>
+    <message>
+        <source>%1: a result is passed, failed or skipped, not pending</source>
+        <translation>%1：结果应为通过、失败或跳过，而不是未执行</translation>
+    </message>
+    <message>
+        <source>%1: the attempt has no valid time</source>
+        <translation>%1：该次执行没有有效的时间</translation>
+    </message>
+    <message>
+        <source>%1: the note has %2 characters (at most %3)</source>
+        <translation>%1：备注有 %2 个字符（最多 %3 个）</translation>
+    </message>
+    <message>
+        <source>%1: %2 measurements (at most %3)</source>
+        <translation>%1：%2 个测量值（最多 %3 个）</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a measurement key (1-40 of a-z, 0-9, _ and .)</source>
+        <translation>%1：“%2”不是测量值名称（1-40 个 a-z、0-9、_ 和 . 字符）</translation>
+    </message>
+    <message>
+        <source>%1: the measurement &quot;%2&quot; is too long</source>
+        <translation>%1：测量值“%2”过长</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a step of this checklist</source>
+        <translation>“%1”不是此检查表中的步骤</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a step of this checklist (%2 motor(s))</source>
+        <translation>“%1”不是此检查表中的步骤（%2 个电机）</translation>
+    </message>
+    <message>
+        <source>%1: %2 attempts (at most %3)</source>
+        <translation>%1：执行了 %2 次（最多 %3 次）</translation>
+    </message>
+    <message>
+        <source>%1: the attempts must be numbered upwards (found %2 after %3)</source>
+        <translation>%1：执行次序必须递增（%3 之后出现 %2）</translation>
+    </message>
+    <message>
+        <source>Not started</source>
+        <translation>未开始</translation>
+    </message>
+    <message>
+        <source>In progress: not every step was run</source>
+        <translation>进行中：尚有步骤未执行</translation>
+    </message>
+    <message>
+        <source>Failed: at least one step failed</source>
+        <translation>未通过：至少一个步骤失败</translation>
+    </message>
+    <message>
+        <source>Passed, with skipped steps</source>
+        <translation>通过，有跳过的步骤</translation>
+    </message>
+    <message>
+        <source>Passed: every step passed</source>
+        <translation>通过：所有步骤均通过</translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps passed, %3 failed, %4 skipped, %5 not run</source>
+        <translation>%2 个步骤中 %1 个通过，%3 个失败，%4 个跳过，%5 个未执行</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistFile</name>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>true/false</source>
+        <translation>true/false</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>数字</translation>
+    </message>
+    <message>
+        <source>a text</source>
+        <translation>文本</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>列表</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>对象</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>空</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>文件为空</translation>
+    </message>
+    <message>
+        <source>the file is %1 bytes: far too large for a checklist</source>
+        <translation>文件有 %1 字节：作为检查表太大</translation>
+    </message>
+    <message>
+        <source>not valid JSON at line %1, column %2: %3</source>
+        <translation>第 %1 行第 %2 列不是有效的 JSON：%3</translation>
+    </message>
+    <message>
+        <source>the file holds a JSON list, not a checklist</source>
+        <translation>文件中是 JSON 列表，不是检查表</translation>
+    </message>
+    <message>
+        <source>… and %1 more problems</source>
+        <translation>……另有 %1 个问题</translation>
+    </message>
+    <message>
+        <source>%1unknown field &quot;%2&quot; (allowed: %3)</source>
+        <translation>%1未知字段“%2”（允许：%3）</translation>
+    </message>
+    <message>
+        <source>%1&quot;%2&quot; must be a text, found %3</source>
+        <translation>%1“%2”必须是文本，实际为%3</translation>
+    </message>
+    <message>
+        <source>this is a profile, not a checklist</source>
+        <translation>这是参数文件，不是检查表</translation>
+    </message>
+    <message>
+        <source>not a StepCom checklist: &quot;format&quot; must be &quot;%1&quot;</source>
+        <translation>不是 StepCom 检查表：“format”必须为“%1”</translation>
+    </message>
+    <message>
+        <source>checklist schema %1 is newer than this StepCom reads (%2): update StepCom</source>
+        <translation>检查表格式版本 %1 比本 StepCom 能读取的（%2）更新：请升级 StepCom</translation>
+    </message>
+    <message>
+        <source>&quot;schema&quot; must be %1</source>
+        <translation>“schema”必须为 %1</translation>
+    </message>
+    <message>
+        <source>the checklist is for register map &quot;%1&quot;, but this map is &quot;%2&quot;</source>
+        <translation>检查表属于寄存器表“%1”，但当前寄存器表是“%2”</translation>
+    </message>
+    <message>
+        <source>&quot;machine&quot; and &quot;settingsFingerprint&quot; hold at most 200 characters</source>
+        <translation>“machine”和“settingsFingerprint”最多 200 个字符</translation>
+    </message>
+    <message>
+        <source>&quot;steps&quot; must be a list, found %1</source>
+        <translation>“steps”必须是列表，实际为%1</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>第 %1 个步骤</translation>
+    </message>
+    <message>
+        <source>%1: must be an object, found %2</source>
+        <translation>%1：必须是对象，实际为%2</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; appears more than once</source>
+        <translation>%1：“%2”出现了多次</translation>
+    </message>
+    <message>
+        <source>%1: &quot;attempts&quot; must be a list, found %2</source>
+        <translation>%1：“attempts”必须是列表，实际为%2</translation>
+    </message>
+    <message>
+        <source>%1: &quot;attempt&quot; must be a whole number from 1</source>
+        <translation>%1：“attempt”必须是从 1 开始的整数</translation>
+    </message>
+    <message>
+        <source>%1: &quot;result&quot; must be passed, failed or skipped, found &quot;%2&quot;</source>
+        <translation>%1：“result”必须是 passed、failed 或 skipped，实际为“%2”</translation>
+    </message>
+    <message>
+        <source>%1: &quot;time&quot; is not a date and time (2024-05-31T14:02:00Z): &quot;%2&quot;</source>
+        <translation>%1：“time”不是日期时间（2024-05-31T14:02:00Z）：“%2”</translation>
+    </message>
+    <message>
+        <source>%1: &quot;measurements&quot; must be a list, found %2</source>
+        <translation>%1：“measurements”必须是列表，实际为%2</translation>
+    </message>
+    <message>
+        <source>no register map to check the checklist against</source>
+        <translation>没有可用于检查此检查表的寄存器表</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1：文件不存在</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes, far too large for a checklist</source>
+        <translation>%1：%2 字节，作为检查表太大</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistStep</name>
+    <message>
+        <source>Not run</source>
+        <translation>未执行</translation>
+    </message>
+    <message>
+        <source>Passed</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>Skipped</source>
+        <translation>跳过</translation>
+    </message>
+    <message>
+        <source>direction</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <source>travel calibration</source>
+        <translation>行程校准</translation>
+    </message>
+    <message>
+        <source>positive limit input</source>
+        <translation>正限位输入</translation>
+    </message>
+    <message>
+        <source>negative limit input</source>
+        <translation>反限位输入</translation>
+    </message>
+    <message>
+        <source>home input</source>
+        <translation>原点输入</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>回原点</translation>
+    </message>
+    <message>
+        <source>Machine: homing order</source>
+        <translation>整机：回原点顺序</translation>
+    </message>
+    <message>
+        <source>Machine: interpolation test</source>
+        <translation>整机：插补测试</translation>
+    </message>
+    <message>
+        <source>Machine: save to flash and read back</source>
+        <translation>整机：保存到闪存并读回</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2</source>
+        <translation>电机 %1：%2</translation>
+    </message>
+    <message>
+        <source>Move motor %1 a small step forward. Did the axis move toward + ? No offers to flip its direction register.</source>
+        <translation>让电机 %1 正向走一小步。轴是否朝 + 方向移动？选“否”会建议翻转其方向寄存器。</translation>
+    </message>
+    <message>
+        <source>Move motor %1 by a distance you choose, measure what the axis really moved and type it in: StepCom proposes the corrected pitch (pitch × measured ÷ commanded).</source>
+        <translation>让电机 %1 运行一段您选择的距离，测量轴实际移动的距离并输入：StepCom 会建议修正后的螺距（螺距 × 实测 ÷ 指令）。</translation>
+    </message>
+    <message>
+        <source>Press the positive limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</source>
+        <translation>用手按下电机 %1 的正限位开关：StepCom 监视输入口，并将发生变化的输入与配置比较。</translation>
+    </message>
+    <message>
+        <source>Press the negative limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</source>
+        <translation>用手按下电机 %1 的反限位开关：StepCom 监视输入口，并将发生变化的输入与配置比较。</translation>
+    </message>
+    <message>
+        <source>Press the home switch of motor %1 by hand (often the negative limit&apos;s switch): StepCom compares the input that changed with the configuration.</source>
+        <translation>用手按下电机 %1 的原点开关（通常就是反限位开关）：StepCom 将发生变化的输入与配置比较。</translation>
+    </message>
+    <message>
+        <source>Home motor %1 and check that it ended on its home switch, referenced.</source>
+        <translation>让电机 %1 回原点，并确认它停在原点开关上、已建立参考点。</translation>
+    </message>
+    <message>
+        <source>Home the machine in the configured order and check that every axis in the order ended referenced.</source>
+        <translation>按设定的顺序让整机回原点，并确认顺序中的每个轴都已建立参考点。</translation>
+    </message>
+    <message>
+        <source>Run the configured arc or line and check that the axes ended at its end point.</source>
+        <translation>运行设定的圆弧或直线，并确认各轴停在其终点。</translation>
+    </message>
+    <message>
+        <source>Save the parameters to flash, read them back and compare them with what was written.</source>
+        <translation>将参数保存到闪存，读回并与写入的值比较。</translation>
+    </message>
+    <message>
+        <source>Commanded distance</source>
+        <translation>指令距离</translation>
+    </message>
+    <message>
+        <source>Measured distance</source>
+        <translation>实测距离</translation>
+    </message>
+    <message>
+        <source>Pitch before</source>
+        <translation>原螺距</translation>
+    </message>
+    <message>
+        <source>Pitch after</source>
+        <translation>新螺距</translation>
+    </message>
+    <message>
+        <source>Moved toward +</source>
+        <translation>朝 + 方向移动</translation>
+    </message>
+    <message>
+        <source>Direction before</source>
+        <translation>原方向</translation>
+    </message>
+    <message>
+        <source>Direction after</source>
+        <translation>新方向</translation>
+    </message>
+    <message>
+        <source>Input configured</source>
+        <translation>配置的输入</translation>
+    </message>
+    <message>
+        <source>Input that answered</source>
+        <translation>响应的输入</translation>
+    </message>
+    <message>
+        <source>Fix written</source>
+        <translation>已写入的修正</translation>
+    </message>
+    <message>
+        <source>End position</source>
+        <translation>终点位置</translation>
+    </message>
+    <message>
+        <source>Expected end</source>
+        <translation>预期终点</translation>
+    </message>
+    <message>
+        <source>Homing order</source>
+        <translation>回原点顺序</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>读回</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CommissioningReport</name>
     <message>
         <source>Controller</source>
@@ -462,10 +957,6 @@
         <translation>备注</translation>
     </message>
     <message>
-        <source>Signature: ____________________</source>
-        <translation>签字：____________________</translation>
-    </message>
-    <message>
         <source>%1: the report is written as .pdf or .html, not .%2</source>
         <translation>%1：报告只能保存为 .pdf 或 .html，不能是 .%2</translation>
     </message>
@@ -516,6 +1007,10 @@
     <message>
         <source>Made from the profile file %1, not read from a controller: these are the values the file holds; a controller may hold others.</source>
         <translation>根据参数文件 %1 生成，未读取控制器：这些是文件中的值，控制器中的值可能不同。</translation>
+    </message>
+    <message>
+        <source>Settings fingerprint</source>
+        <translation>设置指纹</translation>
     </message>
 </context>
 <context>
@@ -914,6 +1409,10 @@
         <source>profile</source>
         <translation>参数文件</translation>
     </message>
+    <message>
+        <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
+        <translation>apply：写入前不备份控制器的设置。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlRunner</name>
@@ -1160,6 +1659,22 @@
     <message>
         <source>report written to %1, made from the profile file %2 (no controller was read)</source>
         <translation>报告已写入 %1，根据参数文件 %2 生成（未读取控制器）</translation>
+    </message>
+    <message>
+        <source>no backup of the controller&apos;s settings could be saved (%1): nothing was written (--no-backup applies without one)</source>
+        <translation>无法保存控制器设置的备份（%1）：未写入任何值（--no-backup 可在不备份的情况下应用）</translation>
+    </message>
+    <message>
+        <source>backup of the controller&apos;s settings: %1</source>
+        <translation>控制器设置的备份：%1</translation>
+    </message>
+    <message>
+        <source>no report: the checklist beside the profile cannot be read</source>
+        <translation>未生成报告：无法读取参数文件旁的检查表</translation>
+    </message>
+    <message>
+        <source>with the commissioning checklist %1: %2</source>
+        <translation>包含调试检查表 %1：%2</translation>
     </message>
 </context>
 <context>
@@ -1602,6 +2117,17 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::DirectionCheck</name>
+    <message>
+        <source>motor %1 has no direction register in this register map</source>
+        <translation>此寄存器表中电机 %1 没有方向寄存器</translation>
+    </message>
+    <message>
+        <source>%1 does not have exactly two values: StepCom cannot flip it</source>
+        <translation>%1 不是恰好两个取值：StepCom 无法翻转它</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::EmergencyStop</name>
     <message>
         <source>E-STOP</source>
@@ -1668,6 +2194,57 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>写入失败：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::InputTest</name>
+    <message>
+        <source>positive limit</source>
+        <translation>正限位</translation>
+    </message>
+    <message>
+        <source>negative limit</source>
+        <translation>反限位</translation>
+    </message>
+    <message>
+        <source>home switch</source>
+        <translation>原点开关</translation>
+    </message>
+    <message>
+        <source>the %1 of motor %2</source>
+        <translation>电机 %2 的%1</translation>
+    </message>
+    <message>
+        <source>No input changed while %1 was pressed, and none is configured for it. If the machine has no such switch, skip this step; otherwise check the switch, its wiring and its 24 V supply.</source>
+        <translation>按下%1时没有输入发生变化，也没有为它配置输入。如果机器没有这个开关，请跳过此步骤；否则请检查开关、接线和 24 V 电源。</translation>
+    </message>
+    <message>
+        <source>No input changed while %1 was pressed (configured: %2). Check the switch, its wiring and its 24 V supply (the inputs are active on a 24 V negative signal), then try again.</source>
+        <translation>按下%1时没有输入发生变化（配置为：%2）。请检查开关、接线和 24 V 电源（输入口在 24 V 负极信号时有效），然后重试。</translation>
+    </message>
+    <message>
+        <source>Several inputs changed while %1 was pressed (%2): press only this switch and try again.</source>
+        <translation>按下%1时有多个输入发生变化（%2）：请只按这一个开关，然后重试。</translation>
+    </message>
+    <message>
+        <source>%1 is also configured as the %2 of motor %3</source>
+        <translation>%1 同时被配置为电机 %3 的%2</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, as configured.</source>
+        <translation>%2响应在 %1，与配置一致。</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, which is not configured (none). Proposed: %3.</source>
+        <translation>%2响应在 %1，但它未配置（无）。建议：%3。</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, but %3 is configured: the wiring and the configuration disagree. Proposed: %4 (or rewire the switch to %3).</source>
+        <translation>%2响应在 %1，但配置的是 %3：接线与配置不一致。建议：%4（或将开关改接到 %3）。</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, and this register map cannot name %1 there.</source>
+        <translation>%2响应在 %1，但此寄存器表无法在该处设定 %1。</translation>
     </message>
 </context>
 <context>
@@ -3787,6 +4364,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>a status value in register map &quot;%1&quot;, not a setting</source>
         <translation>在寄存器表 &quot;%1&quot; 中是状态值，不是设置参数</translation>
     </message>
+    <message>
+        <source>&quot;stepcom&quot; must be an object, found %1</source>
+        <translation>“stepcom”必须是对象，实际为%1</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;backup&quot; must be {&quot;operation&quot;: one of %1, &quot;device&quot;: text}</source>
+        <translation>“metadata”：“backup”必须是 {&quot;operation&quot;: %1 之一, &quot;device&quot;: 文本}</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</source>
+        <translation>“metadata”：“backup”：“device”必须是最多 200 个字符的文本</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileVariance</name>
@@ -4351,6 +4940,124 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::TravelCalibration</name>
+    <message>
+        <source>commanded distance</source>
+        <translation>指令距离</translation>
+    </message>
+    <message>
+        <source>measured distance</source>
+        <translation>实测距离</translation>
+    </message>
+    <message>
+        <source>the %1 must be more than 0 %2, found %3</source>
+        <translation>%1必须大于 0 %2，实际为 %3</translation>
+    </message>
+    <message>
+        <source>not a number</source>
+        <translation>非数字</translation>
+    </message>
+    <message>
+        <source>the %1 %2 %3 is not a distance on a machine</source>
+        <translation>%1 %2 %3 不是机器上可能的距离</translation>
+    </message>
+    <message>
+        <source>the current pitch (%1) cannot be corrected: %2</source>
+        <translation>当前螺距（%1）无法修正：%2</translation>
+    </message>
+    <message>
+        <source>it must be more than 0</source>
+        <translation>它必须大于 0</translation>
+    </message>
+    <message>
+        <source>the distances must be at least 0.001 %1</source>
+        <translation>距离至少为 0.001 %1</translation>
+    </message>
+    <message>
+        <source>%1 %2 measured for %3 %2 commanded is off by a factor of %4: that is not a calibration error. Check the microsteps (driver DIP switches and register), the step angle and the pitch, then measure again</source>
+        <translation>指令 %3 %2 实测 %1 %2，相差 %4 倍：这不是校准误差。请检查细分（驱动器拨码和寄存器）、步距角和螺距，然后重新测量</translation>
+    </message>
+    <message>
+        <source>the corrected pitch would be %1 %2: %3</source>
+        <translation>修正后的螺距将为 %1 %2：%3</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TravelLimits</name>
+    <message>
+        <source>motor %1: this register map has no such axis</source>
+        <translation>电机 %1：此寄存器表中没有这个轴</translation>
+    </message>
+    <message>
+        <source>motor %1, software travel limit %2: %3</source>
+        <translation>电机 %1，软件行程限位 %2：%3</translation>
+    </message>
+    <message>
+        <source>motor %1: the software travel limit min (%2) must be below max (%3)</source>
+        <translation>电机 %1：软件行程限位的最小值（%2）必须小于最大值（%3）</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is not a position</source>
+        <translation>电机 %1：%2 不是一个位置</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is beyond the software travel limit max %3</source>
+        <translation>电机 %1：%2 超出软件行程限位最大值 %3</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is beyond the software travel limit min %3</source>
+        <translation>电机 %1：%2 超出软件行程限位最小值 %3</translation>
+    </message>
+    <message>
+        <source>motor %1 is at %2, at or beyond its software travel limit max %3: it may only jog toward −</source>
+        <translation>电机 %1 位于 %2，已到达或超出软件行程限位最大值 %3：只能朝 − 方向点动</translation>
+    </message>
+    <message>
+        <source>motor %1 is at %2, at or beyond its software travel limit min %3: it may only jog toward +</source>
+        <translation>电机 %1 位于 %2，已到达或超出软件行程限位最小值 %3：只能朝 + 方向点动</translation>
+    </message>
+    <message>
+        <source>motor %1 reached its software travel limit max %2 (polled at %3): stop</source>
+        <translation>电机 %1 已到达软件行程限位最大值 %2（轮询位置 %3）：停止</translation>
+    </message>
+    <message>
+        <source>motor %1 reached its software travel limit min %2 (polled at %3): stop</source>
+        <translation>电机 %1 已到达软件行程限位最小值 %2（轮询位置 %3）：停止</translation>
+    </message>
+    <message>
+        <source>up to %1 beyond a software limit at %2/s (reaction %3 ms: poll %4 ms, read %5 ms, stop %6 ms)</source>
+        <translation>以 %2/s 运行时最多越过软件限位 %1（反应时间 %3 ms：轮询 %4 ms，读取 %5 ms，停止 %6 ms）</translation>
+    </message>
+    <message>
+        <source>braking %1 ms included</source>
+        <translation>已计入 %1 ms 减速</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot; must be an object {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</source>
+        <translation>“travelLimits”必须是对象 {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: unknown axis &quot;%1&quot; (this map has motor1 .. motor%2)</source>
+        <translation>“travelLimits”：未知的轴“%1”（此寄存器表有 motor1 .. motor%2）</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot; must be an object {&quot;min&quot;: …, &quot;max&quot;: …}</source>
+        <translation>“travelLimits”：“%1”必须是对象 {&quot;min&quot;: …, &quot;max&quot;: …}</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot;: unknown field &quot;%2&quot; (allowed: min, max)</source>
+        <translation>“travelLimits”：“%1”：未知字段“%2”（允许：min、max）</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot;: &quot;%2&quot; must be a number</source>
+        <translation>“travelLimits”：“%1”：“%2”必须是数字</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</source>
+        <translation>“travelLimits”：“%1”既没有设定 min 也没有设定 max</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::WiringCheck</name>
     <message>
         <source>positive limit</source>
@@ -4608,16 +5315,6 @@ until --count samples or Ctrl-C (--interval MS)</source>
 1 不同，2 文件错误，3 连接或设备错误</translation>
     </message>
     <message>
-        <source>write the profile&apos;s values that differ, after showing
-them and asking (--yes skips the question), then verify;
---include-link also writes device id and baud,
---save-to-flash saves afterwards</source>
-        <translation>写入参数文件中不同的值：先列出并询问
-（--yes 跳过询问），然后校验；
---include-link 同时写入设备地址和波特率，
---save-to-flash 之后保存到闪存</translation>
-    </message>
-    <message>
         <source>Commands:</source>
         <translation>命令：</translation>
     </message>
@@ -4636,12 +5333,24 @@ same, 1 different, 2 bad file</source>
 1 不同，2 文件错误</translation>
     </message>
     <message>
+        <source>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards; the settings it
+replaces are saved as a backup first (--no-backup)</source>
+        <translation>写入参数文件中不同的值：先列出并询问
+（--yes 跳过询问），然后校验；
+--include-link 同时写入设备地址和波特率，
+--save-to-flash 之后保存到闪存；被替换的设置
+先保存为备份（--no-backup 不备份）</translation>
+    </message>
+    <message>
         <source>write the commissioning report (--name, --notes,
 --lang en|zh_CN; --from PROFILE: from a profile
-file, no controller needed)</source>
+file and its checklist, no controller needed)</source>
         <translation>生成调试报告（--name、--notes、
 --lang en|zh_CN；--from PROFILE：根据参数文件
-生成，无需控制器）</translation>
+及其检查表生成，无需控制器）</translation>
     </message>
 </context>
 </TS>

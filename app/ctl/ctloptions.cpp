@@ -49,6 +49,8 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("save-to-flash"), tr("After writing, save the parameters to flash.")},
         {QStringLiteral("include-link"),
          tr("dump, apply: include the device id and baud (apply writes them only with this).")},
+        {QStringLiteral("no-backup"),
+         tr("apply: do not save a backup of the controller's settings before writing.")},
         {QStringLiteral("name"), tr("dump, report: name of the profile or the machine."),
          tr("text")},
         {QStringLiteral("notes"), tr("dump, report: notes to record."), tr("text")},
@@ -120,6 +122,7 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.yes = parser.isSet(QStringLiteral("yes"));
     o.saveToFlash = parser.isSet(QStringLiteral("save-to-flash"));
     o.includeLink = parser.isSet(QStringLiteral("include-link"));
+    o.noBackup = parser.isSet(QStringLiteral("no-backup"));
     o.name = parser.value(QStringLiteral("name"));
     o.notes = parser.value(QStringLiteral("notes"));
     o.from = parser.value(QStringLiteral("from"));

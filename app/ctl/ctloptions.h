@@ -19,6 +19,7 @@ struct CtlOptions
     bool yes = false;
     bool saveToFlash = false;
     bool includeLink = false;                // dump/apply: device.id and device.baud too
+    bool noBackup = false;                   // apply: no backup of the controller's settings first
     QString name;                            // dump/report: the profile's or the machine's name
     QString notes;                           // dump/report
     QString from;                            // report --from PROFILE: from a file, no controller

@@ -3,6 +3,7 @@
 
 #include "consolereader.h"
 
+#include "profile/backupstore.h"
 #include "profile/profilecomparison.h"
 #include "profile/profilediff.h"
 #include "profile/profilefile.h"
@@ -232,6 +233,7 @@ void CtlRunner::runApply()
                     fail(DeviceError, tr("nothing was written"));
                     return;
                 }
+                m_beforeApply = r.values;
                 QStringList keys;
                 for (const ProfileDifference &d :
                      ProfileDiff::differences(ProfileDiff::compare(m_map, profile, r.values))) {
@@ -302,8 +304,27 @@ void CtlRunner::confirmThenApply(const QList<ParameterWrite> &writes)
     });
 }
 
+bool CtlRunner::backupBeforeApply()
+{
+    if (m_options.noBackup)
+        return true;
+    const BackupStore store;
+    const BackupStore::Saved saved = store.save(m_map, m_beforeApply, BackupStore::Operation::Apply,
+                                                m_session->settings().describe());
+    if (!saved.ok()) {
+        fail(UsageError, tr("no backup of the controller's settings could be saved (%1): nothing "
+                            "was written (--no-backup applies without one)")
+                             .arg(saved.error));
+        return false;
+    }
+    m_out << tr("backup of the controller's settings: %1").arg(saved.path) << Qt::endl;
+    return true;
+}
+
 void CtlRunner::applyWrites(const QList<ParameterWrite> &writes)
 {
+    if (!backupBeforeApply())
+        return;
     m_session->write(writes, [this, writes](const WriteOutcome &w) {
         for (const ParameterWrite &pw : writes) {
             const bool verified =
@@ -406,6 +427,12 @@ void CtlRunner::runReportFromFile(const QString &path)
     }
     ReportInput input =
         ReportInput::fromProfile(m_map, profile, m_options.from, m_options.language);
+    if (!input.checklistErrors.isEmpty()) { // a certificate never silently loses its results
+        for (const QString &e : std::as_const(input.checklistErrors))
+            m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+        fail(UsageError, tr("no report: the checklist beside the profile cannot be read"));
+        return;
+    }
     if (!m_options.name.isEmpty())
         input.title = m_options.name;
     if (!m_options.notes.isEmpty())
@@ -418,6 +445,10 @@ void CtlRunner::runReportFromFile(const QString &path)
     m_out << tr("report written to %1, made from the profile file %2 (no controller was read)")
                  .arg(path, m_options.from)
           << Qt::endl;
+    if (input.checklist)
+        m_out << tr("with the commissioning checklist %1: %2")
+                     .arg(input.checklistFile, input.checklist->summary())
+              << Qt::endl;
     finish(Ok);
 }
 

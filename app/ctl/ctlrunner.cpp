@@ -103,12 +103,13 @@ const QList<CtlCommand> &CtlRunner::commands()
                            "write the profile's values that differ, after showing\n"
                            "them and asking (--yes skips the question), then verify;\n"
                            "--include-link also writes device id and baud,\n"
-                           "--save-to-flash saves afterwards"),
+                           "--save-to-flash saves afterwards; the settings it\n"
+                           "replaces are saved as a backup first (--no-backup)"),
          &CtlRunner::runApply},
         {"report", "report FILE.pdf|.html",
          QT_TRANSLATE_NOOP("stepcomctl", "write the commissioning report (--name, --notes,\n"
                                          "--lang en|zh_CN; --from PROFILE: from a profile\n"
-                                         "file, no controller needed)"),
+                                         "file and its checklist, no controller needed)"),
          &CtlRunner::runReport},
     };
     return table;

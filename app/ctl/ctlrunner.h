@@ -65,6 +65,9 @@ private:
     void runReportFromFile(const QString &path);
     void confirmThenApply(const QList<ParameterWrite> &writes);
     void applyWrites(const QList<ParameterWrite> &writes);
+    // Saves the settings read before an apply as a backup (BackupStore), unless --no-backup;
+    // false (and the command failed) when it could not be saved.
+    bool backupBeforeApply();
     void saveToFlashThenFinish();
     void fail(int code, const QString &message);
     void finish(int code);
@@ -78,6 +81,7 @@ private:
     // The exit code of a link that cannot be opened or read: DeviceError, except for diff,
     // where 1 already means "different".
     int m_linkError = DeviceError;
+    QHash<QString, qint64> m_beforeApply; // the settings read before apply: its backup
     bool m_finished = false;
 };
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "motion/travellimits.h"
 #include "profile/profilevariance.h"
 
 #include <QDateTime>
@@ -28,6 +29,12 @@ struct Profile
     // A profile of another map (mapId/mapVersion differ): what this map cannot take. `values`
     // then holds only what both maps have, within this map's ranges.
     ProfileVariance variance;
+    // StepCom's own settings for this machine, not controller registers (schema 2, "stepcom").
+    TravelLimits travelLimits;
+    // A backup made before a risky operation (schema 2, metadata "backup"): the operation that
+    // followed ("apply", "factory-reset", "save-to-flash", "device-id", "baud") and the link.
+    QString backupOperation;
+    QString backupDevice;
 
     // The parameters a profile holds for `map`: every read-write holding register; the link
     // settings only when `withLink`.

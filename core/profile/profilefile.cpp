@@ -191,7 +191,7 @@ private:
                             .arg(typeName(top.value(QLatin1String("schema"))));
             return;
         }
-        if (*schema != ProfileFile::Schema) {
+        if (*schema < ProfileFile::FirstSchema || *schema > ProfileFile::Schema) {
             m_errors << (*schema > ProfileFile::Schema
                              ? ProfileFile::tr(
                                    "profile schema %1 is newer than this StepCom reads (%2): "
@@ -204,14 +204,63 @@ private:
                                    .arg(ProfileFile::Schema));
             return;
         }
-        unknownFields(top,
-                      {QStringLiteral("format"), QStringLiteral("schema"), QStringLiteral("map"),
-                       QStringLiteral("metadata"), QStringLiteral("values")},
-                      QString());
+        m_schema = *schema;
+        QStringList fields{QStringLiteral("format"), QStringLiteral("schema"),
+                           QStringLiteral("map"), QStringLiteral("metadata"),
+                           QStringLiteral("values")};
+        if (m_schema >= 2)
+            fields << QStringLiteral("stepcom");
+        unknownFields(top, fields, QString());
         if (!readMap(top.value(QLatin1String("map")), profile))
             return; // values of another map would only give misleading messages
         readMetadata(top.value(QLatin1String("metadata")), profile);
         readValues(top.value(QLatin1String("values")), profile);
+        if (m_schema >= 2 && top.contains(QLatin1String("stepcom")))
+            readStepcom(top.value(QLatin1String("stepcom")), profile);
+    }
+
+    // StepCom's own settings (schema 2): {"travelLimits": {...}}.
+    void readStepcom(const QJsonValue &value, Profile *profile)
+    {
+        if (!value.isObject()) {
+            m_errors
+                << ProfileFile::tr("\"stepcom\" must be an object, found %1").arg(typeName(value));
+            return;
+        }
+        const QJsonObject o = value.toObject();
+        unknownFields(o, {QStringLiteral("travelLimits")}, QStringLiteral("stepcom"));
+        if (!o.contains(QLatin1String("travelLimits")))
+            return;
+        QStringList errors;
+        if (auto limits =
+                TravelLimits::fromJson(o.value(QLatin1String("travelLimits")), m_map, &errors))
+            profile->travelLimits = *limits;
+        for (const QString &e : std::as_const(errors))
+            m_errors << QStringLiteral("\"stepcom\": ") + e;
+    }
+
+    // A backup's origin (schema 2): {"operation": "apply", "device": "/dev/ttyUSB0 …"}.
+    void readBackup(const QJsonValue &value, Profile *profile)
+    {
+        static const QStringList operations{
+            QStringLiteral("apply"), QStringLiteral("factory-reset"),
+            QStringLiteral("save-to-flash"), QStringLiteral("device-id"), QStringLiteral("baud")};
+        const QJsonObject o = value.toObject();
+        unknownFields(o, {QStringLiteral("operation"), QStringLiteral("device")},
+                      QStringLiteral("metadata.backup"));
+        const QString operation = o.value(QLatin1String("operation")).toString();
+        if (!value.isObject() || !operations.contains(operation))
+            m_errors << ProfileFile::tr("\"metadata\": \"backup\" must be {\"operation\": one of "
+                                        "%1, \"device\": text}")
+                            .arg(operations.join(QLatin1String(", ")));
+        else if (const QJsonValue d = o.value(QLatin1String("device"));
+                 !d.isUndefined() && (!d.isString() || d.toString().size() > 200))
+            m_errors << ProfileFile::tr("\"metadata\": \"backup\": \"device\" must be a text of "
+                                        "at most 200 characters");
+        else {
+            profile->backupOperation = operation;
+            profile->backupDevice = o.value(QLatin1String("device")).toString();
+        }
     }
 
     bool readMap(const QJsonValue &value, Profile *profile)
@@ -264,11 +313,14 @@ private:
             return;
         }
         const QJsonObject o = value.toObject();
-        unknownFields(o,
-                      {QStringLiteral("name"), QStringLiteral("notes"), QStringLiteral("created"),
-                       QStringLiteral("stepcomVersion"), QStringLiteral("deviceId"),
-                       QStringLiteral("baud")},
-                      QStringLiteral("metadata"));
+        QStringList fields{QStringLiteral("name"),     QStringLiteral("notes"),
+                           QStringLiteral("created"),  QStringLiteral("stepcomVersion"),
+                           QStringLiteral("deviceId"), QStringLiteral("baud")};
+        if (m_schema >= 2)
+            fields << QStringLiteral("backup");
+        unknownFields(o, fields, QStringLiteral("metadata"));
+        if (m_schema >= 2 && o.contains(QLatin1String("backup")))
+            readBackup(o.value(QLatin1String("backup")), profile);
         auto text = [&](const char *field, QString *out) {
             const QJsonValue v = o.value(QLatin1String(field));
             if (v.isUndefined())
@@ -385,6 +437,7 @@ private:
 
     const RegisterMap &m_map;
     const bool m_acceptOtherMaps;
+    int m_schema = ProfileFile::Schema;
     QStringList m_errors;
     ProfileVariance m_variance;
 };
@@ -454,6 +507,15 @@ QByteArray ProfileFile::toJson(const Profile &profile, const RegisterMap &map)
         metadata.insert(QStringLiteral("deviceId"), profile.deviceId);
     if (profile.baud > 0)
         metadata.insert(QStringLiteral("baud"), profile.baud);
+    // Schema 2 only when its fields are used: such a file stays readable by every StepCom.
+    bool schema2 = false;
+    if (!profile.backupOperation.isEmpty()) {
+        QJsonObject backup{{QStringLiteral("operation"), profile.backupOperation}};
+        if (!profile.backupDevice.isEmpty())
+            backup.insert(QStringLiteral("device"), profile.backupDevice);
+        metadata.insert(QStringLiteral("backup"), backup);
+        schema2 = true;
+    }
     QJsonObject values;
     for (auto it = profile.values.cbegin(); it != profile.values.cend(); ++it) {
         if (const Parameter *p = map.find(it.key()))
@@ -465,15 +527,20 @@ QByteArray ProfileFile::toJson(const Profile &profile, const RegisterMap &map)
             values.insert(n.key, n.number);
     }
     const bool own = profile.mapId.isEmpty();
-    const QJsonObject top{
+    const QJsonObject limits = profile.travelLimits.toJson(map);
+    schema2 = schema2 || !limits.isEmpty();
+    QJsonObject top{
         {QStringLiteral("format"), kFormat},
-        {QStringLiteral("schema"), Schema},
+        {QStringLiteral("schema"), schema2 ? Schema : FirstSchema},
         {QStringLiteral("map"),
          QJsonObject{{QStringLiteral("id"), own ? map.id() : profile.mapId},
                      {QStringLiteral("version"), own ? map.version() : profile.mapVersion}}},
         {QStringLiteral("metadata"), metadata},
         {QStringLiteral("values"), values},
     };
+    if (!limits.isEmpty())
+        top.insert(QStringLiteral("stepcom"),
+                   QJsonObject{{QStringLiteral("travelLimits"), limits}});
     return QJsonDocument(top).toJson(QJsonDocument::Indented);
 }
 

@@ -27,7 +27,10 @@ class ProfileFile
 {
     Q_DECLARE_TR_FUNCTIONS(stepcom::ProfileFile)
 public:
-    static constexpr int Schema = 1;
+    // Schema 2 added StepCom settings ("stepcom") and backup metadata; a file without them is
+    // written as schema 1, which every StepCom reads.
+    static constexpr int Schema = 2;
+    static constexpr int FirstSchema = 1;
     static constexpr qsizetype MaxBytes = 1024 * 1024; // a real profile is a few kB
     static constexpr int MaxErrors = 40;
 

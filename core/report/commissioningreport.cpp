@@ -1,6 +1,8 @@
 #include "report/commissioningreport.h"
 
 #include "device/wiringcheck.h"
+#include "profile/settingsfingerprint.h"
+#include "report/certificatesection.h"
 #include "report/xypicture.h"
 
 #include <QBuffer>
@@ -100,6 +102,9 @@ QString CommissioningReport::controllerSection() const
     line(m_in.fromFile() ? tr("Report date") : tr("Date"),
          locale.toString(m_in.date, QLocale::LongFormat));
     line(tr("StepCom version"), QStringLiteral(STEPCOM_VERSION));
+    // One line to compare two machines by: the same settings give the same line.
+    line(tr("Settings fingerprint"),
+         SettingsFingerprint::line(m_in.map, SettingsFingerprint::ordered(m_in.values)));
     return h + QStringLiteral("</table>\n");
 }
 
@@ -253,9 +258,12 @@ QString CommissioningReport::html(const QString &imageSource) const
                  .arg(esc(tr("Made from the profile file %1, not read from a controller: these "
                              "are the values the file holds; a controller may hold others.")
                               .arg(m_in.sourceFile)));
+    const CertificateSection certificate(m_in);
     h += controllerSection();
+    h += certificate.checklist();
     h += wiringSection();
     h += interpolationSection(imageSource);
+    h += certificate.travelLimits();
     h += parameterSection();
     h += fileSection();
     h += QStringLiteral("<h2>%1</h2>\n").arg(esc(tr("Notes")));
@@ -263,7 +271,7 @@ QString CommissioningReport::html(const QString &imageSource) const
              .arg(m_in.notes.isEmpty()
                       ? QStringLiteral("—")
                       : esc(m_in.notes).replace(QLatin1Char('\n'), QLatin1String("<br>")));
-    h += QStringLiteral("<p>%1</p>\n").arg(esc(tr("Signature: ____________________")));
+    h += certificate.signatures();
     return h + QStringLiteral("</body></html>\n");
 }
 

@@ -1,5 +1,6 @@
 #include "report/reportinput.h"
 
+#include "commissioning/checklistfile.h"
 #include "profile/profile.h"
 
 #include <QFileInfo>
@@ -25,6 +26,15 @@ ReportInput ReportInput::fromProfile(const RegisterMap &map, const Profile &prof
     if (profile.variance.isVariant())
         in.fileMap = profile.variance.fileMap;
     in.notFromFile = profile.variance.describe(map, locale);
+    in.travelLimits = profile.travelLimits;
+    if (const QString checklist = ChecklistFile::pathFor(path); QFileInfo::exists(checklist)) {
+        const ChecklistParseResult r = ChecklistFile::load(checklist, map);
+        in.checklistFile = QFileInfo(checklist).fileName();
+        if (r.ok())
+            in.checklist = *r.checklist;
+        else
+            in.checklistErrors = r.errors;
+    }
     return in;
 }
 

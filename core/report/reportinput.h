@@ -1,11 +1,15 @@
 #pragma once
 
+#include "commissioning/checklist.h"
 #include "map/registermap.h"
+#include "motion/travellimits.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QHash>
 #include <QStringList>
+
+#include <optional>
 
 namespace stepcom {
 
@@ -35,11 +39,19 @@ public:
     QString fileMap;         // the profile's register map when it is another one ("stepper3/1")
     QStringList notFromFile; // what of the file this map cannot show (ProfileVariance lines)
 
+    // The commissioning checklist run on this machine (the certificate's results), the name of
+    // its file, or why a checklist file beside the profile could not be read (then no report
+    // should be made: a certificate must not silently lose its results).
+    std::optional<Checklist> checklist;
+    QString checklistFile;
+    QStringList checklistErrors;
+    TravelLimits travelLimits; // StepCom's software limits, shown when set
+
     bool fromFile() const { return !sourceFile.isEmpty(); }
 
     // The sheet of a profile file (`path` names it): its values and metadata, the name and
-    // notes of the profile unless `title`/`notes` are given. This is where a commissioning
-    // checklist kept beside the profile would be read, once StepCom has one.
+    // notes of the profile unless `title`/`notes` are given, its travel limits, and the
+    // checklist kept beside it (ChecklistFile::pathFor) when there is one.
     static ReportInput fromProfile(const RegisterMap &map, const Profile &profile,
                                    const QString &path, const QString &locale);
 };

@@ -96,6 +96,8 @@ class TestCtlProfile : public QObject
 private Q_SLOTS:
     void init()
     {
+        // apply saves a backup first: into the test's folder, never the user's data.
+        qputenv("XDG_DATA_HOME", QFile::encodeName(dir.filePath(QStringLiteral("data"))));
         device = std::make_unique<ScriptedDevice>();
         QString error;
         QVERIFY2(device->open(&error), qPrintable(error));

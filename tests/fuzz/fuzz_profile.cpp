@@ -2,8 +2,9 @@
 // accepting profiles of other maps), fed arbitrary bytes. Properties: it never crashes or trips
 // a sanitizer; a rejected file says why (at least one message, none empty, at most MaxErrors
 // plus the "more" line); an accepted profile only holds writable parameters of the map with
-// allowed values, names everything else it held (unknown, rejected) and what it lacks, and
-// survives toJson -> parse unchanged -- so "Apply" can never be handed a value the controller
+// allowed values, names everything else it held (unknown, rejected) and what it lacks, holds
+// only travel limits within the position registers (min below max), and survives
+// toJson -> parse unchanged -- so "Apply" can never be handed a value the controller
 // must not get.
 
 #include "fuzzcheck.h"
@@ -68,6 +69,20 @@ void check(const RegisterMap &map, const QByteArray &bytes, ProfileFile::OtherMa
     STEPCOM_FUZZ_CHECK(again.profile->variance == p.variance, QStringLiteral("variance changed"));
     STEPCOM_FUZZ_CHECK(again.profile->name == p.name && again.profile->notes == p.notes,
                        QStringLiteral("metadata changed"));
+    // StepCom's own settings and a backup's origin survive too; accepted limits are usable.
+    STEPCOM_FUZZ_CHECK(again.profile->travelLimits == p.travelLimits,
+                       QStringLiteral("travel limits changed"));
+    STEPCOM_FUZZ_CHECK(again.profile->backupOperation == p.backupOperation &&
+                           again.profile->backupDevice == p.backupDevice,
+                       QStringLiteral("backup metadata changed"));
+    for (auto it = p.travelLimits.axes().cbegin(); it != p.travelLimits.axes().cend(); ++it) {
+        const Parameter *position = TravelLimits::positionParameter(map, it.key());
+        STEPCOM_FUZZ_CHECK(position && !it->isEmpty(), QString::number(it.key()));
+        STEPCOM_FUZZ_CHECK(!it->min || !it->max || *it->min < *it->max, QString::number(it.key()));
+        for (const auto &end : {it->min, it->max})
+            STEPCOM_FUZZ_CHECK(!end || position->checkRaw(*end).isEmpty(),
+                               QString::number(it.key()));
+    }
 }
 
 } // namespace

@@ -9,10 +9,11 @@ declare -A allowed=(
     [core/bus]="map"
     [core/motion]="map"
     [core/device]="map bus i18n"
-    [core/profile]="map bus device i18n"
-    [core/report]="map bus device motion profile i18n"
+    [core/profile]="map bus device motion i18n"
+    [core/commissioning]="map bus device motion profile i18n"
+    [core/report]="map bus device motion profile commissioning i18n"
     [core/sim]="map bus device motion i18n"
-    [ui]="map device motion profile report i18n"
+    [ui]="map device motion profile commissioning report i18n"
 )
 bad=0
 for dir in "${!allowed[@]}"; do
