@@ -84,6 +84,7 @@ private:
     QPointer<WriteChangesDialog> m_writeDialog;
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;
+    bool m_answeredOnce = false; // this connection's controller answered (the page jumped)
 
     QAction *m_readAll = nullptr;
     QAction *m_write = nullptr;

@@ -1,9 +1,11 @@
 #include "ctlrunner.h"
 
 #include "ctlmonitor.h"
+#include "ctlmotionwait.h"
 
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
+#include "device/motionjudge.h"
 #include "sim/simhost.h"
 
 #include <QCoreApplication>
@@ -372,13 +374,31 @@ void CtlRunner::runCommand()
              tr("%1 destroys settings (%2); add --yes if you mean it").arg(key, p->help.en));
         return;
     }
+    if (m_options.wait) {
+        if (!MotionJudge::kindOf(m_map, key)) {
+            fail(UsageError, tr("--wait: %1 has no end to wait for (single move, home, home in "
+                                "order, return to data zero, arc and line have one)")
+                                 .arg(key));
+            return;
+        }
+        connectThen([this, p] {
+            auto *wait = new CtlMotionWait(m_device, *p, m_options.json, this);
+            connect(wait, &CtlMotionWait::finished, this, &CtlRunner::finish);
+            wait->start();
+        });
+        return;
+    }
     connectThen([this, p] {
         m_device->command(*p, [this, p](const Result &r) {
             if (!r.ok) {
                 fail(DeviceError, r.errorText);
                 return;
             }
-            m_out << tr("%1: done").arg(p->key) << Qt::endl;
+            // A moving command is only acknowledged: its end is known with --wait.
+            m_out << (p->command == CommandClass::Motion
+                          ? tr("%1: sent (add --wait to wait for how it ends)").arg(p->key)
+                          : tr("%1: done").arg(p->key))
+                  << Qt::endl;
             finish(Ok);
         });
     });

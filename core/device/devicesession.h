@@ -8,7 +8,9 @@
 
 namespace stepcom {
 
+class LinkHealth;
 class ModbusLink;
+class MotionSupervisor;
 class Poller;
 class SimHost;
 
@@ -33,6 +35,10 @@ public:
     SimHost *simulator() const { return m_sim; }
     // Keeps the status values (positions, inputs, outputs, running) fresh while connected.
     Poller *statusPoller() const { return m_poller; }
+    // Follows motion commands to their judged outcome and keeps each axis' reference state.
+    MotionSupervisor *motion() const { return m_motion; }
+    // Port closed / open but not answering / answering: "connected" means answering.
+    LinkHealth *health() const { return m_health; }
     bool isConnected() const;
     bool isSimulator() const { return m_usingSim; }
     LinkSettings settings() const;
@@ -80,6 +86,8 @@ private:
     DeviceClient *m_client;
     ParameterStore *m_store;
     Poller *m_poller;
+    MotionSupervisor *m_motion;
+    LinkHealth *m_health;
     SimHost *m_sim = nullptr;
     bool m_usingSim = false;
     bool m_readAfterConnect = false;

@@ -13,6 +13,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -98,12 +99,38 @@ private Q_SLOTS:
         QSignalSpy rejected(speed, &ParameterField::rejected);
         speed->enterText(QStringLiteral("99999"));
         QCOMPARE(rejected.size(), 1);
-        QVERIFY(rejected.at(0).at(0).toString().contains(QStringLiteral("out of range")));
+        // The reason is beside the field, in words: label, range and unit, no internal key.
+        const QString why =
+            QStringLiteral("Speed: 99999 is outside the allowed range 1 – 3000 rpm.");
+        QCOMPARE(rejected.at(0).at(0).toString(), why);
+        QVERIFY(!speed->reasonLabel()->isHidden());
+        QCOMPARE(speed->reasonLabel()->text(), why);
+        QVERIFY(!speed->reasonLabel()->text().contains(QLatin1String("motor1.")));
+        auto *line = qobject_cast<QLineEdit *>(speed->editor());
+        QCOMPARE(line->text(), QStringLiteral("99999")); // kept for correction
         QVERIFY(!session->store()->hasEdits());
         QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
         QTest::qWait(300);
         QCOMPARE(writes, 0);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
+
+        // Not a number, then a valid value: the red and the reason go at once.
+        speed->enterText(QStringLiteral("abc"));
+        QCOMPARE(speed->rejectionText(),
+                 QStringLiteral("Speed: “abc” is not a number. Allowed: 1 – 3000 rpm."));
+        speed->enterText(QStringLiteral("-100"));
+        QVERIFY(speed->rejectionText().contains(QLatin1String("-100 is outside")));
+        speed->enterText(QStringLiteral("400"));
+        QVERIFY(speed->rejectionText().isEmpty());
+        QVERIFY(speed->reasonLabel()->isHidden());
+        QCOMPARE(session->store()->state(QStringLiteral("motor1.speed")),
+                 ParameterStore::State::Edited);
+        // Revert drops a refused text too, and a write never leaves a stale reason behind.
+        speed->enterText(QStringLiteral("0"));
+        QVERIFY(!speed->rejectionText().isEmpty());
+        window->action(QStringLiteral("revert"))->trigger();
+        QVERIFY(speed->rejectionText().isEmpty());
+        QCOMPARE(line->text(), QStringLiteral("300"));
     }
 
     void emergencyStopFromInsideADialogGoesFirst()

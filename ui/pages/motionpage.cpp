@@ -2,10 +2,11 @@
 
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
+#include "device/motionjudge.h"
+#include "device/motionsupervisor.h"
 #include "i18n/translators.h"
 #include "language.h"
 #include "widgets/homingordereditor.h"
-#include "widgets/jogactivity.h"
 #include "widgets/jogkeys.h"
 #include "widgets/jogpanel.h"
 #include "widgets/led.h"
@@ -141,6 +142,12 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
                     showBanner(text);
             });
     connect(m_jog, &JogController::stateChanged, this, &MotionPage::refresh);
+    // E-STOP: keys and buttons let go at once; a held key must be pressed again to jog.
+    connect(m_jog, &JogController::heldControlsReset, this, [this] {
+        m_keys->letGo();
+        for (JogPanel *p : std::as_const(m_panels))
+            p->letGo();
+    });
     connect(session, &DeviceSession::linkStateChanged, this, &MotionPage::refresh);
     connect(session->store(), &ParameterStore::editsChanged, this, &MotionPage::refresh);
     connect(session->store(), &ParameterStore::valueChanged, this, [this](const QString &k) {
@@ -149,15 +156,16 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
             refresh();
     });
     connect(session, &DeviceSession::commandFinished, this, [this](const QString &k, bool ok) {
-        if (!ok)
-            return;
-        if (k == QLatin1String("home_all"))
-            m_sequence->start(tr("Homing in order"));
-        else if (k == QLatin1String("return_to_zero"))
-            m_sequence->start(tr("Returning to data zero"));
-        else if (k == QLatin1String("zero_coordinates"))
-            m_sequenceDone = tr("Coordinates zeroed");
+        if (ok && k == QLatin1String("zero_coordinates"))
+            m_shown = Shown::Zeroed;
         refresh();
+    });
+    connect(session->motion(), &MotionSupervisor::changed, this, &MotionPage::refresh);
+    connect(session->motion(), &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
+        if (o.start.kind == MotionKind::HomeInOrder)
+            m_shown = Shown::HomeInOrder;
+        else if (o.start.kind == MotionKind::ReturnToZero)
+            m_shown = Shown::ReturnToZero;
     });
     retranslate();
 }
@@ -192,18 +200,6 @@ void MotionPage::buildHoming(QWidget *content)
     m_homingStatus->setWordWrap(true);
     layout->addWidget(m_homingStatus);
 
-    QStringList running;
-    for (int n = 1; n <= m_jog->motorCount(); ++n)
-        running << m_jog->motorKey(n, QStringLiteral("running"));
-    m_sequence = new JogActivity(session(), running, this);
-    connect(m_sequence, &JogActivity::changed, this, &MotionPage::refresh);
-    connect(m_sequence, &JogActivity::finished, this, [this](const QString &what) {
-        QStringList where;
-        for (JogPanel *p : std::as_const(m_panels))
-            where << tr("motor %1 at %2").arg(p->motor()).arg(p->positionText());
-        m_sequenceDone = tr("%1: done (%2)").arg(what, Translators::joinList(where));
-        refresh();
-    });
     connect(m_order, &HomingOrderEditor::rejected, this, &MotionPage::showBanner);
     connect(m_applyOrder, &QPushButton::clicked, this, [this] {
         if (session()->isConnected())
@@ -287,26 +283,47 @@ void MotionPage::sessionCommand(const QString &key)
     if (!session()->isConnected())
         return;
     if (key == QLatin1String("home_all") || key == QLatin1String("return_to_zero"))
-        m_sequenceDone.clear();
+        m_shown = Shown::Nothing;
     session()->command(key);
 }
 
 QString MotionPage::homingStatus() const
 {
-    if (!m_sequence->isActive())
-        return m_sequenceDone;
-    QStringList motors;
-    for (int n : m_sequence->running())
-        motors << QString::number(n);
-    if (motors.isEmpty())
-        return tr("%1…").arg(m_sequence->what());
-    return tr("%1… motor %2 running").arg(m_sequence->what(), Translators::joinList(motors));
+    const MotionSupervisor *motion = session()->motion();
+    for (MotionKind kind : {MotionKind::HomeInOrder, MotionKind::ReturnToZero}) {
+        const auto active = motion->active(kind);
+        if (!active)
+            continue;
+        QStringList motors;
+        for (int n : motion->running(kind))
+            motors << QString::number(n);
+        const QString what = MotionJudge::name(*active);
+        if (motors.isEmpty())
+            return tr("%1…").arg(what);
+        return tr("%1… motor %2 running").arg(what, Translators::joinList(motors));
+    }
+    // Made from state each time, so a language switch retranslates it.
+    std::optional<MotionOutcome> last;
+    switch (m_shown) {
+    case Shown::Nothing:
+        return {};
+    case Shown::Zeroed:
+        return tr("Coordinates zeroed");
+    case Shown::HomeInOrder:
+        last = motion->lastOutcome(MotionKind::HomeInOrder);
+        break;
+    case Shown::ReturnToZero:
+        last = motion->lastOutcome(MotionKind::ReturnToZero);
+        break;
+    }
+    return last ? motion->text(*last) : QString();
 }
 
 void MotionPage::refresh()
 {
     const bool connected = session()->isConnected();
-    const bool sequence = m_sequence->isActive();
+    const bool sequence = session()->motion()->active(MotionKind::HomeInOrder).has_value() ||
+                          session()->motion()->active(MotionKind::ReturnToZero).has_value();
     const bool jogging = m_jog->isBusy();
     const bool orderEdited = m_order->isEdited();
     m_applyOrder->setEnabled(connected && orderEdited);

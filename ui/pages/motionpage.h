@@ -13,7 +13,6 @@ class QPushButton;
 namespace stepcom {
 
 class HomingOrderEditor;
-class JogActivity;
 class JogController;
 class JogKeys;
 class JogPanel;
@@ -81,8 +80,9 @@ private:
     QPushButton *m_zero = nullptr;
     QPushButton *m_returnToZero = nullptr;
     QLabel *m_homingStatus = nullptr;
-    JogActivity *m_sequence = nullptr;
-    QString m_sequenceDone;
+    // What the homing box reports while idle: the last sequence's outcome, or the zeroing.
+    enum class Shown { Nothing, HomeInOrder, ReturnToZero, Zeroed };
+    Shown m_shown = Shown::Nothing;
     QGroupBox *m_outputsBox = nullptr;
     QHash<QString, QPushButton *> m_outputButtons;
     QList<Led *> m_outputLeds;

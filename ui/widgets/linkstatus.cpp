@@ -2,6 +2,7 @@
 
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
+#include "device/linkhealth.h"
 #include "poll/poller.h"
 
 #include <QDateTime>
@@ -29,6 +30,7 @@ LinkStatus::LinkStatus(DeviceSession *session, QWidget *parent)
     m_unsaved->setFont(bold);
     m_state->setFont(bold);
     connect(session, &DeviceSession::linkStateChanged, this, &LinkStatus::refresh);
+    connect(session->health(), &LinkHealth::stateChanged, this, &LinkStatus::refresh);
     connect(session->store(), &ParameterStore::unsavedChanged, this, &LinkStatus::refresh);
     connect(&m_timer, &QTimer::timeout, this, &LinkStatus::refresh);
     m_timer.start(1000);
@@ -50,17 +52,34 @@ QString LinkStatus::stateText() const
 void LinkStatus::refresh()
 {
     const ModbusLink *link = m_session->link();
-    switch (link->state()) {
-    case ModbusLink::State::Connected:
+    // Green "Connected" only once the controller answered; amber while it does not.
+    const LinkHealth *health = m_session->health();
+    QColor colour = palette().color(QPalette::WindowText);
+    switch (health->state()) {
+    case LinkHealth::State::Answering:
         m_state->setText(m_session->isSimulator() ? tr("Connected (simulator)") : tr("Connected"));
+        colour = QColor(0, 140, 0);
         break;
-    case ModbusLink::State::Connecting:
+    case LinkHealth::State::NotAnswering:
+        m_state->setText(tr("Not answering"));
+        colour = QColor(200, 120, 0);
+        break;
+    case LinkHealth::State::Asking:
+        m_state->setText(tr("Port open, waiting for an answer…"));
+        break;
+    case LinkHealth::State::Opening:
         m_state->setText(tr("Connecting…"));
         break;
-    case ModbusLink::State::Disconnected:
+    case LinkHealth::State::Closed:
         m_state->setText(tr("Disconnected"));
         break;
     }
+    QPalette pal = m_state->palette();
+    pal.setColor(QPalette::WindowText, colour);
+    m_state->setPalette(pal);
+    m_state->setToolTip(health->state() == LinkHealth::State::NotAnswering
+                            ? LinkHealth::likelyCauses()
+                            : QString());
     m_where->setText(
         link->state() == ModbusLink::State::Disconnected ? QString() : link->settings().describe());
     const LinkStats &s = link->stats();
@@ -73,6 +92,7 @@ void LinkStatus::refresh()
                                               .arg(m_perSecond, 0, 'f', 1)
                                               .arg(m_session->statusPoller()->rate(), 0, 'f', 1)
                                         : QString());
+    // Counted from this connection's start (the session resets them on every connect).
     m_errors->setText(tr("errors: %1 (timeouts %2, CRC %3, exceptions %4)")
                           .arg(s.errors())
                           .arg(s.timeouts)

@@ -42,6 +42,8 @@ public:
     QPushButton *stopButton() const { return m_stop; }
     QPushButton *writeButton() const { return m_write; }
     QLabel *startReason() const { return m_reason; }
+    // How the last run of this path ended (judged from the controller), or that it runs.
+    QLabel *outcomeLabel() const { return m_outcome; }
     WriteChangesDialog *writeDialog() const { return m_writeDialog; }
 
     // The geometry of what the fields show now, typing included.
@@ -92,6 +94,7 @@ private:
     QPushButton *m_start;
     QPushButton *m_stop;
     QLabel *m_reason;
+    QLabel *m_outcome;
     QPointer<WriteChangesDialog> m_writeDialog;
     QTimer m_startSent; // a start was sent and the poll has not seen it yet
 };
