@@ -1,12 +1,17 @@
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
+#include "device/linkhealth.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "page.h"
+#include "pages/connectionpage.h"
+#include "pages/devicepage.h"
+#include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "widgets/linkstatus.h"
 #include "widgets/parameterfield.h"
 #include "widgets/parameterform.h"
 
@@ -131,6 +136,72 @@ private Q_SLOTS:
         window->action(QStringLiteral("revert"))->trigger();
         QVERIFY(speed->rejectionText().isEmpty());
         QCOMPARE(line->text(), QStringLiteral("300"));
+    }
+
+    // A port with nobody behind it is "not answering", never "Connected"; the window stays on
+    // the Connection page with the likely causes, and the counts start again per connection.
+    void aSilentPortIsNeverConnected()
+    {
+        session->disconnectFrom();
+        window->showPage(0);
+        test::ScriptedDevice device;
+        QString error;
+        QVERIFY2(device.open(&error), qPrintable(error));
+        device.setResponder([](const QByteArray &, int) { return std::nullopt; });
+        QList<LinkHealth::State> seen;
+        connect(session->health(), &LinkHealth::stateChanged, this,
+                [&seen](LinkHealth::State st) { seen << st; });
+        auto *status = window->findChild<LinkStatus *>();
+        LinkSettings s;
+        s.portName = device.clientPath();
+        s.timeoutMs = 100;
+        s.retries = 0;
+        session->connectTo(s);
+        QTRY_COMPARE(session->health()->state(), LinkHealth::State::NotAnswering);
+        QCOMPARE(status->stateText(), QStringLiteral("Not answering"));
+        auto *page = qobject_cast<ConnectionPage *>(window->currentPage());
+        QVERIFY(page); // no jump to Motor 1 with blank fields
+        QVERIFY2(page->statusText().contains(QLatin1String("does not answer")) &&
+                     page->statusText().contains(QLatin1String("A and B swapped")),
+                 qPrintable(page->statusText()));
+        QVERIFY(!seen.contains(LinkHealth::State::Answering));
+        QVERIFY(session->link()->stats().timeouts > 0);
+
+        // The controller answers now: "Connected", and on to the first motor.
+        device.useRegisterDevice();
+        session->disconnectFrom();
+        session->connectTo(s);
+        QCOMPARE(session->link()->stats().timeouts, quint64(0)); // per connection
+        QTRY_COMPARE(session->health()->state(), LinkHealth::State::Answering);
+        QCOMPARE(status->stateText(), QStringLiteral("Connected"));
+        QTRY_VERIFY(!qobject_cast<ConnectionPage *>(window->currentPage()));
+    }
+
+    // One flash state: a baud or id change makes it "not saved", only a save clears it, and
+    // the Device page never says "saved" beside "not saved".
+    void flashStateAfterLinkWritesAndSave()
+    {
+        DevicePage *device = window->findChild<DevicePage *>();
+        QVERIFY(device);
+        QVERIFY(!session->store()->unsavedToFlash());
+        session->saveToFlash();
+        QTRY_VERIFY(device->flashStatus().startsWith(QLatin1String("Saved to flash")));
+        QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
+        session->changeLink(1, 19200);
+        QTRY_COMPARE(changed.size(), 1);
+        QVERIFY(session->store()->unsavedToFlash());
+        QVERIFY(device->unsavedWarningShown());
+        QVERIFY2(!device->flashStatus().contains(QLatin1String("Saved")),
+                 qPrintable(device->flashStatus()));
+        QVERIFY(window->findChild<LinkStatus *>()->findChildren<QLabel *>().size() > 0);
+        session->saveToFlash();
+        QTRY_VERIFY(!session->store()->unsavedToFlash());
+        QVERIFY(!device->unsavedWarningShown());
+        QVERIFY(device->flashStatus().startsWith(QLatin1String("Saved to flash")));
+        session->changeLink(7, 19200); // the id alone
+        QTRY_COMPARE(changed.size(), 2);
+        QVERIFY(session->store()->unsavedToFlash());
+        QVERIFY(!device->flashStatus().contains(QLatin1String("Saved")));
     }
 
     void emergencyStopFromInsideADialogGoesFirst()
