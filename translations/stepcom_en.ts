@@ -4625,6 +4625,25 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&amp;Write</source>
         <translation>&amp;Write</translation>
     </message>
+    <message>
+        <source>The pages flag problems in these values:</source>
+        <translation>The pages flag problems in these values:</translation>
+    </message>
+    <message>
+        <source>&amp;Write anyway</source>
+        <translation>&amp;Write anyway</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WriteReview</name>
+    <message>
+        <source>Arc: %1</source>
+        <translation>Arc: %1</translation>
+    </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>Line: %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::XYPlot</name>

@@ -4600,6 +4600,25 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&amp;Write</source>
         <translation>写入(&amp;W)</translation>
     </message>
+    <message>
+        <source>The pages flag problems in these values:</source>
+        <translation>页面已指出这些值中的问题：</translation>
+    </message>
+    <message>
+        <source>&amp;Write anyway</source>
+        <translation>仍然写入(&amp;W)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WriteReview</name>
+    <message>
+        <source>Arc: %1</source>
+        <translation>圆弧：%1</translation>
+    </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>直线：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::XYPlot</name>

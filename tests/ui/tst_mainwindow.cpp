@@ -204,6 +204,38 @@ private Q_SLOTS:
         QVERIFY(!device->flashStatus().contains(QLatin1String("Saved")));
     }
 
+    // The write dialog lists what the pages already flag, and asks before writing it anyway.
+    void writeDialogListsKnownProblems()
+    {
+        ParameterStore *store = session->store();
+        {
+            WriteChangesDialog clean(*store);
+            QVERIFY(clean.problems().isEmpty());
+        }
+        // The centre on the start point: the arc editor flags it as invalid geometry.
+        const qint64 sx = *store->deviceValue(QStringLiteral("arc.start_x"));
+        const qint64 sy = *store->deviceValue(QStringLiteral("arc.start_y"));
+        QVERIFY(store->edit(QStringLiteral("arc.start_x"), sx + 100).isEmpty());
+        QVERIFY(store->edit(QStringLiteral("arc.center_x"), sx + 100).isEmpty());
+        QVERIFY(store->edit(QStringLiteral("arc.center_y"), sy).isEmpty() ||
+                store->deviceValue(QStringLiteral("arc.center_y")) == sy);
+        QVERIFY(store->edit(QStringLiteral("arc.mode"), 0).isEmpty() ||
+                store->deviceValue(QStringLiteral("arc.mode")) == 0);
+        // One input as both limits of motor 1: the wiring check flags it.
+        QVERIFY(store->edit(QStringLiteral("motor1.limit_positive"), 3).isEmpty());
+        QVERIFY(store->edit(QStringLiteral("motor1.limit_negative"), 3).isEmpty());
+        WriteChangesDialog dialog(*store);
+        const QString all = dialog.problems().join(QLatin1Char('|'));
+        QVERIFY2(dialog.problems().size() >= 2, qPrintable(all));
+        QVERIFY2(all.contains(QLatin1String("Arc: ")), qPrintable(all));
+        QVERIFY2(all.contains(QLatin1String("IN3")), qPrintable(all));
+        auto *label = dialog.findChild<QLabel *>(QStringLiteral("problems"));
+        QVERIFY(label && !label->isHidden());
+        auto *write = dialog.findChild<QPushButton *>(QStringLiteral("writeButton"));
+        QCOMPARE(write->text(), QStringLiteral("&Write anyway"));
+        store->revertAll();
+    }
+
     void emergencyStopFromInsideADialogGoesFirst()
     {
         QSignalSpy done(session.get(), &DeviceSession::commandFinished);

@@ -1,6 +1,7 @@
 #include "dialogs/writechangesdialog.h"
 
 #include "device/parameterstore.h"
+#include "device/writereview.h"
 #include "language.h"
 
 #include <QDialogButtonBox>
@@ -35,6 +36,7 @@ WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, const QStrin
     , m_writes(writesOf(store, keys))
     , m_table(new QTableWidget(int(m_writes.size()), 4, this))
     , m_summary(new QLabel(this))
+    , m_problems(WriteReview::problems(store, m_writes))
 {
     setWindowTitle(tr("Write changes to the controller"));
     const QString lang = Language::instance().current();
@@ -69,11 +71,30 @@ WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, const QStrin
     auto *buttons = new QDialogButtonBox(this);
     QPushButton *write = buttons->addButton(tr("&Write"), QDialogButtonBox::AcceptRole);
     write->setObjectName(QStringLiteral("writeButton"));
-    buttons->addButton(QDialogButtonBox::Cancel);
+    QPushButton *cancel = buttons->addButton(QDialogButtonBox::Cancel);
+    auto *problems = new QLabel(this);
+    problems->setObjectName(QStringLiteral("problems"));
+    problems->setWordWrap(true);
+    problems->setTextFormat(Qt::PlainText);
+    if (!m_problems.isEmpty()) {
+        // Say what the pages already know, and make writing it anyway a deliberate choice.
+        QStringList lines{tr("The pages flag problems in these values:")};
+        for (const QString &p : std::as_const(m_problems))
+            lines << QStringLiteral("• ") + p;
+        problems->setText(lines.join(QLatin1Char('\n')));
+        QPalette pal = problems->palette();
+        pal.setColor(QPalette::WindowText, QColor(200, 30, 30));
+        problems->setPalette(pal);
+        write->setText(tr("&Write anyway"));
+        write->setAutoDefault(false);
+        cancel->setDefault(true);
+    }
+    problems->setVisible(!m_problems.isEmpty());
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_summary);
+    layout->addWidget(problems);
     layout->addWidget(m_table);
     layout->addWidget(buttons);
     resize(sizeHint().expandedTo(QSize(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 80,

@@ -24,11 +24,15 @@ public:
     // The writes shown, as they will be sent if the user accepts.
     const QList<ParameterWrite> &writes() const { return m_writes; }
     QTableWidget *table() const { return m_table; }
+    // Geometry and wiring problems the pages already flag in these values (shown, and the
+    // Write button then says "Write anyway").
+    const QStringList &problems() const { return m_problems; }
 
 private:
     QList<ParameterWrite> m_writes;
     QTableWidget *m_table;
     QLabel *m_summary;
+    QStringList m_problems;
 };
 
 } // namespace stepcom
