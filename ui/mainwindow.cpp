@@ -292,8 +292,11 @@ void MainWindow::retranslate()
 
 void MainWindow::changeEvent(QEvent *event)
 {
-    if (event->type() == QEvent::LanguageChange)
+    if (event->type() == QEvent::LanguageChange) {
         retranslate();
+        // A passing message was made in the old language; the messages dock keeps it.
+        statusBar()->clearMessage();
+    }
     if (event->type() == QEvent::ActivationChange && !isActiveWindow()) // jogging (issue 5)
         m_motion->jog()->stopAll(tr("the window lost focus"));
     QMainWindow::changeEvent(event);

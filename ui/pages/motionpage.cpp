@@ -106,8 +106,9 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
         auto *p = new JogPanel(session, m_jog, n, content);
         panels->addWidget(p, (n - 1) / 2, (n - 1) % 2, Qt::AlignTop);
         m_panels << p;
-        if (p->speedField())
-            connect(p->speedField(), &ParameterField::rejected, this, &MotionPage::showBanner);
+        if (ParameterField *f = p->speedField())
+            connect(f, &ParameterField::rejected, this,
+                    [this, f] { showBannerOf([f] { return f->rejectionText(); }); });
     }
     rows->addLayout(panels);
 
@@ -274,7 +275,15 @@ QString MotionPage::bannerText() const
 
 void MotionPage::showBanner(const QString &text)
 {
+    m_bannerSource = {};
     m_bannerText->setText(text);
+    m_banner->show();
+}
+
+void MotionPage::showBannerOf(std::function<QString()> text)
+{
+    m_bannerSource = std::move(text);
+    m_bannerText->setText(m_bannerSource());
     m_banner->show();
 }
 
@@ -380,6 +389,13 @@ bool MotionPage::event(QEvent *event)
 
 void MotionPage::retranslate()
 {
+    // A banner made from state is made again; one kept as text (a jog controller warning) was
+    // written in the old language: the messages dock keeps it, the page lets it go.
+    if (m_bannerSource) {
+        m_bannerText->setText(m_bannerSource());
+        m_banner->setHidden(m_banner->isHidden() || m_bannerText->text().isEmpty());
+    } else if (!m_bannerText->text().isEmpty())
+        m_banner->hide();
     m_bannerClear->setText(tr("&Clear"));
     m_bannerClear->setToolTip(tr("Hide this note; the messages dock keeps it"));
     m_keyboard->setText(tr("&Keyboard jogging"));

@@ -4,6 +4,8 @@
 
 #include <QHash>
 
+#include <functional>
+
 class QCheckBox;
 class QFrame;
 class QGroupBox;
@@ -58,6 +60,8 @@ private:
     void buildHoming(QWidget *content);
     void buildOutputs(QWidget *content);
     void showBanner(const QString &text);
+    // A banner made from state each time it is shown, so a language switch retranslates it.
+    void showBannerOf(std::function<QString()> text);
     void setKeyboard(bool on);
     void sessionCommand(const QString &key);
     void refresh();
@@ -68,6 +72,7 @@ private:
     QFrame *m_banner;
     QLabel *m_bannerIcon;
     QLabel *m_bannerText;
+    std::function<QString()> m_bannerSource; // set: the banner's text is made from state
     QPushButton *m_bannerClear;
     QCheckBox *m_keyboard;
     QLabel *m_keyboardIndicator;
