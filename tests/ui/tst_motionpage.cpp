@@ -13,6 +13,7 @@
 #include "widgets/led.h"
 #include "widgets/messageview.h"
 #include "widgets/parameterfield.h"
+#include "widgets/statusdock.h"
 
 #include "darkpalette.h"
 
@@ -293,6 +294,8 @@ private Q_SLOTS:
             qPrintable(p->statusText()));
         QVERIFY(sim()->position(1) != 0);
         QVERIFY(p->referenceText().startsWith(QLatin1String("not referenced")));
+        StatusDock dock(session.get());
+        QCOMPARE(dock.referenceText(1), QStringLiteral("not referenced (homing was interrupted)"));
         // Logged when it was known, in other words than when it was sent.
         QStringList said;
         for (const auto &m : std::as_const(messages))

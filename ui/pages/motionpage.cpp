@@ -348,6 +348,11 @@ void MotionPage::refresh()
     else
         m_orderNote->setText(QStringLiteral("—"));
     m_homeAll->setToolTip(m_orderNote->text());
+    // Said before, not found out after: "return to data zero" into a limit already ON.
+    const QString warning = session()->motion()->startWarning(QStringLiteral("return_to_zero"));
+    m_returnToZero->setToolTip(warning.isEmpty() ? tr("Drive every idle motor back to position 0")
+                                                 : tr("Drive every idle motor back to position 0") +
+                                                       QStringLiteral("\n⚠ ") + warning);
     m_homingStatus->setText(homingStatus());
     m_homingStatus->setVisible(!m_homingStatus->text().isEmpty());
 
@@ -413,7 +418,6 @@ void MotionPage::retranslate()
     m_zero->setText(tr("&Zero coordinates"));
     m_zero->setToolTip(tr("Make the present positions of all motors 0; nothing moves"));
     m_returnToZero->setText(tr("Re&turn to data zero"));
-    m_returnToZero->setToolTip(tr("Drive every idle motor back to position 0"));
     m_outputsBox->setTitle(tr("Outputs"));
     const QString lang = Language::instance().current();
     for (int i = 0; i < m_outputNames.size(); ++i) {
