@@ -1,5 +1,7 @@
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
+#include "device/motionsupervisor.h"
+#include "device/referencetracker.h"
 #include "emergencystop.h"
 #include "language.h"
 #include "mainwindow.h"
@@ -327,6 +329,33 @@ private Q_SLOTS:
             qPrintable(p->statusText()));
         QVERIFY(p->statusText().contains(QLatin1String("stopped at ")));
         QVERIFY(!p->statusText().contains(QLatin1String("done")));
+    }
+
+    // A link lost while a move runs: not "done", the cause is the link, references are gone.
+    void aLinkLostDuringAMoveIsSaid()
+    {
+        connectSim();
+        QVERIFY(sim()->setValue(QStringLiteral("motor1.move_distance"), 20000));
+        QVERIFY(sim()->setValue(QStringLiteral("motor1.speed"), 120));
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->readAll();
+        QTRY_COMPARE(read.size(), 1);
+        MotionSupervisor *motion = session->motion();
+        session->command(QStringLiteral("motor1.home"));
+        QTRY_VERIFY_WITH_TIMEOUT(motion->references()->isReferenced(1), 10000);
+        QSignalSpy finished(motion, &MotionSupervisor::finished);
+        session->command(QStringLiteral("motor1.move"));
+        QTRY_VERIFY(motion->active(1).has_value());
+        QTRY_VERIFY(sim()->running(1));
+        session->simulator()->hangUp(60000);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
+        const auto o = motion->lastOutcome(1);
+        QVERIFY(o);
+        QCOMPARE(o->verdictWord(), QStringLiteral("stopped"));
+        QCOMPARE(o->causeWord(), QStringLiteral("link_lost"));
+        QVERIFY2(motion->text(*o).endsWith(QLatin1String("(link lost)")),
+                 qPrintable(motion->text(*o)));
+        QCOMPARE(motion->references()->reason(1), ReferenceTracker::Reason::LinkLost);
     }
 
     // F12 while a jog button is held: the jog ends on the page at once, not at the release.
