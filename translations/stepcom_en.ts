@@ -478,6 +478,50 @@
         <source>cannot write %1: %2</source>
         <translation>cannot write %1: %2</translation>
     </message>
+    <message>
+        <source>Controller (as the profile records it)</source>
+        <translation>Controller (as the profile records it)</translation>
+    </message>
+    <message>
+        <source>none: made from a file, not read from a controller</source>
+        <translation>none: made from a file, not read from a controller</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Baud rate</translation>
+    </message>
+    <message>
+        <source>the profile was made with %1</source>
+        <translation>the profile was made with %1</translation>
+    </message>
+    <message>
+        <source>Profile file</source>
+        <translation>Profile file</translation>
+    </message>
+    <message>
+        <source>Profile saved</source>
+        <translation>Profile saved</translation>
+    </message>
+    <message>
+        <source>%1 by StepCom %2</source>
+        <translation>%1 by StepCom %2</translation>
+    </message>
+    <message>
+        <source>Report date</source>
+        <translation>Report date</translation>
+    </message>
+    <message>
+        <source>What of the profile this register map cannot show</source>
+        <translation>What of the profile this register map cannot show</translation>
+    </message>
+    <message>
+        <source>Commissioning report (from a profile file)</source>
+        <translation>Commissioning report (from a profile file)</translation>
+    </message>
+    <message>
+        <source>Made from the profile file %1, not read from a controller: these are the values the file holds; a controller may hold others.</source>
+        <translation>Made from the profile file %1, not read from a controller: these are the values the file holds; a controller may hold others.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -887,6 +931,14 @@
         <translation>no command given (params, read, write, command, monitor, dump, diff, apply, report)</translation>
     </message>
     <message>
+        <source>report: make the report from this profile file, not from a controller.</source>
+        <translation>report: make the report from this profile file, not from a controller.</translation>
+    </message>
+    <message>
+        <source>profile</source>
+        <translation>profile</translation>
+    </message>
+    <message>
         <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
         <translation>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</translation>
     </message>
@@ -1059,16 +1111,95 @@
         <translation>report written to %1</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</translation>
+        <source>unknown command &apos;%1&apos; (%2)</source>
+        <translation>unknown command &apos;%1&apos; (%2)</translation>
     </message>
     <message>
-        <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
-        <translation>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</translation>
+        <source>diff needs one profile file (compared with the controller) or two (compared with each other)</source>
+        <translation>diff needs one profile file (compared with the controller) or two (compared with each other)</translation>
+    </message>
+    <message>
+        <source>left out of the comparison:</source>
+        <translation>left out of the comparison:</translation>
+    </message>
+    <message numerus="yes">
+        <source>the controller holds every value both maps have; %n left out</source>
+        <translation>
+            <numerusform>the controller holds every value both maps have; %n left out</numerusform>
+            <numerusform>the controller holds every value both maps have; %n left out</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing was compared</source>
+        <translation>nothing was compared</translation>
+    </message>
+    <message>
+        <source>A = %1: &quot;%2&quot;, register map %3</source>
+        <translation>A = %1: &quot;%2&quot;, register map %3</translation>
+    </message>
+    <message>
+        <source>B = %1: &quot;%2&quot;, register map %3</source>
+        <translation>B = %1: &quot;%2&quot;, register map %3</translation>
+    </message>
+    <message>
+        <source>differ (A -&gt; B):</source>
+        <translation>differ (A -&gt; B):</translation>
+    </message>
+    <message>
+        <source>only in A (%1):</source>
+        <translation>only in A (%1):</translation>
+    </message>
+    <message>
+        <source>only in B (%1):</source>
+        <translation>only in B (%1):</translation>
+    </message>
+    <message>
+        <source>not settings of register map %1, or out of its range (as the files hold them, A -&gt; B):</source>
+        <translation>not settings of register map %1, or out of its range (as the files hold them, A -&gt; B):</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(none)</translation>
+    </message>
+    <message>
+        <source>the two profiles hold the same values</source>
+        <translation>the two profiles hold the same values</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map</source>
+        <translation>%1 differ, %2 only in A, %3 only in B, %4 outside this map</translation>
+    </message>
+    <message>
+        <source>not applied:</source>
+        <translation>not applied:</translation>
+    </message>
+    <message>
+        <source>the profile holds no setting of this map: nothing to apply</source>
+        <translation>the profile holds no setting of this map: nothing to apply</translation>
+    </message>
+    <message>
+        <source>the controller already holds every value both maps have</source>
+        <translation>the controller already holds every value both maps have</translation>
+    </message>
+    <message>
+        <source>no report: %1 is not a profile StepCom can read</source>
+        <translation>no report: %1 is not a profile StepCom can read</translation>
+    </message>
+    <message>
+        <source>not in the report:</source>
+        <translation>not in the report:</translation>
+    </message>
+    <message>
+        <source>report written to %1, made from the profile file %2 (no controller was read)</source>
+        <translation>report written to %1, made from the profile file %2 (no controller was read)</translation>
     </message>
     <message>
         <source>%1: sent (add --wait to wait for how it ends)</source>
         <translation>%1: sent (add --wait to wait for how it ends)</translation>
+    </message>
+    <message>
+        <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
+        <translation>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</translation>
     </message>
 </context>
 <context>
@@ -1487,6 +1618,26 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n request</numerusform>
             <numerusform>%n requests</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>the built-in simulator was replaced</source>
+        <translation>the built-in simulator was replaced</translation>
+    </message>
+    <message>
+        <source>this program has no built-in simulator</source>
+        <translation>this program has no built-in simulator</translation>
+    </message>
+    <message>
+        <source>the page was left</source>
+        <translation>the page was left</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>the window lost focus</translation>
+    </message>
+    <message>
+        <source>the window closes</source>
+        <translation>the window closes</translation>
     </message>
     <message>
         <source>Opened %1; asking the controller</source>
@@ -2354,18 +2505,6 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n edited values were never written to the controller. Close anyway and lose them?</numerusform>
         </translation>
     </message>
-    <message>
-        <source>another page was chosen</source>
-        <translation>another page was chosen</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>the window lost focus</translation>
-    </message>
-    <message>
-        <source>the window closes</source>
-        <translation>the window closes</translation>
-    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -2831,14 +2970,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Homes %1.</source>
         <translation>Homes %1.</translation>
-    </message>
-    <message>
-        <source>the page was left</source>
-        <translation>the page was left</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>the window lost focus</translation>
     </message>
     <message>
         <source>&amp;Clear</source>
@@ -3849,6 +3980,37 @@ Every other master on the bus must use the new settings too, and no other device
         <source>cannot write %1: %2</source>
         <translation>cannot write %1: %2</translation>
     </message>
+    <message>
+        <source>not in register map &quot;%1&quot;</source>
+        <translation>not in register map &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>a command in register map &quot;%1&quot;, not a setting</source>
+        <translation>a command in register map &quot;%1&quot;, not a setting</translation>
+    </message>
+    <message>
+        <source>a status value in register map &quot;%1&quot;, not a setting</source>
+        <translation>a status value in register map &quot;%1&quot;, not a setting</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileVariance</name>
+    <message>
+        <source>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</source>
+        <translation>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</translation>
+    </message>
+    <message>
+        <source>unknown to this map: %1 = %2 (%3)</source>
+        <translation>unknown to this map: %1 = %2 (%3)</translation>
+    </message>
+    <message>
+        <source>cannot be applied: %1</source>
+        <translation>cannot be applied: %1</translation>
+    </message>
+    <message>
+        <source>not in the profile: %1 (%2)</source>
+        <translation>not in the profile: %1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ReferenceTracker</name>
@@ -4698,48 +4860,80 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>What to do.</translation>
     </message>
     <message>
-        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
-
-Commands:
-  params                 list every parameter and command of the register map
-  read [KEY...]          read parameters (all when none are named)
-  write KEY=VALUE...     write parameters in engineering units, then verify
-  command NAME           pulse a command coil (e.g. motor1.stop, estop)
-  monitor                print the live status as one JSON object per line,
-                         until --count samples or Ctrl-C (--interval MS)
-  dump FILE              read every setting and save it as a profile file
-                         (--name, --notes; --include-link adds id and baud)
-  diff FILE              compare the controller with a profile; exit 0 same,
-                         1 different, 2 bad file, 3 link or device error
-  apply FILE             write the profile&apos;s values that differ, after showing
-                         them and asking (--yes skips the question), then verify;
-                         --include-link also writes device id and baud,
-                         --save-to-flash saves afterwards
-  report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN)
-
-Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
-
-Commands:
-  params                 list every parameter and command of the register map
-  read [KEY...]          read parameters (all when none are named)
-  write KEY=VALUE...     write parameters in engineering units, then verify
-  command NAME           pulse a command coil (e.g. motor1.stop, estop)
-  monitor                print the live status as one JSON object per line,
-                         until --count samples or Ctrl-C (--interval MS)
-  dump FILE              read every setting and save it as a profile file
-                         (--name, --notes; --include-link adds id and baud)
-  diff FILE              compare the controller with a profile; exit 0 same,
-                         1 different, 2 bad file, 3 link or device error
-  apply FILE             write the profile&apos;s values that differ, after showing
-                         them and asking (--yes skips the question), then verify;
-                         --include-link also writes device id and baud,
-                         --save-to-flash saves afterwards
-  report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN)
-
-Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</translation>
+        <source>list every parameter and command of the register map</source>
+        <translation>list every parameter and command of the register map</translation>
+    </message>
+    <message>
+        <source>read parameters (all when none are named)</source>
+        <translation>read parameters (all when none are named)</translation>
+    </message>
+    <message>
+        <source>write parameters in engineering units, then verify</source>
+        <translation>write parameters in engineering units, then verify</translation>
+    </message>
+    <message>
+        <source>pulse a command coil (e.g. motor1.stop, estop)</source>
+        <translation>pulse a command coil (e.g. motor1.stop, estop)</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS)</source>
+        <translation>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS)</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud)</source>
+        <translation>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud)</translation>
+    </message>
+    <message>
+        <source>compare the controller with a profile; exit 0 same,
+1 different, 2 bad file, 3 link or device error</source>
+        <translation>compare the controller with a profile; exit 0 same,
+1 different, 2 bad file, 3 link or device error</translation>
+    </message>
+    <message>
+        <source>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards</source>
+        <translation>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>Commands:</translation>
+    </message>
+    <message>
+        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</source>
+        <translation>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</translation>
+    </message>
+    <message>
+        <source>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
+        <translation>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</translation>
+    </message>
+    <message>
+        <source>compare two profiles, no controller needed; exit 0
+same, 1 different, 2 bad file</source>
+        <translation>compare two profiles, no controller needed; exit 0
+same, 1 different, 2 bad file</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file, no controller needed)</source>
+        <translation>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file, no controller needed)</translation>
+    </message>
+    <message>
+        <source>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</source>
+        <translation>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</translation>
     </message>
 </context>
 </TS>

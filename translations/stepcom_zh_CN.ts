@@ -473,6 +473,50 @@
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
+    <message>
+        <source>Controller (as the profile records it)</source>
+        <translation>控制器（参数文件中的记录）</translation>
+    </message>
+    <message>
+        <source>none: made from a file, not read from a controller</source>
+        <translation>无：根据文件生成，未读取控制器</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>the profile was made with %1</source>
+        <translation>参数文件由 %1 生成</translation>
+    </message>
+    <message>
+        <source>Profile file</source>
+        <translation>参数文件</translation>
+    </message>
+    <message>
+        <source>Profile saved</source>
+        <translation>参数文件保存于</translation>
+    </message>
+    <message>
+        <source>%1 by StepCom %2</source>
+        <translation>%1，StepCom %2</translation>
+    </message>
+    <message>
+        <source>Report date</source>
+        <translation>报告日期</translation>
+    </message>
+    <message>
+        <source>What of the profile this register map cannot show</source>
+        <translation>此寄存器表无法显示的参数文件内容</translation>
+    </message>
+    <message>
+        <source>Commissioning report (from a profile file)</source>
+        <translation>调试报告（来自参数文件）</translation>
+    </message>
+    <message>
+        <source>Made from the profile file %1, not read from a controller: these are the values the file holds; a controller may hold others.</source>
+        <translation>根据参数文件 %1 生成，未读取控制器：这些是文件中的值，控制器中的值可能不同。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -882,6 +926,14 @@
         <translation>未给出命令（params、read、write、command、monitor、dump、diff、apply、report）</translation>
     </message>
     <message>
+        <source>report: make the report from this profile file, not from a controller.</source>
+        <translation>report：根据此参数文件生成报告，而不是读取控制器。</translation>
+    </message>
+    <message>
+        <source>profile</source>
+        <translation>参数文件</translation>
+    </message>
+    <message>
         <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
         <translation>command：等待运动命令结束并输出其结果（仅在完成或已回零参考时退出码为 0）。</translation>
     </message>
@@ -1051,16 +1103,94 @@
         <translation>报告已写入 %1</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>未知命令 &apos;%1&apos;（params、read、write、command、monitor、dump、diff、apply、report）</translation>
+        <source>unknown command &apos;%1&apos; (%2)</source>
+        <translation>未知命令 &apos;%1&apos;（%2）</translation>
     </message>
     <message>
-        <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
-        <translation>--wait：%1 没有可等待的结束（单次运动、回零、按顺序回零、回数据零点、圆弧和直线才有）</translation>
+        <source>diff needs one profile file (compared with the controller) or two (compared with each other)</source>
+        <translation>diff 需要一个参数文件（与控制器比较）或两个参数文件（互相比较）</translation>
+    </message>
+    <message>
+        <source>left out of the comparison:</source>
+        <translation>未参与比较：</translation>
+    </message>
+    <message numerus="yes">
+        <source>the controller holds every value both maps have; %n left out</source>
+        <translation>
+            <numerusform>控制器中已是两个寄存器表共有的全部值；%n 个值未参与比较</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing was compared</source>
+        <translation>未进行任何比较</translation>
+    </message>
+    <message>
+        <source>A = %1: &quot;%2&quot;, register map %3</source>
+        <translation>A = %1：“%2”，寄存器表 %3</translation>
+    </message>
+    <message>
+        <source>B = %1: &quot;%2&quot;, register map %3</source>
+        <translation>B = %1：“%2”，寄存器表 %3</translation>
+    </message>
+    <message>
+        <source>differ (A -&gt; B):</source>
+        <translation>不同（A -&gt; B）：</translation>
+    </message>
+    <message>
+        <source>only in A (%1):</source>
+        <translation>只在 A 中（%1）：</translation>
+    </message>
+    <message>
+        <source>only in B (%1):</source>
+        <translation>只在 B 中（%1）：</translation>
+    </message>
+    <message>
+        <source>not settings of register map %1, or out of its range (as the files hold them, A -&gt; B):</source>
+        <translation>不是寄存器表 %1 的设置参数，或超出其范围（按文件中的原值，A -&gt; B）：</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>the two profiles hold the same values</source>
+        <translation>两个参数文件的值完全相同</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map</source>
+        <translation>%1 个不同，%2 个只在 A 中，%3 个只在 B 中，%4 个超出此寄存器表</translation>
+    </message>
+    <message>
+        <source>not applied:</source>
+        <translation>不应用：</translation>
+    </message>
+    <message>
+        <source>the profile holds no setting of this map: nothing to apply</source>
+        <translation>参数文件中没有此寄存器表的任何设置参数：无可应用</translation>
+    </message>
+    <message>
+        <source>the controller already holds every value both maps have</source>
+        <translation>控制器中已是两个寄存器表共有的全部值</translation>
+    </message>
+    <message>
+        <source>no report: %1 is not a profile StepCom can read</source>
+        <translation>未生成报告：%1 不是 StepCom 可读取的参数文件</translation>
+    </message>
+    <message>
+        <source>not in the report:</source>
+        <translation>报告中未包含：</translation>
+    </message>
+    <message>
+        <source>report written to %1, made from the profile file %2 (no controller was read)</source>
+        <translation>报告已写入 %1，根据参数文件 %2 生成（未读取控制器）</translation>
     </message>
     <message>
         <source>%1: sent (add --wait to wait for how it ends)</source>
         <translation>%1：已发送（加 --wait 可等待其结果）</translation>
+    </message>
+    <message>
+        <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
+        <translation>--wait：%1 没有可等待的结束（单次运动、回零、按顺序回零、回数据零点、圆弧和直线才有）</translation>
     </message>
 </context>
 <context>
@@ -1476,6 +1606,26 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>
             <numerusform>%n 次请求</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>the built-in simulator was replaced</source>
+        <translation>内置模拟器已被替换</translation>
+    </message>
+    <message>
+        <source>this program has no built-in simulator</source>
+        <translation>此程序没有内置模拟器</translation>
+    </message>
+    <message>
+        <source>the page was left</source>
+        <translation>离开了此页面</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>窗口失去焦点</translation>
+    </message>
+    <message>
+        <source>the window closes</source>
+        <translation>窗口正在关闭</translation>
     </message>
     <message>
         <source>Opened %1; asking the controller</source>
@@ -2342,18 +2492,6 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>有 %n 个已修改的值尚未写入控制器。仍要关闭并放弃这些修改吗？</numerusform>
         </translation>
     </message>
-    <message>
-        <source>another page was chosen</source>
-        <translation>切换到了其他页面</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>窗口失去焦点</translation>
-    </message>
-    <message>
-        <source>the window closes</source>
-        <translation>窗口正在关闭</translation>
-    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -2819,14 +2957,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Homes %1.</source>
         <translation>回零顺序：%1。</translation>
-    </message>
-    <message>
-        <source>the page was left</source>
-        <translation>离开了此页面</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>窗口失去焦点</translation>
     </message>
     <message>
         <source>&amp;Clear</source>
@@ -3826,6 +3956,37 @@ Every other master on the bus must use the new settings too, and no other device
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
+    <message>
+        <source>not in register map &quot;%1&quot;</source>
+        <translation>不在寄存器表 &quot;%1&quot; 中</translation>
+    </message>
+    <message>
+        <source>a command in register map &quot;%1&quot;, not a setting</source>
+        <translation>在寄存器表 &quot;%1&quot; 中是命令，不是设置参数</translation>
+    </message>
+    <message>
+        <source>a status value in register map &quot;%1&quot;, not a setting</source>
+        <translation>在寄存器表 &quot;%1&quot; 中是状态值，不是设置参数</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileVariance</name>
+    <message>
+        <source>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</source>
+        <translation>参数文件由寄存器表 &quot;%1&quot; 生成；当前寄存器表是 &quot;%2&quot;：只能应用两者共有的设置参数</translation>
+    </message>
+    <message>
+        <source>unknown to this map: %1 = %2 (%3)</source>
+        <translation>此寄存器表中没有：%1 = %2（%3）</translation>
+    </message>
+    <message>
+        <source>cannot be applied: %1</source>
+        <translation>无法应用：%1</translation>
+    </message>
+    <message>
+        <source>not in the profile: %1 (%2)</source>
+        <translation>参数文件中没有：%1（%2）</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ReferenceTracker</name>
@@ -4673,48 +4834,80 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>要执行的命令。</translation>
     </message>
     <message>
-        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
-
-Commands:
-  params                 list every parameter and command of the register map
-  read [KEY...]          read parameters (all when none are named)
-  write KEY=VALUE...     write parameters in engineering units, then verify
-  command NAME           pulse a command coil (e.g. motor1.stop, estop)
-  monitor                print the live status as one JSON object per line,
-                         until --count samples or Ctrl-C (--interval MS)
-  dump FILE              read every setting and save it as a profile file
-                         (--name, --notes; --include-link adds id and baud)
-  diff FILE              compare the controller with a profile; exit 0 same,
-                         1 different, 2 bad file, 3 link or device error
-  apply FILE             write the profile&apos;s values that differ, after showing
-                         them and asking (--yes skips the question), then verify;
-                         --include-link also writes device id and baud,
-                         --save-to-flash saves afterwards
-  report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN)
-
-Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。
-
-命令：
-  params                 列出寄存器表中的全部参数和命令
-  read [KEY...]          读取参数（未指定时读取全部）
-  write KEY=VALUE...     以工程单位写入参数，然后校验
-  command NAME           触发一个命令线圈（例如 motor1.stop、estop）
-  monitor                以每行一个 JSON 对象输出实时状态，
-                         直到 --count 个样本或 Ctrl-C（--interval MS）
-  dump FILE              读取全部设置并保存为参数文件
-                         （--name、--notes；--include-link 包括地址和波特率）
-  diff FILE              将控制器与参数文件比较；退出码 0 相同，
-                         1 不同，2 文件错误，3 连接或设备错误
-  apply FILE             写入参数文件中不同的值：先列出并询问
-                         （--yes 跳过询问），然后校验；
-                         --include-link 同时写入设备地址和波特率，
-                         --save-to-flash 之后保存到闪存
-  report FILE.pdf|.html  生成调试报告（--name、--notes、
-                         --lang en|zh_CN）
-
-退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
+        <source>list every parameter and command of the register map</source>
+        <translation>列出寄存器表中的全部参数和命令</translation>
+    </message>
+    <message>
+        <source>read parameters (all when none are named)</source>
+        <translation>读取参数（未指定时读取全部）</translation>
+    </message>
+    <message>
+        <source>write parameters in engineering units, then verify</source>
+        <translation>以工程单位写入参数，然后校验</translation>
+    </message>
+    <message>
+        <source>pulse a command coil (e.g. motor1.stop, estop)</source>
+        <translation>触发一个命令线圈（例如 motor1.stop、estop）</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS)</source>
+        <translation>以每行一个 JSON 对象输出实时状态，
+直到 --count 个样本或 Ctrl-C（--interval MS）</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud)</source>
+        <translation>读取全部设置并保存为参数文件
+（--name、--notes；--include-link 包括地址和波特率）</translation>
+    </message>
+    <message>
+        <source>compare the controller with a profile; exit 0 same,
+1 different, 2 bad file, 3 link or device error</source>
+        <translation>将控制器与参数文件比较；退出码 0 相同，
+1 不同，2 文件错误，3 连接或设备错误</translation>
+    </message>
+    <message>
+        <source>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards</source>
+        <translation>写入参数文件中不同的值：先列出并询问
+（--yes 跳过询问），然后校验；
+--include-link 同时写入设备地址和波特率，
+--save-to-flash 之后保存到闪存</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>命令：</translation>
+    </message>
+    <message>
+        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</source>
+        <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。</translation>
+    </message>
+    <message>
+        <source>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
+        <translation>退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
+    </message>
+    <message>
+        <source>compare two profiles, no controller needed; exit 0
+same, 1 different, 2 bad file</source>
+        <translation>比较两个参数文件，无需控制器；退出码 0 相同，
+1 不同，2 文件错误</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file, no controller needed)</source>
+        <translation>生成调试报告（--name、--notes、
+--lang en|zh_CN；--from PROFILE：根据参数文件
+生成，无需控制器）</translation>
+    </message>
+    <message>
+        <source>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</source>
+        <translation>触发一个运动命令并等待其结束；输出
+结束情况（--json），仅在完成或已回零时退出码为 0</translation>
     </message>
 </context>
 </TS>

@@ -1,8 +1,7 @@
 #include "mainwindow.h"
 
-#include "bus/modbuslink.h"
 #include "device/devicesession.h"
-#include "device/jogcontroller.h" // jogging (issue 5)
+#include "device/jogcontroller.h"
 #include "device/linkhealth.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
@@ -20,6 +19,7 @@
 #include "widgets/messageview.h"
 #include "widgets/statusdock.h" // monitoring (issue 5)
 #include "widgets/trafficview.h"
+#include "writeflow.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -48,6 +48,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     , m_stack(new QStackedWidget(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
+    m_writeFlow = new WriteFlow(session, this);
     auto *splitter = new QSplitter(this);
     splitter->addWidget(m_sidebar);
     splitter->addWidget(m_stack);
@@ -72,11 +73,10 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     createMenus();
     createDocks();
     m_linkStatus = new LinkStatus(session, this);
-    // --- jogging (issue 5): a page change stops every jog; jog messages go to the dock ---
-    connect(m_sidebar, &QListWidget::currentRowChanged, m_motion->jog(),
-            [this] { m_motion->jog()->stopAll(tr("another page was chosen")); });
-    connect(m_motion->jog(), &JogController::message, m_messages, &MessageView::add);
-    // --- end jogging ---
+    // A page change stops every jog (the session's rule); jog messages go to the dock.
+    connect(m_sidebar, &QListWidget::currentRowChanged, session,
+            [session] { session->stopJogging(DeviceSession::JogStop::PageLeft); });
+    connect(session->jog(), &JogController::message, m_messages, &MessageView::add);
     connect(m_profiles, &ProfileActions::finished, this, // profiles (issue 7)
             [this](bool ok, const QString &text) {
                 m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,
@@ -86,7 +86,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     statusBar()->addPermanentWidget(m_linkStatus);
 
     connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
-    connect(session->store(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
+    connect(session->parameters(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
     connect(session, &DeviceSession::message, this,
             [this](DeviceSession::Severity s, const QString &text) {
                 m_messages->add(s, text);
@@ -121,7 +121,7 @@ void MainWindow::addPage(Page *page)
 
 WriteChangesDialog *MainWindow::writeDialog() const
 {
-    return m_writeDialog;
+    return m_writeFlow->dialog();
 }
 
 QMessageBox *MainWindow::closeQuestion() const
@@ -158,7 +158,7 @@ void MainWindow::createActions()
     m_write =
         make("writeChanges", QKeySequence(Qt::CTRL | Qt::Key_Return), [this] { writeChanges(); });
     m_revert = make("revert", QKeySequence(Qt::CTRL | Qt::Key_R),
-                    [this] { m_session->store()->revertAll(); });
+                    [this] { m_session->parameters()->revertAll(); });
     m_save = make("saveToFlash", QKeySequence::Save, [this] { m_session->saveToFlash(); });
     m_disconnect = make("disconnect", QKeySequence(), [this] { m_session->disconnectFrom(); });
     m_estopAction = make("emergencyStop", QKeySequence(), [this] { m_estop->trigger(); });
@@ -227,7 +227,7 @@ void MainWindow::createMenus()
 void MainWindow::createDocks()
 {
     m_traffic = new TrafficView(this);
-    m_traffic->setLog(m_session->link()->traffic());
+    m_traffic->setLog(m_session->traffic());
     m_trafficDock = new QDockWidget(this);
     m_trafficDock->setObjectName(QStringLiteral("trafficDock"));
     m_trafficDock->setWidget(m_traffic);
@@ -297,15 +297,15 @@ void MainWindow::changeEvent(QEvent *event)
         // A passing message was made in the old language; the messages dock keeps it.
         statusBar()->clearMessage();
     }
-    if (event->type() == QEvent::ActivationChange && !isActiveWindow()) // jogging (issue 5)
-        m_motion->jog()->stopAll(tr("the window lost focus"));
+    if (event->type() == QEvent::ActivationChange && !isActiveWindow())
+        m_session->stopJogging(DeviceSession::JogStop::FocusLost);
     QMainWindow::changeEvent(event);
 }
 
 void MainWindow::updateActions()
 {
     const bool connected = m_session->isConnected();
-    const bool edits = m_session->store()->hasEdits();
+    const bool edits = m_session->parameters()->hasEdits();
     m_readAll->setEnabled(connected);
     m_write->setEnabled(connected && edits);
     m_revert->setEnabled(edits);
@@ -315,28 +315,21 @@ void MainWindow::updateActions()
 
 void MainWindow::writeChanges()
 {
-    if (!m_session->store()->hasEdits() || !m_session->isConnected())
-        return;
-    if (m_writeDialog)
-        m_writeDialog->close();
-    m_writeDialog = new WriteChangesDialog(*m_session->store(), this);
-    m_writeDialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(m_writeDialog, &QDialog::accepted, this,
-            [this, dialog = m_writeDialog.data()] { m_session->write(dialog->writes()); });
-    m_writeDialog->open();
+    m_writeFlow->openAll();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    if (m_session->store()->hasEdits() && !m_closeConfirmed) {
+    if (m_session->parameters()->hasEdits() && !m_closeConfirmed) {
         event->ignore();
         if (m_closeQuestion)
             return;
-        m_closeQuestion = new QMessageBox(QMessageBox::Warning, tr("Unwritten changes"),
-                                          tr("%n edited value(s) were never written to the "
-                                             "controller. Close anyway and lose them?",
-                                             nullptr, int(m_session->store()->editedKeys().size())),
-                                          QMessageBox::Discard | QMessageBox::Cancel, this);
+        m_closeQuestion =
+            new QMessageBox(QMessageBox::Warning, tr("Unwritten changes"),
+                            tr("%n edited value(s) were never written to the "
+                               "controller. Close anyway and lose them?",
+                               nullptr, int(m_session->parameters()->editedKeys().size())),
+                            QMessageBox::Discard | QMessageBox::Cancel, this);
         m_closeQuestion->setAttribute(Qt::WA_DeleteOnClose);
         m_closeQuestion->setDefaultButton(QMessageBox::Cancel);
         connect(m_closeQuestion, &QMessageBox::finished, this, [this](int result) {
@@ -348,21 +341,20 @@ void MainWindow::closeEvent(QCloseEvent *event)
         m_closeQuestion->open();
         return;
     }
-    // --- jogging (issue 5): stop what is held and let the stop reach the wire (at most 1 s) ---
-    if (!m_jogStopAwaited &&
-        (m_motion->jog()->stopAll(tr("the window closes")) > 0 || m_motion->jog()->isBusy())) {
+    // Stop what is held and let the stop reach the wire (at most 1 s).
+    if (!m_jogStopAwaited && (m_session->stopJogging(DeviceSession::JogStop::WindowClosing) > 0 ||
+                              m_session->jog()->isBusy())) {
         m_jogStopAwaited = true;
         event->ignore();
         const auto closeAgain = [this] {
             if (isVisible())
                 close();
         };
-        connect(m_motion->jog(), &JogController::settled, this, closeAgain,
+        connect(m_session->jog(), &JogController::settled, this, closeAgain,
                 Qt::SingleShotConnection);
         QTimer::singleShot(1000, this, closeAgain);
         return;
     }
-    // --- end jogging ---
     saveLayout();
     event->accept();
 }

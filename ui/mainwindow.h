@@ -23,6 +23,7 @@ class ProfileActions; // profiles (issue 7)
 class StatusDock;     // monitoring (issue 5)
 class TrafficView;
 class WriteChangesDialog;
+class WriteFlow;
 
 // Composes the pages, docks, toolbar and menus around one DeviceSession. It does no page's
 // work: pages are views of the session's store; actions call the session.
@@ -81,7 +82,7 @@ private:
     MotionPage *m_motion = nullptr;       // jogging (issue 5)
     ProfileActions *m_profiles = nullptr; // profiles (issue 7)
     bool m_jogStopAwaited = false;        // jogging (issue 5): close waited for the stops once
-    QPointer<WriteChangesDialog> m_writeDialog;
+    WriteFlow *m_writeFlow = nullptr;
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;
     bool m_answeredOnce = false; // this connection's controller answered (the page jumped)

@@ -1,7 +1,6 @@
 #include "ctlmotionwait.h"
 
-#include "bus/modbuslink.h"
-#include "device/deviceclient.h"
+#include "device/devicesession.h"
 #include "device/motionjudge.h"
 #include "device/motionwatch.h"
 
@@ -18,10 +17,10 @@ constexpr int kReadsBeforeLost = 5; // failed status reads in a row: the control
 
 } // namespace
 
-CtlMotionWait::CtlMotionWait(DeviceClient *device, const Parameter &command, bool json,
+CtlMotionWait::CtlMotionWait(DeviceSession *session, const Parameter &command, bool json,
                              QObject *parent)
     : QObject(parent)
-    , m_device(device)
+    , m_session(session)
     , m_command(command)
     , m_json(json)
     , m_out(stdout)
@@ -30,7 +29,7 @@ CtlMotionWait::CtlMotionWait(DeviceClient *device, const Parameter &command, boo
     m_timer.setSingleShot(true);
     m_timer.setInterval(kSampleMs);
     connect(&m_timer, &QTimer::timeout, this, &CtlMotionWait::sample);
-    connect(device->link(), &ModbusLink::lost, this,
+    connect(session, &DeviceSession::linkLost, this,
             [this](const QString &) { conclude(MotionCause::LinkLost); });
 }
 
@@ -47,24 +46,25 @@ void CtlMotionWait::fail(const QString &message)
 void CtlMotionWait::start()
 {
     // Where it should end comes from what the controller holds now: read everything first.
-    m_device->readAll([this](const ReadOutcome &r) {
+    m_session->readAll([this](const ReadOutcome &r) {
         m_values = r.values;
         if (!r.ok) {
             fail(r.errors.join(QLatin1String("; ")));
             return;
         }
-        const auto plan = MotionJudge::plan(m_device->map(), m_command.key, m_values);
+        const auto plan = MotionJudge::plan(m_session->map(), m_command.key, m_values);
         if (!plan) {
             fail(tr("%1 would not move anything here (nothing in the homing order, or every "
                     "motor runs): nothing to wait for")
                      .arg(m_command.key));
             return;
         }
-        const QString warning = MotionJudge::limitWarning(m_device->map(), m_command.key, m_values);
+        const QString warning =
+            MotionJudge::limitWarning(m_session->map(), m_command.key, m_values);
         if (!warning.isEmpty())
             m_err << QStringLiteral("stepcomctl: ") << warning << Qt::endl;
-        m_watch = std::make_unique<MotionWatch>(m_device->map(), *plan, 0);
-        m_device->command(m_command, [this](const Result &c) {
+        m_watch = std::make_unique<MotionWatch>(m_session->map(), *plan, 0);
+        m_session->command(m_command, [this](const Result &c) {
             if (!c.ok) {
                 fail(c.errorText);
                 return;
@@ -82,27 +82,30 @@ void CtlMotionWait::sample()
     if (m_done)
         return;
     QList<const Parameter *> params;
-    for (const QString &k : MotionJudge::watchKeys(m_device->map()))
-        params << m_device->map().find(k);
-    m_device->read(params, Priority::Read, [this](const ReadOutcome &r) {
-        if (m_done)
-            return;
-        if (!r.ok) {
-            if (++m_failedReads >= kReadsBeforeLost) {
-                conclude(MotionCause::LinkLost);
+    for (const QString &k : MotionJudge::watchKeys(m_session->map()))
+        params << m_session->map().find(k);
+    m_session->read(
+        params,
+        [this](const ReadOutcome &r) {
+            if (m_done)
+                return;
+            if (!r.ok) {
+                if (++m_failedReads >= kReadsBeforeLost) {
+                    conclude(MotionCause::LinkLost);
+                    return;
+                }
+                m_timer.start();
                 return;
             }
-            m_timer.start();
-            return;
-        }
-        m_failedReads = 0;
-        for (auto it = r.values.cbegin(); it != r.values.cend(); ++it)
-            m_values.insert(it.key(), it.value());
-        if (m_watch->sample(r.values))
-            conclude(MotionCause::None);
-        else
-            m_timer.start();
-    });
+            m_failedReads = 0;
+            for (auto it = r.values.cbegin(); it != r.values.cend(); ++it)
+                m_values.insert(it.key(), it.value());
+            if (m_watch->sample(r.values))
+                conclude(MotionCause::None);
+            else
+                m_timer.start();
+        },
+        Priority::Read);
 }
 
 void CtlMotionWait::conclude(MotionCause cause)
@@ -111,7 +114,7 @@ void CtlMotionWait::conclude(MotionCause cause)
         return;
     m_timer.stop();
     m_watch->interrupt(cause);
-    const RegisterMap &map = m_device->map();
+    const RegisterMap &map = m_session->map();
     const MotionOutcome o = MotionJudge::judge(map, m_watch->start(), m_values, m_watch->cause());
     const QString text = MotionJudge::text(map, o);
     if (m_json) {

@@ -10,11 +10,12 @@
 
 namespace stepcom {
 
-class DeviceClient;
+class DeviceSession;
 class MotionWatch;
 struct Parameter;
 
-// `stepcomctl command NAME --wait`: reads what the controller holds, sends the motion command,
+// `stepcomctl command NAME --wait` (a row of the command table), over stepcomctl's one-shot
+// session: reads what the controller holds, sends the motion command,
 // reads the positions, running flags and inputs until the axes are idle, and prints the
 // outcome in the window's words (MotionJudge), or as JSON. Exit 0 only when "done" or
 // "referenced"; 1 when it stopped elsewhere, was interrupted or the link was lost.
@@ -22,7 +23,7 @@ class CtlMotionWait : public QObject
 {
     Q_OBJECT
 public:
-    CtlMotionWait(DeviceClient *device, const Parameter &command, bool json,
+    CtlMotionWait(DeviceSession *session, const Parameter &command, bool json,
                   QObject *parent = nullptr);
     ~CtlMotionWait() override;
     void start();
@@ -35,7 +36,7 @@ private:
     void conclude(MotionCause cause);
     void fail(const QString &message);
 
-    DeviceClient *m_device;
+    DeviceSession *m_session;
     const Parameter &m_command;
     bool m_json;
     StatusValues m_values;

@@ -55,6 +55,9 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("name"), tr("dump, report: name of the profile or the machine."),
          tr("text")},
         {QStringLiteral("notes"), tr("dump, report: notes to record."), tr("text")},
+        {QStringLiteral("from"),
+         tr("report: make the report from this profile file, not from a controller."),
+         tr("profile")},
         {QStringLiteral("count"), tr("monitor: number of samples (default: until stopped)."),
          tr("n")},
         {QStringLiteral("interval"),
@@ -123,6 +126,7 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.includeLink = parser.isSet(QStringLiteral("include-link"));
     o.name = parser.value(QStringLiteral("name"));
     o.notes = parser.value(QStringLiteral("notes"));
+    o.from = parser.value(QStringLiteral("from"));
     const QStringList positional = parser.positionalArguments();
     if (positional.isEmpty())
         return tr("no command given (params, read, write, command, monitor, dump, diff, apply, "

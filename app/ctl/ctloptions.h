@@ -1,6 +1,6 @@
 #pragma once
 
-#include "bus/linksettings.h"
+#include "device/devicesession.h" // LinkSettings
 
 #include <QCommandLineParser>
 #include <QStringList>
@@ -22,6 +22,7 @@ struct CtlOptions
     bool includeLink = false;                // dump/apply: device.id and device.baud too
     QString name;                            // dump/report: the profile's or the machine's name
     QString notes;                           // dump/report
+    QString from;                            // report --from PROFILE: from a file, no controller
     QString language = QStringLiteral("en"); // --lang or the environment: messages and the report
     int count = -1;
     int intervalMs = 0;

@@ -1,16 +1,36 @@
 #include "device/linkhealth.h"
 
+#include "bus/modbuslink.h"
+
 namespace stepcom {
+
+namespace {
+
+// What the port's state alone says: an open port is only "asking" until something answers.
+LinkHealth::State portState(ModbusLink::State state)
+{
+    switch (state) {
+    case ModbusLink::State::Connecting:
+        return LinkHealth::State::Opening;
+    case ModbusLink::State::Connected:
+        return LinkHealth::State::Asking;
+    case ModbusLink::State::Disconnected:
+        break;
+    }
+    return LinkHealth::State::Closed;
+}
+
+} // namespace
 
 LinkHealth::LinkHealth(ModbusLink *link, QObject *parent)
     : QObject(parent)
     , m_link(link)
 {
     connect(link, &ModbusLink::stateChanged, this,
-            [this](ModbusLink::State s, const QString &) { onLinkState(s); });
+            [this](ModbusLink::State s, const QString &) { onPortState(portState(s)); });
     connect(link, &ModbusLink::finished, this,
             [this](quint64, const Request &, const Result &r) { onFinished(r); });
-    onLinkState(link->state());
+    onPortState(portState(link->state()));
 }
 
 void LinkHealth::setState(State state)
@@ -21,20 +41,10 @@ void LinkHealth::setState(State state)
     Q_EMIT stateChanged(state);
 }
 
-void LinkHealth::onLinkState(ModbusLink::State state)
+void LinkHealth::onPortState(State state)
 {
     m_silent = 0;
-    switch (state) {
-    case ModbusLink::State::Disconnected:
-        setState(State::Closed);
-        break;
-    case ModbusLink::State::Connecting:
-        setState(State::Opening);
-        break;
-    case ModbusLink::State::Connected:
-        setState(State::Asking);
-        break;
-    }
+    setState(state);
 }
 
 void LinkHealth::onFinished(const Result &result)

@@ -1,10 +1,11 @@
 #pragma once
 
-#include "bus/modbuslink.h"
-
 #include <QObject>
 
 namespace stepcom {
+
+class ModbusLink;
+struct Result;
 
 // Whether the controller answers, in three steps: the port is closed; the port is open but
 // the controller does not answer; the controller answers. A port that opens says nothing about
@@ -42,7 +43,8 @@ Q_SIGNALS:
 
 private:
     void setState(State state);
-    void onLinkState(ModbusLink::State state);
+    // The port's own state, in this class' terms (Closed, Opening or Asking).
+    void onPortState(State state);
     void onFinished(const Result &result);
 
     ModbusLink *m_link;

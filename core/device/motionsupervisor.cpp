@@ -4,13 +4,12 @@
 #include "device/devicesession.h"
 #include "device/motionjudge.h"
 #include "device/referencetracker.h"
-#include "poll/poller.h"
 
 #include <QPointer>
 
 namespace stepcom {
 
-MotionSupervisor::MotionSupervisor(DeviceSession *session)
+MotionSupervisor::MotionSupervisor(DeviceSession *session, ModbusLink *link)
     : QObject(session)
     , m_session(session)
     , m_references(new ReferenceTracker(session->map().blockCount(QStringLiteral("motor")), this))
@@ -22,9 +21,9 @@ MotionSupervisor::MotionSupervisor(DeviceSession *session)
     connect(session, &DeviceSession::commandFinished, this, &MotionSupervisor::onCommandFinished);
     connect(session, &DeviceSession::disconnected, this, &MotionSupervisor::onDisconnected);
     // Every stop goes through the link, whoever sent it (jog controller, E-STOP, stop buttons).
-    connect(session->link(), &ModbusLink::dispatched, this,
+    connect(link, &ModbusLink::dispatched, this,
             [this](quint64, const Request &r) { onDispatched(r); });
-    connect(session->statusPoller(), &Poller::cycleFinished, this,
+    connect(session, &DeviceSession::statusCycleFinished, this,
             [this](bool ok, qint64) { onCycle(ok); });
 }
 
@@ -33,7 +32,7 @@ MotionSupervisor::~MotionSupervisor() = default;
 StatusValues MotionSupervisor::snapshot() const
 {
     StatusValues v;
-    const ParameterStore *store = m_session->store();
+    const ParameterStore *store = m_session->parameters();
     for (const Parameter *p : m_session->map().holdings()) {
         if (const auto raw = store->deviceValue(p->key))
             v.insert(p->key, *raw);
@@ -174,15 +173,17 @@ void MotionSupervisor::readEndThenJudge(quint64 id)
     QList<const Parameter *> params;
     for (const QString &k : MotionJudge::watchKeys(m_session->map()))
         params << m_session->map().find(k);
-    m_session->client()->read(params, Priority::Read,
-                              [self = QPointer<MotionSupervisor>(this), id](const ReadOutcome &r) {
-                                  if (!self || self->indexOf(id) < 0)
-                                      return;
-                                  StatusValues end = self->snapshot();
-                                  for (auto it = r.values.cbegin(); it != r.values.cend(); ++it)
-                                      end.insert(it.key(), it.value());
-                                  self->conclude(id, end);
-                              });
+    m_session->read(
+        params,
+        [self = QPointer<MotionSupervisor>(this), id](const ReadOutcome &r) {
+            if (!self || self->indexOf(id) < 0)
+                return;
+            StatusValues end = self->snapshot();
+            for (auto it = r.values.cbegin(); it != r.values.cend(); ++it)
+                end.insert(it.key(), it.value());
+            self->conclude(id, end);
+        },
+        Priority::Read);
 }
 
 void MotionSupervisor::conclude(quint64 id, const StatusValues &end)

@@ -11,6 +11,7 @@
 namespace stepcom {
 
 class DeviceSession;
+class ModbusLink;
 class ReferenceTracker;
 struct Request;
 
@@ -23,7 +24,8 @@ class MotionSupervisor : public QObject
 {
     Q_OBJECT
 public:
-    explicit MotionSupervisor(DeviceSession *session);
+    // `link` is the session's own: every stop goes through it, whoever sent it.
+    MotionSupervisor(DeviceSession *session, ModbusLink *link);
     ~MotionSupervisor() override;
 
     ReferenceTracker *references() const { return m_references; }

@@ -1,8 +1,9 @@
 #include "device/writereview.h"
 
-#include "device/interpolationgeometry.h"
 #include "device/parameterstore.h"
 #include "device/wiringcheck.h"
+#include "motion/interpolationgeometry.h"
+#include "motion/pathsetup.h"
 
 namespace stepcom {
 
@@ -16,47 +17,32 @@ QStringList WriteReview::problems(const ParameterStore &store, const QList<Param
             return after.value(key);
         return store.deviceValue(key);
     };
-    const auto units = [&](const QString &key) -> std::optional<double> {
-        const Parameter *p = store.map().find(key);
-        const auto r = p ? raw(key) : std::nullopt;
-        return r ? std::optional<double>(p->toEngineering(*r)) : std::nullopt;
-    };
     const auto touches = [&](const QString &prefix) {
         return std::any_of(after.keyBegin(), after.keyEnd(),
                            [&](const QString &k) { return k.startsWith(prefix); });
     };
-    const auto point = [&](const QString &prefix, const char *name,
-                           bool *known) -> interpolation::Point {
-        const auto x = units(prefix + QLatin1String(name) + QStringLiteral("_x"));
-        const auto y = units(prefix + QLatin1String(name) + QStringLiteral("_y"));
-        *known = *known && x && y;
-        return {x.value_or(0), y.value_or(0)};
+    // A geometry is judged only when every point it needs is known (core/motion reads the
+    // registers; it counts an unknown value as 0).
+    const auto known = [&](const QString &prefix, std::initializer_list<const char *> points) {
+        return std::all_of(points.begin(), points.end(), [&](const char *name) {
+            const QString base = prefix + QLatin1String(name);
+            return raw(base + QStringLiteral("_x")) && raw(base + QStringLiteral("_y"));
+        });
     };
 
     QStringList problems;
+    const RegisterMap &map = store.map();
     if (touches(QStringLiteral("arc."))) {
-        bool known = true;
-        interpolation::ArcInput in;
-        in.mode = raw(QStringLiteral("arc.mode")).value_or(0) == 1
-                      ? interpolation::ArcMode::ThreePoints
-                      : interpolation::ArcMode::Centre;
-        in.start = point(QStringLiteral("arc."), "start", &known);
-        in.end = point(QStringLiteral("arc."), "end", &known);
-        if (in.mode == interpolation::ArcMode::Centre)
-            in.centre = point(QStringLiteral("arc."), "center", &known);
-        else
-            in.middle = point(QStringLiteral("arc."), "middle", &known);
-        in.counterClockwise = raw(QStringLiteral("arc.direction")).value_or(0) == 1;
-        const interpolation::Geometry g = interpolation::arc(in);
-        if (known && !g.valid)
+        const interpolation::ArcSetup arc = interpolation::arcSetup(map, raw);
+        const char *third = arc.mode == interpolation::ArcMode::Centre ? "center" : "middle";
+        const interpolation::Geometry g = interpolation::arc(arc);
+        if (known(QStringLiteral("arc."), {"start", "end", third}) && !g.valid)
             problems << tr("Arc: %1").arg(g.error);
     }
     if (touches(QStringLiteral("line."))) {
-        bool known = true;
-        const auto start = point(QStringLiteral("line."), "start", &known);
-        const auto end = point(QStringLiteral("line."), "end", &known);
-        const interpolation::Geometry g = interpolation::line(start, end);
-        if (known && !g.valid)
+        const interpolation::LineSetup line = interpolation::lineSetup(map, raw);
+        const interpolation::Geometry g = interpolation::line(line.start, line.end);
+        if (known(QStringLiteral("line."), {"start", "end"}) && !g.valid)
             problems << tr("Line: %1").arg(g.error);
     }
     const bool wiring = std::any_of(after.keyBegin(), after.keyEnd(), [](const QString &k) {
@@ -65,7 +51,6 @@ QStringList WriteReview::problems(const ParameterStore &store, const QList<Param
                k.endsWith(QLatin1String(".home_input")) || k == QLatin1String("mode.system");
     });
     if (wiring) {
-        const RegisterMap &map = store.map();
         QList<MotorWiring> motors;
         for (int n = 1; n <= map.blockCount(QStringLiteral("motor")); ++n) {
             const auto input = [&](const char *local) -> std::optional<int> {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "profile/profilevariance.h"
+
 #include <QDateTime>
 #include <QMap>
 #include <QString>
@@ -23,6 +25,9 @@ struct Profile
     int deviceId = 0; // metadata: the controller it was saved from (0 = unknown)
     int baud = 0;
     QMap<QString, qint64> values; // raw, by key, ordered by key
+    // A profile of another map (mapId/mapVersion differ): what this map cannot take. `values`
+    // then holds only what both maps have, within this map's ranges.
+    ProfileVariance variance;
 
     // The parameters a profile holds for `map`: every read-write holding register; the link
     // settings only when `withLink`.

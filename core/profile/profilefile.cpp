@@ -110,8 +110,9 @@ QStringList duplicateKeys(const QByteArray &bytes)
 class Parser
 {
 public:
-    Parser(const RegisterMap &map)
+    Parser(const RegisterMap &map, ProfileFile::OtherMaps otherMaps)
         : m_map(map)
+        , m_acceptOtherMaps(otherMaps == ProfileFile::OtherMaps::Accept)
     {}
 
     ProfileParseResult run(const QByteArray &bytes)
@@ -153,6 +154,7 @@ public:
             m_errors << ProfileFile::tr("… and %1 more problems").arg(more);
         }
         result.errors = m_errors;
+        profile.variance = m_variance;
         if (m_errors.isEmpty())
             result.profile = profile;
         return result;
@@ -234,7 +236,12 @@ private:
                             .arg(typeName(o.value(QLatin1String("version"))));
             return false;
         }
-        if (id.toString() != m_map.id() || *version != m_map.version()) {
+        if ((id.toString() != m_map.id() || *version != m_map.version()) && m_acceptOtherMaps) {
+            // A firmware variant or a larger model: read what both maps have, list the rest.
+            m_variance.fileMap =
+                id.toString().left(60) + QLatin1Char('/') + QString::number(*version);
+            m_variance.thisMap = m_map.identity();
+        } else if (id.toString() != m_map.id() || *version != m_map.version()) {
             m_errors << ProfileFile::tr(
                             "the profile is for register map \"%1\" version %2, but the "
                             "controller's map is \"%3\" version %4")
@@ -290,10 +297,12 @@ private:
                 return;
             const auto n = wholeNumber(v);
             const Parameter *p = m_map.find(QLatin1String(key));
-            if (!n || (p && !p->checkRaw(*n).isEmpty()))
+            // Another map may allow other ids or bauds; metadata is information only.
+            const bool checkRange = p && !m_variance.isVariant();
+            if (!n || (checkRange && !p->checkRaw(*n).isEmpty()))
                 m_errors << ProfileFile::tr("\"metadata\": \"%1\" must be a %2, found %3")
                                 .arg(QLatin1String(field),
-                                     p ? p->rangeText() : ProfileFile::tr("whole number"),
+                                     checkRange ? p->rangeText() : ProfileFile::tr("whole number"),
                                      v.isDouble() ? QString::number(v.toDouble(), 'g', 17)
                                                   : typeName(v));
             else
@@ -301,6 +310,23 @@ private:
         };
         link("deviceId", "device.id", &profile->deviceId);
         link("baud", "device.baud", &profile->baud);
+    }
+
+    // A key of another map's profile that this map has no setting for: listed, not used.
+    void unknownToThisMap(const QString &key, const QJsonValue &v, const Parameter *p)
+    {
+        if (!v.isDouble()) { // every value of a profile is a number, whatever its map
+            m_errors << ProfileFile::tr("%1: expected a number, found %2")
+                            .arg(key.left(60), typeName(v));
+            return;
+        }
+        const QString why =
+            !p            ? ProfileFile::tr("not in register map \"%1\"").arg(m_map.identity())
+            : p->isCoil() ? ProfileFile::tr("a command in register map \"%1\", not a setting")
+                                .arg(m_map.identity())
+                          : ProfileFile::tr("a status value in register map \"%1\", not a setting")
+                                .arg(m_map.identity());
+        m_variance.unknown.append({key, v.toDouble(), why});
     }
 
     void readValues(const QJsonValue &value, Profile *profile)
@@ -311,23 +337,26 @@ private:
             return;
         }
         const QJsonObject o = value.toObject();
+        const bool variant = m_variance.isVariant();
         for (auto it = o.begin(); it != o.end(); ++it) {
             const QString key = it.key();
-            const Parameter *p = m_map.find(key);
-            if (!p) {
-                m_errors << ProfileFile::tr("unknown parameter \"%1\" (not in register map \"%2\")")
-                                .arg(key.left(60), m_map.identity());
-                continue;
-            }
-            if (!p->writable()) {
-                m_errors << (p->isCoil()
-                                 ? ProfileFile::tr("\"%1\" is a command, not a setting").arg(key)
-                                 : ProfileFile::tr("\"%1\" is read-only (a status value), not a "
-                                                   "setting")
-                                       .arg(key));
-                continue;
-            }
             const QJsonValue v = it.value();
+            const Parameter *p = m_map.find(key);
+            if (!p || !p->writable()) {
+                if (variant)
+                    unknownToThisMap(key, v, p);
+                else if (!p)
+                    m_errors << ProfileFile::tr("unknown parameter \"%1\" (not in register map "
+                                                "\"%2\")")
+                                    .arg(key.left(60), m_map.identity());
+                else if (p->isCoil())
+                    m_errors << ProfileFile::tr("\"%1\" is a command, not a setting").arg(key);
+                else
+                    m_errors << ProfileFile::tr("\"%1\" is read-only (a status value), not a "
+                                                "setting")
+                                    .arg(key);
+                continue;
+            }
             if (!v.isDouble()) {
                 m_errors
                     << ProfileFile::tr("%1: expected a number, found %2").arg(key, typeName(v));
@@ -336,19 +365,28 @@ private:
             QString why;
             const auto raw = p->fromEngineering(v.toDouble(), &why);
             if (!raw) {
-                m_errors << why;
+                if (variant)
+                    m_variance.rejected.append({key, v.toDouble(), why});
+                else
+                    m_errors << why;
                 continue;
             }
             profile->values.insert(key, *raw);
         }
         for (const Parameter *p : Profile::profileParameters(m_map, false)) {
-            if (!o.contains(p->key))
+            if (o.contains(p->key))
+                continue;
+            if (variant)
+                m_variance.missing << p->key;
+            else
                 m_errors << ProfileFile::tr("missing \"%1\" (%2)").arg(p->key, p->label.en);
         }
     }
 
     const RegisterMap &m_map;
+    const bool m_acceptOtherMaps;
     QStringList m_errors;
+    ProfileVariance m_variance;
 };
 
 QJsonValue engineering(const Parameter &p, qint64 raw)
@@ -369,17 +407,19 @@ void ProfileFile::lineColumn(const QByteArray &bytes, qsizetype offset, int *lin
     *column = int(QString::fromUtf8(before.mid(lineStart)).size()) + 1;
 }
 
-ProfileParseResult ProfileFile::parse(const QByteArray &bytes, const RegisterMap &map)
+ProfileParseResult ProfileFile::parse(const QByteArray &bytes, const RegisterMap &map,
+                                      OtherMaps otherMaps)
 {
     if (!map.isValid()) {
         ProfileParseResult r;
         r.errors << ProfileFile::tr("no register map to check the profile against");
         return r;
     }
-    return Parser(map).run(bytes);
+    return Parser(map, otherMaps).run(bytes);
 }
 
-ProfileParseResult ProfileFile::load(const QString &path, const RegisterMap &map)
+ProfileParseResult ProfileFile::load(const QString &path, const RegisterMap &map,
+                                     OtherMaps otherMaps)
 {
     ProfileParseResult r;
     QFile file(path);
@@ -397,7 +437,7 @@ ProfileParseResult ProfileFile::load(const QString &path, const RegisterMap &map
         r.errors << ProfileFile::tr("%1: %2").arg(path, file.errorString());
         return r;
     }
-    r = parse(file.readAll(), map);
+    r = parse(file.readAll(), map, otherMaps);
     for (QString &e : r.errors)
         e = QFileInfo(path).fileName() + QStringLiteral(": ") + e;
     return r;
@@ -419,11 +459,18 @@ QByteArray ProfileFile::toJson(const Profile &profile, const RegisterMap &map)
         if (const Parameter *p = map.find(it.key()))
             values.insert(it.key(), engineering(*p, it.value()));
     }
+    for (const QList<ProfileNote> *notes :
+         {&profile.variance.unknown, &profile.variance.rejected}) {
+        for (const ProfileNote &n : *notes)
+            values.insert(n.key, n.number);
+    }
+    const bool own = profile.mapId.isEmpty();
     const QJsonObject top{
         {QStringLiteral("format"), kFormat},
         {QStringLiteral("schema"), Schema},
         {QStringLiteral("map"),
-         QJsonObject{{QStringLiteral("id"), map.id()}, {QStringLiteral("version"), map.version()}}},
+         QJsonObject{{QStringLiteral("id"), own ? map.id() : profile.mapId},
+                     {QStringLiteral("version"), own ? map.version() : profile.mapVersion}}},
         {QStringLiteral("metadata"), metadata},
         {QStringLiteral("values"), values},
     };

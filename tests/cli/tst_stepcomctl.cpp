@@ -105,7 +105,9 @@ private Q_SLOTS:
         QTest::newRow("destructive without yes")
             << QStringList{"command", "factory_reset"} << "add --yes";
         QTest::newRow("unknown command")
-            << QStringList{"frobnicate"} << "unknown command 'frobnicate'";
+            << QStringList{"frobnicate"}
+            << "unknown command 'frobnicate' (params, read, write, command, monitor, dump, diff, "
+               "apply, report)";
         QTest::newRow("read unknown") << QStringList{"read", "nope"} << "unknown parameter 'nope'";
     }
     void invalidValuesWriteNothing()

@@ -38,7 +38,7 @@ class TestInterpolationPage : public QObject
     Q_OBJECT
     std::unique_ptr<DeviceSession> session;
 
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
     qint64 simValue(const QString &key) const { return sim()->value(key).value_or(-99999); }
     void connectSim() { test::connectToSimulator(*session); }
     static void enter(PathEditor *e, const QString &key, const QString &text)
@@ -59,7 +59,7 @@ class TestInterpolationPage : public QObject
         for (const ParameterWrite &w : e->writeDialog()->writes())
             QVERIFY(e->keys().contains(w.parameter->key)); // only this editor's values
         e->writeDialog()->accept();
-        QTRY_VERIFY_WITH_TIMEOUT(!session->store()->hasEdits(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!session->parameters()->hasEdits(), 10000);
     }
     // Non-background pixels inside the plot area of the preview.
     static int drawnPixels(InterpolationPreview *preview)
@@ -252,7 +252,7 @@ private Q_SLOTS:
         enter(arc, QStringLiteral("arc.end_y"), QStringLiteral("0"));
         enter(arc, QStringLiteral("arc.center_x"), QStringLiteral("0"));
         enter(arc, QStringLiteral("arc.center_y"), QStringLiteral("0"));
-        if (session->store()->hasEdits())
+        if (session->parameters()->hasEdits())
             writeThroughDialog(arc);
         if (simValue(QStringLiteral("arc.enabled")) != 1) {
             QTRY_VERIFY(arc->startReason()->text().contains(QStringLiteral("is off")));
@@ -279,7 +279,7 @@ private Q_SLOTS:
         QVERIFY(page.preview()->plot()->pathIds().contains(QStringLiteral("invalid")));
         page.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-invalid.png")));
         QTest::keyClick(endY, Qt::Key_Return);
-        QVERIFY(session->store()->entry(QStringLiteral("arc.end_y")).edited);
+        QVERIFY(session->parameters()->entry(QStringLiteral("arc.end_y")).edited);
         QVERIFY(!arc->startButton()->isEnabled());
         QVERIFY(arc->startReason()->text().contains(QStringLiteral("not written")));
         // Three points on one line: invalid, Start off with the reason; Stop stays.
@@ -402,7 +402,7 @@ private Q_SLOTS:
         QTest::qWait(300);
         QCOMPARE(simValue(QStringLiteral("mode.system")), 0);
         QCOMPARE(page.modeBox()->currentData().toInt(), 0);
-        QVERIFY(!session->store()->hasEdits()); // never held as an edit
+        QVERIFY(!session->parameters()->hasEdits()); // never held as an edit
 
         // Yes: written at once and read back.
         page.chooseMode(3);
@@ -410,7 +410,8 @@ private Q_SLOTS:
         QCOMPARE(simValue(QStringLiteral("mode.system")), 0);
         page.confirmation()->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(simValue(QStringLiteral("mode.system")), 3, 10000);
-        QTRY_COMPARE(session->store()->deviceValue(QStringLiteral("mode.system")).value_or(-1), 3);
+        QTRY_COMPARE(session->parameters()->deviceValue(QStringLiteral("mode.system")).value_or(-1),
+                     3);
         QCOMPARE(page.modeBox()->currentData().toInt(), 3);
 
         // Round trips: edited, then written through the write dialog.

@@ -1,6 +1,7 @@
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
 #include "device/linkhealth.h"
+#include "device/sessioninternals.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "language.h"
@@ -11,6 +12,7 @@
 #include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 #include "widgets/linkstatus.h"
 #include "widgets/parameterfield.h"
 #include "widgets/parameterform.h"
@@ -35,7 +37,7 @@ class TestMainWindow : public QObject
     std::unique_ptr<DeviceSession> session;
     std::unique_ptr<MainWindow> window;
 
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
     ParameterField *field(const QString &key) const
     {
         for (ParameterField *f : window->findChildren<ParameterField *>()) {
@@ -59,6 +61,7 @@ private Q_SLOTS:
         window = std::make_unique<MainWindow>(session.get());
         window->show();
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        test::useBuiltinSimulator(*session);
         session->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
     }
@@ -74,7 +77,7 @@ private Q_SLOTS:
         ParameterField *speed = field(QStringLiteral("motor1.speed"));
         QVERIFY(speed);
         speed->enterText(QStringLiteral("450"));
-        QCOMPARE(session->store()->state(QStringLiteral("motor1.speed")),
+        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
                  ParameterStore::State::Edited);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // nothing written yet
         QVERIFY(window->action(QStringLiteral("writeChanges"))->isEnabled());
@@ -88,15 +91,15 @@ private Q_SLOTS:
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
         window->writeDialog()->findChild<QPushButton *>(QStringLiteral("writeButton"))->click();
         QTRY_COMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
-        QTRY_COMPARE(session->store()->state(QStringLiteral("motor1.speed")),
+        QTRY_COMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
                      ParameterStore::State::InSync);
-        QVERIFY(session->store()->unsavedToFlash());
+        QVERIFY(session->parameters()->unsavedToFlash());
     }
 
     void rejectedValueWritesNothing()
     {
         int writes = 0;
-        connect(session->link(), &ModbusLink::dispatched, this,
+        connect(SessionInternals::link(*session), &ModbusLink::dispatched, this,
                 [&writes](quint64, const Request &r) {
                     writes += r.type != Request::Type::ReadHolding ? 1 : 0;
                 });
@@ -113,7 +116,7 @@ private Q_SLOTS:
         QVERIFY(!speed->reasonLabel()->text().contains(QLatin1String("motor1.")));
         auto *line = qobject_cast<QLineEdit *>(speed->editor());
         QCOMPARE(line->text(), QStringLiteral("99999")); // kept for correction
-        QVERIFY(!session->store()->hasEdits());
+        QVERIFY(!session->parameters()->hasEdits());
         QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
         QTest::qWait(300);
         QCOMPARE(writes, 0);
@@ -128,7 +131,7 @@ private Q_SLOTS:
         speed->enterText(QStringLiteral("400"));
         QVERIFY(speed->rejectionText().isEmpty());
         QVERIFY(speed->reasonLabel()->isHidden());
-        QCOMPARE(session->store()->state(QStringLiteral("motor1.speed")),
+        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
                  ParameterStore::State::Edited);
         // Revert drops a refused text too, and a write never leaves a stale reason behind.
         speed->enterText(QStringLiteral("0"));
@@ -165,13 +168,13 @@ private Q_SLOTS:
                      page->statusText().contains(QLatin1String("A and B swapped")),
                  qPrintable(page->statusText()));
         QVERIFY(!seen.contains(LinkHealth::State::Answering));
-        QVERIFY(session->link()->stats().timeouts > 0);
+        QVERIFY(session->linkStats().timeouts > 0);
 
         // The controller answers now: "Connected", and on to the first motor.
         device.useRegisterDevice();
         session->disconnectFrom();
         session->connectTo(s);
-        QCOMPARE(session->link()->stats().timeouts, quint64(0)); // per connection
+        QCOMPARE(session->linkStats().timeouts, quint64(0)); // per connection
         QTRY_COMPARE(session->health()->state(), LinkHealth::State::Answering);
         QCOMPARE(status->stateText(), QStringLiteral("Connected"));
         QTRY_VERIFY(!qobject_cast<ConnectionPage *>(window->currentPage()));
@@ -183,35 +186,42 @@ private Q_SLOTS:
     {
         DevicePage *device = window->findChild<DevicePage *>();
         QVERIFY(device);
-        QVERIFY(!session->store()->unsavedToFlash());
+        QVERIFY(!session->parameters()->unsavedToFlash());
         session->saveToFlash();
         QTRY_VERIFY(device->flashStatus().startsWith(QLatin1String("Saved to flash")));
         QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
         session->changeLink(1, 19200);
         QTRY_COMPARE(changed.size(), 1);
-        QVERIFY(session->store()->unsavedToFlash());
+        QVERIFY(session->parameters()->unsavedToFlash());
         QVERIFY(device->unsavedWarningShown());
         QVERIFY2(!device->flashStatus().contains(QLatin1String("Saved")),
                  qPrintable(device->flashStatus()));
         QVERIFY(window->findChild<LinkStatus *>()->findChildren<QLabel *>().size() > 0);
         session->saveToFlash();
-        QTRY_VERIFY(!session->store()->unsavedToFlash());
+        QTRY_VERIFY(!session->parameters()->unsavedToFlash());
         QVERIFY(!device->unsavedWarningShown());
         QVERIFY(device->flashStatus().startsWith(QLatin1String("Saved to flash")));
         session->changeLink(7, 19200); // the id alone
         QTRY_COMPARE(changed.size(), 2);
-        QVERIFY(session->store()->unsavedToFlash());
+        QVERIFY(session->parameters()->unsavedToFlash());
         QVERIFY(!device->flashStatus().contains(QLatin1String("Saved")));
     }
 
-    // The write dialog lists what the pages already flag, and asks before writing it anyway.
+    // The write flow lists what the pages already flag, and asks before writing it anyway.
     void writeDialogListsKnownProblems()
     {
-        ParameterStore *store = session->store();
-        {
-            WriteChangesDialog clean(*store);
-            QVERIFY(clean.problems().isEmpty());
-        }
+        ParameterStore *store = session->parameters();
+        const qint64 speed = *store->deviceValue(QStringLiteral("motor1.speed"));
+        QVERIFY(store->edit(QStringLiteral("motor1.speed"), speed + 10).isEmpty());
+        window->writeChanges();
+        QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
+        QVERIFY(window->writeDialog()->problems().isEmpty());
+        auto *label = window->writeDialog()->findChild<QLabel *>(QStringLiteral("problems"));
+        QVERIFY(label && label->isHidden());
+        QCOMPARE(
+            window->writeDialog()->findChild<QPushButton *>(QStringLiteral("writeButton"))->text(),
+            QStringLiteral("&Write"));
+        window->writeDialog()->reject();
         // The centre on the start point: the arc editor flags it as invalid geometry.
         const qint64 sx = *store->deviceValue(QStringLiteral("arc.start_x"));
         const qint64 sy = *store->deviceValue(QStringLiteral("arc.start_y"));
@@ -224,15 +234,21 @@ private Q_SLOTS:
         // One input as both limits of motor 1: the wiring check flags it.
         QVERIFY(store->edit(QStringLiteral("motor1.limit_positive"), 3).isEmpty());
         QVERIFY(store->edit(QStringLiteral("motor1.limit_negative"), 3).isEmpty());
-        WriteChangesDialog dialog(*store);
-        const QString all = dialog.problems().join(QLatin1Char('|'));
-        QVERIFY2(dialog.problems().size() >= 2, qPrintable(all));
+        window->writeChanges();
+        QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
+        WriteChangesDialog *dialog = window->writeDialog();
+        const QString all = dialog->problems().join(QLatin1Char('|'));
+        QVERIFY2(dialog->problems().size() >= 2, qPrintable(all));
         QVERIFY2(all.contains(QLatin1String("Arc: ")), qPrintable(all));
         QVERIFY2(all.contains(QLatin1String("IN3")), qPrintable(all));
-        auto *label = dialog.findChild<QLabel *>(QStringLiteral("problems"));
+        label = dialog->findChild<QLabel *>(QStringLiteral("problems"));
         QVERIFY(label && !label->isHidden());
-        auto *write = dialog.findChild<QPushButton *>(QStringLiteral("writeButton"));
+        auto *write = dialog->findChild<QPushButton *>(QStringLiteral("writeButton"));
         QCOMPARE(write->text(), QStringLiteral("&Write anyway"));
+        QVERIFY(!write->isDefault());
+        dialog->reject(); // nothing written
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.limit_positive")),
+                 *store->deviceValue(QStringLiteral("motor1.limit_positive")));
         store->revertAll();
     }
 
@@ -246,7 +262,7 @@ private Q_SLOTS:
         window->writeChanges();
         QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
         QStringList order;
-        connect(session->link(), &ModbusLink::dispatched, this,
+        connect(SessionInternals::link(*session), &ModbusLink::dispatched, this,
                 [&order](quint64, const Request &r) { order << r.what; });
         session->readAll(); // a queue of work in front
         QTest::keyClick(window->writeDialog()->table(), Qt::Key_F12);

@@ -122,7 +122,7 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
         m_saveToFlash->setEnabled(!ok);
     });
     // A read-all changes every value at once: compare once, after the burst.
-    connect(session->store(), &ParameterStore::valueChanged, this, [this] {
+    connect(session->parameters(), &ParameterStore::valueChanged, this, [this] {
         if (m_refreshPending)
             return;
         m_refreshPending = true;
@@ -168,7 +168,7 @@ void ProfileCompareDialog::refreshValues()
 {
     QHash<QString, qint64> device;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), true)) {
-        if (const auto v = m_session->store()->deviceValue(p->key))
+        if (const auto v = m_session->parameters()->deviceValue(p->key))
             device.insert(p->key, *v);
     }
     m_rows = ProfileDiff::compare(m_session->map(), m_profile, device);

@@ -1,10 +1,8 @@
 #include "pages/connectionpage.h"
 
-#include "bus/modbuslink.h"
 #include "device/devicesession.h"
 #include "device/linkhealth.h"
 #include "dialogs/busscandialog.h"
-#include "sim/simhost.h"
 #include "widgets/led.h"
 
 #include <QButtonGroup>
@@ -97,7 +95,7 @@ ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
     connect(session, &DeviceSession::disconnected, this,
             [this] { setNote(false, [] { return tr("Disconnected."); }); });
     // Connected after the session's own handler of `lost`, so this note wins over the plain one.
-    connect(session->link(), &ModbusLink::lost, this, [this](const QString &reason) {
+    connect(session, &DeviceSession::linkLost, this, [this](const QString &reason) {
         setNote(true, [reason] { return tr("Connection lost: %1").arg(reason); });
     });
     connect(session, &DeviceSession::linkChanged, this, [this](const LinkSettings &s) {
@@ -462,17 +460,7 @@ void ConnectionPage::onConnected(bool ok, const QString &reason)
 
 bool ConnectionPage::usesSimulator() const
 {
-    if (session()->isSimulator())
-        return true;
-    // connected(true) can arrive from inside connectSimulator(), before the session marks
-    // itself as on the simulator: recognise the simulator's own port instead.
-    const SimHost *sim = session()->simulator();
-    if (!sim || !sim->isRunning())
-        return false;
-    const LinkSettings s = session()->settings();
-    return s.transport == LinkSettings::Transport::Rtu
-               ? !s.portName.isEmpty() && s.portName == sim->rtuPath()
-               : s.tcpPort == sim->tcpPort() && sim->tcpPort() != 0;
+    return session()->isSimulator();
 }
 
 void ConnectionPage::setNote(bool problem, std::function<QString()> note)
@@ -484,9 +472,9 @@ void ConnectionPage::setNote(bool problem, std::function<QString()> note)
 
 QString ConnectionPage::statusText() const
 {
-    const ModbusLink::State state = session()->link()->state();
+    const DeviceSession::LinkState state = session()->linkState();
     const QString where = session()->settings().describe();
-    if (state == ModbusLink::State::Connected) {
+    if (state == DeviceSession::LinkState::Connected) {
         // "Connected" only once the controller answered: an open port proves nothing.
         switch (session()->health()->state()) {
         case LinkHealth::State::Answering:
@@ -500,7 +488,7 @@ QString ConnectionPage::statusText() const
         return usesSimulator() ? tr("Connected to the built-in simulator (%1).").arg(where)
                                : tr("Connected to %1.").arg(where);
     }
-    if (state == ModbusLink::State::Connecting)
+    if (state == DeviceSession::LinkState::Connecting)
         return tr("Connecting to %1…").arg(where);
     if (m_note)
         return m_note(); // built now, so a language switch retranslates it
@@ -511,8 +499,8 @@ void ConnectionPage::updateState()
 {
     if (!m_status)
         return;
-    const ModbusLink::State state = session()->link()->state();
-    const bool idle = state == ModbusLink::State::Disconnected;
+    const DeviceSession::LinkState state = session()->linkState();
+    const bool idle = state == DeviceSession::LinkState::Disconnected;
     // Settings are what the link was opened with: changing them needs a reconnect.
     for (QGroupBox *box : {m_transportBox, m_serialBox, m_tcpBox, m_deviceBox})
         box->setEnabled(idle);

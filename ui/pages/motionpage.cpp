@@ -50,7 +50,7 @@ void makeProminent(QWidget *w, QPalette::ColorRole back, QPalette::ColorRole tex
 
 MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
-    , m_jog(new JogController(session, this))
+    , m_jog(session->jog())
     , m_keys(new JogKeys(m_jog, this, this))
 {
     // A scroll area keeps every control reachable at 200% scale on a small screen.
@@ -150,8 +150,8 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
             p->letGo();
     });
     connect(session, &DeviceSession::linkStateChanged, this, &MotionPage::refresh);
-    connect(session->store(), &ParameterStore::editsChanged, this, &MotionPage::refresh);
-    connect(session->store(), &ParameterStore::valueChanged, this, [this](const QString &k) {
+    connect(session->parameters(), &ParameterStore::editsChanged, this, &MotionPage::refresh);
+    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
         if (k.startsWith(QLatin1String("homing.")) || k.startsWith(QLatin1String("io.out")) ||
             k.endsWith(QLatin1String(".running")))
             refresh();
@@ -177,7 +177,7 @@ void MotionPage::buildHoming(QWidget *content)
 {
     m_homingBox = new QGroupBox(content);
     auto *layout = new QVBoxLayout(m_homingBox);
-    m_order = new HomingOrderEditor(session()->store(), m_homingBox);
+    m_order = new HomingOrderEditor(session()->parameters(), m_homingBox);
     layout->addWidget(m_order);
     auto *applyRow = new QHBoxLayout;
     m_applyOrder = new QPushButton(m_homingBox);
@@ -359,7 +359,7 @@ void MotionPage::refresh()
     for (QPushButton *b : std::as_const(m_outputButtons))
         b->setEnabled(connected);
     for (int i = 0; i < m_outputLeds.size(); ++i) {
-        const auto v = session()->store()->deviceValue(outputKey(i + 1));
+        const auto v = session()->parameters()->deviceValue(outputKey(i + 1));
         m_outputLeds.at(i)->setState(!v   ? Led::State::Unknown
                                      : *v ? Led::State::On
                                           : Led::State::Off);
@@ -376,8 +376,7 @@ void MotionPage::setKeyboard(bool on)
 
 void MotionPage::hideEvent(QHideEvent *event)
 {
-    m_keys->letGo();
-    m_jog->stopAll(tr("the page was left"));
+    m_keys->letGo(); // the session stops the jogs themselves when the window changes page
     Page::hideEvent(event);
 }
 
@@ -386,8 +385,7 @@ bool MotionPage::event(QEvent *event)
     // A page gets WindowDeactivate from its window (ActivationChange goes to windows only).
     if (event->type() == QEvent::WindowDeactivate ||
         (event->type() == QEvent::ActivationChange && !isActiveWindow())) {
-        m_keys->letGo();
-        m_jog->stopAll(tr("the window lost focus"));
+        m_keys->letGo(); // the session stops the jogs on focus loss (MainWindow tells it)
     }
     return Page::event(event);
 }

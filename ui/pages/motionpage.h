@@ -34,7 +34,6 @@ public:
     QString title() const override;
     QStringList keys() const override;
 
-    JogController *jog() const { return m_jog; }
     JogPanel *panel(int motor) const { return m_panels.value(motor - 1); }
     int motorCount() const { return int(m_panels.size()); }
     HomingOrderEditor *homingOrder() const { return m_order; }

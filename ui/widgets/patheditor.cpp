@@ -51,7 +51,8 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
     , m_prefix(kind == Kind::Arc ? QStringLiteral("arc.") : QStringLiteral("line."))
 {
     setObjectName(kind == Kind::Arc ? QStringLiteral("arcEditor") : QStringLiteral("lineEditor"));
-    ParameterStore *store = session->store();
+    m_writeFlow = new WriteFlow(session, this);
+    ParameterStore *store = session->parameters();
     auto *layout = new QVBoxLayout(this);
 
     m_parameterBox = new QGroupBox(this);
@@ -184,7 +185,7 @@ Point PathEditor::typedPoint(const char *name) const
 MotorParameters PathEditor::motor(int n) const
 {
     // What the controller holds: it runs with those, not with edits on the motor pages.
-    const ParameterStore *store = m_session->store();
+    const ParameterStore *store = m_session->parameters();
     return interpolation::motorParameters(
         m_session->map(), n, [store](const QString &k) { return store->deviceValue(k); });
 }
@@ -193,7 +194,7 @@ Geometry PathEditor::geometry() const
 {
     if (m_kind == Kind::Line)
         return interpolation::line(typedPoint("start"), typedPoint("end"));
-    interpolation::ArcInput in;
+    interpolation::ArcSetup in;
     in.mode = typed("mode").value_or(0) == 1 ? interpolation::ArcMode::ThreePoints
                                              : interpolation::ArcMode::Centre;
     in.start = typedPoint("start");
@@ -211,8 +212,8 @@ std::optional<QPointF> PathEditor::position() const
     const Parameter *y = map.blockParameter(QStringLiteral("motor"), 2, QStringLiteral("position"));
     if (!x || !y || !m_session->isConnected())
         return std::nullopt;
-    const auto rx = m_session->store()->deviceValue(x->key);
-    const auto ry = m_session->store()->deviceValue(y->key);
+    const auto rx = m_session->parameters()->deviceValue(x->key);
+    const auto ry = m_session->parameters()->deviceValue(y->key);
     if (!rx || !ry)
         return std::nullopt;
     return QPointF(x->toEngineering(*rx), y->toEngineering(*ry));
@@ -223,7 +224,7 @@ bool PathEditor::anyMotorRunning() const
     for (int n = 1; n <= 2; ++n) {
         const Parameter *p =
             m_session->map().blockParameter(QStringLiteral("motor"), n, QStringLiteral("running"));
-        if (p && m_session->store()->deviceValue(p->key).value_or(0) != 0)
+        if (p && m_session->parameters()->deviceValue(p->key).value_or(0) != 0)
             return true;
     }
     return false;
@@ -241,7 +242,7 @@ QString PathEditor::startBlockedReason() const
 {
     if (!m_session->isConnected())
         return tr("Not connected.");
-    const ParameterStore *store = m_session->store();
+    const ParameterStore *store = m_session->parameters();
     for (const ParameterField *f : m_form->fields()) {
         if (f->isTyping())
             return tr("A value is being typed: press Enter to keep it, then write it.");
@@ -360,7 +361,7 @@ void PathEditor::update()
     m_outcome->setVisible(!m_outcome->text().isEmpty());
     bool edited = false;
     for (const QString &k : std::as_const(m_keys))
-        edited = edited || m_session->store()->entry(k).edited.has_value();
+        edited = edited || m_session->parameters()->entry(k).edited.has_value();
     m_write->setEnabled(connected && edited);
     // Stopping depends on nothing but the link.
     m_stop->setEnabled(connected);
@@ -369,19 +370,7 @@ void PathEditor::update()
 
 void PathEditor::openWriteDialog()
 {
-    if (!m_session->isConnected())
-        return;
-    if (m_writeDialog)
-        m_writeDialog->close();
-    m_writeDialog = new WriteChangesDialog(*m_session->store(), m_keys, this);
-    m_writeDialog->setAttribute(Qt::WA_DeleteOnClose);
-    if (m_writeDialog->writes().isEmpty()) {
-        m_writeDialog->deleteLater();
-        return;
-    }
-    connect(m_writeDialog, &QDialog::accepted, this,
-            [this, dialog = m_writeDialog.data()] { m_session->write(dialog->writes()); });
-    m_writeDialog->open();
+    m_writeFlow->openFor(m_keys);
 }
 
 void PathEditor::retranslate()

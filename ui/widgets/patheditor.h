@@ -1,8 +1,10 @@
 #pragma once
 
-#include "device/interpolationgeometry.h"
+#include "motion/interpolationgeometry.h"
+#include "motion/interpolationtiming.h"
 
 #include "dialogs/writechangesdialog.h"
+#include "writeflow.h"
 
 #include <QPointer>
 #include <QTimer>
@@ -44,7 +46,7 @@ public:
     QLabel *startReason() const { return m_reason; }
     // How the last run of this path ended (judged from the controller), or that it runs.
     QLabel *outcomeLabel() const { return m_outcome; }
-    WriteChangesDialog *writeDialog() const { return m_writeDialog; }
+    WriteChangesDialog *writeDialog() const { return m_writeFlow->dialog(); }
 
     // The geometry of what the fields show now, typing included.
     interpolation::Geometry geometry() const;
@@ -95,7 +97,7 @@ private:
     QPushButton *m_stop;
     QLabel *m_reason;
     QLabel *m_outcome;
-    QPointer<WriteChangesDialog> m_writeDialog;
+    WriteFlow *m_writeFlow = nullptr;
     QTimer m_startSent; // a start was sent and the poll has not seen it yet
 };
 

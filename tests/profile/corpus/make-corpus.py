@@ -57,6 +57,7 @@ variant("metadata-unknown.json", lambda g: g["metadata"].update(owner="me"), '"m
 
 with open("corpus/expected.tsv", "w") as f:
     f.write("# file<TAB>a part of the error message it must give (tst_profilefile); make-corpus.py\n")
+    f.write("# other-map*.json are refused only when other maps are refused (the window); stepcomctl opens them as variants\n")
     for name, content, expected in cases:
         with open("corpus/" + name, "wb") as out:
             out.write(content.encode("latin1") if name == "binary.json" else content.encode())

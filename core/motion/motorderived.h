@@ -33,7 +33,7 @@ struct MotorDerived
     std::optional<double> moveTimeMs;
 };
 
-// Pure functions; the motion model is the simulator's (docs/simulator.md, "The motion model").
+// Pure functions of the motion model the simulator runs (docs/simulator.md, "The motion model").
 namespace motorderived {
 
 // 360 / step angle × microsteps (1.8°, 8 → 1600).
@@ -42,6 +42,12 @@ std::optional<double> pulsesPerRevolution(double stepAngle, double microsteps);
 std::optional<double> pulseRateHz(double rpm, double pulsesPerRev);
 // rpm × pitch / 60 (300 rpm on a 5 mm pitch → 25 mm/s).
 std::optional<double> unitsPerSecond(double rpm, double pitch);
+// pulses per revolution / pitch (1600 on a 5 mm pitch → 320 pulses per mm).
+std::optional<double> pulsesPerUnit(double pulsesPerRev, double pitch);
+// The controller sends whole pulses: the pulse count nearest to `units` (10.01 mm at 320 → 3203).
+double wholePulses(double units, double pulsesPerUnit);
+// The position register (distance units × 100) for a pulse count (3203 at 320 → 1001).
+qint64 positionCounts(double pulses, double pulsesPerUnit);
 // distance / pitch (10 mm on 5 mm → 2).
 std::optional<double> revolutionsPerMove(double distance, double pitch);
 // The whole pulses a single move sends, as the controller rounds them (10 mm / 5 mm × 1600 → 3200).

@@ -1,4 +1,4 @@
-#include "poll/poller.h"
+#include "device/poller.h"
 
 #include "bus/modbuslink.h"
 #include "device/deviceclient.h"

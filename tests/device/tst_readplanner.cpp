@@ -1,5 +1,5 @@
+#include "device/readplanner.h"
 #include "map/registermap.h"
-#include "poll/readplanner.h"
 
 #include <QTest>
 

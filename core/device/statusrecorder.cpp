@@ -1,8 +1,8 @@
-#include "poll/statusrecorder.h"
+#include "device/statusrecorder.h"
 
 #include "device/parameterstore.h"
+#include "device/poller.h"
 #include "map/registermap.h"
-#include "poll/poller.h"
 
 #include <QDateTime>
 #include <QDir>

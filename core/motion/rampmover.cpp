@@ -1,15 +1,15 @@
-#include "sim/rampmover.h"
+#include "motion/rampmover.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace stepcom {
 
-void RampMover::setRates(double startRate, double maxRate, double accel)
+void RampMover::setRates(const RampRates &rates)
 {
-    m_startRate = std::max(startRate, 1e-6);
-    m_maxRate = std::max(maxRate, 1e-6);
-    m_accel = std::max(accel, 1e-9);
+    m_startRate = std::max(rates.start, 1e-6);
+    m_maxRate = std::max(rates.top, 1e-6);
+    m_accel = std::max(rates.accel, 1e-9);
 }
 
 double RampMover::effectiveStart() const

@@ -2,10 +2,12 @@
 #include "device/deviceclient.h"
 #include "device/devicesession.h"
 #include "device/parameterstore.h"
-#include "poll/poller.h"
+#include "device/poller.h"
+#include "device/sessioninternals.h"
 #include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -55,17 +57,18 @@ class TestPoller : public QObject
 
     std::unique_ptr<DeviceSession> session;
 
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
 
     // A session on the built-in simulator, polling as fast as the link allows.
     void connectFullRate()
     {
         session = std::make_unique<DeviceSession>();
-        session->statusPoller()->setIntervalMs(0);
+        SessionInternals::poller(*session)->setIntervalMs(0);
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        test::useBuiltinSimulator(*session);
         session->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QTRY_VERIFY(session->statusPoller()->stats().cycles >= 2);
+        QTRY_VERIFY(SessionInternals::poller(*session)->stats().cycles >= 2);
     }
 
 private Q_SLOTS:
@@ -74,7 +77,7 @@ private Q_SLOTS:
     void sessionPollsTheStatusAndMovesFastWithTheMotors()
     {
         const DeviceSession idle;
-        const Poller *poller = idle.statusPoller();
+        const Poller *poller = SessionInternals::poller(idle);
         QCOMPARE(poller->keys().size(), 11);
         QCOMPARE(poller->fastKeys(), (QStringList{"motor1.position", "motor2.position",
                                                   "motor1.running", "motor2.running"}));
@@ -84,13 +87,13 @@ private Q_SLOTS:
     {
         qputenv("STEPCOM_POLL_INTERVAL_MS", "0");
         QCOMPARE(Poller::intervalFromEnvironment(100), 0);
-        QCOMPARE(DeviceSession().statusPoller()->intervalMs(), 0);
+        QCOMPARE(SessionInternals::poller(DeviceSession())->intervalMs(), 0);
         qputenv("STEPCOM_POLL_INTERVAL_MS", "fast");
         QCOMPARE(Poller::intervalFromEnvironment(100), 100);
         qputenv("STEPCOM_POLL_INTERVAL_MS", "-5");
         QCOMPARE(Poller::intervalFromEnvironment(100), 100);
         qunsetenv("STEPCOM_POLL_INTERVAL_MS");
-        QCOMPARE(DeviceSession().statusPoller()->intervalMs(), 100);
+        QCOMPARE(SessionInternals::poller(DeviceSession())->intervalMs(), 100);
     }
 
     // A silent device: each cycle waits for its timeouts, and no poll piles up behind them --
@@ -153,8 +156,8 @@ private Q_SLOTS:
         if (QTest::currentTestFailed())
             return;
         PollWatch watch;
-        watch.attach(session->link());
-        Poller *poller = session->statusPoller();
+        watch.attach(SessionInternals::link(*session));
+        Poller *poller = SessionInternals::poller(*session);
         poller->resetStats();
         QTRY_VERIFY_WITH_TIMEOUT(poller->stats().cycles >= 6, 5000);
         QCOMPARE(watch.maxOutstanding, 1);
@@ -170,7 +173,7 @@ private Q_SLOTS:
         connectFullRate();
         if (QTest::currentTestFailed())
             return;
-        Poller *poller = session->statusPoller();
+        Poller *poller = SessionInternals::poller(*session);
         poller->setIntervalMs(300);
         QTest::qWait(300); // let the cycle under way finish
         poller->resetStats();
@@ -184,10 +187,10 @@ private Q_SLOTS:
         connectFullRate();
         if (QTest::currentTestFailed())
             return;
-        Poller *poller = session->statusPoller();
+        Poller *poller = SessionInternals::poller(*session);
         QVERIFY(!poller->isFast());
         PollWatch watch;
-        watch.attach(session->link());
+        watch.attach(SessionInternals::link(*session));
         QVERIFY(sim()->command(QStringLiteral("motor1.forward")));
         QTRY_VERIFY_WITH_TIMEOUT(poller->isFast(), 2000);
         watch.blocks.clear();
@@ -205,9 +208,10 @@ private Q_SLOTS:
         QVERIFY(poller->stats().fastCycles >= 6);
         QCOMPARE(watch.maxOutstanding, 1);
         const qint64 before =
-            session->store()->deviceValue(QStringLiteral("motor1.position")).value_or(0);
-        QTRY_VERIFY(session->store()->deviceValue(QStringLiteral("motor1.position")).value_or(0) >
-                    before);
+            session->parameters()->deviceValue(QStringLiteral("motor1.position")).value_or(0);
+        QTRY_VERIFY(
+            session->parameters()->deviceValue(QStringLiteral("motor1.position")).value_or(0) >
+            before);
 
         QVERIFY(sim()->command(QStringLiteral("motor1.stop")));
         QTRY_VERIFY_WITH_TIMEOUT(!poller->isFast(), 2000);
@@ -223,7 +227,7 @@ private Q_SLOTS:
         connectFullRate();
         if (QTest::currentTestFailed())
             return;
-        Poller *poller = session->statusPoller();
+        Poller *poller = SessionInternals::poller(*session);
         QSignalSpy fast(poller, &Poller::fastChanged);
         QSignalSpy done(session.get(), &DeviceSession::commandFinished);
         session->command(QStringLiteral("motor1.forward"));
@@ -246,7 +250,7 @@ private Q_SLOTS:
         const Parameter *estop = session->map().find(QStringLiteral("estop"));
         QVERIFY(estop);
         PollWatch watch;
-        watch.attach(session->link());
+        watch.attach(SessionInternals::link(*session));
         for (int round = 0; round < 4; ++round) {
             QVERIFY(sim()->command(QStringLiteral("motor1.forward")));
             QTRY_VERIFY(sim()->running(1));
@@ -260,8 +264,8 @@ private Q_SLOTS:
             QTRY_VERIFY_WITH_TIMEOUT(!sim()->running(1), 1000);
         }
         QCOMPARE(watch.maxOutstanding, 1);
-        QVERIFY(session->statusPoller()->isActive());
-        QTRY_VERIFY(!session->statusPoller()->isFast());
+        QVERIFY(SessionInternals::poller(*session)->isActive());
+        QTRY_VERIFY(!SessionInternals::poller(*session)->isFast());
     }
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "poll/readplanner.h"
+#include "device/readplanner.h"
 
 #include <QElapsedTimer>
 #include <QHash>

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "motion/ramprates.h"
+
 #include <QtGlobal>
 
 namespace stepcom {
@@ -12,9 +14,8 @@ class RampMover
 public:
     enum class Mode { Idle, Run, Target };
 
-    // Rates are units per ms, accel is units per ms per ms; values are taken live every tick so
-    // the speed can be changed while running.
-    void setRates(double startRate, double maxRate, double accel);
+    // Values are taken live every tick so the speed can be changed while running.
+    void setRates(const RampRates &rates);
 
     // Run without end in direction +1 or -1.
     void run(int direction);

@@ -1,6 +1,7 @@
-#include "device/motorderived.h"
+#include "motion/motorderived.h"
 
-#include "sim/rampmover.h"
+#include "motion/rampmover.h"
+#include "motion/trapezoid.h"
 
 #include <algorithm>
 #include <cmath>
@@ -23,16 +24,6 @@ std::optional<double> nonZero(double v)
 
 // More ticks than this (a ramp of minutes) are estimated from the continuous trapezoid instead.
 constexpr qint64 kMaxSimulatedTicks = 2'000'000;
-
-// The continuous trapezoid: rates in pulses per ms, accel in pulses per ms per ms.
-double continuousMoveMs(double distance, double start, double top, double accel)
-{
-    const double rampDistance = (top * top - start * start) / (2 * accel);
-    if (2 * rampDistance <= distance)
-        return 2 * (top - start) / accel + (distance - 2 * rampDistance) / top;
-    const double peak = std::sqrt(start * start + accel * distance);
-    return 2 * (peak - start) / accel;
-}
 
 } // namespace
 
@@ -57,6 +48,23 @@ std::optional<double> unitsPerSecond(double rpm, double pitch)
     return nonZero(rpm * pitch / 60.0);
 }
 
+std::optional<double> pulsesPerUnit(double pulsesPerRev, double pitch)
+{
+    if (!positive(pulsesPerRev) || !positive(pitch))
+        return std::nullopt;
+    return nonZero(pulsesPerRev / pitch);
+}
+
+double wholePulses(double units, double pulsesPerUnit)
+{
+    return std::round(units * pulsesPerUnit);
+}
+
+qint64 positionCounts(double pulses, double pulsesPerUnit)
+{
+    return qint64(std::llround(pulses / pulsesPerUnit * 100.0));
+}
+
 std::optional<double> revolutionsPerMove(double distance, double pitch)
 {
     if (!positive(pitch))
@@ -69,7 +77,7 @@ std::optional<qint64> pulsesPerMove(double distance, double pitch, double pulses
     if (!positive(pitch) || !positive(pulsesPerRev) || !std::isfinite(distance))
         return std::nullopt;
     // The simulator's single move: round(distance × pulses per distance unit).
-    const qint64 pulses = std::llround(std::abs(distance) * (pulsesPerRev / pitch));
+    const auto pulses = qint64(wholePulses(std::abs(distance), pulsesPerRev / pitch));
     if (pulses == 0)
         return std::nullopt;
     return pulses;
@@ -87,16 +95,16 @@ std::optional<double> moveTimeMs(qint64 pulses, double startHz, double accelHzPe
     if (pulses == 0 || !positive(startHz) || !positive(accelHzPerMs) || !positive(topHz))
         return std::nullopt;
     // The simulator's units: pulses per ms and pulses per ms gained each ms.
-    const double start = startHz / 1000.0;
-    const double top = topHz / 1000.0;
-    const double accel = accelHzPerMs / 1000.0;
+    const RampRates rates = RampRates::fromHz(startHz, topHz, accelHzPerMs);
+    const double top = rates.top;
+    const double accel = rates.accel;
     const double distance = double(std::abs(pulses));
-    const double from = std::min(start, top);
+    const double from = rates.effectiveStart();
     if ((top - from) / accel > double(kMaxSimulatedTicks) / 4 || distance / from > 1e12)
-        return continuousMoveMs(distance, from, top, accel);
+        return Trapezoid(distance, rates).durationMs();
 
     RampMover mover;
-    mover.setRates(start, top, accel);
+    mover.setRates(rates);
     mover.moveTo(distance);
     qint64 ticks = 0;
     qint64 loops = 0;
@@ -115,7 +123,7 @@ std::optional<double> moveTimeMs(qint64 pulses, double startHz, double accelHzPe
         mover.tick();
         ++ticks;
         if (++loops > kMaxSimulatedTicks)
-            return continuousMoveMs(distance, from, top, accel);
+            return Trapezoid(distance, rates).durationMs();
     }
     return double(ticks);
 }

@@ -1,4 +1,4 @@
-#include "poll/readplanner.h"
+#include "device/readplanner.h"
 
 #include "map/parameter.h"
 
