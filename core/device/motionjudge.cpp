@@ -2,6 +2,8 @@
 
 #include "i18n/translators.h"
 #include "map/registermap.h"
+#include "motion/interpolationtiming.h"
+#include "motion/pathsetup.h"
 
 #include <cmath>
 
@@ -44,16 +46,55 @@ int limitOn(const RegisterMap &map, const StatusValues &v, int motor, int direct
     return inputOn(v, input) ? int(input) : 0;
 }
 
-// A value of a coordinate register (arc.end_x ...) as raw counts of motor's position.
-std::optional<qint64> asPosition(const RegisterMap &map, const StatusValues &v, int motor,
-                                 const QString &key)
+// An arc or line as the controller will run it from the values held (core/motion reads the
+// registers): the start point the approach drives to and the end point, as position counts,
+// and the way each axis first moves along the path (0: not at first, or not known).
+struct PathPlan
 {
-    const Parameter *from = map.find(key);
-    const Parameter *pos = motorParam(map, motor, "position");
-    const auto raw = from ? get(v, key) : std::nullopt;
-    if (!pos || !raw)
+    interpolation::Counts approach;
+    interpolation::Counts end;
+    std::pair<int, int> firstDirection{0, 0};
+};
+
+// nullopt when a start or end coordinate, or a motor's step angle, microsteps or pitch is not
+// known: no end point is guessed.
+std::optional<PathPlan> pathPlan(const RegisterMap &map, const StatusValues &v, MotionKind kind)
+{
+    const bool arc = kind == MotionKind::Arc;
+    const QString prefix = arc ? QStringLiteral("arc.") : QStringLiteral("line.");
+    for (const char *k : {"start_x", "start_y", "end_x", "end_y"}) {
+        if (!get(v, prefix + QLatin1String(k)))
+            return std::nullopt;
+    }
+    const interpolation::RawValue raw = [&v](const QString &key) { return get(v, key); };
+    interpolation::Point start;
+    interpolation::Point end;
+    std::optional<InterpolationPath> path;
+    if (arc) {
+        const interpolation::ArcSetup a = interpolation::arcSetup(map, raw);
+        start = a.start;
+        end = a.end;
+        // The centre (or the middle point) must be known for the way round, not for the end.
+        const QString point =
+            prefix + (a.mode == interpolation::ArcMode::ThreePoints ? QStringLiteral("middle")
+                                                                    : QStringLiteral("center"));
+        if (get(v, point + QStringLiteral("_x")) && get(v, point + QStringLiteral("_y")))
+            path = interpolation::arcPath(a).path;
+    } else {
+        const interpolation::LineSetup l = interpolation::lineSetup(map, raw);
+        start = l.start;
+        end = l.end;
+        path = interpolation::linePath(l);
+    }
+    const auto targets =
+        interpolation::pathTargets(start, end, interpolation::motorParameters(map, 1, raw),
+                                   interpolation::motorParameters(map, 2, raw));
+    if (!targets)
         return std::nullopt;
-    return qint64(std::llround(from->toEngineering(*raw) * pos->scale));
+    PathPlan plan{targets->approach, targets->end};
+    if (path)
+        plan.firstDirection = path->startDirection();
+    return plan;
 }
 
 int sign(double d)
@@ -155,15 +196,12 @@ std::optional<MotionStart> MotionJudge::plan(const RegisterMap &map, const QStri
         break;
     case MotionKind::Arc:
     case MotionKind::Line: {
-        const QString prefix =
-            *kind == MotionKind::Arc ? QStringLiteral("arc.") : QStringLiteral("line.");
-        const auto x = asPosition(map, before, 1, prefix + QStringLiteral("end_x"));
-        const auto y = asPosition(map, before, 2, prefix + QStringLiteral("end_y"));
-        if (!x || !y)
+        const auto path = pathPlan(map, before, *kind);
+        if (!path)
             return std::nullopt;
         s.motors = {1, 2};
-        s.target.insert(1, *x);
-        s.target.insert(2, *y);
+        s.target.insert(1, path->end.x);
+        s.target.insert(2, path->end.y);
         break;
     }
     }
@@ -246,61 +284,21 @@ QString MotionJudge::limitWarning(const RegisterMap &map, const QString &command
     case MotionKind::Arc:
     case MotionKind::Line: {
         const bool arc = *kind == MotionKind::Arc;
-        const QString prefix = arc ? QStringLiteral("arc.") : QStringLiteral("line.");
-        const auto pos = [&](int motor, const char *point) {
-            return asPosition(map, now, motor,
-                              prefix + QLatin1String(point) +
-                                  (motor == 1 ? QStringLiteral("_x") : QStringLiteral("_y")));
-        };
-        // The centre as plain numbers (an optional pair trips GCC's uninitialised warnings).
-        bool haveCentre = false;
-        double centreX = 0;
-        double centreY = 0;
-        if (const auto cx = pos(1, "center"), cy = pos(2, "center"); cx && cy) {
-            haveCentre = true;
-            centreX = double(*cx);
-            centreY = double(*cy);
-        }
-        if (arc && get(now, QStringLiteral("arc.mode")).value_or(0) == 1) {
-            // Three points: the centre of the circle through start, middle and end.
-            const auto sx = pos(1, "start"), sy = pos(2, "start"), mx = pos(1, "middle"),
-                       my = pos(2, "middle"), ex = pos(1, "end"), ey = pos(2, "end");
-            haveCentre = false;
-            if (sx && sy && mx && my && ex && ey) {
-                const double ax = double(*sx), ay = double(*sy), bx = double(*mx), by = double(*my),
-                             cx = double(*ex), cy = double(*ey);
-                const double d = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by));
-                if (d != 0) {
-                    const double a2 = ax * ax + ay * ay, b2 = bx * bx + by * by,
-                                 c2 = cx * cx + cy * cy;
-                    haveCentre = true;
-                    centreX = (a2 * (by - cy) + b2 * (cy - ay) + c2 * (ay - by)) / d;
-                    centreY = (a2 * (cx - bx) + b2 * (ax - cx) + c2 * (bx - ax)) / d;
-                }
-            }
-        }
-        const bool ccw = get(now, QStringLiteral("arc.direction")).value_or(0) == 1;
-        const auto s1 = pos(1, "start"), s2 = pos(2, "start");
+        const auto path = pathPlan(map, now, *kind);
+        if (!path)
+            break;
         for (int n = 1; n <= 2; ++n) {
             const auto here = motorValue(map, now, n, "position");
-            const auto start = n == 1 ? s1 : s2;
-            if (!here || !start)
+            const qint64 start = n == 1 ? path->approach.x : path->approach.y;
+            if (!here)
                 continue;
-            if (std::abs(*start - *here) > 1) {
-                check(n, sign(double(*start - *here)), tr("the approach to the start point"));
+            // Not at the start point yet: the approach drives this axis there first.
+            if (std::abs(start - *here) > 1) {
+                check(n, sign(double(start - *here)), tr("the approach to the start point"));
                 continue;
             }
-            int dir = 0;
-            if (!arc) {
-                if (const auto e = pos(n, "end"))
-                    dir = sign(double(*e - *start));
-            } else if (s1 && s2 && haveCentre) {
-                // The tangent at the start: counter-clockwise (-dy, dx) around the centre.
-                const double dx = double(*s1) - centreX, dy = double(*s2) - centreY;
-                const double t = n == 1 ? -dy : dx;
-                dir = sign(ccw ? t : -t);
-            }
-            check(n, dir, arc ? tr("the arc") : tr("the line"));
+            check(n, n == 1 ? path->firstDirection.first : path->firstDirection.second,
+                  arc ? tr("the arc") : tr("the line"));
         }
         break;
     }

@@ -9,8 +9,8 @@ namespace stepcom {
 
 // Pure functions from register values to what a motion command will do and did. Used by the
 // window (through MotionSupervisor) and by `stepcomctl command --wait`, so both say the same.
-// The arc and line end points are read from their registers here; core/motion may take this
-// over once it exists.
+// The arc and line (their start, end and first direction) come from core/motion, the one
+// reading of those registers.
 class MotionJudge
 {
     Q_DECLARE_TR_FUNCTIONS(stepcom::MotionJudge)

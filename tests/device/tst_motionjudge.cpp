@@ -17,10 +17,18 @@ class TstMotionJudge : public QObject
     const RegisterMap &map = RegisterMap::builtin();
 
     // Motor 1 at 0 with a 10 mm forward move; limits IN1 (+) and IN2 (-), home IN2; motor 2
-    // the same on IN3/IN4. Nothing running, no input on, mode 0.
+    // the same on IN3/IN4. Nothing running, no input on, mode 0. Both motors as they leave the
+    // factory (1.8°, 8 microsteps, 5 mm pitch: 320 pulses per mm, every 0.01 mm a whole pulse
+    // away), which the arc's and line's end points in whole pulses need.
     static StatusValues idleMachine()
     {
         return {{u"motor1.position"_s, 0},
+                {u"motor1.step_angle"_s, 180},
+                {u"motor1.microsteps"_s, 8},
+                {u"motor1.pitch"_s, 500},
+                {u"motor2.step_angle"_s, 180},
+                {u"motor2.microsteps"_s, 8},
+                {u"motor2.pitch"_s, 500},
                 {u"motor1.running"_s, 0},
                 {u"motor1.move_distance"_s, 1000},
                 {u"motor1.direction"_s, 0},
@@ -98,6 +106,13 @@ private Q_SLOTS:
         QVERIFY(!MotionJudge::plan(map, u"motor1.move"_s, {{u"motor1.position"_s, 0}}));
         QVERIFY(!MotionJudge::plan(map, u"home_all"_s,
                                    with(v, {{u"homing.first"_s, 0}, {u"homing.second"_s, 0}})));
+        // The arc's end in whole pulses needs the motors' step angle, microsteps and pitch.
+        StatusValues noPitch = v;
+        noPitch.remove(u"motor2.pitch"_s);
+        QVERIFY(!MotionJudge::plan(map, u"arc.start"_s, noPitch));
+        StatusValues noEnd = v;
+        noEnd.remove(u"line.end_y"_s);
+        QVERIFY(!MotionJudge::plan(map, u"line.start"_s, noEnd));
     }
 
     void aMoveIsDoneOnlyAtItsEndPoint_data()
