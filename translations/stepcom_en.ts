@@ -1240,12 +1240,31 @@
         <source>Not connected.</source>
         <translation>Not connected.</translation>
     </message>
+    <message>
+        <source>%1 is open, but the controller does not answer.</source>
+        <translation>%1 is open, but the controller does not answer.</translation>
+    </message>
+    <message>
+        <source>%1 is open; waiting for the controller to answer…</source>
+        <translation>%1 is open; waiting for the controller to answer…</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>link lost: %1</source>
         <translation>link lost: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlMotionWait</name>
+    <message>
+        <source>%1 would not move anything here (nothing in the homing order, or every motor runs): nothing to wait for</source>
+        <translation>%1 would not move anything here (nothing in the homing order, or every motor runs): nothing to wait for</translation>
+    </message>
+    <message>
+        <source>%1: sent, waiting for the motion to end</source>
+        <translation>%1: sent, waiting for the motion to end</translation>
     </message>
 </context>
 <context>
@@ -1417,6 +1436,10 @@
     <message>
         <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
         <translation>apply: do not save a backup of the controller&apos;s settings before writing.</translation>
+    </message>
+    <message>
+        <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
+        <translation>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</translation>
     </message>
 </context>
 <context>
@@ -1684,6 +1707,14 @@
     <message>
         <source>with the commissioning checklist %1: %2</source>
         <translation>with the commissioning checklist %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: sent (add --wait to wait for how it ends)</source>
+        <translation>%1: sent (add --wait to wait for how it ends)</translation>
+    </message>
+    <message>
+        <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
+        <translation>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</translation>
     </message>
 </context>
 <context>
@@ -2030,10 +2061,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Cannot connect: %1</translation>
     </message>
     <message>
-        <source>Connected to %1</source>
-        <translation>Connected to %1</translation>
-    </message>
-    <message>
         <source>Link lost: %1</source>
         <translation>Link lost: %1</translation>
     </message>
@@ -2126,6 +2153,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the window closes</source>
         <translation>the window closes</translation>
+    </message>
+    <message>
+        <source>Opened %1; asking the controller</source>
+        <translation>Opened %1; asking the controller</translation>
+    </message>
+    <message>
+        <source>The port is open, but the controller at %1 does not answer.</source>
+        <translation>The port is open, but the controller at %1 does not answer.</translation>
+    </message>
+    <message>
+        <source>The controller answers.</source>
+        <translation>The controller answers.</translation>
+    </message>
+    <message>
+        <source>%1: sent</source>
+        <translation>%1: sent</translation>
     </message>
 </context>
 <context>
@@ -2649,24 +2692,16 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Motor %1: jog %2 not done: %3</source>
         <translation>Motor %1: jog %2 not done: %3</translation>
     </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::JogPanel</name>
     <message>
         <source>stop button</source>
         <translation>stop button</translation>
-    </message>
-    <message>
-        <source>Single move</source>
-        <translation>Single move</translation>
-    </message>
-    <message>
-        <source>Homing</source>
-        <translation>Homing</translation>
-    </message>
-    <message>
-        <source>%1 done</source>
-        <translation>%1 done</translation>
     </message>
     <message>
         <source>Not connected.</source>
@@ -2816,6 +2851,37 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Run motor %1 in reverse to its home input and set its position to 0</source>
         <translation>Run motor %1 in reverse to its home input and set its position to 0</translation>
     </message>
+    <message>
+        <source>Reference: %1</source>
+        <translation>Reference: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::LinkHealth</name>
+    <message>
+        <source>Port closed</source>
+        <translation>Port closed</translation>
+    </message>
+    <message>
+        <source>Opening the port…</source>
+        <translation>Opening the port…</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for the controller…</source>
+        <translation>Port open, waiting for the controller…</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>Not answering</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>Connected</translation>
+    </message>
+    <message>
+        <source>The port is open but no controller answers. Likely causes: another device id (factory: 1), another baud rate (factory: 9600) or parity (factory: none), the RS-485 wires A and B swapped, or the controller has no power. A bus scan tries the ids and baud rates for you.</source>
+        <translation>The port is open but no controller answers. Likely causes: another device id (factory: 1), another baud rate (factory: 9600) or parity (factory: none), the RS-485 wires A and B swapped, or the controller has no power. A bus scan tries the ids and baud rates for you.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::LinkSettings</name>
@@ -2893,6 +2959,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</source>
         <translation>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>Not answering</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for an answer…</source>
+        <translation>Port open, waiting for an answer…</translation>
     </message>
 </context>
 <context>
@@ -3338,26 +3412,121 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
-    <name>stepcom::MotionPage</name>
+    <name>stepcom::MotionJudge</name>
+    <message>
+        <source>Motor %1&apos;s positive limit (IN%2) is already ON and %3 drives motor %1 forward: it stops at once.</source>
+        <translation>Motor %1&apos;s positive limit (IN%2) is already ON and %3 drives motor %1 forward: it stops at once.</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s negative limit (IN%2) is already ON and %3 drives motor %1 in reverse: it stops at once.</source>
+        <translation>Motor %1&apos;s negative limit (IN%2) is already ON and %3 drives motor %1 in reverse: it stops at once.</translation>
+    </message>
+    <message>
+        <source>the single move</source>
+        <translation>the single move</translation>
+    </message>
+    <message>
+        <source>the return to data zero</source>
+        <translation>the return to data zero</translation>
+    </message>
+    <message>
+        <source>the approach to the start point</source>
+        <translation>the approach to the start point</translation>
+    </message>
+    <message>
+        <source>the arc</source>
+        <translation>the arc</translation>
+    </message>
+    <message>
+        <source>the line</source>
+        <translation>the line</translation>
+    </message>
+    <message>
+        <source>Single move of motor %1</source>
+        <translation>Single move of motor %1</translation>
+    </message>
+    <message>
+        <source>Homing motor %1</source>
+        <translation>Homing motor %1</translation>
+    </message>
     <message>
         <source>Homing in order</source>
         <translation>Homing in order</translation>
     </message>
     <message>
-        <source>Returning to data zero</source>
-        <translation>Returning to data zero</translation>
+        <source>Return to data zero</source>
+        <translation>Return to data zero</translation>
     </message>
+    <message>
+        <source>Arc</source>
+        <translation>Arc</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>stop</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>link lost</translation>
+    </message>
+    <message>
+        <source>an unknown position</source>
+        <translation>an unknown position</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s positive limit (IN%2) is ON</source>
+        <translation>motor %1&apos;s positive limit (IN%2) is ON</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s negative limit (IN%2) is ON</source>
+        <translation>motor %1&apos;s negative limit (IN%2) is ON</translation>
+    </message>
+    <message>
+        <source>%1: done at %2</source>
+        <translation>%1: done at %2</translation>
+    </message>
+    <message>
+        <source>%1: referenced at %2</source>
+        <translation>%1: referenced at %2</translation>
+    </message>
+    <message>
+        <source>no stop, limit or E-STOP seen</source>
+        <translation>no stop, limit or E-STOP seen</translation>
+    </message>
+    <message>
+        <source>%1: stopped at %2, not at the end point %3 (%4)</source>
+        <translation>%1: stopped at %2, not at the end point %3 (%4)</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): not referenced</source>
+        <translation>%1 interrupted at %2 (%3): not referenced</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): motor %4 not referenced</source>
+        <translation>%1 interrupted at %2 (%3): motor %4 not referenced</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: not referenced</source>
+        <translation>%1 ended without the home input at %2: not referenced</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: motor %3 not referenced</source>
+        <translation>%1 ended without the home input at %2: motor %3 not referenced</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MotionPage</name>
     <message>
         <source>Coordinates zeroed</source>
         <translation>Coordinates zeroed</translation>
-    </message>
-    <message>
-        <source>motor %1 at %2</source>
-        <translation>motor %1 at %2</translation>
-    </message>
-    <message>
-        <source>%1: done (%2)</source>
-        <translation>%1: done (%2)</translation>
     </message>
     <message>
         <source>Jog and home</source>
@@ -3743,6 +3912,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Coil 00103, sent ahead of everything queued</source>
         <translation>Coil 00103, sent ahead of everything queued</translation>
+    </message>
+    <message>
+        <source>⚠ Start is possible, but: %1</source>
+        <translation>⚠ Start is possible, but: %1</translation>
+    </message>
+    <message>
+        <source>%1: running…</source>
+        <translation>%1: running…</translation>
+    </message>
+    <message>
+        <source>Last run: %1</source>
+        <translation>Last run: %1</translation>
     </message>
 </context>
 <context>
@@ -4421,6 +4602,37 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ReferenceTracker</name>
+    <message>
+        <source>referenced</source>
+        <translation>referenced</translation>
+    </message>
+    <message>
+        <source>not referenced (not homed yet)</source>
+        <translation>not referenced (not homed yet)</translation>
+    </message>
+    <message>
+        <source>not referenced (homing ended without the home input)</source>
+        <translation>not referenced (homing ended without the home input)</translation>
+    </message>
+    <message>
+        <source>not referenced (homing was interrupted)</source>
+        <translation>not referenced (homing was interrupted)</translation>
+    </message>
+    <message>
+        <source>not referenced (E-STOP)</source>
+        <translation>not referenced (E-STOP)</translation>
+    </message>
+    <message>
+        <source>not referenced (coordinates zeroed)</source>
+        <translation>not referenced (coordinates zeroed)</translation>
+    </message>
+    <message>
+        <source>not referenced (link lost)</source>
+        <translation>not referenced (link lost)</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SimCommandLine</name>
     <message>
         <source>N</source>
@@ -5082,6 +5294,36 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ValueCheck</name>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>%1: enter a value (%2).</source>
+        <translation>%1: enter a value (%2).</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number. Allowed: %3.</source>
+        <translation>%1: “%2” is not a number. Allowed: %3.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: at most %n decimal(s). Allowed: %2.</source>
+        <translation>
+            <numerusform>%1: at most %n decimal. Allowed: %2.</numerusform>
+            <numerusform>%1: at most %n decimals. Allowed: %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the allowed range %3.</source>
+        <translation>%1: %2 is outside the allowed range %3.</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not one of %3.</source>
+        <translation>%1: “%2” is not one of %3.</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::WiringCheck</name>
     <message>
         <source>positive limit</source>
@@ -5252,6 +5494,25 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&amp;Write</source>
         <translation>&amp;Write</translation>
     </message>
+    <message>
+        <source>The pages flag problems in these values:</source>
+        <translation>The pages flag problems in these values:</translation>
+    </message>
+    <message>
+        <source>&amp;Write anyway</source>
+        <translation>&amp;Write anyway</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WriteReview</name>
+    <message>
+        <source>Arc: %1</source>
+        <translation>Arc: %1</translation>
+    </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>Line: %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::XYPlot</name>
@@ -5376,6 +5637,12 @@ file and its checklist, no controller needed)</source>
         <translation>write the commissioning report (--name, --notes,
 --lang en|zh_CN; --from PROFILE: from a profile
 file and its checklist, no controller needed)</translation>
+    </message>
+    <message>
+        <source>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</source>
+        <translation>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</translation>
     </message>
 </context>
 </TS>

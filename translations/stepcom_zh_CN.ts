@@ -1235,12 +1235,31 @@
         <source>Not connected.</source>
         <translation>未连接。</translation>
     </message>
+    <message>
+        <source>%1 is open, but the controller does not answer.</source>
+        <translation>%1 已打开，但控制器没有应答。</translation>
+    </message>
+    <message>
+        <source>%1 is open; waiting for the controller to answer…</source>
+        <translation>%1 已打开；正在等待控制器应答…</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>link lost: %1</source>
         <translation>连接中断：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlMotionWait</name>
+    <message>
+        <source>%1 would not move anything here (nothing in the homing order, or every motor runs): nothing to wait for</source>
+        <translation>%1 在此不会使任何电机运动（回零顺序为空，或所有电机都在运行）：没有可等待的结果</translation>
+    </message>
+    <message>
+        <source>%1: sent, waiting for the motion to end</source>
+        <translation>%1：已发送，正在等待运动结束</translation>
     </message>
 </context>
 <context>
@@ -1412,6 +1431,10 @@
     <message>
         <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
         <translation>apply：写入前不备份控制器的设置。</translation>
+    </message>
+    <message>
+        <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
+        <translation>command：等待运动命令结束并输出其结果（仅在完成或已回零参考时退出码为 0）。</translation>
     </message>
 </context>
 <context>
@@ -1675,6 +1698,14 @@
     <message>
         <source>with the commissioning checklist %1: %2</source>
         <translation>包含调试检查表 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: sent (add --wait to wait for how it ends)</source>
+        <translation>%1：已发送（加 --wait 可等待其结果）</translation>
+    </message>
+    <message>
+        <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
+        <translation>--wait：%1 没有可等待的结束（单次运动、回零、按顺序回零、回数据零点、圆弧和直线才有）</translation>
     </message>
 </context>
 <context>
@@ -2021,10 +2052,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>无法连接：%1</translation>
     </message>
     <message>
-        <source>Connected to %1</source>
-        <translation>已连接到 %1</translation>
-    </message>
-    <message>
         <source>Link lost: %1</source>
         <translation>连接中断：%1</translation>
     </message>
@@ -2114,6 +2141,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the window closes</source>
         <translation>窗口正在关闭</translation>
+    </message>
+    <message>
+        <source>Opened %1; asking the controller</source>
+        <translation>已打开 %1；正在询问控制器</translation>
+    </message>
+    <message>
+        <source>The port is open, but the controller at %1 does not answer.</source>
+        <translation>端口已打开，但 %1 处的控制器没有应答。</translation>
+    </message>
+    <message>
+        <source>The controller answers.</source>
+        <translation>控制器已应答。</translation>
+    </message>
+    <message>
+        <source>%1: sent</source>
+        <translation>%1：已发送</translation>
     </message>
 </context>
 <context>
@@ -2637,24 +2680,16 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Motor %1: jog %2 not done: %3</source>
         <translation>电机 %1：%2点动未执行：%3</translation>
     </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::JogPanel</name>
     <message>
         <source>stop button</source>
         <translation>停止按钮</translation>
-    </message>
-    <message>
-        <source>Single move</source>
-        <translation>单次运行</translation>
-    </message>
-    <message>
-        <source>Homing</source>
-        <translation>回机械零</translation>
-    </message>
-    <message>
-        <source>%1 done</source>
-        <translation>%1完成</translation>
     </message>
     <message>
         <source>Not connected.</source>
@@ -2804,6 +2839,37 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Run motor %1 in reverse to its home input and set its position to 0</source>
         <translation>电机 %1 反转到原点信号处，并将其坐标设为 0</translation>
     </message>
+    <message>
+        <source>Reference: %1</source>
+        <translation>参考点：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::LinkHealth</name>
+    <message>
+        <source>Port closed</source>
+        <translation>端口已关闭</translation>
+    </message>
+    <message>
+        <source>Opening the port…</source>
+        <translation>正在打开端口…</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for the controller…</source>
+        <translation>端口已打开，正在等待控制器…</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>已连接</translation>
+    </message>
+    <message>
+        <source>The port is open but no controller answers. Likely causes: another device id (factory: 1), another baud rate (factory: 9600) or parity (factory: none), the RS-485 wires A and B swapped, or the controller has no power. A bus scan tries the ids and baud rates for you.</source>
+        <translation>端口已打开，但没有控制器应答。可能的原因：设备地址不同（出厂：1）、波特率不同（出厂：9600）或校验位不同（出厂：无）、RS-485 的 A、B 线接反，或控制器没有上电。总线扫描可以替您逐一尝试地址和波特率。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::LinkSettings</name>
@@ -2881,6 +2947,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</source>
         <translation>参数已写入，但尚未保存到控制器的闪存：控制器断电后将丢失。请使用“保存到闪存”。</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for an answer…</source>
+        <translation>端口已打开，正在等待应答…</translation>
     </message>
 </context>
 <context>
@@ -3325,26 +3399,121 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
-    <name>stepcom::MotionPage</name>
+    <name>stepcom::MotionJudge</name>
+    <message>
+        <source>Motor %1&apos;s positive limit (IN%2) is already ON and %3 drives motor %1 forward: it stops at once.</source>
+        <translation>电机 %1 的正限位（IN%2）已经接通，而%3会使电机 %1 正向运动：它会立即停止。</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s negative limit (IN%2) is already ON and %3 drives motor %1 in reverse: it stops at once.</source>
+        <translation>电机 %1 的负限位（IN%2）已经接通，而%3会使电机 %1 反向运动：它会立即停止。</translation>
+    </message>
+    <message>
+        <source>the single move</source>
+        <translation>单次运动</translation>
+    </message>
+    <message>
+        <source>the return to data zero</source>
+        <translation>回数据零点</translation>
+    </message>
+    <message>
+        <source>the approach to the start point</source>
+        <translation>到起点的趋近运动</translation>
+    </message>
+    <message>
+        <source>the arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <source>the line</source>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>Single move of motor %1</source>
+        <translation>电机 %1 单次运动</translation>
+    </message>
+    <message>
+        <source>Homing motor %1</source>
+        <translation>电机 %1 回机械零</translation>
+    </message>
     <message>
         <source>Homing in order</source>
-        <translation>顺序回机械零</translation>
+        <translation>按顺序回机械零</translation>
     </message>
     <message>
-        <source>Returning to data zero</source>
-        <translation>回数据零</translation>
+        <source>Return to data zero</source>
+        <translation>回数据零点</translation>
     </message>
+    <message>
+        <source>Arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>连接丢失</translation>
+    </message>
+    <message>
+        <source>an unknown position</source>
+        <translation>未知位置</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s positive limit (IN%2) is ON</source>
+        <translation>电机 %1 的正限位（IN%2）接通</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s negative limit (IN%2) is ON</source>
+        <translation>电机 %1 的负限位（IN%2）接通</translation>
+    </message>
+    <message>
+        <source>%1: done at %2</source>
+        <translation>%1：已完成，位于 %2</translation>
+    </message>
+    <message>
+        <source>%1: referenced at %2</source>
+        <translation>%1：已建立参考点，位于 %2</translation>
+    </message>
+    <message>
+        <source>no stop, limit or E-STOP seen</source>
+        <translation>未见停止、限位或急停</translation>
+    </message>
+    <message>
+        <source>%1: stopped at %2, not at the end point %3 (%4)</source>
+        <translation>%1：停在 %2，未到终点 %3（%4）</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): not referenced</source>
+        <translation>%1 在 %2 处被中断（%3）：未建立参考点</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): motor %4 not referenced</source>
+        <translation>%1 在 %2 处被中断（%3）：电机 %4 未建立参考点</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: not referenced</source>
+        <translation>%1 结束于 %2，原点输入未接通：未建立参考点</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: motor %3 not referenced</source>
+        <translation>%1 结束于 %2，原点输入未接通：电机 %3 未建立参考点</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MotionPage</name>
     <message>
         <source>Coordinates zeroed</source>
         <translation>坐标已清零</translation>
-    </message>
-    <message>
-        <source>motor %1 at %2</source>
-        <translation>电机 %1 位于 %2</translation>
-    </message>
-    <message>
-        <source>%1: done (%2)</source>
-        <translation>%1：完成（%2）</translation>
     </message>
     <message>
         <source>Jog and home</source>
@@ -3728,6 +3897,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Coil 00103, sent ahead of everything queued</source>
         <translation>线圈 00103，优先于所有排队请求发送</translation>
+    </message>
+    <message>
+        <source>⚠ Start is possible, but: %1</source>
+        <translation>⚠ 可以启动，但是：%1</translation>
+    </message>
+    <message>
+        <source>%1: running…</source>
+        <translation>%1：运行中…</translation>
+    </message>
+    <message>
+        <source>Last run: %1</source>
+        <translation>上次运行：%1</translation>
     </message>
 </context>
 <context>
@@ -4397,6 +4578,37 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ReferenceTracker</name>
+    <message>
+        <source>referenced</source>
+        <translation>已建立参考点</translation>
+    </message>
+    <message>
+        <source>not referenced (not homed yet)</source>
+        <translation>未建立参考点（尚未回零）</translation>
+    </message>
+    <message>
+        <source>not referenced (homing ended without the home input)</source>
+        <translation>未建立参考点（回零结束时原点输入未接通）</translation>
+    </message>
+    <message>
+        <source>not referenced (homing was interrupted)</source>
+        <translation>未建立参考点（回零被中断）</translation>
+    </message>
+    <message>
+        <source>not referenced (E-STOP)</source>
+        <translation>未建立参考点（急停）</translation>
+    </message>
+    <message>
+        <source>not referenced (coordinates zeroed)</source>
+        <translation>未建立参考点（坐标已清零）</translation>
+    </message>
+    <message>
+        <source>not referenced (link lost)</source>
+        <translation>未建立参考点（连接丢失）</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SimCommandLine</name>
     <message>
         <source>N</source>
@@ -5058,6 +5270,35 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ValueCheck</name>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>%1: enter a value (%2).</source>
+        <translation>%1：请输入数值（%2）。</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number. Allowed: %3.</source>
+        <translation>%1：“%2”不是数字。允许范围：%3。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: at most %n decimal(s). Allowed: %2.</source>
+        <translation>
+            <numerusform>%1：最多 %n 位小数。允许范围：%2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the allowed range %3.</source>
+        <translation>%1：%2 超出允许范围 %3。</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not one of %3.</source>
+        <translation>%1：“%2”不是 %3 之一。</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::WiringCheck</name>
     <message>
         <source>positive limit</source>
@@ -5227,6 +5468,25 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&amp;Write</source>
         <translation>写入(&amp;W)</translation>
     </message>
+    <message>
+        <source>The pages flag problems in these values:</source>
+        <translation>页面已指出这些值中的问题：</translation>
+    </message>
+    <message>
+        <source>&amp;Write anyway</source>
+        <translation>仍然写入(&amp;W)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WriteReview</name>
+    <message>
+        <source>Arc: %1</source>
+        <translation>圆弧：%1</translation>
+    </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>直线：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::XYPlot</name>
@@ -5351,6 +5611,12 @@ file and its checklist, no controller needed)</source>
         <translation>生成调试报告（--name、--notes、
 --lang en|zh_CN；--from PROFILE：根据参数文件
 及其检查表生成，无需控制器）</translation>
+    </message>
+    <message>
+        <source>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</source>
+        <translation>触发一个运动命令并等待其结束；输出
+结果（--json），仅在完成或已建立参考点时退出码为 0</translation>
     </message>
 </context>
 </TS>

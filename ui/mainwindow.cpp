@@ -2,6 +2,7 @@
 
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
+#include "device/linkhealth.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "language.h"
@@ -91,9 +92,15 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
                 m_messages->add(s, text);
                 statusBar()->showMessage(text, 5000);
             });
-    connect(session, &DeviceSession::connected, this, [this](bool ok, const QString &) {
-        if (ok && currentPage() && qobject_cast<ConnectionPage *>(currentPage()))
-            showPage(1); // connected: on to the first motor
+    // On to the first motor once the controller answered, not when the port opened: a port
+    // with nobody behind it keeps the Connection page and its "not answering" hints in view.
+    connect(session->health(), &LinkHealth::stateChanged, this, [this](LinkHealth::State s) {
+        if (s == LinkHealth::State::Answering && !m_answeredOnce && currentPage() &&
+            qobject_cast<ConnectionPage *>(currentPage()))
+            showPage(1);
+        m_answeredOnce = m_answeredOnce || s == LinkHealth::State::Answering;
+        if (s == LinkHealth::State::Closed)
+            m_answeredOnce = false;
     });
     retranslate();
     // The sidebar as wide as its titles, not as wide as a list's default size hint (256 px):
@@ -285,8 +292,11 @@ void MainWindow::retranslate()
 
 void MainWindow::changeEvent(QEvent *event)
 {
-    if (event->type() == QEvent::LanguageChange)
+    if (event->type() == QEvent::LanguageChange) {
         retranslate();
+        // A passing message was made in the old language; the messages dock keeps it.
+        statusBar()->clearMessage();
+    }
     if (event->type() == QEvent::ActivationChange && !isActiveWindow())
         m_session->stopJogging(DeviceSession::JogStop::FocusLost);
     QMainWindow::changeEvent(event);

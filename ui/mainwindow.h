@@ -85,6 +85,7 @@ private:
     WriteFlow *m_writeFlow = nullptr;
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;
+    bool m_answeredOnce = false; // this connection's controller answered (the page jumped)
 
     QAction *m_readAll = nullptr;
     QAction *m_write = nullptr;

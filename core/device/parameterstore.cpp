@@ -100,6 +100,7 @@ void ParameterStore::revertAll()
 {
     for (const QString &key : editedKeys())
         revert(key);
+    Q_EMIT reverted();
 }
 
 QStringList ParameterStore::editedKeys() const

@@ -65,6 +65,8 @@ Q_SIGNALS:
     void valueChanged(const QString &key);
     void editsChanged();
     void unsavedChanged(bool unsaved);
+    // revertAll(): every field drops what it shows that is not held (a rejected typed value).
+    void reverted();
 
 private:
     void update(const QString &key, const Entry &entry);
