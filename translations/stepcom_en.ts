@@ -3107,6 +3107,13 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n edits of %1 were never saved: they are in the comparison, not in the file</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Profile applied: %n value(s) written and verified</source>
+        <translation>
+            <numerusform>Profile applied: %n value written and verified</numerusform>
+            <numerusform>Profile applied: %n values written and verified</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stepcom::OfflineBanner</name>
@@ -4149,6 +4156,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Differences only</source>
         <translation>Differences only</translation>
+    </message>
+    <message>
+        <source>Motor %1 · %2</source>
+        <translation>Motor %1 · %2</translation>
     </message>
 </context>
 <context>

@@ -3089,6 +3089,12 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%1 的 %n 处修改从未保存：它们在比较窗口中，不在文件中</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>Profile applied: %n value(s) written and verified</source>
+        <translation type="unfinished">
+            <numerusform>已应用参数文件：写入并校验 %n 个值</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stepcom::OfflineBanner</name>
@@ -4120,6 +4126,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Differences only</source>
         <translation>只显示不同项</translation>
+    </message>
+    <message>
+        <source>Motor %1 · %2</source>
+        <translation>电机 %1 · %2</translation>
     </message>
 </context>
 <context>

@@ -359,6 +359,13 @@ void OfflineActions::offerCompare(const Profile &values, const QString &path, in
         m_compareDialog->close();
     m_compareDialog = new ProfileCompareDialog(m_session, values, name, m_window);
     m_compareDialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(m_compareDialog, &ProfileCompareDialog::applied, this,
+            [this](bool ok, const QStringList &verified, const QStringList &problems) {
+                Q_EMIT finished(ok, tr("Profile applied: %n value(s) written and verified", nullptr,
+                                       int(verified.size())));
+                for (const QString &p : problems)
+                    Q_EMIT finished(false, p);
+            });
     m_compareDialog->open();
     Q_EMIT finished(true, tr("Connected: the values of %1 are compared with the controller's; "
                              "nothing is written until you apply checked rows")

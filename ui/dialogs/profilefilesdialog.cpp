@@ -127,8 +127,13 @@ void ProfileFilesDialog::rebuild()
             const QString text = p.displayRaw(*raw, lang);
             return (!p.values.isEmpty() && text != n) ? QStringLiteral("%1 (%2)").arg(n, text) : n;
         };
+        // "Speed" is in every motor block: say which motor, as the device comparison does.
+        QString label = p.label.text(lang);
+        if (p.instance > 0 && p.block == QLatin1String("motor") &&
+            !label.contains(QString::number(p.instance)))
+            label = tr("Motor %1 · %2").arg(p.instance).arg(label);
         addRow(group, group != Group::Same,
-               {QString(), p.label.text(lang), shown(r.device), shown(r.profile), p.unit, p.key},
+               {QString(), label, shown(r.device), shown(r.profile), p.unit, p.key},
                p.registerName());
     }
     for (const ProfileForeignRow &f : std::as_const(m_comparison.foreign)) {
