@@ -3091,7 +3091,7 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
     <message numerus="yes">
         <source>Profile applied: %n value(s) written and verified</source>
-        <translation type="unfinished">
+        <translation>
             <numerusform>已应用参数文件：写入并校验 %n 个值</numerusform>
         </translation>
     </message>
