@@ -59,6 +59,8 @@ void ParameterStore::setDeviceValues(const QHash<QString, qint64> &values)
 
 void ParameterStore::forgetDeviceValues()
 {
+    if (m_file)
+        return; // a file's values: no link to lose
     for (auto it = m_entries.cbegin(); it != m_entries.cend(); ++it) {
         Entry e = it.value();
         e.device.reset();

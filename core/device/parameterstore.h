@@ -42,7 +42,8 @@ public:
 
     // Values read from the device. A pending edit is kept: a poll never overwrites typing.
     void setDeviceValues(const QHash<QString, qint64> &values);
-    // The link is gone: what the device holds is unknown again (edits stay).
+    // The link is gone: what the device holds is unknown again (edits stay). A file (openFile)
+    // keeps its values.
     void forgetDeviceValues();
 
     // Validates against the map; returns the problem, or empty when the edit is held.

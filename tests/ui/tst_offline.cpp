@@ -285,6 +285,11 @@ private Q_SLOTS:
         QCOMPARE(said.size(), 1);
         QVERIFY(said.at(0).at(1).toString().contains(QStringLiteral("nothing was sent")));
         QCOMPARE(session->traffic()->entries().size(), 0);
+
+        // No link to lose: the file's values stay.
+        session->disconnectFrom();
+        QCOMPARE(store()->deviceValue(QStringLiteral("motor1.speed")), 420);
+        QCOMPARE(store()->shownValue(QStringLiteral("motor1.speed")), 450);
     }
 
     // Connecting after offline edits ends the editing and compares the file's values, edits
