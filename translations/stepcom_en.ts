@@ -3082,6 +3082,17 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n edited values were never written to the controller. Close anyway and lose them?</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1%2 — profile file, no controller — StepCom</source>
+        <translation>%1%2 — profile file, no controller — StepCom</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file. Close anyway and lose them?</source>
+        <translation>
+            <numerusform>%n edited value of %1 are not saved in the file. Close anyway and lose them?</numerusform>
+            <numerusform>%n edited values of %1 are not saved in the file. Close anyway and lose them?</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -3410,6 +3421,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</source>
         <translation>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</translation>
     </message>
+    <message>
+        <source>The profile file does not set the mode.</source>
+        <translation>The profile file does not set the mode.</translation>
+    </message>
+    <message>
+        <source>The profile sets the normal mode.</source>
+        <translation>The profile sets the normal mode.</translation>
+    </message>
+    <message>
+        <source>The profile sets special mode %1.</source>
+        <translation>The profile sets special mode %1.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MotionJudge</name>
@@ -3661,6 +3684,199 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::OfflineActions</name>
+    <message>
+        <source>&amp;New profile from factory values</source>
+        <translation>&amp;New profile from factory values</translation>
+    </message>
+    <message>
+        <source>Edit a new profile, starting from the factory values, without a controller</source>
+        <translation>Edit a new profile, starting from the factory values, without a controller</translation>
+    </message>
+    <message>
+        <source>Save p&amp;rofile file</source>
+        <translation>Save p&amp;rofile file</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to its file (no controller is written)</source>
+        <translation>Save the profile being edited to its file (no controller is written)</translation>
+    </message>
+    <message>
+        <source>Save profile file &amp;as…</source>
+        <translation>Save profile file &amp;as…</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to another file</source>
+        <translation>Save the profile being edited to another file</translation>
+    </message>
+    <message>
+        <source>&amp;Close profile file</source>
+        <translation>&amp;Close profile file</translation>
+    </message>
+    <message>
+        <source>Stop editing the profile file</source>
+        <translation>Stop editing the profile file</translation>
+    </message>
+    <message>
+        <source>&amp;Compare profiles…</source>
+        <translation>&amp;Compare profiles…</translation>
+    </message>
+    <message>
+        <source>Compare two profile files row by row; no controller is needed</source>
+        <translation>Compare two profile files row by row; no controller is needed</translation>
+    </message>
+    <message>
+        <source>Report from a &amp;profile…</source>
+        <translation>Report from a &amp;profile…</translation>
+    </message>
+    <message>
+        <source>The commissioning report made from a profile file (or the file being edited), not from a controller</source>
+        <translation>The commissioning report made from a profile file (or the file being edited), not from a controller</translation>
+    </message>
+    <message>
+        <source>Unsaved edits</source>
+        <translation>Unsaved edits</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file.</source>
+        <translation>
+            <numerusform>%n edited value of %1 are not saved in the file.</numerusform>
+            <numerusform>%n edited values of %1 are not saved in the file.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profile cannot be edited</source>
+        <translation>The profile cannot be edited</translation>
+    </message>
+    <message>
+        <source>Editing the profile file %1 without a controller</source>
+        <translation>Editing the profile file %1 without a controller</translation>
+    </message>
+    <message>
+        <source>New profile</source>
+        <translation>New profile</translation>
+    </message>
+    <message>
+        <source>Editing a new profile with the factory values; nothing is written to a controller</source>
+        <translation>Editing a new profile with the factory values; nothing is written to a controller</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>Save profile</translation>
+    </message>
+    <message>
+        <source>Saved the profile to %1 (no controller was written)</source>
+        <translation>Saved the profile to %1 (no controller was written)</translation>
+    </message>
+    <message numerus="yes">
+        <source>The file lacked %n setting(s); they were saved with their factory values: %1</source>
+        <translation>
+            <numerusform>The file lacked %n setting; they were saved with their factory values: %1</numerusform>
+            <numerusform>The file lacked %n settings; they were saved with their factory values: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save profile file as</source>
+        <translation>Save profile file as</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom profiles (*.json)</translation>
+    </message>
+    <message>
+        <source>Compare profiles: choose two files</source>
+        <translation>Compare profiles: choose two files</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom profiles (*.json);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Compare profiles</source>
+        <translation>Compare profiles</translation>
+    </message>
+    <message numerus="yes">
+        <source>Choose exactly two profile files (%n chosen).</source>
+        <translation>
+            <numerusform>Choose exactly two profile files (%n chosen).</numerusform>
+            <numerusform>Choose exactly two profile files (%n chosen).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profiles cannot be compared</source>
+        <translation>The profiles cannot be compared</translation>
+    </message>
+    <message>
+        <source>Compared %1 with %2</source>
+        <translation>Compared %1 with %2</translation>
+    </message>
+    <message>
+        <source>Report from a profile: choose the profile</source>
+        <translation>Report from a profile: choose the profile</translation>
+    </message>
+    <message>
+        <source>Report from a profile</source>
+        <translation>Report from a profile</translation>
+    </message>
+    <message>
+        <source>Notes for the report (empty: the profile&apos;s own notes):</source>
+        <translation>Notes for the report (empty: the profile&apos;s own notes):</translation>
+    </message>
+    <message>
+        <source>Save the report made from the profile</source>
+        <translation>Save the report made from the profile</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Report made from the profile file %1 (no controller was read) written to %2</source>
+        <translation>Report made from the profile file %1 (no controller was read) written to %2</translation>
+    </message>
+    <message>
+        <source>(with edits not saved in the file)</source>
+        <translation>(with edits not saved in the file)</translation>
+    </message>
+    <message>
+        <source>new profile</source>
+        <translation>new profile</translation>
+    </message>
+    <message numerus="yes">
+        <source>Profile applied: %n value(s) written and verified</source>
+        <translation>
+            <numerusform>Profile applied: %n value written and verified</numerusform>
+            <numerusform>Profile applied: %n values written and verified</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Connected: the values of %1 are compared with the controller&apos;s; nothing is written until you apply checked rows</source>
+        <translation>Connected: the values of %1 are compared with the controller&apos;s; nothing is written until you apply checked rows</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edit(s) of %1 were never saved: they are in the comparison, not in the file</source>
+        <translation>
+            <numerusform>%n edit of %1 were never saved: they are in the comparison, not in the file</numerusform>
+            <numerusform>%n edits of %1 were never saved: they are in the comparison, not in the file</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::OfflineBanner</name>
+    <message>
+        <source>Editing the profile file %1 — no controller. Nothing here moves or writes a controller; connect to compare the values with one and apply them.</source>
+        <translation>Editing the profile file %1 — no controller. Nothing here moves or writes a controller; connect to compare the values with one and apply them.</translation>
+    </message>
+    <message>
+        <source>Edits not saved yet.</source>
+        <translation>Edits not saved yet.</translation>
+    </message>
+    <message>
+        <source>This map cannot take everything the file holds (saved again, the file keeps it; settings it lacks are filled with factory values when you save):</source>
+        <translation>This map cannot take everything the file holds (saved again, the file keeps it; settings it lacks are filled with factory values when you save):</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::Parameter</name>
     <message>
         <source>%1: %2 is not one of %3</source>
@@ -3726,6 +3942,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>Write failed: %1</translation>
+    </message>
+    <message>
+        <source>The profile file lacks this value</source>
+        <translation>The profile file lacks this value</translation>
+    </message>
+    <message>
+        <source>The profile file holds this value</source>
+        <translation>The profile file holds this value</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet (the file holds %1)</source>
+        <translation>Edited, not saved yet (the file holds %1)</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet</source>
+        <translation>Edited, not saved yet</translation>
     </message>
 </context>
 <context>
@@ -4227,6 +4459,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Commissioning report written to %1</source>
         <translation>Commissioning report written to %1</translation>
     </message>
+    <message>
+        <source>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</source>
+        <translation>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileCompareDialog</name>
@@ -4375,6 +4611,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Close</source>
         <translation>Close</translation>
     </message>
+    <message>
+        <source>Not applied:</source>
+        <translation>Not applied:</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileDiff</name>
@@ -4389,6 +4629,29 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>(not in the profile)</source>
         <translation>(not in the profile)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileDocument</name>
+    <message>
+        <source>new profile</source>
+        <translation>new profile</translation>
+    </message>
+    <message>
+        <source>a controller is connected: open the profile to compare it instead</source>
+        <translation>a controller is connected: open the profile to compare it instead</translation>
+    </message>
+    <message>
+        <source>a controller is connected: disconnect to edit a profile without it</source>
+        <translation>a controller is connected: disconnect to edit a profile without it</translation>
+    </message>
+    <message>
+        <source>Factory values</source>
+        <translation>Factory values</translation>
+    </message>
+    <message>
+        <source>no profile is being edited</source>
+        <translation>no profile is being edited</translation>
     </message>
 </context>
 <context>
@@ -4580,6 +4843,93 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</source>
         <translation>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileFilesDialog</name>
+    <message>
+        <source>differ</source>
+        <translation>differ</translation>
+    </message>
+    <message>
+        <source>the same</source>
+        <translation>the same</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>only in A</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>only in B</translation>
+    </message>
+    <message>
+        <source>outside this map</source>
+        <translation>outside this map</translation>
+    </message>
+    <message>
+        <source>Motor %1 · %2</source>
+        <translation>Motor %1 · %2</translation>
+    </message>
+    <message>
+        <source>(not a setting of this map)</source>
+        <translation>(not a setting of this map)</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map (%5 of them differ).</source>
+        <translation>%1 differ, %2 only in A, %3 only in B, %4 outside this map (%5 of them differ).</translation>
+    </message>
+    <message>
+        <source>The files hold the same values.</source>
+        <translation>The files hold the same values.</translation>
+    </message>
+    <message>
+        <source>The files differ.</source>
+        <translation>The files differ.</translation>
+    </message>
+    <message>
+        <source>Compare profiles: %1 and %2</source>
+        <translation>Compare profiles: %1 and %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>register map %1</source>
+        <translation>register map %1</translation>
+    </message>
+    <message>
+        <source>Two files compared against register map %1/%2; no controller is read or written.</source>
+        <translation>Two files compared against register map %1/%2; no controller is read or written.</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Group</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Key</translation>
+    </message>
+    <message>
+        <source>Differences only</source>
+        <translation>Differences only</translation>
     </message>
 </context>
 <context>

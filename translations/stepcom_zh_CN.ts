@@ -3069,6 +3069,16 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>有 %n 个已修改的值尚未写入控制器。仍要关闭并放弃这些修改吗？</numerusform>
         </translation>
     </message>
+    <message>
+        <source>%1%2 — profile file, no controller — StepCom</source>
+        <translation>%1%2 — 参数文件，未连接控制器 — StepCom</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file. Close anyway and lose them?</source>
+        <translation>
+            <numerusform>%1 中有 %n 个修改过的值尚未保存到文件。仍然关闭并放弃这些修改吗？</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -3397,6 +3407,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</source>
         <translation>模式 2-5 忽略限位设置：为电机设置的限位和原点输入不再起作用。模式 3-5 中只有 IN3 和 IN4 作为限位；模式 2 中没有任何限位（IN2-IN4 只用于停止）。使用这些模式前，请先接好并测试这些输入。</translation>
     </message>
+    <message>
+        <source>The profile file does not set the mode.</source>
+        <translation>参数文件中没有设定系统模式。</translation>
+    </message>
+    <message>
+        <source>The profile sets the normal mode.</source>
+        <translation>参数文件设定为常规模式。</translation>
+    </message>
+    <message>
+        <source>The profile sets special mode %1.</source>
+        <translation>参数文件设定为特殊模式 %1。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MotionJudge</name>
@@ -3648,6 +3670,194 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::OfflineActions</name>
+    <message>
+        <source>&amp;New profile from factory values</source>
+        <translation>用出厂值新建参数文件(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Edit a new profile, starting from the factory values, without a controller</source>
+        <translation>以出厂值为起点编辑一个新的参数文件，无需控制器</translation>
+    </message>
+    <message>
+        <source>Save p&amp;rofile file</source>
+        <translation>保存参数文件(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to its file (no controller is written)</source>
+        <translation>把正在编辑的参数文件保存到其文件（不写入任何控制器）</translation>
+    </message>
+    <message>
+        <source>Save profile file &amp;as…</source>
+        <translation>参数文件另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to another file</source>
+        <translation>把正在编辑的参数文件保存为另一个文件</translation>
+    </message>
+    <message>
+        <source>&amp;Close profile file</source>
+        <translation>关闭参数文件(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Stop editing the profile file</source>
+        <translation>结束编辑参数文件</translation>
+    </message>
+    <message>
+        <source>&amp;Compare profiles…</source>
+        <translation>比较参数文件(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>Compare two profile files row by row; no controller is needed</source>
+        <translation>逐行比较两个参数文件，无需控制器</translation>
+    </message>
+    <message>
+        <source>Report from a &amp;profile…</source>
+        <translation>根据参数文件生成报告(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>The commissioning report made from a profile file (or the file being edited), not from a controller</source>
+        <translation>根据参数文件（或正在编辑的文件）生成调试报告，而不是读取控制器</translation>
+    </message>
+    <message>
+        <source>Unsaved edits</source>
+        <translation>未保存的修改</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file.</source>
+        <translation>
+            <numerusform>%1 中有 %n 个修改过的值尚未保存到文件。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profile cannot be edited</source>
+        <translation>无法编辑此参数文件</translation>
+    </message>
+    <message>
+        <source>Editing the profile file %1 without a controller</source>
+        <translation>正在离线编辑参数文件 %1（未连接控制器）</translation>
+    </message>
+    <message>
+        <source>New profile</source>
+        <translation>新建参数文件</translation>
+    </message>
+    <message>
+        <source>Editing a new profile with the factory values; nothing is written to a controller</source>
+        <translation>正在编辑以出厂值新建的参数文件；不会向任何控制器写入</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>保存参数文件</translation>
+    </message>
+    <message>
+        <source>Saved the profile to %1 (no controller was written)</source>
+        <translation>参数文件已保存到 %1（未写入任何控制器）</translation>
+    </message>
+    <message numerus="yes">
+        <source>The file lacked %n setting(s); they were saved with their factory values: %1</source>
+        <translation>
+            <numerusform>文件缺少 %n 个设置，已用出厂值保存：%1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save profile file as</source>
+        <translation>参数文件另存为</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom 参数文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>Compare profiles: choose two files</source>
+        <translation>比较参数文件：选择两个文件</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom 参数文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Compare profiles</source>
+        <translation>比较参数文件</translation>
+    </message>
+    <message numerus="yes">
+        <source>Choose exactly two profile files (%n chosen).</source>
+        <translation>
+            <numerusform>请正好选择两个参数文件（已选择 %n 个）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profiles cannot be compared</source>
+        <translation>无法比较这两个参数文件</translation>
+    </message>
+    <message>
+        <source>Compared %1 with %2</source>
+        <translation>已比较 %1 与 %2</translation>
+    </message>
+    <message>
+        <source>Report from a profile: choose the profile</source>
+        <translation>根据参数文件生成报告：选择参数文件</translation>
+    </message>
+    <message>
+        <source>Report from a profile</source>
+        <translation>根据参数文件生成报告</translation>
+    </message>
+    <message>
+        <source>Notes for the report (empty: the profile&apos;s own notes):</source>
+        <translation>报告备注（留空则使用参数文件中的备注）：</translation>
+    </message>
+    <message>
+        <source>Save the report made from the profile</source>
+        <translation>保存根据参数文件生成的报告</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Report made from the profile file %1 (no controller was read) written to %2</source>
+        <translation>根据参数文件 %1 生成的报告（未读取控制器）已保存到 %2</translation>
+    </message>
+    <message>
+        <source>(with edits not saved in the file)</source>
+        <translation>（含尚未保存到文件的修改）</translation>
+    </message>
+    <message>
+        <source>new profile</source>
+        <translation>新参数文件</translation>
+    </message>
+    <message numerus="yes">
+        <source>Profile applied: %n value(s) written and verified</source>
+        <translation>
+            <numerusform>已应用参数文件：写入并校验 %n 个值</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Connected: the values of %1 are compared with the controller&apos;s; nothing is written until you apply checked rows</source>
+        <translation>已连接：正在将 %1 中的值与控制器比较；应用勾选项之前不会写入任何数据</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edit(s) of %1 were never saved: they are in the comparison, not in the file</source>
+        <translation>
+            <numerusform>%1 的 %n 处修改从未保存：它们在比较窗口中，不在文件中</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::OfflineBanner</name>
+    <message>
+        <source>Editing the profile file %1 — no controller. Nothing here moves or writes a controller; connect to compare the values with one and apply them.</source>
+        <translation>正在编辑参数文件 %1 — 未连接控制器。这里的任何操作都不会让控制器运动或向控制器写入；连接后可与控制器比较并应用这些值。</translation>
+    </message>
+    <message>
+        <source>Edits not saved yet.</source>
+        <translation>修改尚未保存。</translation>
+    </message>
+    <message>
+        <source>This map cannot take everything the file holds (saved again, the file keeps it; settings it lacks are filled with factory values when you save):</source>
+        <translation>此寄存器表无法接受文件中的全部内容（再次保存时文件会保留这些内容；文件缺少的设置在保存时用出厂值补上）：</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::Parameter</name>
     <message>
         <source>%1: %2 is not one of %3</source>
@@ -3711,6 +3921,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>写入失败：%1</translation>
+    </message>
+    <message>
+        <source>The profile file lacks this value</source>
+        <translation>参数文件中没有此值</translation>
+    </message>
+    <message>
+        <source>The profile file holds this value</source>
+        <translation>参数文件中的值</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet (the file holds %1)</source>
+        <translation>已修改，尚未保存（文件中为 %1）</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet</source>
+        <translation>已修改，尚未保存</translation>
     </message>
 </context>
 <context>
@@ -4206,6 +4432,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Commissioning report written to %1</source>
         <translation>调试报告已写入 %1</translation>
     </message>
+    <message>
+        <source>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</source>
+        <translation>已连接时：将参数文件与控制器比较（应用勾选项之前不写入任何数据）。未连接控制器时：在各页面上编辑该文件</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileCompareDialog</name>
@@ -4351,6 +4581,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Close</source>
         <translation>关闭</translation>
     </message>
+    <message>
+        <source>Not applied:</source>
+        <translation>不应用：</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileDiff</name>
@@ -4365,6 +4599,29 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>(not in the profile)</source>
         <translation>（参数文件中没有）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileDocument</name>
+    <message>
+        <source>new profile</source>
+        <translation>新参数文件</translation>
+    </message>
+    <message>
+        <source>a controller is connected: open the profile to compare it instead</source>
+        <translation>已连接控制器：请打开参数文件进行比较</translation>
+    </message>
+    <message>
+        <source>a controller is connected: disconnect to edit a profile without it</source>
+        <translation>已连接控制器：断开连接后才能离线编辑参数文件</translation>
+    </message>
+    <message>
+        <source>Factory values</source>
+        <translation>出厂值</translation>
+    </message>
+    <message>
+        <source>no profile is being edited</source>
+        <translation>没有正在编辑的参数文件</translation>
     </message>
 </context>
 <context>
@@ -4556,6 +4813,93 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</source>
         <translation>“metadata”：“backup”：“device”必须是最多 200 个字符的文本</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileFilesDialog</name>
+    <message>
+        <source>differ</source>
+        <translation>不同</translation>
+    </message>
+    <message>
+        <source>the same</source>
+        <translation>相同</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>只在 A 中</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>只在 B 中</translation>
+    </message>
+    <message>
+        <source>outside this map</source>
+        <translation>超出此寄存器表</translation>
+    </message>
+    <message>
+        <source>Motor %1 · %2</source>
+        <translation>电机 %1 · %2</translation>
+    </message>
+    <message>
+        <source>(not a setting of this map)</source>
+        <translation>（不是此寄存器表的设置）</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map (%5 of them differ).</source>
+        <translation>%1 项不同，%2 项只在 A 中，%3 项只在 B 中，%4 项超出此寄存器表（其中 %5 项不同）。</translation>
+    </message>
+    <message>
+        <source>The files hold the same values.</source>
+        <translation>两个文件的值相同。</translation>
+    </message>
+    <message>
+        <source>The files differ.</source>
+        <translation>两个文件不同。</translation>
+    </message>
+    <message>
+        <source>Compare profiles: %1 and %2</source>
+        <translation>比较参数文件：%1 与 %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>register map %1</source>
+        <translation>寄存器表 %1</translation>
+    </message>
+    <message>
+        <source>Two files compared against register map %1/%2; no controller is read or written.</source>
+        <translation>两个文件按寄存器表 %1/%2 比较；不读取也不写入任何控制器。</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>分组</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>参数名</translation>
+    </message>
+    <message>
+        <source>Differences only</source>
+        <translation>只显示不同项</translation>
     </message>
 </context>
 <context>

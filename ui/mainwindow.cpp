@@ -6,6 +6,7 @@
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "language.h"
+#include "offlineactions.h" // working without the machine (issue 18)
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
 #include "pages/inputspage.h"
@@ -17,9 +18,12 @@
 #include "profileactions.h" // profiles (issue 7)
 #include "widgets/linkstatus.h"
 #include "widgets/messageview.h"
+#include "widgets/offlinebanner.h"
 #include "widgets/statusdock.h" // monitoring (issue 5)
 #include "widgets/trafficview.h"
 #include "writeflow.h"
+
+#include "profile/profiledocument.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -37,6 +41,7 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 namespace stepcom {
 
@@ -55,7 +60,15 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     splitter->setStretchFactor(1, 1);
     m_sidebar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
     m_sidebar->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 28);
-    setCentralWidget(splitter);
+    // Working without the machine (issue 18): the banner above the pages while a file is edited.
+    m_offline = new OfflineActions(session, this);
+    m_offlineBanner = new OfflineBanner(m_offline->document(), this);
+    auto *central = new QWidget(this);
+    auto *centralLayout = new QVBoxLayout(central);
+    centralLayout->setContentsMargins(0, 0, 0, 0);
+    centralLayout->addWidget(m_offlineBanner);
+    centralLayout->addWidget(splitter, 1);
+    setCentralWidget(central);
     connect(m_sidebar, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
 
     addPage(new ConnectionPage(session, this));
@@ -84,6 +97,15 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
                 statusBar()->showMessage(text, 5000);
             });
     statusBar()->addPermanentWidget(m_linkStatus);
+    // --- working without the machine (issue 18) ---
+    m_profiles->setOfflineOpener([this](const QString &path) { return m_offline->openFile(path); });
+    connect(m_offline, &OfflineActions::finished, this, [this](bool ok, const QString &text) {
+        m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning,
+                        text);
+        statusBar()->showMessage(text, 5000);
+    });
+    connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
+    // --- end working without the machine ---
 
     connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
     connect(session->parameters(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
@@ -202,12 +224,19 @@ void MainWindow::createMenus()
     m_fileMenu = menuBar()->addMenu(QString());
     // --- profiles (issue 7): open/compare/apply, save, recent, the commissioning report ---
     m_profiles = new ProfileActions(m_session, this);
+    m_fileMenu->addAction(m_offline->newAction()); // issue 18
     m_fileMenu->addAction(m_profiles->openAction());
     m_fileMenu->addMenu(m_profiles->recentMenu());
+    m_fileMenu->addAction(m_offline->saveAction());
+    m_fileMenu->addAction(m_offline->saveAsAction());
+    m_fileMenu->addAction(m_offline->closeAction());
+    m_fileMenu->addAction(m_offline->compareAction());
+    m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->saveFromDeviceAction());
     m_fileMenu->addAction(m_profiles->saveFromEditedAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->reportAction());
+    m_fileMenu->addAction(m_offline->reportAction()); // issue 18
     m_fileMenu->addSeparator();
     // --- end profiles ---
     m_fileMenu->addAction(m_quit);
@@ -248,9 +277,25 @@ void MainWindow::createDocks()
     // --- end monitoring ---
 }
 
+void MainWindow::showOrigin()
+{
+    const ProfileDocument *file = m_offline->document();
+    if (!file->isOpen()) {
+        setWindowTitle(tr("StepCom — stepper controller commissioning"));
+        statusBar()->setStyleSheet(QString());
+        return;
+    }
+    setWindowTitle(
+        tr("%1%2 — profile file, no controller — StepCom")
+            .arg(file->displayName(), file->isModified() ? QStringLiteral("*") : QString()));
+    // The status area in the banner's colour: a file, not a machine.
+    statusBar()->setStyleSheet(
+        QStringLiteral("QStatusBar { background: #d6e6ff; } QStatusBar QLabel { color: black; }"));
+}
+
 void MainWindow::retranslate()
 {
-    setWindowTitle(tr("StepCom — stepper controller commissioning"));
+    showOrigin();
     m_readAll->setText(tr("&Read all"));
     m_readAll->setToolTip(tr("Read every parameter from the controller (%1)")
                               .arg(m_readAll->shortcut().toString(QKeySequence::NativeText)));
@@ -273,6 +318,7 @@ void MainWindow::retranslate()
     m_about->setText(tr("&About StepCom"));
     m_fileMenu->setTitle(tr("&File"));
     m_profiles->retranslate(); // profiles (issue 7)
+    m_offline->retranslate();  // issue 18
     m_deviceMenu->setTitle(tr("&Device"));
     m_viewMenu->setTitle(tr("&View"));
     m_languageMenu->setTitle(tr("&Language"));
@@ -324,12 +370,18 @@ void MainWindow::closeEvent(QCloseEvent *event)
         event->ignore();
         if (m_closeQuestion)
             return;
-        m_closeQuestion =
-            new QMessageBox(QMessageBox::Warning, tr("Unwritten changes"),
-                            tr("%n edited value(s) were never written to the "
-                               "controller. Close anyway and lose them?",
-                               nullptr, int(m_session->parameters()->editedKeys().size())),
-                            QMessageBox::Discard | QMessageBox::Cancel, this);
+        const int edits = int(m_session->parameters()->editedKeys().size());
+        m_closeQuestion = new QMessageBox(
+            QMessageBox::Warning, tr("Unwritten changes"),
+            m_offline->document()->isOpen()
+                ? tr("%n edited value(s) of %1 are not saved in the file. Close anyway and lose "
+                     "them?",
+                     nullptr, edits)
+                      .arg(m_offline->document()->displayName())
+                : tr("%n edited value(s) were never written to the controller. Close anyway "
+                     "and lose them?",
+                     nullptr, edits),
+            QMessageBox::Discard | QMessageBox::Cancel, this);
         m_closeQuestion->setAttribute(Qt::WA_DeleteOnClose);
         m_closeQuestion->setDefaultButton(QMessageBox::Cancel);
         connect(m_closeQuestion, &QMessageBox::finished, this, [this](int result) {

@@ -17,7 +17,9 @@ class DeviceSession;
 class EmergencyStop;
 class LinkStatus;
 class MessageView;
-class MotionPage; // jogging (issue 5)
+class MotionPage;     // jogging (issue 5)
+class OfflineActions; // working without the machine (issue 18)
+class OfflineBanner;
 class Page;
 class ProfileActions; // profiles (issue 7)
 class StatusDock;     // monitoring (issue 5)
@@ -45,6 +47,8 @@ public:
     MessageView *messageView() const { return m_messages; }
     MotionPage *motionPage() const { return m_motion; }           // jogging (issue 5)
     ProfileActions *profileActions() const { return m_profiles; } // profiles (issue 7)
+    OfflineActions *offlineActions() const { return m_offline; }  // issue 18
+    OfflineBanner *offlineBanner() const { return m_offlineBanner; }
     // The dialogs a test (or a curious user) may want to reach while they are open.
     WriteChangesDialog *writeDialog() const;
     QMessageBox *closeQuestion() const;
@@ -64,6 +68,8 @@ private:
     void addPage(Page *page);
     void retranslate();
     void updateActions();
+    // Title and status bar say whether a file or a controller is being edited (issue 18).
+    void showOrigin();
     void restoreLayout();
     void saveLayout();
 
@@ -81,7 +87,9 @@ private:
     LinkStatus *m_linkStatus = nullptr;
     MotionPage *m_motion = nullptr;       // jogging (issue 5)
     ProfileActions *m_profiles = nullptr; // profiles (issue 7)
-    bool m_jogStopAwaited = false;        // jogging (issue 5): close waited for the stops once
+    OfflineActions *m_offline = nullptr;  // issue 18
+    OfflineBanner *m_offlineBanner = nullptr;
+    bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once
     WriteFlow *m_writeFlow = nullptr;
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;

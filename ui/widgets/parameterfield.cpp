@@ -250,6 +250,14 @@ void ParameterField::applyStateLook()
         stateTip = tr("Write failed: %1").arg(e.error);
         break;
     }
+    // Editing a profile file (issue 18): the values are the file's, nothing reaches a controller.
+    if (m_store->isFile() && e.state != ParameterStore::State::WriteFailed)
+        stateTip =
+            e.state == ParameterStore::State::Unknown  ? tr("The profile file lacks this value")
+            : e.state == ParameterStore::State::InSync ? tr("The profile file holds this value")
+            : e.device ? tr("Edited, not saved yet (the file holds %1)")
+                             .arg(m_parameter.displayRaw(*e.device, lang))
+                       : tr("Edited, not saved yet");
     const QString rejection = rejectionText();
     if (!rejection.isEmpty()) {
         tint = QColor(230, 40, 40);
