@@ -2,8 +2,8 @@
 # Installs what StepCom needs from Debian/Ubuntu packages, only what is missing.
 #   scripts/deps.sh          build and run
 #   scripts/deps.sh --test   also the test peers (mbpoll, socat, pymodbus, Xvfb), the package
-#                            checks (dpkg-dev, desktop-file-utils, appstream) and clang with
-#                            libFuzzer (scripts/fuzz.sh)
+#                            checks (dpkg-dev, desktop-file-utils, appstream), clang with
+#                            libFuzzer (scripts/fuzz.sh) and clang-format (scripts/check-format.sh)
 set -euo pipefail
 
 packages=(build-essential cmake ninja-build pkg-config
@@ -13,7 +13,7 @@ packages=(build-essential cmake ninja-build pkg-config
           qt6-qpa-plugins fonts-noto-cjk help2man)
 if [[ "${1:-}" == "--test" ]]; then
     packages+=(mbpoll socat python3-pymodbus xvfb xauth dpkg-dev file poppler-utils
-               desktop-file-utils appstream clang libclang-rt-dev)
+               desktop-file-utils appstream clang libclang-rt-dev clang-format)
 fi
 
 missing=()

@@ -3,6 +3,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/deps.sh --test
+scripts/check-format.sh # the tree as .clang-format says, before anything is built
 scripts/build.sh
 build=${BUILD_DIR:-build}
 ctest --test-dir "$build" --output-on-failure --timeout 300 -j 2 "$@"

@@ -99,6 +99,41 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BackupStore</name>
+    <message>
+        <source>apply a profile</source>
+        <translation>apply a profile</translation>
+    </message>
+    <message>
+        <source>factory reset</source>
+        <translation>factory reset</translation>
+    </message>
+    <message>
+        <source>save to flash</source>
+        <translation>save to flash</translation>
+    </message>
+    <message>
+        <source>device id change</source>
+        <translation>device id change</translation>
+    </message>
+    <message>
+        <source>baud rate change</source>
+        <translation>baud rate change</translation>
+    </message>
+    <message>
+        <source>cannot create the backup folder %1</source>
+        <translation>cannot create the backup folder %1</translation>
+    </message>
+    <message>
+        <source>no settings to back up: the controller was not read</source>
+        <translation>no settings to back up: the controller was not read</translation>
+    </message>
+    <message>
+        <source>Backup before %1</source>
+        <translation>Backup before %1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusScanDialog</name>
     <message>
         <source>Scan bus</source>
@@ -328,6 +363,466 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CertificateSection</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Commissioning checklist</source>
+        <translation>Commissioning checklist</translation>
+    </message>
+    <message>
+        <source>No commissioning checklist was recorded for this machine: this report shows settings, not tests.</source>
+        <translation>No commissioning checklist was recorded for this machine: this report shows settings, not tests.</translation>
+    </message>
+    <message>
+        <source>Checklist file: %1</source>
+        <translation>Checklist file: %1</translation>
+    </message>
+    <message>
+        <source>The checklist was last run with other settings (fingerprint %1); this report&apos;s settings have the fingerprint %2.</source>
+        <translation>The checklist was last run with other settings (fingerprint %1); this report&apos;s settings have the fingerprint %2.</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Step</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>Result</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Measured</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Note</translation>
+    </message>
+    <message>
+        <source>%1 (attempt %2)</source>
+        <translation>%1 (attempt %2)</translation>
+    </message>
+    <message>
+        <source>Software travel limits</source>
+        <translation>Software travel limits</translation>
+    </message>
+    <message>
+        <source>StepCom&apos;s own limits for steps, moves to a position and jogs; not controller registers. The limit switches stay the machine&apos;s protection.</source>
+        <translation>StepCom&apos;s own limits for steps, moves to a position and jogs; not controller registers. The limit switches stay the machine&apos;s protection.</translation>
+    </message>
+    <message>
+        <source>Motor</source>
+        <translation>Motor</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>open</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Signatures</source>
+        <translation>Signatures</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Role</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Signature</source>
+        <translation>Signature</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Date</translation>
+    </message>
+    <message>
+        <source>Commissioned by</source>
+        <translation>Commissioned by</translation>
+    </message>
+    <message>
+        <source>Accepted by (customer)</source>
+        <translation>Accepted by (customer)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::Checklist</name>
+    <message>
+        <source>%1: a result is passed, failed or skipped, not pending</source>
+        <translation>%1: a result is passed, failed or skipped, not pending</translation>
+    </message>
+    <message>
+        <source>%1: the attempt has no valid time</source>
+        <translation>%1: the attempt has no valid time</translation>
+    </message>
+    <message>
+        <source>%1: the note has %2 characters (at most %3)</source>
+        <translation>%1: the note has %2 characters (at most %3)</translation>
+    </message>
+    <message>
+        <source>%1: %2 measurements (at most %3)</source>
+        <translation>%1: %2 measurements (at most %3)</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a measurement key (1-40 of a-z, 0-9, _ and .)</source>
+        <translation>%1: &quot;%2&quot; is not a measurement key (1-40 of a-z, 0-9, _ and .)</translation>
+    </message>
+    <message>
+        <source>%1: the measurement &quot;%2&quot; is too long</source>
+        <translation>%1: the measurement &quot;%2&quot; is too long</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a step of this checklist</source>
+        <translation>&quot;%1&quot; is not a step of this checklist</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a step of this checklist (%2 motor(s))</source>
+        <translation>&quot;%1&quot; is not a step of this checklist (%2 motor(s))</translation>
+    </message>
+    <message>
+        <source>%1: %2 attempts (at most %3)</source>
+        <translation>%1: %2 attempts (at most %3)</translation>
+    </message>
+    <message>
+        <source>%1: the attempts must be numbered upwards (found %2 after %3)</source>
+        <translation>%1: the attempts must be numbered upwards (found %2 after %3)</translation>
+    </message>
+    <message>
+        <source>Not started</source>
+        <translation>Not started</translation>
+    </message>
+    <message>
+        <source>In progress: not every step was run</source>
+        <translation>In progress: not every step was run</translation>
+    </message>
+    <message>
+        <source>Failed: at least one step failed</source>
+        <translation>Failed: at least one step failed</translation>
+    </message>
+    <message>
+        <source>Passed, with skipped steps</source>
+        <translation>Passed, with skipped steps</translation>
+    </message>
+    <message>
+        <source>Passed: every step passed</source>
+        <translation>Passed: every step passed</translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps passed, %3 failed, %4 skipped, %5 not run</source>
+        <translation>%1 of %2 steps passed, %3 failed, %4 skipped, %5 not run</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistFile</name>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>true/false</source>
+        <translation>true/false</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>a number</translation>
+    </message>
+    <message>
+        <source>a text</source>
+        <translation>a text</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>a list</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>an object</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nothing</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>the file is empty</translation>
+    </message>
+    <message>
+        <source>the file is %1 bytes: far too large for a checklist</source>
+        <translation>the file is %1 bytes: far too large for a checklist</translation>
+    </message>
+    <message>
+        <source>not valid JSON at line %1, column %2: %3</source>
+        <translation>not valid JSON at line %1, column %2: %3</translation>
+    </message>
+    <message>
+        <source>the file holds a JSON list, not a checklist</source>
+        <translation>the file holds a JSON list, not a checklist</translation>
+    </message>
+    <message>
+        <source>… and %1 more problems</source>
+        <translation>… and %1 more problems</translation>
+    </message>
+    <message>
+        <source>%1unknown field &quot;%2&quot; (allowed: %3)</source>
+        <translation>%1unknown field &quot;%2&quot; (allowed: %3)</translation>
+    </message>
+    <message>
+        <source>%1&quot;%2&quot; must be a text, found %3</source>
+        <translation>%1&quot;%2&quot; must be a text, found %3</translation>
+    </message>
+    <message>
+        <source>this is a profile, not a checklist</source>
+        <translation>this is a profile, not a checklist</translation>
+    </message>
+    <message>
+        <source>not a StepCom checklist: &quot;format&quot; must be &quot;%1&quot;</source>
+        <translation>not a StepCom checklist: &quot;format&quot; must be &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>checklist schema %1 is newer than this StepCom reads (%2): update StepCom</source>
+        <translation>checklist schema %1 is newer than this StepCom reads (%2): update StepCom</translation>
+    </message>
+    <message>
+        <source>&quot;schema&quot; must be %1</source>
+        <translation>&quot;schema&quot; must be %1</translation>
+    </message>
+    <message>
+        <source>the checklist is for register map &quot;%1&quot;, but this map is &quot;%2&quot;</source>
+        <translation>the checklist is for register map &quot;%1&quot;, but this map is &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>&quot;machine&quot; and &quot;settingsFingerprint&quot; hold at most 200 characters</source>
+        <translation>&quot;machine&quot; and &quot;settingsFingerprint&quot; hold at most 200 characters</translation>
+    </message>
+    <message>
+        <source>&quot;steps&quot; must be a list, found %1</source>
+        <translation>&quot;steps&quot; must be a list, found %1</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>step %1</translation>
+    </message>
+    <message>
+        <source>%1: must be an object, found %2</source>
+        <translation>%1: must be an object, found %2</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; appears more than once</source>
+        <translation>%1: &quot;%2&quot; appears more than once</translation>
+    </message>
+    <message>
+        <source>%1: &quot;attempts&quot; must be a list, found %2</source>
+        <translation>%1: &quot;attempts&quot; must be a list, found %2</translation>
+    </message>
+    <message>
+        <source>%1: &quot;attempt&quot; must be a whole number from 1</source>
+        <translation>%1: &quot;attempt&quot; must be a whole number from 1</translation>
+    </message>
+    <message>
+        <source>%1: &quot;result&quot; must be passed, failed or skipped, found &quot;%2&quot;</source>
+        <translation>%1: &quot;result&quot; must be passed, failed or skipped, found &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>%1: &quot;time&quot; is not a date and time (2024-05-31T14:02:00Z): &quot;%2&quot;</source>
+        <translation>%1: &quot;time&quot; is not a date and time (2024-05-31T14:02:00Z): &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>%1: &quot;measurements&quot; must be a list, found %2</source>
+        <translation>%1: &quot;measurements&quot; must be a list, found %2</translation>
+    </message>
+    <message>
+        <source>no register map to check the checklist against</source>
+        <translation>no register map to check the checklist against</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1: no such file</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes, far too large for a checklist</source>
+        <translation>%1: %2 bytes, far too large for a checklist</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistStep</name>
+    <message>
+        <source>Not run</source>
+        <translation>Not run</translation>
+    </message>
+    <message>
+        <source>Passed</source>
+        <translation>Passed</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>Failed</translation>
+    </message>
+    <message>
+        <source>Skipped</source>
+        <translation>Skipped</translation>
+    </message>
+    <message>
+        <source>direction</source>
+        <translation>direction</translation>
+    </message>
+    <message>
+        <source>travel calibration</source>
+        <translation>travel calibration</translation>
+    </message>
+    <message>
+        <source>positive limit input</source>
+        <translation>positive limit input</translation>
+    </message>
+    <message>
+        <source>negative limit input</source>
+        <translation>negative limit input</translation>
+    </message>
+    <message>
+        <source>home input</source>
+        <translation>home input</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>homing</translation>
+    </message>
+    <message>
+        <source>Machine: homing order</source>
+        <translation>Machine: homing order</translation>
+    </message>
+    <message>
+        <source>Machine: interpolation test</source>
+        <translation>Machine: interpolation test</translation>
+    </message>
+    <message>
+        <source>Machine: save to flash and read back</source>
+        <translation>Machine: save to flash and read back</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2</source>
+        <translation>Motor %1: %2</translation>
+    </message>
+    <message>
+        <source>Move motor %1 a small step forward. Did the axis move toward + ? No offers to flip its direction register.</source>
+        <translation>Move motor %1 a small step forward. Did the axis move toward + ? No offers to flip its direction register.</translation>
+    </message>
+    <message>
+        <source>Move motor %1 by a distance you choose, measure what the axis really moved and type it in: StepCom proposes the corrected pitch (pitch × measured ÷ commanded).</source>
+        <translation>Move motor %1 by a distance you choose, measure what the axis really moved and type it in: StepCom proposes the corrected pitch (pitch × measured ÷ commanded).</translation>
+    </message>
+    <message>
+        <source>Press the positive limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</source>
+        <translation>Press the positive limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</translation>
+    </message>
+    <message>
+        <source>Press the negative limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</source>
+        <translation>Press the negative limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</translation>
+    </message>
+    <message>
+        <source>Press the home switch of motor %1 by hand (often the negative limit&apos;s switch): StepCom compares the input that changed with the configuration.</source>
+        <translation>Press the home switch of motor %1 by hand (often the negative limit&apos;s switch): StepCom compares the input that changed with the configuration.</translation>
+    </message>
+    <message>
+        <source>Home motor %1 and check that it ended on its home switch, referenced.</source>
+        <translation>Home motor %1 and check that it ended on its home switch, referenced.</translation>
+    </message>
+    <message>
+        <source>Home the machine in the configured order and check that every axis in the order ended referenced.</source>
+        <translation>Home the machine in the configured order and check that every axis in the order ended referenced.</translation>
+    </message>
+    <message>
+        <source>Run the configured arc or line and check that the axes ended at its end point.</source>
+        <translation>Run the configured arc or line and check that the axes ended at its end point.</translation>
+    </message>
+    <message>
+        <source>Save the parameters to flash, read them back and compare them with what was written.</source>
+        <translation>Save the parameters to flash, read them back and compare them with what was written.</translation>
+    </message>
+    <message>
+        <source>Commanded distance</source>
+        <translation>Commanded distance</translation>
+    </message>
+    <message>
+        <source>Measured distance</source>
+        <translation>Measured distance</translation>
+    </message>
+    <message>
+        <source>Pitch before</source>
+        <translation>Pitch before</translation>
+    </message>
+    <message>
+        <source>Pitch after</source>
+        <translation>Pitch after</translation>
+    </message>
+    <message>
+        <source>Moved toward +</source>
+        <translation>Moved toward +</translation>
+    </message>
+    <message>
+        <source>Direction before</source>
+        <translation>Direction before</translation>
+    </message>
+    <message>
+        <source>Direction after</source>
+        <translation>Direction after</translation>
+    </message>
+    <message>
+        <source>Input configured</source>
+        <translation>Input configured</translation>
+    </message>
+    <message>
+        <source>Input that answered</source>
+        <translation>Input that answered</translation>
+    </message>
+    <message>
+        <source>Fix written</source>
+        <translation>Fix written</translation>
+    </message>
+    <message>
+        <source>End position</source>
+        <translation>End position</translation>
+    </message>
+    <message>
+        <source>Expected end</source>
+        <translation>Expected end</translation>
+    </message>
+    <message>
+        <source>Homing order</source>
+        <translation>Homing order</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>Read back</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CommissioningReport</name>
     <message>
         <source>Controller</source>
@@ -494,16 +989,60 @@
         <translation>Notes</translation>
     </message>
     <message>
-        <source>Signature: ____________________</source>
-        <translation>Signature: ____________________</translation>
-    </message>
-    <message>
         <source>%1: the report is written as .pdf or .html, not .%2</source>
         <translation>%1: the report is written as .pdf or .html, not .%2</translation>
     </message>
     <message>
         <source>cannot write %1: %2</source>
         <translation>cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>Controller (as the profile records it)</source>
+        <translation>Controller (as the profile records it)</translation>
+    </message>
+    <message>
+        <source>none: made from a file, not read from a controller</source>
+        <translation>none: made from a file, not read from a controller</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Baud rate</translation>
+    </message>
+    <message>
+        <source>the profile was made with %1</source>
+        <translation>the profile was made with %1</translation>
+    </message>
+    <message>
+        <source>Profile file</source>
+        <translation>Profile file</translation>
+    </message>
+    <message>
+        <source>Profile saved</source>
+        <translation>Profile saved</translation>
+    </message>
+    <message>
+        <source>%1 by StepCom %2</source>
+        <translation>%1 by StepCom %2</translation>
+    </message>
+    <message>
+        <source>Report date</source>
+        <translation>Report date</translation>
+    </message>
+    <message>
+        <source>What of the profile this register map cannot show</source>
+        <translation>What of the profile this register map cannot show</translation>
+    </message>
+    <message>
+        <source>Commissioning report (from a profile file)</source>
+        <translation>Commissioning report (from a profile file)</translation>
+    </message>
+    <message>
+        <source>Made from the profile file %1, not read from a controller: these are the values the file holds; a controller may hold others.</source>
+        <translation>Made from the profile file %1, not read from a controller: these are the values the file holds; a controller may hold others.</translation>
+    </message>
+    <message>
+        <source>Settings fingerprint</source>
+        <translation>Settings fingerprint</translation>
     </message>
 </context>
 <context>
@@ -729,6 +1268,14 @@
         <translation>Not connected.</translation>
     </message>
     <message>
+        <source>%1 is open, but the controller does not answer.</source>
+        <translation>%1 is open, but the controller does not answer.</translation>
+    </message>
+    <message>
+        <source>%1 is open; waiting for the controller to answer…</source>
+        <translation>%1 is open; waiting for the controller to answer…</translation>
+    </message>
+    <message>
         <source>Network</source>
         <translation>Network</translation>
     </message>
@@ -778,6 +1325,17 @@
     <message>
         <source>no sample was read: every poll failed (see the errors above)</source>
         <translation>no sample was read: every poll failed (see the errors above)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlMotionWait</name>
+    <message>
+        <source>%1 would not move anything here (nothing in the homing order, or every motor runs): nothing to wait for</source>
+        <translation>%1 would not move anything here (nothing in the homing order, or every motor runs): nothing to wait for</translation>
+    </message>
+    <message>
+        <source>%1: sent, waiting for the motion to end</source>
+        <translation>%1: sent, waiting for the motion to end</translation>
     </message>
 </context>
 <context>
@@ -933,6 +1491,22 @@
     <message>
         <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
         <translation>no command given (params, read, write, command, monitor, dump, diff, apply, report)</translation>
+    </message>
+    <message>
+        <source>report: make the report from this profile file, not from a controller.</source>
+        <translation>report: make the report from this profile file, not from a controller.</translation>
+    </message>
+    <message>
+        <source>profile</source>
+        <translation>profile</translation>
+    </message>
+    <message>
+        <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
+        <translation>apply: do not save a backup of the controller&apos;s settings before writing.</translation>
+    </message>
+    <message>
+        <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
+        <translation>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</translation>
     </message>
     <message>
         <source>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</source>
@@ -1139,8 +1713,111 @@
         <translation>report written to %1</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</translation>
+        <source>unknown command &apos;%1&apos; (%2)</source>
+        <translation>unknown command &apos;%1&apos; (%2)</translation>
+    </message>
+    <message>
+        <source>diff needs one profile file (compared with the controller) or two (compared with each other)</source>
+        <translation>diff needs one profile file (compared with the controller) or two (compared with each other)</translation>
+    </message>
+    <message>
+        <source>left out of the comparison:</source>
+        <translation>left out of the comparison:</translation>
+    </message>
+    <message numerus="yes">
+        <source>the controller holds every value both maps have; %n left out</source>
+        <translation>
+            <numerusform>the controller holds every value both maps have; %n left out</numerusform>
+            <numerusform>the controller holds every value both maps have; %n left out</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing was compared</source>
+        <translation>nothing was compared</translation>
+    </message>
+    <message>
+        <source>A = %1: &quot;%2&quot;, register map %3</source>
+        <translation>A = %1: &quot;%2&quot;, register map %3</translation>
+    </message>
+    <message>
+        <source>B = %1: &quot;%2&quot;, register map %3</source>
+        <translation>B = %1: &quot;%2&quot;, register map %3</translation>
+    </message>
+    <message>
+        <source>differ (A -&gt; B):</source>
+        <translation>differ (A -&gt; B):</translation>
+    </message>
+    <message>
+        <source>only in A (%1):</source>
+        <translation>only in A (%1):</translation>
+    </message>
+    <message>
+        <source>only in B (%1):</source>
+        <translation>only in B (%1):</translation>
+    </message>
+    <message>
+        <source>not settings of register map %1, or out of its range (as the files hold them, A -&gt; B):</source>
+        <translation>not settings of register map %1, or out of its range (as the files hold them, A -&gt; B):</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(none)</translation>
+    </message>
+    <message>
+        <source>the two profiles hold the same values</source>
+        <translation>the two profiles hold the same values</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map</source>
+        <translation>%1 differ, %2 only in A, %3 only in B, %4 outside this map</translation>
+    </message>
+    <message>
+        <source>not applied:</source>
+        <translation>not applied:</translation>
+    </message>
+    <message>
+        <source>the profile holds no setting of this map: nothing to apply</source>
+        <translation>the profile holds no setting of this map: nothing to apply</translation>
+    </message>
+    <message>
+        <source>the controller already holds every value both maps have</source>
+        <translation>the controller already holds every value both maps have</translation>
+    </message>
+    <message>
+        <source>no report: %1 is not a profile StepCom can read</source>
+        <translation>no report: %1 is not a profile StepCom can read</translation>
+    </message>
+    <message>
+        <source>not in the report:</source>
+        <translation>not in the report:</translation>
+    </message>
+    <message>
+        <source>report written to %1, made from the profile file %2 (no controller was read)</source>
+        <translation>report written to %1, made from the profile file %2 (no controller was read)</translation>
+    </message>
+    <message>
+        <source>no backup of the controller&apos;s settings could be saved (%1): nothing was written (--no-backup applies without one)</source>
+        <translation>no backup of the controller&apos;s settings could be saved (%1): nothing was written (--no-backup applies without one)</translation>
+    </message>
+    <message>
+        <source>backup of the controller&apos;s settings: %1</source>
+        <translation>backup of the controller&apos;s settings: %1</translation>
+    </message>
+    <message>
+        <source>no report: the checklist beside the profile cannot be read</source>
+        <translation>no report: the checklist beside the profile cannot be read</translation>
+    </message>
+    <message>
+        <source>with the commissioning checklist %1: %2</source>
+        <translation>with the commissioning checklist %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: sent (add --wait to wait for how it ends)</source>
+        <translation>%1: sent (add --wait to wait for how it ends)</translation>
+    </message>
+    <message>
+        <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
+        <translation>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</translation>
     </message>
 </context>
 <context>
@@ -1487,10 +2164,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Cannot connect: %1</translation>
     </message>
     <message>
-        <source>Connected to %1</source>
-        <translation>Connected to %1</translation>
-    </message>
-    <message>
         <source>Link lost: %1</source>
         <translation>Link lost: %1</translation>
     </message>
@@ -1564,6 +2237,53 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n requests</numerusform>
         </translation>
     </message>
+    <message>
+        <source>the built-in simulator was replaced</source>
+        <translation>the built-in simulator was replaced</translation>
+    </message>
+    <message>
+        <source>this program has no built-in simulator</source>
+        <translation>this program has no built-in simulator</translation>
+    </message>
+    <message>
+        <source>the page was left</source>
+        <translation>the page was left</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>the window lost focus</translation>
+    </message>
+    <message>
+        <source>the window closes</source>
+        <translation>the window closes</translation>
+    </message>
+    <message>
+        <source>Opened %1; asking the controller</source>
+        <translation>Opened %1; asking the controller</translation>
+    </message>
+    <message>
+        <source>The port is open, but the controller at %1 does not answer.</source>
+        <translation>The port is open, but the controller at %1 does not answer.</translation>
+    </message>
+    <message>
+        <source>The controller answers.</source>
+        <translation>The controller answers.</translation>
+    </message>
+    <message>
+        <source>%1: sent</source>
+        <translation>%1: sent</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::DirectionCheck</name>
+    <message>
+        <source>motor %1 has no direction register in this register map</source>
+        <translation>motor %1 has no direction register in this register map</translation>
+    </message>
+    <message>
+        <source>%1 does not have exactly two values: StepCom cannot flip it</source>
+        <translation>%1 does not have exactly two values: StepCom cannot flip it</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::EmergencyStop</name>
@@ -1632,6 +2352,57 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>Write failed: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::InputTest</name>
+    <message>
+        <source>positive limit</source>
+        <translation>positive limit</translation>
+    </message>
+    <message>
+        <source>negative limit</source>
+        <translation>negative limit</translation>
+    </message>
+    <message>
+        <source>home switch</source>
+        <translation>home switch</translation>
+    </message>
+    <message>
+        <source>the %1 of motor %2</source>
+        <translation>the %1 of motor %2</translation>
+    </message>
+    <message>
+        <source>No input changed while %1 was pressed, and none is configured for it. If the machine has no such switch, skip this step; otherwise check the switch, its wiring and its 24 V supply.</source>
+        <translation>No input changed while %1 was pressed, and none is configured for it. If the machine has no such switch, skip this step; otherwise check the switch, its wiring and its 24 V supply.</translation>
+    </message>
+    <message>
+        <source>No input changed while %1 was pressed (configured: %2). Check the switch, its wiring and its 24 V supply (the inputs are active on a 24 V negative signal), then try again.</source>
+        <translation>No input changed while %1 was pressed (configured: %2). Check the switch, its wiring and its 24 V supply (the inputs are active on a 24 V negative signal), then try again.</translation>
+    </message>
+    <message>
+        <source>Several inputs changed while %1 was pressed (%2): press only this switch and try again.</source>
+        <translation>Several inputs changed while %1 was pressed (%2): press only this switch and try again.</translation>
+    </message>
+    <message>
+        <source>%1 is also configured as the %2 of motor %3</source>
+        <translation>%1 is also configured as the %2 of motor %3</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, as configured.</source>
+        <translation>%1 answered for %2, as configured.</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, which is not configured (none). Proposed: %3.</source>
+        <translation>%1 answered for %2, which is not configured (none). Proposed: %3.</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, but %3 is configured: the wiring and the configuration disagree. Proposed: %4 (or rewire the switch to %3).</source>
+        <translation>%1 answered for %2, but %3 is configured: the wiring and the configuration disagree. Proposed: %4 (or rewire the switch to %3).</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, and this register map cannot name %1 there.</source>
+        <translation>%1 answered for %2, and this register map cannot name %1 there.</translation>
     </message>
 </context>
 <context>
@@ -2024,24 +2795,16 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Motor %1: jog %2 not done: %3</source>
         <translation>Motor %1: jog %2 not done: %3</translation>
     </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::JogPanel</name>
     <message>
         <source>stop button</source>
         <translation>stop button</translation>
-    </message>
-    <message>
-        <source>Single move</source>
-        <translation>Single move</translation>
-    </message>
-    <message>
-        <source>Homing</source>
-        <translation>Homing</translation>
-    </message>
-    <message>
-        <source>%1 done</source>
-        <translation>%1 done</translation>
     </message>
     <message>
         <source>Not connected.</source>
@@ -2191,6 +2954,37 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Run motor %1 in reverse to its home input and set its position to 0</source>
         <translation>Run motor %1 in reverse to its home input and set its position to 0</translation>
     </message>
+    <message>
+        <source>Reference: %1</source>
+        <translation>Reference: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::LinkHealth</name>
+    <message>
+        <source>Port closed</source>
+        <translation>Port closed</translation>
+    </message>
+    <message>
+        <source>Opening the port…</source>
+        <translation>Opening the port…</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for the controller…</source>
+        <translation>Port open, waiting for the controller…</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>Not answering</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>Connected</translation>
+    </message>
+    <message>
+        <source>The port is open but no controller answers. Likely causes: another device id (factory: 1), another baud rate (factory: 9600) or parity (factory: none), the RS-485 wires A and B swapped, or the controller has no power. A bus scan tries the ids and baud rates for you.</source>
+        <translation>The port is open but no controller answers. Likely causes: another device id (factory: 1), another baud rate (factory: 9600) or parity (factory: none), the RS-485 wires A and B swapped, or the controller has no power. A bus scan tries the ids and baud rates for you.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::LinkSettings</name>
@@ -2280,6 +3074,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</source>
         <translation>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>Not answering</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for an answer…</source>
+        <translation>Port open, waiting for an answer…</translation>
     </message>
     <message>
         <source>errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)</source>
@@ -2404,16 +3206,15 @@ Every other master on the bus must use the new settings too, and no other device
         </translation>
     </message>
     <message>
-        <source>another page was chosen</source>
-        <translation>another page was chosen</translation>
+        <source>%1%2 — profile file, no controller — StepCom</source>
+        <translation>%1%2 — profile file, no controller — StepCom</translation>
     </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>the window lost focus</translation>
-    </message>
-    <message>
-        <source>the window closes</source>
-        <translation>the window closes</translation>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file. Close anyway and lose them?</source>
+        <translation>
+            <numerusform>%n edited value of %1 are not saved in the file. Close anyway and lose them?</numerusform>
+            <numerusform>%n edited values of %1 are not saved in the file. Close anyway and lose them?</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2759,28 +3560,135 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</source>
         <translation>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</translation>
     </message>
+    <message>
+        <source>The profile file does not set the mode.</source>
+        <translation>The profile file does not set the mode.</translation>
+    </message>
+    <message>
+        <source>The profile sets the normal mode.</source>
+        <translation>The profile sets the normal mode.</translation>
+    </message>
+    <message>
+        <source>The profile sets special mode %1.</source>
+        <translation>The profile sets special mode %1.</translation>
+    </message>
 </context>
 <context>
-    <name>stepcom::MotionPage</name>
+    <name>stepcom::MotionJudge</name>
+    <message>
+        <source>Motor %1&apos;s positive limit (IN%2) is already ON and %3 drives motor %1 forward: it stops at once.</source>
+        <translation>Motor %1&apos;s positive limit (IN%2) is already ON and %3 drives motor %1 forward: it stops at once.</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s negative limit (IN%2) is already ON and %3 drives motor %1 in reverse: it stops at once.</source>
+        <translation>Motor %1&apos;s negative limit (IN%2) is already ON and %3 drives motor %1 in reverse: it stops at once.</translation>
+    </message>
+    <message>
+        <source>the single move</source>
+        <translation>the single move</translation>
+    </message>
+    <message>
+        <source>the return to data zero</source>
+        <translation>the return to data zero</translation>
+    </message>
+    <message>
+        <source>the approach to the start point</source>
+        <translation>the approach to the start point</translation>
+    </message>
+    <message>
+        <source>the arc</source>
+        <translation>the arc</translation>
+    </message>
+    <message>
+        <source>the line</source>
+        <translation>the line</translation>
+    </message>
+    <message>
+        <source>Single move of motor %1</source>
+        <translation>Single move of motor %1</translation>
+    </message>
+    <message>
+        <source>Homing motor %1</source>
+        <translation>Homing motor %1</translation>
+    </message>
     <message>
         <source>Homing in order</source>
         <translation>Homing in order</translation>
     </message>
     <message>
-        <source>Returning to data zero</source>
-        <translation>Returning to data zero</translation>
+        <source>Return to data zero</source>
+        <translation>Return to data zero</translation>
     </message>
+    <message>
+        <source>Arc</source>
+        <translation>Arc</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>stop</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>link lost</translation>
+    </message>
+    <message>
+        <source>an unknown position</source>
+        <translation>an unknown position</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s positive limit (IN%2) is ON</source>
+        <translation>motor %1&apos;s positive limit (IN%2) is ON</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s negative limit (IN%2) is ON</source>
+        <translation>motor %1&apos;s negative limit (IN%2) is ON</translation>
+    </message>
+    <message>
+        <source>%1: done at %2</source>
+        <translation>%1: done at %2</translation>
+    </message>
+    <message>
+        <source>%1: referenced at %2</source>
+        <translation>%1: referenced at %2</translation>
+    </message>
+    <message>
+        <source>no stop, limit or E-STOP seen</source>
+        <translation>no stop, limit or E-STOP seen</translation>
+    </message>
+    <message>
+        <source>%1: stopped at %2, not at the end point %3 (%4)</source>
+        <translation>%1: stopped at %2, not at the end point %3 (%4)</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): not referenced</source>
+        <translation>%1 interrupted at %2 (%3): not referenced</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): motor %4 not referenced</source>
+        <translation>%1 interrupted at %2 (%3): motor %4 not referenced</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: not referenced</source>
+        <translation>%1 ended without the home input at %2: not referenced</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: motor %3 not referenced</source>
+        <translation>%1 ended without the home input at %2: motor %3 not referenced</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MotionPage</name>
     <message>
         <source>Coordinates zeroed</source>
         <translation>Coordinates zeroed</translation>
-    </message>
-    <message>
-        <source>motor %1 at %2</source>
-        <translation>motor %1 at %2</translation>
-    </message>
-    <message>
-        <source>%1: done (%2)</source>
-        <translation>%1: done (%2)</translation>
     </message>
     <message>
         <source>Jog and home</source>
@@ -2801,14 +3709,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Homes %1.</source>
         <translation>Homes %1.</translation>
-    </message>
-    <message>
-        <source>the page was left</source>
-        <translation>the page was left</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>the window lost focus</translation>
     </message>
     <message>
         <source>&amp;Clear</source>
@@ -2923,6 +3823,199 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::OfflineActions</name>
+    <message>
+        <source>&amp;New profile from factory values</source>
+        <translation>&amp;New profile from factory values</translation>
+    </message>
+    <message>
+        <source>Edit a new profile, starting from the factory values, without a controller</source>
+        <translation>Edit a new profile, starting from the factory values, without a controller</translation>
+    </message>
+    <message>
+        <source>Save p&amp;rofile file</source>
+        <translation>Save p&amp;rofile file</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to its file (no controller is written)</source>
+        <translation>Save the profile being edited to its file (no controller is written)</translation>
+    </message>
+    <message>
+        <source>Save profile file &amp;as…</source>
+        <translation>Save profile file &amp;as…</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to another file</source>
+        <translation>Save the profile being edited to another file</translation>
+    </message>
+    <message>
+        <source>&amp;Close profile file</source>
+        <translation>&amp;Close profile file</translation>
+    </message>
+    <message>
+        <source>Stop editing the profile file</source>
+        <translation>Stop editing the profile file</translation>
+    </message>
+    <message>
+        <source>&amp;Compare profiles…</source>
+        <translation>&amp;Compare profiles…</translation>
+    </message>
+    <message>
+        <source>Compare two profile files row by row; no controller is needed</source>
+        <translation>Compare two profile files row by row; no controller is needed</translation>
+    </message>
+    <message>
+        <source>Report from a &amp;profile…</source>
+        <translation>Report from a &amp;profile…</translation>
+    </message>
+    <message>
+        <source>The commissioning report made from a profile file (or the file being edited), not from a controller</source>
+        <translation>The commissioning report made from a profile file (or the file being edited), not from a controller</translation>
+    </message>
+    <message>
+        <source>Unsaved edits</source>
+        <translation>Unsaved edits</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file.</source>
+        <translation>
+            <numerusform>%n edited value of %1 are not saved in the file.</numerusform>
+            <numerusform>%n edited values of %1 are not saved in the file.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profile cannot be edited</source>
+        <translation>The profile cannot be edited</translation>
+    </message>
+    <message>
+        <source>Editing the profile file %1 without a controller</source>
+        <translation>Editing the profile file %1 without a controller</translation>
+    </message>
+    <message>
+        <source>New profile</source>
+        <translation>New profile</translation>
+    </message>
+    <message>
+        <source>Editing a new profile with the factory values; nothing is written to a controller</source>
+        <translation>Editing a new profile with the factory values; nothing is written to a controller</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>Save profile</translation>
+    </message>
+    <message>
+        <source>Saved the profile to %1 (no controller was written)</source>
+        <translation>Saved the profile to %1 (no controller was written)</translation>
+    </message>
+    <message numerus="yes">
+        <source>The file lacked %n setting(s); they were saved with their factory values: %1</source>
+        <translation>
+            <numerusform>The file lacked %n setting; they were saved with their factory values: %1</numerusform>
+            <numerusform>The file lacked %n settings; they were saved with their factory values: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save profile file as</source>
+        <translation>Save profile file as</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom profiles (*.json)</translation>
+    </message>
+    <message>
+        <source>Compare profiles: choose two files</source>
+        <translation>Compare profiles: choose two files</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom profiles (*.json);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Compare profiles</source>
+        <translation>Compare profiles</translation>
+    </message>
+    <message numerus="yes">
+        <source>Choose exactly two profile files (%n chosen).</source>
+        <translation>
+            <numerusform>Choose exactly two profile files (%n chosen).</numerusform>
+            <numerusform>Choose exactly two profile files (%n chosen).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profiles cannot be compared</source>
+        <translation>The profiles cannot be compared</translation>
+    </message>
+    <message>
+        <source>Compared %1 with %2</source>
+        <translation>Compared %1 with %2</translation>
+    </message>
+    <message>
+        <source>Report from a profile: choose the profile</source>
+        <translation>Report from a profile: choose the profile</translation>
+    </message>
+    <message>
+        <source>Report from a profile</source>
+        <translation>Report from a profile</translation>
+    </message>
+    <message>
+        <source>Notes for the report (empty: the profile&apos;s own notes):</source>
+        <translation>Notes for the report (empty: the profile&apos;s own notes):</translation>
+    </message>
+    <message>
+        <source>Save the report made from the profile</source>
+        <translation>Save the report made from the profile</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Report made from the profile file %1 (no controller was read) written to %2</source>
+        <translation>Report made from the profile file %1 (no controller was read) written to %2</translation>
+    </message>
+    <message>
+        <source>(with edits not saved in the file)</source>
+        <translation>(with edits not saved in the file)</translation>
+    </message>
+    <message>
+        <source>new profile</source>
+        <translation>new profile</translation>
+    </message>
+    <message numerus="yes">
+        <source>Profile applied: %n value(s) written and verified</source>
+        <translation>
+            <numerusform>Profile applied: %n value written and verified</numerusform>
+            <numerusform>Profile applied: %n values written and verified</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Connected: the values of %1 are compared with the controller&apos;s; nothing is written until you apply checked rows</source>
+        <translation>Connected: the values of %1 are compared with the controller&apos;s; nothing is written until you apply checked rows</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edit(s) of %1 were never saved: they are in the comparison, not in the file</source>
+        <translation>
+            <numerusform>%n edit of %1 were never saved: they are in the comparison, not in the file</numerusform>
+            <numerusform>%n edits of %1 were never saved: they are in the comparison, not in the file</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::OfflineBanner</name>
+    <message>
+        <source>Editing the profile file %1 — no controller. Nothing here moves or writes a controller; connect to compare the values with one and apply them.</source>
+        <translation>Editing the profile file %1 — no controller. Nothing here moves or writes a controller; connect to compare the values with one and apply them.</translation>
+    </message>
+    <message>
+        <source>Edits not saved yet.</source>
+        <translation>Edits not saved yet.</translation>
+    </message>
+    <message>
+        <source>This map cannot take everything the file holds (saved again, the file keeps it; settings it lacks are filled with factory values when you save):</source>
+        <translation>This map cannot take everything the file holds (saved again, the file keeps it; settings it lacks are filled with factory values when you save):</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::Parameter</name>
     <message>
         <source>%1: %2 is not one of %3</source>
@@ -2992,6 +4085,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>Write failed: %1</translation>
+    </message>
+    <message>
+        <source>The profile file lacks this value</source>
+        <translation>The profile file lacks this value</translation>
+    </message>
+    <message>
+        <source>The profile file holds this value</source>
+        <translation>The profile file holds this value</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet (the file holds %1)</source>
+        <translation>Edited, not saved yet (the file holds %1)</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet</source>
+        <translation>Edited, not saved yet</translation>
     </message>
 </context>
 <context>
@@ -3178,6 +4287,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Coil 00103, sent ahead of everything queued</source>
         <translation>Coil 00103, sent ahead of everything queued</translation>
+    </message>
+    <message>
+        <source>⚠ Start is possible, but: %1</source>
+        <translation>⚠ Start is possible, but: %1</translation>
+    </message>
+    <message>
+        <source>%1: running…</source>
+        <translation>%1: running…</translation>
+    </message>
+    <message>
+        <source>Last run: %1</source>
+        <translation>Last run: %1</translation>
     </message>
 </context>
 <context>
@@ -3488,6 +4609,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Commissioning report written to %1</source>
         <translation>Commissioning report written to %1</translation>
     </message>
+    <message>
+        <source>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</source>
+        <translation>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileCompareDialog</name>
@@ -3636,6 +4761,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Close</source>
         <translation>Close</translation>
     </message>
+    <message>
+        <source>Not applied:</source>
+        <translation>Not applied:</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileDiff</name>
@@ -3650,6 +4779,29 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>(not in the profile)</source>
         <translation>(not in the profile)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileDocument</name>
+    <message>
+        <source>new profile</source>
+        <translation>new profile</translation>
+    </message>
+    <message>
+        <source>a controller is connected: open the profile to compare it instead</source>
+        <translation>a controller is connected: open the profile to compare it instead</translation>
+    </message>
+    <message>
+        <source>a controller is connected: disconnect to edit a profile without it</source>
+        <translation>a controller is connected: disconnect to edit a profile without it</translation>
+    </message>
+    <message>
+        <source>Factory values</source>
+        <translation>Factory values</translation>
+    </message>
+    <message>
+        <source>no profile is being edited</source>
+        <translation>no profile is being edited</translation>
     </message>
 </context>
 <context>
@@ -3817,6 +4969,167 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>cannot write %1: %2</source>
         <translation>cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>not in register map &quot;%1&quot;</source>
+        <translation>not in register map &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>a command in register map &quot;%1&quot;, not a setting</source>
+        <translation>a command in register map &quot;%1&quot;, not a setting</translation>
+    </message>
+    <message>
+        <source>a status value in register map &quot;%1&quot;, not a setting</source>
+        <translation>a status value in register map &quot;%1&quot;, not a setting</translation>
+    </message>
+    <message>
+        <source>&quot;stepcom&quot; must be an object, found %1</source>
+        <translation>&quot;stepcom&quot; must be an object, found %1</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;backup&quot; must be {&quot;operation&quot;: one of %1, &quot;device&quot;: text}</source>
+        <translation>&quot;metadata&quot;: &quot;backup&quot; must be {&quot;operation&quot;: one of %1, &quot;device&quot;: text}</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</source>
+        <translation>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileFilesDialog</name>
+    <message>
+        <source>differ</source>
+        <translation>differ</translation>
+    </message>
+    <message>
+        <source>the same</source>
+        <translation>the same</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>only in A</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>only in B</translation>
+    </message>
+    <message>
+        <source>outside this map</source>
+        <translation>outside this map</translation>
+    </message>
+    <message>
+        <source>Motor %1 · %2</source>
+        <translation>Motor %1 · %2</translation>
+    </message>
+    <message>
+        <source>(not a setting of this map)</source>
+        <translation>(not a setting of this map)</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map (%5 of them differ).</source>
+        <translation>%1 differ, %2 only in A, %3 only in B, %4 outside this map (%5 of them differ).</translation>
+    </message>
+    <message>
+        <source>The files hold the same values.</source>
+        <translation>The files hold the same values.</translation>
+    </message>
+    <message>
+        <source>The files differ.</source>
+        <translation>The files differ.</translation>
+    </message>
+    <message>
+        <source>Compare profiles: %1 and %2</source>
+        <translation>Compare profiles: %1 and %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>register map %1</source>
+        <translation>register map %1</translation>
+    </message>
+    <message>
+        <source>Two files compared against register map %1/%2; no controller is read or written.</source>
+        <translation>Two files compared against register map %1/%2; no controller is read or written.</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Group</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Key</translation>
+    </message>
+    <message>
+        <source>Differences only</source>
+        <translation>Differences only</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileVariance</name>
+    <message>
+        <source>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</source>
+        <translation>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</translation>
+    </message>
+    <message>
+        <source>unknown to this map: %1 = %2 (%3)</source>
+        <translation>unknown to this map: %1 = %2 (%3)</translation>
+    </message>
+    <message>
+        <source>cannot be applied: %1</source>
+        <translation>cannot be applied: %1</translation>
+    </message>
+    <message>
+        <source>not in the profile: %1 (%2)</source>
+        <translation>not in the profile: %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReferenceTracker</name>
+    <message>
+        <source>referenced</source>
+        <translation>referenced</translation>
+    </message>
+    <message>
+        <source>not referenced (not homed yet)</source>
+        <translation>not referenced (not homed yet)</translation>
+    </message>
+    <message>
+        <source>not referenced (homing ended without the home input)</source>
+        <translation>not referenced (homing ended without the home input)</translation>
+    </message>
+    <message>
+        <source>not referenced (homing was interrupted)</source>
+        <translation>not referenced (homing was interrupted)</translation>
+    </message>
+    <message>
+        <source>not referenced (E-STOP)</source>
+        <translation>not referenced (E-STOP)</translation>
+    </message>
+    <message>
+        <source>not referenced (coordinates zeroed)</source>
+        <translation>not referenced (coordinates zeroed)</translation>
+    </message>
+    <message>
+        <source>not referenced (link lost)</source>
+        <translation>not referenced (link lost)</translation>
     </message>
 </context>
 <context>
@@ -4440,6 +5753,154 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::TravelCalibration</name>
+    <message>
+        <source>commanded distance</source>
+        <translation>commanded distance</translation>
+    </message>
+    <message>
+        <source>measured distance</source>
+        <translation>measured distance</translation>
+    </message>
+    <message>
+        <source>the %1 must be more than 0 %2, found %3</source>
+        <translation>the %1 must be more than 0 %2, found %3</translation>
+    </message>
+    <message>
+        <source>not a number</source>
+        <translation>not a number</translation>
+    </message>
+    <message>
+        <source>the %1 %2 %3 is not a distance on a machine</source>
+        <translation>the %1 %2 %3 is not a distance on a machine</translation>
+    </message>
+    <message>
+        <source>the current pitch (%1) cannot be corrected: %2</source>
+        <translation>the current pitch (%1) cannot be corrected: %2</translation>
+    </message>
+    <message>
+        <source>it must be more than 0</source>
+        <translation>it must be more than 0</translation>
+    </message>
+    <message>
+        <source>the distances must be at least 0.001 %1</source>
+        <translation>the distances must be at least 0.001 %1</translation>
+    </message>
+    <message>
+        <source>%1 %2 measured for %3 %2 commanded is off by a factor of %4: that is not a calibration error. Check the microsteps (driver DIP switches and register), the step angle and the pitch, then measure again</source>
+        <translation>%1 %2 measured for %3 %2 commanded is off by a factor of %4: that is not a calibration error. Check the microsteps (driver DIP switches and register), the step angle and the pitch, then measure again</translation>
+    </message>
+    <message>
+        <source>the corrected pitch would be %1 %2: %3</source>
+        <translation>the corrected pitch would be %1 %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TravelLimits</name>
+    <message>
+        <source>motor %1: this register map has no such axis</source>
+        <translation>motor %1: this register map has no such axis</translation>
+    </message>
+    <message>
+        <source>motor %1, software travel limit %2: %3</source>
+        <translation>motor %1, software travel limit %2: %3</translation>
+    </message>
+    <message>
+        <source>motor %1: the software travel limit min (%2) must be below max (%3)</source>
+        <translation>motor %1: the software travel limit min (%2) must be below max (%3)</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is not a position</source>
+        <translation>motor %1: %2 is not a position</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is beyond the software travel limit max %3</source>
+        <translation>motor %1: %2 is beyond the software travel limit max %3</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is beyond the software travel limit min %3</source>
+        <translation>motor %1: %2 is beyond the software travel limit min %3</translation>
+    </message>
+    <message>
+        <source>motor %1 is at %2, at or beyond its software travel limit max %3: it may only jog toward −</source>
+        <translation>motor %1 is at %2, at or beyond its software travel limit max %3: it may only jog toward −</translation>
+    </message>
+    <message>
+        <source>motor %1 is at %2, at or beyond its software travel limit min %3: it may only jog toward +</source>
+        <translation>motor %1 is at %2, at or beyond its software travel limit min %3: it may only jog toward +</translation>
+    </message>
+    <message>
+        <source>motor %1 reached its software travel limit max %2 (polled at %3): stop</source>
+        <translation>motor %1 reached its software travel limit max %2 (polled at %3): stop</translation>
+    </message>
+    <message>
+        <source>motor %1 reached its software travel limit min %2 (polled at %3): stop</source>
+        <translation>motor %1 reached its software travel limit min %2 (polled at %3): stop</translation>
+    </message>
+    <message>
+        <source>up to %1 beyond a software limit at %2/s (reaction %3 ms: poll %4 ms, read %5 ms, stop %6 ms)</source>
+        <translation>up to %1 beyond a software limit at %2/s (reaction %3 ms: poll %4 ms, read %5 ms, stop %6 ms)</translation>
+    </message>
+    <message>
+        <source>braking %1 ms included</source>
+        <translation>braking %1 ms included</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot; must be an object {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</source>
+        <translation>&quot;travelLimits&quot; must be an object {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: unknown axis &quot;%1&quot; (this map has motor1 .. motor%2)</source>
+        <translation>&quot;travelLimits&quot;: unknown axis &quot;%1&quot; (this map has motor1 .. motor%2)</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot; must be an object {&quot;min&quot;: …, &quot;max&quot;: …}</source>
+        <translation>&quot;travelLimits&quot;: &quot;%1&quot; must be an object {&quot;min&quot;: …, &quot;max&quot;: …}</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot;: unknown field &quot;%2&quot; (allowed: min, max)</source>
+        <translation>&quot;travelLimits&quot;: &quot;%1&quot;: unknown field &quot;%2&quot; (allowed: min, max)</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot;: &quot;%2&quot; must be a number</source>
+        <translation>&quot;travelLimits&quot;: &quot;%1&quot;: &quot;%2&quot; must be a number</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</source>
+        <translation>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ValueCheck</name>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>%1: enter a value (%2).</source>
+        <translation>%1: enter a value (%2).</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number. Allowed: %3.</source>
+        <translation>%1: “%2” is not a number. Allowed: %3.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: at most %n decimal(s). Allowed: %2.</source>
+        <translation>
+            <numerusform>%1: at most %n decimal. Allowed: %2.</numerusform>
+            <numerusform>%1: at most %n decimals. Allowed: %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the allowed range %3.</source>
+        <translation>%1: %2 is outside the allowed range %3.</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not one of %3.</source>
+        <translation>%1: “%2” is not one of %3.</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::WiringCheck</name>
     <message>
         <source>positive limit</source>
@@ -4610,6 +6071,25 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&amp;Write</source>
         <translation>&amp;Write</translation>
     </message>
+    <message>
+        <source>The pages flag problems in these values:</source>
+        <translation>The pages flag problems in these values:</translation>
+    </message>
+    <message>
+        <source>&amp;Write anyway</source>
+        <translation>&amp;Write anyway</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WriteReview</name>
+    <message>
+        <source>Arc: %1</source>
+        <translation>Arc: %1</translation>
+    </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>Line: %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::XYPlot</name>
@@ -4664,48 +6144,82 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>What to do.</translation>
     </message>
     <message>
-        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
-
-Commands:
-  params                 list every parameter and command of the register map
-  read [KEY...]          read parameters (all when none are named)
-  write KEY=VALUE...     write parameters in engineering units, then verify
-  command NAME           pulse a command coil (e.g. motor1.stop, estop)
-  monitor                print the live status as one JSON object per line,
-                         until --count samples or Ctrl-C (--interval MS)
-  dump FILE              read every setting and save it as a profile file
-                         (--name, --notes; --include-link adds id and baud)
-  diff FILE              compare the controller with a profile; exit 0 same,
-                         1 different, 2 bad file, 3 link or device error
-  apply FILE             write the profile&apos;s values that differ, after showing
-                         them and asking (--yes skips the question), then verify;
-                         --include-link also writes device id and baud,
-                         --save-to-flash saves afterwards
-  report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN)
-
-Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
-
-Commands:
-  params                 list every parameter and command of the register map
-  read [KEY...]          read parameters (all when none are named)
-  write KEY=VALUE...     write parameters in engineering units, then verify
-  command NAME           pulse a command coil (e.g. motor1.stop, estop)
-  monitor                print the live status as one JSON object per line,
-                         until --count samples or Ctrl-C (--interval MS)
-  dump FILE              read every setting and save it as a profile file
-                         (--name, --notes; --include-link adds id and baud)
-  diff FILE              compare the controller with a profile; exit 0 same,
-                         1 different, 2 bad file, 3 link or device error
-  apply FILE             write the profile&apos;s values that differ, after showing
-                         them and asking (--yes skips the question), then verify;
-                         --include-link also writes device id and baud,
-                         --save-to-flash saves afterwards
-  report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN)
-
-Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</translation>
+        <source>list every parameter and command of the register map</source>
+        <translation>list every parameter and command of the register map</translation>
+    </message>
+    <message>
+        <source>read parameters (all when none are named)</source>
+        <translation>read parameters (all when none are named)</translation>
+    </message>
+    <message>
+        <source>write parameters in engineering units, then verify</source>
+        <translation>write parameters in engineering units, then verify</translation>
+    </message>
+    <message>
+        <source>pulse a command coil (e.g. motor1.stop, estop)</source>
+        <translation>pulse a command coil (e.g. motor1.stop, estop)</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS)</source>
+        <translation>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS)</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud)</source>
+        <translation>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud)</translation>
+    </message>
+    <message>
+        <source>compare the controller with a profile; exit 0 same,
+1 different, 2 bad file, 3 link or device error</source>
+        <translation>compare the controller with a profile; exit 0 same,
+1 different, 2 bad file, 3 link or device error</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>Commands:</translation>
+    </message>
+    <message>
+        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</source>
+        <translation>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</translation>
+    </message>
+    <message>
+        <source>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
+        <translation>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</translation>
+    </message>
+    <message>
+        <source>compare two profiles, no controller needed; exit 0
+same, 1 different, 2 bad file</source>
+        <translation>compare two profiles, no controller needed; exit 0
+same, 1 different, 2 bad file</translation>
+    </message>
+    <message>
+        <source>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards; the settings it
+replaces are saved as a backup first (--no-backup)</source>
+        <translation>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards; the settings it
+replaces are saved as a backup first (--no-backup)</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file and its checklist, no controller needed)</source>
+        <translation>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file and its checklist, no controller needed)</translation>
+    </message>
+    <message>
+        <source>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</source>
+        <translation>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</translation>
     </message>
 </context>
 </TS>

@@ -99,6 +99,41 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BackupStore</name>
+    <message>
+        <source>apply a profile</source>
+        <translation>应用参数文件</translation>
+    </message>
+    <message>
+        <source>factory reset</source>
+        <translation>恢复出厂参数</translation>
+    </message>
+    <message>
+        <source>save to flash</source>
+        <translation>保存到闪存</translation>
+    </message>
+    <message>
+        <source>device id change</source>
+        <translation>修改设备地址</translation>
+    </message>
+    <message>
+        <source>baud rate change</source>
+        <translation>修改波特率</translation>
+    </message>
+    <message>
+        <source>cannot create the backup folder %1</source>
+        <translation>无法创建备份文件夹 %1</translation>
+    </message>
+    <message>
+        <source>no settings to back up: the controller was not read</source>
+        <translation>没有可备份的设置：未读取控制器</translation>
+    </message>
+    <message>
+        <source>Backup before %1</source>
+        <translation>%1前的备份</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusScanDialog</name>
     <message>
         <source>Scan bus</source>
@@ -323,6 +358,466 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CertificateSection</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>Commissioning checklist</source>
+        <translation>调试检查表</translation>
+    </message>
+    <message>
+        <source>No commissioning checklist was recorded for this machine: this report shows settings, not tests.</source>
+        <translation>此机器没有记录调试检查表：本报告只列出设置，不包含测试结果。</translation>
+    </message>
+    <message>
+        <source>Checklist file: %1</source>
+        <translation>检查表文件：%1</translation>
+    </message>
+    <message>
+        <source>The checklist was last run with other settings (fingerprint %1); this report&apos;s settings have the fingerprint %2.</source>
+        <translation>检查表最后一次执行时的设置不同（指纹 %1）；本报告中设置的指纹为 %2。</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>步骤</translation>
+    </message>
+    <message>
+        <source>Result</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>测量值</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>%1 (attempt %2)</source>
+        <translation>%1（第 %2 次）</translation>
+    </message>
+    <message>
+        <source>Software travel limits</source>
+        <translation>软件行程限位</translation>
+    </message>
+    <message>
+        <source>StepCom&apos;s own limits for steps, moves to a position and jogs; not controller registers. The limit switches stay the machine&apos;s protection.</source>
+        <translation>StepCom 自身对步进、定位运行和点动的限制，不是控制器寄存器。机器的保护仍然是限位开关。</translation>
+    </message>
+    <message>
+        <source>Motor</source>
+        <translation>电机</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>最小</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>最大</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>不限</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Signatures</source>
+        <translation>签字</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>职责</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>姓名</translation>
+    </message>
+    <message>
+        <source>Signature</source>
+        <translation>签名</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>日期</translation>
+    </message>
+    <message>
+        <source>Commissioned by</source>
+        <translation>调试人</translation>
+    </message>
+    <message>
+        <source>Accepted by (customer)</source>
+        <translation>验收人（客户）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::Checklist</name>
+    <message>
+        <source>%1: a result is passed, failed or skipped, not pending</source>
+        <translation>%1：结果应为通过、失败或跳过，而不是未执行</translation>
+    </message>
+    <message>
+        <source>%1: the attempt has no valid time</source>
+        <translation>%1：该次执行没有有效的时间</translation>
+    </message>
+    <message>
+        <source>%1: the note has %2 characters (at most %3)</source>
+        <translation>%1：备注有 %2 个字符（最多 %3 个）</translation>
+    </message>
+    <message>
+        <source>%1: %2 measurements (at most %3)</source>
+        <translation>%1：%2 个测量值（最多 %3 个）</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a measurement key (1-40 of a-z, 0-9, _ and .)</source>
+        <translation>%1：“%2”不是测量值名称（1-40 个 a-z、0-9、_ 和 . 字符）</translation>
+    </message>
+    <message>
+        <source>%1: the measurement &quot;%2&quot; is too long</source>
+        <translation>%1：测量值“%2”过长</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a step of this checklist</source>
+        <translation>“%1”不是此检查表中的步骤</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a step of this checklist (%2 motor(s))</source>
+        <translation>“%1”不是此检查表中的步骤（%2 个电机）</translation>
+    </message>
+    <message>
+        <source>%1: %2 attempts (at most %3)</source>
+        <translation>%1：执行了 %2 次（最多 %3 次）</translation>
+    </message>
+    <message>
+        <source>%1: the attempts must be numbered upwards (found %2 after %3)</source>
+        <translation>%1：执行次序必须递增（%3 之后出现 %2）</translation>
+    </message>
+    <message>
+        <source>Not started</source>
+        <translation>未开始</translation>
+    </message>
+    <message>
+        <source>In progress: not every step was run</source>
+        <translation>进行中：尚有步骤未执行</translation>
+    </message>
+    <message>
+        <source>Failed: at least one step failed</source>
+        <translation>未通过：至少一个步骤失败</translation>
+    </message>
+    <message>
+        <source>Passed, with skipped steps</source>
+        <translation>通过，有跳过的步骤</translation>
+    </message>
+    <message>
+        <source>Passed: every step passed</source>
+        <translation>通过：所有步骤均通过</translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps passed, %3 failed, %4 skipped, %5 not run</source>
+        <translation>%2 个步骤中 %1 个通过，%3 个失败，%4 个跳过，%5 个未执行</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistFile</name>
+    <message>
+        <source>null</source>
+        <translation>null</translation>
+    </message>
+    <message>
+        <source>true/false</source>
+        <translation>true/false</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>数字</translation>
+    </message>
+    <message>
+        <source>a text</source>
+        <translation>文本</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>列表</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>对象</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>空</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>文件为空</translation>
+    </message>
+    <message>
+        <source>the file is %1 bytes: far too large for a checklist</source>
+        <translation>文件有 %1 字节：作为检查表太大</translation>
+    </message>
+    <message>
+        <source>not valid JSON at line %1, column %2: %3</source>
+        <translation>第 %1 行第 %2 列不是有效的 JSON：%3</translation>
+    </message>
+    <message>
+        <source>the file holds a JSON list, not a checklist</source>
+        <translation>文件中是 JSON 列表，不是检查表</translation>
+    </message>
+    <message>
+        <source>… and %1 more problems</source>
+        <translation>……另有 %1 个问题</translation>
+    </message>
+    <message>
+        <source>%1unknown field &quot;%2&quot; (allowed: %3)</source>
+        <translation>%1未知字段“%2”（允许：%3）</translation>
+    </message>
+    <message>
+        <source>%1&quot;%2&quot; must be a text, found %3</source>
+        <translation>%1“%2”必须是文本，实际为%3</translation>
+    </message>
+    <message>
+        <source>this is a profile, not a checklist</source>
+        <translation>这是参数文件，不是检查表</translation>
+    </message>
+    <message>
+        <source>not a StepCom checklist: &quot;format&quot; must be &quot;%1&quot;</source>
+        <translation>不是 StepCom 检查表：“format”必须为“%1”</translation>
+    </message>
+    <message>
+        <source>checklist schema %1 is newer than this StepCom reads (%2): update StepCom</source>
+        <translation>检查表格式版本 %1 比本 StepCom 能读取的（%2）更新：请升级 StepCom</translation>
+    </message>
+    <message>
+        <source>&quot;schema&quot; must be %1</source>
+        <translation>“schema”必须为 %1</translation>
+    </message>
+    <message>
+        <source>the checklist is for register map &quot;%1&quot;, but this map is &quot;%2&quot;</source>
+        <translation>检查表属于寄存器表“%1”，但当前寄存器表是“%2”</translation>
+    </message>
+    <message>
+        <source>&quot;machine&quot; and &quot;settingsFingerprint&quot; hold at most 200 characters</source>
+        <translation>“machine”和“settingsFingerprint”最多 200 个字符</translation>
+    </message>
+    <message>
+        <source>&quot;steps&quot; must be a list, found %1</source>
+        <translation>“steps”必须是列表，实际为%1</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>第 %1 个步骤</translation>
+    </message>
+    <message>
+        <source>%1: must be an object, found %2</source>
+        <translation>%1：必须是对象，实际为%2</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; appears more than once</source>
+        <translation>%1：“%2”出现了多次</translation>
+    </message>
+    <message>
+        <source>%1: &quot;attempts&quot; must be a list, found %2</source>
+        <translation>%1：“attempts”必须是列表，实际为%2</translation>
+    </message>
+    <message>
+        <source>%1: &quot;attempt&quot; must be a whole number from 1</source>
+        <translation>%1：“attempt”必须是从 1 开始的整数</translation>
+    </message>
+    <message>
+        <source>%1: &quot;result&quot; must be passed, failed or skipped, found &quot;%2&quot;</source>
+        <translation>%1：“result”必须是 passed、failed 或 skipped，实际为“%2”</translation>
+    </message>
+    <message>
+        <source>%1: &quot;time&quot; is not a date and time (2024-05-31T14:02:00Z): &quot;%2&quot;</source>
+        <translation>%1：“time”不是日期时间（2024-05-31T14:02:00Z）：“%2”</translation>
+    </message>
+    <message>
+        <source>%1: &quot;measurements&quot; must be a list, found %2</source>
+        <translation>%1：“measurements”必须是列表，实际为%2</translation>
+    </message>
+    <message>
+        <source>no register map to check the checklist against</source>
+        <translation>没有可用于检查此检查表的寄存器表</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1：文件不存在</translation>
+    </message>
+    <message>
+        <source>%1: %2 bytes, far too large for a checklist</source>
+        <translation>%1：%2 字节，作为检查表太大</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistStep</name>
+    <message>
+        <source>Not run</source>
+        <translation>未执行</translation>
+    </message>
+    <message>
+        <source>Passed</source>
+        <translation>通过</translation>
+    </message>
+    <message>
+        <source>Failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>Skipped</source>
+        <translation>跳过</translation>
+    </message>
+    <message>
+        <source>direction</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <source>travel calibration</source>
+        <translation>行程校准</translation>
+    </message>
+    <message>
+        <source>positive limit input</source>
+        <translation>正限位输入</translation>
+    </message>
+    <message>
+        <source>negative limit input</source>
+        <translation>反限位输入</translation>
+    </message>
+    <message>
+        <source>home input</source>
+        <translation>原点输入</translation>
+    </message>
+    <message>
+        <source>homing</source>
+        <translation>回原点</translation>
+    </message>
+    <message>
+        <source>Machine: homing order</source>
+        <translation>整机：回原点顺序</translation>
+    </message>
+    <message>
+        <source>Machine: interpolation test</source>
+        <translation>整机：插补测试</translation>
+    </message>
+    <message>
+        <source>Machine: save to flash and read back</source>
+        <translation>整机：保存到闪存并读回</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2</source>
+        <translation>电机 %1：%2</translation>
+    </message>
+    <message>
+        <source>Move motor %1 a small step forward. Did the axis move toward + ? No offers to flip its direction register.</source>
+        <translation>让电机 %1 正向走一小步。轴是否朝 + 方向移动？选“否”会建议翻转其方向寄存器。</translation>
+    </message>
+    <message>
+        <source>Move motor %1 by a distance you choose, measure what the axis really moved and type it in: StepCom proposes the corrected pitch (pitch × measured ÷ commanded).</source>
+        <translation>让电机 %1 运行一段您选择的距离，测量轴实际移动的距离并输入：StepCom 会建议修正后的螺距（螺距 × 实测 ÷ 指令）。</translation>
+    </message>
+    <message>
+        <source>Press the positive limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</source>
+        <translation>用手按下电机 %1 的正限位开关：StepCom 监视输入口，并将发生变化的输入与配置比较。</translation>
+    </message>
+    <message>
+        <source>Press the negative limit switch of motor %1 by hand: StepCom watches the inputs and compares the one that changed with the configuration.</source>
+        <translation>用手按下电机 %1 的反限位开关：StepCom 监视输入口，并将发生变化的输入与配置比较。</translation>
+    </message>
+    <message>
+        <source>Press the home switch of motor %1 by hand (often the negative limit&apos;s switch): StepCom compares the input that changed with the configuration.</source>
+        <translation>用手按下电机 %1 的原点开关（通常就是反限位开关）：StepCom 将发生变化的输入与配置比较。</translation>
+    </message>
+    <message>
+        <source>Home motor %1 and check that it ended on its home switch, referenced.</source>
+        <translation>让电机 %1 回原点，并确认它停在原点开关上、已建立参考点。</translation>
+    </message>
+    <message>
+        <source>Home the machine in the configured order and check that every axis in the order ended referenced.</source>
+        <translation>按设定的顺序让整机回原点，并确认顺序中的每个轴都已建立参考点。</translation>
+    </message>
+    <message>
+        <source>Run the configured arc or line and check that the axes ended at its end point.</source>
+        <translation>运行设定的圆弧或直线，并确认各轴停在其终点。</translation>
+    </message>
+    <message>
+        <source>Save the parameters to flash, read them back and compare them with what was written.</source>
+        <translation>将参数保存到闪存，读回并与写入的值比较。</translation>
+    </message>
+    <message>
+        <source>Commanded distance</source>
+        <translation>指令距离</translation>
+    </message>
+    <message>
+        <source>Measured distance</source>
+        <translation>实测距离</translation>
+    </message>
+    <message>
+        <source>Pitch before</source>
+        <translation>原螺距</translation>
+    </message>
+    <message>
+        <source>Pitch after</source>
+        <translation>新螺距</translation>
+    </message>
+    <message>
+        <source>Moved toward +</source>
+        <translation>朝 + 方向移动</translation>
+    </message>
+    <message>
+        <source>Direction before</source>
+        <translation>原方向</translation>
+    </message>
+    <message>
+        <source>Direction after</source>
+        <translation>新方向</translation>
+    </message>
+    <message>
+        <source>Input configured</source>
+        <translation>配置的输入</translation>
+    </message>
+    <message>
+        <source>Input that answered</source>
+        <translation>响应的输入</translation>
+    </message>
+    <message>
+        <source>Fix written</source>
+        <translation>已写入的修正</translation>
+    </message>
+    <message>
+        <source>End position</source>
+        <translation>终点位置</translation>
+    </message>
+    <message>
+        <source>Expected end</source>
+        <translation>预期终点</translation>
+    </message>
+    <message>
+        <source>Homing order</source>
+        <translation>回原点顺序</translation>
+    </message>
+    <message>
+        <source>Read back</source>
+        <translation>读回</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CommissioningReport</name>
     <message>
         <source>Controller</source>
@@ -489,16 +984,60 @@
         <translation>备注</translation>
     </message>
     <message>
-        <source>Signature: ____________________</source>
-        <translation>签字：____________________</translation>
-    </message>
-    <message>
         <source>%1: the report is written as .pdf or .html, not .%2</source>
         <translation>%1：报告只能保存为 .pdf 或 .html，不能是 .%2</translation>
     </message>
     <message>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>Controller (as the profile records it)</source>
+        <translation>控制器（参数文件中的记录）</translation>
+    </message>
+    <message>
+        <source>none: made from a file, not read from a controller</source>
+        <translation>无：根据文件生成，未读取控制器</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>the profile was made with %1</source>
+        <translation>参数文件由 %1 生成</translation>
+    </message>
+    <message>
+        <source>Profile file</source>
+        <translation>参数文件</translation>
+    </message>
+    <message>
+        <source>Profile saved</source>
+        <translation>参数文件保存于</translation>
+    </message>
+    <message>
+        <source>%1 by StepCom %2</source>
+        <translation>%1，StepCom %2</translation>
+    </message>
+    <message>
+        <source>Report date</source>
+        <translation>报告日期</translation>
+    </message>
+    <message>
+        <source>What of the profile this register map cannot show</source>
+        <translation>此寄存器表无法显示的参数文件内容</translation>
+    </message>
+    <message>
+        <source>Commissioning report (from a profile file)</source>
+        <translation>调试报告（来自参数文件）</translation>
+    </message>
+    <message>
+        <source>Made from the profile file %1, not read from a controller: these are the values the file holds; a controller may hold others.</source>
+        <translation>根据参数文件 %1 生成，未读取控制器：这些是文件中的值，控制器中的值可能不同。</translation>
+    </message>
+    <message>
+        <source>Settings fingerprint</source>
+        <translation>设置指纹</translation>
     </message>
 </context>
 <context>
@@ -724,6 +1263,14 @@
         <translation>未连接。</translation>
     </message>
     <message>
+        <source>%1 is open, but the controller does not answer.</source>
+        <translation>%1 已打开，但控制器没有应答。</translation>
+    </message>
+    <message>
+        <source>%1 is open; waiting for the controller to answer…</source>
+        <translation>%1 已打开；正在等待控制器应答…</translation>
+    </message>
+    <message>
         <source>Network</source>
         <translation>网络</translation>
     </message>
@@ -773,6 +1320,17 @@
     <message>
         <source>no sample was read: every poll failed (see the errors above)</source>
         <translation>没有读到任何样本：每次轮询都失败了（见上面的错误）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlMotionWait</name>
+    <message>
+        <source>%1 would not move anything here (nothing in the homing order, or every motor runs): nothing to wait for</source>
+        <translation>%1 在此不会使任何电机运动（回零顺序为空，或所有电机都在运行）：没有可等待的结果</translation>
+    </message>
+    <message>
+        <source>%1: sent, waiting for the motion to end</source>
+        <translation>%1：已发送，正在等待运动结束</translation>
     </message>
 </context>
 <context>
@@ -928,6 +1486,22 @@
     <message>
         <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
         <translation>未给出命令（params、read、write、command、monitor、dump、diff、apply、report）</translation>
+    </message>
+    <message>
+        <source>report: make the report from this profile file, not from a controller.</source>
+        <translation>report：根据此参数文件生成报告，而不是读取控制器。</translation>
+    </message>
+    <message>
+        <source>profile</source>
+        <translation>参数文件</translation>
+    </message>
+    <message>
+        <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
+        <translation>apply：写入前不备份控制器的设置。</translation>
+    </message>
+    <message>
+        <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
+        <translation>command：等待运动命令结束并输出其结果（仅在完成或已回零参考时退出码为 0）。</translation>
     </message>
     <message>
         <source>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</source>
@@ -1131,8 +1705,110 @@
         <translation>报告已写入 %1</translation>
     </message>
     <message>
-        <source>unknown command &apos;%1&apos; (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>未知命令 &apos;%1&apos;（params、read、write、command、monitor、dump、diff、apply、report）</translation>
+        <source>unknown command &apos;%1&apos; (%2)</source>
+        <translation>未知命令 &apos;%1&apos;（%2）</translation>
+    </message>
+    <message>
+        <source>diff needs one profile file (compared with the controller) or two (compared with each other)</source>
+        <translation>diff 需要一个参数文件（与控制器比较）或两个参数文件（互相比较）</translation>
+    </message>
+    <message>
+        <source>left out of the comparison:</source>
+        <translation>未参与比较：</translation>
+    </message>
+    <message numerus="yes">
+        <source>the controller holds every value both maps have; %n left out</source>
+        <translation>
+            <numerusform>控制器中已是两个寄存器表共有的全部值；%n 个值未参与比较</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing was compared</source>
+        <translation>未进行任何比较</translation>
+    </message>
+    <message>
+        <source>A = %1: &quot;%2&quot;, register map %3</source>
+        <translation>A = %1：“%2”，寄存器表 %3</translation>
+    </message>
+    <message>
+        <source>B = %1: &quot;%2&quot;, register map %3</source>
+        <translation>B = %1：“%2”，寄存器表 %3</translation>
+    </message>
+    <message>
+        <source>differ (A -&gt; B):</source>
+        <translation>不同（A -&gt; B）：</translation>
+    </message>
+    <message>
+        <source>only in A (%1):</source>
+        <translation>只在 A 中（%1）：</translation>
+    </message>
+    <message>
+        <source>only in B (%1):</source>
+        <translation>只在 B 中（%1）：</translation>
+    </message>
+    <message>
+        <source>not settings of register map %1, or out of its range (as the files hold them, A -&gt; B):</source>
+        <translation>不是寄存器表 %1 的设置参数，或超出其范围（按文件中的原值，A -&gt; B）：</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>（无）</translation>
+    </message>
+    <message>
+        <source>the two profiles hold the same values</source>
+        <translation>两个参数文件的值完全相同</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map</source>
+        <translation>%1 个不同，%2 个只在 A 中，%3 个只在 B 中，%4 个超出此寄存器表</translation>
+    </message>
+    <message>
+        <source>not applied:</source>
+        <translation>不应用：</translation>
+    </message>
+    <message>
+        <source>the profile holds no setting of this map: nothing to apply</source>
+        <translation>参数文件中没有此寄存器表的任何设置参数：无可应用</translation>
+    </message>
+    <message>
+        <source>the controller already holds every value both maps have</source>
+        <translation>控制器中已是两个寄存器表共有的全部值</translation>
+    </message>
+    <message>
+        <source>no report: %1 is not a profile StepCom can read</source>
+        <translation>未生成报告：%1 不是 StepCom 可读取的参数文件</translation>
+    </message>
+    <message>
+        <source>not in the report:</source>
+        <translation>报告中未包含：</translation>
+    </message>
+    <message>
+        <source>report written to %1, made from the profile file %2 (no controller was read)</source>
+        <translation>报告已写入 %1，根据参数文件 %2 生成（未读取控制器）</translation>
+    </message>
+    <message>
+        <source>no backup of the controller&apos;s settings could be saved (%1): nothing was written (--no-backup applies without one)</source>
+        <translation>无法保存控制器设置的备份（%1）：未写入任何值（--no-backup 可在不备份的情况下应用）</translation>
+    </message>
+    <message>
+        <source>backup of the controller&apos;s settings: %1</source>
+        <translation>控制器设置的备份：%1</translation>
+    </message>
+    <message>
+        <source>no report: the checklist beside the profile cannot be read</source>
+        <translation>未生成报告：无法读取参数文件旁的检查表</translation>
+    </message>
+    <message>
+        <source>with the commissioning checklist %1: %2</source>
+        <translation>包含调试检查表 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: sent (add --wait to wait for how it ends)</source>
+        <translation>%1：已发送（加 --wait 可等待其结果）</translation>
+    </message>
+    <message>
+        <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
+        <translation>--wait：%1 没有可等待的结束（单次运动、回零、按顺序回零、回数据零点、圆弧和直线才有）</translation>
     </message>
 </context>
 <context>
@@ -1479,10 +2155,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>无法连接：%1</translation>
     </message>
     <message>
-        <source>Connected to %1</source>
-        <translation>已连接到 %1</translation>
-    </message>
-    <message>
         <source>Link lost: %1</source>
         <translation>连接中断：%1</translation>
     </message>
@@ -1553,6 +2225,53 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n 次请求</numerusform>
         </translation>
     </message>
+    <message>
+        <source>the built-in simulator was replaced</source>
+        <translation>内置模拟器已被替换</translation>
+    </message>
+    <message>
+        <source>this program has no built-in simulator</source>
+        <translation>此程序没有内置模拟器</translation>
+    </message>
+    <message>
+        <source>the page was left</source>
+        <translation>离开了此页面</translation>
+    </message>
+    <message>
+        <source>the window lost focus</source>
+        <translation>窗口失去焦点</translation>
+    </message>
+    <message>
+        <source>the window closes</source>
+        <translation>窗口正在关闭</translation>
+    </message>
+    <message>
+        <source>Opened %1; asking the controller</source>
+        <translation>已打开 %1；正在询问控制器</translation>
+    </message>
+    <message>
+        <source>The port is open, but the controller at %1 does not answer.</source>
+        <translation>端口已打开，但 %1 处的控制器没有应答。</translation>
+    </message>
+    <message>
+        <source>The controller answers.</source>
+        <translation>控制器已应答。</translation>
+    </message>
+    <message>
+        <source>%1: sent</source>
+        <translation>%1：已发送</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::DirectionCheck</name>
+    <message>
+        <source>motor %1 has no direction register in this register map</source>
+        <translation>此寄存器表中电机 %1 没有方向寄存器</translation>
+    </message>
+    <message>
+        <source>%1 does not have exactly two values: StepCom cannot flip it</source>
+        <translation>%1 不是恰好两个取值：StepCom 无法翻转它</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::EmergencyStop</name>
@@ -1621,6 +2340,57 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>写入失败：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::InputTest</name>
+    <message>
+        <source>positive limit</source>
+        <translation>正限位</translation>
+    </message>
+    <message>
+        <source>negative limit</source>
+        <translation>反限位</translation>
+    </message>
+    <message>
+        <source>home switch</source>
+        <translation>原点开关</translation>
+    </message>
+    <message>
+        <source>the %1 of motor %2</source>
+        <translation>电机 %2 的%1</translation>
+    </message>
+    <message>
+        <source>No input changed while %1 was pressed, and none is configured for it. If the machine has no such switch, skip this step; otherwise check the switch, its wiring and its 24 V supply.</source>
+        <translation>按下%1时没有输入发生变化，也没有为它配置输入。如果机器没有这个开关，请跳过此步骤；否则请检查开关、接线和 24 V 电源。</translation>
+    </message>
+    <message>
+        <source>No input changed while %1 was pressed (configured: %2). Check the switch, its wiring and its 24 V supply (the inputs are active on a 24 V negative signal), then try again.</source>
+        <translation>按下%1时没有输入发生变化（配置为：%2）。请检查开关、接线和 24 V 电源（输入口在 24 V 负极信号时有效），然后重试。</translation>
+    </message>
+    <message>
+        <source>Several inputs changed while %1 was pressed (%2): press only this switch and try again.</source>
+        <translation>按下%1时有多个输入发生变化（%2）：请只按这一个开关，然后重试。</translation>
+    </message>
+    <message>
+        <source>%1 is also configured as the %2 of motor %3</source>
+        <translation>%1 同时被配置为电机 %3 的%2</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, as configured.</source>
+        <translation>%2响应在 %1，与配置一致。</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, which is not configured (none). Proposed: %3.</source>
+        <translation>%2响应在 %1，但它未配置（无）。建议：%3。</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, but %3 is configured: the wiring and the configuration disagree. Proposed: %4 (or rewire the switch to %3).</source>
+        <translation>%2响应在 %1，但配置的是 %3：接线与配置不一致。建议：%4（或将开关改接到 %3）。</translation>
+    </message>
+    <message>
+        <source>%1 answered for %2, and this register map cannot name %1 there.</source>
+        <translation>%2响应在 %1，但此寄存器表无法在该处设定 %1。</translation>
     </message>
 </context>
 <context>
@@ -2013,24 +2783,16 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Motor %1: jog %2 not done: %3</source>
         <translation>电机 %1：%2点动未执行：%3</translation>
     </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::JogPanel</name>
     <message>
         <source>stop button</source>
         <translation>停止按钮</translation>
-    </message>
-    <message>
-        <source>Single move</source>
-        <translation>单次运行</translation>
-    </message>
-    <message>
-        <source>Homing</source>
-        <translation>回机械零</translation>
-    </message>
-    <message>
-        <source>%1 done</source>
-        <translation>%1完成</translation>
     </message>
     <message>
         <source>Not connected.</source>
@@ -2180,6 +2942,37 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Run motor %1 in reverse to its home input and set its position to 0</source>
         <translation>电机 %1 反转到原点信号处，并将其坐标设为 0</translation>
     </message>
+    <message>
+        <source>Reference: %1</source>
+        <translation>参考点：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::LinkHealth</name>
+    <message>
+        <source>Port closed</source>
+        <translation>端口已关闭</translation>
+    </message>
+    <message>
+        <source>Opening the port…</source>
+        <translation>正在打开端口…</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for the controller…</source>
+        <translation>端口已打开，正在等待控制器…</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>已连接</translation>
+    </message>
+    <message>
+        <source>The port is open but no controller answers. Likely causes: another device id (factory: 1), another baud rate (factory: 9600) or parity (factory: none), the RS-485 wires A and B swapped, or the controller has no power. A bus scan tries the ids and baud rates for you.</source>
+        <translation>端口已打开，但没有控制器应答。可能的原因：设备地址不同（出厂：1）、波特率不同（出厂：9600）或校验位不同（出厂：无）、RS-485 的 A、B 线接反，或控制器没有上电。总线扫描可以替您逐一尝试地址和波特率。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::LinkSettings</name>
@@ -2269,6 +3062,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</source>
         <translation>参数已写入，但尚未保存到控制器的闪存：控制器断电后将丢失。请使用“保存到闪存”。</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for an answer…</source>
+        <translation>端口已打开，正在等待应答…</translation>
     </message>
     <message>
         <source>errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)</source>
@@ -2392,16 +3193,14 @@ Every other master on the bus must use the new settings too, and no other device
         </translation>
     </message>
     <message>
-        <source>another page was chosen</source>
-        <translation>切换到了其他页面</translation>
+        <source>%1%2 — profile file, no controller — StepCom</source>
+        <translation>%1%2 — 参数文件，未连接控制器 — StepCom</translation>
     </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>窗口失去焦点</translation>
-    </message>
-    <message>
-        <source>the window closes</source>
-        <translation>窗口正在关闭</translation>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file. Close anyway and lose them?</source>
+        <translation>
+            <numerusform>%1 中有 %n 个修改过的值尚未保存到文件。仍然关闭并放弃这些修改吗？</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2747,28 +3546,135 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</source>
         <translation>模式 2-5 忽略限位设置：为电机设置的限位和原点输入不再起作用。模式 3-5 中只有 IN3 和 IN4 作为限位；模式 2 中没有任何限位（IN2-IN4 只用于停止）。使用这些模式前，请先接好并测试这些输入。</translation>
     </message>
+    <message>
+        <source>The profile file does not set the mode.</source>
+        <translation>参数文件中没有设定系统模式。</translation>
+    </message>
+    <message>
+        <source>The profile sets the normal mode.</source>
+        <translation>参数文件设定为常规模式。</translation>
+    </message>
+    <message>
+        <source>The profile sets special mode %1.</source>
+        <translation>参数文件设定为特殊模式 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MotionJudge</name>
+    <message>
+        <source>Motor %1&apos;s positive limit (IN%2) is already ON and %3 drives motor %1 forward: it stops at once.</source>
+        <translation>电机 %1 的正限位（IN%2）已经接通，而%3会使电机 %1 正向运动：它会立即停止。</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s negative limit (IN%2) is already ON and %3 drives motor %1 in reverse: it stops at once.</source>
+        <translation>电机 %1 的负限位（IN%2）已经接通，而%3会使电机 %1 反向运动：它会立即停止。</translation>
+    </message>
+    <message>
+        <source>the single move</source>
+        <translation>单次运动</translation>
+    </message>
+    <message>
+        <source>the return to data zero</source>
+        <translation>回数据零点</translation>
+    </message>
+    <message>
+        <source>the approach to the start point</source>
+        <translation>到起点的趋近运动</translation>
+    </message>
+    <message>
+        <source>the arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <source>the line</source>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>Single move of motor %1</source>
+        <translation>电机 %1 单次运动</translation>
+    </message>
+    <message>
+        <source>Homing motor %1</source>
+        <translation>电机 %1 回机械零</translation>
+    </message>
+    <message>
+        <source>Homing in order</source>
+        <translation>按顺序回机械零</translation>
+    </message>
+    <message>
+        <source>Return to data zero</source>
+        <translation>回数据零点</translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>连接丢失</translation>
+    </message>
+    <message>
+        <source>an unknown position</source>
+        <translation>未知位置</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s positive limit (IN%2) is ON</source>
+        <translation>电机 %1 的正限位（IN%2）接通</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s negative limit (IN%2) is ON</source>
+        <translation>电机 %1 的负限位（IN%2）接通</translation>
+    </message>
+    <message>
+        <source>%1: done at %2</source>
+        <translation>%1：已完成，位于 %2</translation>
+    </message>
+    <message>
+        <source>%1: referenced at %2</source>
+        <translation>%1：已建立参考点，位于 %2</translation>
+    </message>
+    <message>
+        <source>no stop, limit or E-STOP seen</source>
+        <translation>未见停止、限位或急停</translation>
+    </message>
+    <message>
+        <source>%1: stopped at %2, not at the end point %3 (%4)</source>
+        <translation>%1：停在 %2，未到终点 %3（%4）</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): not referenced</source>
+        <translation>%1 在 %2 处被中断（%3）：未建立参考点</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): motor %4 not referenced</source>
+        <translation>%1 在 %2 处被中断（%3）：电机 %4 未建立参考点</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: not referenced</source>
+        <translation>%1 结束于 %2，原点输入未接通：未建立参考点</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: motor %3 not referenced</source>
+        <translation>%1 结束于 %2，原点输入未接通：电机 %3 未建立参考点</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MotionPage</name>
     <message>
-        <source>Homing in order</source>
-        <translation>顺序回机械零</translation>
-    </message>
-    <message>
-        <source>Returning to data zero</source>
-        <translation>回数据零</translation>
-    </message>
-    <message>
         <source>Coordinates zeroed</source>
         <translation>坐标已清零</translation>
-    </message>
-    <message>
-        <source>motor %1 at %2</source>
-        <translation>电机 %1 位于 %2</translation>
-    </message>
-    <message>
-        <source>%1: done (%2)</source>
-        <translation>%1：完成（%2）</translation>
     </message>
     <message>
         <source>Jog and home</source>
@@ -2789,14 +3695,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Homes %1.</source>
         <translation>回零顺序：%1。</translation>
-    </message>
-    <message>
-        <source>the page was left</source>
-        <translation>离开了此页面</translation>
-    </message>
-    <message>
-        <source>the window lost focus</source>
-        <translation>窗口失去焦点</translation>
     </message>
     <message>
         <source>&amp;Clear</source>
@@ -2911,6 +3809,194 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::OfflineActions</name>
+    <message>
+        <source>&amp;New profile from factory values</source>
+        <translation>用出厂值新建参数文件(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Edit a new profile, starting from the factory values, without a controller</source>
+        <translation>以出厂值为起点编辑一个新的参数文件，无需控制器</translation>
+    </message>
+    <message>
+        <source>Save p&amp;rofile file</source>
+        <translation>保存参数文件(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to its file (no controller is written)</source>
+        <translation>把正在编辑的参数文件保存到其文件（不写入任何控制器）</translation>
+    </message>
+    <message>
+        <source>Save profile file &amp;as…</source>
+        <translation>参数文件另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to another file</source>
+        <translation>把正在编辑的参数文件保存为另一个文件</translation>
+    </message>
+    <message>
+        <source>&amp;Close profile file</source>
+        <translation>关闭参数文件(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Stop editing the profile file</source>
+        <translation>结束编辑参数文件</translation>
+    </message>
+    <message>
+        <source>&amp;Compare profiles…</source>
+        <translation>比较参数文件(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>Compare two profile files row by row; no controller is needed</source>
+        <translation>逐行比较两个参数文件，无需控制器</translation>
+    </message>
+    <message>
+        <source>Report from a &amp;profile…</source>
+        <translation>根据参数文件生成报告(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>The commissioning report made from a profile file (or the file being edited), not from a controller</source>
+        <translation>根据参数文件（或正在编辑的文件）生成调试报告，而不是读取控制器</translation>
+    </message>
+    <message>
+        <source>Unsaved edits</source>
+        <translation>未保存的修改</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file.</source>
+        <translation>
+            <numerusform>%1 中有 %n 个修改过的值尚未保存到文件。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profile cannot be edited</source>
+        <translation>无法编辑此参数文件</translation>
+    </message>
+    <message>
+        <source>Editing the profile file %1 without a controller</source>
+        <translation>正在离线编辑参数文件 %1（未连接控制器）</translation>
+    </message>
+    <message>
+        <source>New profile</source>
+        <translation>新建参数文件</translation>
+    </message>
+    <message>
+        <source>Editing a new profile with the factory values; nothing is written to a controller</source>
+        <translation>正在编辑以出厂值新建的参数文件；不会向任何控制器写入</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>保存参数文件</translation>
+    </message>
+    <message>
+        <source>Saved the profile to %1 (no controller was written)</source>
+        <translation>参数文件已保存到 %1（未写入任何控制器）</translation>
+    </message>
+    <message numerus="yes">
+        <source>The file lacked %n setting(s); they were saved with their factory values: %1</source>
+        <translation>
+            <numerusform>文件缺少 %n 个设置，已用出厂值保存：%1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save profile file as</source>
+        <translation>参数文件另存为</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom 参数文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>Compare profiles: choose two files</source>
+        <translation>比较参数文件：选择两个文件</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom 参数文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Compare profiles</source>
+        <translation>比较参数文件</translation>
+    </message>
+    <message numerus="yes">
+        <source>Choose exactly two profile files (%n chosen).</source>
+        <translation>
+            <numerusform>请正好选择两个参数文件（已选择 %n 个）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profiles cannot be compared</source>
+        <translation>无法比较这两个参数文件</translation>
+    </message>
+    <message>
+        <source>Compared %1 with %2</source>
+        <translation>已比较 %1 与 %2</translation>
+    </message>
+    <message>
+        <source>Report from a profile: choose the profile</source>
+        <translation>根据参数文件生成报告：选择参数文件</translation>
+    </message>
+    <message>
+        <source>Report from a profile</source>
+        <translation>根据参数文件生成报告</translation>
+    </message>
+    <message>
+        <source>Notes for the report (empty: the profile&apos;s own notes):</source>
+        <translation>报告备注（留空则使用参数文件中的备注）：</translation>
+    </message>
+    <message>
+        <source>Save the report made from the profile</source>
+        <translation>保存根据参数文件生成的报告</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Report made from the profile file %1 (no controller was read) written to %2</source>
+        <translation>根据参数文件 %1 生成的报告（未读取控制器）已保存到 %2</translation>
+    </message>
+    <message>
+        <source>(with edits not saved in the file)</source>
+        <translation>（含尚未保存到文件的修改）</translation>
+    </message>
+    <message>
+        <source>new profile</source>
+        <translation>新参数文件</translation>
+    </message>
+    <message numerus="yes">
+        <source>Profile applied: %n value(s) written and verified</source>
+        <translation>
+            <numerusform>已应用参数文件：写入并校验 %n 个值</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Connected: the values of %1 are compared with the controller&apos;s; nothing is written until you apply checked rows</source>
+        <translation>已连接：正在将 %1 中的值与控制器比较；应用勾选项之前不会写入任何数据</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edit(s) of %1 were never saved: they are in the comparison, not in the file</source>
+        <translation>
+            <numerusform>%1 的 %n 处修改从未保存：它们在比较窗口中，不在文件中</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::OfflineBanner</name>
+    <message>
+        <source>Editing the profile file %1 — no controller. Nothing here moves or writes a controller; connect to compare the values with one and apply them.</source>
+        <translation>正在编辑参数文件 %1 — 未连接控制器。这里的任何操作都不会让控制器运动或向控制器写入；连接后可与控制器比较并应用这些值。</translation>
+    </message>
+    <message>
+        <source>Edits not saved yet.</source>
+        <translation>修改尚未保存。</translation>
+    </message>
+    <message>
+        <source>This map cannot take everything the file holds (saved again, the file keeps it; settings it lacks are filled with factory values when you save):</source>
+        <translation>此寄存器表无法接受文件中的全部内容（再次保存时文件会保留这些内容；文件缺少的设置在保存时用出厂值补上）：</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::Parameter</name>
     <message>
         <source>%1: %2 is not one of %3</source>
@@ -2978,6 +4064,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>写入失败：%1</translation>
+    </message>
+    <message>
+        <source>The profile file lacks this value</source>
+        <translation>参数文件中没有此值</translation>
+    </message>
+    <message>
+        <source>The profile file holds this value</source>
+        <translation>参数文件中的值</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet (the file holds %1)</source>
+        <translation>已修改，尚未保存（文件中为 %1）</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet</source>
+        <translation>已修改，尚未保存</translation>
     </message>
 </context>
 <context>
@@ -3164,6 +4266,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Coil 00103, sent ahead of everything queued</source>
         <translation>线圈 00103，优先于所有排队请求发送</translation>
+    </message>
+    <message>
+        <source>⚠ Start is possible, but: %1</source>
+        <translation>⚠ 可以启动，但是：%1</translation>
+    </message>
+    <message>
+        <source>%1: running…</source>
+        <translation>%1：运行中…</translation>
+    </message>
+    <message>
+        <source>Last run: %1</source>
+        <translation>上次运行：%1</translation>
     </message>
 </context>
 <context>
@@ -3467,6 +4581,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Commissioning report written to %1</source>
         <translation>调试报告已写入 %1</translation>
     </message>
+    <message>
+        <source>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</source>
+        <translation>已连接时：将参数文件与控制器比较（应用勾选项之前不写入任何数据）。未连接控制器时：在各页面上编辑该文件</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileCompareDialog</name>
@@ -3612,6 +4730,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Close</source>
         <translation>关闭</translation>
     </message>
+    <message>
+        <source>Not applied:</source>
+        <translation>不应用：</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileDiff</name>
@@ -3626,6 +4748,29 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>(not in the profile)</source>
         <translation>（参数文件中没有）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileDocument</name>
+    <message>
+        <source>new profile</source>
+        <translation>新参数文件</translation>
+    </message>
+    <message>
+        <source>a controller is connected: open the profile to compare it instead</source>
+        <translation>已连接控制器：请打开参数文件进行比较</translation>
+    </message>
+    <message>
+        <source>a controller is connected: disconnect to edit a profile without it</source>
+        <translation>已连接控制器：断开连接后才能离线编辑参数文件</translation>
+    </message>
+    <message>
+        <source>Factory values</source>
+        <translation>出厂值</translation>
+    </message>
+    <message>
+        <source>no profile is being edited</source>
+        <translation>没有正在编辑的参数文件</translation>
     </message>
 </context>
 <context>
@@ -3793,6 +4938,167 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>not in register map &quot;%1&quot;</source>
+        <translation>不在寄存器表 &quot;%1&quot; 中</translation>
+    </message>
+    <message>
+        <source>a command in register map &quot;%1&quot;, not a setting</source>
+        <translation>在寄存器表 &quot;%1&quot; 中是命令，不是设置参数</translation>
+    </message>
+    <message>
+        <source>a status value in register map &quot;%1&quot;, not a setting</source>
+        <translation>在寄存器表 &quot;%1&quot; 中是状态值，不是设置参数</translation>
+    </message>
+    <message>
+        <source>&quot;stepcom&quot; must be an object, found %1</source>
+        <translation>“stepcom”必须是对象，实际为%1</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;backup&quot; must be {&quot;operation&quot;: one of %1, &quot;device&quot;: text}</source>
+        <translation>“metadata”：“backup”必须是 {&quot;operation&quot;: %1 之一, &quot;device&quot;: 文本}</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</source>
+        <translation>“metadata”：“backup”：“device”必须是最多 200 个字符的文本</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileFilesDialog</name>
+    <message>
+        <source>differ</source>
+        <translation>不同</translation>
+    </message>
+    <message>
+        <source>the same</source>
+        <translation>相同</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>只在 A 中</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>只在 B 中</translation>
+    </message>
+    <message>
+        <source>outside this map</source>
+        <translation>超出此寄存器表</translation>
+    </message>
+    <message>
+        <source>Motor %1 · %2</source>
+        <translation>电机 %1 · %2</translation>
+    </message>
+    <message>
+        <source>(not a setting of this map)</source>
+        <translation>（不是此寄存器表的设置）</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map (%5 of them differ).</source>
+        <translation>%1 项不同，%2 项只在 A 中，%3 项只在 B 中，%4 项超出此寄存器表（其中 %5 项不同）。</translation>
+    </message>
+    <message>
+        <source>The files hold the same values.</source>
+        <translation>两个文件的值相同。</translation>
+    </message>
+    <message>
+        <source>The files differ.</source>
+        <translation>两个文件不同。</translation>
+    </message>
+    <message>
+        <source>Compare profiles: %1 and %2</source>
+        <translation>比较参数文件：%1 与 %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>register map %1</source>
+        <translation>寄存器表 %1</translation>
+    </message>
+    <message>
+        <source>Two files compared against register map %1/%2; no controller is read or written.</source>
+        <translation>两个文件按寄存器表 %1/%2 比较；不读取也不写入任何控制器。</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>分组</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>参数名</translation>
+    </message>
+    <message>
+        <source>Differences only</source>
+        <translation>只显示不同项</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileVariance</name>
+    <message>
+        <source>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</source>
+        <translation>参数文件由寄存器表 &quot;%1&quot; 生成；当前寄存器表是 &quot;%2&quot;：只能应用两者共有的设置参数</translation>
+    </message>
+    <message>
+        <source>unknown to this map: %1 = %2 (%3)</source>
+        <translation>此寄存器表中没有：%1 = %2（%3）</translation>
+    </message>
+    <message>
+        <source>cannot be applied: %1</source>
+        <translation>无法应用：%1</translation>
+    </message>
+    <message>
+        <source>not in the profile: %1 (%2)</source>
+        <translation>参数文件中没有：%1（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReferenceTracker</name>
+    <message>
+        <source>referenced</source>
+        <translation>已建立参考点</translation>
+    </message>
+    <message>
+        <source>not referenced (not homed yet)</source>
+        <translation>未建立参考点（尚未回零）</translation>
+    </message>
+    <message>
+        <source>not referenced (homing ended without the home input)</source>
+        <translation>未建立参考点（回零结束时原点输入未接通）</translation>
+    </message>
+    <message>
+        <source>not referenced (homing was interrupted)</source>
+        <translation>未建立参考点（回零被中断）</translation>
+    </message>
+    <message>
+        <source>not referenced (E-STOP)</source>
+        <translation>未建立参考点（急停）</translation>
+    </message>
+    <message>
+        <source>not referenced (coordinates zeroed)</source>
+        <translation>未建立参考点（坐标已清零）</translation>
+    </message>
+    <message>
+        <source>not referenced (link lost)</source>
+        <translation>未建立参考点（连接丢失）</translation>
     </message>
 </context>
 <context>
@@ -4416,6 +5722,153 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::TravelCalibration</name>
+    <message>
+        <source>commanded distance</source>
+        <translation>指令距离</translation>
+    </message>
+    <message>
+        <source>measured distance</source>
+        <translation>实测距离</translation>
+    </message>
+    <message>
+        <source>the %1 must be more than 0 %2, found %3</source>
+        <translation>%1必须大于 0 %2，实际为 %3</translation>
+    </message>
+    <message>
+        <source>not a number</source>
+        <translation>非数字</translation>
+    </message>
+    <message>
+        <source>the %1 %2 %3 is not a distance on a machine</source>
+        <translation>%1 %2 %3 不是机器上可能的距离</translation>
+    </message>
+    <message>
+        <source>the current pitch (%1) cannot be corrected: %2</source>
+        <translation>当前螺距（%1）无法修正：%2</translation>
+    </message>
+    <message>
+        <source>it must be more than 0</source>
+        <translation>它必须大于 0</translation>
+    </message>
+    <message>
+        <source>the distances must be at least 0.001 %1</source>
+        <translation>距离至少为 0.001 %1</translation>
+    </message>
+    <message>
+        <source>%1 %2 measured for %3 %2 commanded is off by a factor of %4: that is not a calibration error. Check the microsteps (driver DIP switches and register), the step angle and the pitch, then measure again</source>
+        <translation>指令 %3 %2 实测 %1 %2，相差 %4 倍：这不是校准误差。请检查细分（驱动器拨码和寄存器）、步距角和螺距，然后重新测量</translation>
+    </message>
+    <message>
+        <source>the corrected pitch would be %1 %2: %3</source>
+        <translation>修正后的螺距将为 %1 %2：%3</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TravelLimits</name>
+    <message>
+        <source>motor %1: this register map has no such axis</source>
+        <translation>电机 %1：此寄存器表中没有这个轴</translation>
+    </message>
+    <message>
+        <source>motor %1, software travel limit %2: %3</source>
+        <translation>电机 %1，软件行程限位 %2：%3</translation>
+    </message>
+    <message>
+        <source>motor %1: the software travel limit min (%2) must be below max (%3)</source>
+        <translation>电机 %1：软件行程限位的最小值（%2）必须小于最大值（%3）</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is not a position</source>
+        <translation>电机 %1：%2 不是一个位置</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is beyond the software travel limit max %3</source>
+        <translation>电机 %1：%2 超出软件行程限位最大值 %3</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 is beyond the software travel limit min %3</source>
+        <translation>电机 %1：%2 超出软件行程限位最小值 %3</translation>
+    </message>
+    <message>
+        <source>motor %1 is at %2, at or beyond its software travel limit max %3: it may only jog toward −</source>
+        <translation>电机 %1 位于 %2，已到达或超出软件行程限位最大值 %3：只能朝 − 方向点动</translation>
+    </message>
+    <message>
+        <source>motor %1 is at %2, at or beyond its software travel limit min %3: it may only jog toward +</source>
+        <translation>电机 %1 位于 %2，已到达或超出软件行程限位最小值 %3：只能朝 + 方向点动</translation>
+    </message>
+    <message>
+        <source>motor %1 reached its software travel limit max %2 (polled at %3): stop</source>
+        <translation>电机 %1 已到达软件行程限位最大值 %2（轮询位置 %3）：停止</translation>
+    </message>
+    <message>
+        <source>motor %1 reached its software travel limit min %2 (polled at %3): stop</source>
+        <translation>电机 %1 已到达软件行程限位最小值 %2（轮询位置 %3）：停止</translation>
+    </message>
+    <message>
+        <source>up to %1 beyond a software limit at %2/s (reaction %3 ms: poll %4 ms, read %5 ms, stop %6 ms)</source>
+        <translation>以 %2/s 运行时最多越过软件限位 %1（反应时间 %3 ms：轮询 %4 ms，读取 %5 ms，停止 %6 ms）</translation>
+    </message>
+    <message>
+        <source>braking %1 ms included</source>
+        <translation>已计入 %1 ms 减速</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot; must be an object {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</source>
+        <translation>“travelLimits”必须是对象 {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: unknown axis &quot;%1&quot; (this map has motor1 .. motor%2)</source>
+        <translation>“travelLimits”：未知的轴“%1”（此寄存器表有 motor1 .. motor%2）</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot; must be an object {&quot;min&quot;: …, &quot;max&quot;: …}</source>
+        <translation>“travelLimits”：“%1”必须是对象 {&quot;min&quot;: …, &quot;max&quot;: …}</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot;: unknown field &quot;%2&quot; (allowed: min, max)</source>
+        <translation>“travelLimits”：“%1”：未知字段“%2”（允许：min、max）</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot;: &quot;%2&quot; must be a number</source>
+        <translation>“travelLimits”：“%1”：“%2”必须是数字</translation>
+    </message>
+    <message>
+        <source>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</source>
+        <translation>“travelLimits”：“%1”既没有设定 min 也没有设定 max</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ValueCheck</name>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>%1: enter a value (%2).</source>
+        <translation>%1：请输入数值（%2）。</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number. Allowed: %3.</source>
+        <translation>%1：“%2”不是数字。允许范围：%3。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: at most %n decimal(s). Allowed: %2.</source>
+        <translation>
+            <numerusform>%1：最多 %n 位小数。允许范围：%2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the allowed range %3.</source>
+        <translation>%1：%2 超出允许范围 %3。</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not one of %3.</source>
+        <translation>%1：“%2”不是 %3 之一。</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::WiringCheck</name>
     <message>
         <source>positive limit</source>
@@ -4585,6 +6038,25 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&amp;Write</source>
         <translation>写入(&amp;W)</translation>
     </message>
+    <message>
+        <source>The pages flag problems in these values:</source>
+        <translation>页面已指出这些值中的问题：</translation>
+    </message>
+    <message>
+        <source>&amp;Write anyway</source>
+        <translation>仍然写入(&amp;W)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WriteReview</name>
+    <message>
+        <source>Arc: %1</source>
+        <translation>圆弧：%1</translation>
+    </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>直线：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::XYPlot</name>
@@ -4639,48 +6111,82 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>要执行的命令。</translation>
     </message>
     <message>
-        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.
-
-Commands:
-  params                 list every parameter and command of the register map
-  read [KEY...]          read parameters (all when none are named)
-  write KEY=VALUE...     write parameters in engineering units, then verify
-  command NAME           pulse a command coil (e.g. motor1.stop, estop)
-  monitor                print the live status as one JSON object per line,
-                         until --count samples or Ctrl-C (--interval MS)
-  dump FILE              read every setting and save it as a profile file
-                         (--name, --notes; --include-link adds id and baud)
-  diff FILE              compare the controller with a profile; exit 0 same,
-                         1 different, 2 bad file, 3 link or device error
-  apply FILE             write the profile&apos;s values that differ, after showing
-                         them and asking (--yes skips the question), then verify;
-                         --include-link also writes device id and baud,
-                         --save-to-flash saves afterwards
-  report FILE.pdf|.html  write the commissioning report (--name, --notes,
-                         --lang en|zh_CN)
-
-Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。
-
-命令：
-  params                 列出寄存器表中的全部参数和命令
-  read [KEY...]          读取参数（未指定时读取全部）
-  write KEY=VALUE...     以工程单位写入参数，然后校验
-  command NAME           触发一个命令线圈（例如 motor1.stop、estop）
-  monitor                以每行一个 JSON 对象输出实时状态，
-                         直到 --count 个样本或 Ctrl-C（--interval MS）
-  dump FILE              读取全部设置并保存为参数文件
-                         （--name、--notes；--include-link 包括地址和波特率）
-  diff FILE              将控制器与参数文件比较；退出码 0 相同，
-                         1 不同，2 文件错误，3 连接或设备错误
-  apply FILE             写入参数文件中不同的值：先列出并询问
-                         （--yes 跳过询问），然后校验；
-                         --include-link 同时写入设备地址和波特率，
-                         --save-to-flash 之后保存到闪存
-  report FILE.pdf|.html  生成调试报告（--name、--notes、
-                         --lang en|zh_CN）
-
-退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
+        <source>list every parameter and command of the register map</source>
+        <translation>列出寄存器表中的全部参数和命令</translation>
+    </message>
+    <message>
+        <source>read parameters (all when none are named)</source>
+        <translation>读取参数（未指定时读取全部）</translation>
+    </message>
+    <message>
+        <source>write parameters in engineering units, then verify</source>
+        <translation>以工程单位写入参数，然后校验</translation>
+    </message>
+    <message>
+        <source>pulse a command coil (e.g. motor1.stop, estop)</source>
+        <translation>触发一个命令线圈（例如 motor1.stop、estop）</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS)</source>
+        <translation>以每行一个 JSON 对象输出实时状态，
+直到 --count 个样本或 Ctrl-C（--interval MS）</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud)</source>
+        <translation>读取全部设置并保存为参数文件
+（--name、--notes；--include-link 包括地址和波特率）</translation>
+    </message>
+    <message>
+        <source>compare the controller with a profile; exit 0 same,
+1 different, 2 bad file, 3 link or device error</source>
+        <translation>将控制器与参数文件比较；退出码 0 相同，
+1 不同，2 文件错误，3 连接或设备错误</translation>
+    </message>
+    <message>
+        <source>Commands:</source>
+        <translation>命令：</translation>
+    </message>
+    <message>
+        <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</source>
+        <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。</translation>
+    </message>
+    <message>
+        <source>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
+        <translation>退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
+    </message>
+    <message>
+        <source>compare two profiles, no controller needed; exit 0
+same, 1 different, 2 bad file</source>
+        <translation>比较两个参数文件，无需控制器；退出码 0 相同，
+1 不同，2 文件错误</translation>
+    </message>
+    <message>
+        <source>write the profile&apos;s values that differ, after showing
+them and asking (--yes skips the question), then verify;
+--include-link also writes device id and baud,
+--save-to-flash saves afterwards; the settings it
+replaces are saved as a backup first (--no-backup)</source>
+        <translation>写入参数文件中不同的值：先列出并询问
+（--yes 跳过询问），然后校验；
+--include-link 同时写入设备地址和波特率，
+--save-to-flash 之后保存到闪存；被替换的设置
+先保存为备份（--no-backup 不备份）</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file and its checklist, no controller needed)</source>
+        <translation>生成调试报告（--name、--notes、
+--lang en|zh_CN；--from PROFILE：根据参数文件
+及其检查表生成，无需控制器）</translation>
+    </message>
+    <message>
+        <source>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</source>
+        <translation>触发一个运动命令并等待其结束；输出
+结果（--json），仅在完成或已建立参考点时退出码为 0</translation>
     </message>
 </context>
 </TS>

@@ -1,11 +1,12 @@
 #include "mainwindow.h"
 
-#include "bus/modbuslink.h"
 #include "device/devicesession.h"
-#include "device/jogcontroller.h" // jogging (issue 5)
+#include "device/jogcontroller.h"
+#include "device/linkhealth.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "language.h"
+#include "offlineactions.h" // working without the machine (issue 18)
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
 #include "pages/inputspage.h"
@@ -17,8 +18,12 @@
 #include "profileactions.h" // profiles (issue 7)
 #include "widgets/linkstatus.h"
 #include "widgets/messageview.h"
+#include "widgets/offlinebanner.h"
 #include "widgets/statusdock.h" // monitoring (issue 5)
 #include "widgets/trafficview.h"
+#include "writeflow.h"
+
+#include "profile/profiledocument.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -36,6 +41,7 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
+#include <QVBoxLayout>
 
 namespace stepcom {
 
@@ -47,13 +53,22 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     , m_stack(new QStackedWidget(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
+    m_writeFlow = new WriteFlow(session, this);
     auto *splitter = new QSplitter(this);
     splitter->addWidget(m_sidebar);
     splitter->addWidget(m_stack);
     splitter->setStretchFactor(1, 1);
     m_sidebar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
     m_sidebar->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 28);
-    setCentralWidget(splitter);
+    // Working without the machine (issue 18): the banner above the pages while a file is edited.
+    m_offline = new OfflineActions(session, this);
+    m_offlineBanner = new OfflineBanner(m_offline->document(), this);
+    auto *central = new QWidget(this);
+    auto *centralLayout = new QVBoxLayout(central);
+    centralLayout->setContentsMargins(0, 0, 0, 0);
+    centralLayout->addWidget(m_offlineBanner);
+    centralLayout->addWidget(splitter, 1);
+    setCentralWidget(central);
     connect(m_sidebar, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
 
     addPage(new ConnectionPage(session, this));
@@ -71,11 +86,10 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     createMenus();
     createDocks();
     m_linkStatus = new LinkStatus(session, this);
-    // --- jogging (issue 5): a page change stops every jog; jog messages go to the dock ---
-    connect(m_sidebar, &QListWidget::currentRowChanged, m_motion->jog(),
-            [this] { m_motion->jog()->stopAll(tr("another page was chosen")); });
-    connect(m_motion->jog(), &JogController::message, m_messages, &MessageView::add);
-    // --- end jogging ---
+    // A page change stops every jog (the session's rule); jog messages go to the dock.
+    connect(m_sidebar, &QListWidget::currentRowChanged, session,
+            [session] { session->stopJogging(DeviceSession::JogStop::PageLeft); });
+    connect(session->jog(), &JogController::message, m_messages, &MessageView::add);
     connect(m_profiles, &ProfileActions::finished, this, // profiles (issue 7)
             [this](bool ok, const QString &text) {
                 m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,
@@ -83,17 +97,32 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
                 statusBar()->showMessage(text, 5000);
             });
     statusBar()->addPermanentWidget(m_linkStatus);
+    // --- working without the machine (issue 18) ---
+    m_profiles->setOfflineOpener([this](const QString &path) { return m_offline->openFile(path); });
+    connect(m_offline, &OfflineActions::finished, this, [this](bool ok, const QString &text) {
+        m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning,
+                        text);
+        statusBar()->showMessage(text, 5000);
+    });
+    connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
+    // --- end working without the machine ---
 
     connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
-    connect(session->store(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
+    connect(session->parameters(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
     connect(session, &DeviceSession::message, this,
             [this](DeviceSession::Severity s, const QString &text) {
                 m_messages->add(s, text);
                 statusBar()->showMessage(text, 5000);
             });
-    connect(session, &DeviceSession::connected, this, [this](bool ok, const QString &) {
-        if (ok && currentPage() && qobject_cast<ConnectionPage *>(currentPage()))
-            showPage(1); // connected: on to the first motor
+    // On to the first motor once the controller answered, not when the port opened: a port
+    // with nobody behind it keeps the Connection page and its "not answering" hints in view.
+    connect(session->health(), &LinkHealth::stateChanged, this, [this](LinkHealth::State s) {
+        if (s == LinkHealth::State::Answering && !m_answeredOnce && currentPage() &&
+            qobject_cast<ConnectionPage *>(currentPage()))
+            showPage(1);
+        m_answeredOnce = m_answeredOnce || s == LinkHealth::State::Answering;
+        if (s == LinkHealth::State::Closed)
+            m_answeredOnce = false;
     });
     retranslate();
     // The sidebar as wide as its titles, not as wide as a list's default size hint (256 px):
@@ -114,7 +143,7 @@ void MainWindow::addPage(Page *page)
 
 WriteChangesDialog *MainWindow::writeDialog() const
 {
-    return m_writeDialog;
+    return m_writeFlow->dialog();
 }
 
 QMessageBox *MainWindow::closeQuestion() const
@@ -151,7 +180,7 @@ void MainWindow::createActions()
     m_write =
         make("writeChanges", QKeySequence(Qt::CTRL | Qt::Key_Return), [this] { writeChanges(); });
     m_revert = make("revert", QKeySequence(Qt::CTRL | Qt::Key_R),
-                    [this] { m_session->store()->revertAll(); });
+                    [this] { m_session->parameters()->revertAll(); });
     m_save = make("saveToFlash", QKeySequence::Save, [this] { m_session->saveToFlash(); });
     m_disconnect = make("disconnect", QKeySequence(), [this] { m_session->disconnectFrom(); });
     m_estopAction = make("emergencyStop", QKeySequence(), [this] { m_estop->trigger(); });
@@ -195,12 +224,19 @@ void MainWindow::createMenus()
     m_fileMenu = menuBar()->addMenu(QString());
     // --- profiles (issue 7): open/compare/apply, save, recent, the commissioning report ---
     m_profiles = new ProfileActions(m_session, this);
+    m_fileMenu->addAction(m_offline->newAction()); // issue 18
     m_fileMenu->addAction(m_profiles->openAction());
     m_fileMenu->addMenu(m_profiles->recentMenu());
+    m_fileMenu->addAction(m_offline->saveAction());
+    m_fileMenu->addAction(m_offline->saveAsAction());
+    m_fileMenu->addAction(m_offline->closeAction());
+    m_fileMenu->addAction(m_offline->compareAction());
+    m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->saveFromDeviceAction());
     m_fileMenu->addAction(m_profiles->saveFromEditedAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->reportAction());
+    m_fileMenu->addAction(m_offline->reportAction()); // issue 18
     m_fileMenu->addSeparator();
     // --- end profiles ---
     m_fileMenu->addAction(m_quit);
@@ -220,7 +256,7 @@ void MainWindow::createMenus()
 void MainWindow::createDocks()
 {
     m_traffic = new TrafficView(this);
-    m_traffic->setLog(m_session->link()->traffic());
+    m_traffic->setLog(m_session->traffic());
     m_trafficDock = new QDockWidget(this);
     m_trafficDock->setObjectName(QStringLiteral("trafficDock"));
     m_trafficDock->setWidget(m_traffic);
@@ -241,9 +277,25 @@ void MainWindow::createDocks()
     // --- end monitoring ---
 }
 
+void MainWindow::showOrigin()
+{
+    const ProfileDocument *file = m_offline->document();
+    if (!file->isOpen()) {
+        setWindowTitle(tr("StepCom — stepper controller commissioning"));
+        statusBar()->setStyleSheet(QString());
+        return;
+    }
+    setWindowTitle(
+        tr("%1%2 — profile file, no controller — StepCom")
+            .arg(file->displayName(), file->isModified() ? QStringLiteral("*") : QString()));
+    // The status area in the banner's colour: a file, not a machine.
+    statusBar()->setStyleSheet(
+        QStringLiteral("QStatusBar { background: #d6e6ff; } QStatusBar QLabel { color: black; }"));
+}
+
 void MainWindow::retranslate()
 {
-    setWindowTitle(tr("StepCom — stepper controller commissioning"));
+    showOrigin();
     m_readAll->setText(tr("&Read all"));
     m_readAll->setToolTip(tr("Read every parameter from the controller (%1)")
                               .arg(m_readAll->shortcut().toString(QKeySequence::NativeText)));
@@ -266,6 +318,7 @@ void MainWindow::retranslate()
     m_about->setText(tr("&About StepCom"));
     m_fileMenu->setTitle(tr("&File"));
     m_profiles->retranslate(); // profiles (issue 7)
+    m_offline->retranslate();  // issue 18
     m_deviceMenu->setTitle(tr("&Device"));
     m_viewMenu->setTitle(tr("&View"));
     m_languageMenu->setTitle(tr("&Language"));
@@ -285,17 +338,20 @@ void MainWindow::retranslate()
 
 void MainWindow::changeEvent(QEvent *event)
 {
-    if (event->type() == QEvent::LanguageChange)
+    if (event->type() == QEvent::LanguageChange) {
         retranslate();
-    if (event->type() == QEvent::ActivationChange && !isActiveWindow()) // jogging (issue 5)
-        m_motion->jog()->stopAll(tr("the window lost focus"));
+        // A passing message was made in the old language; the messages dock keeps it.
+        statusBar()->clearMessage();
+    }
+    if (event->type() == QEvent::ActivationChange && !isActiveWindow())
+        m_session->stopJogging(DeviceSession::JogStop::FocusLost);
     QMainWindow::changeEvent(event);
 }
 
 void MainWindow::updateActions()
 {
     const bool connected = m_session->isConnected();
-    const bool edits = m_session->store()->hasEdits();
+    const bool edits = m_session->parameters()->hasEdits();
     m_readAll->setEnabled(connected);
     m_write->setEnabled(connected && edits);
     m_revert->setEnabled(edits);
@@ -305,28 +361,27 @@ void MainWindow::updateActions()
 
 void MainWindow::writeChanges()
 {
-    if (!m_session->store()->hasEdits() || !m_session->isConnected())
-        return;
-    if (m_writeDialog)
-        m_writeDialog->close();
-    m_writeDialog = new WriteChangesDialog(*m_session->store(), this);
-    m_writeDialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(m_writeDialog, &QDialog::accepted, this,
-            [this, dialog = m_writeDialog.data()] { m_session->write(dialog->writes()); });
-    m_writeDialog->open();
+    m_writeFlow->openAll();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    if (m_session->store()->hasEdits() && !m_closeConfirmed) {
+    if (m_session->parameters()->hasEdits() && !m_closeConfirmed) {
         event->ignore();
         if (m_closeQuestion)
             return;
-        m_closeQuestion = new QMessageBox(QMessageBox::Warning, tr("Unwritten changes"),
-                                          tr("%n edited value(s) were never written to the "
-                                             "controller. Close anyway and lose them?",
-                                             nullptr, int(m_session->store()->editedKeys().size())),
-                                          QMessageBox::Discard | QMessageBox::Cancel, this);
+        const int edits = int(m_session->parameters()->editedKeys().size());
+        m_closeQuestion = new QMessageBox(
+            QMessageBox::Warning, tr("Unwritten changes"),
+            m_offline->document()->isOpen()
+                ? tr("%n edited value(s) of %1 are not saved in the file. Close anyway and lose "
+                     "them?",
+                     nullptr, edits)
+                      .arg(m_offline->document()->displayName())
+                : tr("%n edited value(s) were never written to the controller. Close anyway "
+                     "and lose them?",
+                     nullptr, edits),
+            QMessageBox::Discard | QMessageBox::Cancel, this);
         m_closeQuestion->setAttribute(Qt::WA_DeleteOnClose);
         m_closeQuestion->setDefaultButton(QMessageBox::Cancel);
         connect(m_closeQuestion, &QMessageBox::finished, this, [this](int result) {
@@ -338,21 +393,20 @@ void MainWindow::closeEvent(QCloseEvent *event)
         m_closeQuestion->open();
         return;
     }
-    // --- jogging (issue 5): stop what is held and let the stop reach the wire (at most 1 s) ---
-    if (!m_jogStopAwaited &&
-        (m_motion->jog()->stopAll(tr("the window closes")) > 0 || m_motion->jog()->isBusy())) {
+    // Stop what is held and let the stop reach the wire (at most 1 s).
+    if (!m_jogStopAwaited && (m_session->stopJogging(DeviceSession::JogStop::WindowClosing) > 0 ||
+                              m_session->jog()->isBusy())) {
         m_jogStopAwaited = true;
         event->ignore();
         const auto closeAgain = [this] {
             if (isVisible())
                 close();
         };
-        connect(m_motion->jog(), &JogController::settled, this, closeAgain,
+        connect(m_session->jog(), &JogController::settled, this, closeAgain,
                 Qt::SingleShotConnection);
         QTimer::singleShot(1000, this, closeAgain);
         return;
     }
-    // --- end jogging ---
     saveLayout();
     event->accept();
 }

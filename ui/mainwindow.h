@@ -17,12 +17,15 @@ class DeviceSession;
 class EmergencyStop;
 class LinkStatus;
 class MessageView;
-class MotionPage; // jogging (issue 5)
+class MotionPage;     // jogging (issue 5)
+class OfflineActions; // working without the machine (issue 18)
+class OfflineBanner;
 class Page;
 class ProfileActions; // profiles (issue 7)
 class StatusDock;     // monitoring (issue 5)
 class TrafficView;
 class WriteChangesDialog;
+class WriteFlow;
 
 // Composes the pages, docks, toolbar and menus around one DeviceSession. It does no page's
 // work: pages are views of the session's store; actions call the session.
@@ -44,6 +47,8 @@ public:
     MessageView *messageView() const { return m_messages; }
     MotionPage *motionPage() const { return m_motion; }           // jogging (issue 5)
     ProfileActions *profileActions() const { return m_profiles; } // profiles (issue 7)
+    OfflineActions *offlineActions() const { return m_offline; }  // issue 18
+    OfflineBanner *offlineBanner() const { return m_offlineBanner; }
     // The dialogs a test (or a curious user) may want to reach while they are open.
     WriteChangesDialog *writeDialog() const;
     QMessageBox *closeQuestion() const;
@@ -63,6 +68,8 @@ private:
     void addPage(Page *page);
     void retranslate();
     void updateActions();
+    // Title and status bar say whether a file or a controller is being edited (issue 18).
+    void showOrigin();
     void restoreLayout();
     void saveLayout();
 
@@ -80,10 +87,13 @@ private:
     LinkStatus *m_linkStatus = nullptr;
     MotionPage *m_motion = nullptr;       // jogging (issue 5)
     ProfileActions *m_profiles = nullptr; // profiles (issue 7)
-    bool m_jogStopAwaited = false;        // jogging (issue 5): close waited for the stops once
-    QPointer<WriteChangesDialog> m_writeDialog;
+    OfflineActions *m_offline = nullptr;  // issue 18
+    OfflineBanner *m_offlineBanner = nullptr;
+    bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once
+    WriteFlow *m_writeFlow = nullptr;
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;
+    bool m_answeredOnce = false; // this connection's controller answered (the page jumped)
 
     QAction *m_readAll = nullptr;
     QAction *m_write = nullptr;

@@ -1,6 +1,5 @@
 #include "profileactions.h"
 
-#include "bus/modbuslink.h"
 #include "device/devicesession.h"
 #include "dialogs/profilecomparedialog.h"
 #include "language.h"
@@ -46,7 +45,8 @@ ProfileActions::ProfileActions(DeviceSession *session, QWidget *window)
     connect(m_saveFromEdited, &QAction::triggered, this, [this] { chooseSave(false); });
     connect(m_report, &QAction::triggered, this, &ProfileActions::chooseReport);
     connect(session, &DeviceSession::linkStateChanged, this, &ProfileActions::updateActions);
-    connect(session->store(), &ParameterStore::valueChanged, this, &ProfileActions::updateActions);
+    connect(session->parameters(), &ParameterStore::valueChanged, this,
+            &ProfileActions::updateActions);
     retranslate();
     rebuildRecent();
     updateActions();
@@ -65,8 +65,12 @@ QMessageBox *ProfileActions::errorBox() const
 void ProfileActions::retranslate()
 {
     m_open->setText(tr("&Open profile…"));
-    m_open->setToolTip(tr("Compare a profile file with the controller; nothing is written until "
-                          "you apply checked rows"));
+    m_open->setToolTip(m_offlineOpener
+                           ? tr("Connected: compare a profile file with the controller (nothing "
+                                "is written until you apply checked rows). Without a controller: "
+                                "edit the file on the pages")
+                           : tr("Compare a profile file with the controller; nothing is written "
+                                "until you apply checked rows"));
     m_saveFromDevice->setText(tr("Save profile from &device…"));
     m_saveFromDevice->setToolTip(tr("Read every parameter, then save them as a profile file"));
     m_saveFromEdited->setText(tr("Save profile from &edited values…"));
@@ -86,7 +90,7 @@ void ProfileActions::updateActions()
     m_report->setEnabled(connected);
     bool known = true;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), false))
-        known = known && m_session->store()->shownValue(p->key).has_value();
+        known = known && m_session->parameters()->shownValue(p->key).has_value();
     m_saveFromEdited->setEnabled(known);
 }
 
@@ -199,9 +203,23 @@ void ProfileActions::chooseReport()
     notes->open();
 }
 
+void ProfileActions::setOfflineOpener(std::function<bool(const QString &)> opener)
+{
+    m_offlineOpener = std::move(opener);
+    retranslate();
+}
+
 bool ProfileActions::openFile(const QString &path)
 {
-    const ProfileParseResult r = ProfileFile::load(path, m_session->map());
+    if (m_offlineOpener && m_session->linkState() == DeviceSession::LinkState::Disconnected) {
+        const bool opened = m_offlineOpener(path);
+        if (opened)
+            addRecent(path);
+        return opened;
+    }
+    // A profile of another map opens too: the comparison lists what this map cannot take.
+    const ProfileParseResult r =
+        ProfileFile::load(path, m_session->map(), ProfileFile::OtherMaps::Accept);
     if (!r.ok()) {
         showErrors(tr("The profile cannot be used"), r.errors);
         return false;
@@ -232,10 +250,10 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
     }
     const QList<const Parameter *> params = Profile::profileParameters(m_session->map(), true);
     QPointer<ProfileActions> self(this);
-    m_session->client()->read(params, Priority::Read, [self, path](const ReadOutcome &r) {
+    m_session->read(params, [self, path](const ReadOutcome &r) {
         if (!self)
             return;
-        self->m_session->store()->setDeviceValues(r.values);
+        self->m_session->parameters()->setDeviceValues(r.values);
         if (!r.ok) {
             self->showErrors(tr("Save profile"), QStringList{tr("Nothing was saved: the "
                                                                 "controller could not be read "
@@ -245,7 +263,7 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
         }
         Profile profile = Profile::fromValues(self->m_session->map(), r.values, true);
         profile.name = QFileInfo(path).completeBaseName();
-        profile.deviceId = self->m_session->link()->settings().deviceId;
+        profile.deviceId = self->m_session->settings().deviceId;
         if (const QString e = ProfileFile::save(path, profile, self->m_session->map());
             !e.isEmpty()) {
             self->showErrors(tr("Save profile"), {e});
@@ -263,7 +281,7 @@ bool ProfileActions::saveFromEditedFile(const QString &path)
     QHash<QString, qint64> values;
     QStringList unknown;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), true)) {
-        if (const auto v = m_session->store()->shownValue(p->key))
+        if (const auto v = m_session->parameters()->shownValue(p->key))
             values.insert(p->key, *v);
         else if (!Profile::isLinkSetting(p->key))
             unknown << p->key;
@@ -277,7 +295,7 @@ bool ProfileActions::saveFromEditedFile(const QString &path)
     Profile profile = Profile::fromValues(m_session->map(), values, true);
     profile.name = QFileInfo(path).completeBaseName();
     if (m_session->isConnected())
-        profile.deviceId = m_session->link()->settings().deviceId;
+        profile.deviceId = m_session->settings().deviceId;
     if (const QString e = ProfileFile::save(path, profile, m_session->map()); !e.isEmpty()) {
         showErrors(tr("Save profile"), {e});
         return false;
@@ -296,10 +314,10 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         return;
     }
     QPointer<ProfileActions> self(this);
-    m_session->client()->readAll([self, path, notes](const ReadOutcome &r) {
+    m_session->readAll([self, path, notes](const ReadOutcome &r) {
         if (!self)
             return;
-        self->m_session->store()->setDeviceValues(r.values);
+        self->m_session->parameters()->setDeviceValues(r.values);
         if (!r.ok) {
             self->showErrors(tr("Commissioning report"),
                              QStringList{tr("No report: the controller could not be read "
@@ -310,8 +328,8 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         ReportInput input;
         input.map = self->m_session->map();
         input.values = r.values;
-        input.link = self->m_session->link()->settings().describe();
-        input.deviceId = self->m_session->link()->settings().deviceId;
+        input.link = self->m_session->settings().describe();
+        input.deviceId = self->m_session->settings().deviceId;
         input.notes = notes;
         input.date = QDateTime::currentDateTime();
         input.locale = Language::instance().current();

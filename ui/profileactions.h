@@ -4,6 +4,8 @@
 #include <QPointer>
 #include <QStringList>
 
+#include <functional>
+
 class QAction;
 class QMenu;
 class QMessageBox;
@@ -36,7 +38,9 @@ public:
     void retranslate();
 
     // Parse, then show the comparison; a bad file shows every problem and writes nothing.
+    // Without a controller the file goes to `opener` (editing it offline) when one is set.
     bool openFile(const QString &path);
+    void setOfflineOpener(std::function<bool(const QString &)> opener);
     // Read everything from the controller, then save (done reports the outcome).
     void saveFromDeviceFile(const QString &path);
     // Save what the window shows: the edits where there are any, else the controller's values.
@@ -67,6 +71,7 @@ private:
     QMenu *m_recent;
     QPointer<ProfileCompareDialog> m_compare;
     QPointer<QMessageBox> m_errorBox;
+    std::function<bool(const QString &)> m_offlineOpener;
 };
 
 } // namespace stepcom

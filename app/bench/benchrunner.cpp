@@ -4,8 +4,9 @@
 
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
-#include "poll/poller.h"
-#include "poll/readplanner.h"
+#include "device/poller.h"
+#include "device/readplanner.h"
+#include "device/sessioninternals.h" // the link itself is what is measured
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 
@@ -42,7 +43,7 @@ struct LinkWatch
 
     explicit LinkWatch(DeviceSession &session)
     {
-        ModbusLink *link = session.link();
+        ModbusLink *link = SessionInternals::link(session);
         QObject::connect(link, &ModbusLink::dispatched, &context,
                          [this](quint64 id, const Request &r) {
                              ++dispatched;
@@ -61,7 +62,7 @@ struct LinkWatch
                                      std::max(longestPollMs, msBetween(*it, Clock::now()));
                              pollStarted.erase(it);
                          });
-        QObject::connect(session.statusPoller(), &Poller::cycleFinished, &context, [this] {
+        QObject::connect(&session, &DeviceSession::statusCycleFinished, &context, [this] {
             mostPollsInACycle = std::max(mostPollsInACycle, pollsThisCycle);
             pollsThisCycle = 0;
         });
@@ -84,16 +85,15 @@ void pause(int ms)
 void measureStatus(DeviceSession &session, LinkWatch &watch, const BenchConfig &config,
                    BaudResult &r)
 {
-    Poller *poller = session.statusPoller();
-    waitUntil([poller] { return poller->stats().cycles >= 2; }, 5000); // warm up
-    poller->resetStats();
+    waitUntil([&session] { return session.statusStats().cycles >= 2; }, 5000); // warm up
+    session.resetStatusStats();
     watch.mostPollsInACycle = 0;
-    if (!waitUntil([&] { return poller->stats().cycles >= config.cycles; },
+    if (!waitUntil([&] { return session.statusStats().cycles >= config.cycles; },
                    config.cycles * 2000 + 5000)) {
-        r.error = QStringLiteral("(a): only %1 cycles").arg(poller->stats().cycles);
+        r.error = QStringLiteral("(a): only %1 cycles").arg(session.statusStats().cycles);
         return;
     }
-    const PollStats &s = poller->stats();
+    const PollStats &s = session.statusStats();
     r.cycleMs.count = s.cycles;
     r.cycleMs.mean = s.meanMs();
     r.cycleMs.min = double(s.minMs);
@@ -102,15 +102,14 @@ void measureStatus(DeviceSession &session, LinkWatch &watch, const BenchConfig &
     r.readsPerCycle = watch.mostPollsInACycle;
     if (s.failed > 0)
         r.error =
-            QStringLiteral("(a): %1 cycles failed: %2").arg(s.failed).arg(poller->lastError());
+            QStringLiteral("(a): %1 cycles failed: %2").arg(s.failed).arg(session.statusError());
 }
 
 void measureReadAll(DeviceSession &session, LinkWatch &watch, const BenchConfig &config,
                     BaudResult &r)
 {
-    Poller *poller = session.statusPoller();
-    ModbusLink *link = session.link();
-    poller->stop(); // read-all alone on the line, as at connect
+    ModbusLink *link = SessionInternals::link(session);
+    session.stopStatus(); // read-all alone on the line, as at connect
     waitUntil([link] { return !link->isBusy() && link->queuedCount() == 0; }, 5000);
     for (int i = 0; i < config.readAlls; ++i) {
         struct State
@@ -123,7 +122,7 @@ void measureReadAll(DeviceSession &session, LinkWatch &watch, const BenchConfig 
         auto state = std::make_shared<State>();
         const int before = watch.dispatched;
         state->clock.start();
-        session.client()->readAll([state](const ReadOutcome &o) {
+        session.readAll([state](const ReadOutcome &o) {
             state->ms = double(state->clock.nsecsElapsed()) / 1e6;
             state->outcome = o;
             state->done = true;
@@ -136,18 +135,17 @@ void measureReadAll(DeviceSession &session, LinkWatch &watch, const BenchConfig 
         r.readAllMs.add(state->ms);
         r.readAllReads = std::max(r.readAllReads, watch.dispatched - before);
     }
-    poller->start();
+    session.startStatus();
 }
 
 void measureEmergencyStop(DeviceSession &session, SimDevice *device, const BenchConfig &config,
                           BaudResult &r)
 {
     const Parameter *estop = session.map().find(QStringLiteral("estop"));
-    Poller *poller = session.statusPoller();
     for (int round = 0; round < config.estopRounds; ++round) {
         device->setMachinePosition(1, 50.0);
         device->command(QStringLiteral("motor1.forward"));
-        if (!waitUntil([poller] { return poller->isFast(); }, 3000)) {
+        if (!waitUntil([&session] { return session.isStatusFast(); }, 3000)) {
             r.error = QStringLiteral("(c): the poller never saw the motor run");
             return;
         }
@@ -171,13 +169,14 @@ void measureEmergencyStop(DeviceSession &session, SimDevice *device, const Bench
         bool next = false;
         Clock::time_point dispatchedAt;
         QObject context;
-        QObject::connect(
-            session.link(), &ModbusLink::dispatched, &context, [&](quint64, const Request &req) {
-                if (std::exchange(seen, true))
-                    return;
-                dispatchedAt = Clock::now();
-                next = req.type == Request::Type::WriteCoil && req.address == estop->address;
-            });
+        QObject::connect(SessionInternals::link(session), &ModbusLink::dispatched, &context,
+                         [&](quint64, const Request &req) {
+                             if (std::exchange(seen, true))
+                                 return;
+                             dispatchedAt = Clock::now();
+                             next = req.type == Request::Type::WriteCoil &&
+                                    req.address == estop->address;
+                         });
         const Clock::time_point requestedAt = Clock::now();
         session.emergencyStop();
         const bool ok = waitUntil([&] { return seen && stoppedAt != 0; }, 3000);
@@ -240,7 +239,7 @@ BaudResult measureBaud(int baud, const BenchConfig &config)
     host.device()->setValue(QStringLiteral("device.baud"), baud);
 
     DeviceSession session(map);
-    session.statusPoller()->setIntervalMs(0); // full rate
+    session.setStatusIntervalMs(0); // full rate
     LinkWatch watch(session);
     bool read = false;
     QObject::connect(&session, &DeviceSession::readFinished, &session, [&read] { read = true; });

@@ -1,9 +1,6 @@
 #include "ctlmonitor.h"
 
-#include "bus/modbuslink.h"
-#include "device/deviceclient.h"
-#include "device/parameterstore.h"
-#include "poll/poller.h"
+#include "device/devicesession.h"
 #include "signalwatcher.h"
 
 #include <QDateTime>
@@ -40,25 +37,23 @@ QString quoted(const QString &text)
 
 } // namespace
 
-CtlMonitor::CtlMonitor(DeviceClient *device, int count, int intervalMs, QObject *parent)
+CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, QObject *parent)
     : QObject(parent)
-    , m_device(device)
-    , m_store(new ParameterStore(device->map(), this))
-    , m_poller(new Poller(device, m_store, this))
+    , m_session(session)
     , m_count(count)
     , m_out(stdout)
     , m_err(stderr)
 {
-    m_poller->useStatusKeys();
-    m_poller->setIntervalMs(intervalMs);
-    for (const QString &key : Poller::statusKeys(device->map())) {
-        if (const Parameter *p = device->map().find(key))
+    m_session->setStatusIntervalMs(intervalMs);
+    for (const QString &key : m_session->statusKeys()) {
+        if (const Parameter *p = m_session->map().find(key))
             m_params << p;
     }
     std::stable_sort(m_params.begin(), m_params.end(),
                      [](const Parameter *a, const Parameter *b) { return rank(a) < rank(b); });
-    connect(m_poller, &Poller::cycleFinished, this, [this](bool ok, qint64) { onCycle(ok); });
-    connect(m_device->link(), &ModbusLink::lost, this, [this](const QString &reason) {
+    connect(m_session, &DeviceSession::statusCycleFinished, this,
+            [this](bool ok, qint64) { onCycle(ok); });
+    connect(m_session, &DeviceSession::linkLost, this, [this](const QString &reason) {
         m_err << QStringLiteral("stepcomctl: ") << tr("link lost: %1").arg(reason) << Qt::endl;
         end(1);
     });
@@ -70,7 +65,7 @@ void CtlMonitor::start()
     m_signals = new SignalWatcher(this);
     connect(m_signals, &SignalWatcher::terminationRequested, this, [this] { end(0); });
     m_clock.start();
-    m_poller->start();
+    m_session->startStatus();
 }
 
 QString CtlMonitor::sampleLine(qint64 tMs) const
@@ -81,7 +76,7 @@ QString CtlMonitor::sampleLine(qint64 tMs) const
                        .arg(now.toString(Qt::ISODateWithMs))
                        .arg(tMs);
     for (const Parameter *p : m_params) {
-        const std::optional<qint64> raw = m_store->deviceValue(p->key);
+        const std::optional<qint64> raw = m_session->parameters()->deviceValue(p->key);
         line += QLatin1Char(',') + quoted(p->key) + QLatin1Char(':') +
                 (raw ? p->formatRaw(*raw) : QStringLiteral("null"));
     }
@@ -94,7 +89,7 @@ void CtlMonitor::onCycle(bool ok)
         return;
     if (!ok) {
         // A bad moment on the line is no reason to stop watching: say so and go on.
-        m_err << QStringLiteral("stepcomctl: ") << m_poller->lastError() << Qt::endl;
+        m_err << QStringLiteral("stepcomctl: ") << m_session->statusError() << Qt::endl;
         return;
     }
     m_out << sampleLine(m_clock.elapsed()) << QLatin1Char('\n');
@@ -109,7 +104,7 @@ void CtlMonitor::end(int exitCode)
     if (m_ended)
         return;
     m_ended = true;
-    m_poller->stop();
+    m_session->stopStatus();
     if (exitCode == 0 && m_printed == 0) {
         // Stopped before a single sample: that is no successful run.
         m_err << QStringLiteral("stepcomctl: ")

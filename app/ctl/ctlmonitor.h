@@ -7,21 +7,19 @@
 
 namespace stepcom {
 
-class DeviceClient;
-class ParameterStore;
-class Poller;
+class DeviceSession;
 class SignalWatcher;
 struct Parameter;
 
-// `stepcomctl monitor`: polls the live status with the window's poller and prints one compact
-// JSON object per cycle -- {"time", "t_ms", then every status value in engineering units by map
-// key} -- flushed line by line, until --count samples or SIGINT/SIGTERM.
+// `stepcomctl monitor`: polls the live status through the session, as the window does, and prints
+// one compact JSON object per cycle -- {"time", "t_ms", then every status value in engineering
+// units by map key} -- flushed line by line, until --count samples or SIGINT/SIGTERM.
 class CtlMonitor : public QObject
 {
     Q_OBJECT
 public:
     // count < 1: until stopped; intervalMs 0: as fast as the link allows.
-    CtlMonitor(DeviceClient *device, int count, int intervalMs, QObject *parent = nullptr);
+    CtlMonitor(DeviceSession *session, int count, int intervalMs, QObject *parent = nullptr);
     void start();
     // One line for the values known now (null for what was never read).
     QString sampleLine(qint64 tMs) const;
@@ -34,9 +32,7 @@ private:
     void onCycle(bool ok);
     void end(int exitCode);
 
-    DeviceClient *m_device;
-    ParameterStore *m_store;
-    Poller *m_poller;
+    DeviceSession *m_session;
     SignalWatcher *m_signals = nullptr;
     QList<const Parameter *> m_params; // positions, running flags, then the rest of the status
     int m_count;

@@ -62,11 +62,19 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("verbose"), tr("Show the Modbus traffic on standard error.")},
         {QStringLiteral("yes"), tr("Do not ask: needed for commands that destroy settings.")},
         {QStringLiteral("save-to-flash"), tr("After writing, save the parameters to flash.")},
+        {QStringLiteral("wait"),
+         tr("command: wait until a motion command ends and print how it ended (exit 0 only "
+            "when done or referenced).")},
         {QStringLiteral("include-link"),
          tr("dump, apply: include the device id and baud (apply writes them only with this).")},
+        {QStringLiteral("no-backup"),
+         tr("apply: do not save a backup of the controller's settings before writing.")},
         {QStringLiteral("name"), tr("dump, report: name of the profile or the machine."),
          tr("text")},
         {QStringLiteral("notes"), tr("dump, report: notes to record."), tr("text")},
+        {QStringLiteral("from"),
+         tr("report: make the report from this profile file, not from a controller."),
+         tr("profile")},
         {QStringLiteral("count"), tr("monitor: number of samples (default: until stopped)."),
          tr("n")},
         {QStringLiteral("interval"),
@@ -151,9 +159,12 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.verbose = parser.isSet(QStringLiteral("verbose"));
     o.yes = parser.isSet(QStringLiteral("yes"));
     o.saveToFlash = parser.isSet(QStringLiteral("save-to-flash"));
+    o.wait = parser.isSet(QStringLiteral("wait"));
     o.includeLink = parser.isSet(QStringLiteral("include-link"));
+    o.noBackup = parser.isSet(QStringLiteral("no-backup"));
     o.name = parser.value(QStringLiteral("name"));
     o.notes = parser.value(QStringLiteral("notes"));
+    o.from = parser.value(QStringLiteral("from"));
     const QStringList positional = parser.positionalArguments();
     if (positional.isEmpty())
         return tr("no command given (params, read, write, command, monitor, dump, diff, apply, "

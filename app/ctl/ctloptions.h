@@ -1,6 +1,6 @@
 #pragma once
 
-#include "bus/linksettings.h"
+#include "device/devicesession.h" // LinkSettings
 
 #include <QCommandLineParser>
 #include <QStringList>
@@ -18,9 +18,12 @@ struct CtlOptions
     bool verbose = false;
     bool yes = false;
     bool saveToFlash = false;
+    bool wait = false;                       // command: wait for a motion's end and judge it
     bool includeLink = false;                // dump/apply: device.id and device.baud too
+    bool noBackup = false;                   // apply: no backup of the controller's settings first
     QString name;                            // dump/report: the profile's or the machine's name
     QString notes;                           // dump/report
+    QString from;                            // report --from PROFILE: from a file, no controller
     QString language = QStringLiteral("en"); // --lang or the environment: messages and the report
     int count = -1;
     int intervalMs = 0;

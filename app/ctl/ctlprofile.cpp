@@ -3,15 +3,31 @@
 
 #include "consolereader.h"
 
-#include "bus/modbuslink.h"
+#include "profile/backupstore.h"
+#include "profile/profilecomparison.h"
 #include "profile/profilediff.h"
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
+#include <QLocale>
 
 namespace stepcom {
+
+bool CtlRunner::loadProfile(const QString &path, Profile *out)
+{
+    // A profile of another map (a firmware variant, a model with more axes) opens with what
+    // this map knows; the commands list the rest before they act.
+    const ProfileParseResult r = ProfileFile::load(path, m_map, ProfileFile::OtherMaps::Accept);
+    if (!r.ok()) {
+        for (const QString &e : r.errors)
+            m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+        return false;
+    }
+    *out = *r.profile;
+    return true;
+}
 
 bool CtlRunner::loadProfileArgument(const QString &command, Profile *out)
 {
@@ -19,16 +35,27 @@ bool CtlRunner::loadProfileArgument(const QString &command, Profile *out)
         fail(UsageError, tr("%1 needs exactly one profile file").arg(command));
         return false;
     }
-    const ProfileParseResult r = ProfileFile::load(m_options.arguments.first(), m_map);
-    if (!r.ok()) {
-        for (const QString &e : r.errors)
-            m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+    if (!loadProfile(m_options.arguments.first(), out)) {
         m_err << QStringLiteral("stepcomctl: ") << tr("nothing was written") << Qt::endl;
         finish(UsageError);
         return false;
     }
-    *out = *r.profile;
     return true;
+}
+
+void CtlRunner::printLeftOut(const Profile &profile, const QString &heading)
+{
+    const ProfileVariance &v = profile.variance;
+    if (!v.isVariant() && v.isEmpty())
+        return;
+    if (v.isVariant())
+        m_out << v.describeMaps() << Qt::endl;
+    const QStringList lines = v.describe(m_map, m_options.language);
+    if (lines.isEmpty())
+        return;
+    m_out << heading << Qt::endl;
+    for (const QString &line : lines)
+        m_out << QStringLiteral("  ") << line << Qt::endl;
 }
 
 void CtlRunner::runDump()
@@ -39,63 +66,147 @@ void CtlRunner::runDump()
     }
     const QString path = m_options.arguments.first();
     connectThen([this, path] {
-        m_device->read(
-            Profile::profileParameters(m_map, true), Priority::Read,
-            [this, path](const ReadOutcome &r) {
-                if (!r.ok) {
-                    for (const QString &e : r.errors)
-                        m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-                    fail(DeviceError, tr("nothing was saved: the controller could "
-                                         "not be read completely"));
-                    return;
-                }
-                Profile profile = Profile::fromValues(m_map, r.values, m_options.includeLink);
-                profile.name =
-                    m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
-                profile.notes = m_options.notes;
-                profile.deviceId = m_link->settings().deviceId;
-                if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
-                    fail(UsageError, e);
-                    return;
-                }
-                m_out << tr("saved %n parameter(s) of %1 to %2", nullptr,
-                            int(profile.values.size()))
-                             .arg(m_link->settings().describe(), path)
-                      << Qt::endl;
-                finish(Ok);
-            });
+        m_session->read(Profile::profileParameters(m_map, true), [this,
+                                                                  path](const ReadOutcome &r) {
+            if (!r.ok) {
+                for (const QString &e : r.errors)
+                    m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+                fail(DeviceError, tr("nothing was saved: the controller could "
+                                     "not be read completely"));
+                return;
+            }
+            Profile profile = Profile::fromValues(m_map, r.values, m_options.includeLink);
+            profile.name =
+                m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
+            profile.notes = m_options.notes;
+            profile.deviceId = m_session->settings().deviceId;
+            if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
+                fail(UsageError, e);
+                return;
+            }
+            m_out << tr("saved %n parameter(s) of %1 to %2", nullptr, int(profile.values.size()))
+                         .arg(m_session->settings().describe(), path)
+                  << Qt::endl;
+            finish(Ok);
+        });
     });
 }
 
 void CtlRunner::runDiff()
 {
+    if (m_options.arguments.size() == 2) {
+        runDiffFiles(); // two files: no controller needed
+        return;
+    }
+    if (m_options.arguments.size() != 1) {
+        fail(UsageError, tr("diff needs one profile file (compared with the controller) or two "
+                            "(compared with each other)"));
+        return;
+    }
     Profile profile;
     if (!loadProfileArgument(QStringLiteral("diff"), &profile))
         return;
     m_linkError = 3; // 1 means "different" here
     connectThen([this, profile] {
-        m_device->read(Profile::profileParameters(m_map, true), Priority::Read,
-                       [this, profile](const ReadOutcome &r) {
-                           if (!r.ok) {
-                               for (const QString &e : r.errors)
-                                   m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-                               finish(m_linkError);
-                               return;
-                           }
-                           const auto diffs = ProfileDiff::differences(
-                               ProfileDiff::compare(m_map, profile, r.values));
-                           for (const ProfileDifference &d : diffs)
-                               m_out << ProfileDiff::describe(d) << Qt::endl;
-                           if (diffs.isEmpty())
-                               m_out << tr("the controller holds every value of the profile")
-                                     << Qt::endl;
-                           else
-                               m_out << tr("%n value(s) differ (controller -> profile)", nullptr,
-                                           int(diffs.size()))
-                                     << Qt::endl;
-                           finish(diffs.isEmpty() ? 0 : 1);
-                       });
+        m_session->read(
+            Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
+                if (!r.ok) {
+                    for (const QString &e : r.errors)
+                        m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+                    finish(m_linkError);
+                    return;
+                }
+                const auto diffs =
+                    ProfileDiff::differences(ProfileDiff::compare(m_map, profile, r.values));
+                for (const ProfileDifference &d : diffs)
+                    m_out << ProfileDiff::describe(d) << Qt::endl;
+                printLeftOut(profile, tr("left out of the comparison:"));
+                const ProfileVariance &v = profile.variance;
+                const int leftOut = int(v.unknown.size() + v.rejected.size() + v.missing.size());
+                if (diffs.isEmpty() && leftOut == 0)
+                    m_out << tr("the controller holds every value of the profile") << Qt::endl;
+                else if (diffs.isEmpty())
+                    m_out << tr("the controller holds every value both maps have; %n left out",
+                                nullptr, leftOut)
+                          << Qt::endl;
+                else
+                    m_out << tr("%n value(s) differ (controller -> profile)", nullptr,
+                                int(diffs.size()))
+                          << Qt::endl;
+                // A comparison that had to leave values out is not "the same".
+                finish(diffs.isEmpty() && leftOut == 0 ? 0 : 1);
+            });
     });
+}
+
+void CtlRunner::runDiffFiles()
+{
+    const QString pathA = m_options.arguments.at(0);
+    const QString pathB = m_options.arguments.at(1);
+    Profile a;
+    Profile b;
+    const bool okA = loadProfile(pathA, &a);
+    const bool okB = loadProfile(pathB, &b); // both files' problems, at once
+    if (!okA || !okB) {
+        fail(UsageError, tr("nothing was compared"));
+        return;
+    }
+    const QString nameA = QFileInfo(pathA).fileName();
+    const QString nameB = QFileInfo(pathB).fileName();
+    auto mapOf = [this](const Profile &p) {
+        return p.variance.isVariant() ? p.variance.fileMap : m_map.identity();
+    };
+    m_out << tr("A = %1: \"%2\", register map %3").arg(nameA, a.name, mapOf(a)) << Qt::endl;
+    m_out << tr("B = %1: \"%2\", register map %3").arg(nameB, b.name, mapOf(b)) << Qt::endl;
+    const ProfileComparison c = ProfileComparison::compare(m_map, a, b);
+    auto value = [this](const ProfileDifference &row, bool left) {
+        return valueText(*row.parameter, left ? *row.device : *row.profile);
+    };
+    const auto differing = c.differing();
+    if (!differing.isEmpty()) {
+        m_out << tr("differ (A -> B):") << Qt::endl;
+        for (const ProfileDifference &d : differing)
+            m_out << QStringLiteral("  %1: %2 -> %3")
+                         .arg(d.parameter->key, value(d, true), value(d, false))
+                  << Qt::endl;
+    }
+    const auto onlyA = c.onlyInA();
+    const auto onlyB = c.onlyInB();
+    for (const auto &[rows, heading, left] :
+         {std::tuple{onlyA, tr("only in A (%1):").arg(nameA), true},
+          std::tuple{onlyB, tr("only in B (%1):").arg(nameB), false}}) {
+        if (rows.isEmpty())
+            continue;
+        m_out << heading << Qt::endl;
+        for (const ProfileDifference &d : rows)
+            m_out << QStringLiteral("  %1 = %2").arg(d.parameter->key, value(d, left)) << Qt::endl;
+    }
+    const auto foreign = c.foreignDiffering();
+    if (!foreign.isEmpty()) {
+        m_out << tr("not settings of register map %1, or out of its range (as the files hold "
+                    "them, A -> B):")
+                     .arg(m_map.identity())
+              << Qt::endl;
+        auto number = [](const std::optional<double> &v) {
+            return v ? QString::number(*v, 'g', QLocale::FloatingPointShortest) : tr("(none)");
+        };
+        for (const ProfileForeignRow &f : foreign)
+            m_out << QStringLiteral("  %1: %2 -> %3  (%4)")
+                         .arg(f.key, number(f.a), number(f.b), f.reason)
+                  << Qt::endl;
+    }
+    if (c.identical()) {
+        m_out << tr("the two profiles hold the same values") << Qt::endl;
+        finish(0);
+        return;
+    }
+    m_out << tr("%1 differ, %2 only in A, %3 only in B, %4 outside this map")
+                 .arg(differing.size())
+                 .arg(onlyA.size())
+                 .arg(onlyB.size())
+                 .arg(foreign.size())
+          << Qt::endl;
+    finish(1);
 }
 
 void CtlRunner::runApply()
@@ -103,21 +214,26 @@ void CtlRunner::runApply()
     Profile profile;
     if (!loadProfileArgument(QStringLiteral("apply"), &profile))
         return;
+    if (profile.values.isEmpty()) { // another map's profile with nothing this map can take
+        printLeftOut(profile, tr("not applied:"));
+        fail(UsageError, tr("the profile holds no setting of this map: nothing to apply"));
+        return;
+    }
     if (m_options.includeLink && m_options.target == CtlOptions::Target::Tcp &&
         profile.values.contains(QStringLiteral("device.baud"))) {
         m_err << QStringLiteral("stepcomctl: ")
               << tr("note: device.baud changes the controller's serial side only") << Qt::endl;
     }
     connectThen([this, profile] {
-        m_device->read(
-            Profile::profileParameters(m_map, true), Priority::Read,
-            [this, profile](const ReadOutcome &r) {
+        m_session->read(
+            Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
                 if (!r.ok) {
                     for (const QString &e : r.errors)
                         m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                     fail(DeviceError, tr("nothing was written"));
                     return;
                 }
+                m_beforeApply = r.values;
                 QStringList keys;
                 for (const ProfileDifference &d :
                      ProfileDiff::differences(ProfileDiff::compare(m_map, profile, r.values))) {
@@ -130,6 +246,8 @@ void CtlRunner::runApply()
                     keys << d.parameter->key;
                     m_out << tr("will write %1").arg(ProfileDiff::describe(d)) << Qt::endl;
                 }
+                // Said before asking, and with --yes too: what of the profile is not applied.
+                printLeftOut(profile, tr("not applied:"));
                 QStringList errors;
                 const QList<ParameterWrite> writes =
                     ProfileDiff::writesFor(m_map, profile, keys, m_options.includeLink, &errors);
@@ -138,7 +256,10 @@ void CtlRunner::runApply()
                     return;
                 }
                 if (writes.isEmpty()) {
-                    m_out << tr("the controller already holds the profile's values") << Qt::endl;
+                    m_out << (profile.variance.isVariant()
+                                  ? tr("the controller already holds every value both maps have")
+                                  : tr("the controller already holds the profile's values"))
+                          << Qt::endl;
                     if (m_options.saveToFlash)
                         saveToFlashThenFinish();
                     else
@@ -183,9 +304,28 @@ void CtlRunner::confirmThenApply(const QList<ParameterWrite> &writes)
     });
 }
 
+bool CtlRunner::backupBeforeApply()
+{
+    if (m_options.noBackup)
+        return true;
+    const BackupStore store;
+    const BackupStore::Saved saved = store.save(m_map, m_beforeApply, BackupStore::Operation::Apply,
+                                                m_session->settings().describe());
+    if (!saved.ok()) {
+        fail(UsageError, tr("no backup of the controller's settings could be saved (%1): nothing "
+                            "was written (--no-backup applies without one)")
+                             .arg(saved.error));
+        return false;
+    }
+    m_out << tr("backup of the controller's settings: %1").arg(saved.path) << Qt::endl;
+    return true;
+}
+
 void CtlRunner::applyWrites(const QList<ParameterWrite> &writes)
 {
-    m_device->write(writes, [this, writes](const WriteOutcome &w) {
+    if (!backupBeforeApply())
+        return;
+    m_session->write(writes, [this, writes](const WriteOutcome &w) {
         for (const ParameterWrite &pw : writes) {
             const bool verified =
                 w.written.contains(pw.parameter->key) &&
@@ -223,7 +363,7 @@ void CtlRunner::saveToFlashThenFinish()
         fail(DeviceError, tr("this map has no save_to_flash command"));
         return;
     }
-    m_device->command(*save, [this](const Result &r) {
+    m_session->command(*save, [this](const Result &r) {
         if (!r.ok) {
             fail(DeviceError, r.errorText);
             return;
@@ -246,9 +386,13 @@ void CtlRunner::runReport()
         fail(UsageError, tr("%1: the report is written as .pdf or .html").arg(path));
         return;
     }
+    if (!m_options.from.isEmpty()) {
+        runReportFromFile(path); // no controller
+        return;
+    }
     // The report speaks the program's language (--lang or the environment), installed in main().
     connectThen([this, path] {
-        m_device->readAll([this, path](const ReadOutcome &r) {
+        m_session->readAll([this, path](const ReadOutcome &r) {
             if (!r.ok) {
                 for (const QString &e : r.errors)
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
@@ -258,8 +402,8 @@ void CtlRunner::runReport()
             ReportInput input;
             input.map = m_map;
             input.values = r.values;
-            input.link = m_link->settings().describe();
-            input.deviceId = m_link->settings().deviceId;
+            input.link = m_session->settings().describe();
+            input.deviceId = m_session->settings().deviceId;
             input.title = m_options.name;
             input.notes = m_options.notes;
             input.date = QDateTime::currentDateTime();
@@ -272,6 +416,40 @@ void CtlRunner::runReport()
             finish(Ok);
         });
     });
+}
+
+void CtlRunner::runReportFromFile(const QString &path)
+{
+    Profile profile;
+    if (!loadProfile(m_options.from, &profile)) {
+        fail(UsageError, tr("no report: %1 is not a profile StepCom can read").arg(m_options.from));
+        return;
+    }
+    ReportInput input =
+        ReportInput::fromProfile(m_map, profile, m_options.from, m_options.language);
+    if (!input.checklistErrors.isEmpty()) { // a certificate never silently loses its results
+        for (const QString &e : std::as_const(input.checklistErrors))
+            m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+        fail(UsageError, tr("no report: the checklist beside the profile cannot be read"));
+        return;
+    }
+    if (!m_options.name.isEmpty())
+        input.title = m_options.name;
+    if (!m_options.notes.isEmpty())
+        input.notes = m_options.notes;
+    if (const QString e = CommissioningReport(input).write(path); !e.isEmpty()) {
+        fail(UsageError, e);
+        return;
+    }
+    printLeftOut(profile, tr("not in the report:"));
+    m_out << tr("report written to %1, made from the profile file %2 (no controller was read)")
+                 .arg(path, m_options.from)
+          << Qt::endl;
+    if (input.checklist)
+        m_out << tr("with the commissioning checklist %1: %2")
+                     .arg(input.checklistFile, input.checklist->summary())
+              << Qt::endl;
+    finish(Ok);
 }
 
 } // namespace stepcom

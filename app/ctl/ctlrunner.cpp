@@ -1,11 +1,12 @@
 #include "ctlrunner.h"
 
 #include "ctlmonitor.h"
+#include "ctlmotionwait.h"
 
-#include "bus/modbuslink.h"
-#include "bus/trafficlog.h"
-#include "bus/wiretap.h"
-#include "sim/simhost.h"
+#include "device/motionjudge.h"
+#include "device/simulatorstarter.h"
+#include "i18n/translators.h"
+#include "sim/builtinsimulator.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -68,31 +69,101 @@ CtlRunner::CtlRunner(const CtlOptions &options, const RegisterMap &map, QObject 
     , m_err(stderr)
 {}
 
+const QList<CtlCommand> &CtlRunner::commands()
+{
+    static const QList<CtlCommand> table{
+        {"params", "params",
+         QT_TRANSLATE_NOOP("stepcomctl", "list every parameter and command of the register map"),
+         &CtlRunner::runParams},
+        {"read", "read [KEY...]",
+         QT_TRANSLATE_NOOP("stepcomctl", "read parameters (all when none are named)"),
+         &CtlRunner::runRead},
+        {"write", "write KEY=VALUE...",
+         QT_TRANSLATE_NOOP("stepcomctl", "write parameters in engineering units, then verify"),
+         &CtlRunner::runWrite},
+        {"command", "command NAME",
+         QT_TRANSLATE_NOOP("stepcomctl", "pulse a command coil (e.g. motor1.stop, estop)"),
+         &CtlRunner::runCommand},
+        {"command", "command NAME --wait",
+         QT_TRANSLATE_NOOP("stepcomctl",
+                           "pulse a motion command and wait until it ends; print\n"
+                           "how it ended (--json), exit 0 only when done or referenced"),
+         &CtlRunner::runCommandWait, &CtlOptions::wait},
+        {"monitor", "monitor",
+         QT_TRANSLATE_NOOP("stepcomctl", "print the live status as one JSON object per line,\n"
+                                         "until --count samples or Ctrl-C (--interval MS)"),
+         &CtlRunner::runMonitor},
+        {"dump", "dump FILE",
+         QT_TRANSLATE_NOOP("stepcomctl", "read every setting and save it as a profile file\n"
+                                         "(--name, --notes; --include-link adds id and baud)"),
+         &CtlRunner::runDump},
+        {"diff", "diff FILE",
+         QT_TRANSLATE_NOOP("stepcomctl", "compare the controller with a profile; exit 0 same,\n"
+                                         "1 different, 2 bad file, 3 link or device error"),
+         &CtlRunner::runDiff},
+        {"diff", "diff A.json B.json",
+         QT_TRANSLATE_NOOP("stepcomctl", "compare two profiles, no controller needed; exit 0\n"
+                                         "same, 1 different, 2 bad file"),
+         &CtlRunner::runDiff},
+        {"apply", "apply FILE",
+         QT_TRANSLATE_NOOP("stepcomctl",
+                           "write the profile's values that differ, after showing\n"
+                           "them and asking (--yes skips the question), then verify;\n"
+                           "--include-link also writes device id and baud,\n"
+                           "--save-to-flash saves afterwards; the settings it\n"
+                           "replaces are saved as a backup first (--no-backup)"),
+         &CtlRunner::runApply},
+        {"report", "report FILE.pdf|.html",
+         QT_TRANSLATE_NOOP("stepcomctl", "write the commissioning report (--name, --notes,\n"
+                                         "--lang en|zh_CN; --from PROFILE: from a profile\n"
+                                         "file and its checklist, no controller needed)"),
+         &CtlRunner::runReport},
+    };
+    return table;
+}
+
+QString CtlRunner::commandsHelp()
+{
+    // "  usage<padded to 23>help", continuation lines indented under the help.
+    QString text = QCoreApplication::translate("stepcomctl", "Commands:") + QLatin1Char('\n');
+    for (const CtlCommand &c : commands()) {
+        const QStringList lines =
+            QCoreApplication::translate("stepcomctl", c.help).split(QLatin1Char('\n'));
+        text += QStringLiteral("  %1%2\n").arg(QLatin1String(c.usage), -23).arg(lines.first());
+        for (qsizetype i = 1; i < lines.size(); ++i)
+            text += QString(25, QLatin1Char(' ')) + lines.at(i) + QLatin1Char('\n');
+    }
+    return text;
+}
+
+QString CtlRunner::unknownCommandMessage(const QString &name)
+{
+    QStringList names;
+    for (const CtlCommand &c : commands())
+        names << QLatin1String(c.name);
+    names.removeDuplicates(); // a command may have several usages (diff)
+    return tr("unknown command '%1' (%2)").arg(name, Translators::joinList(names));
+}
+
 void CtlRunner::start()
 {
-    const QString &c = m_options.command;
-    if (c == QLatin1String("params"))
-        runParams();
-    else if (c == QLatin1String("read"))
-        runRead();
-    else if (c == QLatin1String("write"))
-        runWrite();
-    else if (c == QLatin1String("command"))
-        runCommand();
-    else if (c == QLatin1String("monitor"))
-        runMonitor();
-    else if (c == QLatin1String("dump"))
-        runDump();
-    else if (c == QLatin1String("diff"))
-        runDiff();
-    else if (c == QLatin1String("apply"))
-        runApply();
-    else if (c == QLatin1String("report"))
-        runReport();
-    else
-        fail(UsageError, tr("unknown command '%1' (params, read, write, command, monitor, dump, "
-                            "diff, apply, report)")
-                             .arg(c));
+    // A row that needs an option (command NAME --wait) is taken over the plain one when set.
+    const CtlCommand *chosen = nullptr;
+    for (const CtlCommand &c : commands()) {
+        if (m_options.command != QLatin1String(c.name))
+            continue;
+        if (c.when && m_options.*c.when) {
+            chosen = &c;
+            break;
+        }
+        if (!c.when && !chosen)
+            chosen = &c;
+    }
+    if (chosen) {
+        (this->*chosen->run)();
+        return;
+    }
+    fail(UsageError, unknownCommandMessage(m_options.command));
 }
 
 void CtlRunner::fail(int code, const QString &message)
@@ -108,8 +179,8 @@ void CtlRunner::finish(int code)
     m_finished = true;
     m_out.flush();
     m_err.flush();
-    if (m_link)
-        m_link->close(tr("done"));
+    if (m_session && m_session->linkState() != DeviceSession::LinkState::Disconnected)
+        m_session->disconnectFrom(tr("done"));
     QTimer::singleShot(0, this, [this, code] { Q_EMIT finished(code); });
 }
 
@@ -132,59 +203,42 @@ void CtlRunner::connectThen(std::function<void()> next)
         fail(UsageError, tr("no controller given: use --port PATH, --tcp HOST[:PORT] or --sim"));
         return;
     }
-    if (m_options.target == CtlOptions::Target::Sim && !startSimulator())
-        return;
-    m_link = new ModbusLink(this);
-    m_link->traffic()->setMap(&m_map);
-    WireTap::setPassThrough(m_options.verbose);
+    // One-shot: no read-all after connecting, no status poll; each command reads what it names.
+    m_session = new DeviceSession(m_map, this);
+    m_session->setLive(false);
+    DeviceSession::setLinkDiagnosticsShown(m_options.verbose);
     if (m_options.verbose) {
-        connect(m_link->traffic(), &TrafficLog::entryAdded, this,
+        connect(m_session->traffic(), &TrafficLog::entryAdded, this,
                 [this](const TrafficEntry &e) { m_err << TrafficLog::format(e) << Qt::endl; });
     }
-    m_device = new DeviceClient(m_link, m_map, this);
     // Only the first opening runs the command: a write of device.baud reopens the link at the
     // new baud, and that must not start the command a second time.
     connect(
-        m_link, &ModbusLink::opened, this,
+        m_session, &DeviceSession::connected, this,
         [this, next](bool ok, const QString &reason) {
             if (!ok) {
-                fail(m_linkError,
-                     tr("cannot connect to %1: %2").arg(m_options.link.describe(), reason));
+                const bool simDown =
+                    m_session->simulatorStarter() && !m_session->simulatorStarter()->isRunning();
+                fail(m_linkError, simDown
+                                      ? tr("cannot start the built-in simulator: %1").arg(reason)
+                                      : tr("cannot connect to %1: %2")
+                                            .arg(m_session->settings().describe(), reason));
                 return;
             }
             next();
         },
         Qt::SingleShotConnection);
-    m_link->open(m_options.link);
-}
-
-bool CtlRunner::startSimulator()
-{
-    // The built-in controller runs in this process; on Unix it is reached over a
-    // pseudo-terminal, so --sim takes the same RTU path as a real adapter.
-    m_sim = new SimHost(this);
-    SimOptions sim;
-    sim.map = m_map;
-#ifdef Q_OS_UNIX
-    sim.rtu = true;
-    sim.echo = m_options.link.echo; // rehearse an echoing adapter
-#else
-    sim.tcp = true;
-#endif
-    QString error;
-    if (!m_sim->start(sim, &error)) {
-        fail(m_linkError, tr("cannot start the built-in simulator: %1").arg(error));
-        return false;
-    }
-    if (sim.rtu) {
-        m_options.link.transport = LinkSettings::Transport::Rtu;
-        m_options.link.portName = m_sim->rtuPath();
+    if (m_options.target == CtlOptions::Target::Sim) {
+        // The built-in controller runs in this process; on Unix it is reached over a
+        // pseudo-terminal, so --sim takes the same RTU path as a real adapter (and --echo
+        // rehearses an echoing adapter on it).
+        auto sim = std::make_unique<BuiltinSimulator>();
+        sim->setEcho(m_options.link.echo);
+        m_session->setSimulator(std::move(sim));
+        m_session->connectSimulator();
     } else {
-        m_options.link.transport = LinkSettings::Transport::Tcp;
-        m_options.link.host = m_sim->tcpAddress().toString();
-        m_options.link.tcpPort = m_sim->tcpPort();
+        m_session->connectTo(m_options.link);
     }
-    return true;
 }
 
 void CtlRunner::runParams()
@@ -257,7 +311,7 @@ void CtlRunner::runRead()
     if (params.isEmpty())
         params = m_map.holdings();
     connectThen([this, params] {
-        m_device->read(params, Priority::Read, [this, params](const ReadOutcome &r) {
+        m_session->read(params, [this, params](const ReadOutcome &r) {
             if (m_options.json) {
                 QJsonObject o;
                 for (const Parameter *p : params) {
@@ -326,7 +380,7 @@ void CtlRunner::runWrite()
         return;
     }
     connectThen([this, writes] {
-        m_device->write(writes, [this, writes](const WriteOutcome &w) {
+        m_session->write(writes, [this, writes](const WriteOutcome &w) {
             for (const ParameterWrite &pw : writes) {
                 const bool verified = w.written.contains(pw.parameter->key) &&
                                       std::none_of(w.mismatches.cbegin(), w.mismatches.cend(),
@@ -357,33 +411,63 @@ void CtlRunner::runWrite()
     });
 }
 
-void CtlRunner::runCommand()
+const Parameter *CtlRunner::commandArgument()
 {
     if (m_options.arguments.size() != 1) {
         fail(UsageError, tr("command needs exactly one command name (see: stepcomctl params)"));
-        return;
+        return nullptr;
     }
     const QString key = m_options.arguments.first();
     const Parameter *p = m_map.find(key);
     if (!p || !p->isCoil()) {
         fail(UsageError, p ? tr("%1 is a parameter, not a command: use read or write").arg(key)
                            : tr("unknown command '%1' (see: stepcomctl params)").arg(key));
-        return;
+        return nullptr;
     }
     if (p->command == CommandClass::Destructive && !m_options.yes) {
         fail(UsageError,
              tr("%1 destroys settings (%2); add --yes if you mean it").arg(key, p->help.en));
-        return;
+        return nullptr;
     }
+    return p;
+}
+
+void CtlRunner::runCommand()
+{
+    const Parameter *p = commandArgument();
+    if (!p)
+        return;
     connectThen([this, p] {
-        m_device->command(*p, [this, p](const Result &r) {
+        m_session->command(*p, [this, p](const Result &r) {
             if (!r.ok) {
                 fail(DeviceError, r.errorText);
                 return;
             }
-            m_out << tr("%1: done").arg(p->key) << Qt::endl;
+            // A moving command is only acknowledged: its end is known with --wait.
+            m_out << (p->command == CommandClass::Motion
+                          ? tr("%1: sent (add --wait to wait for how it ends)").arg(p->key)
+                          : tr("%1: done").arg(p->key))
+                  << Qt::endl;
             finish(Ok);
         });
+    });
+}
+
+void CtlRunner::runCommandWait()
+{
+    const Parameter *p = commandArgument();
+    if (!p)
+        return;
+    if (!MotionJudge::kindOf(m_map, p->key)) {
+        fail(UsageError, tr("--wait: %1 has no end to wait for (single move, home, home in "
+                            "order, return to data zero, arc and line have one)")
+                             .arg(p->key));
+        return;
+    }
+    connectThen([this, p] {
+        auto *wait = new CtlMotionWait(m_session, *p, m_options.json, this);
+        connect(wait, &CtlMotionWait::finished, this, &CtlRunner::finish);
+        wait->start();
     });
 }
 
@@ -394,7 +478,7 @@ void CtlRunner::runMonitor()
         return;
     }
     connectThen([this] {
-        auto *monitor = new CtlMonitor(m_device, m_options.count, m_options.intervalMs, this);
+        auto *monitor = new CtlMonitor(m_session, m_options.count, m_options.intervalMs, this);
         connect(monitor, &CtlMonitor::finished, this, &CtlRunner::finish);
         monitor->start();
     });

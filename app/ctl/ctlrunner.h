@@ -1,7 +1,7 @@
 #pragma once
 
 #include "ctloptions.h"
-#include "device/deviceclient.h"
+#include "device/devicesession.h"
 #include "map/registermap.h"
 
 #include <QObject>
@@ -9,9 +9,20 @@
 
 namespace stepcom {
 
-class ModbusLink;
-class SimHost;
 struct Profile;
+class CtlRunner;
+
+// One stepcomctl command: its name, how it is called, its help (English source, translated in
+// the "stepcomctl" context) and the runner's handler.
+struct CtlCommand
+{
+    const char *name;
+    const char *usage;
+    const char *help;
+    void (CtlRunner::*run)();
+    // The option this row needs (command NAME --wait); a set one takes it over the plain row.
+    bool CtlOptions::*when = nullptr;
+};
 
 // Runs one stepcomctl command against a controller and reports an exit code:
 // 0 success, 1 link or device error, 2 usage or validation error.
@@ -25,16 +36,26 @@ public:
     // Starts the command; `finished` follows once.
     void start();
 
+    // Every command, in the order the help lists them.
+    static const QList<CtlCommand> &commands();
+    // The "Commands:" part of --help, built from the table.
+    static QString commandsHelp();
+    // The message for a command that is not in the table.
+    static QString unknownCommandMessage(const QString &name);
+
 Q_SIGNALS:
     void finished(int exitCode);
 
 private:
     void connectThen(std::function<void()> next);
-    bool startSimulator();
     void runParams();
     void runRead();
     void runWrite();
     void runCommand();
+    // command NAME --wait: sends it and judges where the motion ended (CtlMotionWait).
+    void runCommandWait();
+    // The one coil `command` names, checked; nullptr after failing with the reason.
+    const Parameter *commandArgument();
     void runMonitor();
     // Profiles and the report (ctlprofile.cpp).
     void runDump();
@@ -42,8 +63,17 @@ private:
     void runApply();
     void runReport();
     bool loadProfileArgument(const QString &command, Profile *out);
+    // Profiles of other maps are read too; problems go to standard error, false then.
+    bool loadProfile(const QString &path, Profile *out);
+    // What of a profile of another map is left out, under `heading` (nothing when all fits).
+    void printLeftOut(const Profile &profile, const QString &heading);
+    void runDiffFiles();
+    void runReportFromFile(const QString &path);
     void confirmThenApply(const QList<ParameterWrite> &writes);
     void applyWrites(const QList<ParameterWrite> &writes);
+    // Saves the settings read before an apply as a backup (BackupStore), unless --no-backup;
+    // false (and the command failed) when it could not be saved.
+    bool backupBeforeApply();
     void saveToFlashThenFinish();
     void fail(int code, const QString &message);
     void finish(int code);
@@ -51,14 +81,13 @@ private:
 
     CtlOptions m_options;
     RegisterMap m_map;
-    SimHost *m_sim = nullptr;
-    ModbusLink *m_link = nullptr;
-    DeviceClient *m_device = nullptr;
+    DeviceSession *m_session = nullptr;
     QTextStream m_out;
     QTextStream m_err;
     // The exit code of a link that cannot be opened or read: DeviceError, except for diff,
     // where 1 already means "different".
     int m_linkError = DeviceError;
+    QHash<QString, qint64> m_beforeApply; // the settings read before apply: its backup
     bool m_finished = false;
 };
 

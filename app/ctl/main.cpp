@@ -57,27 +57,14 @@ int main(int argc, char *argv[])
     translators.install(language);
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QCoreApplication::translate(
-        "stepcomctl",
-        "Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.\n\n"
-        "Commands:\n"
-        "  params                 list every parameter and command of the register map\n"
-        "  read [KEY...]          read parameters (all when none are named)\n"
-        "  write KEY=VALUE...     write parameters in engineering units, then verify\n"
-        "  command NAME           pulse a command coil (e.g. motor1.stop, estop)\n"
-        "  monitor                print the live status as one JSON object per line,\n"
-        "                         until --count samples or Ctrl-C (--interval MS)\n"
-        "  dump FILE              read every setting and save it as a profile file\n"
-        "                         (--name, --notes; --include-link adds id and baud)\n"
-        "  diff FILE              compare the controller with a profile; exit 0 same,\n"
-        "                         1 different, 2 bad file, 3 link or device error\n"
-        "  apply FILE             write the profile's values that differ, after showing\n"
-        "                         them and asking (--yes skips the question), then verify;\n"
-        "                         --include-link also writes device id and baud,\n"
-        "                         --save-to-flash saves afterwards\n"
-        "  report FILE.pdf|.html  write the commissioning report (--name, --notes,\n"
-        "                         --lang en|zh_CN)\n\n"
-        "Exit codes: 0 success, 1 link or device error, 2 usage or validation error."));
+    // The commands' lines come from the runner's dispatch table.
+    parser.setApplicationDescription(
+        QCoreApplication::translate("stepcomctl", "Read and write the parameters of a 2-axis "
+                                                  "stepper controller over Modbus RTU/TCP.") +
+        QStringLiteral("\n\n") + CtlRunner::commandsHelp() + QLatin1Char('\n') +
+        QCoreApplication::translate(
+            "stepcomctl",
+            "Exit codes: 0 success, 1 link or device error, 2 usage or validation error."));
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addPositionalArgument(QStringLiteral("command"),

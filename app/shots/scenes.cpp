@@ -6,6 +6,7 @@
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/writechangesdialog.h"
 #include "mainwindow.h"
+#include "offlinescenes.h"
 #include "pages/connectionpage.h"
 #include "pages/inputspage.h"
 #include "pages/interpolationpage.h"
@@ -44,9 +45,9 @@ ParameterField *field(MainWindow *window, const QString &key)
 
 bool idle(Shooter &s)
 {
-    SimDevice *sim = s.session()->simulator()->device();
+    SimDevice *sim = s.simulator()->device();
     return !s.session()->isConnected() ||
-           (!s.window()->motionPage()->jog()->isBusy() && !sim->running(1) && !sim->running(2));
+           (!s.session()->jog()->isBusy() && !sim->running(1) && !sim->running(2));
 }
 
 // Jog `motor` for `ms` the way a technician does (press, hold, let go) and wait until it stands.
@@ -54,11 +55,11 @@ void jog(Shooter &s, int motor, Direction direction, int ms)
 {
     Script &script = s.script();
     script.then([&s, motor, direction] {
-        if (!s.window()->motionPage()->jog()->press(motor, direction))
+        if (!s.session()->jog()->press(motor, direction))
             s.script().fail(QStringLiteral("motor %1 did not start jogging").arg(motor));
     });
     script.sleep(ms);
-    script.then([&s, motor] { s.window()->motionPage()->jog()->release(motor); });
+    script.then([&s, motor] { s.session()->jog()->release(motor); });
     script.waitFor(QStringLiteral("motor %1 to stand still").arg(motor), [&s] { return idle(s); });
 }
 
@@ -78,12 +79,12 @@ void jogging(Shooter &s)
     script.then([&s, page] { s.window()->showPage(page); });
     script.sleep(200);
     script.then([&s] {
-        if (!s.window()->motionPage()->jog()->press(1, Direction::Forward))
+        if (!s.session()->jog()->press(1, Direction::Forward))
             s.script().fail(QStringLiteral("motor 1 did not start jogging"));
     });
     script.sleep(800);
     s.shoot(Shooter::sceneFileName(QStringLiteral("jogging"))); // not a page change: it would stop
-    script.then([&s] { s.window()->motionPage()->jog()->release(1); });
+    script.then([&s] { s.session()->jog()->release(1); });
     script.waitFor(QStringLiteral("motor 1 to stand still"), [&s] { return idle(s); });
 }
 
@@ -101,7 +102,7 @@ void plotsMoving(Shooter &s)
         button->click();
     });
     script.waitFor(QStringLiteral("a motor to run"), [&s] {
-        SimDevice *sim = s.session()->simulator()->device();
+        SimDevice *sim = s.simulator()->device();
         return sim->running(1) || sim->running(2);
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("plots-moving")), s.pageIndex<PlotPage>());
@@ -169,7 +170,8 @@ void writeChanges(Shooter &s)
         write->click();
     });
     script.waitFor(QStringLiteral("the write to be verified"), [&s] {
-        return !s.session()->store()->hasEdits() && s.session()->store()->unsavedToFlash();
+        return !s.session()->parameters()->hasEdits() &&
+               s.session()->parameters()->unsavedToFlash();
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("not-saved-to-flash")));
 }
@@ -186,17 +188,17 @@ void wiringWarning(Shooter &s)
             return;
         }
         const auto input =
-            s.session()->store()->shownValue(QStringLiteral("motor2.limit_positive"));
+            s.session()->parameters()->shownValue(QStringLiteral("motor2.limit_positive"));
         if (!input || *input == 0) {
             s.script().fail(QStringLiteral("motor 2 has no positive limit input to misuse"));
             return;
         }
         home->enterText(QString::number(*input));
-        if (!s.session()->store()->hasEdits())
+        if (!s.session()->parameters()->hasEdits())
             s.script().fail(QStringLiteral("the home input edit was refused"));
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("wiring-warning")), s.pageIndex<InputsPage>());
-    script.then([&s] { s.session()->store()->revertAll(); });
+    script.then([&s] { s.session()->parameters()->revertAll(); });
 }
 
 // Shows the interpolation page's tab (0 arc, 1 line) and types the values into its fields;
@@ -240,7 +242,7 @@ void arcRunning(Shooter &s)
         s.session()->writeChanges();
     });
     script.waitFor(QStringLiteral("the arc to be written"),
-                   [&s] { return !s.session()->store()->hasEdits(); });
+                   [&s] { return !s.session()->parameters()->hasEdits(); });
     script.waitFor(QStringLiteral("Start arc to be enabled"), [&s, page] {
         auto *p = qobject_cast<InterpolationPage *>(s.window()->pages().value(page));
         return p->arcEditor()->startButton()->isEnabled();
@@ -273,7 +275,7 @@ void lineEdited(Shooter &s)
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("line-edited")));
     script.then([&s, page] {
-        s.session()->store()->revertAll();
+        s.session()->parameters()->revertAll();
         qobject_cast<InterpolationPage *>(s.window()->pages().value(page))
             ->tabs()
             ->setCurrentIndex(0);
@@ -331,7 +333,7 @@ void profileCompare(Shooter &s)
         speed->enterText(QStringLiteral("600"));
         micro->enterText(QStringLiteral("16"));
         const bool saved = actions->saveFromEditedFile(path);
-        s.session()->store()->revertAll();
+        s.session()->parameters()->revertAll();
         if (!saved || !actions->openFile(path))
             s.script().fail(
                 QStringLiteral("the profile %1 could not be saved and opened").arg(path));
@@ -457,6 +459,9 @@ const QList<Scene> &scenes()
         {QStringLiteral("profile-error"), W::AfterPages, &profileError},
         {QStringLiteral("write-changes"), W::AfterPages, &writeChanges},
         {QStringLiteral("port-missing"), W::AfterPages, &portMissing},
+        // Without a controller (issue 18): after port-missing, which leaves it disconnected.
+        {QStringLiteral("offline-editing"), W::AfterPages, &offlinescenes::editing},
+        {QStringLiteral("profile-files-compare"), W::AfterPages, &offlinescenes::compareFiles},
     };
     return table;
 }

@@ -4,8 +4,8 @@
 #include "language.h"
 #include "mainwindow.h"
 #include "page.h"
-#include "poll/poller.h"
 #include "scenes.h"
+#include "sim/builtinsimulator.h"
 #include "sim/simhost.h"
 
 #include <QApplication>
@@ -84,7 +84,7 @@ void Shooter::planLanguage(const QString &language)
     m_script.then([this] {
         // A few status cycles on top, so the dock's lamps and positions are all known.
         auto cycles = std::make_shared<int>(0);
-        connect(m_session->statusPoller(), &Poller::cycleFinished, this,
+        connect(m_session.get(), &DeviceSession::statusCycleFinished, this,
                 [cycles](bool ok) { *cycles += ok ? 1 : 0; });
         m_script.waitFor(QStringLiteral("%1 status poll cycles").arg(kPollCycles),
                          [cycles] { return *cycles >= kPollCycles; });
@@ -113,6 +113,9 @@ void Shooter::openWindow(const QString &language)
     }
 
     m_session = std::make_unique<DeviceSession>();
+    auto sim = std::make_unique<BuiltinSimulator>();
+    m_sim = sim->host();
+    m_session->setSimulator(std::move(sim));
     m_readOk = false;
     connect(m_session.get(), &DeviceSession::readFinished, this, [this](bool ok) {
         if (ok)
@@ -149,6 +152,7 @@ void Shooter::closeWindow()
 {
     m_window.reset();
     m_session.reset();
+    m_sim = nullptr;
     m_extraSim.reset();
 }
 

@@ -51,6 +51,8 @@ public:
     Script &script() { return m_script; }
     MainWindow *window() const { return m_window.get(); }
     DeviceSession *session() const { return m_session.get(); }
+    // The built-in simulator the session runs on, to set the machine up for a scene.
+    SimHost *simulator() const { return m_sim; }
     const QString &language() const { return m_language; }
     // Index of the first page of class T in the sidebar, -1 if the window has none.
     template<typename T>
@@ -84,6 +86,7 @@ private:
     QString m_language;
     std::unique_ptr<DeviceSession> m_session;
     std::unique_ptr<MainWindow> m_window;
+    SimHost *m_sim = nullptr; // owned by the session
     std::unique_ptr<SimHost> m_extraSim;
     QTemporaryDir m_scratch;
     QStringList m_written;

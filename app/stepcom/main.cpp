@@ -2,6 +2,7 @@
 #include "i18n/translators.h"
 #include "language.h"
 #include "mainwindow.h"
+#include "sim/builtinsimulator.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -58,6 +59,7 @@ int main(int argc, char *argv[])
     parser.process(app);
 
     DeviceSession session;
+    session.setSimulator(std::make_unique<BuiltinSimulator>()); // the Connection page offers it
     MainWindow window(&session);
     window.show();
     if (parser.isSet(simOption)) {

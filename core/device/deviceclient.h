@@ -1,9 +1,9 @@
 #pragma once
 
 #include "bus/request.h"
+#include "device/readplanner.h"
 #include "device/writeplanner.h"
 #include "map/registermap.h"
-#include "poll/readplanner.h"
 
 #include <QHash>
 #include <QObject>

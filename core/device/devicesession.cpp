@@ -1,11 +1,14 @@
 #include "device/devicesession.h"
 
 #include "bus/modbuslink.h"
-#include "bus/trafficlog.h"
+#include "bus/wiretap.h"
+#include "device/jogcontroller.h"
+#include "device/linkhealth.h"
+#include "device/motionjudge.h"
+#include "device/motionsupervisor.h"
+#include "device/simulatorstarter.h"
+#include "device/statusrecorder.h"
 #include "i18n/translators.h"
-#include "poll/poller.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
 
 namespace stepcom {
 
@@ -15,7 +18,14 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     , m_client(new DeviceClient(m_link, map, this))
     , m_store(new ParameterStore(map, this))
     , m_poller(new Poller(m_client, m_store, this))
+    , m_motion(new MotionSupervisor(this, m_link)) // before the jog controller, which follows it
+    , m_health(new LinkHealth(m_link, this))
+    , m_jog(new JogController(this, this))
 {
+    // The outcome is said when the controller showed it, not when the command went out.
+    connect(m_motion, &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
+        say(o.ok() ? Severity::Info : Severity::Warning, m_motion->text(o));
+    });
     m_poller->useStatusKeys(); // the full status; positions and running while a motor runs
     m_poller->setIntervalMs(Poller::intervalFromEnvironment(100));
     m_link->traffic()->setMap(&m_client->map());
@@ -25,29 +35,160 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             say(Severity::Error, tr("Cannot connect: %1").arg(reason));
             return;
         }
-        say(Severity::Info, tr("Connected to %1").arg(m_link->settings().describe()));
-        if (std::exchange(m_readAfterConnect, false))
+        say(Severity::Info,
+            tr("Opened %1; asking the controller").arg(m_link->settings().describe()));
+        if (std::exchange(m_readAfterConnect, false) && m_live)
             readAll();
-        m_poller->start();
+        if (m_live)
+            m_poller->start();
     });
     connect(m_link, &ModbusLink::stateChanged, this, &DeviceSession::linkStateChanged);
+    connect(m_link, &ModbusLink::statsChanged, this, &DeviceSession::linkStatsChanged);
+    connect(m_health, &LinkHealth::stateChanged, this, [this](LinkHealth::State s) {
+        if (s == LinkHealth::State::NotAnswering)
+            say(Severity::Warning, tr("The port is open, but the controller at %1 does not "
+                                      "answer.")
+                                       .arg(m_link->settings().describe()));
+        else if (s == LinkHealth::State::Answering)
+            say(Severity::Info, tr("The controller answers."));
+        Q_EMIT linkStateChanged();
+    });
     connect(m_link, &ModbusLink::lost, this, [this](const QString &reason) {
         m_poller->stop();
         m_store->forgetDeviceValues();
         say(Severity::Error, tr("Link lost: %1").arg(reason));
         Q_EMIT disconnected(reason);
+        Q_EMIT linkLost(reason);
     });
+    connect(m_poller, &Poller::cycleFinished, this, &DeviceSession::statusCycleFinished);
+    connect(m_poller, &Poller::fastChanged, this, &DeviceSession::statusFastChanged);
 }
 
 DeviceSession::~DeviceSession()
 {
+    delete m_jog; // a jog still held sends its stop while the link is there
+    m_jog = nullptr;
     delete m_link; // before the simulator it may be talking to
     m_link = nullptr;
+}
+
+StatusRecorder *DeviceSession::recorder()
+{
+    if (!m_recorder) {
+        m_recorder = new StatusRecorder(map(), m_store, this);
+        m_recorder->attach(m_poller);
+    }
+    return m_recorder;
+}
+
+TrafficLog *DeviceSession::traffic() const
+{
+    return m_link->traffic();
+}
+
+const LinkStats &DeviceSession::linkStats() const
+{
+    return m_link->stats();
+}
+
+void DeviceSession::resetLinkStats()
+{
+    m_link->resetStats();
+}
+
+DeviceSession::LinkState DeviceSession::linkState() const
+{
+    switch (m_link->state()) {
+    case ModbusLink::State::Connected:
+        return LinkState::Connected;
+    case ModbusLink::State::Connecting:
+        return LinkState::Connecting;
+    case ModbusLink::State::Disconnected:
+        break;
+    }
+    return LinkState::Disconnected;
 }
 
 bool DeviceSession::isConnected() const
 {
     return m_link->isConnected();
+}
+
+bool DeviceSession::isSimulator() const
+{
+    // connected(true) can arrive from inside connectSimulator(): recognise the simulator's port.
+    return m_usingSim || (m_sim && m_sim->isRunning() && m_sim->serves(m_link->settings()));
+}
+
+void DeviceSession::setLinkDiagnosticsShown(bool shown)
+{
+    WireTap::setPassThrough(shown);
+}
+
+void DeviceSession::startStatus()
+{
+    m_poller->start();
+}
+
+void DeviceSession::stopStatus()
+{
+    m_poller->stop();
+}
+
+bool DeviceSession::isStatusActive() const
+{
+    return m_poller->isActive();
+}
+
+QStringList DeviceSession::statusKeys() const
+{
+    return m_poller->keys();
+}
+
+void DeviceSession::setStatusIntervalMs(int ms)
+{
+    m_poller->setIntervalMs(ms);
+}
+
+int DeviceSession::statusIntervalMs() const
+{
+    return m_poller->intervalMs();
+}
+
+double DeviceSession::statusRate() const
+{
+    return m_poller->rate();
+}
+
+bool DeviceSession::isStatusFast() const
+{
+    return m_poller->isFast();
+}
+
+QString DeviceSession::statusError() const
+{
+    return m_poller->lastError();
+}
+
+const PollStats &DeviceSession::statusStats() const
+{
+    return m_poller->stats();
+}
+
+void DeviceSession::resetStatusStats()
+{
+    m_poller->resetStats();
+}
+
+void DeviceSession::setSimulator(std::unique_ptr<SimulatorStarter> simulator)
+{
+    if (m_sim && m_sim->isRunning()) {
+        if (m_usingSim)
+            m_link->close(tr("the built-in simulator was replaced"));
+        m_sim->stop();
+    }
+    m_usingSim = false;
+    m_sim = std::move(simulator);
 }
 
 LinkSettings DeviceSession::settings() const
@@ -68,51 +209,40 @@ void DeviceSession::connectTo(const LinkSettings &settings)
         m_sim->stop();
     }
     m_usingSim = false;
-    m_readAfterConnect = true;
-    m_link->open(settings);
+    openLink(settings);
 }
 
 void DeviceSession::connectSimulator()
 {
+    QString error;
+    std::optional<LinkSettings> s;
     if (!m_sim)
-        m_sim = new SimHost(this);
-    if (!m_sim->isRunning()) {
-        SimOptions options;
-        options.map = map();
-#ifdef Q_OS_UNIX
-        options.rtu = true;
-#else
-        options.tcp = true;
-#endif
-        QString error;
-        if (!m_sim->start(options, &error)) {
-            say(Severity::Error, tr("Cannot start the built-in simulator: %1").arg(error));
-            Q_EMIT connected(false, error);
-            return;
-        }
+        error = tr("this program has no built-in simulator");
+    else
+        s = m_sim->start(map(), &error);
+    if (!s) {
+        say(Severity::Error, tr("Cannot start the built-in simulator: %1").arg(error));
+        Q_EMIT connected(false, error);
+        return;
     }
-    LinkSettings s;
-    if (!m_sim->rtuPath().isEmpty()) {
-        s.transport = LinkSettings::Transport::Rtu;
-        s.portName = m_sim->rtuPath();
-        s.baud = m_sim->device() ? m_sim->device()->baud() : 9600;
-        s.deviceId = m_sim->device() ? m_sim->device()->deviceId() : 1;
-    } else {
-        s.transport = LinkSettings::Transport::Tcp;
-        s.host = m_sim->tcpAddress().toString();
-        s.tcpPort = m_sim->tcpPort();
-    }
-    m_readAfterConnect = true;
     m_usingSim = true; // before open(): on a pty the verdict arrives inside it
-    m_link->open(s);
+    openLink(*s);
 }
 
-void DeviceSession::disconnectFrom()
+void DeviceSession::openLink(const LinkSettings &settings)
 {
+    m_readAfterConnect = true;
+    m_link->resetStats(); // statistics are per connection
+    m_link->open(settings);
+}
+
+void DeviceSession::disconnectFrom(const QString &reason)
+{
+    const QString why = reason.isEmpty() ? tr("disconnected by the user") : reason;
     m_poller->stop();
-    m_link->close(tr("disconnected by the user"));
+    m_link->close(why);
     m_store->forgetDeviceValues();
-    Q_EMIT disconnected(tr("disconnected by the user"));
+    Q_EMIT disconnected(why);
 }
 
 void DeviceSession::readAll()
@@ -127,6 +257,17 @@ void DeviceSession::readAll()
                                          tr("%n request(s)", nullptr, r.reads)));
         Q_EMIT readFinished(r.ok);
     });
+}
+
+void DeviceSession::read(const QList<const Parameter *> &params,
+                         std::function<void(const ReadOutcome &)> done, Priority priority)
+{
+    m_client->read(params, priority, std::move(done));
+}
+
+void DeviceSession::readAll(std::function<void(const ReadOutcome &)> done)
+{
+    m_client->readAll(std::move(done));
 }
 
 void DeviceSession::writeChanges()
@@ -173,7 +314,7 @@ void DeviceSession::readBackUncertain(const QList<ParameterWrite> &writes,
         if (!outcome.written.contains(key) && !outcome.notWritten.contains(key) && !mismatched)
             uncertain << w.parameter;
     }
-    if (uncertain.isEmpty() || !m_link->isConnected())
+    if (uncertain.isEmpty() || !m_link->isConnected() || !m_live)
         return;
     m_client->read(uncertain, Priority::Command,
                    [this](const ReadOutcome &r) { m_store->setDeviceValues(r.values); });
@@ -188,9 +329,11 @@ void DeviceSession::command(const QString &key)
         return;
     }
     const QString label = p->label.text(Translators::current());
-    m_client->command(*p, [this, key, label](const Result &r) {
+    const bool motion = p->command == CommandClass::Motion;
+    command(*p, [this, key, label, motion](const Result &r) {
+        // A moving command is only acknowledged here; MotionSupervisor says how it ended.
         if (r.ok)
-            say(Severity::Info, tr("%1: done").arg(label));
+            say(Severity::Info, motion ? tr("%1: sent").arg(label) : tr("%1: done").arg(label));
         else
             say(Severity::Error, r.errorText);
         if (r.ok && key == QLatin1String("save_to_flash"))
@@ -201,6 +344,11 @@ void DeviceSession::command(const QString &key)
         }
         Q_EMIT commandFinished(key, r.ok);
     });
+}
+
+void DeviceSession::command(const Parameter &coil, std::function<void(const Result &)> done)
+{
+    m_client->command(coil, std::move(done));
 }
 
 void DeviceSession::emergencyStop()
@@ -250,6 +398,19 @@ void DeviceSession::changeLink(int deviceId, int baud)
             tr("The controller does not answer with the new settings: %1").arg(reason));
         Q_EMIT linkChangeFailed(previous, reason);
     });
+}
+
+int DeviceSession::stopJogging(JogStop why)
+{
+    switch (why) {
+    case JogStop::PageLeft:
+        return m_jog->stopAll(tr("the page was left"));
+    case JogStop::FocusLost:
+        return m_jog->stopAll(tr("the window lost focus"));
+    case JogStop::WindowClosing:
+        return m_jog->stopAll(tr("the window closes"));
+    }
+    return 0;
 }
 
 } // namespace stepcom

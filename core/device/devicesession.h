@@ -1,56 +1,116 @@
 #pragma once
 
-#include "bus/linksettings.h"
+// The one header a front-end needs: the session and the value types its API speaks in.
+#include "bus/linksettings.h" // LinkSettings
+#include "bus/linkstats.h"    // LinkStats
+#include "bus/request.h"      // Priority, Result
+#include "bus/trafficlog.h"   // TrafficLog, TrafficEntry
 #include "device/deviceclient.h"
 #include "device/parameterstore.h"
+#include "device/poller.h" // PollStats
 
 #include <QObject>
 
+#include <memory>
+
 namespace stepcom {
 
+class JogController;
+class LinkHealth;
 class ModbusLink;
-class Poller;
-class SimHost;
+class MotionSupervisor;
+class SimulatorStarter;
+class StatusRecorder;
 
-// One controller connection and everything known about it: owns the link, the typed client,
-// the parameter store and (for the built-in simulator) the simulated controller. The window's
-// pages and actions talk to this; none of them touch the link directly.
+// One controller connection and everything known about it. Every front-end (the window,
+// stepcomctl, the benchmark, the screenshot tool, the tests) works through this: it reads,
+// writes, pulses commands, jogs, polls the status, records it, and says when motion must stop.
+// It owns the link, the typed client, the parameter store, the status poller, the jog
+// controller, the status recorder and (when a program injects one) the built-in simulator;
+// none of the link's or the poller's parts are handed out.
 class DeviceSession : public QObject
 {
     Q_OBJECT
 public:
     enum class Severity { Info, Warning, Error };
     Q_ENUM(Severity)
+    enum class LinkState { Disconnected, Connecting, Connected };
+    Q_ENUM(LinkState)
+    // Why every jog must stop now (the rules live here; the window reports what happened).
+    enum class JogStop { PageLeft, FocusLost, WindowClosing };
+    Q_ENUM(JogStop)
 
     explicit DeviceSession(const RegisterMap &map = RegisterMap::builtin(),
                            QObject *parent = nullptr);
     ~DeviceSession() override;
 
     const RegisterMap &map() const { return m_store->map(); }
-    ModbusLink *link() const { return m_link; }
-    DeviceClient *client() const { return m_client; }
-    ParameterStore *store() const { return m_store; }
-    SimHost *simulator() const { return m_sim; }
-    // Keeps the status values (positions, inputs, outputs, running) fresh while connected.
-    Poller *statusPoller() const { return m_poller; }
+    // The values the session knows: what the controller holds and what the user edited. Pages
+    // and forms bind to this model; the session keeps it up to date.
+    ParameterStore *parameters() const { return m_store; }
+    JogController *jog() const { return m_jog; }
+    // Follows motion commands to their judged outcome and keeps each axis' reference state.
+    MotionSupervisor *motion() const { return m_motion; }
+    // Port closed / open but not answering / answering: "connected" means answering.
+    LinkHealth *health() const { return m_health; }
+    // The live status recorded for the plots; made on first use, recording from then on.
+    StatusRecorder *recorder();
+    TrafficLog *traffic() const;
+    const LinkStats &linkStats() const;
+    void resetLinkStats();
+    LinkState linkState() const;
     bool isConnected() const;
-    bool isSimulator() const { return m_usingSim; }
+    bool isSimulator() const;
     LinkSettings settings() const;
 
-    // Connect, then read everything (reading never writes). `connected(ok, reason)` follows.
+    // Live (the default, as the window wants it): read everything after connecting, poll the
+    // status while connected, read back what a failed write left uncertain. stepcomctl turns it
+    // off, so a command puts on the wire only what it names.
+    void setLive(bool live) { m_live = live; }
+    bool isLive() const { return m_live; }
+    // Whether Qt's own qt.modbus messages reach stderr (stepcomctl --verbose); off by default.
+    static void setLinkDiagnosticsShown(bool shown);
+
+    // The status poll (started on connect when live).
+    void startStatus();
+    void stopStatus();
+    bool isStatusActive() const;
+    QStringList statusKeys() const;
+    void setStatusIntervalMs(int ms);
+    int statusIntervalMs() const;
+    double statusRate() const;
+    bool isStatusFast() const;
+    QString statusError() const;
+    const PollStats &statusStats() const;
+    void resetStatusStats();
+
+    // The built-in simulator, injected by programs that offer --sim (the session owns it).
+    void setSimulator(std::unique_ptr<SimulatorStarter> simulator);
+    SimulatorStarter *simulatorStarter() const { return m_sim.get(); }
+
+    // Connect, then (live) read everything (reading never writes). `connected(ok, reason)`
+    // follows.
     void connectTo(const LinkSettings &settings);
     // Start the built-in simulated controller in this process and connect to it.
     void connectSimulator();
-    void disconnectFrom();
+    // Close the link; an empty reason says the user disconnected.
+    void disconnectFrom(const QString &reason = QString());
 
     void readAll();
+    // Read these parameters (or all) and hand the outcome over; the store is left alone.
+    void read(const QList<const Parameter *> &params, std::function<void(const ReadOutcome &)> done,
+              Priority priority = Priority::Read);
+    void readAll(std::function<void(const ReadOutcome &)> done);
     // Write every edit held in the store, verify, and update the store.
     void writeChanges();
     // `done` (optional) hears this write's outcome, after the store has taken it.
     void write(const QList<ParameterWrite> &writes,
                std::function<void(const WriteOutcome &)> done = {});
-    // Pulse a command coil by key; emergency ones jump the queue.
+    // Pulse a command coil by key, say how it went and emit commandFinished; emergency ones
+    // jump the queue.
     void command(const QString &key);
+    // The one command path: pulse this coil and hand the result to `done`, which reports it.
+    void command(const Parameter &coil, std::function<void(const Result &)> done);
     // Always goes out at once, ahead of everything queued; never asks.
     void emergencyStop();
     void saveToFlash();
@@ -58,20 +118,30 @@ public:
     // Write a new device id and/or baud, follow the controller and verify it answers there.
     // On failure `linkChangeFailed` offers the settings that worked before.
     void changeLink(int deviceId, int baud);
+    // Stop every jog for this reason; returns how many stops were sent or scheduled.
+    int stopJogging(JogStop why);
 
 Q_SIGNALS:
     void connected(bool ok, const QString &reason);
     void disconnected(const QString &reason);
+    // The link dropped on its own (after `disconnected`).
+    void linkLost(const QString &reason);
     void linkStateChanged();
+    void linkStatsChanged();
     void message(stepcom::DeviceSession::Severity severity, const QString &text);
     void readFinished(bool ok);
     void writeFinished(const stepcom::WriteOutcome &outcome);
     void commandFinished(const QString &key, bool ok);
     void linkChanged(const stepcom::LinkSettings &settings);
     void linkChangeFailed(const stepcom::LinkSettings &previous, const QString &reason);
+    void statusCycleFinished(bool ok, qint64 ms);
+    void statusFastChanged(bool fast);
 
 private:
+    friend class SessionInternals; // tests and the benchmark's link measurements
+
     void say(Severity severity, const QString &text);
+    void openLink(const LinkSettings &settings);
     // After a failed write, read back what the controller holds for the keys whose request went
     // out without a good answer.
     void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
@@ -80,9 +150,14 @@ private:
     DeviceClient *m_client;
     ParameterStore *m_store;
     Poller *m_poller;
-    SimHost *m_sim = nullptr;
+    MotionSupervisor *m_motion; // made before the jog controller, which follows it
+    LinkHealth *m_health;
+    JogController *m_jog;
+    StatusRecorder *m_recorder = nullptr;
+    std::unique_ptr<SimulatorStarter> m_sim;
     bool m_usingSim = false;
     bool m_readAfterConnect = false;
+    bool m_live = true;
 };
 
 } // namespace stepcom

@@ -1,8 +1,6 @@
 #include "device/jogcontroller.h"
 
-#include "bus/modbuslink.h"
-#include "bus/request.h"
-#include "poll/poller.h"
+#include "device/motionsupervisor.h"
 
 #include <QTimer>
 
@@ -30,11 +28,16 @@ JogController::JogController(DeviceSession *session, QObject *parent)
     connect(session, &DeviceSession::disconnected, this, &JogController::onDisconnected);
     connect(session, &DeviceSession::connected, this,
             [this](bool ok, const QString &) { onConnected(ok); });
+    // The E-STOP stopped every motor: the jogs end now (and are checked like any stop).
+    connect(session->motion(), &MotionSupervisor::emergencyStopSent, this, [this] {
+        stopAll(tr("E-STOP"));
+        Q_EMIT heldControlsReset();
+    });
     // A motor that kept running after its stop is cleared once the poller sees it idle.
-    connect(session->statusPoller(), &Poller::cycleFinished, this, [this] {
+    connect(session, &DeviceSession::statusCycleFinished, this, [this] {
         for (int n = 1; n <= motorCount(); ++n) {
             if (at(n).state == State::StillRunning &&
-                m_session->store()->deviceValue(motorKey(n, QStringLiteral("running"))) == 0) {
+                m_session->parameters()->deviceValue(motorKey(n, QStringLiteral("running"))) == 0) {
                 setState(n, State::Idle);
                 say(DeviceSession::Severity::Info, tr("Motor %1 has stopped now").arg(n));
             }
@@ -46,14 +49,14 @@ JogController::~JogController()
 {
     // Leaving with a motor held: the stop still goes out (nobody is left to check it).
     DeviceSession *session = m_session;
-    if (!session || !session->link() || !session->isConnected())
+    if (!session || !session->isConnected())
         return;
     for (int n = 1; n <= motorCount(); ++n) {
         const Motor &m = at(n);
         if (m.state != State::Jogging && m.state != State::StillRunning && !m.stopWanted)
             continue;
         if (const Parameter *coil = session->map().find(motorKey(n, QStringLiteral("stop"))))
-            session->client()->command(*coil, [](const Result &) {});
+            session->command(*coil, [](const Result &) {});
     }
 }
 
@@ -157,7 +160,7 @@ bool JogController::press(int motor, Direction direction, Source source)
     }
     // A stop of ours in flight makes the last poll stale; otherwise trust it.
     if (m.state != State::Stopping &&
-        m_session->store()->deviceValue(motorKey(motor, QStringLiteral("running"))) == 1) {
+        m_session->parameters()->deviceValue(motorKey(motor, QStringLiteral("running"))) == 1) {
         say(Severity::Warning, tr("Motor %1 is moving (a single move, homing or another command): "
                                   "stop it before jogging")
                                    .arg(motor));
@@ -177,11 +180,11 @@ bool JogController::press(int motor, Direction direction, Source source)
     const quint64 generation = ++m.generation;
     setState(motor, State::Jogging);
     say(Severity::Info, tr("Motor %1: jog %2").arg(motor).arg(directionText(direction)));
-    m_session->client()->command(
-        *coil, [self = QPointer<JogController>(this), motor, generation](const Result &r) {
-            if (self)
-                self->onStartFinished(motor, generation, r);
-        });
+    m_session->command(*coil,
+                       [self = QPointer<JogController>(this), motor, generation](const Result &r) {
+                           if (self)
+                               self->onStartFinished(motor, generation, r);
+                       });
     return true;
 }
 
@@ -256,11 +259,11 @@ void JogController::sendStop(int motor, const QString &reason)
     ++m.stopsInFlight;
     setState(motor, State::Stopping);
     const quint64 generation = m.generation;
-    m_session->client()->command(
-        *coil, [self = QPointer<JogController>(this), motor, generation](const Result &r) {
-            if (self)
-                self->onStopFinished(motor, generation, r);
-        });
+    m_session->command(*coil,
+                       [self = QPointer<JogController>(this), motor, generation](const Result &r) {
+                           if (self)
+                               self->onStopFinished(motor, generation, r);
+                       });
 }
 
 void JogController::onStartFinished(int motor, quint64 generation, const Result &result)
@@ -333,12 +336,14 @@ void JogController::checkRunning(int motor, quint64 generation, int retries)
         return;
     }
     ++m_checksInFlight;
-    m_session->client()->read({running}, Priority::Command,
-                              [self = QPointer<JogController>(this), motor, generation, key,
-                               retries](const ReadOutcome &o) {
-                                  if (self)
-                                      self->onRunningRead(motor, generation, retries, key, o);
-                              });
+    m_session->read(
+        {running},
+        [self = QPointer<JogController>(this), motor, generation, key,
+         retries](const ReadOutcome &o) {
+            if (self)
+                self->onRunningRead(motor, generation, retries, key, o);
+        },
+        Priority::Command);
 }
 
 void JogController::onRunningRead(int motor, quint64 generation, int retries, const QString &key,
@@ -352,7 +357,7 @@ void JogController::onRunningRead(int motor, quint64 generation, int retries, co
     }
     if (outcome.ok && outcome.values.contains(key)) {
         const qint64 value = outcome.values.value(key);
-        m_session->store()->setDeviceValues({{key, value}});
+        m_session->parameters()->setDeviceValues({{key, value}});
         if (value == 0) {
             setState(motor, State::Idle);
             say(DeviceSession::Severity::Info,

@@ -1,5 +1,8 @@
 #pragma once
 
+#include "motion/travellimits.h"
+#include "profile/profilevariance.h"
+
 #include <QDateTime>
 #include <QMap>
 #include <QString>
@@ -23,6 +26,15 @@ struct Profile
     int deviceId = 0; // metadata: the controller it was saved from (0 = unknown)
     int baud = 0;
     QMap<QString, qint64> values; // raw, by key, ordered by key
+    // A profile of another map (mapId/mapVersion differ): what this map cannot take. `values`
+    // then holds only what both maps have, within this map's ranges.
+    ProfileVariance variance;
+    // StepCom's own settings for this machine, not controller registers (schema 2, "stepcom").
+    TravelLimits travelLimits;
+    // A backup made before a risky operation (schema 2, metadata "backup"): the operation that
+    // followed ("apply", "factory-reset", "save-to-flash", "device-id", "baud") and the link.
+    QString backupOperation;
+    QString backupDevice;
 
     // The parameters a profile holds for `map`: every read-write holding register; the link
     // settings only when `withLink`.

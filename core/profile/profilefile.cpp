@@ -110,8 +110,9 @@ QStringList duplicateKeys(const QByteArray &bytes)
 class Parser
 {
 public:
-    Parser(const RegisterMap &map)
+    Parser(const RegisterMap &map, ProfileFile::OtherMaps otherMaps)
         : m_map(map)
+        , m_acceptOtherMaps(otherMaps == ProfileFile::OtherMaps::Accept)
     {}
 
     ProfileParseResult run(const QByteArray &bytes)
@@ -153,6 +154,7 @@ public:
             m_errors << ProfileFile::tr("… and %1 more problems").arg(more);
         }
         result.errors = m_errors;
+        profile.variance = m_variance;
         if (m_errors.isEmpty())
             result.profile = profile;
         return result;
@@ -189,7 +191,7 @@ private:
                             .arg(typeName(top.value(QLatin1String("schema"))));
             return;
         }
-        if (*schema != ProfileFile::Schema) {
+        if (*schema < ProfileFile::FirstSchema || *schema > ProfileFile::Schema) {
             m_errors << (*schema > ProfileFile::Schema
                              ? ProfileFile::tr(
                                    "profile schema %1 is newer than this StepCom reads (%2): "
@@ -202,14 +204,63 @@ private:
                                    .arg(ProfileFile::Schema));
             return;
         }
-        unknownFields(top,
-                      {QStringLiteral("format"), QStringLiteral("schema"), QStringLiteral("map"),
-                       QStringLiteral("metadata"), QStringLiteral("values")},
-                      QString());
+        m_schema = *schema;
+        QStringList fields{QStringLiteral("format"), QStringLiteral("schema"),
+                           QStringLiteral("map"), QStringLiteral("metadata"),
+                           QStringLiteral("values")};
+        if (m_schema >= 2)
+            fields << QStringLiteral("stepcom");
+        unknownFields(top, fields, QString());
         if (!readMap(top.value(QLatin1String("map")), profile))
             return; // values of another map would only give misleading messages
         readMetadata(top.value(QLatin1String("metadata")), profile);
         readValues(top.value(QLatin1String("values")), profile);
+        if (m_schema >= 2 && top.contains(QLatin1String("stepcom")))
+            readStepcom(top.value(QLatin1String("stepcom")), profile);
+    }
+
+    // StepCom's own settings (schema 2): {"travelLimits": {...}}.
+    void readStepcom(const QJsonValue &value, Profile *profile)
+    {
+        if (!value.isObject()) {
+            m_errors
+                << ProfileFile::tr("\"stepcom\" must be an object, found %1").arg(typeName(value));
+            return;
+        }
+        const QJsonObject o = value.toObject();
+        unknownFields(o, {QStringLiteral("travelLimits")}, QStringLiteral("stepcom"));
+        if (!o.contains(QLatin1String("travelLimits")))
+            return;
+        QStringList errors;
+        if (auto limits =
+                TravelLimits::fromJson(o.value(QLatin1String("travelLimits")), m_map, &errors))
+            profile->travelLimits = *limits;
+        for (const QString &e : std::as_const(errors))
+            m_errors << QStringLiteral("\"stepcom\": ") + e;
+    }
+
+    // A backup's origin (schema 2): {"operation": "apply", "device": "/dev/ttyUSB0 …"}.
+    void readBackup(const QJsonValue &value, Profile *profile)
+    {
+        static const QStringList operations{
+            QStringLiteral("apply"), QStringLiteral("factory-reset"),
+            QStringLiteral("save-to-flash"), QStringLiteral("device-id"), QStringLiteral("baud")};
+        const QJsonObject o = value.toObject();
+        unknownFields(o, {QStringLiteral("operation"), QStringLiteral("device")},
+                      QStringLiteral("metadata.backup"));
+        const QString operation = o.value(QLatin1String("operation")).toString();
+        if (!value.isObject() || !operations.contains(operation))
+            m_errors << ProfileFile::tr("\"metadata\": \"backup\" must be {\"operation\": one of "
+                                        "%1, \"device\": text}")
+                            .arg(operations.join(QLatin1String(", ")));
+        else if (const QJsonValue d = o.value(QLatin1String("device"));
+                 !d.isUndefined() && (!d.isString() || d.toString().size() > 200))
+            m_errors << ProfileFile::tr("\"metadata\": \"backup\": \"device\" must be a text of "
+                                        "at most 200 characters");
+        else {
+            profile->backupOperation = operation;
+            profile->backupDevice = o.value(QLatin1String("device")).toString();
+        }
     }
 
     bool readMap(const QJsonValue &value, Profile *profile)
@@ -234,7 +285,12 @@ private:
                             .arg(typeName(o.value(QLatin1String("version"))));
             return false;
         }
-        if (id.toString() != m_map.id() || *version != m_map.version()) {
+        if ((id.toString() != m_map.id() || *version != m_map.version()) && m_acceptOtherMaps) {
+            // A firmware variant or a larger model: read what both maps have, list the rest.
+            m_variance.fileMap =
+                id.toString().left(60) + QLatin1Char('/') + QString::number(*version);
+            m_variance.thisMap = m_map.identity();
+        } else if (id.toString() != m_map.id() || *version != m_map.version()) {
             m_errors << ProfileFile::tr(
                             "the profile is for register map \"%1\" version %2, but the "
                             "controller's map is \"%3\" version %4")
@@ -257,11 +313,14 @@ private:
             return;
         }
         const QJsonObject o = value.toObject();
-        unknownFields(o,
-                      {QStringLiteral("name"), QStringLiteral("notes"), QStringLiteral("created"),
-                       QStringLiteral("stepcomVersion"), QStringLiteral("deviceId"),
-                       QStringLiteral("baud")},
-                      QStringLiteral("metadata"));
+        QStringList fields{QStringLiteral("name"),     QStringLiteral("notes"),
+                           QStringLiteral("created"),  QStringLiteral("stepcomVersion"),
+                           QStringLiteral("deviceId"), QStringLiteral("baud")};
+        if (m_schema >= 2)
+            fields << QStringLiteral("backup");
+        unknownFields(o, fields, QStringLiteral("metadata"));
+        if (m_schema >= 2 && o.contains(QLatin1String("backup")))
+            readBackup(o.value(QLatin1String("backup")), profile);
         auto text = [&](const char *field, QString *out) {
             const QJsonValue v = o.value(QLatin1String(field));
             if (v.isUndefined())
@@ -290,10 +349,12 @@ private:
                 return;
             const auto n = wholeNumber(v);
             const Parameter *p = m_map.find(QLatin1String(key));
-            if (!n || (p && !p->checkRaw(*n).isEmpty()))
+            // Another map may allow other ids or bauds; metadata is information only.
+            const bool checkRange = p && !m_variance.isVariant();
+            if (!n || (checkRange && !p->checkRaw(*n).isEmpty()))
                 m_errors << ProfileFile::tr("\"metadata\": \"%1\" must be a %2, found %3")
                                 .arg(QLatin1String(field),
-                                     p ? p->rangeText() : ProfileFile::tr("whole number"),
+                                     checkRange ? p->rangeText() : ProfileFile::tr("whole number"),
                                      v.isDouble() ? QString::number(v.toDouble(), 'g', 17)
                                                   : typeName(v));
             else
@@ -301,6 +362,23 @@ private:
         };
         link("deviceId", "device.id", &profile->deviceId);
         link("baud", "device.baud", &profile->baud);
+    }
+
+    // A key of another map's profile that this map has no setting for: listed, not used.
+    void unknownToThisMap(const QString &key, const QJsonValue &v, const Parameter *p)
+    {
+        if (!v.isDouble()) { // every value of a profile is a number, whatever its map
+            m_errors << ProfileFile::tr("%1: expected a number, found %2")
+                            .arg(key.left(60), typeName(v));
+            return;
+        }
+        const QString why =
+            !p            ? ProfileFile::tr("not in register map \"%1\"").arg(m_map.identity())
+            : p->isCoil() ? ProfileFile::tr("a command in register map \"%1\", not a setting")
+                                .arg(m_map.identity())
+                          : ProfileFile::tr("a status value in register map \"%1\", not a setting")
+                                .arg(m_map.identity());
+        m_variance.unknown.append({key, v.toDouble(), why});
     }
 
     void readValues(const QJsonValue &value, Profile *profile)
@@ -311,23 +389,26 @@ private:
             return;
         }
         const QJsonObject o = value.toObject();
+        const bool variant = m_variance.isVariant();
         for (auto it = o.begin(); it != o.end(); ++it) {
             const QString key = it.key();
-            const Parameter *p = m_map.find(key);
-            if (!p) {
-                m_errors << ProfileFile::tr("unknown parameter \"%1\" (not in register map \"%2\")")
-                                .arg(key.left(60), m_map.identity());
-                continue;
-            }
-            if (!p->writable()) {
-                m_errors << (p->isCoil()
-                                 ? ProfileFile::tr("\"%1\" is a command, not a setting").arg(key)
-                                 : ProfileFile::tr("\"%1\" is read-only (a status value), not a "
-                                                   "setting")
-                                       .arg(key));
-                continue;
-            }
             const QJsonValue v = it.value();
+            const Parameter *p = m_map.find(key);
+            if (!p || !p->writable()) {
+                if (variant)
+                    unknownToThisMap(key, v, p);
+                else if (!p)
+                    m_errors << ProfileFile::tr("unknown parameter \"%1\" (not in register map "
+                                                "\"%2\")")
+                                    .arg(key.left(60), m_map.identity());
+                else if (p->isCoil())
+                    m_errors << ProfileFile::tr("\"%1\" is a command, not a setting").arg(key);
+                else
+                    m_errors << ProfileFile::tr("\"%1\" is read-only (a status value), not a "
+                                                "setting")
+                                    .arg(key);
+                continue;
+            }
             if (!v.isDouble()) {
                 m_errors
                     << ProfileFile::tr("%1: expected a number, found %2").arg(key, typeName(v));
@@ -336,19 +417,29 @@ private:
             QString why;
             const auto raw = p->fromEngineering(v.toDouble(), &why);
             if (!raw) {
-                m_errors << why;
+                if (variant)
+                    m_variance.rejected.append({key, v.toDouble(), why});
+                else
+                    m_errors << why;
                 continue;
             }
             profile->values.insert(key, *raw);
         }
         for (const Parameter *p : Profile::profileParameters(m_map, false)) {
-            if (!o.contains(p->key))
+            if (o.contains(p->key))
+                continue;
+            if (variant)
+                m_variance.missing << p->key;
+            else
                 m_errors << ProfileFile::tr("missing \"%1\" (%2)").arg(p->key, p->label.en);
         }
     }
 
     const RegisterMap &m_map;
+    const bool m_acceptOtherMaps;
+    int m_schema = ProfileFile::Schema;
     QStringList m_errors;
+    ProfileVariance m_variance;
 };
 
 QJsonValue engineering(const Parameter &p, qint64 raw)
@@ -369,17 +460,19 @@ void ProfileFile::lineColumn(const QByteArray &bytes, qsizetype offset, int *lin
     *column = int(QString::fromUtf8(before.mid(lineStart)).size()) + 1;
 }
 
-ProfileParseResult ProfileFile::parse(const QByteArray &bytes, const RegisterMap &map)
+ProfileParseResult ProfileFile::parse(const QByteArray &bytes, const RegisterMap &map,
+                                      OtherMaps otherMaps)
 {
     if (!map.isValid()) {
         ProfileParseResult r;
         r.errors << ProfileFile::tr("no register map to check the profile against");
         return r;
     }
-    return Parser(map).run(bytes);
+    return Parser(map, otherMaps).run(bytes);
 }
 
-ProfileParseResult ProfileFile::load(const QString &path, const RegisterMap &map)
+ProfileParseResult ProfileFile::load(const QString &path, const RegisterMap &map,
+                                     OtherMaps otherMaps)
 {
     ProfileParseResult r;
     QFile file(path);
@@ -397,7 +490,7 @@ ProfileParseResult ProfileFile::load(const QString &path, const RegisterMap &map
         r.errors << ProfileFile::tr("%1: %2").arg(path, file.errorString());
         return r;
     }
-    r = parse(file.readAll(), map);
+    r = parse(file.readAll(), map, otherMaps);
     for (QString &e : r.errors)
         e = QFileInfo(path).fileName() + QStringLiteral(": ") + e;
     return r;
@@ -414,19 +507,40 @@ QByteArray ProfileFile::toJson(const Profile &profile, const RegisterMap &map)
         metadata.insert(QStringLiteral("deviceId"), profile.deviceId);
     if (profile.baud > 0)
         metadata.insert(QStringLiteral("baud"), profile.baud);
+    // Schema 2 only when its fields are used: such a file stays readable by every StepCom.
+    bool schema2 = false;
+    if (!profile.backupOperation.isEmpty()) {
+        QJsonObject backup{{QStringLiteral("operation"), profile.backupOperation}};
+        if (!profile.backupDevice.isEmpty())
+            backup.insert(QStringLiteral("device"), profile.backupDevice);
+        metadata.insert(QStringLiteral("backup"), backup);
+        schema2 = true;
+    }
     QJsonObject values;
     for (auto it = profile.values.cbegin(); it != profile.values.cend(); ++it) {
         if (const Parameter *p = map.find(it.key()))
             values.insert(it.key(), engineering(*p, it.value()));
     }
-    const QJsonObject top{
+    for (const QList<ProfileNote> *notes :
+         {&profile.variance.unknown, &profile.variance.rejected}) {
+        for (const ProfileNote &n : *notes)
+            values.insert(n.key, n.number);
+    }
+    const bool own = profile.mapId.isEmpty();
+    const QJsonObject limits = profile.travelLimits.toJson(map);
+    schema2 = schema2 || !limits.isEmpty();
+    QJsonObject top{
         {QStringLiteral("format"), kFormat},
-        {QStringLiteral("schema"), Schema},
+        {QStringLiteral("schema"), schema2 ? Schema : FirstSchema},
         {QStringLiteral("map"),
-         QJsonObject{{QStringLiteral("id"), map.id()}, {QStringLiteral("version"), map.version()}}},
+         QJsonObject{{QStringLiteral("id"), own ? map.id() : profile.mapId},
+                     {QStringLiteral("version"), own ? map.version() : profile.mapVersion}}},
         {QStringLiteral("metadata"), metadata},
         {QStringLiteral("values"), values},
     };
+    if (!limits.isEmpty())
+        top.insert(QStringLiteral("stepcom"),
+                   QJsonObject{{QStringLiteral("travelLimits"), limits}});
     return QJsonDocument(top).toJson(QJsonDocument::Indented);
 }
 

@@ -1,6 +1,8 @@
 #include "report/commissioningreport.h"
 
 #include "device/wiringcheck.h"
+#include "profile/settingsfingerprint.h"
+#include "report/certificatesection.h"
 #include "report/xypicture.h"
 
 #include <QBuffer>
@@ -60,16 +62,27 @@ QString CommissioningReport::text(const char *key) const
 
 QString CommissioningReport::controllerSection() const
 {
-    QString h = QStringLiteral("<h2>%1</h2>\n").arg(esc(tr("Controller")));
+    QString h = QStringLiteral("<h2>%1</h2>\n")
+                    .arg(esc(m_in.fromFile() ? tr("Controller (as the profile records it)")
+                                             : tr("Controller")));
     h += QLatin1String(kTable);
     auto line = [&](const QString &what, const QString &value) {
         h += row({esc(what), esc(value)});
     };
     line(tr("Device id"), m_in.deviceId > 0 ? QString::number(m_in.deviceId) : text("device.id"));
-    line(tr("Link"), m_in.link.isEmpty() ? QStringLiteral("—") : m_in.link);
-    line(tr("Baud rate (register)"), text("device.baud"));
-    line(tr("Register map"),
-         QStringLiteral("%1 (%2)").arg(m_in.map.name().text(m_in.locale), m_in.map.identity()));
+    if (m_in.fromFile())
+        line(tr("Link"), tr("none: made from a file, not read from a controller"));
+    else
+        line(tr("Link"), m_in.link.isEmpty() ? QStringLiteral("—") : m_in.link);
+    QString baud = text("device.baud");
+    if (baud == QStringLiteral("—") && m_in.fileBaud > 0)
+        baud = QString::number(m_in.fileBaud);
+    line(m_in.fromFile() ? tr("Baud rate") : tr("Baud rate (register)"), baud);
+    QString map =
+        QStringLiteral("%1 (%2)").arg(m_in.map.name().text(m_in.locale), m_in.map.identity());
+    if (!m_in.fileMap.isEmpty())
+        map += QStringLiteral("; ") + tr("the profile was made with %1").arg(m_in.fileMap);
+    line(tr("Register map"), map);
     QString mode = text("mode.system");
     if (m_in.values.value(QStringLiteral("mode.system")) == 1)
         mode += QStringLiteral(", ") + tr("round trips: %1").arg(text("mode.round_trips"));
@@ -77,9 +90,33 @@ QString CommissioningReport::controllerSection() const
     line(tr("Homing order"),
          tr("first: %1, then: %2").arg(text("homing.first"), text("homing.second")));
     const QLocale locale = m_in.locale.isEmpty() ? QLocale() : QLocale(m_in.locale);
-    line(tr("Date"), locale.toString(m_in.date, QLocale::LongFormat));
+    if (m_in.fromFile()) {
+        line(tr("Profile file"), m_in.sourceFile);
+        if (m_in.fileCreated.isValid())
+            line(tr("Profile saved"),
+                 tr("%1 by StepCom %2")
+                     .arg(locale.toString(m_in.fileCreated.toLocalTime(), QLocale::LongFormat),
+                          m_in.fileStepcomVersion.isEmpty() ? QStringLiteral("—")
+                                                            : m_in.fileStepcomVersion));
+    }
+    line(m_in.fromFile() ? tr("Report date") : tr("Date"),
+         locale.toString(m_in.date, QLocale::LongFormat));
     line(tr("StepCom version"), QStringLiteral(STEPCOM_VERSION));
+    // One line to compare two machines by: the same settings give the same line.
+    line(tr("Settings fingerprint"),
+         SettingsFingerprint::line(m_in.map, SettingsFingerprint::ordered(m_in.values)));
     return h + QStringLiteral("</table>\n");
+}
+
+QString CommissioningReport::fileSection() const
+{
+    if (!m_in.fromFile() || m_in.notFromFile.isEmpty())
+        return {};
+    QString h = QStringLiteral("<h2>%1</h2>\n<ul>\n")
+                    .arg(esc(tr("What of the profile this register map cannot show")));
+    for (const QString &line : m_in.notFromFile)
+        h += QStringLiteral("<li>%1</li>\n").arg(esc(line));
+    return h + QStringLiteral("</ul>\n");
 }
 
 QString CommissioningReport::parameterSection() const
@@ -201,25 +238,40 @@ QString CommissioningReport::interpolationSection(const QString &imageSource) co
     return h;
 }
 
+QString CommissioningReport::title() const
+{
+    return m_in.fromFile() ? tr("Commissioning report (from a profile file)")
+                           : tr("Commissioning report");
+}
+
 QString CommissioningReport::html(const QString &imageSource) const
 {
-    const QString title = tr("Commissioning report");
+    const QString title = this->title();
     QString h = QStringLiteral("<html><head><meta charset=\"utf-8\"><title>%1</title></head>"
                                "<body>\n")
                     .arg(esc(title));
     h += QStringLiteral("<h1>%1</h1>\n").arg(esc(title));
     if (!m_in.title.isEmpty())
         h += QStringLiteral("<p><b>%1</b></p>\n").arg(esc(m_in.title));
+    if (m_in.fromFile())
+        h += QStringLiteral("<p><b>%1</b></p>\n")
+                 .arg(esc(tr("Made from the profile file %1, not read from a controller: these "
+                             "are the values the file holds; a controller may hold others.")
+                              .arg(m_in.sourceFile)));
+    const CertificateSection certificate(m_in);
     h += controllerSection();
+    h += certificate.checklist();
     h += wiringSection();
     h += interpolationSection(imageSource);
+    h += certificate.travelLimits();
     h += parameterSection();
+    h += fileSection();
     h += QStringLiteral("<h2>%1</h2>\n").arg(esc(tr("Notes")));
     h += QStringLiteral("<p>%1</p>\n")
              .arg(m_in.notes.isEmpty()
                       ? QStringLiteral("—")
                       : esc(m_in.notes).replace(QLatin1Char('\n'), QLatin1String("<br>")));
-    h += QStringLiteral("<p>%1</p>\n").arg(esc(tr("Signature: ____________________")));
+    h += certificate.signatures();
     return h + QStringLiteral("</body></html>\n");
 }
 
@@ -271,7 +323,7 @@ QString CommissioningReport::writePdf(const QString &path) const
         writer.setPageSize(QPageSize(QPageSize::A4));
         writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
         writer.setResolution(300);
-        writer.setTitle(tr("Commissioning report"));
+        writer.setTitle(title());
         writer.setCreator(QStringLiteral("StepCom %1").arg(QStringLiteral(STEPCOM_VERSION)));
         const auto doc = document();
         doc->print(&writer);

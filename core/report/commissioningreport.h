@@ -1,10 +1,8 @@
 #pragma once
 
-#include "map/registermap.h"
+#include "report/reportinput.h"
 
 #include <QCoreApplication>
-#include <QDateTime>
-#include <QHash>
 
 #include <memory>
 
@@ -12,22 +10,10 @@ class QTextDocument;
 
 namespace stepcom {
 
-// Everything the commissioning sheet shows; raw values as read from the controller.
-struct ReportInput
-{
-    RegisterMap map;
-    QHash<QString, qint64> values;
-    QString link; // LinkSettings::describe()
-    int deviceId = 0;
-    QString title; // e.g. the machine's name
-    QString notes;
-    QDateTime date;
-    QString locale; // "zh_CN" for the map's Chinese labels, else English
-};
-
 // The sheet that goes into the machine's documentation: controller and link, every parameter
 // with unit and register, input wiring, homing order, the arc and line setup with an XY picture,
 // the mode, date and notes. Rendered with QTextDocument; text follows the active translator.
+// Made from a profile file, it says so in its title, under it and in the controller section.
 class CommissioningReport
 {
     Q_DECLARE_TR_FUNCTIONS(stepcom::CommissioningReport)
@@ -39,6 +25,8 @@ public:
     // A document with the picture as a resource, ready to print.
     std::unique_ptr<QTextDocument> document() const;
     QImage picture() const;
+    // "Commissioning report", or "... (from a profile file)".
+    QString title() const;
 
     // By the file's suffix (.pdf, .html/.htm); atomic; empty on success, else why not.
     QString write(const QString &path) const;
@@ -52,6 +40,7 @@ private:
     QString parameterSection() const;
     QString wiringSection() const;
     QString interpolationSection(const QString &imageSource) const;
+    QString fileSection() const; // made from a file: what of it this map cannot show
 
     ReportInput m_in;
 };

@@ -1,7 +1,6 @@
 #include "report/xypicture.h"
 
-#include "map/registermap.h"
-#include "sim/interpolationpath.h"
+#include "motion/pathsetup.h"
 
 #include <QPainter>
 #include <QPainterPath>
@@ -15,51 +14,37 @@ namespace {
 constexpr int kSamples = 180;
 }
 
-double XyPicture::value(const char *key) const
-{
-    const Parameter *p = m_map.find(QLatin1String(key));
-    if (!p)
-        return 0;
-    return p->toEngineering(m_values.value(p->key));
-}
-
 XyPicture::XyPicture(const RegisterMap &map, const QHash<QString, qint64> &values)
-    : m_map(map)
-    , m_values(values)
 {
-    using Point = InterpolationPath::Point;
-    const Point lineStart{value("line.start_x"), value("line.start_y")};
-    const Point lineEnd{value("line.end_x"), value("line.end_y")};
-    const InterpolationPath line = InterpolationPath::line(lineStart, lineEnd);
-    m_line.enabled = value("line.enabled") != 0;
+    using namespace interpolation;
+    const RawValue raw = [&values](const QString &key) -> std::optional<qint64> {
+        const auto it = values.constFind(key);
+        return it == values.cend() ? std::nullopt : std::optional<qint64>(*it);
+    };
+    const LineSetup lineSetup = interpolation::lineSetup(map, raw);
+    const InterpolationPath line = linePath(lineSetup);
+    m_line.enabled = lineSetup.enabled;
     for (const double s : {0.0, line.length()}) {
         const Point p = line.pointAt(s);
         m_line.points << QPointF(p.x, p.y);
     }
 
-    m_arc.enabled = value("arc.enabled") != 0;
-    const Point start{value("arc.start_x"), value("arc.start_y")};
-    const Point end{value("arc.end_x"), value("arc.end_y")};
-    std::optional<Point> centre;
-    if (value("arc.mode") == 0) {
-        centre = Point{value("arc.center_x"), value("arc.center_y")};
-    } else {
-        centre = InterpolationPath::circleCentre(
-            start, Point{value("arc.middle_x"), value("arc.middle_y")}, end);
-        if (!centre)
-            m_arcProblem = tr("start, middle and end point are on one line");
-    }
-    if (centre) {
-        const auto arc =
-            InterpolationPath::arcAroundCentre(start, end, *centre, value("arc.direction") != 0);
-        if (!arc) {
-            m_arcProblem = tr("the start point is the centre");
-        } else {
-            for (int i = 0; i <= kSamples; ++i) {
-                const Point p = arc->pointAt(arc->length() * i / kSamples);
-                m_arc.points << QPointF(p.x, p.y);
-            }
+    const ArcSetup arcSetup = interpolation::arcSetup(map, raw);
+    m_arc.enabled = arcSetup.enabled;
+    const ArcPath arc = arcPath(arcSetup);
+    switch (arc.problem) {
+    case ArcProblem::None:
+        for (int i = 0; i <= kSamples; ++i) {
+            const Point p = arc.path->pointAt(arc.path->length() * i / kSamples);
+            m_arc.points << QPointF(p.x, p.y);
         }
+        break;
+    case ArcProblem::PointsOnALine:
+        m_arcProblem = tr("start, middle and end point are on one line");
+        break;
+    case ArcProblem::OnTheCentre:
+        m_arcProblem = tr("the start point is the centre");
+        break;
     }
 }
 

@@ -25,10 +25,6 @@ private:
         QList<QPointF> points;
         bool enabled = false;
     };
-    double value(const char *key) const;
-
-    const RegisterMap &m_map;
-    QHash<QString, qint64> m_values;
     Shape m_arc;
     Shape m_line;
     QString m_arcProblem;

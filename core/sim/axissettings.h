@@ -1,5 +1,7 @@
 #pragma once
 
+#include "motion/motorderived.h"
+
 namespace stepcom {
 
 // One motor's parameters as the motion model uses them, read from the registers every tick
@@ -18,10 +20,21 @@ struct AxisSettings
     int limitNegative = 0;
     int homeInput = 0;
 
-    double pulsesPerRev() const { return stepAngle > 0 ? 360.0 / stepAngle * microsteps : 1; }
-    double stepsPerUnit() const { return pitch > 0 ? pulsesPerRev() / pitch : pulsesPerRev(); }
+    // The motion model's values, with a fallback where a register holds nonsense (a step angle of
+    // 0 counts as one pulse per revolution, a pitch of 0 as one unit per revolution).
+    double pulsesPerRev() const
+    {
+        return motorderived::pulsesPerRevolution(stepAngle, microsteps).value_or(1);
+    }
+    double stepsPerUnit() const
+    {
+        return motorderived::pulsesPerUnit(pulsesPerRev(), pitch).value_or(pulsesPerRev());
+    }
     // Pulse rate (Hz) for a speed in revolutions per minute.
-    double hzForRpm(double revsPerMinute) const { return revsPerMinute * pulsesPerRev() / 60.0; }
+    double hzForRpm(double revsPerMinute) const
+    {
+        return motorderived::pulseRateHz(revsPerMinute, pulsesPerRev()).value_or(0);
+    }
 };
 
 } // namespace stepcom

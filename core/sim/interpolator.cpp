@@ -2,6 +2,8 @@
 
 #include "sim/simaxis.h"
 
+#include "motion/motorderived.h"
+
 #include <cmath>
 
 namespace stepcom {
@@ -12,8 +14,8 @@ void Interpolator::start(Kind kind, const InterpolationPath &path, double speedR
     m_kind = kind;
     m_path = path;
     m_speedRpm = speedRpm;
-    m_startX = std::round(path.start().x * x.settings().stepsPerUnit());
-    m_startY = std::round(path.start().y * y.settings().stepsPerUnit());
+    m_startX = motorderived::wholePulses(path.start().x, x.settings().stepsPerUnit());
+    m_startY = motorderived::wholePulses(path.start().y, y.settings().stepsPerUnit());
     x.startMove(m_startX);
     y.startMove(m_startY);
     m_phase = Phase::Approach;
@@ -34,9 +36,8 @@ void Interpolator::beginPath(SimAxis &x, SimAxis &y)
     const AxisSettings &s = x.settings();
     // Path rates follow motor 1: its pulse rates expressed in distance units per millisecond.
     const double unitsPerStep = 1.0 / s.stepsPerUnit();
-    m_mover.setRates(s.startHz / 1000.0 * unitsPerStep,
-                     s.hzForRpm(m_speedRpm) / 1000.0 * unitsPerStep,
-                     s.accelHzPerMs / 1000.0 * unitsPerStep);
+    m_mover.setRates(
+        RampRates::fromHz(s.startHz, s.hzForRpm(m_speedRpm), s.accelHzPerMs).scaled(unitsPerStep));
     m_mover.stop();
     m_mover.setPosition(0);
     x.startPath();
@@ -73,8 +74,8 @@ void Interpolator::tick(SimAxis &x, SimAxis &y)
     const double sy = y.settings().stepsPerUnit();
     if (!m_mover.isMoving()) {
         // The end point, in whole steps.
-        x.setPathSteps(std::round(m_path.end().x * sx));
-        y.setPathSteps(std::round(m_path.end().y * sy));
+        x.setPathSteps(motorderived::wholePulses(m_path.end().x, sx));
+        y.setPathSteps(motorderived::wholePulses(m_path.end().y, sy));
         m_phase = Phase::Idle;
         x.stop();
         y.stop();
@@ -82,8 +83,8 @@ void Interpolator::tick(SimAxis &x, SimAxis &y)
     }
     const InterpolationPath::Point p = m_path.pointAt(m_mover.position());
     // The controller sends whole pulses: the counters stay integers along the way.
-    x.setPathSteps(std::round(p.x * sx));
-    y.setPathSteps(std::round(p.y * sy));
+    x.setPathSteps(motorderived::wholePulses(p.x, sx));
+    y.setPathSteps(motorderived::wholePulses(p.y, sy));
 }
 
 } // namespace stepcom

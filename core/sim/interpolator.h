@@ -1,7 +1,7 @@
 #pragma once
 
-#include "sim/interpolationpath.h"
-#include "sim/rampmover.h"
+#include "motion/interpolationpath.h"
+#include "motion/rampmover.h"
 
 namespace stepcom {
 

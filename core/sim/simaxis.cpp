@@ -13,9 +13,9 @@ void SimAxis::configure(const AxisSettings &settings)
 
 void SimAxis::applyRates()
 {
-    // The mover works in steps and milliseconds: Hz / 1000 = steps per ms.
-    const double top = m_settings.hzForRpm(m_settings.rpm) / 1000.0;
-    m_mover.setRates(m_settings.startHz / 1000.0, top, m_settings.accelHzPerMs / 1000.0);
+    // The mover works in steps and milliseconds.
+    m_mover.setRates(RampRates::fromHz(m_settings.startHz, m_settings.hzForRpm(m_settings.rpm),
+                                       m_settings.accelHzPerMs));
 }
 
 void SimAxis::setTravel(double travel, double overtravel)
@@ -98,7 +98,7 @@ qint64 SimAxis::steps() const
 
 qint64 SimAxis::positionRaw() const
 {
-    return qint64(std::llround(m_mover.position() / m_settings.stepsPerUnit() * 100.0));
+    return motorderived::positionCounts(m_mover.position(), m_settings.stepsPerUnit());
 }
 
 void SimAxis::zero()

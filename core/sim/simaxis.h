@@ -1,7 +1,7 @@
 #pragma once
 
+#include "motion/rampmover.h"
 #include "sim/axissettings.h"
-#include "sim/rampmover.h"
 
 #include <QtGlobal>
 

@@ -22,7 +22,8 @@ public:
     void moveBy(int direction) override
     {
         SimAxis &a = m_m.ax(1);
-        const double steps = std::round(a.settings().distance * a.settings().stepsPerUnit());
+        const double steps =
+            motorderived::wholePulses(a.settings().distance, a.settings().stepsPerUnit());
         a.startMove(a.exactSteps() + direction * steps, SimAxis::Owner::Mode);
     }
     void stop() override { m_m.stop(1); }
@@ -258,7 +259,8 @@ void SimMachine::singleMove(int motor)
     const int dir = a.settings().direction ? -1 : 1;
     if (limitActive(motor - 1, dir))
         return;
-    const double steps = std::round(a.settings().distance * a.settings().stepsPerUnit());
+    const double steps =
+        motorderived::wholePulses(a.settings().distance, a.settings().stepsPerUnit());
     a.startMove(a.exactSteps() + dir * steps);
     publish();
 }
@@ -350,55 +352,39 @@ void SimMachine::setAllOutputs(bool on)
     publish();
 }
 
-double SimMachine::regUnits(const QString &key) const
+bool SimMachine::canStartPath(bool enabled) const
 {
-    const Parameter *p = m_regs.map().find(key);
-    return p ? double(m_regs.raw(p)) / p->scale : 0.0;
+    return m_axes.size() >= 2 && !m_axes[0].isRunning() && !m_axes[1].isRunning() && enabled;
 }
 
-bool SimMachine::startPathFrom(const QString &prefix, bool arc)
+interpolation::RawValue SimMachine::rawValue() const
 {
-    if (m_axes.size() < 2 || m_axes[0].isRunning() || m_axes[1].isRunning() ||
-        m_regs.raw(prefix + QStringLiteral("enabled"), 0) != 1)
-        return false;
-    auto point = [&](const char *name) {
-        return InterpolationPath::Point{
-            regUnits(prefix + QLatin1String(name) + QStringLiteral("_x")),
-            regUnits(prefix + QLatin1String(name) + QStringLiteral("_y"))};
-    };
-    const double speed = std::max(0.01, regUnits(prefix + QStringLiteral("speed")));
-    if (!arc) {
-        m_interpolator.start(Interpolator::Kind::Line,
-                             InterpolationPath::line(point("start"), point("end")), speed,
-                             m_axes[0], m_axes[1]);
-        publish();
-        return true;
-    }
-    const bool ccw = m_regs.raw(prefix + QStringLiteral("direction"), 0) == 1;
-    std::optional<InterpolationPath::Point> centre = point("center");
-    // Mode 1: the centre of the circle through start, middle and end; the direction register
-    // still chooses which way round, as in mode 0.
-    if (m_regs.raw(prefix + QStringLiteral("mode"), 0) == 1)
-        centre = InterpolationPath::circleCentre(point("start"), point("middle"), point("end"));
-    if (!centre)
-        return false;
-    const auto path =
-        InterpolationPath::arcAroundCentre(point("start"), point("end"), *centre, ccw);
-    if (!path)
-        return false;
-    m_interpolator.start(Interpolator::Kind::Arc, *path, speed, m_axes[0], m_axes[1]);
-    publish();
-    return true;
+    return [this](const QString &key) -> std::optional<qint64> { return m_regs.raw(key, 0); };
 }
 
 bool SimMachine::startArc()
 {
-    return startPathFrom(QStringLiteral("arc."), true);
+    const interpolation::ArcSetup arc = interpolation::arcSetup(m_regs.map(), rawValue());
+    if (!canStartPath(arc.enabled))
+        return false;
+    const interpolation::ArcPath path = interpolation::arcPath(arc);
+    if (!path.path)
+        return false;
+    m_interpolator.start(Interpolator::Kind::Arc, *path.path, std::max(0.01, arc.speedRpm),
+                         m_axes[0], m_axes[1]);
+    publish();
+    return true;
 }
 
 bool SimMachine::startLine()
 {
-    return startPathFrom(QStringLiteral("line."), false);
+    const interpolation::LineSetup line = interpolation::lineSetup(m_regs.map(), rawValue());
+    if (!canStartPath(line.enabled))
+        return false;
+    m_interpolator.start(Interpolator::Kind::Line, interpolation::linePath(line),
+                         std::max(0.01, line.speedRpm), m_axes[0], m_axes[1]);
+    publish();
+    return true;
 }
 
 void SimMachine::stopArc()

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "motion/pathsetup.h"
 #include "sim/interpolator.h"
 #include "sim/simaxis.h"
 #include "sim/specialmodes.h"
@@ -97,8 +98,9 @@ private:
     void updateInputs();
     void checkHomeAndLimits();
     void advanceHomingSequence();
-    bool startPathFrom(const QString &prefix, bool arc);
-    double regUnits(const QString &key) const;
+    // Interpolation needs motors 1 and 2, both idle, and the enable register on.
+    bool canStartPath(bool enabled) const;
+    interpolation::RawValue rawValue() const;
     SimAxis &ax(int motor) { return m_axes[motor - 1]; }
     bool validMotor(int motor) const { return motor >= 1 && motor <= m_axes.size(); }
 

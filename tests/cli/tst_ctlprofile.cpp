@@ -2,6 +2,7 @@
 #include "profile/profilefile.h"
 #include "programrun.h"
 #include "scripteddevice.h"
+#include "testmaps.h"
 #include "testpaths.h"
 
 #include <QFile>
@@ -64,10 +65,39 @@ class TestCtlProfile : public QObject
     {
         return sourcePath(QStringLiteral("tests/profile/data/machine-a.json"));
     }
+    // Machine A's values as StepCom with another map saves them, with `extra` (raw) on top.
+    QString variant(const char *name, const QString &map, const QHash<QString, qint64> &extra)
+    {
+        QStringList errors;
+        const auto other =
+            map == QLatin1String("stepper3") ? threeAxisMap(&errors) : liteVariantMap(&errors);
+        if (!other)
+            qFatal("%s", qPrintable(errors.join(QLatin1Char('\n'))));
+        QHash<QString, qint64> values;
+        const Profile a = *ProfileFile::load(machineA(), RegisterMap::builtin()).profile;
+        for (auto it = a.values.cbegin(); it != a.values.cend(); ++it)
+            values.insert(it.key(), it.value());
+        for (auto it = extra.cbegin(); it != extra.cend(); ++it)
+            values.insert(it.key(), it.value());
+        QFile f(file(name));
+        if (!f.open(QIODevice::WriteOnly))
+            qFatal("cannot write %s", name);
+        f.write(profileSavedWith(*other, values, QStringLiteral("Machine B")));
+        return f.fileName();
+    }
+    QString threeAxes()
+    {
+        return variant(
+            "three.json", QStringLiteral("stepper3"),
+            {{QStringLiteral("motor1.speed"), 4500}, {QStringLiteral("motor3.speed"), 900}});
+    }
+    QString liteFirmware() { return variant("lite.json", QStringLiteral("stepper2-lite"), {}); }
 
 private Q_SLOTS:
     void init()
     {
+        // apply saves a backup first: into the test's folder, never the user's data.
+        qputenv("XDG_DATA_HOME", QFile::encodeName(dir.filePath(QStringLiteral("data"))));
         device = std::make_unique<ScriptedDevice>();
         QString error;
         QVERIFY2(device->open(&error), qPrintable(error));
@@ -119,8 +149,9 @@ private Q_SLOTS:
         const QString corpus = sourcePath(QStringLiteral("tests/profile/corpus/"));
         QTest::newRow("diff unknown key") << "diff" << corpus + "unknown-key.json"
                                           << "unknown parameter \"motor3.speed\"";
-        QTest::newRow("apply other map") << "apply" << corpus + "other-map.json"
-                                         << "register map \"stepper5\"";
+        // A same-map file with a key this map lacks is broken (another map's profile is not).
+        QTest::newRow("apply unknown key") << "apply" << corpus + "unknown-key.json"
+                                           << "unknown parameter \"motor3.speed\"";
         QTest::newRow("apply truncated") << "apply" << corpus + "truncated.json"
                                          << "not valid JSON at line";
         QTest::newRow("apply empty") << "apply" << corpus + "empty.json"
@@ -281,12 +312,189 @@ private Q_SLOTS:
         QVERIFY(bad.err.contains(QStringLiteral(".pdf or .html")));
     }
 
+    void diffTwoFilesNeedsNoController()
+    {
+        Profile b = *ProfileFile::load(machineA(), RegisterMap::builtin()).profile;
+        b.values[QStringLiteral("motor1.speed")] = 450;
+        b.values[QStringLiteral("arc.direction")] = 0;
+        QCOMPARE(ProfileFile::save(file("b.json"), b, RegisterMap::builtin()), QString());
+        const Run r = ctl({QStringLiteral("diff"), machineA(), file("b.json")}, {}, false);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.out.contains(QStringLiteral("differ (A -> B):\n"
+                                               "  motor1.speed: 300 rpm -> 450 rpm\n"
+                                               "  arc.direction: 1 (Counter-clockwise) -> 0 "
+                                               "(Clockwise)\n")),
+                 qPrintable(r.out));
+        QVERIFY(r.out.contains(QStringLiteral("A = machine-a.json: \"Machine A\", register map "
+                                              "stepper2/1")));
+        QVERIFY(r.out.contains(QStringLiteral("2 differ, 0 only in A, 0 only in B, 0 outside "
+                                              "this map")));
+
+        const Run same = ctl({QStringLiteral("diff"), machineA(), machineA()}, {}, false);
+        QCOMPARE(same.exitCode, 0);
+        QVERIFY(same.out.contains(QStringLiteral("the two profiles hold the same values")));
+
+        const QString corpus = sourcePath(QStringLiteral("tests/profile/corpus/"));
+        const Run bad = ctl(
+            {QStringLiteral("diff"), corpus + "truncated.json", corpus + "empty.json"}, {}, false);
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains(QStringLiteral("truncated.json: not valid JSON")) &&
+                     bad.err.contains(QStringLiteral("empty.json: the file is empty")) &&
+                     bad.err.contains(QStringLiteral("nothing was compared")),
+                 qPrintable(bad.err));
+        QCOMPARE(
+            ctl({QStringLiteral("diff"), machineA(), machineA(), machineA()}, {}, false).exitCode,
+            2);
+        QTest::qWait(50);
+        QCOMPARE(device->requests().size(), 0); // no controller was asked
+    }
+
+    void diffTwoFilesAcrossVariants()
+    {
+        const Run r = ctl({QStringLiteral("diff"), threeAxes(), liteFirmware()}, {}, false);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.out.contains(QStringLiteral("only in A (three.json):\n"
+                                               "  motor1.home_input = 2 (IN2)\n")),
+                 qPrintable(r.out));
+        QVERIFY(r.out.contains(QStringLiteral("  line.end_x = 20.00 mm\n")));
+        QVERIFY(r.out.contains(QStringLiteral("register map stepper2-lite/1")));
+        QVERIFY(r.out.contains(
+            QStringLiteral("  motor1.speed: 4500 -> 300  (motor1.speed: 4500 is out of range "
+                           "(1 .. 3000 rpm))\n")));
+        QVERIFY(r.out.contains(QStringLiteral(
+            "  motor3.speed: 900 -> (none)  (not in register map \"stepper2/1\")\n")));
+        QVERIFY2(r.out.contains(QStringLiteral("0 differ, 8 only in A, 0 only in B, 2 outside "
+                                               "this map")),
+                 qPrintable(r.out));
+        QCOMPARE(ctl({QStringLiteral("diff"), threeAxes(), threeAxes()}, {}, false).exitCode, 0);
+    }
+
+    void diffWithAVariantListsWhatIsLeftOut()
+    {
+        device->registers[15] = 100; // motor2.speed
+        const Run r = ctl({QStringLiteral("diff"), threeAxes()});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.out.contains(QStringLiteral("motor2.speed: 100 rpm -> 300 rpm\n"
+                                               "the profile was made with register map "
+                                               "\"stepper3/1\"; this map is \"stepper2/1\"")),
+                 qPrintable(r.out));
+        QVERIFY(r.out.contains(QStringLiteral("left out of the comparison:\n")));
+        QVERIFY(r.out.contains(QStringLiteral("  unknown to this map: motor3.speed = 900 (not in "
+                                              "register map \"stepper2/1\")\n")));
+        QVERIFY(r.out.contains(QStringLiteral("  cannot be applied: motor1.speed: 4500 is out of "
+                                              "range (1 .. 3000 rpm)\n")));
+        QVERIFY(r.out.contains(QStringLiteral("1 value differs")));
+
+        device->registers[15] = 300;
+        const Run lite = ctl({QStringLiteral("diff"), liteFirmware()});
+        QCOMPARE(lite.exitCode, 1); // a comparison that left values out is not "the same"
+        QVERIFY2(
+            lite.out.contains(QStringLiteral("  not in the profile: line.speed (Line speed)\n")),
+            qPrintable(lite.out));
+        QVERIFY(lite.out.contains(
+            QStringLiteral("the controller holds every value both maps have; 8 left out")));
+        QCOMPARE(writeFrames(device->requests()).size(), 0);
+    }
+
+    void applyAVariantSaysWhatIsNotApplied_data()
+    {
+        QTest::addColumn<QStringList>("options");
+        QTest::addColumn<QByteArray>("answer");
+        QTest::addColumn<int>("exitCode");
+        QTest::newRow("--yes") << QStringList{QStringLiteral("--yes")} << QByteArray() << 0;
+        QTest::newRow("asked, yes") << QStringList() << QByteArray("y\n") << 0;
+        QTest::newRow("asked, no") << QStringList() << QByteArray("n\n") << 2;
+    }
+    void applyAVariantSaysWhatIsNotApplied()
+    {
+        QFETCH(QStringList, options);
+        QFETCH(QByteArray, answer);
+        QFETCH(int, exitCode);
+        device->registers[5] = 450;  // motor1.speed: in the lite profile
+        device->registers[210] = 60; // line.speed: the lite firmware has none
+        device->registers[82] = 0;   // motor1.home_input: neither
+        const Run r = ctl(QStringList{QStringLiteral("apply"), liteFirmware()} + options, answer);
+        QCOMPARE(r.exitCode, exitCode);
+        QVERIFY2(r.out.contains(QStringLiteral("will write motor1.speed: 450 rpm -> 300 rpm\n"
+                                               "the profile was made with register map "
+                                               "\"stepper2-lite/1\"")),
+                 qPrintable(r.out));
+        QVERIFY(r.out.contains(QStringLiteral("not applied:\n")));
+        QVERIFY(r.out.contains(QStringLiteral("  not in the profile: motor1.home_input (Motor 1 "
+                                              "home input)\n")));
+        QVERIFY(r.out.contains(QStringLiteral("  not in the profile: line.speed (Line speed)\n")));
+        // The list comes before the question, never after it.
+        if (options.isEmpty())
+            QVERIFY(r.out.indexOf(QStringLiteral("not applied:")) <
+                    r.out.indexOf(QStringLiteral("Write 1 value to the controller? [y/N]")));
+        const QList<QByteArray> frames = writeFrames(device->requests());
+        QCOMPARE(frames, exitCode == 0 ? QList<QByteArray>{withCrc(fromHex("01 06 00 05 01 2C"))}
+                                       : QList<QByteArray>{});
+        QCOMPARE(device->registers[210], quint16(60));
+        QCOMPARE(device->registers[82], quint16(0));
+    }
+
+    void applyNeedsASharedSetting()
+    {
+        QFile f(file("alien.json"));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format": "stepcom-profile", "schema": 1,
+                    "map": {"id": "spindle1", "version": 3}, "metadata": {},
+                    "values": {"spindle.rpm": 12000}})");
+        f.close();
+        const Run r = ctl({QStringLiteral("apply"), f.fileName(), QStringLiteral("--yes")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.out.contains(QStringLiteral("unknown to this map: spindle.rpm = 12000")),
+                 qPrintable(r.out));
+        QVERIFY(r.err.contains(QStringLiteral("holds no setting of this map")));
+        QTest::qWait(50);
+        QCOMPARE(device->requests().size(), 0);
+    }
+
+    void reportFromAFileNeedsNoController()
+    {
+        const Run html =
+            ctl({QStringLiteral("report"), QStringLiteral("--from"), machineA(), file("from.html")},
+                {}, false);
+        QVERIFY2(html.exitCode == 0, qPrintable(html.err));
+        QVERIFY(html.out.contains(QStringLiteral("made from the profile file")));
+        QFile h(file("from.html"));
+        QVERIFY(h.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(h.readAll());
+        QVERIFY(text.contains(QStringLiteral("Commissioning report (from a profile file)")));
+        QVERIFY(text.contains(QStringLiteral("Made from the profile file machine-a.json")));
+        QVERIFY(text.contains(QStringLiteral("XY table, lead screws 5 mm"))); // the file's notes
+
+        const Run zh = ctl({QStringLiteral("report"), QStringLiteral("--from"), threeAxes(),
+                            file("from-zh.pdf"), QStringLiteral("--lang"), QStringLiteral("zh_CN")},
+                           {}, false);
+        QVERIFY2(zh.exitCode == 0, qPrintable(zh.err));
+        QVERIFY2(zh.out.contains(QStringLiteral("此寄存器表中没有：motor3.speed = 900")),
+                 qPrintable(zh.out));
+        QFile z(file("from-zh.pdf"));
+        QVERIFY(z.open(QIODevice::ReadOnly));
+        QVERIFY(z.read(5) == "%PDF-");
+
+        const QString corpus = sourcePath(QStringLiteral("tests/profile/corpus/"));
+        const Run bad = ctl({QStringLiteral("report"), QStringLiteral("--from"),
+                             corpus + "missing-key.json", file("bad.pdf")},
+                            {}, false);
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains(QStringLiteral("missing \"motor2.pitch\"")) &&
+                     bad.err.contains(QStringLiteral("no report")),
+                 qPrintable(bad.err));
+        QVERIFY(!QFile::exists(file("bad.pdf")));
+        QTest::qWait(50);
+        QCOMPARE(device->requests().size(), 0);
+    }
+
     void helpListsTheProfileCommands()
     {
         const Run r = ctl({QStringLiteral("--help")}, {}, false);
         QCOMPARE(r.exitCode, 0);
-        for (const char *s : {"dump FILE", "diff FILE", "apply FILE", "report FILE.pdf|.html",
-                              "--include-link", "--notes"})
+        for (const char *s :
+             {"dump FILE", "diff FILE", "diff A.json B.json", "apply FILE", "report FILE.pdf|.html",
+              "--include-link", "--notes", "--from PROFILE"})
             QVERIFY2(r.out.contains(QLatin1String(s)), s);
     }
 };

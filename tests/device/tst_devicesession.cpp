@@ -1,6 +1,8 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "device/devicesession.h"
+#include "device/jogcontroller.h"
+#include "device/sessioninternals.h"
 #include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
@@ -17,7 +19,7 @@ class TestDeviceSession : public QObject
     std::unique_ptr<DeviceSession> session;
 
     void connectSim() { test::connectToSimulator(*session); }
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
 
 private Q_SLOTS:
     void init() { session = std::make_unique<DeviceSession>(); }
@@ -26,10 +28,10 @@ private Q_SLOTS:
     void connectingReadsButNeverWrites()
     {
         connectSim();
-        QCOMPARE(*session->store()->deviceValue(QStringLiteral("motor1.step_angle")), 180);
-        QCOMPARE(session->store()->state(QStringLiteral("motor2.pitch")),
+        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.step_angle")), 180);
+        QCOMPARE(session->parameters()->state(QStringLiteral("motor2.pitch")),
                  ParameterStore::State::InSync);
-        for (const TrafficEntry &e : session->link()->traffic()->entries()) {
+        for (const TrafficEntry &e : SessionInternals::link(*session)->traffic()->entries()) {
             if (e.direction == TrafficEntry::Direction::Sent)
                 QCOMPARE(int(quint8(e.bytes.at(1))), 0x03); // reads only
         }
@@ -38,20 +40,20 @@ private Q_SLOTS:
     void writeChangesReachesTheController()
     {
         connectSim();
-        QVERIFY(session->store()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
+        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // held, not written
         QSignalSpy written(session.get(), &DeviceSession::writeFinished);
         session->writeChanges();
         QTRY_COMPARE(written.size(), 1);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
-        QCOMPARE(session->store()->state(QStringLiteral("motor1.speed")),
+        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
                  ParameterStore::State::InSync);
-        QVERIFY(session->store()->unsavedToFlash());
+        QVERIFY(session->parameters()->unsavedToFlash());
         QSignalSpy done(session.get(), &DeviceSession::commandFinished);
         session->saveToFlash();
         QTRY_COMPARE(done.size(), 1);
         QVERIFY(done.at(0).at(1).toBool());
-        QVERIFY(!session->store()->unsavedToFlash());
+        QVERIFY(!session->parameters()->unsavedToFlash());
     }
 
     void writeWhoseAnswerIsLostIsNeverTakenForTheOldValue()
@@ -92,19 +94,19 @@ private Q_SLOTS:
         session->connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         const QString key = QStringLiteral("motor1.speed");
-        QCOMPARE(*session->store()->deviceValue(key), 300);
+        QCOMPARE(*session->parameters()->deviceValue(key), 300);
 
         QSignalSpy written(session.get(), &DeviceSession::writeFinished);
-        QVERIFY(session->store()->edit(key, 450).isEmpty());
+        QVERIFY(session->parameters()->edit(key, 450).isEmpty());
         session->writeChanges();
         QTRY_COMPARE_WITH_TIMEOUT(written.size(), 1, 10000);
         QCOMPARE(device.registers[speed], quint16(450)); // it did arrive
-        QCOMPARE(session->store()->state(key), ParameterStore::State::WriteFailed);
-        QVERIFY(session->store()->deviceValue(key) != std::optional<qint64>(300));
+        QCOMPARE(session->parameters()->state(key), ParameterStore::State::WriteFailed);
+        QVERIFY(session->parameters()->deviceValue(key) != std::optional<qint64>(300));
         // Read back: the controller holds what was typed, so nothing is pending any more.
-        QTRY_COMPARE_WITH_TIMEOUT(session->store()->deviceValue(key), std::optional<qint64>(450),
-                                  5000);
-        QCOMPARE(session->store()->state(key), ParameterStore::State::InSync);
+        QTRY_COMPARE_WITH_TIMEOUT(session->parameters()->deviceValue(key),
+                                  std::optional<qint64>(450), 5000);
+        QCOMPARE(session->parameters()->state(key), ParameterStore::State::InSync);
     }
 
     void statusIsPolled()
@@ -112,10 +114,10 @@ private Q_SLOTS:
         connectSim();
         sim()->setInput(3, SimDevice::InputForce::On);
         QTRY_COMPARE_WITH_TIMEOUT(
-            session->store()->deviceValue(QStringLiteral("io.in3")).value_or(-1), 1, 5000);
+            session->parameters()->deviceValue(QStringLiteral("io.in3")).value_or(-1), 1, 5000);
         sim()->setInput(3, SimDevice::InputForce::Off);
         QTRY_COMPARE_WITH_TIMEOUT(
-            session->store()->deviceValue(QStringLiteral("io.in3")).value_or(-1), 0, 5000);
+            session->parameters()->deviceValue(QStringLiteral("io.in3")).value_or(-1), 0, 5000);
     }
 
     void emergencyStopGoesAheadAndStops()
@@ -126,7 +128,7 @@ private Q_SLOTS:
         QTRY_COMPARE(done.size(), 1);
         QTRY_VERIFY(sim()->running(1));
         QList<QString> order;
-        connect(session->link(), &ModbusLink::dispatched, this,
+        connect(SessionInternals::link(*session), &ModbusLink::dispatched, this,
                 [&order](quint64, const Request &r) { order << r.what; });
         session->readAll();
         session->readAll();
@@ -167,18 +169,60 @@ private Q_SLOTS:
     void lostControllerOffersTheOldSettings()
     {
         connectSim();
-        session->simulator()->device()->setValue(QStringLiteral("device.id"), 1);
+        test::simHost(*session)->device()->setValue(QStringLiteral("device.id"), 1);
         QSignalSpy failed(session.get(), &DeviceSession::linkChangeFailed);
         // the controller takes the new id but we stop it before it can answer there
-        connect(session->link(), &ModbusLink::finished, this,
+        connect(SessionInternals::link(*session), &ModbusLink::finished, this,
                 [this](quint64, const Request &r, const Result &res) {
                     if (r.what == QLatin1String("device.id") && res.ok)
-                        session->simulator()->stop();
+                        test::simHost(*session)->stop();
                 });
         session->changeLink(9, 9600);
         QTRY_COMPARE_WITH_TIMEOUT(failed.size(), 1, 10000);
         const LinkSettings previous = failed.at(0).at(0).value<LinkSettings>();
         QCOMPARE(previous.deviceId, 1);
+    }
+
+    void withoutASimulatorConnectSimulatorSaysSo()
+    {
+        // The real device path has no simulator in it: a program must hand the session one.
+        QSignalSpy connected(session.get(), &DeviceSession::connected);
+        QSignalSpy said(session.get(), &DeviceSession::message);
+        session->connectSimulator();
+        QCOMPARE(connected.size(), 1);
+        QVERIFY(!connected.at(0).at(0).toBool());
+        QVERIFY(said.size() >= 1);
+        QVERIFY2(said.last().at(1).toString().contains(QLatin1String("no built-in simulator")),
+                 qPrintable(said.last().at(1).toString()));
+        QVERIFY(!session->isConnected());
+    }
+
+    void stopRulesStopEveryJogWithTheirReason_data()
+    {
+        QTest::addColumn<DeviceSession::JogStop>("why");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("page left") << DeviceSession::JogStop::PageLeft << "the page was left";
+        QTest::newRow("focus lost") << DeviceSession::JogStop::FocusLost << "the window lost focus";
+        QTest::newRow("closing") << DeviceSession::JogStop::WindowClosing << "the window closes";
+    }
+    void stopRulesStopEveryJogWithTheirReason()
+    {
+        QFETCH(DeviceSession::JogStop, why);
+        QFETCH(QString, reason);
+        connectSim();
+        JogController *jog = session->jog();
+        QStringList texts;
+        connect(jog, &JogController::message, this,
+                [&texts](DeviceSession::Severity, const QString &t) { texts << t; });
+        QVERIFY(jog->press(1, JogController::Direction::Forward));
+        QVERIFY(jog->press(2, JogController::Direction::Reverse));
+        QTRY_VERIFY(sim()->running(1) && sim()->running(2));
+        QCOMPARE(session->stopJogging(why), 2);
+        QTRY_VERIFY(!sim()->running(1) && !sim()->running(2));
+        QTRY_COMPARE(jog->state(1), JogController::State::Idle);
+        QTRY_COMPARE(jog->state(2), JogController::State::Idle);
+        QVERIFY2(texts.join(QLatin1Char('\n')).contains(reason), qPrintable(texts.join('\n')));
+        QCOMPARE(session->stopJogging(why), 0); // nothing left to stop
     }
 };
 

@@ -1,5 +1,6 @@
-#include "device/interpolationgeometry.h"
 #include "map/registermap.h"
+#include "motion/interpolationgeometry.h"
+#include "motion/interpolationtiming.h"
 #include "sim/simdevice.h"
 
 #include <QTest>
@@ -19,9 +20,9 @@ bool near(double a, double b, double tol = 1e-6)
     return std::abs(a - b) <= tol;
 }
 
-ArcInput centreArc(Point s, Point e, Point c, bool ccw)
+ArcSetup centreArc(Point s, Point e, Point c, bool ccw)
 {
-    ArcInput in;
+    ArcSetup in;
     in.mode = ArcMode::Centre;
     in.start = s;
     in.end = e;
@@ -30,9 +31,9 @@ ArcInput centreArc(Point s, Point e, Point c, bool ccw)
     return in;
 }
 
-ArcInput threePointArc(Point s, Point m, Point e, bool ccw)
+ArcSetup threePointArc(Point s, Point m, Point e, bool ccw)
 {
-    ArcInput in;
+    ArcSetup in;
     in.mode = ArcMode::ThreePoints;
     in.start = s;
     in.end = e;
@@ -183,7 +184,7 @@ private Q_SLOTS:
         QFETCH(QPointF, end);
         QFETCH(QPointF, third);
         QFETCH(QString, says);
-        ArcInput in;
+        ArcSetup in;
         in.mode = ArcMode(mode);
         in.start = {start.x(), start.y()};
         in.end = {end.x(), end.y()};

@@ -1,6 +1,7 @@
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
+#include "device/sessioninternals.h"
 #include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
@@ -23,7 +24,7 @@ class TestJogController : public QObject
     std::unique_ptr<DeviceSession> session;
     std::unique_ptr<JogController> jog;
 
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
     void connectSim() { test::connectToSimulator(*session); }
     static QStringList texts(const QSignalSpy &spy, int column)
     {
@@ -57,7 +58,7 @@ private Q_SLOTS:
     void pressRunsAndReleaseStops()
     {
         connectSim();
-        QSignalSpy dispatched(session->link(), &ModbusLink::dispatched);
+        QSignalSpy dispatched(SessionInternals::link(*session), &ModbusLink::dispatched);
         QSignalSpy warnings(jog.get(), &JogController::warning);
         QVERIFY(jog->press(1, Direction::Forward));
         QCOMPARE(jog->state(1), State::Jogging);
@@ -93,7 +94,7 @@ private Q_SLOTS:
     void releaseBeforeTheStartIsAnsweredStopsAfterIt()
     {
         connectSim();
-        QSignalSpy dispatched(session->link(), &ModbusLink::dispatched);
+        QSignalSpy dispatched(SessionInternals::link(*session), &ModbusLink::dispatched);
         QVERIFY(jog->press(2, Direction::Reverse));
         jog->release(2); // the start is still queued: a stop now would overtake it
         QCOMPARE(jog->state(2), State::Stopping);
@@ -129,8 +130,9 @@ private Q_SLOTS:
         // A motor moving on its own (a single move) is not jogged on top.
         QVERIFY(sim()->setValue(QStringLiteral("motor2.speed"), 30));
         QVERIFY(sim()->command(QStringLiteral("motor2.move")));
-        QTRY_COMPARE(session->store()->deviceValue(QStringLiteral("motor2.running")).value_or(-1),
-                     qint64(1));
+        QTRY_COMPARE(
+            session->parameters()->deviceValue(QStringLiteral("motor2.running")).value_or(-1),
+            qint64(1));
         QVERIFY(!jog->press(2, Direction::Forward));
         QVERIFY(messages.last().at(1).toString().contains(QLatin1String("is moving")));
         QVERIFY(sim()->command(QStringLiteral("motor2.stop")));
@@ -190,8 +192,8 @@ private Q_SLOTS:
         QSignalSpy warnings(jog.get(), &JogController::warning);
         QVERIFY(jog->press(1, Direction::Forward));
         QTRY_VERIFY(sim()->running(1));
-        QSignalSpy reopened(session->simulator(), &SimHost::reopened);
-        session->simulator()->hangUp(400);
+        QSignalSpy reopened(test::simHost(*session), &SimHost::reopened);
+        test::simHost(*session)->hangUp(400);
         QTRY_COMPARE_WITH_TIMEOUT(jog->state(1), State::PossiblyRunning, 5000);
         QVERIFY(!warnings.isEmpty());
         QVERIFY2(texts(warnings, 1)
@@ -203,8 +205,9 @@ private Q_SLOTS:
         QVERIFY(!jog->press(1, Direction::Forward));
 
         QTRY_COMPARE_WITH_TIMEOUT(reopened.size(), 1, 5000);
-        QSignalSpy dispatched(session->link(), &ModbusLink::dispatched);
+        QSignalSpy dispatched(SessionInternals::link(*session), &ModbusLink::dispatched);
         QSignalSpy connected(session.get(), &DeviceSession::connected);
+        test::useBuiltinSimulator(*session);
         session->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(connected.size(), 1, 5000);
         QVERIFY(connected.at(0).at(0).toBool());
@@ -288,7 +291,7 @@ private Q_SLOTS:
             warnings.at(0).at(1).toString().contains(QLatin1String("still runs after its stop")),
             qPrintable(warnings.at(0).at(1).toString()));
         QCOMPARE(jog->state(1), State::StillRunning);
-        QCOMPARE(session->store()->deviceValue(QStringLiteral("motor1.running")).value_or(-1),
+        QCOMPARE(session->parameters()->deviceValue(QStringLiteral("motor1.running")).value_or(-1),
                  qint64(1));
         QVERIFY(!jog->press(1, Direction::Reverse)); // not on top of a runaway
 

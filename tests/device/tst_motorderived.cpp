@@ -1,7 +1,6 @@
-#include "device/motorderived.h"
+#include "motion/motorderived.h"
 #include "sim/simdevice.h"
 
-#include <QElapsedTimer>
 #include <QTest>
 
 #include <cmath>
@@ -210,14 +209,12 @@ private Q_SLOTS:
 
     void hugeMovesStayQuick()
     {
-        // A ramp of minutes and a move of hours: estimated, not simulated tick by tick.
-        QElapsedTimer t;
-        t.start();
+        // A ramp of minutes and a move of hours: estimated, not simulated tick by tick (done
+        // tick by tick it would run for hours and hit the test's timeout; no timed assertion).
         const auto slow = md::moveTimeMs(2'000'000'000LL, 1, 1, 1'000'000);
         QVERIFY(slow && std::isfinite(*slow) && *slow > 1e6);
         const auto longCruise = md::moveTimeMs(2'000'000'000LL, 400, 80, 8000);
         QVERIFY(longCruise && std::abs(*longCruise - 2e9 / 8.0) < 200);
-        QVERIFY(t.elapsed() < 500);
         QVERIFY(!md::moveTimeMs(0, 400, 80, 8000));
     }
 };

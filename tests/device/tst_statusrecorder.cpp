@@ -1,9 +1,11 @@
 #include "device/devicesession.h"
 #include "device/parameterstore.h"
-#include "poll/poller.h"
-#include "poll/statusrecorder.h"
+#include "device/poller.h"
+#include "device/sessioninternals.h"
+#include "device/statusrecorder.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -50,18 +52,19 @@ private Q_SLOTS:
     void samplesOncePerCompletedPollCycle()
     {
         DeviceSession session;
-        StatusRecorder recorder(session.map(), session.store());
-        recorder.attach(session.statusPoller());
+        StatusRecorder recorder(session.map(), session.parameters());
+        recorder.attach(SessionInternals::poller(session));
         QSignalSpy read(&session, &DeviceSession::readFinished);
+        test::useBuiltinSimulator(session);
         session.connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        SimDevice *sim = session.simulator()->device();
+        SimDevice *sim = test::simHost(session)->device();
         sim->setMachinePosition(1, 12.5);
         sim->setMachinePosition(2, -3.25);
-        QSignalSpy cycles(session.statusPoller(), &Poller::cycleFinished);
+        QSignalSpy cycles(SessionInternals::poller(session), &Poller::cycleFinished);
         QSignalSpy samples(&recorder, &StatusRecorder::sampleAdded);
         QTRY_VERIFY_WITH_TIMEOUT(cycles.size() >= 5, 5000);
-        session.statusPoller()->stop();
+        SessionInternals::poller(session)->stop();
         int ok = 0;
         for (const auto &c : cycles)
             ok += c.at(0).toBool() ? 1 : 0;
@@ -80,7 +83,7 @@ private Q_SLOTS:
         // Detached: no more samples.
         recorder.attach(nullptr);
         const int before = recorder.size();
-        session.statusPoller()->start();
+        SessionInternals::poller(session)->start();
         QTRY_VERIFY(cycles.size() >= ok + 2);
         QCOMPARE(recorder.size(), before);
     }

@@ -3,6 +3,7 @@
 #include "profile/profilediff.h"
 #include "profile/profilefile.h"
 #include "scripteddevice.h"
+#include "testmaps.h"
 #include "testpaths.h"
 
 #include <QFile>
@@ -233,6 +234,73 @@ private Q_SLOTS:
                      .contains(QStringLiteral("arc.speed: wrote 100 but the controller holds 60")),
                  qPrintable(w.errors.join(QLatin1Char('\n'))));
         QCOMPARE(device->registers[5], quint16(300)); // the honest one went through
+    }
+
+    // A profile of another map: only the settings both maps have, within this map's ranges,
+    // are written; what differs only in what the profile lacks or this map cannot take stays.
+    void variantProfilesWriteOnlyTheSharedSettings_data()
+    {
+        QTest::addColumn<QString>("variant");
+        QTest::addColumn<QStringList>("written");
+        QTest::addColumn<QList<QByteArray>>("frames");
+        // motor1.speed is 4500 in the three-axis profile (out of range here); the lite
+        // firmware's profile has no home inputs and no line.
+        QTest::newRow("three axes")
+            << "stepper3" << QStringList{"motor2.speed", "motor1.home_input", "line.speed"}
+            << QList<QByteArray>{withCrc(fromHex("01 06 00 0F 01 2C")),
+                                 withCrc(fromHex("01 06 00 52 00 02")),
+                                 withCrc(fromHex("01 06 00 D2 00 C8"))};
+        QTest::newRow("lite firmware")
+            << "stepper2-lite" << QStringList{"motor1.speed", "motor2.speed"}
+            << QList<QByteArray>{withCrc(fromHex("01 06 00 05 01 2C")),
+                                 withCrc(fromHex("01 06 00 0F 01 2C"))};
+    }
+    void variantProfilesWriteOnlyTheSharedSettings()
+    {
+        QFETCH(QString, variant);
+        QFETCH(QStringList, written);
+        QFETCH(QList<QByteArray>, frames);
+        QStringList errors;
+        const auto other =
+            variant == QLatin1String("stepper3") ? threeAxisMap(&errors) : liteVariantMap(&errors);
+        QVERIFY2(other, qPrintable(errors.join(QLatin1Char('\n'))));
+        const Profile a = machineA();
+        QHash<QString, qint64> values;
+        for (auto it = a.values.cbegin(); it != a.values.cend(); ++it)
+            values.insert(it.key(), it.value());
+        values.insert(QStringLiteral("motor3.speed"), 900);
+        if (variant == QLatin1String("stepper3"))
+            values[QStringLiteral("motor1.speed")] = 4500;
+        const ProfileParseResult parsed =
+            ProfileFile::parse(profileSavedWith(*other, values, QStringLiteral("B")), map,
+                               ProfileFile::OtherMaps::Accept);
+        QVERIFY2(parsed.ok(), qPrintable(parsed.errors.join(QLatin1Char('\n'))));
+        const Profile &profile = *parsed.profile;
+
+        auto b = open();
+        load(b->device, a);
+        b->device.registers[5] = 450;  // motor1.speed
+        b->device.registers[15] = 100; // motor2.speed
+        b->device.registers[82] = 0;   // motor1.home_input
+        b->device.registers[210] = 60; // line.speed
+        const ReadOutcome read = readProfileParameters(*b->client, map);
+        QVERIFY(read.ok);
+        QStringList keys;
+        for (const ProfileDifference &d :
+             ProfileDiff::differences(ProfileDiff::compare(map, profile, read.values)))
+            keys << d.parameter->key;
+        QCOMPARE(keys, written);
+        const qsizetype before = b->device.requests().size();
+        const auto writes = ProfileDiff::writesFor(map, profile, keys, false, &errors);
+        QVERIFY(errors.isEmpty());
+        const WriteOutcome w = write(*b->client, writes);
+        QVERIFY2(w.ok, qPrintable(w.errors.join(QLatin1Char('\n'))));
+        QCOMPARE(writeFrames(b->device.requests().mid(before)), frames);
+        // What the profile could not give stays as the controller held it.
+        if (!written.contains(QStringLiteral("motor1.speed")))
+            QCOMPARE(b->device.registers[5], quint16(450));
+        if (!written.contains(QStringLiteral("line.speed")))
+            QCOMPARE(b->device.registers[210], quint16(60));
     }
 };
 

@@ -5,6 +5,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QRandomGenerator>
 #include <QTemporaryDir>
 #include <QTest>
@@ -167,6 +168,25 @@ private Q_SLOTS:
         const QString all = r.errors.join(QLatin1Char('\n'));
         QVERIFY2(all.contains(expected), qPrintable(all));
         QVERIFY(r.errors.size() <= ProfileFile::MaxErrors + 1);
+
+        // Accepting profiles of other maps (stepcomctl does) changes nothing for a broken file
+        // or a file of this map; only the two files of another map open, as variants that hold
+        // every setting of this map.
+        f.seek(0);
+        const ProfileParseResult lenient =
+            ProfileFile::parse(f.readAll(), map, ProfileFile::OtherMaps::Accept);
+        const QString name = QFileInfo(file).fileName();
+        if (name == QLatin1String("other-map.json") ||
+            name == QLatin1String("other-map-version.json")) {
+            QVERIFY2(lenient.ok(), qPrintable(lenient.errors.join(QLatin1Char('\n'))));
+            QCOMPARE(lenient.profile->variance.fileMap, name == QLatin1String("other-map.json")
+                                                            ? QStringLiteral("stepper5/1")
+                                                            : QStringLiteral("stepper2/7"));
+            QVERIFY(lenient.profile->variance.isEmpty());
+            QCOMPARE(lenient.profile->values.size(), Profile::profileParameters(map, false).size());
+        } else {
+            QCOMPARE(lenient.errors, r.errors);
+        }
     }
 
     void linkSettingsAreOptionalButChecked()

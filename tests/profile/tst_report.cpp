@@ -1,6 +1,8 @@
+#include "i18n/translators.h"
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
 #include "report/xypicture.h"
+#include "testmaps.h"
 #include "testpaths.h"
 
 #include <QFile>
@@ -161,6 +163,67 @@ private Q_SLOTS:
         const QString e = CommissioningReport(input()).write(nowhere);
         QVERIFY2(e.contains(nowhere), qPrintable(e));
         QVERIFY(!QFile::exists(nowhere));
+    }
+
+    // Made from a profile file, not read from a controller: said in the title, under it and in
+    // the controller section, in both languages; a variant's left-out values are listed.
+    void reportFromAFile_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QStringList>("expected");
+        QTest::newRow("en") << "en"
+                            << QStringList{"Commissioning report (from a profile file)",
+                                           "Made from the profile file machine-b.json, not "
+                                           "read from a controller",
+                                           "none: made from a file, not read from a controller",
+                                           "the profile was made with stepper3/1",
+                                           "unknown to this map: motor3.speed = 900",
+                                           "Machine B",
+                                           "motor2.pitch"};
+        QTest::newRow("zh_CN") << "zh_CN"
+                               << QStringList{"调试报告（来自参数文件）",
+                                              "根据参数文件 machine-b.json 生成，未读取控制器",
+                                              "无：根据文件生成，未读取控制器",
+                                              "参数文件由 stepper3/1 生成",
+                                              "此寄存器表中没有：motor3.speed = 900",
+                                              "Machine B",
+                                              "细分"};
+    }
+    void reportFromAFile()
+    {
+        QFETCH(QString, language);
+        QFETCH(QStringList, expected);
+        Translators translators;
+        QVERIFY(translators.install(language));
+        QStringList errors;
+        const auto threeAxis = threeAxisMap(&errors);
+        QVERIFY2(threeAxis, qPrintable(errors.join(QLatin1Char('\n'))));
+        QHash<QString, qint64> values = input().values;
+        values.insert(QStringLiteral("motor3.speed"), 900);
+        const ProfileParseResult parsed =
+            ProfileFile::parse(profileSavedWith(*threeAxis, values, QStringLiteral("Machine B")),
+                               RegisterMap::builtin(), ProfileFile::OtherMaps::Accept);
+        QVERIFY2(parsed.ok(), qPrintable(parsed.errors.join(QLatin1Char('\n'))));
+        const ReportInput in =
+            ReportInput::fromProfile(RegisterMap::builtin(), *parsed.profile,
+                                     QStringLiteral("/somewhere/machine-b.json"), language);
+        QVERIFY(in.fromFile());
+        QVERIFY(in.link.isEmpty()); // nothing claims a link
+        const QString html = CommissioningReport(in).html(QStringLiteral("x.png"));
+        for (const QString &s : expected)
+            QVERIFY2(html.contains(s.toHtmlEscaped()), qPrintable(s));
+        QVERIFY(!html.contains(QStringLiteral("Baud rate (register)")));
+        QVERIFY(html.contains(QStringLiteral("<td>19200</td>"))); // the file's metadata
+
+        const QString path = dir.filePath(QStringLiteral("from-file-%1.pdf").arg(language));
+        QCOMPARE(CommissioningReport(in).write(path), QString());
+        if (!havePdfToText())
+            QSKIP("pdftotext (poppler-utils) is not installed: the PDF text was not checked");
+        const QString text = pdfText(path).simplified();
+        // The mark that it was made from a file is in the PDF itself, not only in the HTML.
+        QVERIFY2(text.contains(expected.at(0).normalized(QString::NormalizationForm_KC)),
+                 qPrintable(text.left(1500)));
+        QVERIFY2(text.contains(QStringLiteral("machine-b.json")), qPrintable(text.left(1500)));
     }
 };
 

@@ -1,4 +1,4 @@
-#include "sim/interpolationpath.h"
+#include "motion/interpolationpath.h"
 #include "sim/simdevice.h"
 
 #include <QTest>

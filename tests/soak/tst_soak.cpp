@@ -17,7 +17,8 @@
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
-#include "poll/poller.h"
+#include "device/poller.h"
+#include "device/sessioninternals.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 
@@ -98,7 +99,7 @@ class TestSoak : public QObject
     // The store must never claim a value the controller does not hold.
     void checkStoreIsTruthful(const Parameter *p, const char *when)
     {
-        const std::optional<qint64> claimed = session->store()->deviceValue(p->key);
+        const std::optional<qint64> claimed = session->parameters()->deviceValue(p->key);
         const std::optional<qint64> truth = device()->value(p->key);
         QVERIFY(truth);
         if (claimed && *claimed != *truth)
@@ -150,7 +151,7 @@ class TestSoak : public QObject
             if (!duplicate)
                 writes.append({p, randomRaw(p)});
         }
-        ParameterStore *store = session->store();
+        ParameterStore *store = session->parameters();
         store->revertAll();
         for (const ParameterWrite &w : std::as_const(writes))
             QCOMPARE(store->edit(w.parameter->key, w.raw), QString());
@@ -285,7 +286,7 @@ private Q_SLOTS:
         QVERIFY2(sim->start(options, &error), qPrintable(error));
 
         session = std::make_unique<DeviceSession>(device()->map());
-        session->statusPoller()->setIntervalMs(20);
+        SessionInternals::poller(*session)->setIntervalMs(20);
         jog = std::make_unique<JogController>(session.get());
         jog->setSettleMs(60);
         for (int m = 1; m <= 2; ++m) {
@@ -298,12 +299,12 @@ private Q_SLOTS:
         for (const Parameter *p : std::as_const(writable))
             QVERIFY(p && p->writable());
 
-        connect(session->link(), &ModbusLink::dispatched, this,
+        connect(SessionInternals::link(*session), &ModbusLink::dispatched, this,
                 [this](quint64 id, const Request &) {
                     ++dispatched;
                     open.insert(id);
                 });
-        connect(session->link(), &ModbusLink::finished, this,
+        connect(SessionInternals::link(*session), &ModbusLink::finished, this,
                 [this](quint64 id, const Request &, const Result &) {
                     ++finished;
                     open.remove(id);
@@ -349,8 +350,9 @@ private Q_SLOTS:
             reconnect();
         settle();
         QTRY_VERIFY_WITH_TIMEOUT(session->isConnected(), 30000);
-        session->statusPoller()->stop();
-        QTRY_VERIFY_WITH_TIMEOUT(!session->link()->isBusy() && session->link()->queuedCount() == 0,
+        SessionInternals::poller(*session)->stop();
+        QTRY_VERIFY_WITH_TIMEOUT(!SessionInternals::link(*session)->isBusy() &&
+                                     SessionInternals::link(*session)->queuedCount() == 0,
                                  30000);
         QVERIFY2(open.isEmpty(), "a request put on the wire never finished");
         for (int m = 1; m <= 2; ++m) {

@@ -1,14 +1,28 @@
 #include "simsession.h"
 
 #include "device/devicesession.h"
+#include "sim/builtinsimulator.h"
 
 #include <QSignalSpy>
 #include <QTest>
 
 namespace stepcom::test {
 
+void useBuiltinSimulator(DeviceSession &session)
+{
+    if (!session.simulatorStarter())
+        session.setSimulator(std::make_unique<BuiltinSimulator>());
+}
+
+SimHost *simHost(const DeviceSession &session)
+{
+    const auto *sim = dynamic_cast<const BuiltinSimulator *>(session.simulatorStarter());
+    return sim ? sim->host() : nullptr;
+}
+
 void connectToSimulator(DeviceSession &session)
 {
+    useBuiltinSimulator(session);
     QSignalSpy read(&session, &DeviceSession::readFinished);
     session.connectSimulator();
     QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);

@@ -2,9 +2,16 @@
 
 namespace stepcom {
 class DeviceSession;
-}
+class SimHost;
+} // namespace stepcom
 
 namespace stepcom::test {
+
+// Hands the session the built-in simulator (stepcom_sim), as the programs with --sim do; does
+// nothing when it has one.
+void useBuiltinSimulator(DeviceSession &session);
+// The simulator the session started (null before useBuiltinSimulator()).
+SimHost *simHost(const DeviceSession &session);
 
 // Connects the session to its built-in simulator and waits (up to 10 s) for the first
 // read-all, which must succeed; a failure is recorded for the running test function.

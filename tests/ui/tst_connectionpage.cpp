@@ -5,6 +5,7 @@
 #include "pages/connectionpage.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -114,6 +115,7 @@ private Q_SLOTS:
     void simulatorConnectAndDisconnect()
     {
         DeviceSession session;
+        stepcom::test::useBuiltinSimulator(session); // as the stepcom program does
         ConnectionPage page(&session);
         page.show();
         const auto radios = page.findChildren<QRadioButton *>();
@@ -124,8 +126,8 @@ private Q_SLOTS:
         click(&page, "connect");
         QTRY_VERIFY_WITH_TIMEOUT(session.isConnected(), 5000);
         QVERIFY(session.isSimulator());
-        QTRY_COMPARE_WITH_TIMEOUT(session.store()->deviceValue("motor1.step_angle").value_or(-1),
-                                  qint64(180), 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(
+            session.parameters()->deviceValue("motor1.step_angle").value_or(-1), qint64(180), 5000);
         QVERIFY2(page.statusText().contains("Connected to the built-in simulator"),
                  qPrintable(page.statusText()));
         // The simulator's pty is not a setting: the page stays on the simulator choice.
@@ -135,7 +137,7 @@ private Q_SLOTS:
         QVERIFY(!button(&page, "connect")->isEnabled());
         click(&page, "disconnect");
         QTRY_VERIFY(!session.isConnected());
-        QVERIFY(!session.store()->deviceValue("motor1.step_angle").has_value());
+        QVERIFY(!session.parameters()->deviceValue("motor1.step_angle").has_value());
         QVERIFY(page.statusText().contains("Disconnected"));
         QVERIFY(button(&page, "connect")->isEnabled());
     }
@@ -236,7 +238,7 @@ private Q_SLOTS:
         QCOMPARE(session.settings().deviceId, 7);
         QCOMPARE(session.settings().baud, 9600);
         QCOMPARE(page.currentSettings().deviceId, 7);
-        QTRY_VERIFY_WITH_TIMEOUT(session.store()->deviceValue("motor1.step_angle").has_value(),
+        QTRY_VERIFY_WITH_TIMEOUT(session.parameters()->deviceValue("motor1.step_angle").has_value(),
                                  5000);
         session.disconnectFrom();
     }

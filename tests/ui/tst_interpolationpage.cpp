@@ -38,7 +38,7 @@ class TestInterpolationPage : public QObject
     Q_OBJECT
     std::unique_ptr<DeviceSession> session;
 
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
     qint64 simValue(const QString &key) const { return sim()->value(key).value_or(-99999); }
     void connectSim() { test::connectToSimulator(*session); }
     static void enter(PathEditor *e, const QString &key, const QString &text)
@@ -59,7 +59,7 @@ class TestInterpolationPage : public QObject
         for (const ParameterWrite &w : e->writeDialog()->writes())
             QVERIFY(e->keys().contains(w.parameter->key)); // only this editor's values
         e->writeDialog()->accept();
-        QTRY_VERIFY_WITH_TIMEOUT(!session->store()->hasEdits(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!session->parameters()->hasEdits(), 10000);
     }
     // Non-background pixels inside the plot area of the preview.
     static int drawnPixels(InterpolationPreview *preview)
@@ -190,6 +190,53 @@ private Q_SLOTS:
         runToEnd(line, page.preview(), 725, -400);
     }
 
+    // Issue 13: motor 2 sat on its negative limit, only the approach ran, and the arc was
+    // reported "done". Now: warned before Start, and the outcome says where it stopped and why.
+    void anArcAgainstAnActiveLimitIsWarnedAndNotDone()
+    {
+        InterpolationPage page(session.get());
+        page.resize(1400, 900);
+        page.show();
+        PathEditor *arc = page.arcEditor();
+        connectSim();
+        QVERIFY(sim()->setValue(QStringLiteral("motor2.limit_positive"), 3));
+        QVERIFY(sim()->setValue(QStringLiteral("motor2.limit_negative"), 4));
+        QVERIFY(sim()->setValue(QStringLiteral("motor2.home_input"), 4));
+        sim()->setInput(4, SimDevice::InputForce::On);
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->readAll();
+        QTRY_COMPARE(read.size(), 1);
+        // From (10, -5) counter-clockwise round (0, -5) to (0, 5): the approach drives motor 2
+        // from 0 in reverse, into its negative limit.
+        enter(arc, QStringLiteral("arc.enabled"), QStringLiteral("1"));
+        enter(arc, QStringLiteral("arc.mode"), QStringLiteral("0"));
+        enter(arc, QStringLiteral("arc.start_x"), QStringLiteral("10"));
+        enter(arc, QStringLiteral("arc.start_y"), QStringLiteral("-5"));
+        enter(arc, QStringLiteral("arc.end_x"), QStringLiteral("0"));
+        enter(arc, QStringLiteral("arc.end_y"), QStringLiteral("5"));
+        enter(arc, QStringLiteral("arc.center_x"), QStringLiteral("0"));
+        enter(arc, QStringLiteral("arc.center_y"), QStringLiteral("-5"));
+        enter(arc, QStringLiteral("arc.direction"), QStringLiteral("1"));
+        enter(arc, QStringLiteral("arc.speed"), QStringLiteral("300"));
+        QVERIFY2(arc->geometry().valid, qPrintable(arc->geometry().error));
+        writeThroughDialog(arc);
+        QTRY_VERIFY_WITH_TIMEOUT(arc->startButton()->isEnabled(), 10000);
+        QTRY_VERIFY2(arc->startReason()->text().contains(
+                         QLatin1String("Motor 2's negative limit (IN4) is already ON")),
+                     qPrintable(arc->startReason()->text()));
+        QVERIFY(arc->startReason()->text().contains(QLatin1String("approach")));
+        arc->startButton()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(arc->outcomeLabel()->text().startsWith(QLatin1String("Last run")),
+                                 20000);
+        const QString outcome = arc->outcomeLabel()->text();
+        QVERIFY2(outcome.contains(QLatin1String("Arc: stopped at (")) &&
+                     outcome.contains(QLatin1String("not at the end point (0.00, 5.00) mm")) &&
+                     outcome.contains(QLatin1String("motor 2's negative limit (IN4) is ON")),
+                 qPrintable(outcome));
+        QVERIFY(!outcome.contains(QLatin1String("done")));
+        QCOMPARE(sim()->position(2), 0);
+    }
+
     void startNeedsWrittenValidGeometry()
     {
         InterpolationPage page(session.get());
@@ -205,7 +252,7 @@ private Q_SLOTS:
         enter(arc, QStringLiteral("arc.end_y"), QStringLiteral("0"));
         enter(arc, QStringLiteral("arc.center_x"), QStringLiteral("0"));
         enter(arc, QStringLiteral("arc.center_y"), QStringLiteral("0"));
-        if (session->store()->hasEdits())
+        if (session->parameters()->hasEdits())
             writeThroughDialog(arc);
         if (simValue(QStringLiteral("arc.enabled")) != 1) {
             QTRY_VERIFY(arc->startReason()->text().contains(QStringLiteral("is off")));
@@ -232,7 +279,7 @@ private Q_SLOTS:
         QVERIFY(page.preview()->plot()->pathIds().contains(QStringLiteral("invalid")));
         page.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-invalid.png")));
         QTest::keyClick(endY, Qt::Key_Return);
-        QVERIFY(session->store()->entry(QStringLiteral("arc.end_y")).edited);
+        QVERIFY(session->parameters()->entry(QStringLiteral("arc.end_y")).edited);
         QVERIFY(!arc->startButton()->isEnabled());
         QVERIFY(arc->startReason()->text().contains(QStringLiteral("not written")));
         // Three points on one line: invalid, Start off with the reason; Stop stays.
@@ -355,7 +402,7 @@ private Q_SLOTS:
         QTest::qWait(300);
         QCOMPARE(simValue(QStringLiteral("mode.system")), 0);
         QCOMPARE(page.modeBox()->currentData().toInt(), 0);
-        QVERIFY(!session->store()->hasEdits()); // never held as an edit
+        QVERIFY(!session->parameters()->hasEdits()); // never held as an edit
 
         // Yes: written at once and read back.
         page.chooseMode(3);
@@ -363,7 +410,8 @@ private Q_SLOTS:
         QCOMPARE(simValue(QStringLiteral("mode.system")), 0);
         page.confirmation()->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(simValue(QStringLiteral("mode.system")), 3, 10000);
-        QTRY_COMPARE(session->store()->deviceValue(QStringLiteral("mode.system")).value_or(-1), 3);
+        QTRY_COMPARE(session->parameters()->deviceValue(QStringLiteral("mode.system")).value_or(-1),
+                     3);
         QCOMPARE(page.modeBox()->currentData().toInt(), 3);
 
         // Round trips: edited, then written through the write dialog.

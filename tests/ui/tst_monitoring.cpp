@@ -1,11 +1,12 @@
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
+#include "device/poller.h"
+#include "device/sessioninternals.h"
+#include "device/statusrecorder.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "page.h"
 #include "pages/plotpage.h"
-#include "poll/poller.h"
-#include "poll/statusrecorder.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
@@ -48,7 +49,7 @@ class TstMonitoring : public QObject
     Q_OBJECT
     std::unique_ptr<DeviceSession> session;
 
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
     void connectSim() { test::connectToSimulator(*session); }
     QString simPositionText(int motor) const
     {
@@ -186,16 +187,17 @@ private Q_SLOTS:
         QVERIFY(slow >= 0);
         box->setCurrentIndex(slow);
         Q_EMIT box->activated(slow);
-        QCOMPARE(session->statusPoller()->intervalMs(), 500);
+        QCOMPARE(SessionInternals::poller(*session)->intervalMs(), 500);
         // about two cycles a second now
-        const quint64 before = session->link()->stats().requests;
+        const quint64 before = SessionInternals::link(*session)->stats().requests;
         QTest::qWait(1100);
-        QVERIFY2(session->link()->stats().requests - before <= 8,
-                 qPrintable(QString::number(session->link()->stats().requests - before)));
+        QVERIFY2(SessionInternals::link(*session)->stats().requests - before <= 8,
+                 qPrintable(
+                     QString::number(SessionInternals::link(*session)->stats().requests - before)));
         // a new dock (the next start) applies the remembered choice
-        session->statusPoller()->setIntervalMs(100);
+        SessionInternals::poller(*session)->setIntervalMs(100);
         dock = std::make_unique<StatusDock>(session.get());
-        QCOMPARE(session->statusPoller()->intervalMs(), 500);
+        QCOMPARE(SessionInternals::poller(*session)->intervalMs(), 500);
         QCOMPARE(dock->intervalBox()->currentData().toInt(), 500);
         QSettings().remove(QStringLiteral("monitor/pollIntervalMs"));
     }

@@ -1,5 +1,8 @@
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
+#include "device/motionsupervisor.h"
+#include "device/referencetracker.h"
+#include "emergencystop.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "pages/motionpage.h"
@@ -12,6 +15,7 @@
 #include "widgets/led.h"
 #include "widgets/messageview.h"
 #include "widgets/parameterfield.h"
+#include "widgets/statusdock.h"
 
 #include "darkpalette.h"
 
@@ -37,7 +41,7 @@ class TestMotionPage : public QObject
     Q_OBJECT
     std::unique_ptr<DeviceSession> session;
 
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
     qint64 simValue(const char *key) const { return sim()->value(QLatin1String(key)).value_or(-1); }
     void connectSim() { test::connectToSimulator(*session); }
     static void showActive(QWidget *w)
@@ -68,7 +72,7 @@ private Q_SLOTS:
         MotionPage page(session.get());
         QCOMPARE(page.title(), QStringLiteral("Jog and home"));
         QCOMPARE(page.motorCount(), 2);
-        page.jog()->setSettleMs(100);
+        session->jog()->setSettleMs(100);
         JogPanel *p = page.panel(1);
         QVERIFY(!p->forwardButton()->isEnabled()); // not connected
         showActive(&page);
@@ -84,7 +88,7 @@ private Q_SLOTS:
         QTRY_VERIFY(p->positionText() != QStringLiteral("0.00 mm"));
         QTest::mouseRelease(p->forwardButton(), Qt::LeftButton);
         QTRY_VERIFY(!sim()->running(1));
-        QTRY_COMPARE(page.jog()->state(1), State::Idle);
+        QTRY_COMPARE(session->jog()->state(1), State::Idle);
         QTRY_COMPARE(p->runningLed()->state(), Led::State::Off);
 
         // Sliding off the button stops; sliding back does not restart.
@@ -111,7 +115,7 @@ private Q_SLOTS:
         connectSim();
         MotionPage *page = window.motionPage();
         QVERIFY(page);
-        page->jog()->setSettleMs(100);
+        session->jog()->setSettleMs(100);
         window.showPage(int(window.pages().indexOf(page)));
         QCOMPARE(window.currentPage(), page);
         JogButton *forward = page->panel(1)->forwardButton();
@@ -122,14 +126,14 @@ private Q_SLOTS:
         showActive(&other); // another window takes the focus
         QTRY_VERIFY(!sim()->running(1));
         QVERIFY(!forward->isHeld());
-        QTRY_COMPARE(page->jog()->state(1), State::Idle);
+        QTRY_COMPARE(session->jog()->state(1), State::Idle);
 
         showActive(&window);
         QTest::mousePress(forward, Qt::LeftButton);
         QTRY_VERIFY(sim()->running(1));
         window.showPage(0);
         QTRY_VERIFY(!sim()->running(1));
-        QTRY_COMPARE(page->jog()->state(1), State::Idle);
+        QTRY_COMPARE(session->jog()->state(1), State::Idle);
         QVERIFY(window.messageView()
                     ->texts()
                     .join(QLatin1Char('\n'))
@@ -147,7 +151,7 @@ private Q_SLOTS:
     void keyboardJoggingIsOptInAndStopsOnRelease()
     {
         MotionPage page(session.get());
-        page.jog()->setSettleMs(100);
+        session->jog()->setSettleMs(100);
         showActive(&page);
         connectSim();
         QVERIFY(!page.keyboardCheck()->isChecked());
@@ -158,11 +162,11 @@ private Q_SLOTS:
         QTest::keyRelease(&page, Qt::Key_Right);
 
         page.keyboardCheck()->click();
-        QVERIFY(page.jog()->keyboardEnabled());
+        QVERIFY(session->jog()->keyboardEnabled());
         QVERIFY(!page.keyboardIndicator()->isHidden());
         QTest::keyPress(&page, Qt::Key_Right);
         QTRY_VERIFY(sim()->running(1));
-        QCOMPARE(page.jog()->direction(1).value_or(JogController::Direction::Reverse),
+        QCOMPARE(session->jog()->direction(1).value_or(JogController::Direction::Reverse),
                  JogController::Direction::Forward);
         // Auto-repeat (a release+press pair on X11) neither stops nor restarts.
         sendKey(&page, QEvent::KeyRelease, Qt::Key_Right, true);
@@ -180,9 +184,9 @@ private Q_SLOTS:
         // A key held through a stop does not restart by repeating.
         QTest::keyPress(&page, Qt::Key_Left);
         QTRY_VERIFY(sim()->running(1));
-        page.jog()->stopAll(QStringLiteral("focus loss"));
+        session->jog()->stopAll(QStringLiteral("focus loss"));
         QTRY_VERIFY(!sim()->running(1));
-        QTRY_COMPARE(page.jog()->state(1), State::Idle);
+        QTRY_COMPARE(session->jog()->state(1), State::Idle);
         sendKey(&page, QEvent::KeyPress, Qt::Key_Left, true);
         QTest::qWait(200);
         QVERIFY(!sim()->running(1));
@@ -198,7 +202,7 @@ private Q_SLOTS:
             QTest::keyRelease(&other, Qt::Key_Down);
         }
         showActive(&page);
-        QTRY_COMPARE(page.jog()->state(2), State::Idle);
+        QTRY_COMPARE(session->jog()->state(2), State::Idle);
 
         // Typing in a field keeps the arrows for the field.
         QWidget *speed = page.panel(1)->speedField()->editor();
@@ -230,18 +234,23 @@ private Q_SLOTS:
         JogPanel *p = page.panel(1);
         QCOMPARE(p->moveText(), QStringLiteral("10.00 mm, Forward, at 1200 rpm"));
         QVERIFY(p->moveButton()->isEnabled());
-        QVERIFY(session->store()->edit(QStringLiteral("motor1.move_distance"), 2000).isEmpty());
+        QVERIFY(
+            session->parameters()->edit(QStringLiteral("motor1.move_distance"), 2000).isEmpty());
         QVERIFY(!p->moveButton()->isEnabled()); // the controller would move by what it holds
         QVERIFY(p->moveButton()->toolTip().contains(QLatin1String("not written")));
-        session->store()->revert(QStringLiteral("motor1.move_distance"));
+        session->parameters()->revert(QStringLiteral("motor1.move_distance"));
         QVERIFY(p->moveButton()->isEnabled());
 
         p->moveButton()->click();
         QTRY_COMPARE(simValue("motor1.position"), 1000);
-        QTRY_COMPARE(p->statusText(), QStringLiteral("Idle — Single move done"));
+        QTRY_COMPARE(p->statusText(),
+                     QStringLiteral("Idle — Single move of motor 1: done at 10.00 mm"));
+        QVERIFY(p->referenceText().startsWith(QLatin1String("not referenced")));
         p->homeButton()->click();
         QTRY_VERIFY(p->statusText().startsWith(QLatin1String("Homing")));
-        QTRY_COMPARE(p->statusText(), QStringLiteral("Idle — Homing done"));
+        QTRY_COMPARE(p->statusText(),
+                     QStringLiteral("Idle — Homing motor 1: referenced at 0.00 mm"));
+        QCOMPARE(p->referenceText(), QStringLiteral("referenced"));
         QCOMPARE(simValue("motor1.position"), 0);
         QCOMPARE(p->positionText(), QStringLiteral("0.00 mm"));
 
@@ -255,11 +264,121 @@ private Q_SLOTS:
         QTRY_VERIFY2(page.homingStatus().contains(QLatin1String("motor 1 running")),
                      qPrintable(page.homingStatus()));
         QTRY_VERIFY_WITH_TIMEOUT(
-            page.homingStatus().startsWith(QLatin1String("Homing in order: done")), 5000);
+            page.homingStatus().startsWith(QLatin1String("Homing in order: referenced")), 5000);
         QCOMPARE(simValue("motor1.position"), 0);
         QCOMPARE(simValue("motor2.position"), 0);
-        QVERIFY2(page.homingStatus().contains(QLatin1String("motor 2 at 0.00 mm")),
-                 qPrintable(page.homingStatus()));
+        QCOMPARE(page.homingStatus(),
+                 QStringLiteral("Homing in order: referenced at (0.00, 0.00) mm"));
+        QCOMPARE(page.panel(2)->referenceText(), QStringLiteral("referenced"));
+        // Zeroing moves the zero: no axis is referenced after it.
+        QTRY_VERIFY(page.zeroButton()->isEnabled());
+        page.zeroButton()->click();
+        QTRY_COMPARE(p->referenceText(), QStringLiteral("not referenced (coordinates zeroed)"));
+    }
+
+    // The bug of issue 13: E-STOP during homing showed "Idle — Homing done".
+    void eStopDuringHomingIsNotReferenced()
+    {
+        connectSim();
+        sim()->setMachinePosition(1, 60.0); // a long way from the home switch
+        MotionPage page(session.get());
+        showActive(&page);
+        JogPanel *p = page.panel(1);
+        QTRY_VERIFY(p->homeButton()->isEnabled());
+        QSignalSpy messages(session.get(), &DeviceSession::message);
+        p->homeButton()->click();
+        QTRY_VERIFY(sim()->running(1));
+        QTRY_VERIFY(p->statusText().startsWith(QStringLiteral("Homing motor 1…")));
+        session->emergencyStop();
+        QTRY_VERIFY2(p->statusText().contains(QLatin1String("(E-STOP): not referenced")),
+                     qPrintable(p->statusText()));
+        QVERIFY2(
+            p->statusText().startsWith(QStringLiteral("Idle — Homing motor 1 interrupted at ")),
+            qPrintable(p->statusText()));
+        QVERIFY(sim()->position(1) != 0);
+        QVERIFY(p->referenceText().startsWith(QLatin1String("not referenced")));
+        StatusDock dock(session.get());
+        QCOMPARE(dock.referenceText(1), QStringLiteral("not referenced (homing was interrupted)"));
+        // Logged when it was known, in other words than when it was sent.
+        QStringList said;
+        for (const auto &m : std::as_const(messages))
+            said << m.at(1).toString();
+        QVERIFY2(said.contains(QStringLiteral("Home: sent")), qPrintable(said.join('|')));
+        QVERIFY(!said.join('|').contains(QLatin1String("Home: done")));
+        QVERIFY(said.last().contains(QLatin1String("not referenced")));
+    }
+
+    void aStopDuringASingleMoveSaysWhereItStopped()
+    {
+        connectSim();
+        QVERIFY(sim()->setValue(QStringLiteral("motor1.move_distance"), 20000)); // 200 mm
+        QVERIFY(sim()->setValue(QStringLiteral("motor1.speed"), 120));
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->readAll();
+        QTRY_COMPARE(read.size(), 1);
+        MotionPage page(session.get());
+        showActive(&page);
+        JogPanel *p = page.panel(1);
+        QTRY_VERIFY(p->moveButton()->isEnabled());
+        p->moveButton()->click();
+        QTRY_VERIFY(sim()->running(1));
+        QTRY_VERIFY(p->statusText().startsWith(QStringLiteral("Single move of motor 1…")));
+        QTest::mousePress(p->stopButton(), Qt::LeftButton);
+        QTest::mouseRelease(p->stopButton(), Qt::LeftButton);
+        QTRY_VERIFY2(
+            p->statusText().contains(QLatin1String("not at the end point 200.00 mm (stop)")),
+            qPrintable(p->statusText()));
+        QVERIFY(p->statusText().contains(QLatin1String("stopped at ")));
+        QVERIFY(!p->statusText().contains(QLatin1String("done")));
+    }
+
+    // A link lost while a move runs: not "done", the cause is the link, references are gone.
+    void aLinkLostDuringAMoveIsSaid()
+    {
+        connectSim();
+        QVERIFY(sim()->setValue(QStringLiteral("motor1.move_distance"), 20000));
+        QVERIFY(sim()->setValue(QStringLiteral("motor1.speed"), 120));
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->readAll();
+        QTRY_COMPARE(read.size(), 1);
+        MotionSupervisor *motion = session->motion();
+        session->command(QStringLiteral("motor1.home"));
+        QTRY_VERIFY_WITH_TIMEOUT(motion->references()->isReferenced(1), 10000);
+        QSignalSpy finished(motion, &MotionSupervisor::finished);
+        session->command(QStringLiteral("motor1.move"));
+        QTRY_VERIFY(motion->active(1).has_value());
+        QTRY_VERIFY(sim()->running(1));
+        test::simHost(*session)->hangUp(60000);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
+        const auto o = motion->lastOutcome(1);
+        QVERIFY(o);
+        QCOMPARE(o->verdictWord(), QStringLiteral("stopped"));
+        QCOMPARE(o->causeWord(), QStringLiteral("link_lost"));
+        QVERIFY2(motion->text(*o).endsWith(QLatin1String("(link lost)")),
+                 qPrintable(motion->text(*o)));
+        QCOMPARE(motion->references()->reason(1), ReferenceTracker::Reason::LinkLost);
+    }
+
+    // F12 while a jog button is held: the jog ends on the page at once, not at the release.
+    void eStopLetsGoOfAHeldJog()
+    {
+        EmergencyStop estop(session.get());
+        MotionPage page(session.get());
+        session->jog()->setSettleMs(50);
+        showActive(&page);
+        connectSim();
+        JogPanel *p = page.panel(1);
+        QTRY_VERIFY(p->forwardButton()->isEnabled());
+        QTest::mousePress(p->forwardButton(), Qt::LeftButton);
+        QTRY_VERIFY(sim()->running(1));
+        QCOMPARE(p->statusText(), QStringLiteral("Jogging forward"));
+        QTest::keyClick(&page, Qt::Key_F12);
+        QTRY_VERIFY(!sim()->running(1));
+        QVERIFY(!p->forwardButton()->isDown());
+        QTRY_COMPARE(session->jog()->state(1), State::Idle);
+        QVERIFY(p->statusText() != QStringLiteral("Jogging forward"));
+        QTest::mouseRelease(p->forwardButton(), Qt::LeftButton);
+        QVERIFY(!sim()->running(1));
     }
 
     void homingOrderRefusesDuplicates()
@@ -275,11 +394,11 @@ private Q_SLOTS:
         QVERIFY2(page.bannerText().contains(QLatin1String("Motor 2 is already the 2nd")),
                  qPrintable(page.bannerText()));
         QCOMPARE(order->combo(0)->currentText(), QStringLiteral("Motor 1"));
-        QVERIFY(!session->store()->hasEdits());
+        QVERIFY(!session->parameters()->hasEdits());
         // The same through the list, as a user picks it.
         Q_EMIT order->combo(1)->activated(order->combo(1)->findText(QStringLiteral("Motor 1")));
         QCOMPARE(order->combo(1)->currentText(), QStringLiteral("Motor 2"));
-        QVERIFY(!session->store()->hasEdits());
+        QVERIFY(!session->parameters()->hasEdits());
 
         QVERIFY(order->choose(1, 0));
         QVERIFY(order->choose(0, 2));
@@ -290,7 +409,7 @@ private Q_SLOTS:
         QTRY_COMPARE(written.size(), 1);
         QCOMPARE(simValue("homing.first"), 2);
         QCOMPARE(simValue("homing.second"), 0);
-        QVERIFY(!session->store()->hasEdits());
+        QVERIFY(!session->parameters()->hasEdits());
         QVERIFY(page.homeAllButton()->isEnabled());
     }
 
@@ -300,7 +419,7 @@ private Q_SLOTS:
         MotionPage page(session.get());
         JogPanel *p = page.panel(2);
         QVERIFY(!p->applySpeedButton()->isEnabled());
-        QVERIFY(session->store()->edit(QStringLiteral("motor2.microsteps"), 16).isEmpty());
+        QVERIFY(session->parameters()->edit(QStringLiteral("motor2.microsteps"), 16).isEmpty());
         p->speedField()->enterText(QStringLiteral("450"));
         QVERIFY(p->applySpeedButton()->isEnabled());
         QSignalSpy written(session.get(), &DeviceSession::writeFinished);
@@ -308,9 +427,9 @@ private Q_SLOTS:
         QTRY_COMPARE(written.size(), 1);
         QCOMPARE(simValue("motor2.speed"), 450);
         QCOMPARE(simValue("motor2.microsteps"), 8); // the other edit waits for "Write changes"
-        QCOMPARE(session->store()->state(QStringLiteral("motor2.speed")),
+        QCOMPARE(session->parameters()->state(QStringLiteral("motor2.speed")),
                  ParameterStore::State::InSync);
-        QCOMPARE(session->store()->state(QStringLiteral("motor2.microsteps")),
+        QCOMPARE(session->parameters()->state(QStringLiteral("motor2.microsteps")),
                  ParameterStore::State::Edited);
         QVERIFY(!p->applySpeedButton()->isEnabled());
     }
@@ -355,14 +474,14 @@ private Q_SLOTS:
                 page.resize(page.sizeHint().expandedTo(QSize(1000, 760)));
                 page.show();
                 page.keyboardCheck()->setChecked(true);
-                session->store()->edit(QStringLiteral("motor1.speed"), 450);
+                session->parameters()->edit(QStringLiteral("motor1.speed"), 450);
                 page.homingOrder()->choose(0, 2);
                 QTest::mousePress(page.panel(2)->forwardButton(), Qt::LeftButton);
                 QTest::qWait(400);
                 page.grab().save(QStringLiteral("%1/motion-%2%3.png")
                                      .arg(dir, lang, isDark ? QStringLiteral("-dark") : QString()));
                 QTest::mouseRelease(page.panel(2)->forwardButton(), Qt::LeftButton);
-                session->store()->revertAll();
+                session->parameters()->revertAll();
                 QTest::qWait(300);
             }
         }

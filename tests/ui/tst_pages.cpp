@@ -41,7 +41,7 @@ class TstPages : public QObject
     Q_OBJECT
     std::unique_ptr<DeviceSession> session;
 
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
     qint64 simValue(const char *key) const { return sim()->value(QLatin1String(key)).value_or(-1); }
     void connectSim() { test::connectToSimulator(*session); }
     void readAgain()
@@ -124,7 +124,7 @@ private Q_SLOTS:
         MotorPage page(session.get(), 1);
         const QString before = page.derivedValues()->text(DerivedValues::Row::MoveTime);
         page.form()->field(QStringLiteral("motor1.microsteps"))->enterText(QStringLiteral("16"));
-        QCOMPARE(session->store()->state(QStringLiteral("motor1.microsteps")),
+        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.microsteps")),
                  ParameterStore::State::Edited);
         QCOMPARE(page.derivedValues()->text(DerivedValues::Row::PulsesPerRev),
                  QStringLiteral("3200 pulses/rev"));
@@ -132,12 +132,12 @@ private Q_SLOTS:
                  QStringLiteral("6400 pulses"));
         QVERIFY(page.derivedValues()->text(DerivedValues::Row::MoveTime) != before);
         page.form()->field(QStringLiteral("motor1.pitch"))->enterText(QStringLiteral("0"));
-        QVERIFY(session->store()->state(QStringLiteral("motor1.pitch")) !=
+        QVERIFY(session->parameters()->state(QStringLiteral("motor1.pitch")) !=
                 ParameterStore::State::Edited);
         // Nothing was written: the simulator still holds the old value after a few poll cycles.
         QTest::qWait(300);
         QCOMPARE(simValue("motor1.microsteps"), 8);
-        QVERIFY(session->store()->hasEdits());
+        QVERIFY(session->parameters()->hasEdits());
     }
 
     void stopButtonStopsTheMotor()
@@ -164,7 +164,7 @@ private Q_SLOTS:
                  QStringList{QStringLiteral("No suspicious wiring found.")});
 
         page.field(1, QStringLiteral("limit_positive"))->enterText(QStringLiteral("IN2"));
-        QCOMPARE(*session->store()->shownValue(QStringLiteral("motor1.limit_positive")), 2);
+        QCOMPARE(*session->parameters()->shownValue(QStringLiteral("motor1.limit_positive")), 2);
         QVERIFY(page.warningsView()->texts().contains(
             QStringLiteral("Motor 1: IN2 is both the positive and the negative limit")));
         QCOMPARE(simValue("motor1.limit_positive"), 1); // held, not written
@@ -206,7 +206,7 @@ private Q_SLOTS:
                  qPrintable(page.linkStatus()));
         QVERIFY(page.reconnectButton()->isHidden());
         readAgain(); // the session reads at the new id
-        QCOMPARE(*session->store()->deviceValue(QStringLiteral("device.id")), 5);
+        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("device.id")), 5);
         QCOMPARE(page.idEditor()->value(), 5);
     }
 
@@ -217,7 +217,7 @@ private Q_SLOTS:
         page.idEditor()->setValue(7);
         QTest::mouseClick(page.applyLinkButton(), Qt::LeftButton);
         QVERIFY(page.confirmation());
-        session->simulator()->stop(); // the controller is gone: nothing will answer
+        test::simHost(*session)->stop(); // the controller is gone: nothing will answer
         QSignalSpy failed(session.get(), &DeviceSession::linkChangeFailed);
         page.confirmation()->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(failed.size(), 1, 10000);
@@ -262,7 +262,7 @@ private Q_SLOTS:
         QCOMPARE(sim()->deviceId(), 1);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1,
                                   5000); // the session reads what the controller holds now
-        QCOMPARE(*session->store()->deviceValue(QStringLiteral("motor1.speed")), 300);
+        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.speed")), 300);
         QVERIFY2(page.flashStatus().contains(QLatin1String("restored")),
                  qPrintable(page.flashStatus()));
     }
@@ -272,7 +272,7 @@ private Q_SLOTS:
         connectSim();
         DevicePage page(session.get());
         QVERIFY(!page.unsavedWarningShown());
-        QVERIFY(session->store()->edit(QStringLiteral("motor1.speed"), 420).isEmpty());
+        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.speed"), 420).isEmpty());
         QSignalSpy written(session.get(), &DeviceSession::writeFinished);
         session->writeChanges(); // what MainWindow's "Write changes" does
         QTRY_COMPARE(written.size(), 1);
@@ -306,10 +306,10 @@ private Q_SLOTS:
             QSKIP("set STEPCOM_SCREENSHOTS to a directory to render the pages");
         QDir().mkpath(dir);
         connectSim();
-        session->store()->edit(QStringLiteral("motor1.speed"), 450);
-        session->store()->edit(QStringLiteral("motor1.limit_positive"), 2);
-        session->store()->edit(QStringLiteral("motor2.home_input"), 3);
-        session->store()->setUnsavedToFlash(true);
+        session->parameters()->edit(QStringLiteral("motor1.speed"), 450);
+        session->parameters()->edit(QStringLiteral("motor1.limit_positive"), 2);
+        session->parameters()->edit(QStringLiteral("motor2.home_input"), 3);
+        session->parameters()->setUnsavedToFlash(true);
         sim()->setInput(4, SimDevice::InputForce::On);
         QTest::qWait(400);
         const QPalette dark = stepcom::test::darkPalette();
@@ -341,7 +341,7 @@ private Q_SLOTS:
         failed.idEditor()->setValue(9);
         failed.requestLinkChange();
         failed.confirmation()->grab().save(dir + QStringLiteral("/device-confirm.png"));
-        session->simulator()->stop();
+        test::simHost(*session)->stop();
         QSignalSpy done(session.get(), &DeviceSession::linkChangeFailed);
         failed.confirmation()->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(done.size(), 1, 10000);

@@ -1,5 +1,6 @@
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
+#include "device/sessioninternals.h"
 #include "dialogs/profilecomparedialog.h"
 #include "language.h"
 #include "mainwindow.h"
@@ -34,7 +35,7 @@ class TestProfileDialog : public QObject
     std::unique_ptr<QWidget> window;
     QTemporaryDir dir;
 
-    SimDevice *sim() const { return session->simulator()->device(); }
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
     qint64 simValue(const char *key) const { return sim()->value(QLatin1String(key)).value_or(-1); }
     void connectSim() { test::connectToSimulator(*session); }
     // The controller's values with three changes (and another device id).
@@ -42,7 +43,7 @@ class TestProfileDialog : public QObject
     {
         QHash<QString, qint64> values;
         for (const Parameter *p : Profile::profileParameters(session->map(), true))
-            values.insert(p->key, *session->store()->deviceValue(p->key));
+            values.insert(p->key, *session->parameters()->deviceValue(p->key));
         Profile p = Profile::fromValues(session->map(), values, true);
         p.name = QStringLiteral("Machine B");
         p.values[QStringLiteral("motor1.speed")] += 11;
@@ -185,7 +186,7 @@ private Q_SLOTS:
         Profile profile = changedProfile();
         profile.values = {{QStringLiteral("device.id"), 7}};
         for (const Parameter *p : Profile::profileParameters(session->map(), false))
-            profile.values.insert(p->key, *session->store()->deviceValue(p->key));
+            profile.values.insert(p->key, *session->parameters()->deviceValue(p->key));
         ProfileCompareDialog dialog(session.get(), profile, QStringLiteral("id.json"),
                                     window.get());
         dialog.open();
@@ -201,7 +202,7 @@ private Q_SLOTS:
         QVERIFY2(applied.at(0).at(0).toBool(),
                  qPrintable(applied.at(0).at(2).toStringList().join(QLatin1Char('\n'))));
         QCOMPARE(simValue("device.id"), 7);
-        QCOMPARE(session->link()->settings().deviceId, 7); // the link followed
+        QCOMPARE(SessionInternals::link(*session)->settings().deviceId, 7); // the link followed
         QCOMPARE(linkChanged.size(), 1);
     }
 
@@ -233,7 +234,7 @@ private Q_SLOTS:
 
         // From the edited values: the edit goes into the file, nothing to the controller.
         const qint64 speed = simValue("motor2.speed");
-        QCOMPARE(session->store()->edit(QStringLiteral("motor2.speed"), speed + 1), QString());
+        QCOMPARE(session->parameters()->edit(QStringLiteral("motor2.speed"), speed + 1), QString());
         const QString fromEdits = dir.filePath(QStringLiteral("edited.json"));
         QVERIFY(actions.saveFromEditedFile(fromEdits));
         const ProfileParseResult edited = ProfileFile::load(fromEdits, session->map());

@@ -1,6 +1,5 @@
 #include "dialogs/busscandialog.h"
 
-#include "bus/modbuslink.h"
 #include "device/busscanner.h"
 #include "device/devicesession.h"
 
@@ -336,7 +335,7 @@ LinkSettings BusScanDialog::settingsFor(int row) const
 
 bool BusScanDialog::sessionUsesPort() const
 {
-    return m_session->link()->state() != ModbusLink::State::Disconnected &&
+    return m_session->linkState() != DeviceSession::LinkState::Disconnected &&
            samePort(m_session->settings(), m_base);
 }
 

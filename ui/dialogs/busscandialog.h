@@ -1,6 +1,6 @@
 #pragma once
 
-#include "bus/linksettings.h"
+#include "device/devicesession.h"
 
 #include <QDialog>
 #include <QMap>

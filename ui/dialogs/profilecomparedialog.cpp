@@ -122,7 +122,7 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
         m_saveToFlash->setEnabled(!ok);
     });
     // A read-all changes every value at once: compare once, after the burst.
-    connect(session->store(), &ParameterStore::valueChanged, this, [this] {
+    connect(session->parameters(), &ParameterStore::valueChanged, this, [this] {
         if (m_refreshPending)
             return;
         m_refreshPending = true;
@@ -168,7 +168,7 @@ void ProfileCompareDialog::refreshValues()
 {
     QHash<QString, qint64> device;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), true)) {
-        if (const auto v = m_session->store()->deviceValue(p->key))
+        if (const auto v = m_session->parameters()->deviceValue(p->key))
             device.insert(p->key, *v);
     }
     m_rows = ProfileDiff::compare(m_session->map(), m_profile, device);
@@ -397,6 +397,14 @@ void ProfileCompareDialog::retranslate()
         header += QStringLiteral(", ") + tr("from controller id %1").arg(m_profile.deviceId);
     if (!m_profile.notes.isEmpty())
         header += QLatin1Char('\n') + m_profile.notes;
+    // A profile of another map: what is left out, before anything is applied.
+    if (const QString maps = m_profile.variance.describeMaps(); !maps.isEmpty())
+        header += QLatin1Char('\n') + maps;
+    const QStringList notApplied =
+        m_profile.variance.describe(m_session->map(), Language::instance().current());
+    if (!notApplied.isEmpty())
+        header += QLatin1Char('\n') + tr("Not applied:") + QStringLiteral("\n  ") +
+                  notApplied.join(QStringLiteral("\n  "));
     header += QLatin1Char('\n') + tr("Opening a profile writes nothing. Check the rows to "
                                      "write, then Apply.");
     m_header->setText(header);

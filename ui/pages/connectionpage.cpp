@@ -1,9 +1,8 @@
 #include "pages/connectionpage.h"
 
-#include "bus/modbuslink.h"
 #include "device/devicesession.h"
+#include "device/linkhealth.h"
 #include "dialogs/busscandialog.h"
-#include "sim/simhost.h"
 #include "widgets/led.h"
 
 #include <QButtonGroup>
@@ -92,11 +91,12 @@ ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
     connect(m_scan, &QPushButton::clicked, this, [this] { openBusScan(); });
 
     connect(session, &DeviceSession::linkStateChanged, this, &ConnectionPage::updateState);
+    connect(session->health(), &LinkHealth::stateChanged, this, &ConnectionPage::updateState);
     connect(session, &DeviceSession::connected, this, &ConnectionPage::onConnected);
     connect(session, &DeviceSession::disconnected, this,
             [this] { setNote(false, [] { return tr("Disconnected."); }); });
     // Connected after the session's own handler of `lost`, so this note wins over the plain one.
-    connect(session->link(), &ModbusLink::lost, this, [this](const QString &reason) {
+    connect(session, &DeviceSession::linkLost, this, [this](const QString &reason) {
         setNote(true, [reason] { return tr("Connection lost: %1").arg(reason); });
     });
     connect(session, &DeviceSession::linkChanged, this, [this](const LinkSettings &s) {
@@ -516,17 +516,7 @@ void ConnectionPage::onConnected(bool ok, const QString &reason)
 
 bool ConnectionPage::usesSimulator() const
 {
-    if (session()->isSimulator())
-        return true;
-    // connected(true) can arrive from inside connectSimulator(), before the session marks
-    // itself as on the simulator: recognise the simulator's own port instead.
-    const SimHost *sim = session()->simulator();
-    if (!sim || !sim->isRunning())
-        return false;
-    const LinkSettings s = session()->settings();
-    return s.transport == LinkSettings::Transport::Rtu
-               ? !s.portName.isEmpty() && s.portName == sim->rtuPath()
-               : s.tcpPort == sim->tcpPort() && sim->tcpPort() != 0;
+    return session()->isSimulator();
 }
 
 void ConnectionPage::setNote(bool problem, std::function<QString()> note)
@@ -538,12 +528,23 @@ void ConnectionPage::setNote(bool problem, std::function<QString()> note)
 
 QString ConnectionPage::statusText() const
 {
-    const ModbusLink::State state = session()->link()->state();
+    const DeviceSession::LinkState state = session()->linkState();
     const QString where = session()->settings().describe();
-    if (state == ModbusLink::State::Connected)
+    if (state == DeviceSession::LinkState::Connected) {
+        // "Connected" only once the controller answered: an open port proves nothing.
+        switch (session()->health()->state()) {
+        case LinkHealth::State::Answering:
+            break;
+        case LinkHealth::State::NotAnswering:
+            return tr("%1 is open, but the controller does not answer.").arg(where) +
+                   QLatin1Char(' ') + LinkHealth::likelyCauses();
+        default:
+            return tr("%1 is open; waiting for the controller to answer…").arg(where);
+        }
         return usesSimulator() ? tr("Connected to the built-in simulator (%1).").arg(where)
                                : tr("Connected to %1.").arg(where);
-    if (state == ModbusLink::State::Connecting)
+    }
+    if (state == DeviceSession::LinkState::Connecting)
         return tr("Connecting to %1…").arg(where);
     if (m_note)
         return m_note(); // built now, so a language switch retranslates it
@@ -554,18 +555,19 @@ void ConnectionPage::updateState()
 {
     if (!m_status)
         return;
-    const ModbusLink::State state = session()->link()->state();
-    const bool idle = state == ModbusLink::State::Disconnected;
+    const DeviceSession::LinkState state = session()->linkState();
+    const bool idle = state == DeviceSession::LinkState::Disconnected;
     // Settings are what the link was opened with: changing them needs a reconnect.
     for (QGroupBox *box : {m_transportBox, m_serialBox, m_tcpBox, m_deviceBox})
         box->setEnabled(idle);
     m_connect->setEnabled(idle);
     m_disconnect->setEnabled(!idle);
     m_scan->setEnabled(transport() != Transport::Simulator);
-    m_led->setState(state == ModbusLink::State::Connected ? Led::State::On
-                    : idle                                ? Led::State::Off
-                                                          : Led::State::Unknown);
-    const bool problem = idle && m_noteIsProblem;
+    const LinkHealth::State health = session()->health()->state();
+    m_led->setState(health == LinkHealth::State::Answering ? Led::State::On
+                    : idle                                 ? Led::State::Off
+                                                           : Led::State::Unknown);
+    const bool problem = (idle && m_noteIsProblem) || health == LinkHealth::State::NotAnswering;
     if (problem) {
         const int size = m_status->fontMetrics().height();
         m_stateIcon->setPixmap(style()->standardIcon(QStyle::SP_MessageBoxWarning).pixmap(size));

@@ -133,7 +133,7 @@ DevicePage::DevicePage(DeviceSession *session, QWidget *parent)
         this->session()->saveToFlash();
     });
 
-    ParameterStore *store = session->store();
+    ParameterStore *store = session->parameters();
     connect(store, &ParameterStore::valueChanged, this, [this](const QString &key) {
         if (key == kId || key == kBaud)
             showDeviceValues();
@@ -203,8 +203,8 @@ QString DevicePage::describe(int id, int baud) const
 
 void DevicePage::showDeviceValues()
 {
-    const auto id = session()->store()->deviceValue(kId);
-    const auto baud = session()->store()->deviceValue(kBaud);
+    const auto id = session()->parameters()->deviceValue(kId);
+    const auto baud = session()->parameters()->deviceValue(kBaud);
     m_idHeld->setText(id ? tr("The controller holds %1").arg(*id) : tr("Not read yet"));
     m_baudHeld->setText(baud ? tr("The controller holds %1").arg(*baud) : tr("Not read yet"));
     // Follow the device until the user types something of their own.
@@ -223,8 +223,8 @@ void DevicePage::updateEnabled()
 {
     const bool connected = session()->isConnected();
     const bool tcp = session()->settings().isNetwork();
-    const auto id = session()->store()->deviceValue(kId);
-    const auto baud = session()->store()->deviceValue(kBaud);
+    const auto id = session()->parameters()->deviceValue(kId);
+    const auto baud = session()->parameters()->deviceValue(kBaud);
     const bool changed = id && baud && (m_id->value() != *id || (!tcp && chosenBaud() != *baud));
     m_baud->setEnabled(!tcp);
     m_apply->setEnabled(connected && changed && !m_confirmation);
@@ -234,7 +234,8 @@ void DevicePage::updateEnabled()
 
 void DevicePage::updateUnsaved()
 {
-    m_unsavedRow->setHidden(!session()->store()->unsavedToFlash());
+    m_unsavedRow->setHidden(!session()->parameters()->unsavedToFlash());
+    renderStatus(); // the "saved" line reads the same state
 }
 
 void DevicePage::setLinkEvent(LinkEvent event)
@@ -288,6 +289,9 @@ std::pair<DevicePage::Tone, QString> DevicePage::flashText() const
     case FlashEvent::Saving:
         return {Tone::Busy, tr("Saving to flash…")};
     case FlashEvent::Saved:
+        // One flash state: a write since the save makes it "not saved", whatever happened here.
+        if (session()->parameters()->unsavedToFlash())
+            return {Tone::Busy, QString()};
         return {Tone::Ok,
                 tr("Saved to flash: the controller keeps its settings after a power cycle.")};
     case FlashEvent::SaveFailed:
@@ -377,8 +381,8 @@ void DevicePage::requestFactoryReset()
     if (m_confirmation || !session()->isConnected())
         return;
     const int motors = session()->map().blockCount(QStringLiteral("motor"));
-    const auto id = session()->store()->deviceValue(kId);
-    const auto baud = session()->store()->deviceValue(kBaud);
+    const auto id = session()->parameters()->deviceValue(kId);
+    const auto baud = session()->parameters()->deviceValue(kBaud);
     const QString motorList = motors > 1 ? tr("motors 1 to %1").arg(motors) : tr("the motor");
     // Exactly what the factory reset replaces (docs/simulator.md, "Factory values").
     const QStringList lost = {

@@ -45,7 +45,7 @@ Led::State lampState(std::optional<qint64> value)
 InputsPage::InputsPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
 {
-    ParameterStore *store = session->store();
+    ParameterStore *store = session->parameters();
     const RegisterMap &map = session->map();
     m_motors = map.blockCount(kMotor);
 
@@ -167,7 +167,7 @@ ParameterField *InputsPage::field(int motor, const QString &localKey) const
 QList<MotorWiring> InputsPage::wiring() const
 {
     QList<MotorWiring> out;
-    const ParameterStore *store = session()->store();
+    const ParameterStore *store = session()->parameters();
     for (int n = 1; n <= m_motors; ++n) {
         MotorWiring w;
         w.motor = n;
@@ -185,7 +185,7 @@ QList<MotorWiring> InputsPage::wiring() const
 
 QList<WiringWarning> InputsPage::warnings() const
 {
-    const auto mode = session()->store()->shownValue(kMode);
+    const auto mode = session()->parameters()->shownValue(kMode);
     return checkWiring(wiring(), mode ? std::optional<int>(int(*mode)) : std::nullopt);
 }
 
@@ -198,7 +198,7 @@ void InputsPage::updateWiring()
     m_warnings->setWarnings(known ? warnings() : QList<WiringWarning>(), known);
 
     const Parameter *mode = session()->map().find(kMode);
-    const auto value = session()->store()->shownValue(kMode);
+    const auto value = session()->parameters()->shownValue(kMode);
     const QString lang = Language::instance().current();
     if (!mode || !value) {
         m_modeLine->setText(tr("System mode: not known yet."));
@@ -237,7 +237,7 @@ void InputsPage::updateWiring()
 
 void InputsPage::updateLamps()
 {
-    const ParameterStore *store = session()->store();
+    const ParameterStore *store = session()->parameters();
     const auto show = [](Led *led, QLabel *name, std::optional<qint64> value) {
         led->setState(lampState(value));
         const QString state = !value ? tr("unknown") : (*value ? tr("on") : tr("off"));
@@ -265,7 +265,7 @@ void InputsPage::retranslate()
         tr("Homing runs in reverse until the home input is on, so the home input is "
            "usually the negative limit's input. Inputs are on with a 24 V negative "
            "(NPN) signal."));
-    const ParameterStore *store = session()->store();
+    const ParameterStore *store = session()->parameters();
     const QString lang = Language::instance().current();
     for (int i = 0; i < m_inputNames.size(); ++i) {
         const Parameter *p = store->map().find(inputKey(i + 1));

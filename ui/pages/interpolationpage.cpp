@@ -57,7 +57,7 @@ InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
         connect(e, &PathEditor::started, m_preview, &InterpolationPreview::restartTrace);
     }
     connect(m_tabs, &QTabWidget::currentChanged, this, &InterpolationPage::schedulePreview);
-    connect(session->store(), &ParameterStore::valueChanged, this, [this](const QString &k) {
+    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
         if (k.endsWith(QLatin1String(".position")) && !m_positionTimer.isActive())
             m_positionTimer.start(); // x and y of one poll make one point of the trace
     });

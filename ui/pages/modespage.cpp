@@ -96,6 +96,7 @@ constexpr int kModeCount = int(std::size(kModes));
 ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
 {
+    m_writeFlow = new WriteFlow(session, this);
     QWidget *content = scrollableContent();
     auto *layout = new QVBoxLayout(content);
 
@@ -151,7 +152,7 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
 
     m_tripsBox = new QGroupBox(content);
     auto *tripsLayout = new QVBoxLayout(m_tripsBox);
-    m_form = new ParameterForm(session->store(), m_tripsBox);
+    m_form = new ParameterForm(session->parameters(), m_tripsBox);
     m_form->addParameter(kTripsKey);
     tripsLayout->addWidget(m_form);
     m_tripsNote = new QLabel(m_tripsBox);
@@ -167,11 +168,11 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
             [this](int index) { confirmMode(m_mode->itemData(index).toInt()); });
     connect(m_mode, &QComboBox::currentIndexChanged, this, &ModesPage::describe);
     connect(m_write, &QPushButton::clicked, this, &ModesPage::openWriteDialog);
-    connect(session->store(), &ParameterStore::valueChanged, this, [this](const QString &k) {
+    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
         if (k == kModeKey || k == kTripsKey)
             refresh();
     });
-    connect(session->store(), &ParameterStore::editsChanged, this, &ModesPage::refresh);
+    connect(session->parameters(), &ParameterStore::editsChanged, this, &ModesPage::refresh);
     connect(session, &DeviceSession::linkStateChanged, this, &ModesPage::refresh);
     connect(session, &DeviceSession::disconnected, this, &ModesPage::refresh);
     retranslate();
@@ -206,7 +207,10 @@ void ModesPage::fitTable()
 
 std::optional<qint64> ModesPage::deviceMode() const
 {
-    return session()->store()->deviceValue(kModeKey);
+    // Editing a profile file (issue 18): the mode the file will hold.
+    if (session()->parameters()->isFile())
+        return session()->parameters()->shownValue(kModeKey);
+    return session()->parameters()->deviceValue(kModeKey);
 }
 
 int ModesPage::shownMode() const
@@ -226,6 +230,11 @@ void ModesPage::chooseMode(int mode)
 void ModesPage::confirmMode(int mode)
 {
     const Parameter *p = session()->map().find(kModeKey);
+    if (p && session()->parameters()->isFile()) { // a file's value: an edit, nothing is sent
+        session()->parameters()->edit(kModeKey, mode);
+        refresh();
+        return;
+    }
     if (!p || mode < 0 || mode >= kModeCount || !session()->isConnected() || deviceMode() == mode) {
         refresh();
         return;
@@ -265,19 +274,7 @@ void ModesPage::confirmMode(int mode)
 
 void ModesPage::openWriteDialog()
 {
-    if (!session()->isConnected())
-        return;
-    if (m_writeDialog)
-        m_writeDialog->close();
-    m_writeDialog = new WriteChangesDialog(*session()->store(), {kTripsKey}, this);
-    m_writeDialog->setAttribute(Qt::WA_DeleteOnClose);
-    if (m_writeDialog->writes().isEmpty()) {
-        m_writeDialog->deleteLater();
-        return;
-    }
-    connect(m_writeDialog, &QDialog::accepted, this,
-            [this, dialog = m_writeDialog.data()] { session()->write(dialog->writes()); });
-    m_writeDialog->open();
+    m_writeFlow->openFor({kTripsKey});
 }
 
 void ModesPage::refresh()
@@ -292,9 +289,10 @@ void ModesPage::refresh()
             m_mode->setCurrentIndex(index);
         }
     }
-    m_mode->setEnabled(connected && device.has_value() && !m_confirmation);
+    m_mode->setEnabled((connected || session()->parameters()->isFile()) && device.has_value() &&
+                       !m_confirmation);
     describe();
-    bool edited = session()->store()->entry(kTripsKey).edited.has_value();
+    bool edited = session()->parameters()->entry(kTripsKey).edited.has_value();
     m_write->setEnabled(connected && edited);
 }
 
@@ -302,9 +300,15 @@ void ModesPage::describe()
 {
     const std::optional<qint64> device = deviceMode();
     const int shown = shownMode();
-    m_current->setText(!device       ? tr("The controller's mode is not known yet.")
-                       : device == 0 ? tr("The controller runs normally.")
-                                     : tr("The controller is in special mode %1.").arg(*device));
+    if (session()->parameters()->isFile())
+        m_current->setText(!device       ? tr("The profile file does not set the mode.")
+                           : device == 0 ? tr("The profile sets the normal mode.")
+                                         : tr("The profile sets special mode %1.").arg(*device));
+    else
+        m_current->setText(!device ? tr("The controller's mode is not known yet.")
+                           : device == 0
+                               ? tr("The controller runs normally.")
+                               : tr("The controller is in special mode %1.").arg(*device));
     m_explanation->setText(shown >= 0 ? tr(kModes[shown].explanation) : QString());
     const bool ignoring =
         (shown >= 0 && kModes[shown].ignoresLimits) ||

@@ -3,6 +3,7 @@
 #include "page.h"
 
 #include "dialogs/writechangesdialog.h"
+#include "writeflow.h"
 
 #include <QMessageBox>
 #include <QPointer>
@@ -37,7 +38,7 @@ public:
     QLabel *explanation() const { return m_explanation; }
     ParameterForm *form() const { return m_form; }
     QPushButton *writeButton() const { return m_write; }
-    WriteChangesDialog *writeDialog() const { return m_writeDialog; }
+    WriteChangesDialog *writeDialog() const { return m_writeFlow->dialog(); }
     // What a user does: pick a mode in the list (asks before anything is written).
     void chooseMode(int mode);
 
@@ -69,7 +70,7 @@ private:
     QLabel *m_tripsNote;
     QPushButton *m_write;
     QPointer<QMessageBox> m_confirmation;
-    QPointer<WriteChangesDialog> m_writeDialog;
+    WriteFlow *m_writeFlow = nullptr;
 };
 
 } // namespace stepcom

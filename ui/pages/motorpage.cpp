@@ -30,7 +30,7 @@ MotorPage::MotorPage(DeviceSession *session, int motor, QWidget *parent)
     : Page(session, parent)
     , m_motor(motor)
 {
-    ParameterStore *store = session->store();
+    ParameterStore *store = session->parameters();
     QWidget *content = scrollableContent();
     auto *columns = new QHBoxLayout(content);
 
@@ -113,7 +113,7 @@ std::optional<double> MotorPage::shown(const QString &localKey) const
     const Parameter *p = session()->map().blockParameter(kMotor, m_motor, localKey);
     if (!p)
         return std::nullopt;
-    const std::optional<qint64> raw = session()->store()->shownValue(p->key);
+    const std::optional<qint64> raw = session()->parameters()->shownValue(p->key);
     if (!raw)
         return std::nullopt;
     return p->toEngineering(*raw);
@@ -139,7 +139,7 @@ void MotorPage::updateDerived()
     m_derived->setValues(derived(), pitch ? pitch->unit : QString());
     bool edited = false;
     for (const QString &k : std::as_const(m_keys))
-        edited = edited || session()->store()->entry(k).edited.has_value();
+        edited = edited || session()->parameters()->entry(k).edited.has_value();
     m_derivedNote->setText(
         edited ? tr("Computed from the values shown, including edits not written yet.")
                : tr("Computed from the values shown."));

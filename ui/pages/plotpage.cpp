@@ -1,7 +1,7 @@
 #include "pages/plotpage.h"
 
 #include "device/devicesession.h"
-#include "poll/statusrecorder.h"
+#include "device/statusrecorder.h"
 #include "widgets/positionplot.h"
 #include "widgets/xyplot.h"
 
@@ -36,9 +36,8 @@ QString nativePath(const QString &path)
 
 PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
-    , m_recorder(new StatusRecorder(session->map(), session->store(), this))
+    , m_recorder(session->recorder()) // the session records; this page shows and saves it
 {
-    m_recorder->attach(session->statusPoller());
     m_positions = new PositionPlot(m_recorder, this);
     m_xy = new XYPlot(this);
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/motorderived.h"
+#include "motion/motorderived.h"
 
 #include <QList>
 #include <QWidget>

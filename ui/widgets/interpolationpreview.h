@@ -1,6 +1,7 @@
 #pragma once
 
-#include "device/interpolationgeometry.h"
+#include "motion/interpolationgeometry.h"
+#include "motion/interpolationtiming.h"
 
 #include <QFileDialog>
 #include <QPointer>

@@ -1,9 +1,11 @@
 #include "widgets/jogpanel.h"
 
 #include "device/devicesession.h"
+#include "device/motionjudge.h"
+#include "device/motionsupervisor.h"
+#include "device/referencetracker.h"
 #include "i18n/translators.h"
 #include "language.h"
-#include "widgets/jogactivity.h"
 #include "widgets/jogbutton.h"
 #include "widgets/led.h"
 #include "widgets/parameterfield.h"
@@ -75,7 +77,7 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     auto *grid = new QGridLayout;
     m_speedLabel = new QLabel(this);
     if (const Parameter *p = param(QStringLiteral("speed"))) {
-        m_speed = new ParameterField(session->store(), *p, this);
+        m_speed = new ParameterField(session->parameters(), *p, this);
         m_speedLabel->setBuddy(m_speed->editor());
     }
     m_applySpeed = new QPushButton(this);
@@ -105,10 +107,11 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     grid->addWidget(m_homeLabel, 3, 0);
     grid->addWidget(m_homeInfo, 3, 1);
     grid->addWidget(m_home, 3, 2);
+    m_reference = new QLabel(this);
+    m_reference->setWordWrap(true);
+    grid->addWidget(m_reference, 4, 1, 1, 2);
     grid->setColumnStretch(1, 1);
     column->addLayout(grid);
-
-    m_activity = new JogActivity(session, {key(QStringLiteral("running"))}, this);
 
     connect(m_reverse, &JogButton::jogPressed, this, [this] {
         if (!m_jog->press(m_motor, JogController::Direction::Reverse))
@@ -122,38 +125,32 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     connect(m_forward, &JogButton::jogReleased, this, [this] { m_jog->release(m_motor); });
     // On press, not click: a stop must not wait for the button to come up, nor be lost by
     // sliding off it.
-    connect(m_stop, &QPushButton::pressed, this,
-            [this] { m_jog->stop(m_motor, tr("stop button")); });
+    connect(m_stop, &QPushButton::pressed, this, [this] {
+        m_jog->stop(m_motor, tr("stop button"));
+        letGo();
+    });
     connect(m_applySpeed, &QPushButton::clicked, this, &JogPanel::applySpeed);
     connect(m_move, &QPushButton::clicked, this, [this] { command(QStringLiteral("move")); });
     connect(m_home, &QPushButton::clicked, this, [this] { command(QStringLiteral("home")); });
 
-    connect(session->store(), &ParameterStore::valueChanged, this, [this](const QString &k) {
+    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
         if (m_keys.contains(k))
             refresh();
     });
-    connect(session->store(), &ParameterStore::editsChanged, this, &JogPanel::refresh);
+    connect(session->parameters(), &ParameterStore::editsChanged, this, &JogPanel::refresh);
     connect(session, &DeviceSession::linkStateChanged, this, &JogPanel::refresh);
-    connect(session, &DeviceSession::commandFinished, this, [this](const QString &k, bool ok) {
-        if (!ok)
-            return;
-        if (k == key(QStringLiteral("move")))
-            m_activity->start(tr("Single move"));
-        else if (k == key(QStringLiteral("home")))
-            m_activity->start(tr("Homing"));
+    MotionSupervisor *motion = session->motion();
+    connect(motion, &MotionSupervisor::changed, this, &JogPanel::refresh);
+    connect(motion, &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
+        if (o.axis(m_motor))
+            m_hideOutcome = false;
     });
-    connect(m_activity, &JogActivity::changed, this, &JogPanel::refresh);
-    connect(m_activity, &JogActivity::finished, this, [this](const QString &what) {
-        m_done = tr("%1 done").arg(what);
-        refresh();
-    });
+    connect(motion->references(), &ReferenceTracker::changed, this, &JogPanel::refresh);
     connect(jog, &JogController::stateChanged, this, [this](int n) {
         if (n != m_motor)
             return;
-        if (m_jog->state(n) == JogController::State::Jogging) {
-            m_activity->clear();
-            m_done.clear();
-        }
+        if (m_jog->state(n) == JogController::State::Jogging)
+            m_hideOutcome = true;
         refresh();
     });
     retranslate();
@@ -179,27 +176,34 @@ QList<QWidget *> JogPanel::tabChain() const
     return chain;
 }
 
+void JogPanel::letGo()
+{
+    m_reverse->letGo();
+    m_forward->letGo();
+    refresh();
+}
+
 void JogPanel::applySpeed()
 {
     const Parameter *p = param(QStringLiteral("speed"));
     if (!p || !m_session->isConnected())
         return;
-    if (const auto edited = m_session->store()->entry(p->key).edited)
+    if (const auto edited = m_session->parameters()->entry(p->key).edited)
         m_session->write({{p, *edited}}); // verified by read-back, like "Write changes"
 }
 
 void JogPanel::command(const QString &localKey)
 {
     if (const QString k = key(localKey); !k.isEmpty() && m_session->isConnected()) {
-        m_done.clear();
         m_session->command(k);
     }
 }
 
 bool JogPanel::motorBusy() const
 {
-    return m_jog->state(m_motor) != JogController::State::Idle || m_activity->isActive() ||
-           m_session->store()->deviceValue(key(QStringLiteral("running"))).value_or(0) != 0;
+    return m_jog->state(m_motor) != JogController::State::Idle ||
+           m_session->motion()->active(m_motor).has_value() ||
+           m_session->parameters()->deviceValue(key(QStringLiteral("running"))).value_or(0) != 0;
 }
 
 QString JogPanel::moveBlocker() const
@@ -213,7 +217,7 @@ QString JogPanel::moveBlocker() const
         const Parameter *p = param(QLatin1String(local));
         if (!p)
             continue;
-        const ParameterStore::Entry e = m_session->store()->entry(p->key);
+        const ParameterStore::Entry e = m_session->parameters()->entry(p->key);
         if (!e.device)
             unknown << p->label.text(lang);
         else if (e.edited)
@@ -232,7 +236,7 @@ QString JogPanel::moveBlocker() const
 
 QString JogPanel::moveText() const
 {
-    const ParameterStore *store = m_session->store();
+    const ParameterStore *store = m_session->parameters();
     const QString lang = Language::instance().current();
     const Parameter *distance = param(QStringLiteral("move_distance"));
     const Parameter *direction = param(QStringLiteral("direction"));
@@ -252,14 +256,14 @@ QString JogPanel::moveText() const
 QString JogPanel::positionText() const
 {
     const Parameter *p = param(QStringLiteral("position"));
-    const auto raw = p ? m_session->store()->deviceValue(p->key) : std::nullopt;
+    const auto raw = p ? m_session->parameters()->deviceValue(p->key) : std::nullopt;
     return raw ? p->displayRaw(*raw, Language::instance().current()) : QStringLiteral("—");
 }
 
 QString JogPanel::statusText() const
 {
     using State = JogController::State;
-    const auto running = m_session->store()->deviceValue(key(QStringLiteral("running")));
+    const auto running = m_session->parameters()->deviceValue(key(QStringLiteral("running")));
     switch (m_jog->state(m_motor)) {
     case State::Jogging:
         return m_jog->direction(m_motor) == JogController::Direction::Forward
@@ -274,20 +278,28 @@ QString JogPanel::statusText() const
     case State::Idle:
         break;
     }
-    if (m_activity->isActive())
-        return running.value_or(0) ? tr("%1… running").arg(m_activity->what())
-                                   : tr("%1…").arg(m_activity->what());
+    const MotionSupervisor *motion = m_session->motion();
+    if (const auto active = motion->active(m_motor))
+        return running.value_or(0) ? tr("%1… running").arg(MotionJudge::name(*active))
+                                   : tr("%1…").arg(MotionJudge::name(*active));
     if (!running)
         return tr("Unknown");
     if (*running)
         return tr("Running");
-    return m_done.isEmpty() ? tr("Idle") : tr("Idle — %1").arg(m_done);
+    // The last judged outcome, in words made now (a language switch retranslates it).
+    const auto last = motion->lastOutcome(m_motor);
+    return last && !m_hideOutcome ? tr("Idle — %1").arg(motion->text(*last)) : tr("Idle");
+}
+
+QString JogPanel::referenceText() const
+{
+    return m_session->motion()->references()->text(m_motor);
 }
 
 void JogPanel::refresh()
 {
     const bool connected = m_session->isConnected();
-    const ParameterStore *store = m_session->store();
+    const ParameterStore *store = m_session->parameters();
     const auto running = store->deviceValue(key(QStringLiteral("running")));
     m_led->setState(!running ? Led::State::Unknown : *running ? Led::State::On : Led::State::Off);
     m_status->setText(statusText());
@@ -316,7 +328,10 @@ void JogPanel::refresh()
     m_speedNote->setVisible(!m_speedNote->text().isEmpty());
 
     const QString blocker = moveBlocker();
-    m_moveInfo->setText(moveText());
+    // Said before the move, not found out after it: a limit already ON in its direction.
+    const QString warning = m_session->motion()->startWarning(key(QStringLiteral("move")));
+    m_moveInfo->setText(warning.isEmpty() ? moveText()
+                                          : QStringLiteral("%1\n⚠ %2").arg(moveText(), warning));
     m_move->setEnabled(blocker.isEmpty() && !key(QStringLiteral("move")).isEmpty());
     m_move->setToolTip(blocker.isEmpty()
                            ? tr("Move once by the distance shown, in the direction and at the "
@@ -336,6 +351,7 @@ void JogPanel::refresh()
         m_homeInfo->setText(
             tr("Reverse until %1, then position 0.").arg(home->displayRaw(*input, lang)));
     m_home->setEnabled(connected && !motorBusy() && !key(QStringLiteral("home")).isEmpty());
+    m_reference->setText(tr("Reference: %1").arg(referenceText()));
 }
 
 void JogPanel::changeEvent(QEvent *event)

@@ -1,8 +1,7 @@
 #include "widgets/linkstatus.h"
 
-#include "bus/modbuslink.h"
 #include "device/devicesession.h"
-#include "poll/poller.h"
+#include "device/linkhealth.h"
 
 #include <QDateTime>
 #include <QEvent>
@@ -29,7 +28,8 @@ LinkStatus::LinkStatus(DeviceSession *session, QWidget *parent)
     m_unsaved->setFont(bold);
     m_state->setFont(bold);
     connect(session, &DeviceSession::linkStateChanged, this, &LinkStatus::refresh);
-    connect(session->store(), &ParameterStore::unsavedChanged, this, &LinkStatus::refresh);
+    connect(session->health(), &LinkHealth::stateChanged, this, &LinkStatus::refresh);
+    connect(session->parameters(), &ParameterStore::unsavedChanged, this, &LinkStatus::refresh);
     connect(&m_timer, &QTimer::timeout, this, &LinkStatus::refresh);
     m_timer.start(1000);
     refresh();
@@ -49,30 +49,48 @@ QString LinkStatus::stateText() const
 
 void LinkStatus::refresh()
 {
-    const ModbusLink *link = m_session->link();
-    switch (link->state()) {
-    case ModbusLink::State::Connected:
+    // Green "Connected" only once the controller answered; amber while it does not.
+    const LinkHealth *health = m_session->health();
+    QColor colour = palette().color(QPalette::WindowText);
+    switch (health->state()) {
+    case LinkHealth::State::Answering:
         m_state->setText(m_session->isSimulator() ? tr("Connected (simulator)") : tr("Connected"));
+        colour = QColor(0, 140, 0);
         break;
-    case ModbusLink::State::Connecting:
+    case LinkHealth::State::NotAnswering:
+        m_state->setText(tr("Not answering"));
+        colour = QColor(200, 120, 0);
+        break;
+    case LinkHealth::State::Asking:
+        m_state->setText(tr("Port open, waiting for an answer…"));
+        break;
+    case LinkHealth::State::Opening:
         m_state->setText(tr("Connecting…"));
         break;
-    case ModbusLink::State::Disconnected:
+    case LinkHealth::State::Closed:
         m_state->setText(tr("Disconnected"));
         break;
     }
-    m_where->setText(
-        link->state() == ModbusLink::State::Disconnected ? QString() : link->settings().describe());
-    const LinkStats &s = link->stats();
+    QPalette pal = m_state->palette();
+    pal.setColor(QPalette::WindowText, colour);
+    m_state->setPalette(pal);
+    m_state->setToolTip(health->state() == LinkHealth::State::NotAnswering
+                            ? LinkHealth::likelyCauses()
+                            : QString());
+    m_where->setText(m_session->linkState() == DeviceSession::LinkState::Disconnected
+                         ? QString()
+                         : m_session->settings().describe());
+    const LinkStats &s = m_session->linkStats();
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     if (m_lastMs > 0 && now > m_lastMs && s.answers >= m_lastAnswers)
         m_perSecond = double(s.answers - m_lastAnswers) * 1000.0 / double(now - m_lastMs);
     m_lastAnswers = s.answers;
     m_lastMs = now;
-    m_rate->setText(link->isConnected() ? tr("%1 transactions/s · status %2 Hz")
-                                              .arg(m_perSecond, 0, 'f', 1)
-                                              .arg(m_session->statusPoller()->rate(), 0, 'f', 1)
-                                        : QString());
+    m_rate->setText(m_session->isConnected() ? tr("%1 transactions/s · status %2 Hz")
+                                                   .arg(m_perSecond, 0, 'f', 1)
+                                                   .arg(m_session->statusRate(), 0, 'f', 1)
+                                             : QString());
+    // Counted from this connection's start (the session resets them on every connect).
     m_errors->setText(tr("errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)")
                           .arg(s.errors())
                           .arg(s.timeouts)
@@ -90,9 +108,9 @@ void LinkStatus::refresh()
                             .arg(s.maxRoundTripMs)
                             .arg(s.meanRoundTripMs, 0, 'f', 0)
                             .arg(suggested)
-                            .arg(link->settings().timeoutMs));
-    m_unsaved->setText(m_session->store()->unsavedToFlash() ? tr("⚠ Not saved to flash")
-                                                            : QString());
+                            .arg(m_session->settings().timeoutMs));
+    m_unsaved->setText(m_session->parameters()->unsavedToFlash() ? tr("⚠ Not saved to flash")
+                                                                 : QString());
     m_unsaved->setToolTip(
         tr("Parameters were written but not saved to the controller's flash: they are lost "
            "when it loses power. Use Save to flash."));

@@ -1,6 +1,8 @@
 #include "widgets/patheditor.h"
 
 #include "device/devicesession.h"
+#include "device/motionjudge.h"
+#include "device/motionsupervisor.h"
 #include "dialogs/writechangesdialog.h"
 #include "widgets/parameterfield.h"
 #include "widgets/parameterform.h"
@@ -49,7 +51,8 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
     , m_prefix(kind == Kind::Arc ? QStringLiteral("arc.") : QStringLiteral("line."))
 {
     setObjectName(kind == Kind::Arc ? QStringLiteral("arcEditor") : QStringLiteral("lineEditor"));
-    ParameterStore *store = session->store();
+    m_writeFlow = new WriteFlow(session, this);
+    ParameterStore *store = session->parameters();
     auto *layout = new QVBoxLayout(this);
 
     m_parameterBox = new QGroupBox(this);
@@ -115,6 +118,11 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
     m_reason->setObjectName(QStringLiteral("startReason"));
     m_reason->setWordWrap(true);
     runLayout->addWidget(m_reason);
+    m_outcome = new QLabel(m_runBox);
+    m_outcome->setObjectName(QStringLiteral("outcome"));
+    m_outcome->setWordWrap(true);
+    m_outcome->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    runLayout->addWidget(m_outcome);
     layout->addWidget(m_runBox);
     layout->addStretch(1);
 
@@ -128,6 +136,11 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
     connect(session, &DeviceSession::linkStateChanged, this, &PathEditor::update);
     connect(session, &DeviceSession::connected, this, &PathEditor::update);
     connect(session, &DeviceSession::disconnected, this, &PathEditor::update);
+    connect(session->motion(), &MotionSupervisor::changed, this, &PathEditor::update);
+    connect(session->motion(), &MotionSupervisor::emergencyStopSent, this, [this] {
+        m_startSent.stop(); // nothing waits for a start any more
+        update();
+    });
     connect(m_write, &QPushButton::clicked, this, &PathEditor::openWriteDialog);
     m_startSent.setSingleShot(true);
     m_startSent.setInterval(1500);
@@ -172,7 +185,7 @@ Point PathEditor::typedPoint(const char *name) const
 MotorParameters PathEditor::motor(int n) const
 {
     // What the controller holds: it runs with those, not with edits on the motor pages.
-    const ParameterStore *store = m_session->store();
+    const ParameterStore *store = m_session->parameters();
     return interpolation::motorParameters(
         m_session->map(), n, [store](const QString &k) { return store->deviceValue(k); });
 }
@@ -181,7 +194,7 @@ Geometry PathEditor::geometry() const
 {
     if (m_kind == Kind::Line)
         return interpolation::line(typedPoint("start"), typedPoint("end"));
-    interpolation::ArcInput in;
+    interpolation::ArcSetup in;
     in.mode = typed("mode").value_or(0) == 1 ? interpolation::ArcMode::ThreePoints
                                              : interpolation::ArcMode::Centre;
     in.start = typedPoint("start");
@@ -199,8 +212,8 @@ std::optional<QPointF> PathEditor::position() const
     const Parameter *y = map.blockParameter(QStringLiteral("motor"), 2, QStringLiteral("position"));
     if (!x || !y || !m_session->isConnected())
         return std::nullopt;
-    const auto rx = m_session->store()->deviceValue(x->key);
-    const auto ry = m_session->store()->deviceValue(y->key);
+    const auto rx = m_session->parameters()->deviceValue(x->key);
+    const auto ry = m_session->parameters()->deviceValue(y->key);
     if (!rx || !ry)
         return std::nullopt;
     return QPointF(x->toEngineering(*rx), y->toEngineering(*ry));
@@ -211,7 +224,7 @@ bool PathEditor::anyMotorRunning() const
     for (int n = 1; n <= 2; ++n) {
         const Parameter *p =
             m_session->map().blockParameter(QStringLiteral("motor"), n, QStringLiteral("running"));
-        if (p && m_session->store()->deviceValue(p->key).value_or(0) != 0)
+        if (p && m_session->parameters()->deviceValue(p->key).value_or(0) != 0)
             return true;
     }
     return false;
@@ -229,7 +242,7 @@ QString PathEditor::startBlockedReason() const
 {
     if (!m_session->isConnected())
         return tr("Not connected.");
-    const ParameterStore *store = m_session->store();
+    const ParameterStore *store = m_session->parameters();
     for (const ParameterField *f : m_form->fields()) {
         if (f->isTyping())
             return tr("A value is being typed: press Enter to keep it, then write it.");
@@ -330,11 +343,25 @@ void PathEditor::update()
         m_startSent.stop(); // the poll saw it start
     const QString reason = startBlockedReason();
     m_start->setEnabled(reason.isEmpty());
-    m_reason->setText(reason.isEmpty() ? tr("Ready: Start runs the path shown, as written.")
-                                       : reason);
+    // Said before Start, not found out after it: an axis driven into a limit already ON.
+    const QString warning =
+        reason.isEmpty() ? m_session->motion()->startWarning(m_prefix + QStringLiteral("start"))
+                         : QString();
+    m_reason->setText(!reason.isEmpty()   ? reason
+                      : warning.isEmpty() ? tr("Ready: Start runs the path shown, as written.")
+                                          : tr("⚠ Start is possible, but: %1").arg(warning));
+    const MotionKind kind = m_kind == Kind::Arc ? MotionKind::Arc : MotionKind::Line;
+    const MotionSupervisor *motion = m_session->motion();
+    if (const auto active = motion->active(kind))
+        m_outcome->setText(tr("%1: running…").arg(MotionJudge::name(*active)));
+    else if (const auto last = motion->lastOutcome(kind))
+        m_outcome->setText(tr("Last run: %1").arg(motion->text(*last)));
+    else
+        m_outcome->clear();
+    m_outcome->setVisible(!m_outcome->text().isEmpty());
     bool edited = false;
     for (const QString &k : std::as_const(m_keys))
-        edited = edited || m_session->store()->entry(k).edited.has_value();
+        edited = edited || m_session->parameters()->entry(k).edited.has_value();
     m_write->setEnabled(connected && edited);
     // Stopping depends on nothing but the link.
     m_stop->setEnabled(connected);
@@ -343,19 +370,7 @@ void PathEditor::update()
 
 void PathEditor::openWriteDialog()
 {
-    if (!m_session->isConnected())
-        return;
-    if (m_writeDialog)
-        m_writeDialog->close();
-    m_writeDialog = new WriteChangesDialog(*m_session->store(), m_keys, this);
-    m_writeDialog->setAttribute(Qt::WA_DeleteOnClose);
-    if (m_writeDialog->writes().isEmpty()) {
-        m_writeDialog->deleteLater();
-        return;
-    }
-    connect(m_writeDialog, &QDialog::accepted, this,
-            [this, dialog = m_writeDialog.data()] { m_session->write(dialog->writes()); });
-    m_writeDialog->open();
+    m_writeFlow->openFor(m_keys);
 }
 
 void PathEditor::retranslate()

@@ -1,8 +1,10 @@
 #pragma once
 
-#include "device/interpolationgeometry.h"
+#include "motion/interpolationgeometry.h"
+#include "motion/interpolationtiming.h"
 
 #include "dialogs/writechangesdialog.h"
+#include "writeflow.h"
 
 #include <QPointer>
 #include <QTimer>
@@ -42,7 +44,9 @@ public:
     QPushButton *stopButton() const { return m_stop; }
     QPushButton *writeButton() const { return m_write; }
     QLabel *startReason() const { return m_reason; }
-    WriteChangesDialog *writeDialog() const { return m_writeDialog; }
+    // How the last run of this path ended (judged from the controller), or that it runs.
+    QLabel *outcomeLabel() const { return m_outcome; }
+    WriteChangesDialog *writeDialog() const { return m_writeFlow->dialog(); }
 
     // The geometry of what the fields show now, typing included.
     interpolation::Geometry geometry() const;
@@ -92,7 +96,8 @@ private:
     QPushButton *m_start;
     QPushButton *m_stop;
     QLabel *m_reason;
-    QPointer<WriteChangesDialog> m_writeDialog;
+    QLabel *m_outcome;
+    WriteFlow *m_writeFlow = nullptr;
     QTimer m_startSent; // a start was sent and the poll has not seen it yet
 };
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "poll/statusrecorder.h"
+#include "device/statusrecorder.h"
 
 #include "widgets/navigablechartview.h"
 #include <QTimer>

@@ -1,8 +1,9 @@
 #include "widgets/statusdock.h"
 
 #include "device/devicesession.h"
+#include "device/motionsupervisor.h"
+#include "device/referencetracker.h"
 #include "language.h"
-#include "poll/poller.h"
 #include "widgets/led.h"
 
 #include <QComboBox>
@@ -81,6 +82,10 @@ StatusDock::StatusDock(DeviceSession *session, QWidget *parent)
         auto *state = new QLabel(box);
         grid->addWidget(led, 1, 0);
         grid->addWidget(state, 1, 1);
+        auto *reference = new QLabel(box);
+        reference->setWordWrap(true);
+        grid->addWidget(reference, 2, 0, 1, 3);
+        m_references << reference;
         grid->setColumnStretch(2, 1);
         rows->addWidget(box);
         m_motorBoxes << box;
@@ -134,20 +139,19 @@ StatusDock::StatusDock(DeviceSession *session, QWidget *parent)
     intervalRow->addWidget(m_intervalCaption);
     intervalRow->addWidget(m_interval, 1);
     rows->addLayout(intervalRow);
-    Poller *poller = session->statusPoller();
     // STEPCOM_POLL_INTERVAL_MS (benchmarks, scripts) wins over the remembered choice.
     if (!qEnvironmentVariableIsSet("STEPCOM_POLL_INTERVAL_MS"))
-        poller->setIntervalMs(
+        session->setStatusIntervalMs(
             QSettings()
-                .value(QStringLiteral("monitor/pollIntervalMs"), poller->intervalMs())
+                .value(QStringLiteral("monitor/pollIntervalMs"), session->statusIntervalMs())
                 .toInt());
-    const int current = m_interval->findData(poller->intervalMs());
+    const int current = m_interval->findData(session->statusIntervalMs());
     if (current < 0)
-        m_interval->addItem(QString(), poller->intervalMs());
+        m_interval->addItem(QString(), session->statusIntervalMs());
     m_interval->setCurrentIndex(current < 0 ? m_interval->count() - 1 : current);
     connect(m_interval, &QComboBox::activated, this, [this](int index) {
         const int ms = m_interval->itemData(index).toInt();
-        m_session->statusPoller()->setIntervalMs(ms);
+        m_session->setStatusIntervalMs(ms);
         QSettings().setValue(QStringLiteral("monitor/pollIntervalMs"), ms);
     });
     rows->addStretch(1);
@@ -156,12 +160,14 @@ StatusDock::StatusDock(DeviceSession *session, QWidget *parent)
     m_refresh.setSingleShot(true);
     m_refresh.setInterval(0);
     connect(&m_refresh, &QTimer::timeout, this, &StatusDock::refresh);
-    connect(session->store(), &ParameterStore::valueChanged, this, [this](const QString &key) {
+    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &key) {
         if (key.startsWith(QLatin1String("io.")) || m_positionKeys.contains(key) ||
             m_runningKeys.contains(key))
             scheduleRefresh();
     });
     connect(session, &DeviceSession::linkStateChanged, this, &StatusDock::scheduleRefresh);
+    connect(session->motion()->references(), &ReferenceTracker::changed, this,
+            &StatusDock::scheduleRefresh);
     connect(&m_rateTimer, &QTimer::timeout, this, &StatusDock::refreshRate);
     m_rateTimer.start(1000);
     retranslate();
@@ -197,9 +203,14 @@ void StatusDock::scheduleRefresh()
         m_refresh.start();
 }
 
+QString StatusDock::referenceText(int motor) const
+{
+    return m_session->motion()->references()->text(motor);
+}
+
 void StatusDock::refresh()
 {
-    const ParameterStore *store = m_session->store();
+    const ParameterStore *store = m_session->parameters();
     const RegisterMap &map = m_session->map();
     const QString lang = Language::instance().current();
     for (int m = 0; m < m_positions.size(); ++m) {
@@ -211,6 +222,7 @@ void StatusDock::refresh()
         const auto running =
             m_runningKeys.at(m).isEmpty() ? std::nullopt : store->deviceValue(m_runningKeys.at(m));
         m_runningLeds.at(m)->setState(lampState(running));
+        m_references.at(m)->setText(referenceText(m + 1));
         m_running.at(m)->setText(!running ? tr("unknown")
                                           : (*running ? tr("Running") : tr("Stopped")));
         m_running.at(m)->setEnabled(running.has_value());
@@ -232,13 +244,13 @@ void StatusDock::refresh()
 
 void StatusDock::refreshRate()
 {
-    const Poller *poller = m_session->statusPoller();
-    if (!m_session->isConnected() || !poller->isActive())
+    const double rate = m_session->statusRate();
+    if (!m_session->isConnected() || !m_session->isStatusActive())
         m_rate->setText(tr("unknown"));
-    else if (poller->rate() <= 0.0)
+    else if (rate <= 0.0)
         m_rate->setText(tr("measuring…"));
     else
-        m_rate->setText(tr("%1 Hz").arg(poller->rate(), 0, 'f', 1));
+        m_rate->setText(tr("%1 Hz").arg(rate, 0, 'f', 1));
     m_rate->setEnabled(m_session->isConnected());
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "bus/trafficlog.h"
+#include "device/devicesession.h" // TrafficLog
 
 #include <QAbstractTableModel>
 #include <QWidget>

@@ -28,7 +28,7 @@ raw("duplicate-top.json", text.replace('"schema": 1,', '"schema": 1,\n    "schem
 variant("wrong-format.json", lambda g: g.update(format="something-else"), 'not a StepCom profile: "format" must be "stepcom-profile", found a text "something-else"')
 variant("register-map.json", lambda g: g.update(format="stepcom-register-map"), "this is a register map, not a profile")
 variant("no-format.json", lambda g: g.pop("format"), 'not a StepCom profile: "format" must be "stepcom-profile", found nothing')
-variant("newer-schema.json", lambda g: g.update(schema=2), "profile schema 2 is newer than this StepCom reads (1)")
+variant("newer-schema.json", lambda g: g.update(schema=3), "profile schema 3 is newer than this StepCom reads (2)")
 variant("schema-string.json", lambda g: g.update(schema="1"), '"schema" must be a whole number, found a text "1"')
 variant("other-map.json", lambda g: g.update(map={"id": "stepper5", "version": 1}), 'the profile is for register map "stepper5" version 1, but the controller\'s map is "stepper2" version 1')
 variant("other-map-version.json", lambda g: g.update(map={"id": "stepper2", "version": 7}), 'register map "stepper2" version 7, but')
@@ -57,6 +57,7 @@ variant("metadata-unknown.json", lambda g: g["metadata"].update(owner="me"), '"m
 
 with open("corpus/expected.tsv", "w") as f:
     f.write("# file<TAB>a part of the error message it must give (tst_profilefile); make-corpus.py\n")
+    f.write("# other-map*.json are refused only when other maps are refused (the window); stepcomctl opens them as variants\n")
     for name, content, expected in cases:
         with open("corpus/" + name, "wb") as out:
             out.write(content.encode("latin1") if name == "binary.json" else content.encode())

@@ -1,0 +1,41 @@
+#include "report/reportinput.h"
+
+#include "commissioning/checklistfile.h"
+#include "profile/profile.h"
+
+#include <QFileInfo>
+
+namespace stepcom {
+
+ReportInput ReportInput::fromProfile(const RegisterMap &map, const Profile &profile,
+                                     const QString &path, const QString &locale)
+{
+    ReportInput in;
+    in.map = map;
+    for (auto it = profile.values.cbegin(); it != profile.values.cend(); ++it)
+        in.values.insert(it.key(), it.value());
+    in.deviceId = profile.deviceId;
+    in.title = profile.name;
+    in.notes = profile.notes;
+    in.date = QDateTime::currentDateTime();
+    in.locale = locale;
+    in.sourceFile = QFileInfo(path).fileName();
+    in.fileCreated = profile.created;
+    in.fileStepcomVersion = profile.stepcomVersion;
+    in.fileBaud = profile.baud;
+    if (profile.variance.isVariant())
+        in.fileMap = profile.variance.fileMap;
+    in.notFromFile = profile.variance.describe(map, locale);
+    in.travelLimits = profile.travelLimits;
+    if (const QString checklist = ChecklistFile::pathFor(path); QFileInfo::exists(checklist)) {
+        const ChecklistParseResult r = ChecklistFile::load(checklist, map);
+        in.checklistFile = QFileInfo(checklist).fileName();
+        if (r.ok())
+            in.checklist = *r.checklist;
+        else
+            in.checklistErrors = r.errors;
+    }
+    return in;
+}
+
+} // namespace stepcom

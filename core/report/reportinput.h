@@ -1,0 +1,59 @@
+#pragma once
+
+#include "commissioning/checklist.h"
+#include "map/registermap.h"
+#include "motion/travellimits.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QHash>
+#include <QStringList>
+
+#include <optional>
+
+namespace stepcom {
+
+struct Profile;
+
+// Everything the commissioning sheet shows: raw values as read from a controller, or as a
+// profile file holds them (then `sourceFile` is set and the sheet says so everywhere).
+struct ReportInput
+{
+    Q_DECLARE_TR_FUNCTIONS(stepcom::ReportInput)
+public:
+    RegisterMap map;
+    QHash<QString, qint64> values;
+    QString link; // LinkSettings::describe()
+    int deviceId = 0;
+    QString title; // e.g. the machine's name
+    QString notes;
+    QDateTime date;
+    QString locale; // "zh_CN" for the map's Chinese labels, else English
+
+    // Made from a file, not read from a controller: the file's name, and what its metadata
+    // says about the controller it was saved from (information only).
+    QString sourceFile;
+    QDateTime fileCreated;
+    QString fileStepcomVersion;
+    int fileBaud = 0;
+    QString fileMap;         // the profile's register map when it is another one ("stepper3/1")
+    QStringList notFromFile; // what of the file this map cannot show (ProfileVariance lines)
+
+    // The commissioning checklist run on this machine (the certificate's results), the name of
+    // its file, or why a checklist file beside the profile could not be read (then no report
+    // should be made: a certificate must not silently lose its results).
+    std::optional<Checklist> checklist;
+    QString checklistFile;
+    QStringList checklistErrors;
+    TravelLimits travelLimits; // StepCom's software limits, shown when set
+
+    bool fromFile() const { return !sourceFile.isEmpty(); }
+
+    // The sheet of a profile file (`path` names it): its values and metadata, the name and
+    // notes of the profile unless `title`/`notes` are given, its travel limits, and the
+    // checklist kept beside it (ChecklistFile::pathFor) when there is one.
+    static ReportInput fromProfile(const RegisterMap &map, const Profile &profile,
+                                   const QString &path, const QString &locale);
+};
+
+} // namespace stepcom

@@ -1,0 +1,273 @@
+#include "bus/modbuslink.h"
+#include "device/deviceclient.h"
+#include "device/devicesession.h"
+#include "device/parameterstore.h"
+#include "device/poller.h"
+#include "device/sessioninternals.h"
+#include "scripteddevice.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+#include "simsession.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace stepcom;
+using namespace stepcom::test;
+
+namespace {
+
+// Every poll request of a run: which block, and how many poll requests were out at once
+// (queued or on the wire; a retry is the same request again).
+struct PollWatch
+{
+    QList<std::pair<int, int>> blocks; // address, count, in dispatch order
+    QList<Request> dispatched;         // every request, polls or not
+    int maxOutstanding = 0;
+    QSet<quint64> onWire;
+    QObject context; // the connections end with the watch
+
+    void attach(ModbusLink *link)
+    {
+        QObject::connect(
+            link, &ModbusLink::dispatched, &context, [this, link](quint64 id, const Request &r) {
+                dispatched << r;
+                if (r.priority != Priority::Poll)
+                    return;
+                blocks << std::make_pair(int(r.address), int(r.count));
+                onWire.insert(id);
+                maxOutstanding = std::max(maxOutstanding, int(onWire.size()) + link->queuedCount());
+            });
+        QObject::connect(
+            link, &ModbusLink::finished, &context,
+            [this](quint64 id, const Request &, const Result &) { onWire.remove(id); });
+    }
+};
+
+const std::pair<int, int> kPositions{107, 4};   // 40108-40111
+const std::pair<int, int> kRunning{167, 2};     // 40168-40169
+const std::pair<int, int> kStatusLow{107, 20};  // 40108-40127: positions .. inputs
+const std::pair<int, int> kStatusHigh{147, 22}; // 40148-40169: outputs .. running
+
+} // namespace
+
+class TestPoller : public QObject
+{
+    Q_OBJECT
+
+    std::unique_ptr<DeviceSession> session;
+
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
+
+    // A session on the built-in simulator, polling as fast as the link allows.
+    void connectFullRate()
+    {
+        session = std::make_unique<DeviceSession>();
+        SessionInternals::poller(*session)->setIntervalMs(0);
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        test::useBuiltinSimulator(*session);
+        session->connectSimulator();
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
+        QTRY_VERIFY(SessionInternals::poller(*session)->stats().cycles >= 2);
+    }
+
+private Q_SLOTS:
+    void cleanup() { session.reset(); }
+
+    void sessionPollsTheStatusAndMovesFastWithTheMotors()
+    {
+        const DeviceSession idle;
+        const Poller *poller = SessionInternals::poller(idle);
+        QCOMPARE(poller->keys().size(), 11);
+        QCOMPARE(poller->fastKeys(), (QStringList{"motor1.position", "motor2.position",
+                                                  "motor1.running", "motor2.running"}));
+    }
+
+    void intervalFromTheEnvironment()
+    {
+        qputenv("STEPCOM_POLL_INTERVAL_MS", "0");
+        QCOMPARE(Poller::intervalFromEnvironment(100), 0);
+        QCOMPARE(SessionInternals::poller(DeviceSession())->intervalMs(), 0);
+        qputenv("STEPCOM_POLL_INTERVAL_MS", "fast");
+        QCOMPARE(Poller::intervalFromEnvironment(100), 100);
+        qputenv("STEPCOM_POLL_INTERVAL_MS", "-5");
+        QCOMPARE(Poller::intervalFromEnvironment(100), 100);
+        qunsetenv("STEPCOM_POLL_INTERVAL_MS");
+        QCOMPARE(SessionInternals::poller(DeviceSession())->intervalMs(), 100);
+    }
+
+    // A silent device: each cycle waits for its timeouts, and no poll piles up behind them --
+    // not even when the poller is stopped and started again while a request is out.
+    void silentDeviceNeverBuildsAQueue_data()
+    {
+        QTest::addColumn<bool>("simulator");
+        QTest::newRow("no answer at all") << false;
+        QTest::newRow("simulator drops every answer") << true;
+    }
+    void silentDeviceNeverBuildsAQueue()
+    {
+        QFETCH(bool, simulator);
+        ScriptedDevice scripted;
+        SimHost host;
+        LinkSettings s;
+        QString error;
+        if (simulator) {
+            SimOptions options;
+            options.rtu = true;
+            options.faults.drop = 1.0;
+            QVERIFY2(host.start(options, &error), qPrintable(error));
+            s.portName = host.rtuPath();
+        } else {
+            QVERIFY2(scripted.open(&error), qPrintable(error));
+            s.portName = scripted.clientPath();
+        }
+        s.timeoutMs = 100;
+        s.retries = 1;
+        ModbusLink link;
+        link.setQuietTimeMs(20);
+        DeviceClient client(&link, RegisterMap::builtin());
+        ParameterStore store(RegisterMap::builtin());
+        Poller poller(&client, &store);
+        poller.useStatusKeys();
+        poller.setIntervalMs(0);
+        PollWatch watch;
+        watch.attach(&link);
+        QSignalSpy cycles(&poller, &Poller::cycleFinished);
+        link.open(s);
+        QTRY_VERIFY(link.isConnected());
+        poller.start();
+        QTest::qWait(150);
+        poller.stop(); // with a request out: the restart must wait for it
+        poller.start();
+        QTRY_VERIFY_WITH_TIMEOUT(cycles.size() >= 2, 5000);
+        for (const QList<QVariant> &c : std::as_const(cycles))
+            QVERIFY(!c.at(0).toBool());
+        QVERIFY(!poller.lastError().isEmpty());
+        QCOMPARE(watch.maxOutstanding, 1);
+        // Each request waited for its timeout: two blocks, two attempts each per cycle.
+        QVERIFY2(watch.blocks.size() <= 4 * (cycles.size() + 1),
+                 qPrintable(QString::number(watch.blocks.size())));
+        QVERIFY(store.deviceValue(QStringLiteral("motor1.position")) == std::nullopt);
+    }
+
+    void neverOverlapsAtFullRate()
+    {
+        connectFullRate();
+        if (QTest::currentTestFailed())
+            return;
+        PollWatch watch;
+        watch.attach(SessionInternals::link(*session));
+        Poller *poller = SessionInternals::poller(*session);
+        poller->resetStats();
+        QTRY_VERIFY_WITH_TIMEOUT(poller->stats().cycles >= 6, 5000);
+        QCOMPARE(watch.maxOutstanding, 1);
+        QCOMPARE(poller->stats().failed, 0);
+        QVERIFY(poller->rate() > 0.0);
+        // Idle motors: every cycle is the full status, in its two planned reads.
+        for (const auto &b : std::as_const(watch.blocks))
+            QVERIFY(b == kStatusLow || b == kStatusHigh);
+    }
+
+    void intervalLimitsTheRate()
+    {
+        connectFullRate();
+        if (QTest::currentTestFailed())
+            return;
+        Poller *poller = SessionInternals::poller(*session);
+        poller->setIntervalMs(300);
+        QTest::qWait(300); // let the cycle under way finish
+        poller->resetStats();
+        QTest::qWait(1000);
+        QVERIFY2(poller->stats().cycles <= 4, qPrintable(QString::number(poller->stats().cycles)));
+        QVERIFY(poller->stats().cycles >= 2);
+    }
+
+    void fastKeysWhileAMotorRuns()
+    {
+        connectFullRate();
+        if (QTest::currentTestFailed())
+            return;
+        Poller *poller = SessionInternals::poller(*session);
+        QVERIFY(!poller->isFast());
+        PollWatch watch;
+        watch.attach(SessionInternals::link(*session));
+        QVERIFY(sim()->command(QStringLiteral("motor1.forward")));
+        QTRY_VERIFY_WITH_TIMEOUT(poller->isFast(), 2000);
+        watch.blocks.clear();
+        poller->resetStats();
+        QTRY_VERIFY_WITH_TIMEOUT(poller->stats().cycles >= 9, 5000);
+        QVERIFY(sim()->running(1));
+        // Fast cycles read positions and running flags only; every 4th is the full status.
+        const int fast = int(watch.blocks.count(kPositions));
+        const int full = int(watch.blocks.count(kStatusLow));
+        QCOMPARE(watch.blocks.count(kRunning), fast);
+        QCOMPARE(watch.blocks.count(kStatusHigh), full);
+        QCOMPARE(fast + full + fast + full, int(watch.blocks.size()));
+        QVERIFY2(full >= 1 && fast >= 2 * full,
+                 qPrintable(QStringLiteral("%1 fast, %2 full").arg(fast).arg(full)));
+        QVERIFY(poller->stats().fastCycles >= 6);
+        QCOMPARE(watch.maxOutstanding, 1);
+        const qint64 before =
+            session->parameters()->deviceValue(QStringLiteral("motor1.position")).value_or(0);
+        QTRY_VERIFY(
+            session->parameters()->deviceValue(QStringLiteral("motor1.position")).value_or(0) >
+            before);
+
+        QVERIFY(sim()->command(QStringLiteral("motor1.stop")));
+        QTRY_VERIFY_WITH_TIMEOUT(!poller->isFast(), 2000);
+        watch.blocks.clear();
+        poller->resetStats();
+        QTRY_VERIFY_WITH_TIMEOUT(poller->stats().cycles >= 3, 5000);
+        QCOMPARE(poller->stats().fastCycles, 0);
+        QVERIFY(!watch.blocks.contains(kPositions));
+    }
+
+    void motionCommandSwitchesToFastAtOnce()
+    {
+        connectFullRate();
+        if (QTest::currentTestFailed())
+            return;
+        Poller *poller = SessionInternals::poller(*session);
+        QSignalSpy fast(poller, &Poller::fastChanged);
+        QSignalSpy done(session.get(), &DeviceSession::commandFinished);
+        session->command(QStringLiteral("motor1.forward"));
+        QTRY_COMPARE(done.size(), 1);
+        const int cyclesAtAck = poller->stats().cycles;
+        QTRY_VERIFY_WITH_TIMEOUT(!fast.isEmpty(), 2000);
+        // at most the cycle under way when the answer came, then the fast one
+        QVERIFY(poller->stats().cycles <= cyclesAtAck + 1);
+        QCOMPARE(fast.first().at(0).toBool(), true);
+        session->command(QStringLiteral("motor1.stop"));
+        QTRY_VERIFY(!sim()->running(1));
+    }
+
+    // The emergency stop is the very next request on the wire after the poll in flight.
+    void emergencyStopGoesNextWhilePollingAtFullRate()
+    {
+        connectFullRate();
+        if (QTest::currentTestFailed())
+            return;
+        const Parameter *estop = session->map().find(QStringLiteral("estop"));
+        QVERIFY(estop);
+        PollWatch watch;
+        watch.attach(SessionInternals::link(*session));
+        for (int round = 0; round < 4; ++round) {
+            QVERIFY(sim()->command(QStringLiteral("motor1.forward")));
+            QTRY_VERIFY(sim()->running(1));
+            QTest::qWait(60 + 37 * round); // land at different points of a cycle
+            const qsizetype before = watch.dispatched.size();
+            session->emergencyStop();
+            QTRY_VERIFY(watch.dispatched.size() > before);
+            const Request next = watch.dispatched.at(before);
+            QCOMPARE(next.type, Request::Type::WriteCoil);
+            QCOMPARE(int(next.address), int(estop->address));
+            QTRY_VERIFY_WITH_TIMEOUT(!sim()->running(1), 1000);
+        }
+        QCOMPARE(watch.maxOutstanding, 1);
+        QVERIFY(SessionInternals::poller(*session)->isActive());
+        QTRY_VERIFY(!SessionInternals::poller(*session)->isFast());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPoller)
+#include "tst_poller.moc"

@@ -1,0 +1,102 @@
+#include "device/devicesession.h"
+#include "dialogs/writechangesdialog.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+#include "simsession.h"
+#include "writeflow.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <QWidget>
+
+using namespace stepcom;
+
+// WriteFlow: the window's one way from "write" to the controller -- what the dialog shows,
+// what accepting it writes, and when it opens nothing.
+class TestWriteFlow : public QObject
+{
+    Q_OBJECT
+    std::unique_ptr<DeviceSession> session;
+    std::unique_ptr<QWidget> parent;
+
+    SimDevice *sim() const { return test::simHost(*session)->device(); }
+    static QStringList keysOf(const QList<ParameterWrite> &writes)
+    {
+        QStringList keys;
+        for (const ParameterWrite &w : writes)
+            keys << w.parameter->key;
+        return keys;
+    }
+
+private Q_SLOTS:
+    void init()
+    {
+        session = std::make_unique<DeviceSession>();
+        parent = std::make_unique<QWidget>();
+    }
+    void cleanup()
+    {
+        parent.reset();
+        session.reset();
+    }
+
+    void opensNothingWhileDisconnected()
+    {
+        WriteFlow flow(session.get(), parent.get());
+        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
+        QVERIFY(!flow.openAll());
+        QVERIFY(!flow.openFor({QStringLiteral("motor1.speed")}));
+        QVERIFY(!flow.dialog());
+    }
+
+    void opensNothingWithoutEdits()
+    {
+        test::connectToSimulator(*session);
+        WriteFlow flow(session.get(), parent.get());
+        QVERIFY(!flow.openAll());
+        QVERIFY(session->parameters()->edit(QStringLiteral("motor2.speed"), 500).isEmpty());
+        QVERIFY(!flow.openFor({QStringLiteral("motor1.speed")})); // only other keys are edited
+        QVERIFY(!flow.dialog());
+    }
+
+    void writesOnlyTheKeysAskedForAndKeepsTheRest()
+    {
+        test::connectToSimulator(*session);
+        WriteFlow flow(session.get(), parent.get());
+        ParameterStore *store = session->parameters();
+        QVERIFY(store->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
+        QVERIFY(store->edit(QStringLiteral("motor2.speed"), 500).isEmpty());
+        QVERIFY(flow.openFor({QStringLiteral("motor1.speed")}));
+        QVERIFY(flow.dialog());
+        QCOMPARE(keysOf(flow.dialog()->writes()), QStringList{QStringLiteral("motor1.speed")});
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // nothing before accepting
+        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        flow.dialog()->accept();
+        QTRY_COMPARE(written.size(), 1);
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
+        QCOMPARE(store->state(QStringLiteral("motor1.speed")), ParameterStore::State::InSync);
+        QCOMPARE(store->state(QStringLiteral("motor2.speed")), ParameterStore::State::Edited);
+        QCOMPARE(*sim()->value(QStringLiteral("motor2.speed")), 300);
+    }
+
+    void aNewRequestReplacesTheOpenDialogAndRejectingWritesNothing()
+    {
+        test::connectToSimulator(*session);
+        WriteFlow flow(session.get(), parent.get());
+        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
+        QVERIFY(session->parameters()->edit(QStringLiteral("motor2.speed"), 500).isEmpty());
+        QVERIFY(flow.openFor({QStringLiteral("motor1.speed")}));
+        QPointer<WriteChangesDialog> first = flow.dialog();
+        QVERIFY(flow.openAll());
+        QTRY_VERIFY(!first); // closed and gone
+        QCOMPARE(flow.dialog()->writes().size(), 2);
+        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        flow.dialog()->reject();
+        QTest::qWait(100);
+        QCOMPARE(written.size(), 0);
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
+    }
+};
+
+QTEST_MAIN(TestWriteFlow)
+#include "tst_writeflow.moc"
