@@ -103,6 +103,7 @@ void ModbusLink::open(const LinkSettings &settings)
     m_settings = settings;
     ++m_attempt;
     m_failing = false;
+    m_closingReason.clear(); // a callback reopens while the link closes: submit queues again
     m_openPending = true;
     setState(State::Connecting, settings.describe());
 
@@ -185,8 +186,11 @@ void ModbusLink::failLink(const QString &reason)
     const bool wasConnected = m_state == State::Connected;
     qCInfo(lcBus) << "link failed:" << reason;
     m_traffic->addEvent(tr("link lost: %1").arg(reason));
+    const quint64 attempt = m_attempt;
     close(reason);
-    finishOpen(false, reason);
+    // A callback may have opened the link again: that attempt's verdict is its own.
+    if (attempt == m_attempt)
+        finishOpen(false, reason);
     if (wasConnected)
         Q_EMIT lost(reason);
 }
@@ -203,7 +207,18 @@ void ModbusLink::close(const QString &reason)
         backend->deleteLater();
     }
     const QString why = reason.isEmpty() ? tr("link closed") : reason;
+    // The results run callbacks, and those submit follow-ups (a write's read-back, the next
+    // poll) or even open the link again. Until the state says so, the link still looks
+    // connected: what is submitted meanwhile fails with the rest instead of waiting in the
+    // queue of a closed link, unless a callback opened a new connection, which owns the
+    // state from then on.
+    const quint64 attempt = m_attempt;
+    m_closingReason = why;
     failAll(why);
+    if (attempt != m_attempt)
+        return;
+    m_closingReason.clear();
+    Q_ASSERT(!m_inFlight && m_queue.isEmpty());
     if (m_state != State::Disconnected)
         m_traffic->addEvent(tr("disconnected: %1").arg(why));
     setState(State::Disconnected, why);
@@ -213,17 +228,21 @@ void ModbusLink::close(const QString &reason)
 
 void ModbusLink::failAll(const QString &reason)
 {
-    QList<QueuedRequest> items = m_queue.takeAll();
-    if (m_inFlight)
-        items.prepend(*std::exchange(m_inFlight, std::nullopt));
-    for (QueuedRequest &item : items) {
+    const quint64 attempt = m_attempt;
+    const auto fail = [this, &reason](QueuedRequest item) {
         Result r;
         r.error = QModbusDevice::ConnectionError;
         r.attempts = item.attempts;
         r.mayHaveActed = item.attempts > 0 && item.request.type == Request::Type::WriteCoil;
         r.errorText = tr("%1: not done, %2").arg(describe(item.request), reason);
         complete(std::move(item), r);
-    }
+    };
+    if (m_inFlight)
+        fail(*std::exchange(m_inFlight, std::nullopt));
+    // One at a time: a callback may submit more (they fail too) or open the link again (then
+    // what is still queued goes out on the new connection).
+    while (attempt == m_attempt && !m_queue.isEmpty())
+        fail(m_queue.takeNext());
 }
 
 quint64 ModbusLink::submit(Request request, ResultCallback callback, QObject *context)
@@ -235,6 +254,11 @@ quint64 ModbusLink::submit(Request request, ResultCallback callback, QObject *co
     item.context = context;
     item.hasContext = context != nullptr;
     const quint64 id = item.id;
+    if (!m_closingReason.isEmpty()) {
+        // Submitted by a callback while the link closes (see close()): it fails with the rest.
+        m_queue.push(std::move(item));
+        return id;
+    }
     if (m_state != State::Connected) {
         Result r;
         r.error = QModbusDevice::ConnectionError;

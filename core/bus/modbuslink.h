@@ -32,7 +32,8 @@ public:
 
     // Connect; `opened(ok, reason)` follows exactly once for this attempt.
     void open(const LinkSettings &settings);
-    // Disconnect; everything queued fails with "link closed".
+    // Disconnect; everything queued and in flight fails with "link closed" (or `reason`), and
+    // so does what their callbacks submit meanwhile -- unless a callback opened the link again.
     void close(const QString &reason = QString());
     State state() const { return m_state; }
     bool isConnected() const { return m_state == State::Connected; }
@@ -101,7 +102,8 @@ private:
     LinkStats m_stats;
     TrafficLog *m_traffic;
     bool m_failing = false;
-    quint64 m_attempt = 0; // connect attempts, so stale deferred checks do nothing
+    QString m_closingReason; // while close() fails what was queued; empty otherwise
+    quint64 m_attempt = 0;   // connect attempts, so stale deferred checks do nothing
 };
 
 } // namespace stepcom

@@ -336,6 +336,87 @@ private Q_SLOTS:
         QVERIFY(after.result.errorText.contains(QStringLiteral("not connected")));
     }
 
+    // Every request ends exactly once, also the ones a failing request's callback submits on
+    // its way out (a write's read-back, the next poll): the soak hung on a read-back queued
+    // while the vanishing link was still "connected" and then never failed or sent.
+    void followUpsOfFailedRequestsEndWhenThePortVanishes()
+    {
+        openLink(300, 2); // silent device: the first request hangs in flight
+        QList<Outcome> outcomes(4);
+        link->submit(Request::read(0, 1), [&](const Result &r) {
+            outcomes[0] = {true, r};
+            link->submit(Request::read(1, 1), into(&outcomes[1]));
+        });
+        link->submit(Request::write(2, {5}), [&](const Result &r) {
+            outcomes[2] = {true, r};
+            link->submit(Request::read(2, 1), into(&outcomes[3]));
+        });
+        QTRY_COMPARE(device->requests().size(), 1);
+        device->bridge().close();
+        for (int i = 0; i < outcomes.size(); ++i) {
+            QTRY_VERIFY2_WITH_TIMEOUT(outcomes.at(i).done, qPrintable(QString::number(i)), 5000);
+            QVERIFY(!outcomes.at(i).result.ok);
+        }
+        QCOMPARE(link->state(), ModbusLink::State::Disconnected);
+        QVERIFY(!link->isBusy());
+        QCOMPARE(link->queuedCount(), 0);
+    }
+
+    void followUpsOfFailedRequestsEndWhenTheLinkIsClosed()
+    {
+        openLink(5000, 0);
+        Outcome first;
+        Outcome followUp;
+        link->submit(Request::read(0, 1), [&](const Result &r) {
+            first = {true, r};
+            link->submit(Request::read(1, 1), into(&followUp));
+        });
+        QTRY_COMPARE(device->requests().size(), 1);
+        link->close(QStringLiteral("the user pressed Disconnect"));
+        QVERIFY(first.done);
+        QTRY_VERIFY_WITH_TIMEOUT(followUp.done, 5000);
+        QVERIFY(!followUp.result.ok);
+        QVERIFY2(followUp.result.errorText.contains(QStringLiteral("the user pressed Disconnect")),
+                 qPrintable(followUp.result.errorText));
+        QCOMPARE(link->queuedCount(), 0);
+    }
+
+    // A callback that reconnects while the link closes gets a link that opens (the closing
+    // must not declare the new attempt failed), and it works.
+    void reopenedFromACallbackWhileClosingOpens()
+    {
+        device->useRegisterDevice();
+        device->registers[3] = 42;
+        // The first request is held in flight (no answer), then closed under it.
+        device->setResponder([this](const QByteArray &r, int index) -> std::optional<QByteArray> {
+            if (index == 0)
+                return std::nullopt;
+            return device->registerDevice(r);
+        });
+        openLink(5000, 0);
+        const LinkSettings settings = link->settings();
+        QSignalSpy opened(link.get(), &ModbusLink::opened);
+        Outcome first;
+        link->submit(Request::read(0, 1), [&](const Result &r) {
+            first = {true, r};
+            link->open(settings);
+        });
+        QTRY_COMPARE(device->requests().size(), 1);
+        link->close(QStringLiteral("switching"));
+        QVERIFY(first.done);
+        QVERIFY(!first.result.ok);
+        QTRY_COMPARE_WITH_TIMEOUT(opened.size(), 1, 5000);
+        QVERIFY2(opened.at(0).at(0).toBool(), qPrintable(opened.at(0).at(1).toString()));
+        QVERIFY(link->isConnected());
+        Outcome after;
+        link->submit(Request::read(3, 1), into(&after));
+        QTRY_VERIFY_WITH_TIMEOUT(after.done, 5000);
+        QVERIFY2(after.result.ok, qPrintable(after.result.errorText));
+        QCOMPARE(after.result.values, QVector<quint16>{42});
+        QTest::qWait(100);
+        QCOMPARE(opened.size(), 1);
+    }
+
     void missingPortIsNamed()
     {
         LinkSettings s;
