@@ -157,6 +157,68 @@ private Q_SLOTS:
               link->stats().stale);
     }
 
+    // The owed answer: a read times out without retries, the next read (another address, the
+    // same count, so content cannot tell the answers apart) would go out after the quiet time
+    // and meet the late answer past its earliest time. The answer the timed-out read still
+    // owes keeps the next request back until it came (or two timeouts passed), so every value
+    // reported read is the one at the address asked for.
+    void lateAnswerOwedToATimedOutReadIsNotTakenByTheNextRead_data()
+    {
+        QTest::addColumn<bool>("overTcp");
+        QTest::newRow("pty") << false;
+        QTest::newRow("RTU over TCP") << true;
+    }
+    void lateAnswerOwedToATimedOutReadIsNotTakenByTheNextRead()
+    {
+        QFETCH(bool, overTcp);
+        SimOptions options;
+        options.rtu = !overTcp;
+        options.rtuTcp = overTcp;
+        options.faults.late = 0.5;
+        // After the timeout (300) plus the quiet time (100), before two timeouts: the answer
+        // lands while the next read would be on the wire.
+        options.faults.lateMs = 450;
+        options.faults.seed = 3;
+        QVERIFY(startSim(options));
+        for (int i = 0; i < keys().size(); ++i)
+            QVERIFY(host->device()->setValue(keys().at(i).first, 101 + i));
+        LinkSettings s;
+        if (overTcp) {
+            s.transport = LinkSettings::Transport::RtuTcp;
+            s.tcpPort = host->rtuTcpPort();
+        } else {
+            s.portName = host->rtuPath();
+        }
+        s.timeoutMs = 300;
+        s.retries = 0;
+        QVERIFY(openLink(s));
+        QCOMPARE(link->quietTimeMs(), 100);
+        int ok = 0;
+        int timedOut = 0;
+        for (int round = 0; round < 3; ++round) {
+            for (int i = 0; i < keys().size(); ++i) {
+                const auto &[key, address] = keys().at(i);
+                const Result read = run(Request::read(address, 1));
+                if (read.ok) {
+                    ++ok;
+                    if (qint64(read.values.value(0)) != *host->device()->value(key))
+                        QFAIL(qPrintable(QStringLiteral("%1 read as %2, the controller holds %3: "
+                                                        "a late answer to another read")
+                                             .arg(key)
+                                             .arg(read.values.value(0))
+                                             .arg(*host->device()->value(key))));
+                } else {
+                    QVERIFY2(read.error == QModbusDevice::TimeoutError, qPrintable(read.errorText));
+                    ++timedOut;
+                }
+            }
+        }
+        // Both happened: the case was really exercised.
+        QVERIFY(ok > 0);
+        QVERIFY(timedOut > 0);
+        QVERIFY(host->stats().late > 0);
+    }
+
     // An FC06 answer for another address (01 06 00 50 ... to a write of 00 B0) is not the answer.
     void echoOffIsDetectedAndSuggested()
     {
