@@ -1,8 +1,8 @@
 // Soak: thousands of Modbus transactions against the simulator on a bad line -- lost answers,
 // broken CRCs, late answers, exception answers and the port hanging up every few hundred
-// answers, optionally through an adapter that echoes every byte it sends -- while the status poller
-// runs, motors are jogged and parameters written, the way a technician would. It asserts what the
-// tool promises on such a line:
+// answers, through an adapter that echoes every byte it sends (STEPCOM_SOAK_ECHO=0: without) --
+// while the status poller runs, motors are jogged and parameters written, the way a technician
+// would. It asserts what the tool promises on such a line:
 //   - no crash, no hang: every write, jog and request ends, within generous bounds (QTRY_);
 //   - the link recovers: after every hang-up the session connects again and reads;
 //   - every failed write is reported, and never shown as written: a key is "in sync" only when
@@ -15,6 +15,7 @@
 // runs a long one. STEPCOM_SOAK_SEED picks other fault dice.
 
 #include "bus/modbuslink.h"
+#include "bus/trafficlog.h"
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
 #include "device/poller.h"
@@ -173,7 +174,10 @@ class TestSoak : public QObject
                     reported = reported || severity == DeviceSession::Severity::Error;
                 });
         session->writeChanges();
-        QTRY_VERIFY_WITH_TIMEOUT(done.has_value(), 60000);
+        if (!QTest::qWaitFor([&] { return done.has_value(); }, 60000)) {
+            reportHang();
+            QFAIL("a parameter write never finished");
+        }
         const WriteOutcome outcome = *done;
 
         QSet<QString> mismatched;
@@ -210,6 +214,17 @@ class TestSoak : public QObject
             if (QTest::currentTestFailed())
                 return;
         }
+    }
+
+    // What the link was doing when something never ended, so a hang names its request.
+    void reportHang()
+    {
+        const ModbusLink *link = SessionInternals::link(*session);
+        qWarning("hang: link state %d, busy %d, queued %d, open requests %lld", int(link->state()),
+                 int(link->isBusy()), link->queuedCount(), static_cast<long long>(open.size()));
+        const QList<TrafficEntry> &log = link->traffic()->entries();
+        for (qsizetype i = std::max<qsizetype>(0, log.size() - 40); i < log.size(); ++i)
+            qWarning("  %s", qPrintable(TrafficLog::format(log.at(i))));
     }
 
     void jogOnce()
@@ -271,7 +286,8 @@ private Q_SLOTS:
         options.rtu = true;
         options.linkPath = linkPath;
         options.answerDelayMs = 5; // more transactions a second; the faults are what counts
-        options.echo = true;       // an adapter that hears itself, on top of everything
+        // An adapter that hears itself, on top of everything (STEPCOM_SOAK_ECHO=0: without).
+        options.echo = qEnvironmentVariable("STEPCOM_SOAK_ECHO") != u"0";
         options.faults.drop = 0.03;
         options.faults.corruptCrc = 0.03;
         options.faults.late = 0.03;
@@ -366,10 +382,10 @@ private Q_SLOTS:
 
         const SimHost::Stats st = sim->stats();
         const double endRss = residentMiB();
-        qInfo("soak: %llu transactions (%llu put on the wire), %d reconnects, writes %d ok / %d "
-              "failed (%d keys), %d jogs (%d cut off by a hang-up); simulator: %d dropped, %d "
-              "corrupted, %d late, %d exceptions; RSS %.1f -> %.1f MiB",
-              static_cast<unsigned long long>(finished),
+        qInfo("soak (echo %s): %llu transactions (%llu put on the wire), %d reconnects, writes %d "
+              "ok / %d failed (%d keys), %d jogs (%d cut off by a hang-up); simulator: %d dropped, "
+              "%d corrupted, %d late, %d exceptions; RSS %.1f -> %.1f MiB",
+              sim->options().echo ? "on" : "off", static_cast<unsigned long long>(finished),
               static_cast<unsigned long long>(dispatched), reconnects, writesOk, writesFailed,
               keysFailed, jogs, jogsCutOff, st.dropped, st.corrupted, st.late, st.exceptions,
               warmRss, endRss);
