@@ -129,7 +129,9 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
     for (ParameterField *f : m_form->fields())
         connect(f, &ParameterField::typing, this, &PathEditor::update);
     connect(store, &ParameterStore::valueChanged, this, [this](const QString &k) {
-        if (m_keys.contains(k) || k.startsWith(QLatin1String("motor")))
+        // The start warning reads the limit inputs and the mode too, not only the axes.
+        if (m_keys.contains(k) || k.startsWith(QLatin1String("motor")) ||
+            k.startsWith(QLatin1String("io.in")) || k == QLatin1String("mode.system"))
             update();
     });
     connect(store, &ParameterStore::editsChanged, this, &PathEditor::update);
