@@ -1,6 +1,7 @@
 #include "widgets/checklistmotionstep.h"
 
 #include "device/devicesession.h"
+#include "device/motionjudge.h"
 #include "device/motionsupervisor.h"
 
 #include <QComboBox>
@@ -31,7 +32,19 @@ ChecklistMotionStep::ChecklistMotionStep(DeviceSession *session, WriteFlow *writ
             setStatus(tr("Not connected: nothing was sent."));
             return;
         }
-        m_running = commandKey();
+        const QString key = commandKey();
+        StatusValues now;
+        for (const Parameter *p : this->session()->map().holdings()) {
+            if (const auto v = this->session()->parameters()->deviceValue(p->key))
+                now.insert(p->key, *v);
+        }
+        // Only what the supervisor will follow to its end is run: its verdict decides the step.
+        if (!MotionJudge::plan(this->session()->map(), key, now)) {
+            setStatus(tr("Nothing to run: the homing order is empty, every motor runs, or the "
+                         "path's registers are not read yet."));
+            return;
+        }
+        m_running = key;
         const QString warning = this->session()->motion()->startWarning(m_running);
         this->session()->command(m_running);
         setStatus(warning.isEmpty() ? tr("Running…") : warning);
