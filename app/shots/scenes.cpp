@@ -490,6 +490,10 @@ void checklistMiswired(Shooter &s)
     script.then([&s] {
         s.simulator()->device()->setValue(QStringLiteral("motor1.limit_positive"), 1);
         s.session()->readAll();
+        // The next language's pictures start from an empty checklist again.
+        ChecklistPage *page = s.window()->checklistPage();
+        QFile::remove(page->checklistFile());
+        page->setProfilePath(page->profilePath());
     });
     script.sleep(500);
 }

@@ -71,6 +71,10 @@ ChecklistPage::ChecklistPage(DeviceSession *session, WriteFlow *writes, QWidget 
     m_problem->setWordWrap(true);
     m_problem->setObjectName(QStringLiteral("checklistProblem"));
     m_chooseProfile->setAutoDefault(false);
+    // Long step titles wrap instead of widening the list past a small screen.
+    m_list->setWordWrap(true);
+    m_list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_list->setResizeMode(QListView::Adjust);
     auto *top = new QHBoxLayout;
     top->addWidget(m_profileLabel, 1);
     top->addWidget(m_chooseProfile, 0, Qt::AlignTop);
