@@ -4,6 +4,7 @@
 #include "dialogs/writechangesdialog.h"
 #include "pages/checklistpage.h"
 #include "profile/backupstore.h"
+#include "profileactions.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
@@ -243,6 +244,20 @@ private Q_SLOTS:
         QCOMPARE(result(QStringLiteral("motor1.calibration")).result(), StepResult::Skipped);
         QVERIFY(page->summaryText().contains(QStringLiteral("2 skipped")));
         QVERIFY(page->reportChecklist());
+        // The report from the window carries the checklist run on the page.
+        ProfileActions actions(session.get(), window.get());
+        actions.setChecklistSource([this] { return page->reportChecklist(); });
+        const QString html = dir.filePath(QStringLiteral("report.html"));
+        QSignalSpy reported(&actions, &ProfileActions::finished);
+        actions.reportFile(html, QString());
+        QTRY_VERIFY_WITH_TIMEOUT(!reported.isEmpty(), 10000);
+        QVERIFY2(reported.first().at(0).toBool(), qPrintable(reported.first().at(1).toString()));
+        QFile report(html);
+        QVERIFY(report.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(report.readAll());
+        QVERIFY(text.contains(QStringLiteral("Motor 1: direction")));
+        QVERIFY(text.contains(QStringLiteral("no scale at hand")));
+        QVERIFY(text.contains(QStringLiteral("machine-a.checklist.json")));
         // A file that cannot be read is named and never saved over.
         QFile f(ChecklistFile::pathFor(profile()));
         QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
