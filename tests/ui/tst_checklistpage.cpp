@@ -121,6 +121,8 @@ private Q_SLOTS:
         const auto file = ChecklistFile::load(ChecklistFile::pathFor(profile()), session->map());
         QVERIFY(file.ok());
         QCOMPARE(file.checklist->step(QStringLiteral("motor1.direction"))->attempts.size(), 2);
+        // With the fingerprint of the settings it ran against (direction flipped included).
+        QCOMPARE(file.checklist->settingsFingerprint.size(), 19);
     }
 
     void calibrationProposesAndWritesThePitch()

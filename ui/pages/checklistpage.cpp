@@ -2,6 +2,8 @@
 
 #include "commissioning/checklistfile.h"
 #include "device/devicesession.h"
+#include "profile/profile.h"
+#include "profile/settingsfingerprint.h"
 #include "widgets/checklistcalibrationstep.h"
 #include "widgets/checklistdirectionstep.h"
 #include "widgets/checklistflashstep.h"
@@ -166,6 +168,15 @@ void ChecklistPage::onRecorded(const QString &id, StepResult result,
         m_problem->setText(e);
         return;
     }
+    // The settings this result was had with: the report warns when the machine's differ now.
+    QHash<QString, qint64> values;
+    for (const Parameter *p : Profile::profileParameters(session()->map(), false)) {
+        if (const auto v = session()->parameters()->deviceValue(p->key))
+            values.insert(p->key, *v);
+    }
+    if (values.size() == Profile::profileParameters(session()->map(), false).size())
+        m_checklist.settingsFingerprint =
+            SettingsFingerprint::shortHash(session()->map(), SettingsFingerprint::ordered(values));
     if (m_fileUsable) {
         QDir().mkpath(QFileInfo(m_file).absolutePath());
         if (const QString e = ChecklistFile::save(m_file, m_checklist); !e.isEmpty())
