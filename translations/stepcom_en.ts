@@ -76,6 +76,17 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BackupGuard</name>
+    <message>
+        <source>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</source>
+        <translation>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</translation>
+    </message>
+    <message>
+        <source>Backup of the controller&apos;s settings before %1: %2</source>
+        <translation>Backup of the controller&apos;s settings before %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BackupStore</name>
     <message>
         <source>apply a profile</source>
@@ -108,6 +119,45 @@
     <message>
         <source>Backup before %1</source>
         <translation>Backup before %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BackupsDialog</name>
+    <message>
+        <source>cannot be read: %1</source>
+        <translation>cannot be read: %1</translation>
+    </message>
+    <message>
+        <source>Backups</source>
+        <translation>Backups</translation>
+    </message>
+    <message>
+        <source>StepCom saves the controller&apos;s settings here before every apply, factory reset, save to flash and id or baud change: %1</source>
+        <translation>StepCom saves the controller&apos;s settings here before every apply, factory reset, save to flash and id or baud change: %1</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Device</translation>
+    </message>
+    <message>
+        <source>What happened after</source>
+        <translation>What happened after</translation>
+    </message>
+    <message>
+        <source>Restore…</source>
+        <translation>Restore…</translation>
+    </message>
+    <message>
+        <source>Compare the backup with the controller and apply what you check</source>
+        <translation>Compare the backup with the controller and apply what you check</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
     </message>
 </context>
 <context>
@@ -506,6 +556,92 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ChecklistCalibrationStep</name>
+    <message>
+        <source>Moving…</source>
+        <translation>Moving…</translation>
+    </message>
+    <message>
+        <source>The pitch was not written.</source>
+        <translation>The pitch was not written.</translation>
+    </message>
+    <message>
+        <source>Passed: the corrected pitch is written and verified.</source>
+        <translation>Passed: the corrected pitch is written and verified.</translation>
+    </message>
+    <message>
+        <source>Passed: the axis moved what it was told; the pitch stays %1 %2.</source>
+        <translation>Passed: the axis moved what it was told; the pitch stays %1 %2.</translation>
+    </message>
+    <message>
+        <source>Write the corrected pitch %1 %2…</source>
+        <translation>Write the corrected pitch %1 %2…</translation>
+    </message>
+    <message>
+        <source>Measured ÷ commanded = %1: the pitch %2 %3 should be %4 %3.</source>
+        <translation>Measured ÷ commanded = %1: the pitch %2 %3 should be %4 %3.</translation>
+    </message>
+    <message>
+        <source>Commanded: </source>
+        <translation>Commanded: </translation>
+    </message>
+    <message>
+        <source>Measured: </source>
+        <translation>Measured: </translation>
+    </message>
+    <message>
+        <source>Move this distance</source>
+        <translation>Move this distance</translation>
+    </message>
+    <message>
+        <source>Propose the pitch</source>
+        <translation>Propose the pitch</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistDirectionStep</name>
+    <message>
+        <source>The direction register is not read yet.</source>
+        <translation>The direction register is not read yet.</translation>
+    </message>
+    <message>
+        <source>Moving…</source>
+        <translation>Moving…</translation>
+    </message>
+    <message>
+        <source>The direction register is written and verified. Repeat the step to confirm the axis now moves toward +.</source>
+        <translation>The direction register is written and verified. Repeat the step to confirm the axis now moves toward +.</translation>
+    </message>
+    <message>
+        <source>The direction register was not written.</source>
+        <translation>The direction register was not written.</translation>
+    </message>
+    <message>
+        <source>Passed: the axis moves toward + with the direction as configured.</source>
+        <translation>Passed: the axis moves toward + with the direction as configured.</translation>
+    </message>
+    <message>
+        <source>Flip the direction to %1…</source>
+        <translation>Flip the direction to %1…</translation>
+    </message>
+    <message>
+        <source>Failed: the axis moved toward −. Flip the direction register, then repeat the step.</source>
+        <translation>Failed: the axis moved toward −. Flip the direction register, then repeat the step.</translation>
+    </message>
+    <message>
+        <source>Move a small step</source>
+        <translation>Move a small step</translation>
+    </message>
+    <message>
+        <source>Yes, toward +</source>
+        <translation>Yes, toward +</translation>
+    </message>
+    <message>
+        <source>No, toward −</source>
+        <translation>No, toward −</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ChecklistFile</name>
     <message>
         <source>null</source>
@@ -642,6 +778,163 @@
     <message>
         <source>cannot write %1: %2</source>
         <translation>cannot write %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistFlashStep</name>
+    <message>
+        <source>Not connected: nothing was sent.</source>
+        <translation>Not connected: nothing was sent.</translation>
+    </message>
+    <message>
+        <source>Not every setting is read yet (%1): read all first.</source>
+        <translation>Not every setting is read yet (%1): read all first.</translation>
+    </message>
+    <message>
+        <source>Saving to flash…</source>
+        <translation>Saving to flash…</translation>
+    </message>
+    <message>
+        <source>Failed: the save to flash was not done (see the messages).</source>
+        <translation>Failed: the save to flash was not done (see the messages).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ</source>
+        <translation>
+            <numerusform>%n setting differ</numerusform>
+            <numerusform>%n settings differ</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Failed: after the save these settings read back differently: %1</source>
+        <translation>Failed: after the save these settings read back differently: %1</translation>
+    </message>
+    <message>
+        <source>Failed: the settings could not be read back: %1</source>
+        <translation>Failed: the settings could not be read back: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) read back unchanged</source>
+        <translation>
+            <numerusform>%n setting read back unchanged</numerusform>
+            <numerusform>%n settings read back unchanged</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Passed: saved to flash, and all %n setting(s) read back unchanged.</source>
+        <translation>
+            <numerusform>Passed: saved to flash, and all %n setting read back unchanged.</numerusform>
+            <numerusform>Passed: saved to flash, and all %n settings read back unchanged.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save to flash and read back</source>
+        <translation>Save to flash and read back</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistInputStep</name>
+    <message>
+        <source>The input setting is written and verified. Repeat the step to confirm.</source>
+        <translation>The input setting is written and verified. Repeat the step to confirm.</translation>
+    </message>
+    <message>
+        <source>The input setting was not written.</source>
+        <translation>The input setting was not written.</translation>
+    </message>
+    <message>
+        <source>The inputs are not known yet: connect and wait for the status.</source>
+        <translation>The inputs are not known yet: connect and wait for the status.</translation>
+    </message>
+    <message>
+        <source>Watching the inputs: press the %1 of motor %2 now, let go, then click Done.</source>
+        <translation>Watching the inputs: press the %1 of motor %2 now, let go, then click Done.</translation>
+    </message>
+    <message>
+        <source>Write the fix (%1)…</source>
+        <translation>Write the fix (%1)…</translation>
+    </message>
+    <message>
+        <source>Press it now</source>
+        <translation>Press it now</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Done</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistMotionStep</name>
+    <message>
+        <source>Not connected: nothing was sent.</source>
+        <translation>Not connected: nothing was sent.</translation>
+    </message>
+    <message>
+        <source>Nothing to run: the homing order is empty, every motor runs, or the path&apos;s registers are not read yet.</source>
+        <translation>Nothing to run: the homing order is empty, every motor runs, or the path&apos;s registers are not read yet.</translation>
+    </message>
+    <message>
+        <source>Running…</source>
+        <translation>Running…</translation>
+    </message>
+    <message>
+        <source>The command was not acknowledged: nothing moved.</source>
+        <translation>The command was not acknowledged: nothing moved.</translation>
+    </message>
+    <message>
+        <source>Home motor %1</source>
+        <translation>Home motor %1</translation>
+    </message>
+    <message>
+        <source>Home in order</source>
+        <translation>Home in order</translation>
+    </message>
+    <message>
+        <source>Run the test</source>
+        <translation>Run the test</translation>
+    </message>
+    <message>
+        <source>The configured arc</source>
+        <translation>The configured arc</translation>
+    </message>
+    <message>
+        <source>The configured line</source>
+        <translation>The configured line</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistPage</name>
+    <message>
+        <source>Commissioning checklist</source>
+        <translation>Commissioning checklist</translation>
+    </message>
+    <message>
+        <source>The checklist file %1 cannot be used, and nothing is saved over it: %2</source>
+        <translation>The checklist file %1 cannot be used, and nothing is saved over it: %2</translation>
+    </message>
+    <message>
+        <source>The result is not saved: %1</source>
+        <translation>The result is not saved: %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s profile</source>
+        <translation>The machine&apos;s profile</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom profiles (*.json)</translation>
+    </message>
+    <message>
+        <source>No profile chosen: the progress is kept in %1. Choose the machine&apos;s profile to keep it beside it.</source>
+        <translation>No profile chosen: the progress is kept in %1. Choose the machine&apos;s profile to keep it beside it.</translation>
+    </message>
+    <message>
+        <source>Profile %1 — the progress is kept in %2</source>
+        <translation>Profile %1 — the progress is kept in %2</translation>
+    </message>
+    <message>
+        <source>Choose &amp;profile…</source>
+        <translation>Choose &amp;profile…</translation>
     </message>
 </context>
 <context>
@@ -793,6 +1086,25 @@
     <message>
         <source>Read back</source>
         <translation>Read back</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistStepWidget</name>
+    <message>
+        <source>Skipped.</source>
+        <translation>Skipped.</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was written.</source>
+        <translation>Not connected: nothing was written.</translation>
+    </message>
+    <message>
+        <source>&amp;Note:</source>
+        <translation>&amp;Note:</translation>
+    </message>
+    <message>
+        <source>S&amp;kip this step</source>
+        <translation>S&amp;kip this step</translation>
     </message>
 </context>
 <context>
@@ -1422,10 +1734,6 @@
         <translation>dump, report: notes to record.</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>no command given (params, read, write, command, monitor, dump, diff, apply, report)</translation>
-    </message>
-    <message>
         <source>report: make the report from this profile file, not from a controller.</source>
         <translation>report: make the report from this profile file, not from a controller.</translation>
     </message>
@@ -1434,12 +1742,32 @@
         <translation>profile</translation>
     </message>
     <message>
-        <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
-        <translation>apply: do not save a backup of the controller&apos;s settings before writing.</translation>
-    </message>
-    <message>
         <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
         <translation>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</translation>
+    </message>
+    <message>
+        <source>apply, command factory_reset/save_to_flash, write device.id/device.baud: do not save a backup of the controller&apos;s settings first.</source>
+        <translation>apply, command factory_reset/save_to_flash, write device.id/device.baud: do not save a backup of the controller&apos;s settings first.</translation>
+    </message>
+    <message>
+        <source>move: a step of this many axis units (+ or -).</source>
+        <translation>move: a step of this many axis units (+ or -).</translation>
+    </message>
+    <message>
+        <source>distance</source>
+        <translation>distance</translation>
+    </message>
+    <message>
+        <source>move: to this position (axis units).</source>
+        <translation>move: to this position (axis units).</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>position</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, report)</source>
+        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, report)</translation>
     </message>
 </context>
 <context>
@@ -1715,6 +2043,26 @@
     <message>
         <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
         <translation>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</translation>
+    </message>
+    <message>
+        <source>no backup of the controller&apos;s settings could be saved (%1): nothing was done (--no-backup goes on without one)</source>
+        <translation>no backup of the controller&apos;s settings could be saved (%1): nothing was done (--no-backup goes on without one)</translation>
+    </message>
+    <message>
+        <source>move needs one motor: move motor1 --by D or --to X</source>
+        <translation>move needs one motor: move motor1 --by D or --to X</translation>
+    </message>
+    <message>
+        <source>there is no motor %1 (this map has motor1 .. motor%2)</source>
+        <translation>there is no motor %1 (this map has motor1 .. motor%2)</translation>
+    </message>
+    <message>
+        <source>move needs exactly one of --by D and --to X</source>
+        <translation>move needs exactly one of --by D and --to X</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1: &apos;%2&apos; is not a number</translation>
     </message>
 </context>
 <context>
@@ -4463,6 +4811,26 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</source>
         <translation>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</translation>
     </message>
+    <message>
+        <source>The backup cannot be used</source>
+        <translation>The backup cannot be used</translation>
+    </message>
+    <message>
+        <source>Opened backup %1</source>
+        <translation>Opened backup %1</translation>
+    </message>
+    <message>
+        <source>&amp;Backups…</source>
+        <translation>&amp;Backups…</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s settings saved before each apply, factory reset, save to flash and id or baud change</source>
+        <translation>The controller&apos;s settings saved before each apply, factory reset, save to flash and id or baud change</translation>
+    </message>
+    <message>
+        <source>The software travel limits of %1 are in use now</source>
+        <translation>The software travel limits of %1 are in use now</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileCompareDialog</name>
@@ -4983,6 +5351,17 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SessionBackup</name>
+    <message>
+        <source>the session ended</source>
+        <translation>the session ended</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s settings could not be read: %1</source>
+        <translation>the controller&apos;s settings could not be read: %1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SimCommandLine</name>
     <message>
         <source>N</source>
@@ -5452,6 +5831,120 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::StepMove</name>
+    <message>
+        <source>There is no motor %1 (this controller has %2)</source>
+        <translation>There is no motor %1 (this controller has %2)</translation>
+    </message>
+    <message>
+        <source>This register map has no single move for motor %1</source>
+        <translation>This register map has no single move for motor %1</translation>
+    </message>
+    <message>
+        <source>Motor %1: the distance or position is not a number</source>
+        <translation>Motor %1: the distance or position is not a number</translation>
+    </message>
+    <message>
+        <source>Motor %1: a distance cannot be negative</source>
+        <translation>Motor %1: a distance cannot be negative</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was sent</source>
+        <translation>Not connected: nothing was sent</translation>
+    </message>
+    <message>
+        <source>A step is still running: wait for it to end</source>
+        <translation>A step is still running: wait for it to end</translation>
+    </message>
+    <message>
+        <source>Motor %1: the step uses the single-move distance and direction, and they hold edits that were not written. Write or revert them first.</source>
+        <translation>Motor %1: the step uses the single-move distance and direction, and they hold edits that were not written. Write or revert them first.</translation>
+    </message>
+    <message>
+        <source>Motor %1 is jogging: let go first</source>
+        <translation>Motor %1 is jogging: let go first</translation>
+    </message>
+    <message>
+        <source>Motor %1 is moving: wait until it ends</source>
+        <translation>Motor %1 is moving: wait until it ends</translation>
+    </message>
+    <message>
+        <source>Motor %1: could not read the position and the single-move values (%2): nothing was moved</source>
+        <translation>Motor %1: could not read the position and the single-move values (%2): nothing was moved</translation>
+    </message>
+    <message>
+        <source>Motor %1 is running: nothing was moved</source>
+        <translation>Motor %1 is running: nothing was moved</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 %3 is outside the position register&apos;s range</source>
+        <translation>Motor %1: %2 %3 is outside the position register&apos;s range</translation>
+    </message>
+    <message>
+        <source>Motor %1 already stands at %2 %3: nothing to move</source>
+        <translation>Motor %1 already stands at %2 %3: nothing to move</translation>
+    </message>
+    <message>
+        <source>Motor %1: a move of %2 %3 is more than the single move can do (%4 %3)</source>
+        <translation>Motor %1: a move of %2 %3 is more than the single move can do (%4 %3)</translation>
+    </message>
+    <message>
+        <source>the step&apos;s distance and direction could not be written (%1): nothing was moved</source>
+        <translation>the step&apos;s distance and direction could not be written (%1): nothing was moved</translation>
+    </message>
+    <message>
+        <source>the single move was not acknowledged: nothing was moved</source>
+        <translation>the single move was not acknowledged: nothing was moved</translation>
+    </message>
+    <message>
+        <source>distance %1 %2, direction %3</source>
+        <translation>distance %1 %2, direction %3</translation>
+    </message>
+    <message>
+        <source>%1. The single move&apos;s own values (%2) could not be put back: not connected. Write them again once the controller answers.</source>
+        <translation>%1. The single move&apos;s own values (%2) could not be put back: not connected. Write them again once the controller answers.</translation>
+    </message>
+    <message>
+        <source>%1. The single move&apos;s own values (%2) could not be put back: %3</source>
+        <translation>%1. The single move&apos;s own values (%2) could not be put back: %3</translation>
+    </message>
+    <message>
+        <source>The single move&apos;s own distance and direction are back (verified).</source>
+        <translation>The single move&apos;s own distance and direction are back (verified).</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::StepMovePanel</name>
+    <message>
+        <source>&amp;Step:</source>
+        <translation>&amp;Step:</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Custom</translation>
+    </message>
+    <message>
+        <source>− Step</source>
+        <translation>− Step</translation>
+    </message>
+    <message>
+        <source>+ Step</source>
+        <translation>+ Step</translation>
+    </message>
+    <message>
+        <source>Move &amp;to:</source>
+        <translation>Move &amp;to:</translation>
+    </message>
+    <message>
+        <source>Move to position</source>
+        <translation>Move to position</translation>
+    </message>
+    <message>
+        <source>Steps and move-to use this motor&apos;s single-move distance and direction registers, then write your own values back and verify them. They refuse while those fields hold unwritten edits, and any target beyond the software travel limits.</source>
+        <translation>Steps and move-to use this motor&apos;s single-move distance and direction registers, then write your own values back and verify them. They refuse while those fields hold unwritten edits, and any target beyond the software travel limits.</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::TrafficModel</name>
     <message>
         <source>Time</source>
@@ -5641,6 +6134,45 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</source>
         <translation>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TravelLimitsEditor</name>
+    <message>
+        <source>The saved software travel limits were not used: %1</source>
+        <translation>The saved software travel limits were not used: %1</translation>
+    </message>
+    <message>
+        <source>How far a jog can overrun a limit is worked out once the speed and pitch are read and the link has answered.</source>
+        <translation>How far a jog can overrun a limit is worked out once the speed and pitch are read and the link has answered.</translation>
+    </message>
+    <message>
+        <source>A hold-to-move jog can run past a limit by %1.</source>
+        <translation>A hold-to-move jog can run past a limit by %1.</translation>
+    </message>
+    <message>
+        <source>Software travel limits</source>
+        <translation>Software travel limits</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>Apply limits</source>
+        <translation>Apply limits</translation>
+    </message>
+    <message>
+        <source>StepCom&apos;s limits, not the controller&apos;s: a step or move-to beyond them is refused and a jog is stopped when the polled position crosses them. Saved with the connection settings and in profiles. If the link dies during a jog, only the limit switches stop the axis.</source>
+        <translation>StepCom&apos;s limits, not the controller&apos;s: a step or move-to beyond them is refused and a jog is stopped when the polled position crosses them. Saved with the connection settings and in profiles. If the link dies during a jog, only the limit switches stop the axis.</translation>
     </message>
 </context>
 <context>
@@ -5993,6 +6525,14 @@ file and its checklist, no controller needed)</translation>
 how it ended (--json), exit 0 only when done or referenced</source>
         <translation>pulse a motion command and wait until it ends; print
 how it ended (--json), exit 0 only when done or referenced</translation>
+    </message>
+    <message>
+        <source>move motorN by D or to X (axis units) with its single
+move; its own distance and direction are put back and
+verified; exit 0 only when it arrived</source>
+        <translation>move motorN by D or to X (axis units) with its single
+move; its own distance and direction are put back and
+verified; exit 0 only when it arrived</translation>
     </message>
 </context>
 </TS>

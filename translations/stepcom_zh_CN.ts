@@ -76,6 +76,17 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BackupGuard</name>
+    <message>
+        <source>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</source>
+        <translation>无法保存控制器参数的备份（%1）：未执行%2</translation>
+    </message>
+    <message>
+        <source>Backup of the controller&apos;s settings before %1: %2</source>
+        <translation>%1前已备份控制器参数：%2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BackupStore</name>
     <message>
         <source>apply a profile</source>
@@ -108,6 +119,45 @@
     <message>
         <source>Backup before %1</source>
         <translation>%1前的备份</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BackupsDialog</name>
+    <message>
+        <source>cannot be read: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <source>Backups</source>
+        <translation>备份</translation>
+    </message>
+    <message>
+        <source>StepCom saves the controller&apos;s settings here before every apply, factory reset, save to flash and id or baud change: %1</source>
+        <translation>每次应用参数文件、恢复出厂参数、保存到闪存以及修改设备地址或波特率之前，StepCom 都会把控制器参数保存在这里：%1</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>设备</translation>
+    </message>
+    <message>
+        <source>What happened after</source>
+        <translation>之后进行的操作</translation>
+    </message>
+    <message>
+        <source>Restore…</source>
+        <translation>恢复…</translation>
+    </message>
+    <message>
+        <source>Compare the backup with the controller and apply what you check</source>
+        <translation>将备份与控制器比较，并应用勾选的项</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
     </message>
 </context>
 <context>
@@ -501,6 +551,92 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ChecklistCalibrationStep</name>
+    <message>
+        <source>Moving…</source>
+        <translation>正在运行…</translation>
+    </message>
+    <message>
+        <source>The pitch was not written.</source>
+        <translation>螺距未写入。</translation>
+    </message>
+    <message>
+        <source>Passed: the corrected pitch is written and verified.</source>
+        <translation>通过：修正后的螺距已写入并校验。</translation>
+    </message>
+    <message>
+        <source>Passed: the axis moved what it was told; the pitch stays %1 %2.</source>
+        <translation>通过：轴的实际行程与指令一致；螺距保持 %1 %2。</translation>
+    </message>
+    <message>
+        <source>Write the corrected pitch %1 %2…</source>
+        <translation>写入修正后的螺距 %1 %2…</translation>
+    </message>
+    <message>
+        <source>Measured ÷ commanded = %1: the pitch %2 %3 should be %4 %3.</source>
+        <translation>实测 ÷ 指令 = %1：螺距 %2 %3 应为 %4 %3。</translation>
+    </message>
+    <message>
+        <source>Commanded: </source>
+        <translation>指令：</translation>
+    </message>
+    <message>
+        <source>Measured: </source>
+        <translation>实测：</translation>
+    </message>
+    <message>
+        <source>Move this distance</source>
+        <translation>运行此距离</translation>
+    </message>
+    <message>
+        <source>Propose the pitch</source>
+        <translation>计算螺距</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistDirectionStep</name>
+    <message>
+        <source>The direction register is not read yet.</source>
+        <translation>方向寄存器尚未读取。</translation>
+    </message>
+    <message>
+        <source>Moving…</source>
+        <translation>正在运行…</translation>
+    </message>
+    <message>
+        <source>The direction register is written and verified. Repeat the step to confirm the axis now moves toward +.</source>
+        <translation>方向寄存器已写入并校验。请重复此步骤，确认轴现在朝 + 方向运动。</translation>
+    </message>
+    <message>
+        <source>The direction register was not written.</source>
+        <translation>方向寄存器未写入。</translation>
+    </message>
+    <message>
+        <source>Passed: the axis moves toward + with the direction as configured.</source>
+        <translation>通过：按当前方向设置，轴朝 + 方向运动。</translation>
+    </message>
+    <message>
+        <source>Flip the direction to %1…</source>
+        <translation>将方向改为 %1…</translation>
+    </message>
+    <message>
+        <source>Failed: the axis moved toward −. Flip the direction register, then repeat the step.</source>
+        <translation>未通过：轴朝 − 方向运动。请修改方向寄存器，然后重复此步骤。</translation>
+    </message>
+    <message>
+        <source>Move a small step</source>
+        <translation>运行一小步</translation>
+    </message>
+    <message>
+        <source>Yes, toward +</source>
+        <translation>是，朝 +</translation>
+    </message>
+    <message>
+        <source>No, toward −</source>
+        <translation>否，朝 −</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ChecklistFile</name>
     <message>
         <source>null</source>
@@ -637,6 +773,160 @@
     <message>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistFlashStep</name>
+    <message>
+        <source>Not connected: nothing was sent.</source>
+        <translation>未连接：没有发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Not every setting is read yet (%1): read all first.</source>
+        <translation>尚有参数未读取（%1）：请先全部读取。</translation>
+    </message>
+    <message>
+        <source>Saving to flash…</source>
+        <translation>正在保存到闪存…</translation>
+    </message>
+    <message>
+        <source>Failed: the save to flash was not done (see the messages).</source>
+        <translation>未通过：未能保存到闪存（见消息）。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ</source>
+        <translation>
+            <numerusform>%n 个参数不一致</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Failed: after the save these settings read back differently: %1</source>
+        <translation>未通过：保存后回读的这些参数不一致：%1</translation>
+    </message>
+    <message>
+        <source>Failed: the settings could not be read back: %1</source>
+        <translation>未通过：无法回读参数：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) read back unchanged</source>
+        <translation>
+            <numerusform>回读 %n 个参数，均未改变</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Passed: saved to flash, and all %n setting(s) read back unchanged.</source>
+        <translation>
+            <numerusform>通过：已保存到闪存，回读全部 %n 个参数均未改变。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save to flash and read back</source>
+        <translation>保存到闪存并回读</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistInputStep</name>
+    <message>
+        <source>The input setting is written and verified. Repeat the step to confirm.</source>
+        <translation>输入设置已写入并校验。请重复此步骤以确认。</translation>
+    </message>
+    <message>
+        <source>The input setting was not written.</source>
+        <translation>输入设置未写入。</translation>
+    </message>
+    <message>
+        <source>The inputs are not known yet: connect and wait for the status.</source>
+        <translation>输入状态尚未知：请连接并等待状态刷新。</translation>
+    </message>
+    <message>
+        <source>Watching the inputs: press the %1 of motor %2 now, let go, then click Done.</source>
+        <translation>正在监视输入：请现在按下电机 %2 的%1，松开后点击“完成”。</translation>
+    </message>
+    <message>
+        <source>Write the fix (%1)…</source>
+        <translation>写入修正（%1）…</translation>
+    </message>
+    <message>
+        <source>Press it now</source>
+        <translation>现在按下</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>完成</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistMotionStep</name>
+    <message>
+        <source>Not connected: nothing was sent.</source>
+        <translation>未连接：没有发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Nothing to run: the homing order is empty, every motor runs, or the path&apos;s registers are not read yet.</source>
+        <translation>无可运行的内容：回零顺序为空、所有电机都在运行，或路径寄存器尚未读取。</translation>
+    </message>
+    <message>
+        <source>Running…</source>
+        <translation>正在运行…</translation>
+    </message>
+    <message>
+        <source>The command was not acknowledged: nothing moved.</source>
+        <translation>命令未被确认：没有任何运动。</translation>
+    </message>
+    <message>
+        <source>Home motor %1</source>
+        <translation>电机 %1 回零</translation>
+    </message>
+    <message>
+        <source>Home in order</source>
+        <translation>按顺序回零</translation>
+    </message>
+    <message>
+        <source>Run the test</source>
+        <translation>运行测试</translation>
+    </message>
+    <message>
+        <source>The configured arc</source>
+        <translation>已设置的圆弧</translation>
+    </message>
+    <message>
+        <source>The configured line</source>
+        <translation>已设置的直线</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistPage</name>
+    <message>
+        <source>Commissioning checklist</source>
+        <translation>调试检查表</translation>
+    </message>
+    <message>
+        <source>The checklist file %1 cannot be used, and nothing is saved over it: %2</source>
+        <translation>检查表文件 %1 无法使用，也不会被覆盖：%2</translation>
+    </message>
+    <message>
+        <source>The result is not saved: %1</source>
+        <translation>结果未保存：%1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s profile</source>
+        <translation>设备的参数文件</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom 参数文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>No profile chosen: the progress is kept in %1. Choose the machine&apos;s profile to keep it beside it.</source>
+        <translation>未选择参数文件：进度保存在 %1。选择设备的参数文件后，进度将保存在它旁边。</translation>
+    </message>
+    <message>
+        <source>Profile %1 — the progress is kept in %2</source>
+        <translation>参数文件 %1 — 进度保存在 %2</translation>
+    </message>
+    <message>
+        <source>Choose &amp;profile…</source>
+        <translation>选择参数文件(&amp;P)…</translation>
     </message>
 </context>
 <context>
@@ -788,6 +1078,25 @@
     <message>
         <source>Read back</source>
         <translation>读回</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistStepWidget</name>
+    <message>
+        <source>Skipped.</source>
+        <translation>已跳过。</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was written.</source>
+        <translation>未连接：没有写入任何内容。</translation>
+    </message>
+    <message>
+        <source>&amp;Note:</source>
+        <translation>备注(&amp;N)：</translation>
+    </message>
+    <message>
+        <source>S&amp;kip this step</source>
+        <translation>跳过此步骤(&amp;K)</translation>
     </message>
 </context>
 <context>
@@ -1417,10 +1726,6 @@
         <translation>dump、report：要记录的备注。</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>未给出命令（params、read、write、command、monitor、dump、diff、apply、report）</translation>
-    </message>
-    <message>
         <source>report: make the report from this profile file, not from a controller.</source>
         <translation>report：根据此参数文件生成报告，而不是读取控制器。</translation>
     </message>
@@ -1429,12 +1734,32 @@
         <translation>参数文件</translation>
     </message>
     <message>
-        <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
-        <translation>apply：写入前不备份控制器的设置。</translation>
-    </message>
-    <message>
         <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
         <translation>command：等待运动命令结束并输出其结果（仅在完成或已回零参考时退出码为 0）。</translation>
+    </message>
+    <message>
+        <source>apply, command factory_reset/save_to_flash, write device.id/device.baud: do not save a backup of the controller&apos;s settings first.</source>
+        <translation>apply、command factory_reset/save_to_flash、write device.id/device.baud：不先备份控制器参数。</translation>
+    </message>
+    <message>
+        <source>move: a step of this many axis units (+ or -).</source>
+        <translation>move：按此距离运行（轴单位，可正可负）。</translation>
+    </message>
+    <message>
+        <source>distance</source>
+        <translation>距离</translation>
+    </message>
+    <message>
+        <source>move: to this position (axis units).</source>
+        <translation>move：运行到此位置（轴单位）。</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, report)</source>
+        <translation>未给出命令（params、read、write、command、move、monitor、dump、diff、apply、report）</translation>
     </message>
 </context>
 <context>
@@ -1706,6 +2031,26 @@
     <message>
         <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
         <translation>--wait：%1 没有可等待的结束（单次运动、回零、按顺序回零、回数据零点、圆弧和直线才有）</translation>
+    </message>
+    <message>
+        <source>no backup of the controller&apos;s settings could be saved (%1): nothing was done (--no-backup goes on without one)</source>
+        <translation>无法保存控制器参数的备份（%1）：未执行任何操作（--no-backup 可不备份继续）</translation>
+    </message>
+    <message>
+        <source>move needs one motor: move motor1 --by D or --to X</source>
+        <translation>move 需要一个电机：move motor1 --by D 或 --to X</translation>
+    </message>
+    <message>
+        <source>there is no motor %1 (this map has motor1 .. motor%2)</source>
+        <translation>没有电机 %1（此寄存器表有 motor1 .. motor%2）</translation>
+    </message>
+    <message>
+        <source>move needs exactly one of --by D and --to X</source>
+        <translation>move 需要且只需要 --by D 和 --to X 之一</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1：“%2”不是数字</translation>
     </message>
 </context>
 <context>
@@ -4436,6 +4781,26 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</source>
         <translation>已连接时：将参数文件与控制器比较（应用勾选项之前不写入任何数据）。未连接控制器时：在各页面上编辑该文件</translation>
     </message>
+    <message>
+        <source>The backup cannot be used</source>
+        <translation>此备份无法使用</translation>
+    </message>
+    <message>
+        <source>Opened backup %1</source>
+        <translation>已打开备份 %1</translation>
+    </message>
+    <message>
+        <source>&amp;Backups…</source>
+        <translation>备份(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s settings saved before each apply, factory reset, save to flash and id or baud change</source>
+        <translation>每次应用参数文件、恢复出厂参数、保存到闪存以及修改设备地址或波特率之前保存的控制器参数</translation>
+    </message>
+    <message>
+        <source>The software travel limits of %1 are in use now</source>
+        <translation>现在使用 %1 的软件行程限位</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileCompareDialog</name>
@@ -4953,6 +5318,17 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SessionBackup</name>
+    <message>
+        <source>the session ended</source>
+        <translation>会话已结束</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s settings could not be read: %1</source>
+        <translation>无法读取控制器参数：%1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SimCommandLine</name>
     <message>
         <source>N</source>
@@ -5422,6 +5798,120 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::StepMove</name>
+    <message>
+        <source>There is no motor %1 (this controller has %2)</source>
+        <translation>没有电机 %1（此控制器有 %2 个）</translation>
+    </message>
+    <message>
+        <source>This register map has no single move for motor %1</source>
+        <translation>此寄存器表中电机 %1 没有单次运行</translation>
+    </message>
+    <message>
+        <source>Motor %1: the distance or position is not a number</source>
+        <translation>电机 %1：距离或位置不是数字</translation>
+    </message>
+    <message>
+        <source>Motor %1: a distance cannot be negative</source>
+        <translation>电机 %1：距离不能为负</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was sent</source>
+        <translation>未连接：没有发送任何命令</translation>
+    </message>
+    <message>
+        <source>A step is still running: wait for it to end</source>
+        <translation>步进仍在运行：请等待其结束</translation>
+    </message>
+    <message>
+        <source>Motor %1: the step uses the single-move distance and direction, and they hold edits that were not written. Write or revert them first.</source>
+        <translation>电机 %1：步进使用单次运行的距离和方向，而它们有尚未写入的修改。请先写入或撤销。</translation>
+    </message>
+    <message>
+        <source>Motor %1 is jogging: let go first</source>
+        <translation>电机 %1 正在点动：请先松开</translation>
+    </message>
+    <message>
+        <source>Motor %1 is moving: wait until it ends</source>
+        <translation>电机 %1 正在运动：请等待其结束</translation>
+    </message>
+    <message>
+        <source>Motor %1: could not read the position and the single-move values (%2): nothing was moved</source>
+        <translation>电机 %1：无法读取位置和单次运行参数（%2）：没有运动</translation>
+    </message>
+    <message>
+        <source>Motor %1 is running: nothing was moved</source>
+        <translation>电机 %1 正在运行：没有运动</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 %3 is outside the position register&apos;s range</source>
+        <translation>电机 %1：%2 %3 超出位置寄存器的范围</translation>
+    </message>
+    <message>
+        <source>Motor %1 already stands at %2 %3: nothing to move</source>
+        <translation>电机 %1 已在 %2 %3：无需运动</translation>
+    </message>
+    <message>
+        <source>Motor %1: a move of %2 %3 is more than the single move can do (%4 %3)</source>
+        <translation>电机 %1：%2 %3 的运动超出单次运行的能力（%4 %3）</translation>
+    </message>
+    <message>
+        <source>the step&apos;s distance and direction could not be written (%1): nothing was moved</source>
+        <translation>无法写入步进的距离和方向（%1）：没有运动</translation>
+    </message>
+    <message>
+        <source>the single move was not acknowledged: nothing was moved</source>
+        <translation>单次运行未被确认：没有运动</translation>
+    </message>
+    <message>
+        <source>distance %1 %2, direction %3</source>
+        <translation>距离 %1 %2，方向 %3</translation>
+    </message>
+    <message>
+        <source>%1. The single move&apos;s own values (%2) could not be put back: not connected. Write them again once the controller answers.</source>
+        <translation>%1。单次运行原来的参数（%2）未能恢复：未连接。控制器应答后请重新写入。</translation>
+    </message>
+    <message>
+        <source>%1. The single move&apos;s own values (%2) could not be put back: %3</source>
+        <translation>%1。单次运行原来的参数（%2）未能恢复：%3</translation>
+    </message>
+    <message>
+        <source>The single move&apos;s own distance and direction are back (verified).</source>
+        <translation>单次运行原来的距离和方向已恢复（已校验）。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::StepMovePanel</name>
+    <message>
+        <source>&amp;Step:</source>
+        <translation>步长(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>自定义</translation>
+    </message>
+    <message>
+        <source>− Step</source>
+        <translation>− 步进</translation>
+    </message>
+    <message>
+        <source>+ Step</source>
+        <translation>+ 步进</translation>
+    </message>
+    <message>
+        <source>Move &amp;to:</source>
+        <translation>运行到(&amp;T)：</translation>
+    </message>
+    <message>
+        <source>Move to position</source>
+        <translation>运行到位置</translation>
+    </message>
+    <message>
+        <source>Steps and move-to use this motor&apos;s single-move distance and direction registers, then write your own values back and verify them. They refuse while those fields hold unwritten edits, and any target beyond the software travel limits.</source>
+        <translation>步进和运行到位置会使用此电机的单次运行距离和方向寄存器，结束后写回您原来的值并校验。这些字段有未写入的修改时，或目标超出软件行程限位时，将拒绝运行。</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::TrafficModel</name>
     <message>
         <source>Time</source>
@@ -5611,6 +6101,45 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</source>
         <translation>“travelLimits”：“%1”既没有设定 min 也没有设定 max</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TravelLimitsEditor</name>
+    <message>
+        <source>The saved software travel limits were not used: %1</source>
+        <translation>未使用已保存的软件行程限位：%1</translation>
+    </message>
+    <message>
+        <source>How far a jog can overrun a limit is worked out once the speed and pitch are read and the link has answered.</source>
+        <translation>读取速度和螺距并且通讯有应答后，将计算点动可能越过限位的距离。</translation>
+    </message>
+    <message>
+        <source>A hold-to-move jog can run past a limit by %1.</source>
+        <translation>按住点动时，轴可能越过限位 %1。</translation>
+    </message>
+    <message>
+        <source>Software travel limits</source>
+        <translation>软件行程限位</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>最小</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>最大</translation>
+    </message>
+    <message>
+        <source>Apply limits</source>
+        <translation>应用限位</translation>
+    </message>
+    <message>
+        <source>StepCom&apos;s limits, not the controller&apos;s: a step or move-to beyond them is refused and a jog is stopped when the polled position crosses them. Saved with the connection settings and in profiles. If the link dies during a jog, only the limit switches stop the axis.</source>
+        <translation>这是 StepCom 的限位，不是控制器的：超出限位的步进或运行到位置会被拒绝；点动时轮询到的位置越过限位即停止。与连接设置一起保存，也保存在参数文件中。点动时如果通讯中断，只有限位开关能让轴停止。</translation>
     </message>
 </context>
 <context>
@@ -5961,6 +6490,14 @@ file and its checklist, no controller needed)</source>
 how it ended (--json), exit 0 only when done or referenced</source>
         <translation>触发一个运动命令并等待其结束；输出
 结果（--json），仅在完成或已建立参考点时退出码为 0</translation>
+    </message>
+    <message>
+        <source>move motorN by D or to X (axis units) with its single
+move; its own distance and direction are put back and
+verified; exit 0 only when it arrived</source>
+        <translation>用单次运行将 motorN 运行距离 D 或运行到 X（轴单位）；
+之后恢复其原来的距离和方向并校验；
+仅在到达时退出码为 0</translation>
     </message>
 </context>
 </TS>

@@ -1,12 +1,14 @@
 #include "mainwindow.h"
 
+#include "backupguard.h" // issue 17
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
 #include "device/linkhealth.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "language.h"
-#include "offlineactions.h" // working without the machine (issue 18)
+#include "offlineactions.h"      // working without the machine (issue 18)
+#include "pages/checklistpage.h" // issue 17
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
 #include "pages/inputspage.h"
@@ -21,6 +23,7 @@
 #include "widgets/offlinebanner.h"
 #include "widgets/statusdock.h" // monitoring (issue 5)
 #include "widgets/trafficview.h"
+#include "widgets/travellimitseditor.h" // issue 17
 #include "writeflow.h"
 
 #include "profile/profiledocument.h"
@@ -54,6 +57,9 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_writeFlow = new WriteFlow(session, this);
+    // --- commissioning (issue 17): backups before risky operations, saved travel limits ---
+    m_backups = new BackupGuard(session, this);
+    TravelLimitsEditor::restoreSaved(session);
     auto *splitter = new QSplitter(this);
     splitter->addWidget(m_sidebar);
     splitter->addWidget(m_stack);
@@ -79,7 +85,8 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     addPage(new InterpolationPage(session, this)); // interpolation (issue 6)
     addPage(new ModesPage(session, this));         // special modes (issue 6)
     addPage(new DevicePage(session, this));
-    addPage(new PlotPage(session, this)); // monitoring (issue 5)
+    addPage(new PlotPage(session, this));                                 // monitoring (issue 5)
+    addPage(m_checklist = new ChecklistPage(session, m_writeFlow, this)); // issue 17
     m_sidebar->setCurrentRow(0);
 
     createActions();
@@ -236,7 +243,10 @@ void MainWindow::createMenus()
     m_fileMenu->addAction(m_profiles->saveFromEditedAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->reportAction());
-    m_fileMenu->addAction(m_offline->reportAction()); // issue 18
+    m_fileMenu->addAction(m_offline->reportAction());   // issue 18
+    m_fileMenu->addAction(m_profiles->backupsAction()); // issue 17
+    m_profiles->setBackupDirectory(m_backups->directory());
+    m_profiles->setChecklistSource([this] { return m_checklist->reportChecklist(); });
     m_fileMenu->addSeparator();
     // --- end profiles ---
     m_fileMenu->addAction(m_quit);

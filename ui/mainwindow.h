@@ -13,6 +13,8 @@ class QToolButton;
 
 namespace stepcom {
 
+class BackupGuard;
+class ChecklistPage;
 class DeviceSession;
 class EmergencyStop;
 class LinkStatus;
@@ -49,6 +51,8 @@ public:
     ProfileActions *profileActions() const { return m_profiles; } // profiles (issue 7)
     OfflineActions *offlineActions() const { return m_offline; }  // issue 18
     OfflineBanner *offlineBanner() const { return m_offlineBanner; }
+    ChecklistPage *checklistPage() const { return m_checklist; } // issue 17
+    BackupGuard *backupGuard() const { return m_backups; }       // issue 17
     // The dialogs a test (or a curious user) may want to reach while they are open.
     WriteChangesDialog *writeDialog() const;
     QMessageBox *closeQuestion() const;
@@ -91,6 +95,8 @@ private:
     OfflineBanner *m_offlineBanner = nullptr;
     bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once
     WriteFlow *m_writeFlow = nullptr;
+    ChecklistPage *m_checklist = nullptr; // issue 17
+    BackupGuard *m_backups = nullptr;     // issue 17
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;
     bool m_answeredOnce = false; // this connection's controller answered (the page jumped)

@@ -1,8 +1,10 @@
 #include "profileactions.h"
 
 #include "device/devicesession.h"
+#include "dialogs/backupsdialog.h"
 #include "dialogs/profilecomparedialog.h"
 #include "language.h"
+#include "profile/backupstore.h"
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
 
@@ -32,6 +34,7 @@ ProfileActions::ProfileActions(DeviceSession *session, QWidget *window)
     , m_saveFromDevice(new QAction(this))
     , m_saveFromEdited(new QAction(this))
     , m_report(new QAction(this))
+    , m_backups(new QAction(this))
     , m_recent(new QMenu(window))
 {
     m_open->setObjectName(QStringLiteral("openProfile"));
@@ -44,12 +47,45 @@ ProfileActions::ProfileActions(DeviceSession *session, QWidget *window)
     connect(m_saveFromDevice, &QAction::triggered, this, [this] { chooseSave(true); });
     connect(m_saveFromEdited, &QAction::triggered, this, [this] { chooseSave(false); });
     connect(m_report, &QAction::triggered, this, &ProfileActions::chooseReport);
+    m_backups->setObjectName(QStringLiteral("backups"));
+    m_backupDir = BackupStore::defaultDirectory();
+    connect(m_backups, &QAction::triggered, this, &ProfileActions::showBackups);
     connect(session, &DeviceSession::linkStateChanged, this, &ProfileActions::updateActions);
     connect(session->parameters(), &ParameterStore::valueChanged, this,
             &ProfileActions::updateActions);
     retranslate();
     rebuildRecent();
     updateActions();
+}
+
+BackupsDialog *ProfileActions::backupsDialog() const
+{
+    return m_backupsDialog;
+}
+
+void ProfileActions::showBackups()
+{
+    if (!m_backupsDialog) {
+        m_backupsDialog = new BackupsDialog(m_session->map(), m_backupDir, m_window);
+        m_backupsDialog->setAttribute(Qt::WA_DeleteOnClose);
+        connect(m_backupsDialog, &BackupsDialog::restoreRequested, this,
+                &ProfileActions::openBackupFile);
+    }
+    m_backupsDialog->reload();
+    m_backupsDialog->show();
+    m_backupsDialog->raise();
+}
+
+bool ProfileActions::openBackupFile(const QString &path)
+{
+    const ProfileParseResult r = BackupStore::load(path, m_session->map());
+    if (!r.ok()) {
+        showErrors(tr("The backup cannot be used"), r.errors);
+        return false;
+    }
+    showCompare(*r.profile, QFileInfo(path).fileName());
+    Q_EMIT finished(true, tr("Opened backup %1").arg(path));
+    return true;
 }
 
 ProfileCompareDialog *ProfileActions::compareDialog() const
@@ -77,6 +113,9 @@ void ProfileActions::retranslate()
     m_saveFromEdited->setToolTip(
         tr("Save the values the pages show (edits included) as a profile file"));
     m_report->setText(tr("Commissioning &report…"));
+    m_backups->setText(tr("&Backups…"));
+    m_backups->setToolTip(tr("The controller's settings saved before each apply, factory "
+                             "reset, save to flash and id or baud change"));
     m_report->setToolTip(tr("Read everything, then write the commissioning sheet as PDF or "
                             "HTML"));
     m_recent->setTitle(tr("Recent &profiles"));
@@ -88,6 +127,7 @@ void ProfileActions::updateActions()
     const bool connected = m_session->isConnected();
     m_saveFromDevice->setEnabled(connected);
     m_report->setEnabled(connected);
+    m_backups->setEnabled(connected); // a backup is restored onto a controller
     bool known = true;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), false))
         known = known && m_session->parameters()->shownValue(p->key).has_value();
@@ -225,10 +265,24 @@ bool ProfileActions::openFile(const QString &path)
         return false;
     }
     addRecent(path);
+    // The profile's software travel limits are StepCom's settings: they take effect now.
+    if (!r.profile->travelLimits.isEmpty() &&
+        r.profile->travelLimits != m_session->travelLimits()) {
+        m_session->setTravelLimits(r.profile->travelLimits);
+        Q_EMIT finished(
+            true,
+            tr("The software travel limits of %1 are in use now").arg(QFileInfo(path).fileName()));
+    }
+    showCompare(*r.profile, QFileInfo(path).fileName());
+    Q_EMIT finished(true, tr("Opened profile %1").arg(path));
+    return true;
+}
+
+void ProfileActions::showCompare(const Profile &profile, const QString &title)
+{
     if (m_compare)
         m_compare->close();
-    m_compare =
-        new ProfileCompareDialog(m_session, *r.profile, QFileInfo(path).fileName(), m_window);
+    m_compare = new ProfileCompareDialog(m_session, profile, title, m_window);
     m_compare->setAttribute(Qt::WA_DeleteOnClose);
     connect(m_compare, &ProfileCompareDialog::applied, this,
             [this](bool ok, const QStringList &verified, const QStringList &problems) {
@@ -238,8 +292,6 @@ bool ProfileActions::openFile(const QString &path)
                     Q_EMIT finished(false, p);
             });
     m_compare->open();
-    Q_EMIT finished(true, tr("Opened profile %1").arg(path));
-    return true;
 }
 
 void ProfileActions::saveFromDeviceFile(const QString &path)
@@ -264,6 +316,7 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
         Profile profile = Profile::fromValues(self->m_session->map(), r.values, true);
         profile.name = QFileInfo(path).completeBaseName();
         profile.deviceId = self->m_session->settings().deviceId;
+        profile.travelLimits = self->m_session->travelLimits();
         if (const QString e = ProfileFile::save(path, profile, self->m_session->map());
             !e.isEmpty()) {
             self->showErrors(tr("Save profile"), {e});
@@ -296,6 +349,7 @@ bool ProfileActions::saveFromEditedFile(const QString &path)
     profile.name = QFileInfo(path).completeBaseName();
     if (m_session->isConnected())
         profile.deviceId = m_session->settings().deviceId;
+    profile.travelLimits = m_session->travelLimits();
     if (const QString e = ProfileFile::save(path, profile, m_session->map()); !e.isEmpty()) {
         showErrors(tr("Save profile"), {e});
         return false;
@@ -333,6 +387,13 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         input.notes = notes;
         input.date = QDateTime::currentDateTime();
         input.locale = Language::instance().current();
+        input.travelLimits = self->m_session->travelLimits();
+        if (self->m_checklist) {
+            if (const auto c = self->m_checklist()) {
+                input.checklist = c->first;
+                input.checklistFile = c->second;
+            }
+        }
         if (const QString e = CommissioningReport(input).write(path); !e.isEmpty()) {
             self->showErrors(tr("Commissioning report"), {e});
             return;

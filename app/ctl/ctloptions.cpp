@@ -53,7 +53,11 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("include-link"),
          tr("dump, apply: include the device id and baud (apply writes them only with this).")},
         {QStringLiteral("no-backup"),
-         tr("apply: do not save a backup of the controller's settings before writing.")},
+         tr("apply, command factory_reset/save_to_flash, write device.id/device.baud: do not "
+            "save a backup of the controller's settings first.")},
+        {QStringLiteral("by"), tr("move: a step of this many axis units (+ or -)."),
+         tr("distance")},
+        {QStringLiteral("to"), tr("move: to this position (axis units)."), tr("position")},
         {QStringLiteral("name"), tr("dump, report: name of the profile or the machine."),
          tr("text")},
         {QStringLiteral("notes"), tr("dump, report: notes to record."), tr("text")},
@@ -130,10 +134,12 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.name = parser.value(QStringLiteral("name"));
     o.notes = parser.value(QStringLiteral("notes"));
     o.from = parser.value(QStringLiteral("from"));
+    o.by = parser.value(QStringLiteral("by"));
+    o.to = parser.value(QStringLiteral("to"));
     const QStringList positional = parser.positionalArguments();
     if (positional.isEmpty())
-        return tr("no command given (params, read, write, command, monitor, dump, diff, apply, "
-                  "report)");
+        return tr("no command given (params, read, write, command, move, monitor, dump, diff, "
+                  "apply, report)");
     o.command = positional.first();
     o.arguments = positional.mid(1);
     if (o.target != Target::None) {

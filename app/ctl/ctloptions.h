@@ -24,6 +24,8 @@ struct CtlOptions
     QString name;                            // dump/report: the profile's or the machine's name
     QString notes;                           // dump/report
     QString from;                            // report --from PROFILE: from a file, no controller
+    QString by;                              // move --by D: a step of D axis units
+    QString to;                              // move --to X: to position X
     QString language = QStringLiteral("en"); // --lang or the environment: messages and the report
     int count = -1;
     int intervalMs = 0;

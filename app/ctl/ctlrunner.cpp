@@ -89,6 +89,11 @@ const QList<CtlCommand> &CtlRunner::commands()
                            "pulse a motion command and wait until it ends; print\n"
                            "how it ended (--json), exit 0 only when done or referenced"),
          &CtlRunner::runCommandWait, &CtlOptions::wait},
+        {"move", "move MOTOR --by D|--to X",
+         QT_TRANSLATE_NOOP("stepcomctl", "move motorN by D or to X (axis units) with its single\n"
+                                         "move; its own distance and direction are put back and\n"
+                                         "verified; exit 0 only when it arrived"),
+         &CtlRunner::runMove},
         {"monitor", "monitor",
          QT_TRANSLATE_NOOP("stepcomctl", "print the live status as one JSON object per line,\n"
                                          "until --count samples or Ctrl-C (--interval MS)"),
@@ -375,7 +380,28 @@ void CtlRunner::runWrite()
         finish(UsageError);
         return;
     }
-    connectThen([this, writes] {
+    // A new id or baud, or a save to flash after the write: the settings before it are backed up.
+    std::optional<DeviceSession::Risk> risk;
+    for (const ParameterWrite &w : std::as_const(writes)) {
+        if (w.parameter->key == QLatin1String("device.id"))
+            risk = DeviceSession::Risk::DeviceId;
+        else if (w.parameter->key == QLatin1String("device.baud") && !risk)
+            risk = DeviceSession::Risk::Baud;
+    }
+    if (!risk && m_options.saveToFlash)
+        risk = DeviceSession::Risk::SaveToFlash;
+    connectThen([this, writes, risk] {
+        if (risk) {
+            backupThen(*risk, [this, writes] { writeThenReport(writes); });
+            return;
+        }
+        writeThenReport(writes);
+    });
+}
+
+void CtlRunner::writeThenReport(const QList<ParameterWrite> &writes)
+{
+    {
         m_session->write(writes, [this, writes](const WriteOutcome &w) {
             for (const ParameterWrite &pw : writes) {
                 const bool verified = w.written.contains(pw.parameter->key) &&
@@ -404,7 +430,7 @@ void CtlRunner::runWrite()
             }
             saveToFlashThenFinish();
         });
-    });
+    }
 }
 
 const Parameter *CtlRunner::commandArgument()
@@ -434,18 +460,29 @@ void CtlRunner::runCommand()
     if (!p)
         return;
     connectThen([this, p] {
-        m_session->command(*p, [this, p](const Result &r) {
-            if (!r.ok) {
-                fail(DeviceError, r.errorText);
-                return;
-            }
-            // A moving command is only acknowledged: its end is known with --wait.
-            m_out << (p->command == CommandClass::Motion
-                          ? tr("%1: sent (add --wait to wait for how it ends)").arg(p->key)
-                          : tr("%1: done").arg(p->key))
-                  << Qt::endl;
-            finish(Ok);
-        });
+        const bool risky =
+            p->key == QLatin1String("factory_reset") || p->key == QLatin1String("save_to_flash");
+        const auto risk = p->key == QLatin1String("factory_reset")
+                              ? DeviceSession::Risk::FactoryReset
+                              : DeviceSession::Risk::SaveToFlash;
+        const auto send = [this, p] {
+            m_session->command(*p, [this, p](const Result &r) {
+                if (!r.ok) {
+                    fail(DeviceError, r.errorText);
+                    return;
+                }
+                // A moving command is only acknowledged: its end is known with --wait.
+                m_out << (p->command == CommandClass::Motion
+                              ? tr("%1: sent (add --wait to wait for how it ends)").arg(p->key)
+                              : tr("%1: done").arg(p->key))
+                      << Qt::endl;
+                finish(Ok);
+            });
+        };
+        if (risky)
+            backupThen(risk, send);
+        else
+            send();
     });
 }
 

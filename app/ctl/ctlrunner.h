@@ -51,12 +51,18 @@ private:
     void runParams();
     void runRead();
     void runWrite();
+    void writeThenReport(const QList<ParameterWrite> &writes);
     void runCommand();
     // command NAME --wait: sends it and judges where the motion ended (CtlMotionWait).
     void runCommandWait();
     // The one coil `command` names, checked; nullptr after failing with the reason.
     const Parameter *commandArgument();
     void runMonitor();
+    // move MOTOR --by D | --to X: a step or move-to over the single move (ctlmove.cpp).
+    void runMove();
+    // Saves a backup of the controller's settings before `risk` (unless --no-backup), prints
+    // where, then runs `next`; fails (nothing done) when it cannot be saved.
+    void backupThen(DeviceSession::Risk risk, std::function<void()> next);
     // Profiles and the report (ctlprofile.cpp).
     void runDump();
     void runDiff();

@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFile>
 #include <QSettings>
 #include <QStyle>
 #include <QStyleFactory>
@@ -104,6 +105,8 @@ int main(int argc, char *argv[])
     }
     QSettings::setDefaultFormat(QSettings::IniFormat);
     QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
+    // The same for the data location: the checklist's progress and the backups.
+    qputenv("XDG_DATA_HOME", QFile::encodeName(settingsDir.filePath(QStringLiteral("data"))));
 
     Shooter shooter(options);
     int exitCode = 0;

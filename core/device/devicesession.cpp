@@ -7,6 +7,7 @@
 #include "device/motionsupervisor.h"
 #include "device/simulatorstarter.h"
 #include "device/statusrecorder.h"
+#include "device/stepmove.h"
 #include "i18n/translators.h"
 
 namespace stepcom {
@@ -20,6 +21,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     , m_motion(new MotionSupervisor(this, m_link)) // before the jog controller, which follows it
     , m_health(new LinkHealth(m_link, this))
     , m_jog(new JogController(this, this))
+    , m_step(new StepMove(this))
 {
     // The outcome is said when the controller showed it, not when the command went out.
     connect(m_motion, &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
@@ -357,14 +359,42 @@ void DeviceSession::emergencyStop()
     command(QStringLiteral("estop"));
 }
 
+void DeviceSession::setTravelLimits(const TravelLimits &limits)
+{
+    if (limits == m_limits)
+        return;
+    m_limits = limits;
+    Q_EMIT travelLimitsChanged();
+}
+
+void DeviceSession::guard(Risk risk, Proceed proceed)
+{
+    if (m_guard)
+        m_guard(risk, std::move(proceed));
+    else
+        proceed(QString());
+}
+
+void DeviceSession::guardedCommand(Risk risk, const QString &key)
+{
+    guard(risk, [this, key](const QString &refusal) {
+        if (refusal.isEmpty()) {
+            command(key);
+            return;
+        }
+        say(Severity::Error, refusal);
+        Q_EMIT commandFinished(key, false);
+    });
+}
+
 void DeviceSession::saveToFlash()
 {
-    command(QStringLiteral("save_to_flash"));
+    guardedCommand(Risk::SaveToFlash, QStringLiteral("save_to_flash"));
 }
 
 void DeviceSession::factoryReset()
 {
-    command(QStringLiteral("factory_reset"));
+    guardedCommand(Risk::FactoryReset, QStringLiteral("factory_reset"));
 }
 
 void DeviceSession::changeLink(int deviceId, int baud)
@@ -379,6 +409,19 @@ void DeviceSession::changeLink(int deviceId, int baud)
         writes.append({rate, baud});
     if (writes.isEmpty())
         return;
+    const Risk risk = writes.first().parameter == id ? Risk::DeviceId : Risk::Baud;
+    guard(risk, [this, writes, previous](const QString &refusal) {
+        if (refusal.isEmpty()) {
+            writeLink(writes, previous);
+            return;
+        }
+        say(Severity::Error, refusal);
+        Q_EMIT linkChangeFailed(previous, refusal);
+    });
+}
+
+void DeviceSession::writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous)
+{
     m_client->write(writes, [this, writes, previous](const WriteOutcome &outcome) {
         m_store->applyWriteOutcome(writes, outcome);
         if (outcome.ok) {

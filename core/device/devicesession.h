@@ -8,6 +8,7 @@
 #include "device/deviceclient.h"
 #include "device/parameterstore.h"
 #include "device/poller.h" // PollStats
+#include "motion/travellimits.h"
 
 #include <QObject>
 
@@ -21,6 +22,7 @@ class ModbusLink;
 class MotionSupervisor;
 class SimulatorStarter;
 class StatusRecorder;
+class StepMove;
 
 // One controller connection and everything known about it. Every front-end (the window,
 // stepcomctl, the benchmark, the screenshot tool, the tests) works through this: it reads,
@@ -39,6 +41,13 @@ public:
     // Why every jog must stop now (the rules live here; the window reports what happened).
     enum class JogStop { PageLeft, FocusLost, WindowClosing };
     Q_ENUM(JogStop)
+    // Operations after which the controller's settings cannot be had back unless saved first.
+    enum class Risk { Apply, FactoryReset, SaveToFlash, DeviceId, Baud };
+    Q_ENUM(Risk)
+    // Runs before a risky operation (the window's backup), then calls `proceed` once: with an
+    // empty text when it may go on, else why it may not (nothing is done then).
+    using Proceed = std::function<void(const QString &refusal)>;
+    using RiskGuard = std::function<void(Risk risk, Proceed proceed)>;
 
     explicit DeviceSession(const RegisterMap &map = RegisterMap::builtin(),
                            QObject *parent = nullptr);
@@ -51,6 +60,17 @@ public:
     JogController *jog() const { return m_jog; }
     // Follows motion commands to their judged outcome and keeps each axis' reference state.
     MotionSupervisor *motion() const { return m_motion; }
+    // Step jogs and move-to over the single move, judged by the supervisor.
+    StepMove *stepMove() const { return m_step; }
+    // StepCom's software travel limits (not controller registers): steps and move-to beyond
+    // them are refused, a hold-to-move jog crossing them is stopped on the next poll.
+    const TravelLimits &travelLimits() const { return m_limits; }
+    void setTravelLimits(const TravelLimits &limits);
+    // Installed by the window: a backup before every risky operation the session starts
+    // (saveToFlash, factoryReset, changeLink) and the ones a front-end announces (guard()).
+    void setRiskGuard(RiskGuard guard) { m_guard = std::move(guard); }
+    // Runs `proceed` after the guard (at once, agreed, without one).
+    void guard(Risk risk, Proceed proceed);
     // Port closed / open but not answering / answering: "connected" means answering.
     LinkHealth *health() const { return m_health; }
     // The live status recorded for the plots; made on first use, recording from then on.
@@ -134,12 +154,15 @@ Q_SIGNALS:
     void linkChangeFailed(const stepcom::LinkSettings &previous, const QString &reason);
     void statusCycleFinished(bool ok, qint64 ms);
     void statusFastChanged(bool fast);
+    void travelLimitsChanged();
 
 private:
     friend class SessionInternals; // tests and the benchmark's link measurements
 
     void say(Severity severity, const QString &text);
     void openLink(const LinkSettings &settings);
+    void guardedCommand(Risk risk, const QString &key);
+    void writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous);
     // After a failed write, read back what the controller holds for the keys whose request went
     // out without a good answer.
     void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
@@ -151,6 +174,9 @@ private:
     MotionSupervisor *m_motion; // made before the jog controller, which follows it
     LinkHealth *m_health;
     JogController *m_jog;
+    StepMove *m_step;
+    TravelLimits m_limits;
+    RiskGuard m_guard;
     StatusRecorder *m_recorder = nullptr;
     std::unique_ptr<SimulatorStarter> m_sim;
     bool m_usingSim = false;

@@ -235,7 +235,13 @@ private Q_SLOTS:
                                      "exportCsvButton",
                                      "recordButton",
                                      "previewFit",
-                                     "previewExport"};
+                                     "previewExport",
+                                     // StepCom's own settings and the checklist file, not the
+                                     // controller: travel limits, the profile beside the
+                                     // checklist, a step skipped
+                                     "applyTravelLimits",
+                                     "chooseChecklistProfile",
+                                     "skipButton"};
         const QSet<QString> logViews{"stepcom::TrafficView", "stepcom::MessageView"};
         QStringList enabled;
         for (QAction *a : window->findChildren<QAction *>()) {

@@ -334,9 +334,22 @@ void ProfileCompareDialog::apply()
         tr("Writing %n value(s), then reading them back…", nullptr, int(writes.size())));
     updateButtons();
     QPointer<ProfileCompareDialog> self(this);
-    m_session->write(writes, [self, writes](const WriteOutcome &outcome) {
-        if (self)
-            self->finishApply(writes, outcome);
+    // The settings it replaces are backed up first (the window's risk guard).
+    m_session->guard(DeviceSession::Risk::Apply, [self, writes](const QString &refusal) {
+        if (!self)
+            return;
+        if (!refusal.isEmpty()) {
+            WriteOutcome none;
+            none.errors << refusal;
+            for (const ParameterWrite &w : writes)
+                none.notWritten << w.parameter->key;
+            self->finishApply(writes, none);
+            return;
+        }
+        self->m_session->write(writes, [self, writes](const WriteOutcome &outcome) {
+            if (self)
+                self->finishApply(writes, outcome);
+        });
     });
 }
 
