@@ -1,5 +1,7 @@
 #include "ctloptions.h"
 
+#include "device/idlist.h"
+
 #include <QCoreApplication>
 
 namespace stepcom {
@@ -36,7 +38,11 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          QStringLiteral("none")},
         {QStringLiteral("stop-bits"), tr("Stop bits: 1 or 2 (default 1)."), tr("n"),
          QStringLiteral("1")},
-        {QStringLiteral("id"), tr("Device id 1-255 (default 1)."), tr("id"), QStringLiteral("1")},
+        {QStringLiteral("id"),
+         tr("Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and "
+            "command: each in turn on the one line, output keyed by id."),
+         tr("id"), QStringLiteral("1")},
+        {QStringLiteral("to"), tr("assign-id: the new device id 1-255."), tr("id")},
         {QStringLiteral("timeout"), tr("Answer timeout in ms (default 500)."), tr("ms"),
          QStringLiteral("500")},
         {QStringLiteral("retries"), tr("Retries after a timeout (default 2)."), tr("n"),
@@ -105,8 +111,16 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         o.link.stopBits = QSerialPort::TwoStop;
     else
         return tr("--stop-bits: '%1' is not 1 or 2").arg(stop);
-    if (!toInt(parser.value(QStringLiteral("id")), &o.link.deviceId))
-        return tr("--id: '%1' is not a number").arg(parser.value(QStringLiteral("id")));
+    QString idProblem;
+    const auto ids = IdList::parse(parser.value(QStringLiteral("id")), &idProblem);
+    if (!ids)
+        return tr("--id: %1").arg(idProblem);
+    o.ids = *ids;
+    o.link.deviceId = ids->first();
+    if (parser.isSet(QStringLiteral("to")) &&
+        (!toInt(parser.value(QStringLiteral("to")), &o.assignTo) || o.assignTo < 1 ||
+         o.assignTo > 255))
+        return tr("--to: '%1' is not a device id 1-255").arg(parser.value(QStringLiteral("to")));
     if (!toInt(parser.value(QStringLiteral("timeout")), &o.link.timeoutMs))
         return tr("--timeout: '%1' is not a number").arg(parser.value(QStringLiteral("timeout")));
     if (!toInt(parser.value(QStringLiteral("retries")), &o.link.retries))

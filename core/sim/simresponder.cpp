@@ -39,17 +39,24 @@ SimResponder::Outcome SimResponder::respond(int unit, const QModbusRequest &requ
         // Every controller that heard it acts; a broadcast is never answered, and two
         // answers at once are garbage on an RS-485 pair.
         Outcome out;
-        for (SimDevice *d : targets)
-            out.linkChanged = d->handle(request).linkChanged || out.linkChanged;
-        if (unit == 0)
+        QModbusResponse first;
+        for (SimDevice *d : targets) {
+            const SimAnswer answer = d->handle(request);
+            out.linkChanged = answer.linkChanged || out.linkChanged;
+            if (!first.isValid())
+                first = answer.response;
+        }
+        if (unit == 0 || !first.isValid())
             return out;
         ++m_counters.requests;
         ++m_counters.collisions;
+        // An answer of the right length whose bytes the other controller's answer garbled:
+        // the client's CRC check rejects it.
         out.collision = true;
         out.corruptCrc = true;
-        // Garbage of the answer's length; the client's CRC check rejects it.
-        out.response = QModbusResponse(request.functionCode(), QByteArray(4, char(0xA5)));
-        out.delayMs = m_answerDelayMs + wireTimeMs(int(request.size()), 5, m_wireBaud);
+        out.response = first;
+        out.delayMs =
+            m_answerDelayMs + wireTimeMs(int(request.size()), int(first.size()), m_wireBaud);
         return out;
     }
     SimDevice *device = targets.first();
