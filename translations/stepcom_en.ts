@@ -74,6 +74,10 @@
         <source>type &apos;help&apos; for the console commands</source>
         <translation>type &apos;help&apos; for the console commands</translation>
     </message>
+    <message>
+        <source>%1 controllers on the line, ids %2 (the console acts on the first)</source>
+        <translation>%1 controllers on the line, ids %2 (the console acts on the first)</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BackupGuard</name>
@@ -1626,10 +1630,6 @@
         <translation>n</translation>
     </message>
     <message>
-        <source>Device id 1-255 (default 1).</source>
-        <translation>Device id 1-255 (default 1).</translation>
-    </message>
-    <message>
         <source>id</source>
         <translation>id</translation>
     </message>
@@ -1698,10 +1698,6 @@
         <translation>--stop-bits: &apos;%1&apos; is not 1 or 2</translation>
     </message>
     <message>
-        <source>--id: &apos;%1&apos; is not a number</source>
-        <translation>--id: &apos;%1&apos; is not a number</translation>
-    </message>
-    <message>
         <source>--timeout: &apos;%1&apos; is not a number</source>
         <translation>--timeout: &apos;%1&apos; is not a number</translation>
     </message>
@@ -1758,16 +1754,28 @@
         <translation>distance</translation>
     </message>
     <message>
-        <source>move: to this position (axis units).</source>
-        <translation>move: to this position (axis units).</translation>
+        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
+        <translation>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</translation>
     </message>
     <message>
-        <source>position</source>
-        <translation>position</translation>
+        <source>--id: %1</source>
+        <translation>--id: %1</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, report)</source>
-        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, report)</translation>
+        <source>--to: &apos;%1&apos; is not a device id 1-255</source>
+        <translation>--to: &apos;%1&apos; is not a device id 1-255</translation>
+    </message>
+    <message>
+        <source>move: to this position (axis units); assign-id: the new device id 1-255.</source>
+        <translation>move: to this position (axis units); assign-id: the new device id 1-255.</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>value</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
+        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</translation>
     </message>
 </context>
 <context>
@@ -2064,6 +2072,50 @@
         <source>%1: &apos;%2&apos; is not a number</source>
         <translation>%1: &apos;%2&apos; is not a number</translation>
     </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</source>
+        <translation>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>id %1: %2</translation>
+    </message>
+    <message>
+        <source>== device id %1 ==</source>
+        <translation>== device id %1 ==</translation>
+    </message>
+    <message>
+        <source>assign-id: give the new id with --to N, and one --id (the id the controller answers at now, 1 from the factory)</source>
+        <translation>assign-id: give the new id with --to N, and one --id (the id the controller answers at now, 1 from the factory)</translation>
+    </message>
+    <message>
+        <source>assign-id: the controller already has id %1</source>
+        <translation>assign-id: the controller already has id %1</translation>
+    </message>
+    <message>
+        <source>assign-id: the register map has no device.id</source>
+        <translation>assign-id: the register map has no device.id</translation>
+    </message>
+    <message>
+        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
+        <translation>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</translation>
+    </message>
+    <message>
+        <source>no controller answers at id %1: %2</source>
+        <translation>no controller answers at id %1: %2</translation>
+    </message>
+    <message>
+        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
+        <translation>id %1 is taken: a controller answers there already. Choose a free id</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2</source>
+        <translation>device id %1 → %2: the controller answers at id %2</translation>
+    </message>
+    <message>
+        <source>the controller does not answer at id %1: %2</source>
+        <translation>the controller does not answer at id %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DerivedValues</name>
@@ -2209,6 +2261,85 @@
     <message>
         <source>%1: wrote %2 but could not read it back</source>
         <translation>%1: wrote %2 but could not read it back</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::DeviceListDock</name>
+    <message>
+        <source>Device id %1 is already on the list.</source>
+        <translation>Device id %1 is already on the list.</translation>
+    </message>
+    <message>
+        <source>Devices on the line</source>
+        <translation>Devices on the line</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>Id</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>State</translation>
+    </message>
+    <message>
+        <source>Referenced</source>
+        <translation>Referenced</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>Errors</translation>
+    </message>
+    <message>
+        <source>Add device</source>
+        <translation>Add device</translation>
+    </message>
+    <message>
+        <source>Device id to add</source>
+        <translation>Device id to add</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>not connected</translation>
+    </message>
+    <message>
+        <source>answering (in view)</source>
+        <translation>answering (in view)</translation>
+    </message>
+    <message>
+        <source>not answering (in view)</source>
+        <translation>not answering (in view)</translation>
+    </message>
+    <message>
+        <source>asking (in view)</source>
+        <translation>asking (in view)</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>answering</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>not answering</translation>
+    </message>
+    <message>
+        <source>asking</source>
+        <translation>asking</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unknown</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <source>motor %1</source>
+        <translation>motor %1</translation>
     </message>
 </context>
 <context>
@@ -2518,6 +2649,33 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: sent</source>
         <translation>%1: sent</translation>
     </message>
+    <message numerus="yes">
+        <source>E-STOP sent to %n controller(s): id %1</source>
+        <translation>
+            <numerusform>E-STOP sent to %n controller: id %1</numerusform>
+            <numerusform>E-STOP sent to %n controllers: id %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged by every controller: id %1</source>
+        <translation>E-STOP acknowledged by every controller: id %1</translation>
+    </message>
+    <message>
+        <source>E-STOP NOT acknowledged by id %1 (%2); acknowledged by: %3</source>
+        <translation>E-STOP NOT acknowledged by id %1 (%2); acknowledged by: %3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>Device id %1 is not on this line (%2)</source>
+        <translation>Device id %1 is not on this line (%2)</translation>
+    </message>
+    <message>
+        <source>showing device %1</source>
+        <translation>showing device %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -2597,6 +2755,25 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>Write failed: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdList</name>
+    <message>
+        <source>&apos;%1&apos; is not a device id or a range of ids (e.g. 1,2,3 or 1-3)</source>
+        <translation>&apos;%1&apos; is not a device id or a range of ids (e.g. 1,2,3 or 1-3)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: device ids are 1-255</source>
+        <translation>&apos;%1&apos;: device ids are 1-255</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the range runs backwards</source>
+        <translation>&apos;%1&apos;: the range runs backwards</translation>
+    </message>
+    <message>
+        <source>device id %1 is given twice</source>
+        <translation>device id %1 is given twice</translation>
     </message>
 </context>
 <context>
@@ -3577,6 +3754,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>coil %1</source>
         <translation>coil %1</translation>
+    </message>
+    <message>
+        <source>id %1, %2</source>
+        <translation>id %1, %2</translation>
     </message>
 </context>
 <context>
@@ -5523,6 +5704,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>--corrupt-crc works on the pseudo-terminal only, not with --serial</source>
         <translation>--corrupt-crc works on the pseudo-terminal only, not with --serial</translation>
     </message>
+    <message>
+        <source>Several controllers on the one port, one per id (e.g. 1,2,3 or 1-3); a repeated id is a collision: both answer at once.</source>
+        <translation>Several controllers on the one port, one per id (e.g. 1,2,3 or 1-3); a repeated id is a collision: both answer at once.</translation>
+    </message>
+    <message>
+        <source>IDS</source>
+        <translation>IDS</translation>
+    </message>
+    <message>
+        <source>--ids: give either --id or --ids, not both</source>
+        <translation>--ids: give either --id or --ids, not both</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimConsole</name>
@@ -6533,6 +6726,16 @@ verified; exit 0 only when it arrived</source>
         <translation>move motorN by D or to X (axis units) with its single
 move; its own distance and direction are put back and
 verified; exit 0 only when it arrived</translation>
+    </message>
+    <message>
+        <source>give the one controller at --id (default 1, as it
+leaves the factory) the device id N and check it
+answers there; refuses when N is taken or two
+controllers answer at --id</source>
+        <translation>give the one controller at --id (default 1, as it
+leaves the factory) the device id N and check it
+answers there; refuses when N is taken or two
+controllers answer at --id</translation>
     </message>
 </context>
 </TS>

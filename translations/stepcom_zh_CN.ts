@@ -74,6 +74,10 @@
         <source>type &apos;help&apos; for the console commands</source>
         <translation>输入 &apos;help&apos; 查看控制台命令</translation>
     </message>
+    <message>
+        <source>%1 controllers on the line, ids %2 (the console acts on the first)</source>
+        <translation>总线上有 %1 台控制器，ID 为 %2（控制台操作第一台）</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BackupGuard</name>
@@ -1618,10 +1622,6 @@
         <translation>n</translation>
     </message>
     <message>
-        <source>Device id 1-255 (default 1).</source>
-        <translation>设备 ID，1-255（默认 1）。</translation>
-    </message>
-    <message>
         <source>id</source>
         <translation>ID</translation>
     </message>
@@ -1690,10 +1690,6 @@
         <translation>--stop-bits：“%1”不是 1 或 2</translation>
     </message>
     <message>
-        <source>--id: &apos;%1&apos; is not a number</source>
-        <translation>--id：“%1”不是数字</translation>
-    </message>
-    <message>
         <source>--timeout: &apos;%1&apos; is not a number</source>
         <translation>--timeout：“%1”不是数字</translation>
     </message>
@@ -1750,16 +1746,28 @@
         <translation>距离</translation>
     </message>
     <message>
-        <source>move: to this position (axis units).</source>
-        <translation>move：运行到此位置（轴单位）。</translation>
+        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
+        <translation>设备 ID 1-255（默认 1）；read、diff、apply、dump 和 command 可给多个（1,2,3 或 1-3）：在同一条总线上依次执行，输出按 ID 分开。</translation>
     </message>
     <message>
-        <source>position</source>
-        <translation>位置</translation>
+        <source>--id: %1</source>
+        <translation>--id：%1</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, report)</source>
-        <translation>未给出命令（params、read、write、command、move、monitor、dump、diff、apply、report）</translation>
+        <source>--to: &apos;%1&apos; is not a device id 1-255</source>
+        <translation>--to：“%1”不是 1-255 的设备 ID</translation>
+    </message>
+    <message>
+        <source>move: to this position (axis units); assign-id: the new device id 1-255.</source>
+        <translation>move：移动到此位置（轴单位）；assign-id：新的设备地址 1-255。</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
+        <translation>未指定命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、report）</translation>
     </message>
 </context>
 <context>
@@ -2052,6 +2060,50 @@
         <source>%1: &apos;%2&apos; is not a number</source>
         <translation>%1：“%2”不是数字</translation>
     </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</source>
+        <translation>%1：请只给一个设备 ID；多个 ID 只适用于 read、diff、apply、dump 和 command（不带 --wait）</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>ID %1：%2</translation>
+    </message>
+    <message>
+        <source>== device id %1 ==</source>
+        <translation>== 设备 ID %1 ==</translation>
+    </message>
+    <message>
+        <source>assign-id: give the new id with --to N, and one --id (the id the controller answers at now, 1 from the factory)</source>
+        <translation>assign-id：用 --to N 给出新 ID，并给一个 --id（控制器当前应答的 ID，出厂为 1）</translation>
+    </message>
+    <message>
+        <source>assign-id: the controller already has id %1</source>
+        <translation>assign-id：控制器已经是 ID %1</translation>
+    </message>
+    <message>
+        <source>assign-id: the register map has no device.id</source>
+        <translation>assign-id：寄存器表中没有 device.id</translation>
+    </message>
+    <message>
+        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
+        <translation>ID %1 上的应答是乱码：有两台或更多控制器同时应答。请只连接要分配 ID %2 的那台控制器，然后重试</translation>
+    </message>
+    <message>
+        <source>no controller answers at id %1: %2</source>
+        <translation>ID %1 上没有控制器应答：%2</translation>
+    </message>
+    <message>
+        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
+        <translation>ID %1 已被占用：已有控制器在该 ID 上应答。请选择一个空闲的 ID</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2</source>
+        <translation>设备 ID %1 → %2：控制器在 ID %2 上应答</translation>
+    </message>
+    <message>
+        <source>the controller does not answer at id %1: %2</source>
+        <translation>控制器在 ID %1 上不应答：%2</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DerivedValues</name>
@@ -2197,6 +2249,85 @@
     <message>
         <source>%1: wrote %2 but could not read it back</source>
         <translation>%1：已写入 %2，但无法回读</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::DeviceListDock</name>
+    <message>
+        <source>Device id %1 is already on the list.</source>
+        <translation>设备 ID %1 已在列表中。</translation>
+    </message>
+    <message>
+        <source>Devices on the line</source>
+        <translation>总线上的设备</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Referenced</source>
+        <translation>参考点</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>Add device</source>
+        <translation>添加设备</translation>
+    </message>
+    <message>
+        <source>Device id to add</source>
+        <translation>要添加的设备 ID</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>answering (in view)</source>
+        <translation>应答中（当前显示）</translation>
+    </message>
+    <message>
+        <source>not answering (in view)</source>
+        <translation>无应答（当前显示）</translation>
+    </message>
+    <message>
+        <source>asking (in view)</source>
+        <translation>询问中（当前显示）</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>应答中</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>asking</source>
+        <translation>询问中</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>motor %1</source>
+        <translation>电机 %1</translation>
     </message>
 </context>
 <context>
@@ -2503,6 +2634,32 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: sent</source>
         <translation>%1：已发送</translation>
     </message>
+    <message numerus="yes">
+        <source>E-STOP sent to %n controller(s): id %1</source>
+        <translation>
+            <numerusform>急停已发送给 %n 台控制器：ID %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged by every controller: id %1</source>
+        <translation>所有控制器都已确认急停：ID %1</translation>
+    </message>
+    <message>
+        <source>E-STOP NOT acknowledged by id %1 (%2); acknowledged by: %3</source>
+        <translation>ID %1 未确认急停（%2）；已确认的：%3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Device id %1 is not on this line (%2)</source>
+        <translation>设备 ID %1 不在这条总线上（%2）</translation>
+    </message>
+    <message>
+        <source>showing device %1</source>
+        <translation>切换到设备 %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -2582,6 +2739,25 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>写入失败：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdList</name>
+    <message>
+        <source>&apos;%1&apos; is not a device id or a range of ids (e.g. 1,2,3 or 1-3)</source>
+        <translation>“%1”不是设备 ID，也不是 ID 范围（例如 1,2,3 或 1-3）</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: device ids are 1-255</source>
+        <translation>“%1”：设备 ID 为 1-255</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the range runs backwards</source>
+        <translation>“%1”：范围的起点大于终点</translation>
+    </message>
+    <message>
+        <source>device id %1 is given twice</source>
+        <translation>设备 ID %1 给了两次</translation>
     </message>
 </context>
 <context>
@@ -3560,6 +3736,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>coil %1</source>
         <translation>线圈 %1</translation>
+    </message>
+    <message>
+        <source>id %1, %2</source>
+        <translation>ID %1，%2</translation>
     </message>
 </context>
 <context>
@@ -5490,6 +5670,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>--corrupt-crc works on the pseudo-terminal only, not with --serial</source>
         <translation>--corrupt-crc 仅适用于伪终端，不能与 --serial 同时使用</translation>
     </message>
+    <message>
+        <source>Several controllers on the one port, one per id (e.g. 1,2,3 or 1-3); a repeated id is a collision: both answer at once.</source>
+        <translation>在同一个端口上模拟多台控制器，每个 ID 一台（例如 1,2,3 或 1-3）；重复的 ID 即为冲突：两台同时应答。</translation>
+    </message>
+    <message>
+        <source>IDS</source>
+        <translation>ID列表</translation>
+    </message>
+    <message>
+        <source>--ids: give either --id or --ids, not both</source>
+        <translation>--ids：只能给 --id 或 --ids 之一，不能同时给</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimConsole</name>
@@ -6498,6 +6690,15 @@ verified; exit 0 only when it arrived</source>
         <translation>用单次运行将 motorN 运行距离 D 或运行到 X（轴单位）；
 之后恢复其原来的距离和方向并校验；
 仅在到达时退出码为 0</translation>
+    </message>
+    <message>
+        <source>give the one controller at --id (default 1, as it
+leaves the factory) the device id N and check it
+answers there; refuses when N is taken or two
+controllers answer at --id</source>
+        <translation>给 --id（默认 1，即出厂设置）上唯一的那台控制器
+分配设备 ID N，并确认它在新 ID 上应答；N 已被占用
+或 --id 上有两台控制器应答时拒绝执行</translation>
     </message>
 </context>
 </TS>

@@ -18,6 +18,7 @@
 #include "pages/motorpage.h"
 #include "pages/plotpage.h" // monitoring (issue 5)
 #include "profileactions.h" // profiles (issue 7)
+#include "widgets/devicelistdock.h"
 #include "widgets/linkstatus.h"
 #include "widgets/messageview.h"
 #include "widgets/offlinebanner.h"
@@ -285,6 +286,11 @@ void MainWindow::createDocks()
     addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
     m_viewMenu->addAction(m_statusDock->toggleViewAction());
     // --- end monitoring ---
+    // Several controllers on one line (issue 16): opened from the View menu.
+    m_deviceDock = new DeviceListDock(m_session, this);
+    addDockWidget(Qt::LeftDockWidgetArea, m_deviceDock);
+    m_deviceDock->hide();
+    m_viewMenu->addAction(m_deviceDock->toggleViewAction());
 }
 
 void MainWindow::showOrigin()

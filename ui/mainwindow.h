@@ -25,6 +25,7 @@ class OfflineBanner;
 class Page;
 class ProfileActions; // profiles (issue 7)
 class StatusDock;     // monitoring (issue 5)
+class DeviceListDock; // several controllers on one line (issue 16)
 class TrafficView;
 class WriteChangesDialog;
 class WriteFlow;
@@ -44,7 +45,8 @@ public:
     const QList<Page *> &pages() const { return m_pages; }
     Page *currentPage() const;
     void showPage(int index);
-    StatusDock *statusDock() const { return m_statusDock; } // monitoring (issue 5)
+    StatusDock *statusDock() const { return m_statusDock; }         // monitoring (issue 5)
+    DeviceListDock *deviceListDock() const { return m_deviceDock; } // issue 16
     TrafficView *trafficView() const { return m_traffic; }
     MessageView *messageView() const { return m_messages; }
     MotionPage *motionPage() const { return m_motion; }           // jogging (issue 5)
@@ -87,7 +89,8 @@ private:
     MessageView *m_messages = nullptr;
     QDockWidget *m_trafficDock = nullptr;
     QDockWidget *m_messageDock = nullptr;
-    StatusDock *m_statusDock = nullptr; // monitoring (issue 5)
+    StatusDock *m_statusDock = nullptr;     // monitoring (issue 5)
+    DeviceListDock *m_deviceDock = nullptr; // several controllers on one line (issue 16)
     LinkStatus *m_linkStatus = nullptr;
     MotionPage *m_motion = nullptr;       // jogging (issue 5)
     ProfileActions *m_profiles = nullptr; // profiles (issue 7)

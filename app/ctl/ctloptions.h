@@ -13,6 +13,9 @@ struct CtlOptions
     enum class Target { None, Port, Tcp, Sim };
     Target target = Target::None;
     LinkSettings link;
+    // --id 1,2,3 or 1-3: the command runs for each in turn over one link (link.deviceId is the
+    // first); one id: just that one.
+    QList<int> ids;
     QString mapFile;
     bool json = false;
     bool verbose = false;
@@ -27,6 +30,7 @@ struct CtlOptions
     QString by;                              // move --by D: a step of D axis units
     QString to;                              // move --to X: to position X
     QString language = QStringLiteral("en"); // --lang or the environment: messages and the report
+    int assignTo = 0;                        // assign-id --to N
     int count = -1;
     int intervalMs = 0;
     QString command;

@@ -118,6 +118,12 @@ const QList<CtlCommand> &CtlRunner::commands()
                            "--save-to-flash saves afterwards; the settings it\n"
                            "replaces are saved as a backup first (--no-backup)"),
          &CtlRunner::runApply},
+        {"assign-id", "assign-id --to N",
+         QT_TRANSLATE_NOOP("stepcomctl", "give the one controller at --id (default 1, as it\n"
+                                         "leaves the factory) the device id N and check it\n"
+                                         "answers there; refuses when N is taken or two\n"
+                                         "controllers answer at --id"),
+         &CtlRunner::runAssignId},
         {"report", "report FILE.pdf|.html",
          QT_TRANSLATE_NOOP("stepcomctl", "write the commissioning report (--name, --notes,\n"
                                          "--lang en|zh_CN; --from PROFILE: from a profile\n"
@@ -165,7 +171,11 @@ void CtlRunner::start()
             chosen = &c;
     }
     if (chosen) {
-        (this->*chosen->run)();
+        m_chosen = chosen;
+        if (isMulti())
+            startMulti();
+        else
+            (this->*chosen->run)();
         return;
     }
     fail(UsageError, unknownCommandMessage(m_options.command));
@@ -181,6 +191,12 @@ void CtlRunner::finish(int code)
 {
     if (m_finished)
         return;
+    if (isMulti() && m_chosen) {
+        if (nextId(code))
+            return;
+        code = worstCode();
+        printMulti();
+    }
     m_finished = true;
     m_out.flush();
     m_err.flush();
@@ -208,9 +224,17 @@ void CtlRunner::connectThen(std::function<void()> next)
         fail(UsageError, tr("no controller given: use --port PATH, --tcp HOST[:PORT] or --sim"));
         return;
     }
+    if (m_session && m_session->isConnected()) {
+        next(); // --id with several: the next id on the link that is already open
+        return;
+    }
+    if (m_session)
+        m_session->deleteLater(); // a link that could not be opened for the last id
     // One-shot: no read-all after connecting, no status poll; each command reads what it names.
     m_session = new DeviceSession(m_map, this);
     m_session->setLive(false);
+    if (isMulti())
+        m_session->setDeviceIds(m_options.ids);
     if (m_options.verbose) {
         connect(m_session->traffic(), &TrafficLog::entryAdded, this,
                 [this](const TrafficEntry &e) { m_err << TrafficLog::format(e) << Qt::endl; });
@@ -235,7 +259,10 @@ void CtlRunner::connectThen(std::function<void()> next)
     if (m_options.target == CtlOptions::Target::Sim) {
         // The built-in controller runs in this process; on Unix it is reached over a
         // pseudo-terminal, so --sim takes the same RTU path as a real adapter.
-        m_session->setSimulator(std::make_unique<BuiltinSimulator>());
+        auto sim = std::make_unique<BuiltinSimulator>();
+        if (isMulti())
+            sim->setIds(m_options.ids); // one simulated controller per id, on one line
+        m_session->setSimulator(std::move(sim));
         m_session->connectSimulator();
     } else {
         m_session->connectTo(m_options.link);

@@ -291,7 +291,7 @@ void ModbusLink::pump()
     m_inFlight = m_queue.takeNext();
     m_inFlight->attempts += 1;
     const Request req = m_inFlight->request;
-    const int id = m_settings.deviceId;
+    const int id = req.unitId > 0 ? req.unitId : m_settings.deviceId;
     ++m_stats.requests;
     m_sentAt.start();
     Q_EMIT dispatched(m_inFlight->id, req);
@@ -464,6 +464,8 @@ QString ModbusLink::describe(const Request &request) const
                     .arg(QString::number(request.address, 16)
                              .rightJustified(4, QLatin1Char('0'))
                              .toUpper());
+    if (request.unitId > 0 && request.unitId != m_settings.deviceId)
+        where = tr("id %1, %2").arg(request.unitId).arg(where);
     if (request.what.isEmpty())
         return where;
     return QStringLiteral("%1 [%2]").arg(request.what, where);

@@ -1,6 +1,8 @@
 #include "device/devicesession.h"
 
 #include "bus/modbuslink.h"
+#include "device/buspoller.h"
+#include "device/idlist.h"
 #include "device/jogcontroller.h"
 #include "device/linkhealth.h"
 #include "device/motionjudge.h"
@@ -9,6 +11,9 @@
 #include "device/statusrecorder.h"
 #include "device/stepmove.h"
 #include "i18n/translators.h"
+
+#include <algorithm>
+#include <memory>
 
 namespace stepcom {
 
@@ -22,6 +27,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     , m_health(new LinkHealth(m_link, this))
     , m_jog(new JogController(this, this))
     , m_step(new StepMove(this))
+    , m_bus(new BusPoller(m_link, map, this))
 {
     // The outcome is said when the controller showed it, not when the command went out.
     connect(m_motion, &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
@@ -29,6 +35,8 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     });
     m_poller->useStatusKeys(); // the full status; positions and running while a motor runs
     m_poller->setIntervalMs(Poller::intervalFromEnvironment(100));
+    m_bus->setKeys(m_poller->keys());
+    connect(m_bus, &BusPoller::statusChanged, this, &DeviceSession::deviceStatusChanged);
     m_link->traffic()->setMap(&m_client->map());
     connect(m_link, &ModbusLink::opened, this, [this](bool ok, const QString &reason) {
         Q_EMIT connected(ok, reason);
@@ -40,8 +48,11 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             tr("Opened %1; asking the controller").arg(m_link->settings().describe()));
         if (std::exchange(m_readAfterConnect, false) && m_live)
             readAll();
-        if (m_live)
+        if (m_live) {
             m_poller->start();
+            updateBackground();
+            m_bus->start();
+        }
     });
     connect(m_link, &ModbusLink::stateChanged, this, &DeviceSession::linkStateChanged);
     connect(m_link, &ModbusLink::statsChanged, this, &DeviceSession::linkStatsChanged);
@@ -56,6 +67,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     });
     connect(m_link, &ModbusLink::lost, this, [this](const QString &reason) {
         m_poller->stop();
+        m_bus->stop();
         m_store->forgetDeviceValues();
         say(Severity::Error, tr("Link lost: %1").arg(reason));
         Q_EMIT disconnected(reason);
@@ -236,6 +248,7 @@ void DeviceSession::disconnectFrom(const QString &reason)
 {
     const QString why = reason.isEmpty() ? tr("disconnected by the user") : reason;
     m_poller->stop();
+    m_bus->stop();
     m_link->close(why);
     m_store->forgetDeviceValues();
     Q_EMIT disconnected(why);
@@ -355,6 +368,11 @@ void DeviceSession::emergencyStop()
     }
     // Anything still waiting (polls, reads, queued moves) is stale after an emergency stop.
     m_link->cancelQueued(Priority::Command, tr("emergency stop"));
+    const QList<int> ids = deviceIds();
+    if (ids.size() > 1) {
+        emergencyStopAll(ids);
+        return;
+    }
     say(Severity::Warning, tr("E-STOP sent"));
     command(QStringLiteral("estop"));
 }
@@ -385,6 +403,128 @@ void DeviceSession::guardedCommand(Risk risk, const QString &key)
         say(Severity::Error, refusal);
         Q_EMIT commandFinished(key, false);
     });
+}
+
+void DeviceSession::emergencyStopAll(const QList<int> &ids)
+{
+    const Parameter *estop = map().find(QStringLiteral("estop"));
+    if (!estop || !estop->isCoil()) {
+        say(Severity::Error, tr("Unknown command %1").arg(QStringLiteral("estop")));
+        return;
+    }
+    say(Severity::Warning, tr("E-STOP sent to %n controller(s): id %1", nullptr, int(ids.size()))
+                               .arg(IdList::format(ids)));
+    struct Tally
+    {
+        QList<int> acknowledged;
+        QList<int> notAcknowledged;
+        QStringList errors;
+        int pending = 0;
+    };
+    auto tally = std::make_shared<Tally>();
+    tally->pending = int(ids.size());
+    // All at emergency priority, in the order of the list: each is next on the wire.
+    for (int id : ids) {
+        Request req = Request::coil(estop->address, true, Priority::Emergency);
+        req.what = estop->key;
+        req.unitId = id;
+        m_link->submit(
+            req,
+            [this, id, ids, tally](const Result &r) {
+                (r.ok ? tally->acknowledged : tally->notAcknowledged).append(id);
+                if (!r.ok)
+                    tally->errors << r.errorText;
+                if (id == deviceInView() && r.ok)
+                    Q_EMIT commandFinished(QStringLiteral("estop"), true);
+                if (--tally->pending > 0)
+                    return;
+                auto inOrder = [&ids](QList<int> list) {
+                    std::sort(list.begin(), list.end(),
+                              [&ids](int a, int b) { return ids.indexOf(a) < ids.indexOf(b); });
+                    return list;
+                };
+                const QList<int> ack = inOrder(tally->acknowledged);
+                const QList<int> nack = inOrder(tally->notAcknowledged);
+                if (nack.isEmpty())
+                    say(Severity::Warning, tr("E-STOP acknowledged by every controller: id %1")
+                                               .arg(IdList::format(ack)));
+                else
+                    say(Severity::Error,
+                        tr("E-STOP NOT acknowledged by id %1 (%2); acknowledged by: %3")
+                            .arg(IdList::format(nack), tally->errors.join(QLatin1String("; ")),
+                                 ack.isEmpty() ? tr("none") : IdList::format(ack)));
+                Q_EMIT emergencyStopFinished(ack, nack);
+            },
+            this);
+    }
+}
+
+void DeviceSession::setDeviceIds(const QList<int> &ids)
+{
+    m_deviceIds = ids;
+    updateBackground();
+}
+
+QList<int> DeviceSession::deviceIds() const
+{
+    if (m_deviceIds.isEmpty())
+        return {deviceInView()};
+    return m_deviceIds;
+}
+
+int DeviceSession::deviceInView() const
+{
+    return m_link->settings().deviceId;
+}
+
+bool DeviceSession::showDevice(int id)
+{
+    if (!deviceIds().contains(id)) {
+        say(Severity::Error,
+            tr("Device id %1 is not on this line (%2)").arg(id).arg(IdList::format(deviceIds())));
+        return false;
+    }
+    if (id == deviceInView())
+        return true;
+    stopJogging(JogStop::PageLeft); // its stops are addressed to the device they run on
+    const bool polling = m_poller->isActive();
+    m_poller->stop();
+    m_bus->stop();
+    // Reads queued for the device that was in view would land in the new one's store.
+    m_link->cancelQueued(Priority::Read, tr("showing device %1").arg(id));
+    m_link->setDeviceId(id);
+    m_store->forgetDeviceValues();
+    updateBackground();
+    Q_EMIT deviceInViewChanged(id);
+    if (m_link->isConnected() && m_live) {
+        readAll();
+        if (polling)
+            m_poller->start();
+        m_bus->start();
+    }
+    return true;
+}
+
+void DeviceSession::setBackgroundIntervalMs(int ms)
+{
+    m_bus->setIntervalMs(ms);
+}
+
+int DeviceSession::backgroundIntervalMs() const
+{
+    return m_bus->intervalMs();
+}
+
+BusDeviceStatus DeviceSession::deviceStatus(int id) const
+{
+    return m_bus->status(id);
+}
+
+void DeviceSession::updateBackground()
+{
+    QList<int> others = deviceIds();
+    others.removeAll(deviceInView());
+    m_bus->setDevices(others);
 }
 
 void DeviceSession::saveToFlash()

@@ -5,6 +5,7 @@
 #include "bus/linkstats.h"    // LinkStats
 #include "bus/request.h"      // Priority, Result
 #include "bus/trafficlog.h"   // TrafficLog, TrafficEntry
+#include "device/busdevicestatus.h"
 #include "device/deviceclient.h"
 #include "device/parameterstore.h"
 #include "device/poller.h" // PollStats
@@ -16,6 +17,7 @@
 
 namespace stepcom {
 
+class BusPoller;
 class JogController;
 class LinkHealth;
 class ModbusLink;
@@ -139,6 +141,22 @@ public:
     // Stop every jog for this reason; returns how many stops were sent or scheduled.
     int stopJogging(JogStop why);
 
+    // Several controllers on one line (RS-485: one pair of wires, one id each). The link's
+    // device id is the device in view; the others' status is read at the background rate, and
+    // emergencyStop() reaches every one. Empty or one id: a single controller.
+    void setDeviceIds(const QList<int> &ids);
+    QList<int> deviceIds() const;
+    int deviceInView() const;
+    // Show another device of the list without reconnecting: a jog still held is stopped on the
+    // device it runs on, then the store and the live poll move to `id`. False (and a message)
+    // when `id` is not on the list.
+    bool showDevice(int id);
+    // How often each device not in view has its status read.
+    void setBackgroundIntervalMs(int ms);
+    int backgroundIntervalMs() const;
+    // The background poll's view of a device not in view (Unknown before its first read).
+    BusDeviceStatus deviceStatus(int id) const;
+
 Q_SIGNALS:
     void connected(bool ok, const QString &reason);
     void disconnected(const QString &reason);
@@ -155,6 +173,11 @@ Q_SIGNALS:
     void statusCycleFinished(bool ok, qint64 ms);
     void statusFastChanged(bool fast);
     void travelLimitsChanged();
+    void deviceInViewChanged(int id);
+    void deviceStatusChanged(int id);
+    // After emergencyStop(): which controllers acknowledged their E-STOP, and which did not
+    // (in the order of the list).
+    void emergencyStopFinished(const QList<int> &acknowledged, const QList<int> &notAcknowledged);
 
 private:
     friend class SessionInternals; // tests and the benchmark's link measurements
@@ -165,6 +188,9 @@ private:
     void writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous);
     // After a failed write, read back what the controller holds for the keys whose request went
     // out without a good answer.
+    // The devices not in view, for the background poll.
+    void updateBackground();
+    void emergencyStopAll(const QList<int> &ids);
     void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
 
     ModbusLink *m_link;
@@ -177,6 +203,8 @@ private:
     StepMove *m_step;
     TravelLimits m_limits;
     RiskGuard m_guard;
+    BusPoller *m_bus;
+    QList<int> m_deviceIds; // the line's devices in order; empty: the link's id alone
     StatusRecorder *m_recorder = nullptr;
     std::unique_ptr<SimulatorStarter> m_sim;
     bool m_usingSim = false;
