@@ -4,6 +4,8 @@
 #include "device/jogcontroller.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
+#include "help/guidewindow.h"
+#include "help/userguide.h"
 #include "language.h"
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
@@ -36,6 +38,7 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
+#include <QWhatsThis>
 
 namespace stepcom {
 
@@ -56,6 +59,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     m_sidebar->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 28);
     setCentralWidget(splitter);
     connect(m_sidebar, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
+    connect(m_stack, &QStackedWidget::currentChanged, this, &MainWindow::updateTitle);
 
     addPage(new ConnectionPage(session, this));
     for (int n = 1; n <= session->map().blockCount(QStringLiteral("motor")); ++n)
@@ -165,6 +169,17 @@ void MainWindow::createActions()
         box->setAttribute(Qt::WA_DeleteOnClose);
         box->open();
     });
+    m_guideAction = make("userGuide", QKeySequence::HelpContents, [this] {
+        // F1 in an open dialog explains the dialog; otherwise the page in view.
+        const QWidget *active = QApplication::activeWindow();
+        const QString topic = active && active != this
+                                  ? QString::fromLatin1(active->metaObject()->className())
+                                  : QString();
+        openGuide(UserGuide::topics().contains(topic) ? topic : QString());
+    });
+    m_guideAction->setShortcutContext(Qt::ApplicationShortcut);
+    m_whatsThis = QWhatsThis::createAction(this);
+    m_whatsThis->setObjectName(QStringLiteral("whatsThis"));
     m_languages = new QActionGroup(this);
     for (const QString &lang : Language::available()) {
         auto *a = new QAction(Language::nativeName(lang), m_languages);
@@ -214,6 +229,9 @@ void MainWindow::createMenus()
     m_languageMenu = menuBar()->addMenu(QString());
     m_languageMenu->addActions(m_languages->actions());
     m_helpMenu = menuBar()->addMenu(QString());
+    m_helpMenu->addAction(m_guideAction);
+    m_helpMenu->addAction(m_whatsThis);
+    m_helpMenu->addSeparator();
     m_helpMenu->addAction(m_about);
 }
 
@@ -243,7 +261,12 @@ void MainWindow::createDocks()
 
 void MainWindow::retranslate()
 {
-    setWindowTitle(tr("StepCom — stepper controller commissioning"));
+    updateTitle();
+    m_guideAction->setText(tr("&User guide"));
+    m_guideAction->setToolTip(
+        tr("The user guide at the section about this page (%1)")
+            .arg(m_guideAction->shortcut().toString(QKeySequence::NativeText)));
+    m_whatsThis->setText(tr("What's &this?"));
     m_readAll->setText(tr("&Read all"));
     m_readAll->setToolTip(tr("Read every parameter from the controller (%1)")
                               .arg(m_readAll->shortcut().toString(QKeySequence::NativeText)));
@@ -281,6 +304,30 @@ void MainWindow::retranslate()
     for (QAction *a : m_languages->actions())
         a->setChecked(a->objectName() ==
                       QStringLiteral("language_") + Language::instance().current());
+}
+
+void MainWindow::updateTitle()
+{
+    // The platform adds the program's name ("Motor 1 — StepCom"): the page is all we add.
+    const Page *page = currentPage();
+    setWindowTitle(page ? page->title() : QString());
+}
+
+GuideWindow *MainWindow::openGuide(const QString &topic)
+{
+    if (!m_guide)
+        m_guide = new GuideWindow(this);
+    const QString what = !topic.isEmpty() ? topic
+                         : currentPage()
+                             ? QString::fromLatin1(currentPage()->metaObject()->className())
+                             : QString();
+    QString error;
+    if (!m_guide->showTopic(what, Language::instance().current(), &error))
+        m_messages->add(DeviceSession::Severity::Warning, error);
+    m_guide->show();
+    m_guide->raise();
+    m_guide->activateWindow();
+    return m_guide;
 }
 
 void MainWindow::changeEvent(QEvent *event)

@@ -15,6 +15,7 @@ namespace stepcom {
 
 class DeviceSession;
 class EmergencyStop;
+class GuideWindow;
 class LinkStatus;
 class MessageView;
 class MotionPage; // jogging (issue 5)
@@ -52,6 +53,9 @@ public:
 
     // Ask before writing: opens the write dialog (non-modal to the event loop).
     void writeChanges();
+    // Help → User guide (F1): the guide in the window's language at the section of `topic`
+    // (a page's or dialog's class name; the current page when empty).
+    GuideWindow *openGuide(const QString &topic = QString());
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -64,6 +68,7 @@ private:
     void addPage(Page *page);
     void retranslate();
     void updateActions();
+    void updateTitle();
     void restoreLayout();
     void saveLayout();
 
@@ -94,6 +99,9 @@ private:
     QAction *m_estopAction = nullptr;
     QAction *m_quit = nullptr;
     QAction *m_about = nullptr;
+    QAction *m_guideAction = nullptr;
+    QAction *m_whatsThis = nullptr;
+    GuideWindow *m_guide = nullptr;
     QActionGroup *m_languages = nullptr;
     QMenu *m_fileMenu = nullptr;
     QMenu *m_deviceMenu = nullptr;
