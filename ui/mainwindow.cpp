@@ -2,6 +2,7 @@
 
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
+#include "device/sessionlog.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "help/guidewindow.h"
@@ -80,6 +81,9 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     connect(m_sidebar, &QListWidget::currentRowChanged, session,
             [session] { session->stopJogging(DeviceSession::JogStop::PageLeft); });
     connect(session->jog(), &JogController::message, m_messages, &MessageView::add);
+    connect(m_sessionLog, &SessionLog::failed, this, [this](const QString &reason) {
+        m_messages->add(DeviceSession::Severity::Warning, reason);
+    });
     connect(m_profiles, &ProfileActions::finished, this, // profiles (issue 7)
             [this](bool ok, const QString &text) {
                 m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,
@@ -239,6 +243,8 @@ void MainWindow::createDocks()
 {
     m_traffic = new TrafficView(this);
     m_traffic->setLog(m_session->traffic());
+    m_sessionLog = new SessionLog(m_session, this);
+    m_traffic->setLogFolder(m_sessionLog->directory());
     m_trafficDock = new QDockWidget(this);
     m_trafficDock->setObjectName(QStringLiteral("trafficDock"));
     m_trafficDock->setWidget(m_traffic);

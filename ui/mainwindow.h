@@ -21,7 +21,8 @@ class MessageView;
 class MotionPage; // jogging (issue 5)
 class Page;
 class ProfileActions; // profiles (issue 7)
-class StatusDock;     // monitoring (issue 5)
+class SessionLog;
+class StatusDock; // monitoring (issue 5)
 class TrafficView;
 class WriteChangesDialog;
 class WriteFlow;
@@ -43,6 +44,8 @@ public:
     void showPage(int index);
     StatusDock *statusDock() const { return m_statusDock; } // monitoring (issue 5)
     TrafficView *trafficView() const { return m_traffic; }
+    // Every frame of every connection in a file (the Traffic dock's "Open log folder").
+    SessionLog *sessionLog() const { return m_sessionLog; }
     MessageView *messageView() const { return m_messages; }
     MotionPage *motionPage() const { return m_motion; }           // jogging (issue 5)
     ProfileActions *profileActions() const { return m_profiles; } // profiles (issue 7)
@@ -79,6 +82,7 @@ private:
     QStackedWidget *m_stack;
     QList<Page *> m_pages;
     TrafficView *m_traffic = nullptr;
+    SessionLog *m_sessionLog = nullptr;
     MessageView *m_messages = nullptr;
     QDockWidget *m_trafficDock = nullptr;
     QDockWidget *m_messageDock = nullptr;
