@@ -2,11 +2,13 @@
 
 #include "device/devicesession.h"
 #include "dialogs/profilecomparedialog.h"
+#include "dialogs/profilesavedialog.h"
 #include "language.h"
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
 
 #include <QAction>
+#include <QDate>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -161,22 +163,47 @@ void ProfileActions::chooseOpen()
     dialog->open();
 }
 
+ProfileSaveDialog *ProfileActions::saveDialog() const
+{
+    return m_saveDialog;
+}
+
+QString ProfileActions::suggestedName() const
+{
+    return ProfileSaveDialog::suggestName(
+        m_machine, m_session->isConnected() ? m_session->settings().deviceId : 0,
+        QDate::currentDate());
+}
+
 void ProfileActions::chooseSave(bool fromDevice)
 {
-    auto *dialog = new QFileDialog(m_window,
-                                   fromDevice ? tr("Save profile from the device")
-                                              : tr("Save profile from the edited values"),
-                                   lastDirectory(), tr("StepCom profiles (*.json)"));
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->setAcceptMode(QFileDialog::AcceptSave);
-    dialog->setDefaultSuffix(QStringLiteral("json"));
-    connect(dialog, &QFileDialog::fileSelected, this, [this, fromDevice](const QString &path) {
-        if (fromDevice)
-            saveFromDeviceFile(path);
-        else
-            saveFromEditedFile(path);
+    // First the name and notes, then where: the file is named after the profile.
+    if (m_saveDialog)
+        m_saveDialog->close();
+    m_saveDialog = new ProfileSaveDialog(fromDevice, suggestedName(), m_window);
+    m_saveDialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(m_saveDialog, &QDialog::accepted, this, [this, fromDevice] {
+        const QString name = m_saveDialog->name();
+        const QString notes = m_saveDialog->notes();
+        auto *dialog =
+            new QFileDialog(m_window,
+                            fromDevice ? tr("Save profile from the device")
+                                       : tr("Save profile from the edited values"),
+                            QDir(lastDirectory()).filePath(ProfileSaveDialog::fileNameFor(name)),
+                            tr("StepCom profiles (*.json)"));
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->setAcceptMode(QFileDialog::AcceptSave);
+        dialog->setDefaultSuffix(QStringLiteral("json"));
+        connect(dialog, &QFileDialog::fileSelected, this,
+                [this, fromDevice, name, notes](const QString &path) {
+                    if (fromDevice)
+                        saveFromDeviceFile(path, name, notes);
+                    else
+                        saveFromEditedFile(path, name, notes);
+                });
+        dialog->open();
     });
-    dialog->open();
+    m_saveDialog->open();
 }
 
 void ProfileActions::chooseReport()
@@ -207,6 +234,7 @@ bool ProfileActions::openFile(const QString &path)
         return false;
     }
     addRecent(path);
+    m_machine = r.profile->name.isEmpty() ? QFileInfo(path).completeBaseName() : r.profile->name;
     if (m_compare)
         m_compare->close();
     m_compare =
@@ -224,7 +252,8 @@ bool ProfileActions::openFile(const QString &path)
     return true;
 }
 
-void ProfileActions::saveFromDeviceFile(const QString &path)
+void ProfileActions::saveFromDeviceFile(const QString &path, const QString &name,
+                                        const QString &notes)
 {
     if (!m_session->isConnected()) {
         showErrors(tr("Save profile"), {tr("Connect to a controller first.")});
@@ -232,7 +261,7 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
     }
     const QList<const Parameter *> params = Profile::profileParameters(m_session->map(), true);
     QPointer<ProfileActions> self(this);
-    m_session->read(params, [self, path](const ReadOutcome &r) {
+    m_session->read(params, [self, path, name, notes](const ReadOutcome &r) {
         if (!self)
             return;
         self->m_session->parameters()->setDeviceValues(r.values);
@@ -244,7 +273,8 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
             return;
         }
         Profile profile = Profile::fromValues(self->m_session->map(), r.values, true);
-        profile.name = QFileInfo(path).completeBaseName();
+        profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
+        profile.notes = notes;
         profile.deviceId = self->m_session->settings().deviceId;
         if (const QString e = ProfileFile::save(path, profile, self->m_session->map());
             !e.isEmpty()) {
@@ -252,13 +282,15 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
             return;
         }
         self->addRecent(path);
+        self->m_machine = profile.name;
         Q_EMIT self->finished(true, tr("Saved the controller's %n parameter(s) to %1", nullptr,
                                        int(profile.values.size()))
                                         .arg(path));
     });
 }
 
-bool ProfileActions::saveFromEditedFile(const QString &path)
+bool ProfileActions::saveFromEditedFile(const QString &path, const QString &name,
+                                        const QString &notes)
 {
     QHash<QString, qint64> values;
     QStringList unknown;
@@ -275,7 +307,8 @@ bool ProfileActions::saveFromEditedFile(const QString &path)
         return false;
     }
     Profile profile = Profile::fromValues(m_session->map(), values, true);
-    profile.name = QFileInfo(path).completeBaseName();
+    profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
+    profile.notes = notes;
     if (m_session->isConnected())
         profile.deviceId = m_session->settings().deviceId;
     if (const QString e = ProfileFile::save(path, profile, m_session->map()); !e.isEmpty()) {
@@ -283,6 +316,7 @@ bool ProfileActions::saveFromEditedFile(const QString &path)
         return false;
     }
     addRecent(path);
+    m_machine = profile.name;
     Q_EMIT finished(true, tr("Saved %n value(s) as shown (edits included) to %1", nullptr,
                              int(profile.values.size()))
                               .arg(path));

@@ -13,6 +13,7 @@ namespace stepcom {
 
 class DeviceSession;
 class ProfileCompareDialog;
+class ProfileSaveDialog;
 
 // The File menu's profile and report actions: open a profile (compare, never write by itself),
 // save one from the device or from the edited values, recent profiles, the commissioning
@@ -30,6 +31,11 @@ public:
     QAction *reportAction() const { return m_report; }
     QMenu *recentMenu() const { return m_recent; }
     ProfileCompareDialog *compareDialog() const;
+    // Asks for the profile's name and notes before the file chooser (open while it asks).
+    ProfileSaveDialog *saveDialog() const;
+    // What a new profile is called at first: the machine (the last profile opened or saved)
+    // or the controller's id, and today's date.
+    QString suggestedName() const;
     QMessageBox *errorBox() const;
 
     static QStringList recentFiles();
@@ -38,9 +44,12 @@ public:
     // Parse, then show the comparison; a bad file shows every problem and writes nothing.
     bool openFile(const QString &path);
     // Read everything from the controller, then save (done reports the outcome).
-    void saveFromDeviceFile(const QString &path);
+    // An empty name names the profile after the file.
+    void saveFromDeviceFile(const QString &path, const QString &name = QString(),
+                            const QString &notes = QString());
     // Save what the window shows: the edits where there are any, else the controller's values.
-    bool saveFromEditedFile(const QString &path);
+    bool saveFromEditedFile(const QString &path, const QString &name = QString(),
+                            const QString &notes = QString());
     // Read everything, then write the report as PDF or HTML by the file's suffix.
     void reportFile(const QString &path, const QString &notes);
 
@@ -66,6 +75,8 @@ private:
     QAction *m_report;
     QMenu *m_recent;
     QPointer<ProfileCompareDialog> m_compare;
+    QPointer<ProfileSaveDialog> m_saveDialog;
+    QString m_machine; // the name of the last profile opened or saved
     QPointer<QMessageBox> m_errorBox;
 };
 
