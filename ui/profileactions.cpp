@@ -348,6 +348,8 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         input.deviceId = self->m_session->settings().deviceId;
         input.notes = notes;
         input.date = QDateTime::currentDateTime();
+        input.lastRead = input.date; // read just now, for this report
+        input.savedToFlash = !self->m_session->parameters()->unsavedToFlash();
         input.locale = Language::instance().current();
         if (const QString e = CommissioningReport(input).write(path); !e.isEmpty()) {
             self->showErrors(tr("Commissioning report"), {e});
