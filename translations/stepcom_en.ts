@@ -1293,6 +1293,14 @@
         <translation>Not connected.</translation>
     </message>
     <message>
+        <source>%1 is open, but the controller does not answer.</source>
+        <translation>%1 is open, but the controller does not answer.</translation>
+    </message>
+    <message>
+        <source>%1 is open; waiting for the controller to answer…</source>
+        <translation>%1 is open; waiting for the controller to answer…</translation>
+    </message>
+    <message>
         <source>Serial port plugged in: %1</source>
         <translation>Serial port plugged in: %1</translation>
     </message>
@@ -1302,6 +1310,17 @@
     <message>
         <source>link lost: %1</source>
         <translation>link lost: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlMotionWait</name>
+    <message>
+        <source>%1 would not move anything here (nothing in the homing order, or every motor runs): nothing to wait for</source>
+        <translation>%1 would not move anything here (nothing in the homing order, or every motor runs): nothing to wait for</translation>
+    </message>
+    <message>
+        <source>%1: sent, waiting for the motion to end</source>
+        <translation>%1: sent, waiting for the motion to end</translation>
     </message>
 </context>
 <context>
@@ -1473,6 +1492,10 @@
     <message>
         <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
         <translation>apply: do not save a backup of the controller&apos;s settings before writing.</translation>
+    </message>
+    <message>
+        <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
+        <translation>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</translation>
     </message>
 </context>
 <context>
@@ -1740,6 +1763,14 @@
     <message>
         <source>with the commissioning checklist %1: %2</source>
         <translation>with the commissioning checklist %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: sent (add --wait to wait for how it ends)</source>
+        <translation>%1: sent (add --wait to wait for how it ends)</translation>
+    </message>
+    <message>
+        <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
+        <translation>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</translation>
     </message>
 </context>
 <context>
@@ -2086,10 +2117,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Cannot connect: %1</translation>
     </message>
     <message>
-        <source>Connected to %1</source>
-        <translation>Connected to %1</translation>
-    </message>
-    <message>
         <source>Link lost: %1</source>
         <translation>Link lost: %1</translation>
     </message>
@@ -2182,6 +2209,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the window closes</source>
         <translation>the window closes</translation>
+    </message>
+    <message>
+        <source>Opened %1; asking the controller</source>
+        <translation>Opened %1; asking the controller</translation>
+    </message>
+    <message>
+        <source>The port is open, but the controller at %1 does not answer.</source>
+        <translation>The port is open, but the controller at %1 does not answer.</translation>
+    </message>
+    <message>
+        <source>The controller answers.</source>
+        <translation>The controller answers.</translation>
+    </message>
+    <message>
+        <source>%1: sent</source>
+        <translation>%1: sent</translation>
     </message>
 </context>
 <context>
@@ -2740,24 +2783,16 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Motor %1: jog %2 not done: %3</source>
         <translation>Motor %1: jog %2 not done: %3</translation>
     </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::JogPanel</name>
     <message>
         <source>stop button</source>
         <translation>stop button</translation>
-    </message>
-    <message>
-        <source>Single move</source>
-        <translation>Single move</translation>
-    </message>
-    <message>
-        <source>Homing</source>
-        <translation>Homing</translation>
-    </message>
-    <message>
-        <source>%1 done</source>
-        <translation>%1 done</translation>
     </message>
     <message>
         <source>Not connected.</source>
@@ -2907,6 +2942,37 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Run motor %1 in reverse to its home input and set its position to 0</source>
         <translation>Run motor %1 in reverse to its home input and set its position to 0</translation>
     </message>
+    <message>
+        <source>Reference: %1</source>
+        <translation>Reference: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::LinkHealth</name>
+    <message>
+        <source>Port closed</source>
+        <translation>Port closed</translation>
+    </message>
+    <message>
+        <source>Opening the port…</source>
+        <translation>Opening the port…</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for the controller…</source>
+        <translation>Port open, waiting for the controller…</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>Not answering</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>Connected</translation>
+    </message>
+    <message>
+        <source>The port is open but no controller answers. Likely causes: another device id (factory: 1), another baud rate (factory: 9600) or parity (factory: none), the RS-485 wires A and B swapped, or the controller has no power. A bus scan tries the ids and baud rates for you.</source>
+        <translation>The port is open but no controller answers. Likely causes: another device id (factory: 1), another baud rate (factory: 9600) or parity (factory: none), the RS-485 wires A and B swapped, or the controller has no power. A bus scan tries the ids and baud rates for you.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::LinkSettings</name>
@@ -2984,6 +3050,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</source>
         <translation>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>Not answering</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for an answer…</source>
+        <translation>Port open, waiting for an answer…</translation>
     </message>
 </context>
 <context>
@@ -3095,6 +3169,13 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n edited values were never written to the controller. Close anyway and lose them?</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file. Close anyway and lose them?</source>
+        <translation>
+            <numerusform>%n edited value of %1 are not saved in the file. Close anyway and lose them?</numerusform>
+            <numerusform>%n edited values of %1 are not saved in the file. Close anyway and lose them?</numerusform>
+        </translation>
+    </message>
     <message>
         <source>&amp;User guide</source>
         <translation>&amp;User guide</translation>
@@ -3106,6 +3187,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>What&apos;s &amp;this?</source>
         <translation>What&apos;s &amp;this?</translation>
+    </message>
+    <message>
+        <source>%1%2 — profile file, no controller</source>
+        <translation>%1%2 — profile file, no controller</translation>
     </message>
 </context>
 <context>
@@ -3435,28 +3520,135 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</source>
         <translation>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</translation>
     </message>
+    <message>
+        <source>The profile file does not set the mode.</source>
+        <translation>The profile file does not set the mode.</translation>
+    </message>
+    <message>
+        <source>The profile sets the normal mode.</source>
+        <translation>The profile sets the normal mode.</translation>
+    </message>
+    <message>
+        <source>The profile sets special mode %1.</source>
+        <translation>The profile sets special mode %1.</translation>
+    </message>
 </context>
 <context>
-    <name>stepcom::MotionPage</name>
+    <name>stepcom::MotionJudge</name>
+    <message>
+        <source>Motor %1&apos;s positive limit (IN%2) is already ON and %3 drives motor %1 forward: it stops at once.</source>
+        <translation>Motor %1&apos;s positive limit (IN%2) is already ON and %3 drives motor %1 forward: it stops at once.</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s negative limit (IN%2) is already ON and %3 drives motor %1 in reverse: it stops at once.</source>
+        <translation>Motor %1&apos;s negative limit (IN%2) is already ON and %3 drives motor %1 in reverse: it stops at once.</translation>
+    </message>
+    <message>
+        <source>the single move</source>
+        <translation>the single move</translation>
+    </message>
+    <message>
+        <source>the return to data zero</source>
+        <translation>the return to data zero</translation>
+    </message>
+    <message>
+        <source>the approach to the start point</source>
+        <translation>the approach to the start point</translation>
+    </message>
+    <message>
+        <source>the arc</source>
+        <translation>the arc</translation>
+    </message>
+    <message>
+        <source>the line</source>
+        <translation>the line</translation>
+    </message>
+    <message>
+        <source>Single move of motor %1</source>
+        <translation>Single move of motor %1</translation>
+    </message>
+    <message>
+        <source>Homing motor %1</source>
+        <translation>Homing motor %1</translation>
+    </message>
     <message>
         <source>Homing in order</source>
         <translation>Homing in order</translation>
     </message>
     <message>
-        <source>Returning to data zero</source>
-        <translation>Returning to data zero</translation>
+        <source>Return to data zero</source>
+        <translation>Return to data zero</translation>
     </message>
+    <message>
+        <source>Arc</source>
+        <translation>Arc</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>Line</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>stop</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>link lost</translation>
+    </message>
+    <message>
+        <source>an unknown position</source>
+        <translation>an unknown position</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s positive limit (IN%2) is ON</source>
+        <translation>motor %1&apos;s positive limit (IN%2) is ON</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s negative limit (IN%2) is ON</source>
+        <translation>motor %1&apos;s negative limit (IN%2) is ON</translation>
+    </message>
+    <message>
+        <source>%1: done at %2</source>
+        <translation>%1: done at %2</translation>
+    </message>
+    <message>
+        <source>%1: referenced at %2</source>
+        <translation>%1: referenced at %2</translation>
+    </message>
+    <message>
+        <source>no stop, limit or E-STOP seen</source>
+        <translation>no stop, limit or E-STOP seen</translation>
+    </message>
+    <message>
+        <source>%1: stopped at %2, not at the end point %3 (%4)</source>
+        <translation>%1: stopped at %2, not at the end point %3 (%4)</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): not referenced</source>
+        <translation>%1 interrupted at %2 (%3): not referenced</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): motor %4 not referenced</source>
+        <translation>%1 interrupted at %2 (%3): motor %4 not referenced</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: not referenced</source>
+        <translation>%1 ended without the home input at %2: not referenced</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: motor %3 not referenced</source>
+        <translation>%1 ended without the home input at %2: motor %3 not referenced</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MotionPage</name>
     <message>
         <source>Coordinates zeroed</source>
         <translation>Coordinates zeroed</translation>
-    </message>
-    <message>
-        <source>motor %1 at %2</source>
-        <translation>motor %1 at %2</translation>
-    </message>
-    <message>
-        <source>%1: done (%2)</source>
-        <translation>%1: done (%2)</translation>
     </message>
     <message>
         <source>Jog and home</source>
@@ -3591,6 +3783,199 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::OfflineActions</name>
+    <message>
+        <source>&amp;New profile from factory values</source>
+        <translation>&amp;New profile from factory values</translation>
+    </message>
+    <message>
+        <source>Edit a new profile, starting from the factory values, without a controller</source>
+        <translation>Edit a new profile, starting from the factory values, without a controller</translation>
+    </message>
+    <message>
+        <source>Save p&amp;rofile file</source>
+        <translation>Save p&amp;rofile file</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to its file (no controller is written)</source>
+        <translation>Save the profile being edited to its file (no controller is written)</translation>
+    </message>
+    <message>
+        <source>Save profile file &amp;as…</source>
+        <translation>Save profile file &amp;as…</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to another file</source>
+        <translation>Save the profile being edited to another file</translation>
+    </message>
+    <message>
+        <source>&amp;Close profile file</source>
+        <translation>&amp;Close profile file</translation>
+    </message>
+    <message>
+        <source>Stop editing the profile file</source>
+        <translation>Stop editing the profile file</translation>
+    </message>
+    <message>
+        <source>&amp;Compare profiles…</source>
+        <translation>&amp;Compare profiles…</translation>
+    </message>
+    <message>
+        <source>Compare two profile files row by row; no controller is needed</source>
+        <translation>Compare two profile files row by row; no controller is needed</translation>
+    </message>
+    <message>
+        <source>Report from a &amp;profile…</source>
+        <translation>Report from a &amp;profile…</translation>
+    </message>
+    <message>
+        <source>The commissioning report made from a profile file (or the file being edited), not from a controller</source>
+        <translation>The commissioning report made from a profile file (or the file being edited), not from a controller</translation>
+    </message>
+    <message>
+        <source>Unsaved edits</source>
+        <translation>Unsaved edits</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file.</source>
+        <translation>
+            <numerusform>%n edited value of %1 are not saved in the file.</numerusform>
+            <numerusform>%n edited values of %1 are not saved in the file.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profile cannot be edited</source>
+        <translation>The profile cannot be edited</translation>
+    </message>
+    <message>
+        <source>Editing the profile file %1 without a controller</source>
+        <translation>Editing the profile file %1 without a controller</translation>
+    </message>
+    <message>
+        <source>New profile</source>
+        <translation>New profile</translation>
+    </message>
+    <message>
+        <source>Editing a new profile with the factory values; nothing is written to a controller</source>
+        <translation>Editing a new profile with the factory values; nothing is written to a controller</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>Save profile</translation>
+    </message>
+    <message>
+        <source>Saved the profile to %1 (no controller was written)</source>
+        <translation>Saved the profile to %1 (no controller was written)</translation>
+    </message>
+    <message numerus="yes">
+        <source>The file lacked %n setting(s); they were saved with their factory values: %1</source>
+        <translation>
+            <numerusform>The file lacked %n setting; they were saved with their factory values: %1</numerusform>
+            <numerusform>The file lacked %n settings; they were saved with their factory values: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save profile file as</source>
+        <translation>Save profile file as</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom profiles (*.json)</translation>
+    </message>
+    <message>
+        <source>Compare profiles: choose two files</source>
+        <translation>Compare profiles: choose two files</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom profiles (*.json);;All files (*)</translation>
+    </message>
+    <message>
+        <source>Compare profiles</source>
+        <translation>Compare profiles</translation>
+    </message>
+    <message numerus="yes">
+        <source>Choose exactly two profile files (%n chosen).</source>
+        <translation>
+            <numerusform>Choose exactly two profile files (%n chosen).</numerusform>
+            <numerusform>Choose exactly two profile files (%n chosen).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profiles cannot be compared</source>
+        <translation>The profiles cannot be compared</translation>
+    </message>
+    <message>
+        <source>Compared %1 with %2</source>
+        <translation>Compared %1 with %2</translation>
+    </message>
+    <message>
+        <source>Report from a profile: choose the profile</source>
+        <translation>Report from a profile: choose the profile</translation>
+    </message>
+    <message>
+        <source>Report from a profile</source>
+        <translation>Report from a profile</translation>
+    </message>
+    <message>
+        <source>Notes for the report (empty: the profile&apos;s own notes):</source>
+        <translation>Notes for the report (empty: the profile&apos;s own notes):</translation>
+    </message>
+    <message>
+        <source>Save the report made from the profile</source>
+        <translation>Save the report made from the profile</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Report made from the profile file %1 (no controller was read) written to %2</source>
+        <translation>Report made from the profile file %1 (no controller was read) written to %2</translation>
+    </message>
+    <message>
+        <source>(with edits not saved in the file)</source>
+        <translation>(with edits not saved in the file)</translation>
+    </message>
+    <message>
+        <source>new profile</source>
+        <translation>new profile</translation>
+    </message>
+    <message numerus="yes">
+        <source>Profile applied: %n value(s) written and verified</source>
+        <translation>
+            <numerusform>Profile applied: %n value written and verified</numerusform>
+            <numerusform>Profile applied: %n values written and verified</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Connected: the values of %1 are compared with the controller&apos;s; nothing is written until you apply checked rows</source>
+        <translation>Connected: the values of %1 are compared with the controller&apos;s; nothing is written until you apply checked rows</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edit(s) of %1 were never saved: they are in the comparison, not in the file</source>
+        <translation>
+            <numerusform>%n edit of %1 were never saved: they are in the comparison, not in the file</numerusform>
+            <numerusform>%n edits of %1 were never saved: they are in the comparison, not in the file</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::OfflineBanner</name>
+    <message>
+        <source>Editing the profile file %1 — no controller. Nothing here moves or writes a controller; connect to compare the values with one and apply them.</source>
+        <translation>Editing the profile file %1 — no controller. Nothing here moves or writes a controller; connect to compare the values with one and apply them.</translation>
+    </message>
+    <message>
+        <source>Edits not saved yet.</source>
+        <translation>Edits not saved yet.</translation>
+    </message>
+    <message>
+        <source>This map cannot take everything the file holds (saved again, the file keeps it; settings it lacks are filled with factory values when you save):</source>
+        <translation>This map cannot take everything the file holds (saved again, the file keeps it; settings it lacks are filled with factory values when you save):</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::Parameter</name>
     <message>
         <source>%1: %2 is not one of %3</source>
@@ -3656,6 +4041,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>Write failed: %1</translation>
+    </message>
+    <message>
+        <source>The profile file lacks this value</source>
+        <translation>The profile file lacks this value</translation>
+    </message>
+    <message>
+        <source>The profile file holds this value</source>
+        <translation>The profile file holds this value</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet (the file holds %1)</source>
+        <translation>Edited, not saved yet (the file holds %1)</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet</source>
+        <translation>Edited, not saved yet</translation>
     </message>
 </context>
 <context>
@@ -3842,6 +4243,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Coil 00103, sent ahead of everything queued</source>
         <translation>Coil 00103, sent ahead of everything queued</translation>
+    </message>
+    <message>
+        <source>⚠ Start is possible, but: %1</source>
+        <translation>⚠ Start is possible, but: %1</translation>
+    </message>
+    <message>
+        <source>%1: running…</source>
+        <translation>%1: running…</translation>
+    </message>
+    <message>
+        <source>Last run: %1</source>
+        <translation>Last run: %1</translation>
     </message>
 </context>
 <context>
@@ -4145,6 +4558,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Commissioning report written to %1</source>
         <translation>Commissioning report written to %1</translation>
     </message>
+    <message>
+        <source>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</source>
+        <translation>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileCompareDialog</name>
@@ -4293,6 +4710,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Close</source>
         <translation>Close</translation>
     </message>
+    <message>
+        <source>Not applied:</source>
+        <translation>Not applied:</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileDiff</name>
@@ -4307,6 +4728,29 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>(not in the profile)</source>
         <translation>(not in the profile)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileDocument</name>
+    <message>
+        <source>new profile</source>
+        <translation>new profile</translation>
+    </message>
+    <message>
+        <source>a controller is connected: open the profile to compare it instead</source>
+        <translation>a controller is connected: open the profile to compare it instead</translation>
+    </message>
+    <message>
+        <source>a controller is connected: disconnect to edit a profile without it</source>
+        <translation>a controller is connected: disconnect to edit a profile without it</translation>
+    </message>
+    <message>
+        <source>Factory values</source>
+        <translation>Factory values</translation>
+    </message>
+    <message>
+        <source>no profile is being edited</source>
+        <translation>no profile is being edited</translation>
     </message>
 </context>
 <context>
@@ -4501,6 +4945,93 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileFilesDialog</name>
+    <message>
+        <source>differ</source>
+        <translation>differ</translation>
+    </message>
+    <message>
+        <source>the same</source>
+        <translation>the same</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>only in A</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>only in B</translation>
+    </message>
+    <message>
+        <source>outside this map</source>
+        <translation>outside this map</translation>
+    </message>
+    <message>
+        <source>Motor %1 · %2</source>
+        <translation>Motor %1 · %2</translation>
+    </message>
+    <message>
+        <source>(not a setting of this map)</source>
+        <translation>(not a setting of this map)</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map (%5 of them differ).</source>
+        <translation>%1 differ, %2 only in A, %3 only in B, %4 outside this map (%5 of them differ).</translation>
+    </message>
+    <message>
+        <source>The files hold the same values.</source>
+        <translation>The files hold the same values.</translation>
+    </message>
+    <message>
+        <source>The files differ.</source>
+        <translation>The files differ.</translation>
+    </message>
+    <message>
+        <source>Compare profiles: %1 and %2</source>
+        <translation>Compare profiles: %1 and %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>register map %1</source>
+        <translation>register map %1</translation>
+    </message>
+    <message>
+        <source>Two files compared against register map %1/%2; no controller is read or written.</source>
+        <translation>Two files compared against register map %1/%2; no controller is read or written.</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>Group</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>Parameter</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>Key</translation>
+    </message>
+    <message>
+        <source>Differences only</source>
+        <translation>Differences only</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ProfileSaveDialog</name>
     <message>
         <source>Controller id %1</source>
@@ -4552,6 +5083,37 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not in the profile: %1 (%2)</source>
         <translation>not in the profile: %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReferenceTracker</name>
+    <message>
+        <source>referenced</source>
+        <translation>referenced</translation>
+    </message>
+    <message>
+        <source>not referenced (not homed yet)</source>
+        <translation>not referenced (not homed yet)</translation>
+    </message>
+    <message>
+        <source>not referenced (homing ended without the home input)</source>
+        <translation>not referenced (homing ended without the home input)</translation>
+    </message>
+    <message>
+        <source>not referenced (homing was interrupted)</source>
+        <translation>not referenced (homing was interrupted)</translation>
+    </message>
+    <message>
+        <source>not referenced (E-STOP)</source>
+        <translation>not referenced (E-STOP)</translation>
+    </message>
+    <message>
+        <source>not referenced (coordinates zeroed)</source>
+        <translation>not referenced (coordinates zeroed)</translation>
+    </message>
+    <message>
+        <source>not referenced (link lost)</source>
+        <translation>not referenced (link lost)</translation>
     </message>
 </context>
 <context>
@@ -5314,6 +5876,36 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ValueCheck</name>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>%1: enter a value (%2).</source>
+        <translation>%1: enter a value (%2).</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number. Allowed: %3.</source>
+        <translation>%1: “%2” is not a number. Allowed: %3.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: at most %n decimal(s). Allowed: %2.</source>
+        <translation>
+            <numerusform>%1: at most %n decimal. Allowed: %2.</numerusform>
+            <numerusform>%1: at most %n decimals. Allowed: %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the allowed range %3.</source>
+        <translation>%1: %2 is outside the allowed range %3.</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not one of %3.</source>
+        <translation>%1: “%2” is not one of %3.</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::WiringCheck</name>
     <message>
         <source>positive limit</source>
@@ -5484,6 +6076,25 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&amp;Write</source>
         <translation>&amp;Write</translation>
     </message>
+    <message>
+        <source>The pages flag problems in these values:</source>
+        <translation>The pages flag problems in these values:</translation>
+    </message>
+    <message>
+        <source>&amp;Write anyway</source>
+        <translation>&amp;Write anyway</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WriteReview</name>
+    <message>
+        <source>Arc: %1</source>
+        <translation>Arc: %1</translation>
+    </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>Line: %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::XYPlot</name>
@@ -5608,6 +6219,12 @@ file and its checklist, no controller needed)</source>
         <translation>write the commissioning report (--name, --notes,
 --lang en|zh_CN; --from PROFILE: from a profile
 file and its checklist, no controller needed)</translation>
+    </message>
+    <message>
+        <source>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</source>
+        <translation>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</translation>
     </message>
 </context>
 </TS>

@@ -1288,6 +1288,14 @@
         <translation>未连接。</translation>
     </message>
     <message>
+        <source>%1 is open, but the controller does not answer.</source>
+        <translation>%1 已打开，但控制器没有应答。</translation>
+    </message>
+    <message>
+        <source>%1 is open; waiting for the controller to answer…</source>
+        <translation>%1 已打开；正在等待控制器应答…</translation>
+    </message>
+    <message>
         <source>Serial port plugged in: %1</source>
         <translation>插入了串口：%1</translation>
     </message>
@@ -1297,6 +1305,17 @@
     <message>
         <source>link lost: %1</source>
         <translation>连接中断：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlMotionWait</name>
+    <message>
+        <source>%1 would not move anything here (nothing in the homing order, or every motor runs): nothing to wait for</source>
+        <translation>%1 在此不会使任何电机运动（回零顺序为空，或所有电机都在运行）：没有可等待的结果</translation>
+    </message>
+    <message>
+        <source>%1: sent, waiting for the motion to end</source>
+        <translation>%1：已发送，正在等待运动结束</translation>
     </message>
 </context>
 <context>
@@ -1468,6 +1487,10 @@
     <message>
         <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
         <translation>apply：写入前不备份控制器的设置。</translation>
+    </message>
+    <message>
+        <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
+        <translation>command：等待运动命令结束并输出其结果（仅在完成或已回零参考时退出码为 0）。</translation>
     </message>
 </context>
 <context>
@@ -1731,6 +1754,14 @@
     <message>
         <source>with the commissioning checklist %1: %2</source>
         <translation>包含调试检查表 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: sent (add --wait to wait for how it ends)</source>
+        <translation>%1：已发送（加 --wait 可等待其结果）</translation>
+    </message>
+    <message>
+        <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
+        <translation>--wait：%1 没有可等待的结束（单次运动、回零、按顺序回零、回数据零点、圆弧和直线才有）</translation>
     </message>
 </context>
 <context>
@@ -2077,10 +2108,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>无法连接：%1</translation>
     </message>
     <message>
-        <source>Connected to %1</source>
-        <translation>已连接到 %1</translation>
-    </message>
-    <message>
         <source>Link lost: %1</source>
         <translation>连接中断：%1</translation>
     </message>
@@ -2170,6 +2197,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the window closes</source>
         <translation>窗口正在关闭</translation>
+    </message>
+    <message>
+        <source>Opened %1; asking the controller</source>
+        <translation>已打开 %1；正在询问控制器</translation>
+    </message>
+    <message>
+        <source>The port is open, but the controller at %1 does not answer.</source>
+        <translation>端口已打开，但 %1 处的控制器没有应答。</translation>
+    </message>
+    <message>
+        <source>The controller answers.</source>
+        <translation>控制器已应答。</translation>
+    </message>
+    <message>
+        <source>%1: sent</source>
+        <translation>%1：已发送</translation>
     </message>
 </context>
 <context>
@@ -2728,24 +2771,16 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Motor %1: jog %2 not done: %3</source>
         <translation>电机 %1：%2点动未执行：%3</translation>
     </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::JogPanel</name>
     <message>
         <source>stop button</source>
         <translation>停止按钮</translation>
-    </message>
-    <message>
-        <source>Single move</source>
-        <translation>单次运行</translation>
-    </message>
-    <message>
-        <source>Homing</source>
-        <translation>回机械零</translation>
-    </message>
-    <message>
-        <source>%1 done</source>
-        <translation>%1完成</translation>
     </message>
     <message>
         <source>Not connected.</source>
@@ -2895,6 +2930,37 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Run motor %1 in reverse to its home input and set its position to 0</source>
         <translation>电机 %1 反转到原点信号处，并将其坐标设为 0</translation>
     </message>
+    <message>
+        <source>Reference: %1</source>
+        <translation>参考点：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::LinkHealth</name>
+    <message>
+        <source>Port closed</source>
+        <translation>端口已关闭</translation>
+    </message>
+    <message>
+        <source>Opening the port…</source>
+        <translation>正在打开端口…</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for the controller…</source>
+        <translation>端口已打开，正在等待控制器…</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>Connected</source>
+        <translation>已连接</translation>
+    </message>
+    <message>
+        <source>The port is open but no controller answers. Likely causes: another device id (factory: 1), another baud rate (factory: 9600) or parity (factory: none), the RS-485 wires A and B swapped, or the controller has no power. A bus scan tries the ids and baud rates for you.</source>
+        <translation>端口已打开，但没有控制器应答。可能的原因：设备地址不同（出厂：1）、波特率不同（出厂：9600）或校验位不同（出厂：无）、RS-485 的 A、B 线接反，或控制器没有上电。总线扫描可以替您逐一尝试地址和波特率。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::LinkSettings</name>
@@ -2972,6 +3038,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Parameters were written but not saved to the controller&apos;s flash: they are lost when it loses power. Use Save to flash.</source>
         <translation>参数已写入，但尚未保存到控制器的闪存：控制器断电后将丢失。请使用“保存到闪存”。</translation>
+    </message>
+    <message>
+        <source>Not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>Port open, waiting for an answer…</source>
+        <translation>端口已打开，正在等待应答…</translation>
     </message>
 </context>
 <context>
@@ -3082,6 +3156,12 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>有 %n 个已修改的值尚未写入控制器。仍要关闭并放弃这些修改吗？</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file. Close anyway and lose them?</source>
+        <translation>
+            <numerusform>%1 中有 %n 个修改过的值尚未保存到文件。仍然关闭并放弃这些修改吗？</numerusform>
+        </translation>
+    </message>
     <message>
         <source>&amp;User guide</source>
         <translation>使用手册(&amp;U)</translation>
@@ -3093,6 +3173,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>What&apos;s &amp;this?</source>
         <translation>这是什么？(&amp;T)</translation>
+    </message>
+    <message>
+        <source>%1%2 — profile file, no controller</source>
+        <translation>%1%2 — 参数文件，未连接控制器</translation>
     </message>
 </context>
 <context>
@@ -3422,28 +3506,135 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything. In modes 3-5 only IN3 and IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire and test them before using these modes.</source>
         <translation>模式 2-5 忽略限位设置：为电机设置的限位和原点输入不再起作用。模式 3-5 中只有 IN3 和 IN4 作为限位；模式 2 中没有任何限位（IN2-IN4 只用于停止）。使用这些模式前，请先接好并测试这些输入。</translation>
     </message>
+    <message>
+        <source>The profile file does not set the mode.</source>
+        <translation>参数文件中没有设定系统模式。</translation>
+    </message>
+    <message>
+        <source>The profile sets the normal mode.</source>
+        <translation>参数文件设定为常规模式。</translation>
+    </message>
+    <message>
+        <source>The profile sets special mode %1.</source>
+        <translation>参数文件设定为特殊模式 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MotionJudge</name>
+    <message>
+        <source>Motor %1&apos;s positive limit (IN%2) is already ON and %3 drives motor %1 forward: it stops at once.</source>
+        <translation>电机 %1 的正限位（IN%2）已经接通，而%3会使电机 %1 正向运动：它会立即停止。</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s negative limit (IN%2) is already ON and %3 drives motor %1 in reverse: it stops at once.</source>
+        <translation>电机 %1 的负限位（IN%2）已经接通，而%3会使电机 %1 反向运动：它会立即停止。</translation>
+    </message>
+    <message>
+        <source>the single move</source>
+        <translation>单次运动</translation>
+    </message>
+    <message>
+        <source>the return to data zero</source>
+        <translation>回数据零点</translation>
+    </message>
+    <message>
+        <source>the approach to the start point</source>
+        <translation>到起点的趋近运动</translation>
+    </message>
+    <message>
+        <source>the arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <source>the line</source>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>Single move of motor %1</source>
+        <translation>电机 %1 单次运动</translation>
+    </message>
+    <message>
+        <source>Homing motor %1</source>
+        <translation>电机 %1 回机械零</translation>
+    </message>
+    <message>
+        <source>Homing in order</source>
+        <translation>按顺序回机械零</translation>
+    </message>
+    <message>
+        <source>Return to data zero</source>
+        <translation>回数据零点</translation>
+    </message>
+    <message>
+        <source>Arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation>直线</translation>
+    </message>
+    <message>
+        <source>stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>连接丢失</translation>
+    </message>
+    <message>
+        <source>an unknown position</source>
+        <translation>未知位置</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s positive limit (IN%2) is ON</source>
+        <translation>电机 %1 的正限位（IN%2）接通</translation>
+    </message>
+    <message>
+        <source>motor %1&apos;s negative limit (IN%2) is ON</source>
+        <translation>电机 %1 的负限位（IN%2）接通</translation>
+    </message>
+    <message>
+        <source>%1: done at %2</source>
+        <translation>%1：已完成，位于 %2</translation>
+    </message>
+    <message>
+        <source>%1: referenced at %2</source>
+        <translation>%1：已建立参考点，位于 %2</translation>
+    </message>
+    <message>
+        <source>no stop, limit or E-STOP seen</source>
+        <translation>未见停止、限位或急停</translation>
+    </message>
+    <message>
+        <source>%1: stopped at %2, not at the end point %3 (%4)</source>
+        <translation>%1：停在 %2，未到终点 %3（%4）</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): not referenced</source>
+        <translation>%1 在 %2 处被中断（%3）：未建立参考点</translation>
+    </message>
+    <message>
+        <source>%1 interrupted at %2 (%3): motor %4 not referenced</source>
+        <translation>%1 在 %2 处被中断（%3）：电机 %4 未建立参考点</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: not referenced</source>
+        <translation>%1 结束于 %2，原点输入未接通：未建立参考点</translation>
+    </message>
+    <message>
+        <source>%1 ended without the home input at %2: motor %3 not referenced</source>
+        <translation>%1 结束于 %2，原点输入未接通：电机 %3 未建立参考点</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MotionPage</name>
     <message>
-        <source>Homing in order</source>
-        <translation>顺序回机械零</translation>
-    </message>
-    <message>
-        <source>Returning to data zero</source>
-        <translation>回数据零</translation>
-    </message>
-    <message>
         <source>Coordinates zeroed</source>
         <translation>坐标已清零</translation>
-    </message>
-    <message>
-        <source>motor %1 at %2</source>
-        <translation>电机 %1 位于 %2</translation>
-    </message>
-    <message>
-        <source>%1: done (%2)</source>
-        <translation>%1：完成（%2）</translation>
     </message>
     <message>
         <source>Jog and home</source>
@@ -3578,6 +3769,194 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::OfflineActions</name>
+    <message>
+        <source>&amp;New profile from factory values</source>
+        <translation>用出厂值新建参数文件(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Edit a new profile, starting from the factory values, without a controller</source>
+        <translation>以出厂值为起点编辑一个新的参数文件，无需控制器</translation>
+    </message>
+    <message>
+        <source>Save p&amp;rofile file</source>
+        <translation>保存参数文件(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to its file (no controller is written)</source>
+        <translation>把正在编辑的参数文件保存到其文件（不写入任何控制器）</translation>
+    </message>
+    <message>
+        <source>Save profile file &amp;as…</source>
+        <translation>参数文件另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Save the profile being edited to another file</source>
+        <translation>把正在编辑的参数文件保存为另一个文件</translation>
+    </message>
+    <message>
+        <source>&amp;Close profile file</source>
+        <translation>关闭参数文件(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Stop editing the profile file</source>
+        <translation>结束编辑参数文件</translation>
+    </message>
+    <message>
+        <source>&amp;Compare profiles…</source>
+        <translation>比较参数文件(&amp;C)…</translation>
+    </message>
+    <message>
+        <source>Compare two profile files row by row; no controller is needed</source>
+        <translation>逐行比较两个参数文件，无需控制器</translation>
+    </message>
+    <message>
+        <source>Report from a &amp;profile…</source>
+        <translation>根据参数文件生成报告(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>The commissioning report made from a profile file (or the file being edited), not from a controller</source>
+        <translation>根据参数文件（或正在编辑的文件）生成调试报告，而不是读取控制器</translation>
+    </message>
+    <message>
+        <source>Unsaved edits</source>
+        <translation>未保存的修改</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edited value(s) of %1 are not saved in the file.</source>
+        <translation>
+            <numerusform>%1 中有 %n 个修改过的值尚未保存到文件。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profile cannot be edited</source>
+        <translation>无法编辑此参数文件</translation>
+    </message>
+    <message>
+        <source>Editing the profile file %1 without a controller</source>
+        <translation>正在离线编辑参数文件 %1（未连接控制器）</translation>
+    </message>
+    <message>
+        <source>New profile</source>
+        <translation>新建参数文件</translation>
+    </message>
+    <message>
+        <source>Editing a new profile with the factory values; nothing is written to a controller</source>
+        <translation>正在编辑以出厂值新建的参数文件；不会向任何控制器写入</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>保存参数文件</translation>
+    </message>
+    <message>
+        <source>Saved the profile to %1 (no controller was written)</source>
+        <translation>参数文件已保存到 %1（未写入任何控制器）</translation>
+    </message>
+    <message numerus="yes">
+        <source>The file lacked %n setting(s); they were saved with their factory values: %1</source>
+        <translation>
+            <numerusform>文件缺少 %n 个设置，已用出厂值保存：%1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save profile file as</source>
+        <translation>参数文件另存为</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom 参数文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>Compare profiles: choose two files</source>
+        <translation>比较参数文件：选择两个文件</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom 参数文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Compare profiles</source>
+        <translation>比较参数文件</translation>
+    </message>
+    <message numerus="yes">
+        <source>Choose exactly two profile files (%n chosen).</source>
+        <translation>
+            <numerusform>请正好选择两个参数文件（已选择 %n 个）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The profiles cannot be compared</source>
+        <translation>无法比较这两个参数文件</translation>
+    </message>
+    <message>
+        <source>Compared %1 with %2</source>
+        <translation>已比较 %1 与 %2</translation>
+    </message>
+    <message>
+        <source>Report from a profile: choose the profile</source>
+        <translation>根据参数文件生成报告：选择参数文件</translation>
+    </message>
+    <message>
+        <source>Report from a profile</source>
+        <translation>根据参数文件生成报告</translation>
+    </message>
+    <message>
+        <source>Notes for the report (empty: the profile&apos;s own notes):</source>
+        <translation>报告备注（留空则使用参数文件中的备注）：</translation>
+    </message>
+    <message>
+        <source>Save the report made from the profile</source>
+        <translation>保存根据参数文件生成的报告</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Report made from the profile file %1 (no controller was read) written to %2</source>
+        <translation>根据参数文件 %1 生成的报告（未读取控制器）已保存到 %2</translation>
+    </message>
+    <message>
+        <source>(with edits not saved in the file)</source>
+        <translation>（含尚未保存到文件的修改）</translation>
+    </message>
+    <message>
+        <source>new profile</source>
+        <translation>新参数文件</translation>
+    </message>
+    <message numerus="yes">
+        <source>Profile applied: %n value(s) written and verified</source>
+        <translation>
+            <numerusform>已应用参数文件：写入并校验 %n 个值</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Connected: the values of %1 are compared with the controller&apos;s; nothing is written until you apply checked rows</source>
+        <translation>已连接：正在将 %1 中的值与控制器比较；应用勾选项之前不会写入任何数据</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n edit(s) of %1 were never saved: they are in the comparison, not in the file</source>
+        <translation>
+            <numerusform>%1 的 %n 处修改从未保存：它们在比较窗口中，不在文件中</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::OfflineBanner</name>
+    <message>
+        <source>Editing the profile file %1 — no controller. Nothing here moves or writes a controller; connect to compare the values with one and apply them.</source>
+        <translation>正在编辑参数文件 %1 — 未连接控制器。这里的任何操作都不会让控制器运动或向控制器写入；连接后可与控制器比较并应用这些值。</translation>
+    </message>
+    <message>
+        <source>Edits not saved yet.</source>
+        <translation>修改尚未保存。</translation>
+    </message>
+    <message>
+        <source>This map cannot take everything the file holds (saved again, the file keeps it; settings it lacks are filled with factory values when you save):</source>
+        <translation>此寄存器表无法接受文件中的全部内容（再次保存时文件会保留这些内容；文件缺少的设置在保存时用出厂值补上）：</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::Parameter</name>
     <message>
         <source>%1: %2 is not one of %3</source>
@@ -3641,6 +4020,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>写入失败：%1</translation>
+    </message>
+    <message>
+        <source>The profile file lacks this value</source>
+        <translation>参数文件中没有此值</translation>
+    </message>
+    <message>
+        <source>The profile file holds this value</source>
+        <translation>参数文件中的值</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet (the file holds %1)</source>
+        <translation>已修改，尚未保存（文件中为 %1）</translation>
+    </message>
+    <message>
+        <source>Edited, not saved yet</source>
+        <translation>已修改，尚未保存</translation>
     </message>
 </context>
 <context>
@@ -3827,6 +4222,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Coil 00103, sent ahead of everything queued</source>
         <translation>线圈 00103，优先于所有排队请求发送</translation>
+    </message>
+    <message>
+        <source>⚠ Start is possible, but: %1</source>
+        <translation>⚠ 可以启动，但是：%1</translation>
+    </message>
+    <message>
+        <source>%1: running…</source>
+        <translation>%1：运行中…</translation>
+    </message>
+    <message>
+        <source>Last run: %1</source>
+        <translation>上次运行：%1</translation>
     </message>
 </context>
 <context>
@@ -4124,6 +4531,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Commissioning report written to %1</source>
         <translation>调试报告已写入 %1</translation>
     </message>
+    <message>
+        <source>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</source>
+        <translation>已连接时：将参数文件与控制器比较（应用勾选项之前不写入任何数据）。未连接控制器时：在各页面上编辑该文件</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileCompareDialog</name>
@@ -4269,6 +4680,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Close</source>
         <translation>关闭</translation>
     </message>
+    <message>
+        <source>Not applied:</source>
+        <translation>不应用：</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileDiff</name>
@@ -4283,6 +4698,29 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>(not in the profile)</source>
         <translation>（参数文件中没有）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileDocument</name>
+    <message>
+        <source>new profile</source>
+        <translation>新参数文件</translation>
+    </message>
+    <message>
+        <source>a controller is connected: open the profile to compare it instead</source>
+        <translation>已连接控制器：请打开参数文件进行比较</translation>
+    </message>
+    <message>
+        <source>a controller is connected: disconnect to edit a profile without it</source>
+        <translation>已连接控制器：断开连接后才能离线编辑参数文件</translation>
+    </message>
+    <message>
+        <source>Factory values</source>
+        <translation>出厂值</translation>
+    </message>
+    <message>
+        <source>no profile is being edited</source>
+        <translation>没有正在编辑的参数文件</translation>
     </message>
 </context>
 <context>
@@ -4477,6 +4915,93 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileFilesDialog</name>
+    <message>
+        <source>differ</source>
+        <translation>不同</translation>
+    </message>
+    <message>
+        <source>the same</source>
+        <translation>相同</translation>
+    </message>
+    <message>
+        <source>only in A</source>
+        <translation>只在 A 中</translation>
+    </message>
+    <message>
+        <source>only in B</source>
+        <translation>只在 B 中</translation>
+    </message>
+    <message>
+        <source>outside this map</source>
+        <translation>超出此寄存器表</translation>
+    </message>
+    <message>
+        <source>Motor %1 · %2</source>
+        <translation>电机 %1 · %2</translation>
+    </message>
+    <message>
+        <source>(not a setting of this map)</source>
+        <translation>（不是此寄存器表的设置）</translation>
+    </message>
+    <message>
+        <source>%1 differ, %2 only in A, %3 only in B, %4 outside this map (%5 of them differ).</source>
+        <translation>%1 项不同，%2 项只在 A 中，%3 项只在 B 中，%4 项超出此寄存器表（其中 %5 项不同）。</translation>
+    </message>
+    <message>
+        <source>The files hold the same values.</source>
+        <translation>两个文件的值相同。</translation>
+    </message>
+    <message>
+        <source>The files differ.</source>
+        <translation>两个文件不同。</translation>
+    </message>
+    <message>
+        <source>Compare profiles: %1 and %2</source>
+        <translation>比较参数文件：%1 与 %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>register map %1</source>
+        <translation>寄存器表 %1</translation>
+    </message>
+    <message>
+        <source>Two files compared against register map %1/%2; no controller is read or written.</source>
+        <translation>两个文件按寄存器表 %1/%2 比较；不读取也不写入任何控制器。</translation>
+    </message>
+    <message>
+        <source>Group</source>
+        <translation>分组</translation>
+    </message>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation>B</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>单位</translation>
+    </message>
+    <message>
+        <source>Key</source>
+        <translation>参数名</translation>
+    </message>
+    <message>
+        <source>Differences only</source>
+        <translation>只显示不同项</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ProfileSaveDialog</name>
     <message>
         <source>Controller id %1</source>
@@ -4528,6 +5053,37 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not in the profile: %1 (%2)</source>
         <translation>参数文件中没有：%1（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReferenceTracker</name>
+    <message>
+        <source>referenced</source>
+        <translation>已建立参考点</translation>
+    </message>
+    <message>
+        <source>not referenced (not homed yet)</source>
+        <translation>未建立参考点（尚未回零）</translation>
+    </message>
+    <message>
+        <source>not referenced (homing ended without the home input)</source>
+        <translation>未建立参考点（回零结束时原点输入未接通）</translation>
+    </message>
+    <message>
+        <source>not referenced (homing was interrupted)</source>
+        <translation>未建立参考点（回零被中断）</translation>
+    </message>
+    <message>
+        <source>not referenced (E-STOP)</source>
+        <translation>未建立参考点（急停）</translation>
+    </message>
+    <message>
+        <source>not referenced (coordinates zeroed)</source>
+        <translation>未建立参考点（坐标已清零）</translation>
+    </message>
+    <message>
+        <source>not referenced (link lost)</source>
+        <translation>未建立参考点（连接丢失）</translation>
     </message>
 </context>
 <context>
@@ -5290,6 +5846,35 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ValueCheck</name>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>%1: enter a value (%2).</source>
+        <translation>%1：请输入数值（%2）。</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number. Allowed: %3.</source>
+        <translation>%1：“%2”不是数字。允许范围：%3。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: at most %n decimal(s). Allowed: %2.</source>
+        <translation>
+            <numerusform>%1：最多 %n 位小数。允许范围：%2。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside the allowed range %3.</source>
+        <translation>%1：%2 超出允许范围 %3。</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not one of %3.</source>
+        <translation>%1：“%2”不是 %3 之一。</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::WiringCheck</name>
     <message>
         <source>positive limit</source>
@@ -5459,6 +6044,25 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&amp;Write</source>
         <translation>写入(&amp;W)</translation>
     </message>
+    <message>
+        <source>The pages flag problems in these values:</source>
+        <translation>页面已指出这些值中的问题：</translation>
+    </message>
+    <message>
+        <source>&amp;Write anyway</source>
+        <translation>仍然写入(&amp;W)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::WriteReview</name>
+    <message>
+        <source>Arc: %1</source>
+        <translation>圆弧：%1</translation>
+    </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>直线：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::XYPlot</name>
@@ -5583,6 +6187,12 @@ file and its checklist, no controller needed)</source>
         <translation>生成调试报告（--name、--notes、
 --lang en|zh_CN；--from PROFILE：根据参数文件
 及其检查表生成，无需控制器）</translation>
+    </message>
+    <message>
+        <source>pulse a motion command and wait until it ends; print
+how it ended (--json), exit 0 only when done or referenced</source>
+        <translation>触发一个运动命令并等待其结束；输出
+结果（--json），仅在完成或已建立参考点时退出码为 0</translation>
     </message>
 </context>
 </TS>

@@ -2,12 +2,14 @@
 
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
+#include "device/linkhealth.h"
 #include "device/sessionlog.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "help/guidewindow.h"
 #include "help/userguide.h"
 #include "language.h"
+#include "offlineactions.h" // working without the machine (issue 18)
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
 #include "pages/inputspage.h"
@@ -19,9 +21,12 @@
 #include "profileactions.h" // profiles (issue 7)
 #include "widgets/linkstatus.h"
 #include "widgets/messageview.h"
+#include "widgets/offlinebanner.h"
 #include "widgets/statusdock.h" // monitoring (issue 5)
 #include "widgets/trafficview.h"
 #include "writeflow.h"
+
+#include "profile/profiledocument.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -39,6 +44,7 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
+#include <QVBoxLayout>
 #include <QWhatsThis>
 
 namespace stepcom {
@@ -58,7 +64,15 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     splitter->setStretchFactor(1, 1);
     m_sidebar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
     m_sidebar->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 28);
-    setCentralWidget(splitter);
+    // Working without the machine (issue 18): the banner above the pages while a file is edited.
+    m_offline = new OfflineActions(session, this);
+    m_offlineBanner = new OfflineBanner(m_offline->document(), this);
+    auto *central = new QWidget(this);
+    auto *centralLayout = new QVBoxLayout(central);
+    centralLayout->setContentsMargins(0, 0, 0, 0);
+    centralLayout->addWidget(m_offlineBanner);
+    centralLayout->addWidget(splitter, 1);
+    setCentralWidget(central);
     connect(m_sidebar, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     connect(m_stack, &QStackedWidget::currentChanged, this, &MainWindow::updateTitle);
 
@@ -91,6 +105,15 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
                 statusBar()->showMessage(text, 5000);
             });
     statusBar()->addPermanentWidget(m_linkStatus);
+    // --- working without the machine (issue 18) ---
+    m_profiles->setOfflineOpener([this](const QString &path) { return m_offline->openFile(path); });
+    connect(m_offline, &OfflineActions::finished, this, [this](bool ok, const QString &text) {
+        m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning,
+                        text);
+        statusBar()->showMessage(text, 5000);
+    });
+    connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
+    // --- end working without the machine ---
 
     connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
     connect(session->parameters(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
@@ -99,9 +122,15 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
                 m_messages->add(s, text);
                 statusBar()->showMessage(text, 5000);
             });
-    connect(session, &DeviceSession::connected, this, [this](bool ok, const QString &) {
-        if (ok && currentPage() && qobject_cast<ConnectionPage *>(currentPage()))
-            showPage(1); // connected: on to the first motor
+    // On to the first motor once the controller answered, not when the port opened: a port
+    // with nobody behind it keeps the Connection page and its "not answering" hints in view.
+    connect(session->health(), &LinkHealth::stateChanged, this, [this](LinkHealth::State s) {
+        if (s == LinkHealth::State::Answering && !m_answeredOnce && currentPage() &&
+            qobject_cast<ConnectionPage *>(currentPage()))
+            showPage(1);
+        m_answeredOnce = m_answeredOnce || s == LinkHealth::State::Answering;
+        if (s == LinkHealth::State::Closed)
+            m_answeredOnce = false;
     });
     retranslate();
     // The sidebar as wide as its titles, not as wide as a list's default size hint (256 px):
@@ -214,12 +243,19 @@ void MainWindow::createMenus()
     m_fileMenu = menuBar()->addMenu(QString());
     // --- profiles (issue 7): open/compare/apply, save, recent, the commissioning report ---
     m_profiles = new ProfileActions(m_session, this);
+    m_fileMenu->addAction(m_offline->newAction()); // issue 18
     m_fileMenu->addAction(m_profiles->openAction());
     m_fileMenu->addMenu(m_profiles->recentMenu());
+    m_fileMenu->addAction(m_offline->saveAction());
+    m_fileMenu->addAction(m_offline->saveAsAction());
+    m_fileMenu->addAction(m_offline->closeAction());
+    m_fileMenu->addAction(m_offline->compareAction());
+    m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->saveFromDeviceAction());
     m_fileMenu->addAction(m_profiles->saveFromEditedAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->reportAction());
+    m_fileMenu->addAction(m_offline->reportAction()); // issue 18
     m_fileMenu->addSeparator();
     // --- end profiles ---
     m_fileMenu->addAction(m_quit);
@@ -265,9 +301,22 @@ void MainWindow::createDocks()
     // --- end monitoring ---
 }
 
-void MainWindow::retranslate()
+void MainWindow::showOrigin()
 {
     updateTitle();
+    const ProfileDocument *file = m_offline->document();
+    if (!file->isOpen()) {
+        statusBar()->setStyleSheet(QString());
+        return;
+    }
+    // The status area in the banner's colour: a file, not a machine.
+    statusBar()->setStyleSheet(
+        QStringLiteral("QStatusBar { background: #d6e6ff; } QStatusBar QLabel { color: black; }"));
+}
+
+void MainWindow::retranslate()
+{
+    showOrigin();
     m_guideAction->setText(tr("&User guide"));
     m_guideAction->setToolTip(
         tr("The user guide at the section about this page (%1)")
@@ -295,6 +344,7 @@ void MainWindow::retranslate()
     m_about->setText(tr("&About StepCom"));
     m_fileMenu->setTitle(tr("&File"));
     m_profiles->retranslate(); // profiles (issue 7)
+    m_offline->retranslate();  // issue 18
     m_deviceMenu->setTitle(tr("&Device"));
     m_viewMenu->setTitle(tr("&View"));
     m_languageMenu->setTitle(tr("&Language"));
@@ -314,7 +364,15 @@ void MainWindow::retranslate()
 
 void MainWindow::updateTitle()
 {
-    // The platform adds the program's name ("Motor 1 — StepCom"): the page is all we add.
+    // One title: the platform adds the program's name ("Motor 1 — StepCom"), so the page, or
+    // the profile file being edited without a controller, is all we add.
+    const ProfileDocument *file = m_offline ? m_offline->document() : nullptr;
+    if (file && file->isOpen()) {
+        setWindowTitle(
+            tr("%1%2 — profile file, no controller")
+                .arg(file->displayName(), file->isModified() ? QStringLiteral("*") : QString()));
+        return;
+    }
     const Page *page = currentPage();
     setWindowTitle(page ? page->title() : QString());
 }
@@ -338,8 +396,11 @@ GuideWindow *MainWindow::openGuide(const QString &topic)
 
 void MainWindow::changeEvent(QEvent *event)
 {
-    if (event->type() == QEvent::LanguageChange)
+    if (event->type() == QEvent::LanguageChange) {
         retranslate();
+        // A passing message was made in the old language; the messages dock keeps it.
+        statusBar()->clearMessage();
+    }
     if (event->type() == QEvent::ActivationChange && !isActiveWindow())
         m_session->stopJogging(DeviceSession::JogStop::FocusLost);
     QMainWindow::changeEvent(event);
@@ -367,12 +428,18 @@ void MainWindow::closeEvent(QCloseEvent *event)
         event->ignore();
         if (m_closeQuestion)
             return;
-        m_closeQuestion =
-            new QMessageBox(QMessageBox::Warning, tr("Unwritten changes"),
-                            tr("%n edited value(s) were never written to the "
-                               "controller. Close anyway and lose them?",
-                               nullptr, int(m_session->parameters()->editedKeys().size())),
-                            QMessageBox::Discard | QMessageBox::Cancel, this);
+        const int edits = int(m_session->parameters()->editedKeys().size());
+        m_closeQuestion = new QMessageBox(
+            QMessageBox::Warning, tr("Unwritten changes"),
+            m_offline->document()->isOpen()
+                ? tr("%n edited value(s) of %1 are not saved in the file. Close anyway and lose "
+                     "them?",
+                     nullptr, edits)
+                      .arg(m_offline->document()->displayName())
+                : tr("%n edited value(s) were never written to the controller. Close anyway "
+                     "and lose them?",
+                     nullptr, edits),
+            QMessageBox::Discard | QMessageBox::Cancel, this);
         m_closeQuestion->setAttribute(Qt::WA_DeleteOnClose);
         m_closeQuestion->setDefaultButton(QMessageBox::Cancel);
         connect(m_closeQuestion, &QMessageBox::finished, this, [this](int result) {

@@ -18,7 +18,9 @@ class EmergencyStop;
 class GuideWindow;
 class LinkStatus;
 class MessageView;
-class MotionPage; // jogging (issue 5)
+class MotionPage;     // jogging (issue 5)
+class OfflineActions; // working without the machine (issue 18)
+class OfflineBanner;
 class Page;
 class ProfileActions; // profiles (issue 7)
 class SessionLog;
@@ -49,6 +51,8 @@ public:
     MessageView *messageView() const { return m_messages; }
     MotionPage *motionPage() const { return m_motion; }           // jogging (issue 5)
     ProfileActions *profileActions() const { return m_profiles; } // profiles (issue 7)
+    OfflineActions *offlineActions() const { return m_offline; }  // issue 18
+    OfflineBanner *offlineBanner() const { return m_offlineBanner; }
     // The dialogs a test (or a curious user) may want to reach while they are open.
     WriteChangesDialog *writeDialog() const;
     QMessageBox *closeQuestion() const;
@@ -72,6 +76,8 @@ private:
     void retranslate();
     void updateActions();
     void updateTitle();
+    // Title and status bar say whether a file or a controller is being edited (issue 18).
+    void showOrigin();
     void restoreLayout();
     void saveLayout();
 
@@ -90,10 +96,13 @@ private:
     LinkStatus *m_linkStatus = nullptr;
     MotionPage *m_motion = nullptr;       // jogging (issue 5)
     ProfileActions *m_profiles = nullptr; // profiles (issue 7)
-    bool m_jogStopAwaited = false;        // jogging (issue 5): close waited for the stops once
+    OfflineActions *m_offline = nullptr;  // issue 18
+    OfflineBanner *m_offlineBanner = nullptr;
+    bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once
     WriteFlow *m_writeFlow = nullptr;
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;
+    bool m_answeredOnce = false; // this connection's controller answered (the page jumped)
 
     QAction *m_readAll = nullptr;
     QAction *m_write = nullptr;

@@ -67,8 +67,12 @@ QMessageBox *ProfileActions::errorBox() const
 void ProfileActions::retranslate()
 {
     m_open->setText(tr("&Open profile…"));
-    m_open->setToolTip(tr("Compare a profile file with the controller; nothing is written until "
-                          "you apply checked rows"));
+    m_open->setToolTip(m_offlineOpener
+                           ? tr("Connected: compare a profile file with the controller (nothing "
+                                "is written until you apply checked rows). Without a controller: "
+                                "edit the file on the pages")
+                           : tr("Compare a profile file with the controller; nothing is written "
+                                "until you apply checked rows"));
     m_saveFromDevice->setText(tr("Save profile from &device…"));
     m_saveFromDevice->setToolTip(tr("Read every parameter, then save them as a profile file"));
     m_saveFromEdited->setText(tr("Save profile from &edited values…"));
@@ -226,9 +230,23 @@ void ProfileActions::chooseReport()
     notes->open();
 }
 
+void ProfileActions::setOfflineOpener(std::function<bool(const QString &)> opener)
+{
+    m_offlineOpener = std::move(opener);
+    retranslate();
+}
+
 bool ProfileActions::openFile(const QString &path)
 {
-    const ProfileParseResult r = ProfileFile::load(path, m_session->map());
+    if (m_offlineOpener && m_session->linkState() == DeviceSession::LinkState::Disconnected) {
+        const bool opened = m_offlineOpener(path);
+        if (opened)
+            addRecent(path);
+        return opened;
+    }
+    // A profile of another map opens too: the comparison lists what this map cannot take.
+    const ProfileParseResult r =
+        ProfileFile::load(path, m_session->map(), ProfileFile::OtherMaps::Accept);
     if (!r.ok()) {
         showErrors(tr("The profile cannot be used"), r.errors);
         return false;

@@ -4,6 +4,8 @@
 #include <QPointer>
 #include <QStringList>
 
+#include <functional>
+
 class QAction;
 class QMenu;
 class QMessageBox;
@@ -42,7 +44,9 @@ public:
     void retranslate();
 
     // Parse, then show the comparison; a bad file shows every problem and writes nothing.
+    // Without a controller the file goes to `opener` (editing it offline) when one is set.
     bool openFile(const QString &path);
+    void setOfflineOpener(std::function<bool(const QString &)> opener);
     // Read everything from the controller, then save (done reports the outcome).
     // An empty name names the profile after the file.
     void saveFromDeviceFile(const QString &path, const QString &name = QString(),
@@ -78,6 +82,7 @@ private:
     QPointer<ProfileSaveDialog> m_saveDialog;
     QString m_machine; // the name of the last profile opened or saved
     QPointer<QMessageBox> m_errorBox;
+    std::function<bool(const QString &)> m_offlineOpener;
 };
 
 } // namespace stepcom

@@ -1,6 +1,7 @@
 #include "writeflow.h"
 
 #include "device/devicesession.h"
+#include "device/writereview.h"
 #include "dialogs/writechangesdialog.h"
 
 namespace stepcom {
@@ -31,6 +32,8 @@ bool WriteFlow::show(WriteChangesDialog *dialog)
         dialog->deleteLater();
         return false;
     }
+    // What the pages already flag in these values is said before anything goes out.
+    dialog->setProblems(WriteReview::problems(*m_session->parameters(), dialog->writes()));
     if (m_dialog)
         m_dialog->close();
     m_dialog = dialog;

@@ -11,7 +11,8 @@ namespace stepcom {
 class DeviceSession;
 class WriteChangesDialog;
 
-// The window's one way to write: show exactly what will be written, and on acceptance write it
+// The window's one way to write: show exactly what will be written and the geometry and wiring
+// problems the pages already flag in it (WriteReview), and on acceptance write it
 // through the session (which verifies it and updates the store). Every page that writes uses
 // one of these; a second request replaces a dialog still open.
 class WriteFlow : public QObject

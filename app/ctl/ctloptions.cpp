@@ -47,6 +47,9 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("verbose"), tr("Show the Modbus traffic on standard error.")},
         {QStringLiteral("yes"), tr("Do not ask: needed for commands that destroy settings.")},
         {QStringLiteral("save-to-flash"), tr("After writing, save the parameters to flash.")},
+        {QStringLiteral("wait"),
+         tr("command: wait until a motion command ends and print how it ended (exit 0 only "
+            "when done or referenced).")},
         {QStringLiteral("include-link"),
          tr("dump, apply: include the device id and baud (apply writes them only with this).")},
         {QStringLiteral("no-backup"),
@@ -121,6 +124,7 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.verbose = parser.isSet(QStringLiteral("verbose"));
     o.yes = parser.isSet(QStringLiteral("yes"));
     o.saveToFlash = parser.isSet(QStringLiteral("save-to-flash"));
+    o.wait = parser.isSet(QStringLiteral("wait"));
     o.includeLink = parser.isSet(QStringLiteral("include-link"));
     o.noBackup = parser.isSet(QStringLiteral("no-backup"));
     o.name = parser.value(QStringLiteral("name"));

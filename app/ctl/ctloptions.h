@@ -18,6 +18,7 @@ struct CtlOptions
     bool verbose = false;
     bool yes = false;
     bool saveToFlash = false;
+    bool wait = false;                       // command: wait for a motion's end and judge it
     bool includeLink = false;                // dump/apply: device.id and device.baud too
     bool noBackup = false;                   // apply: no backup of the controller's settings first
     QString name;                            // dump/report: the profile's or the machine's name

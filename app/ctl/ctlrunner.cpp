@@ -1,7 +1,9 @@
 #include "ctlrunner.h"
 
 #include "ctlmonitor.h"
+#include "ctlmotionwait.h"
 
+#include "device/motionjudge.h"
 #include "device/simulatorstarter.h"
 #include "i18n/translators.h"
 #include "sim/builtinsimulator.h"
@@ -82,6 +84,11 @@ const QList<CtlCommand> &CtlRunner::commands()
         {"command", "command NAME",
          QT_TRANSLATE_NOOP("stepcomctl", "pulse a command coil (e.g. motor1.stop, estop)"),
          &CtlRunner::runCommand},
+        {"command", "command NAME --wait",
+         QT_TRANSLATE_NOOP("stepcomctl",
+                           "pulse a motion command and wait until it ends; print\n"
+                           "how it ended (--json), exit 0 only when done or referenced"),
+         &CtlRunner::runCommandWait, &CtlOptions::wait},
         {"monitor", "monitor",
          QT_TRANSLATE_NOOP("stepcomctl", "print the live status as one JSON object per line,\n"
                                          "until --count samples or Ctrl-C (--interval MS)"),
@@ -140,11 +147,21 @@ QString CtlRunner::unknownCommandMessage(const QString &name)
 
 void CtlRunner::start()
 {
+    // A row that needs an option (command NAME --wait) is taken over the plain one when set.
+    const CtlCommand *chosen = nullptr;
     for (const CtlCommand &c : commands()) {
-        if (m_options.command == QLatin1String(c.name)) {
-            (this->*c.run)();
-            return;
+        if (m_options.command != QLatin1String(c.name))
+            continue;
+        if (c.when && m_options.*c.when) {
+            chosen = &c;
+            break;
         }
+        if (!c.when && !chosen)
+            chosen = &c;
+    }
+    if (chosen) {
+        (this->*chosen->run)();
+        return;
     }
     fail(UsageError, unknownCommandMessage(m_options.command));
 }
@@ -390,33 +407,63 @@ void CtlRunner::runWrite()
     });
 }
 
-void CtlRunner::runCommand()
+const Parameter *CtlRunner::commandArgument()
 {
     if (m_options.arguments.size() != 1) {
         fail(UsageError, tr("command needs exactly one command name (see: stepcomctl params)"));
-        return;
+        return nullptr;
     }
     const QString key = m_options.arguments.first();
     const Parameter *p = m_map.find(key);
     if (!p || !p->isCoil()) {
         fail(UsageError, p ? tr("%1 is a parameter, not a command: use read or write").arg(key)
                            : tr("unknown command '%1' (see: stepcomctl params)").arg(key));
-        return;
+        return nullptr;
     }
     if (p->command == CommandClass::Destructive && !m_options.yes) {
         fail(UsageError,
              tr("%1 destroys settings (%2); add --yes if you mean it").arg(key, p->help.en));
-        return;
+        return nullptr;
     }
+    return p;
+}
+
+void CtlRunner::runCommand()
+{
+    const Parameter *p = commandArgument();
+    if (!p)
+        return;
     connectThen([this, p] {
         m_session->command(*p, [this, p](const Result &r) {
             if (!r.ok) {
                 fail(DeviceError, r.errorText);
                 return;
             }
-            m_out << tr("%1: done").arg(p->key) << Qt::endl;
+            // A moving command is only acknowledged: its end is known with --wait.
+            m_out << (p->command == CommandClass::Motion
+                          ? tr("%1: sent (add --wait to wait for how it ends)").arg(p->key)
+                          : tr("%1: done").arg(p->key))
+                  << Qt::endl;
             finish(Ok);
         });
+    });
+}
+
+void CtlRunner::runCommandWait()
+{
+    const Parameter *p = commandArgument();
+    if (!p)
+        return;
+    if (!MotionJudge::kindOf(m_map, p->key)) {
+        fail(UsageError, tr("--wait: %1 has no end to wait for (single move, home, home in "
+                            "order, return to data zero, arc and line have one)")
+                             .arg(p->key));
+        return;
+    }
+    connectThen([this, p] {
+        auto *wait = new CtlMotionWait(m_session, *p, m_options.json, this);
+        connect(wait, &CtlMotionWait::finished, this, &CtlRunner::finish);
+        wait->start();
     });
 }
 

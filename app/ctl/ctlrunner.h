@@ -20,6 +20,8 @@ struct CtlCommand
     const char *usage;
     const char *help;
     void (CtlRunner::*run)();
+    // The option this row needs (command NAME --wait); a set one takes it over the plain row.
+    bool CtlOptions::*when = nullptr;
 };
 
 // Runs one stepcomctl command against a controller and reports an exit code:
@@ -50,6 +52,10 @@ private:
     void runRead();
     void runWrite();
     void runCommand();
+    // command NAME --wait: sends it and judges where the motion ended (CtlMotionWait).
+    void runCommandWait();
+    // The one coil `command` names, checked; nullptr after failing with the reason.
+    const Parameter *commandArgument();
     void runMonitor();
     // Profiles and the report (ctlprofile.cpp).
     void runDump();

@@ -6,6 +6,7 @@
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/writechangesdialog.h"
 #include "mainwindow.h"
+#include "offlinescenes.h"
 #include "pages/connectionpage.h"
 #include "pages/inputspage.h"
 #include "pages/interpolationpage.h"
@@ -458,6 +459,9 @@ const QList<Scene> &scenes()
         {QStringLiteral("profile-error"), W::AfterPages, &profileError},
         {QStringLiteral("write-changes"), W::AfterPages, &writeChanges},
         {QStringLiteral("port-missing"), W::AfterPages, &portMissing},
+        // Without a controller (issue 18): after port-missing, which leaves it disconnected.
+        {QStringLiteral("offline-editing"), W::AfterPages, &offlinescenes::editing},
+        {QStringLiteral("profile-files-compare"), W::AfterPages, &offlinescenes::compareFiles},
     };
     return table;
 }

@@ -2,6 +2,9 @@
 
 #include "bus/modbuslink.h"
 #include "device/jogcontroller.h"
+#include "device/linkhealth.h"
+#include "device/motionjudge.h"
+#include "device/motionsupervisor.h"
 #include "device/simulatorstarter.h"
 #include "device/statusrecorder.h"
 #include "i18n/translators.h"
@@ -14,8 +17,14 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     , m_client(new DeviceClient(m_link, map, this))
     , m_store(new ParameterStore(map, this))
     , m_poller(new Poller(m_client, m_store, this))
+    , m_motion(new MotionSupervisor(this, m_link)) // before the jog controller, which follows it
+    , m_health(new LinkHealth(m_link, this))
     , m_jog(new JogController(this, this))
 {
+    // The outcome is said when the controller showed it, not when the command went out.
+    connect(m_motion, &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
+        say(o.ok() ? Severity::Info : Severity::Warning, m_motion->text(o));
+    });
     m_poller->useStatusKeys(); // the full status; positions and running while a motor runs
     m_poller->setIntervalMs(Poller::intervalFromEnvironment(100));
     m_link->traffic()->setMap(&m_client->map());
@@ -25,7 +34,8 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             say(Severity::Error, tr("Cannot connect: %1").arg(reason));
             return;
         }
-        say(Severity::Info, tr("Connected to %1").arg(m_link->settings().describe()));
+        say(Severity::Info,
+            tr("Opened %1; asking the controller").arg(m_link->settings().describe()));
         if (std::exchange(m_readAfterConnect, false) && m_live)
             readAll();
         if (m_live)
@@ -33,6 +43,15 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     });
     connect(m_link, &ModbusLink::stateChanged, this, &DeviceSession::linkStateChanged);
     connect(m_link, &ModbusLink::statsChanged, this, &DeviceSession::linkStatsChanged);
+    connect(m_health, &LinkHealth::stateChanged, this, [this](LinkHealth::State s) {
+        if (s == LinkHealth::State::NotAnswering)
+            say(Severity::Warning, tr("The port is open, but the controller at %1 does not "
+                                      "answer.")
+                                       .arg(m_link->settings().describe()));
+        else if (s == LinkHealth::State::Answering)
+            say(Severity::Info, tr("The controller answers."));
+        Q_EMIT linkStateChanged();
+    });
     connect(m_link, &ModbusLink::lost, this, [this](const QString &reason) {
         m_poller->stop();
         m_store->forgetDeviceValues();
@@ -207,6 +226,7 @@ void DeviceSession::connectSimulator()
 void DeviceSession::openLink(const LinkSettings &settings)
 {
     m_readAfterConnect = true;
+    m_link->resetStats(); // statistics are per connection
     m_link->open(settings);
 }
 
@@ -303,9 +323,11 @@ void DeviceSession::command(const QString &key)
         return;
     }
     const QString label = p->label.text(Translators::current());
-    command(*p, [this, key, label](const Result &r) {
+    const bool motion = p->command == CommandClass::Motion;
+    command(*p, [this, key, label, motion](const Result &r) {
+        // A moving command is only acknowledged here; MotionSupervisor says how it ended.
         if (r.ok)
-            say(Severity::Info, tr("%1: done").arg(label));
+            say(Severity::Info, motion ? tr("%1: sent").arg(label) : tr("%1: done").arg(label));
         else
             say(Severity::Error, r.errorText);
         if (r.ok && key == QLatin1String("save_to_flash"))

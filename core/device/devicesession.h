@@ -16,7 +16,9 @@
 namespace stepcom {
 
 class JogController;
+class LinkHealth;
 class ModbusLink;
+class MotionSupervisor;
 class SimulatorStarter;
 class StatusRecorder;
 
@@ -47,6 +49,10 @@ public:
     // and forms bind to this model; the session keeps it up to date.
     ParameterStore *parameters() const { return m_store; }
     JogController *jog() const { return m_jog; }
+    // Follows motion commands to their judged outcome and keeps each axis' reference state.
+    MotionSupervisor *motion() const { return m_motion; }
+    // Port closed / open but not answering / answering: "connected" means answering.
+    LinkHealth *health() const { return m_health; }
     // The live status recorded for the plots; made on first use, recording from then on.
     StatusRecorder *recorder();
     TrafficLog *traffic() const;
@@ -142,6 +148,8 @@ private:
     DeviceClient *m_client;
     ParameterStore *m_store;
     Poller *m_poller;
+    MotionSupervisor *m_motion; // made before the jog controller, which follows it
+    LinkHealth *m_health;
     JogController *m_jog;
     StatusRecorder *m_recorder = nullptr;
     std::unique_ptr<SimulatorStarter> m_sim;

@@ -1,5 +1,7 @@
 #include "device/jogcontroller.h"
 
+#include "device/motionsupervisor.h"
+
 #include <QTimer>
 
 #include <algorithm>
@@ -26,6 +28,11 @@ JogController::JogController(DeviceSession *session, QObject *parent)
     connect(session, &DeviceSession::disconnected, this, &JogController::onDisconnected);
     connect(session, &DeviceSession::connected, this,
             [this](bool ok, const QString &) { onConnected(ok); });
+    // The E-STOP stopped every motor: the jogs end now (and are checked like any stop).
+    connect(session->motion(), &MotionSupervisor::emergencyStopSent, this, [this] {
+        stopAll(tr("E-STOP"));
+        Q_EMIT heldControlsReset();
+    });
     // A motor that kept running after its stop is cleared once the poller sees it idle.
     connect(session, &DeviceSession::statusCycleFinished, this, [this] {
         for (int n = 1; n <= motorCount(); ++n) {

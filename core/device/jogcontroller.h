@@ -76,6 +76,8 @@ Q_SIGNALS:
     // A motor that may still run: it kept running after a stop, or the link broke while it
     // moved, or a stop failed. Show this where the user looks.
     void warning(int motor, const QString &text);
+    // An E-STOP went out: whatever holds a jog (buttons, keys) must let go now, not on release.
+    void heldControlsReset();
     // No stop is in flight any more (emitted after the last one is answered and checked).
     void settled();
 

@@ -59,6 +59,8 @@ void ParameterStore::setDeviceValues(const QHash<QString, qint64> &values)
 
 void ParameterStore::forgetDeviceValues()
 {
+    if (m_file)
+        return; // a file's values: no link to lose
     for (auto it = m_entries.cbegin(); it != m_entries.cend(); ++it) {
         Entry e = it.value();
         e.device.reset();
@@ -100,6 +102,7 @@ void ParameterStore::revertAll()
 {
     for (const QString &key : editedKeys())
         revert(key);
+    Q_EMIT reverted();
 }
 
 QStringList ParameterStore::editedKeys() const
@@ -160,6 +163,30 @@ void ParameterStore::applyWriteOutcome(const QList<ParameterWrite> &writes,
     }
     if (anyWritten)
         setUnsavedToFlash(true);
+}
+
+void ParameterStore::openFile(const QString &name, const QHash<QString, qint64> &values)
+{
+    for (auto it = m_entries.cbegin(); it != m_entries.cend(); ++it)
+        update(it.key(),
+               Entry{values.contains(it.key()) ? std::optional<qint64>(values.value(it.key()))
+                                               : std::nullopt,
+                     std::nullopt, State::Unknown, QString()});
+    setUnsavedToFlash(false);
+    m_file = true;
+    m_fileName = name;
+    Q_EMIT originChanged();
+}
+
+void ParameterStore::closeFile()
+{
+    if (!m_file)
+        return;
+    for (auto it = m_entries.cbegin(); it != m_entries.cend(); ++it)
+        update(it.key(), Entry());
+    m_file = false;
+    m_fileName.clear();
+    Q_EMIT originChanged();
 }
 
 void ParameterStore::setUnsavedToFlash(bool unsaved)

@@ -42,7 +42,8 @@ public:
 
     // Values read from the device. A pending edit is kept: a poll never overwrites typing.
     void setDeviceValues(const QHash<QString, qint64> &values);
-    // The link is gone: what the device holds is unknown again (edits stay).
+    // The link is gone: what the device holds is unknown again (edits stay). A file (openFile)
+    // keeps its values.
     void forgetDeviceValues();
 
     // Validates against the map; returns the problem, or empty when the edit is held.
@@ -57,6 +58,15 @@ public:
     // edit, marked WriteFailed with the reason.
     void applyWriteOutcome(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
 
+    // Editing a profile file without a controller: the file's values stand where the
+    // controller's would (views bind to them unchanged), edits are the user's changes to the
+    // file. Replaces everything held; `name` names the file for views that word it.
+    void openFile(const QString &name, const QHash<QString, qint64> &values);
+    // Back to a controller: the file's values and every edit are forgotten.
+    void closeFile();
+    bool isFile() const { return m_file; }
+    QString fileName() const { return m_fileName; }
+
     // Set after any successful write until "save to flash" succeeds.
     bool unsavedToFlash() const { return m_unsaved; }
     void setUnsavedToFlash(bool unsaved);
@@ -65,6 +75,10 @@ Q_SIGNALS:
     void valueChanged(const QString &key);
     void editsChanged();
     void unsavedChanged(bool unsaved);
+    // revertAll(): every field drops what it shows that is not held (a rejected typed value).
+    void reverted();
+    // A file was opened or closed (openFile, closeFile).
+    void originChanged();
 
 private:
     void update(const QString &key, const Entry &entry);
@@ -73,6 +87,8 @@ private:
     RegisterMap m_map;
     QHash<QString, Entry> m_entries;
     bool m_unsaved = false;
+    bool m_file = false;
+    QString m_fileName;
 };
 
 } // namespace stepcom

@@ -74,4 +74,21 @@ InterpolationPath::Point InterpolationPath::pointAt(double s) const
     return {m_centre.x + radius * std::cos(angle), m_centre.y + radius * std::sin(angle)};
 }
 
+std::pair<int, int> InterpolationPath::startDirection() const
+{
+    double dx = m_end.x - m_start.x;
+    double dy = m_end.y - m_start.y;
+    if (m_arc) {
+        // d/dt of centre + r(t)·(cos a(t), sin a(t)) at t = 0.
+        const double c = std::cos(m_startAngle);
+        const double s = std::sin(m_startAngle);
+        const double dr = m_endRadius - m_startRadius;
+        dx = dr * c - m_startRadius * m_sweep * s;
+        dy = dr * s + m_startRadius * m_sweep * c;
+    }
+    const double norm = std::hypot(dx, dy);
+    const auto sign = [norm](double v) { return std::abs(v) <= 1e-9 * norm ? 0 : v > 0 ? 1 : -1; };
+    return {sign(dx), sign(dy)};
+}
+
 } // namespace stepcom

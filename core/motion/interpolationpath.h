@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <utility>
 
 namespace stepcom {
 
@@ -33,6 +34,10 @@ public:
     double sweep() const { return m_sweep; }
     // The point at arc length s (clamped to the path); the end point exactly at the end.
     Point pointAt(double s) const;
+    // The way each axis first moves from the start: the sign of dx and dy (-1, 0 or 1) of the
+    // path's tangent there (an arc's start is across the radius, plus the spiral's radial
+    // part). An axis the tangent leaves alone (a rounding residue is no move) reads 0.
+    std::pair<int, int> startDirection() const;
 
 private:
     bool m_arc = false;

@@ -1,5 +1,7 @@
 #include "sim/simregisters.h"
 
+#include "map/factoryvalues.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -46,52 +48,20 @@ void SimRegisters::setRaw(const Parameter *param, qint64 raw)
 
 qint64 SimRegisters::factoryValue(const Parameter &p) const
 {
-    static const QHash<QString, qint64> motor = {
-        {QStringLiteral("step_angle"), 180},      {QStringLiteral("microsteps"), 8},
-        {QStringLiteral("start_frequency"), 400}, {QStringLiteral("accel_frequency"), 80},
-        {QStringLiteral("direction"), 0},         {QStringLiteral("speed"), 300},
-        {QStringLiteral("pitch"), 500},           {QStringLiteral("move_distance"), 1000},
-    };
-    static const QHash<QString, qint64> single = {
-        {QStringLiteral("homing.first"), 1},    {QStringLiteral("homing.second"), 2},
-        {QStringLiteral("arc.enabled"), 0},     {QStringLiteral("arc.mode"), 0},
-        {QStringLiteral("arc.start_x"), 2000},  {QStringLiteral("arc.start_y"), 2000},
-        {QStringLiteral("arc.end_x"), 6000},    {QStringLiteral("arc.end_y"), 2000},
-        {QStringLiteral("arc.center_x"), 4000}, {QStringLiteral("arc.center_y"), 2000},
-        {QStringLiteral("arc.middle_x"), 4000}, {QStringLiteral("arc.middle_y"), 4000},
-        {QStringLiteral("arc.direction"), 0},   {QStringLiteral("arc.speed"), 60},
-        {QStringLiteral("line.enabled"), 0},    {QStringLiteral("line.start_x"), 2000},
-        {QStringLiteral("line.start_y"), 2000}, {QStringLiteral("line.end_x"), 8000},
-        {QStringLiteral("line.end_y"), 6000},   {QStringLiteral("line.speed"), 60},
-        {QStringLiteral("device.id"), 1},       {QStringLiteral("device.baud"), 9600},
-        {QStringLiteral("mode.system"), 0},     {QStringLiteral("mode.round_trips"), 0},
-    };
-    qint64 value = 0;
-    bool known = false;
+    // The simulated machine has its switches wired (the factory leaves the inputs unset):
+    // motor n's positive end on IN(2n-1), its negative end and home on IN(2n).
     if (p.block == QLatin1String("motor")) {
-        // Switches wired motor n: positive end IN(2n-1), negative end and home IN(2n).
         const int n = p.instance;
-        if (p.localKey == QLatin1String("limit_positive")) {
-            value = 2 * n - 1 <= m_inputs ? 2 * n - 1 : 0;
-            known = true;
-        } else if (p.localKey == QLatin1String("limit_negative") ||
-                   p.localKey == QLatin1String("home_input")) {
-            value = 2 * n <= m_inputs ? 2 * n : 0;
-            known = true;
-        } else if (motor.contains(p.localKey)) {
-            value = motor.value(p.localKey);
-            known = true;
-        }
-    } else if (single.contains(p.key)) {
-        value = single.value(p.key);
-        known = true;
+        std::optional<qint64> input;
+        if (p.localKey == QLatin1String("limit_positive"))
+            input = 2 * n - 1 <= m_inputs ? 2 * n - 1 : 0;
+        else if (p.localKey == QLatin1String("limit_negative") ||
+                 p.localKey == QLatin1String("home_input"))
+            input = 2 * n <= m_inputs ? 2 * n : 0;
+        if (input && p.checkRaw(*input).isEmpty())
+            return *input;
     }
-    if (known && p.checkRaw(value).isEmpty())
-        return value;
-    // Anything else starts at zero, or the nearest value the map allows.
-    if (!p.values.isEmpty())
-        return p.checkRaw(0).isEmpty() ? 0 : p.values.first().value;
-    return qBound(p.rawMin, qint64(0), p.rawMax);
+    return FactoryValues::value(p);
 }
 
 void SimRegisters::resetToFactory()

@@ -9,6 +9,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QTest>
+#include <QTimer>
 
 using namespace stepcom::test;
 
@@ -207,6 +208,61 @@ private Q_SLOTS:
         r = ctl({"--tcp", target, "read"}, false);
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(QStringLiteral("refused")), qPrintable(r.err));
+    }
+
+    // `command --wait` judges the end as the window does; exit 0 only for done / referenced.
+    void waitJudgesTheOutcome()
+    {
+        stepcom::SimHost host;
+        stepcom::SimOptions options;
+        options.tcp = true;
+        QString error;
+        QVERIFY2(host.start(options, &error), qPrintable(error));
+        stepcom::SimDevice *sim = host.device();
+        QVERIFY(sim->setValue(QStringLiteral("motor1.speed"), 1200));
+        const QString target = QStringLiteral("127.0.0.1:%1").arg(host.tcpPort());
+
+        Run r = ctl({"--tcp", target, "--json", "command", "motor1.move", "--wait"}, false);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject done = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(done.value(QStringLiteral("outcome")).toString(), QStringLiteral("done"));
+        QCOMPARE(done.value(QStringLiteral("message")).toString(),
+                 QStringLiteral("Single move of motor 1: done at 10.00 mm"));
+        QCOMPARE(sim->position(1), 1000);
+
+        // An E-STOP (from the machine, another master) while homing: not referenced, exit 1.
+        QVERIFY(sim->setValue(QStringLiteral("motor1.speed"), 300));
+        sim->setMachinePosition(1, 80.0);
+        QTimer watcher;
+        bool stopped = false;
+        connect(&watcher, &QTimer::timeout, this, [&] {
+            if (!stopped && sim->running(1)) {
+                stopped = true;
+                sim->command(QStringLiteral("estop"));
+            }
+        });
+        watcher.start(5);
+        r = ctl({"--tcp", target, "command", "motor1.home", "--wait"}, false);
+        watcher.stop();
+        QVERIFY(stopped);
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(
+            r.err.contains(QStringLiteral("Homing motor 1 ended without the home input at ")) &&
+                r.err.contains(QStringLiteral(": not referenced")),
+            qPrintable(r.err));
+        QVERIFY(!r.out.contains(QStringLiteral("referenced at")));
+
+        // Homing that reaches its switch is referenced.
+        r = ctl({"--tcp", target, "--json", "command", "motor1.home", "--wait"}, false);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err + r.out));
+        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value(QStringLiteral("outcome")),
+                 QJsonValue(QStringLiteral("referenced")));
+
+        // Forward runs until stopped: nothing to wait for.
+        r = ctl({"--tcp", target, "command", "motor1.forward", "--wait"}, false);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(QStringLiteral("no end to wait for")), qPrintable(r.err));
+        QVERIFY(!sim->running(1));
     }
 
     void builtinSimulator()

@@ -199,6 +199,27 @@ private Q_SLOTS:
         QVERIFY(near(p.pointAt(100), QPointF(-3.5, 7.25)));
     }
 
+    // The way each axis leaves the start: the tangent's signs; an axis the tangent leaves alone
+    // (a rounding residue of cos/sin included) reads 0, and a spiral adds its radial part.
+    void startDirections()
+    {
+        using Dir = std::pair<int, int>;
+        QCOMPARE(InterpolationPath::line({1, 2}, {-3.5, 7.25}).startDirection(), Dir(-1, 1));
+        QCOMPARE(InterpolationPath::line({1, 2}, {1, -5}).startDirection(), Dir(0, -1));
+        // From (0, 0) around (10, 0): clockwise first up, counter-clockwise first down.
+        const auto cw = InterpolationPath::arcAroundCentre({0, 0}, {20, 0}, {10, 0}, false);
+        QVERIFY(cw);
+        QCOMPARE(cw->startDirection(), Dir(0, 1));
+        const auto ccw = InterpolationPath::arcAroundCentre({0, 0}, {20, 0}, {10, 0}, true);
+        QCOMPARE(ccw->startDirection(), Dir(0, -1));
+        // From (10, 0) around (0, 0) counter-clockwise, ending further out at (0, 20): the
+        // radius grows from the start, so x moves outwards too.
+        const auto spiral = InterpolationPath::arcAroundCentre({10, 0}, {0, 20}, {0, 0}, true);
+        QCOMPARE(spiral->startDirection(), Dir(1, 1));
+        const auto circle = InterpolationPath::arcAroundCentre({10, 0}, {0, 10}, {0, 0}, true);
+        QCOMPARE(circle->startDirection(), Dir(0, 1));
+    }
+
     void setupsFromRegisters()
     {
         const RegisterMap &map = RegisterMap::builtin();

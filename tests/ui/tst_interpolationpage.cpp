@@ -190,6 +190,53 @@ private Q_SLOTS:
         runToEnd(line, page.preview(), 725, -400);
     }
 
+    // Issue 13: motor 2 sat on its negative limit, only the approach ran, and the arc was
+    // reported "done". Now: warned before Start, and the outcome says where it stopped and why.
+    void anArcAgainstAnActiveLimitIsWarnedAndNotDone()
+    {
+        InterpolationPage page(session.get());
+        page.resize(1400, 900);
+        page.show();
+        PathEditor *arc = page.arcEditor();
+        connectSim();
+        QVERIFY(sim()->setValue(QStringLiteral("motor2.limit_positive"), 3));
+        QVERIFY(sim()->setValue(QStringLiteral("motor2.limit_negative"), 4));
+        QVERIFY(sim()->setValue(QStringLiteral("motor2.home_input"), 4));
+        sim()->setInput(4, SimDevice::InputForce::On);
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->readAll();
+        QTRY_COMPARE(read.size(), 1);
+        // From (10, -5) counter-clockwise round (0, -5) to (0, 5): the approach drives motor 2
+        // from 0 in reverse, into its negative limit.
+        enter(arc, QStringLiteral("arc.enabled"), QStringLiteral("1"));
+        enter(arc, QStringLiteral("arc.mode"), QStringLiteral("0"));
+        enter(arc, QStringLiteral("arc.start_x"), QStringLiteral("10"));
+        enter(arc, QStringLiteral("arc.start_y"), QStringLiteral("-5"));
+        enter(arc, QStringLiteral("arc.end_x"), QStringLiteral("0"));
+        enter(arc, QStringLiteral("arc.end_y"), QStringLiteral("5"));
+        enter(arc, QStringLiteral("arc.center_x"), QStringLiteral("0"));
+        enter(arc, QStringLiteral("arc.center_y"), QStringLiteral("-5"));
+        enter(arc, QStringLiteral("arc.direction"), QStringLiteral("1"));
+        enter(arc, QStringLiteral("arc.speed"), QStringLiteral("300"));
+        QVERIFY2(arc->geometry().valid, qPrintable(arc->geometry().error));
+        writeThroughDialog(arc);
+        QTRY_VERIFY_WITH_TIMEOUT(arc->startButton()->isEnabled(), 10000);
+        QTRY_VERIFY2(arc->startReason()->text().contains(
+                         QLatin1String("Motor 2's negative limit (IN4) is already ON")),
+                     qPrintable(arc->startReason()->text()));
+        QVERIFY(arc->startReason()->text().contains(QLatin1String("approach")));
+        arc->startButton()->click();
+        QTRY_VERIFY_WITH_TIMEOUT(arc->outcomeLabel()->text().startsWith(QLatin1String("Last run")),
+                                 20000);
+        const QString outcome = arc->outcomeLabel()->text();
+        QVERIFY2(outcome.contains(QLatin1String("Arc: stopped at (")) &&
+                     outcome.contains(QLatin1String("not at the end point (0.00, 5.00) mm")) &&
+                     outcome.contains(QLatin1String("motor 2's negative limit (IN4) is ON")),
+                 qPrintable(outcome));
+        QVERIFY(!outcome.contains(QLatin1String("done")));
+        QCOMPARE(sim()->position(2), 0);
+    }
+
     void startNeedsWrittenValidGeometry()
     {
         InterpolationPage page(session.get());

@@ -1,20 +1,26 @@
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
+#include "device/linkhealth.h"
 #include "device/sessioninternals.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "page.h"
+#include "pages/connectionpage.h"
+#include "pages/devicepage.h"
+#include "scripteddevice.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
+#include "widgets/linkstatus.h"
 #include "widgets/parameterfield.h"
 #include "widgets/parameterform.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -101,12 +107,149 @@ private Q_SLOTS:
         QSignalSpy rejected(speed, &ParameterField::rejected);
         speed->enterText(QStringLiteral("99999"));
         QCOMPARE(rejected.size(), 1);
-        QVERIFY(rejected.at(0).at(0).toString().contains(QStringLiteral("out of range")));
+        // The reason is beside the field, in words: label, range and unit, no internal key.
+        const QString why =
+            QStringLiteral("Speed: 99999 is outside the allowed range 1 – 3000 rpm.");
+        QCOMPARE(rejected.at(0).at(0).toString(), why);
+        QVERIFY(!speed->reasonLabel()->isHidden());
+        QCOMPARE(speed->reasonLabel()->text(), why);
+        QVERIFY(!speed->reasonLabel()->text().contains(QLatin1String("motor1.")));
+        auto *line = qobject_cast<QLineEdit *>(speed->editor());
+        QCOMPARE(line->text(), QStringLiteral("99999")); // kept for correction
         QVERIFY(!session->parameters()->hasEdits());
         QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
         QTest::qWait(300);
         QCOMPARE(writes, 0);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
+
+        // Not a number, then a valid value: the red and the reason go at once.
+        speed->enterText(QStringLiteral("abc"));
+        QCOMPARE(speed->rejectionText(),
+                 QStringLiteral("Speed: “abc” is not a number. Allowed: 1 – 3000 rpm."));
+        speed->enterText(QStringLiteral("-100"));
+        QVERIFY(speed->rejectionText().contains(QLatin1String("-100 is outside")));
+        speed->enterText(QStringLiteral("400"));
+        QVERIFY(speed->rejectionText().isEmpty());
+        QVERIFY(speed->reasonLabel()->isHidden());
+        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
+                 ParameterStore::State::Edited);
+        // Revert drops a refused text too, and a write never leaves a stale reason behind.
+        speed->enterText(QStringLiteral("0"));
+        QVERIFY(!speed->rejectionText().isEmpty());
+        window->action(QStringLiteral("revert"))->trigger();
+        QVERIFY(speed->rejectionText().isEmpty());
+        QCOMPARE(line->text(), QStringLiteral("300"));
+    }
+
+    // A port with nobody behind it is "not answering", never "Connected"; the window stays on
+    // the Connection page with the likely causes, and the counts start again per connection.
+    void aSilentPortIsNeverConnected()
+    {
+        session->disconnectFrom();
+        window->showPage(0);
+        test::ScriptedDevice device;
+        QString error;
+        QVERIFY2(device.open(&error), qPrintable(error));
+        device.setResponder([](const QByteArray &, int) { return std::nullopt; });
+        QList<LinkHealth::State> seen;
+        connect(session->health(), &LinkHealth::stateChanged, this,
+                [&seen](LinkHealth::State st) { seen << st; });
+        auto *status = window->findChild<LinkStatus *>();
+        LinkSettings s;
+        s.portName = device.clientPath();
+        s.timeoutMs = 100;
+        s.retries = 0;
+        session->connectTo(s);
+        QTRY_COMPARE(session->health()->state(), LinkHealth::State::NotAnswering);
+        QCOMPARE(status->stateText(), QStringLiteral("Not answering"));
+        auto *page = qobject_cast<ConnectionPage *>(window->currentPage());
+        QVERIFY(page); // no jump to Motor 1 with blank fields
+        QVERIFY2(page->statusText().contains(QLatin1String("does not answer")) &&
+                     page->statusText().contains(QLatin1String("A and B swapped")),
+                 qPrintable(page->statusText()));
+        QVERIFY(!seen.contains(LinkHealth::State::Answering));
+        QVERIFY(session->linkStats().timeouts > 0);
+
+        // The controller answers now: "Connected", and on to the first motor.
+        device.useRegisterDevice();
+        session->disconnectFrom();
+        session->connectTo(s);
+        QCOMPARE(session->linkStats().timeouts, quint64(0)); // per connection
+        QTRY_COMPARE(session->health()->state(), LinkHealth::State::Answering);
+        QCOMPARE(status->stateText(), QStringLiteral("Connected"));
+        QTRY_VERIFY(!qobject_cast<ConnectionPage *>(window->currentPage()));
+    }
+
+    // One flash state: a baud or id change makes it "not saved", only a save clears it, and
+    // the Device page never says "saved" beside "not saved".
+    void flashStateAfterLinkWritesAndSave()
+    {
+        DevicePage *device = window->findChild<DevicePage *>();
+        QVERIFY(device);
+        QVERIFY(!session->parameters()->unsavedToFlash());
+        session->saveToFlash();
+        QTRY_VERIFY(device->flashStatus().startsWith(QLatin1String("Saved to flash")));
+        QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
+        session->changeLink(1, 19200);
+        QTRY_COMPARE(changed.size(), 1);
+        QVERIFY(session->parameters()->unsavedToFlash());
+        QVERIFY(device->unsavedWarningShown());
+        QVERIFY2(!device->flashStatus().contains(QLatin1String("Saved")),
+                 qPrintable(device->flashStatus()));
+        QVERIFY(window->findChild<LinkStatus *>()->findChildren<QLabel *>().size() > 0);
+        session->saveToFlash();
+        QTRY_VERIFY(!session->parameters()->unsavedToFlash());
+        QVERIFY(!device->unsavedWarningShown());
+        QVERIFY(device->flashStatus().startsWith(QLatin1String("Saved to flash")));
+        session->changeLink(7, 19200); // the id alone
+        QTRY_COMPARE(changed.size(), 2);
+        QVERIFY(session->parameters()->unsavedToFlash());
+        QVERIFY(!device->flashStatus().contains(QLatin1String("Saved")));
+    }
+
+    // The write flow lists what the pages already flag, and asks before writing it anyway.
+    void writeDialogListsKnownProblems()
+    {
+        ParameterStore *store = session->parameters();
+        const qint64 speed = *store->deviceValue(QStringLiteral("motor1.speed"));
+        QVERIFY(store->edit(QStringLiteral("motor1.speed"), speed + 10).isEmpty());
+        window->writeChanges();
+        QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
+        QVERIFY(window->writeDialog()->problems().isEmpty());
+        auto *label = window->writeDialog()->findChild<QLabel *>(QStringLiteral("problems"));
+        QVERIFY(label && label->isHidden());
+        QCOMPARE(
+            window->writeDialog()->findChild<QPushButton *>(QStringLiteral("writeButton"))->text(),
+            QStringLiteral("&Write"));
+        window->writeDialog()->reject();
+        // The centre on the start point: the arc editor flags it as invalid geometry.
+        const qint64 sx = *store->deviceValue(QStringLiteral("arc.start_x"));
+        const qint64 sy = *store->deviceValue(QStringLiteral("arc.start_y"));
+        QVERIFY(store->edit(QStringLiteral("arc.start_x"), sx + 100).isEmpty());
+        QVERIFY(store->edit(QStringLiteral("arc.center_x"), sx + 100).isEmpty());
+        QVERIFY(store->edit(QStringLiteral("arc.center_y"), sy).isEmpty() ||
+                store->deviceValue(QStringLiteral("arc.center_y")) == sy);
+        QVERIFY(store->edit(QStringLiteral("arc.mode"), 0).isEmpty() ||
+                store->deviceValue(QStringLiteral("arc.mode")) == 0);
+        // One input as both limits of motor 1: the wiring check flags it.
+        QVERIFY(store->edit(QStringLiteral("motor1.limit_positive"), 3).isEmpty());
+        QVERIFY(store->edit(QStringLiteral("motor1.limit_negative"), 3).isEmpty());
+        window->writeChanges();
+        QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
+        WriteChangesDialog *dialog = window->writeDialog();
+        const QString all = dialog->problems().join(QLatin1Char('|'));
+        QVERIFY2(dialog->problems().size() >= 2, qPrintable(all));
+        QVERIFY2(all.contains(QLatin1String("Arc: ")), qPrintable(all));
+        QVERIFY2(all.contains(QLatin1String("IN3")), qPrintable(all));
+        label = dialog->findChild<QLabel *>(QStringLiteral("problems"));
+        QVERIFY(label && !label->isHidden());
+        auto *write = dialog->findChild<QPushButton *>(QStringLiteral("writeButton"));
+        QCOMPARE(write->text(), QStringLiteral("&Write anyway"));
+        QVERIFY(!write->isDefault());
+        dialog->reject(); // nothing written
+        QCOMPARE(*sim()->value(QStringLiteral("motor1.limit_positive")),
+                 *store->deviceValue(QStringLiteral("motor1.limit_positive")));
+        store->revertAll();
     }
 
     void emergencyStopFromInsideADialogGoesFirst()

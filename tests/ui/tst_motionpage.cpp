@@ -1,5 +1,8 @@
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
+#include "device/motionsupervisor.h"
+#include "device/referencetracker.h"
+#include "emergencystop.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "pages/motionpage.h"
@@ -12,6 +15,7 @@
 #include "widgets/led.h"
 #include "widgets/messageview.h"
 #include "widgets/parameterfield.h"
+#include "widgets/statusdock.h"
 
 #include "darkpalette.h"
 
@@ -239,10 +243,14 @@ private Q_SLOTS:
 
         p->moveButton()->click();
         QTRY_COMPARE(simValue("motor1.position"), 1000);
-        QTRY_COMPARE(p->statusText(), QStringLiteral("Idle — Single move done"));
+        QTRY_COMPARE(p->statusText(),
+                     QStringLiteral("Idle — Single move of motor 1: done at 10.00 mm"));
+        QVERIFY(p->referenceText().startsWith(QLatin1String("not referenced")));
         p->homeButton()->click();
         QTRY_VERIFY(p->statusText().startsWith(QLatin1String("Homing")));
-        QTRY_COMPARE(p->statusText(), QStringLiteral("Idle — Homing done"));
+        QTRY_COMPARE(p->statusText(),
+                     QStringLiteral("Idle — Homing motor 1: referenced at 0.00 mm"));
+        QCOMPARE(p->referenceText(), QStringLiteral("referenced"));
         QCOMPARE(simValue("motor1.position"), 0);
         QCOMPARE(p->positionText(), QStringLiteral("0.00 mm"));
 
@@ -256,11 +264,121 @@ private Q_SLOTS:
         QTRY_VERIFY2(page.homingStatus().contains(QLatin1String("motor 1 running")),
                      qPrintable(page.homingStatus()));
         QTRY_VERIFY_WITH_TIMEOUT(
-            page.homingStatus().startsWith(QLatin1String("Homing in order: done")), 5000);
+            page.homingStatus().startsWith(QLatin1String("Homing in order: referenced")), 5000);
         QCOMPARE(simValue("motor1.position"), 0);
         QCOMPARE(simValue("motor2.position"), 0);
-        QVERIFY2(page.homingStatus().contains(QLatin1String("motor 2 at 0.00 mm")),
-                 qPrintable(page.homingStatus()));
+        QCOMPARE(page.homingStatus(),
+                 QStringLiteral("Homing in order: referenced at (0.00, 0.00) mm"));
+        QCOMPARE(page.panel(2)->referenceText(), QStringLiteral("referenced"));
+        // Zeroing moves the zero: no axis is referenced after it.
+        QTRY_VERIFY(page.zeroButton()->isEnabled());
+        page.zeroButton()->click();
+        QTRY_COMPARE(p->referenceText(), QStringLiteral("not referenced (coordinates zeroed)"));
+    }
+
+    // The bug of issue 13: E-STOP during homing showed "Idle — Homing done".
+    void eStopDuringHomingIsNotReferenced()
+    {
+        connectSim();
+        sim()->setMachinePosition(1, 60.0); // a long way from the home switch
+        MotionPage page(session.get());
+        showActive(&page);
+        JogPanel *p = page.panel(1);
+        QTRY_VERIFY(p->homeButton()->isEnabled());
+        QSignalSpy messages(session.get(), &DeviceSession::message);
+        p->homeButton()->click();
+        QTRY_VERIFY(sim()->running(1));
+        QTRY_VERIFY(p->statusText().startsWith(QStringLiteral("Homing motor 1…")));
+        session->emergencyStop();
+        QTRY_VERIFY2(p->statusText().contains(QLatin1String("(E-STOP): not referenced")),
+                     qPrintable(p->statusText()));
+        QVERIFY2(
+            p->statusText().startsWith(QStringLiteral("Idle — Homing motor 1 interrupted at ")),
+            qPrintable(p->statusText()));
+        QVERIFY(sim()->position(1) != 0);
+        QVERIFY(p->referenceText().startsWith(QLatin1String("not referenced")));
+        StatusDock dock(session.get());
+        QCOMPARE(dock.referenceText(1), QStringLiteral("not referenced (homing was interrupted)"));
+        // Logged when it was known, in other words than when it was sent.
+        QStringList said;
+        for (const auto &m : std::as_const(messages))
+            said << m.at(1).toString();
+        QVERIFY2(said.contains(QStringLiteral("Home: sent")), qPrintable(said.join('|')));
+        QVERIFY(!said.join('|').contains(QLatin1String("Home: done")));
+        QVERIFY(said.last().contains(QLatin1String("not referenced")));
+    }
+
+    void aStopDuringASingleMoveSaysWhereItStopped()
+    {
+        connectSim();
+        QVERIFY(sim()->setValue(QStringLiteral("motor1.move_distance"), 20000)); // 200 mm
+        QVERIFY(sim()->setValue(QStringLiteral("motor1.speed"), 120));
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->readAll();
+        QTRY_COMPARE(read.size(), 1);
+        MotionPage page(session.get());
+        showActive(&page);
+        JogPanel *p = page.panel(1);
+        QTRY_VERIFY(p->moveButton()->isEnabled());
+        p->moveButton()->click();
+        QTRY_VERIFY(sim()->running(1));
+        QTRY_VERIFY(p->statusText().startsWith(QStringLiteral("Single move of motor 1…")));
+        QTest::mousePress(p->stopButton(), Qt::LeftButton);
+        QTest::mouseRelease(p->stopButton(), Qt::LeftButton);
+        QTRY_VERIFY2(
+            p->statusText().contains(QLatin1String("not at the end point 200.00 mm (stop)")),
+            qPrintable(p->statusText()));
+        QVERIFY(p->statusText().contains(QLatin1String("stopped at ")));
+        QVERIFY(!p->statusText().contains(QLatin1String("done")));
+    }
+
+    // A link lost while a move runs: not "done", the cause is the link, references are gone.
+    void aLinkLostDuringAMoveIsSaid()
+    {
+        connectSim();
+        QVERIFY(sim()->setValue(QStringLiteral("motor1.move_distance"), 20000));
+        QVERIFY(sim()->setValue(QStringLiteral("motor1.speed"), 120));
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->readAll();
+        QTRY_COMPARE(read.size(), 1);
+        MotionSupervisor *motion = session->motion();
+        session->command(QStringLiteral("motor1.home"));
+        QTRY_VERIFY_WITH_TIMEOUT(motion->references()->isReferenced(1), 10000);
+        QSignalSpy finished(motion, &MotionSupervisor::finished);
+        session->command(QStringLiteral("motor1.move"));
+        QTRY_VERIFY(motion->active(1).has_value());
+        QTRY_VERIFY(sim()->running(1));
+        test::simHost(*session)->hangUp(60000);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
+        const auto o = motion->lastOutcome(1);
+        QVERIFY(o);
+        QCOMPARE(o->verdictWord(), QStringLiteral("stopped"));
+        QCOMPARE(o->causeWord(), QStringLiteral("link_lost"));
+        QVERIFY2(motion->text(*o).endsWith(QLatin1String("(link lost)")),
+                 qPrintable(motion->text(*o)));
+        QCOMPARE(motion->references()->reason(1), ReferenceTracker::Reason::LinkLost);
+    }
+
+    // F12 while a jog button is held: the jog ends on the page at once, not at the release.
+    void eStopLetsGoOfAHeldJog()
+    {
+        EmergencyStop estop(session.get());
+        MotionPage page(session.get());
+        session->jog()->setSettleMs(50);
+        showActive(&page);
+        connectSim();
+        JogPanel *p = page.panel(1);
+        QTRY_VERIFY(p->forwardButton()->isEnabled());
+        QTest::mousePress(p->forwardButton(), Qt::LeftButton);
+        QTRY_VERIFY(sim()->running(1));
+        QCOMPARE(p->statusText(), QStringLiteral("Jogging forward"));
+        QTest::keyClick(&page, Qt::Key_F12);
+        QTRY_VERIFY(!sim()->running(1));
+        QVERIFY(!p->forwardButton()->isDown());
+        QTRY_COMPARE(session->jog()->state(1), State::Idle);
+        QVERIFY(p->statusText() != QStringLiteral("Jogging forward"));
+        QTest::mouseRelease(p->forwardButton(), Qt::LeftButton);
+        QVERIFY(!sim()->running(1));
     }
 
     void homingOrderRefusesDuplicates()

@@ -403,6 +403,14 @@ void ProfileCompareDialog::retranslate()
         header += QStringLiteral(", ") + tr("from controller id %1").arg(m_profile.deviceId);
     if (!m_profile.notes.isEmpty())
         header += QLatin1Char('\n') + m_profile.notes;
+    // A profile of another map: what is left out, before anything is applied.
+    if (const QString maps = m_profile.variance.describeMaps(); !maps.isEmpty())
+        header += QLatin1Char('\n') + maps;
+    const QStringList notApplied =
+        m_profile.variance.describe(m_session->map(), Language::instance().current());
+    if (!notApplied.isEmpty())
+        header += QLatin1Char('\n') + tr("Not applied:") + QStringLiteral("\n  ") +
+                  notApplied.join(QStringLiteral("\n  "));
     header += QLatin1Char('\n') + tr("Opening a profile writes nothing. Check the rows to "
                                      "write, then Apply.");
     m_header->setText(header);

@@ -35,6 +35,7 @@ WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, const QStrin
     , m_writes(writesOf(store, keys))
     , m_table(new QTableWidget(int(m_writes.size()), 4, this))
     , m_summary(new QLabel(this))
+    , m_problemsLabel(new QLabel(this))
 {
     setWindowTitle(tr("Write changes to the controller"));
     const QString lang = Language::instance().current();
@@ -67,17 +68,47 @@ WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, const QStrin
                           "They stay in the controller's RAM until you save to flash.",
                           nullptr, int(m_writes.size())));
     auto *buttons = new QDialogButtonBox(this);
-    QPushButton *write = buttons->addButton(tr("&Write"), QDialogButtonBox::AcceptRole);
-    write->setObjectName(QStringLiteral("writeButton"));
-    buttons->addButton(QDialogButtonBox::Cancel);
+    m_write = buttons->addButton(tr("&Write"), QDialogButtonBox::AcceptRole);
+    m_write->setObjectName(QStringLiteral("writeButton"));
+    m_cancel = buttons->addButton(QDialogButtonBox::Cancel);
+    m_problemsLabel->setObjectName(QStringLiteral("problems"));
+    m_problemsLabel->setWordWrap(true);
+    m_problemsLabel->setTextFormat(Qt::PlainText);
+    QPalette pal = m_problemsLabel->palette();
+    pal.setColor(QPalette::WindowText, QColor(200, 30, 30));
+    m_problemsLabel->setPalette(pal);
+    m_problemsLabel->hide();
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_summary);
+    layout->addWidget(m_problemsLabel);
     layout->addWidget(m_table);
     layout->addWidget(buttons);
     resize(sizeHint().expandedTo(QSize(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 80,
                                        fontMetrics().height() * 16)));
+}
+
+void WriteChangesDialog::setProblems(const QStringList &problems)
+{
+    m_problems = problems;
+    m_problemsLabel->setVisible(!problems.isEmpty());
+    if (problems.isEmpty()) {
+        m_problemsLabel->clear();
+        m_write->setText(tr("&Write"));
+        m_write->setAutoDefault(true);
+        m_write->setDefault(true);
+        return;
+    }
+    // Say what the pages already know, and make writing it anyway a deliberate choice.
+    QStringList lines{tr("The pages flag problems in these values:")};
+    for (const QString &p : problems)
+        lines << QStringLiteral("• ") + p;
+    m_problemsLabel->setText(lines.join(QLatin1Char('\n')));
+    m_write->setText(tr("&Write anyway"));
+    m_write->setAutoDefault(false);
+    m_write->setDefault(false);
+    m_cancel->setDefault(true);
 }
 
 } // namespace stepcom

@@ -6,6 +6,7 @@
 
 class QTableWidget;
 class QLabel;
+class QPushButton;
 
 namespace stepcom {
 
@@ -24,11 +25,20 @@ public:
     // The writes shown, as they will be sent if the user accepts.
     const QList<ParameterWrite> &writes() const { return m_writes; }
     QTableWidget *table() const { return m_table; }
+    // Geometry and wiring problems the pages already flag in these values (WriteFlow finds
+    // them): shown above the table, and the Write button then says "Write anyway" and is no
+    // longer the default.
+    void setProblems(const QStringList &problems);
+    const QStringList &problems() const { return m_problems; }
 
 private:
     QList<ParameterWrite> m_writes;
     QTableWidget *m_table;
     QLabel *m_summary;
+    QLabel *m_problemsLabel;
+    QPushButton *m_write = nullptr;
+    QPushButton *m_cancel = nullptr;
+    QStringList m_problems;
 };
 
 } // namespace stepcom

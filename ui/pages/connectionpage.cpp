@@ -1,6 +1,7 @@
 #include "pages/connectionpage.h"
 
 #include "device/devicesession.h"
+#include "device/linkhealth.h"
 #include "device/serialports.h"
 #include "dialogs/busscandialog.h"
 #include "widgets/led.h"
@@ -91,6 +92,7 @@ ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
     connect(m_scan, &QPushButton::clicked, this, [this] { openBusScan(); });
 
     connect(session, &DeviceSession::linkStateChanged, this, &ConnectionPage::updateState);
+    connect(session->health(), &LinkHealth::stateChanged, this, &ConnectionPage::updateState);
     connect(session, &DeviceSession::connected, this, &ConnectionPage::onConnected);
     connect(session, &DeviceSession::disconnected, this,
             [this] { setNote(false, [] { return tr("Disconnected."); }); });
@@ -505,9 +507,20 @@ QString ConnectionPage::statusText() const
 {
     const DeviceSession::LinkState state = session()->linkState();
     const QString where = session()->settings().describe();
-    if (state == DeviceSession::LinkState::Connected)
+    if (state == DeviceSession::LinkState::Connected) {
+        // "Connected" only once the controller answered: an open port proves nothing.
+        switch (session()->health()->state()) {
+        case LinkHealth::State::Answering:
+            break;
+        case LinkHealth::State::NotAnswering:
+            return tr("%1 is open, but the controller does not answer.").arg(where) +
+                   QLatin1Char(' ') + LinkHealth::likelyCauses();
+        default:
+            return tr("%1 is open; waiting for the controller to answer…").arg(where);
+        }
         return usesSimulator() ? tr("Connected to the built-in simulator (%1).").arg(where)
                                : tr("Connected to %1.").arg(where);
+    }
     if (state == DeviceSession::LinkState::Connecting)
         return tr("Connecting to %1…").arg(where);
     if (m_note)
@@ -527,10 +540,11 @@ void ConnectionPage::updateState()
     m_connect->setEnabled(idle);
     m_disconnect->setEnabled(!idle);
     m_scan->setEnabled(transport() != Transport::Simulator);
-    m_led->setState(state == DeviceSession::LinkState::Connected ? Led::State::On
-                    : idle                                       ? Led::State::Off
-                                                                 : Led::State::Unknown);
-    const bool problem = idle && m_noteIsProblem;
+    const LinkHealth::State health = session()->health()->state();
+    m_led->setState(health == LinkHealth::State::Answering ? Led::State::On
+                    : idle                                 ? Led::State::Off
+                                                           : Led::State::Unknown);
+    const bool problem = (idle && m_noteIsProblem) || health == LinkHealth::State::NotAnswering;
     if (problem) {
         const int size = m_status->fontMetrics().height();
         m_stateIcon->setPixmap(style()->standardIcon(QStyle::SP_MessageBoxWarning).pixmap(size));

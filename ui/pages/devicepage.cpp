@@ -235,6 +235,7 @@ void DevicePage::updateEnabled()
 void DevicePage::updateUnsaved()
 {
     m_unsavedRow->setHidden(!session()->parameters()->unsavedToFlash());
+    renderStatus(); // the "saved" line reads the same state
 }
 
 void DevicePage::setLinkEvent(LinkEvent event)
@@ -288,6 +289,9 @@ std::pair<DevicePage::Tone, QString> DevicePage::flashText() const
     case FlashEvent::Saving:
         return {Tone::Busy, tr("Saving to flash…")};
     case FlashEvent::Saved:
+        // One flash state: a write since the save makes it "not saved", whatever happened here.
+        if (session()->parameters()->unsavedToFlash())
+            return {Tone::Busy, QString()};
         return {Tone::Ok,
                 tr("Saved to flash: the controller keeps its settings after a power cycle.")};
     case FlashEvent::SaveFailed:

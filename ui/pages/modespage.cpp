@@ -207,6 +207,9 @@ void ModesPage::fitTable()
 
 std::optional<qint64> ModesPage::deviceMode() const
 {
+    // Editing a profile file (issue 18): the mode the file will hold.
+    if (session()->parameters()->isFile())
+        return session()->parameters()->shownValue(kModeKey);
     return session()->parameters()->deviceValue(kModeKey);
 }
 
@@ -227,6 +230,11 @@ void ModesPage::chooseMode(int mode)
 void ModesPage::confirmMode(int mode)
 {
     const Parameter *p = session()->map().find(kModeKey);
+    if (p && session()->parameters()->isFile()) { // a file's value: an edit, nothing is sent
+        session()->parameters()->edit(kModeKey, mode);
+        refresh();
+        return;
+    }
     if (!p || mode < 0 || mode >= kModeCount || !session()->isConnected() || deviceMode() == mode) {
         refresh();
         return;
@@ -281,7 +289,8 @@ void ModesPage::refresh()
             m_mode->setCurrentIndex(index);
         }
     }
-    m_mode->setEnabled(connected && device.has_value() && !m_confirmation);
+    m_mode->setEnabled((connected || session()->parameters()->isFile()) && device.has_value() &&
+                       !m_confirmation);
     describe();
     bool edited = session()->parameters()->entry(kTripsKey).edited.has_value();
     m_write->setEnabled(connected && edited);
@@ -291,9 +300,15 @@ void ModesPage::describe()
 {
     const std::optional<qint64> device = deviceMode();
     const int shown = shownMode();
-    m_current->setText(!device       ? tr("The controller's mode is not known yet.")
-                       : device == 0 ? tr("The controller runs normally.")
-                                     : tr("The controller is in special mode %1.").arg(*device));
+    if (session()->parameters()->isFile())
+        m_current->setText(!device       ? tr("The profile file does not set the mode.")
+                           : device == 0 ? tr("The profile sets the normal mode.")
+                                         : tr("The profile sets special mode %1.").arg(*device));
+    else
+        m_current->setText(!device ? tr("The controller's mode is not known yet.")
+                           : device == 0
+                               ? tr("The controller runs normally.")
+                               : tr("The controller is in special mode %1.").arg(*device));
     m_explanation->setText(shown >= 0 ? tr(kModes[shown].explanation) : QString());
     const bool ignoring =
         (shown >= 0 && kModes[shown].ignoresLimits) ||

@@ -2,10 +2,11 @@
 
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
+#include "device/motionjudge.h"
+#include "device/motionsupervisor.h"
 #include "i18n/translators.h"
 #include "language.h"
 #include "widgets/homingordereditor.h"
-#include "widgets/jogactivity.h"
 #include "widgets/jogkeys.h"
 #include "widgets/jogpanel.h"
 #include "widgets/led.h"
@@ -105,8 +106,9 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
         auto *p = new JogPanel(session, m_jog, n, content);
         panels->addWidget(p, (n - 1) / 2, (n - 1) % 2, Qt::AlignTop);
         m_panels << p;
-        if (p->speedField())
-            connect(p->speedField(), &ParameterField::rejected, this, &MotionPage::showBanner);
+        if (ParameterField *f = p->speedField())
+            connect(f, &ParameterField::rejected, this,
+                    [this, f] { showBannerOf([f] { return f->rejectionText(); }); });
     }
     rows->addLayout(panels);
 
@@ -141,6 +143,12 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
                     showBanner(text);
             });
     connect(m_jog, &JogController::stateChanged, this, &MotionPage::refresh);
+    // E-STOP: keys and buttons let go at once; a held key must be pressed again to jog.
+    connect(m_jog, &JogController::heldControlsReset, this, [this] {
+        m_keys->letGo();
+        for (JogPanel *p : std::as_const(m_panels))
+            p->letGo();
+    });
     connect(session, &DeviceSession::linkStateChanged, this, &MotionPage::refresh);
     connect(session->parameters(), &ParameterStore::editsChanged, this, &MotionPage::refresh);
     connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
@@ -149,15 +157,16 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
             refresh();
     });
     connect(session, &DeviceSession::commandFinished, this, [this](const QString &k, bool ok) {
-        if (!ok)
-            return;
-        if (k == QLatin1String("home_all"))
-            m_sequence->start(tr("Homing in order"));
-        else if (k == QLatin1String("return_to_zero"))
-            m_sequence->start(tr("Returning to data zero"));
-        else if (k == QLatin1String("zero_coordinates"))
-            m_sequenceDone = tr("Coordinates zeroed");
+        if (ok && k == QLatin1String("zero_coordinates"))
+            m_shown = Shown::Zeroed;
         refresh();
+    });
+    connect(session->motion(), &MotionSupervisor::changed, this, &MotionPage::refresh);
+    connect(session->motion(), &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
+        if (o.start.kind == MotionKind::HomeInOrder)
+            m_shown = Shown::HomeInOrder;
+        else if (o.start.kind == MotionKind::ReturnToZero)
+            m_shown = Shown::ReturnToZero;
     });
     retranslate();
 }
@@ -192,18 +201,6 @@ void MotionPage::buildHoming(QWidget *content)
     m_homingStatus->setWordWrap(true);
     layout->addWidget(m_homingStatus);
 
-    QStringList running;
-    for (int n = 1; n <= m_jog->motorCount(); ++n)
-        running << m_jog->motorKey(n, QStringLiteral("running"));
-    m_sequence = new JogActivity(session(), running, this);
-    connect(m_sequence, &JogActivity::changed, this, &MotionPage::refresh);
-    connect(m_sequence, &JogActivity::finished, this, [this](const QString &what) {
-        QStringList where;
-        for (JogPanel *p : std::as_const(m_panels))
-            where << tr("motor %1 at %2").arg(p->motor()).arg(p->positionText());
-        m_sequenceDone = tr("%1: done (%2)").arg(what, Translators::joinList(where));
-        refresh();
-    });
     connect(m_order, &HomingOrderEditor::rejected, this, &MotionPage::showBanner);
     connect(m_applyOrder, &QPushButton::clicked, this, [this] {
         if (session()->isConnected())
@@ -278,7 +275,15 @@ QString MotionPage::bannerText() const
 
 void MotionPage::showBanner(const QString &text)
 {
+    m_bannerSource = {};
     m_bannerText->setText(text);
+    m_banner->show();
+}
+
+void MotionPage::showBannerOf(std::function<QString()> text)
+{
+    m_bannerSource = std::move(text);
+    m_bannerText->setText(m_bannerSource());
     m_banner->show();
 }
 
@@ -287,26 +292,47 @@ void MotionPage::sessionCommand(const QString &key)
     if (!session()->isConnected())
         return;
     if (key == QLatin1String("home_all") || key == QLatin1String("return_to_zero"))
-        m_sequenceDone.clear();
+        m_shown = Shown::Nothing;
     session()->command(key);
 }
 
 QString MotionPage::homingStatus() const
 {
-    if (!m_sequence->isActive())
-        return m_sequenceDone;
-    QStringList motors;
-    for (int n : m_sequence->running())
-        motors << QString::number(n);
-    if (motors.isEmpty())
-        return tr("%1…").arg(m_sequence->what());
-    return tr("%1… motor %2 running").arg(m_sequence->what(), Translators::joinList(motors));
+    const MotionSupervisor *motion = session()->motion();
+    for (MotionKind kind : {MotionKind::HomeInOrder, MotionKind::ReturnToZero}) {
+        const auto active = motion->active(kind);
+        if (!active)
+            continue;
+        QStringList motors;
+        for (int n : motion->running(kind))
+            motors << QString::number(n);
+        const QString what = MotionJudge::name(*active);
+        if (motors.isEmpty())
+            return tr("%1…").arg(what);
+        return tr("%1… motor %2 running").arg(what, Translators::joinList(motors));
+    }
+    // Made from state each time, so a language switch retranslates it.
+    std::optional<MotionOutcome> last;
+    switch (m_shown) {
+    case Shown::Nothing:
+        return {};
+    case Shown::Zeroed:
+        return tr("Coordinates zeroed");
+    case Shown::HomeInOrder:
+        last = motion->lastOutcome(MotionKind::HomeInOrder);
+        break;
+    case Shown::ReturnToZero:
+        last = motion->lastOutcome(MotionKind::ReturnToZero);
+        break;
+    }
+    return last ? motion->text(*last) : QString();
 }
 
 void MotionPage::refresh()
 {
     const bool connected = session()->isConnected();
-    const bool sequence = m_sequence->isActive();
+    const bool sequence = session()->motion()->active(MotionKind::HomeInOrder).has_value() ||
+                          session()->motion()->active(MotionKind::ReturnToZero).has_value();
     const bool jogging = m_jog->isBusy();
     const bool orderEdited = m_order->isEdited();
     m_applyOrder->setEnabled(connected && orderEdited);
@@ -322,6 +348,11 @@ void MotionPage::refresh()
     else
         m_orderNote->setText(QStringLiteral("—"));
     m_homeAll->setToolTip(m_orderNote->text());
+    // Said before, not found out after: "return to data zero" into a limit already ON.
+    const QString warning = session()->motion()->startWarning(QStringLiteral("return_to_zero"));
+    m_returnToZero->setToolTip(warning.isEmpty() ? tr("Drive every idle motor back to position 0")
+                                                 : tr("Drive every idle motor back to position 0") +
+                                                       QStringLiteral("\n⚠ ") + warning);
     m_homingStatus->setText(homingStatus());
     m_homingStatus->setVisible(!m_homingStatus->text().isEmpty());
 
@@ -361,6 +392,13 @@ bool MotionPage::event(QEvent *event)
 
 void MotionPage::retranslate()
 {
+    // A banner made from state is made again; one kept as text (a jog controller warning) was
+    // written in the old language: the messages dock keeps it, the page lets it go.
+    if (m_bannerSource) {
+        m_bannerText->setText(m_bannerSource());
+        m_banner->setHidden(m_banner->isHidden() || m_bannerText->text().isEmpty());
+    } else if (!m_bannerText->text().isEmpty())
+        m_banner->hide();
     m_bannerClear->setText(tr("&Clear"));
     m_bannerClear->setToolTip(tr("Hide this note; the messages dock keeps it"));
     m_keyboard->setText(tr("&Keyboard jogging"));
@@ -378,7 +416,6 @@ void MotionPage::retranslate()
     m_zero->setText(tr("&Zero coordinates"));
     m_zero->setToolTip(tr("Make the present positions of all motors 0; nothing moves"));
     m_returnToZero->setText(tr("Re&turn to data zero"));
-    m_returnToZero->setToolTip(tr("Drive every idle motor back to position 0"));
     m_outputsBox->setTitle(tr("Outputs"));
     const QString lang = Language::instance().current();
     for (int i = 0; i < m_outputNames.size(); ++i) {

@@ -4,6 +4,8 @@
 
 #include <QHash>
 
+#include <functional>
+
 class QCheckBox;
 class QFrame;
 class QGroupBox;
@@ -13,7 +15,6 @@ class QPushButton;
 namespace stepcom {
 
 class HomingOrderEditor;
-class JogActivity;
 class JogController;
 class JogKeys;
 class JogPanel;
@@ -58,6 +59,8 @@ private:
     void buildHoming(QWidget *content);
     void buildOutputs(QWidget *content);
     void showBanner(const QString &text);
+    // A banner made from state each time it is shown, so a language switch retranslates it.
+    void showBannerOf(std::function<QString()> text);
     void setKeyboard(bool on);
     void sessionCommand(const QString &key);
     void refresh();
@@ -68,6 +71,7 @@ private:
     QFrame *m_banner;
     QLabel *m_bannerIcon;
     QLabel *m_bannerText;
+    std::function<QString()> m_bannerSource; // set: the banner's text is made from state
     QPushButton *m_bannerClear;
     QCheckBox *m_keyboard;
     QLabel *m_keyboardIndicator;
@@ -80,8 +84,9 @@ private:
     QPushButton *m_zero = nullptr;
     QPushButton *m_returnToZero = nullptr;
     QLabel *m_homingStatus = nullptr;
-    JogActivity *m_sequence = nullptr;
-    QString m_sequenceDone;
+    // What the homing box reports while idle: the last sequence's outcome, or the zeroing.
+    enum class Shown { Nothing, HomeInOrder, ReturnToZero, Zeroed };
+    Shown m_shown = Shown::Nothing;
     QGroupBox *m_outputsBox = nullptr;
     QHash<QString, QPushButton *> m_outputButtons;
     QList<Led *> m_outputLeds;

@@ -1,9 +1,11 @@
 #include "widgets/jogpanel.h"
 
 #include "device/devicesession.h"
+#include "device/motionjudge.h"
+#include "device/motionsupervisor.h"
+#include "device/referencetracker.h"
 #include "i18n/translators.h"
 #include "language.h"
-#include "widgets/jogactivity.h"
 #include "widgets/jogbutton.h"
 #include "widgets/led.h"
 #include "widgets/parameterfield.h"
@@ -105,10 +107,11 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     grid->addWidget(m_homeLabel, 3, 0);
     grid->addWidget(m_homeInfo, 3, 1);
     grid->addWidget(m_home, 3, 2);
+    m_reference = new QLabel(this);
+    m_reference->setWordWrap(true);
+    grid->addWidget(m_reference, 4, 1, 1, 2);
     grid->setColumnStretch(1, 1);
     column->addLayout(grid);
-
-    m_activity = new JogActivity(session, {key(QStringLiteral("running"))}, this);
 
     connect(m_reverse, &JogButton::jogPressed, this, [this] {
         if (!m_jog->press(m_motor, JogController::Direction::Reverse))
@@ -122,8 +125,10 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     connect(m_forward, &JogButton::jogReleased, this, [this] { m_jog->release(m_motor); });
     // On press, not click: a stop must not wait for the button to come up, nor be lost by
     // sliding off it.
-    connect(m_stop, &QPushButton::pressed, this,
-            [this] { m_jog->stop(m_motor, tr("stop button")); });
+    connect(m_stop, &QPushButton::pressed, this, [this] {
+        m_jog->stop(m_motor, tr("stop button"));
+        letGo();
+    });
     connect(m_applySpeed, &QPushButton::clicked, this, &JogPanel::applySpeed);
     connect(m_move, &QPushButton::clicked, this, [this] { command(QStringLiteral("move")); });
     connect(m_home, &QPushButton::clicked, this, [this] { command(QStringLiteral("home")); });
@@ -134,26 +139,18 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     });
     connect(session->parameters(), &ParameterStore::editsChanged, this, &JogPanel::refresh);
     connect(session, &DeviceSession::linkStateChanged, this, &JogPanel::refresh);
-    connect(session, &DeviceSession::commandFinished, this, [this](const QString &k, bool ok) {
-        if (!ok)
-            return;
-        if (k == key(QStringLiteral("move")))
-            m_activity->start(tr("Single move"));
-        else if (k == key(QStringLiteral("home")))
-            m_activity->start(tr("Homing"));
+    MotionSupervisor *motion = session->motion();
+    connect(motion, &MotionSupervisor::changed, this, &JogPanel::refresh);
+    connect(motion, &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
+        if (o.axis(m_motor))
+            m_hideOutcome = false;
     });
-    connect(m_activity, &JogActivity::changed, this, &JogPanel::refresh);
-    connect(m_activity, &JogActivity::finished, this, [this](const QString &what) {
-        m_done = tr("%1 done").arg(what);
-        refresh();
-    });
+    connect(motion->references(), &ReferenceTracker::changed, this, &JogPanel::refresh);
     connect(jog, &JogController::stateChanged, this, [this](int n) {
         if (n != m_motor)
             return;
-        if (m_jog->state(n) == JogController::State::Jogging) {
-            m_activity->clear();
-            m_done.clear();
-        }
+        if (m_jog->state(n) == JogController::State::Jogging)
+            m_hideOutcome = true;
         refresh();
     });
     retranslate();
@@ -179,6 +176,13 @@ QList<QWidget *> JogPanel::tabChain() const
     return chain;
 }
 
+void JogPanel::letGo()
+{
+    m_reverse->letGo();
+    m_forward->letGo();
+    refresh();
+}
+
 void JogPanel::applySpeed()
 {
     const Parameter *p = param(QStringLiteral("speed"));
@@ -191,14 +195,14 @@ void JogPanel::applySpeed()
 void JogPanel::command(const QString &localKey)
 {
     if (const QString k = key(localKey); !k.isEmpty() && m_session->isConnected()) {
-        m_done.clear();
         m_session->command(k);
     }
 }
 
 bool JogPanel::motorBusy() const
 {
-    return m_jog->state(m_motor) != JogController::State::Idle || m_activity->isActive() ||
+    return m_jog->state(m_motor) != JogController::State::Idle ||
+           m_session->motion()->active(m_motor).has_value() ||
            m_session->parameters()->deviceValue(key(QStringLiteral("running"))).value_or(0) != 0;
 }
 
@@ -274,14 +278,22 @@ QString JogPanel::statusText() const
     case State::Idle:
         break;
     }
-    if (m_activity->isActive())
-        return running.value_or(0) ? tr("%1… running").arg(m_activity->what())
-                                   : tr("%1…").arg(m_activity->what());
+    const MotionSupervisor *motion = m_session->motion();
+    if (const auto active = motion->active(m_motor))
+        return running.value_or(0) ? tr("%1… running").arg(MotionJudge::name(*active))
+                                   : tr("%1…").arg(MotionJudge::name(*active));
     if (!running)
         return tr("Unknown");
     if (*running)
         return tr("Running");
-    return m_done.isEmpty() ? tr("Idle") : tr("Idle — %1").arg(m_done);
+    // The last judged outcome, in words made now (a language switch retranslates it).
+    const auto last = motion->lastOutcome(m_motor);
+    return last && !m_hideOutcome ? tr("Idle — %1").arg(motion->text(*last)) : tr("Idle");
+}
+
+QString JogPanel::referenceText() const
+{
+    return m_session->motion()->references()->text(m_motor);
 }
 
 void JogPanel::refresh()
@@ -316,7 +328,10 @@ void JogPanel::refresh()
     m_speedNote->setVisible(!m_speedNote->text().isEmpty());
 
     const QString blocker = moveBlocker();
-    m_moveInfo->setText(moveText());
+    // Said before the move, not found out after it: a limit already ON in its direction.
+    const QString warning = m_session->motion()->startWarning(key(QStringLiteral("move")));
+    m_moveInfo->setText(warning.isEmpty() ? moveText()
+                                          : QStringLiteral("%1\n⚠ %2").arg(moveText(), warning));
     m_move->setEnabled(blocker.isEmpty() && !key(QStringLiteral("move")).isEmpty());
     m_move->setToolTip(blocker.isEmpty()
                            ? tr("Move once by the distance shown, in the direction and at the "
@@ -336,6 +351,7 @@ void JogPanel::refresh()
         m_homeInfo->setText(
             tr("Reverse until %1, then position 0.").arg(home->displayRaw(*input, lang)));
     m_home->setEnabled(connected && !motorBusy() && !key(QStringLiteral("home")).isEmpty());
+    m_reference->setText(tr("Reference: %1").arg(referenceText()));
 }
 
 void JogPanel::changeEvent(QEvent *event)

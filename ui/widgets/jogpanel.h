@@ -10,7 +10,6 @@ class QPushButton;
 namespace stepcom {
 
 class DeviceSession;
-class JogActivity;
 class JogButton;
 class Led;
 class ParameterField;
@@ -33,7 +32,8 @@ public:
     QPushButton *moveButton() const { return m_move; }
     QPushButton *homeButton() const { return m_home; }
     Led *runningLed() const { return m_led; }
-    JogActivity *activity() const { return m_activity; }
+    // "referenced" / "not referenced (E-STOP)": homed onto the home input since the last loss.
+    QString referenceText() const;
     QString statusText() const;
     QString positionText() const;
     QString moveText() const;
@@ -41,6 +41,8 @@ public:
     // Focusable widgets in the order Tab visits them.
     QList<QWidget *> tabChain() const;
     void retranslate();
+    // Release the hold buttons (after an E-STOP or a stop): nothing stays pressed.
+    void letGo();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -73,11 +75,11 @@ private:
     QLabel *m_moveLabel;
     QLabel *m_moveInfo;
     QPushButton *m_move;
+    QLabel *m_reference;
     QLabel *m_homeLabel;
     QLabel *m_homeInfo;
     QPushButton *m_home;
-    JogActivity *m_activity;
-    QString m_done; // what finished last ("Homing done"), shown while idle
+    bool m_hideOutcome = false; // a jog since the last outcome: it no longer describes the axis
 };
 
 } // namespace stepcom

@@ -1,6 +1,7 @@
 #include "widgets/linkstatus.h"
 
 #include "device/devicesession.h"
+#include "device/linkhealth.h"
 
 #include <QDateTime>
 #include <QEvent>
@@ -27,6 +28,7 @@ LinkStatus::LinkStatus(DeviceSession *session, QWidget *parent)
     m_unsaved->setFont(bold);
     m_state->setFont(bold);
     connect(session, &DeviceSession::linkStateChanged, this, &LinkStatus::refresh);
+    connect(session->health(), &LinkHealth::stateChanged, this, &LinkStatus::refresh);
     connect(session->parameters(), &ParameterStore::unsavedChanged, this, &LinkStatus::refresh);
     connect(&m_timer, &QTimer::timeout, this, &LinkStatus::refresh);
     m_timer.start(1000);
@@ -47,19 +49,35 @@ QString LinkStatus::stateText() const
 
 void LinkStatus::refresh()
 {
-    const DeviceSession::LinkState state = m_session->linkState();
-    switch (state) {
-    case DeviceSession::LinkState::Connected:
+    // Green "Connected" only once the controller answered; amber while it does not.
+    const LinkHealth *health = m_session->health();
+    QColor colour = palette().color(QPalette::WindowText);
+    switch (health->state()) {
+    case LinkHealth::State::Answering:
         m_state->setText(m_session->isSimulator() ? tr("Connected (simulator)") : tr("Connected"));
+        colour = QColor(0, 140, 0);
         break;
-    case DeviceSession::LinkState::Connecting:
+    case LinkHealth::State::NotAnswering:
+        m_state->setText(tr("Not answering"));
+        colour = QColor(200, 120, 0);
+        break;
+    case LinkHealth::State::Asking:
+        m_state->setText(tr("Port open, waiting for an answer…"));
+        break;
+    case LinkHealth::State::Opening:
         m_state->setText(tr("Connecting…"));
         break;
-    case DeviceSession::LinkState::Disconnected:
+    case LinkHealth::State::Closed:
         m_state->setText(tr("Disconnected"));
         break;
     }
-    m_where->setText(state == DeviceSession::LinkState::Disconnected
+    QPalette pal = m_state->palette();
+    pal.setColor(QPalette::WindowText, colour);
+    m_state->setPalette(pal);
+    m_state->setToolTip(health->state() == LinkHealth::State::NotAnswering
+                            ? LinkHealth::likelyCauses()
+                            : QString());
+    m_where->setText(m_session->linkState() == DeviceSession::LinkState::Disconnected
                          ? QString()
                          : m_session->settings().describe());
     const LinkStats &s = m_session->linkStats();
@@ -72,6 +90,7 @@ void LinkStatus::refresh()
                                                    .arg(m_perSecond, 0, 'f', 1)
                                                    .arg(m_session->statusRate(), 0, 'f', 1)
                                              : QString());
+    // Counted from this connection's start (the session resets them on every connect).
     m_errors->setText(tr("errors: %1 (timeouts %2, CRC %3, exceptions %4)")
                           .arg(s.errors())
                           .arg(s.timeouts)

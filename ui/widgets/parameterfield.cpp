@@ -8,6 +8,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QVBoxLayout>
 
 namespace stepcom {
 
@@ -27,8 +28,16 @@ ParameterField::ParameterField(ParameterStore *store, const Parameter &parameter
     , m_store(store)
     , m_parameter(parameter)
 {
-    auto *layout = new QHBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
+    auto *column = new QVBoxLayout(this);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->setSpacing(0);
+    auto *layout = new QHBoxLayout;
+    column->addLayout(layout);
+    m_reason = new QLabel(this);
+    m_reason->setWordWrap(true);
+    m_reason->setObjectName(QStringLiteral("rejection"));
+    m_reason->hide();
+    column->addWidget(m_reason);
     if (!parameter.values.isEmpty()) {
         m_combo = new QComboBox(this);
         for (const EnumValue &v : parameter.values)
@@ -48,6 +57,15 @@ ParameterField::ParameterField(ParameterStore *store, const Parameter &parameter
             m_line->fontMetrics().horizontalAdvance(widest + QStringLiteral("00")));
         connect(m_line, &QLineEdit::editingFinished, this, &ParameterField::commitText);
         connect(m_line, &QLineEdit::textEdited, this, &ParameterField::typing);
+        connect(m_line, &QLineEdit::textEdited, this, [this](const QString &text) {
+            // The red goes as soon as what is typed is allowed, or back to the held value.
+            if (m_problem == ValueCheck::Problem::None)
+                return;
+            const auto shown = m_store->shownValue(m_parameter.key);
+            if (ValueCheck::check(m_parameter, text, nullptr) ||
+                (shown && text == m_parameter.formatRaw(*shown)))
+                clearRejection();
+        });
         layout->addWidget(m_line, 1);
         m_unit = new QLabel(parameter.unit, this);
         m_unit->setMinimumWidth(m_unit->fontMetrics().horizontalAdvance(QStringLiteral("rpm__")));
@@ -60,8 +78,23 @@ ParameterField::ParameterField(ParameterStore *store, const Parameter &parameter
     layout->addWidget(m_state);
     setFocusProxy(editor());
     connect(m_store, &ParameterStore::valueChanged, this, [this](const QString &key) {
-        if (key == m_parameter.key)
-            refresh();
+        if (key != m_parameter.key)
+            return;
+        // A verified write, a read, an apply or a lost link: the refused text is stale now.
+        if (m_problem != ValueCheck::Problem::None) {
+            clearRejection();
+            if (m_line)
+                m_line->setModified(false);
+        }
+        refresh();
+    });
+    connect(m_store, &ParameterStore::reverted, this, [this] {
+        if (m_problem == ValueCheck::Problem::None)
+            return;
+        clearRejection();
+        if (m_line)
+            m_line->setModified(false);
+        refresh();
     });
     retranslate();
 }
@@ -98,7 +131,8 @@ void ParameterField::refresh()
         if (shown)
             index = m_combo->findData(QVariant::fromValue(*shown));
         m_combo->setCurrentIndex(index);
-    } else if (!m_line->hasFocus() || !m_line->isModified()) {
+    } else if (m_problem == ValueCheck::Problem::None &&
+               (!m_line->hasFocus() || !m_line->isModified())) {
         m_line->setText(shown ? m_parameter.formatRaw(*shown) : QString());
         m_line->setModified(false);
     }
@@ -108,13 +142,10 @@ void ParameterField::refresh()
 void ParameterField::enterText(const QString &text)
 {
     if (m_combo) {
-        QString error;
-        const auto raw = m_parameter.parse(text, &error);
+        const auto raw = m_parameter.parse(text, nullptr);
         const int index = raw ? m_combo->findData(QVariant::fromValue(*raw)) : -1;
         if (index < 0) {
-            m_lastError = error;
-            Q_EMIT rejected(error);
-            applyStateLook();
+            reject(ValueCheck::Problem::NotAChoice, text);
             return;
         }
         m_combo->setCurrentIndex(index);
@@ -144,16 +175,17 @@ void ParameterField::commitText()
 {
     if (!m_line->isModified())
         return;
-    m_line->setModified(false);
-    QString error;
-    const auto raw = m_parameter.parse(m_line->text(), &error);
-    m_lastError.clear();
-    if (raw)
-        error = m_store->edit(m_parameter.key, *raw);
-    if (!error.isEmpty()) {
-        m_lastError = error;
-        Q_EMIT rejected(error);
+    ValueCheck::Problem problem = ValueCheck::Problem::None;
+    const QString typed = m_line->text();
+    const auto raw = ValueCheck::check(m_parameter, typed, &problem);
+    if (!raw) {
+        reject(problem, typed); // the typed text stays for correction
+        return;
     }
+    m_line->setModified(false);
+    clearRejection();
+    if (const QString error = m_store->edit(m_parameter.key, *raw); !error.isEmpty())
+        reject(ValueCheck::Problem::OutOfRange, typed);
     refresh();
 }
 
@@ -161,13 +193,32 @@ void ParameterField::commitIndex(int index)
 {
     if (index < 0)
         return;
-    m_lastError.clear();
-    const QString error = m_store->edit(m_parameter.key, m_combo->itemData(index).toLongLong());
-    if (!error.isEmpty()) {
-        m_lastError = error;
-        Q_EMIT rejected(error);
-    }
+    clearRejection();
+    if (!m_store->edit(m_parameter.key, m_combo->itemData(index).toLongLong()).isEmpty())
+        reject(ValueCheck::Problem::NotAChoice, m_combo->itemText(index));
     refresh();
+}
+
+QString ParameterField::rejectionText() const
+{
+    return ValueCheck::text(m_parameter, m_problem, m_rejected);
+}
+
+void ParameterField::reject(ValueCheck::Problem problem, const QString &typed)
+{
+    m_problem = problem;
+    m_rejected = typed;
+    Q_EMIT rejected(rejectionText());
+    applyStateLook();
+}
+
+void ParameterField::clearRejection()
+{
+    if (m_problem == ValueCheck::Problem::None)
+        return;
+    m_problem = ValueCheck::Problem::None;
+    m_rejected.clear();
+    applyStateLook();
 }
 
 void ParameterField::applyStateLook()
@@ -199,10 +250,25 @@ void ParameterField::applyStateLook()
         stateTip = tr("Write failed: %1").arg(e.error);
         break;
     }
-    if (!m_lastError.isEmpty()) {
+    // Editing a profile file (issue 18): the values are the file's, nothing reaches a controller.
+    if (m_store->isFile() && e.state != ParameterStore::State::WriteFailed)
+        stateTip =
+            e.state == ParameterStore::State::Unknown  ? tr("The profile file lacks this value")
+            : e.state == ParameterStore::State::InSync ? tr("The profile file holds this value")
+            : e.device ? tr("Edited, not saved yet (the file holds %1)")
+                             .arg(m_parameter.displayRaw(*e.device, lang))
+                       : tr("Edited, not saved yet");
+    const QString rejection = rejectionText();
+    if (!rejection.isEmpty()) {
         tint = QColor(230, 40, 40);
-        stateTip = m_lastError;
+        stateTip = rejection;
+        stateText = QStringLiteral("✗");
     }
+    m_reason->setText(rejection);
+    m_reason->setVisible(!rejection.isEmpty());
+    QPalette reasonPalette = m_reason->palette();
+    reasonPalette.setColor(QPalette::WindowText, QColor(200, 30, 30));
+    m_reason->setPalette(reasonPalette);
     m_state->setText(stateText);
     m_state->setToolTip(stateTip);
     QPalette pal = editor()->parentWidget()->palette();

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "device/valuecheck.h"
+
 #include <QWidget>
 
 #include <optional>
@@ -31,6 +33,9 @@ public:
     std::optional<qint64> typedRaw() const;
     // The text being typed differs from what the store holds (Enter or leaving holds it).
     bool isTyping() const;
+    // Why the value typed last was not taken, in the window's language; empty when it was.
+    QString rejectionText() const;
+    QLabel *reasonLabel() const { return m_reason; }
     void retranslate();
 
 Q_SIGNALS:
@@ -46,6 +51,9 @@ private:
     void commitText();
     void commitIndex(int index);
     void applyStateLook();
+    void reject(ValueCheck::Problem problem, const QString &typed);
+    // The value is valid again, reverted, or replaced by what the controller holds.
+    void clearRejection();
 
     ParameterStore *m_store;
     const Parameter &m_parameter;
@@ -53,7 +61,9 @@ private:
     QComboBox *m_combo = nullptr;
     QLabel *m_unit = nullptr;
     QLabel *m_state = nullptr;
-    QString m_lastError;
+    QLabel *m_reason = nullptr; // the rejection, under the field, not only in a tooltip
+    ValueCheck::Problem m_problem = ValueCheck::Problem::None;
+    QString m_rejected; // the text that was refused; it stays in the editor for correction
 };
 
 } // namespace stepcom

@@ -1,6 +1,8 @@
 #include "widgets/patheditor.h"
 
 #include "device/devicesession.h"
+#include "device/motionjudge.h"
+#include "device/motionsupervisor.h"
 #include "dialogs/writechangesdialog.h"
 #include "widgets/parameterfield.h"
 #include "widgets/parameterform.h"
@@ -116,6 +118,11 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
     m_reason->setObjectName(QStringLiteral("startReason"));
     m_reason->setWordWrap(true);
     runLayout->addWidget(m_reason);
+    m_outcome = new QLabel(m_runBox);
+    m_outcome->setObjectName(QStringLiteral("outcome"));
+    m_outcome->setWordWrap(true);
+    m_outcome->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    runLayout->addWidget(m_outcome);
     layout->addWidget(m_runBox);
     layout->addStretch(1);
 
@@ -129,6 +136,11 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
     connect(session, &DeviceSession::linkStateChanged, this, &PathEditor::update);
     connect(session, &DeviceSession::connected, this, &PathEditor::update);
     connect(session, &DeviceSession::disconnected, this, &PathEditor::update);
+    connect(session->motion(), &MotionSupervisor::changed, this, &PathEditor::update);
+    connect(session->motion(), &MotionSupervisor::emergencyStopSent, this, [this] {
+        m_startSent.stop(); // nothing waits for a start any more
+        update();
+    });
     connect(m_write, &QPushButton::clicked, this, &PathEditor::openWriteDialog);
     m_startSent.setSingleShot(true);
     m_startSent.setInterval(1500);
@@ -331,8 +343,22 @@ void PathEditor::update()
         m_startSent.stop(); // the poll saw it start
     const QString reason = startBlockedReason();
     m_start->setEnabled(reason.isEmpty());
-    m_reason->setText(reason.isEmpty() ? tr("Ready: Start runs the path shown, as written.")
-                                       : reason);
+    // Said before Start, not found out after it: an axis driven into a limit already ON.
+    const QString warning =
+        reason.isEmpty() ? m_session->motion()->startWarning(m_prefix + QStringLiteral("start"))
+                         : QString();
+    m_reason->setText(!reason.isEmpty()   ? reason
+                      : warning.isEmpty() ? tr("Ready: Start runs the path shown, as written.")
+                                          : tr("⚠ Start is possible, but: %1").arg(warning));
+    const MotionKind kind = m_kind == Kind::Arc ? MotionKind::Arc : MotionKind::Line;
+    const MotionSupervisor *motion = m_session->motion();
+    if (const auto active = motion->active(kind))
+        m_outcome->setText(tr("%1: running…").arg(MotionJudge::name(*active)));
+    else if (const auto last = motion->lastOutcome(kind))
+        m_outcome->setText(tr("Last run: %1").arg(motion->text(*last)));
+    else
+        m_outcome->clear();
+    m_outcome->setVisible(!m_outcome->text().isEmpty());
     bool edited = false;
     for (const QString &k : std::as_const(m_keys))
         edited = edited || m_session->parameters()->entry(k).edited.has_value();

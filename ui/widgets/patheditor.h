@@ -44,6 +44,8 @@ public:
     QPushButton *stopButton() const { return m_stop; }
     QPushButton *writeButton() const { return m_write; }
     QLabel *startReason() const { return m_reason; }
+    // How the last run of this path ended (judged from the controller), or that it runs.
+    QLabel *outcomeLabel() const { return m_outcome; }
     WriteChangesDialog *writeDialog() const { return m_writeFlow->dialog(); }
 
     // The geometry of what the fields show now, typing included.
@@ -94,6 +96,7 @@ private:
     QPushButton *m_start;
     QPushButton *m_stop;
     QLabel *m_reason;
+    QLabel *m_outcome;
     WriteFlow *m_writeFlow = nullptr;
     QTimer m_startSent; // a start was sent and the poll has not seen it yet
 };

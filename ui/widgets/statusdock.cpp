@@ -1,6 +1,8 @@
 #include "widgets/statusdock.h"
 
 #include "device/devicesession.h"
+#include "device/motionsupervisor.h"
+#include "device/referencetracker.h"
 #include "language.h"
 #include "widgets/led.h"
 
@@ -80,6 +82,10 @@ StatusDock::StatusDock(DeviceSession *session, QWidget *parent)
         auto *state = new QLabel(box);
         grid->addWidget(led, 1, 0);
         grid->addWidget(state, 1, 1);
+        auto *reference = new QLabel(box);
+        reference->setWordWrap(true);
+        grid->addWidget(reference, 2, 0, 1, 3);
+        m_references << reference;
         grid->setColumnStretch(2, 1);
         rows->addWidget(box);
         m_motorBoxes << box;
@@ -160,6 +166,8 @@ StatusDock::StatusDock(DeviceSession *session, QWidget *parent)
             scheduleRefresh();
     });
     connect(session, &DeviceSession::linkStateChanged, this, &StatusDock::scheduleRefresh);
+    connect(session->motion()->references(), &ReferenceTracker::changed, this,
+            &StatusDock::scheduleRefresh);
     connect(&m_rateTimer, &QTimer::timeout, this, &StatusDock::refreshRate);
     m_rateTimer.start(1000);
     retranslate();
@@ -195,6 +203,11 @@ void StatusDock::scheduleRefresh()
         m_refresh.start();
 }
 
+QString StatusDock::referenceText(int motor) const
+{
+    return m_session->motion()->references()->text(motor);
+}
+
 void StatusDock::refresh()
 {
     const ParameterStore *store = m_session->parameters();
@@ -209,6 +222,7 @@ void StatusDock::refresh()
         const auto running =
             m_runningKeys.at(m).isEmpty() ? std::nullopt : store->deviceValue(m_runningKeys.at(m));
         m_runningLeds.at(m)->setState(lampState(running));
+        m_references.at(m)->setText(referenceText(m + 1));
         m_running.at(m)->setText(!running ? tr("unknown")
                                           : (*running ? tr("Running") : tr("Stopped")));
         m_running.at(m)->setEnabled(running.has_value());

@@ -28,6 +28,8 @@ public:
     int outputCount() const { return int(m_outputLeds.size()); }
     QString positionText(int motor) const;
     QString runningText(int motor) const;
+    // "referenced" / "not referenced (E-STOP)" for the motor.
+    QString referenceText(int motor) const;
     Led *runningLed(int motor) const { return m_runningLeds.value(motor - 1); }
     Led *inputLed(int n) const { return m_inputLeds.value(n - 1); }
     Led *outputLed(int n) const { return m_outputLeds.value(n - 1); }
@@ -53,6 +55,7 @@ private:
     QList<QLabel *> m_positions;
     QList<Led *> m_runningLeds;
     QList<QLabel *> m_running;
+    QList<QLabel *> m_references;
     QGroupBox *m_ioBox;
     QLabel *m_inputsCaption;
     QLabel *m_outputsCaption;

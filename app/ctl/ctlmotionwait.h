@@ -1,0 +1,51 @@
+#pragma once
+
+#include "device/motionoutcome.h"
+
+#include <QObject>
+#include <QTextStream>
+#include <QTimer>
+
+#include <memory>
+
+namespace stepcom {
+
+class DeviceSession;
+class MotionWatch;
+struct Parameter;
+
+// `stepcomctl command NAME --wait` (a row of the command table), over stepcomctl's one-shot
+// session: reads what the controller holds, sends the motion command,
+// reads the positions, running flags and inputs until the axes are idle, and prints the
+// outcome in the window's words (MotionJudge), or as JSON. Exit 0 only when "done" or
+// "referenced"; 1 when it stopped elsewhere, was interrupted or the link was lost.
+class CtlMotionWait : public QObject
+{
+    Q_OBJECT
+public:
+    CtlMotionWait(DeviceSession *session, const Parameter &command, bool json,
+                  QObject *parent = nullptr);
+    ~CtlMotionWait() override;
+    void start();
+
+Q_SIGNALS:
+    void finished(int exitCode);
+
+private:
+    void sample();
+    void conclude(MotionCause cause);
+    void fail(const QString &message);
+
+    DeviceSession *m_session;
+    const Parameter &m_command;
+    bool m_json;
+    StatusValues m_values;
+    std::unique_ptr<MotionWatch> m_watch;
+    QTimer m_timer;
+    int m_failedReads = 0;
+    bool m_done = false;
+    QTextStream m_out;
+    QTextStream m_err;
+};
+
+} // namespace stepcom

@@ -1,0 +1,75 @@
+#include "device/writereview.h"
+
+#include "device/parameterstore.h"
+#include "device/wiringcheck.h"
+#include "motion/interpolationgeometry.h"
+#include "motion/pathsetup.h"
+
+namespace stepcom {
+
+QStringList WriteReview::problems(const ParameterStore &store, const QList<ParameterWrite> &writes)
+{
+    QHash<QString, qint64> after;
+    for (const ParameterWrite &w : writes)
+        after.insert(w.parameter->key, w.raw);
+    const auto raw = [&](const QString &key) -> std::optional<qint64> {
+        if (after.contains(key))
+            return after.value(key);
+        return store.deviceValue(key);
+    };
+    const auto touches = [&](const QString &prefix) {
+        return std::any_of(after.keyBegin(), after.keyEnd(),
+                           [&](const QString &k) { return k.startsWith(prefix); });
+    };
+    // A geometry is judged only when every point it needs is known (core/motion reads the
+    // registers; it counts an unknown value as 0).
+    const auto known = [&](const QString &prefix, std::initializer_list<const char *> points) {
+        return std::all_of(points.begin(), points.end(), [&](const char *name) {
+            const QString base = prefix + QLatin1String(name);
+            return raw(base + QStringLiteral("_x")) && raw(base + QStringLiteral("_y"));
+        });
+    };
+
+    QStringList problems;
+    const RegisterMap &map = store.map();
+    if (touches(QStringLiteral("arc."))) {
+        const interpolation::ArcSetup arc = interpolation::arcSetup(map, raw);
+        const char *third = arc.mode == interpolation::ArcMode::Centre ? "center" : "middle";
+        const interpolation::Geometry g = interpolation::arc(arc);
+        if (known(QStringLiteral("arc."), {"start", "end", third}) && !g.valid)
+            problems << tr("Arc: %1").arg(g.error);
+    }
+    if (touches(QStringLiteral("line."))) {
+        const interpolation::LineSetup line = interpolation::lineSetup(map, raw);
+        const interpolation::Geometry g = interpolation::line(line.start, line.end);
+        if (known(QStringLiteral("line."), {"start", "end"}) && !g.valid)
+            problems << tr("Line: %1").arg(g.error);
+    }
+    const bool wiring = std::any_of(after.keyBegin(), after.keyEnd(), [](const QString &k) {
+        return k.endsWith(QLatin1String(".limit_positive")) ||
+               k.endsWith(QLatin1String(".limit_negative")) ||
+               k.endsWith(QLatin1String(".home_input")) || k == QLatin1String("mode.system");
+    });
+    if (wiring) {
+        QList<MotorWiring> motors;
+        for (int n = 1; n <= map.blockCount(QStringLiteral("motor")); ++n) {
+            const auto input = [&](const char *local) -> std::optional<int> {
+                const Parameter *p =
+                    map.blockParameter(QStringLiteral("motor"), n, QLatin1String(local));
+                const auto r = p ? raw(p->key) : std::nullopt;
+                return r ? std::optional<int>(int(*r)) : std::nullopt;
+            };
+            motors.append(
+                {n, input("limit_positive"), input("limit_negative"), input("home_input")});
+        }
+        const auto mode = raw(QStringLiteral("mode.system"));
+        for (const WiringWarning &w :
+             checkWiring(motors, mode ? std::optional<int>(int(*mode)) : std::nullopt)) {
+            if (w.severity != WiringWarning::Severity::Info)
+                problems << w.message;
+        }
+    }
+    return problems;
+}
+
+} // namespace stepcom
