@@ -37,10 +37,14 @@
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
@@ -145,7 +149,17 @@ MainWindow::~MainWindow() = default;
 void MainWindow::addPage(Page *page)
 {
     m_pages << page;
-    m_stack->addWidget(page);
+    // Every page scrolls up and down when the screen is low (1024×600), never sideways: the
+    // scroll area is at least as wide as the page needs (kept so in eventFilter()).
+    auto *scroll = new QScrollArea(m_stack);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(page);
+    scroll->setMinimumWidth(page->minimumSizeHint().width() +
+                            scroll->verticalScrollBar()->sizeHint().width());
+    page->installEventFilter(this);
+    m_stack->addWidget(scroll);
     m_sidebar->addItem(page->title());
 }
 
@@ -161,7 +175,8 @@ QMessageBox *MainWindow::closeQuestion() const
 
 Page *MainWindow::currentPage() const
 {
-    return qobject_cast<Page *>(m_stack->currentWidget());
+    const int index = m_stack->currentIndex();
+    return index >= 0 && index < m_pages.size() ? m_pages.at(index) : nullptr;
 }
 
 void MainWindow::showPage(int index)
@@ -296,6 +311,17 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_messageDock->toggleViewAction());
     // --- monitoring (issue 5): the live status beside every page ---
     m_statusDock = new StatusDock(m_session, this);
+    // Its content scrolls up and down, so the dock fits a low screen beside or below the page.
+    if (QWidget *content = m_statusDock->widget()) {
+        auto *scroll = new QScrollArea(m_statusDock);
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        scroll->setMinimumWidth(content->minimumSizeHint().width() +
+                                scroll->verticalScrollBar()->sizeHint().width());
+        m_statusDock->setWidget(scroll);
+        scroll->setWidget(content);
+    }
     addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
     m_viewMenu->addAction(m_statusDock->toggleViewAction());
     // --- end monitoring ---
@@ -360,6 +386,64 @@ void MainWindow::retranslate()
     for (QAction *a : m_languages->actions())
         a->setChecked(a->objectName() ==
                       QStringLiteral("language_") + Language::instance().current());
+}
+
+bool MainWindow::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::LayoutRequest || event->type() == QEvent::LanguageChange) {
+        if (auto *page = qobject_cast<Page *>(watched)) {
+            if (auto *scroll = qobject_cast<QScrollArea *>(
+                    page->parentWidget() ? page->parentWidget()->parentWidget() : nullptr))
+                scroll->setMinimumWidth(page->minimumSizeHint().width() +
+                                        scroll->verticalScrollBar()->sizeHint().width());
+        }
+    }
+    return QMainWindow::eventFilter(watched, event);
+}
+
+void MainWindow::resizeEvent(QResizeEvent *event)
+{
+    QMainWindow::resizeEvent(event);
+    arrangeDocks();
+}
+
+void MainWindow::arrangeDocks()
+{
+    if (!m_statusDock || !centralWidget())
+        return;
+    const int needed = centralWidget()->minimumSizeHint().width() +
+                       m_statusDock->minimumSizeHint().width() +
+                       3 * style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent);
+    // The screen decides too: a window cannot get narrower than what its docks need, so on a
+    // small screen the dock moves before the window would have to.
+    const int room = screen() ? std::min(width(), screen()->availableGeometry().width()) : width();
+    const bool narrow = room < needed;
+    if (narrow && !m_statusDockMoved && dockWidgetArea(m_statusDock) == Qt::RightDockWidgetArea &&
+        !m_statusDock->isFloating()) {
+        m_statusDockMoved = true;
+        tabifyDockWidget(m_messageDock, m_statusDock);
+    } else if (!narrow && m_statusDockMoved) {
+        m_statusDockMoved = false;
+        addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
+    }
+}
+
+void MainWindow::fitIntoScreen()
+{
+    const QScreen *where = screen();
+    if (!where)
+        return;
+    const QRect available = where->availableGeometry();
+    const QMargins frame(geometry().left() - frameGeometry().left(),
+                         geometry().top() - frameGeometry().top(),
+                         frameGeometry().right() - geometry().right(),
+                         frameGeometry().bottom() - geometry().bottom());
+    const QRect room = available.marginsRemoved(frame);
+    QRect g = geometry();
+    g.setSize(g.size().boundedTo(room.size()));
+    g.moveLeft(std::clamp(g.left(), room.left(), room.right() - g.width() + 1));
+    g.moveTop(std::clamp(g.top(), room.top(), room.bottom() - g.height() + 1));
+    setGeometry(g);
 }
 
 void MainWindow::updateTitle()
@@ -481,6 +565,16 @@ void MainWindow::restoreLayout()
     if (!restoreState(settings.value(QStringLiteral("state")).toByteArray()))
         resizeDocks({m_trafficDock, m_messageDock},
                     {fontMetrics().height() * 9, fontMetrics().height() * 9}, Qt::Vertical);
+    // A layout saved on a larger screen, or the default on a small one, still fits: the docks
+    // first (the saved state may put the status dock beside the page), then the window.
+    m_statusDockMoved = false;
+    arrangeDocks();
+    fitIntoScreen();
+    // Once every minimum size is known (after the layout requests): arrange and fit again.
+    QTimer::singleShot(0, this, [this] {
+        arrangeDocks();
+        fitIntoScreen();
+    });
 }
 
 void MainWindow::saveLayout()

@@ -66,6 +66,8 @@ public:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
     void changeEvent(QEvent *event) override;
 
 private:
@@ -76,6 +78,11 @@ private:
     void retranslate();
     void updateActions();
     void updateTitle();
+    // Narrow window: the status dock joins the bottom tabs, so the page keeps its width; wide
+    // again: back beside the page.
+    void arrangeDocks();
+    // Inside the available screen, however large the saved or default size.
+    void fitIntoScreen();
     // Title and status bar say whether a file or a controller is being edited (issue 18).
     void showOrigin();
     void restoreLayout();
@@ -102,7 +109,8 @@ private:
     WriteFlow *m_writeFlow = nullptr;
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;
-    bool m_answeredOnce = false; // this connection's controller answered (the page jumped)
+    bool m_statusDockMoved = false; // arrangeDocks() put it into the bottom tabs
+    bool m_answeredOnce = false;    // this connection's controller answered (the page jumped)
 
     QAction *m_readAll = nullptr;
     QAction *m_write = nullptr;

@@ -222,6 +222,8 @@ private Q_SLOTS:
                                      "revert",
                                      "quit",
                                      "about",
+                                     "userGuide",
+                                     "whatsThis",
                                      "emergencyStopButton",
                                      "emergencyStop",
                                      "language_en",

@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -194,8 +195,12 @@ BusScanDialog::BusScanDialog(DeviceSession *session, const LinkSettings &base, Q
     retranslate();
     // Sized by the font, so it scales with the screen.
     const QFontMetrics fm = fontMetrics();
-    resize(std::max(sizeHint().width(), fm.averageCharWidth() * 72),
-           std::max(sizeHint().height(), fm.height() * 34));
+    QSize size(std::max(sizeHint().width(), fm.averageCharWidth() * 72),
+               std::max(sizeHint().height(), fm.height() * 34));
+    // Never larger than the screen (a 1366×768 laptop at 150 % has 911×512 to offer).
+    if (const QScreen *where = parent ? parent->screen() : screen())
+        size = size.boundedTo(where->availableGeometry().size() * 0.95);
+    resize(size);
 }
 
 BusScanDialog::~BusScanDialog()

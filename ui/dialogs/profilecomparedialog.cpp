@@ -12,6 +12,7 @@
 #include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -137,7 +138,12 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
 
     refreshValues();
     retranslate();
-    resize(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 120, fontMetrics().height() * 40);
+    QSize size(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 120,
+               fontMetrics().height() * 40);
+    // Never larger than the screen (a 1366×768 laptop at 150 % has 911×512 to offer).
+    if (const QScreen *where = parent ? parent->screen() : screen())
+        size = size.boundedTo(where->availableGeometry().size() * 0.95);
+    resize(size);
     // Compare with what the controller holds now, not with what was read some time ago.
     // Reading never writes.
     if (session->isConnected())
