@@ -255,10 +255,6 @@
         <translation>Device id</translation>
     </message>
     <message>
-        <source>Answer</source>
-        <translation>Answer</translation>
-    </message>
-    <message>
         <source>Double-click a controller to connect to it</source>
         <translation>Double-click a controller to connect to it</translation>
     </message>
@@ -365,6 +361,14 @@
             <numerusform>%n probes, at most about %1 s. A scan only reads; nothing is written.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Controller</source>
+        <translation>Controller</translation>
+    </message>
+    <message>
+        <source>Scan finished: %1. Press Connect.</source>
+        <translation>Scan finished: %1. Press Connect.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BusScanner</name>
@@ -381,12 +385,40 @@
         <translation>scan id %1 at %2 baud</translation>
     </message>
     <message>
-        <source>answered (register 40001 = %1)</source>
-        <translation>answered (register 40001 = %1)</translation>
+        <source>id %1 at %2 — %3</source>
+        <translation>id %1 at %2 — %3</translation>
     </message>
     <message>
-        <source>answered with an exception: %1</source>
-        <translation>answered with an exception: %1</translation>
+        <source>a device that refused the first register: %1</source>
+        <translation>a device that refused the first register: %1</translation>
+    </message>
+    <message>
+        <source>a %1-axis controller</source>
+        <translation>a %1-axis controller</translation>
+    </message>
+    <message>
+        <source>a controller</source>
+        <translation>a controller</translation>
+    </message>
+    <message>
+        <source>%1, step angle %2</source>
+        <translation>%1, step angle %2</translation>
+    </message>
+    <message>
+        <source>%1, step angles %2</source>
+        <translation>%1, step angles %2</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> and </translation>
+    </message>
+    <message>
+        <source> (only %1 of %2 motors answered)</source>
+        <translation> (only %1 of %2 motors answered)</translation>
+    </message>
+    <message>
+        <source>identify id %1</source>
+        <translation>identify id %1</translation>
     </message>
 </context>
 <context>
@@ -1333,6 +1365,26 @@
         <source>Settings fingerprint</source>
         <translation>Settings fingerprint</translation>
     </message>
+    <message>
+        <source>Values read</source>
+        <translation>Values read</translation>
+    </message>
+    <message>
+        <source>Flash</source>
+        <translation>Flash</translation>
+    </message>
+    <message>
+        <source>unknown: this program did not follow the writes</source>
+        <translation>unknown: this program did not follow the writes</translation>
+    </message>
+    <message>
+        <source>saved: nothing written since connecting or since the last save to flash</source>
+        <translation>saved: nothing written since connecting or since the last save to flash</translation>
+    </message>
+    <message>
+        <source>NOT saved: values were written since the last save to flash and are lost at power-off</source>
+        <translation>NOT saved: values were written since the last save to flash and are lost at power-off</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1563,6 +1615,10 @@
     <message>
         <source>%1 is open; waiting for the controller to answer…</source>
         <translation>%1 is open; waiting for the controller to answer…</translation>
+    </message>
+    <message>
+        <source>Serial port plugged in: %1</source>
+        <translation>Serial port plugged in: %1</translation>
     </message>
 </context>
 <context>
@@ -2711,6 +2767,41 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::GuideWindow</name>
+    <message>
+        <source>The user guide (%1) was not found in %2. It is installed with StepCom; reinstalling the package brings it back.</source>
+        <translation>The user guide (%1) was not found in %2. It is installed with StepCom; reinstalling the package brings it back.</translation>
+    </message>
+    <message>
+        <source>The guide has no section &quot;%1&quot;.</source>
+        <translation>The guide has no section &quot;%1&quot;.</translation>
+    </message>
+    <message>
+        <source>%1 is not installed with the guide.</source>
+        <translation>%1 is not installed with the guide.</translation>
+    </message>
+    <message>
+        <source>User guide</source>
+        <translation>User guide</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Back</translation>
+    </message>
+    <message>
+        <source>Back to where you were in the guide</source>
+        <translation>Back to where you were in the guide</translation>
+    </message>
+    <message>
+        <source>Go to a section of the guide</source>
+        <translation>Go to a section of the guide</translation>
+    </message>
+    <message>
+        <source>Sections</source>
+        <translation>Sections</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::HomingOrderEditor</name>
     <message>
         <source>%1 is already the %2 in the homing order: a motor homes once. Set the %2 to %3 first.</source>
@@ -3505,10 +3596,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>&lt;b&gt;StepCom %1&lt;/b&gt;&lt;br&gt;Commissioning tool for 2-axis stepper controllers over Modbus RTU/TCP.&lt;br&gt;GPL-3.0-or-later.</translation>
     </message>
     <message>
-        <source>StepCom — stepper controller commissioning</source>
-        <translation>StepCom — stepper controller commissioning</translation>
-    </message>
-    <message>
         <source>&amp;Read all</source>
         <translation>&amp;Read all</translation>
     </message>
@@ -3607,16 +3694,28 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n edited values were never written to the controller. Close anyway and lose them?</numerusform>
         </translation>
     </message>
-    <message>
-        <source>%1%2 — profile file, no controller — StepCom</source>
-        <translation>%1%2 — profile file, no controller — StepCom</translation>
-    </message>
     <message numerus="yes">
         <source>%n edited value(s) of %1 are not saved in the file. Close anyway and lose them?</source>
         <translation>
             <numerusform>%n edited value of %1 are not saved in the file. Close anyway and lose them?</numerusform>
             <numerusform>%n edited values of %1 are not saved in the file. Close anyway and lose them?</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>&amp;User guide</translation>
+    </message>
+    <message>
+        <source>The user guide at the section about this page (%1)</source>
+        <translation>The user guide at the section about this page (%1)</translation>
+    </message>
+    <message>
+        <source>What&apos;s &amp;this?</source>
+        <translation>What&apos;s &amp;this?</translation>
+    </message>
+    <message>
+        <source>%1%2 — profile file, no controller</source>
+        <translation>%1%2 — profile file, no controller</translation>
     </message>
 </context>
 <context>
@@ -5482,6 +5581,41 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileSaveDialog</name>
+    <message>
+        <source>Controller id %1</source>
+        <translation>Controller id %1</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profile</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>Save profile</translation>
+    </message>
+    <message>
+        <source>Every parameter is read from the controller, then saved with this name and notes.</source>
+        <translation>Every parameter is read from the controller, then saved with this name and notes.</translation>
+    </message>
+    <message>
+        <source>The values the pages show (edits included) are saved with this name and notes.</source>
+        <translation>The values the pages show (edits included) are saved with this name and notes.</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>N&amp;otes:</source>
+        <translation>N&amp;otes:</translation>
+    </message>
+    <message>
+        <source>Machine, place, who set it up, what was changed</source>
+        <translation>Machine, place, who set it up, what was changed</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ProfileVariance</name>
     <message>
         <source>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</source>
@@ -5532,6 +5666,33 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SerialPorts</name>
+    <message>
+        <source>S/N %1</source>
+        <translation>S/N %1</translation>
+    </message>
+    <message>
+        <source>Stable name: %1</source>
+        <translation>Stable name: %1</translation>
+    </message>
+    <message>
+        <source>Adapter: %1</source>
+        <translation>Adapter: %1</translation>
+    </message>
+    <message>
+        <source>Manufacturer: %1</source>
+        <translation>Manufacturer: %1</translation>
+    </message>
+    <message>
+        <source>Serial number: %1</source>
+        <translation>Serial number: %1</translation>
+    </message>
+    <message>
+        <source>USB id: %1:%2</source>
+        <translation>USB id: %1:%2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SessionBackup</name>
     <message>
         <source>the session ended</source>
@@ -5540,6 +5701,17 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the controller&apos;s settings could not be read: %1</source>
         <translation>the controller&apos;s settings could not be read: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SessionLog</name>
+    <message>
+        <source>cannot create the log folder %1</source>
+        <translation>cannot create the log folder %1</translation>
+    </message>
+    <message>
+        <source>cannot write the session log %1: %2</source>
+        <translation>cannot write the session log %1: %2</translation>
     </message>
 </context>
 <context>
@@ -6171,14 +6343,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <source>&amp;Save…</source>
-        <translation>&amp;Save…</translation>
-    </message>
-    <message>
-        <source>Copy the selected rows (all rows when none are selected)</source>
-        <translation>Copy the selected rows (all rows when none are selected)</translation>
-    </message>
-    <message>
         <source>Save traffic log</source>
         <translation>Save traffic log</translation>
     </message>
@@ -6189,6 +6353,74 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Could not save %1: %2</source>
         <translation>Could not save %1: %2</translation>
+    </message>
+    <message>
+        <source>Open log folder</source>
+        <translation>Open log folder</translation>
+    </message>
+    <message>
+        <source>Hold the rows still to read them; frames are still kept</source>
+        <translation>Hold the rows still to read them; frames are still kept</translation>
+    </message>
+    <message>
+        <source>Polls</source>
+        <translation>Polls</translation>
+    </message>
+    <message>
+        <source>The live status poll: several frames a second</source>
+        <translation>The live status poll: several frames a second</translation>
+    </message>
+    <message>
+        <source>Reads</source>
+        <translation>Reads</translation>
+    </message>
+    <message>
+        <source>Writes</source>
+        <translation>Writes</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Commands</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>Errors</translation>
+    </message>
+    <message>
+        <source>Search (text, key or bytes)</source>
+        <translation>Search (text, key or bytes)</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Search</translation>
+    </message>
+    <message>
+        <source>Copy the selected rows (all rows shown when none are selected)</source>
+        <translation>Copy the selected rows (all rows shown when none are selected)</translation>
+    </message>
+    <message>
+        <source>&amp;Save log…</source>
+        <translation>&amp;Save log…</translation>
+    </message>
+    <message>
+        <source>Save the rows shown to a file</source>
+        <translation>Save the rows shown to a file</translation>
+    </message>
+    <message>
+        <source>Open log &amp;folder</source>
+        <translation>Open log &amp;folder</translation>
+    </message>
+    <message>
+        <source>The session log files: every frame of every connection, with date and time (%1)</source>
+        <translation>The session log files: every frame of every connection, with date and time (%1)</translation>
+    </message>
+    <message>
+        <source>Cannot create the log folder %1.</source>
+        <translation>Cannot create the log folder %1.</translation>
+    </message>
+    <message>
+        <source>No file manager opened %1. The session log files are there.</source>
+        <translation>No file manager opened %1. The session log files are there.</translation>
     </message>
 </context>
 <context>

@@ -255,10 +255,6 @@
         <translation>设备 ID</translation>
     </message>
     <message>
-        <source>Answer</source>
-        <translation>应答</translation>
-    </message>
-    <message>
         <source>Double-click a controller to connect to it</source>
         <translation>双击控制器即可连接</translation>
     </message>
@@ -360,6 +356,14 @@
             <numerusform>共探测 %n 次，最多约 %1 s。扫描只读取，不写入任何数据。</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>Scan finished: %1. Press Connect.</source>
+        <translation>扫描完成：%1。请按“连接”。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BusScanner</name>
@@ -376,12 +380,40 @@
         <translation>扫描 ID %1，波特率 %2</translation>
     </message>
     <message>
-        <source>answered (register 40001 = %1)</source>
-        <translation>已应答（寄存器 40001 = %1）</translation>
+        <source>id %1 at %2 — %3</source>
+        <translation>ID %1，%2 — %3</translation>
     </message>
     <message>
-        <source>answered with an exception: %1</source>
-        <translation>应答异常：%1</translation>
+        <source>a device that refused the first register: %1</source>
+        <translation>一台拒绝读取第一个寄存器的设备：%1</translation>
+    </message>
+    <message>
+        <source>a %1-axis controller</source>
+        <translation>%1 轴控制器</translation>
+    </message>
+    <message>
+        <source>a controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>%1, step angle %2</source>
+        <translation>%1，步距角 %2</translation>
+    </message>
+    <message>
+        <source>%1, step angles %2</source>
+        <translation>%1，步距角 %2</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> 和 </translation>
+    </message>
+    <message>
+        <source> (only %1 of %2 motors answered)</source>
+        <translation>（%2 台电机中只有 %1 台应答）</translation>
+    </message>
+    <message>
+        <source>identify id %1</source>
+        <translation>识别 ID %1</translation>
     </message>
 </context>
 <context>
@@ -1325,6 +1357,26 @@
         <source>Settings fingerprint</source>
         <translation>设置指纹</translation>
     </message>
+    <message>
+        <source>Values read</source>
+        <translation>数值读取时间</translation>
+    </message>
+    <message>
+        <source>Flash</source>
+        <translation>闪存</translation>
+    </message>
+    <message>
+        <source>unknown: this program did not follow the writes</source>
+        <translation>未知：本程序没有跟踪写入</translation>
+    </message>
+    <message>
+        <source>saved: nothing written since connecting or since the last save to flash</source>
+        <translation>已保存：自连接以来或上次保存到闪存以来没有写入</translation>
+    </message>
+    <message>
+        <source>NOT saved: values were written since the last save to flash and are lost at power-off</source>
+        <translation>未保存：上次保存到闪存之后写入过数值，断电后会丢失</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1555,6 +1607,10 @@
     <message>
         <source>%1 is open; waiting for the controller to answer…</source>
         <translation>%1 已打开；正在等待控制器应答…</translation>
+    </message>
+    <message>
+        <source>Serial port plugged in: %1</source>
+        <translation>插入了串口：%1</translation>
     </message>
 </context>
 <context>
@@ -2695,6 +2751,41 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::GuideWindow</name>
+    <message>
+        <source>The user guide (%1) was not found in %2. It is installed with StepCom; reinstalling the package brings it back.</source>
+        <translation>在 %2 中找不到使用手册（%1）。手册随 StepCom 一起安装；重新安装软件包即可恢复。</translation>
+    </message>
+    <message>
+        <source>The guide has no section &quot;%1&quot;.</source>
+        <translation>手册中没有“%1”这一章节。</translation>
+    </message>
+    <message>
+        <source>%1 is not installed with the guide.</source>
+        <translation>%1 没有随手册一起安装。</translation>
+    </message>
+    <message>
+        <source>User guide</source>
+        <translation>使用手册</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>返回</translation>
+    </message>
+    <message>
+        <source>Back to where you were in the guide</source>
+        <translation>回到手册中刚才的位置</translation>
+    </message>
+    <message>
+        <source>Go to a section of the guide</source>
+        <translation>跳到手册的某一章节</translation>
+    </message>
+    <message>
+        <source>Sections</source>
+        <translation>章节</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::HomingOrderEditor</name>
     <message>
         <source>%1 is already the %2 in the homing order: a motor homes once. Set the %2 to %3 first.</source>
@@ -3489,10 +3580,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>&lt;b&gt;StepCom %1&lt;/b&gt;&lt;br&gt;通过 Modbus RTU/TCP 调试两轴步进电机控制器的工具。&lt;br&gt;许可证：GPL-3.0-or-later。</translation>
     </message>
     <message>
-        <source>StepCom — stepper controller commissioning</source>
-        <translation>StepCom — 步进电机控制器调试</translation>
-    </message>
-    <message>
         <source>&amp;Read all</source>
         <translation>读取全部(&amp;R)</translation>
     </message>
@@ -3590,15 +3677,27 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>有 %n 个已修改的值尚未写入控制器。仍要关闭并放弃这些修改吗？</numerusform>
         </translation>
     </message>
-    <message>
-        <source>%1%2 — profile file, no controller — StepCom</source>
-        <translation>%1%2 — 参数文件，未连接控制器 — StepCom</translation>
-    </message>
     <message numerus="yes">
         <source>%n edited value(s) of %1 are not saved in the file. Close anyway and lose them?</source>
         <translation>
             <numerusform>%1 中有 %n 个修改过的值尚未保存到文件。仍然关闭并放弃这些修改吗？</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>使用手册(&amp;U)</translation>
+    </message>
+    <message>
+        <source>The user guide at the section about this page (%1)</source>
+        <translation>打开使用手册中介绍本页面的章节（%1）</translation>
+    </message>
+    <message>
+        <source>What&apos;s &amp;this?</source>
+        <translation>这是什么？(&amp;T)</translation>
+    </message>
+    <message>
+        <source>%1%2 — profile file, no controller</source>
+        <translation>%1%2 — 参数文件，未连接控制器</translation>
     </message>
 </context>
 <context>
@@ -5448,6 +5547,41 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileSaveDialog</name>
+    <message>
+        <source>Controller id %1</source>
+        <translation>控制器 ID %1</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>参数文件</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>保存参数文件</translation>
+    </message>
+    <message>
+        <source>Every parameter is read from the controller, then saved with this name and notes.</source>
+        <translation>先从控制器读取全部参数，再以此名称和备注保存。</translation>
+    </message>
+    <message>
+        <source>The values the pages show (edits included) are saved with this name and notes.</source>
+        <translation>以此名称和备注保存页面上显示的值（包括修改值）。</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>名称(&amp;N)：</translation>
+    </message>
+    <message>
+        <source>N&amp;otes:</source>
+        <translation>备注(&amp;O)：</translation>
+    </message>
+    <message>
+        <source>Machine, place, who set it up, what was changed</source>
+        <translation>设备、地点、调试人、修改了什么</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ProfileVariance</name>
     <message>
         <source>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</source>
@@ -5498,6 +5632,33 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SerialPorts</name>
+    <message>
+        <source>S/N %1</source>
+        <translation>序列号 %1</translation>
+    </message>
+    <message>
+        <source>Stable name: %1</source>
+        <translation>固定名称：%1</translation>
+    </message>
+    <message>
+        <source>Adapter: %1</source>
+        <translation>转换器：%1</translation>
+    </message>
+    <message>
+        <source>Manufacturer: %1</source>
+        <translation>制造商：%1</translation>
+    </message>
+    <message>
+        <source>Serial number: %1</source>
+        <translation>序列号：%1</translation>
+    </message>
+    <message>
+        <source>USB id: %1:%2</source>
+        <translation>USB ID：%1:%2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SessionBackup</name>
     <message>
         <source>the session ended</source>
@@ -5506,6 +5667,17 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the controller&apos;s settings could not be read: %1</source>
         <translation>无法读取控制器参数：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SessionLog</name>
+    <message>
+        <source>cannot create the log folder %1</source>
+        <translation>无法创建日志文件夹 %1</translation>
+    </message>
+    <message>
+        <source>cannot write the session log %1: %2</source>
+        <translation>无法写入会话日志 %1：%2</translation>
     </message>
 </context>
 <context>
@@ -6137,14 +6309,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>复制(&amp;C)</translation>
     </message>
     <message>
-        <source>&amp;Save…</source>
-        <translation>保存(&amp;S)…</translation>
-    </message>
-    <message>
-        <source>Copy the selected rows (all rows when none are selected)</source>
-        <translation>复制选中的行（未选中任何行时复制全部）</translation>
-    </message>
-    <message>
         <source>Save traffic log</source>
         <translation>保存通信报文记录</translation>
     </message>
@@ -6155,6 +6319,74 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
+    </message>
+    <message>
+        <source>Open log folder</source>
+        <translation>打开日志文件夹</translation>
+    </message>
+    <message>
+        <source>Hold the rows still to read them; frames are still kept</source>
+        <translation>停止滚动以便阅读；报文仍会接收并保留</translation>
+    </message>
+    <message>
+        <source>Polls</source>
+        <translation>轮询</translation>
+    </message>
+    <message>
+        <source>The live status poll: several frames a second</source>
+        <translation>实时状态轮询：每秒多帧</translation>
+    </message>
+    <message>
+        <source>Reads</source>
+        <translation>读取</translation>
+    </message>
+    <message>
+        <source>Writes</source>
+        <translation>写入</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>Search (text, key or bytes)</source>
+        <translation>搜索（文字、参数名或字节）</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>搜索</translation>
+    </message>
+    <message>
+        <source>Copy the selected rows (all rows shown when none are selected)</source>
+        <translation>复制选中的行（未选中时复制显示的全部行）</translation>
+    </message>
+    <message>
+        <source>&amp;Save log…</source>
+        <translation>保存记录(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Save the rows shown to a file</source>
+        <translation>把显示的行保存到文件</translation>
+    </message>
+    <message>
+        <source>Open log &amp;folder</source>
+        <translation>打开日志文件夹(&amp;F)</translation>
+    </message>
+    <message>
+        <source>The session log files: every frame of every connection, with date and time (%1)</source>
+        <translation>会话日志文件：每次连接的每一帧，带日期和时间（%1）</translation>
+    </message>
+    <message>
+        <source>Cannot create the log folder %1.</source>
+        <translation>无法创建日志文件夹 %1。</translation>
+    </message>
+    <message>
+        <source>No file manager opened %1. The session log files are there.</source>
+        <translation>没有文件管理器能打开 %1。会话日志文件就在那里。</translation>
     </message>
 </context>
 <context>

@@ -3,12 +3,14 @@
 #include "device/devicesession.h"
 #include "dialogs/backupsdialog.h"
 #include "dialogs/profilecomparedialog.h"
+#include "dialogs/profilesavedialog.h"
 #include "language.h"
 #include "profile/backupstore.h"
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
 
 #include <QAction>
+#include <QDate>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -205,22 +207,47 @@ void ProfileActions::chooseOpen()
     dialog->open();
 }
 
+ProfileSaveDialog *ProfileActions::saveDialog() const
+{
+    return m_saveDialog;
+}
+
+QString ProfileActions::suggestedName() const
+{
+    return ProfileSaveDialog::suggestName(
+        m_machine, m_session->isConnected() ? m_session->settings().deviceId : 0,
+        QDate::currentDate());
+}
+
 void ProfileActions::chooseSave(bool fromDevice)
 {
-    auto *dialog = new QFileDialog(m_window,
-                                   fromDevice ? tr("Save profile from the device")
-                                              : tr("Save profile from the edited values"),
-                                   lastDirectory(), tr("StepCom profiles (*.json)"));
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->setAcceptMode(QFileDialog::AcceptSave);
-    dialog->setDefaultSuffix(QStringLiteral("json"));
-    connect(dialog, &QFileDialog::fileSelected, this, [this, fromDevice](const QString &path) {
-        if (fromDevice)
-            saveFromDeviceFile(path);
-        else
-            saveFromEditedFile(path);
+    // First the name and notes, then where: the file is named after the profile.
+    if (m_saveDialog)
+        m_saveDialog->close();
+    m_saveDialog = new ProfileSaveDialog(fromDevice, suggestedName(), m_window);
+    m_saveDialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(m_saveDialog, &QDialog::accepted, this, [this, fromDevice] {
+        const QString name = m_saveDialog->name();
+        const QString notes = m_saveDialog->notes();
+        auto *dialog =
+            new QFileDialog(m_window,
+                            fromDevice ? tr("Save profile from the device")
+                                       : tr("Save profile from the edited values"),
+                            QDir(lastDirectory()).filePath(ProfileSaveDialog::fileNameFor(name)),
+                            tr("StepCom profiles (*.json)"));
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->setAcceptMode(QFileDialog::AcceptSave);
+        dialog->setDefaultSuffix(QStringLiteral("json"));
+        connect(dialog, &QFileDialog::fileSelected, this,
+                [this, fromDevice, name, notes](const QString &path) {
+                    if (fromDevice)
+                        saveFromDeviceFile(path, name, notes);
+                    else
+                        saveFromEditedFile(path, name, notes);
+                });
+        dialog->open();
     });
-    dialog->open();
+    m_saveDialog->open();
 }
 
 void ProfileActions::chooseReport()
@@ -273,6 +300,7 @@ bool ProfileActions::openFile(const QString &path)
             true,
             tr("The software travel limits of %1 are in use now").arg(QFileInfo(path).fileName()));
     }
+    m_machine = r.profile->name.isEmpty() ? QFileInfo(path).completeBaseName() : r.profile->name;
     showCompare(*r.profile, QFileInfo(path).fileName());
     Q_EMIT finished(true, tr("Opened profile %1").arg(path));
     return true;
@@ -294,7 +322,8 @@ void ProfileActions::showCompare(const Profile &profile, const QString &title)
     m_compare->open();
 }
 
-void ProfileActions::saveFromDeviceFile(const QString &path)
+void ProfileActions::saveFromDeviceFile(const QString &path, const QString &name,
+                                        const QString &notes)
 {
     if (!m_session->isConnected()) {
         showErrors(tr("Save profile"), {tr("Connect to a controller first.")});
@@ -302,7 +331,7 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
     }
     const QList<const Parameter *> params = Profile::profileParameters(m_session->map(), true);
     QPointer<ProfileActions> self(this);
-    m_session->read(params, [self, path](const ReadOutcome &r) {
+    m_session->read(params, [self, path, name, notes](const ReadOutcome &r) {
         if (!self)
             return;
         self->m_session->parameters()->setDeviceValues(r.values);
@@ -314,7 +343,8 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
             return;
         }
         Profile profile = Profile::fromValues(self->m_session->map(), r.values, true);
-        profile.name = QFileInfo(path).completeBaseName();
+        profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
+        profile.notes = notes;
         profile.deviceId = self->m_session->settings().deviceId;
         profile.travelLimits = self->m_session->travelLimits();
         if (const QString e = ProfileFile::save(path, profile, self->m_session->map());
@@ -323,13 +353,15 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
             return;
         }
         self->addRecent(path);
+        self->m_machine = profile.name;
         Q_EMIT self->finished(true, tr("Saved the controller's %n parameter(s) to %1", nullptr,
                                        int(profile.values.size()))
                                         .arg(path));
     });
 }
 
-bool ProfileActions::saveFromEditedFile(const QString &path)
+bool ProfileActions::saveFromEditedFile(const QString &path, const QString &name,
+                                        const QString &notes)
 {
     QHash<QString, qint64> values;
     QStringList unknown;
@@ -346,7 +378,8 @@ bool ProfileActions::saveFromEditedFile(const QString &path)
         return false;
     }
     Profile profile = Profile::fromValues(m_session->map(), values, true);
-    profile.name = QFileInfo(path).completeBaseName();
+    profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
+    profile.notes = notes;
     if (m_session->isConnected())
         profile.deviceId = m_session->settings().deviceId;
     profile.travelLimits = m_session->travelLimits();
@@ -355,6 +388,7 @@ bool ProfileActions::saveFromEditedFile(const QString &path)
         return false;
     }
     addRecent(path);
+    m_machine = profile.name;
     Q_EMIT finished(true, tr("Saved %n value(s) as shown (edits included) to %1", nullptr,
                              int(profile.values.size()))
                               .arg(path));
@@ -386,6 +420,8 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         input.deviceId = self->m_session->settings().deviceId;
         input.notes = notes;
         input.date = QDateTime::currentDateTime();
+        input.lastRead = input.date; // read just now, for this report
+        input.savedToFlash = !self->m_session->parameters()->unsavedToFlash();
         input.locale = Language::instance().current();
         input.travelLimits = self->m_session->travelLimits();
         if (self->m_checklist) {

@@ -20,6 +20,7 @@ class DeviceSession;
 class BackupsDialog;
 class ProfileCompareDialog;
 struct Profile;
+class ProfileSaveDialog;
 
 // The File menu's profile and report actions: open a profile (compare, never write by itself),
 // save one from the device or from the edited values, recent profiles, the commissioning
@@ -44,6 +45,11 @@ public:
     void setBackupDirectory(const QString &directory) { m_backupDir = directory; }
     QMenu *recentMenu() const { return m_recent; }
     ProfileCompareDialog *compareDialog() const;
+    // Asks for the profile's name and notes before the file chooser (open while it asks).
+    ProfileSaveDialog *saveDialog() const;
+    // What a new profile is called at first: the machine (the last profile opened or saved)
+    // or the controller's id, and today's date.
+    QString suggestedName() const;
     QMessageBox *errorBox() const;
 
     static QStringList recentFiles();
@@ -57,9 +63,12 @@ public:
     bool openBackupFile(const QString &path);
     void showBackups();
     // Read everything from the controller, then save (done reports the outcome).
-    void saveFromDeviceFile(const QString &path);
+    // An empty name names the profile after the file.
+    void saveFromDeviceFile(const QString &path, const QString &name = QString(),
+                            const QString &notes = QString());
     // Save what the window shows: the edits where there are any, else the controller's values.
-    bool saveFromEditedFile(const QString &path);
+    bool saveFromEditedFile(const QString &path, const QString &name = QString(),
+                            const QString &notes = QString());
     // Read everything, then write the report as PDF or HTML by the file's suffix.
     void reportFile(const QString &path, const QString &notes);
 
@@ -90,6 +99,8 @@ private:
     QString m_backupDir;
     QMenu *m_recent;
     QPointer<ProfileCompareDialog> m_compare;
+    QPointer<ProfileSaveDialog> m_saveDialog;
+    QString m_machine; // the name of the last profile opened or saved
     QPointer<QMessageBox> m_errorBox;
     std::function<bool(const QString &)> m_offlineOpener;
 };

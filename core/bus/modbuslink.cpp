@@ -184,7 +184,7 @@ void ModbusLink::failLink(const QString &reason)
     m_failing = true;
     const bool wasConnected = m_state == State::Connected;
     qCInfo(lcBus) << "link failed:" << reason;
-    m_traffic->addEvent(tr("link lost: %1").arg(reason));
+    m_traffic->addEvent(tr("link lost: %1").arg(reason), TrafficEntry::Kind::Error);
     close(reason);
     finishOpen(false, reason);
     if (wasConnected)
@@ -402,7 +402,7 @@ void ModbusLink::onReplyFinished(QModbusReply *reply)
         // Let a late answer drain before anything else goes out.
         m_sinceQuiet.start();
         m_quietRemainingMs = m_quietMs;
-        m_traffic->addEvent(r.errorText);
+        m_traffic->addEvent(r.errorText, TrafficEntry::Kind::Error);
         if (req.retryable && item.attempts <= m_settings.retries) {
             m_queue.pushFront(std::move(item));
             Q_EMIT statsChanged();

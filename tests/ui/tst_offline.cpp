@@ -214,9 +214,10 @@ private Q_SLOTS:
         const QSet<QString> harmless{
             "newProfile", "openProfile", "saveProfile", "saveProfileAs", "closeProfile",
             "compareProfiles", "reportFromProfile", "saveProfileFromEdited", "revert", "quit",
-            "about", "emergencyStopButton", "emergencyStop", "language_en", "language_zh_CN",
-            "connect", "refresh", "pauseButton", "fitButton", "clearTraceButton", "exportPngButton",
-            "exportCsvButton", "recordButton", "previewFit", "previewExport",
+            "about", "userGuide", "whatsThis", "emergencyStopButton", "emergencyStop",
+            "language_en", "language_zh_CN", "connect", "refresh", "pauseButton", "fitButton",
+            "clearTraceButton", "exportPngButton", "exportCsvButton", "recordButton", "previewFit",
+            "previewExport",
             // StepCom's own settings and the checklist file, not the
             // controller: travel limits, the profile beside the
             // checklist, a step skipped

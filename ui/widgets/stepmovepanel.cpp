@@ -55,16 +55,22 @@ StepMovePanel::StepMovePanel(DeviceSession *session, int motor, QWidget *parent)
 
     auto *grid = new QGridLayout(this);
     grid->setContentsMargins(0, 0, 0, 0);
+    // Three columns, so two motors' panels side by side still fit a 1024-pixel screen; the
+    // spin boxes would ask for the width of their whole range (±21474836.48 mm) otherwise.
+    const int fieldWidth = fontMetrics().horizontalAdvance(QStringLiteral("-00000.00 mm")) + 24;
+    m_custom->setMinimumWidth(fieldWidth);
+    m_target->setMinimumWidth(fieldWidth);
+    m_step->setMinimumWidth(fieldWidth);
     grid->addWidget(m_stepLabel, 0, 0);
     grid->addWidget(m_step, 0, 1);
     grid->addWidget(m_custom, 0, 2);
-    grid->addWidget(m_minus, 0, 3);
-    grid->addWidget(m_plus, 0, 4);
-    grid->addWidget(m_targetLabel, 1, 0);
-    grid->addWidget(m_target, 1, 1, 1, 2);
-    grid->addWidget(m_moveTo, 1, 3, 1, 2);
-    grid->addWidget(m_note, 2, 0, 1, 5);
-    grid->addWidget(m_result, 3, 0, 1, 5);
+    grid->addWidget(m_minus, 1, 1);
+    grid->addWidget(m_plus, 1, 2);
+    grid->addWidget(m_targetLabel, 2, 0);
+    grid->addWidget(m_target, 2, 1);
+    grid->addWidget(m_moveTo, 2, 2);
+    grid->addWidget(m_note, 3, 0, 1, 3);
+    grid->addWidget(m_result, 4, 0, 1, 3);
     grid->setColumnStretch(1, 1);
     grid->setColumnStretch(2, 1);
 
