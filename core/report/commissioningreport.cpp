@@ -3,6 +3,7 @@
 #include "device/wiringcheck.h"
 #include "profile/settingsfingerprint.h"
 #include "report/certificatesection.h"
+#include "report/reporthtml.h"
 #include "report/xypicture.h"
 
 #include <QBuffer>
@@ -22,23 +23,7 @@ namespace {
 const QString kImageName = QStringLiteral("stepcom-xy.png");
 const QSize kImageSize(900, 900);
 
-QString esc(const QString &s)
-{
-    return s.toHtmlEscaped();
-}
-
-QString row(const QStringList &cells, bool header = false)
-{
-    const QString tag = header ? QStringLiteral("th") : QStringLiteral("td");
-    QString out = QStringLiteral("<tr>");
-    for (const QString &c : cells)
-        out += QStringLiteral("<%1>%2</%1>").arg(tag, c);
-    out += QStringLiteral("</tr>");
-    // A header row in <thead> is repeated at the top of every page the table runs onto.
-    return header ? QStringLiteral("<thead>%1</thead>\n").arg(out) : out + QLatin1Char('\n');
-}
-
-const char *kTable = "<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\" width=\"100%\">\n";
+using namespace reporthtml;
 
 } // namespace
 
