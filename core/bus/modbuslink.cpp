@@ -185,7 +185,7 @@ void ModbusLink::failLink(const QString &reason)
     m_failing = true;
     const bool wasConnected = m_state == State::Connected;
     qCInfo(lcBus) << "link failed:" << reason;
-    m_traffic->addEvent(tr("link lost: %1").arg(reason));
+    m_traffic->addEvent(tr("link lost: %1").arg(reason), TrafficEntry::Kind::Error);
     const quint64 attempt = m_attempt;
     close(reason);
     // A callback may have opened the link again: that attempt's verdict is its own.
@@ -309,11 +309,13 @@ void ModbusLink::pump()
     }
     m_inFlight = m_queue.takeNext();
     m_inFlight->attempts += 1;
+    const Request &req = m_inFlight->request;
+    const int id = req.unitId > 0 ? req.unitId : m_settings.deviceId;
     ++m_stats.requests;
     Q_EMIT dispatched(m_inFlight->id, m_inFlight->request);
     // The transport waits for the silences the line needs; the watchdog covers that too.
     m_watchdog.start(m_settings.timeoutMs + m_quietMs + m_settings.turnaroundMs + kWatchdogGraceMs);
-    m_backend->send(m_settings.deviceId, toPdu(m_inFlight->request), m_settings.timeoutMs);
+    m_backend->send(id, toPdu(req), m_settings.timeoutMs);
 }
 
 QString ModbusLink::noAnswerText(const Request &req, const LinkAnswer &a) const
@@ -323,15 +325,16 @@ QString ModbusLink::noAnswerText(const Request &req, const LinkAnswer &a) const
     QString text = tr("%1: no answer within %2 ms").arg(describe(req)).arg(m_settings.timeoutMs);
     if (!a.discarded.isEmpty())
         text += tr(" (discarded: %1)").arg(a.discarded.join(QStringLiteral("; ")));
+    const int id = req.unitId > 0 ? req.unitId : m_settings.deviceId;
     if (a.discarded.isEmpty() && a.crcErrors == 0 && !a.onlyEcho) {
         if (m_settings.isNetwork())
             text += tr(" -- check the device id (%1), the host and port, and the converter's "
                        "serial settings; the bus scan finds controllers")
-                        .arg(m_settings.deviceId);
+                        .arg(id);
         else
             text += tr(" -- check the device id (%1), the baud rate and parity (%2), the A/B "
                        "wiring; the bus scan finds controllers")
-                        .arg(m_settings.deviceId)
+                        .arg(id)
                         .arg(QStringLiteral("%1 8%2%3")
                                  .arg(m_settings.baud)
                                  .arg(LinkSettings::parityName(m_settings.parity).at(0).toUpper())
@@ -355,7 +358,8 @@ void ModbusLink::onAnswered(const LinkAnswer &a)
     if (stale > 0)
         m_stats.stale += quint64(stale);
     for (const QString &why : a.discarded)
-        m_traffic->addEvent(tr("stale/foreign answer discarded: %1").arg(why));
+        m_traffic->addEvent(tr("stale/foreign answer discarded: %1").arg(why),
+                            TrafficEntry::Kind::Error);
 
     Result r;
     r.attempts = item.attempts;
@@ -418,7 +422,7 @@ void ModbusLink::onAnswered(const LinkAnswer &a)
     }
 
     if (!r.ok && (retry || a.kind == LinkAnswer::Kind::Timeout))
-        m_traffic->addEvent(r.errorText);
+        m_traffic->addEvent(r.errorText, TrafficEntry::Kind::Error);
     if (retry && m_backend) {
         m_queue.pushFront(std::move(item));
         if (retryPauseMs > 0)
@@ -471,6 +475,8 @@ QString ModbusLink::describe(const Request &request) const
                     .arg(QString::number(request.address, 16)
                              .rightJustified(4, QLatin1Char('0'))
                              .toUpper());
+    if (request.unitId > 0 && request.unitId != m_settings.deviceId)
+        where = tr("id %1, %2").arg(request.unitId).arg(where);
     if (request.what.isEmpty())
         return where;
     return QStringLiteral("%1 [%2]").arg(request.what, where);

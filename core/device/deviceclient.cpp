@@ -51,7 +51,7 @@ void DeviceClient::read(const QList<const Parameter *> &params, Priority priorit
     for (const ReadBlock &block : blocks) {
         Request req = Request::read(block.address, block.count, priority);
         req.what = tr("read block %1/%2").arg(++index).arg(blocks.size());
-        m_link->submit(
+        submit(
             req,
             [this, block, params, outcome, pending, done](const Result &r) {
                 if (r.ok) {
@@ -117,7 +117,7 @@ struct WriteJob : std::enable_shared_from_this<WriteJob>
             return;
         }
         auto self = shared_from_this();
-        client->link()->submit(
+        client->submit(
             requests.at(index),
             [self, index](const Result &r) {
                 const QStringList keys = self->requests.at(index).what.split(QStringLiteral(", "));
@@ -147,7 +147,7 @@ struct WriteJob : std::enable_shared_from_this<WriteJob>
         Request req = Request::write(w.parameter->address, w.parameter->encode(w.raw));
         req.what = w.parameter->key;
         auto self = shared_from_this();
-        client->link()->submit(
+        client->submit(
             req,
             [self, index, w](const Result &r) {
                 if (!r.ok) {
@@ -273,7 +273,18 @@ void DeviceClient::command(const Parameter &coil, std::function<void(const Resul
     req.what = coil.key;
     // Stops are safe to repeat; anything that moves or changes state is not.
     req.retryable = coil.command == CommandClass::Emergency || coil.command == CommandClass::Output;
-    m_link->submit(req, std::move(done), this);
+    // A command goes to the controller that was in view when it was given, even if the view
+    // moves to another device before it reaches the wire.
+    if (m_unitId == 0)
+        req.unitId = m_link->settings().deviceId;
+    submit(req, std::move(done), this);
+}
+
+quint64 DeviceClient::submit(Request request, ResultCallback callback, QObject *context)
+{
+    if (m_unitId > 0)
+        request.unitId = m_unitId;
+    return m_link->submit(std::move(request), std::move(callback), context);
 }
 
 } // namespace stepcom

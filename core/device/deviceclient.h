@@ -62,6 +62,13 @@ public:
     // Pulse a coil (FF00). Emergency commands jump the queue.
     void command(const Parameter &coil, std::function<void(const Result &)> done);
 
+    // The controller this client speaks to on a line of several; 0 (the default): the link's
+    // device id at the moment each request goes out.
+    void setUnitId(int id) { m_unitId = id; }
+    int unitId() const { return m_unitId; }
+    // Queue a request for this client's controller.
+    quint64 submit(Request request, ResultCallback callback, QObject *context);
+
     static Priority priorityFor(const Parameter &coil);
     // Empty when every write is allowed, else one message per bad value.
     static QStringList validate(const QList<ParameterWrite> &writes);
@@ -69,6 +76,7 @@ public:
 private:
     ModbusLink *m_link;
     RegisterMap m_map;
+    int m_unitId = 0;
 };
 
 } // namespace stepcom

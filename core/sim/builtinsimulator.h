@@ -2,6 +2,8 @@
 
 #include "device/simulatorstarter.h"
 
+#include <QList>
+
 #include <memory>
 
 namespace stepcom {
@@ -24,6 +26,8 @@ public:
 
     // Rehearse an adapter that echoes what it sends (--sim --echo); takes effect at start().
     void setEcho(bool echo) { m_echo = echo; }
+    // Several controllers on the one line (SimOptions::ids), for the next start().
+    void setIds(const QList<int> &ids) { m_ids = ids; }
 
     // The running simulator, for the tools and tests that act on the simulated machine.
     SimHost *host() const { return m_host.get(); }
@@ -31,6 +35,7 @@ public:
 private:
     std::unique_ptr<SimHost> m_host;
     bool m_echo = false;
+    QList<int> m_ids;
 };
 
 } // namespace stepcom

@@ -122,11 +122,11 @@ void SimRtuTcpServer::onReadyRead(QTcpSocket *socket)
         }
         const int unit = quint8(frame.at(0));
         const bool broadcast = unit == 0;
-        if (!broadcast && unit != m_responder->device()->deviceId())
-            continue;
+        if (!broadcast && !m_responder->hasDevice(unit))
+            continue; // another controller's request: silence
         const QModbusRequest request(QModbusPdu::FunctionCode(quint8(frame.at(1))),
                                      frame.mid(2, length - 4));
-        const SimResponder::Outcome out = m_responder->respond(request);
+        const SimResponder::Outcome out = m_responder->respond(unit, request);
         if (broadcast || !out.response.isValid())
             continue;
         QByteArray answer;
@@ -137,6 +137,9 @@ void SimRtuTcpServer::onReadyRead(QTcpSocket *socket)
         answer.append(char(sum >> 8));
         if (out.corruptCrc)
             answer[answer.size() - 1] = char(answer.at(answer.size() - 1) ^ 0x5A);
+        if (out.collision) // two controllers answered at once: garbled bytes on the wire
+            for (qsizetype i = 1; i < answer.size(); ++i)
+                answer[i] = char(answer.at(i) ^ (0x5A + i));
         QPointer<QTcpSocket> target(socket);
         const bool hangUpAfter = out.hangUp;
         const qint64 now = m_clock.elapsed();

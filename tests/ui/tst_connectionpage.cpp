@@ -170,6 +170,9 @@ private Q_SLOTS:
         s.deviceId = 9;
         s.timeoutMs = 300;
         s.retries = 1;
+        s.answerDelayMs = 20;
+        s.turnaroundMs = 5;
+        s.echo = true;
         {
             ConnectionPage page(&session);
             page.applySettings(s);
@@ -185,6 +188,39 @@ private Q_SLOTS:
         QCOMPARE(page.currentSettings(), s);
         // In the test location, never in the user's own settings.
         QVERIFY(QSettings().fileName().contains(".qttest"));
+    }
+
+    void echoingAdapterIsOfferedTheEchoOption()
+    {
+        SimHost sim;
+        SimOptions options;
+        options.rtu = true;
+        options.echo = true; // a half-duplex adapter without echo suppression
+        QString error;
+        QVERIFY2(sim.start(options, &error), qPrintable(error));
+
+        DeviceSession session;
+        ConnectionPage page(&session);
+        LinkSettings s;
+        s.portName = sim.rtuPath();
+        s.timeoutMs = 200;
+        s.retries = 0;
+        page.applySettings(s);
+        page.show();
+        QPushButton *accept = button(&page, "acceptEcho");
+        QVERIFY(accept && !accept->isVisible());
+        click(&page, "connect");
+        // Answers begin with the request's own bytes: said, and the option offered.
+        QTRY_VERIFY_WITH_TIMEOUT(accept->isVisible(), 5000);
+        QVERIFY(!session.parameters()->deviceValue("motor1.step_angle").has_value());
+        click(&page, "acceptEcho");
+        QVERIFY(!accept->isVisible());
+        QVERIFY(page.currentSettings().echo);
+        QTRY_VERIFY_WITH_TIMEOUT(session.isConnected() && session.settings().echo, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(session.parameters()->deviceValue("motor1.step_angle").has_value(),
+                                 5000);
+        QVERIFY(!accept->isVisible());
+        session.disconnectFrom();
     }
 
     void busScanFindsTheSimulator()

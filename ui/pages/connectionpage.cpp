@@ -2,8 +2,11 @@
 
 #include "device/devicesession.h"
 #include "device/linkhealth.h"
+#include "device/linksettingsstore.h"
+#include "device/serialports.h"
 #include "dialogs/busscandialog.h"
 #include "widgets/led.h"
+#include "widgets/lineoptionsbox.h"
 
 #include <QButtonGroup>
 #include <QCheckBox>
@@ -15,7 +18,6 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRadioButton>
-#include <QSerialPortInfo>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStyle>
@@ -79,9 +81,11 @@ QPushButton *newButton(QWidget *parent, const char *name)
 
 ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
+    , m_serialPorts(new SerialPorts(this))
 {
     buildUi();
     refreshPorts();
+    connect(m_serialPorts, &SerialPorts::changed, this, &ConnectionPage::onPortsChanged);
     loadSettings();
 
     connect(m_transportGroup, &QButtonGroup::idClicked, this, [this] { updateVisibility(); });
@@ -93,6 +97,7 @@ ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
     connect(session, &DeviceSession::linkStateChanged, this, &ConnectionPage::updateState);
     connect(session->health(), &LinkHealth::stateChanged, this, &ConnectionPage::updateState);
     connect(session, &DeviceSession::connected, this, &ConnectionPage::onConnected);
+    connect(session, &DeviceSession::echoSuspected, m_lineBox, &LineOptionsBox::offerEcho);
     connect(session, &DeviceSession::disconnected, this,
             [this] { setNote(false, [] { return tr("Disconnected."); }); });
     // Connected after the session's own handler of `lost`, so this note wins over the plain one.
@@ -170,23 +175,12 @@ void ConnectionPage::buildUi()
     m_deviceId = addRow(m_deviceForm, newSpin(m_deviceBox, 1, 255));
     m_timeout = addRow(m_deviceForm, newSpin(m_deviceBox, 20, 60000, 50));
     m_retries = addRow(m_deviceForm, newSpin(m_deviceBox, 0, 10));
-    // Answer delay and turnaround share a row: both are line timing, rarely changed.
-    auto *timing = new QWidget(m_deviceBox);
-    auto *timingRow = new QHBoxLayout(timing);
-    timingRow->setContentsMargins(0, 0, 0, 0);
-    m_answerDelay = newSpin(timing, 0, 1000);
-    m_turnaround = newSpin(timing, 0, 1000);
-    m_turnaroundLabel = new QLabel(timing);
-    m_turnaroundLabel->setBuddy(m_turnaround);
-    timingRow->addWidget(m_answerDelay);
-    timingRow->addWidget(m_turnaroundLabel);
-    timingRow->addWidget(m_turnaround);
-    timingRow->addStretch();
-    m_timing = addRow(m_deviceForm, timing);
-    qobject_cast<QLabel *>(m_deviceForm->labelForField(timing))->setBuddy(m_answerDelay);
-    m_echo = new QCheckBox(m_deviceBox);
-    m_echo->setObjectName(QStringLiteral("echo"));
-    m_deviceForm->addRow(m_echo);
+    m_lineBox = new LineOptionsBox(this);
+    connect(m_lineBox, &LineOptionsBox::echoAccepted, this, [this] {
+        // Open the link again with the echo option, as the user asked.
+        disconnectNow();
+        connectNow();
+    });
 
     m_simBox = new QGroupBox(this);
     m_simText = new QLabel(m_simBox);
@@ -218,7 +212,9 @@ void ConnectionPage::buildUi()
     statusLayout->addLayout(buttons);
 
     auto *column = new QVBoxLayout;
-    for (QWidget *box : {m_transportBox, m_serialBox, m_tcpBox, m_simBox, m_deviceBox, m_statusBox})
+    // Connect right below what is usually set; the rarely changed line timing after it.
+    for (QWidget *box : std::initializer_list<QWidget *>{
+             m_transportBox, m_serialBox, m_tcpBox, m_simBox, m_deviceBox, m_statusBox, m_lineBox})
         column->addWidget(box);
     column->addStretch(1);
     // A readable column on a wide window instead of fields stretched across the screen.
@@ -226,10 +222,9 @@ void ConnectionPage::buildUi()
     outer->addLayout(column, 3);
     outer->addStretch(1);
 
-    QWidget *order[] = {m_serialRadio, m_tcpRadio, m_simRadio, m_port,       m_refresh,
-                        m_baud,        m_parity,   m_stopBits, m_tcpMode,    m_host,
-                        m_tcpPort,     m_deviceId, m_timeout,  m_retries,    m_answerDelay,
-                        m_turnaround,  m_echo,     m_connect,  m_disconnect, m_scan};
+    QWidget *order[] = {m_serialRadio, m_tcpRadio, m_simRadio, m_port,       m_refresh, m_baud,
+                        m_parity,      m_stopBits, m_tcpMode,  m_host,       m_tcpPort, m_deviceId,
+                        m_timeout,     m_retries,  m_connect,  m_disconnect, m_scan};
     for (size_t i = 1; i < std::size(order); ++i)
         setTabOrder(order[i - 1], order[i]);
 }
@@ -287,20 +282,7 @@ void ConnectionPage::retranslate()
     m_timeout->setSuffix(tr(" ms"));
     setRow(m_deviceForm, m_retries, tr("&Retries:"),
            tr("How often an unanswered request is sent again"));
-    setRow(m_deviceForm, m_timing, tr("&Answer delay:"), QString());
-    m_answerDelay->setToolTip(
-        tr("The controller answers no sooner than this after a request (35 ms by its "
-           "manual); an answer that comes sooner belongs to an older request and is "
-           "discarded"));
-    m_answerDelay->setSuffix(tr(" ms"));
-    m_turnaroundLabel->setText(tr("T&urnaround:"));
-    m_turnaround->setToolTip(
-        tr("Extra silence after an answer before the next request, for converters that need "
-           "it"));
-    m_turnaround->setSuffix(tr(" ms"));
-    m_echo->setText(tr("The adapter &echoes what it sends"));
-    m_echo->setToolTip(tr("For half-duplex USB-RS485 adapters without echo suppression: the "
-                          "request's own bytes are removed before the answer is read"));
+    m_lineBox->retranslate();
 
     m_simBox->setTitle(tr("Built-in simulator"));
     m_simText->setText(tr("A simulated controller runs inside StepCom and answers like the real "
@@ -336,6 +318,7 @@ void ConnectionPage::updateVisibility()
     m_serialBox->setVisible(t == Transport::Serial);
     m_tcpBox->setVisible(t == Transport::Tcp);
     m_deviceBox->setVisible(t != Transport::Simulator);
+    m_lineBox->setVisible(t != Transport::Simulator);
     m_simBox->setVisible(t == Transport::Simulator);
     updateState();
 }
@@ -361,19 +344,50 @@ void ConnectionPage::setPortInCombo(const QString &port)
 
 void ConnectionPage::refreshPorts()
 {
+    fillPorts(m_serialPorts->scan());
+}
+
+void ConnectionPage::fillPorts(const QList<SerialPortEntry> &ports)
+{
     const QString current = portFromCombo();
     m_port->clear();
-    for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts()) {
-        QString detail = info.description();
-        if (!info.manufacturer().isEmpty() && !detail.contains(info.manufacturer()))
-            detail = detail.isEmpty() ? info.manufacturer()
-                                      : QStringLiteral("%1, %2").arg(detail, info.manufacturer());
-        const QString text = detail.isEmpty()
-                                 ? info.portName()
-                                 : QStringLiteral("%1 — %2").arg(info.portName(), detail);
-        m_port->addItem(text, info.systemLocation());
+    // The adapter by name, maker and serial number; the stable by-id link is what is opened
+    // and remembered, so the setting survives the adapter coming back as another ttyUSB.
+    for (const SerialPortEntry &port : ports) {
+        m_port->addItem(port.text(), port.path());
+        m_port->setItemData(m_port->count() - 1, port.details(), Qt::ToolTipRole);
     }
-    setPortInCombo(current);
+    // A remembered /dev/ttyUSB0 finds its adapter's entry under the by-id name too.
+    QString wanted = current;
+    for (const SerialPortEntry &port : ports) {
+        if (port.systemLocation == current)
+            wanted = port.path();
+    }
+    setPortInCombo(wanted);
+}
+
+void ConnectionPage::onPortsChanged(const QList<SerialPortEntry> &ports,
+                                    const QList<SerialPortEntry> &added)
+{
+    fillPorts(ports);
+    // The adapter just plugged in is the one the technician means to use.
+    if (!added.isEmpty() && !session()->isConnected()) {
+        const SerialPortEntry port = added.last();
+        setPortInCombo(port.path());
+        setNote(false, [port] { return tr("Serial port plugged in: %1").arg(port.text()); });
+    }
+}
+
+void ConnectionPage::showEvent(QShowEvent *event)
+{
+    m_serialPorts->setWatching(true);
+    Page::showEvent(event);
+}
+
+void ConnectionPage::hideEvent(QHideEvent *event)
+{
+    m_serialPorts->setWatching(false);
+    Page::hideEvent(event);
 }
 
 LinkSettings ConnectionPage::currentSettings() const
@@ -391,9 +405,7 @@ LinkSettings ConnectionPage::currentSettings() const
     s.deviceId = m_deviceId->value();
     s.timeoutMs = m_timeout->value();
     s.retries = m_retries->value();
-    s.answerDelayMs = m_answerDelay->value();
-    s.turnaroundMs = m_turnaround->value();
-    s.echo = m_echo->isChecked();
+    m_lineBox->fillInto(s);
     return s;
 }
 
@@ -409,9 +421,7 @@ void ConnectionPage::applySettings(const LinkSettings &s)
     m_deviceId->setValue(s.deviceId);
     m_timeout->setValue(s.timeoutMs);
     m_retries->setValue(s.retries);
-    m_answerDelay->setValue(s.answerDelayMs);
-    m_turnaround->setValue(s.turnaroundMs);
-    m_echo->setChecked(s.echo);
+    m_lineBox->apply(s);
     m_tcpMode->setCurrentIndex(s.transport == LinkSettings::Transport::RtuTcp ? 1 : 0);
     setTransport(s.isNetwork() ? Transport::Tcp : Transport::Serial);
 }
@@ -420,56 +430,18 @@ void ConnectionPage::loadSettings()
 {
     QSettings settings;
     settings.beginGroup(kGroup);
-    const auto value = [&settings](const char *key, const QVariant &fallback) {
-        return settings.value(QLatin1String(key), fallback);
-    };
-    LinkSettings s;
-    const QString transport = value("transport", {}).toString();
-    s.transport = transport == QLatin1String("tcp")       ? LinkSettings::Transport::Tcp
-                  : transport == QLatin1String("rtu-tcp") ? LinkSettings::Transport::RtuTcp
-                                                          : LinkSettings::Transport::Rtu;
-    s.portName = value("port", s.portName).toString();
-    s.baud = value("baud", s.baud).toInt();
-    LinkSettings::parseParity(value("parity", {}).toString(), &s.parity); // keeps none if unknown
-    s.stopBits = value("stopBits", 1).toInt() == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop;
-    s.host = value("host", s.host).toString();
-    s.tcpPort = value("tcpPort", s.tcpPort).toInt();
-    s.deviceId = value("deviceId", s.deviceId).toInt();
-    s.timeoutMs = value("timeoutMs", s.timeoutMs).toInt();
-    s.retries = value("retries", s.retries).toInt();
-    s.answerDelayMs = value("answerDelayMs", s.answerDelayMs).toInt();
-    s.turnaroundMs = value("turnaroundMs", s.turnaroundMs).toInt();
-    s.echo = value("echo", s.echo).toBool();
-    applySettings(s);
-    if (value("simulator", false).toBool())
+    applySettings(LinkSettingsStore::read(settings));
+    if (settings.value(QStringLiteral("simulator"), false).toBool())
         setTransport(Transport::Simulator);
 }
 
 void ConnectionPage::saveSettings() const
 {
-    const LinkSettings s = currentSettings();
     QSettings settings;
     settings.beginGroup(kGroup);
-    const auto set = [&settings](const char *key, const QVariant &v) {
-        settings.setValue(QLatin1String(key), v);
-    };
+    LinkSettingsStore::write(settings, currentSettings());
     // The real link and the simulator choice apart, so choosing the simulator keeps the port.
-    set("transport", s.transport == LinkSettings::Transport::Tcp      ? QStringLiteral("tcp")
-                     : s.transport == LinkSettings::Transport::RtuTcp ? QStringLiteral("rtu-tcp")
-                                                                      : QStringLiteral("serial"));
-    set("simulator", transport() == Transport::Simulator);
-    set("port", s.portName);
-    set("baud", s.baud);
-    set("parity", LinkSettings::parityName(s.parity));
-    set("stopBits", s.stopBits == QSerialPort::TwoStop ? 2 : 1);
-    set("host", s.host);
-    set("tcpPort", s.tcpPort);
-    set("deviceId", s.deviceId);
-    set("timeoutMs", s.timeoutMs);
-    set("retries", s.retries);
-    set("answerDelayMs", s.answerDelayMs);
-    set("turnaroundMs", s.turnaroundMs);
-    set("echo", s.echo);
+    settings.setValue(QStringLiteral("simulator"), transport() == Transport::Simulator);
 }
 
 void ConnectionPage::connectNow()
@@ -560,6 +532,10 @@ void ConnectionPage::updateState()
     // Settings are what the link was opened with: changing them needs a reconnect.
     for (QGroupBox *box : {m_transportBox, m_serialBox, m_tcpBox, m_deviceBox})
         box->setEnabled(idle);
+    // The line options only, not the echo offer's button: it reconnects on its own.
+    m_lineBox->answerDelay()->setEnabled(idle);
+    m_lineBox->turnaround()->setEnabled(idle);
+    m_lineBox->echo()->setEnabled(idle);
     m_connect->setEnabled(idle);
     m_disconnect->setEnabled(!idle);
     m_scan->setEnabled(transport() != Transport::Simulator);
