@@ -43,6 +43,22 @@
         <source>id</source>
         <translation>id</translation>
     </message>
+    <message>
+        <source>Connect at start to this RS-485/Ethernet converter in transparent mode (RTU over TCP).</source>
+        <translation>Connect at start to this RS-485/Ethernet converter in transparent mode (RTU over TCP).</translation>
+    </message>
+    <message>
+        <source>The adapter echoes what it sends.</source>
+        <translation>The adapter echoes what it sends.</translation>
+    </message>
+    <message>
+        <source>Parity: none, even or odd (default none).</source>
+        <translation>Parity: none, even or odd (default none).</translation>
+    </message>
+    <message>
+        <source>parity</source>
+        <translation>parity</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -2251,6 +2267,10 @@
         <source>the controller does not answer at id %1: %2</source>
         <translation>the controller does not answer at id %1: %2</translation>
     </message>
+    <message>
+        <source>link: %1</source>
+        <translation>link: %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DerivedValues</name>
@@ -3678,6 +3698,21 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the answer delay (%1 ms) must be shorter than the timeout (%2 ms)</source>
         <translation>the answer delay (%1 ms) must be shorter than the timeout (%2 ms)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::LinkStats</name>
+    <message>
+        <source>%1 requests, %2 answers; %3 timeouts, %4 CRC errors, %5 exceptions, %6 stale or foreign answers discarded, %7 echoes</source>
+        <translation>%1 requests, %2 answers; %3 timeouts, %4 CRC errors, %5 exceptions, %6 stale or foreign answers discarded, %7 echoes</translation>
+    </message>
+    <message>
+        <source>; round trips %1-%2 ms (mean %3 ms)</source>
+        <translation>; round trips %1-%2 ms (mean %3 ms)</translation>
+    </message>
+    <message>
+        <source>; suggested timeout %1 ms (now %2 ms)</source>
+        <translation>; suggested timeout %1 ms (now %2 ms)</translation>
     </message>
 </context>
 <context>

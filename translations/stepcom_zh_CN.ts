@@ -43,6 +43,22 @@
         <source>id</source>
         <translation>ID</translation>
     </message>
+    <message>
+        <source>Connect at start to this RS-485/Ethernet converter in transparent mode (RTU over TCP).</source>
+        <translation>启动时通过这个透明传输模式的 RS-485/以太网转换器连接（RTU over TCP）。</translation>
+    </message>
+    <message>
+        <source>The adapter echoes what it sends.</source>
+        <translation>适配器会回显发送的数据。</translation>
+    </message>
+    <message>
+        <source>Parity: none, even or odd (default none).</source>
+        <translation>校验位：none、even 或 odd（默认 none）。</translation>
+    </message>
+    <message>
+        <source>parity</source>
+        <translation>校验位</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -2239,6 +2255,10 @@
         <source>the controller does not answer at id %1: %2</source>
         <translation>控制器在 ID %1 上不应答：%2</translation>
     </message>
+    <message>
+        <source>link: %1</source>
+        <translation>链路：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DerivedValues</name>
@@ -3662,6 +3682,21 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the answer delay (%1 ms) must be shorter than the timeout (%2 ms)</source>
         <translation>应答延时（%1 ms）必须短于超时（%2 ms）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::LinkStats</name>
+    <message>
+        <source>%1 requests, %2 answers; %3 timeouts, %4 CRC errors, %5 exceptions, %6 stale or foreign answers discarded, %7 echoes</source>
+        <translation>%1 个请求，%2 个应答；%3 次超时，%4 次 CRC 错误，%5 次异常，丢弃 %6 个过时或无关的应答，%7 次回显</translation>
+    </message>
+    <message>
+        <source>; round trips %1-%2 ms (mean %3 ms)</source>
+        <translation>；往返时间 %1-%2 ms（平均 %3 ms）</translation>
+    </message>
+    <message>
+        <source>; suggested timeout %1 ms (now %2 ms)</source>
+        <translation>；建议超时 %1 ms（当前 %2 ms）</translation>
     </message>
 </context>
 <context>

@@ -111,19 +111,14 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         o.target = Target::Tcp;
         o.link.transport = LinkSettings::Transport::Tcp;
         const QString value = parser.value(QStringLiteral("tcp"));
-        const qsizetype colon = value.lastIndexOf(QLatin1Char(':'));
-        o.link.host = colon < 0 ? value : value.left(colon);
-        o.link.tcpPort = 502;
-        if (colon >= 0 && !toInt(value.mid(colon + 1), &o.link.tcpPort))
+        if (!LinkSettings::parseHostPort(value, 502, &o.link.host, &o.link.tcpPort))
             return tr("--tcp: '%1' is not HOST[:PORT]").arg(value);
     } else if (parser.isSet(QStringLiteral("rtu-tcp"))) {
         // Reached like a Modbus TCP gateway (a host, no baud of ours), framed as RTU.
         o.target = Target::Tcp;
         o.link.transport = LinkSettings::Transport::RtuTcp;
         const QString value = parser.value(QStringLiteral("rtu-tcp"));
-        const qsizetype colon = value.lastIndexOf(QLatin1Char(':'));
-        o.link.host = colon < 0 ? QString() : value.left(colon);
-        if (colon <= 0 || !toInt(value.mid(colon + 1), &o.link.tcpPort))
+        if (!LinkSettings::parseHostPort(value, 0, &o.link.host, &o.link.tcpPort))
             return tr("--rtu-tcp: '%1' is not HOST:PORT (converters have no standard port: "
                       "see its settings page)")
                 .arg(value);

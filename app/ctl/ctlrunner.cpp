@@ -198,6 +198,11 @@ void CtlRunner::finish(int code)
         printMulti();
     }
     m_finished = true;
+    // The line's health and the timeout it suggests, for whoever tunes the link (monitor runs
+    // long enough to say something; other commands with --verbose).
+    if (m_session && (m_options.verbose || m_options.command == QLatin1String("monitor")))
+        m_err << tr("link: %1").arg(m_session->linkStats().summary(m_session->settings().timeoutMs))
+              << Qt::endl;
     m_out.flush();
     m_err.flush();
     if (m_session && m_session->linkState() != DeviceSession::LinkState::Disconnected)

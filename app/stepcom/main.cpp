@@ -10,6 +10,7 @@
 #include <QTextStream>
 
 #include <memory>
+#include <optional>
 
 using namespace stepcom;
 
@@ -29,6 +30,18 @@ struct Options
         QStringLiteral("tcp"),
         QCoreApplication::translate("stepcom", "Connect to this Modbus TCP gateway at start."),
         QCoreApplication::translate("stepcom", "host:port")};
+    QCommandLineOption rtuTcp{
+        QStringLiteral("rtu-tcp"),
+        QCoreApplication::translate("stepcom", "Connect at start to this RS-485/Ethernet "
+                                               "converter in transparent mode (RTU over TCP)."),
+        QCoreApplication::translate("stepcom", "host:port")};
+    QCommandLineOption echo{
+        QStringLiteral("echo"),
+        QCoreApplication::translate("stepcom", "The adapter echoes what it sends.")};
+    QCommandLineOption parity{
+        QStringLiteral("parity"),
+        QCoreApplication::translate("stepcom", "Parity: none, even or odd (default none)."),
+        QCoreApplication::translate("stepcom", "parity"), QStringLiteral("none")};
     QCommandLineOption baud{QStringLiteral("baud"),
                             QCoreApplication::translate("stepcom", "Baud rate (default 9600)."),
                             QCoreApplication::translate("stepcom", "rate"), QStringLiteral("9600")};
@@ -41,21 +54,64 @@ struct Options
         parser.addHelpOption();
         parser.addVersionOption();
         parser.addOption(Translators::languageOption());
-        parser.addOptions({sim, port, tcp, baud, id});
+        parser.addOptions({sim, port, tcp, rtuTcp, baud, parity, id, echo});
     }
 };
 
-// --help, --version and a mistyped command line are answered in the terminal and need no
-// display: deciding before QApplication exists keeps them working over ssh and in packaging
+QString linkFromArguments(const QCommandLineParser &parser, const Options &options,
+                          std::optional<LinkSettings> *out)
+{
+    const auto tr = [](const char *text) { return QCoreApplication::translate("stepcom", text); };
+    const int targets = int(parser.isSet(options.sim)) + int(parser.isSet(options.port)) +
+                        int(parser.isSet(options.tcp)) + int(parser.isSet(options.rtuTcp));
+    if (targets > 1)
+        return tr("give only one of --sim, --port, --tcp and --rtu-tcp");
+    LinkSettings s;
+    if (parser.isSet(options.port)) {
+        s.portName = parser.value(options.port);
+    } else if (parser.isSet(options.tcp)) {
+        s.transport = LinkSettings::Transport::Tcp;
+        if (!LinkSettings::parseHostPort(parser.value(options.tcp), 502, &s.host, &s.tcpPort))
+            return tr("--tcp: '%1' is not HOST[:PORT]").arg(parser.value(options.tcp));
+    } else if (parser.isSet(options.rtuTcp)) {
+        s.transport = LinkSettings::Transport::RtuTcp;
+        if (!LinkSettings::parseHostPort(parser.value(options.rtuTcp), 0, &s.host, &s.tcpPort))
+            return tr("--rtu-tcp: '%1' is not HOST:PORT").arg(parser.value(options.rtuTcp));
+    } else {
+        return {};
+    }
+    bool ok = false;
+    s.baud = parser.value(options.baud).toInt(&ok);
+    if (!ok)
+        return tr("--baud: '%1' is not a number").arg(parser.value(options.baud));
+    s.deviceId = parser.value(options.id).toInt(&ok);
+    if (!ok)
+        return tr("--id: '%1' is not a number").arg(parser.value(options.id));
+    if (!LinkSettings::parseParity(parser.value(options.parity), &s.parity))
+        return tr("--parity: '%1' is not none, even or odd").arg(parser.value(options.parity));
+    s.echo = parser.isSet(options.echo);
+    if (s.echo && s.transport == LinkSettings::Transport::Tcp)
+        return tr("--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp");
+    if (const QString problem = s.validate(); !problem.isEmpty())
+        return problem;
+    *out = s;
+    return {};
+}
+
+// --help, --version, a mistyped command line and a bad link value are answered in the terminal and
+// need no display: deciding before QApplication exists keeps them working over ssh and in packaging
 // checks (a QApplication without a display aborts).
 bool answersWithoutWindow(const QStringList &arguments)
 {
     QCommandLineParser probe;
-    Options().addTo(probe);
+    const Options options;
+    options.addTo(probe);
     if (!probe.parse(arguments))
         return true;
+    std::optional<LinkSettings> link;
     return probe.isSet(QStringLiteral("help")) || probe.isSet(QStringLiteral("help-all")) ||
-           probe.isSet(QStringLiteral("version"));
+           probe.isSet(QStringLiteral("version")) ||
+           !linkFromArguments(probe, options, &link).isEmpty();
 }
 
 } // namespace
@@ -98,26 +154,20 @@ int main(int argc, char *argv[])
         "stepcom", "Commissioning window for a 2-axis stepper controller (Modbus RTU/TCP)."));
     parser.process(*app); // --help, --version and mistakes end here
 
+    // The link to open at start, if any; a mistyped value is answered in the terminal.
+    std::optional<LinkSettings> startLink;
+    if (const auto problem = linkFromArguments(parser, options, &startLink); !problem.isEmpty()) {
+        QTextStream(stderr) << QStringLiteral("stepcom: ") << problem << Qt::endl;
+        return 2;
+    }
+
     DeviceSession session;
     session.setSimulator(std::make_unique<BuiltinSimulator>()); // the Connection page offers it
     MainWindow window(&session);
     window.show();
-    if (parser.isSet(options.sim)) {
+    if (parser.isSet(options.sim))
         session.connectSimulator();
-    } else if (parser.isSet(options.port) || parser.isSet(options.tcp)) {
-        LinkSettings s;
-        s.baud = parser.value(options.baud).toInt();
-        s.deviceId = parser.value(options.id).toInt();
-        if (parser.isSet(options.port)) {
-            s.portName = parser.value(options.port);
-        } else {
-            s.transport = LinkSettings::Transport::Tcp;
-            const QString value = parser.value(options.tcp);
-            const qsizetype colon = value.lastIndexOf(QLatin1Char(':'));
-            s.host = colon < 0 ? value : value.left(colon);
-            s.tcpPort = colon < 0 ? 502 : value.mid(colon + 1).toInt();
-        }
-        session.connectTo(s); // a bad value is reported by the session, in the window
-    }
+    else if (startLink)
+        session.connectTo(*startLink); // an unusable port is reported by the session, in the window
     return QCoreApplication::exec();
 }

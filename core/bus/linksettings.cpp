@@ -29,6 +29,26 @@ QString LinkSettings::parityName(QSerialPort::Parity parity)
     }
 }
 
+bool LinkSettings::parseHostPort(const QString &text, int defaultPort, QString *host, int *port)
+{
+    const QString t = text.trimmed();
+    const qsizetype colon = t.lastIndexOf(QLatin1Char(':'));
+    if (colon < 0) {
+        if (defaultPort <= 0 || t.isEmpty())
+            return false;
+        *host = t;
+        *port = defaultPort;
+        return true;
+    }
+    bool ok = false;
+    const int p = t.mid(colon + 1).toInt(&ok);
+    if (colon == 0 || !ok || p < 1 || p > 65535)
+        return false;
+    *host = t.left(colon);
+    *port = p;
+    return true;
+}
+
 bool LinkSettings::parseParity(const QString &text, QSerialPort::Parity *parity)
 {
     const QString t = text.trimmed().toLower();

@@ -47,6 +47,8 @@ struct LinkSettings
     static const QList<int> &supportedBauds();
     static QString parityName(QSerialPort::Parity parity);
     static bool parseParity(const QString &text, QSerialPort::Parity *parity);
+    // "HOST:PORT" or, when `defaultPort` > 0, "HOST" alone; false when it is neither.
+    static bool parseHostPort(const QString &text, int defaultPort, QString *host, int *port);
 };
 
 bool operator==(const LinkSettings &a, const LinkSettings &b);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QMap>
+#include <QString>
 
 namespace stepcom {
 
@@ -32,6 +33,9 @@ struct LinkStats
     // An answer timeout that fits the round trips measured so far (the slowest with half
     // again plus 50 ms, in steps of 50 ms, at least 100 ms); -1 until 5 answers were timed.
     int suggestedTimeoutMs() const;
+    // One line for a log or a terminal: the counts, the round trips and, once known, the
+    // suggested timeout against `timeoutMs` (the one in use).
+    QString summary(int timeoutMs) const;
 };
 
 } // namespace stepcom

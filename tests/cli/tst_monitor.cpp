@@ -6,6 +6,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTest>
 
 using namespace stepcom;
@@ -102,6 +103,13 @@ private Q_SLOTS:
         // the simulator's carriages stand at their start, in engineering units
         QCOMPARE(r.lines.first().value("motor1.running").toInt(), 0);
         QCOMPARE(r.lines.first().value("io.out1").toInt(), 0);
+        // At the end, on stderr: the line's counts and the timeout its round trips suggest.
+        const QRegularExpression summary(
+            QStringLiteral("link: (\\d+) requests, (\\d+) answers; 0 timeouts.*round trips "
+                           "\\d+-\\d+ ms .*suggested timeout \\d+ ms \\(now 500 ms\\)"));
+        const QRegularExpressionMatch m = summary.match(r.err);
+        QVERIFY2(m.hasMatch(), qPrintable(r.err));
+        QVERIFY(m.captured(2).toInt() >= 10); // five samples, two reads each
     }
 
     void positionsFollowAMovingMotor_data()

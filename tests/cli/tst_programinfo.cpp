@@ -189,6 +189,21 @@ private Q_SLOTS:
         QTest::newRow("-h zh_CN") << QStringList{QStringLiteral("--lang"), QStringLiteral("zh_CN"),
                                                  QStringLiteral("-h")}
                                   << 0 << QStringLiteral("--port <");
+        QTest::newRow("bad --rtu-tcp")
+            << QStringList{QStringLiteral("--rtu-tcp"), QStringLiteral("10.0.0.7")} << 2
+            << QStringLiteral("--rtu-tcp: '10.0.0.7' is not HOST:PORT");
+        QTest::newRow("bad --parity")
+            << QStringList{QStringLiteral("--port"), QStringLiteral("/dev/ttyUSB0"),
+                           QStringLiteral("--parity"), QStringLiteral("mark")}
+            << 2 << QStringLiteral("--parity: 'mark' is not none, even or odd");
+        QTest::newRow("--echo over Modbus TCP")
+            << QStringList{QStringLiteral("--tcp"), QStringLiteral("10.0.0.7"),
+                           QStringLiteral("--echo")}
+            << 2 << QStringLiteral("--echo: Modbus TCP has no echo");
+        QTest::newRow("two targets")
+            << QStringList{QStringLiteral("--sim"), QStringLiteral("--port"),
+                           QStringLiteral("/dev/ttyUSB0")}
+            << 2 << QStringLiteral("give only one of");
         QTest::newRow("unknown option")
             << QStringList{QStringLiteral("--frobnicate")} << 1 << QStringLiteral("frobnicate");
     }
