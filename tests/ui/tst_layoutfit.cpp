@@ -287,6 +287,12 @@ private Q_SLOTS:
             Page *page = window.pages().at(i);
             const QString context = page->title();
             checkTree(&window, context);
+            // What a page needs once shown (and its values read) stays the window's minimum.
+            const QSize needs = window.minimumSizeHint().expandedTo(window.minimumSize());
+            if (needs.width() > screen.width() || needs.height() > screen.height())
+                problem(context, QStringLiteral("the window cannot shrink below %1×%2 now")
+                                     .arg(needs.width())
+                                     .arg(needs.height()));
             QToolButton *estop = window.emergencyStopButton();
             const QRect estopRect(estop->mapTo(&window, QPoint(0, 0)), estop->size());
             if (!estop->isVisible() || !window.rect().contains(estopRect))
