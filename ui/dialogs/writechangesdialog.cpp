@@ -91,8 +91,8 @@ WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, const QStrin
     layout->addWidget(m_problemsLabel);
     layout->addWidget(m_table);
     layout->addWidget(buttons);
-    resize(fitToScreen(this, sizeHint().expandedTo(QSize(fontMetrics().averageCharWidth() * 80,
-                                                         fontMetrics().height() * 16))));
+    resize(fitToScreen(this, sizeHint().expandedTo(QSize(fontMetrics().averageCharWidth() * 110,
+                                                         fontMetrics().height() * 24))));
 }
 
 void WriteChangesDialog::setProblems(const QStringList &problems)
