@@ -26,6 +26,7 @@
 #include "widgets/messageview.h"
 #include "widgets/offlinebanner.h"
 #include "widgets/statusdock.h" // monitoring (issue 5)
+#include "widgets/statusmessage.h"
 #include "widgets/trafficview.h"
 #include "widgets/travellimitseditor.h" // issue 17
 #include "writeflow.h"
@@ -112,28 +113,24 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     });
     connect(m_profiles, &ProfileActions::finished, this, // profiles (issue 7)
             [this](bool ok, const QString &text) {
-                m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,
-                                text);
-                statusBar()->showMessage(text, 5000);
+                m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,
+                               text);
             });
+    // Passing messages left of the link status, cut short before they reach it (issue 19).
+    m_status = new StatusMessage(m_messages, this);
+    statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_linkStatus);
     // --- working without the machine (issue 18) ---
     m_profiles->setOfflineOpener([this](const QString &path) { return m_offline->openFile(path); });
     connect(m_offline, &OfflineActions::finished, this, [this](bool ok, const QString &text) {
-        m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning,
-                        text);
-        statusBar()->showMessage(text, 5000);
+        m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning, text);
     });
     connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
     // --- end working without the machine ---
 
     connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
     connect(session->parameters(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
-    connect(session, &DeviceSession::message, this,
-            [this](DeviceSession::Severity s, const QString &text) {
-                m_messages->add(s, text);
-                statusBar()->showMessage(text, 5000);
-            });
+    connect(session, &DeviceSession::message, m_status, &StatusMessage::post);
     // On to the first motor once the controller answered, not when the port opened: a port
     // with nobody behind it keeps the Connection page and its "not answering" hints in view.
     connect(session->health(), &LinkHealth::stateChanged, this, [this](LinkHealth::State s) {
@@ -499,7 +496,7 @@ void MainWindow::changeEvent(QEvent *event)
     if (event->type() == QEvent::LanguageChange) {
         retranslate();
         // A passing message was made in the old language; the messages dock keeps it.
-        statusBar()->clearMessage();
+        m_status->clearText();
     }
     if (event->type() == QEvent::ActivationChange && !isActiveWindow())
         m_session->stopJogging(DeviceSession::JogStop::FocusLost);

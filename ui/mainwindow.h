@@ -20,6 +20,7 @@ class EmergencyStop;
 class GuideWindow;
 class LinkStatus;
 class MessageView;
+class StatusMessage;
 class MotionPage;     // jogging (issue 5)
 class OfflineActions; // working without the machine (issue 18)
 class OfflineBanner;
@@ -108,6 +109,7 @@ private:
     StatusDock *m_statusDock = nullptr;     // monitoring (issue 5)
     DeviceListDock *m_deviceDock = nullptr; // several controllers on one line (issue 16)
     LinkStatus *m_linkStatus = nullptr;
+    StatusMessage *m_status = nullptr;    // issue 19
     MotionPage *m_motion = nullptr;       // jogging (issue 5)
     ProfileActions *m_profiles = nullptr; // profiles (issue 7)
     OfflineActions *m_offline = nullptr;  // issue 18

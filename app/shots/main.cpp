@@ -1,6 +1,7 @@
 // stepcom-shots: the user guide's screenshots, taken from the real window on the built-in
 // simulator (scripts/screenshots.sh runs it offscreen). Not installed; a tool of the docs.
 #include "language.h"
+#include "laptopscenes.h"
 #include "scenes.h"
 #include "shooter.h"
 
@@ -18,15 +19,16 @@ using namespace stepcom;
 int main(int argc, char *argv[])
 {
     // The window keeps itself inside its screen (MainWindow::fitIntoScreen): offscreen, give it
-    // a screen larger than any picture size asked for (the plugin's default is 800×600).
+    // a screen larger than any picture size asked for (the plugin's default is 800×600), and
+    // beside it the small laptop screens of laptopscenes.cpp.
     QTemporaryDir screenDir;
     if (qgetenv("QT_QPA_PLATFORM") == "offscreen" && screenDir.isValid()) {
         const QString config = screenDir.filePath(QStringLiteral("screen.json"));
         QFile file(config);
         if (file.open(QIODevice::WriteOnly) &&
             file.write(R"({"screens": [{"name": "shots", "x": 0, "y": 0, "width": 3840, )"
-                       R"("height": 2400, "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]})") >
-                0) {
+                       R"("height": 2400, "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}, )" +
+                       laptopscenes::screensJson()) > 0) {
             file.close();
             qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
         }

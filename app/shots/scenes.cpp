@@ -5,6 +5,7 @@
 #include "dialogs/busscandialog.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/writechangesdialog.h"
+#include "laptopscenes.h"
 #include "mainwindow.h"
 #include "offlinescenes.h"
 #include "pages/checklistpage.h"
@@ -519,6 +520,9 @@ const QList<Scene> &scenes()
         {QStringLiteral("write-changes"), W::AfterPages, &writeChanges},
         {QStringLiteral("checklist-direction"), W::AfterPages, &checklistDirection},
         {QStringLiteral("checklist-miswired"), W::AfterPages, &checklistMiswired},
+        // Small laptop screens (issue 19), while connected: before port-missing.
+        {QStringLiteral("laptop-1024x600"), W::AfterPages, &laptopscenes::small},
+        {QStringLiteral("laptop-1366x768-150"), W::AfterPages, &laptopscenes::scaled},
         {QStringLiteral("port-missing"), W::AfterPages, &portMissing},
         // Without a controller (issue 18): after port-missing, which leaves it disconnected.
         {QStringLiteral("offline-editing"), W::AfterPages, &offlinescenes::editing},

@@ -13,7 +13,9 @@
 #include <QImage>
 #include <QPainter>
 #include <QPixmap>
+#include <QScreen>
 #include <QTextStream>
+#include <QWindow>
 
 namespace stepcom {
 
@@ -185,6 +187,49 @@ void Shooter::shoot(const QString &fileName, int page, std::function<QWidget *()
             return;
         }
         save(composite(m_window.get(), over), fileName);
+    });
+}
+
+void Shooter::shootOnScreen(const QString &fileName, int page, const QString &screenName)
+{
+    QScreen *target = nullptr;
+    for (QScreen *screen : QGuiApplication::screens()) {
+        if (screen->name() == screenName)
+            target = screen;
+    }
+    if (!target) {
+        m_script.then([this, screenName] {
+            m_script.fail(QStringLiteral("no screen %1 (run offscreen, as scripts/screenshots.sh "
+                                         "does)")
+                              .arg(screenName));
+        });
+        return;
+    }
+    const auto moveTo = [this](QScreen *screen, QSize size) {
+        m_window->windowHandle()->setScreen(screen);
+        m_window->setGeometry(QRect(screen->availableGeometry().topLeft(), size));
+    };
+    // Twice: on the small screen the window first moves its status dock below the page (its
+    // minimum width shrinks then), and only then can it be as narrow as the screen.
+    m_script.then([moveTo, target] { moveTo(target, target->availableGeometry().size()); });
+    m_script.sleep(kSettleMs);
+    m_script.then([moveTo, target] { moveTo(target, target->availableGeometry().size()); });
+    m_script.waitFor(QStringLiteral("the window to fill %1").arg(screenName), [this, target] {
+        return m_window->screen() == target &&
+               m_window->size() == target->availableGeometry().size();
+    });
+    m_script.then([this, page] {
+        if (page >= 0)
+            m_window->showPage(page);
+    });
+    m_script.sleep(kSettleMs);
+    m_script.then([this, fileName, moveTo] {
+        save(composite(m_window.get(), nullptr), fileName);
+        moveTo(QGuiApplication::primaryScreen(), m_options.size);
+    });
+    m_script.waitFor(QStringLiteral("the window back on the first screen"), [this] {
+        return m_window->screen() == QGuiApplication::primaryScreen() &&
+               m_window->size() == m_options.size;
     });
 }
 

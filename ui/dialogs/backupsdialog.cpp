@@ -1,5 +1,6 @@
 #include "dialogs/backupsdialog.h"
 
+#include "dialogs/fittoscreen.h"
 #include "profile/backupstore.h"
 
 #include <QHBoxLayout>
@@ -26,7 +27,14 @@ BackupsDialog::BackupsDialog(const RegisterMap &map, const QString &directory, Q
     m_where->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_list->setRootIsDecorated(false);
     m_list->setColumnCount(3);
-    m_list->header()->setStretchLastSection(true);
+    // The time as wide as it needs; the device (a long /dev/serial/by-id name) and what
+    // happened share the rest, cut in the middle where the window is narrow, whole in the
+    // tooltip: no sideways scrolling on a small screen.
+    m_list->header()->setStretchLastSection(false);
+    m_list->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    m_list->header()->setSectionResizeMode(1, QHeaderView::Stretch);
+    m_list->header()->setSectionResizeMode(2, QHeaderView::Stretch);
+    m_list->setTextElideMode(Qt::ElideMiddle);
     m_restore->setObjectName(QStringLiteral("restoreButton"));
     m_restore->setAutoDefault(false);
     auto *buttons = new QHBoxLayout;
@@ -48,6 +56,9 @@ BackupsDialog::BackupsDialog(const RegisterMap &map, const QString &directory, Q
     });
     retranslate();
     reload();
+    // Room for the time, a /dev/serial/by-id name and what happened, within the screen.
+    resize(fitToScreen(this,
+                       QSize(fontMetrics().averageCharWidth() * 110, fontMetrics().height() * 24)));
 }
 
 void BackupsDialog::reload()
@@ -60,7 +71,8 @@ void BackupsDialog::reload()
         item->setText(1, e.error.isEmpty() ? e.device : QString());
         item->setText(2, e.error.isEmpty() ? BackupStore::operationLabel(e.operation)
                                            : tr("cannot be read: %1").arg(e.error));
-        item->setToolTip(2, e.path);
+        item->setToolTip(1, item->text(1));
+        item->setToolTip(2, QStringLiteral("%1\n%2").arg(item->text(2), e.path));
         item->setData(0, Qt::UserRole, e.path);
         item->setData(0, Qt::UserRole + 1, e.error);
     }

@@ -1,5 +1,6 @@
 #include "dialogs/profilefilesdialog.h"
 
+#include "dialogs/fittoscreen.h"
 #include "language.h"
 #include "map/registermap.h"
 
@@ -55,7 +56,8 @@ ProfileFilesDialog::ProfileFilesDialog(const RegisterMap &map, const Profile &a,
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
     connect(m_differencesOnly, &QCheckBox::toggled, this, &ProfileFilesDialog::updateFilter);
     retranslate();
-    resize(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 120, fontMetrics().height() * 40);
+    resize(fitToScreen(this, QSize(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 120,
+                                   fontMetrics().height() * 40)));
 }
 
 QString ProfileFilesDialog::groupName(Group group) const

@@ -1,6 +1,7 @@
 #include "dialogs/writechangesdialog.h"
 
 #include "device/parameterstore.h"
+#include "dialogs/fittoscreen.h"
 #include "language.h"
 
 #include <QDialogButtonBox>
@@ -61,8 +62,13 @@ WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, const QStrin
         value->setFont(bold);
         m_table->setItem(row, 3, value);
     }
+    // The parameter's name takes the room the numbers leave and wraps in it: no sideways
+    // scrolling on a small screen, nothing cut.
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    m_table->setWordWrap(true);
+    m_table->setTextElideMode(Qt::ElideNone);
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_summary->setWordWrap(true);
     m_summary->setText(tr("%n parameter(s) will be written and then read back to verify. "
                           "They stay in the controller's RAM until you save to flash.",
@@ -85,8 +91,8 @@ WriteChangesDialog::WriteChangesDialog(const ParameterStore &store, const QStrin
     layout->addWidget(m_problemsLabel);
     layout->addWidget(m_table);
     layout->addWidget(buttons);
-    resize(sizeHint().expandedTo(QSize(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 80,
-                                       fontMetrics().height() * 16)));
+    resize(fitToScreen(this, sizeHint().expandedTo(QSize(fontMetrics().averageCharWidth() * 110,
+                                                         fontMetrics().height() * 24))));
 }
 
 void WriteChangesDialog::setProblems(const QStringList &problems)

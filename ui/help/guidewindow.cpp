@@ -1,5 +1,6 @@
 #include "help/guidewindow.h"
 
+#include "dialogs/fittoscreen.h"
 #include "help/userguide.h"
 
 #include <QAbstractTextDocumentLayout>
@@ -8,8 +9,11 @@
 #include <QEvent>
 #include <QFileInfo>
 #include <QHBoxLayout>
+#include <QImage>
 #include <QLabel>
+#include <QPixmap>
 #include <QScrollBar>
+#include <QStyle>
 #include <QTextBlock>
 #include <QTextBrowser>
 #include <QTimer>
@@ -52,9 +56,62 @@ GuideWindow::GuideWindow(QWidget *parent)
         if (block.isValid())
             scrollTo(block);
     });
+    // The pictures follow the view's width (fitImages).
+    m_browser->viewport()->installEventFilter(this);
+    // A hundred characters by forty lines, but never larger than the screen (1366×768 at
+    // 150 % leaves 910×512), with room for the window's frame.
     const QFontMetrics fm = fontMetrics();
-    resize(fm.horizontalAdvance(QLatin1Char('x')) * 100, fm.height() * 40);
+    resize(
+        fitToScreen(this, QSize(fm.horizontalAdvance(QLatin1Char('x')) * 100, fm.height() * 40)));
     retranslate();
+}
+
+bool GuideWindow::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == m_browser->viewport() && event->type() == QEvent::Resize)
+        fitImages();
+    return QWidget::eventFilter(watched, event);
+}
+
+void GuideWindow::fitImages()
+{
+    QTextDocument *doc = m_browser->document();
+    // Room as if the vertical scroll bar were shown: the long guide has one, and the pictures'
+    // widths must not make it come and go.
+    const int bar = m_browser->verticalScrollBar()->isVisible()
+                        ? 0
+                        : m_browser->style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+    const int room = int(m_browser->viewport()->width() - bar - 2 * doc->documentMargin());
+    if (room <= 0)
+        return;
+    for (QTextBlock b = doc->begin(); b.isValid(); b = b.next()) {
+        for (auto it = b.begin(); !it.atEnd(); ++it) {
+            const QTextFragment fragment = it.fragment();
+            if (!fragment.charFormat().isImageFormat())
+                continue;
+            QTextImageFormat format = fragment.charFormat().toImageFormat();
+            const QVariant resource =
+                doc->resource(QTextDocument::ImageResource, QUrl(format.name()));
+            QImage picture = resource.value<QImage>();
+            if (picture.isNull() && !resource.value<QPixmap>().isNull())
+                picture = resource.value<QPixmap>().toImage();
+            if (picture.isNull())
+                picture.loadFromData(resource.toByteArray());
+            if (picture.isNull())
+                continue;
+            // Never wider than the view and never enlarged; the height follows (aspect kept).
+            const int natural = int(picture.width() / picture.devicePixelRatio());
+            const int width = std::min(natural, room);
+            if (format.hasProperty(QTextFormat::ImageWidth) && std::abs(format.width() - width) < 1)
+                continue;
+            format.setWidth(width);
+            format.clearProperty(QTextFormat::ImageHeight);
+            QTextCursor cursor(doc);
+            cursor.setPosition(fragment.position());
+            cursor.setPosition(fragment.position() + fragment.length(), QTextCursor::KeepAnchor);
+            cursor.setCharFormat(format);
+        }
+    }
 }
 
 bool GuideWindow::load(const QString &language, QString *error)
@@ -78,6 +135,9 @@ bool GuideWindow::load(const QString &language, QString *error)
     m_browser->setSearchPaths({QFileInfo(path).absolutePath()});
     m_browser->setSource(QUrl::fromLocalFile(path), QTextDocument::MarkdownResource);
     m_browser->clearHistory();
+    // Fitting the pictures edits formats: nothing to undo in a guide.
+    m_browser->document()->setUndoRedoEnabled(false);
+    fitImages();
     m_file = path;
     m_language = language;
     fillContents();
@@ -149,6 +209,7 @@ void GuideWindow::followLink(const QUrl &url)
     }
     if (resolved.isLocalFile() && resolved.fileName().endsWith(QLatin1String(".md"))) {
         m_browser->setSource(resolved, QTextDocument::MarkdownResource);
+        fitImages();
         return;
     }
     QDesktopServices::openUrl(resolved); // the web and other files: the desktop's own programs

@@ -31,12 +31,15 @@ public:
 
 protected:
     void changeEvent(QEvent *event) override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     bool load(const QString &language, QString *error);
     void scrollTo(const QTextBlock &block);
     void followLink(const QUrl &url);
     void fillContents();
+    // Pictures wider than the view are scaled down to its width (aspect kept), never up.
+    void fitImages();
     void retranslate();
 
     QTextBrowser *m_browser;

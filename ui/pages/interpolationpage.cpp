@@ -3,28 +3,15 @@
 #include "device/devicesession.h"
 #include "widgets/interpolationpreview.h"
 #include "widgets/patheditor.h"
+#include "widgets/verticalscrollarea.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>
-#include <QScrollArea>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QVBoxLayout>
 
 namespace stepcom {
-
-namespace {
-
-QScrollArea *scrolled(QWidget *content, QWidget *parent)
-{
-    auto *scroll = new QScrollArea(parent);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(content);
-    return scroll;
-}
-
-} // namespace
 
 InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
@@ -44,7 +31,8 @@ InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
         QGroupBox *run = editor->runBox();
         if (QLayout *form = editor->layout())
             form->removeWidget(run);
-        column->addWidget(scrolled(editor, tab), 1);
+        // Up and down only: read values made it scroll sideways at 1024×600 (issue 19).
+        column->addWidget(new VerticalScrollArea(editor, tab), 1);
         column->addWidget(run);
         m_tabs->addTab(tab, QString());
     }

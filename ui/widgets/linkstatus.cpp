@@ -2,6 +2,7 @@
 
 #include "device/devicesession.h"
 #include "device/linkhealth.h"
+#include "widgets/elidedlabel.h"
 
 #include <QDateTime>
 #include <QEvent>
@@ -14,14 +15,14 @@ LinkStatus::LinkStatus(DeviceSession *session, QWidget *parent)
     : QWidget(parent)
     , m_session(session)
     , m_state(new QLabel(this))
-    , m_where(new QLabel(this))
-    , m_rate(new QLabel(this))
-    , m_errors(new QLabel(this))
+    , m_where(new ElidedLabel(this))
+    , m_rate(new ElidedLabel(this))
+    , m_errors(new ElidedLabel(this))
     , m_unsaved(new QLabel(this))
 {
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    for (QLabel *l : {m_unsaved, m_state, m_where, m_rate, m_errors})
+    for (QLabel *l : std::initializer_list<QLabel *>{m_unsaved, m_state, m_where, m_rate, m_errors})
         layout->addWidget(l);
     QFont bold = m_unsaved->font();
     bold.setBold(true);
@@ -77,30 +78,30 @@ void LinkStatus::refresh()
     m_state->setToolTip(health->state() == LinkHealth::State::NotAnswering
                             ? LinkHealth::likelyCauses()
                             : QString());
-    m_where->setText(m_session->linkState() == DeviceSession::LinkState::Disconnected
-                         ? QString()
-                         : m_session->settings().describe());
+    m_where->setFullText(m_session->linkState() == DeviceSession::LinkState::Disconnected
+                             ? QString()
+                             : m_session->settings().describe());
     const LinkStats &s = m_session->linkStats();
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     if (m_lastMs > 0 && now > m_lastMs && s.answers >= m_lastAnswers)
         m_perSecond = double(s.answers - m_lastAnswers) * 1000.0 / double(now - m_lastMs);
     m_lastAnswers = s.answers;
     m_lastMs = now;
-    m_rate->setText(m_session->isConnected() ? tr("%1 transactions/s · status %2 Hz")
-                                                   .arg(m_perSecond, 0, 'f', 1)
-                                                   .arg(m_session->statusRate(), 0, 'f', 1)
-                                             : QString());
+    m_rate->setFullText(m_session->isConnected() ? tr("%1 transactions/s · status %2 Hz")
+                                                       .arg(m_perSecond, 0, 'f', 1)
+                                                       .arg(m_session->statusRate(), 0, 'f', 1)
+                                                 : QString());
     // Counted from this connection's start (the session resets them on every connect).
-    m_errors->setText(tr("errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)")
-                          .arg(s.errors())
-                          .arg(s.timeouts)
-                          .arg(s.crcErrors)
-                          .arg(s.exceptions)
-                          .arg(s.stale + s.echoes));
+    m_errors->setFullText(tr("errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)")
+                              .arg(s.errors())
+                              .arg(s.timeouts)
+                              .arg(s.crcErrors)
+                              .arg(s.exceptions)
+                              .arg(s.stale + s.echoes));
     // The measured round trips, and the timeout they suggest (a line slower than the setting
     // times out where it need not; a much faster one waits longer than it need).
     const int suggested = s.suggestedTimeoutMs();
-    m_errors->setToolTip(
+    m_errors->setFullToolTip(
         suggested < 0 ? QString()
                       : tr("Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms "
                            "(now %5 ms)")

@@ -8,6 +8,7 @@ class QLabel;
 namespace stepcom {
 
 class DeviceSession;
+class ElidedLabel;
 
 // The status bar's right side: link state, port/baud/id, transactions per second, errors,
 // polling rate and the "not saved to flash" warning.
@@ -26,9 +27,11 @@ private:
 
     DeviceSession *m_session;
     QLabel *m_state;
-    QLabel *m_where;
-    QLabel *m_rate;
-    QLabel *m_errors;
+    // Where, how fast and how many errors give way on a narrow screen (cut, whole in the
+    // tooltip); the state and "not saved to flash" are always whole.
+    ElidedLabel *m_where;
+    ElidedLabel *m_rate;
+    ElidedLabel *m_errors;
     QLabel *m_unsaved;
     QTimer m_timer;
     quint64 m_lastAnswers = 0;

@@ -77,6 +77,9 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
         auto *name = new QLabel(m_resultBox);
         auto *value = new QLabel(m_resultBox);
         value->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        // "0.000 / 0.002 (difference 0.002, at most 0.010)" wraps rather than widening the
+        // page past a 1366×768 screen at 150 % (issue 19).
+        value->setWordWrap(true);
         m_rowLabels << qMakePair(name, label);
         m_results->addRow(name, value);
         return value;
