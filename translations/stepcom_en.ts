@@ -80,6 +80,87 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ApplyToDevicesDialog</name>
+    <message>
+        <source>&amp;Compare the ticked devices</source>
+        <translation>&amp;Compare the ticked devices</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+    <message>
+        <source>Apply %1 to several devices</source>
+        <translation>Apply %1 to several devices</translation>
+    </message>
+    <message>
+        <source>Tick the devices, compare, then uncheck what is not to be written. Each device&apos;s settings are saved as a backup before anything is written to it; every value written is read back. Device id and baud rate are never applied to several devices: one id for all would make them collide.</source>
+        <translation>Tick the devices, compare, then uncheck what is not to be written. Each device&apos;s settings are saved as a backup before anything is written to it; every value written is read back. Device id and baud rate are never applied to several devices: one id for all would make them collide.</translation>
+    </message>
+    <message>
+        <source>id %1</source>
+        <translation>id %1</translation>
+    </message>
+    <message>
+        <source>id %1 (%2)</source>
+        <translation>id %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Device / parameter</source>
+        <translation>Device / parameter</translation>
+    </message>
+    <message>
+        <source>Device holds</source>
+        <translation>Device holds</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profile</translation>
+    </message>
+    <message>
+        <source>Done:</source>
+        <translation>Done:</translation>
+    </message>
+    <message>
+        <source>Done, not everywhere:</source>
+        <translation>Done, not everywhere:</translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading %n device(s)…</source>
+        <translation>
+            <numerusform>Reading %n device…</numerusform>
+            <numerusform>Reading %n devices…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing has been written yet.</source>
+        <translation>Nothing has been written yet.</translation>
+    </message>
+    <message>
+        <source>Nothing to write: the devices hold the profile&apos;s values or could not be read.</source>
+        <translation>Nothing to write: the devices hold the profile&apos;s values or could not be read.</translation>
+    </message>
+    <message>
+        <source>Writing…</source>
+        <translation>Writing…</translation>
+    </message>
+    <message>
+        <source>Writing… this window stays open until every device has its result. E-STOP (F12) stops what is left.</source>
+        <translation>Writing… this window stays open until every device has its result. E-STOP (F12) stops what is left.</translation>
+    </message>
+    <message numerus="yes">
+        <source>&amp;Write %n value(s) to %1 device(s)</source>
+        <translation>
+            <numerusform>&amp;Write %n value to %1 device</numerusform>
+            <numerusform>&amp;Write %n values to %1 devices</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Write</source>
+        <translation>&amp;Write</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BackupGuard</name>
     <message>
         <source>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</source>
@@ -162,6 +243,25 @@
     <message>
         <source>Close</source>
         <translation>Close</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusDump</name>
+    <message>
+        <source>%1: no such folder</source>
+        <translation>%1: no such folder</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder</source>
+        <translation>%1 is not a folder</translation>
+    </message>
+    <message>
+        <source>%1: the folder cannot be written to</source>
+        <translation>%1: the folder cannot be written to</translation>
+    </message>
+    <message>
+        <source>Controller id %1</source>
+        <translation>Controller id %1</translation>
     </message>
 </context>
 <context>
@@ -419,6 +519,13 @@
     <message>
         <source>identify id %1</source>
         <translation>identify id %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusSweep</name>
+    <message>
+        <source>id %1 was not read: E-STOP</source>
+        <translation>id %1 was not read: E-STOP</translation>
     </message>
 </context>
 <context>
@@ -1810,10 +1917,6 @@
         <translation>distance</translation>
     </message>
     <message>
-        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
-        <translation>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</translation>
-    </message>
-    <message>
         <source>--id: %1</source>
         <translation>--id: %1</translation>
     </message>
@@ -1832,6 +1935,10 @@
     <message>
         <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
         <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</translation>
+    </message>
+    <message>
+        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump, report and command: each in turn on the one line, output keyed by id (report: one document).</source>
+        <translation>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump, report and command: each in turn on the one line, output keyed by id (report: one document).</translation>
     </message>
 </context>
 <context>
@@ -2129,10 +2236,6 @@
         <translation>%1: &apos;%2&apos; is not a number</translation>
     </message>
     <message>
-        <source>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</source>
-        <translation>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</translation>
-    </message>
-    <message>
         <source>id %1: %2</source>
         <translation>id %1: %2</translation>
     </message>
@@ -2171,6 +2274,40 @@
     <message>
         <source>the controller does not answer at id %1: %2</source>
         <translation>the controller does not answer at id %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, diff, apply, dump, report and command (without --wait)</source>
+        <translation>%1: give one device id; several ids work with read, diff, apply, dump, report and command (without --wait)</translation>
+    </message>
+    <message>
+        <source>saved the settings of %1 to %2</source>
+        <translation>saved the settings of %1 to %2</translation>
+    </message>
+    <message>
+        <source>report --from makes the report of one profile file: give one --id</source>
+        <translation>report --from makes the report of one profile file: give one --id</translation>
+    </message>
+    <message>
+        <source>no report: not every controller could be read completely</source>
+        <translation>no report: not every controller could be read completely</translation>
+    </message>
+    <message numerus="yes">
+        <source>report of %n controller(s) written to %1</source>
+        <translation>
+            <numerusform>report of %n controller written to %1</numerusform>
+            <numerusform>report of %n controllers written to %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing was saved: %1</source>
+        <translation>nothing was saved: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write these %n value(s) to id %1? [y/N] </source>
+        <translation>
+            <numerusform>Write these %n value to id %1? [y/N] </numerusform>
+            <numerusform>Write these %n values to id %1? [y/N] </numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2731,6 +2868,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>showing device %1</source>
         <translation>showing device %1</translation>
+    </message>
+    <message>
+        <source>%1 of id %2 is written only while it is the device in view</source>
+        <translation>%1 of id %2 is written only while it is the device in view</translation>
     </message>
 </context>
 <context>
@@ -3583,6 +3724,173 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Port open, waiting for an answer…</source>
         <translation>Port open, waiting for an answer…</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MachineActions</name>
+    <message>
+        <source>Apply profile to &amp;several devices…</source>
+        <translation>Apply profile to &amp;several devices…</translation>
+    </message>
+    <message>
+        <source>Compare one profile file with several devices of the line, then write the checked differences to each and verify them</source>
+        <translation>Compare one profile file with several devices of the line, then write the checked differences to each and verify them</translation>
+    </message>
+    <message>
+        <source>Save &amp;all devices as profiles…</source>
+        <translation>Save &amp;all devices as profiles…</translation>
+    </message>
+    <message>
+        <source>Read every device of the line and save each as a profile file into one folder</source>
+        <translation>Read every device of the line and save each as a profile file into one folder</translation>
+    </message>
+    <message>
+        <source>Commissioning report of the &amp;machine…</source>
+        <translation>Commissioning report of the &amp;machine…</translation>
+    </message>
+    <message>
+        <source>Read every device of the line, then write one commissioning report of them all</source>
+        <translation>Read every device of the line, then write one commissioning report of them all</translation>
+    </message>
+    <message>
+        <source>Apply a profile to several devices</source>
+        <translation>Apply a profile to several devices</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom profiles (*.json);;All files (*)</translation>
+    </message>
+    <message>
+        <source>The profile cannot be used: nothing was written</source>
+        <translation>The profile cannot be used: nothing was written</translation>
+    </message>
+    <message>
+        <source>%1: connect to the line first, and wait for what runs</source>
+        <translation>%1: connect to the line first, and wait for what runs</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>id %1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: reading %n device(s)</source>
+        <translation>
+            <numerusform>%1: reading %n device</numerusform>
+            <numerusform>%1: reading %n devices</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Folder for the profiles of every device</source>
+        <translation>Folder for the profiles of every device</translation>
+    </message>
+    <message>
+        <source>Nothing was saved: %1</source>
+        <translation>Nothing was saved: %1</translation>
+    </message>
+    <message>
+        <source>Save all devices</source>
+        <translation>Save all devices</translation>
+    </message>
+    <message>
+        <source>id %1 was not saved: it could not be read completely</source>
+        <translation>id %1 was not saved: it could not be read completely</translation>
+    </message>
+    <message>
+        <source>id %1 saved to %2</source>
+        <translation>id %1 saved to %2</translation>
+    </message>
+    <message>
+        <source>id %1 was not saved: %2</source>
+        <translation>id %1 was not saved: %2</translation>
+    </message>
+    <message>
+        <source>Commissioning report of the machine</source>
+        <translation>Commissioning report of the machine</translation>
+    </message>
+    <message>
+        <source>Notes for the report (machine, place, who commissioned it):</source>
+        <translation>Notes for the report (machine, place, who commissioned it):</translation>
+    </message>
+    <message>
+        <source>Save the commissioning report of the machine</source>
+        <translation>Save the commissioning report of the machine</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation>Commissioning report</translation>
+    </message>
+    <message>
+        <source>No report: not every device could be read completely</source>
+        <translation>No report: not every device could be read completely</translation>
+    </message>
+    <message numerus="yes">
+        <source>Commissioning report of %n device(s) written to %1</source>
+        <translation>
+            <numerusform>Commissioning report of %n device written to %1</numerusform>
+            <numerusform>Commissioning report of %n devices written to %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MachineReport</name>
+    <message numerus="yes">
+        <source>Commissioning report of a machine: %n controller(s)</source>
+        <translation>
+            <numerusform>Commissioning report of a machine: %n controller</numerusform>
+            <numerusform>Commissioning report of a machine: %n controllers</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Controller id %1</source>
+        <translation>Controller id %1</translation>
+    </message>
+    <message>
+        <source>Controller id %1: %2</source>
+        <translation>Controller id %1: %2</translation>
+    </message>
+    <message>
+        <source>Controllers on the line</source>
+        <translation>Controllers on the line</translation>
+    </message>
+    <message>
+        <source>Device id</source>
+        <translation>Device id</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Link</translation>
+    </message>
+    <message>
+        <source>Settings fingerprint</source>
+        <translation>Settings fingerprint</translation>
+    </message>
+    <message>
+        <source>Date: %1</source>
+        <translation>Date: %1</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notes</translation>
+    </message>
+    <message>
+        <source>%1: no controller to report on</source>
+        <translation>%1: no controller to report on</translation>
+    </message>
+    <message>
+        <source>%1: the report is written as .pdf or .html, not .%2</source>
+        <translation>%1: the report is written as .pdf or .html, not .%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
     </message>
 </context>
 <context>
@@ -5581,6 +5889,86 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileRollout</name>
+    <message>
+        <source>could not be read: %1</source>
+        <translation>could not be read: %1</translation>
+    </message>
+    <message>
+        <source>it already holds the profile&apos;s values</source>
+        <translation>it already holds the profile&apos;s values</translation>
+    </message>
+    <message>
+        <source>no value was chosen for it</source>
+        <translation>no value was chosen for it</translation>
+    </message>
+    <message>
+        <source>no backup of its settings could be saved (%1): nothing was written</source>
+        <translation>no backup of its settings could be saved (%1): nothing was written</translation>
+    </message>
+    <message>
+        <source>%1 reads back other than written</source>
+        <translation>%1 reads back other than written</translation>
+    </message>
+    <message>
+        <source>not written: %1</source>
+        <translation>not written: %1</translation>
+    </message>
+    <message>
+        <source>not every value could be verified</source>
+        <translation>not every value could be verified</translation>
+    </message>
+    <message>
+        <source>stopped by the E-STOP while writing: what it holds now was not verified</source>
+        <translation>stopped by the E-STOP while writing: what it holds now was not verified</translation>
+    </message>
+    <message>
+        <source>not done: E-STOP</source>
+        <translation>not done: E-STOP</translation>
+    </message>
+    <message>
+        <source>id %1</source>
+        <translation>id %1</translation>
+    </message>
+    <message>
+        <source>id %1 (%2)</source>
+        <translation>id %1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1: waiting</source>
+        <translation>%1: waiting</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n value(s) differ</source>
+        <translation>
+            <numerusform>%1: %n value differ</numerusform>
+            <numerusform>%1: %n values differ</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: written and verified, %n value(s)</source>
+        <translation>
+            <numerusform>%1: written and verified, %n value</numerusform>
+            <numerusform>%1: written and verified, %n values</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: skipped, %2</source>
+        <translation>%1: skipped, %2</translation>
+    </message>
+    <message>
+        <source>%1: FAILED, %2</source>
+        <translation>%1: FAILED, %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: FAILED, %2 (%n value(s) verified)</source>
+        <translation>
+            <numerusform>%1: FAILED, %2 (%n value verified)</numerusform>
+            <numerusform>%1: FAILED, %2 (%n values verified)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ProfileSaveDialog</name>
     <message>
         <source>Controller id %1</source>
@@ -6896,12 +7284,6 @@ until --count samples or Ctrl-C (--interval MS)</source>
 until --count samples or Ctrl-C (--interval MS)</translation>
     </message>
     <message>
-        <source>read every setting and save it as a profile file
-(--name, --notes; --include-link adds id and baud)</source>
-        <translation>read every setting and save it as a profile file
-(--name, --notes; --include-link adds id and baud)</translation>
-    </message>
-    <message>
         <source>compare the controller with a profile; exit 0 same,
 1 different, 2 bad file, 3 link or device error</source>
         <translation>compare the controller with a profile; exit 0 same,
@@ -6938,14 +7320,6 @@ them and asking (--yes skips the question), then verify;
 replaces are saved as a backup first (--no-backup)</translation>
     </message>
     <message>
-        <source>write the commissioning report (--name, --notes,
---lang en|zh_CN; --from PROFILE: from a profile
-file and its checklist, no controller needed)</source>
-        <translation>write the commissioning report (--name, --notes,
---lang en|zh_CN; --from PROFILE: from a profile
-file and its checklist, no controller needed)</translation>
-    </message>
-    <message>
         <source>pulse a motion command and wait until it ends; print
 how it ended (--json), exit 0 only when done or referenced</source>
         <translation>pulse a motion command and wait until it ends; print
@@ -6968,6 +7342,24 @@ controllers answer at --id</source>
 leaves the factory) the device id N and check it
 answers there; refuses when N is taken or two
 controllers answer at --id</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud);
+into a folder: one file per --id, &quot;id2 NAME DATE.json&quot;</source>
+        <translation>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud);
+into a folder: one file per --id, &quot;id2 NAME DATE.json&quot;</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file and its checklist, no controller needed;
+--id 1,2,3: every controller in one document)</source>
+        <translation>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file and its checklist, no controller needed;
+--id 1,2,3: every controller in one document)</translation>
     </message>
 </context>
 </TS>

@@ -80,6 +80,85 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ApplyToDevicesDialog</name>
+    <message>
+        <source>&amp;Compare the ticked devices</source>
+        <translation>比较勾选的设备(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Apply %1 to several devices</source>
+        <translation>将 %1 应用到多台设备</translation>
+    </message>
+    <message>
+        <source>Tick the devices, compare, then uncheck what is not to be written. Each device&apos;s settings are saved as a backup before anything is written to it; every value written is read back. Device id and baud rate are never applied to several devices: one id for all would make them collide.</source>
+        <translation>勾选设备并比较，然后取消不想写入的行。写入任何数据之前，先把每台设备的设置保存为备份；写入的每个值都会读回校验。设备 ID 和波特率从不同时写入多台设备：所有设备同一个 ID 会造成冲突。</translation>
+    </message>
+    <message>
+        <source>id %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>id %1 (%2)</source>
+        <translation>ID %1（%2）</translation>
+    </message>
+    <message>
+        <source>Device / parameter</source>
+        <translation>设备 / 参数</translation>
+    </message>
+    <message>
+        <source>Device holds</source>
+        <translation>设备中的值</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>参数文件</translation>
+    </message>
+    <message>
+        <source>Done:</source>
+        <translation>完成：</translation>
+    </message>
+    <message>
+        <source>Done, not everywhere:</source>
+        <translation>完成，但并非全部成功：</translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading %n device(s)…</source>
+        <translation>
+            <numerusform>正在读取 %n 台设备…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing has been written yet.</source>
+        <translation>尚未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>Nothing to write: the devices hold the profile&apos;s values or could not be read.</source>
+        <translation>没有需要写入的：设备已与参数文件一致，或无法读取。</translation>
+    </message>
+    <message>
+        <source>Writing…</source>
+        <translation>正在写入…</translation>
+    </message>
+    <message>
+        <source>Writing… this window stays open until every device has its result. E-STOP (F12) stops what is left.</source>
+        <translation>正在写入…在每台设备都有结果之前此窗口保持打开。急停（F12）会停止剩下的操作。</translation>
+    </message>
+    <message numerus="yes">
+        <source>&amp;Write %n value(s) to %1 device(s)</source>
+        <translation>
+            <numerusform>向 %1 台设备写入 %n 个值(&amp;W)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Write</source>
+        <translation>写入(&amp;W)</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BackupGuard</name>
     <message>
         <source>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</source>
@@ -162,6 +241,25 @@
     <message>
         <source>Close</source>
         <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusDump</name>
+    <message>
+        <source>%1: no such folder</source>
+        <translation>%1：文件夹不存在</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder</source>
+        <translation>%1 不是文件夹</translation>
+    </message>
+    <message>
+        <source>%1: the folder cannot be written to</source>
+        <translation>%1：无法写入该文件夹</translation>
+    </message>
+    <message>
+        <source>Controller id %1</source>
+        <translation>控制器 ID %1</translation>
     </message>
 </context>
 <context>
@@ -414,6 +512,13 @@
     <message>
         <source>identify id %1</source>
         <translation>识别 ID %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusSweep</name>
+    <message>
+        <source>id %1 was not read: E-STOP</source>
+        <translation>ID %1 未读取：急停</translation>
     </message>
 </context>
 <context>
@@ -1802,10 +1907,6 @@
         <translation>距离</translation>
     </message>
     <message>
-        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
-        <translation>设备 ID 1-255（默认 1）；read、diff、apply、dump 和 command 可给多个（1,2,3 或 1-3）：在同一条总线上依次执行，输出按 ID 分开。</translation>
-    </message>
-    <message>
         <source>--id: %1</source>
         <translation>--id：%1</translation>
     </message>
@@ -1824,6 +1925,10 @@
     <message>
         <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
         <translation>未指定命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、report）</translation>
+    </message>
+    <message>
+        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump, report and command: each in turn on the one line, output keyed by id (report: one document).</source>
+        <translation>设备 ID 1-255（默认 1）；read、diff、apply、dump、report 和 command 可给多个（1,2,3 或 1-3）：在同一条总线上依次执行，输出按 ID 分开（report：一份文档）。</translation>
     </message>
 </context>
 <context>
@@ -2117,10 +2222,6 @@
         <translation>%1：“%2”不是数字</translation>
     </message>
     <message>
-        <source>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</source>
-        <translation>%1：请只给一个设备 ID；多个 ID 只适用于 read、diff、apply、dump 和 command（不带 --wait）</translation>
-    </message>
-    <message>
         <source>id %1: %2</source>
         <translation>ID %1：%2</translation>
     </message>
@@ -2159,6 +2260,38 @@
     <message>
         <source>the controller does not answer at id %1: %2</source>
         <translation>控制器在 ID %1 上不应答：%2</translation>
+    </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, diff, apply, dump, report and command (without --wait)</source>
+        <translation>%1：请只给一个设备 ID；多个 ID 只适用于 read、diff、apply、dump、report 和 command（不带 --wait）</translation>
+    </message>
+    <message>
+        <source>saved the settings of %1 to %2</source>
+        <translation>已将 %1 的设置保存到 %2</translation>
+    </message>
+    <message>
+        <source>report --from makes the report of one profile file: give one --id</source>
+        <translation>report --from 只根据一个参数文件生成报告：请只给一个 --id</translation>
+    </message>
+    <message>
+        <source>no report: not every controller could be read completely</source>
+        <translation>未生成报告：并非每台控制器都能完整读取</translation>
+    </message>
+    <message numerus="yes">
+        <source>report of %n controller(s) written to %1</source>
+        <translation>
+            <numerusform>已将 %n 台控制器的报告写入 %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>nothing was saved: %1</source>
+        <translation>未保存任何内容：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write these %n value(s) to id %1? [y/N] </source>
+        <translation>
+            <numerusform>向 ID %1 写入这 %n 个值？[y/N] </numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2715,6 +2848,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>showing device %1</source>
         <translation>切换到设备 %1</translation>
+    </message>
+    <message>
+        <source>%1 of id %2 is written only while it is the device in view</source>
+        <translation>ID %2 的 %1 只能在它是当前显示的设备时写入</translation>
     </message>
 </context>
 <context>
@@ -3567,6 +3704,170 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Port open, waiting for an answer…</source>
         <translation>端口已打开，正在等待应答…</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MachineActions</name>
+    <message>
+        <source>Apply profile to &amp;several devices…</source>
+        <translation>将参数文件应用到多台设备(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Compare one profile file with several devices of the line, then write the checked differences to each and verify them</source>
+        <translation>将一个参数文件与总线上的多台设备比较，然后把勾选的不同之处写入每台设备并校验</translation>
+    </message>
+    <message>
+        <source>Save &amp;all devices as profiles…</source>
+        <translation>将所有设备保存为参数文件(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Read every device of the line and save each as a profile file into one folder</source>
+        <translation>读取总线上的每台设备，并分别保存为参数文件到同一个文件夹</translation>
+    </message>
+    <message>
+        <source>Commissioning report of the &amp;machine…</source>
+        <translation>整机调试报告(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>Read every device of the line, then write one commissioning report of them all</source>
+        <translation>读取总线上的每台设备，然后生成一份包含全部设备的调试报告</translation>
+    </message>
+    <message>
+        <source>Apply a profile to several devices</source>
+        <translation>将参数文件应用到多台设备</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom 参数文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>The profile cannot be used: nothing was written</source>
+        <translation>无法使用该参数文件：未写入任何数据</translation>
+    </message>
+    <message>
+        <source>%1: connect to the line first, and wait for what runs</source>
+        <translation>%1：请先连接总线，并等待正在进行的操作结束</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>ID %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: reading %n device(s)</source>
+        <translation>
+            <numerusform>%1：正在读取 %n 台设备</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Folder for the profiles of every device</source>
+        <translation>保存每台设备参数文件的文件夹</translation>
+    </message>
+    <message>
+        <source>Nothing was saved: %1</source>
+        <translation>未保存任何内容：%1</translation>
+    </message>
+    <message>
+        <source>Save all devices</source>
+        <translation>保存所有设备</translation>
+    </message>
+    <message>
+        <source>id %1 was not saved: it could not be read completely</source>
+        <translation>ID %1 未保存：无法完整读取</translation>
+    </message>
+    <message>
+        <source>id %1 saved to %2</source>
+        <translation>ID %1 已保存到 %2</translation>
+    </message>
+    <message>
+        <source>id %1 was not saved: %2</source>
+        <translation>ID %1 未保存：%2</translation>
+    </message>
+    <message>
+        <source>Commissioning report of the machine</source>
+        <translation>整机调试报告</translation>
+    </message>
+    <message>
+        <source>Notes for the report (machine, place, who commissioned it):</source>
+        <translation>报告备注（机器、地点、调试人员）：</translation>
+    </message>
+    <message>
+        <source>Save the commissioning report of the machine</source>
+        <translation>保存整机调试报告</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation>调试报告</translation>
+    </message>
+    <message>
+        <source>No report: not every device could be read completely</source>
+        <translation>未生成报告：并非每台设备都能完整读取</translation>
+    </message>
+    <message numerus="yes">
+        <source>Commissioning report of %n device(s) written to %1</source>
+        <translation>
+            <numerusform>已将 %n 台设备的调试报告写入 %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MachineReport</name>
+    <message numerus="yes">
+        <source>Commissioning report of a machine: %n controller(s)</source>
+        <translation>
+            <numerusform>整机调试报告：%n 台控制器</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Controller id %1</source>
+        <translation>控制器 ID %1</translation>
+    </message>
+    <message>
+        <source>Controller id %1: %2</source>
+        <translation>控制器 ID %1：%2</translation>
+    </message>
+    <message>
+        <source>Controllers on the line</source>
+        <translation>总线上的控制器</translation>
+    </message>
+    <message>
+        <source>Device id</source>
+        <translation>设备 ID</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Settings fingerprint</source>
+        <translation>设置指纹</translation>
+    </message>
+    <message>
+        <source>Date: %1</source>
+        <translation>日期：%1</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>%1: no controller to report on</source>
+        <translation>%1：没有可报告的控制器</translation>
+    </message>
+    <message>
+        <source>%1: the report is written as .pdf or .html, not .%2</source>
+        <translation>%1：报告只能保存为 .pdf 或 .html，不能是 .%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
     </message>
 </context>
 <context>
@@ -5547,6 +5848,83 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileRollout</name>
+    <message>
+        <source>could not be read: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <source>it already holds the profile&apos;s values</source>
+        <translation>设备已与参数文件一致</translation>
+    </message>
+    <message>
+        <source>no value was chosen for it</source>
+        <translation>没有为它勾选任何值</translation>
+    </message>
+    <message>
+        <source>no backup of its settings could be saved (%1): nothing was written</source>
+        <translation>无法保存其设置的备份（%1）：未写入任何数据</translation>
+    </message>
+    <message>
+        <source>%1 reads back other than written</source>
+        <translation>%1 读回的值与写入的不同</translation>
+    </message>
+    <message>
+        <source>not written: %1</source>
+        <translation>未写入：%1</translation>
+    </message>
+    <message>
+        <source>not every value could be verified</source>
+        <translation>并非所有值都已校验</translation>
+    </message>
+    <message>
+        <source>stopped by the E-STOP while writing: what it holds now was not verified</source>
+        <translation>写入时被急停中断：设备当前的值未经校验</translation>
+    </message>
+    <message>
+        <source>not done: E-STOP</source>
+        <translation>未执行：急停</translation>
+    </message>
+    <message>
+        <source>id %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>id %1 (%2)</source>
+        <translation>ID %1（%2）</translation>
+    </message>
+    <message>
+        <source>%1: waiting</source>
+        <translation>%1：等待中</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n value(s) differ</source>
+        <translation>
+            <numerusform>%1：%n 个值不同</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: written and verified, %n value(s)</source>
+        <translation>
+            <numerusform>%1：已写入并校验，%n 个值</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: skipped, %2</source>
+        <translation>%1：已跳过，%2</translation>
+    </message>
+    <message>
+        <source>%1: FAILED, %2</source>
+        <translation>%1：失败，%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: FAILED, %2 (%n value(s) verified)</source>
+        <translation>
+            <numerusform>%1：失败，%2（%n 个值已校验）</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ProfileSaveDialog</name>
     <message>
         <source>Controller id %1</source>
@@ -6860,12 +7238,6 @@ until --count samples or Ctrl-C (--interval MS)</source>
 直到 --count 个样本或 Ctrl-C（--interval MS）</translation>
     </message>
     <message>
-        <source>read every setting and save it as a profile file
-(--name, --notes; --include-link adds id and baud)</source>
-        <translation>读取全部设置并保存为参数文件
-（--name、--notes；--include-link 包括地址和波特率）</translation>
-    </message>
-    <message>
         <source>compare the controller with a profile; exit 0 same,
 1 different, 2 bad file, 3 link or device error</source>
         <translation>将控制器与参数文件比较；退出码 0 相同，
@@ -6902,14 +7274,6 @@ replaces are saved as a backup first (--no-backup)</source>
 先保存为备份（--no-backup 不备份）</translation>
     </message>
     <message>
-        <source>write the commissioning report (--name, --notes,
---lang en|zh_CN; --from PROFILE: from a profile
-file and its checklist, no controller needed)</source>
-        <translation>生成调试报告（--name、--notes、
---lang en|zh_CN；--from PROFILE：根据参数文件
-及其检查表生成，无需控制器）</translation>
-    </message>
-    <message>
         <source>pulse a motion command and wait until it ends; print
 how it ended (--json), exit 0 only when done or referenced</source>
         <translation>触发一个运动命令并等待其结束；输出
@@ -6931,6 +7295,24 @@ controllers answer at --id</source>
         <translation>给 --id（默认 1，即出厂设置）上唯一的那台控制器
 分配设备 ID N，并确认它在新 ID 上应答；N 已被占用
 或 --id 上有两台控制器应答时拒绝执行</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud);
+into a folder: one file per --id, &quot;id2 NAME DATE.json&quot;</source>
+        <translation>读取全部设置并保存为参数文件
+（--name、--notes；--include-link 包括地址和波特率）；
+保存到文件夹时每个 --id 一个文件，&quot;id2 名称 日期.json&quot;</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file and its checklist, no controller needed;
+--id 1,2,3: every controller in one document)</source>
+        <translation>生成调试报告（--name、--notes、
+--lang en|zh_CN；--from PROFILE：根据参数文件
+及其检查表生成，无需控制器；
+--id 1,2,3：所有控制器合为一份文档）</translation>
     </message>
 </context>
 </TS>

@@ -7,6 +7,7 @@
 #include "profile/busdump.h"
 #include "profile/profilefile.h"
 #include "report/machinereport.h"
+#include "widgets/devicelistdock.h"
 
 #include <QAction>
 #include <QDate>
@@ -41,11 +42,10 @@ MachineActions::MachineActions(DeviceSession *session, QWidget *window)
 }
 
 void MachineActions::addTo(QMenu *menu, const QString &backupDirectory,
-                           std::function<QString(int)> names, std::function<QList<int>()> selected)
+                           std::function<DeviceListDock *()> list)
 {
     m_backupDir = backupDirectory;
-    m_names = std::move(names);
-    m_selected = std::move(selected);
+    m_list = std::move(list);
     menu->addAction(m_apply);
     menu->addAction(m_dump);
     menu->addAction(m_report);
@@ -85,9 +85,10 @@ bool MachineActions::isBusy() const
 QHash<int, QString> MachineActions::names() const
 {
     QHash<int, QString> out;
+    DeviceListDock *dock = m_list ? m_list() : nullptr;
     for (int id : m_session->deviceIds()) {
-        if (m_names)
-            out.insert(id, m_names(id));
+        if (dock)
+            out.insert(id, dock->nameOf(id));
     }
     return out;
 }
@@ -115,9 +116,8 @@ bool MachineActions::applyProfileFile(const QString &path)
     }
     if (m_applyDialog)
         m_applyDialog->close();
-    m_applyDialog =
-        new ApplyToDevicesDialog(m_session, *r.profile, QFileInfo(path).fileName(), names(),
-                                 m_selected ? m_selected() : QList<int>(), m_window);
+    m_applyDialog = new ApplyToDevicesDialog(m_session, *r.profile, QFileInfo(path).fileName(),
+                                             names(), {}, m_window);
     m_applyDialog->setAttribute(Qt::WA_DeleteOnClose);
     m_applyDialog->setBackupDirectory(m_backupDir);
     connect(m_applyDialog, &ApplyToDevicesDialog::message, this, &MachineActions::finished);

@@ -14,6 +14,7 @@ namespace stepcom {
 
 class ApplyToDevicesDialog;
 class BusSweep;
+class DeviceListDock;
 class DeviceSession;
 struct Parameter;
 
@@ -27,9 +28,10 @@ class MachineActions : public QObject
 public:
     MachineActions(DeviceSession *session, QWidget *window);
 
-    // Adds the actions to `menu`; `names` says what the device list calls each id.
-    void addTo(QMenu *menu, const QString &backupDirectory, std::function<QString(int)> names,
-               std::function<QList<int>()> selected = {});
+    // Adds the actions to `menu`; `list` gives the window's device list (null before it is
+    // made): what it calls each id.
+    void addTo(QMenu *menu, const QString &backupDirectory,
+               std::function<DeviceListDock *()> list = {});
     QAction *applyAction() const { return m_apply; }
     QAction *dumpAction() const { return m_dump; }
     QAction *reportAction() const { return m_report; }
@@ -65,8 +67,7 @@ private:
     QAction *m_dump;
     QAction *m_report;
     QString m_backupDir;
-    std::function<QString(int)> m_names;
-    std::function<QList<int>()> m_selected;
+    std::function<DeviceListDock *()> m_list;
     QPointer<ApplyToDevicesDialog> m_applyDialog;
     QPointer<BusSweep> m_sweep;
 };

@@ -43,8 +43,9 @@ void BusSweep::next()
     }
     const int id = m_ids.at(m_index);
     const quint64 generation = m_generation;
-    m_session->readDevice(id, m_params, [this, id, generation](const ReadOutcome &r) {
-        if (generation != m_generation)
+    QPointer<BusSweep> self(this); // its owner may be gone by the answer
+    m_session->readDevice(id, m_params, [this, self, id, generation](const ReadOutcome &r) {
+        if (!self || generation != m_generation)
             return;
         m_outcomes.insert(id, r);
         ++m_index;

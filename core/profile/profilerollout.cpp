@@ -57,10 +57,11 @@ void ProfileRollout::compareNext()
     }
     const int id = m_devices.at(m_index).id;
     const quint64 generation = m_generation;
+    QPointer<ProfileRollout> self(this); // the dialog holding it may be gone by the answer
     m_session->readDevice(
         id, Profile::profileParameters(m_session->map(), true),
-        [this, generation](const ReadOutcome &r) {
-            if (generation != m_generation)
+        [this, self, generation](const ReadOutcome &r) {
+            if (!self || generation != m_generation)
                 return;
             RolloutDevice &d = m_devices[m_index];
             d.before = r.values;
@@ -167,30 +168,33 @@ void ProfileRollout::applyNext()
     }
     d.backup = saved.path;
     const quint64 generation = m_generation;
-    m_session->writeDevice(d.id, writes, [this, generation, writes, next](const WriteOutcome &w) {
-        if (generation != m_generation)
-            return;
-        RolloutDevice &device = m_devices[m_index];
-        QStringList problems = w.errors;
-        for (const ParameterWrite &pw : writes) {
-            const QString &key = pw.parameter->key;
-            const bool mismatch = std::any_of(w.mismatches.cbegin(), w.mismatches.cend(),
-                                              [&](const WriteMismatch &m) { return m.key == key; });
-            if (w.written.contains(key) && !mismatch)
-                device.verified << key;
-            else if (mismatch)
-                problems << tr("%1 reads back other than written").arg(key);
-        }
-        if (!w.notWritten.isEmpty())
-            problems << tr("not written: %1").arg(w.notWritten.join(QLatin1String(", ")));
-        if (w.ok && device.verified.size() == writes.size())
-            end(device, RolloutDevice::State::Written, QString());
-        else
-            end(device, RolloutDevice::State::Failed,
-                problems.isEmpty() ? tr("not every value could be verified")
-                                   : problems.join(QLatin1String("; ")));
-        next();
-    });
+    QPointer<ProfileRollout> self(this);
+    m_session->writeDevice(
+        d.id, writes, [this, self, generation, writes, next](const WriteOutcome &w) {
+            if (!self || generation != m_generation)
+                return;
+            RolloutDevice &device = m_devices[m_index];
+            QStringList problems = w.errors;
+            for (const ParameterWrite &pw : writes) {
+                const QString &key = pw.parameter->key;
+                const bool mismatch =
+                    std::any_of(w.mismatches.cbegin(), w.mismatches.cend(),
+                                [&](const WriteMismatch &m) { return m.key == key; });
+                if (w.written.contains(key) && !mismatch)
+                    device.verified << key;
+                else if (mismatch)
+                    problems << tr("%1 reads back other than written").arg(key);
+            }
+            if (!w.notWritten.isEmpty())
+                problems << tr("not written: %1").arg(w.notWritten.join(QLatin1String(", ")));
+            if (w.ok && device.verified.size() == writes.size())
+                end(device, RolloutDevice::State::Written, QString());
+            else
+                end(device, RolloutDevice::State::Failed,
+                    problems.isEmpty() ? tr("not every value could be verified")
+                                       : problems.join(QLatin1String("; ")));
+            next();
+        });
 }
 
 void ProfileRollout::end(RolloutDevice &d, RolloutDevice::State state, const QString &reason)

@@ -53,6 +53,7 @@ public:
     void apply();
     bool isBusy() const { return m_busy; }
     bool isApplied() const { return m_applied; }
+    bool isCompared() const { return m_compared; }
     const QList<RolloutDevice> &devices() const { return m_devices; }
     const RolloutDevice *device(int id) const;
     // How many chosen values go to how many devices.

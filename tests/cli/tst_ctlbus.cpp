@@ -180,7 +180,7 @@ private Q_SLOTS:
         QFile f(html);
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(f.readAll());
-        QVERIFY(text.contains(QStringLiteral("3 controller(s)")));
+        QVERIFY(text.contains(QStringLiteral("3 controllers")));
         QVERIFY(text.contains(QStringLiteral("Mill 7")));
         for (int id : {1, 2, 3})
             QVERIFY2(text.contains(QStringLiteral(">Controller id %1</h1>").arg(id)),

@@ -9,6 +9,7 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
+#include "widgets/devicelistdock.h"
 
 #include <QAction>
 #include <QDate>
@@ -18,6 +19,7 @@
 #include <QMenu>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTreeWidget>
@@ -32,6 +34,7 @@ class TestMachineActions : public QObject
     std::unique_ptr<DeviceSession> session;
     std::unique_ptr<QWidget> window;
     MachineActions *actions = nullptr;
+    DeviceListDock *list = nullptr;
     QTemporaryDir dir;
     QStringList messages;
 
@@ -51,6 +54,16 @@ class TestMachineActions : public QObject
         return ids;
     }
 
+    // Three devices on the list, the second called "Y axis" by the user.
+    void connectLine()
+    {
+        session->setDeviceIds({1, 2, 3});
+        test::connectToSimulator(*session);
+        QTRY_COMPARE(list->table()->rowCount(), 3);
+        list->table()->item(1, 1)->setText(QStringLiteral("Y axis"));
+        QCOMPARE(list->nameOf(2), QStringLiteral("Y axis"));
+    }
+
 private Q_SLOTS:
     void init()
     {
@@ -58,8 +71,8 @@ private Q_SLOTS:
         window = std::make_unique<QWidget>();
         actions = new MachineActions(session.get(), window.get());
         auto *menu = new QMenu(window.get());
-        actions->addTo(menu, dir.filePath(QStringLiteral("backups")),
-                       [](int id) { return id == 2 ? QStringLiteral("Y axis") : QString(); });
+        list = new DeviceListDock(session.get(), window.get());
+        actions->addTo(menu, dir.filePath(QStringLiteral("backups")), [this] { return list; });
         messages.clear();
         connect(actions, &MachineActions::finished, this,
                 [this](bool, const QString &text) { messages << text; });
@@ -84,8 +97,7 @@ private Q_SLOTS:
 
     void aProfileGoesToTheTickedDevicesOnly()
     {
-        session->setDeviceIds({1, 2, 3});
-        test::connectToSimulator(*session);
+        connectLine();
         const QString speed = QStringLiteral("motor1.speed");
         const QString distance = QStringLiteral("motor1.move_distance");
         QHash<QString, qint64> values;
@@ -120,6 +132,8 @@ private Q_SLOTS:
         QCOMPARE(dialog->writeButton()->text(), QStringLiteral("&Write 3 value(s) to 2 device(s)"));
         QSignalSpy finished(dialog->rollout(), &ProfileRollout::finished);
         dialog->writeButton()->click();
+        QVERIFY2(!dialog->close(), "open until every device has its result");
+        QVERIFY(dialog->isVisible());
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 15000);
         QCOMPARE(dialog->resultLines(),
                  (QStringList{QStringLiteral("id 2 (Y axis): written and verified, 2 value(s)"),
@@ -141,8 +155,7 @@ private Q_SLOTS:
 
     void everyDeviceIsSavedIntoOneFolder()
     {
-        session->setDeviceIds({1, 2, 3});
-        test::connectToSimulator(*session);
+        connectLine();
         const QString folder = dir.filePath(QStringLiteral("line"));
         QVERIFY(QDir().mkpath(folder));
         actions->dumpIntoFolder(folder);
@@ -164,8 +177,7 @@ private Q_SLOTS:
 
     void theMachineReportHasEveryDevice()
     {
-        session->setDeviceIds({1, 2, 3});
-        test::connectToSimulator(*session);
+        connectLine();
         const QString path = dir.filePath(QStringLiteral("machine.html"));
         actions->reportFile(path, QStringLiteral("Mill 7"), QStringLiteral("hall 2"));
         QTRY_VERIFY_WITH_TIMEOUT(QFileInfo::exists(path), 20000);

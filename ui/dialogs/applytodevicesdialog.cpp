@@ -4,6 +4,7 @@
 #include "language.h"
 #include "profile/profilerollout.h"
 
+#include <QCloseEvent>
 #include <QDialogButtonBox>
 #include <QHeaderView>
 #include <QLabel>
@@ -213,6 +214,24 @@ void ApplyToDevicesDialog::updateDevice(int id)
             child->setText(1, child->text(2));
     }
     m_filling = false;
+}
+
+void ApplyToDevicesDialog::closeEvent(QCloseEvent *event)
+{
+    if (m_rollout->isBusy() && m_rollout->isCompared()) {
+        m_summary->setText(tr("Writing… this window stays open until every device has its "
+                              "result. E-STOP (F12) stops what is left."));
+        event->ignore();
+        return;
+    }
+    QDialog::closeEvent(event);
+}
+
+void ApplyToDevicesDialog::reject()
+{
+    if (m_rollout->isBusy() && m_rollout->isCompared())
+        return;
+    QDialog::reject();
 }
 
 QStringList ApplyToDevicesDialog::resultLines() const

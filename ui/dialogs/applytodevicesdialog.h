@@ -52,6 +52,11 @@ Q_SIGNALS:
     // Every outcome for the message dock; ok = false for a device that failed.
     void message(bool ok, const QString &text);
 
+protected:
+    // Not while writing: every device's result is to be seen (the E-STOP stops it).
+    void closeEvent(QCloseEvent *event) override;
+    void reject() override; // Escape, the same
+
 private:
     void showComparison();
     void updateDevice(int id);
