@@ -231,8 +231,10 @@ void MachineActions::reportFile(const QString &path, const QString &title, const
                   input.title = names.value(id);
                   input.date = now;
                   input.lastRead = now;
-                  input.travelLimits =
-                      id == m_session->deviceInView() ? m_session->travelLimits() : TravelLimits();
+                  if (id == m_session->deviceInView()) { // what the window follows
+                      input.travelLimits = m_session->travelLimits();
+                      input.savedToFlash = !m_session->parameters()->unsavedToFlash();
+                  }
                   inputs << input;
               }
               const MachineReport report(inputs, title, notes, Language::instance().current());

@@ -300,9 +300,9 @@ void CtlRunner::confirmThenApply(const QList<ParameterWrite> &writes)
     }
     if (isMulti()) {
         // With several ids the output is keyed by id at the end; what the question is about
-        // must be seen before it is answered.
+        // must be seen before it is answered (on standard error with --json, which stays JSON).
         m_out.flush();
-        QTextStream console(stdout);
+        QTextStream console(m_options.json ? stderr : stdout);
         console << tr("== device id %1 ==").arg(m_options.ids.at(m_idIndex)) << Qt::endl
                 << m_buffer
                 << tr("Write these %n value(s) to id %1? [y/N] ", nullptr, int(writes.size()))
