@@ -129,6 +129,21 @@ private Q_SLOTS:
         QVERIFY2(missing.err.contains(QStringLiteral("no such folder")), qPrintable(missing.err));
     }
 
+    void aFolderDumpSavesEveryDeviceThatAnswers()
+    {
+        SimHost host;
+        QVERIFY(start(host, true, {1, 2}));
+        QTemporaryDir dir;
+        const ProgramRun r =
+            ctl(tcp(host) + QStringList{"--id", "1,7,2", "dump", dir.path() + "/"});
+        QCOMPARE(r.exitCode, 1); // the worst: id 7 does not answer
+        QVERIFY2(r.err.contains(QStringLiteral("id 7: ")), qPrintable(r.err));
+        const QString day = QDate::currentDate().toString(Qt::ISODate);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files, QDir::Name),
+                 (QStringList{QStringLiteral("id1 %1.json").arg(day),
+                              QStringLiteral("id2 %1.json").arg(day)}));
+    }
+
     void applyWritesOnlyTheIdsNamed()
     {
         SimHost host;
