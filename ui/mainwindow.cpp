@@ -10,6 +10,7 @@
 #include "help/guidewindow.h"
 #include "help/userguide.h"
 #include "language.h"
+#include "machineactions.h"
 #include "offlineactions.h"      // working without the machine (issue 18)
 #include "pages/checklistpage.h" // issue 17
 #include "pages/connectionpage.h"
@@ -279,6 +280,9 @@ void MainWindow::createMenus()
     m_fileMenu->addAction(m_profiles->backupsAction()); // issue 17
     m_profiles->setBackupDirectory(m_backups->directory());
     m_profiles->setChecklistSource([this] { return m_checklist->reportChecklist(); });
+    m_machine = new MachineActions(m_session, this); // every device of the line (issue 16)
+    m_machine->addTo(m_fileMenu, m_backups->directory(), [this] { return m_deviceDock; });
+    connect(m_machine, &MachineActions::finished, m_profiles, &ProfileActions::finished);
     m_fileMenu->addSeparator();
     // --- end profiles ---
     m_fileMenu->addAction(m_quit);

@@ -25,6 +25,7 @@ class MotionPage;     // jogging (issue 5)
 class OfflineActions; // working without the machine (issue 18)
 class OfflineBanner;
 class Page;
+class MachineActions;
 class ProfileActions; // profiles (issue 7)
 class DeviceListDock; // several controllers on one line (issue 16)
 class SessionLog;
@@ -56,6 +57,7 @@ public:
     MessageView *messageView() const { return m_messages; }
     MotionPage *motionPage() const { return m_motion; }           // jogging (issue 5)
     ProfileActions *profileActions() const { return m_profiles; } // profiles (issue 7)
+    MachineActions *machineActions() const { return m_machine; }  // issue 16
     OfflineActions *offlineActions() const { return m_offline; }  // issue 18
     OfflineBanner *offlineBanner() const { return m_offlineBanner; }
     ChecklistPage *checklistPage() const { return m_checklist; } // issue 17
@@ -112,6 +114,7 @@ private:
     StatusMessage *m_status = nullptr;    // issue 19
     MotionPage *m_motion = nullptr;       // jogging (issue 5)
     ProfileActions *m_profiles = nullptr; // profiles (issue 7)
+    MachineActions *m_machine = nullptr;  // every device of the line (issue 16)
     OfflineActions *m_offline = nullptr;  // issue 18
     OfflineBanner *m_offlineBanner = nullptr;
     bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once

@@ -24,18 +24,30 @@ bool runsPerId(const CtlCommand &command)
     return names.contains(QLatin1String(command.name)) && !command.when;
 }
 
+// dump DIR/ or dump DIR (an existing folder): one file per device inside it.
+bool isFolderArgument(const QString &path)
+{
+    return path.endsWith(QLatin1Char('/')) || QFileInfo(path).isDir();
+}
+
 } // namespace
 
 void CtlRunner::startMulti()
 {
+    if (QLatin1String(m_chosen->name) == QLatin1String("report")) {
+        m_chosen = nullptr; // one document for the whole line, not one run per id
+        runMachineReport();
+        return;
+    }
     if (!runsPerId(*m_chosen)) {
         const CtlCommand *chosen = std::exchange(m_chosen, nullptr); // a usage error, not per id
         fail(UsageError, tr("%1: give one device id; several ids work with read, diff, apply, "
-                            "dump and command (without --wait)")
+                            "dump, report and command (without --wait)")
                              .arg(QLatin1String(chosen->name)));
         return;
     }
-    if (QLatin1String(m_chosen->name) == QLatin1String("dump") && m_options.arguments.size() == 1)
+    if (QLatin1String(m_chosen->name) == QLatin1String("dump") && m_options.arguments.size() == 1 &&
+        !isFolderArgument(m_options.arguments.first()))
         m_multiArgument = m_options.arguments.first();
     m_idIndex = 0;
     runForCurrentId();

@@ -4,6 +4,7 @@
 #include "consolereader.h"
 
 #include "profile/backupstore.h"
+#include "profile/busdump.h"
 #include "profile/profilecomparison.h"
 #include "profile/profilediff.h"
 #include "profile/profilefile.h"
@@ -65,6 +66,26 @@ void CtlRunner::runDump()
         return;
     }
     const QString path = m_options.arguments.first();
+    if (path.endsWith(QLatin1Char('/')) || QFileInfo(path).isDir()) {
+        if (const QString problem = BusDump::checkDirectory(path); !problem.isEmpty()) {
+            fail(UsageError, tr("nothing was saved: %1").arg(problem));
+            return;
+        }
+        connectThen([this, path] {
+            m_session->read(Profile::profileParameters(m_map, true),
+                            [this, path](const ReadOutcome &r) {
+                                if (!r.ok) {
+                                    for (const QString &e : r.errors)
+                                        m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+                                    fail(DeviceError, tr("nothing was saved: the controller "
+                                                         "could not be read completely"));
+                                    return;
+                                }
+                                dumpIntoFolder(path, r.values);
+                            });
+        });
+        return;
+    }
     connectThen([this, path] {
         m_session->read(Profile::profileParameters(m_map, true), [this,
                                                                   path](const ReadOutcome &r) {
@@ -277,8 +298,23 @@ void CtlRunner::confirmThenApply(const QList<ParameterWrite> &writes)
         applyWrites(writes);
         return;
     }
-    m_out << tr("Write these %n value(s) to the controller? [y/N] ", nullptr, int(writes.size()))
-          << Qt::flush;
+    if (isMulti()) {
+        // With several ids the output is keyed by id at the end; what the question is about
+        // must be seen before it is answered (on standard error with --json, which stays JSON).
+        m_out.flush();
+        QTextStream console(m_options.json ? stderr : stdout);
+        console << tr("== device id %1 ==").arg(m_options.ids.at(m_idIndex)) << Qt::endl
+                << m_buffer
+                << tr("Write these %n value(s) to id %1? [y/N] ", nullptr, int(writes.size()))
+                       .arg(m_options.ids.at(m_idIndex))
+                << Qt::flush;
+        m_buffer.clear();
+        m_out.setString(&m_buffer);
+    } else {
+        m_out << tr("Write these %n value(s) to the controller? [y/N] ", nullptr,
+                    int(writes.size()))
+              << Qt::flush;
+    }
     // Standard input is read through the event loop, so the link stays served meanwhile.
     auto *console = new ConsoleReader(this);
     auto answered = std::make_shared<bool>(false);

@@ -98,9 +98,11 @@ const QList<CtlCommand> &CtlRunner::commands()
          QT_TRANSLATE_NOOP("stepcomctl", "print the live status as one JSON object per line,\n"
                                          "until --count samples or Ctrl-C (--interval MS)"),
          &CtlRunner::runMonitor},
-        {"dump", "dump FILE",
-         QT_TRANSLATE_NOOP("stepcomctl", "read every setting and save it as a profile file\n"
-                                         "(--name, --notes; --include-link adds id and baud)"),
+        {"dump", "dump FILE|FOLDER/",
+         QT_TRANSLATE_NOOP("stepcomctl",
+                           "read every setting and save it as a profile file\n"
+                           "(--name, --notes; --include-link adds id and baud);\n"
+                           "into a folder: one file per --id, \"id2 NAME DATE.json\""),
          &CtlRunner::runDump},
         {"diff", "diff FILE",
          QT_TRANSLATE_NOOP("stepcomctl", "compare the controller with a profile; exit 0 same,\n"
@@ -127,7 +129,8 @@ const QList<CtlCommand> &CtlRunner::commands()
         {"report", "report FILE.pdf|.html",
          QT_TRANSLATE_NOOP("stepcomctl", "write the commissioning report (--name, --notes,\n"
                                          "--lang en|zh_CN; --from PROFILE: from a profile\n"
-                                         "file and its checklist, no controller needed)"),
+                                         "file and its checklist, no controller needed;\n"
+                                         "--id 1,2,3: every controller in one document)"),
          &CtlRunner::runReport},
     };
     return table;

@@ -77,6 +77,10 @@ private:
     void printLeftOut(const Profile &profile, const QString &heading);
     void runDiffFiles();
     void runReportFromFile(const QString &path);
+    // report --id 1,2,3: every controller of the line in one document (ctlmachine.cpp).
+    void runMachineReport();
+    // dump into a folder: one file per id, named by BusDump (ctlmachine.cpp).
+    void dumpIntoFolder(const QString &folder, const QHash<QString, qint64> &values);
     void confirmThenApply(const QList<ParameterWrite> &writes);
     void applyWrites(const QList<ParameterWrite> &writes);
     // Saves the settings read before an apply as a backup (BackupStore), unless --no-backup;
@@ -114,6 +118,7 @@ private:
     QString m_errBuffer;     // the current id's messages, printed prefixed with its id
     QList<QStringList> m_idErrors;
     QString m_multiArgument; // dump: the path asked for, suffixed per id
+    QString m_dumpFolder;    // dump: the folder asked for, one file per id inside
 };
 
 } // namespace stepcom

@@ -369,6 +369,7 @@ void DeviceSession::command(const Parameter &coil, std::function<void(const Resu
 
 void DeviceSession::emergencyStop()
 {
+    Q_EMIT emergencyStopRequested();
     if (!m_link->isConnected()) {
         say(Severity::Warning, tr("E-STOP: not connected, nothing was sent"));
         return;

@@ -158,6 +158,16 @@ public:
     int backgroundIntervalMs() const;
     // The background poll's view of a device not in view (Unknown before its first read).
     BusDeviceStatus deviceStatus(int id) const;
+    // Read or write a device of the line whether it is in view or not (sessiondevices.cpp):
+    // the device in view goes through read()/write() (its store follows); another one through
+    // a client addressed to its id, leaving the store alone. Link settings (device.id,
+    // device.baud) are refused for a device not in view: the link cannot follow it there.
+    void readDevice(int id, const QList<const Parameter *> &params,
+                    std::function<void(const ReadOutcome &)> done);
+    void writeDevice(int id, const QList<ParameterWrite> &writes,
+                     std::function<void(const WriteOutcome &)> done);
+    // The link as it reaches device `id` ("/dev/ttyUSB0 · 9600 8N1 · id 2").
+    QString describeDevice(int id) const;
 
 Q_SIGNALS:
     void connected(bool ok, const QString &reason);
@@ -182,6 +192,9 @@ Q_SIGNALS:
     // After emergencyStop(): which controllers acknowledged their E-STOP, and which did not
     // (in the order of the list).
     void emergencyStopFinished(const QList<int> &acknowledged, const QList<int> &notAcknowledged);
+    // emergencyStop() was asked for, before anything is cancelled or sent: work that runs
+    // device after device (a profile applied to several) stops here.
+    void emergencyStopRequested();
 
 private:
     friend class SessionInternals; // tests and the benchmark's link measurements

@@ -249,6 +249,12 @@ QString CommissioningReport::html(const QString &imageSource) const
                                "<body>\n")
                     .arg(esc(title));
     h += QStringLiteral("<h1>%1</h1>\n").arg(esc(title));
+    return h + body(imageSource) + QStringLiteral("</body></html>\n");
+}
+
+QString CommissioningReport::body(const QString &imageSource) const
+{
+    QString h;
     if (!m_in.title.isEmpty())
         h += QStringLiteral("<p><b>%1</b></p>\n").arg(esc(m_in.title));
     if (m_in.fromFile())
@@ -272,7 +278,7 @@ QString CommissioningReport::html(const QString &imageSource) const
                       ? QStringLiteral("—")
                       : esc(m_in.notes).replace(QLatin1Char('\n'), QLatin1String("<br>")));
     h += certificate.signatures();
-    return h + QStringLiteral("</body></html>\n");
+    return h;
 }
 
 QImage CommissioningReport::picture() const

@@ -22,6 +22,8 @@ public:
 
     // HTML body; the XY picture is referenced as `imageSource`.
     QString html(const QString &imageSource) const;
+    // The sections under the title, for a document of several devices (MachineReport).
+    QString body(const QString &imageSource) const;
     // A document with the picture as a resource, ready to print.
     std::unique_ptr<QTextDocument> document() const;
     QImage picture() const;

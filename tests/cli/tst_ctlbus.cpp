@@ -1,7 +1,12 @@
+#include "map/registermap.h"
+#include "profile/profilefile.h"
 #include "programrun.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 
+#include <QDate>
+#include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -102,6 +107,119 @@ private Q_SLOTS:
         QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("axis-id1.json"))));
         QVERIFY(QFileInfo::exists(dir.filePath(QStringLiteral("axis-id2.json"))));
         QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("axis.json"))));
+    }
+
+    void dumpIntoAFolderWritesOneFilePerDevice()
+    {
+        QTemporaryDir dir;
+        const ProgramRun r = ctl({"--sim", "--id", "1-3", "--name", "Mill", "dump", dir.path()});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QString day = QDate::currentDate().toString(Qt::ISODate);
+        QStringList files = QDir(dir.path()).entryList(QDir::Files, QDir::Name);
+        QCOMPARE(files, (QStringList{QStringLiteral("id1 Mill %1.json").arg(day),
+                                     QStringLiteral("id2 Mill %1.json").arg(day),
+                                     QStringLiteral("id3 Mill %1.json").arg(day)}));
+        // Each file is that device's: its id is in it.
+        const ProfileParseResult p =
+            ProfileFile::load(dir.filePath(files.at(1)), RegisterMap::builtin());
+        QVERIFY(p.ok());
+        QCOMPARE(p.profile->deviceId, 2);
+        QCOMPARE(p.profile->values.value(QStringLiteral("device.id")), 2);
+        // A folder that is not there: nothing is saved anywhere.
+        const ProgramRun missing =
+            ctl({"--sim", "--id", "1,2", "dump", dir.filePath(QStringLiteral("nope/"))});
+        QCOMPARE(missing.exitCode, 2);
+        QVERIFY2(missing.err.contains(QStringLiteral("no such folder")), qPrintable(missing.err));
+    }
+
+    void aFolderDumpSavesEveryDeviceThatAnswers()
+    {
+        SimHost host;
+        QVERIFY(start(host, true, {1, 2}));
+        QTemporaryDir dir;
+        const ProgramRun r =
+            ctl(tcp(host) + QStringList{"--id", "1,7,2", "dump", dir.path() + "/"});
+        QCOMPARE(r.exitCode, 1); // the worst: id 7 does not answer
+        QVERIFY2(r.err.contains(QStringLiteral("id 7: ")), qPrintable(r.err));
+        const QString day = QDate::currentDate().toString(Qt::ISODate);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files, QDir::Name),
+                 (QStringList{QStringLiteral("id1 %1.json").arg(day),
+                              QStringLiteral("id2 %1.json").arg(day)}));
+    }
+
+    void applyWritesOnlyTheIdsNamed()
+    {
+        SimHost host;
+        QVERIFY(start(host, true, {1, 2, 3}));
+        const qint64 speed = host.deviceAt(1)->value(QStringLiteral("motor1.speed")).value_or(0);
+        QTemporaryDir dir;
+        QVERIFY(
+            ctl(tcp(host) + QStringList{"--id", "1", "dump", dir.filePath("one.json")}).exitCode ==
+            0);
+        // The profile: device 1's settings with a faster motor 1.
+        Profile profile =
+            *ProfileFile::load(dir.filePath("one.json"), RegisterMap::builtin()).profile;
+        profile.values[QStringLiteral("motor1.speed")] = speed + 11;
+        QVERIFY(ProfileFile::save(dir.filePath("fast.json"), profile, RegisterMap::builtin())
+                    .isEmpty());
+        const ProgramRun r = ctl(tcp(host) + QStringList{"--id", "2,3", "--yes", "--no-backup",
+                                                         "apply", dir.filePath("fast.json")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("== device id 3 ==")), qPrintable(r.out));
+        QCOMPARE(host.deviceAt(1)->value(QStringLiteral("motor1.speed")).value_or(0), speed);
+        QCOMPARE(host.deviceAt(2)->value(QStringLiteral("motor1.speed")).value_or(0), speed + 11);
+        QCOMPARE(host.deviceAt(3)->value(QStringLiteral("motor1.speed")).value_or(0), speed + 11);
+        // Asked on standard input: each id's question comes after what it is about.
+        profile.values[QStringLiteral("motor1.speed")] = speed + 22;
+        QVERIFY(ProfileFile::save(dir.filePath("faster.json"), profile, RegisterMap::builtin())
+                    .isEmpty());
+        ProgramOptions answers;
+        answers.input = QByteArray("y\nn\n");
+        const ProgramRun asked =
+            runProgram(QStringLiteral("stepcomctl"),
+                       tcp(host) + QStringList{"--id", "1,2", "--no-backup", "apply",
+                                               dir.filePath("faster.json")},
+                       answers);
+        QCOMPARE(asked.exitCode, 2); // the worst: id 2 was not confirmed
+        const qsizetype question = asked.out.indexOf(QStringLiteral("to id 1? [y/N]"));
+        QVERIFY2(question > asked.out.indexOf(QStringLiteral("will write motor1.speed")),
+                 qPrintable(asked.out));
+        QVERIFY2(asked.out.contains(QStringLiteral("to id 2? [y/N]")), qPrintable(asked.out));
+        QCOMPARE(host.deviceAt(1)->value(QStringLiteral("motor1.speed")).value_or(0), speed + 22);
+        QCOMPARE(host.deviceAt(2)->value(QStringLiteral("motor1.speed")).value_or(0), speed + 11);
+    }
+
+    void reportCoversEveryDevice()
+    {
+        QTemporaryDir dir;
+        const QString html = dir.filePath(QStringLiteral("machine.html"));
+        const ProgramRun r = ctl({"--sim", "--id", "1-3", "--name", "Mill 7", "report", html});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QFile f(html);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(f.readAll());
+        QVERIFY(text.contains(QStringLiteral("3 controllers")));
+        QVERIFY(text.contains(QStringLiteral("Mill 7")));
+        for (int id : {1, 2, 3})
+            QVERIFY2(text.contains(QStringLiteral(">Controller id %1</h1>").arg(id)),
+                     qPrintable(QString::number(id)));
+        QCOMPARE(text.count(QStringLiteral("data:image/png;base64,")), 3);
+        // A PDF too.
+        const QString pdf = dir.filePath(QStringLiteral("machine.pdf"));
+        QCOMPARE(ctl({"--sim", "--id", "1,2", "report", pdf}).exitCode, 0);
+        QVERIFY(QFileInfo(pdf).size() > 1000);
+    }
+
+    void reportRefusesALineWithADeviceMissing()
+    {
+        SimHost host;
+        QVERIFY(start(host, true, {1, 2}));
+        QTemporaryDir dir;
+        const QString html = dir.filePath(QStringLiteral("machine.html"));
+        const ProgramRun r = ctl(tcp(host) + QStringList{"--id", "1,7,2", "report", html});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("id 7: ")), qPrintable(r.err));
+        QVERIFY(!QFileInfo::exists(html));
     }
 
     void severalIdsAreRefusedWhereTheyMakeNoSense()

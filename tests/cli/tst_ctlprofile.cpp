@@ -493,8 +493,8 @@ private Q_SLOTS:
         const Run r = ctl({QStringLiteral("--help")}, {}, false);
         QCOMPARE(r.exitCode, 0);
         for (const char *s :
-             {"dump FILE", "diff FILE", "diff A.json B.json", "apply FILE", "report FILE.pdf|.html",
-              "--include-link", "--notes", "--from PROFILE"})
+             {"dump FILE|FOLDER/", "diff FILE", "diff A.json B.json", "apply FILE",
+              "report FILE.pdf|.html", "--include-link", "--notes", "--from PROFILE"})
             QVERIFY2(r.out.contains(QLatin1String(s)), s);
     }
 };

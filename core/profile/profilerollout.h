@@ -1,0 +1,90 @@
+#pragma once
+
+#include "profile/profile.h"
+#include "profile/profilediff.h"
+
+#include <QHash>
+#include <QObject>
+#include <QPointer>
+#include <QStringList>
+
+namespace stepcom {
+
+class DeviceSession;
+
+// One device's part in a profile applied to several: what it held, what differed, what the
+// user chose, and how it ended.
+struct RolloutDevice
+{
+    enum class State { Pending, Compared, Written, Skipped, Failed };
+    int id = 0;
+    QString name;
+    State state = State::Pending;
+    QHash<QString, qint64> before;        // every profile value as read before writing
+    QList<ProfileDifference> differences; // rows that differ (link settings left out)
+    QStringList chosen;                   // keys to write (all differing ones at first)
+    QStringList verified;                 // written, read back and equal
+    QString reason;                       // skipped or failed: why; written: the backup
+    QString backup;                       // the backup saved before writing
+};
+
+// Applies one profile to several controllers of the line, one after the other: compare()
+// reads each and lists what differs (nothing is written); after the user confirmed, apply()
+// saves a backup of each device's settings, writes its chosen differences, and verifies them
+// by read-back. Each device ends written (every chosen value verified), skipped (nothing
+// chosen, or nothing differed) or failed (with why); a failure on one does not stop the
+// others, an E-STOP stops all that is left. device.id and device.baud are never applied here:
+// one id for several devices would make them collide.
+class ProfileRollout : public QObject
+{
+    Q_OBJECT
+public:
+    ProfileRollout(DeviceSession *session, const Profile &profile, QObject *parent = nullptr);
+
+    // Where the backups before writing go (BackupStore::defaultDirectory() unless set).
+    void setBackupDirectory(const QString &directory) { m_backupDir = directory; }
+    const Profile &profile() const { return m_profile; }
+
+    // Reads every id in `ids` (names: what the device list calls them) and compares.
+    void compare(const QList<int> &ids, const QHash<int, QString> &names = {});
+    // The keys to write to `id` (of its differences); the rest of them are left as they are.
+    void choose(int id, const QStringList &keys);
+    // Writes what is chosen; only after compare() has finished.
+    void apply();
+    bool isBusy() const { return m_busy; }
+    bool isApplied() const { return m_applied; }
+    bool isCompared() const { return m_compared; }
+    const QList<RolloutDevice> &devices() const { return m_devices; }
+    const RolloutDevice *device(int id) const;
+    // How many chosen values go to how many devices.
+    int chosenValues() const;
+    int chosenDevices() const;
+    // One line per device: "id 2 (Y axis): written and verified, 3 value(s)", translated.
+    static QString describe(const RolloutDevice &d);
+    // The worst of the devices: true when none failed.
+    bool allOk() const;
+
+Q_SIGNALS:
+    void compared();
+    void deviceFinished(int id);
+    void finished(bool ok);
+
+private:
+    void compareNext();
+    void applyNext();
+    void end(RolloutDevice &d, RolloutDevice::State state, const QString &reason);
+    void stopAll(); // E-STOP: nothing more goes out
+
+    QPointer<DeviceSession> m_session;
+    Profile m_profile;
+    QString m_backupDir;
+    QList<RolloutDevice> m_devices;
+    int m_index = 0;
+    bool m_busy = false;
+    bool m_compared = false;
+    bool m_applied = false;
+    bool m_stopped = false;
+    quint64 m_generation = 0; // an answer after an E-STOP is dropped
+};
+
+} // namespace stepcom

@@ -1,0 +1,170 @@
+#include "report/machinereport.h"
+
+#include "profile/settingsfingerprint.h"
+#include "report/commissioningreport.h"
+#include "report/reporthtml.h"
+
+#include <QBuffer>
+#include <QFileInfo>
+#include <QImage>
+#include <QPdfWriter>
+#include <QSaveFile>
+#include <QTextDocument>
+#include <QUrl>
+
+namespace stepcom {
+
+namespace {
+
+using namespace reporthtml;
+
+QString imageName(int index)
+{
+    return QStringLiteral("stepcom-xy-%1.png").arg(index + 1);
+}
+
+} // namespace
+
+MachineReport::MachineReport(QList<ReportInput> devices, const QString &title, const QString &notes,
+                             const QString &locale)
+    : m_devices(std::move(devices))
+    , m_title(title)
+    , m_notes(notes)
+    , m_locale(locale)
+    , m_date(QDateTime::currentDateTime())
+{
+    for (ReportInput &d : m_devices) {
+        d.locale = locale;
+        if (!d.date.isValid())
+            d.date = m_date;
+    }
+}
+
+QString MachineReport::title() const
+{
+    return tr("Commissioning report of a machine: %n controller(s)", nullptr,
+              int(m_devices.size()));
+}
+
+QString MachineReport::heading(const ReportInput &device) const
+{
+    return device.title.isEmpty()
+               ? tr("Controller id %1").arg(device.deviceId)
+               : tr("Controller id %1: %2").arg(device.deviceId).arg(device.title);
+}
+
+QString MachineReport::summary() const
+{
+    QString h = QStringLiteral("<h2>%1</h2>\n").arg(esc(tr("Controllers on the line")));
+    h += QLatin1String(kTable);
+    h += row(
+        {esc(tr("Device id")), esc(tr("Name")), esc(tr("Link")), esc(tr("Settings fingerprint"))},
+        true);
+    for (const ReportInput &d : m_devices) {
+        h += row({QString::number(d.deviceId),
+                  esc(d.title.isEmpty() ? QStringLiteral("—") : d.title),
+                  esc(d.link.isEmpty() ? QStringLiteral("—") : d.link),
+                  esc(SettingsFingerprint::line(d.map, SettingsFingerprint::ordered(d.values)))});
+    }
+    h += QStringLiteral("</table>\n");
+    const QLocale locale = m_locale.isEmpty() ? QLocale() : QLocale(m_locale);
+    h += QStringLiteral("<p>%1</p>\n")
+             .arg(esc(tr("Date: %1").arg(locale.toString(m_date, QLocale::LongFormat))));
+    h += QStringLiteral("<h2>%1</h2>\n<p>%2</p>\n")
+             .arg(esc(tr("Notes")),
+                  m_notes.isEmpty()
+                      ? QStringLiteral("—")
+                      : esc(m_notes).replace(QLatin1Char('\n'), QLatin1String("<br>")));
+    return h;
+}
+
+QString MachineReport::html(const QStringList &imageSources) const
+{
+    const QString title = this->title();
+    QString h = QStringLiteral("<html><head><meta charset=\"utf-8\"><title>%1</title></head>"
+                               "<body>\n")
+                    .arg(esc(title));
+    h += QStringLiteral("<h1>%1</h1>\n").arg(esc(title));
+    if (!m_title.isEmpty())
+        h += QStringLiteral("<p><b>%1</b></p>\n").arg(esc(m_title));
+    h += summary();
+    for (qsizetype i = 0; i < m_devices.size(); ++i) {
+        const ReportInput &d = m_devices.at(i);
+        // Each controller's sheet on its own pages.
+        h += QStringLiteral("<h1 style=\"page-break-before: always\">%1</h1>\n")
+                 .arg(esc(heading(d)));
+        ReportInput sheet = d;
+        sheet.title.clear(); // the heading names it
+        h += CommissioningReport(sheet).body(imageSources.value(i));
+    }
+    return h + QStringLiteral("</body></html>\n");
+}
+
+std::unique_ptr<QTextDocument> MachineReport::document() const
+{
+    // The single report's document brings the fonts (Chinese included) and the line height.
+    ReportInput first = m_devices.value(0);
+    first.locale = m_locale;
+    auto doc = CommissioningReport(first).document();
+    QStringList names;
+    for (qsizetype i = 0; i < m_devices.size(); ++i)
+        names << imageName(int(i));
+    doc->setHtml(html(names));
+    for (qsizetype i = 0; i < m_devices.size(); ++i)
+        doc->addResource(QTextDocument::ImageResource, QUrl(names.at(i)),
+                         CommissioningReport(m_devices.at(i)).picture());
+    return doc;
+}
+
+QString MachineReport::write(const QString &path) const
+{
+    if (m_devices.isEmpty())
+        return tr("%1: no controller to report on").arg(path);
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == QLatin1String("pdf"))
+        return writePdf(path);
+    if (suffix == QLatin1String("html") || suffix == QLatin1String("htm"))
+        return writeHtml(path);
+    return tr("%1: the report is written as .pdf or .html, not .%2").arg(path, suffix);
+}
+
+QString MachineReport::writePdf(const QString &path) const
+{
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return tr("cannot write %1: %2").arg(path, file.errorString());
+    {
+        QPdfWriter writer(&file);
+        writer.setPageSize(QPageSize(QPageSize::A4));
+        writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
+        writer.setResolution(300);
+        writer.setTitle(title());
+        writer.setCreator(QStringLiteral("StepCom %1").arg(QStringLiteral(STEPCOM_VERSION)));
+        document()->print(&writer);
+    }
+    if (file.error() != QFileDevice::NoError || !file.commit())
+        return tr("cannot write %1: %2").arg(path, file.errorString());
+    return {};
+}
+
+QString MachineReport::writeHtml(const QString &path) const
+{
+    // One self-contained file: each picture travels inside it as a data URL.
+    QStringList sources;
+    for (const ReportInput &d : m_devices) {
+        QByteArray png;
+        QBuffer buffer(&png);
+        buffer.open(QIODevice::WriteOnly);
+        CommissioningReport(d).picture().save(&buffer, "PNG");
+        sources << QStringLiteral("data:image/png;base64,") + QString::fromLatin1(png.toBase64());
+    }
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return tr("cannot write %1: %2").arg(path, file.errorString());
+    const QByteArray bytes = html(sources).toUtf8();
+    if (file.write(bytes) != bytes.size() || !file.commit())
+        return tr("cannot write %1: %2").arg(path, file.errorString());
+    return {};
+}
+
+} // namespace stepcom
