@@ -18,6 +18,7 @@
 namespace stepcom {
 
 class BusPoller;
+class DeviceMemory;
 class JogController;
 class LinkHealth;
 class ModbusLink;
@@ -148,14 +149,19 @@ public:
     QList<int> deviceIds() const;
     int deviceInView() const;
     // Show another device of the list without reconnecting: a jog still held is stopped on the
-    // device it runs on, then the store and the live poll move to `id`. False (and a message)
-    // when `id` is not on the list.
+    // device it runs on, what the store holds is put aside for the device that was in view and
+    // `id`'s is put back at once (then read again), and the live poll moves to `id`. Motion
+    // supervision and references stay per device (MotionSupervisor). False (and a message) when
+    // `id` is not on the list or a step move still runs.
     bool showDevice(int id);
     // How often each device not in view has its status read.
     void setBackgroundIntervalMs(int ms);
     int backgroundIntervalMs() const;
-    // The background poll's view of a device not in view (Unknown before its first read).
+    // What the status polls saw of a device, in view or not (Unknown before its first read).
     BusDeviceStatus deviceStatus(int id) const;
+    // The device values known of any device of the line: the store's for the device in view,
+    // else what was read while it was in view with the background poll's newer status on top.
+    QHash<QString, qint64> knownValues(int id) const;
 
 Q_SIGNALS:
     void connected(bool ok, const QString &reason);
@@ -204,6 +210,7 @@ private:
     TravelLimits m_limits;
     RiskGuard m_guard;
     BusPoller *m_bus;
+    DeviceMemory *m_memory; // what the store held for each device not in view
     QList<int> m_deviceIds; // the line's devices in order; empty: the link's id alone
     StatusRecorder *m_recorder = nullptr;
     std::unique_ptr<SimulatorStarter> m_sim;
