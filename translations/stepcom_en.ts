@@ -1622,6 +1622,21 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CtlBusMonitor</name>
+    <message>
+        <source>link lost: %1</source>
+        <translation>link lost: %1</translation>
+    </message>
+    <message>
+        <source>id %1</source>
+        <translation>id %1</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>id %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>link lost: %1</source>
@@ -1810,10 +1825,6 @@
         <translation>distance</translation>
     </message>
     <message>
-        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
-        <translation>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</translation>
-    </message>
-    <message>
         <source>--id: %1</source>
         <translation>--id: %1</translation>
     </message>
@@ -1832,6 +1843,10 @@
     <message>
         <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
         <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</translation>
+    </message>
+    <message>
+        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
+        <translation>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, dump and command: each in turn on the one line, output keyed by id.</translation>
     </message>
 </context>
 <context>
@@ -2129,10 +2144,6 @@
         <translation>%1: &apos;%2&apos; is not a number</translation>
     </message>
     <message>
-        <source>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</source>
-        <translation>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</translation>
-    </message>
-    <message>
         <source>id %1: %2</source>
         <translation>id %1: %2</translation>
     </message>
@@ -2171,6 +2182,10 @@
     <message>
         <source>the controller does not answer at id %1: %2</source>
         <translation>the controller does not answer at id %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, monitor, diff, apply, dump and command (without --wait)</source>
+        <translation>%1: give one device id; several ids work with read, monitor, diff, apply, dump and command (without --wait)</translation>
     </message>
 </context>
 <context>
@@ -2396,6 +2411,10 @@
     <message>
         <source>motor %1</source>
         <translation>motor %1</translation>
+    </message>
+    <message>
+        <source>running: %1</source>
+        <translation>running: %1</translation>
     </message>
 </context>
 <context>
@@ -2731,6 +2750,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>showing device %1</source>
         <translation>showing device %1</translation>
+    </message>
+    <message>
+        <source>Device %1: %2</source>
+        <translation>Device %1: %2</translation>
+    </message>
+    <message>
+        <source>A step move still runs on device %1: wait for its end or stop it, then show device %2</source>
+        <translation>A step move still runs on device %1: wait for its end or stop it, then show device %2</translation>
     </message>
 </context>
 <context>
@@ -6890,12 +6917,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>pulse a command coil (e.g. motor1.stop, estop)</translation>
     </message>
     <message>
-        <source>print the live status as one JSON object per line,
-until --count samples or Ctrl-C (--interval MS)</source>
-        <translation>print the live status as one JSON object per line,
-until --count samples or Ctrl-C (--interval MS)</translation>
-    </message>
-    <message>
         <source>read every setting and save it as a profile file
 (--name, --notes; --include-link adds id and baud)</source>
         <translation>read every setting and save it as a profile file
@@ -6968,6 +6989,16 @@ controllers answer at --id</source>
 leaves the factory) the device id N and check it
 answers there; refuses when N is taken or two
 controllers answer at --id</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS);
+with --id 1,2,3 each device in turn, one line a
+sample keyed by its id (--json for JSON)</source>
+        <translation>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS);
+with --id 1,2,3 each device in turn, one line a
+sample keyed by its id (--json for JSON)</translation>
     </message>
 </context>
 </TS>

@@ -1614,6 +1614,21 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CtlBusMonitor</name>
+    <message>
+        <source>link lost: %1</source>
+        <translation>连接中断：%1</translation>
+    </message>
+    <message>
+        <source>id %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>ID %1：%2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>link lost: %1</source>
@@ -1802,10 +1817,6 @@
         <translation>距离</translation>
     </message>
     <message>
-        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
-        <translation>设备 ID 1-255（默认 1）；read、diff、apply、dump 和 command 可给多个（1,2,3 或 1-3）：在同一条总线上依次执行，输出按 ID 分开。</translation>
-    </message>
-    <message>
         <source>--id: %1</source>
         <translation>--id：%1</translation>
     </message>
@@ -1824,6 +1835,10 @@
     <message>
         <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
         <translation>未指定命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、report）</translation>
+    </message>
+    <message>
+        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
+        <translation>设备 ID 1-255（默认 1）；read、monitor、diff、apply、dump 和 command 可给多个（1,2,3 或 1-3）：在同一条总线上依次执行，输出按 ID 分开。</translation>
     </message>
 </context>
 <context>
@@ -2117,10 +2132,6 @@
         <translation>%1：“%2”不是数字</translation>
     </message>
     <message>
-        <source>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</source>
-        <translation>%1：请只给一个设备 ID；多个 ID 只适用于 read、diff、apply、dump 和 command（不带 --wait）</translation>
-    </message>
-    <message>
         <source>id %1: %2</source>
         <translation>ID %1：%2</translation>
     </message>
@@ -2159,6 +2170,10 @@
     <message>
         <source>the controller does not answer at id %1: %2</source>
         <translation>控制器在 ID %1 上不应答：%2</translation>
+    </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, monitor, diff, apply, dump and command (without --wait)</source>
+        <translation>%1：请只给一个设备 ID；多个 ID 只适用于 read、monitor、diff、apply、dump 和 command（不带 --wait）</translation>
     </message>
 </context>
 <context>
@@ -2384,6 +2399,10 @@
     <message>
         <source>motor %1</source>
         <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>running: %1</source>
+        <translation>运行中：%1</translation>
     </message>
 </context>
 <context>
@@ -2715,6 +2734,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>showing device %1</source>
         <translation>切换到设备 %1</translation>
+    </message>
+    <message>
+        <source>Device %1: %2</source>
+        <translation>设备 %1：%2</translation>
+    </message>
+    <message>
+        <source>A step move still runs on device %1: wait for its end or stop it, then show device %2</source>
+        <translation>设备 %1 上的单步移动仍在进行：请等它结束或停止它，然后再显示设备 %2</translation>
     </message>
 </context>
 <context>
@@ -6854,12 +6881,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>触发一个命令线圈（例如 motor1.stop、estop）</translation>
     </message>
     <message>
-        <source>print the live status as one JSON object per line,
-until --count samples or Ctrl-C (--interval MS)</source>
-        <translation>以每行一个 JSON 对象输出实时状态，
-直到 --count 个样本或 Ctrl-C（--interval MS）</translation>
-    </message>
-    <message>
         <source>read every setting and save it as a profile file
 (--name, --notes; --include-link adds id and baud)</source>
         <translation>读取全部设置并保存为参数文件
@@ -6931,6 +6952,16 @@ controllers answer at --id</source>
         <translation>给 --id（默认 1，即出厂设置）上唯一的那台控制器
 分配设备 ID N，并确认它在新 ID 上应答；N 已被占用
 或 --id 上有两台控制器应答时拒绝执行</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS);
+with --id 1,2,3 each device in turn, one line a
+sample keyed by its id (--json for JSON)</source>
+        <translation>以每行一个 JSON 对象输出实时状态，
+直到 --count 个样本或 Ctrl-C（--interval MS）；
+给出 --id 1,2,3 时依次读取每台设备，每个样本一行，
+以其 ID 标注（--json 输出 JSON）</translation>
     </message>
 </context>
 </TS>

@@ -39,8 +39,8 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("stop-bits"), tr("Stop bits: 1 or 2 (default 1)."), tr("n"),
          QStringLiteral("1")},
         {QStringLiteral("id"),
-         tr("Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and "
-            "command: each in turn on the one line, output keyed by id."),
+         tr("Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, "
+            "dump and command: each in turn on the one line, output keyed by id."),
          tr("id"), QStringLiteral("1")},
         {QStringLiteral("timeout"), tr("Answer timeout in ms (default 500)."), tr("ms"),
          QStringLiteral("500")},
