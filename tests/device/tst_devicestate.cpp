@@ -3,6 +3,7 @@
 #include "device/motionsupervisor.h"
 #include "device/referencetracker.h"
 #include "device/sessioninternals.h"
+#include "device/stepmove.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
@@ -147,6 +148,22 @@ private Q_SLOTS:
         QVERIFY(readFromTwo);
         QVERIFY(session->showDevice(2));
         QCOMPARE(motion->lastOutcome(1)->verdict, MotionOutcome::Verdict::Referenced);
+    }
+
+    // A step move puts its device's move settings back at its end: the view stays with it.
+    void aStepMoveKeepsItsDeviceInView()
+    {
+        connectBus();
+        QVERIFY(host()->deviceAt(1)->setValue(QStringLiteral("motor1.speed"), 30));
+        QSignalSpy finished(session->stepMove(), &StepMove::finished);
+        QVERIFY(session->stepMove()->start({StepMoveRequest::Kind::By, 1, 20}).isEmpty());
+        QSignalSpy said(session.get(), &DeviceSession::message);
+        QVERIFY(!session->showDevice(2));
+        QCOMPARE(session->deviceInView(), 1);
+        QVERIFY(said.last().at(1).toString().contains(QLatin1String("step move")));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+        QVERIFY(finished.first().first().value<StepMoveResult>().restored);
+        QVERIFY(session->showDevice(2));
     }
 
     void everyDevicesStatusIsCountedWithItsErrors()
