@@ -111,6 +111,56 @@ QList<Verdict> verdicts(const BaudResult &r)
     return rows;
 }
 
+QList<Verdict> busVerdicts(const BusResult &b)
+{
+    QList<Verdict> rows;
+    const QString baud = QString::number(b.baud);
+    if (!b.error.isEmpty()) {
+        rows.append({baud, QStringLiteral("(f)/(g) several controllers"), b.error, QString(),
+                     QString(), Verdict::Result::Error});
+        return rows;
+    }
+    const double roundRatio = b.roundMs.mean / b.cycleOptimumMs;
+    rows.append({baud,
+                 QStringLiteral("(f) status of %1 controllers in turn at full rate").arg(b.devices),
+                 spanText(b.roundMs, QStringLiteral("rounds")) +
+                     QStringLiteral(", %1 reads").arg(b.readsPerRound),
+                 QStringLiteral("sum of their optima %1 ms, %2 reads; within 1.10×")
+                     .arg(ms(b.cycleOptimumMs))
+                     .arg(b.cycleOptimumReads),
+                 QStringLiteral("%1×").arg(QString::number(roundRatio, 'f', 3)),
+                 judge(roundRatio <= kCycleTarget && b.readsPerRound == b.cycleOptimumReads)});
+    for (const EstopAllResult &e : b.estops) {
+        const int before = e.devices - 1; // E-STOP transactions before the last one's
+        const double bound = e.longestPollMs + before * e.longestEstopMs;
+        const double model = e.longestPollMs + before * e.modelEstopMs;
+        rows.append(
+            {baud, QStringLiteral("(g) E-STOP to all %1, the last one dispatched").arg(e.devices),
+             QStringLiteral("mean %1 ms, max %2 ms after the request (%3 stops); next on the "
+                            "wire in the order of the list: %4; all acknowledged: %5")
+                 .arg(ms(e.lastDispatchMs.mean), ms(e.lastDispatchMs.max))
+                 .arg(e.lastDispatchMs.count)
+                 .arg(e.inOrderNext ? QStringLiteral("yes") : QStringLiteral("NO"),
+                      e.allAcknowledged ? QStringLiteral("yes") : QStringLiteral("NO")),
+             QStringLiteral("≤ one transaction in flight (the longest poll, %1 ms) + %2 E-STOP "
+                            "transaction(s) of %3 ms (longest seen; model %4 ms) = %5 ms "
+                            "(model %6 ms)")
+                 .arg(ms(e.longestPollMs))
+                 .arg(before)
+                 .arg(ms(e.longestEstopMs), ms(e.modelEstopMs), ms(bound), ms(model)),
+             QString::number(e.lastDispatchMs.max / bound, 'f', 2),
+             judge(e.inOrderNext && e.allAcknowledged && e.lastDispatchMs.max <= bound)});
+        rows.append({baud, QStringLiteral("(g) every one of %1 simulators stopped").arg(e.devices),
+                     QStringLiteral("mean %1 ms, max %2 ms after the request")
+                         .arg(ms(e.allStoppedMs.mean), ms(e.allStoppedMs.max)),
+                     QStringLiteral("≤ %1 ms + the last one's request frame %2 ms")
+                         .arg(ms(bound), ms(e.frameMs)),
+                     QString::number(e.allStoppedMs.max / (bound + e.frameMs), 'f', 2),
+                     judge(e.allStoppedMs.max <= bound + e.frameMs)});
+    }
+    return rows;
+}
+
 QList<Verdict> builtinWindowVerdicts(const WindowResult &w)
 {
     QList<Verdict> rows;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QList>
 #include <QString>
 
 #include <algorithm>
@@ -11,7 +12,9 @@ struct BenchConfig
 {
     int cycles = 50;        // (a) status cycles measured
     int readAlls = 5;       // (b) read-alls measured
-    int estopRounds = 8;    // (c) emergency stops
+    int estopRounds = 8;    // (c) emergency stops, and (g) for each number of controllers
+    int busRounds = 10;     // (f) rounds over the three controllers
+    bool bus = true;        // (f) and (g): several controllers on the line
     int windowSeconds = 10; // (d) CPU is averaged over this long
     bool smoke = false;
     bool traffic = true;       // (e) the Traffic dock with an hour of frames
@@ -87,6 +90,33 @@ struct BaudResult
 
     // (d) the window at full rate
     WindowResult window;
+};
+
+// (g) E-STOP to every controller of a line, polling at full rate
+struct EstopAllResult
+{
+    int devices = 0;
+    double longestPollMs = 0;  // the longest poll transaction seen, dispatch to answer
+    double longestEstopMs = 0; // the longest E-STOP transaction seen, dispatch to answer
+    double modelEstopMs = 0;   // one E-STOP transaction by the wire-time model
+    double frameMs = 0;        // an E-STOP request's own time on the wire
+    Span lastDispatchMs;       // request -> the last controller's E-STOP on its way to the wire
+    Span allStoppedMs;         // request -> every simulated motor stopped
+    bool inOrderNext = true;   // the E-STOPs were the next requests, in the order of the list
+    bool allAcknowledged = true;
+};
+
+// (f) and (g): several controllers on one line
+struct BusResult
+{
+    int baud = 0;
+    QString error;
+    int devices = 0;           // (f) controllers polled in turn
+    double cycleOptimumMs = 0; // the sum of each one's status optimum
+    int cycleOptimumReads = 0;
+    Span roundMs;          // every controller's status read once, at full rate
+    int readsPerRound = 0; // the most seen on the link
+    QList<EstopAllResult> estops;
 };
 
 } // namespace stepcom::bench

@@ -2,6 +2,7 @@
 // simulator's wire-time model. `scripts/bench.sh` builds and runs it and updates the document.
 #include "benchreport.h"
 #include "benchrunner.h"
+#include "busprobe.h"
 #include "trafficprobe.h"
 #include "windowprobe.h"
 
@@ -32,7 +33,8 @@ int main(int argc, char *argv[])
         "Measures StepCom against the simulator's wire-time model at 9600, 19200 and 38400 "
         "baud: (a) the live status cycle, (b) read-all, (c) the emergency stop while polling at "
         "full rate, (d) the window's CPU and memory while polling at full rate, (e) the Traffic "
-        "dock holding an hour of that polling. Prints a table "
+        "dock holding an hour of that polling, (f) the status of three controllers on one line "
+        "in turn, (g) the E-STOP to every controller of a line of 2, 3 and 8. Prints a table "
         "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -51,6 +53,7 @@ int main(int argc, char *argv[])
          QStringLiteral("path")},
         {QStringLiteral("no-window"), QStringLiteral("Skip (d).")},
         {QStringLiteral("no-traffic"), QStringLiteral("Skip (e).")},
+        {QStringLiteral("no-bus"), QStringLiteral("Skip (f) and (g).")},
         {QStringLiteral("traffic-seconds"),
          QStringLiteral(
              "(e) seconds of polling at full rate the Traffic dock holds (default 3600)."),
@@ -66,6 +69,7 @@ int main(int argc, char *argv[])
     config.cycles = std::max(2, parser.value(QStringLiteral("cycles")).toInt());
     config.windowSeconds = std::max(1, parser.value(QStringLiteral("window-seconds")).toInt());
     config.traffic = !parser.isSet(QStringLiteral("no-traffic"));
+    config.bus = !parser.isSet(QStringLiteral("no-bus"));
     config.trafficSeconds = std::max(1, parser.value(QStringLiteral("traffic-seconds")).toInt());
     QList<int> bauds{9600, 19200, 38400};
     if (config.smoke) {
@@ -73,6 +77,7 @@ int main(int argc, char *argv[])
         config.cycles = 5;
         config.readAlls = 1;
         config.estopRounds = 2;
+        config.busRounds = 2;
         config.windowSeconds = 2;
         config.trafficSeconds = 60;
     }
@@ -95,6 +100,11 @@ int main(int argc, char *argv[])
         err << QStringLiteral("stepcom-bench: measuring at %1 baud ...").arg(baud) << Qt::endl;
         const BaudResult r = measureBaud(baud, config);
         rows += verdicts(r);
+        if (config.bus) {
+            err << QStringLiteral("stepcom-bench: several controllers at %1 baud ...").arg(baud)
+                << Qt::endl;
+            rows += busVerdicts(measureBus(baud, config));
+        }
         if (r.error.isEmpty() && r.cycleMs.mean > 0) {
             const double frames = 2.0 * r.readsPerCycle * 1000.0 / r.cycleMs.mean;
             if (frames > fastestFrames) {

@@ -41,8 +41,8 @@ void CtlRunner::startMulti()
     }
     if (!runsPerId(*m_chosen)) {
         const CtlCommand *chosen = std::exchange(m_chosen, nullptr); // a usage error, not per id
-        fail(UsageError, tr("%1: give one device id; several ids work with read, diff, apply, "
-                            "dump, report and command (without --wait)")
+        fail(UsageError, tr("%1: give one device id; several ids work with read, monitor, diff, "
+                            "apply, dump, report and command (without --wait)")
                              .arg(QLatin1String(chosen->name)));
         return;
     }

@@ -45,12 +45,7 @@ CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, QObjec
     , m_err(stderr)
 {
     m_session->setStatusIntervalMs(intervalMs);
-    for (const QString &key : m_session->statusKeys()) {
-        if (const Parameter *p = m_session->map().find(key))
-            m_params << p;
-    }
-    std::stable_sort(m_params.begin(), m_params.end(),
-                     [](const Parameter *a, const Parameter *b) { return rank(a) < rank(b); });
+    m_params = statusParameters(*m_session);
     connect(m_session, &DeviceSession::statusCycleFinished, this,
             [this](bool ok, qint64) { onCycle(ok); });
     connect(m_session, &DeviceSession::linkLost, this, [this](const QString &reason) {
@@ -68,19 +63,45 @@ void CtlMonitor::start()
     m_session->startStatus();
 }
 
-QString CtlMonitor::sampleLine(qint64 tMs) const
+QList<const Parameter *> CtlMonitor::statusParameters(const DeviceSession &session)
+{
+    QList<const Parameter *> params;
+    for (const QString &key : session.statusKeys()) {
+        if (const Parameter *p = session.map().find(key))
+            params << p;
+    }
+    std::stable_sort(params.begin(), params.end(),
+                     [](const Parameter *a, const Parameter *b) { return rank(a) < rank(b); });
+    return params;
+}
+
+QString CtlMonitor::timeFields(qint64 tMs)
 {
     QDateTime now = QDateTime::currentDateTime();
     now = now.toOffsetFromUtc(now.offsetFromUtc()); // so the text carries the offset
-    QString line = QStringLiteral("{\"time\":\"%1\",\"t_ms\":%2")
-                       .arg(now.toString(Qt::ISODateWithMs))
-                       .arg(tMs);
-    for (const Parameter *p : m_params) {
-        const std::optional<qint64> raw = m_session->parameters()->deviceValue(p->key);
-        line += QLatin1Char(',') + quoted(p->key) + QLatin1Char(':') +
-                (raw ? p->formatRaw(*raw) : QStringLiteral("null"));
+    return QStringLiteral("\"time\":\"%1\",\"t_ms\":%2")
+        .arg(now.toString(Qt::ISODateWithMs))
+        .arg(tMs);
+}
+
+QString CtlMonitor::valueFields(const QList<const Parameter *> &params,
+                                const std::function<std::optional<qint64>(const QString &)> &raw)
+{
+    QString fields;
+    for (const Parameter *p : params) {
+        const std::optional<qint64> value = raw(p->key);
+        fields += QLatin1Char(',') + quoted(p->key) + QLatin1Char(':') +
+                  (value ? p->formatRaw(*value) : QStringLiteral("null"));
     }
-    return line + QLatin1Char('}');
+    return fields;
+}
+
+QString CtlMonitor::sampleLine(qint64 tMs) const
+{
+    const ParameterStore *store = m_session->parameters();
+    return QLatin1Char('{') + timeFields(tMs) +
+           valueFields(m_params, [store](const QString &key) { return store->deviceValue(key); }) +
+           QLatin1Char('}');
 }
 
 void CtlMonitor::onCycle(bool ok)

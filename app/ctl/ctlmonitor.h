@@ -5,6 +5,9 @@
 #include <QObject>
 #include <QTextStream>
 
+#include <functional>
+#include <optional>
+
 namespace stepcom {
 
 class DeviceSession;
@@ -23,6 +26,13 @@ public:
     void start();
     // One line for the values known now (null for what was never read).
     QString sampleLine(qint64 tMs) const;
+    // The status parameters in the order the lines give them: positions, running flags, rest.
+    static QList<const Parameter *> statusParameters(const DeviceSession &session);
+    // `"time":"…","t_ms":N` (no braces), the start of every line.
+    static QString timeFields(qint64 tMs);
+    // `,"key":value` for each parameter (null for what `raw` does not know).
+    static QString valueFields(const QList<const Parameter *> &params,
+                               const std::function<std::optional<qint64>(const QString &)> &raw);
 
 Q_SIGNALS:
     // 0 after --count samples or a signal, 1 when the link was lost.

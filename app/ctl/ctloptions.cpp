@@ -54,9 +54,9 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("stop-bits"), tr("Stop bits: 1 or 2 (default 1)."), tr("n"),
          QStringLiteral("1")},
         {QStringLiteral("id"),
-         tr("Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump, "
-            "report and command: each in turn on the one line, output keyed by id (report: one "
-            "document)."),
+         tr("Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, "
+            "dump, report and command: each in turn on the one line, output keyed by id (report: "
+            "one document)."),
          tr("id"), QStringLiteral("1")},
         {QStringLiteral("timeout"), tr("Answer timeout in ms (default 500)."), tr("ms"),
          QStringLiteral("500")},

@@ -1,5 +1,6 @@
 #include "ctlrunner.h"
 
+#include "ctlbusmonitor.h"
 #include "ctlmonitor.h"
 #include "ctlmotionwait.h"
 
@@ -96,7 +97,9 @@ const QList<CtlCommand> &CtlRunner::commands()
          &CtlRunner::runMove},
         {"monitor", "monitor",
          QT_TRANSLATE_NOOP("stepcomctl", "print the live status as one JSON object per line,\n"
-                                         "until --count samples or Ctrl-C (--interval MS)"),
+                                         "until --count samples or Ctrl-C (--interval MS);\n"
+                                         "with --id 1,2,3 each device in turn, one line a\n"
+                                         "sample keyed by its id (--json for JSON)"),
          &CtlRunner::runMonitor},
         {"dump", "dump FILE|FOLDER/",
          QT_TRANSLATE_NOOP("stepcomctl",
@@ -175,7 +178,7 @@ void CtlRunner::start()
     }
     if (chosen) {
         m_chosen = chosen;
-        if (isMulti())
+        if (isPerId())
             startMulti();
         else
             (this->*chosen->run)();
@@ -194,7 +197,7 @@ void CtlRunner::finish(int code)
 {
     if (m_finished)
         return;
-    if (isMulti() && m_chosen) {
+    if (isPerId()) {
         if (nextId(code))
             return;
         code = worstCode();
@@ -549,6 +552,14 @@ void CtlRunner::runMonitor()
         return;
     }
     connectThen([this] {
+        if (isMulti()) {
+            // Several ids: one status read per device in turn, each line keyed by its id.
+            auto *bus = new CtlBusMonitor(m_session, m_options.ids, m_options.count,
+                                          m_options.intervalMs, m_options.json, this);
+            connect(bus, &CtlBusMonitor::finished, this, &CtlRunner::finish);
+            bus->start();
+            return;
+        }
         auto *monitor = new CtlMonitor(m_session, m_options.count, m_options.intervalMs, this);
         connect(monitor, &CtlMonitor::finished, this, &CtlRunner::finish);
         monitor->start();

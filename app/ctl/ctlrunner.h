@@ -90,6 +90,11 @@ private:
     // --id with several ids (ctlbus.cpp): the command runs for each in turn over the one link;
     // the output is keyed by id and the exit code is the worst of them.
     bool isMulti() const { return m_options.ids.size() > 1; }
+    // Several ids and a command run once per id (monitor watches them all in one run).
+    bool isPerId() const
+    {
+        return isMulti() && m_chosen && QLatin1String(m_chosen->name) != QLatin1String("monitor");
+    }
     void startMulti();
     // One id's run ended with `code`: true when the next one was started.
     bool nextId(int code);

@@ -1,6 +1,7 @@
 #include "device/buspoller.h"
 
 #include "device/deviceclient.h"
+#include "device/parameterstore.h"
 
 #include <algorithm>
 
@@ -27,7 +28,7 @@ void BusPoller::setDevices(const QList<int> &ids)
 
 void BusPoller::setIntervalMs(int ms)
 {
-    m_intervalMs = std::max(50, ms);
+    m_intervalMs = ms <= 0 ? 0 : std::max(50, ms); // 0: each turn as the last one ends
 }
 
 void BusPoller::start()
@@ -48,6 +49,23 @@ void BusPoller::stop()
 BusDeviceStatus BusPoller::status(int id) const
 {
     return m_status.value(id, BusDeviceStatus::of(id));
+}
+
+void BusPoller::noteLiveCycle(int id, bool ok, const ParameterStore &store, const QString &error)
+{
+    BusDeviceStatus &s = m_status[id];
+    s.id = id;
+    ++s.cycles;
+    if (ok) {
+        s.state = BusDeviceStatus::State::Answering;
+        for (const QString &key : std::as_const(m_keys))
+            if (const auto raw = store.deviceValue(key))
+                s.values.insert(key, *raw);
+    } else {
+        ++s.errors;
+        s.state = BusDeviceStatus::State::NotAnswering;
+        s.lastError = error;
+    }
 }
 
 void BusPoller::arm()

@@ -12,6 +12,7 @@ namespace stepcom {
 
 class DeviceClient;
 class ModbusLink;
+class ParameterStore;
 class RegisterMap;
 
 // The slow status poll of the controllers on the line that are not in view: one device's
@@ -28,7 +29,8 @@ public:
     // The devices to poll, in the order of the list (the device in view is not among them).
     void setDevices(const QList<int> &ids);
     QList<int> devices() const { return m_ids; }
-    // How often each background device's status is read.
+    // How often each background device's status is read (at least every 50 ms; 0: as fast as
+    // the link allows, each turn armed as the last one ends).
     void setIntervalMs(int ms);
     int intervalMs() const { return m_intervalMs; }
 
@@ -39,6 +41,9 @@ public:
     BusDeviceStatus status(int id) const;
     // Keeps what is known of a device that leaves or joins the background poll.
     void setStatus(const BusDeviceStatus &status) { m_status.insert(status.id, status); }
+    // The device in view is polled live, not here: its cycles are counted with the others'
+    // (state, failed reads, the status values the store holds after it).
+    void noteLiveCycle(int id, bool ok, const ParameterStore &store, const QString &error);
 
 Q_SIGNALS:
     void statusChanged(int id);

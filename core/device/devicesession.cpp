@@ -3,6 +3,7 @@
 #include "bus/modbuslink.h"
 #include "bus/wiretap.h"
 #include "device/buspoller.h"
+#include "device/devicememory.h"
 #include "device/idlist.h"
 #include "device/jogcontroller.h"
 #include "device/linkhealth.h"
@@ -29,11 +30,15 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     , m_jog(new JogController(this, this))
     , m_step(new StepMove(this))
     , m_bus(new BusPoller(m_link, map, this))
+    , m_memory(new DeviceMemory)
 {
     // The outcome is said when the controller showed it, not when the command went out.
-    connect(m_motion, &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
-        say(o.ok() ? Severity::Info : Severity::Warning, m_motion->text(o));
-    });
+    connect(m_motion, &MotionSupervisor::deviceFinished, this,
+            [this](int id, const MotionOutcome &o) {
+                const QString text = m_motion->text(o);
+                say(o.ok() ? Severity::Info : Severity::Warning,
+                    deviceIds().size() > 1 ? tr("Device %1: %2").arg(id).arg(text) : text);
+            });
     m_poller->useStatusKeys(); // the full status; positions and running while a motor runs
     m_poller->setIntervalMs(Poller::intervalFromEnvironment(100));
     m_bus->setKeys(m_poller->keys());
@@ -71,9 +76,13 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
         m_poller->stop();
         m_bus->stop();
         m_store->forgetDeviceValues();
+        m_memory->forgetDeviceValues();
         say(Severity::Error, tr("Link lost: %1").arg(reason));
         Q_EMIT disconnected(reason);
         Q_EMIT linkLost(reason);
+    });
+    connect(m_poller, &Poller::cycleFinished, this, [this](bool ok) {
+        m_bus->noteLiveCycle(deviceInView(), ok, *m_store, m_poller->lastError());
     });
     connect(m_poller, &Poller::cycleFinished, this, &DeviceSession::statusCycleFinished);
     connect(m_poller, &Poller::fastChanged, this, &DeviceSession::statusFastChanged);
@@ -85,6 +94,7 @@ DeviceSession::~DeviceSession()
     m_jog = nullptr;
     delete m_link; // before the simulator it may be talking to
     m_link = nullptr;
+    delete m_memory;
 }
 
 StatusRecorder *DeviceSession::recorder()
@@ -258,12 +268,19 @@ void DeviceSession::disconnectFrom(const QString &reason)
     m_bus->stop();
     m_link->close(why);
     m_store->forgetDeviceValues();
+    m_memory->forgetDeviceValues();
     Q_EMIT disconnected(why);
 }
 
 void DeviceSession::readAll()
 {
-    m_client->readAll([this](const ReadOutcome &r) {
+    const int id = deviceInView();
+    m_client->readAll([this, id](const ReadOutcome &r) {
+        if (id != deviceInView()) {
+            // Another device was shown meanwhile: its blocks went to that one, none is sure.
+            Q_EMIT readFinished(false);
+            return;
+        }
         m_store->setDeviceValues(r.values);
         if (!r.ok)
             say(Severity::Error, tr("Reading failed: %1").arg(r.errors.join(QLatin1String("; "))));
@@ -346,7 +363,8 @@ void DeviceSession::command(const QString &key)
     }
     const QString label = p->label.text(Translators::current());
     const bool motion = p->command == CommandClass::Motion;
-    command(*p, [this, key, label, motion](const Result &r) {
+    const int id = deviceInView(); // the pulse goes to this one, whatever is shown by the answer
+    command(*p, [this, key, label, motion, id](const Result &r) {
         // A moving command is only acknowledged here; MotionSupervisor says how it ended.
         if (r.ok)
             say(Severity::Info, motion ? tr("%1: sent").arg(label) : tr("%1: done").arg(label));
@@ -358,6 +376,8 @@ void DeviceSession::command(const QString &key)
             m_store->setUnsavedToFlash(true); // factory values are in RAM; flash keeps the old ones
             readAll();                        // show what the controller holds now
         }
+        if (r.ok)
+            m_motion->commandAcknowledged(id, key);
         Q_EMIT commandFinished(key, r.ok);
     });
 }
@@ -465,74 +485,6 @@ void DeviceSession::emergencyStopAll(const QList<int> &ids)
             },
             this);
     }
-}
-
-void DeviceSession::setDeviceIds(const QList<int> &ids)
-{
-    m_deviceIds = ids;
-    updateBackground();
-}
-
-QList<int> DeviceSession::deviceIds() const
-{
-    if (m_deviceIds.isEmpty())
-        return {deviceInView()};
-    return m_deviceIds;
-}
-
-int DeviceSession::deviceInView() const
-{
-    return m_link->settings().deviceId;
-}
-
-bool DeviceSession::showDevice(int id)
-{
-    if (!deviceIds().contains(id)) {
-        say(Severity::Error,
-            tr("Device id %1 is not on this line (%2)").arg(id).arg(IdList::format(deviceIds())));
-        return false;
-    }
-    if (id == deviceInView())
-        return true;
-    stopJogging(JogStop::PageLeft); // its stops are addressed to the device they run on
-    const bool polling = m_poller->isActive();
-    m_poller->stop();
-    m_bus->stop();
-    // Reads queued for the device that was in view would land in the new one's store.
-    m_link->cancelQueued(Priority::Read, tr("showing device %1").arg(id));
-    m_link->setDeviceId(id);
-    m_store->forgetDeviceValues();
-    updateBackground();
-    Q_EMIT deviceInViewChanged(id);
-    if (m_link->isConnected() && m_live) {
-        readAll();
-        if (polling)
-            m_poller->start();
-        m_bus->start();
-    }
-    return true;
-}
-
-void DeviceSession::setBackgroundIntervalMs(int ms)
-{
-    m_bus->setIntervalMs(ms);
-}
-
-int DeviceSession::backgroundIntervalMs() const
-{
-    return m_bus->intervalMs();
-}
-
-BusDeviceStatus DeviceSession::deviceStatus(int id) const
-{
-    return m_bus->status(id);
-}
-
-void DeviceSession::updateBackground()
-{
-    QList<int> others = deviceIds();
-    others.removeAll(deviceInView());
-    m_bus->setDevices(others);
 }
 
 void DeviceSession::saveToFlash()

@@ -18,6 +18,7 @@
 namespace stepcom {
 
 class BusPoller;
+class DeviceMemory;
 class JogController;
 class LinkHealth;
 class ModbusLink;
@@ -150,13 +151,15 @@ public:
     QList<int> deviceIds() const;
     int deviceInView() const;
     // Show another device of the list without reconnecting: a jog still held is stopped on the
-    // device it runs on, then the store and the live poll move to `id`. False (and a message)
-    // when `id` is not on the list.
+    // device it runs on, what the store holds is put aside for the device that was in view and
+    // `id`'s is put back at once (then read again), and the live poll moves to `id`. Motion
+    // supervision and references stay per device (MotionSupervisor). False (and a message) when
+    // `id` is not on the list or a step move still runs.
     bool showDevice(int id);
     // How often each device not in view has its status read.
     void setBackgroundIntervalMs(int ms);
     int backgroundIntervalMs() const;
-    // The background poll's view of a device not in view (Unknown before its first read).
+    // What the status polls saw of a device, in view or not (Unknown before its first read).
     BusDeviceStatus deviceStatus(int id) const;
     // Read or write a device of the line whether it is in view or not (sessiondevices.cpp):
     // the device in view goes through read()/write() (its store follows); another one through
@@ -168,6 +171,9 @@ public:
                      std::function<void(const WriteOutcome &)> done);
     // The link as it reaches device `id` ("/dev/ttyUSB0 · 9600 8N1 · id 2").
     QString describeDevice(int id) const;
+    // The device values known of any device of the line: the store's for the device in view,
+    // else what was read while it was in view with the background poll's newer status on top.
+    QHash<QString, qint64> knownValues(int id) const;
 
 Q_SIGNALS:
     void connected(bool ok, const QString &reason);
@@ -221,6 +227,7 @@ private:
     TravelLimits m_limits;
     RiskGuard m_guard;
     BusPoller *m_bus;
+    DeviceMemory *m_memory; // what the store held for each device not in view
     QList<int> m_deviceIds; // the line's devices in order; empty: the link's id alone
     StatusRecorder *m_recorder = nullptr;
     std::unique_ptr<SimulatorStarter> m_sim;

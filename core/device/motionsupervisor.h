@@ -20,6 +20,9 @@ struct Request;
 // to (MotionJudge): "done" only at the end point, "referenced" only on the home input at 0.
 // Stops, E-STOPs and link losses seen in between are remembered as the cause, and they take the
 // axes' reference away. Front-ends show the state; the words are made when they are shown.
+// It follows every controller of the line at once (by device id): a homing on device 2 is still
+// judged from the background poll while device 3 is in view. The calls without an id and the
+// signals `started` and `finished` are about the device in view.
 class MotionSupervisor : public QObject
 {
     Q_OBJECT
@@ -32,6 +35,8 @@ public:
     // The motion being followed that moves `motor` / of `kind`, if any.
     std::optional<MotionStart> active(int motor) const;
     std::optional<MotionStart> active(MotionKind kind) const;
+    // Every motion followed on `device` (any device of the line).
+    QList<MotionStart> activeOn(int device) const;
     // Motors of the followed motion of `kind` that the last poll saw running.
     QList<int> running(MotionKind kind) const;
     // The last outcome that moved `motor` / of `kind`.
@@ -42,9 +47,17 @@ public:
     // Before sending `command`: a warning when it drives an axis into a limit already ON.
     QString startWarning(const QString &command) const;
 
+    // The session: `device` acknowledged `key` (it was in view when the command was given).
+    void commandAcknowledged(int device, const QString &key);
+    // The session: fresh status of `device` is in (the live poll or the background poll).
+    void statusRead(int device, bool ok);
+    int view() const { return m_view; }
+
 Q_SIGNALS:
     void started(const stepcom::MotionStart &start);
     void finished(const stepcom::MotionOutcome &outcome);
+    // Every outcome, of any device of the line.
+    void deviceFinished(int device, const stepcom::MotionOutcome &outcome);
     // An E-STOP went out: every held control (jog buttons, keys, starts) lets go at once.
     void emergencyStopSent();
     // Something shown may have changed: a motion started, progressed or ended.
@@ -57,23 +70,30 @@ private:
         MotionWatch watch;
         bool judging = false;
     };
+    // What is followed and was judged on one controller.
+    struct Device
+    {
+        QList<Followed> followed;
+        QHash<int, MotionOutcome> byMotor;
+        QHash<int, MotionOutcome> byKind;
+    };
 
-    StatusValues snapshot() const;
-    void onCommandFinished(const QString &key, bool ok);
+    StatusValues snapshot(int device) const;
+    const Device &inView() const;
     void onDispatched(const Request &request);
-    void onCycle(bool ok);
     void onDisconnected();
-    void readEndThenJudge(quint64 id);
-    void conclude(quint64 id, const StatusValues &end);
-    int indexOf(quint64 id) const;
+    void setView(int device);
+    void readEndThenJudge(int device, quint64 id);
+    void conclude(int device, quint64 id, const StatusValues &end);
+    static int indexOf(const Device &d, quint64 id);
 
     DeviceSession *m_session;
+    ModbusLink *m_link;
     ReferenceTracker *m_references;
     QHash<quint16, QString> m_coils; // coil address -> key
-    QList<Followed> m_followed;
+    QHash<int, Device> m_devices;    // by device id
+    int m_view = 1;
     quint64 m_nextId = 1;
-    QHash<int, MotionOutcome> m_byMotor;
-    QHash<int, MotionOutcome> m_byKind;
 };
 
 } // namespace stepcom

@@ -60,12 +60,22 @@ void ParameterStore::setDeviceValues(const QHash<QString, qint64> &values)
 void ParameterStore::forgetDeviceValues()
 {
     if (m_file)
-        return; // a file's values: no link to lose
-    for (auto it = m_entries.cbegin(); it != m_entries.cend(); ++it) {
-        Entry e = it.value();
+        return;                                // a file's values: no link to lose
+    const QStringList keys = m_entries.keys(); // update() may detach a hash a snapshot shares
+    for (const QString &key : keys) {
+        Entry e = m_entries.value(key);
         e.device.reset();
-        update(it.key(), e);
+        update(key, e);
     }
+}
+
+void ParameterStore::restore(const Snapshot &snapshot)
+{
+    // By key list: the snapshot may share this hash's data, and update() detaches it.
+    const QStringList keys = m_entries.keys();
+    for (const QString &key : keys)
+        update(key, snapshot.entries.value(key));
+    setUnsavedToFlash(snapshot.unsaved);
 }
 
 QString ParameterStore::edit(const QString &key, qint64 raw)
@@ -167,10 +177,10 @@ void ParameterStore::applyWriteOutcome(const QList<ParameterWrite> &writes,
 
 void ParameterStore::openFile(const QString &name, const QHash<QString, qint64> &values)
 {
-    for (auto it = m_entries.cbegin(); it != m_entries.cend(); ++it)
-        update(it.key(),
-               Entry{values.contains(it.key()) ? std::optional<qint64>(values.value(it.key()))
-                                               : std::nullopt,
+    const QStringList keys = m_entries.keys(); // update() may detach a hash a snapshot shares
+    for (const QString &key : keys)
+        update(key,
+               Entry{values.contains(key) ? std::optional<qint64>(values.value(key)) : std::nullopt,
                      std::nullopt, State::Unknown, QString()});
     setUnsavedToFlash(false);
     m_file = true;
@@ -182,8 +192,9 @@ void ParameterStore::closeFile()
 {
     if (!m_file)
         return;
-    for (auto it = m_entries.cbegin(); it != m_entries.cend(); ++it)
-        update(it.key(), Entry());
+    const QStringList keys = m_entries.keys();
+    for (const QString &key : keys)
+        update(key, Entry());
     m_file = false;
     m_fileName.clear();
     Q_EMIT originChanged();

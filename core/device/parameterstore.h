@@ -28,6 +28,14 @@ public:
         QString error; // why the last write failed
     };
 
+    // Everything held for one controller: put aside when another device of the line is shown,
+    // put back when it is shown again (DeviceMemory).
+    struct Snapshot
+    {
+        QHash<QString, Entry> entries;
+        bool unsaved = false;
+    };
+
     explicit ParameterStore(const RegisterMap &map, QObject *parent = nullptr);
 
     const RegisterMap &map() const { return m_map; }
@@ -45,6 +53,10 @@ public:
     // The link is gone: what the device holds is unknown again (edits stay). A file (openFile)
     // keeps its values.
     void forgetDeviceValues();
+
+    Snapshot snapshot() const { return {m_entries, m_unsaved}; }
+    // Holds what `snapshot` held (keys it lacks become unknown); views hear of every change.
+    void restore(const Snapshot &snapshot);
 
     // Validates against the map; returns the problem, or empty when the edit is held.
     // Editing back to the device's value drops the edit.

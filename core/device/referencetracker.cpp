@@ -4,18 +4,32 @@ namespace stepcom {
 
 ReferenceTracker::ReferenceTracker(int motors, QObject *parent)
     : QObject(parent)
+    , m_motors(motors)
+{}
+
+ReferenceTracker::Reason ReferenceTracker::reasonOn(int device, int motor) const
 {
-    m_reasons.fill(Reason::NeverHomed, motors);
+    const QList<Reason> reasons = m_reasons.value(device);
+    return motor >= 1 && motor <= reasons.size() ? reasons.at(motor - 1) : Reason::NeverHomed;
 }
 
-ReferenceTracker::Reason ReferenceTracker::reason(int motor) const
+bool ReferenceTracker::isReferencedOn(int device, int motor) const
 {
-    return motor >= 1 && motor <= m_reasons.size() ? m_reasons.at(motor - 1) : Reason::NeverHomed;
+    return reasonOn(device, motor) == Reason::Homed;
 }
 
-QString ReferenceTracker::text(int motor) const
+QList<int> ReferenceTracker::referencedMotors(int device) const
 {
-    switch (reason(motor)) {
+    QList<int> motors;
+    for (int n = 1; n <= m_motors; ++n)
+        if (isReferencedOn(device, n))
+            motors << n;
+    return motors;
+}
+
+QString ReferenceTracker::textOn(int device, int motor) const
+{
+    switch (reasonOn(device, motor)) {
     case Reason::Homed:
         return tr("referenced");
     case Reason::NeverHomed:
@@ -34,20 +48,51 @@ QString ReferenceTracker::text(int motor) const
     return {};
 }
 
-void ReferenceTracker::setReason(int motor, Reason reason)
+void ReferenceTracker::setReasonOn(int device, int motor, Reason reason)
 {
-    if (motor < 1 || motor > m_reasons.size() || m_reasons.at(motor - 1) == reason)
+    if (motor < 1 || motor > m_motors || reasonOn(device, motor) == reason)
         return;
-    m_reasons[motor - 1] = reason;
-    Q_EMIT changed(motor);
+    QList<Reason> &reasons = m_reasons[device];
+    if (reasons.size() < m_motors)
+        reasons.resize(m_motors, Reason::NeverHomed);
+    reasons[motor - 1] = reason;
+    if (device == m_view)
+        Q_EMIT changed(motor);
+    Q_EMIT deviceChanged(device);
 }
 
-void ReferenceTracker::loseAll(Reason reason)
+void ReferenceTracker::loseAll(int device, Reason reason)
 {
-    for (int n = 1; n <= m_reasons.size(); ++n) {
-        if (isReferenced(n))
-            setReason(n, reason);
+    for (int n = 1; n <= m_motors; ++n) {
+        if (isReferencedOn(device, n))
+            setReasonOn(device, n, reason);
     }
+}
+
+void ReferenceTracker::loseEverywhere(Reason reason)
+{
+    const QList<int> devices = m_reasons.keys();
+    for (int device : devices)
+        loseAll(device, reason);
+}
+
+void ReferenceTracker::setView(int device)
+{
+    if (device == m_view)
+        return;
+    m_view = device;
+    for (int n = 1; n <= m_motors; ++n)
+        Q_EMIT changed(n);
+}
+
+void ReferenceTracker::renameView(int device)
+{
+    if (device == m_view)
+        return;
+    m_reasons.insert(device, m_reasons.take(m_view));
+    Q_EMIT deviceChanged(m_view);
+    m_view = device;
+    Q_EMIT deviceChanged(device);
 }
 
 } // namespace stepcom

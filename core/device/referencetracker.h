@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QHash>
 #include <QList>
 #include <QObject>
 
@@ -7,7 +8,9 @@ namespace stepcom {
 
 // Whether each axis is referenced: homed onto its home input with nothing in between, as
 // judged by MotionJudge. Anything that may have cost steps or moved the zero takes it away.
-// The words are made when asked for, so they follow the language.
+// Kept per controller of the line (by device id); the calls without an id are about the device
+// in view (setView), so the pages need not know there are several. The words are made when
+// asked for, so they follow the language.
 class ReferenceTracker : public QObject
 {
     Q_OBJECT
@@ -26,21 +29,42 @@ public:
 
     explicit ReferenceTracker(int motors, QObject *parent = nullptr);
 
-    int motorCount() const { return int(m_reasons.size()); }
+    int motorCount() const { return m_motors; }
     bool isReferenced(int motor) const { return reason(motor) == Reason::Homed; }
-    Reason reason(int motor) const;
+    Reason reason(int motor) const { return reasonOn(m_view, motor); }
     // "referenced" / "not referenced (E-STOP)", in the installed language.
-    QString text(int motor) const;
+    QString text(int motor) const { return textOn(m_view, motor); }
 
-    void setReason(int motor, Reason reason);
-    // Every axis loses its reference for `reason` (only referenced ones change).
-    void loseAll(Reason reason);
+    // The same for any device of the line.
+    bool isReferencedOn(int device, int motor) const;
+    Reason reasonOn(int device, int motor) const;
+    QString textOn(int device, int motor) const;
+    QList<int> referencedMotors(int device) const;
+
+    void setReason(int motor, Reason reason) { setReasonOn(m_view, motor, reason); }
+    void setReasonOn(int device, int motor, Reason reason);
+    // Every axis of `device` loses its reference for `reason` (only referenced ones change).
+    void loseAll(int device, Reason reason);
+    void loseAll(Reason reason) { loseAll(m_view, reason); }
+    // Every axis of every device (the link is gone).
+    void loseEverywhere(Reason reason);
+
+    // The device the calls without an id are about; every motor's view changes.
+    int view() const { return m_view; }
+    void setView(int device);
+    // The controller in view got a new id: what was known of it goes with it.
+    void renameView(int device);
 
 Q_SIGNALS:
+    // A motor of the device in view (also for every motor when the view moves).
     void changed(int motor);
+    // Something of `device` changed, in view or not.
+    void deviceChanged(int device);
 
 private:
-    QList<Reason> m_reasons;
+    QHash<int, QList<Reason>> m_reasons; // by device id; a device never seen: never homed
+    int m_motors;
+    int m_view = 1;
 };
 
 } // namespace stepcom

@@ -168,6 +168,68 @@ private Q_SLOTS:
         checkLines(r);
     }
 
+    // --id 1,2,3: each device in turn, one line a sample keyed by its id, --count of each.
+    void severalDevicesInTurnAsJson()
+    {
+        const Run r = ctl({"--sim", "--id", "1,2,3", "monitor", "--count", "2", "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(r.lines.size(), 6);
+        QList<int> ids;
+        qint64 lastT = -1;
+        for (int i = 0; i < r.lines.size(); ++i) {
+            const QJsonObject &o = r.lines.at(i);
+            QVERIFY2(!o.isEmpty() && !r.raw.at(i).contains(QLatin1Char(' ')),
+                     qPrintable(r.raw.at(i)));
+            ids << o.value("id").toInt();
+            QVERIFY(o.value("time").isString());
+            QVERIFY(qint64(o.value("t_ms").toDouble()) >= lastT);
+            lastT = qint64(o.value("t_ms").toDouble());
+            for (const QString &key : kStatusKeys)
+                QVERIFY2(o.value(key).isDouble(), qPrintable(key));
+        }
+        QCOMPARE(ids, (QList<int>{1, 2, 3, 1, 2, 3})); // fair: round robin in the order given
+    }
+
+    void severalDevicesAsText()
+    {
+        SimHost host;
+        SimOptions options;
+        options.rtu = true;
+        options.ids = {1, 2, 3};
+        QString error;
+        QVERIFY2(host.start(options, &error), qPrintable(error));
+        QVERIFY(host.deviceAt(2)->command(QStringLiteral("motor1.forward")));
+        const Run r = ctl({"--port", host.rtuPath(), "--id", "1-3", "monitor", "--count", "1"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QCOMPARE(r.raw.size(), 3);
+        for (int i = 0; i < 3; ++i) {
+            QVERIFY2(r.raw.at(i).startsWith(QStringLiteral("id %1  t_ms=").arg(i + 1)),
+                     qPrintable(r.raw.at(i)));
+            // Each device's own status: only device 2's motor 1 runs.
+            QVERIFY2(r.raw.at(i).contains(QStringLiteral("motor1.running=%1").arg(i == 1 ? 1 : 0)),
+                     qPrintable(r.raw.at(i)));
+        }
+        QVERIFY(host.deviceAt(2)->command(QStringLiteral("motor1.stop")));
+    }
+
+    // A device that does not answer: the others are still watched, the exit code is the worst.
+    void theExitCodeIsTheWorstOfTheDevices()
+    {
+        SimHost host;
+        SimOptions options;
+        options.rtu = true;
+        options.ids = {1, 2};
+        QString error;
+        QVERIFY2(host.start(options, &error), qPrintable(error));
+        const Run r =
+            ctl({"--port", host.rtuPath(), "--id", "1,5,2", "monitor", "--count", "1", "--json"});
+        QCOMPARE(r.exitCode, 1);
+        QCOMPARE(r.lines.size(), 2);
+        QCOMPARE(r.lines.at(0).value("id").toInt(), 1);
+        QCOMPARE(r.lines.at(1).value("id").toInt(), 2);
+        QVERIFY2(r.err.contains(QLatin1String("id 5: ")), qPrintable(r.err));
+    }
+
     void usageErrors_data()
     {
         QTest::addColumn<QStringList>("args");

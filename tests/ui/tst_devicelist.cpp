@@ -1,4 +1,6 @@
 #include "device/devicesession.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
 #include "simsession.h"
 #include "widgets/devicelistdock.h"
 
@@ -50,6 +52,27 @@ private Q_SLOTS:
         // The name is the user's.
         dock.table()->item(2, 1)->setText(QStringLiteral("Z axis"));
         QCOMPARE(dock.nameOf(3), QStringLiteral("Z axis"));
+    }
+
+    // Referenced or not, a motion under way and failed reads are each device's own.
+    void eachRowShowsItsOwnDevicesState()
+    {
+        DeviceSession session;
+        test::useBuiltinSimulator(session, {1, 2});
+        session.setDeviceIds({1, 2});
+        session.setBackgroundIntervalMs(300);
+        test::connectToSimulator(session);
+        DeviceListDock dock(&session);
+        test::simHost(session)->deviceAt(1)->setMachinePosition(1, 10.0);
+        session.command(QStringLiteral("motor1.home"));
+        QTRY_VERIFY(dock.rowTexts(0).at(2).startsWith(QStringLiteral("running: ")));
+        QTRY_COMPARE_WITH_TIMEOUT(dock.rowTexts(0).at(3), QStringLiteral("motor 1"), 15000);
+        QCOMPARE(dock.rowTexts(1).at(3), QStringLiteral("no"));
+        QVERIFY(session.showDevice(2));
+        QCOMPARE(dock.rowTexts(0).at(3), QStringLiteral("motor 1")); // still, while 2 is in view
+        QCOMPARE(dock.rowTexts(1).at(3), QStringLiteral("no"));
+        QTRY_COMPARE_WITH_TIMEOUT(dock.rowTexts(0).at(2), QStringLiteral("answering"), 10000);
+        QCOMPARE(dock.rowTexts(0).at(4), QStringLiteral("0"));
     }
 };
 

@@ -4,6 +4,7 @@
 #include "device/linkhealth.h"
 #include "device/motionsupervisor.h"
 #include "device/referencetracker.h"
+#include "i18n/translators.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -52,8 +53,9 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
     connect(m_session, &DeviceSession::deviceInViewChanged, this, &DeviceListDock::refresh);
     connect(m_session, &DeviceSession::linkStateChanged, this, &DeviceListDock::refresh);
     connect(m_session, &DeviceSession::statusCycleFinished, this, &DeviceListDock::refresh);
-    connect(m_session->motion()->references(), &ReferenceTracker::changed, this,
+    connect(m_session->motion()->references(), &ReferenceTracker::deviceChanged, this,
             &DeviceListDock::refresh);
+    connect(m_session->motion(), &MotionSupervisor::changed, this, &DeviceListDock::refresh);
     retranslate();
 }
 
@@ -101,6 +103,12 @@ QString DeviceListDock::stateText(int id) const
 {
     if (!m_session->isConnected())
         return tr("not connected");
+    // A motion followed on a device (in view or not) says more than "answering".
+    if (const QList<MotionStart> moving = m_session->motion()->activeOn(id); !moving.isEmpty()) {
+        const Parameter *p = m_session->map().find(moving.first().command);
+        return tr("running: %1")
+            .arg(p ? p->label.text(Translators::current()) : moving.first().command);
+    }
     if (id == m_session->deviceInView()) {
         switch (m_session->health()->state()) {
         case LinkHealth::State::Answering:
@@ -124,14 +132,11 @@ QString DeviceListDock::stateText(int id) const
 
 QString DeviceListDock::referencedText(int id) const
 {
-    // References are followed for the device in view only.
-    if (id != m_session->deviceInView() || !m_session->isConnected())
+    if (!m_session->isConnected())
         return tr("unknown");
-    const ReferenceTracker *refs = m_session->motion()->references();
-    QStringList axes;
-    for (int m = 1; m <= refs->motorCount(); ++m)
-        if (refs->isReferenced(m))
-            axes << QString::number(m);
+    QStringList axes; // references are followed on every device of the line
+    for (int m : m_session->motion()->references()->referencedMotors(id))
+        axes << QString::number(m);
     if (axes.isEmpty())
         return tr("no");
     return tr("motor %1").arg(axes.join(QLatin1String(", ")));
@@ -144,11 +149,10 @@ void DeviceListDock::refresh()
     m_table->setRowCount(int(ids.size()));
     for (int row = 0; row < ids.size(); ++row) {
         const int id = ids.at(row);
-        const int errors =
-            id == m_session->deviceInView() ? -1 : m_session->deviceStatus(id).errors;
+        const BusDeviceStatus status = m_session->deviceStatus(id);
         const QStringList texts{QString::number(id), m_names.value(id), stateText(id),
                                 referencedText(id),
-                                errors < 0 ? QString() : QString::number(errors)};
+                                status.cycles > 0 ? QString::number(status.errors) : QString()};
         for (int c = 0; c < ColumnCount; ++c) {
             QTableWidgetItem *item = m_table->item(row, c);
             if (!item) {
@@ -159,6 +163,8 @@ void DeviceListDock::refresh()
             item->setFlags(c == NameColumn ? item->flags() | Qt::ItemIsEditable
                                            : item->flags() & ~Qt::ItemIsEditable);
             item->setText(texts.at(c));
+            if (c == ErrorsColumn) // failed status reads; the last one's reason on hover
+                item->setToolTip(status.errors > 0 ? status.lastError : QString());
         }
         if (id == m_session->deviceInView())
             m_table->selectRow(row);

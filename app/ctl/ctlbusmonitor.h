@@ -1,0 +1,60 @@
+#pragma once
+
+#include <QElapsedTimer>
+#include <QHash>
+#include <QList>
+#include <QObject>
+#include <QTextStream>
+#include <QTimer>
+
+namespace stepcom {
+
+class DeviceSession;
+class SignalWatcher;
+struct Parameter;
+struct ReadOutcome;
+
+// `stepcomctl monitor --id 1,2,3`: the status of several controllers of one line, fairly: one
+// status read per device in turn, in the order given, a round at most every --interval. Each
+// sample is one line keyed by its device id (JSON with --json, else text); --count N is N
+// samples of each device. The exit code is the worst of the devices': 1 for a device one of
+// whose reads failed (said on standard error with its id), 1 when the link was lost.
+class CtlBusMonitor : public QObject
+{
+    Q_OBJECT
+public:
+    CtlBusMonitor(DeviceSession *session, const QList<int> &ids, int count, int intervalMs,
+                  bool json, QObject *parent = nullptr);
+    void start();
+    // One sample's line for `id` from the values read.
+    QString sampleLine(int id, qint64 tMs, const QHash<QString, qint64> &values) const;
+
+Q_SIGNALS:
+    void finished(int exitCode);
+
+private:
+    void turn();
+    void onRead(quint64 generation, int id, const ReadOutcome &outcome);
+    bool countReached() const;
+    void end(int exitCode);
+
+    DeviceSession *m_session;
+    SignalWatcher *m_signals = nullptr;
+    QList<int> m_ids;
+    QList<const Parameter *> m_params;
+    int m_count;
+    int m_intervalMs;
+    bool m_json;
+    int m_next = 0;
+    QHash<int, int> m_samples; // reads per device, good or not
+    QHash<int, int> m_failed;  // of those, failed
+    quint64 m_generation = 0;  // an answer after end() is dropped
+    bool m_ended = false;
+    QElapsedTimer m_clock;
+    QElapsedTimer m_round; // since the start of the current round
+    QTimer m_timer;
+    QTextStream m_out;
+    QTextStream m_err;
+};
+
+} // namespace stepcom

@@ -1,0 +1,103 @@
+// DeviceSession, the devices of the line: which one is in view, showing another, what is
+// known of each (docs/architecture.md, "The line and its devices").
+#include "device/devicesession.h"
+
+#include "bus/modbuslink.h"
+#include "device/buspoller.h"
+#include "device/devicememory.h"
+#include "device/idlist.h"
+#include "device/poller.h"
+#include "device/stepmove.h"
+
+namespace stepcom {
+
+void DeviceSession::setDeviceIds(const QList<int> &ids)
+{
+    m_deviceIds = ids;
+    updateBackground();
+}
+
+QList<int> DeviceSession::deviceIds() const
+{
+    if (m_deviceIds.isEmpty())
+        return {deviceInView()};
+    return m_deviceIds;
+}
+
+int DeviceSession::deviceInView() const
+{
+    return m_link->settings().deviceId;
+}
+
+bool DeviceSession::showDevice(int id)
+{
+    if (!deviceIds().contains(id)) {
+        say(Severity::Error,
+            tr("Device id %1 is not on this line (%2)").arg(id).arg(IdList::format(deviceIds())));
+        return false;
+    }
+    if (id == deviceInView())
+        return true;
+    if (m_step->isBusy()) {
+        // Its end restores the move settings it changed, on the device in view.
+        say(Severity::Error, tr("A step move still runs on device %1: wait for its end or stop "
+                                "it, then show device %2")
+                                 .arg(deviceInView())
+                                 .arg(id));
+        return false;
+    }
+    stopJogging(JogStop::PageLeft); // its stops are addressed to the device they run on
+    const bool polling = m_poller->isActive();
+    m_poller->stop();
+    m_bus->stop();
+    // Reads queued for the device that was in view would land in the new one's store.
+    m_link->cancelQueued(Priority::Read, tr("showing device %1").arg(id));
+    m_memory->putAside(deviceInView(), *m_store);
+    m_link->setDeviceId(id);
+    m_memory->bringBack(id, *m_store, m_bus->status(id).values);
+    updateBackground();
+    Q_EMIT deviceInViewChanged(id);
+    if (m_link->isConnected() && m_live) {
+        readAll();
+        if (polling)
+            m_poller->start();
+        m_bus->start();
+    }
+    return true;
+}
+
+void DeviceSession::setBackgroundIntervalMs(int ms)
+{
+    m_bus->setIntervalMs(ms);
+}
+
+int DeviceSession::backgroundIntervalMs() const
+{
+    return m_bus->intervalMs();
+}
+
+BusDeviceStatus DeviceSession::deviceStatus(int id) const
+{
+    return m_bus->status(id);
+}
+
+QHash<QString, qint64> DeviceSession::knownValues(int id) const
+{
+    if (id != deviceInView())
+        return m_memory->values(id, m_bus->status(id).values);
+    QHash<QString, qint64> values;
+    for (const Parameter *p : map().holdings()) {
+        if (const auto raw = m_store->deviceValue(p->key))
+            values.insert(p->key, *raw);
+    }
+    return values;
+}
+
+void DeviceSession::updateBackground()
+{
+    QList<int> others = deviceIds();
+    others.removeAll(deviceInView());
+    m_bus->setDevices(others);
+}
+
+} // namespace stepcom
