@@ -165,6 +165,17 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BusActions</name>
+    <message>
+        <source>Assign device ids…</source>
+        <translation>Assign device ids…</translation>
+    </message>
+    <message>
+        <source>Give each controller of a new line its own id, one controller at a time</source>
+        <translation>Give each controller of a new line its own id, one controller at a time</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusScanDialog</name>
     <message>
         <source>Scan bus</source>
@@ -368,6 +379,26 @@
     <message>
         <source>Scan finished: %1. Press Connect.</source>
         <translation>Scan finished: %1. Press Connect.</translation>
+    </message>
+    <message>
+        <source>&amp;Add all found</source>
+        <translation>&amp;Add all found</translation>
+    </message>
+    <message>
+        <source>Put every controller found on the device list (View → Devices on the line)</source>
+        <translation>Put every controller found on the device list (View → Devices on the line)</translation>
+    </message>
+    <message>
+        <source>Every controller found is on the device list already.</source>
+        <translation>Every controller found is on the device list already.</translation>
+    </message>
+    <message>
+        <source>Added to the device list: id %1.</source>
+        <translation>Added to the device list: id %1.</translation>
+    </message>
+    <message>
+        <source>They answered at different baud rates; give them one baud rate (Device page or Device → Assign device ids…) before working with the list.</source>
+        <translation>They answered at different baud rates; give them one baud rate (Device page or Device → Assign device ids…) before working with the list.</translation>
     </message>
 </context>
 <context>
@@ -2148,30 +2179,6 @@
         <source>assign-id: the controller already has id %1</source>
         <translation>assign-id: the controller already has id %1</translation>
     </message>
-    <message>
-        <source>assign-id: the register map has no device.id</source>
-        <translation>assign-id: the register map has no device.id</translation>
-    </message>
-    <message>
-        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
-        <translation>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</translation>
-    </message>
-    <message>
-        <source>no controller answers at id %1: %2</source>
-        <translation>no controller answers at id %1: %2</translation>
-    </message>
-    <message>
-        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
-        <translation>id %1 is taken: a controller answers there already. Choose a free id</translation>
-    </message>
-    <message>
-        <source>device id %1 → %2: the controller answers at id %2</source>
-        <translation>device id %1 → %2: the controller answers at id %2</translation>
-    </message>
-    <message>
-        <source>the controller does not answer at id %1: %2</source>
-        <translation>the controller does not answer at id %1: %2</translation>
-    </message>
 </context>
 <context>
     <name>stepcom::DerivedValues</name>
@@ -2396,6 +2403,10 @@
     <message>
         <source>motor %1</source>
         <translation>motor %1</translation>
+    </message>
+    <message>
+        <source>Device ids are 1 to 255, not %1.</source>
+        <translation>Device ids are 1 to 255, not %1.</translation>
     </message>
 </context>
 <context>
@@ -2732,6 +2743,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>showing device %1</source>
         <translation>showing device %1</translation>
     </message>
+    <message>
+        <source>the port is not open</source>
+        <translation>the port is not open</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -2846,6 +2861,203 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>Write failed: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdAssigner</name>
+    <message>
+        <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then start the assistant.</source>
+        <translation>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then start the assistant.</translation>
+    </message>
+    <message>
+        <source>Connect the first controller, alone (a new one answers at id %1, %2 baud), then press Next. It gets id %3.</source>
+        <translation>Connect the first controller, alone (a new one answers at id %1, %2 baud), then press Next. It gets id %3.</translation>
+    </message>
+    <message>
+        <source>No free id is left (every id from %1 to 255 is on the list).</source>
+        <translation>No free id is left (every id from %1 to 255 is on the list).</translation>
+    </message>
+    <message>
+        <source>Giving the controller at id %1 the id %2…</source>
+        <translation>Giving the controller at id %1 the id %2…</translation>
+    </message>
+    <message>
+        <source>Cannot open the port at %1 baud: %2</source>
+        <translation>Cannot open the port at %1 baud: %2</translation>
+    </message>
+    <message>
+        <source>Refused: %1. Two controllers with the same id answer at once and garble each other&apos;s answers; nothing was written.</source>
+        <translation>Refused: %1. Two controllers with the same id answer at once and garble each other&apos;s answers; nothing was written.</translation>
+    </message>
+    <message>
+        <source>The controller did not get id %1: %2. Check it is the only new controller on the line, then press Next to try again.</source>
+        <translation>The controller did not get id %1: %2. Check it is the only new controller on the line, then press Next to try again.</translation>
+    </message>
+    <message>
+        <source>%1. Connect the next controller, alone, then press Next (it gets id %2), or Finish.</source>
+        <translation>%1. Connect the next controller, alone, then press Next (it gets id %2), or Finish.</translation>
+    </message>
+    <message>
+        <source>Moving the line to %1 baud…</source>
+        <translation>Moving the line to %1 baud…</translation>
+    </message>
+    <message>
+        <source>Finished: no controller was given an id.</source>
+        <translation>Finished: no controller was given an id.</translation>
+    </message>
+    <message>
+        <source>Finished: the line is at %1 baud; controllers given an id: %2.</source>
+        <translation>Finished: the line is at %1 baud; controllers given an id: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdAssistantDialog</name>
+    <message>
+        <source>Wait: a controller is being changed. The window closes when it is done.</source>
+        <translation>Wait: a controller is being changed. The window closes when it is done.</translation>
+    </message>
+    <message>
+        <source>Assign device ids</source>
+        <translation>Assign device ids</translation>
+    </message>
+    <message>
+        <source>Gives each controller of a new line its own id. Every controller leaves the factory with id %1 at %2 baud, so connect them one at a time: connect one, press Next, wait until it answers at its new id, then connect the next. A new id or baud takes effect at once; the assistant follows each controller and checks that it answers at its new id and no longer at id %1.</source>
+        <translation>Gives each controller of a new line its own id. Every controller leaves the factory with id %1 at %2 baud, so connect them one at a time: connect one, press Next, wait until it answers at its new id, then connect the next. A new id or baud takes effect at once; the assistant follows each controller and checks that it answers at its new id and no longer at id %1.</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Settings</translation>
+    </message>
+    <message>
+        <source>First id to give:</source>
+        <translation>First id to give:</translation>
+    </message>
+    <message>
+        <source>Common baud rate:</source>
+        <translation>Common baud rate:</translation>
+    </message>
+    <message>
+        <source>Name of the next controller:</source>
+        <translation>Name of the next controller:</translation>
+    </message>
+    <message>
+        <source>keep %1 (factory)</source>
+        <translation>keep %1 (factory)</translation>
+    </message>
+    <message>
+        <source>New line: start with an empty device list</source>
+        <translation>New line: start with an empty device list</translation>
+    </message>
+    <message>
+        <source>optional, e.g. X/Y table</source>
+        <translation>optional, e.g. X/Y table</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>Id</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Next: the controller is connected</source>
+        <translation>Next: the controller is connected</translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation>Finish</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+    <message>
+        <source>Press Start. The line&apos;s port is open at %1.</source>
+        <translation>Press Start. The line&apos;s port is open at %1.</translation>
+    </message>
+    <message>
+        <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</source>
+        <translation>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdChange</name>
+    <message>
+        <source>device ids are 1 to 255 (asked: %1 → %2)</source>
+        <translation>device ids are 1 to 255 (asked: %1 → %2)</translation>
+    </message>
+    <message>
+        <source>the controller already has id %1</source>
+        <translation>the controller already has id %1</translation>
+    </message>
+    <message>
+        <source>the register map has no device.id</source>
+        <translation>the register map has no device.id</translation>
+    </message>
+    <message>
+        <source>the register map has no device.baud</source>
+        <translation>the register map has no device.baud</translation>
+    </message>
+    <message>
+        <source>not connected: connect to the line first</source>
+        <translation>not connected: connect to the line first</translation>
+    </message>
+    <message>
+        <source>Asking the controller at id %1</source>
+        <translation>Asking the controller at id %1</translation>
+    </message>
+    <message>
+        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
+        <translation>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</translation>
+    </message>
+    <message>
+        <source>no controller answers at id %1: %2</source>
+        <translation>no controller answers at id %1: %2</translation>
+    </message>
+    <message>
+        <source>Making sure nobody answers at id %1 yet</source>
+        <translation>Making sure nobody answers at id %1 yet</translation>
+    </message>
+    <message>
+        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
+        <translation>id %1 is taken: a controller answers there already. Choose a free id</translation>
+    </message>
+    <message>
+        <source>Writing id %1 to the controller at id %2</source>
+        <translation>Writing id %1 to the controller at id %2</translation>
+    </message>
+    <message>
+        <source>the controller does not answer at id %1: %2</source>
+        <translation>the controller does not answer at id %1: %2</translation>
+    </message>
+    <message>
+        <source>Making sure nobody answers at id %1 any more</source>
+        <translation>Making sure nobody answers at id %1 any more</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1 now, but a controller still answers at id %2: more than one controller was connected. Disconnect all but one and try again</source>
+        <translation>the controller answers at id %1 now, but a controller still answers at id %2: more than one controller was connected. Disconnect all but one and try again</translation>
+    </message>
+    <message>
+        <source>Writing baud %1 to the controller at id %2</source>
+        <translation>Writing baud %1 to the controller at id %2</translation>
+    </message>
+    <message>
+        <source>the controller has id %1, but does not answer at %2 baud: %3</source>
+        <translation>the controller has id %1, but does not answer at %2 baud: %3</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2 at %3 baud</source>
+        <translation>device id %1 → %2: the controller answers at id %2 at %3 baud</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2</source>
+        <translation>device id %1 → %2: the controller answers at id %2</translation>
     </message>
 </context>
 <context>

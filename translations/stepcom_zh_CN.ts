@@ -165,6 +165,17 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BusActions</name>
+    <message>
+        <source>Assign device ids…</source>
+        <translation>分配设备 ID…</translation>
+    </message>
+    <message>
+        <source>Give each controller of a new line its own id, one controller at a time</source>
+        <translation>为新总线上的每台控制器逐台分配各自的 ID</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusScanDialog</name>
     <message>
         <source>Scan bus</source>
@@ -363,6 +374,26 @@
     <message>
         <source>Scan finished: %1. Press Connect.</source>
         <translation>扫描完成：%1。请按“连接”。</translation>
+    </message>
+    <message>
+        <source>&amp;Add all found</source>
+        <translation>全部加入列表(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Put every controller found on the device list (View → Devices on the line)</source>
+        <translation>把找到的每台控制器加入设备列表（视图 → 总线上的设备）</translation>
+    </message>
+    <message>
+        <source>Every controller found is on the device list already.</source>
+        <translation>找到的控制器都已在设备列表中。</translation>
+    </message>
+    <message>
+        <source>Added to the device list: id %1.</source>
+        <translation>已加入设备列表：ID %1。</translation>
+    </message>
+    <message>
+        <source>They answered at different baud rates; give them one baud rate (Device page or Device → Assign device ids…) before working with the list.</source>
+        <translation>它们在不同的波特率下应答；使用列表之前，请先给它们统一波特率（设备页面，或 设备 → 分配设备 ID…）。</translation>
     </message>
 </context>
 <context>
@@ -2136,30 +2167,6 @@
         <source>assign-id: the controller already has id %1</source>
         <translation>assign-id：控制器已经是 ID %1</translation>
     </message>
-    <message>
-        <source>assign-id: the register map has no device.id</source>
-        <translation>assign-id：寄存器表中没有 device.id</translation>
-    </message>
-    <message>
-        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
-        <translation>ID %1 上的应答是乱码：有两台或更多控制器同时应答。请只连接要分配 ID %2 的那台控制器，然后重试</translation>
-    </message>
-    <message>
-        <source>no controller answers at id %1: %2</source>
-        <translation>ID %1 上没有控制器应答：%2</translation>
-    </message>
-    <message>
-        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
-        <translation>ID %1 已被占用：已有控制器在该 ID 上应答。请选择一个空闲的 ID</translation>
-    </message>
-    <message>
-        <source>device id %1 → %2: the controller answers at id %2</source>
-        <translation>设备 ID %1 → %2：控制器在 ID %2 上应答</translation>
-    </message>
-    <message>
-        <source>the controller does not answer at id %1: %2</source>
-        <translation>控制器在 ID %1 上不应答：%2</translation>
-    </message>
 </context>
 <context>
     <name>stepcom::DerivedValues</name>
@@ -2384,6 +2391,10 @@
     <message>
         <source>motor %1</source>
         <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Device ids are 1 to 255, not %1.</source>
+        <translation>设备 ID 为 1 到 255，不能是 %1。</translation>
     </message>
 </context>
 <context>
@@ -2716,6 +2727,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>showing device %1</source>
         <translation>切换到设备 %1</translation>
     </message>
+    <message>
+        <source>the port is not open</source>
+        <translation>端口未打开</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -2830,6 +2845,203 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>写入失败：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdAssigner</name>
+    <message>
+        <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then start the assistant.</source>
+        <translation>请先连接总线（控制器所在的端口，%1 波特率，设备 ID %2），再启动向导。</translation>
+    </message>
+    <message>
+        <source>Connect the first controller, alone (a new one answers at id %1, %2 baud), then press Next. It gets id %3.</source>
+        <translation>只接上第一台控制器（新控制器在 ID %1、%2 波特率下应答），然后按“下一步”。它将得到 ID %3。</translation>
+    </message>
+    <message>
+        <source>No free id is left (every id from %1 to 255 is on the list).</source>
+        <translation>没有空闲的 ID 了（从 %1 到 255 的每个 ID 都在列表中）。</translation>
+    </message>
+    <message>
+        <source>Giving the controller at id %1 the id %2…</source>
+        <translation>正在把 ID %1 上的控制器改为 ID %2…</translation>
+    </message>
+    <message>
+        <source>Cannot open the port at %1 baud: %2</source>
+        <translation>无法以 %1 波特率打开端口：%2</translation>
+    </message>
+    <message>
+        <source>Refused: %1. Two controllers with the same id answer at once and garble each other&apos;s answers; nothing was written.</source>
+        <translation>拒绝：%1。两台相同 ID 的控制器同时应答，互相干扰成乱码；未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>The controller did not get id %1: %2. Check it is the only new controller on the line, then press Next to try again.</source>
+        <translation>控制器没有得到 ID %1：%2。请确认它是总线上唯一的新控制器，然后按“下一步”重试。</translation>
+    </message>
+    <message>
+        <source>%1. Connect the next controller, alone, then press Next (it gets id %2), or Finish.</source>
+        <translation>%1。只接上下一台控制器，然后按“下一步”（它将得到 ID %2），或按“完成”。</translation>
+    </message>
+    <message>
+        <source>Moving the line to %1 baud…</source>
+        <translation>正在把总线切换到 %1 波特率…</translation>
+    </message>
+    <message>
+        <source>Finished: no controller was given an id.</source>
+        <translation>已完成：没有控制器被分配 ID。</translation>
+    </message>
+    <message>
+        <source>Finished: the line is at %1 baud; controllers given an id: %2.</source>
+        <translation>已完成：总线为 %1 波特率；已分配 ID 的控制器：%2。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdAssistantDialog</name>
+    <message>
+        <source>Wait: a controller is being changed. The window closes when it is done.</source>
+        <translation>请稍候：正在修改一台控制器。完成后窗口自动关闭。</translation>
+    </message>
+    <message>
+        <source>Assign device ids</source>
+        <translation>分配设备 ID</translation>
+    </message>
+    <message>
+        <source>Gives each controller of a new line its own id. Every controller leaves the factory with id %1 at %2 baud, so connect them one at a time: connect one, press Next, wait until it answers at its new id, then connect the next. A new id or baud takes effect at once; the assistant follows each controller and checks that it answers at its new id and no longer at id %1.</source>
+        <translation>为新总线上的每台控制器分配各自的 ID。每台控制器出厂时都是 ID %1、%2 波特率，所以请逐台连接：接上一台，按“下一步”，等它在新 ID 上应答后再接下一台。新的 ID 或波特率立即生效；向导会跟随每台控制器，并确认它在新 ID 上应答、在 ID %1 上不再应答。</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>设置</translation>
+    </message>
+    <message>
+        <source>First id to give:</source>
+        <translation>要分配的第一个 ID：</translation>
+    </message>
+    <message>
+        <source>Common baud rate:</source>
+        <translation>统一波特率：</translation>
+    </message>
+    <message>
+        <source>Name of the next controller:</source>
+        <translation>下一台控制器的名称：</translation>
+    </message>
+    <message>
+        <source>keep %1 (factory)</source>
+        <translation>保持 %1（出厂值）</translation>
+    </message>
+    <message>
+        <source>New line: start with an empty device list</source>
+        <translation>新总线：从空的设备列表开始</translation>
+    </message>
+    <message>
+        <source>optional, e.g. X/Y table</source>
+        <translation>可选，例如 X/Y 工作台</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <source>Next: the controller is connected</source>
+        <translation>下一步：控制器已接好</translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Press Start. The line&apos;s port is open at %1.</source>
+        <translation>请按“开始”。总线端口已打开：%1。</translation>
+    </message>
+    <message>
+        <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</source>
+        <translation>请先连接总线（控制器所在的端口，%1 波特率，设备 ID %2），再按“开始”。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdChange</name>
+    <message>
+        <source>device ids are 1 to 255 (asked: %1 → %2)</source>
+        <translation>设备 ID 为 1 到 255（要求的是：%1 → %2）</translation>
+    </message>
+    <message>
+        <source>the controller already has id %1</source>
+        <translation>控制器已经是 ID %1</translation>
+    </message>
+    <message>
+        <source>the register map has no device.id</source>
+        <translation>寄存器表中没有 device.id</translation>
+    </message>
+    <message>
+        <source>the register map has no device.baud</source>
+        <translation>寄存器表中没有 device.baud</translation>
+    </message>
+    <message>
+        <source>not connected: connect to the line first</source>
+        <translation>未连接：请先连接总线</translation>
+    </message>
+    <message>
+        <source>Asking the controller at id %1</source>
+        <translation>正在询问 ID %1 上的控制器</translation>
+    </message>
+    <message>
+        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
+        <translation>ID %1 上应答乱码：有两台以上控制器在此应答。请只接上要得到 ID %2 的那台控制器，然后重试</translation>
+    </message>
+    <message>
+        <source>no controller answers at id %1: %2</source>
+        <translation>ID %1 上没有控制器应答：%2</translation>
+    </message>
+    <message>
+        <source>Making sure nobody answers at id %1 yet</source>
+        <translation>正在确认 ID %1 上还没有控制器应答</translation>
+    </message>
+    <message>
+        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
+        <translation>ID %1 已被占用：已有控制器在此应答。请选择一个空闲的 ID</translation>
+    </message>
+    <message>
+        <source>Writing id %1 to the controller at id %2</source>
+        <translation>正在把 ID %1 写入 ID %2 上的控制器</translation>
+    </message>
+    <message>
+        <source>the controller does not answer at id %1: %2</source>
+        <translation>控制器在 ID %1 上没有应答：%2</translation>
+    </message>
+    <message>
+        <source>Making sure nobody answers at id %1 any more</source>
+        <translation>正在确认 ID %1 上已无应答</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1 now, but a controller still answers at id %2: more than one controller was connected. Disconnect all but one and try again</source>
+        <translation>控制器现在在 ID %1 上应答，但 ID %2 上仍有控制器应答：接上了不止一台控制器。请只保留一台，然后重试</translation>
+    </message>
+    <message>
+        <source>Writing baud %1 to the controller at id %2</source>
+        <translation>正在把波特率 %1 写入 ID %2 上的控制器</translation>
+    </message>
+    <message>
+        <source>the controller has id %1, but does not answer at %2 baud: %3</source>
+        <translation>控制器已是 ID %1，但在 %2 波特率下没有应答：%3</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2 at %3 baud</source>
+        <translation>设备 ID %1 → %2：控制器在 ID %2、%3 波特率下应答</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2</source>
+        <translation>设备 ID %1 → %2：控制器在 ID %2 上应答</translation>
     </message>
 </context>
 <context>
