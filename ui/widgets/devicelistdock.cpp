@@ -15,6 +15,8 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <utility>
+
 namespace stepcom {
 
 namespace {
@@ -56,6 +58,7 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
         saveList();
     });
     connect(m_session, &DeviceSession::connected, this, &DeviceListDock::onConnected);
+    connect(m_session, &DeviceSession::disconnected, this, [this] { m_connectedBefore = false; });
     connect(m_session, &DeviceSession::linkStateChanged, this, &DeviceListDock::refresh);
     connect(m_session, &DeviceSession::statusCycleFinished, this, &DeviceListDock::refresh);
     connect(m_session->motion()->references(), &ReferenceTracker::changed, this,
@@ -128,7 +131,9 @@ void DeviceListDock::onConnected(bool ok)
 {
     if (!ok)
         return;
-    if (!restoreList() && m_session->deviceIds().size() > 1) {
+    // Only a new connection restores: a baud change reopens the port, the list stays.
+    const bool restored = !std::exchange(m_connectedBefore, true) && restoreList();
+    if (!restored && m_session->deviceIds().size() > 1) {
         QList<int> ids = m_session->deviceIds();
         if (!ids.contains(m_session->deviceInView())) {
             ids.prepend(m_session->deviceInView());

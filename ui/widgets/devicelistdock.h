@@ -55,6 +55,7 @@ private:
     QLabel *m_problem;
     QHash<int, QString> m_names;
     bool m_filling = false;
+    bool m_connectedBefore = false; // a reopen at another baud is no new connection
 };
 
 } // namespace stepcom
