@@ -12,8 +12,6 @@
 #include "device/stepmove.h"
 #include "i18n/translators.h"
 
-#include <QTimer>
-
 #include <algorithm>
 #include <memory>
 
@@ -133,23 +131,6 @@ bool DeviceSession::isSimulator() const
 {
     // connected(true) can arrive from inside connectSimulator(): recognise the simulator's port.
     return m_usingSim || (m_sim && m_sim->isRunning() && m_sim->serves(m_link->settings()));
-}
-
-void DeviceSession::setLive(bool live)
-{
-    if (std::exchange(m_live, live) == live)
-        return;
-    if (!live) {
-        m_poller->stop();
-        m_bus->stop();
-        return;
-    }
-    if (!m_link->isConnected())
-        return;
-    readAll();
-    m_poller->start();
-    updateBackground();
-    m_bus->start();
 }
 
 void DeviceSession::startStatus()
@@ -296,18 +277,6 @@ void DeviceSession::read(const QList<const Parameter *> &params,
 void DeviceSession::readAll(std::function<void(const ReadOutcome &)> done)
 {
     m_client->readAll(std::move(done));
-}
-
-void DeviceSession::readAt(int id, const QList<const Parameter *> &params,
-                           std::function<void(const ReadOutcome &)> done)
-{
-    // A client of its own: the session's follows the device in view.
-    auto *client = new DeviceClient(m_link, map(), this);
-    client->setUnitId(id);
-    client->read(params, Priority::Command, [client, done = std::move(done)](const ReadOutcome &r) {
-        client->deleteLater();
-        done(r);
-    });
 }
 
 void DeviceSession::writeChanges()
@@ -609,25 +578,6 @@ void DeviceSession::writeLink(const QList<ParameterWrite> &writes, const LinkSet
             tr("The controller does not answer with the new settings: %1").arg(reason));
         Q_EMIT linkChangeFailed(previous, reason);
     });
-}
-
-void DeviceSession::setLineBaud(int baud, std::function<void(bool ok, const QString &reason)> done)
-{
-    LinkSettings s = m_link->settings();
-    if (s.transport != LinkSettings::Transport::Rtu || s.baud == baud || !m_link->isConnected()) {
-        const bool ok = m_link->isConnected();
-        const QString why = ok ? QString() : tr("the port is not open");
-        QTimer::singleShot(0, this, [done = std::move(done), ok, why] { done(ok, why); });
-        return;
-    }
-    s.baud = baud;
-    auto connection = std::make_shared<QMetaObject::Connection>();
-    *connection = connect(m_link, &ModbusLink::opened, this,
-                          [connection, done = std::move(done)](bool ok, const QString &reason) {
-                              QObject::disconnect(*connection);
-                              done(ok, reason);
-                          });
-    m_link->open(s);
 }
 
 int DeviceSession::stopJogging(JogStop why)
