@@ -1,5 +1,6 @@
 #include "busactions.h"
 
+#include "device/devicesession.h"
 #include "dialogs/idassistantdialog.h"
 #include "widgets/devicelistdock.h"
 
@@ -18,6 +19,10 @@ BusActions::BusActions(DeviceSession *session, DeviceListDock *dock, QWidget *wi
 {
     m_assignIds->setObjectName(QStringLiteral("assignIds"));
     connect(m_assignIds, &QAction::triggered, this, &BusActions::openAssistant);
+    // It writes ids: only with a line to write to (never while a file is edited offline).
+    const auto update = [this] { m_assignIds->setEnabled(m_session->isConnected()); };
+    connect(m_session, &DeviceSession::linkStateChanged, this, update);
+    update();
     window->installEventFilter(this); // its language changes are ours
     retranslate();
 }
