@@ -2906,8 +2906,20 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Finished: no controller was given an id.</translation>
     </message>
     <message>
-        <source>Finished: the line is at %1 baud; controllers given an id: %2.</source>
-        <translation>Finished: the line is at %1 baud; controllers given an id: %2.</translation>
+        <source>Asking id %1 at %2 baud</source>
+        <translation>Asking id %1 at %2 baud</translation>
+    </message>
+    <message>
+        <source>Finished: the line is at %1 baud; every controller given an id answers: id %2.</source>
+        <translation>Finished: the line is at %1 baud; every controller given an id answers: id %2.</translation>
+    </message>
+    <message>
+        <source>Finished: the line is at %1 baud. Answering: id %2. NOT answering: id %3 — check its power and wiring; it stays on the device list.</source>
+        <translation>Finished: the line is at %1 baud. Answering: id %2. NOT answering: id %3 — check its power and wiring; it stays on the device list.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
     </message>
 </context>
 <context>

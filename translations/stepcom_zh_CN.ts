@@ -2890,8 +2890,20 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>已完成：没有控制器被分配 ID。</translation>
     </message>
     <message>
-        <source>Finished: the line is at %1 baud; controllers given an id: %2.</source>
-        <translation>已完成：总线为 %1 波特率；已分配 ID 的控制器：%2。</translation>
+        <source>Asking id %1 at %2 baud</source>
+        <translation>正在以 %2 波特率询问 ID %1</translation>
+    </message>
+    <message>
+        <source>Finished: the line is at %1 baud; every controller given an id answers: id %2.</source>
+        <translation>已完成：总线为 %1 波特率；每台已分配 ID 的控制器都在应答：ID %2。</translation>
+    </message>
+    <message>
+        <source>Finished: the line is at %1 baud. Answering: id %2. NOT answering: id %3 — check its power and wiring; it stays on the device list.</source>
+        <translation>已完成：总线为 %1 波特率。应答中：ID %2。无应答：ID %3——请检查其电源和接线；它仍保留在设备列表中。</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
     </message>
 </context>
 <context>

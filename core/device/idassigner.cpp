@@ -142,24 +142,56 @@ void IdAssigner::finish()
                            tr("Cannot open the port at %1 baud: %2").arg(baud).arg(reason));
             return;
         }
-        if (!self->m_assigned.isEmpty()) {
-            // The factory id was only where new controllers arrived.
-            QList<int> ids = self->m_session->deviceIds();
-            ids.removeAll(kFactoryId);
-            for (int id : std::as_const(self->m_assigned))
-                if (!ids.contains(id))
-                    ids << id;
-            self->m_session->setDeviceIds(ids);
-            self->m_session->showDevice(self->m_assigned.constFirst());
-        }
-        self->resumeLive();
-        self->setState(State::Finished,
-                       self->m_assigned.isEmpty()
-                           ? tr("Finished: no controller was given an id.")
-                           : tr("Finished: the line is at %1 baud; controllers given an id: %2.")
-                                 .arg(baud)
-                                 .arg(IdList::format(self->m_assigned)));
+        self->rollCall(0, baud, {});
     });
+}
+
+void IdAssigner::rollCall(int index, int baud, QList<int> silent)
+{
+    // Every controller given an id answers at the line's final baud, or the text says which not.
+    if (index < m_assigned.size()) {
+        const int id = m_assigned.at(index);
+        const Parameter *idParam = m_session->map().find(QStringLiteral("device.id"));
+        Q_EMIT progress(tr("Asking id %1 at %2 baud").arg(id).arg(baud));
+        QPointer<IdAssigner> self(this);
+        m_session->readAt(id, {idParam}, [self, index, baud, silent, id](const ReadOutcome &r) {
+            if (!self)
+                return;
+            QList<int> still = silent;
+            if (!r.ok)
+                still << id;
+            self->rollCall(index + 1, baud, still);
+        });
+        return;
+    }
+    if (!m_assigned.isEmpty()) {
+        // The factory id was only where new controllers arrived.
+        QList<int> ids = m_session->deviceIds();
+        ids.removeAll(kFactoryId);
+        for (int id : std::as_const(m_assigned))
+            if (!ids.contains(id))
+                ids << id;
+        m_session->setDeviceIds(ids);
+        m_session->showDevice(m_assigned.constFirst());
+    }
+    resumeLive();
+    QList<int> answering = m_assigned;
+    for (int id : std::as_const(silent))
+        answering.removeAll(id);
+    QString text;
+    if (m_assigned.isEmpty())
+        text = tr("Finished: no controller was given an id.");
+    else if (silent.isEmpty())
+        text = tr("Finished: the line is at %1 baud; every controller given an id answers: id %2.")
+                   .arg(baud)
+                   .arg(IdList::format(m_assigned));
+    else
+        text = tr("Finished: the line is at %1 baud. Answering: id %2. NOT answering: id %3 — "
+                  "check its power and wiring; it stays on the device list.")
+                   .arg(baud)
+                   .arg(answering.isEmpty() ? tr("none") : IdList::format(answering),
+                        IdList::format(silent));
+    setState(State::Finished, text);
 }
 
 void IdAssigner::setState(State state, const QString &text)

@@ -75,6 +75,8 @@ private:
     void onChanged(bool ok, const QString &text);
     void setState(State state, const QString &text);
     void resumeLive();
+    // After finish() moved the line: ask each id given, then list them and resume.
+    void rollCall(int index, int baud, QList<int> silent);
 
     DeviceSession *m_session;
     IdChange *m_change;
