@@ -1,6 +1,7 @@
 #include "mainwindow.h"
 
 #include "backupguard.h" // issue 17
+#include "busactions.h"  // issue 16
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
 #include "device/linkhealth.h"
@@ -342,6 +343,8 @@ void MainWindow::createDocks()
     addDockWidget(Qt::LeftDockWidgetArea, m_deviceDock);
     m_deviceDock->hide();
     m_viewMenu->addAction(m_deviceDock->toggleViewAction());
+    m_deviceMenu->addSeparator();
+    m_deviceMenu->addAction((new BusActions(m_session, m_deviceDock, this))->assignIdsAction());
 }
 
 void MainWindow::showOrigin()

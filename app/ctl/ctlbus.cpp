@@ -1,6 +1,8 @@
 // stepcomctl --id 1,2,3: one command for several controllers on one line, in turn.
 #include "ctlrunner.h"
 
+#include "device/idchange.h"
+
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonArray>
@@ -150,56 +152,20 @@ void CtlRunner::runAssignId()
         fail(UsageError, tr("assign-id: the controller already has id %1").arg(to));
         return;
     }
-    const Parameter *idParam = m_map.find(QStringLiteral("device.id"));
-    if (!idParam) {
-        fail(UsageError, tr("assign-id: the register map has no device.id"));
-        return;
-    }
-    connectThen([this, from, to, idParam] {
-        m_session->setDeviceIds({from, to});
-        const quint64 crcBefore = m_session->linkStats().crcErrors;
-        m_session->read({idParam}, [this, from, to, idParam, crcBefore](const ReadOutcome &r) {
-            if (!r.ok) {
-                // Two controllers answering at once garble each other's answers.
-                if (m_session->linkStats().crcErrors > crcBefore)
-                    fail(DeviceError,
-                         tr("garbled answers at id %1: two or more controllers answer there. "
-                            "Connect only the controller that is to get id %2, then try again")
-                             .arg(from)
-                             .arg(to));
-                else
-                    fail(DeviceError, tr("no controller answers at id %1: %2")
-                                          .arg(from)
-                                          .arg(r.errors.join(QLatin1String("; "))));
+    connectThen([this, from, to] {
+        // The same steps as the window's id assistant: core/device/idchange.
+        auto *change = new IdChange(m_session, this);
+        connect(change, &IdChange::finished, this, [this, change](bool ok, const QString &text) {
+            change->deleteLater();
+            if (!ok) {
+                fail(change->problem() == IdChange::Problem::Refused ? UsageError : DeviceError,
+                     text);
                 return;
             }
-            // Nobody may be at the new id already: two controllers at one id collide.
-            m_session->showDevice(to);
-            m_session->read({idParam}, [this, from, to](const ReadOutcome &taken) {
-                m_session->showDevice(from);
-                if (taken.ok) {
-                    fail(DeviceError, tr("id %1 is taken: a controller answers there already. "
-                                         "Choose a free id")
-                                          .arg(to));
-                    return;
-                }
-                connect(m_session, &DeviceSession::linkChanged, this,
-                        [this, from, to](const LinkSettings &) {
-                            m_out << tr("device id %1 → %2: the controller answers at id %2")
-                                         .arg(from)
-                                         .arg(to)
-                                  << Qt::endl;
-                            finish(Ok);
-                        });
-                connect(
-                    m_session, &DeviceSession::linkChangeFailed, this,
-                    [this, to](const LinkSettings &, const QString &reason) {
-                        fail(DeviceError,
-                             tr("the controller does not answer at id %1: %2").arg(to).arg(reason));
-                    });
-                m_session->changeLink(to, m_session->settings().baud);
-            });
+            m_out << text << Qt::endl;
+            finish(Ok);
         });
+        change->start(from, to);
     });
 }
 

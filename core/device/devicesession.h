@@ -89,7 +89,8 @@ public:
     // Live (the default, as the window wants it): read everything after connecting, poll the
     // status while connected, read back what a failed write left uncertain. stepcomctl turns it
     // off, so a command puts on the wire only what it names.
-    void setLive(bool live) { m_live = live; }
+    // Turning it off while connected stops the polls; on again reads everything and polls.
+    void setLive(bool live);
     bool isLive() const { return m_live; }
     // Whether Qt's own qt.modbus messages reach stderr (stepcomctl --verbose); off by default.
     static void setLinkDiagnosticsShown(bool shown);
@@ -124,6 +125,10 @@ public:
     void read(const QList<const Parameter *> &params, std::function<void(const ReadOutcome &)> done,
               Priority priority = Priority::Read);
     void readAll(std::function<void(const ReadOutcome &)> done);
+    // Read these parameters from the controller at `id`, whoever is in view; the store, the
+    // view and the device list are left alone (probes while ids are given).
+    void readAt(int id, const QList<const Parameter *> &params,
+                std::function<void(const ReadOutcome &)> done);
     // Write every edit held in the store, verify, and update the store.
     void writeChanges();
     // `done` (optional) hears this write's outcome, after the store has taken it.
@@ -141,6 +146,10 @@ public:
     // Write a new device id and/or baud, follow the controller and verify it answers there.
     // On failure `linkChangeFailed` offers the settings that worked before.
     void changeLink(int deviceId, int baud);
+    // Reopen the line at another baud without writing to any controller (serial lines only;
+    // elsewhere `done(true)` at once): while ids are given, new controllers arrive at 9600 and
+    // the ones already done listen at the common baud. `done` hears whether the port opened.
+    void setLineBaud(int baud, std::function<void(bool ok, const QString &reason)> done);
     // Stop every jog for this reason; returns how many stops were sent or scheduled.
     int stopJogging(JogStop why);
 
@@ -195,6 +204,8 @@ Q_SIGNALS:
     void travelLimitsChanged();
     void deviceInViewChanged(int id);
     void deviceStatusChanged(int id);
+    // setDeviceIds() named other devices or another order.
+    void deviceIdsChanged(const QList<int> &ids);
     // After emergencyStop(): which controllers acknowledged their E-STOP, and which did not
     // (in the order of the list).
     void emergencyStopFinished(const QList<int> &acknowledged, const QList<int> &notAcknowledged);

@@ -2,6 +2,7 @@
 
 #include "device/busscanner.h"
 #include "device/devicesession.h"
+#include "device/idlist.h"
 
 #include <QCheckBox>
 #include <QEvent>
@@ -145,9 +146,11 @@ BusScanDialog::BusScanDialog(DeviceSession *session, const LinkSettings &base, Q
     (new QVBoxLayout(m_foundBox))->addWidget(m_table);
 
     m_connect = named(new QPushButton(this), "connect");
+    m_addAll = named(new QPushButton(this), "addAll");
     m_close = new QPushButton(this);
     auto *bottom = new QHBoxLayout;
     bottom->addWidget(m_connect);
+    bottom->addWidget(m_addAll);
     bottom->addStretch(1);
     bottom->addWidget(m_close);
 
@@ -161,13 +164,14 @@ BusScanDialog::BusScanDialog(DeviceSession *session, const LinkSettings &base, Q
 
     QList<QWidget *> order(m_bauds.cbegin(), m_bauds.cend());
     order << m_firstId << m_lastId << m_probeTimeout << m_stopAtFirst << m_start << m_cancel
-          << m_table << m_connect << m_close;
+          << m_table << m_connect << m_addAll << m_close;
     for (qsizetype i = 1; i < order.size(); ++i)
         setTabOrder(order.at(i - 1), order.at(i));
 
     connect(m_start, &QPushButton::clicked, this, &BusScanDialog::startScan);
     connect(m_cancel, &QPushButton::clicked, this, &BusScanDialog::cancelScan);
     connect(m_connect, &QPushButton::clicked, this, &BusScanDialog::connectSelected);
+    connect(m_addAll, &QPushButton::clicked, this, &BusScanDialog::addAllFound);
     connect(m_close, &QPushButton::clicked, this, &BusScanDialog::reject);
     connect(m_table, &QTableWidget::itemSelectionChanged, this, &BusScanDialog::updateControls);
     connect(m_table, &QTableWidget::cellDoubleClicked, this, [this](int row) {
@@ -237,6 +241,9 @@ void BusScanDialog::retranslate()
     m_table->setToolTip(tr("Double-click a controller to connect to it"));
     m_connect->setText(tr("C&onnect"));
     m_connect->setToolTip(tr("Connect to the selected controller with its baud rate and id"));
+    m_addAll->setText(tr("&Add all found"));
+    m_addAll->setToolTip(tr("Put every controller found on the device list (View → Devices on "
+                            "the line)"));
     m_close->setText(tr("Close"));
     setBaseSettings(m_base); // the port line and the warning are texts too
 }
@@ -367,6 +374,7 @@ void BusScanDialog::startScan()
     if (sessionUsesPort())
         m_session->disconnectFrom();
     m_table->setRowCount(0);
+    m_added.clear();
     m_error.clear();
     m_outcome = Outcome::Running;
     const int ids = std::max(1, m_lastId->value() - m_firstId->value() + 1);
@@ -394,6 +402,42 @@ void BusScanDialog::connectSelected()
         return;
     Q_EMIT connectRequested(settingsFor(row));
     accept();
+}
+
+QList<int> BusScanDialog::addAllFound()
+{
+    if (isScanning() || m_table->rowCount() == 0)
+        return {};
+    // A session that is not connected lists only the id in its fields: no device of this line.
+    QList<int> ids = m_session->isConnected() || m_session->deviceIds().size() > 1
+                         ? m_session->deviceIds()
+                         : QList<int>{};
+    QList<int> added;
+    QList<int> bauds;
+    for (int row = 0; row < m_table->rowCount(); ++row) {
+        const LinkSettings s = settingsFor(row);
+        if (!bauds.contains(s.baud))
+            bauds << s.baud;
+        if (!ids.contains(s.deviceId)) {
+            ids << s.deviceId;
+            added << s.deviceId;
+        }
+    }
+    if (added.isEmpty()) {
+        m_added = tr("Every controller found is on the device list already.");
+    } else {
+        m_session->setDeviceIds(ids);
+        m_added = tr("Added to the device list: id %1.").arg(IdList::format(added));
+    }
+    // One line runs at one baud: controllers found at several cannot all answer at once.
+    if (bauds.size() > 1)
+        m_added += QLatin1Char(' ') +
+                   tr("They answered at different baud rates; give them one baud rate (Device "
+                      "page or Device → Assign device ids…) before working with the list.");
+    updateStatus();
+    if (!added.isEmpty())
+        Q_EMIT devicesAdded(added);
+    return added;
 }
 
 void BusScanDialog::reject()
@@ -444,6 +488,7 @@ void BusScanDialog::updateControls()
                           !m_table->selectedItems().isEmpty());
     m_start->setDefault(!m_connect->isEnabled());
     m_connect->setDefault(m_connect->isEnabled());
+    m_addAll->setEnabled(!running && m_table->rowCount() > 0);
     m_warning->setText(tr("StepCom is connected on this port: the scan disconnects first."));
     m_warning->setVisible(!running && sessionUsesPort());
     updateStatus();
@@ -456,6 +501,8 @@ QString BusScanDialog::statusText() const
     case Outcome::Running:
         return tr("Scanning… %n controller(s) found so far.", nullptr, found);
     case Outcome::Done:
+        if (!m_added.isEmpty())
+            return m_added;
         if (found == 1 && m_scanner->found().size() == 1)
             return tr("Scan finished: %1. Press Connect.")
                 .arg(m_scanner->found().first().summary());

@@ -53,11 +53,15 @@ public:
     void startScan();
     void cancelScan();
     void connectSelected();
+    // Puts every id found on the session's device list (after the ones there); returns the ids
+    // added. The dialog stays open, so one of them can still be connected.
+    QList<int> addAllFound();
     // Closing (Close, Esc, the window's X) cancels a running scan first.
     void reject() override;
 
 Q_SIGNALS:
     void connectRequested(const stepcom::LinkSettings &settings);
+    void devicesAdded(const QList<int> &ids);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -99,10 +103,12 @@ private:
     QGroupBox *m_foundBox = nullptr;
     QTableWidget *m_table = nullptr;
     QPushButton *m_connect = nullptr;
+    QPushButton *m_addAll = nullptr;
     QPushButton *m_close = nullptr;
 
     Outcome m_outcome = Outcome::Idle;
     QString m_error;
+    QString m_added; // what "Add all found" did, until the next scan
 };
 
 } // namespace stepcom

@@ -30,6 +30,7 @@ const Section sections[] = {
     {"stepcom::PlotPage", "Live monitoring and plots", "实时监视与曲线图"},
     {"stepcom::ChecklistPage", "Commissioning a machine step by step", "逐步调试一台机器"},
     {"stepcom::BusScanDialog", "Finding a forgotten id or baud rate", "忘记了设备 ID 或波特率"},
+    {"stepcom::IdAssistantDialog", "Several controllers on one line", "一条总线上的多台控制器"},
     {"stepcom::ProfileCompareDialog", "Profiles and the commissioning report",
      "参数文件与调试报告"},
     {"stepcom::TrafficView", "The traffic log and the session log files", "通信记录与会话日志文件"},

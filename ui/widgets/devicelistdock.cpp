@@ -5,6 +5,7 @@
 #include "device/motionsupervisor.h"
 #include "device/referencetracker.h"
 #include "i18n/translators.h"
+#include "widgets/devicelistsettings.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -14,6 +15,8 @@
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
+
+#include <utility>
 
 namespace stepcom {
 
@@ -51,6 +54,12 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
     connect(m_add, &QPushButton::clicked, this, [this] { addDevice(m_idBox->value()); });
     connect(m_session, &DeviceSession::deviceStatusChanged, this, &DeviceListDock::refresh);
     connect(m_session, &DeviceSession::deviceInViewChanged, this, &DeviceListDock::refresh);
+    connect(m_session, &DeviceSession::deviceIdsChanged, this, [this] {
+        refresh();
+        saveList();
+    });
+    connect(m_session, &DeviceSession::connected, this, &DeviceListDock::onConnected);
+    connect(m_session, &DeviceSession::disconnected, this, [this] { m_connectedBefore = false; });
     connect(m_session, &DeviceSession::linkStateChanged, this, &DeviceListDock::refresh);
     connect(m_session, &DeviceSession::statusCycleFinished, this, &DeviceListDock::refresh);
     connect(m_session->motion()->references(), &ReferenceTracker::deviceChanged, this,
@@ -59,18 +68,82 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
     retranslate();
 }
 
-bool DeviceListDock::addDevice(int id)
+bool DeviceListDock::addDevice(int id, const QString &name)
 {
     QList<int> ids = m_session->deviceIds();
+    if (id < 1 || id > 255) {
+        m_problem->setText(tr("Device ids are 1 to 255, not %1.").arg(id));
+        return false;
+    }
     if (ids.contains(id)) {
         m_problem->setText(tr("Device id %1 is already on the list.").arg(id));
         return false;
     }
     m_problem->clear();
+    if (!name.trimmed().isEmpty())
+        m_names.insert(id, name.trimmed());
     ids.append(id);
     m_session->setDeviceIds(ids);
     refresh();
     return true;
+}
+
+void DeviceListDock::setName(int id, const QString &name)
+{
+    if (name.trimmed().isEmpty())
+        m_names.remove(id);
+    else
+        m_names.insert(id, name.trimmed());
+    refresh();
+    saveList();
+}
+
+void DeviceListDock::saveList() const
+{
+    // Only a real line the session is on has a key.
+    if (!m_session->isConnected() || DeviceListSettings::lineKey(*m_session).isEmpty())
+        return;
+    DeviceListSettings saved;
+    saved.line = DeviceListSettings::lineKey(*m_session);
+    saved.ids = m_session->deviceIds();
+    saved.names = m_names;
+    saved.save();
+}
+
+bool DeviceListDock::restoreList()
+{
+    const DeviceListSettings saved = DeviceListSettings::load();
+    if (saved.ids.size() < 2 || saved.line.isEmpty() ||
+        saved.line != DeviceListSettings::lineKey(*m_session))
+        return false;
+    if (m_session->deviceIds().size() > 1)
+        return false; // the user (or a scan) named the devices for this connection already
+    for (auto it = saved.names.cbegin(); it != saved.names.cend(); ++it)
+        m_names.insert(it.key(), it.value());
+    QList<int> ids = saved.ids;
+    // The device in view is on the list it belongs to.
+    if (!ids.contains(m_session->deviceInView()))
+        ids.prepend(m_session->deviceInView());
+    m_session->setDeviceIds(ids);
+    refresh();
+    return true;
+}
+
+void DeviceListDock::onConnected(bool ok)
+{
+    if (!ok)
+        return;
+    // Only a new connection restores: a baud change reopens the port, the list stays.
+    const bool restored = !std::exchange(m_connectedBefore, true) && restoreList();
+    if (!restored && m_session->deviceIds().size() > 1) {
+        QList<int> ids = m_session->deviceIds();
+        if (!ids.contains(m_session->deviceInView())) {
+            ids.prepend(m_session->deviceInView());
+            m_session->setDeviceIds(ids); // saves
+        } else {
+            saveList();
+        }
+    }
 }
 
 QStringList DeviceListDock::rowTexts(int row) const
@@ -184,8 +257,10 @@ void DeviceListDock::onCellChanged(int row, int column)
     if (m_filling || column != NameColumn)
         return;
     const int id = m_session->deviceIds().value(row, 0);
-    if (id > 0)
+    if (id > 0) {
         m_names.insert(id, m_table->item(row, column)->text().trimmed());
+        saveList();
+    }
 }
 
 } // namespace stepcom

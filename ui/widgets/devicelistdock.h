@@ -25,8 +25,14 @@ public:
     QSpinBox *idBox() const { return m_idBox; }
     QPushButton *addButton() const { return m_add; }
     // Adds `id` to the session's list (false and a reason beside the button when it is there).
-    bool addDevice(int id);
+    bool addDevice(int id, const QString &name = QString());
     QString nameOf(int id) const { return m_names.value(id); }
+    void setName(int id, const QString &name);
+    // The line's ids and names go with the connection settings: saved whenever they change
+    // while connected, restored when the same line is connected again (DeviceListSettings).
+    void saveList() const;
+    // Puts the saved list of this line on the session, unless the user already named devices.
+    bool restoreList();
     // The row's texts, for tests and the accessibility bus: id, name, state, referenced, errors.
     QStringList rowTexts(int row) const;
 
@@ -38,6 +44,7 @@ private:
     void refresh();
     void onCellClicked(int row);
     void onCellChanged(int row, int column);
+    void onConnected(bool ok);
     QString stateText(int id) const;
     QString referencedText(int id) const;
 
@@ -48,6 +55,7 @@ private:
     QLabel *m_problem;
     QHash<int, QString> m_names;
     bool m_filling = false;
+    bool m_connectedBefore = false; // a reopen at another baud is no new connection
 };
 
 } // namespace stepcom
