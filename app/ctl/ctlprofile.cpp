@@ -58,6 +58,23 @@ void CtlRunner::printLeftOut(const Profile &profile, const QString &heading)
         m_out << QStringLiteral("  ") << line << Qt::endl;
 }
 
+int CtlRunner::noteUnsupported(const ReadOutcome &read, Profile *profile)
+{
+    if (read.unsupported.isEmpty())
+        return 0;
+    QStringList keys = read.unsupported;
+    keys.sort();
+    m_out
+        << tr("not supported by this controller (left out): %1").arg(keys.join(QLatin1String(", ")))
+        << Qt::endl;
+    int taken = 0;
+    if (profile) {
+        for (const QString &key : std::as_const(keys))
+            taken += int(profile->values.remove(key));
+    }
+    return taken;
+}
+
 void CtlRunner::runDump()
 {
     if (m_options.arguments.size() != 1) {
@@ -75,6 +92,7 @@ void CtlRunner::runDump()
                                      "not be read completely"));
                 return;
             }
+            noteUnsupported(r);
             Profile profile = Profile::fromValues(m_map, r.values, m_options.includeLink);
             profile.name =
                 m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
@@ -116,13 +134,16 @@ void CtlRunner::runDiff()
                     finish(m_linkError);
                     return;
                 }
+                Profile compared = profile;
+                const int unsupported = noteUnsupported(r, &compared);
                 const auto diffs =
-                    ProfileDiff::differences(ProfileDiff::compare(m_map, profile, r.values));
+                    ProfileDiff::differences(ProfileDiff::compare(m_map, compared, r.values));
                 for (const ProfileDifference &d : diffs)
                     m_out << ProfileDiff::describe(d) << Qt::endl;
                 printLeftOut(profile, tr("left out of the comparison:"));
                 const ProfileVariance &v = profile.variance;
-                const int leftOut = int(v.unknown.size() + v.rejected.size() + v.missing.size());
+                const int leftOut =
+                    int(v.unknown.size() + v.rejected.size() + v.missing.size()) + unsupported;
                 if (diffs.isEmpty() && leftOut == 0)
                     m_out << tr("the controller holds every value of the profile") << Qt::endl;
                 else if (diffs.isEmpty())
@@ -234,9 +255,11 @@ void CtlRunner::runApply()
                     return;
                 }
                 m_beforeApply = r.values;
+                Profile applied = profile;
+                noteUnsupported(r, &applied); // never written: the controller lacks them
                 QStringList keys;
                 for (const ProfileDifference &d :
-                     ProfileDiff::differences(ProfileDiff::compare(m_map, profile, r.values))) {
+                     ProfileDiff::differences(ProfileDiff::compare(m_map, applied, r.values))) {
                     if (d.linkSetting && !m_options.includeLink) {
                         m_out << tr("not applied (needs --include-link): %1")
                                      .arg(ProfileDiff::describe(d))
@@ -250,7 +273,7 @@ void CtlRunner::runApply()
                 printLeftOut(profile, tr("not applied:"));
                 QStringList errors;
                 const QList<ParameterWrite> writes =
-                    ProfileDiff::writesFor(m_map, profile, keys, m_options.includeLink, &errors);
+                    ProfileDiff::writesFor(m_map, applied, keys, m_options.includeLink, &errors);
                 if (!errors.isEmpty()) {
                     fail(UsageError, errors.join(QLatin1String("; ")));
                     return;
@@ -399,9 +422,11 @@ void CtlRunner::runReport()
                 fail(DeviceError, tr("no report: the controller could not be read completely"));
                 return;
             }
+            noteUnsupported(r);
             ReportInput input;
             input.map = m_map;
             input.values = r.values;
+            input.unsupported = r.unsupported;
             input.link = m_session->settings().describe();
             input.deviceId = m_session->settings().deviceId;
             input.title = m_options.name;

@@ -322,6 +322,9 @@ void CtlRunner::runRead()
                               << valueText(*p, r.values.value(p->key)) << Qt::endl;
                 }
             }
+            for (const QString &key : r.unsupported)
+                m_err << QStringLiteral("stepcomctl: ")
+                      << tr("%1 is not supported by this controller").arg(key) << Qt::endl;
             if (!r.ok) {
                 for (const QString &e : r.errors)
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;

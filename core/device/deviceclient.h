@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bus/request.h"
+#include "device/readlimits.h"
 #include "device/readplanner.h"
 #include "device/writeplanner.h"
 #include "map/registermap.h"
@@ -19,6 +20,7 @@ struct ReadOutcome
     bool ok = false;
     QHash<QString, qint64> values; // raw, by key: whatever could be read
     QStringList errors;
+    QStringList unsupported; // asked for, but this controller does not have them (not an error)
     int reads = 0;
 };
 
@@ -50,7 +52,12 @@ public:
     ModbusLink *link() const { return m_link; }
     // The wire-time model for the link's current baud (TCP: the answer delay only).
     ReadCostModel costModel() const;
+    // The cheapest reads of the parameters this controller has, within what it accepts.
     QList<ReadBlock> planRead(const QList<const Parameter *> &params) const;
+    const ReadLimits &readLimits() const { return m_limits; }
+    void setReadLimits(const ReadLimits &limits) { m_limits = limits; }
+    // A read of `block` was answered with exception 02: learn from it (said once, by signal).
+    ReadLimits::Lesson noteRefused(const ReadBlock &block, const Result &result);
 
     void read(const QList<const Parameter *> &params, Priority priority,
               std::function<void(const ReadOutcome &)> done);
@@ -66,9 +73,14 @@ public:
     // Empty when every write is allowed, else one message per bad value.
     static QStringList validate(const QList<ParameterWrite> &writes);
 
+Q_SIGNALS:
+    // Something new about what this controller reads: gaps refused, or a parameter it lacks.
+    void readLimitsLearned(stepcom::ReadLimits::Lesson lesson, const QString &key);
+
 private:
     ModbusLink *m_link;
     RegisterMap m_map;
+    ReadLimits m_limits;
 };
 
 } // namespace stepcom

@@ -36,8 +36,8 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
         }
         say(Severity::Info,
             tr("Opened %1; asking the controller").arg(m_link->settings().describe()));
-        if (std::exchange(m_readAfterConnect, false) && m_live)
-            readAll();
+        // Live values first: one status cycle (positions, inputs), then everything else.
+        m_readAllAfterStatus = std::exchange(m_readAfterConnect, false) && m_live;
         if (m_live)
             m_poller->start();
     });
@@ -59,7 +59,12 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
         Q_EMIT disconnected(reason);
         Q_EMIT linkLost(reason);
     });
-    connect(m_poller, &Poller::cycleFinished, this, &DeviceSession::statusCycleFinished);
+    connect(m_poller, &Poller::cycleFinished, this, [this](bool ok, qint64 ms) {
+        Q_EMIT statusCycleFinished(ok, ms);
+        if (std::exchange(m_readAllAfterStatus, false))
+            readAll();
+    });
+    connect(m_client, &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
     connect(m_poller, &Poller::fastChanged, this, &DeviceSession::statusFastChanged);
 }
 
@@ -223,8 +228,41 @@ void DeviceSession::connectSimulator()
     openLink(*s);
 }
 
+QString DeviceSession::controllerKey(const LinkSettings &settings)
+{
+    const QString line = settings.transport == LinkSettings::Transport::Tcp
+                             ? QStringLiteral("%1:%2").arg(settings.host).arg(settings.tcpPort)
+                             : settings.portName;
+    return QStringLiteral("%1#%2").arg(line).arg(settings.deviceId);
+}
+
+const ReadLimits &DeviceSession::readLimits() const
+{
+    return m_client->readLimits();
+}
+
+void DeviceSession::learnt(ReadLimits::Lesson lesson, const QString &key)
+{
+    m_knownLimits.insert(controllerKey(m_link->settings()), m_client->readLimits());
+    if (lesson == ReadLimits::Lesson::GapsRefused) {
+        say(Severity::Warning,
+            tr("The controller refuses reads that cover reserved registers; from now on only "
+               "its listed registers are read (a few more requests)."));
+    } else if (lesson == ReadLimits::Lesson::Unsupported) {
+        const Parameter *p = m_client->map().find(key);
+        say(Severity::Warning,
+            tr("%1 (register %2) is not supported by this controller: it refuses to read it. "
+               "It is left out from now on.")
+                .arg(key, p ? p->registerName() : QString()));
+        m_store->setUnsupported(m_client->readLimits().unsupported());
+    }
+}
+
 void DeviceSession::openLink(const LinkSettings &settings)
 {
+    const ReadLimits known = m_knownLimits.value(controllerKey(settings));
+    m_client->setReadLimits(known);
+    m_store->setUnsupported(known.unsupported());
     m_readAfterConnect = true;
     m_link->resetStats(); // statistics are per connection
     m_link->open(settings);

@@ -93,6 +93,10 @@ public:
     void connectSimulator();
     // Close the link; an empty reason says the user disconnected.
     void disconnectFrom(const QString &reason = QString());
+    // What the connected controller refuses to read (gaps, parameters it lacks), learnt from
+    // its answers and remembered per line and id for this session's life.
+    const ReadLimits &readLimits() const;
+    static QString controllerKey(const LinkSettings &settings);
 
     void readAll();
     // Read these parameters (or all) and hand the outcome over; the store is left alone.
@@ -140,6 +144,7 @@ private:
 
     void say(Severity severity, const QString &text);
     void openLink(const LinkSettings &settings);
+    void learnt(ReadLimits::Lesson lesson, const QString &key);
     // After a failed write, read back what the controller holds for the keys whose request went
     // out without a good answer.
     void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
@@ -155,7 +160,9 @@ private:
     std::unique_ptr<SimulatorStarter> m_sim;
     bool m_usingSim = false;
     bool m_readAfterConnect = false;
+    bool m_readAllAfterStatus = false; // live values first: read everything after one status
     bool m_live = true;
+    QHash<QString, ReadLimits> m_knownLimits; // by controllerKey()
 };
 
 } // namespace stepcom

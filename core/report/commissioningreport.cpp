@@ -152,7 +152,9 @@ QString CommissioningReport::parameterSection() const
                 if (p->instance != instance)
                     continue;
                 QString value = QStringLiteral("—");
-                if (m_in.values.contains(p->key)) {
+                if (m_in.unsupported.contains(p->key)) {
+                    value = tr("not supported by this controller");
+                } else if (m_in.values.contains(p->key)) {
                     const qint64 raw = m_in.values.value(p->key);
                     value = p->formatRaw(raw);
                     const QString shown = p->displayRaw(raw, m_in.locale);
@@ -265,6 +267,11 @@ QString CommissioningReport::html(const QString &imageSource) const
     h += interpolationSection(imageSource);
     h += certificate.travelLimits();
     h += parameterSection();
+    if (!m_in.unsupported.isEmpty())
+        h += QStringLiteral("<p>%1</p>\n")
+                 .arg(esc(tr("Not supported by this controller (it refuses to read them, a "
+                             "firmware variant): %1")
+                              .arg(m_in.unsupported.join(QLatin1String(", ")))));
     h += fileSection();
     h += QStringLiteral("<h2>%1</h2>\n").arg(esc(tr("Notes")));
     h += QStringLiteral("<p>%1</p>\n")

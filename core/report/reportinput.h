@@ -28,7 +28,8 @@ public:
     QString title; // e.g. the machine's name
     QString notes;
     QDateTime date;
-    QString locale; // "zh_CN" for the map's Chinese labels, else English
+    QString locale;          // "zh_CN" for the map's Chinese labels, else English
+    QStringList unsupported; // keys the controller does not have (refused to read them)
 
     // Made from a file, not read from a controller: the file's name, and what its metadata
     // says about the controller it was saved from (information only).

@@ -249,6 +249,11 @@ void ParameterField::applyStateLook()
         tint = QColor(230, 40, 40);
         stateTip = tr("Write failed: %1").arg(e.error);
         break;
+    case ParameterStore::State::Unsupported:
+        stateText = QStringLiteral("—");
+        tint = QColor(160, 160, 160);
+        stateTip = tr("Not supported by this controller: it refuses to read this register");
+        break;
     }
     // Editing a profile file (issue 18): the values are the file's, nothing reaches a controller.
     if (m_store->isFile() && e.state != ParameterStore::State::WriteFailed)

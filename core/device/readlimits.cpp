@@ -1,0 +1,71 @@
+#include "device/readlimits.h"
+
+#include "map/registermap.h"
+
+namespace stepcom {
+
+bool ReadLimits::isEmpty() const
+{
+    return !m_gapFree && m_unsupported.isEmpty() && m_split.isEmpty();
+}
+
+bool ReadLimits::mayRead(const RegisterMap &map, int first, int last) const
+{
+    for (int address = first; address <= last; ++address) {
+        const Parameter *p = map.holdingAt(quint16(address));
+        if (!p) {
+            if (m_gapFree)
+                return false;
+            continue;
+        }
+        if (m_unsupported.contains(p->key))
+            return false;
+    }
+    // In a range refused as a whole, one parameter a read until the culprit is known.
+    for (const ReadBlock &s : m_split) {
+        const int from = std::max<int>(first, s.address);
+        const int to = std::min<int>(last, s.lastAddress());
+        const Parameter *seen = nullptr;
+        for (int address = from; address <= to; ++address) {
+            const Parameter *p = map.holdingAt(quint16(address));
+            if (!p)
+                continue;
+            if (seen && p != seen)
+                return false;
+            seen = p;
+        }
+    }
+    return true;
+}
+
+ReadLimits::Lesson ReadLimits::learn(const RegisterMap &map, const ReadBlock &block, QString *key)
+{
+    if (!mayRead(map, block.address, block.lastAddress()))
+        return Lesson::AlreadyKnown;
+    bool gap = false;
+    QList<const Parameter *> inside;
+    for (int address = block.address; address <= block.lastAddress(); ++address) {
+        const Parameter *p = map.holdingAt(quint16(address));
+        if (!p)
+            gap = true;
+        else if (!inside.contains(p))
+            inside << p;
+    }
+    if (gap && !m_gapFree) {
+        m_gapFree = true;
+        return Lesson::GapsRefused;
+    }
+    if (inside.size() == 1 && !gap) {
+        m_unsupported.insert(inside.constFirst()->key);
+        if (key)
+            *key = inside.constFirst()->key;
+        return Lesson::Unsupported;
+    }
+    if (inside.size() > 1 && !m_split.contains(block)) {
+        m_split << block;
+        return Lesson::Split;
+    }
+    return Lesson::None;
+}
+
+} // namespace stepcom
