@@ -69,8 +69,11 @@ int CtlRunner::noteUnsupported(const ReadOutcome &read, Profile *profile)
         << Qt::endl;
     int taken = 0;
     if (profile) {
-        for (const QString &key : std::as_const(keys))
+        for (const QString &key : std::as_const(keys)) {
             taken += int(profile->values.remove(key));
+            // A file saved from this controller lacks them too: nothing is missing there.
+            profile->variance.missing.removeAll(key);
+        }
     }
     return taken;
 }
@@ -94,6 +97,8 @@ void CtlRunner::runDump()
             }
             noteUnsupported(r);
             Profile profile = Profile::fromValues(m_map, r.values, m_options.includeLink);
+            profile.unsupported = r.unsupported;
+            profile.unsupported.sort();
             profile.name =
                 m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
             profile.notes = m_options.notes;
@@ -140,8 +145,8 @@ void CtlRunner::runDiff()
                     ProfileDiff::differences(ProfileDiff::compare(m_map, compared, r.values));
                 for (const ProfileDifference &d : diffs)
                     m_out << ProfileDiff::describe(d) << Qt::endl;
-                printLeftOut(profile, tr("left out of the comparison:"));
-                const ProfileVariance &v = profile.variance;
+                printLeftOut(compared, tr("left out of the comparison:"));
+                const ProfileVariance &v = compared.variance;
                 const int leftOut =
                     int(v.unknown.size() + v.rejected.size() + v.missing.size()) + unsupported;
                 if (diffs.isEmpty() && leftOut == 0)
@@ -270,7 +275,7 @@ void CtlRunner::runApply()
                     m_out << tr("will write %1").arg(ProfileDiff::describe(d)) << Qt::endl;
                 }
                 // Said before asking, and with --yes too: what of the profile is not applied.
-                printLeftOut(profile, tr("not applied:"));
+                printLeftOut(applied, tr("not applied:"));
                 QStringList errors;
                 const QList<ParameterWrite> writes =
                     ProfileDiff::writesFor(m_map, applied, keys, m_options.includeLink, &errors);

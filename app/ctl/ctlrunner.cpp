@@ -206,6 +206,10 @@ void CtlRunner::connectThen(std::function<void()> next)
     // One-shot: no read-all after connecting, no status poll; each command reads what it names.
     m_session = new DeviceSession(m_map, this);
     m_session->setLive(false);
+    // Said once, in words: what this controller refuses to read, and that the work goes on.
+    connect(m_session, &DeviceSession::readLimitsLearned, this, [this](const QString &text) {
+        m_err << QStringLiteral("stepcomctl: ") << tr("note: %1").arg(text) << Qt::endl;
+    });
     if (m_options.verbose) {
         connect(m_session->traffic(), &TrafficLog::entryAdded, this,
                 [this](const TrafficEntry &e) { m_err << TrafficLog::format(e) << Qt::endl; });

@@ -244,18 +244,21 @@ const ReadLimits &DeviceSession::readLimits() const
 void DeviceSession::learnt(ReadLimits::Lesson lesson, const QString &key)
 {
     m_knownLimits.insert(controllerKey(m_link->settings()), m_client->readLimits());
+    QString text;
     if (lesson == ReadLimits::Lesson::GapsRefused) {
-        say(Severity::Warning,
-            tr("The controller refuses reads that cover reserved registers; from now on only "
-               "its listed registers are read (a few more requests)."));
+        text = tr("The controller refuses reads that cover reserved registers; from now on only "
+                  "its listed registers are read (a few more requests).");
     } else if (lesson == ReadLimits::Lesson::Unsupported) {
         const Parameter *p = m_client->map().find(key);
-        say(Severity::Warning,
-            tr("%1 (register %2) is not supported by this controller: it refuses to read it. "
-               "It is left out from now on.")
-                .arg(key, p ? p->registerName() : QString()));
+        text = tr("%1 (register %2) is not supported by this controller: it refuses to read it. "
+                  "It is left out from now on.")
+                   .arg(key, p ? p->registerName() : QString());
         m_store->setUnsupported(m_client->readLimits().unsupported());
     }
+    if (text.isEmpty())
+        return;
+    say(Severity::Warning, text);
+    Q_EMIT readLimitsLearned(text);
 }
 
 void DeviceSession::openLink(const LinkSettings &settings)

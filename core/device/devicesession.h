@@ -138,6 +138,8 @@ Q_SIGNALS:
     void linkChangeFailed(const stepcom::LinkSettings &previous, const QString &reason);
     void statusCycleFinished(bool ok, qint64 ms);
     void statusFastChanged(bool fast);
+    // Learnt what the controller refuses to read (said once, in words; also a message()).
+    void readLimitsLearned(const QString &text);
 
 private:
     friend class SessionInternals; // tests and the benchmark's link measurements
