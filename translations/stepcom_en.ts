@@ -1017,6 +1017,14 @@
         <source>Settings fingerprint</source>
         <translation>Settings fingerprint</translation>
     </message>
+    <message>
+        <source>not supported by this controller</source>
+        <translation>not supported by this controller</translation>
+    </message>
+    <message>
+        <source>Not supported by this controller (it refuses to read them, a firmware variant): %1</source>
+        <translation>Not supported by this controller (it refuses to read them, a firmware variant): %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1716,6 +1724,18 @@
         <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
         <translation>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</translation>
     </message>
+    <message>
+        <source>not supported by this controller (left out): %1</source>
+        <translation>not supported by this controller (left out): %1</translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>note: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not supported by this controller</source>
+        <translation>%1 is not supported by this controller</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DerivedValues</name>
@@ -2170,6 +2190,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: sent</source>
         <translation>%1: sent</translation>
     </message>
+    <message>
+        <source>The controller refuses reads that cover reserved registers; from now on only its listed registers are read (a few more requests).</source>
+        <translation>The controller refuses reads that cover reserved registers; from now on only its listed registers are read (a few more requests).</translation>
+    </message>
+    <message>
+        <source>%1 (register %2) is not supported by this controller: it refuses to read it. It is left out from now on.</source>
+        <translation>%1 (register %2) is not supported by this controller: it refuses to read it. It is left out from now on.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -2249,6 +2277,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>Write failed: %1</translation>
+    </message>
+    <message>
+        <source>Not supported by this controller</source>
+        <translation>Not supported by this controller</translation>
     </message>
 </context>
 <context>
@@ -3959,6 +3991,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Edited, not saved yet</source>
         <translation>Edited, not saved yet</translation>
     </message>
+    <message>
+        <source>Not supported by this controller: it refuses to read this register</source>
+        <translation>Not supported by this controller: it refuses to read this register</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ParameterStore</name>
@@ -3977,6 +4013,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not written: an earlier write failed</source>
         <translation>not written: an earlier write failed</translation>
+    </message>
+    <message>
+        <source>%1 is not supported by this controller</source>
+        <translation>%1 is not supported by this controller</translation>
     </message>
 </context>
 <context>
@@ -4844,6 +4884,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</source>
         <translation>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</translation>
     </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;unsupported&quot; must be a list of keys, found %1</source>
+        <translation>&quot;metadata&quot;: &quot;unsupported&quot; must be a list of keys, found %1</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</source>
+        <translation>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileFilesDialog</name>
@@ -5025,10 +5073,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Listen for TCP on every interface.</translation>
     </message>
     <message>
-        <source>Refuse reads of reserved registers (exception 02) instead of reading 0.</source>
-        <translation>Refuse reads of reserved registers (exception 02) instead of reading 0.</translation>
-    </message>
-    <message>
         <source>Device id 1-255 (overrides the saved one).</source>
         <translation>Device id 1-255 (overrides the saved one).</translation>
     </message>
@@ -5143,6 +5187,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>--corrupt-crc works on the pseudo-terminal only, not with --serial</source>
         <translation>--corrupt-crc works on the pseudo-terminal only, not with --serial</translation>
+    </message>
+    <message>
+        <source>Refuse a read that covers a reserved register (exception 02): only the manual&apos;s listed registers can be read.</source>
+        <translation>Refuse a read that covers a reserved register (exception 02): only the manual&apos;s listed registers can be read.</translation>
+    </message>
+    <message>
+        <source>Be a firmware without this listed register (a key or a number such as 40110): reads and writes covering it get exception 02. Repeatable.</source>
+        <translation>Be a firmware without this listed register (a key or a number such as 40110): reads and writes covering it get exception 02. Repeatable.</translation>
+    </message>
+    <message>
+        <source>REGISTER</source>
+        <translation>REGISTER</translation>
     </message>
 </context>
 <context>
@@ -5287,6 +5343,13 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>outputs:%1</source>
         <translation>outputs:%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SimHost</name>
+    <message>
+        <source>--lacks: %1 is no listed register of the map</source>
+        <translation>--lacks: %1 is no listed register of the map</translation>
     </message>
 </context>
 <context>

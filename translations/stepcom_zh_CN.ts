@@ -1012,6 +1012,14 @@
         <source>Settings fingerprint</source>
         <translation>设置指纹</translation>
     </message>
+    <message>
+        <source>not supported by this controller</source>
+        <translation>此控制器不支持</translation>
+    </message>
+    <message>
+        <source>Not supported by this controller (it refuses to read them, a firmware variant): %1</source>
+        <translation>此控制器不支持（控制器拒绝读取，属于固件变体）：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1707,6 +1715,18 @@
         <source>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</source>
         <translation>--wait：%1 没有可等待的结束（单次运动、回零、按顺序回零、回数据零点、圆弧和直线才有）</translation>
     </message>
+    <message>
+        <source>not supported by this controller (left out): %1</source>
+        <translation>此控制器不支持（已排除）：%1</translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>注意：%1</translation>
+    </message>
+    <message>
+        <source>%1 is not supported by this controller</source>
+        <translation>此控制器不支持 %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DerivedValues</name>
@@ -2158,6 +2178,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: sent</source>
         <translation>%1：已发送</translation>
     </message>
+    <message>
+        <source>The controller refuses reads that cover reserved registers; from now on only its listed registers are read (a few more requests).</source>
+        <translation>控制器拒绝覆盖保留寄存器的读取；此后只读取已列出的寄存器（请求会略多几次）。</translation>
+    </message>
+    <message>
+        <source>%1 (register %2) is not supported by this controller: it refuses to read it. It is left out from now on.</source>
+        <translation>%1（寄存器 %2）此控制器不支持：控制器拒绝读取它。此后不再读取。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -2237,6 +2265,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>写入失败：%1</translation>
+    </message>
+    <message>
+        <source>Not supported by this controller</source>
+        <translation>此控制器不支持</translation>
     </message>
 </context>
 <context>
@@ -3938,6 +3970,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Edited, not saved yet</source>
         <translation>已修改，尚未保存</translation>
     </message>
+    <message>
+        <source>Not supported by this controller: it refuses to read this register</source>
+        <translation>此控制器不支持：控制器拒绝读取这个寄存器</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ParameterStore</name>
@@ -3956,6 +3992,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not written: an earlier write failed</source>
         <translation>未写入：之前的写入失败</translation>
+    </message>
+    <message>
+        <source>%1 is not supported by this controller</source>
+        <translation>此控制器不支持 %1</translation>
     </message>
 </context>
 <context>
@@ -4814,6 +4854,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</source>
         <translation>“metadata”：“backup”：“device”必须是最多 200 个字符的文本</translation>
     </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;unsupported&quot; must be a list of keys, found %1</source>
+        <translation>&quot;metadata&quot;：&quot;unsupported&quot; 必须是键名列表，实际为 %1</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</source>
+        <translation>&quot;metadata&quot;：&quot;unsupported&quot;：%1 不是寄存器表中的参数</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileFilesDialog</name>
@@ -4995,10 +5043,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>在所有网络接口上监听 TCP 连接。</translation>
     </message>
     <message>
-        <source>Refuse reads of reserved registers (exception 02) instead of reading 0.</source>
-        <translation>拒绝读取预留寄存器（返回异常 02），而不是读出 0。</translation>
-    </message>
-    <message>
         <source>Device id 1-255 (overrides the saved one).</source>
         <translation>设备 ID，1-255（覆盖已保存的值）。</translation>
     </message>
@@ -5113,6 +5157,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>--corrupt-crc works on the pseudo-terminal only, not with --serial</source>
         <translation>--corrupt-crc 仅适用于伪终端，不能与 --serial 同时使用</translation>
+    </message>
+    <message>
+        <source>Refuse a read that covers a reserved register (exception 02): only the manual&apos;s listed registers can be read.</source>
+        <translation>拒绝覆盖保留寄存器的读取（异常 02）：只能读取说明书列出的寄存器。</translation>
+    </message>
+    <message>
+        <source>Be a firmware without this listed register (a key or a number such as 40110): reads and writes covering it get exception 02. Repeatable.</source>
+        <translation>模拟缺少这个已列出寄存器的固件（键名或编号，例如 40110）：覆盖它的读写返回异常 02。可重复。</translation>
+    </message>
+    <message>
+        <source>REGISTER</source>
+        <translation>寄存器</translation>
     </message>
 </context>
 <context>
@@ -5257,6 +5313,13 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>outputs:%1</source>
         <translation>输出:%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SimHost</name>
+    <message>
+        <source>--lacks: %1 is no listed register of the map</source>
+        <translation>--lacks：%1 不是寄存器表中列出的寄存器</translation>
     </message>
 </context>
 <context>
