@@ -262,6 +262,7 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
             return;
         }
         Profile profile = Profile::fromValues(self->m_session->map(), r.values, true);
+        profile.unsupported = r.unsupported; // not "missing" when the file is read again
         profile.name = QFileInfo(path).completeBaseName();
         profile.deviceId = self->m_session->settings().deviceId;
         if (const QString e = ProfileFile::save(path, profile, self->m_session->map());
@@ -328,6 +329,7 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         ReportInput input;
         input.map = self->m_session->map();
         input.values = r.values;
+        input.unsupported = r.unsupported;
         input.link = self->m_session->settings().describe();
         input.deviceId = self->m_session->settings().deviceId;
         input.notes = notes;

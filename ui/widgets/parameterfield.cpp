@@ -225,6 +225,8 @@ void ParameterField::applyStateLook()
 {
     const ParameterStore::Entry e = m_store->entry(m_parameter.key);
     const QString lang = Language::instance().current();
+    // A register this controller lacks cannot be edited: nothing could ever be written to it.
+    editor()->setEnabled(m_parameter.writable() && !e.unsupported);
     QString stateText;
     QString stateTip;
     QColor tint;
