@@ -74,6 +74,21 @@
         <source>type &apos;help&apos; for the console commands</source>
         <translation>type &apos;help&apos; for the console commands</translation>
     </message>
+    <message>
+        <source>%1 controllers on the line, ids %2 (the console acts on the first)</source>
+        <translation>%1 controllers on the line, ids %2 (the console acts on the first)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BackupGuard</name>
+    <message>
+        <source>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</source>
+        <translation>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</translation>
+    </message>
+    <message>
+        <source>Backup of the controller&apos;s settings before %1: %2</source>
+        <translation>Backup of the controller&apos;s settings before %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BackupStore</name>
@@ -108,6 +123,45 @@
     <message>
         <source>Backup before %1</source>
         <translation>Backup before %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BackupsDialog</name>
+    <message>
+        <source>cannot be read: %1</source>
+        <translation>cannot be read: %1</translation>
+    </message>
+    <message>
+        <source>Backups</source>
+        <translation>Backups</translation>
+    </message>
+    <message>
+        <source>StepCom saves the controller&apos;s settings here before every apply, factory reset, save to flash and id or baud change: %1</source>
+        <translation>StepCom saves the controller&apos;s settings here before every apply, factory reset, save to flash and id or baud change: %1</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Time</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Device</translation>
+    </message>
+    <message>
+        <source>What happened after</source>
+        <translation>What happened after</translation>
+    </message>
+    <message>
+        <source>Restore…</source>
+        <translation>Restore…</translation>
+    </message>
+    <message>
+        <source>Compare the backup with the controller and apply what you check</source>
+        <translation>Compare the backup with the controller and apply what you check</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
     </message>
 </context>
 <context>
@@ -199,10 +253,6 @@
     <message>
         <source>Device id</source>
         <translation>Device id</translation>
-    </message>
-    <message>
-        <source>Answer</source>
-        <translation>Answer</translation>
     </message>
     <message>
         <source>Double-click a controller to connect to it</source>
@@ -311,6 +361,14 @@
             <numerusform>%n probes, at most about %1 s. A scan only reads; nothing is written.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Controller</source>
+        <translation>Controller</translation>
+    </message>
+    <message>
+        <source>Scan finished: %1. Press Connect.</source>
+        <translation>Scan finished: %1. Press Connect.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BusScanner</name>
@@ -327,12 +385,40 @@
         <translation>scan id %1 at %2 baud</translation>
     </message>
     <message>
-        <source>answered (register 40001 = %1)</source>
-        <translation>answered (register 40001 = %1)</translation>
+        <source>id %1 at %2 — %3</source>
+        <translation>id %1 at %2 — %3</translation>
     </message>
     <message>
-        <source>answered with an exception: %1</source>
-        <translation>answered with an exception: %1</translation>
+        <source>a device that refused the first register: %1</source>
+        <translation>a device that refused the first register: %1</translation>
+    </message>
+    <message>
+        <source>a %1-axis controller</source>
+        <translation>a %1-axis controller</translation>
+    </message>
+    <message>
+        <source>a controller</source>
+        <translation>a controller</translation>
+    </message>
+    <message>
+        <source>%1, step angle %2</source>
+        <translation>%1, step angle %2</translation>
+    </message>
+    <message>
+        <source>%1, step angles %2</source>
+        <translation>%1, step angles %2</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> and </translation>
+    </message>
+    <message>
+        <source> (only %1 of %2 motors answered)</source>
+        <translation> (only %1 of %2 motors answered)</translation>
+    </message>
+    <message>
+        <source>identify id %1</source>
+        <translation>identify id %1</translation>
     </message>
 </context>
 <context>
@@ -506,6 +592,92 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ChecklistCalibrationStep</name>
+    <message>
+        <source>Moving…</source>
+        <translation>Moving…</translation>
+    </message>
+    <message>
+        <source>The pitch was not written.</source>
+        <translation>The pitch was not written.</translation>
+    </message>
+    <message>
+        <source>Passed: the corrected pitch is written and verified.</source>
+        <translation>Passed: the corrected pitch is written and verified.</translation>
+    </message>
+    <message>
+        <source>Passed: the axis moved what it was told; the pitch stays %1 %2.</source>
+        <translation>Passed: the axis moved what it was told; the pitch stays %1 %2.</translation>
+    </message>
+    <message>
+        <source>Write the corrected pitch %1 %2…</source>
+        <translation>Write the corrected pitch %1 %2…</translation>
+    </message>
+    <message>
+        <source>Measured ÷ commanded = %1: the pitch %2 %3 should be %4 %3.</source>
+        <translation>Measured ÷ commanded = %1: the pitch %2 %3 should be %4 %3.</translation>
+    </message>
+    <message>
+        <source>Commanded: </source>
+        <translation>Commanded: </translation>
+    </message>
+    <message>
+        <source>Measured: </source>
+        <translation>Measured: </translation>
+    </message>
+    <message>
+        <source>Move this distance</source>
+        <translation>Move this distance</translation>
+    </message>
+    <message>
+        <source>Propose the pitch</source>
+        <translation>Propose the pitch</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistDirectionStep</name>
+    <message>
+        <source>The direction register is not read yet.</source>
+        <translation>The direction register is not read yet.</translation>
+    </message>
+    <message>
+        <source>Moving…</source>
+        <translation>Moving…</translation>
+    </message>
+    <message>
+        <source>The direction register is written and verified. Repeat the step to confirm the axis now moves toward +.</source>
+        <translation>The direction register is written and verified. Repeat the step to confirm the axis now moves toward +.</translation>
+    </message>
+    <message>
+        <source>The direction register was not written.</source>
+        <translation>The direction register was not written.</translation>
+    </message>
+    <message>
+        <source>Passed: the axis moves toward + with the direction as configured.</source>
+        <translation>Passed: the axis moves toward + with the direction as configured.</translation>
+    </message>
+    <message>
+        <source>Flip the direction to %1…</source>
+        <translation>Flip the direction to %1…</translation>
+    </message>
+    <message>
+        <source>Failed: the axis moved toward −. Flip the direction register, then repeat the step.</source>
+        <translation>Failed: the axis moved toward −. Flip the direction register, then repeat the step.</translation>
+    </message>
+    <message>
+        <source>Move a small step</source>
+        <translation>Move a small step</translation>
+    </message>
+    <message>
+        <source>Yes, toward +</source>
+        <translation>Yes, toward +</translation>
+    </message>
+    <message>
+        <source>No, toward −</source>
+        <translation>No, toward −</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ChecklistFile</name>
     <message>
         <source>null</source>
@@ -642,6 +814,163 @@
     <message>
         <source>cannot write %1: %2</source>
         <translation>cannot write %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistFlashStep</name>
+    <message>
+        <source>Not connected: nothing was sent.</source>
+        <translation>Not connected: nothing was sent.</translation>
+    </message>
+    <message>
+        <source>Not every setting is read yet (%1): read all first.</source>
+        <translation>Not every setting is read yet (%1): read all first.</translation>
+    </message>
+    <message>
+        <source>Saving to flash…</source>
+        <translation>Saving to flash…</translation>
+    </message>
+    <message>
+        <source>Failed: the save to flash was not done (see the messages).</source>
+        <translation>Failed: the save to flash was not done (see the messages).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ</source>
+        <translation>
+            <numerusform>%n setting differ</numerusform>
+            <numerusform>%n settings differ</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Failed: after the save these settings read back differently: %1</source>
+        <translation>Failed: after the save these settings read back differently: %1</translation>
+    </message>
+    <message>
+        <source>Failed: the settings could not be read back: %1</source>
+        <translation>Failed: the settings could not be read back: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) read back unchanged</source>
+        <translation>
+            <numerusform>%n setting read back unchanged</numerusform>
+            <numerusform>%n settings read back unchanged</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Passed: saved to flash, and all %n setting(s) read back unchanged.</source>
+        <translation>
+            <numerusform>Passed: saved to flash, and all %n setting read back unchanged.</numerusform>
+            <numerusform>Passed: saved to flash, and all %n settings read back unchanged.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save to flash and read back</source>
+        <translation>Save to flash and read back</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistInputStep</name>
+    <message>
+        <source>The input setting is written and verified. Repeat the step to confirm.</source>
+        <translation>The input setting is written and verified. Repeat the step to confirm.</translation>
+    </message>
+    <message>
+        <source>The input setting was not written.</source>
+        <translation>The input setting was not written.</translation>
+    </message>
+    <message>
+        <source>The inputs are not known yet: connect and wait for the status.</source>
+        <translation>The inputs are not known yet: connect and wait for the status.</translation>
+    </message>
+    <message>
+        <source>Watching the inputs: press the %1 of motor %2 now, let go, then click Done.</source>
+        <translation>Watching the inputs: press the %1 of motor %2 now, let go, then click Done.</translation>
+    </message>
+    <message>
+        <source>Write the fix (%1)…</source>
+        <translation>Write the fix (%1)…</translation>
+    </message>
+    <message>
+        <source>Press it now</source>
+        <translation>Press it now</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Done</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistMotionStep</name>
+    <message>
+        <source>Not connected: nothing was sent.</source>
+        <translation>Not connected: nothing was sent.</translation>
+    </message>
+    <message>
+        <source>Nothing to run: the homing order is empty, every motor runs, or the path&apos;s registers are not read yet.</source>
+        <translation>Nothing to run: the homing order is empty, every motor runs, or the path&apos;s registers are not read yet.</translation>
+    </message>
+    <message>
+        <source>Running…</source>
+        <translation>Running…</translation>
+    </message>
+    <message>
+        <source>The command was not acknowledged: nothing moved.</source>
+        <translation>The command was not acknowledged: nothing moved.</translation>
+    </message>
+    <message>
+        <source>Home motor %1</source>
+        <translation>Home motor %1</translation>
+    </message>
+    <message>
+        <source>Home in order</source>
+        <translation>Home in order</translation>
+    </message>
+    <message>
+        <source>Run the test</source>
+        <translation>Run the test</translation>
+    </message>
+    <message>
+        <source>The configured arc</source>
+        <translation>The configured arc</translation>
+    </message>
+    <message>
+        <source>The configured line</source>
+        <translation>The configured line</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistPage</name>
+    <message>
+        <source>Commissioning checklist</source>
+        <translation>Commissioning checklist</translation>
+    </message>
+    <message>
+        <source>The checklist file %1 cannot be used, and nothing is saved over it: %2</source>
+        <translation>The checklist file %1 cannot be used, and nothing is saved over it: %2</translation>
+    </message>
+    <message>
+        <source>The result is not saved: %1</source>
+        <translation>The result is not saved: %1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s profile</source>
+        <translation>The machine&apos;s profile</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom profiles (*.json)</translation>
+    </message>
+    <message>
+        <source>No profile chosen: the progress is kept in %1. Choose the machine&apos;s profile to keep it beside it.</source>
+        <translation>No profile chosen: the progress is kept in %1. Choose the machine&apos;s profile to keep it beside it.</translation>
+    </message>
+    <message>
+        <source>Profile %1 — the progress is kept in %2</source>
+        <translation>Profile %1 — the progress is kept in %2</translation>
+    </message>
+    <message>
+        <source>Choose &amp;profile…</source>
+        <translation>Choose &amp;profile…</translation>
     </message>
 </context>
 <context>
@@ -793,6 +1122,25 @@
     <message>
         <source>Read back</source>
         <translation>Read back</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistStepWidget</name>
+    <message>
+        <source>Skipped.</source>
+        <translation>Skipped.</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was written.</source>
+        <translation>Not connected: nothing was written.</translation>
+    </message>
+    <message>
+        <source>&amp;Note:</source>
+        <translation>&amp;Note:</translation>
+    </message>
+    <message>
+        <source>S&amp;kip this step</source>
+        <translation>S&amp;kip this step</translation>
     </message>
 </context>
 <context>
@@ -1016,6 +1364,26 @@
     <message>
         <source>Settings fingerprint</source>
         <translation>Settings fingerprint</translation>
+    </message>
+    <message>
+        <source>Values read</source>
+        <translation>Values read</translation>
+    </message>
+    <message>
+        <source>Flash</source>
+        <translation>Flash</translation>
+    </message>
+    <message>
+        <source>unknown: this program did not follow the writes</source>
+        <translation>unknown: this program did not follow the writes</translation>
+    </message>
+    <message>
+        <source>saved: nothing written since connecting or since the last save to flash</source>
+        <translation>saved: nothing written since connecting or since the last save to flash</translation>
+    </message>
+    <message>
+        <source>NOT saved: values were written since the last save to flash and are lost at power-off</source>
+        <translation>NOT saved: values were written since the last save to flash and are lost at power-off</translation>
     </message>
     <message>
         <source>not supported by this controller</source>
@@ -1256,6 +1624,10 @@
         <source>%1 is open; waiting for the controller to answer…</source>
         <translation>%1 is open; waiting for the controller to answer…</translation>
     </message>
+    <message>
+        <source>Serial port plugged in: %1</source>
+        <translation>Serial port plugged in: %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlMonitor</name>
@@ -1320,10 +1692,6 @@
     <message>
         <source>n</source>
         <translation>n</translation>
-    </message>
-    <message>
-        <source>Device id 1-255 (default 1).</source>
-        <translation>Device id 1-255 (default 1).</translation>
     </message>
     <message>
         <source>id</source>
@@ -1394,10 +1762,6 @@
         <translation>--stop-bits: &apos;%1&apos; is not 1 or 2</translation>
     </message>
     <message>
-        <source>--id: &apos;%1&apos; is not a number</source>
-        <translation>--id: &apos;%1&apos; is not a number</translation>
-    </message>
-    <message>
         <source>--timeout: &apos;%1&apos; is not a number</source>
         <translation>--timeout: &apos;%1&apos; is not a number</translation>
     </message>
@@ -1430,10 +1794,6 @@
         <translation>dump, report: notes to record.</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>no command given (params, read, write, command, monitor, dump, diff, apply, report)</translation>
-    </message>
-    <message>
         <source>report: make the report from this profile file, not from a controller.</source>
         <translation>report: make the report from this profile file, not from a controller.</translation>
     </message>
@@ -1442,12 +1802,44 @@
         <translation>profile</translation>
     </message>
     <message>
-        <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
-        <translation>apply: do not save a backup of the controller&apos;s settings before writing.</translation>
-    </message>
-    <message>
         <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
         <translation>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</translation>
+    </message>
+    <message>
+        <source>apply, command factory_reset/save_to_flash, write device.id/device.baud: do not save a backup of the controller&apos;s settings first.</source>
+        <translation>apply, command factory_reset/save_to_flash, write device.id/device.baud: do not save a backup of the controller&apos;s settings first.</translation>
+    </message>
+    <message>
+        <source>move: a step of this many axis units (+ or -).</source>
+        <translation>move: a step of this many axis units (+ or -).</translation>
+    </message>
+    <message>
+        <source>distance</source>
+        <translation>distance</translation>
+    </message>
+    <message>
+        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
+        <translation>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</translation>
+    </message>
+    <message>
+        <source>--id: %1</source>
+        <translation>--id: %1</translation>
+    </message>
+    <message>
+        <source>--to: &apos;%1&apos; is not a device id 1-255</source>
+        <translation>--to: &apos;%1&apos; is not a device id 1-255</translation>
+    </message>
+    <message>
+        <source>move: to this position (axis units); assign-id: the new device id 1-255.</source>
+        <translation>move: to this position (axis units); assign-id: the new device id 1-255.</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>value</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
+        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</translation>
     </message>
 </context>
 <context>
@@ -1725,6 +2117,70 @@
         <translation>--wait: %1 has no end to wait for (single move, home, home in order, return to data zero, arc and line have one)</translation>
     </message>
     <message>
+        <source>no backup of the controller&apos;s settings could be saved (%1): nothing was done (--no-backup goes on without one)</source>
+        <translation>no backup of the controller&apos;s settings could be saved (%1): nothing was done (--no-backup goes on without one)</translation>
+    </message>
+    <message>
+        <source>move needs one motor: move motor1 --by D or --to X</source>
+        <translation>move needs one motor: move motor1 --by D or --to X</translation>
+    </message>
+    <message>
+        <source>there is no motor %1 (this map has motor1 .. motor%2)</source>
+        <translation>there is no motor %1 (this map has motor1 .. motor%2)</translation>
+    </message>
+    <message>
+        <source>move needs exactly one of --by D and --to X</source>
+        <translation>move needs exactly one of --by D and --to X</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1: &apos;%2&apos; is not a number</translation>
+    </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</source>
+        <translation>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>id %1: %2</translation>
+    </message>
+    <message>
+        <source>== device id %1 ==</source>
+        <translation>== device id %1 ==</translation>
+    </message>
+    <message>
+        <source>assign-id: give the new id with --to N, and one --id (the id the controller answers at now, 1 from the factory)</source>
+        <translation>assign-id: give the new id with --to N, and one --id (the id the controller answers at now, 1 from the factory)</translation>
+    </message>
+    <message>
+        <source>assign-id: the controller already has id %1</source>
+        <translation>assign-id: the controller already has id %1</translation>
+    </message>
+    <message>
+        <source>assign-id: the register map has no device.id</source>
+        <translation>assign-id: the register map has no device.id</translation>
+    </message>
+    <message>
+        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
+        <translation>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</translation>
+    </message>
+    <message>
+        <source>no controller answers at id %1: %2</source>
+        <translation>no controller answers at id %1: %2</translation>
+    </message>
+    <message>
+        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
+        <translation>id %1 is taken: a controller answers there already. Choose a free id</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2</source>
+        <translation>device id %1 → %2: the controller answers at id %2</translation>
+    </message>
+    <message>
+        <source>the controller does not answer at id %1: %2</source>
+        <translation>the controller does not answer at id %1: %2</translation>
+    </message>
+    <message>
         <source>not supported by this controller (left out): %1</source>
         <translation>not supported by this controller (left out): %1</translation>
     </message>
@@ -1881,6 +2337,85 @@
     <message>
         <source>%1: wrote %2 but could not read it back</source>
         <translation>%1: wrote %2 but could not read it back</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::DeviceListDock</name>
+    <message>
+        <source>Device id %1 is already on the list.</source>
+        <translation>Device id %1 is already on the list.</translation>
+    </message>
+    <message>
+        <source>Devices on the line</source>
+        <translation>Devices on the line</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>Id</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>State</translation>
+    </message>
+    <message>
+        <source>Referenced</source>
+        <translation>Referenced</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>Errors</translation>
+    </message>
+    <message>
+        <source>Add device</source>
+        <translation>Add device</translation>
+    </message>
+    <message>
+        <source>Device id to add</source>
+        <translation>Device id to add</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>not connected</translation>
+    </message>
+    <message>
+        <source>answering (in view)</source>
+        <translation>answering (in view)</translation>
+    </message>
+    <message>
+        <source>not answering (in view)</source>
+        <translation>not answering (in view)</translation>
+    </message>
+    <message>
+        <source>asking (in view)</source>
+        <translation>asking (in view)</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>answering</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>not answering</translation>
+    </message>
+    <message>
+        <source>asking</source>
+        <translation>asking</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unknown</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <source>motor %1</source>
+        <translation>motor %1</translation>
     </message>
 </context>
 <context>
@@ -2190,6 +2725,33 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: sent</source>
         <translation>%1: sent</translation>
     </message>
+    <message numerus="yes">
+        <source>E-STOP sent to %n controller(s): id %1</source>
+        <translation>
+            <numerusform>E-STOP sent to %n controller: id %1</numerusform>
+            <numerusform>E-STOP sent to %n controllers: id %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged by every controller: id %1</source>
+        <translation>E-STOP acknowledged by every controller: id %1</translation>
+    </message>
+    <message>
+        <source>E-STOP NOT acknowledged by id %1 (%2); acknowledged by: %3</source>
+        <translation>E-STOP NOT acknowledged by id %1 (%2); acknowledged by: %3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>Device id %1 is not on this line (%2)</source>
+        <translation>Device id %1 is not on this line (%2)</translation>
+    </message>
+    <message>
+        <source>showing device %1</source>
+        <translation>showing device %1</translation>
+    </message>
     <message>
         <source>The controller refuses reads that cover reserved registers; from now on only its listed registers are read (a few more requests).</source>
         <translation>The controller refuses reads that cover reserved registers; from now on only its listed registers are read (a few more requests).</translation>
@@ -2197,6 +2759,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 (register %2) is not supported by this controller: it refuses to read it. It is left out from now on.</source>
         <translation>%1 (register %2) is not supported by this controller: it refuses to read it. It is left out from now on.</translation>
+    </message>
+    <message>
+        <source>Device id %1: %2</source>
+        <translation>Device id %1: %2</translation>
     </message>
 </context>
 <context>
@@ -2230,6 +2796,41 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&apos;%1&apos;: expected SHARE:NUMBER, e.g. 0.1:500</source>
         <translation>&apos;%1&apos;: expected SHARE:NUMBER, e.g. 0.1:500</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::GuideWindow</name>
+    <message>
+        <source>The user guide (%1) was not found in %2. It is installed with StepCom; reinstalling the package brings it back.</source>
+        <translation>The user guide (%1) was not found in %2. It is installed with StepCom; reinstalling the package brings it back.</translation>
+    </message>
+    <message>
+        <source>The guide has no section &quot;%1&quot;.</source>
+        <translation>The guide has no section &quot;%1&quot;.</translation>
+    </message>
+    <message>
+        <source>%1 is not installed with the guide.</source>
+        <translation>%1 is not installed with the guide.</translation>
+    </message>
+    <message>
+        <source>User guide</source>
+        <translation>User guide</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Back</translation>
+    </message>
+    <message>
+        <source>Back to where you were in the guide</source>
+        <translation>Back to where you were in the guide</translation>
+    </message>
+    <message>
+        <source>Go to a section of the guide</source>
+        <translation>Go to a section of the guide</translation>
+    </message>
+    <message>
+        <source>Sections</source>
+        <translation>Sections</translation>
     </message>
 </context>
 <context>
@@ -2281,6 +2882,25 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Not supported by this controller</source>
         <translation>Not supported by this controller</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdList</name>
+    <message>
+        <source>&apos;%1&apos; is not a device id or a range of ids (e.g. 1,2,3 or 1-3)</source>
+        <translation>&apos;%1&apos; is not a device id or a range of ids (e.g. 1,2,3 or 1-3)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: device ids are 1-255</source>
+        <translation>&apos;%1&apos;: device ids are 1-255</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the range runs backwards</source>
+        <translation>&apos;%1&apos;: the range runs backwards</translation>
+    </message>
+    <message>
+        <source>device id %1 is given twice</source>
+        <translation>device id %1 is given twice</translation>
     </message>
 </context>
 <context>
@@ -3012,10 +3632,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>&lt;b&gt;StepCom %1&lt;/b&gt;&lt;br&gt;Commissioning tool for 2-axis stepper controllers over Modbus RTU/TCP.&lt;br&gt;GPL-3.0-or-later.</translation>
     </message>
     <message>
-        <source>StepCom — stepper controller commissioning</source>
-        <translation>StepCom — stepper controller commissioning</translation>
-    </message>
-    <message>
         <source>&amp;Read all</source>
         <translation>&amp;Read all</translation>
     </message>
@@ -3114,16 +3730,28 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>%n edited values were never written to the controller. Close anyway and lose them?</numerusform>
         </translation>
     </message>
-    <message>
-        <source>%1%2 — profile file, no controller — StepCom</source>
-        <translation>%1%2 — profile file, no controller — StepCom</translation>
-    </message>
     <message numerus="yes">
         <source>%n edited value(s) of %1 are not saved in the file. Close anyway and lose them?</source>
         <translation>
             <numerusform>%n edited value of %1 are not saved in the file. Close anyway and lose them?</numerusform>
             <numerusform>%n edited values of %1 are not saved in the file. Close anyway and lose them?</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>&amp;User guide</translation>
+    </message>
+    <message>
+        <source>The user guide at the section about this page (%1)</source>
+        <translation>The user guide at the section about this page (%1)</translation>
+    </message>
+    <message>
+        <source>What&apos;s &amp;this?</source>
+        <translation>What&apos;s &amp;this?</translation>
+    </message>
+    <message>
+        <source>%1%2 — profile file, no controller</source>
+        <translation>%1%2 — profile file, no controller</translation>
     </message>
 </context>
 <context>
@@ -3261,6 +3889,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>coil %1</source>
         <translation>coil %1</translation>
+    </message>
+    <message>
+        <source>id %1, %2</source>
+        <translation>id %1, %2</translation>
     </message>
 </context>
 <context>
@@ -4503,6 +5135,26 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</source>
         <translation>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</translation>
     </message>
+    <message>
+        <source>The backup cannot be used</source>
+        <translation>The backup cannot be used</translation>
+    </message>
+    <message>
+        <source>Opened backup %1</source>
+        <translation>Opened backup %1</translation>
+    </message>
+    <message>
+        <source>&amp;Backups…</source>
+        <translation>&amp;Backups…</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s settings saved before each apply, factory reset, save to flash and id or baud change</source>
+        <translation>The controller&apos;s settings saved before each apply, factory reset, save to flash and id or baud change</translation>
+    </message>
+    <message>
+        <source>The software travel limits of %1 are in use now</source>
+        <translation>The software travel limits of %1 are in use now</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileCompareDialog</name>
@@ -4981,6 +5633,41 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileSaveDialog</name>
+    <message>
+        <source>Controller id %1</source>
+        <translation>Controller id %1</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profile</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>Save profile</translation>
+    </message>
+    <message>
+        <source>Every parameter is read from the controller, then saved with this name and notes.</source>
+        <translation>Every parameter is read from the controller, then saved with this name and notes.</translation>
+    </message>
+    <message>
+        <source>The values the pages show (edits included) are saved with this name and notes.</source>
+        <translation>The values the pages show (edits included) are saved with this name and notes.</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>N&amp;otes:</source>
+        <translation>N&amp;otes:</translation>
+    </message>
+    <message>
+        <source>Machine, place, who set it up, what was changed</source>
+        <translation>Machine, place, who set it up, what was changed</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ProfileVariance</name>
     <message>
         <source>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</source>
@@ -5028,6 +5715,55 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not referenced (link lost)</source>
         <translation>not referenced (link lost)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SerialPorts</name>
+    <message>
+        <source>S/N %1</source>
+        <translation>S/N %1</translation>
+    </message>
+    <message>
+        <source>Stable name: %1</source>
+        <translation>Stable name: %1</translation>
+    </message>
+    <message>
+        <source>Adapter: %1</source>
+        <translation>Adapter: %1</translation>
+    </message>
+    <message>
+        <source>Manufacturer: %1</source>
+        <translation>Manufacturer: %1</translation>
+    </message>
+    <message>
+        <source>Serial number: %1</source>
+        <translation>Serial number: %1</translation>
+    </message>
+    <message>
+        <source>USB id: %1:%2</source>
+        <translation>USB id: %1:%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SessionBackup</name>
+    <message>
+        <source>the session ended</source>
+        <translation>the session ended</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s settings could not be read: %1</source>
+        <translation>the controller&apos;s settings could not be read: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SessionLog</name>
+    <message>
+        <source>cannot create the log folder %1</source>
+        <translation>cannot create the log folder %1</translation>
+    </message>
+    <message>
+        <source>cannot write the session log %1: %2</source>
+        <translation>cannot write the session log %1: %2</translation>
     </message>
 </context>
 <context>
@@ -5187,6 +5923,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>--corrupt-crc works on the pseudo-terminal only, not with --serial</source>
         <translation>--corrupt-crc works on the pseudo-terminal only, not with --serial</translation>
+    </message>
+    <message>
+        <source>Several controllers on the one port, one per id (e.g. 1,2,3 or 1-3); a repeated id is a collision: both answer at once.</source>
+        <translation>Several controllers on the one port, one per id (e.g. 1,2,3 or 1-3); a repeated id is a collision: both answer at once.</translation>
+    </message>
+    <message>
+        <source>IDS</source>
+        <translation>IDS</translation>
+    </message>
+    <message>
+        <source>--ids: give either --id or --ids, not both</source>
+        <translation>--ids: give either --id or --ids, not both</translation>
     </message>
     <message>
         <source>Refuse a read that covers a reserved register (exception 02): only the manual&apos;s listed registers can be read.</source>
@@ -5515,6 +6263,120 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::StepMove</name>
+    <message>
+        <source>There is no motor %1 (this controller has %2)</source>
+        <translation>There is no motor %1 (this controller has %2)</translation>
+    </message>
+    <message>
+        <source>This register map has no single move for motor %1</source>
+        <translation>This register map has no single move for motor %1</translation>
+    </message>
+    <message>
+        <source>Motor %1: the distance or position is not a number</source>
+        <translation>Motor %1: the distance or position is not a number</translation>
+    </message>
+    <message>
+        <source>Motor %1: a distance cannot be negative</source>
+        <translation>Motor %1: a distance cannot be negative</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was sent</source>
+        <translation>Not connected: nothing was sent</translation>
+    </message>
+    <message>
+        <source>A step is still running: wait for it to end</source>
+        <translation>A step is still running: wait for it to end</translation>
+    </message>
+    <message>
+        <source>Motor %1: the step uses the single-move distance and direction, and they hold edits that were not written. Write or revert them first.</source>
+        <translation>Motor %1: the step uses the single-move distance and direction, and they hold edits that were not written. Write or revert them first.</translation>
+    </message>
+    <message>
+        <source>Motor %1 is jogging: let go first</source>
+        <translation>Motor %1 is jogging: let go first</translation>
+    </message>
+    <message>
+        <source>Motor %1 is moving: wait until it ends</source>
+        <translation>Motor %1 is moving: wait until it ends</translation>
+    </message>
+    <message>
+        <source>Motor %1: could not read the position and the single-move values (%2): nothing was moved</source>
+        <translation>Motor %1: could not read the position and the single-move values (%2): nothing was moved</translation>
+    </message>
+    <message>
+        <source>Motor %1 is running: nothing was moved</source>
+        <translation>Motor %1 is running: nothing was moved</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 %3 is outside the position register&apos;s range</source>
+        <translation>Motor %1: %2 %3 is outside the position register&apos;s range</translation>
+    </message>
+    <message>
+        <source>Motor %1 already stands at %2 %3: nothing to move</source>
+        <translation>Motor %1 already stands at %2 %3: nothing to move</translation>
+    </message>
+    <message>
+        <source>Motor %1: a move of %2 %3 is more than the single move can do (%4 %3)</source>
+        <translation>Motor %1: a move of %2 %3 is more than the single move can do (%4 %3)</translation>
+    </message>
+    <message>
+        <source>the step&apos;s distance and direction could not be written (%1): nothing was moved</source>
+        <translation>the step&apos;s distance and direction could not be written (%1): nothing was moved</translation>
+    </message>
+    <message>
+        <source>the single move was not acknowledged: nothing was moved</source>
+        <translation>the single move was not acknowledged: nothing was moved</translation>
+    </message>
+    <message>
+        <source>distance %1 %2, direction %3</source>
+        <translation>distance %1 %2, direction %3</translation>
+    </message>
+    <message>
+        <source>%1. The single move&apos;s own values (%2) could not be put back: not connected. Write them again once the controller answers.</source>
+        <translation>%1. The single move&apos;s own values (%2) could not be put back: not connected. Write them again once the controller answers.</translation>
+    </message>
+    <message>
+        <source>%1. The single move&apos;s own values (%2) could not be put back: %3</source>
+        <translation>%1. The single move&apos;s own values (%2) could not be put back: %3</translation>
+    </message>
+    <message>
+        <source>The single move&apos;s own distance and direction are back (verified).</source>
+        <translation>The single move&apos;s own distance and direction are back (verified).</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::StepMovePanel</name>
+    <message>
+        <source>&amp;Step:</source>
+        <translation>&amp;Step:</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Custom</translation>
+    </message>
+    <message>
+        <source>− Step</source>
+        <translation>− Step</translation>
+    </message>
+    <message>
+        <source>+ Step</source>
+        <translation>+ Step</translation>
+    </message>
+    <message>
+        <source>Move &amp;to:</source>
+        <translation>Move &amp;to:</translation>
+    </message>
+    <message>
+        <source>Move to position</source>
+        <translation>Move to position</translation>
+    </message>
+    <message>
+        <source>Steps and move-to use this motor&apos;s single-move distance and direction registers, then write your own values back and verify them. They refuse while those fields hold unwritten edits, and any target beyond the software travel limits.</source>
+        <translation>Steps and move-to use this motor&apos;s single-move distance and direction registers, then write your own values back and verify them. They refuse while those fields hold unwritten edits, and any target beyond the software travel limits.</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::TrafficModel</name>
     <message>
         <source>Time</source>
@@ -5548,14 +6410,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>&amp;Copy</translation>
     </message>
     <message>
-        <source>&amp;Save…</source>
-        <translation>&amp;Save…</translation>
-    </message>
-    <message>
-        <source>Copy the selected rows (all rows when none are selected)</source>
-        <translation>Copy the selected rows (all rows when none are selected)</translation>
-    </message>
-    <message>
         <source>Save traffic log</source>
         <translation>Save traffic log</translation>
     </message>
@@ -5566,6 +6420,74 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Could not save %1: %2</source>
         <translation>Could not save %1: %2</translation>
+    </message>
+    <message>
+        <source>Open log folder</source>
+        <translation>Open log folder</translation>
+    </message>
+    <message>
+        <source>Hold the rows still to read them; frames are still kept</source>
+        <translation>Hold the rows still to read them; frames are still kept</translation>
+    </message>
+    <message>
+        <source>Polls</source>
+        <translation>Polls</translation>
+    </message>
+    <message>
+        <source>The live status poll: several frames a second</source>
+        <translation>The live status poll: several frames a second</translation>
+    </message>
+    <message>
+        <source>Reads</source>
+        <translation>Reads</translation>
+    </message>
+    <message>
+        <source>Writes</source>
+        <translation>Writes</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>Commands</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>Errors</translation>
+    </message>
+    <message>
+        <source>Search (text, key or bytes)</source>
+        <translation>Search (text, key or bytes)</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Search</translation>
+    </message>
+    <message>
+        <source>Copy the selected rows (all rows shown when none are selected)</source>
+        <translation>Copy the selected rows (all rows shown when none are selected)</translation>
+    </message>
+    <message>
+        <source>&amp;Save log…</source>
+        <translation>&amp;Save log…</translation>
+    </message>
+    <message>
+        <source>Save the rows shown to a file</source>
+        <translation>Save the rows shown to a file</translation>
+    </message>
+    <message>
+        <source>Open log &amp;folder</source>
+        <translation>Open log &amp;folder</translation>
+    </message>
+    <message>
+        <source>The session log files: every frame of every connection, with date and time (%1)</source>
+        <translation>The session log files: every frame of every connection, with date and time (%1)</translation>
+    </message>
+    <message>
+        <source>Cannot create the log folder %1.</source>
+        <translation>Cannot create the log folder %1.</translation>
+    </message>
+    <message>
+        <source>No file manager opened %1. The session log files are there.</source>
+        <translation>No file manager opened %1. The session log files are there.</translation>
     </message>
 </context>
 <context>
@@ -5704,6 +6626,45 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</source>
         <translation>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TravelLimitsEditor</name>
+    <message>
+        <source>The saved software travel limits were not used: %1</source>
+        <translation>The saved software travel limits were not used: %1</translation>
+    </message>
+    <message>
+        <source>How far a jog can overrun a limit is worked out once the speed and pitch are read and the link has answered.</source>
+        <translation>How far a jog can overrun a limit is worked out once the speed and pitch are read and the link has answered.</translation>
+    </message>
+    <message>
+        <source>A hold-to-move jog can run past a limit by %1.</source>
+        <translation>A hold-to-move jog can run past a limit by %1.</translation>
+    </message>
+    <message>
+        <source>Software travel limits</source>
+        <translation>Software travel limits</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>Apply limits</source>
+        <translation>Apply limits</translation>
+    </message>
+    <message>
+        <source>StepCom&apos;s limits, not the controller&apos;s: a step or move-to beyond them is refused and a jog is stopped when the polled position crosses them. Saved with the connection settings and in profiles. If the link dies during a jog, only the limit switches stop the axis.</source>
+        <translation>StepCom&apos;s limits, not the controller&apos;s: a step or move-to beyond them is refused and a jog is stopped when the polled position crosses them. Saved with the connection settings and in profiles. If the link dies during a jog, only the limit switches stop the axis.</translation>
     </message>
 </context>
 <context>
@@ -6056,6 +7017,24 @@ file and its checklist, no controller needed)</translation>
 how it ended (--json), exit 0 only when done or referenced</source>
         <translation>pulse a motion command and wait until it ends; print
 how it ended (--json), exit 0 only when done or referenced</translation>
+    </message>
+    <message>
+        <source>move motorN by D or to X (axis units) with its single
+move; its own distance and direction are put back and
+verified; exit 0 only when it arrived</source>
+        <translation>move motorN by D or to X (axis units) with its single
+move; its own distance and direction are put back and
+verified; exit 0 only when it arrived</translation>
+    </message>
+    <message>
+        <source>give the one controller at --id (default 1, as it
+leaves the factory) the device id N and check it
+answers there; refuses when N is taken or two
+controllers answer at --id</source>
+        <translation>give the one controller at --id (default 1, as it
+leaves the factory) the device id N and check it
+answers there; refuses when N is taken or two
+controllers answer at --id</translation>
     </message>
 </context>
 </TS>

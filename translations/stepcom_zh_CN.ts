@@ -74,6 +74,21 @@
         <source>type &apos;help&apos; for the console commands</source>
         <translation>输入 &apos;help&apos; 查看控制台命令</translation>
     </message>
+    <message>
+        <source>%1 controllers on the line, ids %2 (the console acts on the first)</source>
+        <translation>总线上有 %1 台控制器，ID 为 %2（控制台操作第一台）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BackupGuard</name>
+    <message>
+        <source>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</source>
+        <translation>无法保存控制器参数的备份（%1）：未执行%2</translation>
+    </message>
+    <message>
+        <source>Backup of the controller&apos;s settings before %1: %2</source>
+        <translation>%1前已备份控制器参数：%2</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BackupStore</name>
@@ -108,6 +123,45 @@
     <message>
         <source>Backup before %1</source>
         <translation>%1前的备份</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BackupsDialog</name>
+    <message>
+        <source>cannot be read: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <source>Backups</source>
+        <translation>备份</translation>
+    </message>
+    <message>
+        <source>StepCom saves the controller&apos;s settings here before every apply, factory reset, save to flash and id or baud change: %1</source>
+        <translation>每次应用参数文件、恢复出厂参数、保存到闪存以及修改设备地址或波特率之前，StepCom 都会把控制器参数保存在这里：%1</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>设备</translation>
+    </message>
+    <message>
+        <source>What happened after</source>
+        <translation>之后进行的操作</translation>
+    </message>
+    <message>
+        <source>Restore…</source>
+        <translation>恢复…</translation>
+    </message>
+    <message>
+        <source>Compare the backup with the controller and apply what you check</source>
+        <translation>将备份与控制器比较，并应用勾选的项</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
     </message>
 </context>
 <context>
@@ -199,10 +253,6 @@
     <message>
         <source>Device id</source>
         <translation>设备 ID</translation>
-    </message>
-    <message>
-        <source>Answer</source>
-        <translation>应答</translation>
     </message>
     <message>
         <source>Double-click a controller to connect to it</source>
@@ -306,6 +356,14 @@
             <numerusform>共探测 %n 次，最多约 %1 s。扫描只读取，不写入任何数据。</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>Scan finished: %1. Press Connect.</source>
+        <translation>扫描完成：%1。请按“连接”。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BusScanner</name>
@@ -322,12 +380,40 @@
         <translation>扫描 ID %1，波特率 %2</translation>
     </message>
     <message>
-        <source>answered (register 40001 = %1)</source>
-        <translation>已应答（寄存器 40001 = %1）</translation>
+        <source>id %1 at %2 — %3</source>
+        <translation>ID %1，%2 — %3</translation>
     </message>
     <message>
-        <source>answered with an exception: %1</source>
-        <translation>应答异常：%1</translation>
+        <source>a device that refused the first register: %1</source>
+        <translation>一台拒绝读取第一个寄存器的设备：%1</translation>
+    </message>
+    <message>
+        <source>a %1-axis controller</source>
+        <translation>%1 轴控制器</translation>
+    </message>
+    <message>
+        <source>a controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>%1, step angle %2</source>
+        <translation>%1，步距角 %2</translation>
+    </message>
+    <message>
+        <source>%1, step angles %2</source>
+        <translation>%1，步距角 %2</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> 和 </translation>
+    </message>
+    <message>
+        <source> (only %1 of %2 motors answered)</source>
+        <translation>（%2 台电机中只有 %1 台应答）</translation>
+    </message>
+    <message>
+        <source>identify id %1</source>
+        <translation>识别 ID %1</translation>
     </message>
 </context>
 <context>
@@ -501,6 +587,92 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ChecklistCalibrationStep</name>
+    <message>
+        <source>Moving…</source>
+        <translation>正在运行…</translation>
+    </message>
+    <message>
+        <source>The pitch was not written.</source>
+        <translation>螺距未写入。</translation>
+    </message>
+    <message>
+        <source>Passed: the corrected pitch is written and verified.</source>
+        <translation>通过：修正后的螺距已写入并校验。</translation>
+    </message>
+    <message>
+        <source>Passed: the axis moved what it was told; the pitch stays %1 %2.</source>
+        <translation>通过：轴的实际行程与指令一致；螺距保持 %1 %2。</translation>
+    </message>
+    <message>
+        <source>Write the corrected pitch %1 %2…</source>
+        <translation>写入修正后的螺距 %1 %2…</translation>
+    </message>
+    <message>
+        <source>Measured ÷ commanded = %1: the pitch %2 %3 should be %4 %3.</source>
+        <translation>实测 ÷ 指令 = %1：螺距 %2 %3 应为 %4 %3。</translation>
+    </message>
+    <message>
+        <source>Commanded: </source>
+        <translation>指令：</translation>
+    </message>
+    <message>
+        <source>Measured: </source>
+        <translation>实测：</translation>
+    </message>
+    <message>
+        <source>Move this distance</source>
+        <translation>运行此距离</translation>
+    </message>
+    <message>
+        <source>Propose the pitch</source>
+        <translation>计算螺距</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistDirectionStep</name>
+    <message>
+        <source>The direction register is not read yet.</source>
+        <translation>方向寄存器尚未读取。</translation>
+    </message>
+    <message>
+        <source>Moving…</source>
+        <translation>正在运行…</translation>
+    </message>
+    <message>
+        <source>The direction register is written and verified. Repeat the step to confirm the axis now moves toward +.</source>
+        <translation>方向寄存器已写入并校验。请重复此步骤，确认轴现在朝 + 方向运动。</translation>
+    </message>
+    <message>
+        <source>The direction register was not written.</source>
+        <translation>方向寄存器未写入。</translation>
+    </message>
+    <message>
+        <source>Passed: the axis moves toward + with the direction as configured.</source>
+        <translation>通过：按当前方向设置，轴朝 + 方向运动。</translation>
+    </message>
+    <message>
+        <source>Flip the direction to %1…</source>
+        <translation>将方向改为 %1…</translation>
+    </message>
+    <message>
+        <source>Failed: the axis moved toward −. Flip the direction register, then repeat the step.</source>
+        <translation>未通过：轴朝 − 方向运动。请修改方向寄存器，然后重复此步骤。</translation>
+    </message>
+    <message>
+        <source>Move a small step</source>
+        <translation>运行一小步</translation>
+    </message>
+    <message>
+        <source>Yes, toward +</source>
+        <translation>是，朝 +</translation>
+    </message>
+    <message>
+        <source>No, toward −</source>
+        <translation>否，朝 −</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ChecklistFile</name>
     <message>
         <source>null</source>
@@ -637,6 +809,160 @@
     <message>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistFlashStep</name>
+    <message>
+        <source>Not connected: nothing was sent.</source>
+        <translation>未连接：没有发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Not every setting is read yet (%1): read all first.</source>
+        <translation>尚有参数未读取（%1）：请先全部读取。</translation>
+    </message>
+    <message>
+        <source>Saving to flash…</source>
+        <translation>正在保存到闪存…</translation>
+    </message>
+    <message>
+        <source>Failed: the save to flash was not done (see the messages).</source>
+        <translation>未通过：未能保存到闪存（见消息）。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) differ</source>
+        <translation>
+            <numerusform>%n 个参数不一致</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Failed: after the save these settings read back differently: %1</source>
+        <translation>未通过：保存后回读的这些参数不一致：%1</translation>
+    </message>
+    <message>
+        <source>Failed: the settings could not be read back: %1</source>
+        <translation>未通过：无法回读参数：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n setting(s) read back unchanged</source>
+        <translation>
+            <numerusform>回读 %n 个参数，均未改变</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Passed: saved to flash, and all %n setting(s) read back unchanged.</source>
+        <translation>
+            <numerusform>通过：已保存到闪存，回读全部 %n 个参数均未改变。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save to flash and read back</source>
+        <translation>保存到闪存并回读</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistInputStep</name>
+    <message>
+        <source>The input setting is written and verified. Repeat the step to confirm.</source>
+        <translation>输入设置已写入并校验。请重复此步骤以确认。</translation>
+    </message>
+    <message>
+        <source>The input setting was not written.</source>
+        <translation>输入设置未写入。</translation>
+    </message>
+    <message>
+        <source>The inputs are not known yet: connect and wait for the status.</source>
+        <translation>输入状态尚未知：请连接并等待状态刷新。</translation>
+    </message>
+    <message>
+        <source>Watching the inputs: press the %1 of motor %2 now, let go, then click Done.</source>
+        <translation>正在监视输入：请现在按下电机 %2 的%1，松开后点击“完成”。</translation>
+    </message>
+    <message>
+        <source>Write the fix (%1)…</source>
+        <translation>写入修正（%1）…</translation>
+    </message>
+    <message>
+        <source>Press it now</source>
+        <translation>现在按下</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>完成</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistMotionStep</name>
+    <message>
+        <source>Not connected: nothing was sent.</source>
+        <translation>未连接：没有发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Nothing to run: the homing order is empty, every motor runs, or the path&apos;s registers are not read yet.</source>
+        <translation>无可运行的内容：回零顺序为空、所有电机都在运行，或路径寄存器尚未读取。</translation>
+    </message>
+    <message>
+        <source>Running…</source>
+        <translation>正在运行…</translation>
+    </message>
+    <message>
+        <source>The command was not acknowledged: nothing moved.</source>
+        <translation>命令未被确认：没有任何运动。</translation>
+    </message>
+    <message>
+        <source>Home motor %1</source>
+        <translation>电机 %1 回零</translation>
+    </message>
+    <message>
+        <source>Home in order</source>
+        <translation>按顺序回零</translation>
+    </message>
+    <message>
+        <source>Run the test</source>
+        <translation>运行测试</translation>
+    </message>
+    <message>
+        <source>The configured arc</source>
+        <translation>已设置的圆弧</translation>
+    </message>
+    <message>
+        <source>The configured line</source>
+        <translation>已设置的直线</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistPage</name>
+    <message>
+        <source>Commissioning checklist</source>
+        <translation>调试检查表</translation>
+    </message>
+    <message>
+        <source>The checklist file %1 cannot be used, and nothing is saved over it: %2</source>
+        <translation>检查表文件 %1 无法使用，也不会被覆盖：%2</translation>
+    </message>
+    <message>
+        <source>The result is not saved: %1</source>
+        <translation>结果未保存：%1</translation>
+    </message>
+    <message>
+        <source>The machine&apos;s profile</source>
+        <translation>设备的参数文件</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json)</source>
+        <translation>StepCom 参数文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>No profile chosen: the progress is kept in %1. Choose the machine&apos;s profile to keep it beside it.</source>
+        <translation>未选择参数文件：进度保存在 %1。选择设备的参数文件后，进度将保存在它旁边。</translation>
+    </message>
+    <message>
+        <source>Profile %1 — the progress is kept in %2</source>
+        <translation>参数文件 %1 — 进度保存在 %2</translation>
+    </message>
+    <message>
+        <source>Choose &amp;profile…</source>
+        <translation>选择参数文件(&amp;P)…</translation>
     </message>
 </context>
 <context>
@@ -788,6 +1114,25 @@
     <message>
         <source>Read back</source>
         <translation>读回</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ChecklistStepWidget</name>
+    <message>
+        <source>Skipped.</source>
+        <translation>已跳过。</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was written.</source>
+        <translation>未连接：没有写入任何内容。</translation>
+    </message>
+    <message>
+        <source>&amp;Note:</source>
+        <translation>备注(&amp;N)：</translation>
+    </message>
+    <message>
+        <source>S&amp;kip this step</source>
+        <translation>跳过此步骤(&amp;K)</translation>
     </message>
 </context>
 <context>
@@ -1011,6 +1356,26 @@
     <message>
         <source>Settings fingerprint</source>
         <translation>设置指纹</translation>
+    </message>
+    <message>
+        <source>Values read</source>
+        <translation>数值读取时间</translation>
+    </message>
+    <message>
+        <source>Flash</source>
+        <translation>闪存</translation>
+    </message>
+    <message>
+        <source>unknown: this program did not follow the writes</source>
+        <translation>未知：本程序没有跟踪写入</translation>
+    </message>
+    <message>
+        <source>saved: nothing written since connecting or since the last save to flash</source>
+        <translation>已保存：自连接以来或上次保存到闪存以来没有写入</translation>
+    </message>
+    <message>
+        <source>NOT saved: values were written since the last save to flash and are lost at power-off</source>
+        <translation>未保存：上次保存到闪存之后写入过数值，断电后会丢失</translation>
     </message>
     <message>
         <source>not supported by this controller</source>
@@ -1251,6 +1616,10 @@
         <source>%1 is open; waiting for the controller to answer…</source>
         <translation>%1 已打开；正在等待控制器应答…</translation>
     </message>
+    <message>
+        <source>Serial port plugged in: %1</source>
+        <translation>插入了串口：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlMonitor</name>
@@ -1315,10 +1684,6 @@
     <message>
         <source>n</source>
         <translation>n</translation>
-    </message>
-    <message>
-        <source>Device id 1-255 (default 1).</source>
-        <translation>设备 ID，1-255（默认 1）。</translation>
     </message>
     <message>
         <source>id</source>
@@ -1389,10 +1754,6 @@
         <translation>--stop-bits：“%1”不是 1 或 2</translation>
     </message>
     <message>
-        <source>--id: &apos;%1&apos; is not a number</source>
-        <translation>--id：“%1”不是数字</translation>
-    </message>
-    <message>
         <source>--timeout: &apos;%1&apos; is not a number</source>
         <translation>--timeout：“%1”不是数字</translation>
     </message>
@@ -1425,10 +1786,6 @@
         <translation>dump、report：要记录的备注。</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, monitor, dump, diff, apply, report)</source>
-        <translation>未给出命令（params、read、write、command、monitor、dump、diff、apply、report）</translation>
-    </message>
-    <message>
         <source>report: make the report from this profile file, not from a controller.</source>
         <translation>report：根据此参数文件生成报告，而不是读取控制器。</translation>
     </message>
@@ -1437,12 +1794,44 @@
         <translation>参数文件</translation>
     </message>
     <message>
-        <source>apply: do not save a backup of the controller&apos;s settings before writing.</source>
-        <translation>apply：写入前不备份控制器的设置。</translation>
-    </message>
-    <message>
         <source>command: wait until a motion command ends and print how it ended (exit 0 only when done or referenced).</source>
         <translation>command：等待运动命令结束并输出其结果（仅在完成或已回零参考时退出码为 0）。</translation>
+    </message>
+    <message>
+        <source>apply, command factory_reset/save_to_flash, write device.id/device.baud: do not save a backup of the controller&apos;s settings first.</source>
+        <translation>apply、command factory_reset/save_to_flash、write device.id/device.baud：不先备份控制器参数。</translation>
+    </message>
+    <message>
+        <source>move: a step of this many axis units (+ or -).</source>
+        <translation>move：按此距离运行（轴单位，可正可负）。</translation>
+    </message>
+    <message>
+        <source>distance</source>
+        <translation>距离</translation>
+    </message>
+    <message>
+        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
+        <translation>设备 ID 1-255（默认 1）；read、diff、apply、dump 和 command 可给多个（1,2,3 或 1-3）：在同一条总线上依次执行，输出按 ID 分开。</translation>
+    </message>
+    <message>
+        <source>--id: %1</source>
+        <translation>--id：%1</translation>
+    </message>
+    <message>
+        <source>--to: &apos;%1&apos; is not a device id 1-255</source>
+        <translation>--to：“%1”不是 1-255 的设备 ID</translation>
+    </message>
+    <message>
+        <source>move: to this position (axis units); assign-id: the new device id 1-255.</source>
+        <translation>move：移动到此位置（轴单位）；assign-id：新的设备地址 1-255。</translation>
+    </message>
+    <message>
+        <source>value</source>
+        <translation>值</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
+        <translation>未指定命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、report）</translation>
     </message>
 </context>
 <context>
@@ -1716,6 +2105,70 @@
         <translation>--wait：%1 没有可等待的结束（单次运动、回零、按顺序回零、回数据零点、圆弧和直线才有）</translation>
     </message>
     <message>
+        <source>no backup of the controller&apos;s settings could be saved (%1): nothing was done (--no-backup goes on without one)</source>
+        <translation>无法保存控制器参数的备份（%1）：未执行任何操作（--no-backup 可不备份继续）</translation>
+    </message>
+    <message>
+        <source>move needs one motor: move motor1 --by D or --to X</source>
+        <translation>move 需要一个电机：move motor1 --by D 或 --to X</translation>
+    </message>
+    <message>
+        <source>there is no motor %1 (this map has motor1 .. motor%2)</source>
+        <translation>没有电机 %1（此寄存器表有 motor1 .. motor%2）</translation>
+    </message>
+    <message>
+        <source>move needs exactly one of --by D and --to X</source>
+        <translation>move 需要且只需要 --by D 和 --to X 之一</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1：“%2”不是数字</translation>
+    </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</source>
+        <translation>%1：请只给一个设备 ID；多个 ID 只适用于 read、diff、apply、dump 和 command（不带 --wait）</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>ID %1：%2</translation>
+    </message>
+    <message>
+        <source>== device id %1 ==</source>
+        <translation>== 设备 ID %1 ==</translation>
+    </message>
+    <message>
+        <source>assign-id: give the new id with --to N, and one --id (the id the controller answers at now, 1 from the factory)</source>
+        <translation>assign-id：用 --to N 给出新 ID，并给一个 --id（控制器当前应答的 ID，出厂为 1）</translation>
+    </message>
+    <message>
+        <source>assign-id: the controller already has id %1</source>
+        <translation>assign-id：控制器已经是 ID %1</translation>
+    </message>
+    <message>
+        <source>assign-id: the register map has no device.id</source>
+        <translation>assign-id：寄存器表中没有 device.id</translation>
+    </message>
+    <message>
+        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
+        <translation>ID %1 上的应答是乱码：有两台或更多控制器同时应答。请只连接要分配 ID %2 的那台控制器，然后重试</translation>
+    </message>
+    <message>
+        <source>no controller answers at id %1: %2</source>
+        <translation>ID %1 上没有控制器应答：%2</translation>
+    </message>
+    <message>
+        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
+        <translation>ID %1 已被占用：已有控制器在该 ID 上应答。请选择一个空闲的 ID</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2</source>
+        <translation>设备 ID %1 → %2：控制器在 ID %2 上应答</translation>
+    </message>
+    <message>
+        <source>the controller does not answer at id %1: %2</source>
+        <translation>控制器在 ID %1 上不应答：%2</translation>
+    </message>
+    <message>
         <source>not supported by this controller (left out): %1</source>
         <translation>此控制器不支持（已排除）：%1</translation>
     </message>
@@ -1872,6 +2325,85 @@
     <message>
         <source>%1: wrote %2 but could not read it back</source>
         <translation>%1：已写入 %2，但无法回读</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::DeviceListDock</name>
+    <message>
+        <source>Device id %1 is already on the list.</source>
+        <translation>设备 ID %1 已在列表中。</translation>
+    </message>
+    <message>
+        <source>Devices on the line</source>
+        <translation>总线上的设备</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Referenced</source>
+        <translation>参考点</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>Add device</source>
+        <translation>添加设备</translation>
+    </message>
+    <message>
+        <source>Device id to add</source>
+        <translation>要添加的设备 ID</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>answering (in view)</source>
+        <translation>应答中（当前显示）</translation>
+    </message>
+    <message>
+        <source>not answering (in view)</source>
+        <translation>无应答（当前显示）</translation>
+    </message>
+    <message>
+        <source>asking (in view)</source>
+        <translation>询问中（当前显示）</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>应答中</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>asking</source>
+        <translation>询问中</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>motor %1</source>
+        <translation>电机 %1</translation>
     </message>
 </context>
 <context>
@@ -2178,6 +2710,32 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: sent</source>
         <translation>%1：已发送</translation>
     </message>
+    <message numerus="yes">
+        <source>E-STOP sent to %n controller(s): id %1</source>
+        <translation>
+            <numerusform>急停已发送给 %n 台控制器：ID %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged by every controller: id %1</source>
+        <translation>所有控制器都已确认急停：ID %1</translation>
+    </message>
+    <message>
+        <source>E-STOP NOT acknowledged by id %1 (%2); acknowledged by: %3</source>
+        <translation>ID %1 未确认急停（%2）；已确认的：%3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Device id %1 is not on this line (%2)</source>
+        <translation>设备 ID %1 不在这条总线上（%2）</translation>
+    </message>
+    <message>
+        <source>showing device %1</source>
+        <translation>切换到设备 %1</translation>
+    </message>
     <message>
         <source>The controller refuses reads that cover reserved registers; from now on only its listed registers are read (a few more requests).</source>
         <translation>控制器拒绝覆盖保留寄存器的读取；此后只读取已列出的寄存器（请求会略多几次）。</translation>
@@ -2185,6 +2743,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 (register %2) is not supported by this controller: it refuses to read it. It is left out from now on.</source>
         <translation>%1（寄存器 %2）此控制器不支持：控制器拒绝读取它。此后不再读取。</translation>
+    </message>
+    <message>
+        <source>Device id %1: %2</source>
+        <translation>设备 ID %1：%2</translation>
     </message>
 </context>
 <context>
@@ -2218,6 +2780,41 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&apos;%1&apos;: expected SHARE:NUMBER, e.g. 0.1:500</source>
         <translation>“%1”：应为 比例:数值 格式，例如 0.1:500</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::GuideWindow</name>
+    <message>
+        <source>The user guide (%1) was not found in %2. It is installed with StepCom; reinstalling the package brings it back.</source>
+        <translation>在 %2 中找不到使用手册（%1）。手册随 StepCom 一起安装；重新安装软件包即可恢复。</translation>
+    </message>
+    <message>
+        <source>The guide has no section &quot;%1&quot;.</source>
+        <translation>手册中没有“%1”这一章节。</translation>
+    </message>
+    <message>
+        <source>%1 is not installed with the guide.</source>
+        <translation>%1 没有随手册一起安装。</translation>
+    </message>
+    <message>
+        <source>User guide</source>
+        <translation>使用手册</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>返回</translation>
+    </message>
+    <message>
+        <source>Back to where you were in the guide</source>
+        <translation>回到手册中刚才的位置</translation>
+    </message>
+    <message>
+        <source>Go to a section of the guide</source>
+        <translation>跳到手册的某一章节</translation>
+    </message>
+    <message>
+        <source>Sections</source>
+        <translation>章节</translation>
     </message>
 </context>
 <context>
@@ -2269,6 +2866,25 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Not supported by this controller</source>
         <translation>此控制器不支持</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdList</name>
+    <message>
+        <source>&apos;%1&apos; is not a device id or a range of ids (e.g. 1,2,3 or 1-3)</source>
+        <translation>“%1”不是设备 ID，也不是 ID 范围（例如 1,2,3 或 1-3）</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: device ids are 1-255</source>
+        <translation>“%1”：设备 ID 为 1-255</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos;: the range runs backwards</source>
+        <translation>“%1”：范围的起点大于终点</translation>
+    </message>
+    <message>
+        <source>device id %1 is given twice</source>
+        <translation>设备 ID %1 给了两次</translation>
     </message>
 </context>
 <context>
@@ -3000,10 +3616,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>&lt;b&gt;StepCom %1&lt;/b&gt;&lt;br&gt;通过 Modbus RTU/TCP 调试两轴步进电机控制器的工具。&lt;br&gt;许可证：GPL-3.0-or-later。</translation>
     </message>
     <message>
-        <source>StepCom — stepper controller commissioning</source>
-        <translation>StepCom — 步进电机控制器调试</translation>
-    </message>
-    <message>
         <source>&amp;Read all</source>
         <translation>读取全部(&amp;R)</translation>
     </message>
@@ -3101,15 +3713,27 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>有 %n 个已修改的值尚未写入控制器。仍要关闭并放弃这些修改吗？</numerusform>
         </translation>
     </message>
-    <message>
-        <source>%1%2 — profile file, no controller — StepCom</source>
-        <translation>%1%2 — 参数文件，未连接控制器 — StepCom</translation>
-    </message>
     <message numerus="yes">
         <source>%n edited value(s) of %1 are not saved in the file. Close anyway and lose them?</source>
         <translation>
             <numerusform>%1 中有 %n 个修改过的值尚未保存到文件。仍然关闭并放弃这些修改吗？</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>使用手册(&amp;U)</translation>
+    </message>
+    <message>
+        <source>The user guide at the section about this page (%1)</source>
+        <translation>打开使用手册中介绍本页面的章节（%1）</translation>
+    </message>
+    <message>
+        <source>What&apos;s &amp;this?</source>
+        <translation>这是什么？(&amp;T)</translation>
+    </message>
+    <message>
+        <source>%1%2 — profile file, no controller</source>
+        <translation>%1%2 — 参数文件，未连接控制器</translation>
     </message>
 </context>
 <context>
@@ -3247,6 +3871,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>coil %1</source>
         <translation>线圈 %1</translation>
+    </message>
+    <message>
+        <source>id %1, %2</source>
+        <translation>ID %1，%2</translation>
     </message>
 </context>
 <context>
@@ -4476,6 +5104,26 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Connected: compare a profile file with the controller (nothing is written until you apply checked rows). Without a controller: edit the file on the pages</source>
         <translation>已连接时：将参数文件与控制器比较（应用勾选项之前不写入任何数据）。未连接控制器时：在各页面上编辑该文件</translation>
     </message>
+    <message>
+        <source>The backup cannot be used</source>
+        <translation>此备份无法使用</translation>
+    </message>
+    <message>
+        <source>Opened backup %1</source>
+        <translation>已打开备份 %1</translation>
+    </message>
+    <message>
+        <source>&amp;Backups…</source>
+        <translation>备份(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s settings saved before each apply, factory reset, save to flash and id or baud change</source>
+        <translation>每次应用参数文件、恢复出厂参数、保存到闪存以及修改设备地址或波特率之前保存的控制器参数</translation>
+    </message>
+    <message>
+        <source>The software travel limits of %1 are in use now</source>
+        <translation>现在使用 %1 的软件行程限位</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileCompareDialog</name>
@@ -4951,6 +5599,41 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileSaveDialog</name>
+    <message>
+        <source>Controller id %1</source>
+        <translation>控制器 ID %1</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>参数文件</translation>
+    </message>
+    <message>
+        <source>Save profile</source>
+        <translation>保存参数文件</translation>
+    </message>
+    <message>
+        <source>Every parameter is read from the controller, then saved with this name and notes.</source>
+        <translation>先从控制器读取全部参数，再以此名称和备注保存。</translation>
+    </message>
+    <message>
+        <source>The values the pages show (edits included) are saved with this name and notes.</source>
+        <translation>以此名称和备注保存页面上显示的值（包括修改值）。</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>名称(&amp;N)：</translation>
+    </message>
+    <message>
+        <source>N&amp;otes:</source>
+        <translation>备注(&amp;O)：</translation>
+    </message>
+    <message>
+        <source>Machine, place, who set it up, what was changed</source>
+        <translation>设备、地点、调试人、修改了什么</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ProfileVariance</name>
     <message>
         <source>the profile was made with register map &quot;%1&quot;; this map is &quot;%2&quot;: only the settings both have can be applied</source>
@@ -4998,6 +5681,55 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not referenced (link lost)</source>
         <translation>未建立参考点（连接丢失）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SerialPorts</name>
+    <message>
+        <source>S/N %1</source>
+        <translation>序列号 %1</translation>
+    </message>
+    <message>
+        <source>Stable name: %1</source>
+        <translation>固定名称：%1</translation>
+    </message>
+    <message>
+        <source>Adapter: %1</source>
+        <translation>转换器：%1</translation>
+    </message>
+    <message>
+        <source>Manufacturer: %1</source>
+        <translation>制造商：%1</translation>
+    </message>
+    <message>
+        <source>Serial number: %1</source>
+        <translation>序列号：%1</translation>
+    </message>
+    <message>
+        <source>USB id: %1:%2</source>
+        <translation>USB ID：%1:%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SessionBackup</name>
+    <message>
+        <source>the session ended</source>
+        <translation>会话已结束</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s settings could not be read: %1</source>
+        <translation>无法读取控制器参数：%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SessionLog</name>
+    <message>
+        <source>cannot create the log folder %1</source>
+        <translation>无法创建日志文件夹 %1</translation>
+    </message>
+    <message>
+        <source>cannot write the session log %1: %2</source>
+        <translation>无法写入会话日志 %1：%2</translation>
     </message>
 </context>
 <context>
@@ -5157,6 +5889,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>--corrupt-crc works on the pseudo-terminal only, not with --serial</source>
         <translation>--corrupt-crc 仅适用于伪终端，不能与 --serial 同时使用</translation>
+    </message>
+    <message>
+        <source>Several controllers on the one port, one per id (e.g. 1,2,3 or 1-3); a repeated id is a collision: both answer at once.</source>
+        <translation>在同一个端口上模拟多台控制器，每个 ID 一台（例如 1,2,3 或 1-3）；重复的 ID 即为冲突：两台同时应答。</translation>
+    </message>
+    <message>
+        <source>IDS</source>
+        <translation>ID列表</translation>
+    </message>
+    <message>
+        <source>--ids: give either --id or --ids, not both</source>
+        <translation>--ids：只能给 --id 或 --ids 之一，不能同时给</translation>
     </message>
     <message>
         <source>Refuse a read that covers a reserved register (exception 02): only the manual&apos;s listed registers can be read.</source>
@@ -5485,6 +6229,120 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::StepMove</name>
+    <message>
+        <source>There is no motor %1 (this controller has %2)</source>
+        <translation>没有电机 %1（此控制器有 %2 个）</translation>
+    </message>
+    <message>
+        <source>This register map has no single move for motor %1</source>
+        <translation>此寄存器表中电机 %1 没有单次运行</translation>
+    </message>
+    <message>
+        <source>Motor %1: the distance or position is not a number</source>
+        <translation>电机 %1：距离或位置不是数字</translation>
+    </message>
+    <message>
+        <source>Motor %1: a distance cannot be negative</source>
+        <translation>电机 %1：距离不能为负</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was sent</source>
+        <translation>未连接：没有发送任何命令</translation>
+    </message>
+    <message>
+        <source>A step is still running: wait for it to end</source>
+        <translation>步进仍在运行：请等待其结束</translation>
+    </message>
+    <message>
+        <source>Motor %1: the step uses the single-move distance and direction, and they hold edits that were not written. Write or revert them first.</source>
+        <translation>电机 %1：步进使用单次运行的距离和方向，而它们有尚未写入的修改。请先写入或撤销。</translation>
+    </message>
+    <message>
+        <source>Motor %1 is jogging: let go first</source>
+        <translation>电机 %1 正在点动：请先松开</translation>
+    </message>
+    <message>
+        <source>Motor %1 is moving: wait until it ends</source>
+        <translation>电机 %1 正在运动：请等待其结束</translation>
+    </message>
+    <message>
+        <source>Motor %1: could not read the position and the single-move values (%2): nothing was moved</source>
+        <translation>电机 %1：无法读取位置和单次运行参数（%2）：没有运动</translation>
+    </message>
+    <message>
+        <source>Motor %1 is running: nothing was moved</source>
+        <translation>电机 %1 正在运行：没有运动</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 %3 is outside the position register&apos;s range</source>
+        <translation>电机 %1：%2 %3 超出位置寄存器的范围</translation>
+    </message>
+    <message>
+        <source>Motor %1 already stands at %2 %3: nothing to move</source>
+        <translation>电机 %1 已在 %2 %3：无需运动</translation>
+    </message>
+    <message>
+        <source>Motor %1: a move of %2 %3 is more than the single move can do (%4 %3)</source>
+        <translation>电机 %1：%2 %3 的运动超出单次运行的能力（%4 %3）</translation>
+    </message>
+    <message>
+        <source>the step&apos;s distance and direction could not be written (%1): nothing was moved</source>
+        <translation>无法写入步进的距离和方向（%1）：没有运动</translation>
+    </message>
+    <message>
+        <source>the single move was not acknowledged: nothing was moved</source>
+        <translation>单次运行未被确认：没有运动</translation>
+    </message>
+    <message>
+        <source>distance %1 %2, direction %3</source>
+        <translation>距离 %1 %2，方向 %3</translation>
+    </message>
+    <message>
+        <source>%1. The single move&apos;s own values (%2) could not be put back: not connected. Write them again once the controller answers.</source>
+        <translation>%1。单次运行原来的参数（%2）未能恢复：未连接。控制器应答后请重新写入。</translation>
+    </message>
+    <message>
+        <source>%1. The single move&apos;s own values (%2) could not be put back: %3</source>
+        <translation>%1。单次运行原来的参数（%2）未能恢复：%3</translation>
+    </message>
+    <message>
+        <source>The single move&apos;s own distance and direction are back (verified).</source>
+        <translation>单次运行原来的距离和方向已恢复（已校验）。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::StepMovePanel</name>
+    <message>
+        <source>&amp;Step:</source>
+        <translation>步长(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>自定义</translation>
+    </message>
+    <message>
+        <source>− Step</source>
+        <translation>− 步进</translation>
+    </message>
+    <message>
+        <source>+ Step</source>
+        <translation>+ 步进</translation>
+    </message>
+    <message>
+        <source>Move &amp;to:</source>
+        <translation>运行到(&amp;T)：</translation>
+    </message>
+    <message>
+        <source>Move to position</source>
+        <translation>运行到位置</translation>
+    </message>
+    <message>
+        <source>Steps and move-to use this motor&apos;s single-move distance and direction registers, then write your own values back and verify them. They refuse while those fields hold unwritten edits, and any target beyond the software travel limits.</source>
+        <translation>步进和运行到位置会使用此电机的单次运行距离和方向寄存器，结束后写回您原来的值并校验。这些字段有未写入的修改时，或目标超出软件行程限位时，将拒绝运行。</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::TrafficModel</name>
     <message>
         <source>Time</source>
@@ -5518,14 +6376,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>复制(&amp;C)</translation>
     </message>
     <message>
-        <source>&amp;Save…</source>
-        <translation>保存(&amp;S)…</translation>
-    </message>
-    <message>
-        <source>Copy the selected rows (all rows when none are selected)</source>
-        <translation>复制选中的行（未选中任何行时复制全部）</translation>
-    </message>
-    <message>
         <source>Save traffic log</source>
         <translation>保存通信报文记录</translation>
     </message>
@@ -5536,6 +6386,74 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Could not save %1: %2</source>
         <translation>无法保存 %1：%2</translation>
+    </message>
+    <message>
+        <source>Open log folder</source>
+        <translation>打开日志文件夹</translation>
+    </message>
+    <message>
+        <source>Hold the rows still to read them; frames are still kept</source>
+        <translation>停止滚动以便阅读；报文仍会接收并保留</translation>
+    </message>
+    <message>
+        <source>Polls</source>
+        <translation>轮询</translation>
+    </message>
+    <message>
+        <source>The live status poll: several frames a second</source>
+        <translation>实时状态轮询：每秒多帧</translation>
+    </message>
+    <message>
+        <source>Reads</source>
+        <translation>读取</translation>
+    </message>
+    <message>
+        <source>Writes</source>
+        <translation>写入</translation>
+    </message>
+    <message>
+        <source>Commands</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>Search (text, key or bytes)</source>
+        <translation>搜索（文字、参数名或字节）</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>搜索</translation>
+    </message>
+    <message>
+        <source>Copy the selected rows (all rows shown when none are selected)</source>
+        <translation>复制选中的行（未选中时复制显示的全部行）</translation>
+    </message>
+    <message>
+        <source>&amp;Save log…</source>
+        <translation>保存记录(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Save the rows shown to a file</source>
+        <translation>把显示的行保存到文件</translation>
+    </message>
+    <message>
+        <source>Open log &amp;folder</source>
+        <translation>打开日志文件夹(&amp;F)</translation>
+    </message>
+    <message>
+        <source>The session log files: every frame of every connection, with date and time (%1)</source>
+        <translation>会话日志文件：每次连接的每一帧，带日期和时间（%1）</translation>
+    </message>
+    <message>
+        <source>Cannot create the log folder %1.</source>
+        <translation>无法创建日志文件夹 %1。</translation>
+    </message>
+    <message>
+        <source>No file manager opened %1. The session log files are there.</source>
+        <translation>没有文件管理器能打开 %1。会话日志文件就在那里。</translation>
     </message>
 </context>
 <context>
@@ -5674,6 +6592,45 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&quot;travelLimits&quot;: &quot;%1&quot; sets neither min nor max</source>
         <translation>“travelLimits”：“%1”既没有设定 min 也没有设定 max</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::TravelLimitsEditor</name>
+    <message>
+        <source>The saved software travel limits were not used: %1</source>
+        <translation>未使用已保存的软件行程限位：%1</translation>
+    </message>
+    <message>
+        <source>How far a jog can overrun a limit is worked out once the speed and pitch are read and the link has answered.</source>
+        <translation>读取速度和螺距并且通讯有应答后，将计算点动可能越过限位的距离。</translation>
+    </message>
+    <message>
+        <source>A hold-to-move jog can run past a limit by %1.</source>
+        <translation>按住点动时，轴可能越过限位 %1。</translation>
+    </message>
+    <message>
+        <source>Software travel limits</source>
+        <translation>软件行程限位</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>最小</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>最大</translation>
+    </message>
+    <message>
+        <source>Apply limits</source>
+        <translation>应用限位</translation>
+    </message>
+    <message>
+        <source>StepCom&apos;s limits, not the controller&apos;s: a step or move-to beyond them is refused and a jog is stopped when the polled position crosses them. Saved with the connection settings and in profiles. If the link dies during a jog, only the limit switches stop the axis.</source>
+        <translation>这是 StepCom 的限位，不是控制器的：超出限位的步进或运行到位置会被拒绝；点动时轮询到的位置越过限位即停止。与连接设置一起保存，也保存在参数文件中。点动时如果通讯中断，只有限位开关能让轴停止。</translation>
     </message>
 </context>
 <context>
@@ -6024,6 +6981,23 @@ file and its checklist, no controller needed)</source>
 how it ended (--json), exit 0 only when done or referenced</source>
         <translation>触发一个运动命令并等待其结束；输出
 结果（--json），仅在完成或已建立参考点时退出码为 0</translation>
+    </message>
+    <message>
+        <source>move motorN by D or to X (axis units) with its single
+move; its own distance and direction are put back and
+verified; exit 0 only when it arrived</source>
+        <translation>用单次运行将 motorN 运行距离 D 或运行到 X（轴单位）；
+之后恢复其原来的距离和方向并校验；
+仅在到达时退出码为 0</translation>
+    </message>
+    <message>
+        <source>give the one controller at --id (default 1, as it
+leaves the factory) the device id N and check it
+answers there; refuses when N is taken or two
+controllers answer at --id</source>
+        <translation>给 --id（默认 1，即出厂设置）上唯一的那台控制器
+分配设备 ID N，并确认它在新 ID 上应答；N 已被占用
+或 --id 上有两台控制器应答时拒绝执行</translation>
     </message>
 </context>
 </TS>

@@ -1,12 +1,17 @@
 #include "mainwindow.h"
 
+#include "backupguard.h" // issue 17
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
 #include "device/linkhealth.h"
+#include "device/sessionlog.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
+#include "help/guidewindow.h"
+#include "help/userguide.h"
 #include "language.h"
-#include "offlineactions.h" // working without the machine (issue 18)
+#include "offlineactions.h"      // working without the machine (issue 18)
+#include "pages/checklistpage.h" // issue 17
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
 #include "pages/inputspage.h"
@@ -16,11 +21,13 @@
 #include "pages/motorpage.h"
 #include "pages/plotpage.h" // monitoring (issue 5)
 #include "profileactions.h" // profiles (issue 7)
+#include "widgets/devicelistdock.h"
 #include "widgets/linkstatus.h"
 #include "widgets/messageview.h"
 #include "widgets/offlinebanner.h"
 #include "widgets/statusdock.h" // monitoring (issue 5)
 #include "widgets/trafficview.h"
+#include "widgets/travellimitseditor.h" // issue 17
 #include "writeflow.h"
 
 #include "profile/profiledocument.h"
@@ -34,14 +41,19 @@
 #include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSplitter>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <QWhatsThis>
 
 namespace stepcom {
 
@@ -54,6 +66,9 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_writeFlow = new WriteFlow(session, this);
+    // --- commissioning (issue 17): backups before risky operations, saved travel limits ---
+    m_backups = new BackupGuard(session, this);
+    TravelLimitsEditor::restoreSaved(session);
     auto *splitter = new QSplitter(this);
     splitter->addWidget(m_sidebar);
     splitter->addWidget(m_stack);
@@ -70,6 +85,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     centralLayout->addWidget(splitter, 1);
     setCentralWidget(central);
     connect(m_sidebar, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
+    connect(m_stack, &QStackedWidget::currentChanged, this, &MainWindow::updateTitle);
 
     addPage(new ConnectionPage(session, this));
     for (int n = 1; n <= session->map().blockCount(QStringLiteral("motor")); ++n)
@@ -79,7 +95,8 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     addPage(new InterpolationPage(session, this)); // interpolation (issue 6)
     addPage(new ModesPage(session, this));         // special modes (issue 6)
     addPage(new DevicePage(session, this));
-    addPage(new PlotPage(session, this)); // monitoring (issue 5)
+    addPage(new PlotPage(session, this));                                 // monitoring (issue 5)
+    addPage(m_checklist = new ChecklistPage(session, m_writeFlow, this)); // issue 17
     m_sidebar->setCurrentRow(0);
 
     createActions();
@@ -90,6 +107,9 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     connect(m_sidebar, &QListWidget::currentRowChanged, session,
             [session] { session->stopJogging(DeviceSession::JogStop::PageLeft); });
     connect(session->jog(), &JogController::message, m_messages, &MessageView::add);
+    connect(m_sessionLog, &SessionLog::failed, this, [this](const QString &reason) {
+        m_messages->add(DeviceSession::Severity::Warning, reason);
+    });
     connect(m_profiles, &ProfileActions::finished, this, // profiles (issue 7)
             [this](bool ok, const QString &text) {
                 m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,
@@ -137,7 +157,17 @@ MainWindow::~MainWindow() = default;
 void MainWindow::addPage(Page *page)
 {
     m_pages << page;
-    m_stack->addWidget(page);
+    // Every page scrolls up and down when the screen is low (1024×600), never sideways: the
+    // scroll area is at least as wide as the page needs (kept so in eventFilter()).
+    auto *scroll = new QScrollArea(m_stack);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(page);
+    scroll->setMinimumWidth(page->minimumSizeHint().width() +
+                            scroll->verticalScrollBar()->sizeHint().width());
+    page->installEventFilter(this);
+    m_stack->addWidget(scroll);
     m_sidebar->addItem(page->title());
 }
 
@@ -153,7 +183,8 @@ QMessageBox *MainWindow::closeQuestion() const
 
 Page *MainWindow::currentPage() const
 {
-    return qobject_cast<Page *>(m_stack->currentWidget());
+    const int index = m_stack->currentIndex();
+    return index >= 0 && index < m_pages.size() ? m_pages.at(index) : nullptr;
 }
 
 void MainWindow::showPage(int index)
@@ -194,6 +225,17 @@ void MainWindow::createActions()
         box->setAttribute(Qt::WA_DeleteOnClose);
         box->open();
     });
+    m_guideAction = make("userGuide", QKeySequence::HelpContents, [this] {
+        // F1 in an open dialog explains the dialog; otherwise the page in view.
+        const QWidget *active = QApplication::activeWindow();
+        const QString topic = active && active != this
+                                  ? QString::fromLatin1(active->metaObject()->className())
+                                  : QString();
+        openGuide(UserGuide::topics().contains(topic) ? topic : QString());
+    });
+    m_guideAction->setShortcutContext(Qt::ApplicationShortcut);
+    m_whatsThis = QWhatsThis::createAction(this);
+    m_whatsThis->setObjectName(QStringLiteral("whatsThis"));
     m_languages = new QActionGroup(this);
     for (const QString &lang : Language::available()) {
         auto *a = new QAction(Language::nativeName(lang), m_languages);
@@ -236,7 +278,10 @@ void MainWindow::createMenus()
     m_fileMenu->addAction(m_profiles->saveFromEditedAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->reportAction());
-    m_fileMenu->addAction(m_offline->reportAction()); // issue 18
+    m_fileMenu->addAction(m_offline->reportAction());   // issue 18
+    m_fileMenu->addAction(m_profiles->backupsAction()); // issue 17
+    m_profiles->setBackupDirectory(m_backups->directory());
+    m_profiles->setChecklistSource([this] { return m_checklist->reportChecklist(); });
     m_fileMenu->addSeparator();
     // --- end profiles ---
     m_fileMenu->addAction(m_quit);
@@ -250,6 +295,9 @@ void MainWindow::createMenus()
     m_languageMenu = menuBar()->addMenu(QString());
     m_languageMenu->addActions(m_languages->actions());
     m_helpMenu = menuBar()->addMenu(QString());
+    m_helpMenu->addAction(m_guideAction);
+    m_helpMenu->addAction(m_whatsThis);
+    m_helpMenu->addSeparator();
     m_helpMenu->addAction(m_about);
 }
 
@@ -257,6 +305,8 @@ void MainWindow::createDocks()
 {
     m_traffic = new TrafficView(this);
     m_traffic->setLog(m_session->traffic());
+    m_sessionLog = new SessionLog(m_session, this);
+    m_traffic->setLogFolder(m_sessionLog->directory());
     m_trafficDock = new QDockWidget(this);
     m_trafficDock->setObjectName(QStringLiteral("trafficDock"));
     m_trafficDock->setWidget(m_traffic);
@@ -272,22 +322,35 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_messageDock->toggleViewAction());
     // --- monitoring (issue 5): the live status beside every page ---
     m_statusDock = new StatusDock(m_session, this);
+    // Its content scrolls up and down, so the dock fits a low screen beside or below the page.
+    if (QWidget *content = m_statusDock->widget()) {
+        auto *scroll = new QScrollArea(m_statusDock);
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+        scroll->setMinimumWidth(content->minimumSizeHint().width() +
+                                scroll->verticalScrollBar()->sizeHint().width());
+        m_statusDock->setWidget(scroll);
+        scroll->setWidget(content);
+    }
     addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
     m_viewMenu->addAction(m_statusDock->toggleViewAction());
     // --- end monitoring ---
+    // Several controllers on one line (issue 16): opened from the View menu.
+    m_deviceDock = new DeviceListDock(m_session, this);
+    addDockWidget(Qt::LeftDockWidgetArea, m_deviceDock);
+    m_deviceDock->hide();
+    m_viewMenu->addAction(m_deviceDock->toggleViewAction());
 }
 
 void MainWindow::showOrigin()
 {
+    updateTitle();
     const ProfileDocument *file = m_offline->document();
     if (!file->isOpen()) {
-        setWindowTitle(tr("StepCom — stepper controller commissioning"));
         statusBar()->setStyleSheet(QString());
         return;
     }
-    setWindowTitle(
-        tr("%1%2 — profile file, no controller — StepCom")
-            .arg(file->displayName(), file->isModified() ? QStringLiteral("*") : QString()));
     // The status area in the banner's colour: a file, not a machine.
     statusBar()->setStyleSheet(
         QStringLiteral("QStatusBar { background: #d6e6ff; } QStatusBar QLabel { color: black; }"));
@@ -296,6 +359,11 @@ void MainWindow::showOrigin()
 void MainWindow::retranslate()
 {
     showOrigin();
+    m_guideAction->setText(tr("&User guide"));
+    m_guideAction->setToolTip(
+        tr("The user guide at the section about this page (%1)")
+            .arg(m_guideAction->shortcut().toString(QKeySequence::NativeText)));
+    m_whatsThis->setText(tr("What's &this?"));
     m_readAll->setText(tr("&Read all"));
     m_readAll->setToolTip(tr("Read every parameter from the controller (%1)")
                               .arg(m_readAll->shortcut().toString(QKeySequence::NativeText)));
@@ -334,6 +402,96 @@ void MainWindow::retranslate()
     for (QAction *a : m_languages->actions())
         a->setChecked(a->objectName() ==
                       QStringLiteral("language_") + Language::instance().current());
+}
+
+bool MainWindow::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::LayoutRequest || event->type() == QEvent::LanguageChange) {
+        if (auto *page = qobject_cast<Page *>(watched)) {
+            if (auto *scroll = qobject_cast<QScrollArea *>(
+                    page->parentWidget() ? page->parentWidget()->parentWidget() : nullptr))
+                scroll->setMinimumWidth(page->minimumSizeHint().width() +
+                                        scroll->verticalScrollBar()->sizeHint().width());
+        }
+    }
+    return QMainWindow::eventFilter(watched, event);
+}
+
+void MainWindow::resizeEvent(QResizeEvent *event)
+{
+    QMainWindow::resizeEvent(event);
+    arrangeDocks();
+}
+
+void MainWindow::arrangeDocks()
+{
+    if (!m_statusDock || !centralWidget())
+        return;
+    const int needed = centralWidget()->minimumSizeHint().width() +
+                       m_statusDock->minimumSizeHint().width() +
+                       3 * style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent);
+    // The screen decides too: a window cannot get narrower than what its docks need, so on a
+    // small screen the dock moves before the window would have to.
+    const int room = screen() ? std::min(width(), screen()->availableGeometry().width()) : width();
+    const bool narrow = room < needed;
+    if (narrow && !m_statusDockMoved && dockWidgetArea(m_statusDock) == Qt::RightDockWidgetArea &&
+        !m_statusDock->isFloating()) {
+        m_statusDockMoved = true;
+        tabifyDockWidget(m_messageDock, m_statusDock);
+    } else if (!narrow && m_statusDockMoved) {
+        m_statusDockMoved = false;
+        addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
+    }
+}
+
+void MainWindow::fitIntoScreen()
+{
+    const QScreen *where = screen();
+    if (!where)
+        return;
+    const QRect available = where->availableGeometry();
+    const QMargins frame(geometry().left() - frameGeometry().left(),
+                         geometry().top() - frameGeometry().top(),
+                         frameGeometry().right() - geometry().right(),
+                         frameGeometry().bottom() - geometry().bottom());
+    const QRect room = available.marginsRemoved(frame);
+    QRect g = geometry();
+    g.setSize(g.size().boundedTo(room.size()));
+    g.moveLeft(std::clamp(g.left(), room.left(), room.right() - g.width() + 1));
+    g.moveTop(std::clamp(g.top(), room.top(), room.bottom() - g.height() + 1));
+    setGeometry(g);
+}
+
+void MainWindow::updateTitle()
+{
+    // One title: the platform adds the program's name ("Motor 1 — StepCom"), so the page, or
+    // the profile file being edited without a controller, is all we add.
+    const ProfileDocument *file = m_offline ? m_offline->document() : nullptr;
+    if (file && file->isOpen()) {
+        setWindowTitle(
+            tr("%1%2 — profile file, no controller")
+                .arg(file->displayName(), file->isModified() ? QStringLiteral("*") : QString()));
+        return;
+    }
+    const Page *page = currentPage();
+    setWindowTitle(page ? page->title() : QString());
+}
+
+GuideWindow *MainWindow::openGuide(const QString &topic)
+{
+    if (!m_guide)
+        m_guide = new GuideWindow(this);
+    const QString what = !topic.isEmpty() ? topic
+                         : currentPage()
+                             ? QString::fromLatin1(currentPage()->metaObject()->className())
+                             : QString();
+    QString error;
+    if (!m_guide->showTopic(what, Language::instance().current(), &error))
+        m_messages->add(DeviceSession::Severity::Warning, error);
+    m_guide->show();
+    m_guide->raise();
+    m_guide->activateWindow();
+    return m_guide;
 }
 
 void MainWindow::changeEvent(QEvent *event)
@@ -423,6 +581,16 @@ void MainWindow::restoreLayout()
     if (!restoreState(settings.value(QStringLiteral("state")).toByteArray()))
         resizeDocks({m_trafficDock, m_messageDock},
                     {fontMetrics().height() * 9, fontMetrics().height() * 9}, Qt::Vertical);
+    // A layout saved on a larger screen, or the default on a small one, still fits: the docks
+    // first (the saved state may put the status dock beside the page), then the window.
+    m_statusDockMoved = false;
+    arrangeDocks();
+    fitIntoScreen();
+    // Once every minimum size is known (after the layout requests): arrange and fit again.
+    QTimer::singleShot(0, this, [this] {
+        arrangeDocks();
+        fitIntoScreen();
+    });
 }
 
 void MainWindow::saveLayout()

@@ -13,8 +13,11 @@ class QToolButton;
 
 namespace stepcom {
 
+class BackupGuard;
+class ChecklistPage;
 class DeviceSession;
 class EmergencyStop;
+class GuideWindow;
 class LinkStatus;
 class MessageView;
 class MotionPage;     // jogging (issue 5)
@@ -22,7 +25,9 @@ class OfflineActions; // working without the machine (issue 18)
 class OfflineBanner;
 class Page;
 class ProfileActions; // profiles (issue 7)
-class StatusDock;     // monitoring (issue 5)
+class DeviceListDock; // several controllers on one line (issue 16)
+class SessionLog;
+class StatusDock; // monitoring (issue 5)
 class TrafficView;
 class WriteChangesDialog;
 class WriteFlow;
@@ -42,13 +47,18 @@ public:
     const QList<Page *> &pages() const { return m_pages; }
     Page *currentPage() const;
     void showPage(int index);
-    StatusDock *statusDock() const { return m_statusDock; } // monitoring (issue 5)
+    StatusDock *statusDock() const { return m_statusDock; }         // monitoring (issue 5)
+    DeviceListDock *deviceListDock() const { return m_deviceDock; } // issue 16
     TrafficView *trafficView() const { return m_traffic; }
+    // Every frame of every connection in a file (the Traffic dock's "Open log folder").
+    SessionLog *sessionLog() const { return m_sessionLog; }
     MessageView *messageView() const { return m_messages; }
     MotionPage *motionPage() const { return m_motion; }           // jogging (issue 5)
     ProfileActions *profileActions() const { return m_profiles; } // profiles (issue 7)
     OfflineActions *offlineActions() const { return m_offline; }  // issue 18
     OfflineBanner *offlineBanner() const { return m_offlineBanner; }
+    ChecklistPage *checklistPage() const { return m_checklist; } // issue 17
+    BackupGuard *backupGuard() const { return m_backups; }       // issue 17
     // The dialogs a test (or a curious user) may want to reach while they are open.
     WriteChangesDialog *writeDialog() const;
     QMessageBox *closeQuestion() const;
@@ -56,9 +66,14 @@ public:
 
     // Ask before writing: opens the write dialog (non-modal to the event loop).
     void writeChanges();
+    // Help → User guide (F1): the guide in the window's language at the section of `topic`
+    // (a page's or dialog's class name; the current page when empty).
+    GuideWindow *openGuide(const QString &topic = QString());
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
     void changeEvent(QEvent *event) override;
 
 private:
@@ -68,6 +83,12 @@ private:
     void addPage(Page *page);
     void retranslate();
     void updateActions();
+    void updateTitle();
+    // Narrow window: the status dock joins the bottom tabs, so the page keeps its width; wide
+    // again: back beside the page.
+    void arrangeDocks();
+    // Inside the available screen, however large the saved or default size.
+    void fitIntoScreen();
     // Title and status bar say whether a file or a controller is being edited (issue 18).
     void showOrigin();
     void restoreLayout();
@@ -80,10 +101,12 @@ private:
     QStackedWidget *m_stack;
     QList<Page *> m_pages;
     TrafficView *m_traffic = nullptr;
+    SessionLog *m_sessionLog = nullptr;
     MessageView *m_messages = nullptr;
     QDockWidget *m_trafficDock = nullptr;
     QDockWidget *m_messageDock = nullptr;
-    StatusDock *m_statusDock = nullptr; // monitoring (issue 5)
+    StatusDock *m_statusDock = nullptr;     // monitoring (issue 5)
+    DeviceListDock *m_deviceDock = nullptr; // several controllers on one line (issue 16)
     LinkStatus *m_linkStatus = nullptr;
     MotionPage *m_motion = nullptr;       // jogging (issue 5)
     ProfileActions *m_profiles = nullptr; // profiles (issue 7)
@@ -91,9 +114,12 @@ private:
     OfflineBanner *m_offlineBanner = nullptr;
     bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once
     WriteFlow *m_writeFlow = nullptr;
+    ChecklistPage *m_checklist = nullptr; // issue 17
+    BackupGuard *m_backups = nullptr;     // issue 17
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;
-    bool m_answeredOnce = false; // this connection's controller answered (the page jumped)
+    bool m_statusDockMoved = false; // arrangeDocks() put it into the bottom tabs
+    bool m_answeredOnce = false;    // this connection's controller answered (the page jumped)
 
     QAction *m_readAll = nullptr;
     QAction *m_write = nullptr;
@@ -103,6 +129,9 @@ private:
     QAction *m_estopAction = nullptr;
     QAction *m_quit = nullptr;
     QAction *m_about = nullptr;
+    QAction *m_guideAction = nullptr;
+    QAction *m_whatsThis = nullptr;
+    GuideWindow *m_guide = nullptr;
     QActionGroup *m_languages = nullptr;
     QMenu *m_fileMenu = nullptr;
     QMenu *m_deviceMenu = nullptr;

@@ -1,12 +1,16 @@
 #include "profileactions.h"
 
 #include "device/devicesession.h"
+#include "dialogs/backupsdialog.h"
 #include "dialogs/profilecomparedialog.h"
+#include "dialogs/profilesavedialog.h"
 #include "language.h"
+#include "profile/backupstore.h"
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
 
 #include <QAction>
+#include <QDate>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -32,6 +36,7 @@ ProfileActions::ProfileActions(DeviceSession *session, QWidget *window)
     , m_saveFromDevice(new QAction(this))
     , m_saveFromEdited(new QAction(this))
     , m_report(new QAction(this))
+    , m_backups(new QAction(this))
     , m_recent(new QMenu(window))
 {
     m_open->setObjectName(QStringLiteral("openProfile"));
@@ -44,12 +49,45 @@ ProfileActions::ProfileActions(DeviceSession *session, QWidget *window)
     connect(m_saveFromDevice, &QAction::triggered, this, [this] { chooseSave(true); });
     connect(m_saveFromEdited, &QAction::triggered, this, [this] { chooseSave(false); });
     connect(m_report, &QAction::triggered, this, &ProfileActions::chooseReport);
+    m_backups->setObjectName(QStringLiteral("backups"));
+    m_backupDir = BackupStore::defaultDirectory();
+    connect(m_backups, &QAction::triggered, this, &ProfileActions::showBackups);
     connect(session, &DeviceSession::linkStateChanged, this, &ProfileActions::updateActions);
     connect(session->parameters(), &ParameterStore::valueChanged, this,
             &ProfileActions::updateActions);
     retranslate();
     rebuildRecent();
     updateActions();
+}
+
+BackupsDialog *ProfileActions::backupsDialog() const
+{
+    return m_backupsDialog;
+}
+
+void ProfileActions::showBackups()
+{
+    if (!m_backupsDialog) {
+        m_backupsDialog = new BackupsDialog(m_session->map(), m_backupDir, m_window);
+        m_backupsDialog->setAttribute(Qt::WA_DeleteOnClose);
+        connect(m_backupsDialog, &BackupsDialog::restoreRequested, this,
+                &ProfileActions::openBackupFile);
+    }
+    m_backupsDialog->reload();
+    m_backupsDialog->show();
+    m_backupsDialog->raise();
+}
+
+bool ProfileActions::openBackupFile(const QString &path)
+{
+    const ProfileParseResult r = BackupStore::load(path, m_session->map());
+    if (!r.ok()) {
+        showErrors(tr("The backup cannot be used"), r.errors);
+        return false;
+    }
+    showCompare(*r.profile, QFileInfo(path).fileName());
+    Q_EMIT finished(true, tr("Opened backup %1").arg(path));
+    return true;
 }
 
 ProfileCompareDialog *ProfileActions::compareDialog() const
@@ -77,6 +115,9 @@ void ProfileActions::retranslate()
     m_saveFromEdited->setToolTip(
         tr("Save the values the pages show (edits included) as a profile file"));
     m_report->setText(tr("Commissioning &report…"));
+    m_backups->setText(tr("&Backups…"));
+    m_backups->setToolTip(tr("The controller's settings saved before each apply, factory "
+                             "reset, save to flash and id or baud change"));
     m_report->setToolTip(tr("Read everything, then write the commissioning sheet as PDF or "
                             "HTML"));
     m_recent->setTitle(tr("Recent &profiles"));
@@ -88,6 +129,7 @@ void ProfileActions::updateActions()
     const bool connected = m_session->isConnected();
     m_saveFromDevice->setEnabled(connected);
     m_report->setEnabled(connected);
+    m_backups->setEnabled(connected); // a backup is restored onto a controller
     bool known = true;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), false))
         known = known && m_session->parameters()->shownValue(p->key).has_value();
@@ -165,22 +207,47 @@ void ProfileActions::chooseOpen()
     dialog->open();
 }
 
+ProfileSaveDialog *ProfileActions::saveDialog() const
+{
+    return m_saveDialog;
+}
+
+QString ProfileActions::suggestedName() const
+{
+    return ProfileSaveDialog::suggestName(
+        m_machine, m_session->isConnected() ? m_session->settings().deviceId : 0,
+        QDate::currentDate());
+}
+
 void ProfileActions::chooseSave(bool fromDevice)
 {
-    auto *dialog = new QFileDialog(m_window,
-                                   fromDevice ? tr("Save profile from the device")
-                                              : tr("Save profile from the edited values"),
-                                   lastDirectory(), tr("StepCom profiles (*.json)"));
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->setAcceptMode(QFileDialog::AcceptSave);
-    dialog->setDefaultSuffix(QStringLiteral("json"));
-    connect(dialog, &QFileDialog::fileSelected, this, [this, fromDevice](const QString &path) {
-        if (fromDevice)
-            saveFromDeviceFile(path);
-        else
-            saveFromEditedFile(path);
+    // First the name and notes, then where: the file is named after the profile.
+    if (m_saveDialog)
+        m_saveDialog->close();
+    m_saveDialog = new ProfileSaveDialog(fromDevice, suggestedName(), m_window);
+    m_saveDialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(m_saveDialog, &QDialog::accepted, this, [this, fromDevice] {
+        const QString name = m_saveDialog->name();
+        const QString notes = m_saveDialog->notes();
+        auto *dialog =
+            new QFileDialog(m_window,
+                            fromDevice ? tr("Save profile from the device")
+                                       : tr("Save profile from the edited values"),
+                            QDir(lastDirectory()).filePath(ProfileSaveDialog::fileNameFor(name)),
+                            tr("StepCom profiles (*.json)"));
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->setAcceptMode(QFileDialog::AcceptSave);
+        dialog->setDefaultSuffix(QStringLiteral("json"));
+        connect(dialog, &QFileDialog::fileSelected, this,
+                [this, fromDevice, name, notes](const QString &path) {
+                    if (fromDevice)
+                        saveFromDeviceFile(path, name, notes);
+                    else
+                        saveFromEditedFile(path, name, notes);
+                });
+        dialog->open();
     });
-    dialog->open();
+    m_saveDialog->open();
 }
 
 void ProfileActions::chooseReport()
@@ -225,10 +292,25 @@ bool ProfileActions::openFile(const QString &path)
         return false;
     }
     addRecent(path);
+    // The profile's software travel limits are StepCom's settings: they take effect now.
+    if (!r.profile->travelLimits.isEmpty() &&
+        r.profile->travelLimits != m_session->travelLimits()) {
+        m_session->setTravelLimits(r.profile->travelLimits);
+        Q_EMIT finished(
+            true,
+            tr("The software travel limits of %1 are in use now").arg(QFileInfo(path).fileName()));
+    }
+    m_machine = r.profile->name.isEmpty() ? QFileInfo(path).completeBaseName() : r.profile->name;
+    showCompare(*r.profile, QFileInfo(path).fileName());
+    Q_EMIT finished(true, tr("Opened profile %1").arg(path));
+    return true;
+}
+
+void ProfileActions::showCompare(const Profile &profile, const QString &title)
+{
     if (m_compare)
         m_compare->close();
-    m_compare =
-        new ProfileCompareDialog(m_session, *r.profile, QFileInfo(path).fileName(), m_window);
+    m_compare = new ProfileCompareDialog(m_session, profile, title, m_window);
     m_compare->setAttribute(Qt::WA_DeleteOnClose);
     connect(m_compare, &ProfileCompareDialog::applied, this,
             [this](bool ok, const QStringList &verified, const QStringList &problems) {
@@ -238,11 +320,10 @@ bool ProfileActions::openFile(const QString &path)
                     Q_EMIT finished(false, p);
             });
     m_compare->open();
-    Q_EMIT finished(true, tr("Opened profile %1").arg(path));
-    return true;
 }
 
-void ProfileActions::saveFromDeviceFile(const QString &path)
+void ProfileActions::saveFromDeviceFile(const QString &path, const QString &name,
+                                        const QString &notes)
 {
     if (!m_session->isConnected()) {
         showErrors(tr("Save profile"), {tr("Connect to a controller first.")});
@@ -250,7 +331,7 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
     }
     const QList<const Parameter *> params = Profile::profileParameters(m_session->map(), true);
     QPointer<ProfileActions> self(this);
-    m_session->read(params, [self, path](const ReadOutcome &r) {
+    m_session->read(params, [self, path, name, notes](const ReadOutcome &r) {
         if (!self)
             return;
         self->m_session->parameters()->setDeviceValues(r.values);
@@ -263,21 +344,25 @@ void ProfileActions::saveFromDeviceFile(const QString &path)
         }
         Profile profile = Profile::fromValues(self->m_session->map(), r.values, true);
         profile.unsupported = r.unsupported; // not "missing" when the file is read again
-        profile.name = QFileInfo(path).completeBaseName();
+        profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
+        profile.notes = notes;
         profile.deviceId = self->m_session->settings().deviceId;
+        profile.travelLimits = self->m_session->travelLimits();
         if (const QString e = ProfileFile::save(path, profile, self->m_session->map());
             !e.isEmpty()) {
             self->showErrors(tr("Save profile"), {e});
             return;
         }
         self->addRecent(path);
+        self->m_machine = profile.name;
         Q_EMIT self->finished(true, tr("Saved the controller's %n parameter(s) to %1", nullptr,
                                        int(profile.values.size()))
                                         .arg(path));
     });
 }
 
-bool ProfileActions::saveFromEditedFile(const QString &path)
+bool ProfileActions::saveFromEditedFile(const QString &path, const QString &name,
+                                        const QString &notes)
 {
     QHash<QString, qint64> values;
     QStringList unknown;
@@ -294,14 +379,17 @@ bool ProfileActions::saveFromEditedFile(const QString &path)
         return false;
     }
     Profile profile = Profile::fromValues(m_session->map(), values, true);
-    profile.name = QFileInfo(path).completeBaseName();
+    profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
+    profile.notes = notes;
     if (m_session->isConnected())
         profile.deviceId = m_session->settings().deviceId;
+    profile.travelLimits = m_session->travelLimits();
     if (const QString e = ProfileFile::save(path, profile, m_session->map()); !e.isEmpty()) {
         showErrors(tr("Save profile"), {e});
         return false;
     }
     addRecent(path);
+    m_machine = profile.name;
     Q_EMIT finished(true, tr("Saved %n value(s) as shown (edits included) to %1", nullptr,
                              int(profile.values.size()))
                               .arg(path));
@@ -334,7 +422,16 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         input.deviceId = self->m_session->settings().deviceId;
         input.notes = notes;
         input.date = QDateTime::currentDateTime();
+        input.lastRead = input.date; // read just now, for this report
+        input.savedToFlash = !self->m_session->parameters()->unsavedToFlash();
         input.locale = Language::instance().current();
+        input.travelLimits = self->m_session->travelLimits();
+        if (self->m_checklist) {
+            if (const auto c = self->m_checklist()) {
+                input.checklist = c->first;
+                input.checklistFile = c->second;
+            }
+        }
         if (const QString e = CommissioningReport(input).write(path); !e.isEmpty()) {
             self->showErrors(tr("Commissioning report"), {e});
             return;

@@ -13,6 +13,8 @@ namespace {
 constexpr double kCycleTarget = 1.10;
 constexpr double kCpuTargetPercent = 3.0;
 constexpr double kRssTargetMb = 150.0;
+constexpr double kTrafficBatchTargetMs = 10.0; // a tenth of the 100 ms batch interval
+constexpr double kTrafficMemoryTargetMb = 100.0;
 
 QString ms(double v)
 {
@@ -113,6 +115,40 @@ QList<Verdict> builtinWindowVerdicts(const WindowResult &w)
 {
     QList<Verdict> rows;
     addWindow(rows, QStringLiteral("--sim"), w, true);
+    return rows;
+}
+
+QList<Verdict> trafficVerdicts(const TrafficResult &t)
+{
+    QList<Verdict> rows;
+    if (!t.measured)
+        return rows;
+    const QString baud = QString::number(t.baud);
+    const qint64 hour = qint64(t.framesPerSecond * t.seconds);
+    rows.append({baud, QStringLiteral("(e) traffic view keeps the last %1 s").arg(t.seconds),
+                 QStringLiteral("%1 of %2 frames kept (%3 frames/s; capacity %4)")
+                     .arg(t.kept)
+                     .arg(hour)
+                     .arg(QString::number(t.framesPerSecond, 'f', 1))
+                     .arg(t.capacity),
+                 QStringLiteral("all of them"),
+                 QString::number(double(t.kept) / double(std::max<qint64>(1, hour)), 'f', 2),
+                 judge(t.kept >= hour)});
+    rows.append({baud, QStringLiteral("(e) traffic view update, full"),
+                 spanText(t.batchMs, QStringLiteral("batches of 100 ms, painted")),
+                 QStringLiteral("mean < 10 ms"),
+                 QString::number(t.batchMs.mean / kTrafficBatchTargetMs, 'f', 2),
+                 judge(t.batchMs.mean < kTrafficBatchTargetMs)});
+    rows.append({baud, QStringLiteral("(e) traffic view memory for them"),
+                 QStringLiteral("%1 MB resident").arg(QString::number(t.memoryMb, 'f', 1)),
+                 QStringLiteral("< 100 MB"),
+                 QString::number(t.memoryMb / kTrafficMemoryTargetMb, 'f', 2),
+                 judge(t.memoryMb < kTrafficMemoryTargetMb)});
+    rows.append({baud, QStringLiteral("(e) traffic view filter over all of them"),
+                 QStringLiteral("show polls %1 ms, search %2 ms (%3 rows)")
+                     .arg(ms(t.showPollsMs), ms(t.searchMs))
+                     .arg(t.rowsShown),
+                 QString(), QString(), Verdict::Result::Info});
     return rows;
 }
 

@@ -14,7 +14,9 @@ struct BenchConfig
     int estopRounds = 8;    // (c) emergency stops
     int windowSeconds = 10; // (d) CPU is averaged over this long
     bool smoke = false;
-    QString stepcomPath; // the window binary for (d); empty: (d) skipped
+    bool traffic = true;       // (e) the Traffic dock with an hour of frames
+    int trafficSeconds = 3600; // (e) how much polling it holds
+    QString stepcomPath;       // the window binary for (d); empty: (d) skipped
 };
 
 struct Span
@@ -40,6 +42,22 @@ struct WindowResult
     double peakRssMb = 0;   // VmHWM
     double pollsPerSec = 0; // requests the simulator answered, per second
     double seconds = 0;
+};
+
+// (e) the Traffic dock after an hour of polling at full rate
+struct TrafficResult
+{
+    bool measured = false;
+    int baud = 0;
+    double framesPerSecond = 0; // the full polling rate fed
+    int seconds = 0;
+    qint64 kept = 0; // frames the view still holds at the end
+    int capacity = 0;
+    Span batchMs;           // one update of the view (a batch of frames, painted), view full
+    double memoryMb = 0;    // resident memory the frames took
+    double showPollsMs = 0; // ticking "Polls" over all of them
+    double searchMs = 0;    // a search over all of them
+    int rowsShown = 0;
 };
 
 struct BaudResult

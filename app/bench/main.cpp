@@ -2,7 +2,10 @@
 // simulator's wire-time model. `scripts/bench.sh` builds and runs it and updates the document.
 #include "benchreport.h"
 #include "benchrunner.h"
+#include "trafficprobe.h"
 #include "windowprobe.h"
+
+#include <QApplication>
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -15,7 +18,10 @@ using namespace stepcom::bench;
 
 int main(int argc, char *argv[])
 {
-    QCoreApplication app(argc, argv);
+    // (e) shows the Traffic dock's widgets: offscreen unless a display is asked for.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("stepcom-bench"));
     QCoreApplication::setApplicationVersion(QStringLiteral(STEPCOM_VERSION));
     QTextStream out(stdout);
@@ -25,7 +31,8 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(QStringLiteral(
         "Measures StepCom against the simulator's wire-time model at 9600, 19200 and 38400 "
         "baud: (a) the live status cycle, (b) read-all, (c) the emergency stop while polling at "
-        "full rate, (d) the window's CPU and memory while polling at full rate. Prints a table "
+        "full rate, (d) the window's CPU and memory while polling at full rate, (e) the Traffic "
+        "dock holding an hour of that polling. Prints a table "
         "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -43,6 +50,11 @@ int main(int argc, char *argv[])
          QStringLiteral("The window binary for (d) (default: next to this program)."),
          QStringLiteral("path")},
         {QStringLiteral("no-window"), QStringLiteral("Skip (d).")},
+        {QStringLiteral("no-traffic"), QStringLiteral("Skip (e).")},
+        {QStringLiteral("traffic-seconds"),
+         QStringLiteral(
+             "(e) seconds of polling at full rate the Traffic dock holds (default 3600)."),
+         QStringLiteral("s"), QStringLiteral("3600")},
         {QStringLiteral("update-doc"),
          QStringLiteral("Write the table between the bench markers of this Markdown file."),
          QStringLiteral("file")},
@@ -53,6 +65,8 @@ int main(int argc, char *argv[])
     config.smoke = parser.isSet(QStringLiteral("smoke"));
     config.cycles = std::max(2, parser.value(QStringLiteral("cycles")).toInt());
     config.windowSeconds = std::max(1, parser.value(QStringLiteral("window-seconds")).toInt());
+    config.traffic = !parser.isSet(QStringLiteral("no-traffic"));
+    config.trafficSeconds = std::max(1, parser.value(QStringLiteral("traffic-seconds")).toInt());
     QList<int> bauds{9600, 19200, 38400};
     if (config.smoke) {
         bauds = {38400};
@@ -60,6 +74,7 @@ int main(int argc, char *argv[])
         config.readAlls = 1;
         config.estopRounds = 2;
         config.windowSeconds = 2;
+        config.trafficSeconds = 60;
     }
     if (parser.isSet(QStringLiteral("baud"))) {
         bauds.clear();
@@ -74,9 +89,27 @@ int main(int argc, char *argv[])
     }
 
     QList<Verdict> rows;
+    int fastestBaud = 0;
+    double fastestFrames = 0; // frames per second of the status poll at full rate
     for (const int baud : std::as_const(bauds)) {
         err << QStringLiteral("stepcom-bench: measuring at %1 baud ...").arg(baud) << Qt::endl;
-        rows += verdicts(measureBaud(baud, config));
+        const BaudResult r = measureBaud(baud, config);
+        rows += verdicts(r);
+        if (r.error.isEmpty() && r.cycleMs.mean > 0) {
+            const double frames = 2.0 * r.readsPerCycle * 1000.0 / r.cycleMs.mean;
+            if (frames > fastestFrames) {
+                fastestFrames = frames;
+                fastestBaud = baud;
+            }
+        }
+    }
+    if (config.traffic && fastestFrames > 0) {
+        err << QStringLiteral("stepcom-bench: the Traffic dock with %1 s at %2 baud ...")
+                   .arg(config.trafficSeconds)
+                   .arg(fastestBaud)
+            << Qt::endl;
+        rows +=
+            trafficVerdicts(measureTrafficView(fastestBaud, fastestFrames, config.trafficSeconds));
     }
     if (!config.smoke && !config.stepcomPath.isEmpty()) {
         err << QStringLiteral("stepcom-bench: the window with its built-in simulator ...")

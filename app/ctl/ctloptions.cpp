@@ -1,5 +1,7 @@
 #include "ctloptions.h"
 
+#include "device/idlist.h"
+
 #include <QCoreApplication>
 
 namespace stepcom {
@@ -36,7 +38,10 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          QStringLiteral("none")},
         {QStringLiteral("stop-bits"), tr("Stop bits: 1 or 2 (default 1)."), tr("n"),
          QStringLiteral("1")},
-        {QStringLiteral("id"), tr("Device id 1-255 (default 1)."), tr("id"), QStringLiteral("1")},
+        {QStringLiteral("id"),
+         tr("Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and "
+            "command: each in turn on the one line, output keyed by id."),
+         tr("id"), QStringLiteral("1")},
         {QStringLiteral("timeout"), tr("Answer timeout in ms (default 500)."), tr("ms"),
          QStringLiteral("500")},
         {QStringLiteral("retries"), tr("Retries after a timeout (default 2)."), tr("n"),
@@ -53,7 +58,13 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("include-link"),
          tr("dump, apply: include the device id and baud (apply writes them only with this).")},
         {QStringLiteral("no-backup"),
-         tr("apply: do not save a backup of the controller's settings before writing.")},
+         tr("apply, command factory_reset/save_to_flash, write device.id/device.baud: do not "
+            "save a backup of the controller's settings first.")},
+        {QStringLiteral("by"), tr("move: a step of this many axis units (+ or -)."),
+         tr("distance")},
+        {QStringLiteral("to"),
+         tr("move: to this position (axis units); assign-id: the new device id 1-255."),
+         tr("value")},
         {QStringLiteral("name"), tr("dump, report: name of the profile or the machine."),
          tr("text")},
         {QStringLiteral("notes"), tr("dump, report: notes to record."), tr("text")},
@@ -105,8 +116,12 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         o.link.stopBits = QSerialPort::TwoStop;
     else
         return tr("--stop-bits: '%1' is not 1 or 2").arg(stop);
-    if (!toInt(parser.value(QStringLiteral("id")), &o.link.deviceId))
-        return tr("--id: '%1' is not a number").arg(parser.value(QStringLiteral("id")));
+    QString idProblem;
+    const auto ids = IdList::parse(parser.value(QStringLiteral("id")), &idProblem);
+    if (!ids)
+        return tr("--id: %1").arg(idProblem);
+    o.ids = *ids;
+    o.link.deviceId = ids->first();
     if (!toInt(parser.value(QStringLiteral("timeout")), &o.link.timeoutMs))
         return tr("--timeout: '%1' is not a number").arg(parser.value(QStringLiteral("timeout")));
     if (!toInt(parser.value(QStringLiteral("retries")), &o.link.retries))
@@ -130,12 +145,19 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.name = parser.value(QStringLiteral("name"));
     o.notes = parser.value(QStringLiteral("notes"));
     o.from = parser.value(QStringLiteral("from"));
+    o.by = parser.value(QStringLiteral("by"));
+    o.to = parser.value(QStringLiteral("to"));
     const QStringList positional = parser.positionalArguments();
     if (positional.isEmpty())
-        return tr("no command given (params, read, write, command, monitor, dump, diff, apply, "
-                  "report)");
+        return tr("no command given (params, read, write, command, move, monitor, dump, diff, "
+                  "apply, assign-id, report)");
     o.command = positional.first();
     o.arguments = positional.mid(1);
+    // --to is a position for move and a device id for assign-id.
+    if (o.command == QLatin1String("assign-id") && parser.isSet(QStringLiteral("to")) &&
+        (!toInt(parser.value(QStringLiteral("to")), &o.assignTo) || o.assignTo < 1 ||
+         o.assignTo > 255))
+        return tr("--to: '%1' is not a device id 1-255").arg(parser.value(QStringLiteral("to")));
     if (o.target != Target::None) {
         if (o.target != Target::Sim) {
             if (const QString problem = o.link.validate(); !problem.isEmpty())

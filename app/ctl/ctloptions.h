@@ -13,6 +13,9 @@ struct CtlOptions
     enum class Target { None, Port, Tcp, Sim };
     Target target = Target::None;
     LinkSettings link;
+    // --id 1,2,3 or 1-3: the command runs for each in turn over one link (link.deviceId is the
+    // first); one id: just that one.
+    QList<int> ids;
     QString mapFile;
     bool json = false;
     bool verbose = false;
@@ -24,7 +27,10 @@ struct CtlOptions
     QString name;                            // dump/report: the profile's or the machine's name
     QString notes;                           // dump/report
     QString from;                            // report --from PROFILE: from a file, no controller
+    QString by;                              // move --by D: a step of D axis units
+    QString to;                              // move --to X: to position X
     QString language = QStringLiteral("en"); // --lang or the environment: messages and the report
+    int assignTo = 0;                        // assign-id --to N
     int count = -1;
     int intervalMs = 0;
     QString command;

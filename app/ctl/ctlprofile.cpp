@@ -437,6 +437,7 @@ void CtlRunner::runReport()
             input.title = m_options.name;
             input.notes = m_options.notes;
             input.date = QDateTime::currentDateTime();
+            input.lastRead = input.date; // a one-shot session: the flash state is not known
             input.locale = m_options.language;
             if (const QString e = CommissioningReport(input).write(path); !e.isEmpty()) {
                 fail(UsageError, e);

@@ -89,6 +89,11 @@ const QList<CtlCommand> &CtlRunner::commands()
                            "pulse a motion command and wait until it ends; print\n"
                            "how it ended (--json), exit 0 only when done or referenced"),
          &CtlRunner::runCommandWait, &CtlOptions::wait},
+        {"move", "move MOTOR --by D|--to X",
+         QT_TRANSLATE_NOOP("stepcomctl", "move motorN by D or to X (axis units) with its single\n"
+                                         "move; its own distance and direction are put back and\n"
+                                         "verified; exit 0 only when it arrived"),
+         &CtlRunner::runMove},
         {"monitor", "monitor",
          QT_TRANSLATE_NOOP("stepcomctl", "print the live status as one JSON object per line,\n"
                                          "until --count samples or Ctrl-C (--interval MS)"),
@@ -113,6 +118,12 @@ const QList<CtlCommand> &CtlRunner::commands()
                            "--save-to-flash saves afterwards; the settings it\n"
                            "replaces are saved as a backup first (--no-backup)"),
          &CtlRunner::runApply},
+        {"assign-id", "assign-id --to N",
+         QT_TRANSLATE_NOOP("stepcomctl", "give the one controller at --id (default 1, as it\n"
+                                         "leaves the factory) the device id N and check it\n"
+                                         "answers there; refuses when N is taken or two\n"
+                                         "controllers answer at --id"),
+         &CtlRunner::runAssignId},
         {"report", "report FILE.pdf|.html",
          QT_TRANSLATE_NOOP("stepcomctl", "write the commissioning report (--name, --notes,\n"
                                          "--lang en|zh_CN; --from PROFILE: from a profile\n"
@@ -160,7 +171,11 @@ void CtlRunner::start()
             chosen = &c;
     }
     if (chosen) {
-        (this->*chosen->run)();
+        m_chosen = chosen;
+        if (isMulti())
+            startMulti();
+        else
+            (this->*chosen->run)();
         return;
     }
     fail(UsageError, unknownCommandMessage(m_options.command));
@@ -176,6 +191,12 @@ void CtlRunner::finish(int code)
 {
     if (m_finished)
         return;
+    if (isMulti() && m_chosen) {
+        if (nextId(code))
+            return;
+        code = worstCode();
+        printMulti();
+    }
     m_finished = true;
     m_out.flush();
     m_err.flush();
@@ -203,6 +224,12 @@ void CtlRunner::connectThen(std::function<void()> next)
         fail(UsageError, tr("no controller given: use --port PATH, --tcp HOST[:PORT] or --sim"));
         return;
     }
+    if (m_session && m_session->isConnected()) {
+        next(); // --id with several: the next id on the link that is already open
+        return;
+    }
+    if (m_session)
+        m_session->deleteLater(); // a link that could not be opened for the last id
     // One-shot: no read-all after connecting, no status poll; each command reads what it names.
     m_session = new DeviceSession(m_map, this);
     m_session->setLive(false);
@@ -210,6 +237,8 @@ void CtlRunner::connectThen(std::function<void()> next)
     connect(m_session, &DeviceSession::readLimitsLearned, this, [this](const QString &text) {
         m_err << QStringLiteral("stepcomctl: ") << tr("note: %1").arg(text) << Qt::endl;
     });
+    if (isMulti())
+        m_session->setDeviceIds(m_options.ids);
     if (m_options.verbose) {
         connect(m_session->traffic(), &TrafficLog::entryAdded, this,
                 [this](const TrafficEntry &e) { m_err << TrafficLog::format(e) << Qt::endl; });
@@ -234,7 +263,10 @@ void CtlRunner::connectThen(std::function<void()> next)
     if (m_options.target == CtlOptions::Target::Sim) {
         // The built-in controller runs in this process; on Unix it is reached over a
         // pseudo-terminal, so --sim takes the same RTU path as a real adapter.
-        m_session->setSimulator(std::make_unique<BuiltinSimulator>());
+        auto sim = std::make_unique<BuiltinSimulator>();
+        if (isMulti())
+            sim->setIds(m_options.ids); // one simulated controller per id, on one line
+        m_session->setSimulator(std::move(sim));
         m_session->connectSimulator();
     } else {
         m_session->connectTo(m_options.link);
@@ -382,7 +414,28 @@ void CtlRunner::runWrite()
         finish(UsageError);
         return;
     }
-    connectThen([this, writes] {
+    // A new id or baud, or a save to flash after the write: the settings before it are backed up.
+    std::optional<DeviceSession::Risk> risk;
+    for (const ParameterWrite &w : std::as_const(writes)) {
+        if (w.parameter->key == QLatin1String("device.id"))
+            risk = DeviceSession::Risk::DeviceId;
+        else if (w.parameter->key == QLatin1String("device.baud") && !risk)
+            risk = DeviceSession::Risk::Baud;
+    }
+    if (!risk && m_options.saveToFlash)
+        risk = DeviceSession::Risk::SaveToFlash;
+    connectThen([this, writes, risk] {
+        if (risk) {
+            backupThen(*risk, [this, writes] { writeThenReport(writes); });
+            return;
+        }
+        writeThenReport(writes);
+    });
+}
+
+void CtlRunner::writeThenReport(const QList<ParameterWrite> &writes)
+{
+    {
         m_session->write(writes, [this, writes](const WriteOutcome &w) {
             for (const ParameterWrite &pw : writes) {
                 const bool verified = w.written.contains(pw.parameter->key) &&
@@ -411,7 +464,7 @@ void CtlRunner::runWrite()
             }
             saveToFlashThenFinish();
         });
-    });
+    }
 }
 
 const Parameter *CtlRunner::commandArgument()
@@ -441,18 +494,29 @@ void CtlRunner::runCommand()
     if (!p)
         return;
     connectThen([this, p] {
-        m_session->command(*p, [this, p](const Result &r) {
-            if (!r.ok) {
-                fail(DeviceError, r.errorText);
-                return;
-            }
-            // A moving command is only acknowledged: its end is known with --wait.
-            m_out << (p->command == CommandClass::Motion
-                          ? tr("%1: sent (add --wait to wait for how it ends)").arg(p->key)
-                          : tr("%1: done").arg(p->key))
-                  << Qt::endl;
-            finish(Ok);
-        });
+        const bool risky =
+            p->key == QLatin1String("factory_reset") || p->key == QLatin1String("save_to_flash");
+        const auto risk = p->key == QLatin1String("factory_reset")
+                              ? DeviceSession::Risk::FactoryReset
+                              : DeviceSession::Risk::SaveToFlash;
+        const auto send = [this, p] {
+            m_session->command(*p, [this, p](const Result &r) {
+                if (!r.ok) {
+                    fail(DeviceError, r.errorText);
+                    return;
+                }
+                // A moving command is only acknowledged: its end is known with --wait.
+                m_out << (p->command == CommandClass::Motion
+                              ? tr("%1: sent (add --wait to wait for how it ends)").arg(p->key)
+                              : tr("%1: done").arg(p->key))
+                      << Qt::endl;
+                finish(Ok);
+            });
+        };
+        if (risky)
+            backupThen(risk, send);
+        else
+            send();
     });
 }
 

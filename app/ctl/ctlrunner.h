@@ -51,12 +51,20 @@ private:
     void runParams();
     void runRead();
     void runWrite();
+    void writeThenReport(const QList<ParameterWrite> &writes);
     void runCommand();
     // command NAME --wait: sends it and judges where the motion ended (CtlMotionWait).
     void runCommandWait();
     // The one coil `command` names, checked; nullptr after failing with the reason.
     const Parameter *commandArgument();
     void runMonitor();
+    // move MOTOR --by D | --to X: a step or move-to over the single move (ctlmove.cpp).
+    void runMove();
+    // Saves a backup of the controller's settings before `risk` (unless --no-backup), prints
+    // where, then runs `next`; fails (nothing done) when it cannot be saved.
+    void backupThen(DeviceSession::Risk risk, std::function<void()> next);
+    // assign-id --to N (ctlbus.cpp): the one controller at --id gets id N, verified there.
+    void runAssignId();
     // Profiles and the report (ctlprofile.cpp).
     void runDump();
     void runDiff();
@@ -78,6 +86,15 @@ private:
     // false (and the command failed) when it could not be saved.
     bool backupBeforeApply();
     void saveToFlashThenFinish();
+    // --id with several ids (ctlbus.cpp): the command runs for each in turn over the one link;
+    // the output is keyed by id and the exit code is the worst of them.
+    bool isMulti() const { return m_options.ids.size() > 1; }
+    void startMulti();
+    // One id's run ended with `code`: true when the next one was started.
+    bool nextId(int code);
+    void runForCurrentId();
+    void printMulti();
+    int worstCode() const;
     void fail(int code, const QString &message);
     void finish(int code);
     QString valueText(const Parameter &p, qint64 raw) const;
@@ -92,6 +109,14 @@ private:
     int m_linkError = DeviceError;
     QHash<QString, qint64> m_beforeApply; // the settings read before apply: its backup
     bool m_finished = false;
+    const CtlCommand *m_chosen = nullptr;
+    int m_idIndex = 0;
+    QList<int> m_idCodes;    // exit code of each id run so far
+    QStringList m_idOutputs; // what each id's run printed
+    QString m_buffer;        // the current id's output
+    QString m_errBuffer;     // the current id's messages, printed prefixed with its id
+    QList<QStringList> m_idErrors;
+    QString m_multiArgument; // dump: the path asked for, suffixed per id
 };
 
 } // namespace stepcom

@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFile>
 #include <QSettings>
 #include <QStyle>
 #include <QStyleFactory>
@@ -16,6 +17,20 @@ using namespace stepcom;
 
 int main(int argc, char *argv[])
 {
+    // The window keeps itself inside its screen (MainWindow::fitIntoScreen): offscreen, give it
+    // a screen larger than any picture size asked for (the plugin's default is 800×600).
+    QTemporaryDir screenDir;
+    if (qgetenv("QT_QPA_PLATFORM") == "offscreen" && screenDir.isValid()) {
+        const QString config = screenDir.filePath(QStringLiteral("screen.json"));
+        QFile file(config);
+        if (file.open(QIODevice::WriteOnly) &&
+            file.write(R"({"screens": [{"name": "shots", "x": 0, "y": 0, "width": 3840, )"
+                       R"("height": 2400, "logicalDpi": 96, "logicalBaseDpi": 96, "dpr": 1}]})") >
+                0) {
+            file.close();
+            qputenv("QT_QPA_PLATFORM", "offscreen:configfile=" + config.toLocal8Bit());
+        }
+    }
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("StepComShots"));
     QApplication::setApplicationName(QStringLiteral("stepcom-shots"));
@@ -104,6 +119,8 @@ int main(int argc, char *argv[])
     }
     QSettings::setDefaultFormat(QSettings::IniFormat);
     QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
+    // The same for the data location: the checklist's progress and the backups.
+    qputenv("XDG_DATA_HOME", QFile::encodeName(settingsDir.filePath(QStringLiteral("data"))));
 
     Shooter shooter(options);
     int exitCode = 0;

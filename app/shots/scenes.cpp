@@ -7,6 +7,7 @@
 #include "dialogs/writechangesdialog.h"
 #include "mainwindow.h"
 #include "offlinescenes.h"
+#include "pages/checklistpage.h"
 #include "pages/connectionpage.h"
 #include "pages/inputspage.h"
 #include "pages/interpolationpage.h"
@@ -18,6 +19,8 @@
 #include "shooter.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "widgets/checklistdirectionstep.h"
+#include "widgets/checklistinputstep.h"
 #include "widgets/parameterfield.h"
 #include "widgets/patheditor.h"
 
@@ -440,6 +443,62 @@ void portMissing(Shooter &s)
     s.shoot(Shooter::sceneFileName(QStringLiteral("port-missing")));
 }
 
+// The checklist's direction step after its small step: "did the axis move toward + ?".
+void checklistDirection(Shooter &s)
+{
+    Script &script = s.script();
+    script.then([&s] {
+        s.window()->showPage(s.pageIndex<ChecklistPage>());
+        ChecklistPage *page = s.window()->checklistPage();
+        page->selectStep(QStringLiteral("motor1.direction"));
+        auto *w = qobject_cast<ChecklistDirectionStep *>(
+            page->stepWidget(QStringLiteral("motor1.direction")));
+        w->moveButton()->click();
+    });
+    script.waitFor(QStringLiteral("the direction step's question"), [&s] {
+        auto *w = qobject_cast<ChecklistDirectionStep *>(
+            s.window()->checklistPage()->stepWidget(QStringLiteral("motor1.direction")));
+        return w && w->yesButton()->isEnabled();
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("checklist-direction")));
+}
+
+// A miswired positive limit found by the checklist: the register says IN3, IN1 answered; the
+// fix is proposed. The register is put back afterwards.
+void checklistMiswired(Shooter &s)
+{
+    Script &script = s.script();
+    const auto widget = [&s] {
+        return qobject_cast<ChecklistInputStep *>(
+            s.window()->checklistPage()->stepWidget(QStringLiteral("motor1.limit_positive")));
+    };
+    script.then([&s] {
+        s.simulator()->device()->setValue(QStringLiteral("motor1.limit_positive"), 3);
+        s.session()->readAll();
+    });
+    script.sleep(800);
+    script.then([&s, widget] {
+        s.window()->showPage(s.pageIndex<ChecklistPage>());
+        s.window()->checklistPage()->selectStep(QStringLiteral("motor1.limit_positive"));
+        widget()->watchButton()->click();
+        s.simulator()->device()->setInput(1, SimDevice::InputForce::On);
+    });
+    script.sleep(600);
+    script.then([&s] { s.simulator()->device()->setInput(1, SimDevice::InputForce::Off); });
+    script.sleep(600);
+    script.then([widget] { widget()->doneButton()->click(); });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("checklist-miswired")));
+    script.then([&s] {
+        s.simulator()->device()->setValue(QStringLiteral("motor1.limit_positive"), 1);
+        s.session()->readAll();
+        // The next language's pictures start from an empty checklist again.
+        ChecklistPage *page = s.window()->checklistPage();
+        QFile::remove(page->checklistFile());
+        page->setProfilePath(page->profilePath());
+    });
+    script.sleep(500);
+}
+
 } // namespace
 
 const QList<Scene> &scenes()
@@ -458,6 +517,8 @@ const QList<Scene> &scenes()
         {QStringLiteral("profile-compare"), W::AfterPages, &profileCompare},
         {QStringLiteral("profile-error"), W::AfterPages, &profileError},
         {QStringLiteral("write-changes"), W::AfterPages, &writeChanges},
+        {QStringLiteral("checklist-direction"), W::AfterPages, &checklistDirection},
+        {QStringLiteral("checklist-miswired"), W::AfterPages, &checklistMiswired},
         {QStringLiteral("port-missing"), W::AfterPages, &portMissing},
         // Without a controller (issue 18): after port-missing, which leaves it disconnected.
         {QStringLiteral("offline-editing"), W::AfterPages, &offlinescenes::editing},

@@ -1,5 +1,6 @@
 // stepcom-sim: the simulated controller as a program of its own.
 #include "consolereader.h"
+#include "device/idlist.h"
 #include "i18n/translators.h"
 #include "signalwatcher.h"
 #include "sim/simcommandline.h"
@@ -82,6 +83,17 @@ int main(int argc, char *argv[])
                .arg(device->baud())
                .arg(device->motorCount())
         << Qt::endl;
+    if (host.devices().size() > 1) {
+        QList<int> ids;
+        for (const SimDevice *d : host.devices())
+            ids << d->deviceId();
+        out << QCoreApplication::translate(
+                   "stepcom-sim", "%1 controllers on the line, ids %2 (the console acts on "
+                                  "the first)")
+                   .arg(ids.size())
+                   .arg(IdList::format(ids))
+            << Qt::endl;
+    }
     if (options.rtu) {
         out << QStringLiteral("pty: %1").arg(host.ptyPath()) << Qt::endl;
         if (!options.linkPath.isEmpty())

@@ -184,7 +184,7 @@ void ModbusLink::failLink(const QString &reason)
     m_failing = true;
     const bool wasConnected = m_state == State::Connected;
     qCInfo(lcBus) << "link failed:" << reason;
-    m_traffic->addEvent(tr("link lost: %1").arg(reason));
+    m_traffic->addEvent(tr("link lost: %1").arg(reason), TrafficEntry::Kind::Error);
     close(reason);
     finishOpen(false, reason);
     if (wasConnected)
@@ -291,7 +291,7 @@ void ModbusLink::pump()
     m_inFlight = m_queue.takeNext();
     m_inFlight->attempts += 1;
     const Request req = m_inFlight->request;
-    const int id = m_settings.deviceId;
+    const int id = req.unitId > 0 ? req.unitId : m_settings.deviceId;
     ++m_stats.requests;
     m_sentAt.start();
     Q_EMIT dispatched(m_inFlight->id, req);
@@ -402,7 +402,7 @@ void ModbusLink::onReplyFinished(QModbusReply *reply)
         // Let a late answer drain before anything else goes out.
         m_sinceQuiet.start();
         m_quietRemainingMs = m_quietMs;
-        m_traffic->addEvent(r.errorText);
+        m_traffic->addEvent(r.errorText, TrafficEntry::Kind::Error);
         if (req.retryable && item.attempts <= m_settings.retries) {
             m_queue.pushFront(std::move(item));
             Q_EMIT statsChanged();
@@ -464,6 +464,8 @@ QString ModbusLink::describe(const Request &request) const
                     .arg(QString::number(request.address, 16)
                              .rightJustified(4, QLatin1Char('0'))
                              .toUpper());
+    if (request.unitId > 0 && request.unitId != m_settings.deviceId)
+        where = tr("id %1, %2").arg(request.unitId).arg(where);
     if (request.what.isEmpty())
         return where;
     return QStringLiteral("%1 [%2]").arg(request.what, where);

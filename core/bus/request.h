@@ -24,6 +24,8 @@ struct Request
     // mean the controller did act, and a second pulse would move the axis twice.
     bool retryable = true;
     QString what; // what the request is for, in words: "motor1.speed", "read-all block 2/5"
+    // The controller it is addressed to on a line of several; 0: the link's device id.
+    int unitId = 0;
 
     static Request read(quint16 address, quint16 count, Priority p = Priority::Read);
     static Request write(quint16 address, QVector<quint16> values, Priority p = Priority::Command);

@@ -78,18 +78,39 @@ void TrafficLog::addFrame(TrafficEntry::Direction direction, const QByteArray &r
     e.direction = direction;
     e.bytes = raw;
     const qsizetype pduSize = raw.size() - pduOffset - crcBytes;
-    e.summary = pduSize > 0 ? describePdu(direction, raw.mid(pduOffset, pduSize), context, m_map)
+    const QByteArray pdu = pduSize > 0 ? raw.mid(pduOffset, pduSize) : QByteArray();
+    e.summary = pduSize > 0 ? describePdu(direction, pdu, context, m_map)
                             : QStringLiteral("incomplete frame");
+    e.kind = pduSize > 0 ? kindOf(context, pdu) : TrafficEntry::Kind::Error;
     append(e);
 }
 
-void TrafficLog::addEvent(const QString &text)
+void TrafficLog::addEvent(const QString &text, TrafficEntry::Kind kind)
 {
     TrafficEntry e;
     e.time = QDateTime::currentDateTime();
     e.direction = TrafficEntry::Direction::Event;
+    e.kind = kind;
     e.summary = text;
     append(e);
+}
+
+TrafficEntry::Kind TrafficLog::kindOf(const Request *context, const QByteArray &pdu)
+{
+    if (!pdu.isEmpty() && (quint8(pdu.at(0)) & 0x80))
+        return TrafficEntry::Kind::Error; // an exception answer
+    if (!context)
+        return TrafficEntry::Kind::Event;
+    switch (context->type) {
+    case Request::Type::ReadHolding:
+        return context->priority == Priority::Poll ? TrafficEntry::Kind::Poll
+                                                   : TrafficEntry::Kind::Read;
+    case Request::Type::WriteHolding:
+        return TrafficEntry::Kind::Write;
+    case Request::Type::WriteCoil:
+        return TrafficEntry::Kind::Command;
+    }
+    return TrafficEntry::Kind::Event;
 }
 
 QString TrafficLog::describePdu(TrafficEntry::Direction direction, const QByteArray &pdu,

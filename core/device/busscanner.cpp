@@ -1,12 +1,62 @@
 #include "device/busscanner.h"
 
 #include "bus/modbuslink.h"
+#include "map/registermap.h"
+
+#include <QCoreApplication>
 
 namespace stepcom {
 
 BusScanner::BusScanner(QObject *parent)
     : QObject(parent)
+    , m_map(&RegisterMap::builtin())
 {}
+
+QString BusScanner::Found::summary() const
+{
+    return QCoreApplication::translate("stepcom::BusScanner", "id %1 at %2 — %3")
+        .arg(deviceId)
+        .arg(where, detail);
+}
+
+QString BusScanner::where(const LinkSettings &settings)
+{
+    if (settings.transport == LinkSettings::Transport::Tcp)
+        return QStringLiteral("%1:%2").arg(settings.host).arg(settings.tcpPort);
+    const QChar parity = settings.parity == QSerialPort::EvenParity  ? QLatin1Char('E')
+                         : settings.parity == QSerialPort::OddParity ? QLatin1Char('O')
+                                                                     : QLatin1Char('N');
+    return QStringLiteral("%1 8%2%3")
+        .arg(settings.baud)
+        .arg(parity)
+        .arg(settings.stopBits == QSerialPort::TwoStop ? 2 : 1);
+}
+
+QString BusScanner::describe(const Found &found, const RegisterMap &map)
+{
+    if (found.exceptionCode != 0)
+        return tr("a device that refused the first register: %1")
+            .arg(exceptionText(found.exceptionCode));
+    const Parameter *angle =
+        map.blockParameter(QStringLiteral("motor"), 1, QStringLiteral("step_angle"));
+    QStringList angles;
+    for (const qint64 raw : found.stepAngles)
+        angles << (angle ? angle->displayRaw(raw).remove(QLatin1Char(' ')) : QString::number(raw));
+    angles.removeDuplicates();
+    const int motors = int(found.stepAngles.size());
+    // Only as many axes as the device answered for: never more than it showed.
+    const QString what = motors >= 2 && motors == found.motorsInMap
+                             ? tr("a %1-axis controller").arg(motors)
+                             : tr("a controller");
+    if (angles.isEmpty())
+        return what;
+    QString text = angles.size() == 1
+                       ? tr("%1, step angle %2").arg(what, angles.first())
+                       : tr("%1, step angles %2").arg(what, angles.join(tr(" and ")));
+    if (motors < found.motorsInMap && found.motorsInMap > 1)
+        text += tr(" (only %1 of %2 motors answered)").arg(motors).arg(found.motorsInMap);
+    return text;
+}
 
 BusScanner::~BusScanner()
 {
@@ -107,21 +157,69 @@ void BusScanner::probeNext()
             ++m_done;
             Q_EMIT progress(m_done, m_total, baud, id);
             if (r.ok || r.exceptionCode != 0) {
-                Found f{
-                    baud, id,
-                    r.ok
-                        ? tr("answered (register 40001 = %1)").arg(r.values.value(0))
-                        : tr("answered with an exception: %1").arg(exceptionText(r.exceptionCode))};
-                m_found << f;
-                Q_EMIT foundDevice(f);
-                if (m_stopAtFirst) {
-                    finish(false, QString());
+                Found f;
+                f.baud = baud;
+                f.deviceId = id;
+                LinkSettings s = m_base;
+                s.baud = baud;
+                f.where = where(s);
+                f.exceptionCode = r.ok ? 0 : r.exceptionCode;
+                f.motorsInMap = m_map ? m_map->blockCount(QStringLiteral("motor")) : 0;
+                if (r.ok)
+                    f.stepAngles << r.values.value(0); // 40001 is motor 1's step angle
+                if (r.ok && f.motorsInMap > 1) {
+                    identify(f);
                     return;
                 }
+                report(f);
+                return;
             }
             probeNext();
         },
         this);
+}
+
+void BusScanner::identify(Found found)
+{
+    // One read from 40001 to the last motor's step angle: a 2-axis controller answers both.
+    const Parameter *last = m_map->blockParameter(QStringLiteral("motor"), found.motorsInMap,
+                                                  QStringLiteral("step_angle"));
+    if (!last) {
+        report(found);
+        return;
+    }
+    Request read = Request::read(0, quint16(last->address + 1), Priority::Read);
+    read.retryable = false;
+    read.what = tr("identify id %1").arg(found.deviceId);
+    m_link->submit(
+        read,
+        [this, found](const Result &r) mutable {
+            if (!m_running)
+                return;
+            if (r.ok) {
+                found.stepAngles.clear();
+                for (int n = 1; n <= found.motorsInMap; ++n) {
+                    const Parameter *p = m_map->blockParameter(QStringLiteral("motor"), n,
+                                                               QStringLiteral("step_angle"));
+                    if (p && p->address < r.values.size())
+                        found.stepAngles << r.values.at(p->address);
+                }
+            }
+            report(found);
+        },
+        this);
+}
+
+void BusScanner::report(Found found)
+{
+    found.detail = describe(found, m_map ? *m_map : RegisterMap::builtin());
+    m_found << found;
+    Q_EMIT foundDevice(found);
+    if (m_stopAtFirst) {
+        finish(false, QString());
+        return;
+    }
+    probeNext();
 }
 
 } // namespace stepcom

@@ -19,7 +19,20 @@ DeviceClient::DeviceClient(ModbusLink *link, const RegisterMap &map, QObject *pa
     : QObject(parent)
     , m_link(link)
     , m_map(map)
+    , m_limits(std::make_shared<QHash<int, ReadLimits>>())
 {}
+
+int DeviceClient::currentUnit() const
+{
+    return m_unitId > 0 ? m_unitId : m_link->settings().deviceId;
+}
+
+const ReadLimits &DeviceClient::readLimits(int unit) const
+{
+    static const ReadLimits none;
+    const auto it = m_limits->constFind(unit);
+    return it == m_limits->cend() ? none : *it;
+}
 
 ReadCostModel DeviceClient::costModel() const
 {
@@ -30,25 +43,33 @@ ReadCostModel DeviceClient::costModel() const
 
 QList<ReadBlock> DeviceClient::planRead(const QList<const Parameter *> &params) const
 {
+    return planRead(currentUnit(), params);
+}
+
+QList<ReadBlock> DeviceClient::planRead(int unit, const QList<const Parameter *> &params) const
+{
+    const ReadLimits &limits = readLimits(unit);
     QList<const Parameter *> present;
     for (const Parameter *p : params) {
-        if (p && !m_limits.isUnsupported(p->key))
+        if (p && !limits.isUnsupported(p->key))
             present << p;
     }
     ReadPlanner::MayRead mayRead;
-    if (!m_limits.isEmpty())
-        mayRead = [this](int first, int last) { return m_limits.mayRead(m_map, first, last); };
+    if (!limits.isEmpty())
+        mayRead = [this, limits](int first, int last) {
+            return limits.mayRead(m_map, first, last);
+        };
     return ReadPlanner::plan(present, m_map.maxRegistersPerRequest(), costModel(), mayRead);
 }
 
-ReadLimits::Lesson DeviceClient::noteRefused(const ReadBlock &block, const Result &result)
+ReadLimits::Lesson DeviceClient::noteRefused(int unit, const ReadBlock &block, const Result &result)
 {
     if (result.ok || result.exceptionCode != 2)
         return ReadLimits::Lesson::None;
     QString key;
-    const ReadLimits::Lesson lesson = m_limits.learn(m_map, block, &key);
+    const ReadLimits::Lesson lesson = (*m_limits)[unit].learn(m_map, block, &key);
     if (lesson == ReadLimits::Lesson::GapsRefused || lesson == ReadLimits::Lesson::Unsupported)
-        Q_EMIT readLimitsLearned(lesson, key);
+        Q_EMIT readLimitsLearned(unit, lesson, key);
     return lesson;
 }
 
@@ -59,6 +80,7 @@ namespace {
 struct ReadJob : std::enable_shared_from_this<ReadJob>
 {
     DeviceClient *client = nullptr;
+    int unit = 0; // the controller asked, whatever the link's id is by the time it answers
     QList<const Parameter *> params;
     Priority priority = Priority::Read;
     std::function<void(const ReadOutcome &)> done;
@@ -72,9 +94,10 @@ struct ReadJob : std::enable_shared_from_this<ReadJob>
         outcome.reads += int(blocks.size());
         for (const ReadBlock &block : blocks) {
             Request req = Request::read(block.address, block.count, priority);
+            req.unitId = unit;
             req.what = DeviceClient::tr("read block %1/%2").arg(++index).arg(outcome.reads);
             auto self = shared_from_this();
-            client->link()->submit(
+            client->submit(
                 req, [self, block](const Result &r) { self->answered(block, r); }, client);
         }
     }
@@ -95,9 +118,9 @@ struct ReadJob : std::enable_shared_from_this<ReadJob>
             for (const Parameter *p : inside(block))
                 outcome.values.insert(
                     p->key, p->decode(r.values.constData() + (p->address - block.address)));
-        } else if (client->noteRefused(block, r) != ReadLimits::Lesson::None) {
+        } else if (client->noteRefused(unit, block, r) != ReadLimits::Lesson::None) {
             // Read again what this block held, planned within what is known now.
-            submit(client->planRead(inside(block)));
+            submit(client->planRead(unit, inside(block)));
         } else {
             outcome.errors << r.errorText;
         }
@@ -108,7 +131,8 @@ struct ReadJob : std::enable_shared_from_this<ReadJob>
     void finish()
     {
         for (const Parameter *p : std::as_const(params)) {
-            if (client->readLimits().isUnsupported(p->key) && !outcome.unsupported.contains(p->key))
+            if (client->readLimits(unit).isUnsupported(p->key) &&
+                !outcome.unsupported.contains(p->key))
                 outcome.unsupported << p->key;
         }
         outcome.ok = outcome.errors.isEmpty();
@@ -123,18 +147,20 @@ void DeviceClient::read(const QList<const Parameter *> &params, Priority priorit
 {
     auto job = std::make_shared<ReadJob>();
     job->client = this;
+    job->unit = currentUnit();
     job->priority = priority;
     job->done = std::move(done);
     for (const Parameter *p : params) {
         if (p && p->readable())
             job->params << p;
     }
-    const QList<ReadBlock> blocks = planRead(params);
+    const QList<ReadBlock> blocks = planRead(job->unit, params);
     if (blocks.isEmpty()) {
+        const ReadLimits &limits = readLimits(job->unit);
         const bool allUnsupported =
             !job->params.isEmpty() &&
             std::all_of(job->params.cbegin(), job->params.cend(),
-                        [this](const Parameter *p) { return m_limits.isUnsupported(p->key); });
+                        [&limits](const Parameter *p) { return limits.isUnsupported(p->key); });
         if (!params.isEmpty() && !allUnsupported)
             job->outcome.errors << tr("nothing readable among the parameters asked for");
         QTimer::singleShot(0, this, [job] { job->finish(); });
@@ -188,7 +214,7 @@ struct WriteJob : std::enable_shared_from_this<WriteJob>
             return;
         }
         auto self = shared_from_this();
-        client->link()->submit(
+        client->submit(
             requests.at(index),
             [self, index](const Result &r) {
                 const QStringList keys = self->requests.at(index).what.split(QStringLiteral(", "));
@@ -218,7 +244,7 @@ struct WriteJob : std::enable_shared_from_this<WriteJob>
         Request req = Request::write(w.parameter->address, w.parameter->encode(w.raw));
         req.what = w.parameter->key;
         auto self = shared_from_this();
-        client->link()->submit(
+        client->submit(
             req,
             [self, index, w](const Result &r) {
                 if (!r.ok) {
@@ -344,7 +370,18 @@ void DeviceClient::command(const Parameter &coil, std::function<void(const Resul
     req.what = coil.key;
     // Stops are safe to repeat; anything that moves or changes state is not.
     req.retryable = coil.command == CommandClass::Emergency || coil.command == CommandClass::Output;
-    m_link->submit(req, std::move(done), this);
+    // A command goes to the controller that was in view when it was given, even if the view
+    // moves to another device before it reaches the wire.
+    if (m_unitId == 0)
+        req.unitId = m_link->settings().deviceId;
+    submit(req, std::move(done), this);
+}
+
+quint64 DeviceClient::submit(Request request, ResultCallback callback, QObject *context)
+{
+    if (m_unitId > 0)
+        request.unitId = m_unitId;
+    return m_link->submit(std::move(request), std::move(callback), context);
 }
 
 } // namespace stepcom

@@ -1,13 +1,19 @@
 #include "device/devicesession.h"
 
 #include "bus/modbuslink.h"
+#include "device/buspoller.h"
+#include "device/idlist.h"
 #include "device/jogcontroller.h"
 #include "device/linkhealth.h"
 #include "device/motionjudge.h"
 #include "device/motionsupervisor.h"
 #include "device/simulatorstarter.h"
 #include "device/statusrecorder.h"
+#include "device/stepmove.h"
 #include "i18n/translators.h"
+
+#include <algorithm>
+#include <memory>
 
 namespace stepcom {
 
@@ -20,6 +26,8 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     , m_motion(new MotionSupervisor(this, m_link)) // before the jog controller, which follows it
     , m_health(new LinkHealth(m_link, this))
     , m_jog(new JogController(this, this))
+    , m_step(new StepMove(this))
+    , m_bus(new BusPoller(m_link, map, this))
 {
     // The outcome is said when the controller showed it, not when the command went out.
     connect(m_motion, &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
@@ -27,6 +35,8 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     });
     m_poller->useStatusKeys(); // the full status; positions and running while a motor runs
     m_poller->setIntervalMs(Poller::intervalFromEnvironment(100));
+    m_bus->setKeys(m_poller->keys());
+    connect(m_bus, &BusPoller::statusChanged, this, &DeviceSession::deviceStatusChanged);
     m_link->traffic()->setMap(&m_client->map());
     connect(m_link, &ModbusLink::opened, this, [this](bool ok, const QString &reason) {
         Q_EMIT connected(ok, reason);
@@ -38,8 +48,11 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             tr("Opened %1; asking the controller").arg(m_link->settings().describe()));
         // Live values first: one status cycle (positions, inputs), then everything else.
         m_readAllAfterStatus = std::exchange(m_readAfterConnect, false) && m_live;
-        if (m_live)
+        if (m_live) {
             m_poller->start();
+            updateBackground();
+            m_bus->start();
+        }
     });
     connect(m_link, &ModbusLink::stateChanged, this, &DeviceSession::linkStateChanged);
     connect(m_link, &ModbusLink::statsChanged, this, &DeviceSession::linkStatsChanged);
@@ -54,6 +67,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     });
     connect(m_link, &ModbusLink::lost, this, [this](const QString &reason) {
         m_poller->stop();
+        m_bus->stop();
         m_store->forgetDeviceValues();
         say(Severity::Error, tr("Link lost: %1").arg(reason));
         Q_EMIT disconnected(reason);
@@ -65,6 +79,9 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             readAll();
     });
     connect(m_client, &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
+    // The background poll plans with, and learns into, the same per-id limits.
+    m_client->shareReadLimits(m_bus->client());
+    connect(m_bus->client(), &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
     connect(m_poller, &Poller::fastChanged, this, &DeviceSession::statusFastChanged);
 }
 
@@ -228,12 +245,11 @@ void DeviceSession::connectSimulator()
     openLink(*s);
 }
 
-QString DeviceSession::controllerKey(const LinkSettings &settings)
+QString DeviceSession::lineKey(const LinkSettings &settings)
 {
-    const QString line = settings.transport == LinkSettings::Transport::Tcp
-                             ? QStringLiteral("%1:%2").arg(settings.host).arg(settings.tcpPort)
-                             : settings.portName;
-    return QStringLiteral("%1#%2").arg(line).arg(settings.deviceId);
+    return settings.transport == LinkSettings::Transport::Tcp
+               ? QStringLiteral("%1:%2").arg(settings.host).arg(settings.tcpPort)
+               : settings.portName;
 }
 
 const ReadLimits &DeviceSession::readLimits() const
@@ -241,9 +257,9 @@ const ReadLimits &DeviceSession::readLimits() const
     return m_client->readLimits();
 }
 
-void DeviceSession::learnt(ReadLimits::Lesson lesson, const QString &key)
+void DeviceSession::learnt(int unit, ReadLimits::Lesson lesson, const QString &key)
 {
-    m_knownLimits.insert(controllerKey(m_link->settings()), m_client->readLimits());
+    m_knownLimits.insert(lineKey(m_link->settings()), m_client->allReadLimits());
     QString text;
     if (lesson == ReadLimits::Lesson::GapsRefused) {
         text = tr("The controller refuses reads that cover reserved registers; from now on only "
@@ -253,19 +269,21 @@ void DeviceSession::learnt(ReadLimits::Lesson lesson, const QString &key)
         text = tr("%1 (register %2) is not supported by this controller: it refuses to read it. "
                   "It is left out from now on.")
                    .arg(key, p ? p->registerName() : QString());
-        m_store->setUnsupported(m_client->readLimits().unsupported());
+        if (unit == deviceInView())
+            m_store->setUnsupported(m_client->readLimits(unit).unsupported());
     }
     if (text.isEmpty())
         return;
+    if (deviceIds().size() > 1)
+        text = tr("Device id %1: %2").arg(unit).arg(text);
     say(Severity::Warning, text);
     Q_EMIT readLimitsLearned(text);
 }
 
 void DeviceSession::openLink(const LinkSettings &settings)
 {
-    const ReadLimits known = m_knownLimits.value(controllerKey(settings));
-    m_client->setReadLimits(known);
-    m_store->setUnsupported(known.unsupported());
+    m_client->setAllReadLimits(m_knownLimits.value(lineKey(settings)));
+    m_store->setUnsupported(m_client->readLimits(settings.deviceId).unsupported());
     m_readAfterConnect = true;
     m_link->resetStats(); // statistics are per connection
     m_link->open(settings);
@@ -275,6 +293,7 @@ void DeviceSession::disconnectFrom(const QString &reason)
 {
     const QString why = reason.isEmpty() ? tr("disconnected by the user") : reason;
     m_poller->stop();
+    m_bus->stop();
     m_link->close(why);
     m_store->forgetDeviceValues();
     Q_EMIT disconnected(why);
@@ -394,18 +413,174 @@ void DeviceSession::emergencyStop()
     }
     // Anything still waiting (polls, reads, queued moves) is stale after an emergency stop.
     m_link->cancelQueued(Priority::Command, tr("emergency stop"));
+    const QList<int> ids = deviceIds();
+    if (ids.size() > 1) {
+        emergencyStopAll(ids);
+        return;
+    }
     say(Severity::Warning, tr("E-STOP sent"));
     command(QStringLiteral("estop"));
 }
 
+void DeviceSession::setTravelLimits(const TravelLimits &limits)
+{
+    if (limits == m_limits)
+        return;
+    m_limits = limits;
+    Q_EMIT travelLimitsChanged();
+}
+
+void DeviceSession::guard(Risk risk, Proceed proceed)
+{
+    if (m_guard)
+        m_guard(risk, std::move(proceed));
+    else
+        proceed(QString());
+}
+
+void DeviceSession::guardedCommand(Risk risk, const QString &key)
+{
+    guard(risk, [this, key](const QString &refusal) {
+        if (refusal.isEmpty()) {
+            command(key);
+            return;
+        }
+        say(Severity::Error, refusal);
+        Q_EMIT commandFinished(key, false);
+    });
+}
+
+void DeviceSession::emergencyStopAll(const QList<int> &ids)
+{
+    const Parameter *estop = map().find(QStringLiteral("estop"));
+    if (!estop || !estop->isCoil()) {
+        say(Severity::Error, tr("Unknown command %1").arg(QStringLiteral("estop")));
+        return;
+    }
+    say(Severity::Warning, tr("E-STOP sent to %n controller(s): id %1", nullptr, int(ids.size()))
+                               .arg(IdList::format(ids)));
+    struct Tally
+    {
+        QList<int> acknowledged;
+        QList<int> notAcknowledged;
+        QStringList errors;
+        int pending = 0;
+    };
+    auto tally = std::make_shared<Tally>();
+    tally->pending = int(ids.size());
+    // All at emergency priority, in the order of the list: each is next on the wire.
+    for (int id : ids) {
+        Request req = Request::coil(estop->address, true, Priority::Emergency);
+        req.what = estop->key;
+        req.unitId = id;
+        m_link->submit(
+            req,
+            [this, id, ids, tally](const Result &r) {
+                (r.ok ? tally->acknowledged : tally->notAcknowledged).append(id);
+                if (!r.ok)
+                    tally->errors << r.errorText;
+                if (id == deviceInView() && r.ok)
+                    Q_EMIT commandFinished(QStringLiteral("estop"), true);
+                if (--tally->pending > 0)
+                    return;
+                auto inOrder = [&ids](QList<int> list) {
+                    std::sort(list.begin(), list.end(),
+                              [&ids](int a, int b) { return ids.indexOf(a) < ids.indexOf(b); });
+                    return list;
+                };
+                const QList<int> ack = inOrder(tally->acknowledged);
+                const QList<int> nack = inOrder(tally->notAcknowledged);
+                if (nack.isEmpty())
+                    say(Severity::Warning, tr("E-STOP acknowledged by every controller: id %1")
+                                               .arg(IdList::format(ack)));
+                else
+                    say(Severity::Error,
+                        tr("E-STOP NOT acknowledged by id %1 (%2); acknowledged by: %3")
+                            .arg(IdList::format(nack), tally->errors.join(QLatin1String("; ")),
+                                 ack.isEmpty() ? tr("none") : IdList::format(ack)));
+                Q_EMIT emergencyStopFinished(ack, nack);
+            },
+            this);
+    }
+}
+
+void DeviceSession::setDeviceIds(const QList<int> &ids)
+{
+    m_deviceIds = ids;
+    updateBackground();
+}
+
+QList<int> DeviceSession::deviceIds() const
+{
+    if (m_deviceIds.isEmpty())
+        return {deviceInView()};
+    return m_deviceIds;
+}
+
+int DeviceSession::deviceInView() const
+{
+    return m_link->settings().deviceId;
+}
+
+bool DeviceSession::showDevice(int id)
+{
+    if (!deviceIds().contains(id)) {
+        say(Severity::Error,
+            tr("Device id %1 is not on this line (%2)").arg(id).arg(IdList::format(deviceIds())));
+        return false;
+    }
+    if (id == deviceInView())
+        return true;
+    stopJogging(JogStop::PageLeft); // its stops are addressed to the device they run on
+    const bool polling = m_poller->isActive();
+    m_poller->stop();
+    m_bus->stop();
+    // Reads queued for the device that was in view would land in the new one's store.
+    m_link->cancelQueued(Priority::Read, tr("showing device %1").arg(id));
+    m_link->setDeviceId(id);
+    m_store->forgetDeviceValues();
+    m_store->setUnsupported(m_client->readLimits(id).unsupported());
+    updateBackground();
+    Q_EMIT deviceInViewChanged(id);
+    if (m_link->isConnected() && m_live) {
+        readAll();
+        if (polling)
+            m_poller->start();
+        m_bus->start();
+    }
+    return true;
+}
+
+void DeviceSession::setBackgroundIntervalMs(int ms)
+{
+    m_bus->setIntervalMs(ms);
+}
+
+int DeviceSession::backgroundIntervalMs() const
+{
+    return m_bus->intervalMs();
+}
+
+BusDeviceStatus DeviceSession::deviceStatus(int id) const
+{
+    return m_bus->status(id);
+}
+
+void DeviceSession::updateBackground()
+{
+    QList<int> others = deviceIds();
+    others.removeAll(deviceInView());
+    m_bus->setDevices(others);
+}
+
 void DeviceSession::saveToFlash()
 {
-    command(QStringLiteral("save_to_flash"));
+    guardedCommand(Risk::SaveToFlash, QStringLiteral("save_to_flash"));
 }
 
 void DeviceSession::factoryReset()
 {
-    command(QStringLiteral("factory_reset"));
+    guardedCommand(Risk::FactoryReset, QStringLiteral("factory_reset"));
 }
 
 void DeviceSession::changeLink(int deviceId, int baud)
@@ -420,6 +595,19 @@ void DeviceSession::changeLink(int deviceId, int baud)
         writes.append({rate, baud});
     if (writes.isEmpty())
         return;
+    const Risk risk = writes.first().parameter == id ? Risk::DeviceId : Risk::Baud;
+    guard(risk, [this, writes, previous](const QString &refusal) {
+        if (refusal.isEmpty()) {
+            writeLink(writes, previous);
+            return;
+        }
+        say(Severity::Error, refusal);
+        Q_EMIT linkChangeFailed(previous, refusal);
+    });
+}
+
+void DeviceSession::writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous)
+{
     m_client->write(writes, [this, writes, previous](const WriteOutcome &outcome) {
         m_store->applyWriteOutcome(writes, outcome);
         if (outcome.ok) {

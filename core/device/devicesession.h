@@ -5,9 +5,11 @@
 #include "bus/linkstats.h"    // LinkStats
 #include "bus/request.h"      // Priority, Result
 #include "bus/trafficlog.h"   // TrafficLog, TrafficEntry
+#include "device/busdevicestatus.h"
 #include "device/deviceclient.h"
 #include "device/parameterstore.h"
 #include "device/poller.h" // PollStats
+#include "motion/travellimits.h"
 
 #include <QObject>
 
@@ -15,12 +17,14 @@
 
 namespace stepcom {
 
+class BusPoller;
 class JogController;
 class LinkHealth;
 class ModbusLink;
 class MotionSupervisor;
 class SimulatorStarter;
 class StatusRecorder;
+class StepMove;
 
 // One controller connection and everything known about it. Every front-end (the window,
 // stepcomctl, the benchmark, the screenshot tool, the tests) works through this: it reads,
@@ -39,6 +43,13 @@ public:
     // Why every jog must stop now (the rules live here; the window reports what happened).
     enum class JogStop { PageLeft, FocusLost, WindowClosing };
     Q_ENUM(JogStop)
+    // Operations after which the controller's settings cannot be had back unless saved first.
+    enum class Risk { Apply, FactoryReset, SaveToFlash, DeviceId, Baud };
+    Q_ENUM(Risk)
+    // Runs before a risky operation (the window's backup), then calls `proceed` once: with an
+    // empty text when it may go on, else why it may not (nothing is done then).
+    using Proceed = std::function<void(const QString &refusal)>;
+    using RiskGuard = std::function<void(Risk risk, Proceed proceed)>;
 
     explicit DeviceSession(const RegisterMap &map = RegisterMap::builtin(),
                            QObject *parent = nullptr);
@@ -51,6 +62,17 @@ public:
     JogController *jog() const { return m_jog; }
     // Follows motion commands to their judged outcome and keeps each axis' reference state.
     MotionSupervisor *motion() const { return m_motion; }
+    // Step jogs and move-to over the single move, judged by the supervisor.
+    StepMove *stepMove() const { return m_step; }
+    // StepCom's software travel limits (not controller registers): steps and move-to beyond
+    // them are refused, a hold-to-move jog crossing them is stopped on the next poll.
+    const TravelLimits &travelLimits() const { return m_limits; }
+    void setTravelLimits(const TravelLimits &limits);
+    // Installed by the window: a backup before every risky operation the session starts
+    // (saveToFlash, factoryReset, changeLink) and the ones a front-end announces (guard()).
+    void setRiskGuard(RiskGuard guard) { m_guard = std::move(guard); }
+    // Runs `proceed` after the guard (at once, agreed, without one).
+    void guard(Risk risk, Proceed proceed);
     // Port closed / open but not answering / answering: "connected" means answering.
     LinkHealth *health() const { return m_health; }
     // The live status recorded for the plots; made on first use, recording from then on.
@@ -96,7 +118,8 @@ public:
     // What the connected controller refuses to read (gaps, parameters it lacks), learnt from
     // its answers and remembered per line and id for this session's life.
     const ReadLimits &readLimits() const;
-    static QString controllerKey(const LinkSettings &settings);
+    // The line a controller is on (port, or host:port); read limits are kept per line and id.
+    static QString lineKey(const LinkSettings &settings);
 
     void readAll();
     // Read these parameters (or all) and hand the outcome over; the store is left alone.
@@ -123,6 +146,22 @@ public:
     // Stop every jog for this reason; returns how many stops were sent or scheduled.
     int stopJogging(JogStop why);
 
+    // Several controllers on one line (RS-485: one pair of wires, one id each). The link's
+    // device id is the device in view; the others' status is read at the background rate, and
+    // emergencyStop() reaches every one. Empty or one id: a single controller.
+    void setDeviceIds(const QList<int> &ids);
+    QList<int> deviceIds() const;
+    int deviceInView() const;
+    // Show another device of the list without reconnecting: a jog still held is stopped on the
+    // device it runs on, then the store and the live poll move to `id`. False (and a message)
+    // when `id` is not on the list.
+    bool showDevice(int id);
+    // How often each device not in view has its status read.
+    void setBackgroundIntervalMs(int ms);
+    int backgroundIntervalMs() const;
+    // The background poll's view of a device not in view (Unknown before its first read).
+    BusDeviceStatus deviceStatus(int id) const;
+
 Q_SIGNALS:
     void connected(bool ok, const QString &reason);
     void disconnected(const QString &reason);
@@ -138,6 +177,12 @@ Q_SIGNALS:
     void linkChangeFailed(const stepcom::LinkSettings &previous, const QString &reason);
     void statusCycleFinished(bool ok, qint64 ms);
     void statusFastChanged(bool fast);
+    void travelLimitsChanged();
+    void deviceInViewChanged(int id);
+    void deviceStatusChanged(int id);
+    // After emergencyStop(): which controllers acknowledged their E-STOP, and which did not
+    // (in the order of the list).
+    void emergencyStopFinished(const QList<int> &acknowledged, const QList<int> &notAcknowledged);
     // Learnt what the controller refuses to read (said once, in words; also a message()).
     void readLimitsLearned(const QString &text);
 
@@ -146,7 +191,12 @@ private:
 
     void say(Severity severity, const QString &text);
     void openLink(const LinkSettings &settings);
-    void learnt(ReadLimits::Lesson lesson, const QString &key);
+    void learnt(int unit, ReadLimits::Lesson lesson, const QString &key);
+    void guardedCommand(Risk risk, const QString &key);
+    void writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous);
+    // The devices not in view, for the background poll.
+    void updateBackground();
+    void emergencyStopAll(const QList<int> &ids);
     // After a failed write, read back what the controller holds for the keys whose request went
     // out without a good answer.
     void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
@@ -158,13 +208,18 @@ private:
     MotionSupervisor *m_motion; // made before the jog controller, which follows it
     LinkHealth *m_health;
     JogController *m_jog;
+    StepMove *m_step;
+    TravelLimits m_limits;
+    RiskGuard m_guard;
+    BusPoller *m_bus;
+    QList<int> m_deviceIds; // the line's devices in order; empty: the link's id alone
     StatusRecorder *m_recorder = nullptr;
     std::unique_ptr<SimulatorStarter> m_sim;
     bool m_usingSim = false;
     bool m_readAfterConnect = false;
     bool m_readAllAfterStatus = false; // live values first: read everything after one status
     bool m_live = true;
-    QHash<QString, ReadLimits> m_knownLimits; // by controllerKey()
+    QHash<QString, QHash<int, ReadLimits>> m_knownLimits; // by lineKey(), then unit id
 };
 
 } // namespace stepcom

@@ -35,6 +35,7 @@ JogController::JogController(DeviceSession *session, QObject *parent)
     });
     // A motor that kept running after its stop is cleared once the poller sees it idle.
     connect(session, &DeviceSession::statusCycleFinished, this, [this] {
+        stopAtTravelLimits();
         for (int n = 1; n <= motorCount(); ++n) {
             if (at(n).state == State::StillRunning &&
                 m_session->parameters()->deviceValue(motorKey(n, QStringLiteral("running"))) == 0) {
@@ -57,6 +58,28 @@ JogController::~JogController()
             continue;
         if (const Parameter *coil = session->map().find(motorKey(n, QStringLiteral("stop"))))
             session->command(*coil, [](const Result &) {});
+    }
+}
+
+void JogController::stopAtTravelLimits()
+{
+    const TravelLimits &limits = m_session->travelLimits();
+    if (limits.isEmpty())
+        return;
+    for (int n = 1; n <= motorCount(); ++n) {
+        if (at(n).state != State::Jogging)
+            continue;
+        const auto pos =
+            m_session->parameters()->deviceValue(motorKey(n, QStringLiteral("position")));
+        const Parameter *p = TravelLimits::positionParameter(m_session->map(), n);
+        if (!pos || !p)
+            continue;
+        const QString why = limits.crossed(
+            m_session->map(), n, at(n).direction == Direction::Forward, p->toEngineering(*pos));
+        if (!why.isEmpty()) {
+            warn(n, why);
+            stop(n, why);
+        }
     }
 }
 
@@ -165,6 +188,18 @@ bool JogController::press(int motor, Direction direction, Source source)
                                   "stop it before jogging")
                                    .arg(motor));
         return false;
+    }
+    // The software travel limits: an axis at or beyond one may only jog back.
+    if (const auto pos =
+            m_session->parameters()->deviceValue(motorKey(motor, QStringLiteral("position")));
+        pos && !m_session->travelLimits().isEmpty()) {
+        const Parameter *p = TravelLimits::positionParameter(m_session->map(), motor);
+        const QString why = m_session->travelLimits().refuseJog(
+            m_session->map(), motor, direction == Direction::Forward, p->toEngineering(*pos));
+        if (!why.isEmpty()) {
+            say(Severity::Warning, why);
+            return false;
+        }
     }
     const QString local =
         direction == Direction::Forward ? QStringLiteral("forward") : QStringLiteral("reverse");

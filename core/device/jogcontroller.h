@@ -110,6 +110,8 @@ private:
     void onDisconnected(const QString &reason);
     void onConnected(bool ok);
     void maybeSettled();
+    // A polled position at or past a software travel limit in the jog's direction: stop now.
+    void stopAtTravelLimits();
     QString directionText(Direction direction) const;
 
     QPointer<DeviceSession> m_session; // null when we die as the session's child

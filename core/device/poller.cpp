@@ -166,7 +166,7 @@ void Poller::readBlock(int index)
     request.what = tr("poll %1/%2").arg(index + 1).arg(m_cycleBlocks.size());
     const quint64 generation = m_generation;
     m_outstanding = true;
-    m_client->link()->submit(
+    m_client->submit(
         request, [this, generation, index](const Result &r) { onBlockRead(generation, index, r); },
         this);
 }

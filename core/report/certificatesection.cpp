@@ -2,27 +2,15 @@
 
 #include "profile/settingsfingerprint.h"
 
+#include "report/reporthtml.h"
+
 #include <QLocale>
 
 namespace stepcom {
 
 namespace {
 
-QString esc(const QString &s)
-{
-    return s.toHtmlEscaped();
-}
-
-QString row(const QStringList &cells, bool header = false)
-{
-    const QString tag = header ? QStringLiteral("th") : QStringLiteral("td");
-    QString out = QStringLiteral("<tr>");
-    for (const QString &c : cells)
-        out += QStringLiteral("<%1>%2</%1>").arg(tag, c);
-    return out + QStringLiteral("</tr>\n");
-}
-
-const char *kTable = "<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\" width=\"100%\">\n";
+using namespace reporthtml;
 
 } // namespace
 
@@ -65,9 +53,9 @@ QString CertificateSection::checklist() const
     const QLocale locale = m_in.locale.isEmpty() ? QLocale() : QLocale(m_in.locale);
     h += QLatin1String(kTable);
     // Widths for the header cells: the measurements need the room, the time needs little.
-    h += QStringLiteral("<tr><th width=\"22%\">%1</th><th width=\"13%\">%2</th>"
+    h += QStringLiteral("<thead><tr><th width=\"22%\">%1</th><th width=\"13%\">%2</th>"
                         "<th width=\"35%\">%3</th><th width=\"12%\">%4</th>"
-                        "<th width=\"18%\">%5</th></tr>\n")
+                        "<th width=\"18%\">%5</th></tr></thead>\n")
              .arg(esc(tr("Step")), esc(tr("Result")), esc(tr("Measured")), esc(tr("Time")),
                   esc(tr("Note")));
     for (const ChecklistStep &s : c.steps()) {

@@ -3,6 +3,7 @@
 #include "device/wiringcheck.h"
 #include "profile/settingsfingerprint.h"
 #include "report/certificatesection.h"
+#include "report/reporthtml.h"
 #include "report/xypicture.h"
 
 #include <QBuffer>
@@ -22,21 +23,7 @@ namespace {
 const QString kImageName = QStringLiteral("stepcom-xy.png");
 const QSize kImageSize(900, 900);
 
-QString esc(const QString &s)
-{
-    return s.toHtmlEscaped();
-}
-
-QString row(const QStringList &cells, bool header = false)
-{
-    const QString tag = header ? QStringLiteral("th") : QStringLiteral("td");
-    QString out = QStringLiteral("<tr>");
-    for (const QString &c : cells)
-        out += QStringLiteral("<%1>%2</%1>").arg(tag, c);
-    return out + QStringLiteral("</tr>\n");
-}
-
-const char *kTable = "<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\" width=\"100%\">\n";
+using namespace reporthtml;
 
 } // namespace
 
@@ -101,6 +88,17 @@ QString CommissioningReport::controllerSection() const
     }
     line(m_in.fromFile() ? tr("Report date") : tr("Date"),
          locale.toString(m_in.date, QLocale::LongFormat));
+    if (!m_in.fromFile()) {
+        line(tr("Values read"), m_in.lastRead.isValid()
+                                    ? locale.toString(m_in.lastRead, QLocale::LongFormat)
+                                    : QStringLiteral("—"));
+        line(tr("Flash"),
+             !m_in.savedToFlash ? tr("unknown: this program did not follow the writes")
+             : *m_in.savedToFlash
+                 ? tr("saved: nothing written since connecting or since the last save to flash")
+                 : tr("NOT saved: values were written since the last save to flash and are lost "
+                      "at power-off"));
+    }
     line(tr("StepCom version"), QStringLiteral(STEPCOM_VERSION));
     // One line to compare two machines by: the same settings give the same line.
     line(tr("Settings fingerprint"),
@@ -264,14 +262,16 @@ QString CommissioningReport::html(const QString &imageSource) const
     h += controllerSection();
     h += certificate.checklist();
     h += wiringSection();
-    h += interpolationSection(imageSource);
-    h += certificate.travelLimits();
+    // The long tables run from the first page on; the picture, which cannot be split, comes
+    // after them so it never leaves a half-empty first page behind.
     h += parameterSection();
     if (!m_in.unsupported.isEmpty())
         h += QStringLiteral("<p>%1</p>\n")
                  .arg(esc(tr("Not supported by this controller (it refuses to read them, a "
                              "firmware variant): %1")
                               .arg(m_in.unsupported.join(QLatin1String(", ")))));
+    h += certificate.travelLimits();
+    h += interpolationSection(imageSource);
     h += fileSection();
     h += QStringLiteral("<h2>%1</h2>\n").arg(esc(tr("Notes")));
     h += QStringLiteral("<p>%1</p>\n")

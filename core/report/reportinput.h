@@ -28,7 +28,13 @@ public:
     QString title; // e.g. the machine's name
     QString notes;
     QDateTime date;
-    QString locale;          // "zh_CN" for the map's Chinese labels, else English
+    QString locale; // "zh_CN" for the map's Chinese labels, else English
+    // When the values were read from the controller (invalid: made from a file).
+    QDateTime lastRead;
+    // Whether what StepCom wrote is in the controller's flash: true when nothing was written
+    // since connecting or since the last verified save to flash, false when a write since then
+    // would be lost at power-off; unknown (nullopt) when the program did not watch (stepcomctl).
+    std::optional<bool> savedToFlash;
     QStringList unsupported; // keys the controller does not have (refused to read them)
 
     // Made from a file, not read from a controller: the file's name, and what its metadata

@@ -16,6 +16,9 @@ class XyPicture
 public:
     XyPicture(const RegisterMap &map, const QHash<QString, qint64> &values);
     QImage render(const QSize &size) const;
+    // The distance between grid lines for a drawing `span` wide: 1, 2 or 5 times a power of ten,
+    // about a sixth of it.
+    static double gridStep(double span);
     // Why the arc cannot be drawn (start on the centre, three points on a line), or empty.
     QString arcProblem() const { return m_arcProblem; }
 
@@ -28,6 +31,7 @@ private:
     Shape m_arc;
     Shape m_line;
     QString m_arcProblem;
+    QString m_unit; // of the positions ("mm")
 };
 
 } // namespace stepcom

@@ -16,6 +16,7 @@ std::optional<LinkSettings> BuiltinSimulator::start(const RegisterMap &map, QStr
     if (!m_host->isRunning()) {
         SimOptions options;
         options.map = map;
+        options.ids = m_ids;
 #ifdef Q_OS_UNIX
         options.rtu = true;
 #else

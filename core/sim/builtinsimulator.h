@@ -2,6 +2,8 @@
 
 #include "device/simulatorstarter.h"
 
+#include <QList>
+
 #include <memory>
 
 namespace stepcom {
@@ -22,11 +24,15 @@ public:
     bool isRunning() const override;
     bool serves(const LinkSettings &settings) const override;
 
+    // Several controllers on the one line (SimOptions::ids), for the next start().
+    void setIds(const QList<int> &ids) { m_ids = ids; }
+
     // The running simulator, for the tools and tests that act on the simulated machine.
     SimHost *host() const { return m_host.get(); }
 
 private:
     std::unique_ptr<SimHost> m_host;
+    QList<int> m_ids;
 };
 
 } // namespace stepcom

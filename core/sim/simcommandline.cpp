@@ -1,5 +1,7 @@
 #include "sim/simcommandline.h"
 
+#include "device/idlist.h"
+
 #include <QCoreApplication>
 #include <QRegularExpression>
 
@@ -52,6 +54,10 @@ void SimCommandLine::addOptions(QCommandLineParser &p)
                     "40110): reads and writes covering it get exception 02. Repeatable."),
                  tr("REGISTER")});
     p.addOption({QStringLiteral("id"), tr("Device id 1-255 (overrides the saved one)."), n});
+    p.addOption({QStringLiteral("ids"),
+                 tr("Several controllers on the one port, one per id (e.g. 1,2,3 or 1-3); a "
+                    "repeated id is a collision: both answer at once."),
+                 tr("IDS")});
     p.addOption({QStringLiteral("state"),
                  tr("The simulator's flash: saved parameters are loaded from and saved to FILE."),
                  tr("FILE")});
@@ -180,6 +186,15 @@ bool SimCommandLine::toOptions(const QCommandLineParser &p, SimOptions *o, QStri
         !intOption("seed", 0, std::numeric_limits<int>::max(), &seed))
         return false;
     o->faults.seed = quint32(seed);
+    if (p.isSet(QStringLiteral("ids"))) {
+        if (p.isSet(QStringLiteral("id")))
+            return fail(tr("--ids: give either --id or --ids, not both"));
+        QString why;
+        const auto ids = IdList::parse(p.value(QStringLiteral("ids")), &why, true);
+        if (!ids)
+            return fail(QStringLiteral("--ids: %1").arg(why));
+        o->ids = *ids;
+    }
     for (const char *name : {"drop", "corrupt-crc"}) {
         const QString key = QLatin1String(name);
         if (!p.isSet(key))

@@ -19,17 +19,16 @@ SimHost::~SimHost()
     stop();
 }
 
-bool SimHost::start(const SimOptions &options, QString *error)
+std::unique_ptr<SimDevice> SimHost::makeDevice(const SimOptions &options, int id,
+                                               const QString &statePath, QString *error)
 {
-    stop();
-    m_options = options;
-    m_device = std::make_unique<SimDevice>(options.map);
-    SimDevice &d = *m_device;
+    auto device = std::make_unique<SimDevice>(options.map);
+    SimDevice &d = *device;
     for (int n = 1; n <= d.motorCount(); ++n) {
         d.setTravel(n, options.travel);
         d.setMachinePosition(n, options.startPosition);
     }
-    d.setStatePath(options.statePath);
+    d.setStatePath(statePath);
     d.setStrictReads(options.strictReads);
     QSet<QString> lacking;
     for (const QString &name : options.lacks) {
@@ -41,7 +40,7 @@ bool SimHost::start(const SimOptions &options, QString *error)
         if (!p || !p->isHolding()) {
             if (error)
                 *error = tr("--lacks: %1 is no listed register of the map").arg(name);
-            return false;
+            return nullptr;
         }
         lacking.insert(p->key);
     }
@@ -50,12 +49,12 @@ bool SimHost::start(const SimOptions &options, QString *error)
     if (!d.loadState(&loadError)) {
         if (error)
             *error = loadError;
-        return false;
+        return nullptr;
     }
     if (!loadError.isEmpty())
         Q_EMIT message(loadError); // some saved values were not taken
-    if (options.deviceId != 0 && !d.setValue(QStringLiteral("device.id"), options.deviceId, error))
-        return false;
+    if (id != 0 && !d.setValue(QStringLiteral("device.id"), id, error))
+        return nullptr;
     for (const auto &[input, force] : options.inputs)
         d.setInput(input, force);
     if (!options.manualClock) {
@@ -63,10 +62,44 @@ bool SimHost::start(const SimOptions &options, QString *error)
         clock.start();
         d.setClock([clock] { return clock.elapsed(); });
     }
+    return device;
+}
+
+QList<SimDevice *> SimHost::devices() const
+{
+    QList<SimDevice *> list;
+    for (const auto &d : m_devices)
+        list.append(d.get());
+    return list;
+}
+
+SimDevice *SimHost::deviceAt(int id) const
+{
+    for (const auto &d : m_devices)
+        if (d->deviceId() == id)
+            return d.get();
+    return nullptr;
+}
+
+bool SimHost::start(const SimOptions &options, QString *error)
+{
+    stop();
+    m_options = options;
+    m_devices.clear();
+    const QList<int> ids = options.ids.isEmpty() ? QList<int>{options.deviceId} : options.ids;
+    for (qsizetype i = 0; i < ids.size(); ++i) {
+        QString statePath = options.statePath;
+        if (i > 0 && !statePath.isEmpty())
+            statePath += QStringLiteral("-%1").arg(i + 1);
+        auto device = makeDevice(options, ids.at(i), statePath, error);
+        if (!device)
+            return false;
+        m_devices.push_back(std::move(device));
+    }
 
     m_thread = new QThread(this);
     m_thread->setObjectName(QStringLiteral("stepcom-sim"));
-    m_worker = new SimWorker(m_device.get(), options);
+    m_worker = new SimWorker(devices(), options);
     m_worker->onPtyPath = [this](const QString &path) {
         QMutexLocker lock(&m_pathMutex);
         m_ptyPath = path;
@@ -140,6 +173,7 @@ SimHost::Stats SimHost::stats() const
     s.corrupted = c.corrupted;
     s.late = c.late;
     s.wrongBaud = c.wrongBaud;
+    s.collisions = c.collisions;
     return s;
 }
 

@@ -8,6 +8,7 @@
 #include <QString>
 
 #include <memory>
+#include <vector>
 
 QT_BEGIN_NAMESPACE
 class QThread;
@@ -35,6 +36,7 @@ public:
         int corrupted = 0;
         int late = 0;
         int wrongBaud = 0;
+        int collisions = 0;
     };
 
     explicit SimHost(QObject *parent = nullptr);
@@ -56,7 +58,11 @@ public:
 
     // The controller itself, thread-safe; valid from start() until the next start() or the
     // host's destruction.
-    SimDevice *device() const { return m_device.get(); }
+    SimDevice *device() const { return m_devices.empty() ? nullptr : m_devices.front().get(); }
+    // Every controller on the line, in the order of SimOptions::ids.
+    QList<SimDevice *> devices() const;
+    // The first controller whose id is `id` now; null when none has it.
+    SimDevice *deviceAt(int id) const;
 
     // Hang up every port now; they come back after `pauseMs` (-1: the fault options' pause).
     void hangUp(int pauseMs = -1);
@@ -68,8 +74,11 @@ Q_SIGNALS:
     void message(const QString &text);
 
 private:
+    std::unique_ptr<SimDevice> makeDevice(const SimOptions &options, int id,
+                                          const QString &statePath, QString *error);
+
     SimOptions m_options;
-    std::unique_ptr<SimDevice> m_device;
+    std::vector<std::unique_ptr<SimDevice>> m_devices;
     QThread *m_thread = nullptr;
     SimWorker *m_worker = nullptr;
     quint16 m_tcpPort = 0;

@@ -36,7 +36,12 @@ struct SimOptions
     // reads and writes covering them get exception 02. Resolved against the map at start.
     QStringList lacks;
 
-    int deviceId = 0;  // 1-255 overrides the saved id; 0 keeps it
+    int deviceId = 0; // 1-255 overrides the saved id; 0 keeps it
+    // Several controllers on the one port (an RS-485 line), one per entry, each with its own
+    // registers, state and motion, answering only frames addressed to its id. A repeated id is a
+    // collision: both controllers act and answer at once, and the client gets garbage.
+    // Empty: one controller (deviceId). The n-th (n > 1) saves to statePath + "-n".
+    QList<int> ids;
     QString statePath; // the "flash" file; empty: saved values live in memory only
 
     int answerDelayMs = -1; // -1: the map's answer delay (35 ms)

@@ -4,9 +4,9 @@
 
 namespace stepcom {
 
-SimResponder::SimResponder(SimDevice *device, int answerDelayMs, int wireBaud,
+SimResponder::SimResponder(QList<SimDevice *> devices, int answerDelayMs, int wireBaud,
                            const FaultOptions &faults)
-    : m_device(device)
+    : m_devices(std::move(devices))
     , m_answerDelayMs(answerDelayMs)
     , m_wireBaud(wireBaud)
     , m_faults(faults)
@@ -21,8 +21,45 @@ int SimResponder::wireTimeMs(int requestPduBytes, int answerPduBytes, int baud)
     return int((bits * 1000 + baud - 1) / baud);
 }
 
-SimResponder::Outcome SimResponder::respond(const QModbusRequest &request)
+QList<SimDevice *> SimResponder::devicesAt(int unit) const
 {
+    QList<SimDevice *> found;
+    for (SimDevice *d : m_devices)
+        if (unit == 0 || d->deviceId() == unit)
+            found.append(d);
+    return found;
+}
+
+SimResponder::Outcome SimResponder::respond(int unit, const QModbusRequest &request)
+{
+    const QList<SimDevice *> targets = devicesAt(unit);
+    if (targets.isEmpty())
+        return {}; // someone else's request: silence
+    if (unit == 0 || targets.size() > 1) {
+        // Every controller that heard it acts; a broadcast is never answered, and two
+        // answers at once are garbage on an RS-485 pair.
+        Outcome out;
+        QModbusResponse first;
+        for (SimDevice *d : targets) {
+            const SimAnswer answer = d->handle(request);
+            out.linkChanged = answer.linkChanged || out.linkChanged;
+            if (!first.isValid())
+                first = answer.response;
+        }
+        if (unit == 0 || !first.isValid())
+            return out;
+        ++m_counters.requests;
+        ++m_counters.collisions;
+        // An answer of the right length whose bytes the other controller's answer garbled:
+        // the client's CRC check rejects it.
+        out.collision = true;
+        out.corruptCrc = true;
+        out.response = first;
+        out.delayMs =
+            m_answerDelayMs + wireTimeMs(int(request.size()), int(first.size()), m_wireBaud);
+        return out;
+    }
+    SimDevice *device = targets.first();
     ++m_counters.requests;
     const FaultInjector::Decision fault = m_faults.next();
     Outcome out;
@@ -30,7 +67,7 @@ SimResponder::Outcome SimResponder::respond(const QModbusRequest &request)
         out.response = QModbusExceptionResponse(
             request.functionCode(), QModbusExceptionResponse::ExceptionCode(fault.exceptionCode));
     } else {
-        const SimAnswer answer = m_device->handle(request);
+        const SimAnswer answer = device->handle(request);
         out.response = answer.response;
         out.linkChanged = answer.linkChanged;
     }

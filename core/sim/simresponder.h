@@ -2,6 +2,7 @@
 
 #include "sim/faultinjector.h"
 
+#include <QList>
 #include <QModbusPdu>
 
 #include <atomic>
@@ -23,6 +24,7 @@ public:
         bool corruptCrc = false;
         bool hangUp = false;
         bool linkChanged = false;
+        bool collision = false; // two or more controllers answered at once: garbage on the wire
     };
     struct Counters
     {
@@ -33,20 +35,30 @@ public:
         std::atomic<int> corrupted{0};
         std::atomic<int> late{0};
         std::atomic<int> wrongBaud{0};
+        std::atomic<int> collisions{0};
     };
 
-    SimResponder(SimDevice *device, int answerDelayMs, int wireBaud, const FaultOptions &faults);
+    // `devices`: every controller on the line (at least one), in their order.
+    SimResponder(QList<SimDevice *> devices, int answerDelayMs, int wireBaud,
+                 const FaultOptions &faults);
 
-    Outcome respond(const QModbusRequest &request);
+    // A request addressed to `unit`: every controller with that id acts on it; none is silence,
+    // two or more answer at once (a collision). Unit 0 (broadcast) is acted on by all, unanswered.
+    Outcome respond(int unit, const QModbusRequest &request);
     // The bytes of an RTU request and answer plus 7 characters of silence at `baud`,
     // 10 bits a byte, in whole milliseconds rounded up.
     static int wireTimeMs(int requestPduBytes, int answerPduBytes, int baud);
 
-    SimDevice *device() const { return m_device; }
+    // The first controller on the line.
+    SimDevice *device() const { return m_devices.first(); }
+    const QList<SimDevice *> &devices() const { return m_devices; }
+    // The controllers that currently have this id (more than one: a collision).
+    QList<SimDevice *> devicesAt(int unit) const;
+    bool hasDevice(int unit) const { return !devicesAt(unit).isEmpty(); }
     Counters &counters() { return m_counters; }
 
 private:
-    SimDevice *m_device;
+    QList<SimDevice *> m_devices;
     int m_answerDelayMs;
     int m_wireBaud;
     FaultInjector m_faults;

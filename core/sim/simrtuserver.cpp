@@ -42,9 +42,17 @@ bool SimRtuServer::takeCorruptCrc()
     return corrupt;
 }
 
+void SimRtuServer::setRequestUnit(int unit)
+{
+    m_unit = unit;
+    if (unit > 0)
+        setServerAddress(unit);
+}
+
 QModbusResponse SimRtuServer::processRequest(const QModbusPdu &request)
 {
-    SimDevice *device = m_responder->device();
+    const int unit = m_unit >= 0 ? m_unit : serverAddress();
+    SimDevice *device = m_responder->devicesAt(unit).value(0, m_responder->device());
     if (m_clientBaud) {
         const int clientBaud = m_clientBaud();
         if (clientBaud != 0 && clientBaud != device->baud()) {
@@ -52,7 +60,7 @@ QModbusResponse SimRtuServer::processRequest(const QModbusPdu &request)
             return {};
         }
     }
-    const SimResponder::Outcome out = m_responder->respond(QModbusRequest(request));
+    const SimResponder::Outcome out = m_responder->respond(unit, QModbusRequest(request));
     if (!out.response.isValid())
         return {};
     // The server thread may sleep: it is the simulator's own, and a controller is busy then.

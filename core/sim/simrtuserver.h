@@ -23,6 +23,9 @@ public:
 
     // True once: the answer just handed to the port must leave with a broken CRC.
     bool takeCorruptCrc();
+    // The address of the frame arriving now (seen by the bridge before the server reads it):
+    // Qt's server answers one address, so it is pointed at each request's controller in turn.
+    void setRequestUnit(int unit);
 
 Q_SIGNALS:
     // The fault plan says: hang up after this answer.
@@ -38,6 +41,7 @@ private:
     SimResponder *m_responder;
     std::function<int()> m_clientBaud;
     bool m_corruptNext = false;
+    int m_unit = -1; // -1: the server's own address
 };
 
 } // namespace stepcom

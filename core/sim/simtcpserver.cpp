@@ -114,17 +114,19 @@ void SimTcpServer::onReadyRead(QTcpSocket *socket)
         const quint8 unit = quint8(buf.at(6));
         const QByteArray pduBytes = buf.mid(kHeader, length - 1);
         it->remove(0, 6 + length);
-        if (unit != m_responder->device()->deviceId())
-            continue; // someone else's request: silence
         const QModbusRequest request(QModbusPdu::FunctionCode(quint8(pduBytes.at(0))),
                                      pduBytes.mid(1));
-        const SimResponder::Outcome out = m_responder->respond(request);
-        if (!out.response.isValid())
+        // Another id's request is silence; unit 0 is a broadcast, never answered.
+        const SimResponder::Outcome out = m_responder->respond(unit, request);
+        if (!out.response.isValid() || unit == 0)
             continue;
         QByteArray frame;
         QDataStream stream(&frame, QIODevice::WriteOnly);
         stream << transaction << quint16(0) << quint16(out.response.size() + 1) << unit
                << out.response;
+        if (out.collision) // two answers at once: the gateway passes on garbled bytes
+            for (qsizetype i = kHeader; i < frame.size(); ++i)
+                frame[i] = char(frame.at(i) ^ (0x5A + i));
         QPointer<QTcpSocket> target(socket);
         const bool hangUpAfter = out.hangUp;
         QTimer::singleShot(out.delayMs, this, [this, target, frame, hangUpAfter] {

@@ -12,13 +12,15 @@
 
 namespace stepcom {
 
-SimWorker::SimWorker(SimDevice *device, const SimOptions &options)
-    : m_device(device)
+SimWorker::SimWorker(QList<SimDevice *> devices, const SimOptions &options)
+    : m_devices(std::move(devices))
+    , m_device(m_devices.first())
     , m_options(options)
 {
     const int delay =
         options.answerDelayMs >= 0 ? options.answerDelayMs : options.map.answerDelayMs();
-    m_responder = std::make_unique<SimResponder>(device, delay, options.wireBaud, options.faults);
+    m_responder =
+        std::make_unique<SimResponder>(m_devices, delay, options.wireBaud, options.faults);
 }
 
 SimWorker::~SimWorker()
@@ -29,13 +31,17 @@ SimWorker::~SimWorker()
 bool SimWorker::open(QString *error)
 {
     // Queued: an answer to the write that changed the id still leaves under the old one.
+    for (SimDevice *other : std::as_const(m_devices))
+        if (other != m_device)
+            other->setLinkObserver({}); // the bridge points the server at each frame's id
     m_device->setLinkObserver([this] {
         QMetaObject::invokeMethod(
             this,
             [this] {
                 if (!m_rtu)
                     return;
-                m_rtu->setServerAddress(m_device->deviceId());
+                if (m_devices.size() == 1)
+                    m_rtu->setServerAddress(m_device->deviceId());
                 // The controller moves to a new baud at once; the port follows once the
                 // answer to the write has left (the answer delay plus its bytes' time).
                 if (serialMode() &&
@@ -83,6 +89,13 @@ bool SimWorker::openRtu(QString *error)
         m_bridge = new PtyBridge(this);
         // Side A is the controller, side B the client's end.
         m_bridge->setTap([this](PtyBridge::Side from, const QByteArray &bytes) {
+            // A request's first byte is its address: Qt's server answers one address, so it
+            // is pointed at the controller the frame is for before it reads the frame.
+            if (from == PtyBridge::Side::B && m_rtu && !bytes.isEmpty() && m_devices.size() > 1) {
+                const int unit = quint8(bytes.at(0));
+                if (m_responder->hasDevice(unit))
+                    m_rtu->setRequestUnit(unit);
+            }
             if (from != PtyBridge::Side::A || !m_rtu || bytes.isEmpty() || !m_rtu->takeCorruptCrc())
                 return bytes;
             QByteArray bad = bytes;

@@ -2,6 +2,7 @@
 
 #include "sim/simoptions.h"
 
+#include <QList>
 #include <QObject>
 #include <QString>
 
@@ -27,7 +28,8 @@ class SimWorker : public QObject
 {
     Q_OBJECT
 public:
-    SimWorker(SimDevice *device, const SimOptions &options);
+    // `devices`: every controller on the line (at least one); the first sets the serial baud.
+    SimWorker(QList<SimDevice *> devices, const SimOptions &options);
     ~SimWorker() override;
 
     // In the worker's thread. On success the pty path and TCP port are known.
@@ -55,7 +57,8 @@ private:
     void reopenRtu();
     void scheduleHangUp();
 
-    SimDevice *m_device;
+    QList<SimDevice *> m_devices;
+    SimDevice *m_device; // the first: its baud is the line's
     SimOptions m_options;
     std::unique_ptr<SimResponder> m_responder;
     PtyBridge *m_bridge = nullptr;

@@ -172,6 +172,42 @@ private Q_SLOTS:
                  qPrintable(r.err));
         QVERIFY(r.out.isEmpty());
     }
+
+    // On a machine with no display (ssh, a build server, a package check) the window's program
+    // still answers --help, --version and a mistyped option instead of aborting.
+    void noDisplay_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("expected"); // in stdout, or in stderr for a mistake
+        QTest::newRow("--version") << QStringList{QStringLiteral("--version")} << 0
+                                   << QStringLiteral("stepcom " STEPCOM_VERSION);
+        QTest::newRow("-v") << QStringList{QStringLiteral("-v")} << 0
+                            << QStringLiteral("stepcom " STEPCOM_VERSION);
+        QTest::newRow("--help") << QStringList{QStringLiteral("--help")} << 0
+                                << QStringLiteral("--port <path>");
+        QTest::newRow("-h zh_CN") << QStringList{QStringLiteral("--lang"), QStringLiteral("zh_CN"),
+                                                 QStringLiteral("-h")}
+                                  << 0 << QStringLiteral("--port <");
+        QTest::newRow("unknown option")
+            << QStringList{QStringLiteral("--frobnicate")} << 1 << QStringLiteral("frobnicate");
+    }
+    void noDisplay()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(int, exitCode);
+        QFETCH(QString, expected);
+        ProgramOptions options;
+        options.cleanLocale = true;
+        options.unset = {QStringLiteral("DISPLAY"), QStringLiteral("WAYLAND_DISPLAY"),
+                         QStringLiteral("QT_QPA_PLATFORM")};
+        options.environment = {QStringLiteral("LC_ALL=C.UTF-8")};
+        options.timeoutMs = 30000;
+        const Run r = runProgram(QStringLiteral("stepcom"), args, options);
+        QVERIFY2(r.exitCode != -2, qPrintable(QStringLiteral("crashed: ") + r.err));
+        QCOMPARE(r.exitCode, exitCode);
+        QVERIFY2((exitCode == 0 ? r.out : r.err).contains(expected), qPrintable(r.out + r.err));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestProgramInfo)

@@ -113,6 +113,50 @@ private Q_SLOTS:
             }
         }
     }
+
+    // Several controllers on one line: what one refuses is learnt for its id alone.
+    void limitsArePerDeviceId()
+    {
+        SimHost host;
+        SimOptions options;
+        options.rtu = true;
+        options.ids = {1, 2};
+        QString error;
+        QVERIFY2(host.start(options, &error), qPrintable(error));
+        host.deviceAt(2)->setStrictReads(true);
+        host.deviceAt(2)->setLacking({QStringLiteral("motor2.position")});
+        DeviceSession session;
+        session.setDeviceIds({1, 2});
+        session.setBackgroundIntervalMs(100);
+        QSignalSpy read(&session, &DeviceSession::readFinished);
+        QSignalSpy learnt(&session, &DeviceSession::readLimitsLearned);
+        session.connectTo(ptyLink(host));
+        QVERIFY(read.wait(10000));
+        QCOMPARE(read.first().first().toBool(), true);
+        // The background poll of id 2 learns both lessons, said with the id.
+        QTRY_COMPARE_WITH_TIMEOUT(learnt.size(), 2, 10000);
+        for (const QList<QVariant> &l : std::as_const(learnt))
+            QVERIFY2(l.first().toString().startsWith(QLatin1String("Device id 2: ")),
+                     qPrintable(l.first().toString()));
+        const ParameterStore *store = session.parameters();
+        QVERIFY(session.readLimits().isEmpty()); // id 1 reads its merged plan as before
+        QCOMPARE(store->state(QStringLiteral("motor2.position")), ParameterStore::State::InSync);
+
+        read.clear();
+        QVERIFY(session.showDevice(2));
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
+        QVERIFY(read.first().first().toBool());
+        QVERIFY(session.readLimits().gapFree());
+        QCOMPARE(store->state(QStringLiteral("motor2.position")),
+                 ParameterStore::State::Unsupported);
+        QCOMPARE(learnt.size(), 2); // nothing learnt twice
+
+        read.clear();
+        QVERIFY(session.showDevice(1));
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
+        QVERIFY(session.readLimits().isEmpty());
+        QCOMPARE(store->state(QStringLiteral("motor2.position")), ParameterStore::State::InSync);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestLiveView)

@@ -51,7 +51,10 @@ expect=(./usr/bin/stepcom ./usr/bin/stepcomctl ./usr/bin/stepcom-sim
         ./usr/share/metainfo/org.stepcom.StepCom.metainfo.xml
         ./usr/share/icons/hicolor/scalable/apps/stepcom.svg
         ./usr/share/man/man1/stepcom.1.gz ./usr/share/man/man1/stepcomctl.1.gz
-        ./usr/share/man/man1/stepcom-sim.1.gz ./usr/share/doc/stepcom/copyright)
+        ./usr/share/man/man1/stepcom-sim.1.gz ./usr/share/doc/stepcom/copyright
+        ./usr/share/stepcom/guide/guide.md ./usr/share/stepcom/guide/guide.zh_CN.md
+        ./usr/share/stepcom/guide/images/en/01-connectionPage.png
+        ./usr/share/stepcom/guide/images/zh_CN/01-connectionPage.png)
 sizes=(16 24 32 48 64 128 256)
 for s in "${sizes[@]}"; do expect+=("./usr/share/icons/hicolor/${s}x${s}/apps/stepcom.png"); done
 for f in "${expect[@]}"; do
@@ -88,6 +91,10 @@ out=$("$root/usr/bin/stepcomctl" --version)
 [[ $out == "stepcomctl $version" ]] || fail "stepcomctl --version printed '$out'"
 out=$("$root/usr/bin/stepcom" --version)
 [[ $out == "stepcom $version" ]] || fail "stepcom --version printed '$out'"
+# Also on a machine with no display at all (ssh, a build server).
+out=$(env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$root/usr/bin/stepcom" --version) \
+    || fail "stepcom --version without a display failed: $out"
+[[ $out == "stepcom $version" ]] || fail "stepcom --version without a display printed '$out'"
 out=$("$root/usr/bin/stepcomctl" --sim read) || fail "stepcomctl --sim read failed: $out"
 grep -q '^motor1\.speed = ' <<<"$out" || fail "stepcomctl --sim read printed no motor1.speed: $out"
 grep -q '^device\.id = 1' <<<"$out" || fail "stepcomctl --sim read printed no device.id: $out"

@@ -11,7 +11,10 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTextBlock>
+#include <QTextCursor>
 #include <QTextDocument>
+#include <QTextTable>
 
 using namespace stepcom;
 using namespace stepcom::test;
@@ -119,6 +122,84 @@ private Q_SLOTS:
         QVERIFY(image.canConvert<QImage>());
         QVERIFY(!image.value<QImage>().isNull());
         QVERIFY(doc->toPlainText().contains(QStringLiteral("motor2.pitch")));
+    }
+
+    // Every table with a header row marks it as one, so it is repeated on each page the
+    // table runs onto; the parameter tables are among them.
+    void tableHeadersRepeatOnEveryPage()
+    {
+        const auto doc = CommissioningReport(input()).document();
+        int tables = 0;
+        int withHeader = 0;
+        for (QTextBlock b = doc->begin(); b.isValid(); b = b.next()) {
+            auto *table = qobject_cast<QTextTable *>(QTextCursor(b).currentTable());
+            if (!table || QTextCursor(b).position() != table->firstPosition())
+                continue;
+            ++tables;
+            if (table->format().headerRowCount() == 1)
+                ++withHeader;
+        }
+        QVERIFY(tables > 10);
+        // Wiring, every parameter group of each motor, signatures...
+        QVERIFY2(withHeader >= 8, qPrintable(QString::number(withHeader)));
+    }
+
+    // The first page is full: the long tables start on it, the picture (which cannot be split)
+    // comes after them.
+    void firstPageIsNotHalfEmpty()
+    {
+        const QString path = dir.filePath(QStringLiteral("pages.pdf"));
+        QCOMPARE(CommissioningReport(input()).write(path), QString());
+        if (!havePdfToText())
+            QSKIP("pdftotext (poppler-utils) is not installed");
+        QProcess p;
+        p.start(QStringLiteral("pdftotext"),
+                {QStringLiteral("-f"), QStringLiteral("1"), QStringLiteral("-l"),
+                 QStringLiteral("1"), path, QStringLiteral("-")});
+        QVERIFY(p.waitForFinished(20000));
+        const QString first = QString::fromUtf8(p.readAllStandardOutput());
+        QVERIFY2(first.contains(QStringLiteral("Parameters")), qPrintable(first));
+        QVERIFY(first.contains(QStringLiteral("motor1.step_angle")));
+    }
+
+    void flashStateAndTimeOfTheRead_data()
+    {
+        QTest::addColumn<int>("saved"); // -1 unknown, 0 not saved, 1 saved
+        QTest::addColumn<QString>("text");
+        QTest::newRow("saved") << 1 << "saved: nothing written since connecting";
+        QTest::newRow("not saved") << 0 << "NOT saved: values were written since the last save";
+        QTest::newRow("unknown") << -1 << "unknown: this program did not follow the writes";
+    }
+    void flashStateAndTimeOfTheRead()
+    {
+        QFETCH(int, saved);
+        QFETCH(QString, text);
+        ReportInput in = input();
+        in.lastRead = QDateTime(QDate(2024, 6, 1), QTime(9, 29, 41));
+        if (saved >= 0)
+            in.savedToFlash = saved == 1;
+        const QString html = CommissioningReport(in).html(QStringLiteral("x.png"));
+        QVERIFY2(html.contains(text), qPrintable(html.left(3000)));
+        QVERIFY(html.contains(QStringLiteral("Values read")));
+        QVERIFY(
+            html.contains(QLocale().toString(in.lastRead, QLocale::LongFormat).toHtmlEscaped()));
+    }
+
+    void gridSteps_data()
+    {
+        QTest::addColumn<double>("span");
+        QTest::addColumn<double>("step");
+        QTest::newRow("100 mm") << 100.0 << 20.0;
+        QTest::newRow("12 mm") << 12.0 << 2.0;
+        QTest::newRow("1.1 mm") << 1.1 << 0.2;
+        QTest::newRow("550 mm") << 550.0 << 100.0;
+        QTest::newRow("60 mm") << 60.0 << 10.0;
+    }
+    void gridSteps()
+    {
+        QFETCH(double, span);
+        QFETCH(double, step);
+        QCOMPARE(XyPicture::gridStep(span), step);
     }
 
     void pictureDrawsTheArcAndTheLine()

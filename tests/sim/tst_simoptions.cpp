@@ -144,9 +144,9 @@ private Q_SLOTS:
         QCOMPARE(SimResponder::wireTimeMs(5, 6, 9600), 25);
         QCOMPARE(SimResponder::wireTimeMs(5, 6, 0), 0);
         SimDevice d;
-        SimResponder r(&d, 35, 9600, {});
-        const auto out =
-            r.respond(QModbusRequest(QModbusPdu::ReadHoldingRegisters, quint16(0), quint16(2)));
+        SimResponder r({&d}, 35, 9600, {});
+        const auto out = r.respond(
+            d.deviceId(), QModbusRequest(QModbusPdu::ReadHoldingRegisters, quint16(0), quint16(2)));
         QCOMPARE(out.delayMs, 35 + 25);
     }
 

@@ -17,6 +17,8 @@ ProgramRun runProgram(const QString &name, const QStringList &args, const Progra
         for (const char *variable : {"LANGUAGE", "LC_ALL", "LC_MESSAGES", "LANG"})
             env.remove(QString::fromLatin1(variable));
     }
+    for (const QString &variable : options.unset)
+        env.remove(variable);
     for (const QString &setting : options.environment)
         env.insert(setting.section(QLatin1Char('='), 0, 0), setting.section(QLatin1Char('='), 1));
     p.setProcessEnvironment(env);

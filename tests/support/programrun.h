@@ -19,6 +19,7 @@ struct ProgramOptions
     QByteArray input;         // written to its standard input, which is then closed
     QStringList environment;  // NAME=VALUE settings on top of the test's environment
     bool cleanLocale = false; // drop LANGUAGE, LC_ALL, LC_MESSAGES, LANG first
+    QStringList unset;        // variables removed from the test's environment (e.g. DISPLAY)
     int timeoutMs = 20000;
 };
 

@@ -14,6 +14,13 @@ void useBuiltinSimulator(DeviceSession &session)
         session.setSimulator(std::make_unique<BuiltinSimulator>());
 }
 
+void useBuiltinSimulator(DeviceSession &session, const QList<int> &ids)
+{
+    auto sim = std::make_unique<BuiltinSimulator>();
+    sim->setIds(ids);
+    session.setSimulator(std::move(sim));
+}
+
 SimHost *simHost(const DeviceSession &session)
 {
     const auto *sim = dynamic_cast<const BuiltinSimulator *>(session.simulatorStarter());

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QList>
+
 namespace stepcom {
 class DeviceSession;
 class SimHost;
@@ -10,6 +12,8 @@ namespace stepcom::test {
 // Hands the session the built-in simulator (stepcom_sim), as the programs with --sim do; does
 // nothing when it has one.
 void useBuiltinSimulator(DeviceSession &session);
+// The same with several controllers on its one line, one per id (SimOptions::ids).
+void useBuiltinSimulator(DeviceSession &session, const QList<int> &ids);
 // The simulator the session started (null before useBuiltinSimulator()).
 SimHost *simHost(const DeviceSession &session);
 

@@ -367,7 +367,13 @@ private Q_SLOTS:
         window.show();
         QVERIFY(window.statusDock());
         QVERIFY(window.statusDock()->isVisible());
-        QCOMPARE(window.dockWidgetArea(window.statusDock()), Qt::RightDockWidgetArea);
+        // Beside the page on a wide screen; on a narrow one (the offscreen default is 800 px
+        // wide) in the bottom tabs, so the page keeps its width (issue 19).
+        const bool wide = window.screen()->availableGeometry().width() >=
+                          window.centralWidget()->minimumSizeHint().width() +
+                              window.statusDock()->minimumSizeHint().width() + 20;
+        QCOMPARE(window.dockWidgetArea(window.statusDock()),
+                 wide ? Qt::RightDockWidgetArea : Qt::BottomDockWidgetArea);
         bool found = false;
         for (Page *p : window.pages())
             found = found || qobject_cast<PlotPage *>(p);

@@ -211,31 +211,17 @@ private Q_SLOTS:
         field(QStringLiteral("motor1.move_distance"))->enterText(QStringLiteral("12"));
         // Reaches no controller: files, languages, editing, connecting (which ends the file
         // editing), and the views of what was recorded or logged.
-        const QSet<QString> harmless{"newProfile",
-                                     "openProfile",
-                                     "saveProfile",
-                                     "saveProfileAs",
-                                     "closeProfile",
-                                     "compareProfiles",
-                                     "reportFromProfile",
-                                     "saveProfileFromEdited",
-                                     "revert",
-                                     "quit",
-                                     "about",
-                                     "emergencyStopButton",
-                                     "emergencyStop",
-                                     "language_en",
-                                     "language_zh_CN",
-                                     "connect",
-                                     "refresh",
-                                     "pauseButton",
-                                     "fitButton",
-                                     "clearTraceButton",
-                                     "exportPngButton",
-                                     "exportCsvButton",
-                                     "recordButton",
-                                     "previewFit",
-                                     "previewExport"};
+        const QSet<QString> harmless{
+            "newProfile", "openProfile", "saveProfile", "saveProfileAs", "closeProfile",
+            "compareProfiles", "reportFromProfile", "saveProfileFromEdited", "revert", "quit",
+            "about", "userGuide", "whatsThis", "emergencyStopButton", "emergencyStop",
+            "language_en", "language_zh_CN", "connect", "refresh", "pauseButton", "fitButton",
+            "clearTraceButton", "exportPngButton", "exportCsvButton", "recordButton", "previewFit",
+            "previewExport",
+            // StepCom's own settings and the checklist file, not the
+            // controller: travel limits, the profile beside the
+            // checklist, a step skipped
+            "applyTravelLimits", "chooseChecklistProfile", "skipButton"};
         const QSet<QString> logViews{"stepcom::TrafficView", "stepcom::MessageView"};
         QStringList enabled;
         for (QAction *a : window->findChildren<QAction *>()) {

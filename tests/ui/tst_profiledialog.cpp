@@ -2,6 +2,7 @@
 #include "device/devicesession.h"
 #include "device/sessioninternals.h"
 #include "dialogs/profilecomparedialog.h"
+#include "dialogs/profilesavedialog.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "profile/profilefile.h"
@@ -13,9 +14,13 @@
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QDate>
+#include <QFileDialog>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -91,6 +96,14 @@ private Q_SLOTS:
         // Opening (and the fresh read it does) writes nothing.
         QTRY_VERIFY(!dialog.isBusy());
         QCOMPARE(simValue("motor1.speed"), speed);
+        // It opens on the differences only.
+        QVERIFY(dialog.differencesOnly()->isChecked());
+        QCOMPARE(visibleRows(t), 4);
+        dialog.differencesOnly()->setChecked(false);
+        // The user widens the key column; Apply below must not undo it.
+        const int widened = t->columnWidth(ProfileCompareDialog::KeyColumn) + 120;
+        t->setColumnWidth(ProfileCompareDialog::KeyColumn, widened);
+        const int unitWidth = t->columnWidth(ProfileCompareDialog::UnitColumn);
 
         QCOMPARE(dialog.checkedKeys(),
                  (QStringList{"motor1.speed", "motor2.pitch", "arc.speed"})); // differing rows
@@ -126,6 +139,8 @@ private Q_SLOTS:
         QCOMPARE(simValue("arc.speed"), arcSpeed); // unchecked: untouched
         QCOMPARE(simValue("device.id"), 1);
         QVERIFY(dialog.resultLabel()->text().contains(QStringLiteral("Wrote and verified 2")));
+        QCOMPARE(t->columnWidth(ProfileCompareDialog::KeyColumn), widened);
+        QCOMPARE(t->columnWidth(ProfileCompareDialog::UnitColumn), unitWidth);
 
         // Then Save to flash is offered.
         QVERIFY(dialog.saveToFlashButton()->isVisible());
@@ -204,6 +219,63 @@ private Q_SLOTS:
         QCOMPARE(simValue("device.id"), 7);
         QCOMPARE(SessionInternals::link(*session)->settings().deviceId, 7); // the link followed
         QCOMPARE(linkChanged.size(), 1);
+    }
+
+    void suggestedNames_data()
+    {
+        QTest::addColumn<QString>("machine");
+        QTest::addColumn<int>("deviceId");
+        QTest::addColumn<QString>("name");
+        QTest::newRow("no machine") << QString() << 3 << "Controller id 3 2026-11-24";
+        QTest::newRow("nothing known") << QString() << 0 << "Profile 2026-11-24";
+        QTest::newRow("machine") << "Press 4" << 1 << "Press 4 2026-11-24";
+        QTest::newRow("machine with a date") << "Press 4 2026-11-20" << 1 << "Press 4 2026-11-24";
+        QTest::newRow("machine_date") << "press4_2026-11-20" << 1 << "press4 2026-11-24";
+    }
+    void suggestedNames()
+    {
+        QFETCH(QString, machine);
+        QFETCH(int, deviceId);
+        QFETCH(QString, name);
+        QCOMPARE(ProfileSaveDialog::suggestName(machine, deviceId, QDate(2026, 11, 24)), name);
+        QCOMPARE(ProfileSaveDialog::fileNameFor(QStringLiteral("Line 2/Station: 4")),
+                 QStringLiteral("Line 2-Station- 4.json"));
+        QCOMPARE(ProfileSaveDialog::fileNameFor(QStringLiteral("..")),
+                 QStringLiteral("profile...json"));
+    }
+
+    // Saving asks for the name (suggested) and notes first; both go into the file, and the
+    // next suggestion follows the machine's name.
+    void saveAsksForNameAndNotes()
+    {
+        ProfileActions actions(session.get(), window.get());
+        connectSim();
+        const QString today = QDate::currentDate().toString(Qt::ISODate);
+        QCOMPARE(actions.suggestedName(), QStringLiteral("Controller id 1 ") + today);
+        QTRY_VERIFY(actions.saveFromEditedAction()->isEnabled());
+        actions.saveFromEditedAction()->trigger();
+        ProfileSaveDialog *ask = actions.saveDialog();
+        QVERIFY(ask && ask->isVisible());
+        QCOMPARE(ask->nameEdit()->text(), actions.suggestedName());
+        ask->nameEdit()->setText(QStringLiteral("Press 4 ") + today);
+        ask->notesEdit()->setPlainText(QStringLiteral("Hall B, set up by Li"));
+        ask->accept();
+        QFileDialog *where = nullptr;
+        QTRY_VERIFY((where = window->findChild<QFileDialog *>()) != nullptr);
+        QVERIFY2(where->selectedFiles().value(0).endsWith(QStringLiteral("/Press 4 ") + today +
+                                                          QStringLiteral(".json")),
+                 qPrintable(where->selectedFiles().join(QLatin1Char(' '))));
+        const QString path = dir.filePath(QStringLiteral("press4.json"));
+        QSignalSpy finished(&actions, &ProfileActions::finished);
+        Q_EMIT where->fileSelected(path);
+        QCOMPARE(finished.size(), 1);
+        QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+        const ProfileParseResult saved = ProfileFile::load(path, session->map());
+        QVERIFY(saved.ok());
+        QCOMPARE(saved.profile->name, QStringLiteral("Press 4 ") + today);
+        QCOMPARE(saved.profile->notes, QStringLiteral("Hall B, set up by Li"));
+        QCOMPARE(actions.suggestedName(), QStringLiteral("Press 4 ") + today);
+        where->close();
     }
 
     void actionsOpenSaveAndRemember()

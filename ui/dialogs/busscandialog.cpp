@@ -13,6 +13,7 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -181,6 +182,9 @@ BusScanDialog::BusScanDialog(DeviceSession *session, const LinkSettings &base, Q
         m_table->setItem(row, BaudColumn, new QTableWidgetItem(QString::number(f.baud)));
         m_table->setItem(row, IdColumn, new QTableWidgetItem(QString::number(f.deviceId)));
         m_table->setItem(row, DetailColumn, new QTableWidgetItem(f.detail));
+        // The whole sentence a person reads ("id 7 at 9600 8N1 — a 2-axis controller, ...").
+        for (int column = 0; column < ColumnCount; ++column)
+            m_table->item(row, column)->setToolTip(f.summary());
         if (m_table->currentRow() < 0)
             m_table->selectRow(row); // so Connect is one click away
         updateStatus();
@@ -191,8 +195,12 @@ BusScanDialog::BusScanDialog(DeviceSession *session, const LinkSettings &base, Q
     retranslate();
     // Sized by the font, so it scales with the screen.
     const QFontMetrics fm = fontMetrics();
-    resize(std::max(sizeHint().width(), fm.averageCharWidth() * 72),
-           std::max(sizeHint().height(), fm.height() * 34));
+    QSize size(std::max(sizeHint().width(), fm.averageCharWidth() * 72),
+               std::max(sizeHint().height(), fm.height() * 34));
+    // Never larger than the screen (a 1366×768 laptop at 150 % has 911×512 to offer).
+    if (const QScreen *where = parent ? parent->screen() : screen())
+        size = size.boundedTo(where->availableGeometry().size() * 0.95);
+    resize(size);
 }
 
 BusScanDialog::~BusScanDialog()
@@ -225,7 +233,7 @@ void BusScanDialog::retranslate()
     m_cancel->setText(tr("&Cancel"));
     m_cancel->setToolTip(tr("Stop the scan now"));
     m_foundBox->setTitle(tr("Controllers found"));
-    m_table->setHorizontalHeaderLabels({tr("Baud"), tr("Device id"), tr("Answer")});
+    m_table->setHorizontalHeaderLabels({tr("Baud"), tr("Device id"), tr("Controller")});
     m_table->setToolTip(tr("Double-click a controller to connect to it"));
     m_connect->setText(tr("C&onnect"));
     m_connect->setToolTip(tr("Connect to the selected controller with its baud rate and id"));
@@ -444,6 +452,9 @@ QString BusScanDialog::statusText() const
     case Outcome::Running:
         return tr("Scanning… %n controller(s) found so far.", nullptr, found);
     case Outcome::Done:
+        if (found == 1 && m_scanner->found().size() == 1)
+            return tr("Scan finished: %1. Press Connect.")
+                .arg(m_scanner->found().first().summary());
         return found ? tr("Scan finished: %n controller(s) found. Select one and press Connect.",
                           nullptr, found)
                      : tr("Scan finished: no controller answered. Check the power, the wiring "

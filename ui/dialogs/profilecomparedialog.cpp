@@ -12,6 +12,7 @@
 #include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -56,6 +57,8 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
     m_saveToFlash->hide();
 
     m_table->setColumnCount(ColumnCount);
+    // Opens on what matters: the values the controller and the profile disagree on.
+    m_differencesOnly->setChecked(true);
     m_table->verticalHeader()->hide();
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -135,7 +138,12 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
 
     refreshValues();
     retranslate();
-    resize(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 120, fontMetrics().height() * 40);
+    QSize size(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 120,
+               fontMetrics().height() * 40);
+    // Never larger than the screen (a 1366×768 laptop at 150 % has 911×512 to offer).
+    if (const QScreen *where = parent ? parent->screen() : screen())
+        size = size.boundedTo(where->availableGeometry().size() * 0.95);
+    resize(size);
     // Compare with what the controller holds now, not with what was read some time ago.
     // Reading never writes.
     if (session->isConnected())
@@ -236,11 +244,15 @@ void ProfileCompareDialog::rebuild()
                 ->setToolTip(tr("The profile does not hold this "
                                 "value"));
     }
-    m_table->resizeColumnToContents(ApplyColumn);
-    m_table->resizeColumnToContents(DeviceColumn);
-    m_table->resizeColumnToContents(ProfileColumn);
-    m_table->resizeColumnToContents(UnitColumn);
-    m_table->resizeColumnToContents(KeyColumn);
+    // Sized to the contents the first time; after that an Apply or a read-back rebuilds the
+    // rows but the columns only ever grow to fit, so a width the user chose stays.
+    for (const int c : {int(ApplyColumn), int(DeviceColumn), int(ProfileColumn), int(UnitColumn),
+                        int(KeyColumn)}) {
+        const int fit = std::max(static_cast<QAbstractItemView *>(m_table)->sizeHintForColumn(c),
+                                 m_table->horizontalHeader()->sectionSizeHint(c));
+        m_table->setColumnWidth(c, m_columnsSized ? std::max(m_table->columnWidth(c), fit) : fit);
+    }
+    m_columnsSized = m_table->rowCount() > 0;
     const bool unknown = std::any_of(m_rows.cbegin(), m_rows.cend(),
                                      [](const auto &r) { return r.profile && !r.device; });
     m_summary->setText(unknown && differing == 0
@@ -334,9 +346,22 @@ void ProfileCompareDialog::apply()
         tr("Writing %n value(s), then reading them back…", nullptr, int(writes.size())));
     updateButtons();
     QPointer<ProfileCompareDialog> self(this);
-    m_session->write(writes, [self, writes](const WriteOutcome &outcome) {
-        if (self)
-            self->finishApply(writes, outcome);
+    // The settings it replaces are backed up first (the window's risk guard).
+    m_session->guard(DeviceSession::Risk::Apply, [self, writes](const QString &refusal) {
+        if (!self)
+            return;
+        if (!refusal.isEmpty()) {
+            WriteOutcome none;
+            none.errors << refusal;
+            for (const ParameterWrite &w : writes)
+                none.notWritten << w.parameter->key;
+            self->finishApply(writes, none);
+            return;
+        }
+        self->m_session->write(writes, [self, writes](const WriteOutcome &outcome) {
+            if (self)
+                self->finishApply(writes, outcome);
+        });
     });
 }
 

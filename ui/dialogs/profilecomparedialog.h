@@ -80,6 +80,7 @@ private:
     QList<ProfileDifference> m_rows;
     QHash<QString, bool> m_checked;
     QSet<QString> m_touched; // rows the user checked or unchecked: a refresh keeps the choice
+    bool m_columnsSized = false;
     bool m_busy = false;
     bool m_updating = false;
     bool m_refreshPending = false;

@@ -2,6 +2,7 @@
 
 #include "device/devicesession.h"
 #include "device/linkhealth.h"
+#include "device/serialports.h"
 #include "dialogs/busscandialog.h"
 #include "widgets/led.h"
 
@@ -14,7 +15,6 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QRadioButton>
-#include <QSerialPortInfo>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStyle>
@@ -78,9 +78,11 @@ QPushButton *newButton(QWidget *parent, const char *name)
 
 ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
+    , m_serialPorts(new SerialPorts(this))
 {
     buildUi();
     refreshPorts();
+    connect(m_serialPorts, &SerialPorts::changed, this, &ConnectionPage::onPortsChanged);
     loadSettings();
 
     connect(m_transportGroup, &QButtonGroup::idClicked, this, [this] { updateVisibility(); });
@@ -321,19 +323,50 @@ void ConnectionPage::setPortInCombo(const QString &port)
 
 void ConnectionPage::refreshPorts()
 {
+    fillPorts(m_serialPorts->scan());
+}
+
+void ConnectionPage::fillPorts(const QList<SerialPortEntry> &ports)
+{
     const QString current = portFromCombo();
     m_port->clear();
-    for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts()) {
-        QString detail = info.description();
-        if (!info.manufacturer().isEmpty() && !detail.contains(info.manufacturer()))
-            detail = detail.isEmpty() ? info.manufacturer()
-                                      : QStringLiteral("%1, %2").arg(detail, info.manufacturer());
-        const QString text = detail.isEmpty()
-                                 ? info.portName()
-                                 : QStringLiteral("%1 — %2").arg(info.portName(), detail);
-        m_port->addItem(text, info.systemLocation());
+    // The adapter by name, maker and serial number; the stable by-id link is what is opened
+    // and remembered, so the setting survives the adapter coming back as another ttyUSB.
+    for (const SerialPortEntry &port : ports) {
+        m_port->addItem(port.text(), port.path());
+        m_port->setItemData(m_port->count() - 1, port.details(), Qt::ToolTipRole);
     }
-    setPortInCombo(current);
+    // A remembered /dev/ttyUSB0 finds its adapter's entry under the by-id name too.
+    QString wanted = current;
+    for (const SerialPortEntry &port : ports) {
+        if (port.systemLocation == current)
+            wanted = port.path();
+    }
+    setPortInCombo(wanted);
+}
+
+void ConnectionPage::onPortsChanged(const QList<SerialPortEntry> &ports,
+                                    const QList<SerialPortEntry> &added)
+{
+    fillPorts(ports);
+    // The adapter just plugged in is the one the technician means to use.
+    if (!added.isEmpty() && !session()->isConnected()) {
+        const SerialPortEntry port = added.last();
+        setPortInCombo(port.path());
+        setNote(false, [port] { return tr("Serial port plugged in: %1").arg(port.text()); });
+    }
+}
+
+void ConnectionPage::showEvent(QShowEvent *event)
+{
+    m_serialPorts->setWatching(true);
+    Page::showEvent(event);
+}
+
+void ConnectionPage::hideEvent(QHideEvent *event)
+{
+    m_serialPorts->setWatching(false);
+    Page::hideEvent(event);
 }
 
 LinkSettings ConnectionPage::currentSettings() const

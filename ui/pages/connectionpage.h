@@ -21,6 +21,8 @@ namespace stepcom {
 
 class BusScanDialog;
 class Led;
+class SerialPorts;
+struct SerialPortEntry;
 
 // Where the controller is and how to reach it: serial (RTU), Modbus TCP or the built-in
 // simulator. Connects and disconnects the session and shows what the link is doing; it never
@@ -52,15 +54,21 @@ public:
     void connectNow();
     void disconnectNow();
     void refreshPorts();
+    // The port list's source (tests hand it a fake listing); watched while the page is shown.
+    SerialPorts *serialPorts() const { return m_serialPorts; }
     BusScanDialog *openBusScan();
     // Stores the fields in QSettings now (also done on connect and on destruction).
     void saveSettings() const;
 
 protected:
     void retranslate() override;
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
 
 private:
     void buildUi();
+    void fillPorts(const QList<SerialPortEntry> &ports);
+    void onPortsChanged(const QList<SerialPortEntry> &ports, const QList<SerialPortEntry> &added);
     void loadSettings();
     void updateVisibility();
     void updateState();
@@ -83,6 +91,7 @@ private:
     QFormLayout *m_serialForm = nullptr;
     QLabel *m_portLabel = nullptr;
     QComboBox *m_port = nullptr;
+    SerialPorts *m_serialPorts = nullptr;
     QPushButton *m_refresh = nullptr;
     QComboBox *m_baud = nullptr;
     QComboBox *m_parity = nullptr;

@@ -4,10 +4,12 @@
 #include "widgets/interpolationpreview.h"
 #include "widgets/patheditor.h"
 
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QScrollArea>
 #include <QSplitter>
 #include <QTabWidget>
+#include <QVBoxLayout>
 
 namespace stepcom {
 
@@ -34,8 +36,18 @@ InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
     m_tabs = new QTabWidget(m_splitter);
     m_arc = new PathEditor(session, PathEditor::Kind::Arc);
     m_line = new PathEditor(session, PathEditor::Kind::Line);
-    m_tabs->addTab(scrolled(m_arc, m_tabs), QString());
-    m_tabs->addTab(scrolled(m_line, m_tabs), QString());
+    for (PathEditor *editor : {m_arc, m_line}) {
+        // The form scrolls; Write, Start and Stop stay in view below it (issue 19).
+        auto *tab = new QWidget(m_tabs);
+        auto *column = new QVBoxLayout(tab);
+        column->setContentsMargins(0, 0, 0, 0);
+        QGroupBox *run = editor->runBox();
+        if (QLayout *form = editor->layout())
+            form->removeWidget(run);
+        column->addWidget(scrolled(editor, tab), 1);
+        column->addWidget(run);
+        m_tabs->addTab(tab, QString());
+    }
     m_preview = new InterpolationPreview(m_splitter);
     m_splitter->addWidget(m_tabs);
     m_splitter->addWidget(m_preview);

@@ -11,6 +11,7 @@
 #include "widgets/jogpanel.h"
 #include "widgets/led.h"
 #include "widgets/parameterfield.h"
+#include "widgets/travellimitseditor.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -111,6 +112,8 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
                     [this, f] { showBannerOf([f] { return f->rejectionText(); }); });
     }
     rows->addLayout(panels);
+    m_limits = new TravelLimitsEditor(session, content); // issue 17
+    rows->addWidget(m_limits);
 
     auto *bottom = new QHBoxLayout;
     buildHoming(content);

@@ -19,6 +19,7 @@ class JogController;
 class JogKeys;
 class JogPanel;
 class Led;
+class TravelLimitsEditor;
 
 // "Jog and home": the part of commissioning where things move. Per motor a JogPanel (hold to
 // move, stop, jog speed, single move, home); the homing order and the sequence commands;
@@ -37,6 +38,7 @@ public:
     JogPanel *panel(int motor) const { return m_panels.value(motor - 1); }
     int motorCount() const { return int(m_panels.size()); }
     HomingOrderEditor *homingOrder() const { return m_order; }
+    TravelLimitsEditor *travelLimits() const { return m_limits; }
     QPushButton *applyOrderButton() const { return m_applyOrder; }
     QPushButton *homeAllButton() const { return m_homeAll; }
     QPushButton *zeroButton() const { return m_zero; }
@@ -68,6 +70,7 @@ private:
     JogController *m_jog;
     JogKeys *m_keys;
     QList<JogPanel *> m_panels;
+    TravelLimitsEditor *m_limits = nullptr;
     QFrame *m_banner;
     QLabel *m_bannerIcon;
     QLabel *m_bannerText;

@@ -9,6 +9,7 @@
 #include "widgets/jogbutton.h"
 #include "widgets/led.h"
 #include "widgets/parameterfield.h"
+#include "widgets/stepmovepanel.h"
 
 #include <QEvent>
 #include <QGridLayout>
@@ -112,6 +113,8 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     grid->addWidget(m_reference, 4, 1, 1, 2);
     grid->setColumnStretch(1, 1);
     column->addLayout(grid);
+    m_steps = new StepMovePanel(session, motor, this); // step jog and move-to (issue 17)
+    column->addWidget(m_steps);
 
     connect(m_reverse, &JogButton::jogPressed, this, [this] {
         if (!m_jog->press(m_motor, JogController::Direction::Reverse))

@@ -13,6 +13,7 @@ class DeviceSession;
 class JogButton;
 class Led;
 class ParameterField;
+class StepMovePanel;
 
 // One motor's hands-on controls: hold-to-move reverse/forward, stop, the jog speed with its own
 // "apply", the running lamp and live position, the single move with the distance, direction
@@ -32,6 +33,7 @@ public:
     QPushButton *moveButton() const { return m_move; }
     QPushButton *homeButton() const { return m_home; }
     Led *runningLed() const { return m_led; }
+    StepMovePanel *stepPanel() const { return m_steps; }
     // "referenced" / "not referenced (E-STOP)": homed onto the home input since the last loss.
     QString referenceText() const;
     QString statusText() const;
@@ -79,6 +81,7 @@ private:
     QLabel *m_homeLabel;
     QLabel *m_homeInfo;
     QPushButton *m_home;
+    StepMovePanel *m_steps = nullptr;
     bool m_hideOutcome = false; // a jog since the last outcome: it no longer describes the axis
 };
 

@@ -72,6 +72,13 @@ void ParameterForm::retranslate()
         const Parameter &p = m_fields.at(i)->parameter();
         m_labels.at(i)->setText(p.label.text(lang) + QLatin1Char(':'));
         m_labels.at(i)->setToolTip(QStringLiteral("%1 · %2").arg(p.registerName(), p.key));
+        // Help → What's this (Shift+F1), then a click on the label or the field: the map's help.
+        const QString whatsThis =
+            QStringLiteral("<p><b>%1</b> — %2</p><p>%3</p><p><small>%4 · %5</small></p>")
+                .arg(p.label.text(lang).toHtmlEscaped(), p.registerName(),
+                     p.help.text(lang).toHtmlEscaped(), p.key, p.rangeText().toHtmlEscaped());
+        m_labels.at(i)->setWhatsThis(whatsThis);
+        m_fields.at(i)->setWhatsThis(whatsThis);
     }
 }
 

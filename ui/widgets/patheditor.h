@@ -43,6 +43,9 @@ public:
     QPushButton *startButton() const { return m_start; }
     QPushButton *stopButton() const { return m_stop; }
     QPushButton *writeButton() const { return m_write; }
+    // Write, Start, Stop and what they say: the page may keep it in view below the scrolled
+    // form (a low screen must not hide Start).
+    QGroupBox *runBox() const { return m_runBox; }
     QLabel *startReason() const { return m_reason; }
     // How the last run of this path ended (judged from the controller), or that it runs.
     QLabel *outcomeLabel() const { return m_outcome; }

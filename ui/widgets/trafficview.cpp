@@ -1,157 +1,117 @@
 #include "widgets/trafficview.h"
 
+#include "widgets/trafficmodel.h"
+
 #include <QApplication>
 #include <QCheckBox>
 #include <QClipboard>
+#include <QDesktopServices>
+#include <QDir>
 #include <QEvent>
 #include <QFileDialog>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSaveFile>
 #include <QTableView>
+#include <QUrl>
 
 namespace stepcom {
-
-TrafficModel::TrafficModel(QObject *parent)
-    : QAbstractTableModel(parent)
-{}
-
-void TrafficModel::setLog(TrafficLog *log)
-{
-    if (m_log)
-        m_log->disconnect(this);
-    m_log = log;
-    if (m_log)
-        connect(m_log, &TrafficLog::entryAdded, this, &TrafficModel::append);
-}
-
-void TrafficModel::setPaused(bool paused)
-{
-    m_paused = paused;
-}
-
-void TrafficModel::clear()
-{
-    beginResetModel();
-    m_entries.clear();
-    endResetModel();
-}
-
-void TrafficModel::append(const TrafficEntry &entry)
-{
-    if (m_paused)
-        return;
-    if (m_entries.size() >= m_capacity) {
-        beginRemoveRows({}, 0, 0);
-        m_entries.removeFirst();
-        endRemoveRows();
-    }
-    const int row = int(m_entries.size());
-    beginInsertRows({}, row, row);
-    m_entries.append(entry);
-    endInsertRows();
-}
-
-int TrafficModel::rowCount(const QModelIndex &parent) const
-{
-    return parent.isValid() ? 0 : int(m_entries.size());
-}
-
-int TrafficModel::columnCount(const QModelIndex &parent) const
-{
-    return parent.isValid() ? 0 : 4;
-}
-
-QVariant TrafficModel::data(const QModelIndex &index, int role) const
-{
-    if (!index.isValid() || index.row() >= m_entries.size())
-        return {};
-    const TrafficEntry &e = m_entries.at(index.row());
-    // Long frames are cut in the table (the meaning must stay in view): the whole text on hover.
-    if (role == Qt::ToolTipRole && index.column() >= 2)
-        return data(index, Qt::DisplayRole);
-    if (role == Qt::DisplayRole) {
-        switch (index.column()) {
-        case 0:
-            return e.time.toString(QStringLiteral("HH:mm:ss.zzz"));
-        case 1:
-            return e.direction == TrafficEntry::Direction::Sent       ? QStringLiteral("TX")
-                   : e.direction == TrafficEntry::Direction::Received ? QStringLiteral("RX")
-                                                                      : QStringLiteral("—");
-        case 2:
-            return QString::fromLatin1(e.bytes.toHex(' ').toUpper());
-        case 3:
-            return e.summary;
-        }
-    }
-    return {};
-}
-
-QVariant TrafficModel::headerData(int section, Qt::Orientation orientation, int role) const
-{
-    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
-        return {};
-    switch (section) {
-    case 0:
-        return tr("Time");
-    case 1:
-        return tr("Dir");
-    case 2:
-        return tr("Bytes (hex)");
-    case 3:
-        return tr("Meaning");
-    }
-    return {};
-}
 
 TrafficView::TrafficView(QWidget *parent)
     : QWidget(parent)
     , m_model(new TrafficModel(this))
     , m_table(new QTableView(this))
     , m_pause(new QCheckBox(this))
+    , m_search(new QLineEdit(this))
     , m_clear(new QPushButton(this))
     , m_copy(new QPushButton(this))
     , m_save(new QPushButton(this))
+    , m_openFolder(new QPushButton(this))
 {
     m_table->setModel(m_model);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->verticalHeader()->hide();
+    // Uniform rows: the view never measures 250 000 rows one by one.
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 4);
     m_table->horizontalHeader()->setStretchLastSection(true);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    // A read-all answer is over 100 bytes: sized to its contents, the bytes column would push
-    // the decoded meaning out of view. Room for a request (8 bytes) and a short answer; the
+    // Fixed column widths from the font: sizing to contents would read every row.
+    const QFontMetrics fm(m_table->font());
+    const int digit = fm.horizontalAdvance(QLatin1Char('0'));
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+    m_table->setColumnWidth(0, digit * 14);
+    m_table->setColumnWidth(1, digit * 4);
+    // A read-all answer is over 100 bytes: room for a request (8 bytes) and a short answer; the
     // user can widen it, and the tooltip has the whole frame.
-    m_table->horizontalHeader()->setSectionResizeMode(2, QHeaderView::Interactive);
-    m_table->setColumnWidth(2, QFontMetrics(m_table->font()).horizontalAdvance(QLatin1Char('0')) *
-                                   3 * 20);
-    connect(m_model, &QAbstractItemModel::rowsInserted, m_table, [this] {
+    m_table->setColumnWidth(2, digit * 3 * 20);
+    connect(m_model, &TrafficModel::appended, m_table, [this] {
         if (!m_pause->isChecked())
             m_table->scrollToBottom();
     });
-    auto *buttons = new QHBoxLayout;
-    buttons->addWidget(m_pause);
-    buttons->addStretch();
-    buttons->addWidget(m_clear);
-    buttons->addWidget(m_copy);
-    buttons->addWidget(m_save);
+
+    m_pause->setObjectName(QStringLiteral("pause"));
+    m_search->setObjectName(QStringLiteral("search"));
+    m_search->setClearButtonEnabled(true);
+    m_openFolder->setObjectName(QStringLiteral("openLogFolder"));
+    m_save->setObjectName(QStringLiteral("saveLog"));
+    auto *filters = new QHBoxLayout;
+    filters->addWidget(m_pause);
+    for (const TrafficEntry::Kind kind :
+         {TrafficEntry::Kind::Poll, TrafficEntry::Kind::Read, TrafficEntry::Kind::Write,
+          TrafficEntry::Kind::Command, TrafficEntry::Kind::Error}) {
+        auto *box = new QCheckBox(this);
+        box->setChecked(m_model->isKindShown(kind));
+        connect(box, &QCheckBox::toggled, m_model,
+                [this, kind](bool on) { m_model->setKindShown(kind, on); });
+        m_kinds.insert(kind, box);
+        filters->addWidget(box);
+    }
+    filters->addStretch();
+    auto *actions = new QHBoxLayout;
+    actions->addWidget(m_search, 1);
+    actions->addWidget(m_clear);
+    actions->addWidget(m_copy);
+    actions->addWidget(m_save);
+    actions->addWidget(m_openFolder);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
-    layout->addLayout(buttons);
+    layout->setSpacing(2);
+    layout->addLayout(filters);
+    layout->addLayout(actions);
     layout->addWidget(m_table);
     connect(m_pause, &QCheckBox::toggled, m_model, &TrafficModel::setPaused);
+    connect(m_search, &QLineEdit::textChanged, m_model, &TrafficModel::setSearch);
     connect(m_clear, &QPushButton::clicked, m_model, &TrafficModel::clear);
     connect(m_copy, &QPushButton::clicked, this, &TrafficView::copySelection);
     connect(m_save, &QPushButton::clicked, this, &TrafficView::saveAs);
+    connect(m_openFolder, &QPushButton::clicked, this, [this] {
+        QString error;
+        if (openLogFolder(&error))
+            return;
+        auto *box = new QMessageBox(QMessageBox::Warning, tr("Open log folder"), error,
+                                    QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
+    m_openFolder->hide();
     retranslate();
 }
 
 void TrafficView::setLog(TrafficLog *log)
 {
     m_model->setLog(log);
+}
+
+void TrafficView::setLogFolder(const QString &folder)
+{
+    m_logFolder = folder;
+    m_openFolder->setVisible(!folder.isEmpty());
+    retranslate();
 }
 
 void TrafficView::changeEvent(QEvent *event)
@@ -164,17 +124,33 @@ void TrafficView::changeEvent(QEvent *event)
 void TrafficView::retranslate()
 {
     m_pause->setText(tr("&Pause"));
+    m_pause->setToolTip(tr("Hold the rows still to read them; frames are still kept"));
+    m_kinds.value(TrafficEntry::Kind::Poll)->setText(tr("Polls"));
+    m_kinds.value(TrafficEntry::Kind::Poll)
+        ->setToolTip(tr("The live status poll: several frames a second"));
+    m_kinds.value(TrafficEntry::Kind::Read)->setText(tr("Reads"));
+    m_kinds.value(TrafficEntry::Kind::Write)->setText(tr("Writes"));
+    m_kinds.value(TrafficEntry::Kind::Command)->setText(tr("Commands"));
+    m_kinds.value(TrafficEntry::Kind::Error)->setText(tr("Errors"));
+    m_search->setPlaceholderText(tr("Search (text, key or bytes)"));
+    m_search->setAccessibleName(tr("Search"));
     m_clear->setText(tr("C&lear"));
     m_copy->setText(tr("&Copy"));
-    m_save->setText(tr("&Save…"));
-    m_copy->setToolTip(tr("Copy the selected rows (all rows when none are selected)"));
+    m_copy->setToolTip(tr("Copy the selected rows (all rows shown when none are selected)"));
+    m_save->setText(tr("&Save log…"));
+    m_save->setToolTip(tr("Save the rows shown to a file"));
+    m_openFolder->setText(tr("Open log &folder"));
+    m_openFolder->setToolTip(
+        tr("The session log files: every frame of every connection, with date and time (%1)")
+            .arg(QDir::toNativeSeparators(m_logFolder)));
 }
 
 QString TrafficView::text() const
 {
     QStringList lines;
-    for (const TrafficEntry &e : m_model->entries())
-        lines << TrafficLog::format(e);
+    lines.reserve(m_model->rowCount());
+    for (int row = 0; row < m_model->rowCount(); ++row)
+        lines << TrafficLog::format(m_model->entryAt(row));
     return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }
 
@@ -187,7 +163,7 @@ void TrafficView::copySelection()
     }
     QStringList lines;
     for (const QModelIndex &index : rows)
-        lines << TrafficLog::format(m_model->entries().at(index.row()));
+        lines << TrafficLog::format(m_model->entryAt(index.row()));
     QApplication::clipboard()->setText(lines.join(QLatin1Char('\n')));
 }
 
@@ -198,6 +174,22 @@ bool TrafficView::saveTo(const QString &path, QString *error) const
         !file.commit()) {
         if (error)
             *error = file.errorString();
+        return false;
+    }
+    return true;
+}
+
+bool TrafficView::openLogFolder(QString *error) const
+{
+    if (m_logFolder.isEmpty() || !QDir().mkpath(m_logFolder)) {
+        if (error)
+            *error = tr("Cannot create the log folder %1.").arg(m_logFolder);
+        return false;
+    }
+    if (!QDesktopServices::openUrl(QUrl::fromLocalFile(m_logFolder))) {
+        if (error)
+            *error = tr("No file manager opened %1. The session log files are there.")
+                         .arg(QDir::toNativeSeparators(m_logFolder));
         return false;
     }
     return true;

@@ -2,42 +2,21 @@
 
 #include "device/devicesession.h" // TrafficLog
 
-#include <QAbstractTableModel>
+#include <QMap>
 #include <QWidget>
 
 class QCheckBox;
+class QLineEdit;
 class QPushButton;
 class QTableView;
 
 namespace stepcom {
 
-// Rows of a TrafficLog: time, direction, raw bytes in hex, decoded summary.
-class TrafficModel : public QAbstractTableModel
-{
-    Q_OBJECT
-public:
-    explicit TrafficModel(QObject *parent = nullptr);
-    void setLog(TrafficLog *log);
-    void setPaused(bool paused);
-    bool isPaused() const { return m_paused; }
-    void clear();
-    const QList<TrafficEntry> &entries() const { return m_entries; }
+class TrafficModel;
 
-    int rowCount(const QModelIndex &parent = QModelIndex()) const override;
-    int columnCount(const QModelIndex &parent = QModelIndex()) const override;
-    QVariant data(const QModelIndex &index, int role) const override;
-    QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
-
-private:
-    void append(const TrafficEntry &entry);
-
-    TrafficLog *m_log = nullptr;
-    QList<TrafficEntry> m_entries;
-    bool m_paused = false;
-    int m_capacity = 5000;
-};
-
-// The traffic dock's content: the table plus pause, clear, copy and save.
+// The traffic dock's content: the frames with filters (polls hidden at first, reads, writes,
+// commands, errors), a search, pause, copy, "Save log…" and "Open log folder" (the session log
+// files, see SessionLog).
 class TrafficView : public QWidget
 {
     Q_OBJECT
@@ -45,9 +24,15 @@ public:
     explicit TrafficView(QWidget *parent = nullptr);
     void setLog(TrafficLog *log);
     TrafficModel *model() const { return m_model; }
-    // Everything shown, one line per frame, as TrafficLog::format writes it.
+    QTableView *table() const { return m_table; }
+    // The folder of the session log files ("Open log folder"); empty hides the button.
+    void setLogFolder(const QString &folder);
+    QString logFolder() const { return m_logFolder; }
+    // The rows shown, one line per frame, as TrafficLog::format writes it.
     QString text() const;
     bool saveTo(const QString &path, QString *error) const;
+    // Opens the log folder in the desktop's file manager (made first if missing).
+    bool openLogFolder(QString *error = nullptr) const;
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -60,9 +45,13 @@ private:
     TrafficModel *m_model;
     QTableView *m_table;
     QCheckBox *m_pause;
+    QMap<TrafficEntry::Kind, QCheckBox *> m_kinds;
+    QLineEdit *m_search;
     QPushButton *m_clear;
     QPushButton *m_copy;
     QPushButton *m_save;
+    QPushButton *m_openFolder;
+    QString m_logFolder;
 };
 
 } // namespace stepcom

@@ -1,0 +1,57 @@
+#include "device/devicesession.h"
+#include "simsession.h"
+#include "widgets/devicelistdock.h"
+
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTest>
+
+using namespace stepcom;
+
+// The window's list of the controllers on the line: one row per id, a click shows that
+// device without reconnecting, "Add device" puts another id on the list.
+class TestDeviceList : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void clickingADeviceShowsItWithoutReconnecting()
+    {
+        DeviceSession session;
+        test::useBuiltinSimulator(session, {1, 2, 3});
+        session.setDeviceIds({1, 2});
+        test::connectToSimulator(session);
+        DeviceListDock dock(&session);
+        QCOMPARE(dock.table()->rowCount(), 2);
+        QCOMPARE(dock.rowTexts(0).first(), QStringLiteral("1"));
+
+        // Add device 3 by id; a second time is refused with a reason.
+        dock.idBox()->setValue(3);
+        dock.addButton()->click();
+        QCOMPARE(session.deviceIds(), (QList<int>{1, 2, 3}));
+        QCOMPARE(dock.table()->rowCount(), 3);
+        QVERIFY(!dock.addDevice(3));
+
+        // Its background status arrives and shows.
+        QTRY_COMPARE_WITH_TIMEOUT(dock.rowTexts(2).at(2), QStringLiteral("answering"), 15000);
+        QCOMPARE(dock.rowTexts(2).at(4), QStringLiteral("0"));
+
+        QSignalSpy connected(&session, &DeviceSession::connected);
+        QSignalSpy read(&session, &DeviceSession::readFinished);
+        Q_EMIT dock.table()->cellClicked(2, 0);
+        QCOMPARE(session.deviceInView(), 3);
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
+        QCOMPARE(*session.parameters()->deviceValue(QStringLiteral("device.id")), 3);
+        QCOMPARE(connected.size(), 0);
+        QVERIFY(dock.rowTexts(2).at(2).contains(QStringLiteral("in view")));
+
+        // The name is the user's.
+        dock.table()->item(2, 1)->setText(QStringLiteral("Z axis"));
+        QCOMPARE(dock.nameOf(3), QStringLiteral("Z axis"));
+    }
+};
+
+QTEST_MAIN(TestDeviceList)
+#include "tst_devicelist.moc"

@@ -1,0 +1,74 @@
+#pragma once
+
+#include "commissioning/checklist.h"
+#include "page.h"
+
+#include <QHash>
+
+class QLabel;
+class QListWidget;
+class QPushButton;
+class QStackedWidget;
+
+namespace stepcom {
+
+class ChecklistStepWidget;
+class WriteFlow;
+
+// "Commissioning checklist": every step of the machine's checklist (Checklist::forMap) in a
+// list with its latest result, the selected step's own controls beside it. Each result is
+// recorded with its time, measurements and note and saved at once in the checklist file
+// beside the profile (ChecklistFile::pathFor) -- or, without a profile, in the data location
+// -- so closing the window and opening it again resumes at the first step not run.
+class ChecklistPage : public Page
+{
+    Q_OBJECT
+public:
+    ChecklistPage(DeviceSession *session, WriteFlow *writes, QWidget *parent = nullptr);
+
+    QString title() const override;
+
+    const Checklist &checklist() const { return m_checklist; }
+    // The file the progress is kept in.
+    QString checklistFile() const { return m_file; }
+    QString profilePath() const { return m_profile; }
+    // Uses the checklist kept beside this profile (empty: the data location's) and remembers it.
+    void setProfilePath(const QString &path);
+    // For the report: the checklist when any step was run, with its file.
+    std::optional<std::pair<Checklist, QString>> reportChecklist() const;
+
+    ChecklistStepWidget *stepWidget(const QString &id) const { return m_widgets.value(id); }
+    QString currentStepId() const;
+    void selectStep(const QString &id);
+    QListWidget *stepList() const { return m_list; }
+    QString summaryText() const;
+    QString problemText() const;
+
+    // Where the checklist is kept without a profile.
+    static QString defaultFile();
+
+protected:
+    void retranslate() override;
+
+private:
+    void load();
+    void onRecorded(const QString &id, StepResult result,
+                    const QList<ChecklistMeasurement> &measurements, const QString &note);
+    void refreshList();
+    void chooseProfile();
+
+    WriteFlow *m_writes;
+    Checklist m_checklist;
+    QString m_profile;
+    QString m_file;
+    bool m_fileUsable = true; // false: the file could not be read; it is not overwritten
+    QLabel *m_profileLabel;
+    QPushButton *m_chooseProfile;
+    QLabel *m_summary;
+    QLabel *m_problem;
+    QListWidget *m_list;
+    QStackedWidget *m_stack;
+    QHash<QString, ChecklistStepWidget *> m_widgets;
+};
+
+} // namespace stepcom
