@@ -1632,8 +1632,15 @@
 <context>
     <name>stepcom::CtlMonitor</name>
     <message>
-        <source>link lost: %1</source>
-        <translation>link lost: %1</translation>
+        <source>link lost: %1; trying again on its own (Ctrl-C ends)</source>
+        <translation>link lost: %1; trying again on its own (Ctrl-C ends)</translation>
+    </message>
+    <message numerus="yes">
+        <source>link back at %1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>link back at %1 after %n attempt</numerusform>
+            <numerusform>link back at %1 after %n attempts</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2764,6 +2771,34 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Device id %1: %2</source>
         <translation>Device id %1: %2</translation>
     </message>
+    <message>
+        <source>The link is back at %1 (attempt %2): reading the status, then everything</source>
+        <translation>The link is back at %1 (attempt %2): reading the status, then everything</translation>
+    </message>
+    <message>
+        <source>Reconnecting cancelled: Connect tries again.</source>
+        <translation>Reconnecting cancelled: Connect tries again.</translation>
+    </message>
+    <message>
+        <source>E-STOP: the link is down, the controller did NOT get it; it is sent first when the link is back</source>
+        <translation>E-STOP: the link is down, the controller did NOT get it; it is sent first when the link is back</translation>
+    </message>
+    <message>
+        <source>Trying to connect again on its own (Cancel stops it).</source>
+        <translation>Trying to connect again on its own (Cancel stops it).</translation>
+    </message>
+    <message>
+        <source>it refuses reads that cover reserved registers, so only its listed registers are read</source>
+        <translation>it refuses reads that cover reserved registers, so only its listed registers are read</translation>
+    </message>
+    <message>
+        <source>it does not support %1</source>
+        <translation>it does not support %1</translation>
+    </message>
+    <message>
+        <source>Known from an earlier connection to this controller: %1.</source>
+        <translation>Known from an earlier connection to this controller: %1.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -3619,6 +3654,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Port open, waiting for an answer…</source>
         <translation>Port open, waiting for an answer…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Stop trying to reconnect; Connect tries again</source>
+        <translation>Stop trying to reconnect; Connect tries again</translation>
+    </message>
+    <message>
+        <source>Link lost — reconnecting in %1 s (attempt %2)</source>
+        <translation>Link lost — reconnecting in %1 s (attempt %2)</translation>
+    </message>
+    <message>
+        <source>Link lost — reconnecting… (attempt %1)</source>
+        <translation>Link lost — reconnecting… (attempt %1)</translation>
     </message>
 </context>
 <context>
@@ -5306,6 +5357,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Not applied:</source>
         <translation>Not applied:</translation>
+    </message>
+    <message>
+        <source>Left out, not supported by this controller: %1.</source>
+        <translation>Left out, not supported by this controller: %1.</translation>
     </message>
 </context>
 <context>

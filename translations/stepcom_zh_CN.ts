@@ -1624,8 +1624,14 @@
 <context>
     <name>stepcom::CtlMonitor</name>
     <message>
-        <source>link lost: %1</source>
-        <translation>连接中断：%1</translation>
+        <source>link lost: %1; trying again on its own (Ctrl-C ends)</source>
+        <translation>连接丢失：%1；正在自动重试（按 Ctrl-C 结束）</translation>
+    </message>
+    <message numerus="yes">
+        <source>link back at %1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>连接已在 %1 恢复（尝试 %n 次）</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2748,6 +2754,34 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Device id %1: %2</source>
         <translation>设备 ID %1：%2</translation>
     </message>
+    <message>
+        <source>The link is back at %1 (attempt %2): reading the status, then everything</source>
+        <translation>连接已在 %1 恢复（第 %2 次尝试）：先读取状态，再读取全部参数</translation>
+    </message>
+    <message>
+        <source>Reconnecting cancelled: Connect tries again.</source>
+        <translation>已取消重新连接：按“连接”可再次尝试。</translation>
+    </message>
+    <message>
+        <source>E-STOP: the link is down, the controller did NOT get it; it is sent first when the link is back</source>
+        <translation>急停：连接已中断，控制器尚未收到急停；连接恢复后将首先发送</translation>
+    </message>
+    <message>
+        <source>Trying to connect again on its own (Cancel stops it).</source>
+        <translation>正在自动重新连接（按“取消”停止）。</translation>
+    </message>
+    <message>
+        <source>it refuses reads that cover reserved registers, so only its listed registers are read</source>
+        <translation>它拒绝覆盖保留寄存器的读取，因此只读取已列出的寄存器</translation>
+    </message>
+    <message>
+        <source>it does not support %1</source>
+        <translation>它不支持 %1</translation>
+    </message>
+    <message>
+        <source>Known from an earlier connection to this controller: %1.</source>
+        <translation>此前连接该控制器时已知：%1。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -3603,6 +3637,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Port open, waiting for an answer…</source>
         <translation>端口已打开，正在等待应答…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Stop trying to reconnect; Connect tries again</source>
+        <translation>停止重新连接；按“连接”可再次尝试</translation>
+    </message>
+    <message>
+        <source>Link lost — reconnecting in %1 s (attempt %2)</source>
+        <translation>连接丢失 — %1 秒后重新连接（第 %2 次尝试）</translation>
+    </message>
+    <message>
+        <source>Link lost — reconnecting… (attempt %1)</source>
+        <translation>连接丢失 — 正在重新连接…（第 %1 次尝试）</translation>
     </message>
 </context>
 <context>
@@ -5272,6 +5322,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Not applied:</source>
         <translation>不应用：</translation>
+    </message>
+    <message>
+        <source>Left out, not supported by this controller: %1.</source>
+        <translation>已排除，此控制器不支持：%1。</translation>
     </message>
 </context>
 <context>

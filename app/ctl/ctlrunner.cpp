@@ -545,7 +545,8 @@ void CtlRunner::runMonitor()
         return;
     }
     connectThen([this] {
-        auto *monitor = new CtlMonitor(m_session, m_options.count, m_options.intervalMs, this);
+        auto *monitor =
+            new CtlMonitor(m_session, m_options.count, m_options.intervalMs, m_options.json, this);
         connect(monitor, &CtlMonitor::finished, this, &CtlRunner::finish);
         monitor->start();
     });

@@ -7,6 +7,7 @@
 #include "device/linkhealth.h"
 #include "device/motionjudge.h"
 #include "device/motionsupervisor.h"
+#include "device/reconnector.h"
 #include "device/simulatorstarter.h"
 #include "device/statusrecorder.h"
 #include "device/stepmove.h"
@@ -38,22 +39,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     m_bus->setKeys(m_poller->keys());
     connect(m_bus, &BusPoller::statusChanged, this, &DeviceSession::deviceStatusChanged);
     m_link->traffic()->setMap(&m_client->map());
-    connect(m_link, &ModbusLink::opened, this, [this](bool ok, const QString &reason) {
-        Q_EMIT connected(ok, reason);
-        if (!ok) {
-            say(Severity::Error, tr("Cannot connect: %1").arg(reason));
-            return;
-        }
-        say(Severity::Info,
-            tr("Opened %1; asking the controller").arg(m_link->settings().describe()));
-        // Live values first: one status cycle (positions, inputs), then everything else.
-        m_readAllAfterStatus = std::exchange(m_readAfterConnect, false) && m_live;
-        if (m_live) {
-            m_poller->start();
-            updateBackground();
-            m_bus->start();
-        }
-    });
+    connect(m_link, &ModbusLink::opened, this, &DeviceSession::onOpened);
     connect(m_link, &ModbusLink::stateChanged, this, &DeviceSession::linkStateChanged);
     connect(m_link, &ModbusLink::statsChanged, this, &DeviceSession::linkStatsChanged);
     connect(m_health, &LinkHealth::stateChanged, this, [this](LinkHealth::State s) {
@@ -65,14 +51,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             say(Severity::Info, tr("The controller answers."));
         Q_EMIT linkStateChanged();
     });
-    connect(m_link, &ModbusLink::lost, this, [this](const QString &reason) {
-        m_poller->stop();
-        m_bus->stop();
-        m_store->forgetDeviceValues();
-        say(Severity::Error, tr("Link lost: %1").arg(reason));
-        Q_EMIT disconnected(reason);
-        Q_EMIT linkLost(reason);
-    });
+    connect(m_link, &ModbusLink::lost, this, &DeviceSession::onLost);
     connect(m_poller, &Poller::cycleFinished, this, [this](bool ok, qint64 ms) {
         Q_EMIT statusCycleFinished(ok, ms);
         if (std::exchange(m_readAllAfterStatus, false))
@@ -83,6 +62,19 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     m_client->shareReadLimits(m_bus->client());
     connect(m_bus->client(), &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
     connect(m_poller, &Poller::fastChanged, this, &DeviceSession::statusFastChanged);
+    m_reconnector = new Reconnector(this);
+    connect(m_reconnector, &Reconnector::reopen, this, &DeviceSession::reopen);
+    connect(m_reconnector, &Reconnector::restored, this,
+            [this](const LinkSettings &s, int attempts) {
+                say(Severity::Info, tr("The link is back at %1 (attempt %2): reading the status, "
+                                       "then everything")
+                                        .arg(s.describe())
+                                        .arg(attempts));
+            });
+    connect(m_reconnector, &Reconnector::cancelled, this, [this] {
+        say(Severity::Info, tr("Reconnecting cancelled: Connect tries again."));
+        Q_EMIT linkStateChanged();
+    });
 }
 
 DeviceSession::~DeviceSession()
@@ -217,88 +209,6 @@ void DeviceSession::say(Severity severity, const QString &text)
     Q_EMIT message(severity, text);
 }
 
-void DeviceSession::connectTo(const LinkSettings &settings)
-{
-    if (m_usingSim && m_sim) {
-        // leaving the built-in simulator: close our side first so its going away is no "loss"
-        m_link->close(tr("switching to %1").arg(settings.describe()));
-        m_sim->stop();
-    }
-    m_usingSim = false;
-    openLink(settings);
-}
-
-void DeviceSession::connectSimulator()
-{
-    QString error;
-    std::optional<LinkSettings> s;
-    if (!m_sim)
-        error = tr("this program has no built-in simulator");
-    else
-        s = m_sim->start(map(), &error);
-    if (!s) {
-        say(Severity::Error, tr("Cannot start the built-in simulator: %1").arg(error));
-        Q_EMIT connected(false, error);
-        return;
-    }
-    m_usingSim = true; // before open(): on a pty the verdict arrives inside it
-    openLink(*s);
-}
-
-QString DeviceSession::lineKey(const LinkSettings &settings)
-{
-    return settings.transport == LinkSettings::Transport::Tcp
-               ? QStringLiteral("%1:%2").arg(settings.host).arg(settings.tcpPort)
-               : settings.portName;
-}
-
-const ReadLimits &DeviceSession::readLimits() const
-{
-    return m_client->readLimits();
-}
-
-void DeviceSession::learnt(int unit, ReadLimits::Lesson lesson, const QString &key)
-{
-    m_knownLimits.insert(lineKey(m_link->settings()), m_client->allReadLimits());
-    QString text;
-    if (lesson == ReadLimits::Lesson::GapsRefused) {
-        text = tr("The controller refuses reads that cover reserved registers; from now on only "
-                  "its listed registers are read (a few more requests).");
-    } else if (lesson == ReadLimits::Lesson::Unsupported) {
-        const Parameter *p = m_client->map().find(key);
-        text = tr("%1 (register %2) is not supported by this controller: it refuses to read it. "
-                  "It is left out from now on.")
-                   .arg(key, p ? p->registerName() : QString());
-        if (unit == deviceInView())
-            m_store->setUnsupported(m_client->readLimits(unit).unsupported());
-    }
-    if (text.isEmpty())
-        return;
-    if (deviceIds().size() > 1)
-        text = tr("Device id %1: %2").arg(unit).arg(text);
-    say(Severity::Warning, text);
-    Q_EMIT readLimitsLearned(text);
-}
-
-void DeviceSession::openLink(const LinkSettings &settings)
-{
-    m_client->setAllReadLimits(m_knownLimits.value(lineKey(settings)));
-    m_store->setUnsupported(m_client->readLimits(settings.deviceId).unsupported());
-    m_readAfterConnect = true;
-    m_link->resetStats(); // statistics are per connection
-    m_link->open(settings);
-}
-
-void DeviceSession::disconnectFrom(const QString &reason)
-{
-    const QString why = reason.isEmpty() ? tr("disconnected by the user") : reason;
-    m_poller->stop();
-    m_bus->stop();
-    m_link->close(why);
-    m_store->forgetDeviceValues();
-    Q_EMIT disconnected(why);
-}
-
 void DeviceSession::readAll()
 {
     m_client->readAll([this](const ReadOutcome &r) {
@@ -408,6 +318,12 @@ void DeviceSession::command(const Parameter &coil, std::function<void(const Resu
 void DeviceSession::emergencyStop()
 {
     if (!m_link->isConnected()) {
+        if (m_reconnector->isActive()) {
+            m_estopPending = true;
+            say(Severity::Error, tr("E-STOP: the link is down, the controller did NOT get it; "
+                                    "it is sent first when the link is back"));
+            return;
+        }
         say(Severity::Warning, tr("E-STOP: not connected, nothing was sent"));
         return;
     }
@@ -504,53 +420,6 @@ void DeviceSession::emergencyStopAll(const QList<int> &ids)
     }
 }
 
-void DeviceSession::setDeviceIds(const QList<int> &ids)
-{
-    m_deviceIds = ids;
-    updateBackground();
-}
-
-QList<int> DeviceSession::deviceIds() const
-{
-    if (m_deviceIds.isEmpty())
-        return {deviceInView()};
-    return m_deviceIds;
-}
-
-int DeviceSession::deviceInView() const
-{
-    return m_link->settings().deviceId;
-}
-
-bool DeviceSession::showDevice(int id)
-{
-    if (!deviceIds().contains(id)) {
-        say(Severity::Error,
-            tr("Device id %1 is not on this line (%2)").arg(id).arg(IdList::format(deviceIds())));
-        return false;
-    }
-    if (id == deviceInView())
-        return true;
-    stopJogging(JogStop::PageLeft); // its stops are addressed to the device they run on
-    const bool polling = m_poller->isActive();
-    m_poller->stop();
-    m_bus->stop();
-    // Reads queued for the device that was in view would land in the new one's store.
-    m_link->cancelQueued(Priority::Read, tr("showing device %1").arg(id));
-    m_link->setDeviceId(id);
-    m_store->forgetDeviceValues();
-    m_store->setUnsupported(m_client->readLimits(id).unsupported());
-    updateBackground();
-    Q_EMIT deviceInViewChanged(id);
-    if (m_link->isConnected() && m_live) {
-        readAll();
-        if (polling)
-            m_poller->start();
-        m_bus->start();
-    }
-    return true;
-}
-
 void DeviceSession::setBackgroundIntervalMs(int ms)
 {
     m_bus->setIntervalMs(ms);
@@ -564,13 +433,6 @@ int DeviceSession::backgroundIntervalMs() const
 BusDeviceStatus DeviceSession::deviceStatus(int id) const
 {
     return m_bus->status(id);
-}
-
-void DeviceSession::updateBackground()
-{
-    QList<int> others = deviceIds();
-    others.removeAll(deviceInView());
-    m_bus->setDevices(others);
 }
 
 void DeviceSession::saveToFlash()

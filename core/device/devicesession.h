@@ -11,7 +11,9 @@
 #include "device/poller.h" // PollStats
 #include "motion/travellimits.h"
 
+#include <QMap>
 #include <QObject>
+#include <QSet>
 
 #include <memory>
 
@@ -22,6 +24,7 @@ class JogController;
 class LinkHealth;
 class ModbusLink;
 class MotionSupervisor;
+class Reconnector;
 class SimulatorStarter;
 class StatusRecorder;
 class StepMove;
@@ -75,6 +78,9 @@ public:
     void guard(Risk risk, Proceed proceed);
     // Port closed / open but not answering / answering: "connected" means answering.
     LinkHealth *health() const { return m_health; }
+    // Tries again on its own after a link loss (off until a front-end turns it on); while it
+    // waits, an E-STOP is held and sent first when the link is back, then everything is read.
+    Reconnector *reconnector() const { return m_reconnector; }
     // The live status recorded for the plots; made on first use, recording from then on.
     StatusRecorder *recorder();
     TrafficLog *traffic() const;
@@ -120,6 +126,10 @@ public:
     const ReadLimits &readLimits() const;
     // The line a controller is on (port, or host:port); read limits are kept per line and id.
     static QString lineKey(const LinkSettings &settings);
+    // Every controller's known read limits as text by "line#id", for the saved connection
+    // settings; taken back, the next connect need not learn them again (said once then).
+    QMap<QString, QString> knownReadLimits() const;
+    void setKnownReadLimits(const QMap<QString, QString> &known);
 
     void readAll();
     // Read these parameters (or all) and hand the outcome over; the store is left alone.
@@ -191,6 +201,12 @@ private:
 
     void say(Severity severity, const QString &text);
     void openLink(const LinkSettings &settings);
+    // The reconnector's attempt: the same line (or the simulator) again, limits kept.
+    void reopen(const LinkSettings &settings);
+    void onOpened(bool ok, const QString &reason);
+    void onLost(const QString &reason);
+    // What a connect found already known of this controller, said once in words.
+    void sayKnownLimits(int id);
     void learnt(int unit, ReadLimits::Lesson lesson, const QString &key);
     void guardedCommand(Risk risk, const QString &key);
     void writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous);
@@ -220,6 +236,10 @@ private:
     bool m_readAllAfterStatus = false; // live values first: read everything after one status
     bool m_live = true;
     QHash<QString, QHash<int, ReadLimits>> m_knownLimits; // by lineKey(), then unit id
+    Reconnector *m_reconnector = nullptr;
+    bool m_estopPending = false; // pressed while the link was down: sent first when it is back
+    bool m_resumeStatus = false; // the status poll ran when the link was lost
+    QSet<QString> m_restored;    // "line#id" taken from the saved settings, not said yet
 };
 
 } // namespace stepcom

@@ -2,11 +2,37 @@
 
 #include "map/registermap.h"
 
+#include <QRegularExpression>
+#include <QStringList>
+
 namespace stepcom {
 
 bool ReadLimits::isEmpty() const
 {
     return !m_gapFree && m_unsupported.isEmpty() && m_split.isEmpty();
+}
+
+QString ReadLimits::toText() const
+{
+    QStringList words(m_unsupported.cbegin(), m_unsupported.cend());
+    words.sort();
+    if (m_gapFree)
+        words.prepend(QStringLiteral("gaps"));
+    return words.join(QLatin1Char(','));
+}
+
+ReadLimits ReadLimits::fromText(const QString &text)
+{
+    ReadLimits limits;
+    const QRegularExpression key(QStringLiteral("^[A-Za-z][A-Za-z0-9_.]*$"));
+    for (const QString &word : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QString w = word.trimmed();
+        if (w == QLatin1String("gaps"))
+            limits.m_gapFree = true;
+        else if (key.match(w).hasMatch())
+            limits.m_unsupported.insert(w);
+    }
+    return limits;
 }
 
 bool ReadLimits::mayRead(const RegisterMap &map, int first, int last) const

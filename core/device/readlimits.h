@@ -27,6 +27,11 @@ public:
     const QSet<QString> &unsupported() const { return m_unsupported; }
     bool isUnsupported(const QString &key) const { return m_unsupported.contains(key); }
     bool isEmpty() const;
+    // For the saved connection settings: "gaps" and the unsupported keys, comma-separated
+    // ("gaps,motor2.speed"); what is being narrowed down is not kept. fromText() ignores
+    // words it does not know, so a file written by another version never hurts.
+    QString toText() const;
+    static ReadLimits fromText(const QString &text);
 
     // May one FC03 cover first..last (0-based addresses) on this controller as far as known?
     bool mayRead(const RegisterMap &map, int first, int last) const;

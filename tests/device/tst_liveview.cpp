@@ -157,6 +157,48 @@ private Q_SLOTS:
         QVERIFY(session.readLimits().isEmpty());
         QCOMPARE(store->state(QStringLiteral("motor2.position")), ParameterStore::State::InSync);
     }
+
+    // Kept in the saved connection settings: the next session reads gap-free at once and
+    // says once in words what it knew (issue 15).
+    void knownLimitsNeedNoLearning()
+    {
+        SimHost host;
+        SimOptions options;
+        options.rtu = true;
+        options.strictReads = true;
+        options.lacks = {QStringLiteral("motor2.speed")};
+        QString error;
+        QVERIFY2(host.start(options, &error), qPrintable(error));
+        QMap<QString, QString> known;
+        {
+            DeviceSession first;
+            QSignalSpy read(&first, &DeviceSession::readFinished);
+            first.connectTo(ptyLink(host));
+            QVERIFY(read.wait(10000));
+            known = first.knownReadLimits();
+        }
+        const QString key = DeviceSession::lineKey(ptyLink(host)) + QStringLiteral("#1");
+        QCOMPARE(known, (QMap<QString, QString>{{key, QStringLiteral("gaps,motor2.speed")}}));
+
+        DeviceSession session;
+        session.setKnownReadLimits(
+            {{key, QStringLiteral("gaps,motor2.speed,not a key!")}, {QStringLiteral("x"), {}}});
+        QSignalSpy read(&session, &DeviceSession::readFinished);
+        QSignalSpy learnt(&session, &DeviceSession::readLimitsLearned);
+        QSignalSpy messages(&session, &DeviceSession::message);
+        session.connectTo(ptyLink(host));
+        QVERIFY(read.wait(10000));
+        QVERIFY(read.first().first().toBool());
+        QCOMPARE(learnt.size(), 0);
+        QCOMPARE(session.linkStats().exceptions, 0); // not one refused read
+        QCOMPARE(session.parameters()->state(QStringLiteral("motor2.speed")),
+                 ParameterStore::State::Unsupported);
+        QStringList said;
+        for (const QList<QVariant> &m : std::as_const(messages))
+            said << m.at(1).toString();
+        QCOMPARE(said.filter(QStringLiteral("Known from an earlier connection")).size(), 1);
+        QCOMPARE(session.knownReadLimits(), known);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestLiveView)
