@@ -5,6 +5,7 @@
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
 #include "device/linkhealth.h"
+#include "device/reconnector.h"
 #include "device/sessionlog.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
@@ -106,6 +107,8 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     createMenus();
     createDocks();
     m_linkStatus = new LinkStatus(session, this);
+    // A cable pulled and plugged back, an adapter that came back: the window tries again.
+    session->reconnector()->setEnabled(true);
     // A page change stops every jog (the session's rule); jog messages go to the dock.
     connect(m_sidebar, &QListWidget::currentRowChanged, session,
             [session] { session->stopJogging(DeviceSession::JogStop::PageLeft); });

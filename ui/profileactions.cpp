@@ -343,6 +343,7 @@ void ProfileActions::saveFromDeviceFile(const QString &path, const QString &name
             return;
         }
         Profile profile = Profile::fromValues(self->m_session->map(), r.values, true);
+        profile.unsupported = r.unsupported; // not "missing" when the file is read again
         profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
         profile.notes = notes;
         profile.deviceId = self->m_session->settings().deviceId;
@@ -416,6 +417,7 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         ReportInput input;
         input.map = self->m_session->map();
         input.values = r.values;
+        input.unsupported = r.unsupported;
         input.link = self->m_session->settings().describe();
         input.deviceId = self->m_session->settings().deviceId;
         input.notes = notes;

@@ -1,6 +1,7 @@
 #include "ctlmonitor.h"
 
 #include "device/devicesession.h"
+#include "device/reconnector.h"
 #include "signalwatcher.h"
 
 #include <QDateTime>
@@ -37,10 +38,12 @@ QString quoted(const QString &text)
 
 } // namespace
 
-CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, QObject *parent)
+CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, bool json,
+                       QObject *parent)
     : QObject(parent)
     , m_session(session)
     , m_count(count)
+    , m_json(json)
     , m_out(stdout)
     , m_err(stderr)
 {
@@ -48,10 +51,43 @@ CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, QObjec
     m_params = statusParameters(*m_session);
     connect(m_session, &DeviceSession::statusCycleFinished, this,
             [this](bool ok, qint64) { onCycle(ok); });
+    // A pulled cable is no reason to stop watching: try again, say so, go on.
+    Reconnector *reconnector = m_session->reconnector();
+    reconnector->setEnabled(true);
     connect(m_session, &DeviceSession::linkLost, this, [this](const QString &reason) {
-        m_err << QStringLiteral("stepcomctl: ") << tr("link lost: %1").arg(reason) << Qt::endl;
-        end(1);
+        event(QStringLiteral("lost"),
+              tr("link lost: %1; trying again on its own (Ctrl-C ends)").arg(reason),
+              QStringLiteral("reason"), reason);
     });
+    connect(reconnector, &Reconnector::restored, this, [this](const LinkSettings &s, int n) {
+        event(QStringLiteral("back"),
+              tr("link back at %1 after %n attempt(s)", nullptr, n).arg(s.describe()),
+              QStringLiteral("port"),
+              s.transport == LinkSettings::Transport::Tcp
+                  ? QStringLiteral("%1:%2").arg(s.host).arg(s.tcpPort)
+                  : s.portName);
+    });
+    connect(reconnector, &Reconnector::cancelled, this, [this] { end(1); });
+}
+
+void CtlMonitor::event(const QString &name, const QString &text, const QString &detailKey,
+                       const QString &detail)
+{
+    if (m_ended)
+        return;
+    if (!m_json) {
+        m_err << QStringLiteral("stepcomctl: ") << text << Qt::endl;
+        return;
+    }
+    QDateTime now = QDateTime::currentDateTime();
+    now = now.toOffsetFromUtc(now.offsetFromUtc());
+    m_out << QStringLiteral("{\"event\":%1,\"time\":\"%2\",\"t_ms\":%3,%4:%5}")
+                 .arg(quoted(name), now.toString(Qt::ISODateWithMs))
+                 .arg(m_clock.elapsed())
+                 .arg(quoted(detailKey), quoted(detail))
+          << QLatin1Char('\n');
+    m_out.flush();
+    std::fflush(stdout);
 }
 
 void CtlMonitor::start()
@@ -125,6 +161,7 @@ void CtlMonitor::end(int exitCode)
     if (m_ended)
         return;
     m_ended = true;
+    m_session->reconnector()->stop();
     m_session->stopStatus();
     if (exitCode == 0 && m_printed == 0) {
         // Stopped before a single sample: that is no successful run.

@@ -16,13 +16,16 @@ struct Parameter;
 
 // `stepcomctl monitor`: polls the live status through the session, as the window does, and prints
 // one compact JSON object per cycle -- {"time", "t_ms", then every status value in engineering
-// units by map key} -- flushed line by line, until --count samples or SIGINT/SIGTERM.
+// units by map key} -- flushed line by line, until --count samples or SIGINT/SIGTERM. A lost
+// link is tried again with a growing pause; "lost" and "back" are said as JSON lines
+// ({"event":"lost"|"back", ...}) with --json, else as text on stderr, and the samples go on.
 class CtlMonitor : public QObject
 {
     Q_OBJECT
 public:
     // count < 1: until stopped; intervalMs 0: as fast as the link allows.
-    CtlMonitor(DeviceSession *session, int count, int intervalMs, QObject *parent = nullptr);
+    CtlMonitor(DeviceSession *session, int count, int intervalMs, bool json,
+               QObject *parent = nullptr);
     void start();
     // One line for the values known now (null for what was never read).
     QString sampleLine(qint64 tMs) const;
@@ -35,17 +38,21 @@ public:
                                const std::function<std::optional<qint64>(const QString &)> &raw);
 
 Q_SIGNALS:
-    // 0 after --count samples or a signal, 1 when the link was lost.
+    // 0 after --count samples or a signal, 1 when the link was lost and trying again was
+    // cancelled.
     void finished(int exitCode);
 
 private:
     void onCycle(bool ok);
     void end(int exitCode);
+    void event(const QString &name, const QString &text, const QString &detailKey,
+               const QString &detail);
 
     DeviceSession *m_session;
     SignalWatcher *m_signals = nullptr;
     QList<const Parameter *> m_params; // positions, running flags, then the rest of the status
     int m_count;
+    bool m_json;
     int m_printed = 0;
     bool m_ended = false;
     QElapsedTimer m_clock;

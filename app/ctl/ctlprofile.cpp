@@ -59,6 +59,26 @@ void CtlRunner::printLeftOut(const Profile &profile, const QString &heading)
         m_out << QStringLiteral("  ") << line << Qt::endl;
 }
 
+int CtlRunner::noteUnsupported(const ReadOutcome &read, Profile *profile)
+{
+    if (read.unsupported.isEmpty())
+        return 0;
+    QStringList keys = read.unsupported;
+    keys.sort();
+    m_out
+        << tr("not supported by this controller (left out): %1").arg(keys.join(QLatin1String(", ")))
+        << Qt::endl;
+    int taken = 0;
+    if (profile) {
+        for (const QString &key : std::as_const(keys)) {
+            taken += int(profile->values.remove(key));
+            // A file saved from this controller lacks them too: nothing is missing there.
+            profile->variance.missing.removeAll(key);
+        }
+    }
+    return taken;
+}
+
 void CtlRunner::runDump()
 {
     if (m_options.arguments.size() != 1) {
@@ -96,7 +116,10 @@ void CtlRunner::runDump()
                                      "not be read completely"));
                 return;
             }
+            noteUnsupported(r);
             Profile profile = Profile::fromValues(m_map, r.values, m_options.includeLink);
+            profile.unsupported = r.unsupported;
+            profile.unsupported.sort();
             profile.name =
                 m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
             profile.notes = m_options.notes;
@@ -137,13 +160,16 @@ void CtlRunner::runDiff()
                     finish(m_linkError);
                     return;
                 }
+                Profile compared = profile;
+                const int unsupported = noteUnsupported(r, &compared);
                 const auto diffs =
-                    ProfileDiff::differences(ProfileDiff::compare(m_map, profile, r.values));
+                    ProfileDiff::differences(ProfileDiff::compare(m_map, compared, r.values));
                 for (const ProfileDifference &d : diffs)
                     m_out << ProfileDiff::describe(d) << Qt::endl;
-                printLeftOut(profile, tr("left out of the comparison:"));
-                const ProfileVariance &v = profile.variance;
-                const int leftOut = int(v.unknown.size() + v.rejected.size() + v.missing.size());
+                printLeftOut(compared, tr("left out of the comparison:"));
+                const ProfileVariance &v = compared.variance;
+                const int leftOut =
+                    int(v.unknown.size() + v.rejected.size() + v.missing.size()) + unsupported;
                 if (diffs.isEmpty() && leftOut == 0)
                     m_out << tr("the controller holds every value of the profile") << Qt::endl;
                 else if (diffs.isEmpty())
@@ -255,9 +281,11 @@ void CtlRunner::runApply()
                     return;
                 }
                 m_beforeApply = r.values;
+                Profile applied = profile;
+                noteUnsupported(r, &applied); // never written: the controller lacks them
                 QStringList keys;
                 for (const ProfileDifference &d :
-                     ProfileDiff::differences(ProfileDiff::compare(m_map, profile, r.values))) {
+                     ProfileDiff::differences(ProfileDiff::compare(m_map, applied, r.values))) {
                     if (d.linkSetting && !m_options.includeLink) {
                         m_out << tr("not applied (needs --include-link): %1")
                                      .arg(ProfileDiff::describe(d))
@@ -268,10 +296,10 @@ void CtlRunner::runApply()
                     m_out << tr("will write %1").arg(ProfileDiff::describe(d)) << Qt::endl;
                 }
                 // Said before asking, and with --yes too: what of the profile is not applied.
-                printLeftOut(profile, tr("not applied:"));
+                printLeftOut(applied, tr("not applied:"));
                 QStringList errors;
                 const QList<ParameterWrite> writes =
-                    ProfileDiff::writesFor(m_map, profile, keys, m_options.includeLink, &errors);
+                    ProfileDiff::writesFor(m_map, applied, keys, m_options.includeLink, &errors);
                 if (!errors.isEmpty()) {
                     fail(UsageError, errors.join(QLatin1String("; ")));
                     return;
@@ -435,9 +463,11 @@ void CtlRunner::runReport()
                 fail(DeviceError, tr("no report: the controller could not be read completely"));
                 return;
             }
+            noteUnsupported(r);
             ReportInput input;
             input.map = m_map;
             input.values = r.values;
+            input.unsupported = r.unsupported;
             input.link = m_session->settings().describe();
             input.deviceId = m_session->settings().deviceId;
             input.title = m_options.name;

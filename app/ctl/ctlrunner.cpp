@@ -245,6 +245,10 @@ void CtlRunner::connectThen(std::function<void()> next)
     m_session = new DeviceSession(m_map, this);
     m_session->setLive(false);
     DeviceSession::setLinkDiagnosticsShown(m_options.verbose);
+    // Said once, in words: what this controller refuses to read, and that the work goes on.
+    connect(m_session, &DeviceSession::readLimitsLearned, this, [this](const QString &text) {
+        m_err << QStringLiteral("stepcomctl: ") << tr("note: %1").arg(text) << Qt::endl;
+    });
     if (isMulti())
         m_session->setDeviceIds(m_options.ids);
     if (m_options.verbose) {
@@ -368,6 +372,9 @@ void CtlRunner::runRead()
                               << valueText(*p, r.values.value(p->key)) << Qt::endl;
                 }
             }
+            for (const QString &key : r.unsupported)
+                m_err << QStringLiteral("stepcomctl: ")
+                      << tr("%1 is not supported by this controller").arg(key) << Qt::endl;
             if (!r.ok) {
                 for (const QString &e : r.errors)
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
@@ -560,7 +567,8 @@ void CtlRunner::runMonitor()
             bus->start();
             return;
         }
-        auto *monitor = new CtlMonitor(m_session, m_options.count, m_options.intervalMs, this);
+        auto *monitor =
+            new CtlMonitor(m_session, m_options.count, m_options.intervalMs, m_options.json, this);
         connect(monitor, &CtlMonitor::finished, this, &CtlRunner::finish);
         monitor->start();
     });

@@ -74,6 +74,9 @@ private:
     // Profiles of other maps are read too; problems go to standard error, false then.
     bool loadProfile(const QString &path, Profile *out);
     // What of a profile of another map is left out, under `heading` (nothing when all fits).
+    // "not supported by this controller: ..." for what a read found the controller lacks;
+    // returns how many keys of `profile` (when given) it takes out of it.
+    int noteUnsupported(const ReadOutcome &read, Profile *profile = nullptr);
     void printLeftOut(const Profile &profile, const QString &heading);
     void runDiffFiles();
     void runReportFromFile(const QString &path);

@@ -39,6 +39,7 @@ public:
     bool isActive() const { return m_active; }
 
     BusDeviceStatus status(int id) const;
+    DeviceClient *client() const { return m_client; }
     // Keeps what is known of a device that leaves or joins the background poll.
     void setStatus(const BusDeviceStatus &status) { m_status.insert(status.id, status); }
     // The device in view is polled live, not here: its cycles are counted with the others'

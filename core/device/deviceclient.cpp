@@ -19,7 +19,20 @@ DeviceClient::DeviceClient(ModbusLink *link, const RegisterMap &map, QObject *pa
     : QObject(parent)
     , m_link(link)
     , m_map(map)
+    , m_limits(std::make_shared<QHash<int, ReadLimits>>())
 {}
+
+int DeviceClient::currentUnit() const
+{
+    return m_unitId > 0 ? m_unitId : m_link->settings().deviceId;
+}
+
+const ReadLimits &DeviceClient::readLimits(int unit) const
+{
+    static const ReadLimits none;
+    const auto it = m_limits->constFind(unit);
+    return it == m_limits->cend() ? none : *it;
+}
 
 ReadCostModel DeviceClient::costModel() const
 {
@@ -30,46 +43,130 @@ ReadCostModel DeviceClient::costModel() const
 
 QList<ReadBlock> DeviceClient::planRead(const QList<const Parameter *> &params) const
 {
-    return ReadPlanner::plan(params, m_map.maxRegistersPerRequest(), costModel());
+    return planRead(currentUnit(), params);
 }
+
+QList<ReadBlock> DeviceClient::planRead(int unit, const QList<const Parameter *> &params) const
+{
+    const ReadLimits &limits = readLimits(unit);
+    QList<const Parameter *> present;
+    for (const Parameter *p : params) {
+        if (p && !limits.isUnsupported(p->key))
+            present << p;
+    }
+    ReadPlanner::MayRead mayRead;
+    if (!limits.isEmpty())
+        mayRead = [this, limits](int first, int last) {
+            return limits.mayRead(m_map, first, last);
+        };
+    return ReadPlanner::plan(present, m_map.maxRegistersPerRequest(), costModel(), mayRead);
+}
+
+ReadLimits::Lesson DeviceClient::noteRefused(int unit, const ReadBlock &block, const Result &result)
+{
+    if (result.ok || result.exceptionCode != 2)
+        return ReadLimits::Lesson::None;
+    QString key;
+    const ReadLimits::Lesson lesson = (*m_limits)[unit].learn(m_map, block, &key);
+    if (lesson == ReadLimits::Lesson::GapsRefused || lesson == ReadLimits::Lesson::Unsupported)
+        Q_EMIT readLimitsLearned(unit, lesson, key);
+    return lesson;
+}
+
+namespace {
+
+// One read of several blocks; a block refused for what the controller lacks is planned again
+// within what it accepts, and only the rest is an error.
+struct ReadJob : std::enable_shared_from_this<ReadJob>
+{
+    DeviceClient *client = nullptr;
+    int unit = 0; // the controller asked, whatever the link's id is by the time it answers
+    QList<const Parameter *> params;
+    Priority priority = Priority::Read;
+    std::function<void(const ReadOutcome &)> done;
+    ReadOutcome outcome;
+    int pending = 0;
+    int index = 0;
+
+    void submit(const QList<ReadBlock> &blocks)
+    {
+        pending += int(blocks.size());
+        outcome.reads += int(blocks.size());
+        for (const ReadBlock &block : blocks) {
+            Request req = Request::read(block.address, block.count, priority);
+            req.unitId = unit;
+            req.what = DeviceClient::tr("read block %1/%2").arg(++index).arg(outcome.reads);
+            auto self = shared_from_this();
+            client->submit(
+                req, [self, block](const Result &r) { self->answered(block, r); }, client);
+        }
+    }
+
+    QList<const Parameter *> inside(const ReadBlock &block) const
+    {
+        QList<const Parameter *> out;
+        for (const Parameter *p : params) {
+            if (p->address >= block.address && p->lastAddress() <= block.lastAddress())
+                out << p;
+        }
+        return out;
+    }
+
+    void answered(const ReadBlock &block, const Result &r)
+    {
+        if (r.ok) {
+            for (const Parameter *p : inside(block))
+                outcome.values.insert(
+                    p->key, p->decode(r.values.constData() + (p->address - block.address)));
+        } else if (client->noteRefused(unit, block, r) != ReadLimits::Lesson::None) {
+            // Read again what this block held, planned within what is known now.
+            submit(client->planRead(unit, inside(block)));
+        } else {
+            outcome.errors << r.errorText;
+        }
+        if (--pending == 0)
+            finish();
+    }
+
+    void finish()
+    {
+        for (const Parameter *p : std::as_const(params)) {
+            if (client->readLimits(unit).isUnsupported(p->key) &&
+                !outcome.unsupported.contains(p->key))
+                outcome.unsupported << p->key;
+        }
+        outcome.ok = outcome.errors.isEmpty();
+        done(outcome);
+    }
+};
+
+} // namespace
 
 void DeviceClient::read(const QList<const Parameter *> &params, Priority priority,
                         std::function<void(const ReadOutcome &)> done)
 {
-    const QList<ReadBlock> blocks = planRead(params);
-    auto outcome = std::make_shared<ReadOutcome>();
-    auto pending = std::make_shared<int>(int(blocks.size()));
-    outcome->reads = int(blocks.size());
+    auto job = std::make_shared<ReadJob>();
+    job->client = this;
+    job->unit = currentUnit();
+    job->priority = priority;
+    job->done = std::move(done);
+    for (const Parameter *p : params) {
+        if (p && p->readable())
+            job->params << p;
+    }
+    const QList<ReadBlock> blocks = planRead(job->unit, params);
     if (blocks.isEmpty()) {
-        outcome->ok = params.isEmpty();
-        if (!params.isEmpty())
-            outcome->errors << tr("nothing readable among the parameters asked for");
-        QTimer::singleShot(0, this, [outcome, done] { done(*outcome); });
+        const ReadLimits &limits = readLimits(job->unit);
+        const bool allUnsupported =
+            !job->params.isEmpty() &&
+            std::all_of(job->params.cbegin(), job->params.cend(),
+                        [&limits](const Parameter *p) { return limits.isUnsupported(p->key); });
+        if (!params.isEmpty() && !allUnsupported)
+            job->outcome.errors << tr("nothing readable among the parameters asked for");
+        QTimer::singleShot(0, this, [job] { job->finish(); });
         return;
     }
-    int index = 0;
-    for (const ReadBlock &block : blocks) {
-        Request req = Request::read(block.address, block.count, priority);
-        req.what = tr("read block %1/%2").arg(++index).arg(blocks.size());
-        submit(
-            req,
-            [this, block, params, outcome, pending, done](const Result &r) {
-                if (r.ok) {
-                    for (const Parameter *p : params) {
-                        if (p->address >= block.address && p->lastAddress() <= block.lastAddress())
-                            outcome->values.insert(p->key, p->decode(r.values.constData() +
-                                                                     (p->address - block.address)));
-                    }
-                } else {
-                    outcome->errors << r.errorText;
-                }
-                if (--*pending == 0) {
-                    outcome->ok = outcome->errors.isEmpty();
-                    done(*outcome);
-                }
-            },
-            this);
-    }
+    job->submit(blocks);
 }
 
 void DeviceClient::readAll(std::function<void(const ReadOutcome &)> done)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bus/request.h"
+#include "device/readlimits.h"
 #include "device/readplanner.h"
 #include "device/writeplanner.h"
 #include "map/registermap.h"
@@ -9,6 +10,7 @@
 #include <QObject>
 
 #include <functional>
+#include <memory>
 
 namespace stepcom {
 
@@ -19,6 +21,7 @@ struct ReadOutcome
     bool ok = false;
     QHash<QString, qint64> values; // raw, by key: whatever could be read
     QStringList errors;
+    QStringList unsupported; // asked for, but this controller does not have them (not an error)
     int reads = 0;
 };
 
@@ -50,7 +53,23 @@ public:
     ModbusLink *link() const { return m_link; }
     // The wire-time model for the link's current baud (TCP: the answer delay only).
     ReadCostModel costModel() const;
+    // The cheapest reads of the parameters this controller has, within what it accepts.
     QList<ReadBlock> planRead(const QList<const Parameter *> &params) const;
+    QList<ReadBlock> planRead(int unit, const QList<const Parameter *> &params) const;
+    // What each controller on the line refuses to read, by unit id (a lesson is per id).
+    const ReadLimits &readLimits() const { return readLimits(currentUnit()); }
+    const ReadLimits &readLimits(int unit) const;
+    QHash<int, ReadLimits> allReadLimits() const { return *m_limits; }
+    void setAllReadLimits(const QHash<int, ReadLimits> &limits) { *m_limits = limits; }
+    // Another client on the same line learns from and plans with the same limits.
+    void shareReadLimits(DeviceClient *other) { other->m_limits = m_limits; }
+    // A read of `block` sent to `unit` was answered with exception 02: learn from it (said
+    // once, by signal).
+    ReadLimits::Lesson noteRefused(const ReadBlock &block, const Result &result)
+    {
+        return noteRefused(currentUnit(), block, result);
+    }
+    ReadLimits::Lesson noteRefused(int unit, const ReadBlock &block, const Result &result);
 
     void read(const QList<const Parameter *> &params, Priority priority,
               std::function<void(const ReadOutcome &)> done);
@@ -66,6 +85,8 @@ public:
     // device id at the moment each request goes out.
     void setUnitId(int id) { m_unitId = id; }
     int unitId() const { return m_unitId; }
+    // The id the next request goes to: the set unit id, else the link's device id.
+    int currentUnit() const;
     // Queue a request for this client's controller.
     quint64 submit(Request request, ResultCallback callback, QObject *context);
 
@@ -73,9 +94,14 @@ public:
     // Empty when every write is allowed, else one message per bad value.
     static QStringList validate(const QList<ParameterWrite> &writes);
 
+Q_SIGNALS:
+    // Something new about what this controller reads: gaps refused, or a parameter it lacks.
+    void readLimitsLearned(int unit, stepcom::ReadLimits::Lesson lesson, const QString &key);
+
 private:
     ModbusLink *m_link;
     RegisterMap m_map;
+    std::shared_ptr<QHash<int, ReadLimits>> m_limits;
     int m_unitId = 0;
 };
 

@@ -9,6 +9,7 @@
 #include "device/linkhealth.h"
 #include "device/motionjudge.h"
 #include "device/motionsupervisor.h"
+#include "device/reconnector.h"
 #include "device/simulatorstarter.h"
 #include "device/statusrecorder.h"
 #include "device/stepmove.h"
@@ -44,22 +45,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     m_bus->setKeys(m_poller->keys());
     connect(m_bus, &BusPoller::statusChanged, this, &DeviceSession::deviceStatusChanged);
     m_link->traffic()->setMap(&m_client->map());
-    connect(m_link, &ModbusLink::opened, this, [this](bool ok, const QString &reason) {
-        Q_EMIT connected(ok, reason);
-        if (!ok) {
-            say(Severity::Error, tr("Cannot connect: %1").arg(reason));
-            return;
-        }
-        say(Severity::Info,
-            tr("Opened %1; asking the controller").arg(m_link->settings().describe()));
-        if (std::exchange(m_readAfterConnect, false) && m_live)
-            readAll();
-        if (m_live) {
-            m_poller->start();
-            updateBackground();
-            m_bus->start();
-        }
-    });
+    connect(m_link, &ModbusLink::opened, this, &DeviceSession::onOpened);
     connect(m_link, &ModbusLink::stateChanged, this, &DeviceSession::linkStateChanged);
     connect(m_link, &ModbusLink::statsChanged, this, &DeviceSession::linkStatsChanged);
     connect(m_link, &ModbusLink::echoDetected, this, &DeviceSession::echoSuspected);
@@ -72,20 +58,33 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             say(Severity::Info, tr("The controller answers."));
         Q_EMIT linkStateChanged();
     });
-    connect(m_link, &ModbusLink::lost, this, [this](const QString &reason) {
-        m_poller->stop();
-        m_bus->stop();
-        m_store->forgetDeviceValues();
-        m_memory->forgetDeviceValues();
-        say(Severity::Error, tr("Link lost: %1").arg(reason));
-        Q_EMIT disconnected(reason);
-        Q_EMIT linkLost(reason);
+    connect(m_link, &ModbusLink::lost, this, &DeviceSession::onLost);
+    connect(m_poller, &Poller::cycleFinished, this, [this](bool ok, qint64 ms) {
+        Q_EMIT statusCycleFinished(ok, ms);
+        if (std::exchange(m_readAllAfterStatus, false))
+            readAll();
     });
+    connect(m_client, &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
+    // The background poll plans with, and learns into, the same per-id limits.
+    m_client->shareReadLimits(m_bus->client());
+    connect(m_bus->client(), &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
     connect(m_poller, &Poller::cycleFinished, this, [this](bool ok) {
         m_bus->noteLiveCycle(deviceInView(), ok, *m_store, m_poller->lastError());
     });
-    connect(m_poller, &Poller::cycleFinished, this, &DeviceSession::statusCycleFinished);
     connect(m_poller, &Poller::fastChanged, this, &DeviceSession::statusFastChanged);
+    m_reconnector = new Reconnector(this);
+    connect(m_reconnector, &Reconnector::reopen, this, &DeviceSession::reopen);
+    connect(m_reconnector, &Reconnector::restored, this,
+            [this](const LinkSettings &s, int attempts) {
+                say(Severity::Info, tr("The link is back at %1 (attempt %2): reading the status, "
+                                       "then everything")
+                                        .arg(s.describe())
+                                        .arg(attempts));
+            });
+    connect(m_reconnector, &Reconnector::cancelled, this, [this] {
+        say(Severity::Info, tr("Reconnecting cancelled: Connect tries again."));
+        Q_EMIT linkStateChanged();
+    });
 }
 
 DeviceSession::~DeviceSession()
@@ -226,52 +225,6 @@ void DeviceSession::say(Severity severity, const QString &text)
     Q_EMIT message(severity, text);
 }
 
-void DeviceSession::connectTo(const LinkSettings &settings)
-{
-    if (m_usingSim && m_sim) {
-        // leaving the built-in simulator: close our side first so its going away is no "loss"
-        m_link->close(tr("switching to %1").arg(settings.describe()));
-        m_sim->stop();
-    }
-    m_usingSim = false;
-    openLink(settings);
-}
-
-void DeviceSession::connectSimulator()
-{
-    QString error;
-    std::optional<LinkSettings> s;
-    if (!m_sim)
-        error = tr("this program has no built-in simulator");
-    else
-        s = m_sim->start(map(), &error);
-    if (!s) {
-        say(Severity::Error, tr("Cannot start the built-in simulator: %1").arg(error));
-        Q_EMIT connected(false, error);
-        return;
-    }
-    m_usingSim = true; // before open(): on a pty the verdict arrives inside it
-    openLink(*s);
-}
-
-void DeviceSession::openLink(const LinkSettings &settings)
-{
-    m_readAfterConnect = true;
-    m_link->resetStats(); // statistics are per connection
-    m_link->open(settings);
-}
-
-void DeviceSession::disconnectFrom(const QString &reason)
-{
-    const QString why = reason.isEmpty() ? tr("disconnected by the user") : reason;
-    m_poller->stop();
-    m_bus->stop();
-    m_link->close(why);
-    m_store->forgetDeviceValues();
-    m_memory->forgetDeviceValues();
-    Q_EMIT disconnected(why);
-}
-
 void DeviceSession::readAll()
 {
     const int id = deviceInView();
@@ -391,6 +344,12 @@ void DeviceSession::emergencyStop()
 {
     Q_EMIT emergencyStopRequested();
     if (!m_link->isConnected()) {
+        if (m_reconnector->isActive()) {
+            m_estopPending = true;
+            say(Severity::Error, tr("E-STOP: the link is down, the controller did NOT get it; "
+                                    "it is sent first when the link is back"));
+            return;
+        }
         say(Severity::Warning, tr("E-STOP: not connected, nothing was sent"));
         return;
     }

@@ -11,7 +11,9 @@
 #include "device/poller.h" // PollStats
 #include "motion/travellimits.h"
 
+#include <QMap>
 #include <QObject>
+#include <QSet>
 
 #include <memory>
 
@@ -23,6 +25,7 @@ class JogController;
 class LinkHealth;
 class ModbusLink;
 class MotionSupervisor;
+class Reconnector;
 class SimulatorStarter;
 class StatusRecorder;
 class StepMove;
@@ -76,6 +79,9 @@ public:
     void guard(Risk risk, Proceed proceed);
     // Port closed / open but not answering / answering: "connected" means answering.
     LinkHealth *health() const { return m_health; }
+    // Tries again on its own after a link loss (off until a front-end turns it on); while it
+    // waits, an E-STOP is held and sent first when the link is back, then everything is read.
+    Reconnector *reconnector() const { return m_reconnector; }
     // The live status recorded for the plots; made on first use, recording from then on.
     StatusRecorder *recorder();
     TrafficLog *traffic() const;
@@ -119,6 +125,15 @@ public:
     void connectSimulator();
     // Close the link; an empty reason says the user disconnected.
     void disconnectFrom(const QString &reason = QString());
+    // What the connected controller refuses to read (gaps, parameters it lacks), learnt from
+    // its answers and remembered per line and id for this session's life.
+    const ReadLimits &readLimits() const;
+    // The line a controller is on (port, or host:port); read limits are kept per line and id.
+    static QString lineKey(const LinkSettings &settings);
+    // Every controller's known read limits as text by "line#id", for the saved connection
+    // settings; taken back, the next connect need not learn them again (said once then).
+    QMap<QString, QString> knownReadLimits() const;
+    void setKnownReadLimits(const QMap<QString, QString> &known);
 
     void readAll();
     // Read these parameters (or all) and hand the outcome over; the store is left alone.
@@ -212,19 +227,28 @@ Q_SIGNALS:
     // emergencyStop() was asked for, before anything is cancelled or sent: work that runs
     // device after device (a profile applied to several) stops here.
     void emergencyStopRequested();
+    // Learnt what the controller refuses to read (said once, in words; also a message()).
+    void readLimitsLearned(const QString &text);
 
 private:
     friend class SessionInternals; // tests and the benchmark's link measurements
 
     void say(Severity severity, const QString &text);
     void openLink(const LinkSettings &settings);
+    // The reconnector's attempt: the same line (or the simulator) again, limits kept.
+    void reopen(const LinkSettings &settings);
+    void onOpened(bool ok, const QString &reason);
+    void onLost(const QString &reason);
+    // What a connect found already known of this controller, said once in words.
+    void sayKnownLimits(int id);
+    void learnt(int unit, ReadLimits::Lesson lesson, const QString &key);
     void guardedCommand(Risk risk, const QString &key);
     void writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous);
-    // After a failed write, read back what the controller holds for the keys whose request went
-    // out without a good answer.
     // The devices not in view, for the background poll.
     void updateBackground();
     void emergencyStopAll(const QList<int> &ids);
+    // After a failed write, read back what the controller holds for the keys whose request went
+    // out without a good answer.
     void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
 
     ModbusLink *m_link;
@@ -244,7 +268,13 @@ private:
     std::unique_ptr<SimulatorStarter> m_sim;
     bool m_usingSim = false;
     bool m_readAfterConnect = false;
+    bool m_readAllAfterStatus = false; // live values first: read everything after one status
     bool m_live = true;
+    QHash<QString, QHash<int, ReadLimits>> m_knownLimits; // by lineKey(), then unit id
+    Reconnector *m_reconnector = nullptr;
+    bool m_estopPending = false; // pressed while the link was down: sent first when it is back
+    bool m_resumeStatus = false; // the status poll ran when the link was lost
+    QSet<QString> m_restored;    // "line#id" taken from the saved settings, not said yet
 };
 
 } // namespace stepcom

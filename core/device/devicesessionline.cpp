@@ -63,6 +63,8 @@ bool DeviceSession::showDevice(int id)
     m_memory->putAside(deviceInView(), *m_store);
     m_link->setDeviceId(id);
     m_memory->bringBack(id, *m_store, m_bus->status(id).values);
+    m_store->setUnsupported(m_client->readLimits(id).unsupported());
+    sayKnownLimits(id);
     updateBackground();
     Q_EMIT deviceInViewChanged(id);
     if (m_link->isConnected() && m_live) {

@@ -20,6 +20,8 @@ std::optional<qint64> ParameterStore::shownValue(const QString &key) const
 
 ParameterStore::State ParameterStore::stateOf(const Entry &e)
 {
+    if (e.unsupported)
+        return State::Unsupported;
     if (!e.error.isEmpty() && e.edited)
         return State::WriteFailed;
     if (e.edited)
@@ -33,7 +35,7 @@ void ParameterStore::update(const QString &key, const Entry &entry)
     next.state = stateOf(next);
     const Entry old = m_entries.value(key);
     if (old.device == next.device && old.edited == next.edited && old.state == next.state &&
-        old.error == next.error)
+        old.error == next.error && old.unsupported == next.unsupported)
         return;
     const bool editsMoved = old.edited.has_value() != next.edited.has_value();
     m_entries.insert(key, next);
@@ -78,6 +80,20 @@ void ParameterStore::restore(const Snapshot &snapshot)
     setUnsavedToFlash(snapshot.unsaved);
 }
 
+void ParameterStore::setUnsupported(const QSet<QString> &keys)
+{
+    for (auto it = m_entries.cbegin(); it != m_entries.cend(); ++it) {
+        Entry e = it.value();
+        e.unsupported = keys.contains(it.key());
+        if (e.unsupported) {
+            e.device.reset();
+            e.edited.reset();
+            e.error.clear();
+        }
+        update(it.key(), e);
+    }
+}
+
 QString ParameterStore::edit(const QString &key, qint64 raw)
 {
     const Parameter *p = m_map.find(key);
@@ -86,6 +102,10 @@ QString ParameterStore::edit(const QString &key, qint64 raw)
             .arg(key);
     if (!p->writable())
         return QCoreApplication::translate("stepcom::ParameterStore", "%1 is read-only").arg(key);
+    if (m_entries.value(key).unsupported)
+        return QCoreApplication::translate("stepcom::ParameterStore",
+                                           "%1 is not supported by this controller")
+            .arg(key);
     if (const QString why = p->checkRaw(raw); !why.isEmpty())
         return why;
     Entry e = m_entries.value(key);

@@ -5,6 +5,7 @@
 
 #include <QHash>
 #include <QObject>
+#include <QSet>
 
 #include <optional>
 
@@ -17,7 +18,7 @@ class ParameterStore : public QObject
 {
     Q_OBJECT
 public:
-    enum class State { Unknown, InSync, Edited, WriteFailed };
+    enum class State { Unknown, InSync, Edited, WriteFailed, Unsupported };
     Q_ENUM(State)
 
     struct Entry
@@ -25,7 +26,8 @@ public:
         std::optional<qint64> device;
         std::optional<qint64> edited;
         State state = State::Unknown;
-        QString error; // why the last write failed
+        QString error;            // why the last write failed
+        bool unsupported = false; // this controller does not have it (refused a read of it)
     };
 
     // Everything held for one controller: put aside when another device of the line is shown,
@@ -53,6 +55,10 @@ public:
     // The link is gone: what the device holds is unknown again (edits stay). A file (openFile)
     // keeps its values.
     void forgetDeviceValues();
+    // The parameters the connected controller does not have ("not supported by this
+    // controller"); every other key is supported again.
+    void setUnsupported(const QSet<QString> &keys);
+    bool isUnsupported(const QString &key) const { return m_entries.value(key).unsupported; }
 
     Snapshot snapshot() const { return {m_entries, m_unsaved}; }
     // Holds what `snapshot` held (keys it lacks become unknown); views hear of every change.

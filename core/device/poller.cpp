@@ -177,7 +177,7 @@ void Poller::readBlock(int index)
                        .arg(names.join(QStringLiteral(", ")));
     const quint64 generation = m_generation;
     m_outstanding = true;
-    m_client->link()->submit(
+    m_client->submit(
         request, [this, generation, index](const Result &r) { onBlockRead(generation, index, r); },
         this);
 }
@@ -190,13 +190,24 @@ void Poller::onBlockRead(quint64 generation, int index, const Result &result)
             m_timer.start(0);
         return;
     }
-    const ReadBlock &block = m_cycleBlocks.at(index);
+    const ReadBlock block = m_cycleBlocks.at(index);
     if (result.ok && result.values.size() == block.count) {
         for (const Parameter *p : std::as_const(m_cycleParams)) {
             if (p->address >= block.address && p->lastAddress() <= block.lastAddress())
                 m_cycleValues.insert(
                     p->key, p->decode(result.values.constData() + (p->address - block.address)));
         }
+    } else if (m_client->noteRefused(block, result) != ReadLimits::Lesson::None) {
+        // The controller lacks something this block covered: read its parameters again
+        // within what it accepts, in this same cycle.
+        QList<const Parameter *> inside;
+        for (const Parameter *p : std::as_const(m_cycleParams)) {
+            if (p->address >= block.address && p->lastAddress() <= block.lastAddress())
+                inside << p;
+        }
+        const QList<ReadBlock> again = m_client->planRead(inside);
+        for (qsizetype i = 0; i < again.size(); ++i)
+            m_cycleBlocks.insert(index + 1 + i, again.at(i));
     } else {
         m_cycleOk = false;
         m_lastError = result.errorText;

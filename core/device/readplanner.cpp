@@ -16,7 +16,7 @@ ReadCostModel ReadCostModel::forBaud(int baud, double answerDelayMs)
 }
 
 QList<ReadBlock> ReadPlanner::plan(const QList<const Parameter *> &params, int maxRegisters,
-                                   const ReadCostModel &model)
+                                   const ReadCostModel &model, const MayRead &mayRead)
 {
     struct Span
     {
@@ -50,6 +50,9 @@ QList<ReadBlock> ReadPlanner::plan(const QList<const Parameter *> &params, int m
         for (int i = j; i >= 1; --i) {
             const int length = merged[j - 1].last - merged[i - 1].first + 1;
             if (length > maxRegisters)
+                break;
+            // What a read may cover only shrinks as it widens: no wider block can be allowed.
+            if (i < j && mayRead && !mayRead(merged[i - 1].first, merged[j - 1].last))
                 break;
             if (best[i - 1] == kInf)
                 continue;

@@ -2,6 +2,8 @@
 
 #include <QList>
 
+#include <functional>
+
 namespace stepcom {
 
 struct Parameter;
@@ -31,12 +33,15 @@ struct ReadCostModel
 // Plans the cheapest set of reads that covers the given parameters under the controller's
 // limit of registers per request: it merges across gaps when reading the gap costs less than
 // another request, and never splits a 32-bit value. Exact (dynamic programming over the sorted
-// parameters), ties broken towards fewer reads.
+// parameters), ties broken towards fewer reads. With `mayRead` a block may cover only what it
+// allows (first and last 0-based address): a controller that refuses gaps gets the cheapest plan
+// that never touches an unlisted register.
 class ReadPlanner
 {
 public:
+    using MayRead = std::function<bool(int first, int last)>;
     static QList<ReadBlock> plan(const QList<const Parameter *> &params, int maxRegisters,
-                                 const ReadCostModel &model);
+                                 const ReadCostModel &model, const MayRead &mayRead = {});
     static double costMs(const QList<ReadBlock> &blocks, const ReadCostModel &model);
 };
 

@@ -24,6 +24,9 @@ struct Profile
     QDateTime created; // UTC
     QString stepcomVersion;
     int deviceId = 0; // metadata: the controller it was saved from (0 = unknown)
+    // metadata: settings the controller it was saved from does not have (a firmware variant
+    // that refuses to read them): not "missing" from the file
+    QStringList unsupported;
     int baud = 0;
     QMap<QString, qint64> values; // raw, by key, ordered by key
     // A profile of another map (mapId/mapVersion differ): what this map cannot take. `values`

@@ -313,14 +313,29 @@ private:
             return;
         }
         const QJsonObject o = value.toObject();
-        QStringList fields{QStringLiteral("name"),     QStringLiteral("notes"),
-                           QStringLiteral("created"),  QStringLiteral("stepcomVersion"),
-                           QStringLiteral("deviceId"), QStringLiteral("baud")};
+        QStringList fields{QStringLiteral("name"),       QStringLiteral("notes"),
+                           QStringLiteral("created"),    QStringLiteral("stepcomVersion"),
+                           QStringLiteral("deviceId"),   QStringLiteral("baud"),
+                           QStringLiteral("unsupported")};
         if (m_schema >= 2)
             fields << QStringLiteral("backup");
         unknownFields(o, fields, QStringLiteral("metadata"));
         if (m_schema >= 2 && o.contains(QLatin1String("backup")))
             readBackup(o.value(QLatin1String("backup")), profile);
+        if (const QJsonValue u = o.value(QLatin1String("unsupported")); !u.isUndefined()) {
+            if (!u.isArray())
+                m_errors << ProfileFile::tr("\"metadata\": \"unsupported\" must be a list of "
+                                            "keys, found %1")
+                                .arg(typeName(u));
+            for (const QJsonValue &k : u.toArray()) {
+                if (!k.isString() || !m_map.find(k.toString()))
+                    m_errors << ProfileFile::tr("\"metadata\": \"unsupported\": %1 is no "
+                                                "parameter of the map")
+                                    .arg(k.isString() ? k.toString() : typeName(k));
+                else
+                    profile->unsupported << k.toString();
+            }
+        }
         auto text = [&](const char *field, QString *out) {
             const QJsonValue v = o.value(QLatin1String(field));
             if (v.isUndefined())
@@ -426,7 +441,7 @@ private:
             profile->values.insert(key, *raw);
         }
         for (const Parameter *p : Profile::profileParameters(m_map, false)) {
-            if (o.contains(p->key))
+            if (o.contains(p->key) || profile->unsupported.contains(p->key))
                 continue;
             if (variant)
                 m_variance.missing << p->key;
@@ -507,6 +522,9 @@ QByteArray ProfileFile::toJson(const Profile &profile, const RegisterMap &map)
         metadata.insert(QStringLiteral("deviceId"), profile.deviceId);
     if (profile.baud > 0)
         metadata.insert(QStringLiteral("baud"), profile.baud);
+    if (!profile.unsupported.isEmpty())
+        metadata.insert(QStringLiteral("unsupported"),
+                        QJsonArray::fromStringList(profile.unsupported));
     // Schema 2 only when its fields are used: such a file stays readable by every StepCom.
     bool schema2 = false;
     if (!profile.backupOperation.isEmpty()) {

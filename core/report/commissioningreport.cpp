@@ -150,7 +150,9 @@ QString CommissioningReport::parameterSection() const
                 if (p->instance != instance)
                     continue;
                 QString value = QStringLiteral("—");
-                if (m_in.values.contains(p->key)) {
+                if (m_in.unsupported.contains(p->key)) {
+                    value = tr("not supported by this controller");
+                } else if (m_in.values.contains(p->key)) {
                     const qint64 raw = m_in.values.value(p->key);
                     value = p->formatRaw(raw);
                     const QString shown = p->displayRaw(raw, m_in.locale);
@@ -269,6 +271,11 @@ QString CommissioningReport::body(const QString &imageSource) const
     // The long tables run from the first page on; the picture, which cannot be split, comes
     // after them so it never leaves a half-empty first page behind.
     h += parameterSection();
+    if (!m_in.unsupported.isEmpty())
+        h += QStringLiteral("<p>%1</p>\n")
+                 .arg(esc(tr("Not supported by this controller (it refuses to read them, a "
+                             "firmware variant): %1")
+                              .arg(m_in.unsupported.join(QLatin1String(", ")))));
     h += certificate.travelLimits();
     h += interpolationSection(imageSource);
     h += fileSection();

@@ -35,6 +35,7 @@ public:
     // since connecting or since the last verified save to flash, false when a write since then
     // would be lost at power-off; unknown (nullopt) when the program did not watch (stepcomctl).
     std::optional<bool> savedToFlash;
+    QStringList unsupported; // keys the controller does not have (refused to read them)
 
     // Made from a file, not read from a controller: the file's name, and what its metadata
     // says about the controller it was saved from (information only).

@@ -54,8 +54,13 @@ void SimCommandLine::addOptions(QCommandLineParser &p)
                     "half-duplex USB-RS485 adapter without echo suppression does (pty and "
                     "--rtu-tcp).")});
     p.addOption({QStringLiteral("listen-any"), tr("Listen for TCP on every interface.")});
-    p.addOption({QStringLiteral("strict-reads"),
-                 tr("Refuse reads of reserved registers (exception 02) instead of reading 0.")});
+    p.addOption({{QStringLiteral("refuse-gaps"), QStringLiteral("strict-reads")},
+                 tr("Refuse a read that covers a reserved register (exception 02): only the "
+                    "manual's listed registers can be read.")});
+    p.addOption({QStringLiteral("lacks"),
+                 tr("Be a firmware without this listed register (a key or a number such as "
+                    "40110): reads and writes covering it get exception 02. Repeatable."),
+                 tr("REGISTER")});
     p.addOption({QStringLiteral("id"), tr("Device id 1-255 (overrides the saved one)."), n});
     p.addOption({QStringLiteral("ids"),
                  tr("Several controllers on the one port, one per id (e.g. 1,2,3 or 1-3); a "
@@ -193,7 +198,8 @@ bool SimCommandLine::toOptions(const QCommandLineParser &p, SimOptions *o, QStri
     if (p.isSet(QStringLiteral("listen-any")))
         o->tcpAddress = QHostAddress(QHostAddress::Any);
     o->statePath = p.value(QStringLiteral("state"));
-    o->strictReads = p.isSet(QStringLiteral("strict-reads"));
+    o->strictReads = p.isSet(QStringLiteral("refuse-gaps"));
+    o->lacks = p.values(QStringLiteral("lacks"));
     int seed = int(o->faults.seed);
     if (!intOption("id", 1, 255, &o->deviceId) ||
         !intOption("answer-delay", 0, 60000, &o->answerDelayMs) ||

@@ -66,7 +66,7 @@ SimAnswer SimDevice::handle(const QModbusRequest &request)
     SimProtocol protocol(m_regs,
                          {[this](const QList<SimProtocol::Write> &w) { applyWrites(w); },
                           [this](const Parameter &coil) { return executeCoil(coil); }},
-                         m_strictReads);
+                         m_strictReads, m_lacking);
     SimAnswer answer;
     answer.response = protocol.process(request);
     answer.linkChanged = m_linkChanged;
@@ -95,6 +95,12 @@ void SimDevice::setStrictReads(bool strict)
 {
     QMutexLocker lock(&m_mutex);
     m_strictReads = strict;
+}
+
+void SimDevice::setLacking(const QSet<QString> &keys)
+{
+    QMutexLocker lock(&m_mutex);
+    m_lacking = keys;
 }
 
 void SimDevice::setLinkObserver(std::function<void()> observer)

@@ -8,6 +8,7 @@
 #include <QHash>
 #include <QModbusPdu>
 #include <QMutex>
+#include <QSet>
 
 #include <functional>
 #include <optional>
@@ -72,6 +73,9 @@ public:
 
     // Strict reads: every address read must belong to a parameter (default: gaps read as 0).
     void setStrictReads(bool strict);
+    // A firmware variant without these listed parameters: reads and writes of them get
+    // exception 02.
+    void setLacking(const QSet<QString> &keys);
 
     // A few lines for people: mode, motors, inputs, outputs.
     QString statusText() const;
@@ -91,6 +95,7 @@ private:
     QHash<QString, qint64> m_flash; // saved values when there is no state file
     bool m_linkChanged = false;
     bool m_strictReads = false;
+    QSet<QString> m_lacking;
     std::function<void()> m_linkObserver;
 };
 

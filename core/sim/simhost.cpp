@@ -30,6 +30,21 @@ std::unique_ptr<SimDevice> SimHost::makeDevice(const SimOptions &options, int id
     }
     d.setStatePath(statePath);
     d.setStrictReads(options.strictReads);
+    QSet<QString> lacking;
+    for (const QString &name : options.lacks) {
+        bool isNumber = false;
+        const int plc = name.toInt(&isNumber);
+        const Parameter *p = isNumber && plc > 40000 && plc <= 40000 + 0x10000
+                                 ? d.map().holdingAt(quint16(plc - 40001))
+                                 : d.map().find(name);
+        if (!p || !p->isHolding()) {
+            if (error)
+                *error = tr("--lacks: %1 is no listed register of the map").arg(name);
+            return nullptr;
+        }
+        lacking.insert(p->key);
+    }
+    d.setLacking(lacking);
     QString loadError;
     if (!d.loadState(&loadError)) {
         if (error)

@@ -37,7 +37,12 @@ struct SimOptions
     QHostAddress tcpAddress = QHostAddress(QHostAddress::LocalHost);
     quint16 tcpPort = 0; // 0: any free port, see SimHost::tcpPort()
 
-    bool strictReads = false; // reads of reserved registers get exception 02 instead of 0
+    // Reads covering a reserved (unlisted) register get exception 02 instead of 0: only the
+    // manual's listed registers can be read (--refuse-gaps, alias --strict-reads).
+    bool strictReads = false;
+    // Listed parameters this firmware lacks (keys or register numbers such as 40112, as typed):
+    // reads and writes covering them get exception 02. Resolved against the map at start.
+    QStringList lacks;
 
     int deviceId = 0; // 1-255 overrides the saved id; 0 keeps it
     // Several controllers on the one port (an RS-485 line), one per entry, each with its own

@@ -25,10 +25,12 @@ QModbusResponse exception(const QModbusRequest &request,
 
 } // namespace
 
-SimProtocol::SimProtocol(const SimRegisters &registers, Hooks hooks, bool strictReads)
+SimProtocol::SimProtocol(const SimRegisters &registers, Hooks hooks, bool strictReads,
+                         QSet<QString> lacking)
     : m_regs(registers)
     , m_hooks(std::move(hooks))
     , m_strictReads(strictReads)
+    , m_lacking(std::move(lacking))
 {}
 
 QModbusResponse SimProtocol::process(const QModbusRequest &request) const
@@ -62,7 +64,7 @@ QModbusResponse SimProtocol::readHolding(const QModbusRequest &request) const
         return exception(request, QModbusExceptionResponse::IllegalDataAddress);
     for (int address = start; address < start + count; ++address) {
         const Parameter *p = m_regs.map().holdingAt(quint16(address));
-        if (!p && m_strictReads)
+        if ((!p && m_strictReads) || (p && m_lacking.contains(p->key)))
             return exception(request, QModbusExceptionResponse::IllegalDataAddress);
         if (!p) {
             appendWord(out, 0); // reserved: the firmware's register array holds 0 there
@@ -82,7 +84,7 @@ QModbusResponse SimProtocol::writeSingle(const QModbusRequest &request) const
     const quint16 address = word(data, 0);
     const quint16 value = word(data, 2);
     const Parameter *p = m_regs.map().holdingAt(address);
-    if (!p || !p->writable() || p->words != 1)
+    if (!p || !p->writable() || p->words != 1 || m_lacking.contains(p->key))
         return exception(request, QModbusExceptionResponse::IllegalDataAddress);
     const qint64 raw = p->decode(&value);
     if (!p->checkRaw(raw).isEmpty())
@@ -110,7 +112,8 @@ QModbusResponse SimProtocol::writeMultiple(const QModbusRequest &request) const
     QList<Write> writes;
     for (int address = start; address < start + count;) {
         const Parameter *p = address <= 0xFFFF ? m_regs.map().holdingAt(quint16(address)) : nullptr;
-        if (!p || !p->writable() || p->address != address || int(p->lastAddress()) >= start + count)
+        if (!p || !p->writable() || p->address != address ||
+            int(p->lastAddress()) >= start + count || m_lacking.contains(p->key))
             return exception(request, QModbusExceptionResponse::IllegalDataAddress);
         writes.append({p, p->decode(words.constData() + (address - start))});
         address += p->words;

@@ -3,6 +3,8 @@
 #include <QList>
 #include <QModbusPdu>
 
+#include <QSet>
+
 #include <functional>
 #include <utility>
 
@@ -16,7 +18,8 @@ class SimRegisters;
 // exception 03; writes outside the map, to read-only registers or covering half of a 32-bit
 // value: exception 02; values outside the map's range: exception 03, nothing written. Reads
 // see one register array: gaps between parameters read as 0, past its end is exception 02
-// (with strict reads every address must belong to a parameter). A request is checked
+// (with strict reads every address must belong to a parameter; a lacking parameter, one a
+// firmware variant does not have, is refused like a reserved register). A request is checked
 // completely before anything is written.
 class SimProtocol
 {
@@ -29,7 +32,8 @@ public:
         std::function<bool(const Parameter &)> coil;
     };
 
-    SimProtocol(const SimRegisters &registers, Hooks hooks, bool strictReads = false);
+    SimProtocol(const SimRegisters &registers, Hooks hooks, bool strictReads = false,
+                QSet<QString> lacking = {});
 
     QModbusResponse process(const QModbusRequest &request) const;
 
@@ -42,6 +46,7 @@ private:
     const SimRegisters &m_regs;
     Hooks m_hooks;
     bool m_strictReads;
+    QSet<QString> m_lacking; // keys of parameters this firmware does not have
 };
 
 } // namespace stepcom

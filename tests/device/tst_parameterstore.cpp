@@ -89,6 +89,27 @@ private Q_SLOTS:
         QCOMPARE(*store.shownValue(QStringLiteral("motor1.speed")), 450);
     }
 
+    // A parameter the controller lacks: its own state, no value, no edit, no pending write;
+    // another controller (or the same one, learnt again) brings it back.
+    void unsupportedParameters()
+    {
+        ParameterStore store(map);
+        const QString speed = QStringLiteral("motor2.speed");
+        store.setDeviceValues({{speed, 300}});
+        QVERIFY(store.edit(speed, 450).isEmpty());
+        store.setUnsupported({speed});
+        QCOMPARE(store.state(speed), ParameterStore::State::Unsupported);
+        QVERIFY(store.isUnsupported(speed));
+        QVERIFY(!store.deviceValue(speed));
+        QVERIFY(store.pendingWrites().isEmpty());
+        QVERIFY(store.edit(speed, 500).contains(QStringLiteral("not supported")));
+        QCOMPARE(store.state(QStringLiteral("motor1.speed")), ParameterStore::State::Unknown);
+        store.setUnsupported({});
+        QCOMPARE(store.state(speed), ParameterStore::State::Unknown);
+        store.setDeviceValues({{speed, 300}});
+        QCOMPARE(store.state(speed), ParameterStore::State::InSync);
+    }
+
     void forgettingKeepsEdits()
     {
         ParameterStore store(map);

@@ -1,3 +1,4 @@
+#include "device/readlimits.h"
 #include "device/readplanner.h"
 #include "map/registermap.h"
 
@@ -136,6 +137,59 @@ private Q_SLOTS:
         const QList<ReadBlock> plan = ReadPlanner::plan(keys({"motor1.step_angle", "mode.system"}),
                                                         49, ReadCostModel::forBaud(9600));
         QCOMPARE(plan.size(), 2);
+    }
+
+    // A controller that refuses reads covering reserved registers: the cheapest plan of only
+    // listed registers. Known answers at 9600 baud.
+    void gapFreePlans_data()
+    {
+        QTest::addColumn<QString>("what");
+        QTest::addColumn<QList<ReadBlock>>("expected");
+        QTest::newRow("live status") << "status"
+                                     << QList<ReadBlock>{block(40108, 40111), block(40124, 40127),
+                                                         block(40148, 40150), block(40168, 40169)};
+        QTest::newRow("everything readable")
+            << "all"
+            << QList<ReadBlock>{block(40001, 40020), block(40081, 40086), block(40108, 40111),
+                                block(40124, 40127), block(40148, 40150), block(40168, 40169),
+                                block(40177, 40178), block(40182, 40213), block(40300, 40301)};
+    }
+    void gapFreePlans()
+    {
+        QFETCH(QString, what);
+        QFETCH(QList<ReadBlock>, expected);
+        ReadLimits limits;
+        limits.setGapFree(true);
+        const QList<const Parameter *> params =
+            what == QLatin1String("status") ? statusParams() : map().holdings();
+        const QList<ReadBlock> plan =
+            ReadPlanner::plan(params, 49, ReadCostModel::forBaud(9600), [&](int first, int last) {
+                return limits.mayRead(map(), first, last);
+            });
+        QCOMPARE(plan, expected);
+        for (const ReadBlock &b : plan) {
+            for (int a = b.address; a <= b.lastAddress(); ++a)
+                QVERIFY2(map().holdingAt(quint16(a)), qPrintable(QString::number(a + 40001)));
+        }
+    }
+
+    // What one refusal teaches: a gap first, then a lone parameter, else a split to find out.
+    void refusalsTeachInOrder()
+    {
+        ReadLimits limits;
+        QCOMPARE(limits.learn(map(), block(40108, 40127)), ReadLimits::Lesson::GapsRefused);
+        QVERIFY(limits.gapFree());
+        // planned before the lesson: plan again, nothing new learnt
+        QCOMPARE(limits.learn(map(), block(40108, 40150)), ReadLimits::Lesson::AlreadyKnown);
+        QCOMPARE(limits.learn(map(), block(40108, 40111)), ReadLimits::Lesson::Split);
+        QVERIFY(
+            !limits.mayRead(map(), block(40108, 40111).address, block(40108, 40111).lastAddress()));
+        QString key;
+        QCOMPARE(limits.learn(map(), block(40110, 40111), &key), ReadLimits::Lesson::Unsupported);
+        QCOMPARE(key, QStringLiteral("motor2.position"));
+        QVERIFY(limits.isUnsupported(key));
+        QVERIFY(
+            limits.mayRead(map(), block(40108, 40109).address, block(40108, 40109).lastAddress()));
     }
 
     void emptyPlan() { QVERIFY(ReadPlanner::plan({}, 49, ReadCostModel::forBaud(9600)).isEmpty()); }

@@ -158,6 +158,30 @@ private Q_SLOTS:
         QCOMPARE(visibleRows(t), 2); // arc.speed and the device id
     }
 
+    // A controller that lacks a key of the profile: the row is left out with a note, and Apply
+    // never tries to write it (issue 15).
+    void unsupportedKeysAreLeftOut()
+    {
+        connectSim();
+        const Profile profile = changedProfile(); // differs in motor2.pitch, among others
+        sim()->setLacking({QStringLiteral("motor2.pitch")});
+        ProfileCompareDialog dialog(session.get(), profile, QStringLiteral("b.json"), window.get());
+        dialog.open();
+        QTRY_COMPARE_WITH_TIMEOUT(dialog.rowOf(QStringLiteral("motor2.pitch")), -1, 10000);
+        QTRY_VERIFY(!dialog.isBusy());
+        QCOMPARE(session->parameters()->state(QStringLiteral("motor2.pitch")),
+                 ParameterStore::State::Unsupported);
+        QCOMPARE(dialog.table()->rowCount(),
+                 int(Profile::profileParameters(session->map(), true).size()) - 1);
+        QCOMPARE(dialog.checkedKeys(), (QStringList{"motor1.speed", "arc.speed"}));
+        QString note;
+        for (const QLabel *l : dialog.findChildren<QLabel *>())
+            note += l->text() + QLatin1Char('\n');
+        QVERIFY2(note.contains(QLatin1String("Left out, not supported by this controller: "
+                                             "motor2.pitch.")),
+                 qPrintable(note));
+    }
+
     void offlineEverythingIsUnknownNotDifferent()
     {
         Profile p;

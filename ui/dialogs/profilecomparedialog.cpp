@@ -180,6 +180,17 @@ void ProfileCompareDialog::refreshValues()
             device.insert(p->key, *v);
     }
     m_rows = ProfileDiff::compare(m_session->map(), m_profile, device);
+    // A key this controller does not have is neither a difference nor writable: left out,
+    // and named below the table.
+    m_leftOut.clear();
+    const ParameterStore *store = m_session->parameters();
+    m_rows.removeIf([this, store](const ProfileDifference &r) {
+        if (store->state(r.parameter->key) != ParameterStore::State::Unsupported)
+            return false;
+        m_leftOut << r.parameter->key;
+        m_checked.remove(r.parameter->key);
+        return true;
+    });
     for (const ProfileDifference &r : std::as_const(m_rows)) {
         const QString &key = r.parameter->key;
         if (m_touched.contains(key))
@@ -262,6 +273,10 @@ void ProfileCompareDialog::rebuild()
                            ? tr("The controller holds every value of the profile.")
                            : tr("%n value(s) differ; %1 checked to be written.", nullptr, differing)
                                  .arg(checkedKeys().size()));
+    if (!m_leftOut.isEmpty())
+        m_summary->setText(m_summary->text() + QLatin1Char('\n') +
+                           tr("Left out, not supported by this controller: %1.")
+                               .arg(m_leftOut.join(QLatin1String(", "))));
     m_updating = false;
     updateFilter();
     updateButtons();

@@ -78,6 +78,7 @@ private:
     Profile m_profile;
     QString m_fileName;
     QList<ProfileDifference> m_rows;
+    QStringList m_leftOut; // keys the controller does not support
     QHash<QString, bool> m_checked;
     QSet<QString> m_touched; // rows the user checked or unchecked: a refresh keeps the choice
     bool m_columnsSized = false;

@@ -104,6 +104,17 @@ ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
     connect(session, &DeviceSession::linkLost, this, [this](const QString &reason) {
         setNote(true, [reason] { return tr("Connection lost: %1").arg(reason); });
     });
+    // What a controller refuses to read is kept with the connection settings, so the next
+    // connect reads it right away instead of learning it from refusals again.
+    connect(session, &DeviceSession::readLimitsLearned, this, [this] {
+        QVariantMap known;
+        const QMap<QString, QString> limits = this->session()->knownReadLimits();
+        for (auto it = limits.cbegin(); it != limits.cend(); ++it)
+            known.insert(it.key(), it.value());
+        QSettings settings;
+        settings.beginGroup(kGroup);
+        settings.setValue(QStringLiteral("readLimits"), known);
+    });
     connect(session, &DeviceSession::linkChanged, this, [this](const LinkSettings &s) {
         // The Device page moved the controller to a new id or baud: follow and remember it.
         if (!usesSimulator()) {
@@ -433,6 +444,11 @@ void ConnectionPage::loadSettings()
     applySettings(LinkSettingsStore::read(settings));
     if (settings.value(QStringLiteral("simulator"), false).toBool())
         setTransport(Transport::Simulator);
+    QMap<QString, QString> known;
+    const QVariantMap saved = value("readLimits", {}).toMap();
+    for (auto it = saved.cbegin(); it != saved.cend(); ++it)
+        known.insert(it.key(), it.value().toString());
+    session()->setKnownReadLimits(known);
 }
 
 void ConnectionPage::saveSettings() const

@@ -181,6 +181,10 @@ void HomingOrderEditor::refresh()
             mark = QStringLiteral("✗");
             tip = tr("Write failed: %1").arg(e.error);
             break;
+        case ParameterStore::State::Unsupported:
+            mark = QStringLiteral("—");
+            tip = tr("Not supported by this controller");
+            break;
         }
         m_states[slot]->setText(mark);
         m_states[slot]->setToolTip(tip);

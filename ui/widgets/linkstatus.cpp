@@ -2,12 +2,14 @@
 
 #include "device/devicesession.h"
 #include "device/linkhealth.h"
+#include "device/reconnector.h"
 #include "widgets/elidedlabel.h"
 
 #include <QDateTime>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPushButton>
 
 namespace stepcom {
 
@@ -19,11 +21,24 @@ LinkStatus::LinkStatus(DeviceSession *session, QWidget *parent)
     , m_rate(new ElidedLabel(this))
     , m_errors(new ElidedLabel(this))
     , m_unsaved(new QLabel(this))
+    , m_reconnect(new QLabel(this))
+    , m_cancelReconnect(new QPushButton(this))
 {
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    for (QLabel *l : std::initializer_list<QLabel *>{m_unsaved, m_state, m_where, m_rate, m_errors})
+    for (QLabel *l : {m_unsaved, m_state, m_reconnect})
         layout->addWidget(l);
+    layout->addWidget(m_cancelReconnect);
+    for (QLabel *l : {m_where, m_rate, m_errors})
+        layout->addWidget(l);
+    m_reconnect->setObjectName(QStringLiteral("reconnectText"));
+    m_cancelReconnect->setObjectName(QStringLiteral("reconnectCancel"));
+    m_reconnect->hide();
+    m_cancelReconnect->hide();
+    Reconnector *reconnector = session->reconnector();
+    connect(m_cancelReconnect, &QPushButton::clicked, reconnector, &Reconnector::cancel);
+    connect(reconnector, &Reconnector::stateChanged, this, &LinkStatus::refreshReconnect);
+    connect(reconnector, &Reconnector::countdown, this, &LinkStatus::refreshReconnect);
     QFont bold = m_unsaved->font();
     bold.setBold(true);
     m_unsaved->setFont(bold);
@@ -38,8 +53,10 @@ LinkStatus::LinkStatus(DeviceSession *session, QWidget *parent)
 
 void LinkStatus::changeEvent(QEvent *event)
 {
-    if (event->type() == QEvent::LanguageChange)
+    if (event->type() == QEvent::LanguageChange) {
         refresh();
+        refreshReconnect();
+    }
     QWidget::changeEvent(event);
 }
 
@@ -115,6 +132,22 @@ void LinkStatus::refresh()
     m_unsaved->setToolTip(
         tr("Parameters were written but not saved to the controller's flash: they are lost "
            "when it loses power. Use Save to flash."));
+}
+
+void LinkStatus::refreshReconnect()
+{
+    const Reconnector *r = m_session->reconnector();
+    m_reconnect->setVisible(r->isActive());
+    m_cancelReconnect->setVisible(r->isActive());
+    m_cancelReconnect->setText(tr("Cancel"));
+    m_cancelReconnect->setToolTip(tr("Stop trying to reconnect; Connect tries again"));
+    if (r->state() == Reconnector::State::Waiting)
+        m_reconnect->setText(tr("Link lost — reconnecting in %1 s (attempt %2)")
+                                 .arg(r->secondsLeft())
+                                 .arg(r->attempt() + 1));
+    else if (r->state() == Reconnector::State::Attempting)
+        m_reconnect->setText(tr("Link lost — reconnecting… (attempt %1)").arg(r->attempt()));
+    m_reconnect->setToolTip(r->lastError());
 }
 
 } // namespace stepcom

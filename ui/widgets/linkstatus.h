@@ -4,6 +4,7 @@
 #include <QWidget>
 
 class QLabel;
+class QPushButton;
 
 namespace stepcom {
 
@@ -11,7 +12,8 @@ class DeviceSession;
 class ElidedLabel;
 
 // The status bar's right side: link state, port/baud/id, transactions per second, errors,
-// polling rate and the "not saved to flash" warning.
+// polling rate and the "not saved to flash" warning; after a link loss the countdown to the
+// next attempt and a Cancel button.
 class LinkStatus : public QWidget
 {
     Q_OBJECT
@@ -24,6 +26,7 @@ protected:
 
 private:
     void refresh();
+    void refreshReconnect();
 
     DeviceSession *m_session;
     QLabel *m_state;
@@ -33,6 +36,8 @@ private:
     ElidedLabel *m_rate;
     ElidedLabel *m_errors;
     QLabel *m_unsaved;
+    QLabel *m_reconnect;
+    QPushButton *m_cancelReconnect;
     QTimer m_timer;
     quint64 m_lastAnswers = 0;
     qint64 m_lastMs = 0;

@@ -225,6 +225,8 @@ void ParameterField::applyStateLook()
 {
     const ParameterStore::Entry e = m_store->entry(m_parameter.key);
     const QString lang = Language::instance().current();
+    // A register this controller lacks cannot be edited: nothing could ever be written to it.
+    editor()->setEnabled(m_parameter.writable() && !e.unsupported);
     QString stateText;
     QString stateTip;
     QColor tint;
@@ -248,6 +250,11 @@ void ParameterField::applyStateLook()
         stateText = QStringLiteral("✗");
         tint = QColor(230, 40, 40);
         stateTip = tr("Write failed: %1").arg(e.error);
+        break;
+    case ParameterStore::State::Unsupported:
+        stateText = QStringLiteral("—");
+        tint = QColor(160, 160, 160);
+        stateTip = tr("Not supported by this controller: it refuses to read this register");
         break;
     }
     // Editing a profile file (issue 18): the values are the file's, nothing reaches a controller.
