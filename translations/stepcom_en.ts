@@ -119,6 +119,87 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ApplyToDevicesDialog</name>
+    <message>
+        <source>&amp;Compare the ticked devices</source>
+        <translation>&amp;Compare the ticked devices</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+    <message>
+        <source>Apply %1 to several devices</source>
+        <translation>Apply %1 to several devices</translation>
+    </message>
+    <message>
+        <source>Tick the devices, compare, then uncheck what is not to be written. Each device&apos;s settings are saved as a backup before anything is written to it; every value written is read back. Device id and baud rate are never applied to several devices: one id for all would make them collide.</source>
+        <translation>Tick the devices, compare, then uncheck what is not to be written. Each device&apos;s settings are saved as a backup before anything is written to it; every value written is read back. Device id and baud rate are never applied to several devices: one id for all would make them collide.</translation>
+    </message>
+    <message>
+        <source>id %1</source>
+        <translation>id %1</translation>
+    </message>
+    <message>
+        <source>id %1 (%2)</source>
+        <translation>id %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Device / parameter</source>
+        <translation>Device / parameter</translation>
+    </message>
+    <message>
+        <source>Device holds</source>
+        <translation>Device holds</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profile</translation>
+    </message>
+    <message>
+        <source>Done:</source>
+        <translation>Done:</translation>
+    </message>
+    <message>
+        <source>Done, not everywhere:</source>
+        <translation>Done, not everywhere:</translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading %n device(s)…</source>
+        <translation>
+            <numerusform>Reading %n device…</numerusform>
+            <numerusform>Reading %n devices…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing has been written yet.</source>
+        <translation>Nothing has been written yet.</translation>
+    </message>
+    <message>
+        <source>Nothing to write: the devices hold the profile&apos;s values or could not be read.</source>
+        <translation>Nothing to write: the devices hold the profile&apos;s values or could not be read.</translation>
+    </message>
+    <message>
+        <source>Writing…</source>
+        <translation>Writing…</translation>
+    </message>
+    <message>
+        <source>Writing… this window stays open until every device has its result. E-STOP (F12) stops what is left.</source>
+        <translation>Writing… this window stays open until every device has its result. E-STOP (F12) stops what is left.</translation>
+    </message>
+    <message numerus="yes">
+        <source>&amp;Write %n value(s) to %1 device(s)</source>
+        <translation>
+            <numerusform>&amp;Write %n value to %1 device</numerusform>
+            <numerusform>&amp;Write %n values to %1 devices</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Write</source>
+        <translation>&amp;Write</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BackupGuard</name>
     <message>
         <source>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</source>
@@ -201,6 +282,36 @@
     <message>
         <source>Close</source>
         <translation>Close</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusActions</name>
+    <message>
+        <source>Assign device ids…</source>
+        <translation>Assign device ids…</translation>
+    </message>
+    <message>
+        <source>Give each controller of a new line its own id, one controller at a time</source>
+        <translation>Give each controller of a new line its own id, one controller at a time</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusDump</name>
+    <message>
+        <source>%1: no such folder</source>
+        <translation>%1: no such folder</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder</source>
+        <translation>%1 is not a folder</translation>
+    </message>
+    <message>
+        <source>%1: the folder cannot be written to</source>
+        <translation>%1: the folder cannot be written to</translation>
+    </message>
+    <message>
+        <source>Controller id %1</source>
+        <translation>Controller id %1</translation>
     </message>
 </context>
 <context>
@@ -412,6 +523,26 @@
         <source>%1:%2 (RTU over TCP)</source>
         <translation>%1:%2 (RTU over TCP)</translation>
     </message>
+    <message>
+        <source>&amp;Add all found</source>
+        <translation>&amp;Add all found</translation>
+    </message>
+    <message>
+        <source>Put every controller found on the device list (View → Devices on the line)</source>
+        <translation>Put every controller found on the device list (View → Devices on the line)</translation>
+    </message>
+    <message>
+        <source>Every controller found is on the device list already.</source>
+        <translation>Every controller found is on the device list already.</translation>
+    </message>
+    <message>
+        <source>Added to the device list: id %1.</source>
+        <translation>Added to the device list: id %1.</translation>
+    </message>
+    <message>
+        <source>They answered at different baud rates; give them one baud rate (Device page or Device → Assign device ids…) before working with the list.</source>
+        <translation>They answered at different baud rates; give them one baud rate (Device page or Device → Assign device ids…) before working with the list.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BusScanner</name>
@@ -462,6 +593,13 @@
     <message>
         <source>identify id %1</source>
         <translation>identify id %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusSweep</name>
+    <message>
+        <source>id %1 was not read: E-STOP</source>
+        <translation>id %1 was not read: E-STOP</translation>
     </message>
 </context>
 <context>
@@ -1428,6 +1566,14 @@
         <source>NOT saved: values were written since the last save to flash and are lost at power-off</source>
         <translation>NOT saved: values were written since the last save to flash and are lost at power-off</translation>
     </message>
+    <message>
+        <source>not supported by this controller</source>
+        <translation>not supported by this controller</translation>
+    </message>
+    <message>
+        <source>Not supported by this controller (it refuses to read them, a firmware variant): %1</source>
+        <translation>Not supported by this controller (it refuses to read them, a firmware variant): %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1681,14 +1827,36 @@
     </message>
 </context>
 <context>
-    <name>stepcom::CtlMonitor</name>
+    <name>stepcom::CtlBusMonitor</name>
     <message>
         <source>link lost: %1</source>
         <translation>link lost: %1</translation>
     </message>
     <message>
+        <source>id %1</source>
+        <translation>id %1</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>id %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlMonitor</name>
+    <message>
         <source>no sample was read: every poll failed (see the errors above)</source>
         <translation>no sample was read: every poll failed (see the errors above)</translation>
+    </message>
+    <message>
+        <source>link lost: %1; trying again on its own (Ctrl-C ends)</source>
+        <translation>link lost: %1; trying again on its own (Ctrl-C ends)</translation>
+    </message>
+    <message numerus="yes">
+        <source>link back at %1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>link back at %1 after %n attempt</numerusform>
+            <numerusform>link back at %1 after %n attempts</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1869,10 +2037,6 @@
         <translation>distance</translation>
     </message>
     <message>
-        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
-        <translation>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</translation>
-    </message>
-    <message>
         <source>--id: %1</source>
         <translation>--id: %1</translation>
     </message>
@@ -1927,6 +2091,10 @@
     <message>
         <source>--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp</source>
         <translation>--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp</translation>
+    </message>
+    <message>
+        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, dump, report and command: each in turn on the one line, output keyed by id (report: one document).</source>
+        <translation>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, dump, report and command: each in turn on the one line, output keyed by id (report: one document).</translation>
     </message>
 </context>
 <context>
@@ -2224,10 +2392,6 @@
         <translation>%1: &apos;%2&apos; is not a number</translation>
     </message>
     <message>
-        <source>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</source>
-        <translation>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</translation>
-    </message>
-    <message>
         <source>id %1: %2</source>
         <translation>id %1: %2</translation>
     </message>
@@ -2244,32 +2408,54 @@
         <translation>assign-id: the controller already has id %1</translation>
     </message>
     <message>
-        <source>assign-id: the register map has no device.id</source>
-        <translation>assign-id: the register map has no device.id</translation>
-    </message>
-    <message>
-        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
-        <translation>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</translation>
-    </message>
-    <message>
-        <source>no controller answers at id %1: %2</source>
-        <translation>no controller answers at id %1: %2</translation>
-    </message>
-    <message>
-        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
-        <translation>id %1 is taken: a controller answers there already. Choose a free id</translation>
-    </message>
-    <message>
-        <source>device id %1 → %2: the controller answers at id %2</source>
-        <translation>device id %1 → %2: the controller answers at id %2</translation>
-    </message>
-    <message>
-        <source>the controller does not answer at id %1: %2</source>
-        <translation>the controller does not answer at id %1: %2</translation>
-    </message>
-    <message>
         <source>link: %1</source>
         <translation>link: %1</translation>
+    </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, monitor, diff, apply, dump, report and command (without --wait)</source>
+        <translation>%1: give one device id; several ids work with read, monitor, diff, apply, dump, report and command (without --wait)</translation>
+    </message>
+    <message>
+        <source>saved the settings of %1 to %2</source>
+        <translation>saved the settings of %1 to %2</translation>
+    </message>
+    <message>
+        <source>report --from makes the report of one profile file: give one --id</source>
+        <translation>report --from makes the report of one profile file: give one --id</translation>
+    </message>
+    <message>
+        <source>no report: not every controller could be read completely</source>
+        <translation>no report: not every controller could be read completely</translation>
+    </message>
+    <message numerus="yes">
+        <source>report of %n controller(s) written to %1</source>
+        <translation>
+            <numerusform>report of %n controller written to %1</numerusform>
+            <numerusform>report of %n controllers written to %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not supported by this controller (left out): %1</source>
+        <translation>not supported by this controller (left out): %1</translation>
+    </message>
+    <message>
+        <source>nothing was saved: %1</source>
+        <translation>nothing was saved: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write these %n value(s) to id %1? [y/N] </source>
+        <translation>
+            <numerusform>Write these %n value to id %1? [y/N] </numerusform>
+            <numerusform>Write these %n values to id %1? [y/N] </numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>note: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not supported by this controller</source>
+        <translation>%1 is not supported by this controller</translation>
     </message>
 </context>
 <context>
@@ -2495,6 +2681,26 @@
     <message>
         <source>motor %1</source>
         <translation>motor %1</translation>
+    </message>
+    <message>
+        <source>Device ids are 1 to 255, not %1.</source>
+        <translation>Device ids are 1 to 255, not %1.</translation>
+    </message>
+    <message>
+        <source>Other devices read every:</source>
+        <translation>Other devices read every:</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>The device in view is read at the live rate; each of the others in turn, at most this often</source>
+        <translation>The device in view is read at the live rate; each of the others in turn, at most this often</translation>
+    </message>
+    <message>
+        <source>running: %1</source>
+        <translation>running: %1</translation>
     </message>
 </context>
 <context>
@@ -2831,6 +3037,62 @@ Every other master on the bus must use the new settings too, and no other device
         <source>showing device %1</source>
         <translation>showing device %1</translation>
     </message>
+    <message>
+        <source>Device %1: %2</source>
+        <translation>Device %1: %2</translation>
+    </message>
+    <message>
+        <source>The link is back at %1 (attempt %2): reading the status, then everything</source>
+        <translation>The link is back at %1 (attempt %2): reading the status, then everything</translation>
+    </message>
+    <message>
+        <source>Reconnecting cancelled: Connect tries again.</source>
+        <translation>Reconnecting cancelled: Connect tries again.</translation>
+    </message>
+    <message>
+        <source>E-STOP: the link is down, the controller did NOT get it; it is sent first when the link is back</source>
+        <translation>E-STOP: the link is down, the controller did NOT get it; it is sent first when the link is back</translation>
+    </message>
+    <message>
+        <source>Trying to connect again on its own (Cancel stops it).</source>
+        <translation>Trying to connect again on its own (Cancel stops it).</translation>
+    </message>
+    <message>
+        <source>The controller refuses reads that cover reserved registers; from now on only its listed registers are read (a few more requests).</source>
+        <translation>The controller refuses reads that cover reserved registers; from now on only its listed registers are read (a few more requests).</translation>
+    </message>
+    <message>
+        <source>%1 (register %2) is not supported by this controller: it refuses to read it. It is left out from now on.</source>
+        <translation>%1 (register %2) is not supported by this controller: it refuses to read it. It is left out from now on.</translation>
+    </message>
+    <message>
+        <source>Device id %1: %2</source>
+        <translation>Device id %1: %2</translation>
+    </message>
+    <message>
+        <source>it refuses reads that cover reserved registers, so only its listed registers are read</source>
+        <translation>it refuses reads that cover reserved registers, so only its listed registers are read</translation>
+    </message>
+    <message>
+        <source>it does not support %1</source>
+        <translation>it does not support %1</translation>
+    </message>
+    <message>
+        <source>Known from an earlier connection to this controller: %1.</source>
+        <translation>Known from an earlier connection to this controller: %1.</translation>
+    </message>
+    <message>
+        <source>A step move still runs on device %1: wait for its end or stop it, then show device %2</source>
+        <translation>A step move still runs on device %1: wait for its end or stop it, then show device %2</translation>
+    </message>
+    <message>
+        <source>the port is not open</source>
+        <translation>the port is not open</translation>
+    </message>
+    <message>
+        <source>%1 of id %2 is written only while it is the device in view</source>
+        <translation>%1 of id %2 is written only while it is the device in view</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -2945,6 +3207,219 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>Write failed: %1</translation>
+    </message>
+    <message>
+        <source>Not supported by this controller</source>
+        <translation>Not supported by this controller</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdAssigner</name>
+    <message>
+        <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then start the assistant.</source>
+        <translation>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then start the assistant.</translation>
+    </message>
+    <message>
+        <source>Connect the first controller, alone (a new one answers at id %1, %2 baud), then press Next. It gets id %3.</source>
+        <translation>Connect the first controller, alone (a new one answers at id %1, %2 baud), then press Next. It gets id %3.</translation>
+    </message>
+    <message>
+        <source>No free id is left (every id from %1 to 255 is on the list).</source>
+        <translation>No free id is left (every id from %1 to 255 is on the list).</translation>
+    </message>
+    <message>
+        <source>Giving the controller at id %1 the id %2…</source>
+        <translation>Giving the controller at id %1 the id %2…</translation>
+    </message>
+    <message>
+        <source>Cannot open the port at %1 baud: %2</source>
+        <translation>Cannot open the port at %1 baud: %2</translation>
+    </message>
+    <message>
+        <source>Refused: %1. Two controllers with the same id answer at once and garble each other&apos;s answers; nothing was written.</source>
+        <translation>Refused: %1. Two controllers with the same id answer at once and garble each other&apos;s answers; nothing was written.</translation>
+    </message>
+    <message>
+        <source>The controller did not get id %1: %2. Check it is the only new controller on the line, then press Next to try again.</source>
+        <translation>The controller did not get id %1: %2. Check it is the only new controller on the line, then press Next to try again.</translation>
+    </message>
+    <message>
+        <source>%1. Connect the next controller, alone, then press Next (it gets id %2), or Finish.</source>
+        <translation>%1. Connect the next controller, alone, then press Next (it gets id %2), or Finish.</translation>
+    </message>
+    <message>
+        <source>Moving the line to %1 baud…</source>
+        <translation>Moving the line to %1 baud…</translation>
+    </message>
+    <message>
+        <source>Asking id %1 at %2 baud</source>
+        <translation>Asking id %1 at %2 baud</translation>
+    </message>
+    <message>
+        <source>Finished: no controller was given an id.</source>
+        <translation>Finished: no controller was given an id.</translation>
+    </message>
+    <message>
+        <source>Finished: the line is at %1 baud; every controller given an id answers: id %2.</source>
+        <translation>Finished: the line is at %1 baud; every controller given an id answers: id %2.</translation>
+    </message>
+    <message>
+        <source>Finished: the line is at %1 baud. Answering: id %2. NOT answering: id %3 — check its power and wiring; it stays on the device list.</source>
+        <translation>Finished: the line is at %1 baud. Answering: id %2. NOT answering: id %3 — check its power and wiring; it stays on the device list.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdAssistantDialog</name>
+    <message>
+        <source>Wait: a controller is being changed. The window closes when it is done.</source>
+        <translation>Wait: a controller is being changed. The window closes when it is done.</translation>
+    </message>
+    <message>
+        <source>Assign device ids</source>
+        <translation>Assign device ids</translation>
+    </message>
+    <message>
+        <source>Gives each controller of a new line its own id. Every controller leaves the factory with id %1 at %2 baud, so connect them one at a time: connect one, press Next, wait until it answers at its new id, then connect the next. A new id or baud takes effect at once; the assistant follows each controller and checks that it answers at its new id and no longer at id %1.</source>
+        <translation>Gives each controller of a new line its own id. Every controller leaves the factory with id %1 at %2 baud, so connect them one at a time: connect one, press Next, wait until it answers at its new id, then connect the next. A new id or baud takes effect at once; the assistant follows each controller and checks that it answers at its new id and no longer at id %1.</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Settings</translation>
+    </message>
+    <message>
+        <source>First id to give:</source>
+        <translation>First id to give:</translation>
+    </message>
+    <message>
+        <source>Common baud rate:</source>
+        <translation>Common baud rate:</translation>
+    </message>
+    <message>
+        <source>Name of the next controller:</source>
+        <translation>Name of the next controller:</translation>
+    </message>
+    <message>
+        <source>keep %1 (factory)</source>
+        <translation>keep %1 (factory)</translation>
+    </message>
+    <message>
+        <source>New line: start with an empty device list</source>
+        <translation>New line: start with an empty device list</translation>
+    </message>
+    <message>
+        <source>optional, e.g. X/Y table</source>
+        <translation>optional, e.g. X/Y table</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>Id</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Next: the controller is connected</source>
+        <translation>Next: the controller is connected</translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation>Finish</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+    <message>
+        <source>Press Start. The line&apos;s port is open at %1.</source>
+        <translation>Press Start. The line&apos;s port is open at %1.</translation>
+    </message>
+    <message>
+        <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</source>
+        <translation>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdChange</name>
+    <message>
+        <source>device ids are 1 to 255 (asked: %1 → %2)</source>
+        <translation>device ids are 1 to 255 (asked: %1 → %2)</translation>
+    </message>
+    <message>
+        <source>the controller already has id %1</source>
+        <translation>the controller already has id %1</translation>
+    </message>
+    <message>
+        <source>the register map has no device.id</source>
+        <translation>the register map has no device.id</translation>
+    </message>
+    <message>
+        <source>the register map has no device.baud</source>
+        <translation>the register map has no device.baud</translation>
+    </message>
+    <message>
+        <source>not connected: connect to the line first</source>
+        <translation>not connected: connect to the line first</translation>
+    </message>
+    <message>
+        <source>Asking the controller at id %1</source>
+        <translation>Asking the controller at id %1</translation>
+    </message>
+    <message>
+        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
+        <translation>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</translation>
+    </message>
+    <message>
+        <source>no controller answers at id %1: %2</source>
+        <translation>no controller answers at id %1: %2</translation>
+    </message>
+    <message>
+        <source>Making sure nobody answers at id %1 yet</source>
+        <translation>Making sure nobody answers at id %1 yet</translation>
+    </message>
+    <message>
+        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
+        <translation>id %1 is taken: a controller answers there already. Choose a free id</translation>
+    </message>
+    <message>
+        <source>Writing id %1 to the controller at id %2</source>
+        <translation>Writing id %1 to the controller at id %2</translation>
+    </message>
+    <message>
+        <source>the controller does not answer at id %1: %2</source>
+        <translation>the controller does not answer at id %1: %2</translation>
+    </message>
+    <message>
+        <source>Making sure nobody answers at id %1 any more</source>
+        <translation>Making sure nobody answers at id %1 any more</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1 now, but a controller still answers at id %2: more than one controller was connected. Disconnect all but one and try again</source>
+        <translation>the controller answers at id %1 now, but a controller still answers at id %2: more than one controller was connected. Disconnect all but one and try again</translation>
+    </message>
+    <message>
+        <source>Writing baud %1 to the controller at id %2</source>
+        <translation>Writing baud %1 to the controller at id %2</translation>
+    </message>
+    <message>
+        <source>the controller has id %1, but does not answer at %2 baud: %3</source>
+        <translation>the controller has id %1, but does not answer at %2 baud: %3</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2 at %3 baud</source>
+        <translation>device id %1 → %2: the controller answers at id %2 at %3 baud</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2</source>
+        <translation>device id %1 → %2: the controller answers at id %2</translation>
     </message>
 </context>
 <context>
@@ -3760,6 +4235,189 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms (now %5 ms)</source>
         <translation>Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms (now %5 ms)</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Stop trying to reconnect; Connect tries again</source>
+        <translation>Stop trying to reconnect; Connect tries again</translation>
+    </message>
+    <message>
+        <source>Link lost — reconnecting in %1 s (attempt %2)</source>
+        <translation>Link lost — reconnecting in %1 s (attempt %2)</translation>
+    </message>
+    <message>
+        <source>Link lost — reconnecting… (attempt %1)</source>
+        <translation>Link lost — reconnecting… (attempt %1)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MachineActions</name>
+    <message>
+        <source>Apply profile to &amp;several devices…</source>
+        <translation>Apply profile to &amp;several devices…</translation>
+    </message>
+    <message>
+        <source>Compare one profile file with several devices of the line, then write the checked differences to each and verify them</source>
+        <translation>Compare one profile file with several devices of the line, then write the checked differences to each and verify them</translation>
+    </message>
+    <message>
+        <source>Save &amp;all devices as profiles…</source>
+        <translation>Save &amp;all devices as profiles…</translation>
+    </message>
+    <message>
+        <source>Read every device of the line and save each as a profile file into one folder</source>
+        <translation>Read every device of the line and save each as a profile file into one folder</translation>
+    </message>
+    <message>
+        <source>Commissioning report of the &amp;machine…</source>
+        <translation>Commissioning report of the &amp;machine…</translation>
+    </message>
+    <message>
+        <source>Read every device of the line, then write one commissioning report of them all</source>
+        <translation>Read every device of the line, then write one commissioning report of them all</translation>
+    </message>
+    <message>
+        <source>Apply a profile to several devices</source>
+        <translation>Apply a profile to several devices</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom profiles (*.json);;All files (*)</translation>
+    </message>
+    <message>
+        <source>The profile cannot be used: nothing was written</source>
+        <translation>The profile cannot be used: nothing was written</translation>
+    </message>
+    <message>
+        <source>%1: connect to the line first, and wait for what runs</source>
+        <translation>%1: connect to the line first, and wait for what runs</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>id %1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: reading %n device(s)</source>
+        <translation>
+            <numerusform>%1: reading %n device</numerusform>
+            <numerusform>%1: reading %n devices</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Folder for the profiles of every device</source>
+        <translation>Folder for the profiles of every device</translation>
+    </message>
+    <message>
+        <source>Nothing was saved: %1</source>
+        <translation>Nothing was saved: %1</translation>
+    </message>
+    <message>
+        <source>Save all devices</source>
+        <translation>Save all devices</translation>
+    </message>
+    <message>
+        <source>id %1 was not saved: it could not be read completely</source>
+        <translation>id %1 was not saved: it could not be read completely</translation>
+    </message>
+    <message>
+        <source>id %1 saved to %2</source>
+        <translation>id %1 saved to %2</translation>
+    </message>
+    <message>
+        <source>id %1 was not saved: %2</source>
+        <translation>id %1 was not saved: %2</translation>
+    </message>
+    <message>
+        <source>Commissioning report of the machine</source>
+        <translation>Commissioning report of the machine</translation>
+    </message>
+    <message>
+        <source>Notes for the report (machine, place, who commissioned it):</source>
+        <translation>Notes for the report (machine, place, who commissioned it):</translation>
+    </message>
+    <message>
+        <source>Save the commissioning report of the machine</source>
+        <translation>Save the commissioning report of the machine</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation>Commissioning report</translation>
+    </message>
+    <message>
+        <source>No report: not every device could be read completely</source>
+        <translation>No report: not every device could be read completely</translation>
+    </message>
+    <message numerus="yes">
+        <source>Commissioning report of %n device(s) written to %1</source>
+        <translation>
+            <numerusform>Commissioning report of %n device written to %1</numerusform>
+            <numerusform>Commissioning report of %n devices written to %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MachineReport</name>
+    <message numerus="yes">
+        <source>Commissioning report of a machine: %n controller(s)</source>
+        <translation>
+            <numerusform>Commissioning report of a machine: %n controller</numerusform>
+            <numerusform>Commissioning report of a machine: %n controllers</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Controller id %1</source>
+        <translation>Controller id %1</translation>
+    </message>
+    <message>
+        <source>Controller id %1: %2</source>
+        <translation>Controller id %1: %2</translation>
+    </message>
+    <message>
+        <source>Controllers on the line</source>
+        <translation>Controllers on the line</translation>
+    </message>
+    <message>
+        <source>Device id</source>
+        <translation>Device id</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Link</translation>
+    </message>
+    <message>
+        <source>Settings fingerprint</source>
+        <translation>Settings fingerprint</translation>
+    </message>
+    <message>
+        <source>Date: %1</source>
+        <translation>Date: %1</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notes</translation>
+    </message>
+    <message>
+        <source>%1: no controller to report on</source>
+        <translation>%1: no controller to report on</translation>
+    </message>
+    <message>
+        <source>%1: the report is written as .pdf or .html, not .%2</source>
+        <translation>%1: the report is written as .pdf or .html, not .%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
     </message>
 </context>
 <context>
@@ -4784,6 +5442,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Edited, not saved yet</source>
         <translation>Edited, not saved yet</translation>
     </message>
+    <message>
+        <source>Not supported by this controller: it refuses to read this register</source>
+        <translation>Not supported by this controller: it refuses to read this register</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ParameterStore</name>
@@ -4802,6 +5464,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not written: an earlier write failed</source>
         <translation>not written: an earlier write failed</translation>
+    </message>
+    <message>
+        <source>%1 is not supported by this controller</source>
+        <translation>%1 is not supported by this controller</translation>
     </message>
 </context>
 <context>
@@ -5467,6 +6133,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Not applied:</source>
         <translation>Not applied:</translation>
     </message>
+    <message>
+        <source>Left out, not supported by this controller: %1.</source>
+        <translation>Left out, not supported by this controller: %1.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileDiff</name>
@@ -5696,6 +6366,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</source>
         <translation>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</translation>
     </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;unsupported&quot; must be a list of keys, found %1</source>
+        <translation>&quot;metadata&quot;: &quot;unsupported&quot; must be a list of keys, found %1</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</source>
+        <translation>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileFilesDialog</name>
@@ -5782,6 +6460,86 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Differences only</source>
         <translation>Differences only</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileRollout</name>
+    <message>
+        <source>could not be read: %1</source>
+        <translation>could not be read: %1</translation>
+    </message>
+    <message>
+        <source>it already holds the profile&apos;s values</source>
+        <translation>it already holds the profile&apos;s values</translation>
+    </message>
+    <message>
+        <source>no value was chosen for it</source>
+        <translation>no value was chosen for it</translation>
+    </message>
+    <message>
+        <source>no backup of its settings could be saved (%1): nothing was written</source>
+        <translation>no backup of its settings could be saved (%1): nothing was written</translation>
+    </message>
+    <message>
+        <source>%1 reads back other than written</source>
+        <translation>%1 reads back other than written</translation>
+    </message>
+    <message>
+        <source>not written: %1</source>
+        <translation>not written: %1</translation>
+    </message>
+    <message>
+        <source>not every value could be verified</source>
+        <translation>not every value could be verified</translation>
+    </message>
+    <message>
+        <source>stopped by the E-STOP while writing: what it holds now was not verified</source>
+        <translation>stopped by the E-STOP while writing: what it holds now was not verified</translation>
+    </message>
+    <message>
+        <source>not done: E-STOP</source>
+        <translation>not done: E-STOP</translation>
+    </message>
+    <message>
+        <source>id %1</source>
+        <translation>id %1</translation>
+    </message>
+    <message>
+        <source>id %1 (%2)</source>
+        <translation>id %1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1: waiting</source>
+        <translation>%1: waiting</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n value(s) differ</source>
+        <translation>
+            <numerusform>%1: %n value differ</numerusform>
+            <numerusform>%1: %n values differ</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: written and verified, %n value(s)</source>
+        <translation>
+            <numerusform>%1: written and verified, %n value</numerusform>
+            <numerusform>%1: written and verified, %n values</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: skipped, %2</source>
+        <translation>%1: skipped, %2</translation>
+    </message>
+    <message>
+        <source>%1: FAILED, %2</source>
+        <translation>%1: FAILED, %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: FAILED, %2 (%n value(s) verified)</source>
+        <translation>
+            <numerusform>%1: FAILED, %2 (%n value verified)</numerusform>
+            <numerusform>%1: FAILED, %2 (%n values verified)</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -6015,10 +6773,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Listen for TCP on every interface.</translation>
     </message>
     <message>
-        <source>Refuse reads of reserved registers (exception 02) instead of reading 0.</source>
-        <translation>Refuse reads of reserved registers (exception 02) instead of reading 0.</translation>
-    </message>
-    <message>
         <source>Device id 1-255 (overrides the saved one).</source>
         <translation>Device id 1-255 (overrides the saved one).</translation>
     </message>
@@ -6161,6 +6915,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>--echo works on the pseudo-terminal and --rtu-tcp, not with --serial</source>
         <translation>--echo works on the pseudo-terminal and --rtu-tcp, not with --serial</translation>
+    </message>
+    <message>
+        <source>Refuse a read that covers a reserved register (exception 02): only the manual&apos;s listed registers can be read.</source>
+        <translation>Refuse a read that covers a reserved register (exception 02): only the manual&apos;s listed registers can be read.</translation>
+    </message>
+    <message>
+        <source>Be a firmware without this listed register (a key or a number such as 40110): reads and writes covering it get exception 02. Repeatable.</source>
+        <translation>Be a firmware without this listed register (a key or a number such as 40110): reads and writes covering it get exception 02. Repeatable.</translation>
+    </message>
+    <message>
+        <source>REGISTER</source>
+        <translation>REGISTER</translation>
     </message>
 </context>
 <context>
@@ -6305,6 +7071,13 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>outputs:%1</source>
         <translation>outputs:%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SimHost</name>
+    <message>
+        <source>--lacks: %1 is no listed register of the map</source>
+        <translation>--lacks: %1 is no listed register of the map</translation>
     </message>
 </context>
 <context>
@@ -7171,18 +7944,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>pulse a command coil (e.g. motor1.stop, estop)</translation>
     </message>
     <message>
-        <source>print the live status as one JSON object per line,
-until --count samples or Ctrl-C (--interval MS)</source>
-        <translation>print the live status as one JSON object per line,
-until --count samples or Ctrl-C (--interval MS)</translation>
-    </message>
-    <message>
-        <source>read every setting and save it as a profile file
-(--name, --notes; --include-link adds id and baud)</source>
-        <translation>read every setting and save it as a profile file
-(--name, --notes; --include-link adds id and baud)</translation>
-    </message>
-    <message>
         <source>compare the controller with a profile; exit 0 same,
 1 different, 2 bad file, 3 link or device error</source>
         <translation>compare the controller with a profile; exit 0 same,
@@ -7219,14 +7980,6 @@ them and asking (--yes skips the question), then verify;
 replaces are saved as a backup first (--no-backup)</translation>
     </message>
     <message>
-        <source>write the commissioning report (--name, --notes,
---lang en|zh_CN; --from PROFILE: from a profile
-file and its checklist, no controller needed)</source>
-        <translation>write the commissioning report (--name, --notes,
---lang en|zh_CN; --from PROFILE: from a profile
-file and its checklist, no controller needed)</translation>
-    </message>
-    <message>
         <source>pulse a motion command and wait until it ends; print
 how it ended (--json), exit 0 only when done or referenced</source>
         <translation>pulse a motion command and wait until it ends; print
@@ -7249,6 +8002,34 @@ controllers answer at --id</source>
 leaves the factory) the device id N and check it
 answers there; refuses when N is taken or two
 controllers answer at --id</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS);
+with --id 1,2,3 each device in turn, one line a
+sample keyed by its id (--json for JSON)</source>
+        <translation>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS);
+with --id 1,2,3 each device in turn, one line a
+sample keyed by its id (--json for JSON)</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud);
+into a folder: one file per --id, &quot;id2 NAME DATE.json&quot;</source>
+        <translation>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud);
+into a folder: one file per --id, &quot;id2 NAME DATE.json&quot;</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file and its checklist, no controller needed;
+--id 1,2,3: every controller in one document)</source>
+        <translation>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file and its checklist, no controller needed;
+--id 1,2,3: every controller in one document)</translation>
     </message>
 </context>
 </TS>

@@ -119,6 +119,85 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ApplyToDevicesDialog</name>
+    <message>
+        <source>&amp;Compare the ticked devices</source>
+        <translation>比较勾选的设备(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Apply %1 to several devices</source>
+        <translation>将 %1 应用到多台设备</translation>
+    </message>
+    <message>
+        <source>Tick the devices, compare, then uncheck what is not to be written. Each device&apos;s settings are saved as a backup before anything is written to it; every value written is read back. Device id and baud rate are never applied to several devices: one id for all would make them collide.</source>
+        <translation>勾选设备并比较，然后取消不想写入的行。写入任何数据之前，先把每台设备的设置保存为备份；写入的每个值都会读回校验。设备 ID 和波特率从不同时写入多台设备：所有设备同一个 ID 会造成冲突。</translation>
+    </message>
+    <message>
+        <source>id %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>id %1 (%2)</source>
+        <translation>ID %1（%2）</translation>
+    </message>
+    <message>
+        <source>Device / parameter</source>
+        <translation>设备 / 参数</translation>
+    </message>
+    <message>
+        <source>Device holds</source>
+        <translation>设备中的值</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>参数文件</translation>
+    </message>
+    <message>
+        <source>Done:</source>
+        <translation>完成：</translation>
+    </message>
+    <message>
+        <source>Done, not everywhere:</source>
+        <translation>完成，但并非全部成功：</translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading %n device(s)…</source>
+        <translation>
+            <numerusform>正在读取 %n 台设备…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Nothing has been written yet.</source>
+        <translation>尚未写入任何数据。</translation>
+    </message>
+    <message>
+        <source>Nothing to write: the devices hold the profile&apos;s values or could not be read.</source>
+        <translation>没有需要写入的：设备已与参数文件一致，或无法读取。</translation>
+    </message>
+    <message>
+        <source>Writing…</source>
+        <translation>正在写入…</translation>
+    </message>
+    <message>
+        <source>Writing… this window stays open until every device has its result. E-STOP (F12) stops what is left.</source>
+        <translation>正在写入…在每台设备都有结果之前此窗口保持打开。急停（F12）会停止剩下的操作。</translation>
+    </message>
+    <message numerus="yes">
+        <source>&amp;Write %n value(s) to %1 device(s)</source>
+        <translation>
+            <numerusform>向 %1 台设备写入 %n 个值(&amp;W)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>&amp;Write</source>
+        <translation>写入(&amp;W)</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BackupGuard</name>
     <message>
         <source>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</source>
@@ -201,6 +280,36 @@
     <message>
         <source>Close</source>
         <translation>关闭</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusActions</name>
+    <message>
+        <source>Assign device ids…</source>
+        <translation>分配设备 ID…</translation>
+    </message>
+    <message>
+        <source>Give each controller of a new line its own id, one controller at a time</source>
+        <translation>为新总线上的每台控制器逐台分配各自的 ID</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusDump</name>
+    <message>
+        <source>%1: no such folder</source>
+        <translation>%1：文件夹不存在</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder</source>
+        <translation>%1 不是文件夹</translation>
+    </message>
+    <message>
+        <source>%1: the folder cannot be written to</source>
+        <translation>%1：无法写入该文件夹</translation>
+    </message>
+    <message>
+        <source>Controller id %1</source>
+        <translation>控制器 ID %1</translation>
     </message>
 </context>
 <context>
@@ -407,6 +516,26 @@
         <source>%1:%2 (RTU over TCP)</source>
         <translation>%1:%2（TCP 上的 RTU）</translation>
     </message>
+    <message>
+        <source>&amp;Add all found</source>
+        <translation>全部加入列表(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Put every controller found on the device list (View → Devices on the line)</source>
+        <translation>把找到的每台控制器加入设备列表（视图 → 总线上的设备）</translation>
+    </message>
+    <message>
+        <source>Every controller found is on the device list already.</source>
+        <translation>找到的控制器都已在设备列表中。</translation>
+    </message>
+    <message>
+        <source>Added to the device list: id %1.</source>
+        <translation>已加入设备列表：ID %1。</translation>
+    </message>
+    <message>
+        <source>They answered at different baud rates; give them one baud rate (Device page or Device → Assign device ids…) before working with the list.</source>
+        <translation>它们在不同的波特率下应答；使用列表之前，请先给它们统一波特率（设备页面，或 设备 → 分配设备 ID…）。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BusScanner</name>
@@ -457,6 +586,13 @@
     <message>
         <source>identify id %1</source>
         <translation>识别 ID %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BusSweep</name>
+    <message>
+        <source>id %1 was not read: E-STOP</source>
+        <translation>ID %1 未读取：急停</translation>
     </message>
 </context>
 <context>
@@ -1420,6 +1556,14 @@
         <source>NOT saved: values were written since the last save to flash and are lost at power-off</source>
         <translation>未保存：上次保存到闪存之后写入过数值，断电后会丢失</translation>
     </message>
+    <message>
+        <source>not supported by this controller</source>
+        <translation>此控制器不支持</translation>
+    </message>
+    <message>
+        <source>Not supported by this controller (it refuses to read them, a firmware variant): %1</source>
+        <translation>此控制器不支持（控制器拒绝读取，属于固件变体）：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1673,14 +1817,35 @@
     </message>
 </context>
 <context>
-    <name>stepcom::CtlMonitor</name>
+    <name>stepcom::CtlBusMonitor</name>
     <message>
         <source>link lost: %1</source>
         <translation>连接中断：%1</translation>
     </message>
     <message>
+        <source>id %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>ID %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlMonitor</name>
+    <message>
         <source>no sample was read: every poll failed (see the errors above)</source>
         <translation>没有读到任何样本：每次轮询都失败了（见上面的错误）</translation>
+    </message>
+    <message>
+        <source>link lost: %1; trying again on its own (Ctrl-C ends)</source>
+        <translation>连接丢失：%1；正在自动重试（按 Ctrl-C 结束）</translation>
+    </message>
+    <message numerus="yes">
+        <source>link back at %1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>连接已在 %1 恢复（尝试 %n 次）</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1861,10 +2026,6 @@
         <translation>距离</translation>
     </message>
     <message>
-        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, diff, apply, dump and command: each in turn on the one line, output keyed by id.</source>
-        <translation>设备 ID 1-255（默认 1）；read、diff、apply、dump 和 command 可给多个（1,2,3 或 1-3）：在同一条总线上依次执行，输出按 ID 分开。</translation>
-    </message>
-    <message>
         <source>--id: %1</source>
         <translation>--id：%1</translation>
     </message>
@@ -1919,6 +2080,10 @@
     <message>
         <source>--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp</source>
         <translation>--echo：Modbus TCP 没有回显；此选项用于 --port 和 --rtu-tcp</translation>
+    </message>
+    <message>
+        <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, dump, report and command: each in turn on the one line, output keyed by id (report: one document).</source>
+        <translation>设备 ID 1-255（默认 1）；read、monitor、diff、apply、dump、report 和 command 可给多个（1,2,3 或 1-3）：在同一条线路上依次执行，输出按 ID 分开（report：一份文档）。</translation>
     </message>
 </context>
 <context>
@@ -2212,10 +2377,6 @@
         <translation>%1：“%2”不是数字</translation>
     </message>
     <message>
-        <source>%1: give one device id; several ids work with read, diff, apply, dump and command (without --wait)</source>
-        <translation>%1：请只给一个设备 ID；多个 ID 只适用于 read、diff、apply、dump 和 command（不带 --wait）</translation>
-    </message>
-    <message>
         <source>id %1: %2</source>
         <translation>ID %1：%2</translation>
     </message>
@@ -2232,32 +2393,52 @@
         <translation>assign-id：控制器已经是 ID %1</translation>
     </message>
     <message>
-        <source>assign-id: the register map has no device.id</source>
-        <translation>assign-id：寄存器表中没有 device.id</translation>
-    </message>
-    <message>
-        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
-        <translation>ID %1 上的应答是乱码：有两台或更多控制器同时应答。请只连接要分配 ID %2 的那台控制器，然后重试</translation>
-    </message>
-    <message>
-        <source>no controller answers at id %1: %2</source>
-        <translation>ID %1 上没有控制器应答：%2</translation>
-    </message>
-    <message>
-        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
-        <translation>ID %1 已被占用：已有控制器在该 ID 上应答。请选择一个空闲的 ID</translation>
-    </message>
-    <message>
-        <source>device id %1 → %2: the controller answers at id %2</source>
-        <translation>设备 ID %1 → %2：控制器在 ID %2 上应答</translation>
-    </message>
-    <message>
-        <source>the controller does not answer at id %1: %2</source>
-        <translation>控制器在 ID %1 上不应答：%2</translation>
-    </message>
-    <message>
         <source>link: %1</source>
         <translation>链路：%1</translation>
+    </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, monitor, diff, apply, dump, report and command (without --wait)</source>
+        <translation>%1：请只给一个设备 ID；多个 ID 只适用于 read、monitor、diff、apply、dump、report 和 command（不带 --wait）</translation>
+    </message>
+    <message>
+        <source>saved the settings of %1 to %2</source>
+        <translation>已将 %1 的设置保存到 %2</translation>
+    </message>
+    <message>
+        <source>report --from makes the report of one profile file: give one --id</source>
+        <translation>report --from 只根据一个参数文件生成报告：请只给一个 --id</translation>
+    </message>
+    <message>
+        <source>no report: not every controller could be read completely</source>
+        <translation>未生成报告：并非每台控制器都能完整读取</translation>
+    </message>
+    <message numerus="yes">
+        <source>report of %n controller(s) written to %1</source>
+        <translation>
+            <numerusform>已将 %n 台控制器的报告写入 %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not supported by this controller (left out): %1</source>
+        <translation>此控制器不支持（已排除）：%1</translation>
+    </message>
+    <message>
+        <source>nothing was saved: %1</source>
+        <translation>未保存任何内容：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Write these %n value(s) to id %1? [y/N] </source>
+        <translation>
+            <numerusform>向 ID %1 写入这 %n 个值？[y/N] </numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>note: %1</source>
+        <translation>注意：%1</translation>
+    </message>
+    <message>
+        <source>%1 is not supported by this controller</source>
+        <translation>此控制器不支持 %1</translation>
     </message>
 </context>
 <context>
@@ -2483,6 +2664,26 @@
     <message>
         <source>motor %1</source>
         <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Device ids are 1 to 255, not %1.</source>
+        <translation>设备 ID 为 1 到 255，不能是 %1。</translation>
+    </message>
+    <message>
+        <source>Other devices read every:</source>
+        <translation>其他设备读取间隔：</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>The device in view is read at the live rate; each of the others in turn, at most this often</source>
+        <translation>当前显示的设备按实时速率读取；其他设备轮流读取，每台最多按此间隔读取一次</translation>
+    </message>
+    <message>
+        <source>running: %1</source>
+        <translation>运行中：%1</translation>
     </message>
 </context>
 <context>
@@ -2815,6 +3016,62 @@ Every other master on the bus must use the new settings too, and no other device
         <source>showing device %1</source>
         <translation>切换到设备 %1</translation>
     </message>
+    <message>
+        <source>Device %1: %2</source>
+        <translation>设备 %1：%2</translation>
+    </message>
+    <message>
+        <source>The link is back at %1 (attempt %2): reading the status, then everything</source>
+        <translation>连接已在 %1 恢复（第 %2 次尝试）：先读取状态，再读取全部参数</translation>
+    </message>
+    <message>
+        <source>Reconnecting cancelled: Connect tries again.</source>
+        <translation>已取消重新连接：按“连接”可再次尝试。</translation>
+    </message>
+    <message>
+        <source>E-STOP: the link is down, the controller did NOT get it; it is sent first when the link is back</source>
+        <translation>急停：连接已中断，控制器尚未收到急停；连接恢复后将首先发送</translation>
+    </message>
+    <message>
+        <source>Trying to connect again on its own (Cancel stops it).</source>
+        <translation>正在自动重新连接（按“取消”停止）。</translation>
+    </message>
+    <message>
+        <source>The controller refuses reads that cover reserved registers; from now on only its listed registers are read (a few more requests).</source>
+        <translation>控制器拒绝覆盖保留寄存器的读取；此后只读取已列出的寄存器（请求会略多几次）。</translation>
+    </message>
+    <message>
+        <source>%1 (register %2) is not supported by this controller: it refuses to read it. It is left out from now on.</source>
+        <translation>%1（寄存器 %2）此控制器不支持：控制器拒绝读取它。此后不再读取。</translation>
+    </message>
+    <message>
+        <source>Device id %1: %2</source>
+        <translation>设备 ID %1：%2</translation>
+    </message>
+    <message>
+        <source>it refuses reads that cover reserved registers, so only its listed registers are read</source>
+        <translation>它拒绝覆盖保留寄存器的读取，因此只读取已列出的寄存器</translation>
+    </message>
+    <message>
+        <source>it does not support %1</source>
+        <translation>它不支持 %1</translation>
+    </message>
+    <message>
+        <source>Known from an earlier connection to this controller: %1.</source>
+        <translation>此前连接该控制器时已知：%1。</translation>
+    </message>
+    <message>
+        <source>A step move still runs on device %1: wait for its end or stop it, then show device %2</source>
+        <translation>设备 %1 上的单步移动仍在进行：请等它结束或停止它，然后再显示设备 %2</translation>
+    </message>
+    <message>
+        <source>the port is not open</source>
+        <translation>端口未打开</translation>
+    </message>
+    <message>
+        <source>%1 of id %2 is written only while it is the device in view</source>
+        <translation>ID %2 的 %1 只能在它是当前显示的设备时写入</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -2929,6 +3186,219 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write failed: %1</source>
         <translation>写入失败：%1</translation>
+    </message>
+    <message>
+        <source>Not supported by this controller</source>
+        <translation>此控制器不支持</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdAssigner</name>
+    <message>
+        <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then start the assistant.</source>
+        <translation>请先连接总线（控制器所在的端口，%1 波特率，设备 ID %2），再启动向导。</translation>
+    </message>
+    <message>
+        <source>Connect the first controller, alone (a new one answers at id %1, %2 baud), then press Next. It gets id %3.</source>
+        <translation>只接上第一台控制器（新控制器在 ID %1、%2 波特率下应答），然后按“下一步”。它将得到 ID %3。</translation>
+    </message>
+    <message>
+        <source>No free id is left (every id from %1 to 255 is on the list).</source>
+        <translation>没有空闲的 ID 了（从 %1 到 255 的每个 ID 都在列表中）。</translation>
+    </message>
+    <message>
+        <source>Giving the controller at id %1 the id %2…</source>
+        <translation>正在把 ID %1 上的控制器改为 ID %2…</translation>
+    </message>
+    <message>
+        <source>Cannot open the port at %1 baud: %2</source>
+        <translation>无法以 %1 波特率打开端口：%2</translation>
+    </message>
+    <message>
+        <source>Refused: %1. Two controllers with the same id answer at once and garble each other&apos;s answers; nothing was written.</source>
+        <translation>拒绝：%1。两台相同 ID 的控制器同时应答，互相干扰成乱码；未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>The controller did not get id %1: %2. Check it is the only new controller on the line, then press Next to try again.</source>
+        <translation>控制器没有得到 ID %1：%2。请确认它是总线上唯一的新控制器，然后按“下一步”重试。</translation>
+    </message>
+    <message>
+        <source>%1. Connect the next controller, alone, then press Next (it gets id %2), or Finish.</source>
+        <translation>%1。只接上下一台控制器，然后按“下一步”（它将得到 ID %2），或按“完成”。</translation>
+    </message>
+    <message>
+        <source>Moving the line to %1 baud…</source>
+        <translation>正在把总线切换到 %1 波特率…</translation>
+    </message>
+    <message>
+        <source>Asking id %1 at %2 baud</source>
+        <translation>正在以 %2 波特率询问 ID %1</translation>
+    </message>
+    <message>
+        <source>Finished: no controller was given an id.</source>
+        <translation>已完成：没有控制器被分配 ID。</translation>
+    </message>
+    <message>
+        <source>Finished: the line is at %1 baud; every controller given an id answers: id %2.</source>
+        <translation>已完成：总线为 %1 波特率；每台已分配 ID 的控制器都在应答：ID %2。</translation>
+    </message>
+    <message>
+        <source>Finished: the line is at %1 baud. Answering: id %2. NOT answering: id %3 — check its power and wiring; it stays on the device list.</source>
+        <translation>已完成：总线为 %1 波特率。应答中：ID %2。无应答：ID %3——请检查其电源和接线；它仍保留在设备列表中。</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdAssistantDialog</name>
+    <message>
+        <source>Wait: a controller is being changed. The window closes when it is done.</source>
+        <translation>请稍候：正在修改一台控制器。完成后窗口自动关闭。</translation>
+    </message>
+    <message>
+        <source>Assign device ids</source>
+        <translation>分配设备 ID</translation>
+    </message>
+    <message>
+        <source>Gives each controller of a new line its own id. Every controller leaves the factory with id %1 at %2 baud, so connect them one at a time: connect one, press Next, wait until it answers at its new id, then connect the next. A new id or baud takes effect at once; the assistant follows each controller and checks that it answers at its new id and no longer at id %1.</source>
+        <translation>为新总线上的每台控制器分配各自的 ID。每台控制器出厂时都是 ID %1、%2 波特率，所以请逐台连接：接上一台，按“下一步”，等它在新 ID 上应答后再接下一台。新的 ID 或波特率立即生效；向导会跟随每台控制器，并确认它在新 ID 上应答、在 ID %1 上不再应答。</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>设置</translation>
+    </message>
+    <message>
+        <source>First id to give:</source>
+        <translation>要分配的第一个 ID：</translation>
+    </message>
+    <message>
+        <source>Common baud rate:</source>
+        <translation>统一波特率：</translation>
+    </message>
+    <message>
+        <source>Name of the next controller:</source>
+        <translation>下一台控制器的名称：</translation>
+    </message>
+    <message>
+        <source>keep %1 (factory)</source>
+        <translation>保持 %1（出厂值）</translation>
+    </message>
+    <message>
+        <source>New line: start with an empty device list</source>
+        <translation>新总线：从空的设备列表开始</translation>
+    </message>
+    <message>
+        <source>optional, e.g. X/Y table</source>
+        <translation>可选，例如 X/Y 工作台</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <source>Next: the controller is connected</source>
+        <translation>下一步：控制器已接好</translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation>完成</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>Press Start. The line&apos;s port is open at %1.</source>
+        <translation>请按“开始”。总线端口已打开：%1。</translation>
+    </message>
+    <message>
+        <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</source>
+        <translation>请先连接总线（控制器所在的端口，%1 波特率，设备 ID %2），再按“开始”。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::IdChange</name>
+    <message>
+        <source>device ids are 1 to 255 (asked: %1 → %2)</source>
+        <translation>设备 ID 为 1 到 255（要求的是：%1 → %2）</translation>
+    </message>
+    <message>
+        <source>the controller already has id %1</source>
+        <translation>控制器已经是 ID %1</translation>
+    </message>
+    <message>
+        <source>the register map has no device.id</source>
+        <translation>寄存器表中没有 device.id</translation>
+    </message>
+    <message>
+        <source>the register map has no device.baud</source>
+        <translation>寄存器表中没有 device.baud</translation>
+    </message>
+    <message>
+        <source>not connected: connect to the line first</source>
+        <translation>未连接：请先连接总线</translation>
+    </message>
+    <message>
+        <source>Asking the controller at id %1</source>
+        <translation>正在询问 ID %1 上的控制器</translation>
+    </message>
+    <message>
+        <source>garbled answers at id %1: two or more controllers answer there. Connect only the controller that is to get id %2, then try again</source>
+        <translation>ID %1 上应答乱码：有两台以上控制器在此应答。请只接上要得到 ID %2 的那台控制器，然后重试</translation>
+    </message>
+    <message>
+        <source>no controller answers at id %1: %2</source>
+        <translation>ID %1 上没有控制器应答：%2</translation>
+    </message>
+    <message>
+        <source>Making sure nobody answers at id %1 yet</source>
+        <translation>正在确认 ID %1 上还没有控制器应答</translation>
+    </message>
+    <message>
+        <source>id %1 is taken: a controller answers there already. Choose a free id</source>
+        <translation>ID %1 已被占用：已有控制器在此应答。请选择一个空闲的 ID</translation>
+    </message>
+    <message>
+        <source>Writing id %1 to the controller at id %2</source>
+        <translation>正在把 ID %1 写入 ID %2 上的控制器</translation>
+    </message>
+    <message>
+        <source>the controller does not answer at id %1: %2</source>
+        <translation>控制器在 ID %1 上没有应答：%2</translation>
+    </message>
+    <message>
+        <source>Making sure nobody answers at id %1 any more</source>
+        <translation>正在确认 ID %1 上已无应答</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1 now, but a controller still answers at id %2: more than one controller was connected. Disconnect all but one and try again</source>
+        <translation>控制器现在在 ID %1 上应答，但 ID %2 上仍有控制器应答：接上了不止一台控制器。请只保留一台，然后重试</translation>
+    </message>
+    <message>
+        <source>Writing baud %1 to the controller at id %2</source>
+        <translation>正在把波特率 %1 写入 ID %2 上的控制器</translation>
+    </message>
+    <message>
+        <source>the controller has id %1, but does not answer at %2 baud: %3</source>
+        <translation>控制器已是 ID %1，但在 %2 波特率下没有应答：%3</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2 at %3 baud</source>
+        <translation>设备 ID %1 → %2：控制器在 ID %2、%3 波特率下应答</translation>
+    </message>
+    <message>
+        <source>device id %1 → %2: the controller answers at id %2</source>
+        <translation>设备 ID %1 → %2：控制器在 ID %2 上应答</translation>
     </message>
 </context>
 <context>
@@ -3744,6 +4214,186 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms (now %5 ms)</source>
         <translation>往返时间 %1-%2 ms（平均 %3 ms）；建议的应答超时 %4 ms（当前 %5 ms）</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Stop trying to reconnect; Connect tries again</source>
+        <translation>停止重新连接；按“连接”可再次尝试</translation>
+    </message>
+    <message>
+        <source>Link lost — reconnecting in %1 s (attempt %2)</source>
+        <translation>连接丢失 — %1 秒后重新连接（第 %2 次尝试）</translation>
+    </message>
+    <message>
+        <source>Link lost — reconnecting… (attempt %1)</source>
+        <translation>连接丢失 — 正在重新连接…（第 %1 次尝试）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MachineActions</name>
+    <message>
+        <source>Apply profile to &amp;several devices…</source>
+        <translation>将参数文件应用到多台设备(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Compare one profile file with several devices of the line, then write the checked differences to each and verify them</source>
+        <translation>将一个参数文件与总线上的多台设备比较，然后把勾选的不同之处写入每台设备并校验</translation>
+    </message>
+    <message>
+        <source>Save &amp;all devices as profiles…</source>
+        <translation>将所有设备保存为参数文件(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Read every device of the line and save each as a profile file into one folder</source>
+        <translation>读取总线上的每台设备，并分别保存为参数文件到同一个文件夹</translation>
+    </message>
+    <message>
+        <source>Commissioning report of the &amp;machine…</source>
+        <translation>整机调试报告(&amp;M)…</translation>
+    </message>
+    <message>
+        <source>Read every device of the line, then write one commissioning report of them all</source>
+        <translation>读取总线上的每台设备，然后生成一份包含全部设备的调试报告</translation>
+    </message>
+    <message>
+        <source>Apply a profile to several devices</source>
+        <translation>将参数文件应用到多台设备</translation>
+    </message>
+    <message>
+        <source>StepCom profiles (*.json);;All files (*)</source>
+        <translation>StepCom 参数文件 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>The profile cannot be used: nothing was written</source>
+        <translation>无法使用该参数文件：未写入任何数据</translation>
+    </message>
+    <message>
+        <source>%1: connect to the line first, and wait for what runs</source>
+        <translation>%1：请先连接总线，并等待正在进行的操作结束</translation>
+    </message>
+    <message>
+        <source>id %1: %2</source>
+        <translation>ID %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: reading %n device(s)</source>
+        <translation>
+            <numerusform>%1：正在读取 %n 台设备</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Folder for the profiles of every device</source>
+        <translation>保存每台设备参数文件的文件夹</translation>
+    </message>
+    <message>
+        <source>Nothing was saved: %1</source>
+        <translation>未保存任何内容：%1</translation>
+    </message>
+    <message>
+        <source>Save all devices</source>
+        <translation>保存所有设备</translation>
+    </message>
+    <message>
+        <source>id %1 was not saved: it could not be read completely</source>
+        <translation>ID %1 未保存：无法完整读取</translation>
+    </message>
+    <message>
+        <source>id %1 saved to %2</source>
+        <translation>ID %1 已保存到 %2</translation>
+    </message>
+    <message>
+        <source>id %1 was not saved: %2</source>
+        <translation>ID %1 未保存：%2</translation>
+    </message>
+    <message>
+        <source>Commissioning report of the machine</source>
+        <translation>整机调试报告</translation>
+    </message>
+    <message>
+        <source>Notes for the report (machine, place, who commissioned it):</source>
+        <translation>报告备注（机器、地点、调试人员）：</translation>
+    </message>
+    <message>
+        <source>Save the commissioning report of the machine</source>
+        <translation>保存整机调试报告</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;HTML (*.html)</source>
+        <translation>PDF (*.pdf);;HTML (*.html)</translation>
+    </message>
+    <message>
+        <source>Commissioning report</source>
+        <translation>调试报告</translation>
+    </message>
+    <message>
+        <source>No report: not every device could be read completely</source>
+        <translation>未生成报告：并非每台设备都能完整读取</translation>
+    </message>
+    <message numerus="yes">
+        <source>Commissioning report of %n device(s) written to %1</source>
+        <translation>
+            <numerusform>已将 %n 台设备的调试报告写入 %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MachineReport</name>
+    <message numerus="yes">
+        <source>Commissioning report of a machine: %n controller(s)</source>
+        <translation>
+            <numerusform>整机调试报告：%n 台控制器</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Controller id %1</source>
+        <translation>控制器 ID %1</translation>
+    </message>
+    <message>
+        <source>Controller id %1: %2</source>
+        <translation>控制器 ID %1：%2</translation>
+    </message>
+    <message>
+        <source>Controllers on the line</source>
+        <translation>总线上的控制器</translation>
+    </message>
+    <message>
+        <source>Device id</source>
+        <translation>设备 ID</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Settings fingerprint</source>
+        <translation>设置指纹</translation>
+    </message>
+    <message>
+        <source>Date: %1</source>
+        <translation>日期：%1</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>%1: no controller to report on</source>
+        <translation>%1：没有可报告的控制器</translation>
+    </message>
+    <message>
+        <source>%1: the report is written as .pdf or .html, not .%2</source>
+        <translation>%1：报告只能保存为 .pdf 或 .html，不能是 .%2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
     </message>
 </context>
 <context>
@@ -4759,6 +5409,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Edited, not saved yet</source>
         <translation>已修改，尚未保存</translation>
     </message>
+    <message>
+        <source>Not supported by this controller: it refuses to read this register</source>
+        <translation>此控制器不支持：控制器拒绝读取这个寄存器</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ParameterStore</name>
@@ -4777,6 +5431,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not written: an earlier write failed</source>
         <translation>未写入：之前的写入失败</translation>
+    </message>
+    <message>
+        <source>%1 is not supported by this controller</source>
+        <translation>此控制器不支持 %1</translation>
     </message>
 </context>
 <context>
@@ -5432,6 +6090,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Not applied:</source>
         <translation>不应用：</translation>
     </message>
+    <message>
+        <source>Left out, not supported by this controller: %1.</source>
+        <translation>已排除，此控制器不支持：%1。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileDiff</name>
@@ -5661,6 +6323,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>&quot;metadata&quot;: &quot;backup&quot;: &quot;device&quot; must be a text of at most 200 characters</source>
         <translation>“metadata”：“backup”：“device”必须是最多 200 个字符的文本</translation>
     </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;unsupported&quot; must be a list of keys, found %1</source>
+        <translation>&quot;metadata&quot;：&quot;unsupported&quot; 必须是键名列表，实际为 %1</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</source>
+        <translation>&quot;metadata&quot;：&quot;unsupported&quot;：%1 不是寄存器表中的参数</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileFilesDialog</name>
@@ -5747,6 +6417,83 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Differences only</source>
         <translation>只显示不同项</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileRollout</name>
+    <message>
+        <source>could not be read: %1</source>
+        <translation>无法读取：%1</translation>
+    </message>
+    <message>
+        <source>it already holds the profile&apos;s values</source>
+        <translation>设备已与参数文件一致</translation>
+    </message>
+    <message>
+        <source>no value was chosen for it</source>
+        <translation>没有为它勾选任何值</translation>
+    </message>
+    <message>
+        <source>no backup of its settings could be saved (%1): nothing was written</source>
+        <translation>无法保存其设置的备份（%1）：未写入任何数据</translation>
+    </message>
+    <message>
+        <source>%1 reads back other than written</source>
+        <translation>%1 读回的值与写入的不同</translation>
+    </message>
+    <message>
+        <source>not written: %1</source>
+        <translation>未写入：%1</translation>
+    </message>
+    <message>
+        <source>not every value could be verified</source>
+        <translation>并非所有值都已校验</translation>
+    </message>
+    <message>
+        <source>stopped by the E-STOP while writing: what it holds now was not verified</source>
+        <translation>写入时被急停中断：设备当前的值未经校验</translation>
+    </message>
+    <message>
+        <source>not done: E-STOP</source>
+        <translation>未执行：急停</translation>
+    </message>
+    <message>
+        <source>id %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>id %1 (%2)</source>
+        <translation>ID %1（%2）</translation>
+    </message>
+    <message>
+        <source>%1: waiting</source>
+        <translation>%1：等待中</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n value(s) differ</source>
+        <translation>
+            <numerusform>%1：%n 个值不同</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: written and verified, %n value(s)</source>
+        <translation>
+            <numerusform>%1：已写入并校验，%n 个值</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: skipped, %2</source>
+        <translation>%1：已跳过，%2</translation>
+    </message>
+    <message>
+        <source>%1: FAILED, %2</source>
+        <translation>%1：失败，%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: FAILED, %2 (%n value(s) verified)</source>
+        <translation>
+            <numerusform>%1：失败，%2（%n 个值已校验）</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5980,10 +6727,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>在所有网络接口上监听 TCP 连接。</translation>
     </message>
     <message>
-        <source>Refuse reads of reserved registers (exception 02) instead of reading 0.</source>
-        <translation>拒绝读取预留寄存器（返回异常 02），而不是读出 0。</translation>
-    </message>
-    <message>
         <source>Device id 1-255 (overrides the saved one).</source>
         <translation>设备 ID，1-255（覆盖已保存的值）。</translation>
     </message>
@@ -6126,6 +6869,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>--echo works on the pseudo-terminal and --rtu-tcp, not with --serial</source>
         <translation>--echo 只用于伪终端和 --rtu-tcp，不能与 --serial 一起使用</translation>
+    </message>
+    <message>
+        <source>Refuse a read that covers a reserved register (exception 02): only the manual&apos;s listed registers can be read.</source>
+        <translation>拒绝覆盖保留寄存器的读取（异常 02）：只能读取说明书列出的寄存器。</translation>
+    </message>
+    <message>
+        <source>Be a firmware without this listed register (a key or a number such as 40110): reads and writes covering it get exception 02. Repeatable.</source>
+        <translation>模拟缺少这个已列出寄存器的固件（键名或编号，例如 40110）：覆盖它的读写返回异常 02。可重复。</translation>
+    </message>
+    <message>
+        <source>REGISTER</source>
+        <translation>寄存器</translation>
     </message>
 </context>
 <context>
@@ -6270,6 +7025,13 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>outputs:%1</source>
         <translation>输出:%1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SimHost</name>
+    <message>
+        <source>--lacks: %1 is no listed register of the map</source>
+        <translation>--lacks：%1 不是寄存器表中列出的寄存器</translation>
     </message>
 </context>
 <context>
@@ -7134,18 +7896,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>触发一个命令线圈（例如 motor1.stop、estop）</translation>
     </message>
     <message>
-        <source>print the live status as one JSON object per line,
-until --count samples or Ctrl-C (--interval MS)</source>
-        <translation>以每行一个 JSON 对象输出实时状态，
-直到 --count 个样本或 Ctrl-C（--interval MS）</translation>
-    </message>
-    <message>
-        <source>read every setting and save it as a profile file
-(--name, --notes; --include-link adds id and baud)</source>
-        <translation>读取全部设置并保存为参数文件
-（--name、--notes；--include-link 包括地址和波特率）</translation>
-    </message>
-    <message>
         <source>compare the controller with a profile; exit 0 same,
 1 different, 2 bad file, 3 link or device error</source>
         <translation>将控制器与参数文件比较；退出码 0 相同，
@@ -7182,14 +7932,6 @@ replaces are saved as a backup first (--no-backup)</source>
 先保存为备份（--no-backup 不备份）</translation>
     </message>
     <message>
-        <source>write the commissioning report (--name, --notes,
---lang en|zh_CN; --from PROFILE: from a profile
-file and its checklist, no controller needed)</source>
-        <translation>生成调试报告（--name、--notes、
---lang en|zh_CN；--from PROFILE：根据参数文件
-及其检查表生成，无需控制器）</translation>
-    </message>
-    <message>
         <source>pulse a motion command and wait until it ends; print
 how it ended (--json), exit 0 only when done or referenced</source>
         <translation>触发一个运动命令并等待其结束；输出
@@ -7211,6 +7953,34 @@ controllers answer at --id</source>
         <translation>给 --id（默认 1，即出厂设置）上唯一的那台控制器
 分配设备 ID N，并确认它在新 ID 上应答；N 已被占用
 或 --id 上有两台控制器应答时拒绝执行</translation>
+    </message>
+    <message>
+        <source>print the live status as one JSON object per line,
+until --count samples or Ctrl-C (--interval MS);
+with --id 1,2,3 each device in turn, one line a
+sample keyed by its id (--json for JSON)</source>
+        <translation>以每行一个 JSON 对象输出实时状态，
+直到 --count 个样本或 Ctrl-C（--interval MS）；
+给出 --id 1,2,3 时依次读取每台设备，每个样本一行，
+以其 ID 标注（--json 输出 JSON）</translation>
+    </message>
+    <message>
+        <source>read every setting and save it as a profile file
+(--name, --notes; --include-link adds id and baud);
+into a folder: one file per --id, &quot;id2 NAME DATE.json&quot;</source>
+        <translation>读取全部设置并保存为参数文件
+（--name、--notes；--include-link 包括地址和波特率）；
+保存到文件夹时每个 --id 一个文件，&quot;id2 名称 日期.json&quot;</translation>
+    </message>
+    <message>
+        <source>write the commissioning report (--name, --notes,
+--lang en|zh_CN; --from PROFILE: from a profile
+file and its checklist, no controller needed;
+--id 1,2,3: every controller in one document)</source>
+        <translation>生成调试报告（--name、--notes、
+--lang en|zh_CN；--from PROFILE：根据参数文件
+及其检查表生成，无需控制器；
+--id 1,2,3：所有控制器合为一份文档）</translation>
     </message>
 </context>
 </TS>

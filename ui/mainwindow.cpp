@@ -430,45 +430,6 @@ void MainWindow::resizeEvent(QResizeEvent *event)
     arrangeDocks();
 }
 
-void MainWindow::arrangeDocks()
-{
-    if (!m_statusDock || !centralWidget())
-        return;
-    const int needed = centralWidget()->minimumSizeHint().width() +
-                       m_statusDock->minimumSizeHint().width() +
-                       3 * style()->pixelMetric(QStyle::PM_DockWidgetSeparatorExtent);
-    // The screen decides too: a window cannot get narrower than what its docks need, so on a
-    // small screen the dock moves before the window would have to.
-    const int room = screen() ? std::min(width(), screen()->availableGeometry().width()) : width();
-    const bool narrow = room < needed;
-    if (narrow && !m_statusDockMoved && dockWidgetArea(m_statusDock) == Qt::RightDockWidgetArea &&
-        !m_statusDock->isFloating()) {
-        m_statusDockMoved = true;
-        tabifyDockWidget(m_messageDock, m_statusDock);
-    } else if (!narrow && m_statusDockMoved) {
-        m_statusDockMoved = false;
-        addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
-    }
-}
-
-void MainWindow::fitIntoScreen()
-{
-    const QScreen *where = screen();
-    if (!where)
-        return;
-    const QRect available = where->availableGeometry();
-    const QMargins frame(geometry().left() - frameGeometry().left(),
-                         geometry().top() - frameGeometry().top(),
-                         frameGeometry().right() - geometry().right(),
-                         frameGeometry().bottom() - geometry().bottom());
-    const QRect room = available.marginsRemoved(frame);
-    QRect g = geometry();
-    g.setSize(g.size().boundedTo(room.size()));
-    g.moveLeft(std::clamp(g.left(), room.left(), room.right() - g.width() + 1));
-    g.moveTop(std::clamp(g.top(), room.top(), room.bottom() - g.height() + 1));
-    setGeometry(g);
-}
-
 void MainWindow::updateTitle()
 {
     // One title: the platform adds the program's name ("Motor 1 — StepCom"), so the page, or
@@ -574,38 +535,6 @@ void MainWindow::closeEvent(QCloseEvent *event)
     }
     saveLayout();
     event->accept();
-}
-
-void MainWindow::restoreLayout()
-{
-    QSettings settings;
-    settings.beginGroup(QStringLiteral("window"));
-    if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray())) {
-        // First start: room for a page beside the sidebar, docks a quarter of the height.
-        const QFontMetrics fm = fontMetrics();
-        resize(fm.horizontalAdvance(QLatin1Char('x')) * 185, fm.height() * 50);
-    }
-    if (!restoreState(settings.value(QStringLiteral("state")).toByteArray()))
-        resizeDocks({m_trafficDock, m_messageDock},
-                    {fontMetrics().height() * 9, fontMetrics().height() * 9}, Qt::Vertical);
-    // A layout saved on a larger screen, or the default on a small one, still fits: the docks
-    // first (the saved state may put the status dock beside the page), then the window.
-    m_statusDockMoved = false;
-    arrangeDocks();
-    fitIntoScreen();
-    // Once every minimum size is known (after the layout requests): arrange and fit again.
-    QTimer::singleShot(0, this, [this] {
-        arrangeDocks();
-        fitIntoScreen();
-    });
-}
-
-void MainWindow::saveLayout()
-{
-    QSettings settings;
-    settings.beginGroup(QStringLiteral("window"));
-    settings.setValue(QStringLiteral("geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("state"), saveState());
 }
 
 } // namespace stepcom

@@ -5,8 +5,10 @@
 #include "widgets/devicelistdock.h"
 
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStandardPaths>
 #include <QTableWidget>
 #include <QTest>
 
@@ -19,6 +21,32 @@ class TestDeviceList : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("StepComTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("tst_devicelist"));
+        QSettings().clear();
+    }
+
+    // The user sets how often the devices not in view are read; it is kept for the next time.
+    void theOthersRateIsTheUsers()
+    {
+        {
+            DeviceSession session;
+            DeviceListDock dock(&session);
+            QCOMPARE(dock.backgroundIntervalBox()->value(), 1000);
+            QCOMPARE(session.backgroundIntervalMs(), 1000);
+            dock.backgroundIntervalBox()->setValue(2500);
+            QCOMPARE(session.backgroundIntervalMs(), 2500);
+        }
+        DeviceSession session;
+        DeviceListDock dock(&session);
+        QCOMPARE(dock.backgroundIntervalBox()->value(), 2500);
+        QCOMPARE(session.backgroundIntervalMs(), 2500);
+        QSettings().clear();
+    }
+
     void clickingADeviceShowsItWithoutReconnecting()
     {
         DeviceSession session;

@@ -445,7 +445,7 @@ void ConnectionPage::loadSettings()
     if (settings.value(QStringLiteral("simulator"), false).toBool())
         setTransport(Transport::Simulator);
     QMap<QString, QString> known;
-    const QVariantMap saved = value("readLimits", {}).toMap();
+    const QVariantMap saved = settings.value(QStringLiteral("readLimits")).toMap();
     for (auto it = saved.cbegin(); it != saved.cend(); ++it)
         known.insert(it.key(), it.value().toString());
     session()->setKnownReadLimits(known);

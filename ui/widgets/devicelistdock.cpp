@@ -12,10 +12,12 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QSettings>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <utility>
 
 namespace stepcom {
@@ -31,6 +33,8 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
     , m_idBox(new QSpinBox(this))
     , m_add(new QPushButton(this))
     , m_problem(new QLabel(this))
+    , m_backgroundLabel(new QLabel(this))
+    , m_backgroundMs(new QSpinBox(this))
 {
     setObjectName(QStringLiteral("deviceListDock"));
     auto *body = new QWidget(this);
@@ -45,6 +49,21 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
     addRow->addWidget(m_idBox);
     addRow->addWidget(m_add);
     layout->addLayout(addRow);
+    // The device in view is read at the live rate; the others in turn, as often as set here.
+    auto *rateRow = new QHBoxLayout;
+    m_backgroundMs->setObjectName(QStringLiteral("backgroundInterval"));
+    m_backgroundMs->setRange(100, 60000);
+    m_backgroundMs->setSingleStep(100);
+    m_backgroundMs->setValue(QSettings()
+                                 .value(QStringLiteral("devices/backgroundIntervalMs"),
+                                        std::max(100, m_session->backgroundIntervalMs()))
+                                 .toInt());
+    m_session->setBackgroundIntervalMs(m_backgroundMs->value());
+    m_backgroundLabel->setBuddy(m_backgroundMs);
+    rateRow->addWidget(m_backgroundLabel);
+    rateRow->addWidget(m_backgroundMs);
+    rateRow->addStretch(1);
+    layout->addLayout(rateRow);
     m_problem->setWordWrap(true);
     layout->addWidget(m_problem);
     setWidget(body);
@@ -52,6 +71,10 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
     connect(m_table, &QTableWidget::cellClicked, this, &DeviceListDock::onCellClicked);
     connect(m_table, &QTableWidget::cellChanged, this, &DeviceListDock::onCellChanged);
     connect(m_add, &QPushButton::clicked, this, [this] { addDevice(m_idBox->value()); });
+    connect(m_backgroundMs, &QSpinBox::valueChanged, this, [this](int ms) {
+        m_session->setBackgroundIntervalMs(ms);
+        QSettings().setValue(QStringLiteral("devices/backgroundIntervalMs"), ms);
+    });
     connect(m_session, &DeviceSession::deviceStatusChanged, this, &DeviceListDock::refresh);
     connect(m_session, &DeviceSession::deviceInViewChanged, this, &DeviceListDock::refresh);
     connect(m_session, &DeviceSession::deviceIdsChanged, this, [this] {
@@ -168,6 +191,10 @@ void DeviceListDock::retranslate()
         {tr("Id"), tr("Name"), tr("State"), tr("Referenced"), tr("Errors")});
     m_table->setAccessibleName(tr("Devices on the line"));
     m_add->setText(tr("Add device"));
+    m_backgroundLabel->setText(tr("Other devices read every:"));
+    m_backgroundMs->setSuffix(tr(" ms"));
+    m_backgroundMs->setToolTip(tr("The device in view is read at the live rate; each of the "
+                                  "others in turn, at most this often"));
     m_idBox->setAccessibleName(tr("Device id to add"));
     refresh();
 }

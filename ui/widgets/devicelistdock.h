@@ -23,6 +23,8 @@ public:
 
     QTableWidget *table() const { return m_table; }
     QSpinBox *idBox() const { return m_idBox; }
+    // How often each device not in view has its status read (the user sets it; remembered).
+    QSpinBox *backgroundIntervalBox() const { return m_backgroundMs; }
     QPushButton *addButton() const { return m_add; }
     // Adds `id` to the session's list (false and a reason beside the button when it is there).
     bool addDevice(int id, const QString &name = QString());
@@ -53,6 +55,8 @@ private:
     QSpinBox *m_idBox;
     QPushButton *m_add;
     QLabel *m_problem;
+    QLabel *m_backgroundLabel;
+    QSpinBox *m_backgroundMs;
     QHash<int, QString> m_names;
     bool m_filling = false;
     bool m_connectedBefore = false; // a reopen at another baud is no new connection
