@@ -211,9 +211,14 @@ private Q_SLOTS:
         // Fast cycles read positions and running flags only; every 4th is the full status.
         const int fast = int(watch.blocks.count(kPositions));
         const int full = int(watch.blocks.count(kStatusLow));
-        QCOMPARE(watch.blocks.count(kRunning), fast);
-        QCOMPARE(watch.blocks.count(kStatusHigh), full);
-        QCOMPARE(fast + full + fast + full, int(watch.blocks.size()));
+        const int running = int(watch.blocks.count(kRunning));
+        const int high = int(watch.blocks.count(kStatusHigh));
+        // The cycle under way when counting may have read its first block only.
+        QVERIFY2(fast - running == 0 || fast - running == 1,
+                 qPrintable(QStringLiteral("%1 positions, %2 running").arg(fast).arg(running)));
+        QVERIFY2(full - high == 0 || full - high == 1,
+                 qPrintable(QStringLiteral("%1 low, %2 high").arg(full).arg(high)));
+        QCOMPARE(fast + full + running + high, int(watch.blocks.size())); // nothing else read
         QVERIFY2(full >= 1 && fast >= 2 * full,
                  qPrintable(QStringLiteral("%1 fast, %2 full").arg(fast).arg(full)));
         QVERIFY(poller->stats().fastCycles >= 6);
