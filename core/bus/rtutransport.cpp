@@ -324,6 +324,7 @@ void RtuTransport::processBuffer()
             return;
         }
         if (quint8(f.at(0)) != m_pending->unit) {
+            reportForeign(f);
             discard(
                 f,
                 tr("an answer from device %1, not %2").arg(quint8(f.at(0))).arg(m_pending->unit));
@@ -384,7 +385,9 @@ void RtuTransport::onTimeout()
 {
     if (!m_waiting)
         return;
-    m_owed.append({m_pending->adu, m_sentAtMs + kOwedTimeouts * m_pending->timeoutMs});
+    // A scan owes no answer: a late one names its unit and is counted for it.
+    if (!m_scan)
+        m_owed.append({m_pending->adu, m_sentAtMs + kOwedTimeouts * m_pending->timeoutMs});
     LinkAnswer a;
     a.kind = LinkAnswer::Kind::Timeout;
     a.onlyEcho = m_echoStripped && m_rx.isEmpty();
@@ -412,10 +415,18 @@ void RtuTransport::takeStrayFrames()
         if (!RtuFrame::crcOk(f))
             return; // noise: the rest cannot be framed; it is discarded with the next request
         m_strayParsed += length;
+        reportForeign(f);
         pruneOwed();
         if (!m_owed.isEmpty() && quint8(f.at(0)) == m_unit)
             m_owed.removeFirst();
     }
+}
+
+void RtuTransport::reportForeign(const QByteArray &frame)
+{
+    if (m_scan && frame.size() >= 4)
+        Q_EMIT unitAnswered(quint8(frame.at(0)), quint8(frame.at(1)),
+                            frame.mid(2, frame.size() - 4));
 }
 
 void RtuTransport::finish(LinkAnswer answer)
@@ -425,7 +436,11 @@ void RtuTransport::finish(LinkAnswer answer)
     m_pending.reset();
     answer.discarded = std::exchange(m_discarded, {});
     answer.crcErrors = std::exchange(m_crcErrors, 0);
-    if (answer.kind != LinkAnswer::Kind::Answer || !answer.discarded.isEmpty() || !m_rx.isEmpty()) {
+    // A scan's probe that heard nothing at all leaves nothing to wait for.
+    const bool silent = m_scan && answer.kind == LinkAnswer::Kind::Timeout &&
+                        answer.discarded.isEmpty() && m_rx.isEmpty();
+    if (!silent && (answer.kind != LinkAnswer::Kind::Answer || !answer.discarded.isEmpty() ||
+                    !m_rx.isEmpty())) {
         // Something else is talking on the line: let it finish before the next request.
         m_stray += std::exchange(m_rx, {});
         takeStrayFrames();
