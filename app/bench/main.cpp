@@ -2,6 +2,7 @@
 // simulator's wire-time model. `scripts/bench.sh` builds and runs it and updates the document.
 #include "benchreport.h"
 #include "benchrunner.h"
+#include "scanprobe.h"
 #include "trafficprobe.h"
 #include "windowprobe.h"
 
@@ -32,7 +33,8 @@ int main(int argc, char *argv[])
         "Measures StepCom against the simulator's wire-time model at 9600, 19200 and 38400 "
         "baud: (a) the live status cycle, (b) read-all, (c) the emergency stop while polling at "
         "full rate, (d) the window's CPU and memory while polling at full rate, (e) the Traffic "
-        "dock holding an hour of that polling. Prints a table "
+        "dock holding an hour of that polling, (f) a bus scan of ids 1-247 at 9600 when nobody "
+        "answers. Prints a table "
         "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -51,6 +53,8 @@ int main(int argc, char *argv[])
          QStringLiteral("path")},
         {QStringLiteral("no-window"), QStringLiteral("Skip (d).")},
         {QStringLiteral("no-traffic"), QStringLiteral("Skip (e).")},
+        {QStringLiteral("no-scan"), QStringLiteral("Skip (f).")},
+        {QStringLiteral("only-scan"), QStringLiteral("Run only (f), the bus scan.")},
         {QStringLiteral("traffic-seconds"),
          QStringLiteral(
              "(e) seconds of polling at full rate the Traffic dock holds (default 3600)."),
@@ -89,6 +93,11 @@ int main(int argc, char *argv[])
     }
 
     QList<Verdict> rows;
+    if (parser.isSet(QStringLiteral("only-scan"))) {
+        bauds.clear();
+        config.traffic = false;
+        config.stepcomPath.clear();
+    }
     int fastestBaud = 0;
     double fastestFrames = 0; // frames per second of the status poll at full rate
     for (const int baud : std::as_const(bauds)) {
@@ -115,6 +124,12 @@ int main(int argc, char *argv[])
         err << QStringLiteral("stepcom-bench: the window with its built-in simulator ...")
             << Qt::endl;
         rows += builtinWindowVerdicts(measureWindow(config, nullptr, 0));
+    }
+
+    if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke) {
+        err << QStringLiteral("stepcom-bench: the bus scan of ids 1-247 at 9600 baud ...")
+            << Qt::endl;
+        rows += scanVerdicts(measureScan(9600));
     }
 
     const QString result =

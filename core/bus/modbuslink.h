@@ -55,7 +55,8 @@ public:
     void setQuietTimeMs(int ms);
     int quietTimeMs() const { return m_quietMs; }
 
-    // A bus scan: a probe nothing answered leaves no quiet time and owes no late answer, and
+    // A bus scan: a probe nothing answered leaves no quiet time and owes no late answer, its
+    // timeout counts from the start of the request (the frame is in the scanner's), and
     // every well-formed answer from a unit other than the one asked is reported
     // (`unitAnswered`): an RTU answer carries its address, so a late one still names its id.
     void setScanMode(bool on);

@@ -241,8 +241,9 @@ void RtuTransport::writeNow()
     m_waiting = true;
     const double frameMs = m_byteMs * double(adu.size());
     m_earliestMs = frameMs + m_settings.answerDelayMs - kEarlyMarginMs;
-    // The timeout counts from the end of the request on the line.
-    m_timeoutTimer.start(m_pending->timeoutMs + int(std::ceil(frameMs)));
+    // The timeout counts from the end of the request on the line; a scan's probe timeout is
+    // fitted with the request's frame in it already (BusScanner::fittedProbeTimeoutMs).
+    m_timeoutTimer.start(m_pending->timeoutMs + (m_scan ? 0 : int(std::ceil(frameMs))));
     Q_EMIT frame(true, adu, 1, 2);
     Q_EMIT sent();
 }
