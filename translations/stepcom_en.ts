@@ -238,10 +238,6 @@
         <translation> ms</translation>
     </message>
     <message>
-        <source>How long to wait for an answer from each id. The controller answers after 35 ms; USB adapters add some latency.</source>
-        <translation>How long to wait for an answer from each id. The controller answers after 35 ms; USB adapters add some latency.</translation>
-    </message>
-    <message>
         <source>Stop at the &amp;first controller found</source>
         <translation>Stop at the &amp;first controller found</translation>
     </message>
@@ -396,6 +392,18 @@
         <source>%1:%2 (RTU over TCP)</source>
         <translation>%1:%2 (RTU over TCP)</translation>
     </message>
+    <message>
+        <source>fitted to the baud</source>
+        <translation>fitted to the baud</translation>
+    </message>
+    <message>
+        <source>How long to wait for an answer from each id. Fitted to the baud: the frames, the controller&apos;s 35 ms answer delay and a USB adapter&apos;s latency (67 ms at 9600). A controller that answers later is still found by its late answer; give more for one that answers very slowly.</source>
+        <translation>How long to wait for an answer from each id. Fitted to the baud: the frames, the controller&apos;s 35 ms answer delay and a USB adapter&apos;s latency (67 ms at 9600). A controller that answers later is still found by its late answer; give more for one that answers very slowly.</translation>
+    </message>
+    <message>
+        <source>%1 (answered after %2 ms: connects with a %3 ms timeout)</source>
+        <translation>%1 (answered after %2 ms: connects with a %3 ms timeout)</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BusScanner</name>
@@ -406,10 +414,6 @@
     <message>
         <source>scan finished</source>
         <translation>scan finished</translation>
-    </message>
-    <message>
-        <source>scan id %1 at %2 baud</source>
-        <translation>scan id %1 at %2 baud</translation>
     </message>
     <message>
         <source>id %1 at %2 — %3</source>
@@ -446,6 +450,14 @@
     <message>
         <source>identify id %1</source>
         <translation>identify id %1</translation>
+    </message>
+    <message>
+        <source>no device id to try</source>
+        <translation>no device id to try</translation>
+    </message>
+    <message>
+        <source>scan id %1 at %2</source>
+        <translation>scan id %1 at %2</translation>
     </message>
 </context>
 <context>
@@ -1717,10 +1729,6 @@
         <translation>rate</translation>
     </message>
     <message>
-        <source>Parity: none, even or odd (default none).</source>
-        <translation>Parity: none, even or odd (default none).</translation>
-    </message>
-    <message>
         <source>parity</source>
         <translation>parity</translation>
     </message>
@@ -1873,10 +1881,6 @@
         <translation>value</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
-        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</translation>
-    </message>
-    <message>
         <source>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</source>
         <translation>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</translation>
     </message>
@@ -1911,6 +1915,66 @@
     <message>
         <source>--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp</source>
         <translation>--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp</translation>
+    </message>
+    <message>
+        <source>Parity: none, even or odd (default none); scan: several, e.g. none,even,odd.</source>
+        <translation>Parity: none, even or odd (default none); scan: several, e.g. none,even,odd.</translation>
+    </message>
+    <message>
+        <source>scan: the baud rates to try, e.g. 9600,19200 (default all four, 9600 first); not over --tcp or --rtu-tcp, where the converter&apos;s line has its own.</source>
+        <translation>scan: the baud rates to try, e.g. 9600,19200 (default all four, 9600 first); not over --tcp or --rtu-tcp, where the converter&apos;s line has its own.</translation>
+    </message>
+    <message>
+        <source>list</source>
+        <translation>list</translation>
+    </message>
+    <message>
+        <source>scan: the device ids to try, e.g. 1-32 or 1,5,7 (default 1-247).</source>
+        <translation>scan: the device ids to try, e.g. 1-32 or 1,5,7 (default 1-247).</translation>
+    </message>
+    <message>
+        <source>range</source>
+        <translation>range</translation>
+    </message>
+    <message>
+        <source>scan: wait this long for each id&apos;s answer (default: fitted to the baud, 67 ms at 9600); more for controllers that answer slowly.</source>
+        <translation>scan: wait this long for each id&apos;s answer (default: fitted to the baud, 67 ms at 9600); more for controllers that answer slowly.</translation>
+    </message>
+    <message>
+        <source>--%1: over --tcp and --rtu-tcp the converter&apos;s serial line has its own baud and parity (set on the converter); the scan tries only ids there</source>
+        <translation>--%1: over --tcp and --rtu-tcp the converter&apos;s serial line has its own baud and parity (set on the converter); the scan tries only ids there</translation>
+    </message>
+    <message>
+        <source>--parity: &apos;%1&apos; is given twice</source>
+        <translation>--parity: &apos;%1&apos; is given twice</translation>
+    </message>
+    <message>
+        <source>--parity: give one parity; several are for scan</source>
+        <translation>--parity: give one parity; several are for scan</translation>
+    </message>
+    <message>
+        <source>--%1 is an option of scan</source>
+        <translation>--%1 is an option of scan</translation>
+    </message>
+    <message>
+        <source>--bauds: &apos;%1&apos; is not one of %2</source>
+        <translation>--bauds: &apos;%1&apos; is not one of %2</translation>
+    </message>
+    <message>
+        <source>--bauds: %1 is given twice</source>
+        <translation>--bauds: %1 is given twice</translation>
+    </message>
+    <message>
+        <source>--ids: %1</source>
+        <translation>--ids: %1</translation>
+    </message>
+    <message>
+        <source>--probe-timeout: &apos;%1&apos; is not a number of ms from 1 to 10000</source>
+        <translation>--probe-timeout: &apos;%1&apos; is not a number of ms from 1 to 10000</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</source>
+        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</translation>
     </message>
 </context>
 <context>
@@ -2250,6 +2314,83 @@
     <message>
         <source>the controller does not answer at id %1: %2</source>
         <translation>the controller does not answer at id %1: %2</translation>
+    </message>
+    <message>
+        <source>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</source>
+        <translation>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</translation>
+    </message>
+    <message>
+        <source>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</source>
+        <translation>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlScan</name>
+    <message numerus="yes">
+        <source>scanning %1: %n id(s), %2 ms a probe</source>
+        <translation>
+            <numerusform>scanning %1: %n id, %2 ms a probe</numerusform>
+            <numerusform>scanning %1: %n ids, %2 ms a probe</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>found %1</source>
+        <translation>found %1</translation>
+    </message>
+    <message>
+        <source>over a network the converter&apos;s or gateway&apos;s serial line has its own baud and parity: only the ids are scanned</source>
+        <translation>over a network the converter&apos;s or gateway&apos;s serial line has its own baud and parity: only the ids are scanned</translation>
+    </message>
+    <message>
+        <source>at most about %1 s when nobody answers; a scan only reads</source>
+        <translation>at most about %1 s when nobody answers; a scan only reads</translation>
+    </message>
+    <message>
+        <source>%1 of %2 probed (id %3)</source>
+        <translation>%1 of %2 probed (id %3)</translation>
+    </message>
+    <message>
+        <source>scan stopped: %1</source>
+        <translation>scan stopped: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n controller(s) found in %1 s</source>
+        <translation>
+            <numerusform>%n controller found in %1 s</numerusform>
+            <numerusform>%n controllers found in %1 s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No controller answered. Check the power, the wiring (A and B swapped?), the port, and for a controller that answers slowly give --probe-timeout.</source>
+        <translation>No controller answered. Check the power, the wiring (A and B swapped?), the port, and for a controller that answers slowly give --probe-timeout.</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>id</translation>
+    </message>
+    <message>
+        <source>baud</source>
+        <translation>baud</translation>
+    </message>
+    <message>
+        <source>parity</source>
+        <translation>parity</translation>
+    </message>
+    <message>
+        <source>answer</source>
+        <translation>answer</translation>
+    </message>
+    <message>
+        <source>controller</source>
+        <translation>controller</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>id %1 answered after %2 ms, later than the probe waited: connect with --timeout %3</source>
+        <translation>id %1 answered after %2 ms, later than the probe waited: connect with --timeout %3</translation>
     </message>
 </context>
 <context>
@@ -7214,6 +7355,18 @@ controllers answer at --id</source>
 leaves the factory) the device id N and check it
 answers there; refuses when N is taken or two
 controllers answer at --id</translation>
+    </message>
+    <message>
+        <source>find every controller on the line (--port or --rtu-tcp;
+--tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</source>
+        <translation>find every controller on the line (--port or --rtu-tcp;
+--tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</translation>
     </message>
 </context>
 </TS>

@@ -6,7 +6,6 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
-#include <cmath>
 #include <cstdio>
 
 namespace stepcom {
@@ -31,13 +30,6 @@ CtlScan::CtlScan(const BusScanner::Plan &plan, const RegisterMap &map, bool json
     connect(&m_scanner, &BusScanner::foundDevice, this, [this](const BusScanner::Found &f) {
         m_err << tr("found %1").arg(f.summary()) << Qt::endl;
     });
-}
-
-int CtlScan::suggestedTimeoutMs(qint64 answerMs)
-{
-    // Half as long again, in steps of 50 ms, and never below the link's default of 500.
-    const qint64 ms = qint64(std::ceil(double(answerMs) * 1.5 / 50.0)) * 50;
-    return int(std::max<qint64>(500, ms));
 }
 
 void CtlScan::start()
@@ -115,7 +107,7 @@ void CtlScan::printTable() const
                         "--timeout %3")
                          .arg(f.deviceId)
                          .arg(f.answerMs)
-                         .arg(suggestedTimeoutMs(f.answerMs))
+                         .arg(BusScanner::suggestedTimeoutMs(f.answerMs))
                   << Qt::endl;
     }
 }
@@ -124,12 +116,13 @@ void CtlScan::printJson() const
 {
     QJsonArray list;
     for (const BusScanner::Found &f : m_scanner.found()) {
-        QJsonObject o{{QStringLiteral("id"), f.deviceId},
-                      {QStringLiteral("where"), f.where},
-                      {QStringLiteral("answer_ms"), double(f.answerMs)},
-                      {QStringLiteral("late"), f.late},
-                      {QStringLiteral("suggested_timeout_ms"), suggestedTimeoutMs(f.answerMs)},
-                      {QStringLiteral("controller"), f.detail}};
+        QJsonObject o{
+            {QStringLiteral("id"), f.deviceId},
+            {QStringLiteral("where"), f.where},
+            {QStringLiteral("answer_ms"), double(f.answerMs)},
+            {QStringLiteral("late"), f.late},
+            {QStringLiteral("suggested_timeout_ms"), BusScanner::suggestedTimeoutMs(f.answerMs)},
+            {QStringLiteral("controller"), f.detail}};
         o.insert(QStringLiteral("baud"), m_network ? QJsonValue() : QJsonValue(f.baud));
         o.insert(QStringLiteral("parity"),
                  m_network ? QJsonValue() : QJsonValue(LinkSettings::parityName(f.parity)));

@@ -22,8 +22,6 @@ public:
     CtlScan(const BusScanner::Plan &plan, const RegisterMap &map, bool json,
             QObject *parent = nullptr);
     void start();
-    // The --timeout that suits a controller that answered after `answerMs` (with room to spare).
-    static int suggestedTimeoutMs(qint64 answerMs);
 
 Q_SIGNALS:
     void finished(int exitCode);

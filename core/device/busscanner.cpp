@@ -83,6 +83,12 @@ int BusScanner::probeTimeoutMs(const LinkSettings &line, int askedMs)
     return std::max(askedMs, fittedProbeTimeoutMs(line));
 }
 
+int BusScanner::suggestedTimeoutMs(qint64 answerMs)
+{
+    const qint64 ms = qint64(std::ceil(double(answerMs) * 1.5 / 50.0)) * 50;
+    return int(std::max<qint64>(LinkSettings().timeoutMs, ms));
+}
+
 QList<LinkSettings> BusScanner::lines(const Plan &plan)
 {
     if (plan.base.isNetwork())

@@ -74,6 +74,9 @@ public:
     static int fittedProbeTimeoutMs(const LinkSettings &line);
     // The wait a probe gets on `line` when `askedMs` was asked for (0: fitted).
     static int probeTimeoutMs(const LinkSettings &line, int askedMs);
+    // The link timeout that suits a controller that answered after `answerMs`: half as long
+    // again, in steps of 50 ms, never below the link's default 500 ms.
+    static int suggestedTimeoutMs(qint64 answerMs);
     // The lines a plan tries, in order: one per baud and parity (just the base on a network).
     static QList<LinkSettings> lines(const Plan &plan);
     // When nobody answers: every probe waits out its timeout, plus opening each line.

@@ -126,6 +126,10 @@ private Q_SLOTS:
         // Asked for more: more; asked for less: never below the fitted one.
         QCOMPARE(BusScanner::probeTimeoutMs(s, 400), 400);
         QCOMPARE(BusScanner::probeTimeoutMs(s, 20), BusScanner::fittedProbeTimeoutMs(s));
+        // A late answer's suggestion: half as long again, in 50 ms steps, at least 500 ms.
+        QCOMPARE(BusScanner::suggestedTimeoutMs(36), 500);
+        QCOMPARE(BusScanner::suggestedTimeoutMs(400), 600);
+        QCOMPARE(BusScanner::suggestedTimeoutMs(401), 650);
     }
 
     void linesOfAPlan()

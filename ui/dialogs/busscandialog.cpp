@@ -182,7 +182,16 @@ BusScanDialog::BusScanDialog(DeviceSession *session, const LinkSettings &base, Q
         m_table->insertRow(row);
         m_table->setItem(row, BaudColumn, new QTableWidgetItem(QString::number(f.baud)));
         m_table->setItem(row, IdColumn, new QTableWidgetItem(QString::number(f.deviceId)));
-        m_table->setItem(row, DetailColumn, new QTableWidgetItem(f.detail));
+        // A late answer: the controller needs a longer timeout than the link's to be used.
+        const int timeoutMs = f.late ? BusScanner::suggestedTimeoutMs(f.answerMs) : 0;
+        m_table->item(row, IdColumn)->setData(Qt::UserRole, timeoutMs);
+        m_table->setItem(row, DetailColumn,
+                         new QTableWidgetItem(f.late ? tr("%1 (answered after %2 ms: connects "
+                                                          "with a %3 ms timeout)")
+                                                           .arg(f.detail)
+                                                           .arg(f.answerMs)
+                                                           .arg(timeoutMs)
+                                                     : f.detail));
         // The whole sentence a person reads ("id 7 at 9600 8N1 — a 2-axis controller, ...").
         for (int column = 0; column < ColumnCount; ++column)
             m_table->item(row, column)->setToolTip(f.summary());
@@ -355,6 +364,7 @@ LinkSettings BusScanDialog::settingsFor(int row) const
         return s;
     s.baud = m_table->item(row, BaudColumn)->text().toInt();
     s.deviceId = m_table->item(row, IdColumn)->text().toInt();
+    s.timeoutMs = std::max(s.timeoutMs, m_table->item(row, IdColumn)->data(Qt::UserRole).toInt());
     return s;
 }
 
