@@ -195,6 +195,7 @@ void BusScanner::openNextLine()
     s.retries = 0;
     s.deviceId = m_plan.ids.first();
     m_probedAt.clear();
+    m_waitedForLate = false;
     // Quiet only after bytes arrived (a late or garbled answer); a silent probe leaves none.
     m_link->setQuietTimeMs(kOpenQuietMs);
     m_link->setScanMode(true);
