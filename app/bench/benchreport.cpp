@@ -202,6 +202,28 @@ QList<Verdict> trafficVerdicts(const TrafficResult &t)
     return rows;
 }
 
+QList<Verdict> scanVerdicts(const ScanResult &s)
+{
+    const QString baud = QString::number(s.baud);
+    const QString target = QStringLiteral("(h) scan of ids 1-%1, nobody answers").arg(s.ids);
+    if (!s.measured)
+        return {{baud, target, s.error, QString(), QString(), Verdict::Result::Error}};
+    // Within 1.5x of the wire's limit, and a silent line must not "find" anything.
+    const double bound = 1.5 * s.limitMs;
+    return {
+        {baud, target,
+         QStringLiteral("%1 s (%2 ms an id, probe timeout %3 ms)%4")
+             .arg(QString::number(s.elapsedMs / 1000.0, 'f', 2),
+                  QString::number(s.elapsedMs / s.ids, 'f', 1))
+             .arg(s.probeTimeoutMs)
+             .arg(s.found ? QStringLiteral(", %1 found on a silent line").arg(s.found) : QString()),
+         QStringLiteral("< 1.5 x %1 s = %2 s")
+             .arg(QString::number(s.limitMs / 1000.0, 'f', 2),
+                  QString::number(bound / 1000.0, 'f', 2)),
+         QString::number(s.elapsedMs / s.limitMs, 'f', 2),
+         judge(s.elapsedMs < bound && s.found == 0)}};
+}
+
 QString table(const QList<Verdict> &rows, bool judged)
 {
     QString out = QStringLiteral("| baud | target | measured | model / bound | ratio | result |\n"

@@ -23,6 +23,7 @@ QList<Verdict> verdicts(const BaudResult &r);
 QList<Verdict> builtinWindowVerdicts(const WindowResult &w);
 QList<Verdict> trafficVerdicts(const TrafficResult &t);
 QList<Verdict> busVerdicts(const BusResult &b);
+QList<Verdict> scanVerdicts(const ScanResult &s);
 // A Markdown table; with `judged` false (smoke runs) results read "not judged".
 QString table(const QList<Verdict> &rows, bool judged);
 // Date, CPU and Qt version: what the numbers were measured on.

@@ -63,6 +63,19 @@ struct TrafficResult
     int rowsShown = 0;
 };
 
+// (h) a bus scan of ids 1-247 at one baud when nobody answers
+struct ScanResult
+{
+    bool measured = false;
+    QString error;
+    int baud = 0;
+    int ids = 0;
+    int probeTimeoutMs = 0; // the fitted one
+    double elapsedMs = 0;   // start to finished, opening the port included
+    double limitMs = 0;     // ids x (request frame + 35 ms + answer frame): the wire's limit
+    int found = 0;          // must be 0
+};
+
 struct BaudResult
 {
     int baud = 0;

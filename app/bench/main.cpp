@@ -3,6 +3,7 @@
 #include "benchreport.h"
 #include "benchrunner.h"
 #include "busprobe.h"
+#include "scanprobe.h"
 #include "trafficprobe.h"
 #include "windowprobe.h"
 
@@ -34,7 +35,8 @@ int main(int argc, char *argv[])
         "baud: (a) the live status cycle, (b) read-all, (c) the emergency stop while polling at "
         "full rate, (d) the window's CPU and memory while polling at full rate, (e) the Traffic "
         "dock holding an hour of that polling, (f) the status of three controllers on one line "
-        "in turn, (g) the E-STOP to every controller of a line of 2, 3 and 8. Prints a table "
+        "in turn, (g) the E-STOP to every controller of a line of 2, 3 and 8, (h) a bus scan of ids 1-247 at "
+        "9600 when nobody answers. Prints a table "
         "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -54,6 +56,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("no-window"), QStringLiteral("Skip (d).")},
         {QStringLiteral("no-traffic"), QStringLiteral("Skip (e).")},
         {QStringLiteral("no-bus"), QStringLiteral("Skip (f) and (g).")},
+        {QStringLiteral("no-scan"), QStringLiteral("Skip (h).")},
+        {QStringLiteral("only-scan"), QStringLiteral("Run only (h), the bus scan.")},
         {QStringLiteral("traffic-seconds"),
          QStringLiteral(
              "(e) seconds of polling at full rate the Traffic dock holds (default 3600)."),
@@ -94,6 +98,11 @@ int main(int argc, char *argv[])
     }
 
     QList<Verdict> rows;
+    if (parser.isSet(QStringLiteral("only-scan"))) {
+        bauds.clear();
+        config.traffic = false;
+        config.stepcomPath.clear();
+    }
     int fastestBaud = 0;
     double fastestFrames = 0; // frames per second of the status poll at full rate
     for (const int baud : std::as_const(bauds)) {
@@ -125,6 +134,12 @@ int main(int argc, char *argv[])
         err << QStringLiteral("stepcom-bench: the window with its built-in simulator ...")
             << Qt::endl;
         rows += builtinWindowVerdicts(measureWindow(config, nullptr, 0));
+    }
+
+    if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke) {
+        err << QStringLiteral("stepcom-bench: the bus scan of ids 1-247 at 9600 baud ...")
+            << Qt::endl;
+        rows += scanVerdicts(measureScan(9600));
     }
 
     const QString result =

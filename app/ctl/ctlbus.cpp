@@ -1,5 +1,6 @@
 // stepcomctl --id 1,2,3: one command for several controllers on one line, in turn.
 #include "ctlrunner.h"
+#include "ctlscan.h"
 
 #include "device/idchange.h"
 
@@ -167,6 +168,31 @@ void CtlRunner::runAssignId()
         });
         change->start(from, to);
     });
+}
+
+void CtlRunner::runScan()
+{
+    if (m_options.target == CtlOptions::Target::None ||
+        m_options.target == CtlOptions::Target::Sim) {
+        fail(UsageError, tr("scan: give the line to scan: --port, --rtu-tcp or --tcp (the "
+                            "built-in simulator is one controller at a known id; scan "
+                            "stepcom-sim --pty instead)"));
+        return;
+    }
+    if (!m_options.arguments.isEmpty()) {
+        fail(UsageError, tr("scan takes no arguments ('%1'): give --bauds, --parity and --ids")
+                             .arg(m_options.arguments.first()));
+        return;
+    }
+    BusScanner::Plan plan;
+    plan.base = m_options.link;
+    plan.bauds = m_options.scanBauds;
+    plan.parities = m_options.scanParities;
+    plan.ids = m_options.scanIds;
+    plan.probeTimeoutMs = m_options.probeTimeoutMs;
+    auto *scan = new CtlScan(plan, m_map, m_options.json, this);
+    connect(scan, &CtlScan::finished, this, &CtlRunner::finish);
+    scan->start();
 }
 
 } // namespace stepcom

@@ -49,8 +49,19 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          tr("ms"), QStringLiteral("0")},
         {QStringLiteral("baud"), tr("Baud rate: 4800, 9600, 19200 or 38400 (default 9600)."),
          tr("rate"), QStringLiteral("9600")},
-        {QStringLiteral("parity"), tr("Parity: none, even or odd (default none)."), tr("parity"),
-         QStringLiteral("none")},
+        {QStringLiteral("parity"),
+         tr("Parity: none, even or odd (default none); scan: several, e.g. none,even,odd."),
+         tr("parity"), QStringLiteral("none")},
+        {QStringLiteral("bauds"),
+         tr("scan: the baud rates to try, e.g. 9600,19200 (default all four, 9600 first); not "
+            "over --tcp or --rtu-tcp, where the converter's line has its own."),
+         tr("list")},
+        {QStringLiteral("ids"),
+         tr("scan: the device ids to try, e.g. 1-32 or 1,5,7 (default 1-247)."), tr("range")},
+        {QStringLiteral("probe-timeout"),
+         tr("scan: wait this long for each id's answer (default: fitted to the baud, 67 ms at "
+            "9600); more for controllers that answer slowly."),
+         tr("ms")},
         {QStringLiteral("stop-bits"), tr("Stop bits: 1 or 2 (default 1)."), tr("n"),
          QStringLiteral("1")},
         {QStringLiteral("id"),
@@ -128,9 +139,63 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     }
     if (!toInt(parser.value(QStringLiteral("baud")), &o.link.baud))
         return tr("--baud: '%1' is not a number").arg(parser.value(QStringLiteral("baud")));
-    if (!LinkSettings::parseParity(parser.value(QStringLiteral("parity")), &o.link.parity))
-        return tr("--parity: '%1' is not none, even or odd")
-            .arg(parser.value(QStringLiteral("parity")));
+    const QStringList positional = parser.positionalArguments();
+    const bool scan = !positional.isEmpty() && positional.first() == QLatin1String("scan");
+    for (const QString &name : {QStringLiteral("parity"), QStringLiteral("bauds")}) {
+        // A converter's serial side is set on the converter: nothing of ours to try.
+        if (scan && o.link.isNetwork() && parser.isSet(name))
+            return tr("--%1: over --tcp and --rtu-tcp the converter's serial line has its own "
+                      "baud and parity (set on the converter); the scan tries only ids there")
+                .arg(name);
+    }
+    for (const QString &part : parser.value(QStringLiteral("parity")).split(QLatin1Char(','))) {
+        QSerialPort::Parity parity = QSerialPort::NoParity;
+        if (!LinkSettings::parseParity(part.trimmed(), &parity))
+            return tr("--parity: '%1' is not none, even or odd").arg(part);
+        if (o.scanParities.contains(parity))
+            return tr("--parity: '%1' is given twice").arg(part);
+        o.scanParities << parity;
+    }
+    o.link.parity = o.scanParities.first();
+    if (o.scanParities.size() > 1 && !scan)
+        return tr("--parity: give one parity; several are for scan");
+    for (const QString &name :
+         {QStringLiteral("bauds"), QStringLiteral("ids"), QStringLiteral("probe-timeout")}) {
+        if (!scan && parser.isSet(name))
+            return tr("--%1 is an option of scan").arg(name);
+    }
+    if (parser.isSet(QStringLiteral("bauds"))) {
+        for (const QString &part : parser.value(QStringLiteral("bauds")).split(QLatin1Char(','))) {
+            int baud = 0;
+            QStringList supported;
+            for (const int b : LinkSettings::supportedBauds())
+                supported << QString::number(b);
+            if (!toInt(part.trimmed(), &baud) || !LinkSettings::supportedBauds().contains(baud))
+                return tr("--bauds: '%1' is not one of %2")
+                    .arg(part, supported.join(QStringLiteral(", ")));
+            if (o.scanBauds.contains(baud))
+                return tr("--bauds: %1 is given twice").arg(baud);
+            o.scanBauds << baud;
+        }
+    } else {
+        // The factory setting first: most controllers found are still at it.
+        o.scanBauds = {9600, 19200, 38400, 4800};
+    }
+    if (parser.isSet(QStringLiteral("ids"))) {
+        QString problem;
+        const auto ids = IdList::parse(parser.value(QStringLiteral("ids")), &problem);
+        if (!ids)
+            return tr("--ids: %1").arg(problem);
+        o.scanIds = *ids;
+    } else {
+        for (int id = 1; id <= 247; ++id)
+            o.scanIds << id;
+    }
+    if (parser.isSet(QStringLiteral("probe-timeout")) &&
+        (!toInt(parser.value(QStringLiteral("probe-timeout")), &o.probeTimeoutMs) ||
+         o.probeTimeoutMs < 1 || o.probeTimeoutMs > 10000))
+        return tr("--probe-timeout: '%1' is not a number of ms from 1 to 10000")
+            .arg(parser.value(QStringLiteral("probe-timeout")));
     const QString stop = parser.value(QStringLiteral("stop-bits"));
     if (stop == QLatin1String("1"))
         o.link.stopBits = QSerialPort::OneStop;
@@ -178,10 +243,9 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.from = parser.value(QStringLiteral("from"));
     o.by = parser.value(QStringLiteral("by"));
     o.to = parser.value(QStringLiteral("to"));
-    const QStringList positional = parser.positionalArguments();
     if (positional.isEmpty())
         return tr("no command given (params, read, write, command, move, monitor, dump, diff, "
-                  "apply, assign-id, report)");
+                  "apply, assign-id, scan, report)");
     o.command = positional.first();
     o.arguments = positional.mid(1);
     // --to is a position for move and a device id for assign-id.

@@ -31,6 +31,11 @@ struct CtlOptions
     QString to;                              // move --to X: to position X
     QString language = QStringLiteral("en"); // --lang or the environment: messages and the report
     int assignTo = 0;                        // assign-id --to N
+    // scan: the bauds, parities and ids to try, and the probe timeout (0: fitted to the baud).
+    QList<int> scanBauds;
+    QList<QSerialPort::Parity> scanParities;
+    QList<int> scanIds;
+    int probeTimeoutMs = 0;
     int count = -1;
     int intervalMs = 0;
     QString command;

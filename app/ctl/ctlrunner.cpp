@@ -129,6 +129,14 @@ const QList<CtlCommand> &CtlRunner::commands()
                                          "answers there; refuses when N is taken or two\n"
                                          "controllers answer at --id"),
          &CtlRunner::runAssignId},
+        {"scan", "scan",
+         QT_TRANSLATE_NOOP("stepcomctl",
+                           "find every controller on the line (--port or --rtu-tcp;\n"
+                           "--tcp: ids only) at --bauds, --parity and --ids; a table\n"
+                           "(or --json) of id, baud, parity and what answered;\n"
+                           "--probe-timeout MS for slow controllers; exit 0 found,\n"
+                           "1 none, 2 usage, 3 link error"),
+         &CtlRunner::runScan},
         {"report", "report FILE.pdf|.html",
          QT_TRANSLATE_NOOP("stepcomctl", "write the commissioning report (--name, --notes,\n"
                                          "--lang en|zh_CN; --from PROFILE: from a profile\n"

@@ -65,6 +65,8 @@ private:
     void backupThen(DeviceSession::Risk risk, std::function<void()> next);
     // assign-id --to N (ctlbus.cpp): the one controller at --id gets id N, verified there.
     void runAssignId();
+    // scan (ctlbus.cpp): every controller on the line, at the bauds, parities and ids asked.
+    void runScan();
     // Profiles and the report (ctlprofile.cpp).
     void runDump();
     void runDiff();

@@ -398,7 +398,7 @@ void busScan(Shooter &s)
         dialog->setBaseSettings(base);
         dialog->setCheckedBauds({9600, 19200});
         dialog->setIdRange(1, 10);
-        dialog->setProbeTimeoutMs(80);
+        dialog->setProbeTimeoutMs(0); // fitted to the baud, as a technician finds it
         dialog->startScan();
     });
     const auto dialog = [&s]() -> BusScanDialog * {

@@ -27,6 +27,8 @@ public:
     // Make the next request wait for the quiet time (a retried write's read-back).
     virtual void requireQuiet() = 0;
     virtual void setDeviceId(int) {}
+    // A bus scan (ModbusLink::setScanMode): only an RTU transport can name a foreign answer.
+    virtual void setScanMode(bool) {}
 
 Q_SIGNALS:
     void opened(bool ok, const QString &reason);
@@ -38,6 +40,9 @@ Q_SIGNALS:
     // Bytes that crossed the line: `pduOffset` where the function code starts, `crcBytes` at
     // the end.
     void frame(bool sent, const QByteArray &raw, int pduOffset, int crcBytes);
+    // Scan mode: a well-formed answer frame from `unit` that the request in flight (if any) was
+    // not waiting for: its function code byte as on the wire and its data.
+    void unitAnswered(int unit, int functionCode, const QByteArray &data);
 };
 
 } // namespace stepcom

@@ -1,5 +1,6 @@
 #include "bus/modbuslink.h"
 
+#include "bus/answercheck.h"
 #include "bus/linkanswer.h"
 #include "bus/modbustcpbackend.h"
 #include "bus/rtutransport.h"
@@ -139,6 +140,8 @@ void ModbusLink::open(const LinkSettings &settings)
     else
         m_backend = new RtuTransport(this);
     m_backend->setQuietTimeMs(m_quietMs);
+    m_backend->setScanMode(m_scanMode);
+    connect(m_backend, &LinkBackend::unitAnswered, this, &ModbusLink::onUnitAnswered);
     connect(m_backend, &LinkBackend::opened, this, &ModbusLink::onBackendOpened);
     connect(m_backend, &LinkBackend::failed, this, &ModbusLink::failLink);
     connect(m_backend, &LinkBackend::answered, this, &ModbusLink::onAnswered);
@@ -287,6 +290,24 @@ int ModbusLink::cancelQueued(Priority from, const QString &reason)
     return int(items.size());
 }
 
+void ModbusLink::setScanMode(bool on)
+{
+    m_scanMode = on;
+    if (m_backend)
+        m_backend->setScanMode(on);
+}
+
+void ModbusLink::onUnitAnswered(int unit, int functionCode, const QByteArray &data)
+{
+    QList<quint16> values;
+    const int exception = AnswerCheck::exceptionCode(functionCode, data);
+    if (exception == 0 && functionCode == 0x03) {
+        for (int at = 1; at + 1 < data.size(); at += 2)
+            values << quint16((quint8(data.at(at)) << 8) | quint8(data.at(at + 1)));
+    }
+    Q_EMIT unitAnswered(unit, exception, values);
+}
+
 void ModbusLink::resetStats()
 {
     m_stats = LinkStats();
@@ -314,15 +335,18 @@ void ModbusLink::pump()
     ++m_stats.requests;
     Q_EMIT dispatched(m_inFlight->id, m_inFlight->request);
     // The transport waits for the silences the line needs; the watchdog covers that too.
-    m_watchdog.start(m_settings.timeoutMs + m_quietMs + m_settings.turnaroundMs + kWatchdogGraceMs);
-    m_backend->send(id, toPdu(req), m_settings.timeoutMs);
+    const int timeoutMs = req.timeoutMs > 0 ? req.timeoutMs : m_settings.timeoutMs;
+    m_watchdog.start(timeoutMs + m_quietMs + m_settings.turnaroundMs + kWatchdogGraceMs);
+    m_backend->send(id, toPdu(req), timeoutMs);
 }
 
 QString ModbusLink::noAnswerText(const Request &req, const LinkAnswer &a) const
 {
     if (a.crcErrors > 0 && a.discarded.size() == a.crcErrors)
         return tr("%1: answers had a bad checksum (CRC)").arg(describe(req));
-    QString text = tr("%1: no answer within %2 ms").arg(describe(req)).arg(m_settings.timeoutMs);
+    QString text = tr("%1: no answer within %2 ms")
+                       .arg(describe(req))
+                       .arg(req.timeoutMs > 0 ? req.timeoutMs : m_settings.timeoutMs);
     if (!a.discarded.isEmpty())
         text += tr(" (discarded: %1)").arg(a.discarded.join(QStringLiteral("; ")));
     const int id = req.unitId > 0 ? req.unitId : m_settings.deviceId;

@@ -55,6 +55,12 @@ public:
     void setQuietTimeMs(int ms);
     int quietTimeMs() const { return m_quietMs; }
 
+    // A bus scan: a probe nothing answered leaves no quiet time and owes no late answer, its
+    // timeout counts from the start of the request (the frame is in the scanner's), and
+    // every well-formed answer from a unit other than the one asked is reported
+    // (`unitAnswered`): an RTU answer carries its address, so a late one still names its id.
+    void setScanMode(bool on);
+
     const LinkStats &stats() const { return m_stats; }
     void resetStats();
     TrafficLog *traffic() const { return m_traffic; }
@@ -71,6 +77,9 @@ Q_SIGNALS:
     // The request's own bytes came back before the answer and the echo option is off: the
     // adapter echoes what it sends (offer the option).
     void echoDetected();
+    // Scan mode: an answer from `unit` that no request in flight was waiting for (a read's
+    // registers, or the exception code it refused with).
+    void unitAnswered(int unit, int exceptionCode, const QList<quint16> &values);
 
 private:
     void setState(State state, const QString &reason);
@@ -83,6 +92,7 @@ private:
     void complete(QueuedRequest item, Result result);
     void failLink(const QString &reason);
     void failAll(const QString &reason);
+    void onUnitAnswered(int unit, int functionCode, const QByteArray &data);
     void onFrame(bool sent, const QByteArray &raw, int pduOffset, int crcBytes);
     QString describe(const Request &request) const;
     QString noAnswerText(const Request &request, const LinkAnswer &answer) const;
@@ -97,6 +107,7 @@ private:
     QTimer m_watchdog;
     QTimer m_pumpTimer;
     int m_quietMs = 100;
+    bool m_scanMode = false;
     QDeadlineTimer m_notBefore; // a busy controller gets a pause before the next request
     quint64 m_nextId = 1;
     LinkStats m_stats;

@@ -26,6 +26,9 @@ struct Request
     QString what; // what the request is for, in words: "motor1.speed", "read-all block 2/5"
     // The controller it is addressed to on a line of several; 0: the link's device id.
     int unitId = 0;
+    // This request's own answer timeout in ms; 0: the link's. A bus scan's probes wait only as
+    // long as the wire needs, its identifying read as long as a slow controller needs.
+    int timeoutMs = 0;
 
     static Request read(quint16 address, quint16 count, Priority p = Priority::Read);
     static Request write(quint16 address, QVector<quint16> values, Priority p = Priority::Command);

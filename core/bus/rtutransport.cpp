@@ -241,8 +241,9 @@ void RtuTransport::writeNow()
     m_waiting = true;
     const double frameMs = m_byteMs * double(adu.size());
     m_earliestMs = frameMs + m_settings.answerDelayMs - kEarlyMarginMs;
-    // The timeout counts from the end of the request on the line.
-    m_timeoutTimer.start(m_pending->timeoutMs + int(std::ceil(frameMs)));
+    // The timeout counts from the end of the request on the line; a scan's probe timeout is
+    // fitted with the request's frame in it already (BusScanner::fittedProbeTimeoutMs).
+    m_timeoutTimer.start(m_pending->timeoutMs + (m_scan ? 0 : int(std::ceil(frameMs))));
     Q_EMIT frame(true, adu, 1, 2);
     Q_EMIT sent();
 }
@@ -324,6 +325,7 @@ void RtuTransport::processBuffer()
             return;
         }
         if (quint8(f.at(0)) != m_pending->unit) {
+            reportForeign(f);
             discard(
                 f,
                 tr("an answer from device %1, not %2").arg(quint8(f.at(0))).arg(m_pending->unit));
@@ -384,7 +386,9 @@ void RtuTransport::onTimeout()
 {
     if (!m_waiting)
         return;
-    m_owed.append({m_pending->adu, m_sentAtMs + kOwedTimeouts * m_pending->timeoutMs});
+    // A scan owes no answer: a late one names its unit and is counted for it.
+    if (!m_scan)
+        m_owed.append({m_pending->adu, m_sentAtMs + kOwedTimeouts * m_pending->timeoutMs});
     LinkAnswer a;
     a.kind = LinkAnswer::Kind::Timeout;
     a.onlyEcho = m_echoStripped && m_rx.isEmpty();
@@ -412,10 +416,18 @@ void RtuTransport::takeStrayFrames()
         if (!RtuFrame::crcOk(f))
             return; // noise: the rest cannot be framed; it is discarded with the next request
         m_strayParsed += length;
+        reportForeign(f);
         pruneOwed();
         if (!m_owed.isEmpty() && quint8(f.at(0)) == m_unit)
             m_owed.removeFirst();
     }
+}
+
+void RtuTransport::reportForeign(const QByteArray &frame)
+{
+    if (m_scan && frame.size() >= 4)
+        Q_EMIT unitAnswered(quint8(frame.at(0)), quint8(frame.at(1)),
+                            frame.mid(2, frame.size() - 4));
 }
 
 void RtuTransport::finish(LinkAnswer answer)
@@ -425,7 +437,11 @@ void RtuTransport::finish(LinkAnswer answer)
     m_pending.reset();
     answer.discarded = std::exchange(m_discarded, {});
     answer.crcErrors = std::exchange(m_crcErrors, 0);
-    if (answer.kind != LinkAnswer::Kind::Answer || !answer.discarded.isEmpty() || !m_rx.isEmpty()) {
+    // A scan's probe that heard nothing at all leaves nothing to wait for.
+    const bool silent = m_scan && answer.kind == LinkAnswer::Kind::Timeout &&
+                        answer.discarded.isEmpty() && m_rx.isEmpty();
+    if (!silent && (answer.kind != LinkAnswer::Kind::Answer || !answer.discarded.isEmpty() ||
+                    !m_rx.isEmpty())) {
         // Something else is talking on the line: let it finish before the next request.
         m_stray += std::exchange(m_rx, {});
         takeStrayFrames();

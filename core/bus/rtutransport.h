@@ -35,6 +35,7 @@ public:
     void send(int unit, const QModbusRequest &request, int timeoutMs) override;
     void setQuietTimeMs(int ms) override { m_quietMs = ms; }
     void requireQuiet() override;
+    void setScanMode(bool on) override { m_scan = on; }
 
     // Empty when `path` can be a serial port; otherwise why not ("not a serial port").
     static QString notASerialPort(const QString &path);
@@ -73,6 +74,8 @@ private:
     void onTimeout();
     void pruneOwed();
     void takeStrayFrames();
+    // Scan mode: name the unit of a foreign answer frame (CRC checked by the caller).
+    void reportForeign(const QByteArray &frame);
 
     LinkSettings m_settings;
     QPointer<QIODevice> m_device;
@@ -81,6 +84,7 @@ private:
     double m_byteMs = 0; // one character on the line (0 on a pty or TCP: no wire)
     double m_gapMs = 0;  // the silence before a request (3.5 characters)
     int m_quietMs = 100;
+    bool m_scan = false;
     QElapsedTimer m_clock;
     double m_lastRxMs = -1;
     double m_quietFromMs = 0;

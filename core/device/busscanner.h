@@ -2,6 +2,8 @@
 
 #include "bus/linksettings.h"
 
+#include <QElapsedTimer>
+#include <QHash>
 #include <QList>
 #include <QObject>
 
@@ -21,13 +23,31 @@ public:
     {
         int baud = 0;
         int deviceId = 0;
-        QString where;            // "9600 8N1", or "192.168.1.20:502" over TCP
+        QString where; // "9600 8N1", or "192.168.1.20:502" over TCP
+        QSerialPort::Parity parity = QSerialPort::NoParity;
+        // Milliseconds from the probe to its answer; an answer after the probe's timeout was
+        // taken when it came (it names its id) and says the controller needs a longer timeout.
+        qint64 answerMs = -1;
+        bool late = false;
         int exceptionCode = 0;    // it answered the probe with this exception
         QList<qint64> stepAngles; // raw step angle of each motor that answered (1.80° = 180)
         int motorsInMap = 0;      // how many motors the map describes
         QString detail;           // what answered, in words: describe() without id and baud
         // "id 7 at 9600 8N1 — a 2-axis controller, step angle 1.80°"
         QString summary() const;
+    };
+
+    // What to scan. The dialog and `stepcomctl scan` both fill one and call start(Plan).
+    struct Plan
+    {
+        LinkSettings base; // the port (or host), stop bits, answer delay, echo
+        QList<int> bauds;  // tried in this order; ignored over a network (base.baud there)
+        QList<QSerialPort::Parity> parities; // empty: base.parity; ignored over a network
+        QList<int> ids;                      // tried in this order at each baud and parity
+        // 0: fitted to the baud and the line (probeTimeoutMs()); longer for slow controllers,
+        // never shorter than the fitted one.
+        int probeTimeoutMs = 0;
+        bool stopAtFirst = false;
     };
 
     explicit BusScanner(QObject *parent = nullptr);
@@ -41,10 +61,31 @@ public:
     // "9600 8N1" / "host:502".
     static QString where(const LinkSettings &settings);
 
-    // `base` supplies the port (or TCP host), parity and stop bits; ids and bauds are tried in
-    // the order given (bauds ignored on TCP). A probe waits `probeTimeoutMs` for an answer.
+    // A USB adapter's latency (an FTDI chip's latency timer is 16 ms) on top of the wire.
+    static constexpr int kUsbMarginMs = 16;
+    // A converter or gateway on a network adds its own buffering.
+    static constexpr int kNetworkMarginMs = 30;
+    // Opening a serial line waits this long for it to be quiet; also the quiet time after
+    // bytes arrived that no probe was waiting for.
+    static constexpr int kOpenQuietMs = 50;
+    // The shortest wait for a probe's answer on `line` (its baud and parity; over a network
+    // the converter's baud as given): the request's frame, the controller's answer delay, the
+    // longest answer frame to a probe, and the margin.
+    static int fittedProbeTimeoutMs(const LinkSettings &line);
+    // The wait a probe gets on `line` when `askedMs` was asked for (0: fitted).
+    static int probeTimeoutMs(const LinkSettings &line, int askedMs);
+    // The link timeout that suits a controller that answered after `answerMs`: half as long
+    // again, in steps of 50 ms, never below the link's default 500 ms.
+    static int suggestedTimeoutMs(qint64 answerMs);
+    // The lines a plan tries, in order: one per baud and parity (just the base on a network).
+    static QList<LinkSettings> lines(const Plan &plan);
+    // When nobody answers: every probe waits out its timeout, plus opening each line.
+    static qint64 worstCaseMs(const Plan &plan);
+
+    void start(const Plan &plan);
+    // The ids firstId..lastId at `bauds` with base's parity (the dialog's first form).
     void start(const LinkSettings &base, const QList<int> &bauds, int firstId, int lastId,
-               int probeTimeoutMs = 150, bool stopAtFirst = false);
+               int probeTimeoutMs = 0, bool stopAtFirst = false);
     void cancel();
     bool isRunning() const { return m_running; }
     const QList<Found> &found() const { return m_found; }
@@ -52,12 +93,17 @@ public:
 
 Q_SIGNALS:
     void progress(int done, int total, int baud, int deviceId);
+    // A line is being tried: `line` as where() says it, each probe waiting `probeTimeoutMs`.
+    void lineStarted(const QString &line, int probeTimeoutMs);
     void foundDevice(const stepcom::BusScanner::Found &found);
     void finished(bool cancelled, const QString &error);
 
 private:
-    void openNextBaud();
+    void openNextLine();
     void probeNext();
+    // An answer (on time or late) from `id` on the current line: a Found, not yet described.
+    Found foundAt(int id, int exceptionCode, const QList<quint16> &values, qint64 answerMs) const;
+    void onLateAnswer(int unit, int exceptionCode, const QList<quint16> &values);
     // After a probe answered: read every motor's step angle in one request, then report.
     void identify(Found found);
     void report(Found found);
@@ -65,18 +111,19 @@ private:
 
     ModbusLink *m_link = nullptr;
     const RegisterMap *m_map = nullptr;
-    LinkSettings m_base;
-    QList<int> m_bauds;
-    int m_baudIndex = -1;
-    int m_firstId = 1;
-    int m_lastId = 247;
-    int m_id = 0;
-    int m_timeoutMs = 150;
-    bool m_stopAtFirst = false;
+    Plan m_plan;
+    QList<LinkSettings> m_lines;
+    int m_lineIndex = -1;
+    int m_idIndex = 0;
+    int m_timeoutMs = 0;
     bool m_running = false;
     int m_done = 0;
     int m_total = 0;
     QList<Found> m_found;
+    QElapsedTimer m_clock;
+    QHash<int, qint64> m_probedAt; // ids probed on this line: when (m_clock)
+    QList<Found> m_late;           // found by a late answer, identified before the next probe
+    bool m_waitedForLate = false;  // this line's last probe's late answers were waited for
 };
 
 } // namespace stepcom

@@ -104,6 +104,79 @@ private Q_SLOTS:
         QCOMPARE(f.summary(),
                  QStringLiteral("id 7 at 9600 8N1 — a 2-axis controller, step angle 1.80°"));
     }
+
+    // Request frame (8 bytes) + the 35 ms answer delay + the longest answer (7 bytes) + the
+    // margin: USB adapters on a serial line, a converter's buffering over a network.
+    void fittedProbeTimeout()
+    {
+        LinkSettings s;
+        s.baud = 9600; // 15 characters of 10 bits: 15.6 ms
+        QCOMPARE(BusScanner::fittedProbeTimeoutMs(s), 51 + BusScanner::kUsbMarginMs);
+        s.baud = 19200;
+        s.parity = QSerialPort::EvenParity; // 11 bits: 8.6 ms
+        QCOMPARE(BusScanner::fittedProbeTimeoutMs(s), 44 + BusScanner::kUsbMarginMs);
+        s.baud = 4800;
+        s.parity = QSerialPort::NoParity;
+        s.answerDelayMs = 100; // a controller set to answer later
+        QCOMPARE(BusScanner::fittedProbeTimeoutMs(s), 132 + BusScanner::kUsbMarginMs);
+        s.answerDelayMs = 35;
+        s.baud = 9600;
+        s.transport = LinkSettings::Transport::RtuTcp;
+        QCOMPARE(BusScanner::fittedProbeTimeoutMs(s), 51 + BusScanner::kNetworkMarginMs);
+        // Asked for more: more; asked for less: never below the fitted one.
+        QCOMPARE(BusScanner::probeTimeoutMs(s, 400), 400);
+        QCOMPARE(BusScanner::probeTimeoutMs(s, 20), BusScanner::fittedProbeTimeoutMs(s));
+        // A late answer's suggestion: half as long again, in 50 ms steps, at least 500 ms.
+        QCOMPARE(BusScanner::suggestedTimeoutMs(36), 500);
+        QCOMPARE(BusScanner::suggestedTimeoutMs(400), 600);
+        QCOMPARE(BusScanner::suggestedTimeoutMs(401), 650);
+    }
+
+    void linesOfAPlan()
+    {
+        BusScanner::Plan plan;
+        plan.bauds = {9600, 19200};
+        plan.parities = {QSerialPort::NoParity, QSerialPort::EvenParity};
+        QStringList where;
+        for (const LinkSettings &line : BusScanner::lines(plan))
+            where << BusScanner::where(line);
+        QCOMPARE(where, (QStringList{"9600 8N1", "9600 8E1", "19200 8N1", "19200 8E1"}));
+        // Over a network the converter's line is its own: one line, bauds ignored.
+        plan.base.transport = LinkSettings::Transport::RtuTcp;
+        plan.base.host = QStringLiteral("10.0.0.5");
+        plan.base.tcpPort = 4001;
+        QCOMPARE(BusScanner::lines(plan).size(), 1);
+        QCOMPARE(BusScanner::where(BusScanner::lines(plan).first()),
+                 QStringLiteral("10.0.0.5:4001"));
+    }
+
+    // A controller that answers after 300 ms, scanned with the fitted timeout: its answer comes
+    // while later ids are probed and is counted for the id it carries, not for the id in flight.
+    void lateAnswerCountsForItsId()
+    {
+        SimHost sim;
+        SimOptions options;
+        options.rtu = true;
+        options.deviceId = 4;
+        options.answerDelayMs = 300;
+        QString error;
+        QVERIFY2(sim.start(options, &error), qPrintable(error));
+        BusScanner scanner;
+        QSignalSpy finished(&scanner, &BusScanner::finished);
+        BusScanner::Plan plan;
+        plan.base.portName = sim.rtuPath();
+        plan.bauds = {9600};
+        plan.ids = {3, 4, 5, 6, 7, 8, 9, 10};
+        scanner.start(plan);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+        QCOMPARE(finished.first().at(1).toString(), QString());
+        QCOMPARE(scanner.found().size(), 1);
+        const BusScanner::Found f = scanner.found().first();
+        QCOMPARE(f.deviceId, 4);
+        QVERIFY(f.late);
+        QVERIFY(f.answerMs >= 300);
+        QCOMPARE(f.stepAngles.size(), 2); // identified with a timeout fitted to its delay
+    }
 };
 
 QTEST_GUILESS_MAIN(TestBusScanner)

@@ -114,8 +114,9 @@ BusScanDialog::BusScanDialog(DeviceSession *session, const LinkSettings &base, Q
     m_lastId = newSpin(m_optionsBox, "lastId", 1, 255, 247);
     m_idRow = newRow(m_optionsBox, {m_firstId, m_idTo, m_lastId});
     addRow(m_optionsForm, m_idRow, m_firstId);
-    // The controller answers after 35 ms; 150 leaves room for USB adapters' latency.
-    m_probeTimeout = newSpin(m_optionsBox, "probeTimeout", 20, 5000, 150, 10);
+    // 0: fitted to each baud (the frames, the 35 ms answer delay and a USB adapter's latency);
+    // more for controllers that answer slowly.
+    m_probeTimeout = newSpin(m_optionsBox, "probeTimeout", 0, 5000, 0, 10);
     addRow(m_optionsForm, m_probeTimeout);
     m_stopAtFirst = named(new QCheckBox(m_optionsBox), "stopAtFirst");
     m_optionsForm->addRow(m_stopAtFirst);
@@ -185,7 +186,16 @@ BusScanDialog::BusScanDialog(DeviceSession *session, const LinkSettings &base, Q
         m_table->insertRow(row);
         m_table->setItem(row, BaudColumn, new QTableWidgetItem(QString::number(f.baud)));
         m_table->setItem(row, IdColumn, new QTableWidgetItem(QString::number(f.deviceId)));
-        m_table->setItem(row, DetailColumn, new QTableWidgetItem(f.detail));
+        // A late answer: the controller needs a longer timeout than the link's to be used.
+        const int timeoutMs = f.late ? BusScanner::suggestedTimeoutMs(f.answerMs) : 0;
+        m_table->item(row, IdColumn)->setData(Qt::UserRole, timeoutMs);
+        m_table->setItem(row, DetailColumn,
+                         new QTableWidgetItem(f.late ? tr("%1 (answered after %2 ms: connects "
+                                                          "with a %3 ms timeout)")
+                                                           .arg(f.detail)
+                                                           .arg(f.answerMs)
+                                                           .arg(timeoutMs)
+                                                     : f.detail));
         // The whole sentence a person reads ("id 7 at 9600 8N1 — a 2-axis controller, ...").
         for (int column = 0; column < ColumnCount; ++column)
             m_table->item(row, column)->setToolTip(f.summary());
@@ -228,8 +238,12 @@ void BusScanDialog::retranslate()
     m_lastId->setToolTip(tr("Last device id to try; 247 is the highest standard Modbus address"));
     setLabel(m_optionsForm, m_probeTimeout, tr("Probe &timeout:"));
     m_probeTimeout->setSuffix(tr(" ms"));
-    m_probeTimeout->setToolTip(tr("How long to wait for an answer from each id. The controller "
-                                  "answers after 35 ms; USB adapters add some latency."));
+    m_probeTimeout->setSpecialValueText(tr("fitted to the baud"));
+    m_probeTimeout->setToolTip(
+        tr("How long to wait for an answer from each id. Fitted to the baud: the frames, the "
+           "controller's 35 ms answer delay and a USB adapter's latency (67 ms at 9600). A "
+           "controller that answers later is still found by its late answer; give more for "
+           "one that answers very slowly."));
     m_stopAtFirst->setText(tr("Stop at the &first controller found"));
     m_stopAtFirst->setToolTip(tr("Finish as soon as one controller answers"));
     m_start->setText(tr("&Start"));
@@ -316,6 +330,18 @@ void BusScanDialog::setStopAtFirst(bool stop)
     m_stopAtFirst->setChecked(stop);
 }
 
+BusScanner::Plan BusScanDialog::plan() const
+{
+    BusScanner::Plan p;
+    p.base = m_base;
+    p.bauds = scanOrder();
+    for (int id = m_firstId->value(); id <= m_lastId->value(); ++id)
+        p.ids << id;
+    p.probeTimeoutMs = m_probeTimeout->value();
+    p.stopAtFirst = m_stopAtFirst->isChecked();
+    return p;
+}
+
 QList<int> BusScanDialog::scanOrder() const
 {
     if (m_base.isNetwork())
@@ -345,6 +371,7 @@ LinkSettings BusScanDialog::settingsFor(int row) const
         return s;
     s.baud = m_table->item(row, BaudColumn)->text().toInt();
     s.deviceId = m_table->item(row, IdColumn)->text().toInt();
+    s.timeoutMs = std::max(s.timeoutMs, m_table->item(row, IdColumn)->data(Qt::UserRole).toInt());
     return s;
 }
 
@@ -382,8 +409,7 @@ void BusScanDialog::startScan()
     m_progress->setValue(0);
     m_progress->setFormat(tr("starting…"));
     updateControls();
-    m_scanner->start(m_base, bauds, m_firstId->value(), m_lastId->value(), m_probeTimeout->value(),
-                     m_stopAtFirst->isChecked());
+    m_scanner->start(plan());
     if (isScanning()) {
         m_progress->setRange(0, std::max(1, m_scanner->total()));
         updateControls();
@@ -524,9 +550,9 @@ QString BusScanDialog::statusText() const
         break;
     }
     // The worst case, when nobody answers: every probe waits out its timeout.
-    const int ids = std::max(0, m_lastId->value() - m_firstId->value() + 1);
-    const int probes = int(scanOrder().size()) * ids;
-    const int seconds = int((probes * (m_probeTimeout->value() + 50) + 999) / 1000);
+    const BusScanner::Plan p = plan();
+    const int probes = int(BusScanner::lines(p).size() * p.ids.size());
+    const int seconds = int((BusScanner::worstCaseMs(p) + 999) / 1000);
     return tr("%n probe(s), at most about %1 s. A scan only reads; nothing is written.", nullptr,
               probes)
         .arg(seconds);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "device/busscanner.h"
 #include "device/devicesession.h"
 
 #include <QDialog>
@@ -16,7 +17,6 @@ class QTableWidget;
 
 namespace stepcom {
 
-class BusScanner;
 class DeviceSession;
 
 // Finds controllers whose device id or baud rate was forgotten: tries the chosen baud rates
@@ -76,6 +76,8 @@ private:
     void onFinished(bool cancelled, const QString &error);
     void onSessionState();
     QList<int> scanOrder() const;
+    // What the options ask for; BusScanner runs it as it runs `stepcomctl scan`.
+    BusScanner::Plan plan() const;
     static QString parityText(QSerialPort::Parity parity);
 
     DeviceSession *m_session;
