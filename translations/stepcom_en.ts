@@ -365,10 +365,6 @@
         <translation> ms</translation>
     </message>
     <message>
-        <source>How long to wait for an answer from each id. The controller answers after 35 ms; USB adapters add some latency.</source>
-        <translation>How long to wait for an answer from each id. The controller answers after 35 ms; USB adapters add some latency.</translation>
-    </message>
-    <message>
         <source>Stop at the &amp;first controller found</source>
         <translation>Stop at the &amp;first controller found</translation>
     </message>
@@ -543,6 +539,18 @@
         <source>They answered at different baud rates; give them one baud rate (Device page or Device → Assign device ids…) before working with the list.</source>
         <translation>They answered at different baud rates; give them one baud rate (Device page or Device → Assign device ids…) before working with the list.</translation>
     </message>
+    <message>
+        <source>%1 (answered after %2 ms: connects with a %3 ms timeout)</source>
+        <translation>%1 (answered after %2 ms: connects with a %3 ms timeout)</translation>
+    </message>
+    <message>
+        <source>fitted to the baud</source>
+        <translation>fitted to the baud</translation>
+    </message>
+    <message>
+        <source>How long to wait for an answer from each id. Fitted to the baud: the frames, the controller&apos;s 35 ms answer delay and a USB adapter&apos;s latency (67 ms at 9600). A controller that answers later is still found by its late answer; give more for one that answers very slowly.</source>
+        <translation>How long to wait for an answer from each id. Fitted to the baud: the frames, the controller&apos;s 35 ms answer delay and a USB adapter&apos;s latency (67 ms at 9600). A controller that answers later is still found by its late answer; give more for one that answers very slowly.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BusScanner</name>
@@ -553,10 +561,6 @@
     <message>
         <source>scan finished</source>
         <translation>scan finished</translation>
-    </message>
-    <message>
-        <source>scan id %1 at %2 baud</source>
-        <translation>scan id %1 at %2 baud</translation>
     </message>
     <message>
         <source>id %1 at %2 — %3</source>
@@ -593,6 +597,14 @@
     <message>
         <source>identify id %1</source>
         <translation>identify id %1</translation>
+    </message>
+    <message>
+        <source>no device id to try</source>
+        <translation>no device id to try</translation>
+    </message>
+    <message>
+        <source>scan id %1 at %2</source>
+        <translation>scan id %1 at %2</translation>
     </message>
 </context>
 <context>
@@ -1901,10 +1913,6 @@
         <translation>rate</translation>
     </message>
     <message>
-        <source>Parity: none, even or odd (default none).</source>
-        <translation>Parity: none, even or odd (default none).</translation>
-    </message>
-    <message>
         <source>parity</source>
         <translation>parity</translation>
     </message>
@@ -2053,10 +2061,6 @@
         <translation>value</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
-        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</translation>
-    </message>
-    <message>
         <source>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</source>
         <translation>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</translation>
     </message>
@@ -2095,6 +2099,66 @@
     <message>
         <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, dump, report and command: each in turn on the one line, output keyed by id (report: one document).</source>
         <translation>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, dump, report and command: each in turn on the one line, output keyed by id (report: one document).</translation>
+    </message>
+    <message>
+        <source>Parity: none, even or odd (default none); scan: several, e.g. none,even,odd.</source>
+        <translation>Parity: none, even or odd (default none); scan: several, e.g. none,even,odd.</translation>
+    </message>
+    <message>
+        <source>scan: the baud rates to try, e.g. 9600,19200 (default all four, 9600 first); not over --tcp or --rtu-tcp, where the converter&apos;s line has its own.</source>
+        <translation>scan: the baud rates to try, e.g. 9600,19200 (default all four, 9600 first); not over --tcp or --rtu-tcp, where the converter&apos;s line has its own.</translation>
+    </message>
+    <message>
+        <source>list</source>
+        <translation>list</translation>
+    </message>
+    <message>
+        <source>scan: the device ids to try, e.g. 1-32 or 1,5,7 (default 1-247).</source>
+        <translation>scan: the device ids to try, e.g. 1-32 or 1,5,7 (default 1-247).</translation>
+    </message>
+    <message>
+        <source>range</source>
+        <translation>range</translation>
+    </message>
+    <message>
+        <source>scan: wait this long for each id&apos;s answer (default: fitted to the baud, 67 ms at 9600); more for controllers that answer slowly.</source>
+        <translation>scan: wait this long for each id&apos;s answer (default: fitted to the baud, 67 ms at 9600); more for controllers that answer slowly.</translation>
+    </message>
+    <message>
+        <source>--%1: over --tcp and --rtu-tcp the converter&apos;s serial line has its own baud and parity (set on the converter); the scan tries only ids there</source>
+        <translation>--%1: over --tcp and --rtu-tcp the converter&apos;s serial line has its own baud and parity (set on the converter); the scan tries only ids there</translation>
+    </message>
+    <message>
+        <source>--parity: &apos;%1&apos; is given twice</source>
+        <translation>--parity: &apos;%1&apos; is given twice</translation>
+    </message>
+    <message>
+        <source>--parity: give one parity; several are for scan</source>
+        <translation>--parity: give one parity; several are for scan</translation>
+    </message>
+    <message>
+        <source>--%1 is an option of scan</source>
+        <translation>--%1 is an option of scan</translation>
+    </message>
+    <message>
+        <source>--bauds: &apos;%1&apos; is not one of %2</source>
+        <translation>--bauds: &apos;%1&apos; is not one of %2</translation>
+    </message>
+    <message>
+        <source>--bauds: %1 is given twice</source>
+        <translation>--bauds: %1 is given twice</translation>
+    </message>
+    <message>
+        <source>--ids: %1</source>
+        <translation>--ids: %1</translation>
+    </message>
+    <message>
+        <source>--probe-timeout: &apos;%1&apos; is not a number of ms from 1 to 10000</source>
+        <translation>--probe-timeout: &apos;%1&apos; is not a number of ms from 1 to 10000</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</source>
+        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</translation>
     </message>
 </context>
 <context>
@@ -2456,6 +2520,83 @@
     <message>
         <source>%1 is not supported by this controller</source>
         <translation>%1 is not supported by this controller</translation>
+    </message>
+    <message>
+        <source>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</source>
+        <translation>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</translation>
+    </message>
+    <message>
+        <source>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</source>
+        <translation>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlScan</name>
+    <message numerus="yes">
+        <source>scanning %1: %n id(s), %2 ms a probe</source>
+        <translation>
+            <numerusform>scanning %1: %n id, %2 ms a probe</numerusform>
+            <numerusform>scanning %1: %n ids, %2 ms a probe</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>found %1</source>
+        <translation>found %1</translation>
+    </message>
+    <message>
+        <source>over a network the converter&apos;s or gateway&apos;s serial line has its own baud and parity: only the ids are scanned</source>
+        <translation>over a network the converter&apos;s or gateway&apos;s serial line has its own baud and parity: only the ids are scanned</translation>
+    </message>
+    <message>
+        <source>at most about %1 s when nobody answers; a scan only reads</source>
+        <translation>at most about %1 s when nobody answers; a scan only reads</translation>
+    </message>
+    <message>
+        <source>%1 of %2 probed (id %3)</source>
+        <translation>%1 of %2 probed (id %3)</translation>
+    </message>
+    <message>
+        <source>scan stopped: %1</source>
+        <translation>scan stopped: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n controller(s) found in %1 s</source>
+        <translation>
+            <numerusform>%n controller found in %1 s</numerusform>
+            <numerusform>%n controllers found in %1 s</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No controller answered. Check the power, the wiring (A and B swapped?), the port, and for a controller that answers slowly give --probe-timeout.</source>
+        <translation>No controller answered. Check the power, the wiring (A and B swapped?), the port, and for a controller that answers slowly give --probe-timeout.</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>id</translation>
+    </message>
+    <message>
+        <source>baud</source>
+        <translation>baud</translation>
+    </message>
+    <message>
+        <source>parity</source>
+        <translation>parity</translation>
+    </message>
+    <message>
+        <source>answer</source>
+        <translation>answer</translation>
+    </message>
+    <message>
+        <source>controller</source>
+        <translation>controller</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>id %1 answered after %2 ms, later than the probe waited: connect with --timeout %3</source>
+        <translation>id %1 answered after %2 ms, later than the probe waited: connect with --timeout %3</translation>
     </message>
 </context>
 <context>
@@ -8030,6 +8171,18 @@ file and its checklist, no controller needed;
 --lang en|zh_CN; --from PROFILE: from a profile
 file and its checklist, no controller needed;
 --id 1,2,3: every controller in one document)</translation>
+    </message>
+    <message>
+        <source>find every controller on the line (--port or --rtu-tcp;
+--tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</source>
+        <translation>find every controller on the line (--port or --rtu-tcp;
+--tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</translation>
     </message>
 </context>
 </TS>

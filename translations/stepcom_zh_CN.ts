@@ -363,10 +363,6 @@
         <translation> ms</translation>
     </message>
     <message>
-        <source>How long to wait for an answer from each id. The controller answers after 35 ms; USB adapters add some latency.</source>
-        <translation>等待每个设备 ID 应答的时间。控制器在 35 ms 后应答；USB 转换器会增加一些延迟。</translation>
-    </message>
-    <message>
         <source>Stop at the &amp;first controller found</source>
         <translation>找到第一个控制器即停止(&amp;F)</translation>
     </message>
@@ -536,6 +532,18 @@
         <source>They answered at different baud rates; give them one baud rate (Device page or Device → Assign device ids…) before working with the list.</source>
         <translation>它们在不同的波特率下应答；使用列表之前，请先给它们统一波特率（设备页面，或 设备 → 分配设备 ID…）。</translation>
     </message>
+    <message>
+        <source>%1 (answered after %2 ms: connects with a %3 ms timeout)</source>
+        <translation>%1（%2 ms 后才应答：将以 %3 ms 超时连接）</translation>
+    </message>
+    <message>
+        <source>fitted to the baud</source>
+        <translation>按波特率自动</translation>
+    </message>
+    <message>
+        <source>How long to wait for an answer from each id. Fitted to the baud: the frames, the controller&apos;s 35 ms answer delay and a USB adapter&apos;s latency (67 ms at 9600). A controller that answers later is still found by its late answer; give more for one that answers very slowly.</source>
+        <translation>每个 ID 等待应答的时间。按波特率自动：请求帧和应答帧、控制器 35 ms 的应答延时，加上 USB 转换器的延迟（9600 时为 67 ms）。应答更晚的控制器仍可凭其迟到的应答找到；只有应答非常慢的控制器才需要设得更长。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::BusScanner</name>
@@ -546,10 +554,6 @@
     <message>
         <source>scan finished</source>
         <translation>扫描完成</translation>
-    </message>
-    <message>
-        <source>scan id %1 at %2 baud</source>
-        <translation>扫描 ID %1，波特率 %2</translation>
     </message>
     <message>
         <source>id %1 at %2 — %3</source>
@@ -586,6 +590,14 @@
     <message>
         <source>identify id %1</source>
         <translation>识别 ID %1</translation>
+    </message>
+    <message>
+        <source>no device id to try</source>
+        <translation>没有要尝试的设备 ID</translation>
+    </message>
+    <message>
+        <source>scan id %1 at %2</source>
+        <translation>扫描 ID %1，%2</translation>
     </message>
 </context>
 <context>
@@ -1890,10 +1902,6 @@
         <translation>波特率</translation>
     </message>
     <message>
-        <source>Parity: none, even or odd (default none).</source>
-        <translation>校验：none（无校验）、even（偶校验）或 odd（奇校验）（默认 none）。</translation>
-    </message>
-    <message>
         <source>parity</source>
         <translation>校验</translation>
     </message>
@@ -2042,10 +2050,6 @@
         <translation>值</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, report)</source>
-        <translation>未指定命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、report）</translation>
-    </message>
-    <message>
         <source>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</source>
         <translation>透明模式的 RS-485/以太网转换器：通过 TCP 传送 Modbus RTU 帧，主机:端口。</translation>
     </message>
@@ -2084,6 +2088,66 @@
     <message>
         <source>Device id 1-255 (default 1); several (1,2,3 or 1-3) for read, monitor, diff, apply, dump, report and command: each in turn on the one line, output keyed by id (report: one document).</source>
         <translation>设备 ID 1-255（默认 1）；read、monitor、diff、apply、dump、report 和 command 可给多个（1,2,3 或 1-3）：在同一条线路上依次执行，输出按 ID 分开（report：一份文档）。</translation>
+    </message>
+    <message>
+        <source>Parity: none, even or odd (default none); scan: several, e.g. none,even,odd.</source>
+        <translation>校验：none、even 或 odd（默认 none）；scan 可给多个，例如 none,even,odd。</translation>
+    </message>
+    <message>
+        <source>scan: the baud rates to try, e.g. 9600,19200 (default all four, 9600 first); not over --tcp or --rtu-tcp, where the converter&apos;s line has its own.</source>
+        <translation>scan：要尝试的波特率，例如 9600,19200（默认全部四种，先试 9600）；不适用于 --tcp 或 --rtu-tcp，那里转换器的串口有自己的波特率。</translation>
+    </message>
+    <message>
+        <source>list</source>
+        <translation>列表</translation>
+    </message>
+    <message>
+        <source>scan: the device ids to try, e.g. 1-32 or 1,5,7 (default 1-247).</source>
+        <translation>scan：要尝试的设备 ID，例如 1-32 或 1,5,7（默认 1-247）。</translation>
+    </message>
+    <message>
+        <source>range</source>
+        <translation>范围</translation>
+    </message>
+    <message>
+        <source>scan: wait this long for each id&apos;s answer (default: fitted to the baud, 67 ms at 9600); more for controllers that answer slowly.</source>
+        <translation>scan：每个 ID 等待应答的时间（默认按波特率自动，9600 时为 67 ms）；应答慢的控制器请设得更长。</translation>
+    </message>
+    <message>
+        <source>--%1: over --tcp and --rtu-tcp the converter&apos;s serial line has its own baud and parity (set on the converter); the scan tries only ids there</source>
+        <translation>--%1：使用 --tcp 和 --rtu-tcp 时，转换器的串口有自己的波特率和校验（在转换器上设定）；这时扫描只尝试 ID</translation>
+    </message>
+    <message>
+        <source>--parity: &apos;%1&apos; is given twice</source>
+        <translation>--parity：“%1” 重复给出</translation>
+    </message>
+    <message>
+        <source>--parity: give one parity; several are for scan</source>
+        <translation>--parity：请只给一种校验；多种校验只用于 scan</translation>
+    </message>
+    <message>
+        <source>--%1 is an option of scan</source>
+        <translation>--%1 是 scan 的选项</translation>
+    </message>
+    <message>
+        <source>--bauds: &apos;%1&apos; is not one of %2</source>
+        <translation>--bauds：“%1” 不是 %2 之一</translation>
+    </message>
+    <message>
+        <source>--bauds: %1 is given twice</source>
+        <translation>--bauds：%1 重复给出</translation>
+    </message>
+    <message>
+        <source>--ids: %1</source>
+        <translation>--ids：%1</translation>
+    </message>
+    <message>
+        <source>--probe-timeout: &apos;%1&apos; is not a number of ms from 1 to 10000</source>
+        <translation>--probe-timeout：“%1” 不是 1 到 10000 之间的毫秒数</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</source>
+        <translation>没有给出命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、scan、report）</translation>
     </message>
 </context>
 <context>
@@ -2439,6 +2503,81 @@
     <message>
         <source>%1 is not supported by this controller</source>
         <translation>此控制器不支持 %1</translation>
+    </message>
+    <message>
+        <source>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</source>
+        <translation>scan：请给出要扫描的线路：--port、--rtu-tcp 或 --tcp（内置仿真器是 ID 已知的一台控制器；请改为扫描 stepcom-sim --pty）</translation>
+    </message>
+    <message>
+        <source>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</source>
+        <translation>scan 不接受参数（“%1”）：请用 --bauds、--parity 和 --ids</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::CtlScan</name>
+    <message numerus="yes">
+        <source>scanning %1: %n id(s), %2 ms a probe</source>
+        <translation>
+            <numerusform>正在扫描 %1：%n 个 ID，每次探测 %2 ms</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>found %1</source>
+        <translation>找到 %1</translation>
+    </message>
+    <message>
+        <source>over a network the converter&apos;s or gateway&apos;s serial line has its own baud and parity: only the ids are scanned</source>
+        <translation>经网络扫描时，转换器或网关的串口有自己的波特率和校验：只扫描 ID</translation>
+    </message>
+    <message>
+        <source>at most about %1 s when nobody answers; a scan only reads</source>
+        <translation>无人应答时最多约 %1 s；扫描只读取</translation>
+    </message>
+    <message>
+        <source>%1 of %2 probed (id %3)</source>
+        <translation>已探测 %1/%2（ID %3）</translation>
+    </message>
+    <message>
+        <source>scan stopped: %1</source>
+        <translation>扫描已停止：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n controller(s) found in %1 s</source>
+        <translation>
+            <numerusform>%1 s 内找到 %n 台控制器</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No controller answered. Check the power, the wiring (A and B swapped?), the port, and for a controller that answers slowly give --probe-timeout.</source>
+        <translation>没有控制器应答。请检查电源、接线（A、B 接反？）和端口；控制器应答慢时请给出 --probe-timeout。</translation>
+    </message>
+    <message>
+        <source>id</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>baud</source>
+        <translation>波特率</translation>
+    </message>
+    <message>
+        <source>parity</source>
+        <translation>校验</translation>
+    </message>
+    <message>
+        <source>answer</source>
+        <translation>应答</translation>
+    </message>
+    <message>
+        <source>controller</source>
+        <translation>控制器</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>id %1 answered after %2 ms, later than the probe waited: connect with --timeout %3</source>
+        <translation>ID %1 在 %2 ms 后才应答，晚于探测等待的时间：连接时请用 --timeout %3</translation>
     </message>
 </context>
 <context>
@@ -7981,6 +8120,18 @@ file and its checklist, no controller needed;
 --lang en|zh_CN；--from PROFILE：根据参数文件
 及其检查表生成，无需控制器；
 --id 1,2,3：所有控制器合为一份文档）</translation>
+    </message>
+    <message>
+        <source>find every controller on the line (--port or --rtu-tcp;
+--tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</source>
+        <translation>找出线路上的所有控制器（--port 或 --rtu-tcp；
+--tcp 只扫描 ID），按 --bauds、--parity 和 --ids 尝试；
+以表格（或 --json）列出 ID、波特率、校验和应答的设备；
+慢速控制器用 --probe-timeout 毫秒；退出码 0 找到，
+1 没有，2 用法错误，3 链路错误</translation>
     </message>
 </context>
 </TS>
