@@ -58,6 +58,7 @@ class TestIdAssistant : public QObject
         s.portName = host.rtuPath();
         s.timeoutMs = 150;
         s.retries = 0;
+        s.answerDelayMs = 5; // the simulator's (startRtu): sooner answers would be stale ones
         return s;
     }
 
