@@ -35,7 +35,8 @@ int main(int argc, char *argv[])
         "baud: (a) the live status cycle, (b) read-all, (c) the emergency stop while polling at "
         "full rate, (d) the window's CPU and memory while polling at full rate, (e) the Traffic "
         "dock holding an hour of that polling, (f) the status of three controllers on one line "
-        "in turn, (g) the E-STOP to every controller of a line of 2, 3 and 8, (h) a bus scan of ids 1-247 at "
+        "in turn, (g) the E-STOP to every controller of a line of 2, 3 and 8, (h) a bus scan of "
+        "ids 1-247 at "
         "9600 when nobody answers. Prints a table "
         "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
     parser.addHelpOption();
