@@ -343,8 +343,17 @@ void MainWindow::createDocks()
     // --- end monitoring ---
     // Several controllers on one line (issue 16): opened from the View menu.
     m_deviceDock = new DeviceListDock(m_session, this);
-    addDockWidget(Qt::LeftDockWidgetArea, m_deviceDock);
+    // A tab beside the messages: beside the pages it would widen the window past a laptop's.
+    addDockWidget(Qt::BottomDockWidgetArea, m_deviceDock);
+    tabifyDockWidget(m_messageDock, m_deviceDock);
     m_deviceDock->hide();
+    connect(m_deviceDock->toggleViewAction(), &QAction::triggered, m_deviceDock, [this](bool on) {
+        if (!on)
+            return;
+        m_deviceDock->raise();
+        // Room for a few devices, not only the two rows a messages-high tab leaves.
+        resizeDocks({m_deviceDock}, {fontMetrics().height() * 15}, Qt::Vertical);
+    });
     m_viewMenu->addAction(m_deviceDock->toggleViewAction());
     m_deviceMenu->addSeparator();
     m_deviceMenu->addAction((new BusActions(m_session, m_deviceDock, this))->assignIdsAction());

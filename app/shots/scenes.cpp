@@ -1,5 +1,6 @@
 #include "scenes.h"
 
+#include "busscenes.h"
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
 #include "dialogs/busscandialog.h"
@@ -520,6 +521,7 @@ const QList<Scene> &scenes()
         {QStringLiteral("write-changes"), W::AfterPages, &writeChanges},
         {QStringLiteral("checklist-direction"), W::AfterPages, &checklistDirection},
         {QStringLiteral("checklist-miswired"), W::AfterPages, &checklistMiswired},
+        {QStringLiteral("device-list"), W::AfterPages, &busscenes::deviceList},
         // Small laptop screens (issue 19), while connected: before port-missing.
         {QStringLiteral("laptop-1024x600"), W::AfterPages, &laptopscenes::small},
         {QStringLiteral("laptop-1366x768-150"), W::AfterPages, &laptopscenes::scaled},

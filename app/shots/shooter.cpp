@@ -116,6 +116,7 @@ void Shooter::openWindow(const QString &language)
 
     m_session = std::make_unique<DeviceSession>();
     auto sim = std::make_unique<BuiltinSimulator>();
+    sim->setIds({1, 2, 3}); // the device list's scene shows a line of three controllers
     m_sim = sim->host();
     m_session->setSimulator(std::move(sim));
     m_readOk = false;

@@ -43,6 +43,10 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
+    // One line a device: a bottom tab has room for a few rows only.
+    m_table->setWordWrap(false);
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     layout->addWidget(m_table);
     auto *addRow = new QHBoxLayout;
     m_idBox->setRange(1, 255);

@@ -1,0 +1,12 @@
+#pragma once
+
+namespace stepcom {
+class Shooter;
+}
+
+// Scenes of a line of several controllers (issue 16): the device list with three of them.
+namespace stepcom::busscenes {
+
+void deviceList(Shooter &s);
+
+} // namespace stepcom::busscenes
