@@ -15,6 +15,7 @@ constexpr double kCpuTargetPercent = 3.0;
 constexpr double kRssTargetMb = 150.0;
 constexpr double kTrafficBatchTargetMs = 10.0; // a tenth of the 100 ms batch interval
 constexpr double kTrafficMemoryTargetMb = 100.0;
+constexpr double kFirstStatusTargetMs = 350.0;
 
 QString ms(double v)
 {
@@ -222,6 +223,53 @@ QList<Verdict> scanVerdicts(const ScanResult &s)
                   QString::number(bound / 1000.0, 'f', 2)),
          QString::number(s.elapsedMs / s.limitMs, 'f', 2),
          judge(s.elapsedMs < bound && s.found == 0)}};
+}
+
+QList<Verdict> gapVerdicts(const GapResult &g)
+{
+    const BaudResult &r = g.r;
+    const QString baud = QString::number(r.baud);
+    if (!r.error.isEmpty())
+        return {{baud, QStringLiteral("(i) gap-refusing controller"), r.error, QString(), QString(),
+                 Verdict::Result::Error}};
+    QList<Verdict> rows;
+    const double cycleRatio = r.cycleMs.mean / r.statusOptimumMs;
+    rows.append({baud,
+                 QStringLiteral("(i) gap-refusing controller: live status cycle at full rate"),
+                 spanText(r.cycleMs, QStringLiteral("cycles")) +
+                     QStringLiteral(", %1 reads").arg(r.readsPerCycle, 0, 'f', 0),
+                 QStringLiteral("gap-free optimum %1 ms, %2 reads; within 1.10×, same reads")
+                     .arg(ms(r.statusOptimumMs))
+                     .arg(r.statusOptimumReads),
+                 QStringLiteral("%1×").arg(QString::number(cycleRatio, 'f', 3)),
+                 judge(cycleRatio <= kCycleTarget && int(r.readsPerCycle) == r.statusOptimumReads &&
+                       r.fastCycles == 0)});
+    const double allRatio = r.readAllMs.mean / r.readAllOptimumMs;
+    rows.append({baud, QStringLiteral("(i) gap-refusing controller: read-all"),
+                 spanText(r.readAllMs, QStringLiteral("runs")) +
+                     QStringLiteral(", %1 reads").arg(r.readAllReads),
+                 QStringLiteral("gap-free optimum %1 ms, %2 reads; within 1.10×, same reads")
+                     .arg(ms(r.readAllOptimumMs))
+                     .arg(r.readAllOptimumReads),
+                 QStringLiteral("%1×").arg(QString::number(allRatio, 'f', 3)),
+                 judge(allRatio <= kCycleTarget && r.readAllReads == r.readAllOptimumReads)});
+    return rows;
+}
+
+QList<Verdict> firstStatusVerdicts(const FirstStatusResult &f)
+{
+    const QString baud = QString::number(f.baud);
+    const QString target = QStringLiteral("(j) first status after the port opened");
+    if (!f.error.isEmpty())
+        return {{baud, target, f.error, QString(), QString(), Verdict::Result::Error}};
+    // Every connect must show the positions in time: the max is judged.
+    return {{baud, target,
+             spanText(f.ms, QStringLiteral("connects")) +
+                 QStringLiteral("; before the read-all: %1")
+                     .arg(f.beforeReadAll ? QStringLiteral("yes") : QStringLiteral("NO")),
+             QStringLiteral("max < 350 ms"),
+             QString::number(f.ms.max / kFirstStatusTargetMs, 'f', 2),
+             judge(f.beforeReadAll && f.ms.max < kFirstStatusTargetMs)}};
 }
 
 QString table(const QList<Verdict> &rows, bool judged)

@@ -24,6 +24,8 @@ QList<Verdict> builtinWindowVerdicts(const WindowResult &w);
 QList<Verdict> trafficVerdicts(const TrafficResult &t);
 QList<Verdict> busVerdicts(const BusResult &b);
 QList<Verdict> scanVerdicts(const ScanResult &s);
+QList<Verdict> gapVerdicts(const GapResult &g);
+QList<Verdict> firstStatusVerdicts(const FirstStatusResult &f);
 // A Markdown table; with `judged` false (smoke runs) results read "not judged".
 QString table(const QList<Verdict> &rows, bool judged);
 // Date, CPU and Qt version: what the numbers were measured on.

@@ -265,4 +265,62 @@ BaudResult measureBaud(int baud, const BenchConfig &config)
     return r;
 }
 
+GapResult measureGapRefusing(int baud, const BenchConfig &config)
+{
+    GapResult g;
+    BaudResult &r = g.r;
+    r.baud = baud;
+    const RegisterMap &map = RegisterMap::builtin();
+    SimHost host;
+    SimOptions options;
+    options.map = map;
+    options.rtu = true;
+    options.wireBaud = baud;
+    options.strictReads = true; // exception 02 to any read covering an unlisted register
+    QString error;
+    if (!host.start(options, &error)) {
+        r.error = error;
+        return g;
+    }
+    host.device()->setValue(QStringLiteral("device.baud"), baud);
+
+    DeviceSession session(map);
+    session.setStatusIntervalMs(0); // full rate
+    LinkWatch watch(session);
+    bool read = false;
+    bool readOk = false;
+    QObject::connect(&session, &DeviceSession::readFinished, &session, [&](bool ok) {
+        read = true;
+        readOk = ok;
+    });
+    LinkSettings settings;
+    settings.portName = host.rtuPath();
+    settings.baud = baud;
+    session.connectTo(settings);
+    // The warm-up: the first status cycle is refused, the gaps are learnt, read-all follows.
+    if (!waitUntil([&read] { return read; }, 10000) || !session.isConnected() || !readOk) {
+        r.error = QStringLiteral("(i): the first read-all on a gap-refusing controller failed");
+        return g;
+    }
+    g.learnt = session.readLimits().gapFree();
+    if (!g.learnt) {
+        r.error = QStringLiteral("(i): the session did not learn that gaps are refused");
+        return g;
+    }
+    // The plans the client makes now, costed by the wire-time model as (a) and (b) are.
+    const DeviceClient *client = SessionInternals::client(session);
+    const ReadCostModel model = ReadCostModel::forBaud(baud, map.answerDelayMs());
+    const QList<ReadBlock> statusPlan = client->planRead(parameters(map, Poller::statusKeys(map)));
+    r.statusOptimumMs = ReadPlanner::costMs(statusPlan, model);
+    r.statusOptimumReads = int(statusPlan.size());
+    const QList<ReadBlock> allPlan = client->planRead(map.holdings());
+    r.readAllOptimumMs = ReadPlanner::costMs(allPlan, model);
+    r.readAllOptimumReads = int(allPlan.size());
+    measureStatus(session, watch, config, r);
+    if (r.error.isEmpty())
+        measureReadAll(session, watch, config, r);
+    session.disconnectFrom();
+    return g;
+}
+
 } // namespace stepcom::bench

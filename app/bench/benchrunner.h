@@ -14,4 +14,8 @@ bool waitUntil(const std::function<bool()> &done, int timeoutMs);
 // Modbus RTU on a pseudo-terminal, with StepCom's own DeviceSession and Poller.
 BaudResult measureBaud(int baud, const BenchConfig &config);
 
+// Measures (i): (a) and (b) against a simulator that refuses reads covering reserved
+// registers, after the session learnt it, held against the gap-free plans it then makes.
+GapResult measureGapRefusing(int baud, const BenchConfig &config);
+
 } // namespace stepcom::bench

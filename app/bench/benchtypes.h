@@ -20,6 +20,9 @@ struct BenchConfig
     bool traffic = true;       // (e) the Traffic dock with an hour of frames
     int trafficSeconds = 3600; // (e) how much polling it holds
     QString stepcomPath;       // the window binary for (d); empty: (d) skipped
+    bool gaps = true;          // (i) a controller that refuses reads covering reserved registers
+    bool firstStatus = true;   // (j) time to the first status after the port opened
+    int firstStatusRuns = 10;  // (j) connects measured
 };
 
 struct Span
@@ -130,6 +133,24 @@ struct BusResult
     Span roundMs;          // every controller's status read once, at full rate
     int readsPerRound = 0; // the most seen on the link
     QList<EstopAllResult> estops;
+};
+
+// (i) a controller that refuses reads covering reserved registers, once that was learnt: its
+// status cycle and read-all against the wire-time model of the gap-free plans the client uses.
+struct GapResult
+{
+    bool learnt = false; // the session's read limits say gaps are refused
+    BaudResult r;        // (a) and (b) fields; the optima are those of the gap-free plans
+};
+
+// (j) from the port opened (`connected(true)`) to the first status cycle finished with the
+// positions in the store
+struct FirstStatusResult
+{
+    int baud = 0;
+    QString error;
+    Span ms;
+    bool beforeReadAll = true; // the status came before any read-all request went out
 };
 
 } // namespace stepcom::bench

@@ -3,6 +3,7 @@
 #include "benchreport.h"
 #include "benchrunner.h"
 #include "busprobe.h"
+#include "firststatusprobe.h"
 #include "scanprobe.h"
 #include "trafficprobe.h"
 #include "windowprobe.h"
@@ -37,7 +38,9 @@ int main(int argc, char *argv[])
         "dock holding an hour of that polling, (f) the status of three controllers on one line "
         "in turn, (g) the E-STOP to every controller of a line of 2, 3 and 8, (h) a bus scan of "
         "ids 1-247 at "
-        "9600 when nobody answers. Prints a table "
+        "9600 when nobody answers, (i) the status cycle and read-all on a controller that "
+        "refuses reads covering reserved registers, (j) the time from the port opened to the "
+        "first status, both at 9600. Prints a table "
         "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -59,6 +62,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("no-bus"), QStringLiteral("Skip (f) and (g).")},
         {QStringLiteral("no-scan"), QStringLiteral("Skip (h).")},
         {QStringLiteral("only-scan"), QStringLiteral("Run only (h), the bus scan.")},
+        {QStringLiteral("no-gaps"), QStringLiteral("Skip (i), the gap-refusing controller.")},
+        {QStringLiteral("no-first-status"), QStringLiteral("Skip (j), the time to first status.")},
         {QStringLiteral("traffic-seconds"),
          QStringLiteral(
              "(e) seconds of polling at full rate the Traffic dock holds (default 3600)."),
@@ -76,6 +81,8 @@ int main(int argc, char *argv[])
     config.traffic = !parser.isSet(QStringLiteral("no-traffic"));
     config.bus = !parser.isSet(QStringLiteral("no-bus"));
     config.trafficSeconds = std::max(1, parser.value(QStringLiteral("traffic-seconds")).toInt());
+    config.gaps = !parser.isSet(QStringLiteral("no-gaps"));
+    config.firstStatus = !parser.isSet(QStringLiteral("no-first-status"));
     QList<int> bauds{9600, 19200, 38400};
     if (config.smoke) {
         bauds = {38400};
@@ -85,6 +92,7 @@ int main(int argc, char *argv[])
         config.busRounds = 2;
         config.windowSeconds = 2;
         config.trafficSeconds = 60;
+        config.firstStatusRuns = 2;
     }
     if (parser.isSet(QStringLiteral("baud"))) {
         bauds.clear();
@@ -103,6 +111,8 @@ int main(int argc, char *argv[])
         bauds.clear();
         config.traffic = false;
         config.stepcomPath.clear();
+        config.gaps = false;
+        config.firstStatus = false;
     }
     int fastestBaud = 0;
     double fastestFrames = 0; // frames per second of the status poll at full rate
@@ -135,6 +145,21 @@ int main(int argc, char *argv[])
         err << QStringLiteral("stepcom-bench: the window with its built-in simulator ...")
             << Qt::endl;
         rows += builtinWindowVerdicts(measureWindow(config, nullptr, 0));
+    }
+
+    // (i) and (j) at 9600, where a read costs most; a smoke run takes them at its own baud.
+    const int startBaud = config.smoke ? 38400 : 9600;
+    if (config.gaps) {
+        err << QStringLiteral("stepcom-bench: a gap-refusing controller at %1 baud ...")
+                   .arg(startBaud)
+            << Qt::endl;
+        rows += gapVerdicts(measureGapRefusing(startBaud, config));
+    }
+    if (config.firstStatus) {
+        err << QStringLiteral("stepcom-bench: the first status after connecting at %1 baud ...")
+                   .arg(startBaud)
+            << Qt::endl;
+        rows += firstStatusVerdicts(measureFirstStatus(startBaud, config.firstStatusRuns));
     }
 
     if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke) {
