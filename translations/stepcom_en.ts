@@ -1503,14 +1503,6 @@
         <translation>Notes</translation>
     </message>
     <message>
-        <source>%1: the report is written as .pdf or .html, not .%2</source>
-        <translation>%1: the report is written as .pdf or .html, not .%2</translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
-        <translation>cannot write %1: %2</translation>
-    </message>
-    <message>
         <source>Controller (as the profile records it)</source>
         <translation>Controller (as the profile records it)</translation>
     </message>
@@ -4552,14 +4544,6 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: no controller to report on</source>
         <translation>%1: no controller to report on</translation>
     </message>
-    <message>
-        <source>%1: the report is written as .pdf or .html, not .%2</source>
-        <translation>%1: the report is written as .pdf or .html, not .%2</translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
-        <translation>cannot write %1: %2</translation>
-    </message>
 </context>
 <context>
     <name>stepcom::MainWindow</name>
@@ -6777,6 +6761,17 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1: %2 bytes is too large for a register map (at most %3 MiB)</source>
         <translation>%1: %2 bytes is too large for a register map (at most %3 MiB)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReportFile</name>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
+    </message>
+    <message>
+        <source>%1: the report is written as .pdf or .html, not .%2</source>
+        <translation>%1: the report is written as .pdf or .html, not .%2</translation>
     </message>
 </context>
 <context>

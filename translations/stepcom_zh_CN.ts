@@ -1493,14 +1493,6 @@
         <translation>备注</translation>
     </message>
     <message>
-        <source>%1: the report is written as .pdf or .html, not .%2</source>
-        <translation>%1：报告只能保存为 .pdf 或 .html，不能是 .%2</translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
-        <translation>无法写入 %1：%2</translation>
-    </message>
-    <message>
         <source>Controller (as the profile records it)</source>
         <translation>控制器（参数文件中的记录）</translation>
     </message>
@@ -4526,14 +4518,6 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: no controller to report on</source>
         <translation>%1：没有可报告的控制器</translation>
     </message>
-    <message>
-        <source>%1: the report is written as .pdf or .html, not .%2</source>
-        <translation>%1：报告只能保存为 .pdf 或 .html，不能是 .%2</translation>
-    </message>
-    <message>
-        <source>cannot write %1: %2</source>
-        <translation>无法写入 %1：%2</translation>
-    </message>
 </context>
 <context>
     <name>stepcom::MainWindow</name>
@@ -6729,6 +6713,17 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1: %2 bytes is too large for a register map (at most %3 MiB)</source>
         <translation>%1：%2 字节对寄存器映射来说太大（最多 %3 MiB）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReportFile</name>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1: the report is written as .pdf or .html, not .%2</source>
+        <translation>%1：报告只能保存为 .pdf 或 .html，不能是 .%2</translation>
     </message>
 </context>
 <context>

@@ -61,6 +61,33 @@ void addWindow(QList<Verdict> &rows, const QString &baud, const WindowResult &w,
                  info ? Verdict::Result::Info : judge(w.peakRssMb < kRssTargetMb)});
 }
 
+// The live status cycle and read-all of `r` against their optima: rows (a)/(b), and (i).
+void cycleRows(const BaudResult &r, QList<Verdict> *rows, const QString &cycleTarget,
+               const QString &readAllTarget, const QString &optimum, const QString &sameReads)
+{
+    const QString baud = QString::number(r.baud);
+    const double cycleRatio = r.cycleMs.mean / r.statusOptimumMs;
+    rows->append({baud, cycleTarget,
+                  spanText(r.cycleMs, QStringLiteral("cycles")) +
+                      QStringLiteral(", %1 reads").arg(r.readsPerCycle, 0, 'f', 0),
+                  QStringLiteral("%1 %2 ms, %3 reads; within 1.10×%4")
+                      .arg(optimum, ms(r.statusOptimumMs))
+                      .arg(r.statusOptimumReads)
+                      .arg(sameReads),
+                  QStringLiteral("%1×").arg(QString::number(cycleRatio, 'f', 3)),
+                  judge(cycleRatio <= kCycleTarget &&
+                        int(r.readsPerCycle) == r.statusOptimumReads && r.fastCycles == 0)});
+    const double allRatio = r.readAllMs.mean / r.readAllOptimumMs;
+    rows->append({baud, readAllTarget,
+                  spanText(r.readAllMs, QStringLiteral("runs")) +
+                      QStringLiteral(", %1 reads").arg(r.readAllReads),
+                  QStringLiteral("%1 %2 ms, %3 reads; within 1.10×, same reads")
+                      .arg(optimum, ms(r.readAllOptimumMs))
+                      .arg(r.readAllOptimumReads),
+                  QStringLiteral("%1×").arg(QString::number(allRatio, 'f', 3)),
+                  judge(allRatio <= kCycleTarget && r.readAllReads == r.readAllOptimumReads)});
+}
+
 } // namespace
 
 QList<Verdict> verdicts(const BaudResult &r)
@@ -72,25 +99,8 @@ QList<Verdict> verdicts(const BaudResult &r)
                      Verdict::Result::Error});
         return rows;
     }
-    const double cycleRatio = r.cycleMs.mean / r.statusOptimumMs;
-    rows.append({baud, QStringLiteral("(a) live status cycle at full rate"),
-                 spanText(r.cycleMs, QStringLiteral("cycles")) +
-                     QStringLiteral(", %1 reads").arg(r.readsPerCycle, 0, 'f', 0),
-                 QStringLiteral("optimum %1 ms, %2 reads; within 1.10×")
-                     .arg(ms(r.statusOptimumMs))
-                     .arg(r.statusOptimumReads),
-                 QStringLiteral("%1×").arg(QString::number(cycleRatio, 'f', 3)),
-                 judge(cycleRatio <= kCycleTarget && int(r.readsPerCycle) == r.statusOptimumReads &&
-                       r.fastCycles == 0)});
-    const double allRatio = r.readAllMs.mean / r.readAllOptimumMs;
-    rows.append({baud, QStringLiteral("(b) read-all"),
-                 spanText(r.readAllMs, QStringLiteral("runs")) +
-                     QStringLiteral(", %1 reads").arg(r.readAllReads),
-                 QStringLiteral("optimum %1 ms, %2 reads; within 1.10×, same reads")
-                     .arg(ms(r.readAllOptimumMs))
-                     .arg(r.readAllOptimumReads),
-                 QStringLiteral("%1×").arg(QString::number(allRatio, 'f', 3)),
-                 judge(allRatio <= kCycleTarget && r.readAllReads == r.readAllOptimumReads)});
+    cycleRows(r, &rows, QStringLiteral("(a) live status cycle at full rate"),
+              QStringLiteral("(b) read-all"), QStringLiteral("optimum"), QString());
     rows.append({baud, QStringLiteral("(c) E-STOP dispatched, polling at full rate"),
                  QStringLiteral("mean %1 ms, max %2 ms after the request (%3 stops); "
                                 "next on the wire every time: %4")
@@ -233,26 +243,10 @@ QList<Verdict> gapVerdicts(const GapResult &g)
         return {{baud, QStringLiteral("(i) gap-refusing controller"), r.error, QString(), QString(),
                  Verdict::Result::Error}};
     QList<Verdict> rows;
-    const double cycleRatio = r.cycleMs.mean / r.statusOptimumMs;
-    rows.append({baud,
-                 QStringLiteral("(i) gap-refusing controller: live status cycle at full rate"),
-                 spanText(r.cycleMs, QStringLiteral("cycles")) +
-                     QStringLiteral(", %1 reads").arg(r.readsPerCycle, 0, 'f', 0),
-                 QStringLiteral("gap-free optimum %1 ms, %2 reads; within 1.10×, same reads")
-                     .arg(ms(r.statusOptimumMs))
-                     .arg(r.statusOptimumReads),
-                 QStringLiteral("%1×").arg(QString::number(cycleRatio, 'f', 3)),
-                 judge(cycleRatio <= kCycleTarget && int(r.readsPerCycle) == r.statusOptimumReads &&
-                       r.fastCycles == 0)});
-    const double allRatio = r.readAllMs.mean / r.readAllOptimumMs;
-    rows.append({baud, QStringLiteral("(i) gap-refusing controller: read-all"),
-                 spanText(r.readAllMs, QStringLiteral("runs")) +
-                     QStringLiteral(", %1 reads").arg(r.readAllReads),
-                 QStringLiteral("gap-free optimum %1 ms, %2 reads; within 1.10×, same reads")
-                     .arg(ms(r.readAllOptimumMs))
-                     .arg(r.readAllOptimumReads),
-                 QStringLiteral("%1×").arg(QString::number(allRatio, 'f', 3)),
-                 judge(allRatio <= kCycleTarget && r.readAllReads == r.readAllOptimumReads)});
+    cycleRows(r, &rows,
+              QStringLiteral("(i) gap-refusing controller: live status cycle at full rate"),
+              QStringLiteral("(i) gap-refusing controller: read-all"),
+              QStringLiteral("gap-free optimum"), QStringLiteral(", same reads"));
     return rows;
 }
 

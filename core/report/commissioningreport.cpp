@@ -3,16 +3,13 @@
 #include "device/wiringcheck.h"
 #include "profile/settingsfingerprint.h"
 #include "report/certificatesection.h"
+#include "report/reportfile.h"
 #include "report/reporthtml.h"
 #include "report/xypicture.h"
 
-#include <QBuffer>
-#include <QFileInfo>
 #include <QFont>
 #include <QFontInfo>
 #include <QFontMetricsF>
-#include <QPdfWriter>
-#include <QSaveFile>
 #include <QTextDocument>
 #include <QUrl>
 
@@ -318,50 +315,10 @@ std::unique_ptr<QTextDocument> CommissioningReport::document() const
 
 QString CommissioningReport::write(const QString &path) const
 {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("pdf"))
-        return writePdf(path);
-    if (suffix == QLatin1String("html") || suffix == QLatin1String("htm"))
-        return writeHtml(path);
-    return tr("%1: the report is written as .pdf or .html, not .%2").arg(path, suffix);
-}
-
-QString CommissioningReport::writePdf(const QString &path) const
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return tr("cannot write %1: %2").arg(path, file.errorString());
-    {
-        QPdfWriter writer(&file);
-        writer.setPageSize(QPageSize(QPageSize::A4));
-        writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
-        writer.setResolution(300);
-        writer.setTitle(title());
-        writer.setCreator(QStringLiteral("StepCom %1").arg(QStringLiteral(STEPCOM_VERSION)));
-        const auto doc = document();
-        doc->print(&writer);
-    }
-    if (file.error() != QFileDevice::NoError || !file.commit())
-        return tr("cannot write %1: %2").arg(path, file.errorString());
-    return {};
-}
-
-QString CommissioningReport::writeHtml(const QString &path) const
-{
-    // One self-contained file: the picture travels inside it as a data URL.
-    QByteArray png;
-    QBuffer buffer(&png);
-    buffer.open(QIODevice::WriteOnly);
-    picture().save(&buffer, "PNG");
-    const QString source =
-        QStringLiteral("data:image/png;base64,") + QString::fromLatin1(png.toBase64());
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return tr("cannot write %1: %2").arg(path, file.errorString());
-    const QByteArray bytes = html(source).toUtf8();
-    if (file.write(bytes) != bytes.size() || !file.commit())
-        return tr("cannot write %1: %2").arg(path, file.errorString());
-    return {};
+    // HTML: one self-contained file, the picture travels inside it as a data URL.
+    return ReportFile::write(
+        path, title(), [this] { return document(); },
+        [this] { return html(ReportFile::pngDataUrl(picture())); });
 }
 
 } // namespace stepcom

@@ -32,8 +32,6 @@ public:
 
     // By the file's suffix (.pdf, .html/.htm); atomic; empty on success, else why not.
     QString write(const QString &path) const;
-    QString writePdf(const QString &path) const;
-    QString writeHtml(const QString &path) const;
 
 private:
     QString text(const char *key) const; // value with unit or enum label, "—" when unknown

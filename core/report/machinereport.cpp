@@ -2,13 +2,10 @@
 
 #include "profile/settingsfingerprint.h"
 #include "report/commissioningreport.h"
+#include "report/reportfile.h"
 #include "report/reporthtml.h"
 
-#include <QBuffer>
-#include <QFileInfo>
 #include <QImage>
-#include <QPdfWriter>
-#include <QSaveFile>
 #include <QTextDocument>
 #include <QUrl>
 
@@ -120,51 +117,15 @@ QString MachineReport::write(const QString &path) const
 {
     if (m_devices.isEmpty())
         return tr("%1: no controller to report on").arg(path);
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("pdf"))
-        return writePdf(path);
-    if (suffix == QLatin1String("html") || suffix == QLatin1String("htm"))
-        return writeHtml(path);
-    return tr("%1: the report is written as .pdf or .html, not .%2").arg(path, suffix);
-}
-
-QString MachineReport::writePdf(const QString &path) const
-{
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return tr("cannot write %1: %2").arg(path, file.errorString());
-    {
-        QPdfWriter writer(&file);
-        writer.setPageSize(QPageSize(QPageSize::A4));
-        writer.setPageMargins(QMarginsF(15, 15, 15, 15), QPageLayout::Millimeter);
-        writer.setResolution(300);
-        writer.setTitle(title());
-        writer.setCreator(QStringLiteral("StepCom %1").arg(QStringLiteral(STEPCOM_VERSION)));
-        document()->print(&writer);
-    }
-    if (file.error() != QFileDevice::NoError || !file.commit())
-        return tr("cannot write %1: %2").arg(path, file.errorString());
-    return {};
-}
-
-QString MachineReport::writeHtml(const QString &path) const
-{
-    // One self-contained file: each picture travels inside it as a data URL.
-    QStringList sources;
-    for (const ReportInput &d : m_devices) {
-        QByteArray png;
-        QBuffer buffer(&png);
-        buffer.open(QIODevice::WriteOnly);
-        CommissioningReport(d).picture().save(&buffer, "PNG");
-        sources << QStringLiteral("data:image/png;base64,") + QString::fromLatin1(png.toBase64());
-    }
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return tr("cannot write %1: %2").arg(path, file.errorString());
-    const QByteArray bytes = html(sources).toUtf8();
-    if (file.write(bytes) != bytes.size() || !file.commit())
-        return tr("cannot write %1: %2").arg(path, file.errorString());
-    return {};
+    return ReportFile::write(
+        path, title(), [this] { return document(); },
+        [this] {
+            // One self-contained file: each picture travels inside it as a data URL.
+            QStringList sources;
+            for (const ReportInput &d : m_devices)
+                sources << ReportFile::pngDataUrl(CommissioningReport(d).picture());
+            return html(sources);
+        });
 }
 
 } // namespace stepcom

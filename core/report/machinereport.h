@@ -32,8 +32,6 @@ public:
 private:
     QString summary() const;
     QString heading(const ReportInput &device) const;
-    QString writePdf(const QString &path) const;
-    QString writeHtml(const QString &path) const;
 
     QList<ReportInput> m_devices;
     QString m_title;
