@@ -68,6 +68,16 @@ CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, bool j
                   : s.portName);
     });
     connect(reconnector, &Reconnector::cancelled, this, [this] { end(1); });
+    connect(m_session, &DeviceSession::controllerRestarted, this,
+            [this](int id, const QStringList &lost) {
+                event(QStringLiteral("restarted"),
+                      tr("controller %1 restarted (power off?): positions and references lost%2")
+                          .arg(id)
+                          .arg(lost.isEmpty() ? QString()
+                                              : tr("; not saved to flash, lost: %1")
+                                                    .arg(lost.join(QLatin1String(", ")))),
+                      QStringLiteral("lost"), lost.join(QLatin1String(", ")));
+            });
 }
 
 void CtlMonitor::event(const QString &name, const QString &text, const QString &detailKey,

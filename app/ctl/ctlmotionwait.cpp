@@ -3,7 +3,9 @@
 #include "device/devicesession.h"
 #include "device/motionjudge.h"
 #include "device/motionwatch.h"
+#include "device/restartwatch.h"
 
+#include <QDateTime>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -31,6 +33,12 @@ CtlMotionWait::CtlMotionWait(DeviceSession *session, const Parameter &command, b
     connect(&m_timer, &QTimer::timeout, this, &CtlMotionWait::sample);
     connect(session, &DeviceSession::linkLost, this,
             [this](const QString &) { conclude(MotionCause::LinkLost); });
+    m_restarts = new RestartWatch(session->map(), this);
+    connect(m_restarts, &RestartWatch::suspected, this,
+            [this](int, const QString &, bool positionsReset) {
+                if (positionsReset)
+                    conclude(MotionCause::Restarted);
+            });
 }
 
 CtlMotionWait::~CtlMotionWait() = default;
@@ -69,6 +77,7 @@ void CtlMotionWait::start()
                 fail(c.errorText);
                 return;
             }
+            m_restarts->commandSent(m_session->deviceInView(), QDateTime::currentMSecsSinceEpoch());
             if (!m_json)
                 m_out << tr("%1: sent, waiting for the motion to end").arg(m_command.key)
                       << Qt::endl;
@@ -89,6 +98,10 @@ void CtlMotionWait::sample()
         [this](const ReadOutcome &r) {
             if (m_done)
                 return;
+            const qint64 now = QDateTime::currentMSecsSinceEpoch();
+            m_restarts->statusRead(m_session->deviceInView(), r.ok, r.values, now);
+            if (m_done)
+                return; // the controller restarted
             if (!r.ok) {
                 if (++m_failedReads >= kReadsBeforeLost) {
                     conclude(MotionCause::LinkLost);

@@ -12,13 +12,15 @@ namespace stepcom {
 
 class DeviceSession;
 class MotionWatch;
+class RestartWatch;
 struct Parameter;
 
 // `stepcomctl command NAME --wait` (a row of the command table), over stepcomctl's one-shot
 // session: reads what the controller holds, sends the motion command,
 // reads the positions, running flags and inputs until the axes are idle, and prints the
 // outcome in the window's words (MotionJudge), or as JSON. Exit 0 only when "done" or
-// "referenced"; 1 when it stopped elsewhere, was interrupted or the link was lost.
+// "referenced"; 1 when it stopped elsewhere, was interrupted, the controller restarted or the
+// link was lost.
 class CtlMotionWait : public QObject
 {
     Q_OBJECT
@@ -41,6 +43,7 @@ private:
     bool m_json;
     StatusValues m_values;
     std::unique_ptr<MotionWatch> m_watch;
+    RestartWatch *m_restarts; // a restart ends the wait: the positions after it mean nothing
     QTimer m_timer;
     int m_failedReads = 0;
     bool m_done = false;

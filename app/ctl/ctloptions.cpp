@@ -38,11 +38,16 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("sim"), tr("Use the built-in simulated controller.")},
         {QStringLiteral("echo"),
          tr("The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo "
-            "suppression): remove the request's own bytes before the answer.")},
+            "suppression): skip the request's own bytes from the first request on (without it "
+            "the echo is found by the first read and skipped from then on).")},
         {QStringLiteral("answer-delay"),
-         tr("The controller answers no sooner than this after a request; sooner answers are "
-            "discarded as late answers to an older one (default 35)."),
+         tr("How long the controller may take to answer: the least an adapted timeout allows "
+            "(default 35, the manual's). Answers are judged by what they say, whenever they "
+            "come."),
          tr("ms"), QStringLiteral("35")},
+        {QStringLiteral("fixed-timeout"),
+         tr("Always wait --timeout for an answer, instead of fitting the timeout to the "
+            "controller's measured answers (4x the median, at most --timeout).")},
         {QStringLiteral("turnaround"),
          tr("Extra silence after an answer before the next request, for converters that need "
             "it (default 0)."),
@@ -220,6 +225,7 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         return tr("--turnaround: '%1' is not a number of ms")
             .arg(parser.value(QStringLiteral("turnaround")));
     o.link.echo = parser.isSet(QStringLiteral("echo"));
+    o.link.adaptTimeout = !parser.isSet(QStringLiteral("fixed-timeout"));
     if (o.link.echo && o.target == Target::Tcp && o.link.transport == LinkSettings::Transport::Tcp)
         return tr("--echo: Modbus TCP has no echo; it applies to --port and --rtu-tcp");
     if (parser.isSet(QStringLiteral("count")) &&

@@ -11,7 +11,6 @@ struct LinkAnswer
     enum class Kind {
         Answer,  // `response` is the answer (it may be an exception)
         Timeout, // nothing acceptable arrived in time
-        Echo,    // the request's own bytes came back and the echo option is off
         Failed   // could not be sent (`errorText`)
     };
     Kind kind = Kind::Timeout;
@@ -21,7 +20,7 @@ struct LinkAnswer
     int crcErrors = 0;
     // Frames discarded while waiting (stale or foreign answers, garbage), each with why.
     QStringList discarded;
-    // The echo option is on, the request's bytes came back and nothing after them.
+    // The adapter echoes (learnt or set), the request's bytes came back and nothing after.
     bool onlyEcho = false;
     QString errorText;
 };

@@ -43,6 +43,9 @@ Q_SIGNALS:
     // Scan mode: a well-formed answer frame from `unit` that the request in flight (if any) was
     // not waiting for: its function code byte as on the wire and its data.
     void unitAnswered(int unit, int functionCode, const QByteArray &data);
+    // The line showed whether the adapter echoes what it sends (a request's own bytes came
+    // back where they cannot be its answer, or an answer came without them).
+    void echoLearned(bool echoes);
 };
 
 } // namespace stepcom

@@ -125,7 +125,7 @@ bool operator==(const LinkSettings &a, const LinkSettings &b)
            a.parity == b.parity && a.stopBits == b.stopBits && a.host == b.host &&
            a.tcpPort == b.tcpPort && a.deviceId == b.deviceId && a.timeoutMs == b.timeoutMs &&
            a.retries == b.retries && a.answerDelayMs == b.answerDelayMs && a.echo == b.echo &&
-           a.turnaroundMs == b.turnaroundMs;
+           a.turnaroundMs == b.turnaroundMs && a.adaptTimeout == b.adaptTimeout;
 }
 
 } // namespace stepcom

@@ -20,11 +20,16 @@ struct LinkSettings
     int tcpPort = 502;
     int deviceId = 1;
     // A 49-register read at 4800 baud takes about 280 ms on the wire plus the 35 ms answer
-    // delay; 500 ms leaves room for USB adapters' latency.
+    // delay; 500 ms leaves room for USB adapters' latency. With adaptTimeout this is the most
+    // the link waits: it waits less once it has timed a controller's answers.
     int timeoutMs = 500;
+    // Fit the answer timeout to the measured round trips (4x the median plus the answer's
+    // frame time), never below what the manual asks, never above timeoutMs.
+    bool adaptTimeout = true;
     int retries = 2;
-    // The controller answers no sooner than this after a request (the manual: 35 ms); an
-    // answer that arrives sooner belongs to an older request and is discarded.
+    // How long the controller takes to answer (the manual: allow 35 ms). Only a hint: the
+    // least an adapted timeout leaves it. Answers are judged by what they say, whenever they
+    // come: many controllers answer in a few ms.
     int answerDelayMs = 35;
     // The adapter returns every byte it sends (half-duplex adapters without echo suppression):
     // the request's own bytes are removed before the answer is read.

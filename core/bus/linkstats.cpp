@@ -6,7 +6,42 @@
 
 namespace stepcom {
 
-void LinkStats::addRoundTrip(qint64 ms)
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("stepcom::LinkStats", text);
+}
+
+} // namespace
+
+void RoundTrips::add(qint64 ms)
+{
+    ++count;
+    min = min < 0 ? ms : std::min(min, ms);
+    max = std::max(max, ms);
+    recent.append(ms);
+    if (recent.size() > kWindow)
+        recent.removeFirst();
+}
+
+qint64 RoundTrips::median() const
+{
+    if (recent.isEmpty())
+        return -1;
+    QList<qint64> sorted = recent;
+    std::sort(sorted.begin(), sorted.end());
+    return sorted.at(sorted.size() / 2);
+}
+
+QString RoundTrips::text() const
+{
+    if (count == 0)
+        return {};
+    return tr("%1-%2 ms (median %3 ms)").arg(min).arg(max).arg(median());
+}
+
+void LinkStats::addRoundTrip(qint64 ms, int unit)
 {
     lastRoundTripMs = ms;
     minRoundTripMs = minRoundTripMs < 0 ? ms : std::min(minRoundTripMs, ms);
@@ -14,6 +49,9 @@ void LinkStats::addRoundTrip(qint64 ms)
     // answers has already been counted for this round trip
     const double n = double(std::max<quint64>(answers, 1));
     meanRoundTripMs += (double(ms) - meanRoundTripMs) / n;
+    roundTrips.add(ms);
+    if (unit > 0)
+        byUnit[unit].add(ms);
 }
 
 int LinkStats::suggestedTimeoutMs() const
@@ -24,27 +62,32 @@ int LinkStats::suggestedTimeoutMs() const
     return int(std::max<qint64>(100, (raw + 49) / 50 * 50));
 }
 
-QString LinkStats::summary(int timeoutMs) const
+QString LinkStats::lineText(int unit) const
 {
-    const auto tr = [](const char *text) {
-        return QCoreApplication::translate("stepcom::LinkStats", text);
-    };
+    const RoundTrips &trips = unit > 0 ? byUnit.value(unit) : roundTrips;
+    QStringList parts;
+    parts << (trips.count == 0 ? tr("no answer timed yet") : tr("answers in %1").arg(trips.text()));
+    parts << (echo < 0 ? tr("echo not known yet")
+              : echo   ? tr("the adapter echoes")
+                       : tr("no echo"));
+    if (timeoutMs > 0)
+        parts << tr("timeout %1 ms").arg(timeoutMs);
+    return parts.join(QStringLiteral(", "));
+}
+
+QString LinkStats::summary(int setTimeoutMs) const
+{
     QString text = tr("%1 requests, %2 answers; %3 timeouts, %4 CRC errors, %5 exceptions, "
-                      "%6 stale or foreign answers discarded, %7 echoes")
+                      "%6 stale or foreign answers discarded")
                        .arg(requests)
                        .arg(answers)
                        .arg(timeouts)
                        .arg(crcErrors)
                        .arg(exceptions)
-                       .arg(stale)
-                       .arg(echoes);
-    if (minRoundTripMs >= 0)
-        text += tr("; round trips %1-%2 ms (mean %3 ms)")
-                    .arg(minRoundTripMs)
-                    .arg(maxRoundTripMs)
-                    .arg(meanRoundTripMs, 0, 'f', 1);
-    if (const int suggested = suggestedTimeoutMs(); suggested > 0)
-        text += tr("; suggested timeout %1 ms (now %2 ms)").arg(suggested).arg(timeoutMs);
+                       .arg(stale);
+    text += QStringLiteral("; ") + tr("line: %1").arg(lineText());
+    if (const int suggested = suggestedTimeoutMs(); suggested > 0 && timeoutMs < 0)
+        text += tr("; suggested timeout %1 ms (now %2 ms)").arg(suggested).arg(setTimeoutMs);
     return text;
 }
 

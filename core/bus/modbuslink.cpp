@@ -11,6 +11,8 @@
 #include <QFileInfo>
 #include <QLoggingCategory>
 
+#include <cmath>
+
 Q_LOGGING_CATEGORY(lcBus, "stepcom.bus", QtWarningMsg)
 
 namespace stepcom {
@@ -142,6 +144,7 @@ void ModbusLink::open(const LinkSettings &settings)
     m_backend->setQuietTimeMs(m_quietMs);
     m_backend->setScanMode(m_scanMode);
     connect(m_backend, &LinkBackend::unitAnswered, this, &ModbusLink::onUnitAnswered);
+    connect(m_backend, &LinkBackend::echoLearned, this, &ModbusLink::onEchoLearned);
     connect(m_backend, &LinkBackend::opened, this, &ModbusLink::onBackendOpened);
     connect(m_backend, &LinkBackend::failed, this, &ModbusLink::failLink);
     connect(m_backend, &LinkBackend::answered, this, &ModbusLink::onAnswered);
@@ -308,6 +311,45 @@ void ModbusLink::onUnitAnswered(int unit, int functionCode, const QByteArray &da
     Q_EMIT unitAnswered(unit, exception, values);
 }
 
+int ModbusLink::timeoutFor(const Request &req) const
+{
+    if (req.timeoutMs > 0)
+        return req.timeoutMs;
+    const int ceiling = m_settings.timeoutMs;
+    const int id = req.unitId > 0 ? req.unitId : m_settings.deviceId;
+    const RoundTrips trips = m_stats.byUnit.value(id);
+    if (!m_settings.adaptTimeout || m_scanMode || trips.count < quint64(kAdaptAfter))
+        return ceiling;
+    // The answer's own frame on the wire (0 on TCP), and the latency of USB adapters, which
+    // pass bytes on in packets (FTDI: 16 ms each way).
+    const int answerBytes = req.type == Request::Type::ReadHolding ? 5 + 2 * req.count : 8;
+    const double frameMs = m_settings.charTimeMs() * answerBytes;
+    constexpr double kSlackMs = 40;
+    const double floor = std::max(0, m_settings.answerDelayMs) + frameMs + kSlackMs;
+    const double fitted = 4.0 * double(trips.median()) + frameMs + kSlackMs / 2;
+    return std::min(ceiling, int(std::ceil(std::max(floor, fitted))));
+}
+
+void ModbusLink::onEchoLearned(bool echoes)
+{
+    m_stats.echo = echoes ? 1 : 0;
+    if (echoes == m_settings.echo) {
+        Q_EMIT statsChanged();
+        return;
+    }
+    if (echoes) {
+        m_traffic->addEvent(tr("the adapter echoes what it sends: the request's own bytes came "
+                               "back before the answer; they are skipped from now on"),
+                            TrafficEntry::Kind::Error);
+        Q_EMIT echoDetected();
+    } else {
+        m_traffic->addEvent(tr("the adapter does not echo what it sends (the echo option is on): "
+                               "answers are read without skipping a copy"),
+                            TrafficEntry::Kind::Error);
+    }
+    Q_EMIT statsChanged();
+}
+
 void ModbusLink::resetStats()
 {
     m_stats = LinkStats();
@@ -335,7 +377,8 @@ void ModbusLink::pump()
     ++m_stats.requests;
     Q_EMIT dispatched(m_inFlight->id, m_inFlight->request);
     // The transport waits for the silences the line needs; the watchdog covers that too.
-    const int timeoutMs = req.timeoutMs > 0 ? req.timeoutMs : m_settings.timeoutMs;
+    const int timeoutMs = timeoutFor(req);
+    m_inFlightTimeoutMs = timeoutMs;
     m_watchdog.start(timeoutMs + m_quietMs + m_settings.turnaroundMs + kWatchdogGraceMs);
     m_backend->send(id, toPdu(req), timeoutMs);
 }
@@ -344,9 +387,7 @@ QString ModbusLink::noAnswerText(const Request &req, const LinkAnswer &a) const
 {
     if (a.crcErrors > 0 && a.discarded.size() == a.crcErrors)
         return tr("%1: answers had a bad checksum (CRC)").arg(describe(req));
-    QString text = tr("%1: no answer within %2 ms")
-                       .arg(describe(req))
-                       .arg(req.timeoutMs > 0 ? req.timeoutMs : m_settings.timeoutMs);
+    QString text = tr("%1: no answer within %2 ms").arg(describe(req)).arg(m_inFlightTimeoutMs);
     if (!a.discarded.isEmpty())
         text += tr(" (discarded: %1)").arg(a.discarded.join(QStringLiteral("; ")));
     const int id = req.unitId > 0 ? req.unitId : m_settings.deviceId;
@@ -365,8 +406,8 @@ QString ModbusLink::noAnswerText(const Request &req, const LinkAnswer &a) const
                                  .arg(m_settings.stopBits == QSerialPort::TwoStop ? 2 : 1));
     }
     if (a.onlyEcho)
-        text += tr(" -- only the request's own bytes came back: the controller did not answer, "
-                   "or the adapter does not echo (then turn the echo option off)");
+        text += tr(" -- only the request's own bytes came back (the adapter's echo): the "
+                   "controller did not answer");
     return text;
 }
 
@@ -406,7 +447,9 @@ void ModbusLink::onAnswered(const LinkAnswer &a)
             }
             break;
         }
-        m_stats.addRoundTrip(a.roundTripMs);
+        m_stats.addRoundTrip(a.roundTripMs, req.unitId > 0 ? req.unitId : m_settings.deviceId);
+        if (req.timeoutMs <= 0)
+            m_stats.timeoutMs = timeoutFor(req);
         r.ok = true;
         r.roundTripMs = a.roundTripMs;
         if (req.type == Request::Type::ReadHolding) {
@@ -428,16 +471,6 @@ void ModbusLink::onAnswered(const LinkAnswer &a)
             r.mayHaveActed = true;
             r.errorText += tr(" -- the controller may have acted on it");
         }
-        break;
-    case LinkAnswer::Kind::Echo:
-        ++m_stats.echoes;
-        r.error = QModbusDevice::ProtocolError;
-        r.errorText = tr("%1: the request's own bytes came back before any answer: the adapter "
-                         "echoes what it sends. Turn on \"the adapter echoes what it sends\" "
-                         "(stepcomctl --echo)")
-                          .arg(describe(req));
-        r.mayHaveActed = req.type == Request::Type::WriteCoil;
-        Q_EMIT echoDetected();
         break;
     case LinkAnswer::Kind::Failed:
         r.error = QModbusDevice::WriteError;

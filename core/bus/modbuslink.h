@@ -61,6 +61,12 @@ public:
     // (`unitAnswered`): an RTU answer carries its address, so a late one still names its id.
     void setScanMode(bool on);
 
+    // The answer timeout for `request` now: its own, or the settings' fitted to the round
+    // trips measured for its device (LinkSettings::adaptTimeout).
+    int timeoutFor(const Request &request) const;
+    // Round trips counted before the timeout adapts to them.
+    static constexpr int kAdaptAfter = 5;
+
     const LinkStats &stats() const { return m_stats; }
     void resetStats();
     TrafficLog *traffic() const { return m_traffic; }
@@ -74,8 +80,9 @@ Q_SIGNALS:
     void dispatched(quint64 id, const stepcom::Request &request);
     void finished(quint64 id, const stepcom::Request &request, const stepcom::Result &result);
     void statsChanged();
-    // The request's own bytes came back before the answer and the echo option is off: the
-    // adapter echoes what it sends (offer the option).
+    // The request's own bytes came back where they cannot be its answer and the echo option is
+    // off: the adapter echoes what it sends. The link skips the copies from now on (offer to
+    // remember the option).
     void echoDetected();
     // Scan mode: an answer from `unit` that no request in flight was waiting for (a read's
     // registers, or the exception code it refused with).
@@ -93,6 +100,7 @@ private:
     void failLink(const QString &reason);
     void failAll(const QString &reason);
     void onUnitAnswered(int unit, int functionCode, const QByteArray &data);
+    void onEchoLearned(bool echoes);
     void onFrame(bool sent, const QByteArray &raw, int pduOffset, int crcBytes);
     QString describe(const Request &request) const;
     QString noAnswerText(const Request &request, const LinkAnswer &answer) const;
@@ -113,6 +121,7 @@ private:
     LinkStats m_stats;
     TrafficLog *m_traffic;
     bool m_failing = false;
+    int m_inFlightTimeoutMs = 0;
     QString m_closingReason; // while close() fails what was queued; empty otherwise
     quint64 m_attempt = 0;   // connect attempts, so stale deferred checks do nothing
 };

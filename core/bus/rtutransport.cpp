@@ -17,14 +17,6 @@
 
 namespace stepcom {
 
-namespace {
-
-// An echo comes back while the request is still being sent, give or take the adapter's
-// USB latency; an identical FC05/06 frame later than this is an answer (or a stale one).
-constexpr double kEchoSlackMs = 20.0;
-
-} // namespace
-
 RtuTransport::RtuTransport(QObject *parent)
     : LinkBackend(parent)
 {
@@ -75,9 +67,10 @@ void RtuTransport::open(const LinkSettings &settings)
     m_failing = false;
     m_lastRxMs = -1;
     m_needQuiet = false;
+    m_echoSeen = Echo::Unknown;
+    m_copyAnswered.clear();
     if (settings.transport == LinkSettings::Transport::RtuTcp) {
-        // The converter's line has its own baud, unknown here: count no wire time, so the
-        // earliest-answer rule rests on the answer delay alone.
+        // The converter's line has its own baud, unknown here: count no wire time.
         m_byteMs = 0;
         m_gapMs = 0;
         auto *socket = new QTcpSocket(this);
@@ -228,6 +221,7 @@ void RtuTransport::writeNow()
                                             "bytes that arrived between two requests"));
     m_rx.clear();
     m_echoStripped = false;
+    m_copyAnswered.clear();
     const QByteArray &adu = m_pending->adu;
     const qint64 written = m_device->write(adu);
     if (written != adu.size()) {
@@ -240,7 +234,6 @@ void RtuTransport::writeNow()
     m_sentAtMs = nowMs();
     m_waiting = true;
     const double frameMs = m_byteMs * double(adu.size());
-    m_earliestMs = frameMs + m_settings.answerDelayMs - kEarlyMarginMs;
     // The timeout counts from the end of the request on the line; a scan's probe timeout is
     // fitted with the request's frame in it already (BusScanner::fittedProbeTimeoutMs).
     m_timeoutTimer.start(m_pending->timeoutMs + (m_scan ? 0 : int(std::ceil(frameMs))));
@@ -276,6 +269,29 @@ void RtuTransport::discard(const QByteArray &bytes, const QString &why)
     m_discarded << why;
 }
 
+QByteArray RtuTransport::checkedAnswerAtStart() const
+{
+    const int length = RtuFrame::answerLength(m_rx);
+    if (length <= 0 || m_rx.size() < length)
+        return {};
+    const QByteArray f = m_rx.left(length);
+    if (!RtuFrame::crcOk(f) || quint8(f.at(0)) != m_pending->unit)
+        return {};
+    if (!AnswerCheck::mismatch(m_pending->request, quint8(f.at(1)), f.mid(2, f.size() - 4))
+             .isEmpty())
+        return {};
+    return f;
+}
+
+void RtuTransport::learnEcho(bool echoes)
+{
+    const Echo seen = echoes ? Echo::Yes : Echo::No;
+    if (m_echoSeen == seen)
+        return;
+    m_echoSeen = seen;
+    Q_EMIT echoLearned(echoes);
+}
+
 void RtuTransport::processBuffer()
 {
     const auto tr = [](const char *text) {
@@ -284,28 +300,22 @@ void RtuTransport::processBuffer()
     while (m_waiting && !m_rx.isEmpty()) {
         const QByteArray &adu = m_pending->adu;
         const double at = nowMs() - m_sentAtMs;
-        if (m_rx.size() < adu.size() && adu.startsWith(m_rx))
-            return; // the start of the echo (or of a write's answer): wait for the rest
-        if (m_rx.startsWith(adu)) {
-            const int fc = quint8(adu.at(1));
-            const bool looksLikeAnswer = fc == 0x05 || fc == 0x06;
-            if (m_settings.echo && !m_echoStripped) {
-                m_echoStripped = true;
-                Q_EMIT frame(false, adu, 1, 2);
-                m_rx.remove(0, int(adu.size()));
-                continue;
-            }
-            // An echo comes while the request is sent, an answer no sooner than it can.
-            const bool tooSoonForAnAnswer =
-                at < m_earliestMs && at <= m_byteMs * double(adu.size()) + kEchoSlackMs;
-            if (!m_settings.echo && (!looksLikeAnswer || tooSoonForAnAnswer)) {
-                Q_EMIT frame(false, adu, 1, 2);
-                m_rx.remove(0, int(adu.size()));
-                LinkAnswer a;
-                a.kind = LinkAnswer::Kind::Echo;
-                finish(a);
+        const int fc = quint8(adu.at(1));
+        // An FC05/06 answer is a byte-for-byte copy of the request: only these can be both.
+        const bool copyCanAnswer = fc == 0x05 || fc == 0x06;
+        if (!m_echoStripped && m_rx.size() < adu.size() && adu.startsWith(m_rx)) {
+            // The start of the echo, or of the answer: an FC10 answer is the request's first
+            // six bytes and its own CRC. A complete answer that checks out is taken.
+            if (expectEcho() || checkedAnswerAtStart().isEmpty())
                 return;
-            }
+        } else if (!m_echoStripped && m_rx.startsWith(adu) && (expectEcho() || !copyCanAnswer)) {
+            // The request's own bytes: an FC03/FC10 request is never its own answer.
+            if (!copyCanAnswer)
+                learnEcho(true);
+            m_echoStripped = true;
+            Q_EMIT frame(false, adu, 1, 2);
+            m_rx.remove(0, int(adu.size()));
+            continue;
         }
         const int length = RtuFrame::answerLength(m_rx);
         if (length == 0)
@@ -332,50 +342,37 @@ void RtuTransport::processBuffer()
             continue;
         }
         pruneOwed();
-        if (!m_owed.isEmpty()) {
-            // The controller answers in order: this is the oldest owed answer.
-            const Owed owed = m_owed.takeFirst();
-            if (owed.adu != adu) {
-                discard(f, tr("a late answer to an earlier request"));
-                continue;
-            }
-            // An earlier attempt of this very request: its answer is this one's too.
-            if (const QString why = AnswerCheck::mismatch(m_pending->request, quint8(f.at(1)),
-                                                          f.mid(2, f.size() - 4));
-                !why.isEmpty()) {
-                discard(f, why);
-                continue;
-            }
-            Q_EMIT frame(false, f, 1, 2);
-            // ...and this attempt's own answer may still come.
-            m_owed.append({adu, m_sentAtMs + kOwedTimeouts * m_pending->timeoutMs});
-            LinkAnswer a;
-            a.kind = LinkAnswer::Kind::Answer;
-            a.response = RtuFrame::response(f);
-            a.exceptionCode = AnswerCheck::exceptionCode(quint8(f.at(1)), f.mid(2, f.size() - 4));
-            a.roundTripMs = qint64(std::llround(at));
-            finish(a);
-            return;
-        }
-        if (at < m_earliestMs) {
-            discard(f, tr("an answer %1 ms after the request, sooner than the controller can "
-                          "answer (%2 ms): a late answer to an older request")
-                           .arg(at, 0, 'f', 1)
-                           .arg(m_earliestMs + kEarlyMarginMs, 0, 'f', 1));
+        // The controller answers in order: a frame while answers are owed is the oldest's.
+        const bool owed = !m_owed.isEmpty();
+        if (owed && m_owed.first().adu != adu) {
+            m_owed.removeFirst();
+            discard(f, tr("a late answer to an earlier request"));
             continue;
         }
-        const int fc = quint8(f.at(1));
         const QByteArray data = f.mid(2, f.size() - 4);
-        if (const QString why = AnswerCheck::mismatch(m_pending->request, fc, data);
+        if (const QString why = AnswerCheck::mismatch(m_pending->request, quint8(f.at(1)), data);
             !why.isEmpty()) {
+            if (owed)
+                m_owed.removeFirst();
             discard(f, why);
             continue;
         }
+        if (owed) {
+            // An earlier attempt of this very request: its answer is this one's too, and this
+            // attempt's own answer may still come.
+            m_owed.removeFirst();
+            m_owed.append({adu, owedUntilMs()});
+        }
+        // An answer with no copy before it: a read or block write shows the adapter is quiet.
+        if (!copyCanAnswer && !m_echoStripped)
+            learnEcho(false);
+        if (copyCanAnswer && !m_echoStripped && m_owed.isEmpty())
+            m_copyAnswered = adu;
         Q_EMIT frame(false, f, 1, 2);
         LinkAnswer a;
         a.kind = LinkAnswer::Kind::Answer;
         a.response = RtuFrame::response(f);
-        a.exceptionCode = AnswerCheck::exceptionCode(fc, data);
+        a.exceptionCode = AnswerCheck::exceptionCode(quint8(f.at(1)), data);
         a.roundTripMs = qint64(std::llround(at));
         finish(a);
         return;
@@ -388,7 +385,7 @@ void RtuTransport::onTimeout()
         return;
     // A scan owes no answer: a late one names its unit and is counted for it.
     if (!m_scan)
-        m_owed.append({m_pending->adu, m_sentAtMs + kOwedTimeouts * m_pending->timeoutMs});
+        m_owed.append({m_pending->adu, owedUntilMs()});
     LinkAnswer a;
     a.kind = LinkAnswer::Kind::Timeout;
     a.onlyEcho = m_echoStripped && m_rx.isEmpty();
@@ -396,6 +393,13 @@ void RtuTransport::onTimeout()
         discard(std::exchange(m_rx, {}),
                 QCoreApplication::translate("stepcom::RtuTransport", "an incomplete answer"));
     finish(a);
+}
+
+double RtuTransport::owedUntilMs() const
+{
+    // A timeout fitted to the answers seen so far may be far shorter than the one set: an
+    // answer is owed for as long as the set one says an answer may take.
+    return m_sentAtMs + kOwedTimeouts * std::max(m_pending->timeoutMs, m_settings.timeoutMs);
 }
 
 void RtuTransport::pruneOwed()
@@ -418,8 +422,14 @@ void RtuTransport::takeStrayFrames()
         m_strayParsed += length;
         reportForeign(f);
         pruneOwed();
-        if (!m_owed.isEmpty() && quint8(f.at(0)) == m_unit)
+        if (!m_owed.isEmpty() && quint8(f.at(0)) == m_unit) {
             m_owed.removeFirst();
+        } else if (!m_copyAnswered.isEmpty() && f == m_copyAnswered) {
+            // A second copy of a command nothing else owes: the first was the adapter's echo,
+            // this the controller's answer (which confirms the command all the same).
+            m_copyAnswered.clear();
+            learnEcho(true);
+        }
     }
 }
 

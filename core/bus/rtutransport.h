@@ -19,10 +19,16 @@ namespace stepcom {
 // Modbus RTU of StepCom's own over a QIODevice: a serial port, or a TCP socket to a
 // transparent RS-485/Ethernet converter. QModbusRtuSerialClient matched answers by unit and
 // function only, could not skip an adapter's echo and has no TCP transport; here an answer
-// is taken only if it can be the answer: not sooner than the request's frame plus the
-// controller's answer delay, from the right unit, with the content AnswerCheck allows. Every
-// other frame is discarded (and reported); after trouble the line must go quiet before the
-// next request.
+// is taken by what it says, never by when it came: from the right unit, with the content
+// AnswerCheck allows (an FC03 answer carries the count asked for, FC05/06/10 answers repeat
+// address and value or count), and after a timeout the next frame is the answer that request
+// still owes. Every other frame is discarded (and reported); after trouble the line must go
+// quiet before the next request.
+//
+// An adapter's echo is known only where it cannot be an answer: an FC03 or FC10 request's
+// own bytes coming back (an FC05/06 answer IS a copy of the request). The line learns it from
+// the first such transaction -- and learns that there is none when an answer comes without
+// the copy -- so a wrong echo setting corrects itself; until it knows, the setting decides.
 class RtuTransport : public LinkBackend
 {
     Q_OBJECT
@@ -39,11 +45,13 @@ public:
 
     // Empty when `path` can be a serial port; otherwise why not ("not a serial port").
     static QString notASerialPort(const QString &path);
-    // An answer sooner than the request's frame plus the answer delay minus this is stale.
-    static constexpr double kEarlyMarginMs = 3.0;
-    // How long after an attempt that timed out its answer is still expected, in timeouts: a
-    // different request waits until then (or until that answer came), the same request may
-    // go again and take it.
+    // What the line showed about echo so far (reset on open): Unknown until a read or a block
+    // write has been answered.
+    enum class Echo { Unknown, Yes, No };
+    Echo echoSeen() const { return m_echoSeen; }
+    // How long after an attempt that timed out its answer is still expected, in timeouts (the
+    // set one, or the request's own if longer): a different request waits until then (or until
+    // that answer came), the same request may go again and take it.
     static constexpr int kOwedTimeouts = 2;
 
 private:
@@ -73,9 +81,18 @@ private:
     void finish(LinkAnswer answer);
     void onTimeout();
     void pruneOwed();
+    double owedUntilMs() const;
     void takeStrayFrames();
     // Scan mode: name the unit of a foreign answer frame (CRC checked by the caller).
     void reportForeign(const QByteArray &frame);
+    // The request's copy comes back before its answer: learnt, else the setting.
+    bool expectEcho() const
+    {
+        return m_echoSeen == Echo::Yes || (m_echoSeen == Echo::Unknown && m_settings.echo);
+    }
+    void learnEcho(bool echoes);
+    // The complete, checked answer frame at the start of m_rx, or empty.
+    QByteArray checkedAnswerAtStart() const;
 
     LinkSettings m_settings;
     QPointer<QIODevice> m_device;
@@ -92,8 +109,10 @@ private:
     std::optional<Pending> m_pending;
     bool m_waiting = false;
     double m_sentAtMs = 0;
-    double m_earliestMs = 0;
     bool m_echoStripped = false;
+    Echo m_echoSeen = Echo::Unknown;
+    // An FC05/06 request its first copy answered: a second copy right after is an echo's.
+    QByteArray m_copyAnswered;
     QByteArray m_rx;    // bytes of the current transaction
     QByteArray m_stray; // bytes that arrived between transactions
     QStringList m_discarded;

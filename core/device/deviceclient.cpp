@@ -370,6 +370,10 @@ void DeviceClient::command(const Parameter &coil, std::function<void(const Resul
     req.what = coil.key;
     // Stops are safe to repeat; anything that moves or changes state is not.
     req.retryable = coil.command == CommandClass::Emergency || coil.command == CommandClass::Output;
+    // Saving to flash or restoring the factory values, the firmware may write its flash before
+    // it answers: give it its own time (never less than the line's), and never repeat it.
+    if (coil.command == CommandClass::Setting || coil.command == CommandClass::Destructive)
+        req.timeoutMs = std::max(kSlowCommandTimeoutMs, m_link->settings().timeoutMs);
     // A command goes to the controller that was in view when it was given, even if the view
     // moves to another device before it reaches the wire.
     if (m_unitId == 0)

@@ -91,6 +91,8 @@ public:
     quint64 submit(Request request, ResultCallback callback, QObject *context);
 
     static Priority priorityFor(const Parameter &coil);
+    // Save to flash and factory reset: the firmware may write its flash before it answers.
+    static constexpr int kSlowCommandTimeoutMs = 5000;
     // Empty when every write is allowed, else one message per bad value.
     static QStringList validate(const QList<ParameterWrite> &writes);
 

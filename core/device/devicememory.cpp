@@ -25,6 +25,13 @@ QHash<QString, qint64> DeviceMemory::values(int id, const QHash<QString, qint64>
     return values;
 }
 
+void DeviceMemory::setDeviceValues(int id, const QHash<QString, qint64> &values)
+{
+    ParameterStore::Snapshot &aside = m_aside[id];
+    for (auto it = values.cbegin(); it != values.cend(); ++it)
+        aside.entries[it.key()].device = it.value();
+}
+
 void DeviceMemory::forgetDeviceValues()
 {
     for (ParameterStore::Snapshot &s : m_aside)

@@ -18,6 +18,8 @@ public:
     void bringBack(int id, ParameterStore &store, const QHash<QString, qint64> &newer);
     // The device values known of a device not in view, `newer` on top.
     QHash<QString, qint64> values(int id, const QHash<QString, qint64> &newer) const;
+    // What device `id` holds now (read again after a restart); its edits stay.
+    void setDeviceValues(int id, const QHash<QString, qint64> &values);
     bool holds(int id) const { return m_aside.contains(id); }
     // The link is gone: no device's values are known any more (edits stay).
     void forgetDeviceValues();

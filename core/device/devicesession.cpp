@@ -43,6 +43,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     m_poller->useStatusKeys(); // the full status; positions and running while a motor runs
     m_poller->setIntervalMs(Poller::intervalFromEnvironment(100));
     m_bus->setKeys(m_poller->keys());
+    watchRestarts(); // sees each status before the motion supervisor judges a motion from it
     connect(m_bus, &BusPoller::statusChanged, this, &DeviceSession::deviceStatusChanged);
     m_link->traffic()->setMap(&m_client->map());
     connect(m_link, &ModbusLink::opened, this, &DeviceSession::onOpened);
@@ -319,7 +320,11 @@ void DeviceSession::command(const QString &key)
     const int id = deviceInView(); // the pulse goes to this one, whatever is shown by the answer
     command(*p, [this, key, label, motion, id](const Result &r) {
         // A moving command is only acknowledged here; MotionSupervisor says how it ended.
-        if (r.ok)
+        if (r.ok && r.roundTripMs >= kSlowAnswerMs)
+            say(Severity::Info, tr("%1: done; the controller answered after %2 s")
+                                    .arg(label)
+                                    .arg(double(r.roundTripMs) / 1000.0, 0, 'f', 1));
+        else if (r.ok)
             say(Severity::Info, motion ? tr("%1: sent").arg(label) : tr("%1: done").arg(label));
         else
             say(Severity::Error, r.errorText);

@@ -26,6 +26,7 @@ class LinkHealth;
 class ModbusLink;
 class MotionSupervisor;
 class Reconnector;
+class RestartWatch;
 class SimulatorStarter;
 class StatusRecorder;
 class StepMove;
@@ -54,6 +55,8 @@ public:
     // empty text when it may go on, else why it may not (nothing is done then).
     using Proceed = std::function<void(const QString &refusal)>;
     using RiskGuard = std::function<void(Risk risk, Proceed proceed)>;
+    // A command answered after this long is said with its answer time ("answered after 0.8 s").
+    static constexpr qint64 kSlowAnswerMs = 300;
 
     explicit DeviceSession(const RegisterMap &map = RegisterMap::builtin(),
                            QObject *parent = nullptr);
@@ -229,6 +232,10 @@ Q_SIGNALS:
     void emergencyStopRequested();
     // Learnt what the controller refuses to read (said once, in words; also a message()).
     void readLimitsLearned(const QString &text);
+    // Controller `id` restarted (power off?): what it read afterwards differs from what the
+    // session held (`lost`: "motor1.speed 222 → 120 rpm"), or its positions went to 0. Its
+    // references are gone; its values shown are the ones read after the restart.
+    void controllerRestarted(int id, const QStringList &lost);
 
 private:
     friend class SessionInternals; // tests and the benchmark's link measurements
@@ -250,6 +257,11 @@ private:
     // After a failed write, read back what the controller holds for the keys whose request went
     // out without a good answer.
     void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
+    // A restart of the controllers seen and said (sessionrestart.cpp).
+    void watchRestarts();
+    void checkRestart(int id, const QString &why, bool positionsReset);
+    void restartChecked(int id, const QString &why, bool positionsReset,
+                        const QHash<QString, qint64> &held, const ReadOutcome &read);
 
     ModbusLink *m_link;
     DeviceClient *m_client;
@@ -275,6 +287,8 @@ private:
     bool m_estopPending = false; // pressed while the link was down: sent first when it is back
     bool m_resumeStatus = false; // the status poll ran when the link was lost
     QSet<QString> m_restored;    // "line#id" taken from the saved settings, not said yet
+    RestartWatch *m_restarts = nullptr;
+    QSet<int> m_checkingRestart; // devices being read again after a suspected restart
 };
 
 } // namespace stepcom

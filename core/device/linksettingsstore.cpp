@@ -26,6 +26,7 @@ LinkSettings read(QSettings &settings)
     s.answerDelayMs = value("answerDelayMs", s.answerDelayMs).toInt();
     s.turnaroundMs = value("turnaroundMs", s.turnaroundMs).toInt();
     s.echo = value("echo", s.echo).toBool();
+    s.adaptTimeout = value("adaptTimeout", s.adaptTimeout).toBool();
     return s;
 }
 
@@ -49,6 +50,7 @@ void write(QSettings &settings, const LinkSettings &s)
     set("answerDelayMs", s.answerDelayMs);
     set("turnaroundMs", s.turnaroundMs);
     set("echo", s.echo);
+    set("adaptTimeout", s.adaptTimeout);
 }
 
 } // namespace stepcom::LinkSettingsStore

@@ -334,6 +334,8 @@ QString MotionJudge::causeText(MotionCause cause)
         return tr("E-STOP");
     case MotionCause::LinkLost:
         return tr("link lost");
+    case MotionCause::Restarted:
+        return tr("the controller restarted");
     case MotionCause::None:
         break;
     }

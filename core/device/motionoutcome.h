@@ -17,7 +17,7 @@ using StatusValues = QHash<QString, qint64>;
 enum class MotionKind { SingleMove, Home, HomeInOrder, ReturnToZero, Arc, Line };
 
 // Something from outside the motion that may have ended it, as StepCom saw it go out or happen.
-enum class MotionCause { None, Stop, EmergencyStop, LinkLost };
+enum class MotionCause { None, Stop, EmergencyStop, LinkLost, Restarted };
 
 // A motion command as it was acknowledged: which axes it moves and where they should end.
 struct MotionStart

@@ -255,6 +255,19 @@ void MotionSupervisor::conclude(int device, quint64 id, const StatusValues &end)
     Q_EMIT changed();
 }
 
+void MotionSupervisor::restarted(int device)
+{
+    // Judged from the last sample before the restart: the positions after it mean nothing.
+    QList<std::pair<quint64, StatusValues>> open;
+    for (Followed &f : m_devices[device].followed) {
+        f.watch.interrupt(MotionCause::Restarted);
+        open.append({f.id, f.watch.last()});
+    }
+    for (const auto &[id, last] : std::as_const(open))
+        conclude(device, id, last);
+    m_references->loseAll(device, ReferenceTracker::Reason::Restarted);
+}
+
 void MotionSupervisor::onDisconnected()
 {
     m_references->loseEverywhere(ReferenceTracker::Reason::LinkLost);

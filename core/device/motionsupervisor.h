@@ -49,6 +49,9 @@ public:
 
     // The session: `device` acknowledged `key` (it was in view when the command was given).
     void commandAcknowledged(int device, const QString &key);
+    // Controller `device` restarted: every motion followed there ended with it, its references
+    // are gone.
+    void restarted(int device);
     // The session: fresh status of `device` is in (the live poll or the background poll).
     void statusRead(int device, bool ok);
     int view() const { return m_view; }

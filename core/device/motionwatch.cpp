@@ -17,6 +17,8 @@ int rank(MotionCause c)
         return 2;
     case MotionCause::LinkLost:
         return 3;
+    case MotionCause::Restarted:
+        return 4;
     }
     return 0;
 }

@@ -44,6 +44,8 @@ QString ReferenceTracker::textOn(int device, int motor) const
         return tr("not referenced (coordinates zeroed)");
     case Reason::LinkLost:
         return tr("not referenced (link lost)");
+    case Reason::Restarted:
+        return tr("not referenced (the controller restarted)");
     }
     return {};
 }

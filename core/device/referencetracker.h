@@ -24,6 +24,7 @@ public:
         EmergencyStop,
         Zeroed, // "zero the coordinates" moved the zero
         LinkLost,
+        Restarted, // the controller restarted: its position counters began again at 0
     };
     Q_ENUM(Reason)
 

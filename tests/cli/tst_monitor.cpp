@@ -103,10 +103,10 @@ private Q_SLOTS:
         // the simulator's carriages stand at their start, in engineering units
         QCOMPARE(r.lines.first().value("motor1.running").toInt(), 0);
         QCOMPARE(r.lines.first().value("io.out1").toInt(), 0);
-        // At the end, on stderr: the line's counts and the timeout its round trips suggest.
+        // At the end, on stderr: the line's counts, what it learnt and the timeout fitted to it.
         const QRegularExpression summary(
-            QStringLiteral("link: (\\d+) requests, (\\d+) answers; 0 timeouts.*round trips "
-                           "\\d+-\\d+ ms .*suggested timeout \\d+ ms \\(now 500 ms\\)"));
+            QStringLiteral("link: (\\d+) requests, (\\d+) answers; 0 timeouts.*line: answers in "
+                           "\\d+-\\d+ ms \\(median \\d+ ms\\), no echo, timeout \\d+ ms"));
         const QRegularExpressionMatch m = summary.match(r.err);
         QVERIFY2(m.hasMatch(), qPrintable(r.err));
         QVERIFY(m.captured(2).toInt() >= 10); // five samples, two reads each

@@ -210,14 +210,15 @@ private Q_SLOTS:
         field(QStringLiteral("motor1.speed"))->enterText(QStringLiteral("450")); // an edit
         field(QStringLiteral("motor1.move_distance"))->enterText(QStringLiteral("12"));
         // Reaches no controller: files, languages, editing, connecting (which ends the file
-        // editing), and the views of what was recorded or logged.
+        // editing), finding controllers (a scan reads only; connecting from it ends the file
+        // editing too), and the views of what was recorded or logged.
         const QSet<QString> harmless{
             "newProfile", "openProfile", "saveProfile", "saveProfileAs", "closeProfile",
             "compareProfiles", "reportFromProfile", "saveProfileFromEdited", "revert", "quit",
             "about", "userGuide", "whatsThis", "emergencyStopButton", "emergencyStop",
-            "language_en", "language_zh_CN", "connect", "refresh", "pauseButton", "fitButton",
-            "clearTraceButton", "exportPngButton", "exportCsvButton", "recordButton", "previewFit",
-            "previewExport",
+            "language_en", "language_zh_CN", "connect", "scan", "refresh", "pauseButton",
+            "fitButton", "clearTraceButton", "exportPngButton", "exportCsvButton", "recordButton",
+            "previewFit", "previewExport",
             // StepCom's own settings and the checklist file, not the
             // controller: travel limits, the profile beside the
             // checklist, a step skipped

@@ -95,6 +95,7 @@ ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
     connect(m_scan, &QPushButton::clicked, this, [this] { openBusScan(); });
 
     connect(session, &DeviceSession::linkStateChanged, this, &ConnectionPage::updateState);
+    connect(session, &DeviceSession::linkStatsChanged, this, &ConnectionPage::updateLine);
     connect(session->health(), &LinkHealth::stateChanged, this, &ConnectionPage::updateState);
     connect(session, &DeviceSession::connected, this, &ConnectionPage::onConnected);
     connect(session, &DeviceSession::echoSuspected, m_lineBox, &LineOptionsBox::offerEcho);
@@ -205,6 +206,10 @@ void ConnectionPage::buildUi()
     m_status->setObjectName(QStringLiteral("status"));
     m_status->setWordWrap(true);
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse); // errors get copied into tickets
+    m_line = new QLabel(m_statusBox);
+    m_line->setObjectName(QStringLiteral("line"));
+    m_line->setWordWrap(true);
+    m_line->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_connect = newButton(m_statusBox, "connect");
     m_connect->setDefault(true);
     m_disconnect = newButton(m_statusBox, "disconnect");
@@ -220,6 +225,7 @@ void ConnectionPage::buildUi()
     buttons->addWidget(m_scan);
     auto *statusLayout = new QVBoxLayout(m_statusBox);
     statusLayout->addLayout(statusLine);
+    statusLayout->addWidget(m_line);
     statusLayout->addLayout(buttons);
 
     auto *column = new QVBoxLayout;
@@ -566,6 +572,16 @@ void ConnectionPage::updateState()
     }
     m_stateIcon->setVisible(problem);
     m_status->setText(statusText());
+    updateLine();
+}
+
+void ConnectionPage::updateLine()
+{
+    const LinkStats &s = session()->linkStats();
+    const bool shown = session()->isConnected() && s.answers > 0;
+    m_line->setVisible(shown);
+    if (shown)
+        m_line->setText(tr("Line: %1").arg(s.lineText(session()->deviceInView())));
 }
 
 BusScanDialog *ConnectionPage::scanDialog() const

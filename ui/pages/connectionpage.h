@@ -74,6 +74,7 @@ private:
     void loadSettings();
     void updateVisibility();
     void updateState();
+    void updateLine();
     // What the status line says while disconnected; a function, so it follows the language.
     void setNote(bool problem, std::function<QString()> note);
     void onConnected(bool ok, const QString &reason);
@@ -119,6 +120,7 @@ private:
     Led *m_led = nullptr;
     QLabel *m_stateIcon = nullptr;
     QLabel *m_status = nullptr;
+    QLabel *m_line = nullptr; // what the line showed: answer times, echo, the timeout in use
     QPushButton *m_connect = nullptr;
     QPushButton *m_disconnect = nullptr;
     QPushButton *m_scan = nullptr;

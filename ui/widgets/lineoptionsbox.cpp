@@ -110,9 +110,9 @@ void LineOptionsBox::retranslate()
     setTitle(tr("Line and adapter"));
     m_answerDelayLabel->setText(tr("&Answer delay:"));
     m_answerDelay->setToolTip(
-        tr("The controller answers no sooner than this after a request (35 ms by its "
-           "manual); an answer that comes sooner belongs to an older request and is "
-           "discarded"));
+        tr("How long the controller may take to answer (its manual: 35 ms): the least the "
+           "timeout is fitted to. Answers are judged by what they say, however soon they "
+           "come"));
     m_answerDelay->setSuffix(tr(" ms"));
     m_turnaroundLabel->setText(tr("T&urnaround:"));
     m_turnaround->setToolTip(
@@ -121,11 +121,12 @@ void LineOptionsBox::retranslate()
     m_turnaround->setSuffix(tr(" ms"));
     m_echo->setText(tr("The adapter &echoes what it sends"));
     m_echo->setToolTip(tr("For half-duplex USB-RS485 adapters without echo suppression: the "
-                          "request's own bytes are removed before the answer is read"));
+                          "request's own bytes are skipped from the first request on. "
+                          "Without it StepCom finds the echo on the first read"));
     m_offerText->setText(
-        tr("Answers begin with the request's own bytes: this adapter echoes what it sends. "
-           "Turn the echo option on and connect again?"));
-    m_acceptEcho->setText(tr("Turn echo on and reconnect"));
+        tr("This adapter echoes what it sends: StepCom found the request's own bytes before "
+           "the answers and skips them. Remember it for this port?"));
+    m_acceptEcho->setText(tr("Remember echo"));
 }
 
 } // namespace stepcom

@@ -114,19 +114,12 @@ void LinkStatus::refresh()
                               .arg(s.timeouts)
                               .arg(s.crcErrors)
                               .arg(s.exceptions)
-                              .arg(s.stale + s.echoes));
-    // The measured round trips, and the timeout they suggest (a line slower than the setting
-    // times out where it need not; a much faster one waits longer than it need).
-    const int suggested = s.suggestedTimeoutMs();
-    m_errors->setFullToolTip(
-        suggested < 0 ? QString()
-                      : tr("Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms "
-                           "(now %5 ms)")
-                            .arg(s.minRoundTripMs)
-                            .arg(s.maxRoundTripMs)
-                            .arg(s.meanRoundTripMs, 0, 'f', 0)
-                            .arg(suggested)
-                            .arg(m_session->settings().timeoutMs));
+                              .arg(s.stale));
+    // What the line showed: the controller's answer times, echo, the timeout in use.
+    m_errors->setFullToolTip(s.answers == 0 ? QString()
+                                            : tr("Line: %1 (at most %2 ms)")
+                                                  .arg(s.lineText(m_session->settings().deviceId))
+                                                  .arg(m_session->settings().timeoutMs));
     m_unsaved->setText(m_session->parameters()->unsavedToFlash() ? tr("⚠ Not saved to flash")
                                                                  : QString());
     m_unsaved->setToolTip(

@@ -1,0 +1,60 @@
+#pragma once
+
+#include <QHash>
+#include <QObject>
+#include <QStringList>
+
+namespace stepcom {
+
+class RegisterMap;
+
+// Sees that a controller may have restarted (its 24 V switched off and on: a daily event while
+// a machine is commissioned) from what it answers, per device of the line: it answers again
+// after a silence, or its positions went back to 0 with no motion and no command that moves or
+// zeroes them. It only suspects: the session reads everything again and compares with what it
+// held before it says the controller restarted.
+class RestartWatch : public QObject
+{
+    Q_OBJECT
+public:
+    // Unanswered this long, then answering: the controller may have been off.
+    static constexpr qint64 kSilenceMs = 1000;
+    // Zeros this soon after a command that moves or zeroes are that command's (a status read
+    // under way when it went out may still show the values from before it).
+    static constexpr qint64 kCommandWindowMs = 1500;
+
+    explicit RestartWatch(const RegisterMap &map, QObject *parent = nullptr);
+
+    // A status read of `device` ended at `nowMs`: `values` (raw, by key) when it was answered.
+    void statusRead(int device, bool ok, const QHash<QString, qint64> &values, qint64 nowMs);
+    // A command went to `device` after which positions may rightly be 0 (a move, homing,
+    // zeroing, return to zero): the next samples' zeros are its.
+    void commandSent(int device, qint64 nowMs);
+    // The link is gone (or another line): nothing known of any device.
+    void forget();
+
+    // The coils after which positions at 0 are no sign of a restart.
+    bool movesOrZeroes(const QString &coilKey) const;
+
+Q_SIGNALS:
+    // `why`: in words, "it answers again after 3.2 s without an answer"; `positionsReset`: its
+    // positions were not all 0 before and are now, with no command that explains it.
+    void suspected(int device, const QString &why, bool positionsReset);
+
+private:
+    struct Device
+    {
+        qint64 silentSinceMs = -1; // first unanswered read of a silence, -1 answering
+        bool known = false;        // a sample was taken since the last command or silence
+        bool anyNonZero = false;
+        bool running = false;
+        bool commanded = false; // since the last sample
+        qint64 commandedAtMs = -1;
+    };
+
+    QStringList m_positionKeys;
+    QStringList m_runningKeys;
+    QHash<int, Device> m_devices;
+};
+
+} // namespace stepcom

@@ -1,0 +1,209 @@
+// Any controller, any adapter: a controller that answers in 2, 5, 15 or 35 ms, on a modelled
+// wire at 9600 and 38400 baud, with and without an echoing adapter. Every read, write and
+// command works the first time; nothing is taken for an echo that is none; no answer is thrown
+// away as "too soon"; the line learns the answer times and fits its timeout to them.
+#include "bus/modbuslink.h"
+#include "device/devicesession.h"
+#include "device/parameterstore.h"
+#include "device/sessioninternals.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace stepcom;
+
+class TestAnyController : public QObject
+{
+    Q_OBJECT
+
+    std::unique_ptr<SimHost> host;
+    std::unique_ptr<DeviceSession> session;
+    QStringList said;
+
+    ModbusLink *link() const { return SessionInternals::link(*session); }
+
+    bool start(int delayMs, int baud, bool adapterEchoes, bool echoSetting)
+    {
+        SimOptions o;
+        o.rtu = true;
+        o.answerDelayMs = delayMs;
+        o.wireBaud = baud;
+        o.checkBaud = false;
+        o.echo = adapterEchoes;
+        host = std::make_unique<SimHost>();
+        QString error;
+        if (!host->start(o, &error)) {
+            qWarning() << error;
+            return false;
+        }
+        session = std::make_unique<DeviceSession>();
+        said.clear();
+        connect(session.get(), &DeviceSession::message, this,
+                [this](DeviceSession::Severity, const QString &text) { said << text; });
+        LinkSettings s;
+        s.portName = host->rtuPath();
+        s.baud = baud;
+        s.echo = echoSetting;
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->connectTo(s);
+        if (!read.wait(10000) && read.isEmpty())
+            return false;
+        return read.at(0).at(0).toBool();
+    }
+    QString heard() const { return said.join(QLatin1Char('\n')); }
+    bool commandDone(const QString &key)
+    {
+        QSignalSpy done(session.get(), &DeviceSession::commandFinished);
+        if (key == QLatin1String("estop"))
+            session->emergencyStop();
+        else
+            session->command(key);
+        if (!done.wait(8000) && done.isEmpty())
+            return false;
+        return done.at(0).at(0).toString() == key && done.at(0).at(1).toBool();
+    }
+
+private Q_SLOTS:
+    void cleanup()
+    {
+        session.reset();
+        host.reset();
+    }
+
+    void everythingWorksAtEveryAnswerTime_data()
+    {
+        QTest::addColumn<int>("delayMs");
+        QTest::addColumn<int>("baud");
+        for (int baud : {9600, 38400}) {
+            for (int delay : {2, 5, 15, 35})
+                QTest::addRow("%d ms at %d", delay, baud) << delay << baud;
+        }
+    }
+    void everythingWorksAtEveryAnswerTime()
+    {
+        QFETCH(int, delayMs);
+        QFETCH(int, baud);
+        QVERIFY2(start(delayMs, baud, false, false), qPrintable(heard()));
+        SimDevice *sim = host->device();
+        // What was read is what the controller holds.
+        for (const QString &key : {QStringLiteral("motor1.speed"), QStringLiteral("motor2.pitch"),
+                                   QStringLiteral("device.baud")})
+            QCOMPARE(session->parameters()->deviceValue(key), sim->value(key));
+        // A write is confirmed and held.
+        const Parameter *speed = session->map().find(QStringLiteral("motor1.speed"));
+        QSignalSpy wrote(session.get(), &DeviceSession::writeFinished);
+        session->write({{speed, 222}});
+        QVERIFY(wrote.wait(8000));
+        const auto outcome = wrote.at(0).at(0).value<WriteOutcome>();
+        QVERIFY2(outcome.ok, qPrintable(outcome.errors.join(QLatin1Char('\n'))));
+        QCOMPARE(*sim->value(QStringLiteral("motor1.speed")), 222);
+        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.speed")), 222);
+        // Commands, the stops and the E-STOP are acknowledged and done.
+        QVERIFY2(commandDone(QStringLiteral("output1_on")), qPrintable(heard()));
+        QCOMPARE(*sim->value(QStringLiteral("io.out1")), 1);
+        QVERIFY2(commandDone(QStringLiteral("motor1.forward")), qPrintable(heard()));
+        QTRY_VERIFY(sim->running(1));
+        QVERIFY2(commandDone(QStringLiteral("motor1.stop")), qPrintable(heard()));
+        QTRY_VERIFY(!sim->running(1));
+        QVERIFY2(commandDone(QStringLiteral("motor2.forward")), qPrintable(heard()));
+        QTRY_VERIFY(sim->running(2));
+        QVERIFY2(commandDone(QStringLiteral("estop")), qPrintable(heard()));
+        QVERIFY(!sim->running(2));
+        QCOMPARE(*sim->value(QStringLiteral("io.out1")), 0);
+        QVERIFY2(commandDone(QStringLiteral("save_to_flash")), qPrintable(heard()));
+        // Nothing was refused, thrown away or blamed on an echo.
+        const LinkStats &s = link()->stats();
+        QCOMPARE(s.timeouts, quint64(0));
+        QCOMPARE(s.stale, quint64(0));
+        QCOMPARE(s.echo, 0);
+        QVERIFY2(!heard().contains(QLatin1String("echo"), Qt::CaseInsensitive),
+                 qPrintable(heard()));
+        // The line learnt the answer times: the timeout fits them, within its bounds.
+        QVERIFY(s.byUnit.value(1).count >= quint64(ModbusLink::kAdaptAfter));
+        const int timeout = link()->timeoutFor(Request::read(0, 13));
+        QVERIFY2(timeout < 500 && timeout >= 35, qPrintable(QString::number(timeout)));
+        QVERIFY2(s.lineText(1).contains(QLatin1String("no echo")), qPrintable(s.lineText(1)));
+    }
+
+    // An echoing adapter is found on the first read whatever the setting, and from then on a
+    // command's copy is skipped and its answer taken; a wrong "echoes" setting corrects itself.
+    void echoIsLearntFromWhatCannotBeAnAnswer_data()
+    {
+        QTest::addColumn<int>("delayMs");
+        QTest::addColumn<bool>("adapterEchoes");
+        QTest::addColumn<bool>("echoSetting");
+        for (int delay : {2, 35}) {
+            QTest::addRow("%d ms, echo, option off", delay) << delay << true << false;
+            QTest::addRow("%d ms, echo, option on", delay) << delay << true << true;
+            QTest::addRow("%d ms, no echo, option on", delay) << delay << false << true;
+        }
+    }
+    void echoIsLearntFromWhatCannotBeAnAnswer()
+    {
+        QFETCH(int, delayMs);
+        QFETCH(bool, adapterEchoes);
+        QFETCH(bool, echoSetting);
+        QVERIFY2(start(delayMs, 9600, adapterEchoes, echoSetting), qPrintable(heard()));
+        QCOMPARE(link()->stats().echo, adapterEchoes ? 1 : 0);
+        SimDevice *sim = host->device();
+        QVERIFY(sim->command(QStringLiteral("motor1.forward")));
+        QTRY_VERIFY(sim->running(1));
+        QVERIFY2(commandDone(QStringLiteral("estop")), qPrintable(heard()));
+        QVERIFY(!sim->running(1));
+        const Parameter *speed = session->map().find(QStringLiteral("motor2.speed"));
+        QSignalSpy wrote(session.get(), &DeviceSession::writeFinished);
+        session->write({{speed, 150}});
+        QVERIFY(wrote.wait(8000));
+        QVERIFY(wrote.at(0).at(0).value<WriteOutcome>().ok);
+        QCOMPARE(*sim->value(QStringLiteral("motor2.speed")), 150);
+        QCOMPARE(link()->stats().timeouts, quint64(0));
+    }
+
+    // The first request on a line whose echo is not known yet is a command: the copy is taken
+    // for its answer (it may be one), the second copy shows the echo, and nothing is lost.
+    void aCommandFirstLearnsTheEchoFromItsSecondCopy()
+    {
+        SimOptions o;
+        o.rtu = true;
+        o.answerDelayMs = 5;
+        o.echo = true;
+        host = std::make_unique<SimHost>();
+        QString error;
+        QVERIFY2(host->start(o, &error), qPrintable(error));
+        auto l = std::make_unique<ModbusLink>();
+        QSignalSpy opened(l.get(), &ModbusLink::opened);
+        QSignalSpy echo(l.get(), &ModbusLink::echoDetected);
+        LinkSettings s;
+        s.portName = host->rtuPath();
+        l->open(s);
+        QVERIFY(opened.wait(5000) || !opened.isEmpty());
+        QVERIFY(opened.at(0).at(0).toBool());
+        bool done = false;
+        Result r;
+        Request on = Request::coil(48, true);
+        on.retryable = false;
+        l->submit(on, [&](const Result &result) {
+            done = true;
+            r = result;
+        });
+        QTRY_VERIFY(done);
+        QVERIFY2(r.ok, qPrintable(r.errorText));
+        QCOMPARE(*host->device()->value(QStringLiteral("io.out1")), 1);
+        QTRY_COMPARE(echo.size(), 1);
+        QCOMPARE(l->stats().echo, 1);
+        done = false;
+        l->submit(Request::read(5, 1), [&](const Result &result) {
+            done = true;
+            r = result;
+        });
+        QTRY_VERIFY(done);
+        QVERIFY2(r.ok, qPrintable(r.errorText));
+        QCOMPARE(r.values.size(), 1);
+        l.reset();
+    }
+};
+
+QTEST_GUILESS_MAIN(TestAnyController)
+#include "tst_anycontroller.moc"
