@@ -60,6 +60,9 @@ struct SimOptions
     double travel = 200;       // travel of every axis, distance units
     double startPosition = 50; // where the carriages stand at power-up
     QList<std::pair<int, SimMachine::InputForce>> inputs; // inputs set at start
+    // The 24 V supply of every controller switched off (ms after start, ms off): --power-cycle.
+    // The start counts on the host's event loop, the time off on the device's clock.
+    QList<std::pair<int, int>> powerCycles;
 };
 
 } // namespace stepcom

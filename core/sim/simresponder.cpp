@@ -25,7 +25,7 @@ QList<SimDevice *> SimResponder::devicesAt(int unit) const
 {
     QList<SimDevice *> found;
     for (SimDevice *d : m_devices)
-        if (unit == 0 || d->deviceId() == unit)
+        if ((unit == 0 || d->deviceId() == unit) && !d->isPoweredOff())
             found.append(d);
     return found;
 }

@@ -52,7 +52,8 @@ public:
     // The first controller on the line.
     SimDevice *device() const { return m_devices.first(); }
     const QList<SimDevice *> &devices() const { return m_devices; }
-    // The controllers that currently have this id (more than one: a collision).
+    // The powered controllers that currently have this id (more than one: a collision); one
+    // switched off hears nothing.
     QList<SimDevice *> devicesAt(int unit) const;
     bool hasDevice(int unit) const { return !devicesAt(unit).isEmpty(); }
     Counters &counters() { return m_counters; }

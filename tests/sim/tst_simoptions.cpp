@@ -44,6 +44,8 @@ private Q_SLOTS:
                         QStringLiteral("--input"),        QStringLiteral("4=pulse"),
                         QStringLiteral("--wire-baud"),    QStringLiteral("9600"),
                         QStringLiteral("--answer-delay"), QStringLiteral("50"),
+                        QStringLiteral("--power-cycle"),  QStringLiteral("10:3"),
+                        QStringLiteral("--power-cycle"),  QStringLiteral("2.5:0.25"),
                         QStringLiteral("--strict-reads")},
                        &o, &error),
                  qPrintable(error));
@@ -67,6 +69,7 @@ private Q_SLOTS:
         QCOMPARE(o.inputs.size(), 2);
         QCOMPARE(o.inputs.at(0).first, 3);
         QCOMPARE(o.inputs.at(1).second, SimMachine::InputForce::Pulse);
+        QCOMPARE(o.powerCycles, (QList<std::pair<int, int>>{{10000, 3000}, {2500, 250}}));
 
         SimOptions any;
         QVERIFY(
@@ -97,6 +100,14 @@ private Q_SLOTS:
                                << "--input";
         QTest::newRow("exception code")
             << QStringList{QStringLiteral("--exception"), QStringLiteral("0.5:0")} << "--exception";
+        const auto cycle = [](const char *v) {
+            return QStringList{QStringLiteral("--power-cycle"), QLatin1String(v)};
+        };
+        QTest::newRow("power cycle without off") << cycle("3") << "--power-cycle: '3'";
+        QTest::newRow("power cycle, 0 s off") << cycle("3:0") << "--power-cycle: '3:0'";
+        QTest::newRow("power cycle, negative") << cycle("-1:3") << "--power-cycle: '-1:3'";
+        QTest::newRow("power cycle, words") << cycle("soon:3") << "--power-cycle: 'soon:3'";
+        QTest::newRow("power cycle, three") << cycle("1:2:3") << "--power-cycle: '1:2:3'";
         QTest::newRow("map") << QStringList{QStringLiteral("--map"),
                                             QStringLiteral("/nonexistent.json")}
                              << "nonexistent";
