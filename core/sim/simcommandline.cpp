@@ -74,7 +74,14 @@ void SimCommandLine::addOptions(QCommandLineParser &p)
     p.addOption({QStringLiteral("map"),
                  tr("Use the register map FILE instead of the built-in one."), tr("FILE")});
     p.addOption({QStringLiteral("answer-delay"),
-                 tr("Answer no sooner than MS after a request (default: the map's, 35)."), ms});
+                 tr("The controller's answer time: MS after a request (default: the map's, 35, "
+                    "as the manual asks; 0 answers as fast as it can, as firmware that answers "
+                    "in 2-20 ms)."),
+                 ms});
+    p.addOption({QStringLiteral("slow-coil"),
+                 tr("Coil PLC (e.g. 96, save) acts at once but answers MS later, as firmware "
+                    "writing its flash first. Repeatable."),
+                 tr("PLC:MS")});
     p.addOption({QStringLiteral("power-cycle"),
                  tr("Switch the 24 V off AT seconds after start for OFF seconds: silence, then "
                     "the saved parameters, positions 0, nothing homed. Repeatable."),
@@ -152,6 +159,28 @@ std::optional<std::pair<int, int>> SimCommandLine::parsePowerCycle(const QString
         return std::nullopt;
     }
     return std::make_pair(*at, *off);
+}
+
+std::optional<std::pair<int, int>>
+SimCommandLine::parseSlowCoil(const RegisterMap &map, const QString &text, QString *error)
+{
+    const QStringList parts = text.split(QLatin1Char(':'));
+    int plc = 0;
+    int ms = 0;
+    if (parts.size() != 2 || !toInt(parts.at(0), 1, 0x10000, &plc) ||
+        !toInt(parts.at(1), 0, 600000, &ms)) {
+        if (error)
+            *error = tr("--slow-coil: '%1' is not PLC:MS (a coil number such as 96 and "
+                        "milliseconds 0-600000)")
+                         .arg(text);
+        return std::nullopt;
+    }
+    if (!map.coilAt(quint16(plc - 1))) {
+        if (error)
+            *error = tr("--slow-coil: '%1': %2 is no coil of the map").arg(text).arg(plc);
+        return std::nullopt;
+    }
+    return std::make_pair(plc, ms);
 }
 
 std::optional<std::pair<int, SimMachine::InputForce>>
@@ -288,6 +317,12 @@ bool SimCommandLine::toOptions(const QCommandLineParser &p, SimOptions *o, QStri
         if (!input)
             return false;
         o->inputs.append(*input);
+    }
+    for (const QString &text : p.values(QStringLiteral("slow-coil"))) {
+        const auto slow = parseSlowCoil(o->map, text, error);
+        if (!slow)
+            return false;
+        o->slowCoils.insert(slow->first, slow->second);
     }
     for (const QString &text : p.values(QStringLiteral("power-cycle"))) {
         const auto cycle = parsePowerCycle(text, error);
