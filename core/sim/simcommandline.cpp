@@ -74,9 +74,9 @@ void SimCommandLine::addOptions(QCommandLineParser &p)
     p.addOption({QStringLiteral("map"),
                  tr("Use the register map FILE instead of the built-in one."), tr("FILE")});
     p.addOption({QStringLiteral("answer-delay"),
-                 tr("The controller's answer time: MS after a request (default: the map's, 35, "
-                    "as the manual asks; 0 answers as fast as it can, as firmware that answers "
-                    "in 2-20 ms)."),
+                 tr("The controller's answer time: its answer leaves MS after a request "
+                    "(default: the map's, 35, as the manual asks; other firmware answers in "
+                    "2-20 ms; 0: as fast as it can)."),
                  ms});
     p.addOption({QStringLiteral("slow-coil"),
                  tr("Coil PLC (e.g. 96, save) acts at once but answers MS later, as firmware "
