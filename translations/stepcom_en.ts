@@ -6925,10 +6925,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Use the register map FILE instead of the built-in one.</translation>
     </message>
     <message>
-        <source>Answer no sooner than MS after a request (default: the map&apos;s, 35).</source>
-        <translation>Answer no sooner than MS after a request (default: the map&apos;s, 35).</translation>
-    </message>
-    <message>
         <source>Add the bytes&apos; time on a line at N baud to every answer.</source>
         <translation>Add the bytes&apos; time on a line at N baud to every answer.</translation>
     </message>
@@ -7064,31 +7060,41 @@ Every other master on the bus must use the new settings too, and no other device
         <source>REGISTER</source>
         <translation>REGISTER</translation>
     </message>
+    <message>
+        <source>The controller&apos;s answer time: its answer leaves MS after a request (default: the map&apos;s, 35, as the manual asks; other firmware answers in 2-20 ms; 0: as fast as it can).</source>
+        <translation>The controller&apos;s answer time: its answer leaves MS after a request (default: the map&apos;s, 35, as the manual asks; other firmware answers in 2-20 ms; 0: as fast as it can).</translation>
+    </message>
+    <message>
+        <source>Coil PLC (e.g. 96, save) acts at once but answers MS later, as firmware writing its flash first. Repeatable.</source>
+        <translation>Coil PLC (e.g. 96, save) acts at once but answers MS later, as firmware writing its flash first. Repeatable.</translation>
+    </message>
+    <message>
+        <source>PLC:MS</source>
+        <translation>PLC:MS</translation>
+    </message>
+    <message>
+        <source>Switch the 24 V off AT seconds after start for OFF seconds: silence, then the saved parameters, positions 0, nothing homed. Repeatable.</source>
+        <translation>Switch the 24 V off AT seconds after start for OFF seconds: silence, then the saved parameters, positions 0, nothing homed. Repeatable.</translation>
+    </message>
+    <message>
+        <source>AT:OFF</source>
+        <translation>AT:OFF</translation>
+    </message>
+    <message>
+        <source>--power-cycle: &apos;%1&apos; is not AT:OFF (seconds after start, 0-86400, and seconds off, up to 3600; e.g. 10:3)</source>
+        <translation>--power-cycle: &apos;%1&apos; is not AT:OFF (seconds after start, 0-86400, and seconds off, up to 3600; e.g. 10:3)</translation>
+    </message>
+    <message>
+        <source>--slow-coil: &apos;%1&apos; is not PLC:MS (a coil number such as 96 and milliseconds 0-600000)</source>
+        <translation>--slow-coil: &apos;%1&apos; is not PLC:MS (a coil number such as 96 and milliseconds 0-600000)</translation>
+    </message>
+    <message>
+        <source>--slow-coil: &apos;%1&apos;: %2 is no coil of the map</source>
+        <translation>--slow-coil: &apos;%1&apos;: %2 is no coil of the map</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimConsole</name>
-    <message>
-        <source>Commands:
-  status                 motors, inputs, outputs, link and traffic
-  in N on|off|pulse      drive input N by hand (pulse: on for 50 ms)
-  get KEY                show a register (e.g. get motor1.position)
-  set KEY VALUE          write a parameter as a client would (e.g. set motor1.speed 600)
-  do COMMAND             run a coil command (e.g. do motor1.move, do estop)
-  place N MM             put carriage N at MM on its travel by hand
-  hangup [MS]            hang up the port; it comes back after MS
-  help                   this text
-  quit                   end the simulator</source>
-        <translation>Commands:
-  status                 motors, inputs, outputs, link and traffic
-  in N on|off|pulse      drive input N by hand (pulse: on for 50 ms)
-  get KEY                show a register (e.g. get motor1.position)
-  set KEY VALUE          write a parameter as a client would (e.g. set motor1.speed 600)
-  do COMMAND             run a coil command (e.g. do motor1.move, do estop)
-  place N MM             put carriage N at MM on its travel by hand
-  hangup [MS]            hang up the port; it comes back after MS
-  help                   this text
-  quit                   end the simulator</translation>
-    </message>
     <message>
         <source>the simulator is not running</source>
         <translation>the simulator is not running</translation>
@@ -7169,6 +7175,50 @@ Every other master on the bus must use the new settings too, and no other device
         <source>requests %1, answers %2 (exceptions %3), dropped %4, bad CRC %5, late %6, wrong baud %7</source>
         <translation>requests %1, answers %2 (exceptions %3), dropped %4, bad CRC %5, late %6, wrong baud %7</translation>
     </message>
+    <message>
+        <source>Commands:
+  status                 motors, inputs, outputs, link and traffic
+  in N on|off|pulse      drive input N by hand (pulse: on for 50 ms)
+  get KEY                show a register (e.g. get motor1.position)
+  set KEY VALUE          write a parameter as a client would (e.g. set motor1.speed 600)
+  do COMMAND             run a coil command (e.g. do motor1.move, do estop)
+  place N MM             put carriage N at MM on its travel by hand
+  hangup [MS]            hang up the port; it comes back after MS
+  power-cycle [S] [id N] switch the 24 V off for S seconds (default 3), every
+                         controller or the one with id N; it comes back with what
+                         was saved, positions 0, nothing homed
+  help                   this text
+  quit                   end the simulator</source>
+        <translation>Commands:
+  status                 motors, inputs, outputs, link and traffic
+  in N on|off|pulse      drive input N by hand (pulse: on for 50 ms)
+  get KEY                show a register (e.g. get motor1.position)
+  set KEY VALUE          write a parameter as a client would (e.g. set motor1.speed 600)
+  do COMMAND             run a coil command (e.g. do motor1.move, do estop)
+  place N MM             put carriage N at MM on its travel by hand
+  hangup [MS]            hang up the port; it comes back after MS
+  power-cycle [S] [id N] switch the 24 V off for S seconds (default 3), every
+                         controller or the one with id N; it comes back with what
+                         was saved, positions 0, nothing homed
+  help                   this text
+  quit                   end the simulator</translation>
+    </message>
+    <message>
+        <source>usage: power-cycle [SECONDS] [id N]</source>
+        <translation>usage: power-cycle [SECONDS] [id N]</translation>
+    </message>
+    <message>
+        <source>no controller has id %1</source>
+        <translation>no controller has id %1</translation>
+    </message>
+    <message>
+        <source>id %1: 24 V off for %2 s</source>
+        <translation>id %1: 24 V off for %2 s</translation>
+    </message>
+    <message>
+        <source>24 V off for %1 s</source>
+        <translation>24 V off for %1 s</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimDevice</name>
@@ -7208,12 +7258,28 @@ Every other master on the bus must use the new settings too, and no other device
         <source>outputs:%1</source>
         <translation>outputs:%1</translation>
     </message>
+    <message>
+        <source>the controller is switched off</source>
+        <translation>the controller is switched off</translation>
+    </message>
+    <message>
+        <source>24 V off: power returns in %1 ms</source>
+        <translation>24 V off: power returns in %1 ms</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimHost</name>
     <message>
         <source>--lacks: %1 is no listed register of the map</source>
         <translation>--lacks: %1 is no listed register of the map</translation>
+    </message>
+    <message>
+        <source>power cycle: 24 V off for %1 s</source>
+        <translation>power cycle: 24 V off for %1 s</translation>
+    </message>
+    <message>
+        <source>power cycle: 24 V back on</source>
+        <translation>power cycle: 24 V back on</translation>
     </message>
 </context>
 <context>

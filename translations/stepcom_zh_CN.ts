@@ -6877,10 +6877,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>使用指定的寄存器映射文件代替内置映射。</translation>
     </message>
     <message>
-        <source>Answer no sooner than MS after a request (default: the map&apos;s, 35).</source>
-        <translation>收到请求后至少经过指定的毫秒数才应答（默认：寄存器映射中的值，35）。</translation>
-    </message>
-    <message>
         <source>Add the bytes&apos; time on a line at N baud to every answer.</source>
         <translation>在每个应答上加上这些字节在波特率为 N 的线路上的传输时间。</translation>
     </message>
@@ -7016,31 +7012,41 @@ Every other master on the bus must use the new settings too, and no other device
         <source>REGISTER</source>
         <translation>寄存器</translation>
     </message>
+    <message>
+        <source>The controller&apos;s answer time: its answer leaves MS after a request (default: the map&apos;s, 35, as the manual asks; other firmware answers in 2-20 ms; 0: as fast as it can).</source>
+        <translation>控制器的应答时间：收到请求后经过指定的毫秒数发出应答（默认：寄存器映射中的值，35，即说明书的要求；其他固件在 2-20 ms 内应答；0：尽快应答）。</translation>
+    </message>
+    <message>
+        <source>Coil PLC (e.g. 96, save) acts at once but answers MS later, as firmware writing its flash first. Repeatable.</source>
+        <translation>线圈 PLC（例如 96，保存参数）立即执行，但应答推迟指定的毫秒数，如同先写闪存再应答的固件。可重复。</translation>
+    </message>
+    <message>
+        <source>PLC:MS</source>
+        <translation>PLC:毫秒</translation>
+    </message>
+    <message>
+        <source>Switch the 24 V off AT seconds after start for OFF seconds: silence, then the saved parameters, positions 0, nothing homed. Repeatable.</source>
+        <translation>启动后 AT 秒切断 24 V 电源，持续 OFF 秒：期间不应答，之后恢复为已保存的参数，坐标为 0，均未回原点。可重复。</translation>
+    </message>
+    <message>
+        <source>AT:OFF</source>
+        <translation>AT:OFF</translation>
+    </message>
+    <message>
+        <source>--power-cycle: &apos;%1&apos; is not AT:OFF (seconds after start, 0-86400, and seconds off, up to 3600; e.g. 10:3)</source>
+        <translation>--power-cycle：“%1”不符合 AT:OFF 格式（启动后的秒数 0-86400，断电秒数最多 3600；例如 10:3）</translation>
+    </message>
+    <message>
+        <source>--slow-coil: &apos;%1&apos; is not PLC:MS (a coil number such as 96 and milliseconds 0-600000)</source>
+        <translation>--slow-coil：“%1”不符合 PLC:毫秒 格式（线圈编号如 96，毫秒数 0-600000）</translation>
+    </message>
+    <message>
+        <source>--slow-coil: &apos;%1&apos;: %2 is no coil of the map</source>
+        <translation>--slow-coil：“%1”：%2 不是寄存器表中的线圈</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimConsole</name>
-    <message>
-        <source>Commands:
-  status                 motors, inputs, outputs, link and traffic
-  in N on|off|pulse      drive input N by hand (pulse: on for 50 ms)
-  get KEY                show a register (e.g. get motor1.position)
-  set KEY VALUE          write a parameter as a client would (e.g. set motor1.speed 600)
-  do COMMAND             run a coil command (e.g. do motor1.move, do estop)
-  place N MM             put carriage N at MM on its travel by hand
-  hangup [MS]            hang up the port; it comes back after MS
-  help                   this text
-  quit                   end the simulator</source>
-        <translation>命令：
-  status                 电机、输入、输出、连接和通信统计
-  in N on|off|pulse      手动控制输入 N（pulse：接通 50 ms）
-  get 键名               显示寄存器（例如 get motor1.position）
-  set 键名 值            像客户端一样写入参数（例如 set motor1.speed 600）
-  do 命令                执行线圈命令（例如 do motor1.move、do estop）
-  place N 位置           手动将滑台 N 放到其行程上的指定位置（mm）
-  hangup [毫秒]          挂断端口；经过指定毫秒数后恢复
-  help                   显示本帮助
-  quit                   退出仿真器</translation>
-    </message>
     <message>
         <source>the simulator is not running</source>
         <translation>仿真器未运行</translation>
@@ -7121,6 +7127,50 @@ Every other master on the bus must use the new settings too, and no other device
         <source>requests %1, answers %2 (exceptions %3), dropped %4, bad CRC %5, late %6, wrong baud %7</source>
         <translation>请求 %1，应答 %2（异常 %3），丢弃 %4，CRC 错误 %5，延迟 %6，波特率不符 %7</translation>
     </message>
+    <message>
+        <source>Commands:
+  status                 motors, inputs, outputs, link and traffic
+  in N on|off|pulse      drive input N by hand (pulse: on for 50 ms)
+  get KEY                show a register (e.g. get motor1.position)
+  set KEY VALUE          write a parameter as a client would (e.g. set motor1.speed 600)
+  do COMMAND             run a coil command (e.g. do motor1.move, do estop)
+  place N MM             put carriage N at MM on its travel by hand
+  hangup [MS]            hang up the port; it comes back after MS
+  power-cycle [S] [id N] switch the 24 V off for S seconds (default 3), every
+                         controller or the one with id N; it comes back with what
+                         was saved, positions 0, nothing homed
+  help                   this text
+  quit                   end the simulator</source>
+        <translation>命令：
+  status                 电机、输入、输出、连接和通信统计
+  in N on|off|pulse      手动控制输入 N（pulse：接通 50 ms）
+  get 键名               显示寄存器（例如 get motor1.position）
+  set 键名 值            像客户端一样写入参数（例如 set motor1.speed 600）
+  do 命令                执行线圈命令（例如 do motor1.move、do estop）
+  place N 位置           手动将滑台 N 放到其行程上的指定位置（mm）
+  hangup [毫秒]          挂断端口；经过指定毫秒数后恢复
+  power-cycle [秒] [id N] 切断 24 V 电源指定秒数（默认 3），作用于所有控制器
+                         或 ID 为 N 的控制器；恢复后为已保存的参数，坐标为 0，
+                         均未回原点
+  help                   显示本帮助
+  quit                   退出仿真器</translation>
+    </message>
+    <message>
+        <source>usage: power-cycle [SECONDS] [id N]</source>
+        <translation>用法：power-cycle [秒] [id N]</translation>
+    </message>
+    <message>
+        <source>no controller has id %1</source>
+        <translation>没有 ID 为 %1 的控制器</translation>
+    </message>
+    <message>
+        <source>id %1: 24 V off for %2 s</source>
+        <translation>ID %1：24 V 断电 %2 秒</translation>
+    </message>
+    <message>
+        <source>24 V off for %1 s</source>
+        <translation>24 V 断电 %1 秒</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimDevice</name>
@@ -7160,12 +7210,28 @@ Every other master on the bus must use the new settings too, and no other device
         <source>outputs:%1</source>
         <translation>输出:%1</translation>
     </message>
+    <message>
+        <source>the controller is switched off</source>
+        <translation>控制器已断电</translation>
+    </message>
+    <message>
+        <source>24 V off: power returns in %1 ms</source>
+        <translation>24 V 已断电：%1 ms 后恢复供电</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimHost</name>
     <message>
         <source>--lacks: %1 is no listed register of the map</source>
         <translation>--lacks：%1 不是寄存器表中列出的寄存器</translation>
+    </message>
+    <message>
+        <source>power cycle: 24 V off for %1 s</source>
+        <translation>断电重启：24 V 断电 %1 秒</translation>
+    </message>
+    <message>
+        <source>power cycle: 24 V back on</source>
+        <translation>断电重启：24 V 已恢复供电</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,8 @@
 #include <QCoreApplication>
 #include <QRegularExpression>
 
+#include <cmath>
+
 namespace stepcom {
 
 namespace {
@@ -72,7 +74,18 @@ void SimCommandLine::addOptions(QCommandLineParser &p)
     p.addOption({QStringLiteral("map"),
                  tr("Use the register map FILE instead of the built-in one."), tr("FILE")});
     p.addOption({QStringLiteral("answer-delay"),
-                 tr("Answer no sooner than MS after a request (default: the map's, 35)."), ms});
+                 tr("The controller's answer time: its answer leaves MS after a request "
+                    "(default: the map's, 35, as the manual asks; other firmware answers in "
+                    "2-20 ms; 0: as fast as it can)."),
+                 ms});
+    p.addOption({QStringLiteral("slow-coil"),
+                 tr("Coil PLC (e.g. 96, save) acts at once but answers MS later, as firmware "
+                    "writing its flash first. Repeatable."),
+                 tr("PLC:MS")});
+    p.addOption({QStringLiteral("power-cycle"),
+                 tr("Switch the 24 V off AT seconds after start for OFF seconds: silence, then "
+                    "the saved parameters, positions 0, nothing homed. Repeatable."),
+                 tr("AT:OFF")});
     p.addOption({QStringLiteral("wire-baud"),
                  tr("Add the bytes' time on a line at N baud to every answer."), n});
     p.addOption({QStringLiteral("drop"), tr("Drop a SHARE (0-1 or %) of the answers."), share});
@@ -118,6 +131,56 @@ bool SimCommandLine::parseTcp(const QString &text, QHostAddress *address, quint1
         *address = a;
     *port = quint16(p);
     return true;
+}
+
+std::optional<int> SimCommandLine::parseSeconds(const QString &text, int minMs, int maxMs)
+{
+    bool ok = false;
+    const double seconds = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(seconds))
+        return std::nullopt;
+    const double ms = std::round(seconds * 1000.0);
+    if (ms < minMs || ms > maxMs)
+        return std::nullopt;
+    return int(ms);
+}
+
+std::optional<std::pair<int, int>> SimCommandLine::parsePowerCycle(const QString &text,
+                                                                   QString *error)
+{
+    const QStringList parts = text.split(QLatin1Char(':'));
+    const auto at = parseSeconds(parts.value(0), 0, 86400 * 1000);
+    const auto off = parseSeconds(parts.value(1), 1, 3600 * 1000);
+    if (parts.size() != 2 || !at || !off) {
+        if (error)
+            *error = tr("--power-cycle: '%1' is not AT:OFF (seconds after start, 0-86400, and "
+                        "seconds off, up to 3600; e.g. 10:3)")
+                         .arg(text);
+        return std::nullopt;
+    }
+    return std::make_pair(*at, *off);
+}
+
+std::optional<std::pair<int, int>>
+SimCommandLine::parseSlowCoil(const RegisterMap &map, const QString &text, QString *error)
+{
+    const QStringList parts = text.split(QLatin1Char(':'));
+    int plc = 0;
+    int ms = 0;
+    if (parts.size() != 2 || !toInt(parts.at(0), 1, 0x10000, &plc) ||
+        !toInt(parts.at(1), 0, 600000, &ms)) {
+        if (error)
+            *error = tr("--slow-coil: '%1' is not PLC:MS (a coil number such as 96 and "
+                        "milliseconds 0-600000)")
+                         .arg(text);
+        return std::nullopt;
+    }
+    if (!map.coilAt(quint16(plc - 1))) {
+        if (error)
+            *error = tr("--slow-coil: '%1': %2 is no coil of the map").arg(text).arg(plc);
+        return std::nullopt;
+    }
+    return std::make_pair(plc, ms);
 }
 
 std::optional<std::pair<int, SimMachine::InputForce>>
@@ -254,6 +317,18 @@ bool SimCommandLine::toOptions(const QCommandLineParser &p, SimOptions *o, QStri
         if (!input)
             return false;
         o->inputs.append(*input);
+    }
+    for (const QString &text : p.values(QStringLiteral("slow-coil"))) {
+        const auto slow = parseSlowCoil(o->map, text, error);
+        if (!slow)
+            return false;
+        o->slowCoils.insert(slow->first, slow->second);
+    }
+    for (const QString &text : p.values(QStringLiteral("power-cycle"))) {
+        const auto cycle = parsePowerCycle(text, error);
+        if (!cycle)
+            return false;
+        o->powerCycles.append(*cycle);
     }
     return true;
 }

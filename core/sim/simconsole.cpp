@@ -23,6 +23,9 @@ QString SimConsole::help()
         "  do COMMAND             run a coil command (e.g. do motor1.move, do estop)\n"
         "  place N MM             put carriage N at MM on its travel by hand\n"
         "  hangup [MS]            hang up the port; it comes back after MS\n"
+        "  power-cycle [S] [id N] switch the 24 V off for S seconds (default 3), every\n"
+        "                         controller or the one with id N; it comes back with what\n"
+        "                         was saved, positions 0, nothing homed\n"
         "  help                   this text\n"
         "  quit                   end the simulator");
 }
@@ -53,6 +56,8 @@ SimConsole::Result SimConsole::execute(const QString &line)
         return run(args);
     if (cmd == QLatin1String("place"))
         return place(args);
+    if (cmd == QLatin1String("power-cycle") || cmd == QLatin1String("powercycle"))
+        return powerCycle(args);
     if (cmd == QLatin1String("hangup")) {
         bool ok = true;
         const int ms = args.isEmpty() ? -1 : args.first().toInt(&ok);
@@ -127,6 +132,33 @@ SimConsole::Result SimConsole::place(const QStringList &args)
         return {tr("usage: place N MM"), false};
     d->setMachinePosition(motor, mm);
     return {tr("carriage %1 at %2").arg(motor).arg(d->machinePosition(motor), 0, 'f', 2)};
+}
+
+SimConsole::Result SimConsole::powerCycle(const QStringList &args)
+{
+    const Result usage{tr("usage: power-cycle [SECONDS] [id N]"), false};
+    QStringList rest = args;
+    int ms = 3000;
+    if (!rest.isEmpty() && rest.first().toLower() != QLatin1String("id")) {
+        const auto seconds = SimCommandLine::parseSeconds(rest.takeFirst(), 1, 3600 * 1000);
+        if (!seconds)
+            return usage;
+        ms = *seconds;
+    }
+    int id = 0;
+    if (!rest.isEmpty()) {
+        bool ok = false;
+        id = rest.value(1).toInt(&ok);
+        if (rest.size() != 2 || rest.first().toLower() != QLatin1String("id") || !ok || id < 1 ||
+            id > 255)
+            return usage;
+    }
+    if (!m_host->powerCycle(ms, id))
+        return {tr("no controller has id %1").arg(id), false};
+    const QString seconds = QString::number(ms / 1000.0);
+    if (id != 0)
+        return {tr("id %1: 24 V off for %2 s").arg(id).arg(seconds)};
+    return {tr("24 V off for %1 s").arg(seconds)};
 }
 
 SimConsole::Result SimConsole::status() const

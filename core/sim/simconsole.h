@@ -8,7 +8,7 @@ namespace stepcom {
 class SimHost;
 
 // The simulator's console: one command line in, text out. Drives the inputs by hand, shows
-// the state, writes parameters, runs commands, hangs up the port.
+// the state, writes parameters, runs commands, hangs up the port, switches the power off.
 class SimConsole
 {
     Q_DECLARE_TR_FUNCTIONS(stepcom::SimConsole)
@@ -30,6 +30,7 @@ private:
     Result get(const QStringList &args);
     Result run(const QStringList &args);
     Result place(const QStringList &args);
+    Result powerCycle(const QStringList &args);
     Result status() const;
 
     SimHost *m_host;

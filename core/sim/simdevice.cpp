@@ -8,6 +8,8 @@
 #include <QMutexLocker>
 #include <QRegularExpression>
 
+#include <algorithm>
+
 namespace stepcom {
 
 namespace {
@@ -28,13 +30,65 @@ SimDevice::SimDevice(const RegisterMap &map)
 
 void SimDevice::sync() const
 {
-    if (!m_clock)
-        return;
-    const qint64 t = m_clock();
-    if (t > m_clockSeen) {
-        m_machine.advance(t - m_clockSeen);
-        m_clockSeen = t;
+    qint64 ms = 0;
+    if (m_clock) {
+        const qint64 t = m_clock();
+        if (t > m_clockSeen) {
+            ms = t - m_clockSeen;
+            m_clockSeen = t;
+        }
     }
+    run(ms);
+}
+
+void SimDevice::run(qint64 ms) const
+{
+    if (m_poweredOff) {
+        const qint64 dark = std::clamp(m_powerOnAt - m_machine.now(), qint64(0), ms);
+        if (dark > 0)
+            m_machine.advance(dark);
+        ms -= dark;
+        if (m_machine.now() < m_powerOnAt)
+            return;
+        powerUp();
+    }
+    if (ms > 0)
+        m_machine.advance(ms);
+}
+
+void SimDevice::powerUp() const
+{
+    const qint64 id = m_regs.raw(QStringLiteral("device.id"), 1);
+    const qint64 baud = m_regs.raw(QStringLiteral("device.baud"), 9600);
+    m_poweredOff = false;
+    // Flash holds only values the map allowed when they were saved: nothing to report.
+    m_regs.applyValues(m_flash);
+    m_machine.powerUp();
+    const bool linkChanged = id != m_regs.raw(QStringLiteral("device.id"), 1) ||
+                             baud != m_regs.raw(QStringLiteral("device.baud"), 9600);
+    if (linkChanged && m_linkObserver)
+        m_linkObserver();
+}
+
+void SimDevice::powerCycle(qint64 offMs)
+{
+    QMutexLocker lock(&m_mutex);
+    sync();
+    m_poweredOff = true;
+    m_powerOnAt = m_machine.now() + std::max(qint64(0), offMs);
+    m_machine.powerDown();
+}
+
+bool SimDevice::isPoweredOff() const
+{
+    QMutexLocker lock(&m_mutex);
+    sync();
+    return m_poweredOff;
+}
+
+QString SimDevice::offError() const
+{
+    return tr("the controller is switched off");
 }
 
 void SimDevice::setClock(Clock clock)
@@ -48,7 +102,7 @@ void SimDevice::advance(qint64 ms)
 {
     QMutexLocker lock(&m_mutex);
     sync();
-    m_machine.advance(ms);
+    run(ms);
 }
 
 qint64 SimDevice::now() const
@@ -62,6 +116,8 @@ SimAnswer SimDevice::handle(const QModbusRequest &request)
 {
     QMutexLocker lock(&m_mutex);
     sync();
+    if (m_poweredOff)
+        return {}; // no power, no answer
     m_linkChanged = false;
     SimProtocol protocol(m_regs,
                          {[this](const QList<SimProtocol::Write> &w) { applyWrites(w); },
@@ -170,10 +226,8 @@ std::optional<qint64> SimDevice::value(const QString &key) const
     return m_regs.raw(p);
 }
 
-bool SimDevice::setValue(const QString &key, qint64 raw, QString *error)
+const Parameter *SimDevice::writeLocked(const QString &key, qint64 raw, QString *error)
 {
-    QMutexLocker lock(&m_mutex);
-    sync();
     const Parameter *p = m_regs.map().find(key);
     QString why;
     if (!p || !p->writable())
@@ -183,17 +237,44 @@ bool SimDevice::setValue(const QString &key, qint64 raw, QString *error)
     if (!why.isEmpty()) {
         if (error)
             *error = why;
-        return false;
+        return nullptr;
     }
     m_linkChanged = false;
     applyWrites({{p, raw}});
-    return true;
+    return p;
+}
+
+bool SimDevice::setValue(const QString &key, qint64 raw, QString *error)
+{
+    QMutexLocker lock(&m_mutex);
+    sync();
+    if (m_poweredOff) {
+        if (error)
+            *error = offError();
+        return false;
+    }
+    return writeLocked(key, raw, error) != nullptr;
+}
+
+bool SimDevice::setSavedValue(const QString &key, qint64 raw, QString *error)
+{
+    QMutexLocker lock(&m_mutex);
+    sync();
+    const Parameter *p = writeLocked(key, raw, error);
+    if (p)
+        m_flash.insert(p->key, raw);
+    return p != nullptr;
 }
 
 bool SimDevice::command(const QString &coilKey, QString *error)
 {
     QMutexLocker lock(&m_mutex);
     sync();
+    if (m_poweredOff) {
+        if (error)
+            *error = offError();
+        return false;
+    }
     const Parameter *p = m_regs.map().find(coilKey);
     if (!p || !p->isCoil()) {
         if (error)
@@ -209,12 +290,14 @@ bool SimDevice::command(const QString &coilKey, QString *error)
 int SimDevice::deviceId() const
 {
     QMutexLocker lock(&m_mutex);
+    sync(); // a power-up may have restored the saved id
     return int(m_regs.raw(QStringLiteral("device.id"), 1));
 }
 
 int SimDevice::baud() const
 {
     QMutexLocker lock(&m_mutex);
+    sync();
     return int(m_regs.raw(QStringLiteral("device.baud"), 9600));
 }
 
@@ -362,6 +445,8 @@ QString SimDevice::statusText() const
                  .arg(m_machine.systemMode())
                  .arg(m_regs.raw(QStringLiteral("device.id"), 1))
                  .arg(m_regs.raw(QStringLiteral("device.baud"), 9600));
+    if (m_poweredOff)
+        lines << tr("24 V off: power returns in %1 ms").arg(m_powerOnAt - m_machine.now());
     for (int n = 1; n <= m_machine.motorCount(); ++n) {
         const SimAxis &a = m_machine.axis(n);
         lines << tr("motor %1: position %2, %3, carriage at %4 of %5")

@@ -41,6 +41,9 @@ public:
     std::optional<qint64> value(const QString &key) const;
     // A write as a client would make it: read-write parameters, range-checked.
     bool setValue(const QString &key, qint64 raw, QString *error = nullptr);
+    // A value as written and saved to flash, without writing the state file: what the
+    // controller comes back with after a power cycle (the command line's --id).
+    bool setSavedValue(const QString &key, qint64 raw, QString *error = nullptr);
     // A coil switched ON by key ("motor1.move", "estop").
     bool command(const QString &coilKey, QString *error = nullptr);
     int deviceId() const;
@@ -63,6 +66,14 @@ public:
     void setMachinePosition(int motor, double units);
     void setTravel(int motor, double travel, double overtravel = 5.0);
 
+    // The 24 V supply switched off for `offMs` of the device's time (manual clock: advance()).
+    // Meanwhile it answers nothing and refuses setValue() and command(); the motors stop at
+    // once. The first call after that powers it up: writable registers as last saved (unsaved
+    // writes are lost, id and baud included), positions 0, outputs off, nothing running or
+    // homed. Switching it off while off restarts the off time.
+    void powerCycle(qint64 offMs);
+    bool isPoweredOff() const;
+
     // Where coil 00096 saves; empty keeps the saved values in memory only.
     void setStatePath(const QString &path);
     QString statePath() const;
@@ -82,6 +93,12 @@ public:
 
 private:
     void sync() const;
+    // Time passes for the machine; power returns on the way when its off time runs out.
+    void run(qint64 ms) const;
+    void powerUp() const;
+    QString offError() const;
+    // A write by hand, checked as a client's would be; the parameter, or null and why not.
+    const Parameter *writeLocked(const QString &key, qint64 raw, QString *error);
     void applyWrites(const QList<std::pair<const Parameter *, qint64>> &writes);
     bool executeCoil(const Parameter &coil);
     bool saveLocked(QString *error);
@@ -94,6 +111,8 @@ private:
     QString m_statePath;
     QHash<QString, qint64> m_flash; // saved values when there is no state file
     bool m_linkChanged = false;
+    mutable bool m_poweredOff = false;
+    qint64 m_powerOnAt = 0; // device time the supply comes back, while m_poweredOff
     bool m_strictReads = false;
     QSet<QString> m_lacking;
     std::function<void()> m_linkObserver;

@@ -7,6 +7,7 @@
 #include <QElapsedTimer>
 #include <QMutexLocker>
 #include <QThread>
+#include <QTimer>
 
 namespace stepcom {
 
@@ -53,7 +54,8 @@ std::unique_ptr<SimDevice> SimHost::makeDevice(const SimOptions &options, int id
     }
     if (!loadError.isEmpty())
         Q_EMIT message(loadError); // some saved values were not taken
-    if (id != 0 && !d.setValue(QStringLiteral("device.id"), id, error))
+    // Its flash holds the id it was given, so a power cycle keeps it.
+    if (id != 0 && !d.setSavedValue(QStringLiteral("device.id"), id, error))
         return nullptr;
     for (const auto &[input, force] : options.inputs)
         d.setInput(input, force);
@@ -121,11 +123,42 @@ bool SimHost::start(const SimOptions &options, QString *error)
     }
     m_tcpPort = m_worker->tcpPort();
     m_rtuTcpPort = m_worker->rtuTcpPort();
+    schedulePowerCycles();
     return true;
+}
+
+void SimHost::schedulePowerCycles()
+{
+    m_schedule = new QObject(this);
+    for (const auto &[atMs, offMs] : std::as_const(m_options.powerCycles)) {
+        const QString seconds = QString::number(offMs / 1000.0);
+        QTimer::singleShot(atMs, m_schedule, [this, offMs, seconds] {
+            powerCycle(offMs);
+            Q_EMIT message(tr("power cycle: 24 V off for %1 s").arg(seconds));
+        });
+        // The device's own clock decides when power returns; with a manual one no time is known.
+        if (!m_options.manualClock)
+            QTimer::singleShot(atMs + offMs, m_schedule,
+                               [this] { Q_EMIT message(tr("power cycle: 24 V back on")); });
+    }
+}
+
+bool SimHost::powerCycle(int offMs, int id)
+{
+    bool found = false;
+    for (const auto &d : m_devices) {
+        if (id == 0 || d->deviceId() == id) {
+            d->powerCycle(offMs);
+            found = true;
+        }
+    }
+    return found;
 }
 
 void SimHost::stop()
 {
+    delete m_schedule; // pending power cycles are cancelled with it
+    m_schedule = nullptr;
     if (!m_thread)
         return;
     QMetaObject::invokeMethod(

@@ -66,6 +66,10 @@ public:
     // The first controller whose id is `id` now; null when none has it.
     SimDevice *deviceAt(int id) const;
 
+    // Switch the 24 V supply off for `offMs` (see SimDevice::powerCycle()): id 0 every
+    // controller on the line, else those with that id. False when no controller has the id.
+    bool powerCycle(int offMs, int id = 0);
+
     // Hang up every port now; they come back after `pauseMs` (-1: the fault options' pause).
     void hangUp(int pauseMs = -1);
     Stats stats() const;
@@ -78,11 +82,13 @@ Q_SIGNALS:
 private:
     std::unique_ptr<SimDevice> makeDevice(const SimOptions &options, int id,
                                           const QString &statePath, QString *error);
+    void schedulePowerCycles();
 
     SimOptions m_options;
     std::vector<std::unique_ptr<SimDevice>> m_devices;
     QThread *m_thread = nullptr;
     SimWorker *m_worker = nullptr;
+    QObject *m_schedule = nullptr; // parent of the timers of SimOptions::powerCycles
     quint16 m_tcpPort = 0;
     quint16 m_rtuTcpPort = 0;
     mutable QMutex m_pathMutex;

@@ -164,6 +164,11 @@ bool SimMachine::needsTicks() const
 
 void SimMachine::advance(qint64 ms)
 {
+    if (!m_powered) {
+        m_now += ms; // without power nothing moves or looks at the inputs
+        endPulses();
+        return;
+    }
     for (qint64 i = 0; i < ms; ++i) {
         if (!needsTicks()) {
             m_now += ms - i; // nothing moves: time passes in one go
@@ -177,12 +182,7 @@ void SimMachine::advance(qint64 ms)
 void SimMachine::tick()
 {
     ++m_now;
-    for (int i = 0; i < m_pulseUntil.size(); ++i) {
-        if (m_pulseUntil.at(i) > 0 && m_now >= m_pulseUntil.at(i)) {
-            m_pulseUntil[i] = 0;
-            m_forced[i] = false;
-        }
-    }
+    endPulses();
     for (SimAxis &a : m_axes)
         a.tick();
     if (m_axes.size() >= 2)
@@ -190,8 +190,20 @@ void SimMachine::tick()
     settle();
 }
 
+void SimMachine::endPulses()
+{
+    for (int i = 0; i < m_pulseUntil.size(); ++i) {
+        if (m_pulseUntil.at(i) > 0 && m_now >= m_pulseUntil.at(i)) {
+            m_pulseUntil[i] = 0;
+            m_forced[i] = false;
+        }
+    }
+}
+
 void SimMachine::settle()
 {
+    if (!m_powered)
+        return; // no firmware runs: inputs change nothing
     updateInputs();
     if (!m_axes.isEmpty()) {
         // Also in mode 0, so a mode entered later sees only edges that happen after it.
@@ -295,7 +307,7 @@ void SimMachine::stop(int motor)
     publish();
 }
 
-void SimMachine::emergencyStop()
+void SimMachine::stopEverything()
 {
     if (m_axes.size() >= 2)
         m_interpolator.stop(m_axes[0], m_axes[1]);
@@ -303,7 +315,32 @@ void SimMachine::emergencyStop()
     for (SimAxis &a : m_axes)
         a.stop();
     m_modes.reset();
+}
+
+void SimMachine::emergencyStop()
+{
+    stopEverything();
     setAllOutputs(false);
+}
+
+void SimMachine::powerDown()
+{
+    stopEverything();
+    m_powered = false;
+    setAllOutputs(false);
+}
+
+void SimMachine::powerUp()
+{
+    stopEverything();
+    m_powered = true;
+    m_homed.fill(false);
+    // The counters start at 0 wherever the carriages stand (they do not move by themselves).
+    for (SimAxis &a : m_axes)
+        a.zero();
+    for (bool &o : m_outputs)
+        o = false;
+    parametersChanged(); // the restored registers, inputs read afresh, status published
 }
 
 void SimMachine::zeroCoordinates()

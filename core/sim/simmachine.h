@@ -50,6 +50,13 @@ public:
     bool startLine();
     void stopLine();
 
+    // The 24 V supply: off stops everything at once and the machine ignores its inputs; on
+    // starts as the firmware does (nothing running, nothing homed, outputs off, positions 0).
+    // The caller restores the saved registers before powerUp().
+    void powerDown();
+    void powerUp();
+    bool powered() const { return m_powered; }
+
     // Inputs by hand (1-based); switches of the machine are OR-ed in.
     void forceInput(int n, InputForce force);
     bool input(int n) const;
@@ -89,6 +96,8 @@ private:
 
     bool needsTicks() const;
     void tick();
+    void endPulses(); // hand pulses whose time is up
+    void stopEverything();
     void settle(); // inputs, modes, home and limit checks, sequences
     AxisSettings settingsFor(int index) const;
     int limitInput(int index, int direction) const;
@@ -116,6 +125,7 @@ private:
     Interpolator m_interpolator;
     SpecialModes m_modes;
     qint64 m_now = 0;
+    bool m_powered = true;
 };
 
 } // namespace stepcom

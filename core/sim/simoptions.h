@@ -4,6 +4,7 @@
 #include "sim/faultinjector.h"
 #include "sim/simmachine.h"
 
+#include <QHash>
 #include <QHostAddress>
 #include <QList>
 #include <QString>
@@ -52,14 +53,22 @@ struct SimOptions
     QList<int> ids;
     QString statePath; // the "flash" file; empty: saved values live in memory only
 
-    int answerDelayMs = -1; // -1: the map's answer delay (35 ms)
-    int wireBaud = 0;       // >0: add the bytes' time on a line at this baud
+    // The controller's answer time, from the request's end: -1 the map's (the manual's 35 ms);
+    // 0 answers as fast as it can, as other firmware does (2-20 ms).
+    int answerDelayMs = -1;
+    // Coils by PLC number (96 = 00096) whose answer leaves this many ms later still, as firmware
+    // that writes its flash before it answers (--slow-coil 96:800); the command acts at once.
+    QHash<int, int> slowCoils;
+    int wireBaud = 0; // >0: add the bytes' time on a line at this baud
     FaultOptions faults;
 
     bool manualClock = false;  // time only moves by SimDevice::advance() (tests)
     double travel = 200;       // travel of every axis, distance units
     double startPosition = 50; // where the carriages stand at power-up
     QList<std::pair<int, SimMachine::InputForce>> inputs; // inputs set at start
+    // The 24 V supply of every controller switched off (ms after start, ms off): --power-cycle.
+    // The start counts on the host's event loop, the time off on the device's clock.
+    QList<std::pair<int, int>> powerCycles;
 };
 
 } // namespace stepcom

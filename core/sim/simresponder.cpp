@@ -25,9 +25,22 @@ QList<SimDevice *> SimResponder::devicesAt(int unit) const
 {
     QList<SimDevice *> found;
     for (SimDevice *d : m_devices)
-        if (unit == 0 || d->deviceId() == unit)
+        if ((unit == 0 || d->deviceId() == unit) && !d->isPoweredOff())
             found.append(d);
     return found;
+}
+
+int SimResponder::answerDelayMs(const QModbusRequest &request) const
+{
+    if (m_slowCoils.isEmpty() || request.functionCode() != QModbusPdu::WriteSingleCoil ||
+        request.dataSize() != 4)
+        return m_answerDelayMs;
+    quint16 address = 0;
+    quint16 value = 0;
+    request.decodeData(&address, &value);
+    // Only an executed command (FF00) makes the firmware busy; 0000 does nothing.
+    return value == 0xFF00 ? m_answerDelayMs + m_slowCoils.value(int(address) + 1, 0)
+                           : m_answerDelayMs;
 }
 
 SimResponder::Outcome SimResponder::respond(int unit, const QModbusRequest &request)
@@ -56,7 +69,7 @@ SimResponder::Outcome SimResponder::respond(int unit, const QModbusRequest &requ
         out.corruptCrc = true;
         out.response = first;
         out.delayMs =
-            m_answerDelayMs + wireTimeMs(int(request.size()), int(first.size()), m_wireBaud);
+            answerDelayMs(request) + wireTimeMs(int(request.size()), int(first.size()), m_wireBaud);
         return out;
     }
     SimDevice *device = targets.first();
@@ -80,7 +93,7 @@ SimResponder::Outcome SimResponder::respond(int unit, const QModbusRequest &requ
     }
     out.corruptCrc = fault.corruptCrc;
     out.hangUp = fault.hangUp;
-    out.delayMs = m_answerDelayMs + fault.extraDelayMs +
+    out.delayMs = answerDelayMs(request) + fault.extraDelayMs +
                   wireTimeMs(int(request.size()), int(out.response.size()), m_wireBaud);
     ++m_counters.answers;
     if (out.response.isException())

@@ -2,6 +2,7 @@
 
 #include "sim/faultinjector.h"
 
+#include <QHash>
 #include <QList>
 #include <QModbusPdu>
 
@@ -42,6 +43,10 @@ public:
     SimResponder(QList<SimDevice *> devices, int answerDelayMs, int wireBaud,
                  const FaultOptions &faults);
 
+    // Coils (by PLC number, 1 = 00001) whose answer leaves this many ms later than others',
+    // as firmware that writes its flash before it answers: the command acts at once.
+    void setSlowCoils(const QHash<int, int> &msByPlc) { m_slowCoils = msByPlc; }
+
     // A request addressed to `unit`: every controller with that id acts on it; none is silence,
     // two or more answer at once (a collision). Unit 0 (broadcast) is acted on by all, unanswered.
     Outcome respond(int unit, const QModbusRequest &request);
@@ -52,15 +57,20 @@ public:
     // The first controller on the line.
     SimDevice *device() const { return m_devices.first(); }
     const QList<SimDevice *> &devices() const { return m_devices; }
-    // The controllers that currently have this id (more than one: a collision).
+    // The powered controllers that currently have this id (more than one: a collision); one
+    // switched off hears nothing.
     QList<SimDevice *> devicesAt(int unit) const;
     bool hasDevice(int unit) const { return !devicesAt(unit).isEmpty(); }
     Counters &counters() { return m_counters; }
 
 private:
+    // The controller's own time to answer this request: the answer delay, and a slow coil's.
+    int answerDelayMs(const QModbusRequest &request) const;
+
     QList<SimDevice *> m_devices;
     int m_answerDelayMs;
     int m_wireBaud;
+    QHash<int, int> m_slowCoils;
     FaultInjector m_faults;
     Counters m_counters;
 };

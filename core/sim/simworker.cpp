@@ -22,6 +22,7 @@ SimWorker::SimWorker(QList<SimDevice *> devices, const SimOptions &options)
         options.answerDelayMs >= 0 ? options.answerDelayMs : options.map.answerDelayMs();
     m_responder =
         std::make_unique<SimResponder>(m_devices, delay, options.wireBaud, options.faults);
+    m_responder->setSlowCoils(options.slowCoils);
 }
 
 SimWorker::~SimWorker()

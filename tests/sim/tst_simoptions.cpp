@@ -44,6 +44,10 @@ private Q_SLOTS:
                         QStringLiteral("--input"),        QStringLiteral("4=pulse"),
                         QStringLiteral("--wire-baud"),    QStringLiteral("9600"),
                         QStringLiteral("--answer-delay"), QStringLiteral("50"),
+                        QStringLiteral("--slow-coil"),    QStringLiteral("96:800"),
+                        QStringLiteral("--slow-coil"),    QStringLiteral("00073:1500"),
+                        QStringLiteral("--power-cycle"),  QStringLiteral("10:3"),
+                        QStringLiteral("--power-cycle"),  QStringLiteral("2.5:0.25"),
                         QStringLiteral("--strict-reads")},
                        &o, &error),
                  qPrintable(error));
@@ -67,6 +71,16 @@ private Q_SLOTS:
         QCOMPARE(o.inputs.size(), 2);
         QCOMPARE(o.inputs.at(0).first, 3);
         QCOMPARE(o.inputs.at(1).second, SimMachine::InputForce::Pulse);
+        QCOMPARE(o.slowCoils, (QHash<int, int>{{96, 800}, {73, 1500}}));
+        QCOMPARE(o.powerCycles, (QList<std::pair<int, int>>{{10000, 3000}, {2500, 250}}));
+
+        // The controller's answer time may be 0: firmware that answers as fast as it can.
+        for (const char *ms : {"0", "2"}) {
+            SimOptions fast;
+            QVERIFY2(parse({QStringLiteral("--answer-delay"), QLatin1String(ms)}, &fast, &error),
+                     qPrintable(error));
+            QCOMPARE(fast.answerDelayMs, QByteArray(ms).toInt());
+        }
 
         SimOptions any;
         QVERIFY(
@@ -97,6 +111,26 @@ private Q_SLOTS:
                                << "--input";
         QTest::newRow("exception code")
             << QStringList{QStringLiteral("--exception"), QStringLiteral("0.5:0")} << "--exception";
+        QTest::newRow("answer delay -1")
+            << QStringList{QStringLiteral("--answer-delay"), QStringLiteral("-1")}
+            << "--answer-delay: '-1'";
+        const auto slow = [](const char *v) {
+            return QStringList{QStringLiteral("--slow-coil"), QLatin1String(v)};
+        };
+        QTest::newRow("slow coil without ms") << slow("96") << "--slow-coil: '96'";
+        QTest::newRow("slow coil, negative ms") << slow("96:-5") << "--slow-coil: '96:-5'";
+        QTest::newRow("slow coil, words") << slow("save:800") << "--slow-coil: 'save:800'";
+        QTest::newRow("slow coil, no coil") << slow("200:800") << "200 is no coil of the map";
+        QTest::newRow("slow coil, a register") << slow("40001:5") << "--slow-coil: '40001:5'";
+        QTest::newRow("slow coil 0") << slow("0:800") << "--slow-coil: '0:800'";
+        const auto cycle = [](const char *v) {
+            return QStringList{QStringLiteral("--power-cycle"), QLatin1String(v)};
+        };
+        QTest::newRow("power cycle without off") << cycle("3") << "--power-cycle: '3'";
+        QTest::newRow("power cycle, 0 s off") << cycle("3:0") << "--power-cycle: '3:0'";
+        QTest::newRow("power cycle, negative") << cycle("-1:3") << "--power-cycle: '-1:3'";
+        QTest::newRow("power cycle, words") << cycle("soon:3") << "--power-cycle: 'soon:3'";
+        QTest::newRow("power cycle, three") << cycle("1:2:3") << "--power-cycle: '1:2:3'";
         QTest::newRow("map") << QStringList{QStringLiteral("--map"),
                                             QStringLiteral("/nonexistent.json")}
                              << "nonexistent";

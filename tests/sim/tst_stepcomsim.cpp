@@ -192,6 +192,36 @@ private Q_SLOTS:
         QVERIFY2(out.contains(QStringLiteral("motor1.speed = 600 rpm")), qPrintable(out));
         QVERIFY2(err.contains(QStringLiteral("unknown command 'bogus'")), qPrintable(err));
     }
+
+    void powerCycleFromTheConsoleAndTheCommandLine()
+    {
+        QString banner;
+        auto sim =
+            startSim({QStringLiteral("--tcp"), QStringLiteral("0"), QStringLiteral("--console"),
+                      QStringLiteral("--power-cycle"), QStringLiteral("0.2:0.3"),
+                      QStringLiteral("--answer-delay"), QStringLiteral("0")},
+                     &banner);
+        QVERIFY(sim);
+        QByteArray err;
+        for (int i = 0; i < 50 && !err.contains("back on"); ++i) {
+            sim->waitForReadyRead(100);
+            err += sim->readAllStandardError();
+        }
+        sim->write("power-cycle 2.5\nstatus\npower-cycle 1 id 4\npower-cycle x\nquit\n");
+        QVERIFY(sim->waitForFinished(5000));
+        QCOMPARE(sim->exitCode(), 0);
+        const QString out = QString::fromUtf8(sim->readAllStandardOutput());
+        err += sim->readAllStandardError();
+        const QString errText = QString::fromUtf8(err);
+        QVERIFY2(errText.contains(QStringLiteral("power cycle: 24 V off for 0.3 s")),
+                 qPrintable(errText));
+        QVERIFY2(errText.contains(QStringLiteral("power cycle: 24 V back on")),
+                 qPrintable(errText));
+        QVERIFY2(out.contains(QStringLiteral("24 V off for 2.5 s")), qPrintable(out));
+        QVERIFY2(out.contains(QStringLiteral("24 V off: power returns in")), qPrintable(out));
+        QVERIFY2(errText.contains(QStringLiteral("no controller has id 4")), qPrintable(errText));
+        QVERIFY2(errText.contains(QStringLiteral("usage: power-cycle")), qPrintable(errText));
+    }
 };
 
 QTEST_GUILESS_MAIN(TstStepcomSim)
