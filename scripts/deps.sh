@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what StepCom needs from Debian/Ubuntu packages, only what is missing.
 #   scripts/deps.sh          build and run
-#   scripts/deps.sh --test   also the test peers (mbpoll, socat, pymodbus, Xvfb), the package
+#   scripts/deps.sh --test   also the test peers (mbpoll, socat, pymodbus with serial-asyncio, Xvfb), the package
 #                            checks (dpkg-dev, desktop-file-utils, appstream), clang with
 #                            libFuzzer (scripts/fuzz.sh) and clang-format (scripts/check-format.sh)
 set -euo pipefail
@@ -12,7 +12,7 @@ packages=(build-essential cmake ninja-build pkg-config
           qt6-translations-l10n libgl-dev
           qt6-qpa-plugins fonts-noto-cjk help2man)
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(mbpoll socat python3-pymodbus xvfb xauth dpkg-dev file poppler-utils
+    packages+=(mbpoll socat python3-pymodbus python3-serial-asyncio xvfb xauth dpkg-dev file poppler-utils
                desktop-file-utils appstream clang libclang-rt-dev clang-format)
 fi
 

@@ -1578,6 +1578,10 @@
         <source>Not supported by this controller (it refuses to read them, a firmware variant): %1</source>
         <translation>Not supported by this controller (it refuses to read them, a firmware variant): %1</translation>
     </message>
+    <message>
+        <source>Link, as measured</source>
+        <translation>Link, as measured</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1829,6 +1833,10 @@
         <source>RS-485/Ethernet converter (transparent)</source>
         <translation>RS-485/Ethernet converter (transparent)</translation>
     </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>Line: %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlBusMonitor</name>
@@ -1861,6 +1869,14 @@
             <numerusform>link back at %1 after %n attempt</numerusform>
             <numerusform>link back at %1 after %n attempts</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>controller %1 restarted (power off?): positions and references lost%2</source>
+        <translation>controller %1 restarted (power off?): positions and references lost%2</translation>
+    </message>
+    <message>
+        <source>; not saved to flash, lost: %1</source>
+        <translation>; not saved to flash, lost: %1</translation>
     </message>
 </context>
 <context>
@@ -2057,14 +2073,6 @@
         <translation>RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, HOST:PORT.</translation>
     </message>
     <message>
-        <source>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): remove the request&apos;s own bytes before the answer.</source>
-        <translation>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): remove the request&apos;s own bytes before the answer.</translation>
-    </message>
-    <message>
-        <source>The controller answers no sooner than this after a request; sooner answers are discarded as late answers to an older one (default 35).</source>
-        <translation>The controller answers no sooner than this after a request; sooner answers are discarded as late answers to an older one (default 35).</translation>
-    </message>
-    <message>
         <source>Extra silence after an answer before the next request, for converters that need it (default 0).</source>
         <translation>Extra silence after an answer before the next request, for converters that need it (default 0).</translation>
     </message>
@@ -2151,6 +2159,18 @@
     <message>
         <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</source>
         <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</translation>
+    </message>
+    <message>
+        <source>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): skip the request&apos;s own bytes from the first request on (without it the echo is found by the first read and skipped from then on).</source>
+        <translation>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): skip the request&apos;s own bytes from the first request on (without it the echo is found by the first read and skipped from then on).</translation>
+    </message>
+    <message>
+        <source>How long the controller may take to answer: the least an adapted timeout allows (default 35, the manual&apos;s). Answers are judged by what they say, whenever they come.</source>
+        <translation>How long the controller may take to answer: the least an adapted timeout allows (default 35, the manual&apos;s). Answers are judged by what they say, whenever they come.</translation>
+    </message>
+    <message>
+        <source>Always wait --timeout for an answer, instead of fitting the timeout to the controller&apos;s measured answers (4x the median, at most --timeout).</source>
+        <translation>Always wait --timeout for an answer, instead of fitting the timeout to the controller&apos;s measured answers (4x the median, at most --timeout).</translation>
     </message>
 </context>
 <context>
@@ -3226,6 +3246,38 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1 of id %2 is written only while it is the device in view</source>
         <translation>%1 of id %2 is written only while it is the device in view</translation>
     </message>
+    <message>
+        <source>%1: done; the controller answered after %2 s</source>
+        <translation>%1: done; the controller answered after %2 s</translation>
+    </message>
+    <message>
+        <source>Device %1: </source>
+        <translation>Device %1: </translation>
+    </message>
+    <message>
+        <source>The controller may have restarted (%1), but reading it again failed: %2</source>
+        <translation>The controller may have restarted (%1), but reading it again failed: %2</translation>
+    </message>
+    <message>
+        <source>The controller answers again (%1); what it holds is what StepCom held: nothing shows a restart.</source>
+        <translation>The controller answers again (%1); what it holds is what StepCom held: nothing shows a restart.</translation>
+    </message>
+    <message>
+        <source>positions lost</source>
+        <translation>positions lost</translation>
+    </message>
+    <message>
+        <source>references lost</source>
+        <translation>references lost</translation>
+    </message>
+    <message>
+        <source>changes not saved to flash lost: %1</source>
+        <translation>changes not saved to flash lost: %1</translation>
+    </message>
+    <message>
+        <source>The controller restarted (power off?): %1. Seen: %2.</source>
+        <translation>The controller restarted (power off?): %1. Seen: %2.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -4190,10 +4242,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>&amp;Answer delay:</translation>
     </message>
     <message>
-        <source>The controller answers no sooner than this after a request (35 ms by its manual); an answer that comes sooner belongs to an older request and is discarded</source>
-        <translation>The controller answers no sooner than this after a request (35 ms by its manual); an answer that comes sooner belongs to an older request and is discarded</translation>
-    </message>
-    <message>
         <source> ms</source>
         <translation> ms</translation>
     </message>
@@ -4210,16 +4258,20 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>The adapter &amp;echoes what it sends</translation>
     </message>
     <message>
-        <source>For half-duplex USB-RS485 adapters without echo suppression: the request&apos;s own bytes are removed before the answer is read</source>
-        <translation>For half-duplex USB-RS485 adapters without echo suppression: the request&apos;s own bytes are removed before the answer is read</translation>
+        <source>How long the controller may take to answer (its manual: 35 ms): the least the timeout is fitted to. Answers are judged by what they say, however soon they come</source>
+        <translation>How long the controller may take to answer (its manual: 35 ms): the least the timeout is fitted to. Answers are judged by what they say, however soon they come</translation>
     </message>
     <message>
-        <source>Answers begin with the request&apos;s own bytes: this adapter echoes what it sends. Turn the echo option on and connect again?</source>
-        <translation>Answers begin with the request&apos;s own bytes: this adapter echoes what it sends. Turn the echo option on and connect again?</translation>
+        <source>For half-duplex USB-RS485 adapters without echo suppression: the request&apos;s own bytes are skipped from the first request on. Without it StepCom finds the echo on the first read</source>
+        <translation>For half-duplex USB-RS485 adapters without echo suppression: the request&apos;s own bytes are skipped from the first request on. Without it StepCom finds the echo on the first read</translation>
     </message>
     <message>
-        <source>Turn echo on and reconnect</source>
-        <translation>Turn echo on and reconnect</translation>
+        <source>This adapter echoes what it sends: StepCom found the request&apos;s own bytes before the answers and skips them. Remember it for this port?</source>
+        <translation>This adapter echoes what it sends: StepCom found the request&apos;s own bytes before the answers and skips them. Remember it for this port?</translation>
+    </message>
+    <message>
+        <source>Remember echo</source>
+        <translation>Remember echo</translation>
     </message>
 </context>
 <context>
@@ -4311,16 +4363,40 @@ Every other master on the bus must use the new settings too, and no other device
 <context>
     <name>stepcom::LinkStats</name>
     <message>
-        <source>%1 requests, %2 answers; %3 timeouts, %4 CRC errors, %5 exceptions, %6 stale or foreign answers discarded, %7 echoes</source>
-        <translation>%1 requests, %2 answers; %3 timeouts, %4 CRC errors, %5 exceptions, %6 stale or foreign answers discarded, %7 echoes</translation>
-    </message>
-    <message>
-        <source>; round trips %1-%2 ms (mean %3 ms)</source>
-        <translation>; round trips %1-%2 ms (mean %3 ms)</translation>
-    </message>
-    <message>
         <source>; suggested timeout %1 ms (now %2 ms)</source>
         <translation>; suggested timeout %1 ms (now %2 ms)</translation>
+    </message>
+    <message>
+        <source>no answer timed yet</source>
+        <translation>no answer timed yet</translation>
+    </message>
+    <message>
+        <source>answers in %1</source>
+        <translation>answers in %1</translation>
+    </message>
+    <message>
+        <source>echo not known yet</source>
+        <translation>echo not known yet</translation>
+    </message>
+    <message>
+        <source>the adapter echoes</source>
+        <translation>the adapter echoes</translation>
+    </message>
+    <message>
+        <source>no echo</source>
+        <translation>no echo</translation>
+    </message>
+    <message>
+        <source>timeout %1 ms</source>
+        <translation>timeout %1 ms</translation>
+    </message>
+    <message>
+        <source>%1 requests, %2 answers; %3 timeouts, %4 CRC errors, %5 exceptions, %6 stale or foreign answers discarded</source>
+        <translation>%1 requests, %2 answers; %3 timeouts, %4 CRC errors, %5 exceptions, %6 stale or foreign answers discarded</translation>
+    </message>
+    <message>
+        <source>line: %1</source>
+        <translation>line: %1</translation>
     </message>
 </context>
 <context>
@@ -4366,10 +4442,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)</translation>
     </message>
     <message>
-        <source>Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms (now %5 ms)</source>
-        <translation>Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms (now %5 ms)</translation>
-    </message>
-    <message>
         <source>Cancel</source>
         <translation>Cancel</translation>
     </message>
@@ -4384,6 +4456,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Link lost — reconnecting… (attempt %1)</source>
         <translation>Link lost — reconnecting… (attempt %1)</translation>
+    </message>
+    <message>
+        <source>Line: %1 (at most %2 ms)</source>
+        <translation>Line: %1 (at most %2 ms)</translation>
     </message>
 </context>
 <context>
@@ -4823,16 +4899,20 @@ Every other master on the bus must use the new settings too, and no other device
         <translation> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers</translation>
     </message>
     <message>
-        <source> -- only the request&apos;s own bytes came back: the controller did not answer, or the adapter does not echo (then turn the echo option off)</source>
-        <translation> -- only the request&apos;s own bytes came back: the controller did not answer, or the adapter does not echo (then turn the echo option off)</translation>
-    </message>
-    <message>
         <source>stale/foreign answer discarded: %1</source>
         <translation>stale/foreign answer discarded: %1</translation>
     </message>
     <message>
-        <source>%1: the request&apos;s own bytes came back before any answer: the adapter echoes what it sends. Turn on &quot;the adapter echoes what it sends&quot; (stepcomctl --echo)</source>
-        <translation>%1: the request&apos;s own bytes came back before any answer: the adapter echoes what it sends. Turn on &quot;the adapter echoes what it sends&quot; (stepcomctl --echo)</translation>
+        <source>the adapter echoes what it sends: the request&apos;s own bytes came back before the answer; they are skipped from now on</source>
+        <translation>the adapter echoes what it sends: the request&apos;s own bytes came back before the answer; they are skipped from now on</translation>
+    </message>
+    <message>
+        <source>the adapter does not echo what it sends (the echo option is on): answers are read without skipping a copy</source>
+        <translation>the adapter does not echo what it sends (the echo option is on): answers are read without skipping a copy</translation>
+    </message>
+    <message>
+        <source> -- only the request&apos;s own bytes came back (the adapter&apos;s echo): the controller did not answer</source>
+        <translation> -- only the request&apos;s own bytes came back (the adapter&apos;s echo): the controller did not answer</translation>
     </message>
 </context>
 <context>
@@ -5147,6 +5227,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 ended without the home input at %2: motor %3 not referenced</source>
         <translation>%1 ended without the home input at %2: motor %3 not referenced</translation>
+    </message>
+    <message>
+        <source>the controller restarted</source>
+        <translation>the controller restarted</translation>
     </message>
 </context>
 <context>
@@ -6751,6 +6835,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>not referenced (link lost)</source>
         <translation>not referenced (link lost)</translation>
     </message>
+    <message>
+        <source>not referenced (the controller restarted)</source>
+        <translation>not referenced (the controller restarted)</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::RegisterMap</name>
@@ -6772,6 +6860,24 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1: the report is written as .pdf or .html, not .%2</source>
         <translation>%1: the report is written as .pdf or .html, not .%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::RestartWatch</name>
+    <message>
+        <source>it answers again after %1 s without an answer</source>
+        <translation>it answers again after %1 s without an answer</translation>
+    </message>
+    <message>
+        <source>its positions went back to 0 with no motion and no command</source>
+        <translation>its positions went back to 0 with no motion and no command</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::RoundTrips</name>
+    <message>
+        <source>%1-%2 ms (median %3 ms)</source>
+        <translation>%1-%2 ms (median %3 ms)</translation>
     </message>
 </context>
 <context>
@@ -6807,10 +6913,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>a late answer to an earlier request</source>
         <translation>a late answer to an earlier request</translation>
-    </message>
-    <message>
-        <source>an answer %1 ms after the request, sooner than the controller can answer (%2 ms): a late answer to an older request</source>
-        <translation>an answer %1 ms after the request, sooner than the controller can answer (%2 ms): a late answer to an older request</translation>
     </message>
     <message>
         <source>an incomplete answer</source>

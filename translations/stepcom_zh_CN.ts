@@ -1568,6 +1568,10 @@
         <source>Not supported by this controller (it refuses to read them, a firmware variant): %1</source>
         <translation>此控制器不支持（控制器拒绝读取，属于固件变体）：%1</translation>
     </message>
+    <message>
+        <source>Link, as measured</source>
+        <translation>实测通信</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1819,6 +1823,10 @@
         <source>RS-485/Ethernet converter (transparent)</source>
         <translation>RS-485/以太网转换器（透明传输）</translation>
     </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>线路：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlBusMonitor</name>
@@ -1850,6 +1858,14 @@
         <translation>
             <numerusform>连接已在 %1 恢复（尝试 %n 次）</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>controller %1 restarted (power off?): positions and references lost%2</source>
+        <translation>控制器 %1 重新启动了（断电？）：位置和参考点丢失%2</translation>
+    </message>
+    <message>
+        <source>; not saved to flash, lost: %1</source>
+        <translation>；未保存到闪存而丢失的：%1</translation>
     </message>
 </context>
 <context>
@@ -2046,14 +2062,6 @@
         <translation>透明模式的 RS-485/以太网转换器：通过 TCP 传送 Modbus RTU 帧，主机:端口。</translation>
     </message>
     <message>
-        <source>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): remove the request&apos;s own bytes before the answer.</source>
-        <translation>适配器会回显发送的数据（没有回显抑制的半双工 USB-RS485 适配器）：在应答之前去掉请求自身的字节。</translation>
-    </message>
-    <message>
-        <source>The controller answers no sooner than this after a request; sooner answers are discarded as late answers to an older one (default 35).</source>
-        <translation>控制器在请求之后至少经过这段时间才应答；更早的应答被视为之前请求的迟到应答而丢弃（默认 35）。</translation>
-    </message>
-    <message>
         <source>Extra silence after an answer before the next request, for converters that need it (default 0).</source>
         <translation>收到应答后、发送下一个请求前额外的静默时间，供需要它的转换器使用（默认 0）。</translation>
     </message>
@@ -2140,6 +2148,18 @@
     <message>
         <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</source>
         <translation>没有给出命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、scan、report）</translation>
+    </message>
+    <message>
+        <source>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): skip the request&apos;s own bytes from the first request on (without it the echo is found by the first read and skipped from then on).</source>
+        <translation>适配器会回显发送的数据（没有回显抑制的半双工 USB-RS485 适配器）：从第一个请求起跳过请求自身的字节（不加此选项时，第一次读取就会发现回显，此后跳过）。</translation>
+    </message>
+    <message>
+        <source>How long the controller may take to answer: the least an adapted timeout allows (default 35, the manual&apos;s). Answers are judged by what they say, whenever they come.</source>
+        <translation>控制器可能需要多长时间应答：自适应超时的下限（默认 35，即说明书的值）。无论应答何时到达，都按其内容判断。</translation>
+    </message>
+    <message>
+        <source>Always wait --timeout for an answer, instead of fitting the timeout to the controller&apos;s measured answers (4x the median, at most --timeout).</source>
+        <translation>总是等待完整的 --timeout，而不是按测得的控制器应答时间调整超时（中位数的 4 倍，最多 --timeout）。</translation>
     </message>
 </context>
 <context>
@@ -3203,6 +3223,38 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1 of id %2 is written only while it is the device in view</source>
         <translation>ID %2 的 %1 只能在它是当前显示的设备时写入</translation>
     </message>
+    <message>
+        <source>%1: done; the controller answered after %2 s</source>
+        <translation>%1：完成；控制器在 %2 s 后应答</translation>
+    </message>
+    <message>
+        <source>Device %1: </source>
+        <translation>设备 %1：</translation>
+    </message>
+    <message>
+        <source>The controller may have restarted (%1), but reading it again failed: %2</source>
+        <translation>控制器可能重新启动了（%1），但重新读取失败：%2</translation>
+    </message>
+    <message>
+        <source>The controller answers again (%1); what it holds is what StepCom held: nothing shows a restart.</source>
+        <translation>控制器重新应答了（%1）；它保存的值与 StepCom 所知相同：没有迹象表明重新启动。</translation>
+    </message>
+    <message>
+        <source>positions lost</source>
+        <translation>位置丢失</translation>
+    </message>
+    <message>
+        <source>references lost</source>
+        <translation>参考点丢失</translation>
+    </message>
+    <message>
+        <source>changes not saved to flash lost: %1</source>
+        <translation>未保存到闪存的修改丢失：%1</translation>
+    </message>
+    <message>
+        <source>The controller restarted (power off?): %1. Seen: %2.</source>
+        <translation>控制器重新启动了（断电？）：%1。依据：%2。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -4167,10 +4219,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>应答延时(&amp;A)：</translation>
     </message>
     <message>
-        <source>The controller answers no sooner than this after a request (35 ms by its manual); an answer that comes sooner belongs to an older request and is discarded</source>
-        <translation>控制器在请求之后至少经过这段时间才应答（说明书规定 35 ms）；更早到达的应答属于之前的请求，将被丢弃</translation>
-    </message>
-    <message>
         <source> ms</source>
         <translation> ms</translation>
     </message>
@@ -4187,16 +4235,20 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>适配器会回显发送的数据(&amp;E)</translation>
     </message>
     <message>
-        <source>For half-duplex USB-RS485 adapters without echo suppression: the request&apos;s own bytes are removed before the answer is read</source>
-        <translation>用于没有回显抑制的半双工 USB-RS485 适配器：读取应答前先去掉请求自身的字节</translation>
+        <source>How long the controller may take to answer (its manual: 35 ms): the least the timeout is fitted to. Answers are judged by what they say, however soon they come</source>
+        <translation>控制器可能需要多长时间应答（说明书：35 ms）：自适应超时的下限。无论应答多快到达，都按其内容判断</translation>
     </message>
     <message>
-        <source>Answers begin with the request&apos;s own bytes: this adapter echoes what it sends. Turn the echo option on and connect again?</source>
-        <translation>应答以请求自身的字节开头：这个适配器会回显发送的数据。打开回显选项并重新连接？</translation>
+        <source>For half-duplex USB-RS485 adapters without echo suppression: the request&apos;s own bytes are skipped from the first request on. Without it StepCom finds the echo on the first read</source>
+        <translation>用于没有回显抑制的半双工 USB-RS485 适配器：从第一个请求起跳过请求自身的字节。不勾选时，StepCom 在第一次读取时发现回显</translation>
     </message>
     <message>
-        <source>Turn echo on and reconnect</source>
-        <translation>打开回显并重新连接</translation>
+        <source>This adapter echoes what it sends: StepCom found the request&apos;s own bytes before the answers and skips them. Remember it for this port?</source>
+        <translation>此适配器会回显发送的数据：StepCom 在应答之前发现了请求自身的字节，并跳过它们。为此端口记住这一点吗？</translation>
+    </message>
+    <message>
+        <source>Remember echo</source>
+        <translation>记住回显</translation>
     </message>
 </context>
 <context>
@@ -4288,16 +4340,40 @@ Every other master on the bus must use the new settings too, and no other device
 <context>
     <name>stepcom::LinkStats</name>
     <message>
-        <source>%1 requests, %2 answers; %3 timeouts, %4 CRC errors, %5 exceptions, %6 stale or foreign answers discarded, %7 echoes</source>
-        <translation>%1 个请求，%2 个应答；%3 次超时，%4 次 CRC 错误，%5 次异常，丢弃 %6 个过时或无关的应答，%7 次回显</translation>
-    </message>
-    <message>
-        <source>; round trips %1-%2 ms (mean %3 ms)</source>
-        <translation>；往返时间 %1-%2 ms（平均 %3 ms）</translation>
-    </message>
-    <message>
         <source>; suggested timeout %1 ms (now %2 ms)</source>
         <translation>；建议超时 %1 ms（当前 %2 ms）</translation>
+    </message>
+    <message>
+        <source>no answer timed yet</source>
+        <translation>尚未测得应答时间</translation>
+    </message>
+    <message>
+        <source>answers in %1</source>
+        <translation>应答时间 %1</translation>
+    </message>
+    <message>
+        <source>echo not known yet</source>
+        <translation>尚不知道是否回显</translation>
+    </message>
+    <message>
+        <source>the adapter echoes</source>
+        <translation>适配器会回显</translation>
+    </message>
+    <message>
+        <source>no echo</source>
+        <translation>无回显</translation>
+    </message>
+    <message>
+        <source>timeout %1 ms</source>
+        <translation>超时 %1 ms</translation>
+    </message>
+    <message>
+        <source>%1 requests, %2 answers; %3 timeouts, %4 CRC errors, %5 exceptions, %6 stale or foreign answers discarded</source>
+        <translation>%1 个请求，%2 个应答；%3 次超时，%4 次 CRC 错误，%5 次异常，丢弃 %6 个过时或无关的应答</translation>
+    </message>
+    <message>
+        <source>line: %1</source>
+        <translation>线路：%1</translation>
     </message>
 </context>
 <context>
@@ -4343,10 +4419,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>错误：%1（超时 %2，CRC %3，异常 %4，过时应答 %5）</translation>
     </message>
     <message>
-        <source>Round trips %1-%2 ms (mean %3 ms); suggested answer timeout %4 ms (now %5 ms)</source>
-        <translation>往返时间 %1-%2 ms（平均 %3 ms）；建议的应答超时 %4 ms（当前 %5 ms）</translation>
-    </message>
-    <message>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -4361,6 +4433,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Link lost — reconnecting… (attempt %1)</source>
         <translation>连接丢失 — 正在重新连接…（第 %1 次尝试）</translation>
+    </message>
+    <message>
+        <source>Line: %1 (at most %2 ms)</source>
+        <translation>线路：%1（最多 %2 ms）</translation>
     </message>
 </context>
 <context>
@@ -4795,16 +4871,20 @@ Every other master on the bus must use the new settings too, and no other device
         <translation> —— 请检查站号（%1）、波特率和校验（%2）以及 A/B 接线；总线扫描可以找到控制器</translation>
     </message>
     <message>
-        <source> -- only the request&apos;s own bytes came back: the controller did not answer, or the adapter does not echo (then turn the echo option off)</source>
-        <translation> —— 只收到了请求自身的字节：控制器没有应答，或者适配器并不回显（那样请关闭回显选项）</translation>
-    </message>
-    <message>
         <source>stale/foreign answer discarded: %1</source>
         <translation>已丢弃过时/无关的应答：%1</translation>
     </message>
     <message>
-        <source>%1: the request&apos;s own bytes came back before any answer: the adapter echoes what it sends. Turn on &quot;the adapter echoes what it sends&quot; (stepcomctl --echo)</source>
-        <translation>%1：在任何应答之前先收到了请求自身的字节：适配器会回显发送的数据。请打开“适配器会回显发送的数据”（stepcomctl --echo）</translation>
+        <source>the adapter echoes what it sends: the request&apos;s own bytes came back before the answer; they are skipped from now on</source>
+        <translation>适配器会回显发送的数据：请求自身的字节在应答之前返回；此后跳过它们</translation>
+    </message>
+    <message>
+        <source>the adapter does not echo what it sends (the echo option is on): answers are read without skipping a copy</source>
+        <translation>适配器并不回显发送的数据（回显选项已打开）：读取应答时不再跳过副本</translation>
+    </message>
+    <message>
+        <source> -- only the request&apos;s own bytes came back (the adapter&apos;s echo): the controller did not answer</source>
+        <translation> —— 只收到了请求自身的字节（适配器的回显）：控制器没有应答</translation>
     </message>
 </context>
 <context>
@@ -5119,6 +5199,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 ended without the home input at %2: motor %3 not referenced</source>
         <translation>%1 结束于 %2，原点输入未接通：电机 %3 未建立参考点</translation>
+    </message>
+    <message>
+        <source>the controller restarted</source>
+        <translation>控制器重新启动了</translation>
     </message>
 </context>
 <context>
@@ -6703,6 +6787,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>not referenced (link lost)</source>
         <translation>未建立参考点（连接丢失）</translation>
     </message>
+    <message>
+        <source>not referenced (the controller restarted)</source>
+        <translation>无参考点（控制器重新启动了）</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::RegisterMap</name>
@@ -6724,6 +6812,24 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1: the report is written as .pdf or .html, not .%2</source>
         <translation>%1：报告只能保存为 .pdf 或 .html，不能是 .%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::RestartWatch</name>
+    <message>
+        <source>it answers again after %1 s without an answer</source>
+        <translation>它在 %1 s 没有应答之后重新应答</translation>
+    </message>
+    <message>
+        <source>its positions went back to 0 with no motion and no command</source>
+        <translation>它的位置在没有运动、没有命令的情况下回到了 0</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::RoundTrips</name>
+    <message>
+        <source>%1-%2 ms (median %3 ms)</source>
+        <translation>%1-%2 ms（中位数 %3 ms）</translation>
     </message>
 </context>
 <context>
@@ -6759,10 +6865,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>a late answer to an earlier request</source>
         <translation>之前某个请求的迟到应答</translation>
-    </message>
-    <message>
-        <source>an answer %1 ms after the request, sooner than the controller can answer (%2 ms): a late answer to an older request</source>
-        <translation>请求后 %1 ms 的应答，早于控制器能够应答的时间（%2 ms）：是之前请求的迟到应答</translation>
     </message>
     <message>
         <source>an incomplete answer</source>

@@ -227,6 +227,7 @@ void MachineActions::reportFile(const QString &path, const QString &title, const
                   input.map = m_session->map();
                   input.values = s->outcome(id).values;
                   input.link = m_session->describeDevice(id);
+                  input.line = m_session->linkStats().lineText(id);
                   input.deviceId = id;
                   input.title = names.value(id);
                   input.date = now;

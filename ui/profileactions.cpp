@@ -419,6 +419,7 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         input.values = r.values;
         input.unsupported = r.unsupported;
         input.link = self->m_session->settings().describe();
+        input.line = self->m_session->linkStats().lineText(self->m_session->deviceInView());
         input.deviceId = self->m_session->settings().deviceId;
         input.notes = notes;
         input.date = QDateTime::currentDateTime();

@@ -250,6 +250,19 @@ QList<Verdict> gapVerdicts(const GapResult &g)
     return rows;
 }
 
+QList<Verdict> answerTimeVerdicts(const BaudResult &r)
+{
+    const QString who = QStringLiteral("(k) controller answering in %1 ms").arg(r.answerDelayMs);
+    if (!r.error.isEmpty())
+        return {
+            {QString::number(r.baud), who, r.error, QString(), QString(), Verdict::Result::Error}};
+    QList<Verdict> rows;
+    cycleRows(r, &rows, who + QStringLiteral(": live status cycle at full rate"),
+              who + QStringLiteral(": read-all"),
+              QStringLiteral("optimum at %1 ms").arg(r.answerDelayMs), QString());
+    return rows;
+}
+
 QList<Verdict> firstStatusVerdicts(const FirstStatusResult &f)
 {
     const QString baud = QString::number(f.baud);

@@ -25,6 +25,8 @@ QList<Verdict> trafficVerdicts(const TrafficResult &t);
 QList<Verdict> busVerdicts(const BusResult &b);
 QList<Verdict> scanVerdicts(const ScanResult &s);
 QList<Verdict> gapVerdicts(const GapResult &g);
+// (k): (a) and (b) on a controller that answers sooner than the manual's 35 ms.
+QList<Verdict> answerTimeVerdicts(const BaudResult &r);
 QList<Verdict> firstStatusVerdicts(const FirstStatusResult &f);
 // A Markdown table; with `judged` false (smoke runs) results read "not judged".
 QString table(const QList<Verdict> &rows, bool judged);

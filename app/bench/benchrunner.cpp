@@ -210,12 +210,14 @@ bool waitUntil(const std::function<bool()> &done, int timeoutMs)
     return true;
 }
 
-BaudResult measureBaud(int baud, const BenchConfig &config)
+BaudResult measureBaud(int baud, const BenchConfig &config, int answerDelayMs, bool cyclesOnly)
 {
     BaudResult r;
     r.baud = baud;
     const RegisterMap &map = RegisterMap::builtin();
-    const ReadCostModel model = ReadCostModel::forBaud(baud, map.answerDelayMs());
+    r.answerDelayMs = answerDelayMs >= 0 ? answerDelayMs : map.answerDelayMs();
+    // The optimum for this controller's answer time: a faster one lowers it.
+    const ReadCostModel model = ReadCostModel::forBaud(baud, r.answerDelayMs);
     const QList<ReadBlock> statusPlan = ReadPlanner::plan(parameters(map, Poller::statusKeys(map)),
                                                           map.maxRegistersPerRequest(), model);
     r.statusOptimumMs = ReadPlanner::costMs(statusPlan, model);
@@ -231,6 +233,7 @@ BaudResult measureBaud(int baud, const BenchConfig &config)
     options.map = map;
     options.rtu = true;
     options.wireBaud = baud; // the simulator takes the bytes' time on a line at this baud
+    options.answerDelayMs = r.answerDelayMs;
     QString error;
     if (!host.start(options, &error)) {
         r.error = error;
@@ -254,6 +257,8 @@ BaudResult measureBaud(int baud, const BenchConfig &config)
     measureStatus(session, watch, config, r);
     if (r.error.isEmpty())
         measureReadAll(session, watch, config, r);
+    if (cyclesOnly)
+        return r;
     if (r.error.isEmpty())
         measureEmergencyStop(session, host.device(), config, r);
     r.longestPollMs = watch.longestPollMs;

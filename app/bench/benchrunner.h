@@ -12,7 +12,10 @@ bool waitUntil(const std::function<bool()> &done, int timeoutMs);
 
 // Measures (a) to (d) against a simulator with the wire-time model at `baud`, over real
 // Modbus RTU on a pseudo-terminal, with StepCom's own DeviceSession and Poller.
-BaudResult measureBaud(int baud, const BenchConfig &config);
+// (a)-(d) at `baud`; `answerDelayMs` >= 0: a controller answering that soon instead of the
+// manual's 35 ms, and with `cyclesOnly` only (a) and (b) (row (k)).
+BaudResult measureBaud(int baud, const BenchConfig &config, int answerDelayMs = -1,
+                       bool cyclesOnly = false);
 
 // Measures (i): (a) and (b) against a simulator that refuses reads covering reserved
 // registers, after the session learnt it, held against the gap-free plans it then makes.

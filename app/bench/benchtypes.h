@@ -82,7 +82,8 @@ struct ScanResult
 struct BaudResult
 {
     int baud = 0;
-    QString error; // the measurement itself failed
+    int answerDelayMs = 35; // the simulated controller's answer time
+    QString error;          // the measurement itself failed
 
     // (a) live status cycle at full rate
     double statusOptimumMs = 0;

@@ -40,7 +40,8 @@ int main(int argc, char *argv[])
         "ids 1-247 at "
         "9600 when nobody answers, (i) the status cycle and read-all on a controller that "
         "refuses reads covering reserved registers, (j) the time from the port opened to the "
-        "first status, both at 9600. Prints a table "
+        "first status, both at 9600, (k) (a) and (b) on a controller that answers in 2 ms at "
+        "9600 and 38400. Prints a table "
         "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -64,6 +65,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("only-scan"), QStringLiteral("Run only (h), the bus scan.")},
         {QStringLiteral("no-gaps"), QStringLiteral("Skip (i), the gap-refusing controller.")},
         {QStringLiteral("no-first-status"), QStringLiteral("Skip (j), the time to first status.")},
+        {QStringLiteral("no-fast"),
+         QStringLiteral("Skip (k), (a) and (b) on a controller that answers in 2 ms.")},
         {QStringLiteral("traffic-seconds"),
          QStringLiteral(
              "(e) seconds of polling at full rate the Traffic dock holds (default 3600)."),
@@ -131,6 +134,17 @@ int main(int argc, char *argv[])
                 fastestFrames = frames;
                 fastestBaud = baud;
             }
+        }
+    }
+    // (k) a controller that answers in 2 ms (fast firmware, pymodbus), at 9600 and 38400.
+    if (!parser.isSet(QStringLiteral("no-fast"))) {
+        for (const int baud : std::as_const(bauds)) {
+            if (baud != 9600 && baud != 38400)
+                continue;
+            err << QStringLiteral("stepcom-bench: a controller answering in 2 ms at %1 baud ...")
+                       .arg(baud)
+                << Qt::endl;
+            rows += answerTimeVerdicts(measureBaud(baud, config, 2, true));
         }
     }
     if (config.traffic && fastestFrames > 0) {

@@ -63,6 +63,7 @@ void CtlRunner::runMachineReport()
                 input.map = m_map;
                 input.values = sweep->outcome(id).values;
                 input.link = m_session->describeDevice(id);
+                input.line = m_session->linkStats().lineText(id);
                 input.deviceId = id;
                 input.date = now;
                 input.lastRead = now; // one-shot: the flash state is not known

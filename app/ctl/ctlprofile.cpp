@@ -469,6 +469,7 @@ void CtlRunner::runReport()
             input.values = r.values;
             input.unsupported = r.unsupported;
             input.link = m_session->settings().describe();
+            input.line = m_session->linkStats().lineText(m_session->deviceInView());
             input.deviceId = m_session->settings().deviceId;
             input.title = m_options.name;
             input.notes = m_options.notes;

@@ -34,8 +34,7 @@ void RestartWatch::statusRead(int device, bool ok, const QHash<QString, qint64> 
 {
     Device &d = m_devices[device];
     if (!ok) {
-        if (d.silentSinceMs < 0)
-            d.silentSinceMs = nowMs;
+        d.failed = true;
         return;
     }
     bool complete = true;
@@ -47,22 +46,24 @@ void RestartWatch::statusRead(int device, bool ok, const QHash<QString, qint64> 
     }
     for (const QString &key : std::as_const(m_runningKeys))
         running = running || values.value(key) != 0;
-    const qint64 silentMs = d.silentSinceMs >= 0 ? nowMs - d.silentSinceMs : 0;
-    const bool silent = d.silentSinceMs >= 0;
-    d.silentSinceMs = -1;
+    const qint64 silentMs = d.answeredAtMs >= 0 ? nowMs - d.answeredAtMs : 0;
+    const bool silent = std::exchange(d.failed, false) && silentMs >= kSilenceMs;
+    d.answeredAtMs = nowMs;
     // Back at 0 with nothing that moves or zeroes: the counters started again. A motor that was
     // running may have stopped at 0 by itself, unless the controller was silent in between.
-    const bool explained =
-        d.commanded || (d.commandedAtMs >= 0 && nowMs - d.commandedAtMs < kCommandWindowMs);
-    const bool reset = complete && d.known && d.anyNonZero && !explained && !anyNonZero &&
-                       !running && (!d.running || silent);
+    const auto recent = [nowMs](qint64 at) { return at >= 0 && nowMs - at < kCommandWindowMs; };
+    const bool explained = d.commanded || recent(d.commandedAtMs) || recent(d.runningAtMs);
+    const bool reset = complete && d.known && d.anyNonZero && (!explained || silent) &&
+                       !anyNonZero && !running && (!d.running || silent);
+    if (running)
+        d.runningAtMs = nowMs;
     if (complete) {
         d.known = true;
         d.anyNonZero = anyNonZero;
         d.running = running;
         d.commanded = false;
     }
-    if (silent && silentMs >= kSilenceMs)
+    if (silent)
         Q_EMIT suspected(device,
                          tr("it answers again after %1 s without an answer")
                              .arg(double(silentMs) / 1000.0, 0, 'f', 1),

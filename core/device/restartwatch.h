@@ -17,10 +17,12 @@ class RestartWatch : public QObject
 {
     Q_OBJECT
 public:
-    // Unanswered this long, then answering: the controller may have been off.
+    // No answer for this long (from the last answer to the next, with unanswered reads in
+    // between), then answering: the controller may have been off.
     static constexpr qint64 kSilenceMs = 1000;
-    // Zeros this soon after a command that moves or zeroes are that command's (a status read
-    // under way when it went out may still show the values from before it).
+    // Zeros this soon after a command that moves or zeroes, or after a motor was last seen
+    // running, are theirs: a status read under way when a command went out may still show the
+    // values from before it, and homing stops on the home input before it zeroes the position.
     static constexpr qint64 kCommandWindowMs = 1500;
 
     explicit RestartWatch(const RegisterMap &map, QObject *parent = nullptr);
@@ -44,12 +46,14 @@ Q_SIGNALS:
 private:
     struct Device
     {
-        qint64 silentSinceMs = -1; // first unanswered read of a silence, -1 answering
-        bool known = false;        // a sample was taken since the last command or silence
+        qint64 answeredAtMs = -1; // the last answered read
+        bool failed = false;      // a read went unanswered since
+        bool known = false;       // a sample was taken since the last command or silence
         bool anyNonZero = false;
         bool running = false;
         bool commanded = false; // since the last sample
         qint64 commandedAtMs = -1;
+        qint64 runningAtMs = -1; // last seen running
     };
 
     QStringList m_positionKeys;

@@ -2,6 +2,7 @@
 #include "device/devicesession.h"
 
 #include "bus/modbuslink.h"
+#include "device/devicememory.h"
 #include "map/registermap.h"
 
 namespace stepcom {
@@ -53,8 +54,15 @@ void DeviceSession::writeDevice(int id, const QList<ParameterWrite> &writes,
         }
     }
     DeviceClient *client = clientFor(m_link, map(), id, this);
-    client->write(writes, [client, done](const WriteOutcome &w) {
+    client->write(writes, [this, id, writes, client, done](const WriteOutcome &w) {
         client->deleteLater();
+        // What it acknowledged (and read back) is what it holds: known for a restart's check.
+        QHash<QString, qint64> held;
+        for (const ParameterWrite &pw : writes) {
+            if (w.written.contains(pw.parameter->key))
+                held.insert(pw.parameter->key, pw.raw);
+        }
+        m_memory->setDeviceValues(id, held);
         done(w);
     });
 }

@@ -58,6 +58,8 @@ QString CommissioningReport::controllerSection() const
         line(tr("Link"), tr("none: made from a file, not read from a controller"));
     else
         line(tr("Link"), m_in.link.isEmpty() ? QStringLiteral("—") : m_in.link);
+    if (!m_in.fromFile() && !m_in.line.isEmpty())
+        line(tr("Link, as measured"), m_in.line);
     QString baud = text("device.baud");
     if (baud == QStringLiteral("—") && m_in.fileBaud > 0)
         baud = QString::number(m_in.fileBaud);

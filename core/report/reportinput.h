@@ -24,6 +24,7 @@ public:
     RegisterMap map;
     QHash<QString, qint64> values;
     QString link; // LinkSettings::describe()
+    QString line; // what the line showed: LinkStats::lineText() ("answers in 4-6 ms, ...")
     int deviceId = 0;
     QString title; // e.g. the machine's name
     QString notes;

@@ -84,7 +84,7 @@ private Q_SLOTS:
         w.statusRead(2, true, status(0, 0), 3300);
         QCOMPARE(spy.size(), 1);
         QCOMPARE(spy.at(0).at(0).toInt(), 2);
-        QVERIFY2(spy.at(0).at(1).toString().contains(QLatin1String("3.2 s")),
+        QVERIFY2(spy.at(0).at(1).toString().contains(QLatin1String("3.3 s")),
                  qPrintable(spy.at(0).at(1).toString()));
         // Running before the silence, at 0 and idle after it: the counters began again.
         QVERIFY(spy.at(0).at(2).toBool());
