@@ -3278,6 +3278,21 @@ Every other master on the bus must use the new settings too, and no other device
         <source>The controller restarted (power off?): %1. Seen: %2.</source>
         <translation>The controller restarted (power off?): %1. Seen: %2.</translation>
     </message>
+    <message>
+        <source>Factory reset: reading it back failed: %1</source>
+        <translation>Factory reset: reading it back failed: %1</translation>
+    </message>
+    <message>
+        <source>Factory reset: read back, every value is the factory value.</source>
+        <translation>Factory reset: read back, every value is the factory value.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Factory reset: read back; %n value(s) differ from the factory values StepCom knows (another firmware&apos;s defaults?): %1</source>
+        <translation>
+            <numerusform>Factory reset: read back; %n value differ from the factory values StepCom knows (another firmware&apos;s defaults?): %1</numerusform>
+            <numerusform>Factory reset: read back; %n values differ from the factory values StepCom knows (another firmware&apos;s defaults?): %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -4913,6 +4928,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source> -- only the request&apos;s own bytes came back (the adapter&apos;s echo): the controller did not answer</source>
         <translation> -- only the request&apos;s own bytes came back (the adapter&apos;s echo): the controller did not answer</translation>
+    </message>
+    <message>
+        <source> -- it answered %1 s ago: busy (writing its flash?), switched off, or a disturbed line</source>
+        <translation> -- it answered %1 s ago: busy (writing its flash?), switched off, or a disturbed line</translation>
     </message>
 </context>
 <context>

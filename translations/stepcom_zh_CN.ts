@@ -3255,6 +3255,20 @@ Every other master on the bus must use the new settings too, and no other device
         <source>The controller restarted (power off?): %1. Seen: %2.</source>
         <translation>控制器重新启动了（断电？）：%1。依据：%2。</translation>
     </message>
+    <message>
+        <source>Factory reset: reading it back failed: %1</source>
+        <translation>恢复出厂设置：回读失败：%1</translation>
+    </message>
+    <message>
+        <source>Factory reset: read back, every value is the factory value.</source>
+        <translation>恢复出厂设置：已回读，每个值都是出厂值。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Factory reset: read back; %n value(s) differ from the factory values StepCom knows (another firmware&apos;s defaults?): %1</source>
+        <translation>
+            <numerusform>恢复出厂设置：已回读；有 %n 个值与 StepCom 所知的出厂值不同（其他固件的默认值？）：%1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -4885,6 +4899,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source> -- only the request&apos;s own bytes came back (the adapter&apos;s echo): the controller did not answer</source>
         <translation> —— 只收到了请求自身的字节（适配器的回显）：控制器没有应答</translation>
+    </message>
+    <message>
+        <source> -- it answered %1 s ago: busy (writing its flash?), switched off, or a disturbed line</source>
+        <translation> —— 它在 %1 s 前还应答过：正忙（正在写闪存？）、已断电，或线路受到干扰</translation>
     </message>
 </context>
 <context>

@@ -58,6 +58,7 @@ ModbusLink::ModbusLink(QObject *parent)
     : QObject(parent)
     , m_traffic(new TrafficLog(this))
 {
+    m_clock.start();
     WireTap::install(); // qt.modbus warnings (the simulator's, the TCP client's) off stderr
     m_watchdog.setSingleShot(true);
     connect(&m_watchdog, &QTimer::timeout, this, &ModbusLink::onWatchdog);
@@ -104,6 +105,8 @@ void ModbusLink::open(const LinkSettings &settings)
     if (m_state != State::Disconnected)
         close(tr("reconnecting"));
     m_settings = settings;
+    m_stats.echo = settings.transport == LinkSettings::Transport::Tcp ? 0 : -1; // learnt anew
+    m_lastAnswer.clear();
     ++m_attempt;
     m_failing = false;
     m_closingReason.clear(); // a callback reopens while the link closes: submit queues again
@@ -352,7 +355,9 @@ void ModbusLink::onEchoLearned(bool echoes)
 
 void ModbusLink::resetStats()
 {
+    const int echo = m_stats.echo; // what the line showed of the adapter stays known
     m_stats = LinkStats();
+    m_stats.echo = echo;
     Q_EMIT statsChanged();
 }
 
@@ -391,7 +396,15 @@ QString ModbusLink::noAnswerText(const Request &req, const LinkAnswer &a) const
     if (!a.discarded.isEmpty())
         text += tr(" (discarded: %1)").arg(a.discarded.join(QStringLiteral("; ")));
     const int id = req.unitId > 0 ? req.unitId : m_settings.deviceId;
-    if (a.discarded.isEmpty() && a.crcErrors == 0 && !a.onlyEcho) {
+    const qint64 answeredAgo =
+        m_lastAnswer.value(id, -1) < 0 ? -1 : m_clock.elapsed() - m_lastAnswer.value(id);
+    if (a.discarded.isEmpty() && a.crcErrors == 0 && !a.onlyEcho && answeredAgo >= 0 &&
+        answeredAgo < kRecentAnswerMs) {
+        // The same line and id answered a moment ago: the wiring and settings are fine.
+        text += tr(" -- it answered %1 s ago: busy (writing its flash?), switched off, or a "
+                   "disturbed line")
+                    .arg(double(answeredAgo) / 1000.0, 0, 'f', 1);
+    } else if (a.discarded.isEmpty() && a.crcErrors == 0 && !a.onlyEcho) {
         if (m_settings.isNetwork())
             text += tr(" -- check the device id (%1), the host and port, and the converter's "
                        "serial settings; the bus scan finds controllers")
@@ -433,6 +446,7 @@ void ModbusLink::onAnswered(const LinkAnswer &a)
     switch (a.kind) {
     case LinkAnswer::Kind::Answer:
         ++m_stats.answers;
+        m_lastAnswer.insert(req.unitId > 0 ? req.unitId : m_settings.deviceId, m_clock.elapsed());
         if (const int code = a.exceptionCode; code != 0) {
             ++m_stats.exceptions;
             ++m_stats.exceptionsByCode[code];

@@ -6,6 +6,8 @@
 #include "bus/requestqueue.h"
 
 #include <QDeadlineTimer>
+#include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
 #include <QTimer>
 
@@ -66,6 +68,8 @@ public:
     int timeoutFor(const Request &request) const;
     // Round trips counted before the timeout adapts to them.
     static constexpr int kAdaptAfter = 5;
+    // A controller that answered this recently is not told to check its id, baud and wiring.
+    static constexpr qint64 kRecentAnswerMs = 10000;
 
     const LinkStats &stats() const { return m_stats; }
     void resetStats();
@@ -122,8 +126,10 @@ private:
     TrafficLog *m_traffic;
     bool m_failing = false;
     int m_inFlightTimeoutMs = 0;
-    QString m_closingReason; // while close() fails what was queued; empty otherwise
-    quint64 m_attempt = 0;   // connect attempts, so stale deferred checks do nothing
+    QElapsedTimer m_clock;
+    QHash<int, qint64> m_lastAnswer; // by device id: m_clock's time of its last answer
+    QString m_closingReason;         // while close() fails what was queued; empty otherwise
+    quint64 m_attempt = 0;           // connect attempts, so stale deferred checks do nothing
 };
 
 } // namespace stepcom

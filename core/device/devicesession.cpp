@@ -14,6 +14,7 @@
 #include "device/statusrecorder.h"
 #include "device/stepmove.h"
 #include "i18n/translators.h"
+#include "map/factoryvalues.h"
 
 #include <algorithm>
 #include <memory>
@@ -332,7 +333,7 @@ void DeviceSession::command(const QString &key)
             m_store->setUnsavedToFlash(false);
         if (r.ok && key == QLatin1String("factory_reset")) {
             m_store->setUnsavedToFlash(true); // factory values are in RAM; flash keeps the old ones
-            readAll();                        // show what the controller holds now
+            readAll([this](const ReadOutcome &all) { factoryResetReadBack(all); });
         }
         if (r.ok)
             m_motion->commandAcknowledged(id, key);
@@ -459,6 +460,36 @@ void DeviceSession::saveToFlash()
 void DeviceSession::factoryReset()
 {
     guardedCommand(Risk::FactoryReset, QStringLiteral("factory_reset"));
+}
+
+void DeviceSession::factoryResetReadBack(const ReadOutcome &r)
+{
+    // What the controller holds now is shown, whatever it is; then compared with the factory.
+    m_store->setDeviceValues(r.values);
+    Q_EMIT readFinished(r.ok);
+    if (!r.ok) {
+        say(Severity::Error, tr("Factory reset: reading it back failed: %1")
+                                 .arg(r.errors.join(QLatin1String("; "))));
+        return;
+    }
+    const QString locale = Translators::current();
+    const QHash<QString, qint64> factory = FactoryValues::writable(map());
+    QStringList differ;
+    for (const Parameter *p : map().holdings()) {
+        const auto is = r.values.constFind(p->key);
+        if (!factory.contains(p->key) || is == r.values.cend() || *is == factory.value(p->key))
+            continue;
+        differ << QStringLiteral("%1 %2 (factory %3)")
+                      .arg(p->key, p->displayRaw(*is, locale),
+                           p->displayRaw(factory.value(p->key), locale));
+    }
+    if (differ.isEmpty())
+        say(Severity::Info, tr("Factory reset: read back, every value is the factory value."));
+    else
+        say(Severity::Warning, tr("Factory reset: read back; %n value(s) differ from the factory "
+                                  "values StepCom knows (another firmware's defaults?): %1",
+                                  nullptr, int(differ.size()))
+                                   .arg(differ.join(QLatin1String(", "))));
 }
 
 void DeviceSession::changeLink(int deviceId, int baud)

@@ -257,6 +257,8 @@ private:
     // After a failed write, read back what the controller holds for the keys whose request went
     // out without a good answer.
     void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
+    // After a factory reset: show what it holds now, and say where that is not the factory's.
+    void factoryResetReadBack(const ReadOutcome &r);
     // A restart of the controllers seen and said (sessionrestart.cpp).
     void watchRestarts();
     void checkRestart(int id, const QString &why, bool positionsReset);

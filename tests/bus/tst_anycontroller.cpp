@@ -24,9 +24,11 @@ class TestAnyController : public QObject
 
     ModbusLink *link() const { return SessionInternals::link(*session); }
 
-    bool start(int delayMs, int baud, bool adapterEchoes, bool echoSetting)
+    bool start(int delayMs, int baud, bool adapterEchoes, bool echoSetting,
+               const QHash<int, int> &slowCoils = {})
     {
         SimOptions o;
+        o.slowCoils = slowCoils;
         o.rtu = true;
         o.answerDelayMs = delayMs;
         o.wireBaud = baud;
@@ -159,6 +161,57 @@ private Q_SLOTS:
         QVERIFY(wrote.at(0).at(0).value<WriteOutcome>().ok);
         QCOMPARE(*sim->value(QStringLiteral("motor2.speed")), 150);
         QCOMPARE(link()->stats().timeouts, quint64(0));
+    }
+
+    // Firmware that writes its flash before it answers: save to flash gets its time, is sent
+    // once, and says how long it took; a factory reset likewise.
+    void slowCommandsAreGivenTheirTime()
+    {
+        QVERIFY2(start(5, 9600, false, false, {{96, 800}, {73, 1500}}), qPrintable(heard()));
+        const LinkStats before = link()->stats();
+        QVERIFY2(commandDone(QStringLiteral("save_to_flash")), qPrintable(heard()));
+        QVERIFY2(heard().contains(QLatin1String("Save to flash: done; the controller answered "
+                                                "after 0.8 s")) ||
+                     heard().contains(QLatin1String("Save to flash: done; the controller answered "
+                                                    "after 0.9 s")),
+                 qPrintable(heard()));
+        QCOMPARE(link()->stats().timeouts, before.timeouts);
+        QCOMPARE(link()->stats().requests, before.requests + 1); // never repeated
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->factoryReset();
+        QVERIFY2(read.wait(10000), qPrintable(heard())); // everything read back after it
+        QVERIFY(read.at(0).at(0).toBool());
+        QCOMPARE(link()->stats().timeouts, before.timeouts);
+        // Compared with the factory values StepCom knows: the simulated machine's factory
+        // leaves its limit and home inputs wired (SimRegisters::factoryValue), the rest is as
+        // StepCom knows it.
+        QVERIFY2(heard().contains(QLatin1String("Factory reset: read back; 6 value(s) differ from "
+                                                "the factory values StepCom knows")),
+                 qPrintable(heard()));
+        QVERIFY2(heard().contains(QLatin1String("motor1.limit_positive IN1 (factory None)")),
+                 qPrintable(heard()));
+        QVERIFY2(!heard().contains(QLatin1String("motor1.speed")), qPrintable(heard()));
+    }
+
+    // A controller that answered a moment ago and falls silent is not blamed on the id, the
+    // baud rate or the wiring.
+    void silenceAfterAnswersIsNotBlamedOnTheWiring()
+    {
+        QVERIFY2(start(5, 9600, false, false), qPrintable(heard()));
+        session->stopStatus();
+        QVERIFY(host->powerCycle(4000));
+        bool done = false;
+        ReadOutcome outcome;
+        session->read({session->map().find(QStringLiteral("motor1.speed"))},
+                      [&](const ReadOutcome &r) {
+                          done = true;
+                          outcome = r;
+                      });
+        QTRY_VERIFY_WITH_TIMEOUT(done, 10000);
+        QVERIFY(!outcome.ok);
+        const QString why = outcome.errors.join(QLatin1Char('\n'));
+        QVERIFY2(why.contains(QLatin1String("it answered")), qPrintable(why));
+        QVERIFY2(!why.contains(QLatin1String("check the device id")), qPrintable(why));
     }
 
     // The first request on a line whose echo is not known yet is a command: the copy is taken
