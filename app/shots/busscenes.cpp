@@ -2,8 +2,8 @@
 
 #include "device/devicesession.h"
 #include "device/motionsupervisor.h"
-#include "device/referencetracker.h"
 #include "mainwindow.h"
+#include "motion/referencetracker.h"
 #include "pages/motorpage.h"
 #include "script.h"
 #include "shooter.h"

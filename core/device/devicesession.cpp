@@ -7,13 +7,13 @@
 #include "device/idlist.h"
 #include "device/jogcontroller.h"
 #include "device/linkhealth.h"
-#include "device/motionjudge.h"
 #include "device/motionsupervisor.h"
 #include "device/reconnector.h"
 #include "device/simulatorstarter.h"
 #include "device/statusrecorder.h"
 #include "device/stepmove.h"
 #include "i18n/translators.h"
+#include "motion/motionjudge.h"
 
 #include <algorithm>
 #include <memory>

@@ -2,8 +2,8 @@
 
 #include "bus/modbuslink.h"
 #include "device/devicesession.h"
-#include "device/motionjudge.h"
-#include "device/referencetracker.h"
+#include "motion/motionjudge.h"
+#include "motion/referencetracker.h"
 
 #include <QPointer>
 

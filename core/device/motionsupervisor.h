@@ -1,7 +1,7 @@
 #pragma once
 
-#include "device/motionoutcome.h"
-#include "device/motionwatch.h"
+#include "motion/motionoutcome.h"
+#include "motion/motionwatch.h"
 
 #include <QHash>
 #include <QObject>

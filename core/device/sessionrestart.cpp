@@ -6,9 +6,9 @@
 #include "device/devicememory.h"
 #include "device/devicesession.h"
 #include "device/motionsupervisor.h"
-#include "device/referencetracker.h"
 #include "device/restartwatch.h"
 #include "i18n/translators.h"
+#include "motion/referencetracker.h"
 
 #include <QDateTime>
 

@@ -4,7 +4,7 @@
 #include "device/devicesession.h"
 #include "device/motionsupervisor.h"
 #include "device/parameterstore.h"
-#include "device/referencetracker.h"
+#include "motion/referencetracker.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

@@ -2,10 +2,10 @@
 
 #include "device/devicesession.h"
 #include "device/jogcontroller.h"
-#include "device/motionjudge.h"
 #include "device/motionsupervisor.h"
 #include "i18n/translators.h"
 #include "language.h"
+#include "motion/motionjudge.h"
 #include "widgets/homingordereditor.h"
 #include "widgets/jogkeys.h"
 #include "widgets/jogpanel.h"

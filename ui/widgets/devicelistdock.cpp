@@ -3,8 +3,8 @@
 #include "device/devicesession.h"
 #include "device/linkhealth.h"
 #include "device/motionsupervisor.h"
-#include "device/referencetracker.h"
 #include "i18n/translators.h"
+#include "motion/referencetracker.h"
 #include "widgets/devicelistsettings.h"
 
 #include <QEvent>

@@ -2,8 +2,8 @@
 
 #include "device/devicesession.h"
 #include "device/motionsupervisor.h"
-#include "device/referencetracker.h"
 #include "language.h"
+#include "motion/referencetracker.h"
 #include "widgets/led.h"
 
 #include <QComboBox>

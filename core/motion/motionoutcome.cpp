@@ -1,4 +1,4 @@
-#include "device/motionoutcome.h"
+#include "motion/motionoutcome.h"
 
 namespace stepcom {
 

@@ -1,4 +1,4 @@
-#include "device/referencetracker.h"
+#include "motion/referencetracker.h"
 
 namespace stepcom {
 

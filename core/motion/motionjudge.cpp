@@ -1,4 +1,4 @@
-#include "device/motionjudge.h"
+#include "motion/motionjudge.h"
 
 #include "i18n/translators.h"
 #include "map/registermap.h"

@@ -1,4 +1,4 @@
-#include "device/motionwatch.h"
+#include "motion/motionwatch.h"
 
 #include "map/registermap.h"
 

@@ -1,7 +1,7 @@
-#include "device/motionjudge.h"
-#include "device/motionwatch.h"
-#include "device/referencetracker.h"
 #include "map/registermap.h"
+#include "motion/motionjudge.h"
+#include "motion/motionwatch.h"
+#include "motion/referencetracker.h"
 
 #include <QSignalSpy>
 #include <QTest>
