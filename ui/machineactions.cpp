@@ -1,9 +1,9 @@
 #include "machineactions.h"
 
-#include "device/bussweep.h"
 #include "device/devicesession.h"
 #include "dialogs/applytodevicesdialog.h"
 #include "language.h"
+#include "line/bussweep.h"
 #include "profile/busdump.h"
 #include "profile/profilefile.h"
 #include "report/machinereport.h"

@@ -9,11 +9,12 @@ declare -A allowed=(
     [core/bus]="map"
     [core/motion]="map i18n"
     [core/device]="map bus motion i18n"
+    [core/line]="map bus device"
     [core/profile]="map bus device motion i18n"
     [core/commissioning]="map bus device motion profile i18n"
     [core/report]="map bus device motion profile commissioning i18n"
     [core/sim]="map bus device motion i18n"
-    [ui]="map device motion profile commissioning report i18n"
+    [ui]="map device line motion profile commissioning report i18n"
 )
 bad=0
 for dir in "${!allowed[@]}"; do

@@ -1,7 +1,7 @@
 #include "bus/modbuslink.h"
-#include "device/busscanner.h"
 #include "device/devicesession.h"
 #include "dialogs/busscandialog.h"
+#include "line/busscanner.h"
 #include "pages/connectionpage.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"

@@ -2,9 +2,9 @@
 
 #include "device/devicesession.h"
 #include "device/linkhealth.h"
-#include "device/linksettingsstore.h"
 #include "device/serialports.h"
 #include "dialogs/busscandialog.h"
+#include "line/linksettingsstore.h"
 #include "widgets/led.h"
 #include "widgets/lineoptionsbox.h"
 

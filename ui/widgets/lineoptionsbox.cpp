@@ -1,6 +1,6 @@
 #include "widgets/lineoptionsbox.h"
 
-#include "device/linksettingsstore.h"
+#include "line/linksettingsstore.h"
 
 #include <QCheckBox>
 #include <QGridLayout>

@@ -1,4 +1,4 @@
-#include "device/busscanner.h"
+#include "line/busscanner.h"
 
 #include "bus/modbuslink.h"
 #include "map/registermap.h"

@@ -1,6 +1,6 @@
 // Scan results a person reads: "id 7 at 9600 8N1 — a 2-axis controller, step angle 1.80°",
 // from what the device showed, and a real scan of the simulator at id 7.
-#include "device/busscanner.h"
+#include "line/busscanner.h"
 #include "map/registermap.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/idchange.h"
+#include "line/idchange.h"
 
 #include <QList>
 #include <QObject>

@@ -1,4 +1,4 @@
-#include "device/idchange.h"
+#include "line/idchange.h"
 
 #include "device/devicesession.h"
 

@@ -1,4 +1,4 @@
-#include "device/bussweep.h"
+#include "line/bussweep.h"
 
 #include "device/devicesession.h"
 

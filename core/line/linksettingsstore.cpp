@@ -1,4 +1,4 @@
-#include "device/linksettingsstore.h"
+#include "line/linksettingsstore.h"
 
 #include <QSettings>
 

@@ -1,4 +1,4 @@
-#include "device/idassigner.h"
+#include "line/idassigner.h"
 
 #include "device/devicesession.h"
 #include "device/idlist.h"
