@@ -1,7 +1,7 @@
 #include "busactions.h"
 
-#include "device/devicesession.h"
 #include "dialogs/idassistantdialog.h"
+#include "session/devicesession.h"
 #include "widgets/devicelistdock.h"
 
 #include <QAction>

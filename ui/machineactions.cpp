@@ -1,12 +1,12 @@
 #include "machineactions.h"
 
-#include "device/devicesession.h"
 #include "dialogs/applytodevicesdialog.h"
 #include "language.h"
 #include "line/bussweep.h"
 #include "profile/busdump.h"
 #include "profile/profilefile.h"
 #include "report/machinereport.h"
+#include "session/devicesession.h"
 #include "widgets/devicelistdock.h"
 
 #include <QAction>

@@ -2,11 +2,6 @@
 
 #include "backupguard.h" // issue 17
 #include "busactions.h"  // issue 16
-#include "device/devicesession.h"
-#include "device/jogcontroller.h"
-#include "device/linkhealth.h"
-#include "device/reconnector.h"
-#include "device/sessionlog.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "help/guidewindow.h"
@@ -24,6 +19,11 @@
 #include "pages/motorpage.h"
 #include "pages/plotpage.h" // monitoring (issue 5)
 #include "profileactions.h" // profiles (issue 7)
+#include "session/devicesession.h"
+#include "session/jogcontroller.h"
+#include "session/linkhealth.h"
+#include "session/reconnector.h"
+#include "session/sessionlog.h"
 #include "widgets/devicelistdock.h"
 #include "widgets/linkstatus.h"
 #include "widgets/messageview.h"

@@ -1,8 +1,8 @@
 #include "trafficprobe.h"
 
-#include "device/devicesession.h"
 #include "device/poller.h"
 #include "device/readplanner.h"
+#include "session/devicesession.h"
 #include "widgets/trafficmodel.h"
 #include "widgets/trafficview.h"
 

@@ -1,11 +1,11 @@
 #include "busscenes.h"
 
-#include "device/devicesession.h"
-#include "device/motionsupervisor.h"
 #include "mainwindow.h"
 #include "motion/referencetracker.h"
 #include "pages/motorpage.h"
 #include "script.h"
+#include "session/devicesession.h"
+#include "session/motionsupervisor.h"
 #include "shooter.h"
 #include "widgets/devicelistdock.h"
 

@@ -1,6 +1,6 @@
 #include "line/bussweep.h"
 
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 
 namespace stepcom {
 

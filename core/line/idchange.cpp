@@ -1,6 +1,6 @@
 #include "line/idchange.h"
 
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 
 #include <QPointer>
 #include <QTimer>

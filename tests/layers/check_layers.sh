@@ -9,12 +9,13 @@ declare -A allowed=(
     [core/bus]="map"
     [core/motion]="map i18n"
     [core/device]="map bus motion i18n"
-    [core/line]="map bus device"
-    [core/profile]="map bus device motion i18n"
+    [core/session]="map bus device motion i18n"
+    [core/line]="map bus device session"
+    [core/profile]="map bus device motion session i18n"
     [core/commissioning]="map bus device motion profile i18n"
     [core/report]="map bus device motion profile commissioning i18n"
-    [core/sim]="map bus device motion i18n"
-    [ui]="map device line motion profile commissioning report i18n"
+    [core/sim]="map bus device motion session i18n"
+    [ui]="map device session line motion profile commissioning report i18n"
 )
 bad=0
 for dir in "${!allowed[@]}"; do
@@ -31,7 +32,7 @@ for dir in "${!allowed[@]}"; do
 done
 # Front-ends speak to the session, not to its parts (the benchmark measures the link itself).
 while IFS= read -r hit; do
-    echo "$hit: front-ends include no bus/ or poll/ header (use device/devicesession.h)"
+    echo "$hit: front-ends include no bus/ or poll/ header (use session/devicesession.h)"
     bad=1
 done < <(grep -rnE '^#include "(bus|poll)/' app ui --include='*.cpp' --include='*.h' | grep -v '^app/bench/')
 if [[ $bad -ne 0 ]]; then

@@ -1,4 +1,4 @@
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"

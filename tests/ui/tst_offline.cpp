@@ -1,4 +1,3 @@
-#include "device/devicesession.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilefilesdialog.h"
 #include "language.h"
@@ -11,6 +10,7 @@
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
 #include "profileactions.h"
+#include "session/devicesession.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"

@@ -1,5 +1,5 @@
-#include "device/devicesession.h"
-#include "device/stepmove.h"
+#include "session/devicesession.h"
+#include "session/stepmove.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"

@@ -1,9 +1,9 @@
 #include "pages/checklistpage.h"
 
 #include "commissioning/checklistfile.h"
-#include "device/devicesession.h"
 #include "profile/profile.h"
 #include "profile/settingsfingerprint.h"
+#include "session/devicesession.h"
 #include "widgets/checklistcalibrationstep.h"
 #include "widgets/checklistdirectionstep.h"
 #include "widgets/checklistflashstep.h"

@@ -1,10 +1,10 @@
 #include "pages/connectionpage.h"
 
-#include "device/devicesession.h"
-#include "device/linkhealth.h"
-#include "device/serialports.h"
 #include "dialogs/busscandialog.h"
 #include "line/linksettingsstore.h"
+#include "session/devicesession.h"
+#include "session/linkhealth.h"
+#include "session/serialports.h"
 #include "widgets/led.h"
 #include "widgets/lineoptionsbox.h"
 

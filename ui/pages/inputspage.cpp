@@ -1,8 +1,8 @@
 #include "pages/inputspage.h"
 
-#include "device/devicesession.h"
 #include "i18n/translators.h"
 #include "language.h"
+#include "session/devicesession.h"
 #include "widgets/led.h"
 #include "widgets/parameterfield.h"
 #include "widgets/wiringwarnings.h"

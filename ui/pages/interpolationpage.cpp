@@ -1,6 +1,6 @@
 #include "pages/interpolationpage.h"
 
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 #include "widgets/interpolationpreview.h"
 #include "widgets/patheditor.h"
 #include "widgets/verticalscrollarea.h"

@@ -1,8 +1,8 @@
 #include "pages/modespage.h"
 
-#include "device/devicesession.h"
 #include "dialogs/writechangesdialog.h"
 #include "language.h"
+#include "session/devicesession.h"
 #include "widgets/parameterfield.h"
 #include "widgets/parameterform.h"
 

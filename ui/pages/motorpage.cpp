@@ -1,7 +1,7 @@
 #include "pages/motorpage.h"
 
-#include "device/devicesession.h"
 #include "language.h"
+#include "session/devicesession.h"
 #include "widgets/derivedvalues.h"
 #include "widgets/parameterfield.h"
 #include "widgets/parameterform.h"

@@ -1,7 +1,7 @@
 #include "pages/plotpage.h"
 
-#include "device/devicesession.h"
 #include "device/statusrecorder.h"
+#include "session/devicesession.h"
 #include "widgets/positionplot.h"
 #include "widgets/xyplot.h"
 

@@ -1,8 +1,8 @@
 #include "widgets/checklistdirectionstep.h"
 
 #include "commissioning/directioncheck.h"
-#include "device/devicesession.h"
-#include "device/stepmove.h"
+#include "session/devicesession.h"
+#include "session/stepmove.h"
 
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>

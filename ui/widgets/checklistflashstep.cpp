@@ -1,7 +1,7 @@
 #include "widgets/checklistflashstep.h"
 
-#include "device/devicesession.h"
 #include "profile/profile.h"
+#include "session/devicesession.h"
 
 #include <QHBoxLayout>
 #include <QPointer>

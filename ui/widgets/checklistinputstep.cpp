@@ -1,6 +1,6 @@
 #include "widgets/checklistinputstep.h"
 
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 
 #include <QHBoxLayout>
 #include <QPushButton>

@@ -1,8 +1,8 @@
 #include "widgets/checklistmotionstep.h"
 
-#include "device/devicesession.h"
-#include "device/motionsupervisor.h"
 #include "motion/motionjudge.h"
+#include "session/devicesession.h"
+#include "session/motionsupervisor.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>

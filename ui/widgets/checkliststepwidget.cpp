@@ -1,8 +1,8 @@
 #include "widgets/checkliststepwidget.h"
 
-#include "device/devicesession.h"
 #include "dialogs/writechangesdialog.h"
 #include "language.h"
+#include "session/devicesession.h"
 #include "writeflow.h"
 
 #include <QEvent>

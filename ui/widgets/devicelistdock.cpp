@@ -1,10 +1,10 @@
 #include "widgets/devicelistdock.h"
 
-#include "device/devicesession.h"
-#include "device/linkhealth.h"
-#include "device/motionsupervisor.h"
 #include "i18n/translators.h"
 #include "motion/referencetracker.h"
+#include "session/devicesession.h"
+#include "session/linkhealth.h"
+#include "session/motionsupervisor.h"
 #include "widgets/devicelistsettings.h"
 
 #include <QEvent>

@@ -1,7 +1,7 @@
 #include "widgets/devicelistsettings.h"
 
-#include "device/devicesession.h"
-#include "device/idlist.h"
+#include "session/devicesession.h"
+#include "session/idlist.h"
 
 #include <QSettings>
 

@@ -1,11 +1,11 @@
 #include "widgets/jogpanel.h"
 
-#include "device/devicesession.h"
-#include "device/motionsupervisor.h"
 #include "i18n/translators.h"
 #include "language.h"
 #include "motion/motionjudge.h"
 #include "motion/referencetracker.h"
+#include "session/devicesession.h"
+#include "session/motionsupervisor.h"
 #include "widgets/jogbutton.h"
 #include "widgets/led.h"
 #include "widgets/parameterfield.h"

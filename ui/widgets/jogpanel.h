@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/jogcontroller.h"
+#include "session/jogcontroller.h"
 
 #include <QGroupBox>
 

@@ -1,8 +1,8 @@
 #include "widgets/linkstatus.h"
 
-#include "device/devicesession.h"
-#include "device/linkhealth.h"
-#include "device/reconnector.h"
+#include "session/devicesession.h"
+#include "session/linkhealth.h"
+#include "session/reconnector.h"
 #include "widgets/elidedlabel.h"
 
 #include <QDateTime>

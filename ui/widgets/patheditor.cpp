@@ -1,9 +1,9 @@
 #include "widgets/patheditor.h"
 
-#include "device/devicesession.h"
-#include "device/motionsupervisor.h"
 #include "dialogs/writechangesdialog.h"
 #include "motion/motionjudge.h"
+#include "session/devicesession.h"
+#include "session/motionsupervisor.h"
 #include "widgets/parameterfield.h"
 #include "widgets/parameterform.h"
 

@@ -1,9 +1,9 @@
 #include "widgets/statusdock.h"
 
-#include "device/devicesession.h"
-#include "device/motionsupervisor.h"
 #include "language.h"
 #include "motion/referencetracker.h"
+#include "session/devicesession.h"
+#include "session/motionsupervisor.h"
 #include "widgets/led.h"
 
 #include <QComboBox>

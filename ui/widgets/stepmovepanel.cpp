@@ -1,8 +1,8 @@
 #include "widgets/stepmovepanel.h"
 
-#include "device/devicesession.h"
-#include "device/motionsupervisor.h"
 #include "motion/travellimits.h"
+#include "session/devicesession.h"
+#include "session/motionsupervisor.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

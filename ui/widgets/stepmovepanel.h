@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/stepmove.h"
+#include "session/stepmove.h"
 
 #include <QWidget>
 

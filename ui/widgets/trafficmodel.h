@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/devicesession.h" // TrafficLog, TrafficEntry
+#include "session/devicesession.h" // TrafficLog, TrafficEntry
 
 #include <QAbstractTableModel>
 #include <QHash>

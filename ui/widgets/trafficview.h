@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/devicesession.h" // TrafficLog
+#include "session/devicesession.h" // TrafficLog
 
 #include <QMap>
 #include <QWidget>

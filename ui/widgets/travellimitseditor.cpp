@@ -1,7 +1,7 @@
 #include "widgets/travellimitseditor.h"
 
-#include "device/devicesession.h"
 #include "motion/travellimits.h"
+#include "session/devicesession.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
