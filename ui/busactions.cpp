@@ -2,7 +2,7 @@
 
 #include "dialogs/idassistantdialog.h"
 #include "session/devicesession.h"
-#include "widgets/devicelistdock.h"
+#include "widgets/docks/devicelistdock.h"
 
 #include <QAction>
 #include <QEvent>

@@ -7,7 +7,7 @@
 #include "profile/profilefile.h"
 #include "report/machinereport.h"
 #include "session/devicesession.h"
-#include "widgets/devicelistdock.h"
+#include "widgets/docks/devicelistdock.h"
 
 #include <QAction>
 #include <QDate>

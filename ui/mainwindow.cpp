@@ -24,14 +24,14 @@
 #include "session/linkhealth.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
-#include "widgets/devicelistdock.h"
-#include "widgets/linkstatus.h"
-#include "widgets/messageview.h"
-#include "widgets/offlinebanner.h"
-#include "widgets/statusdock.h" // monitoring (issue 5)
-#include "widgets/statusmessage.h"
-#include "widgets/trafficview.h"
-#include "widgets/travellimitseditor.h" // issue 17
+#include "widgets/docks/devicelistdock.h"
+#include "widgets/docks/linkstatus.h"
+#include "widgets/docks/messageview.h"
+#include "widgets/docks/offlinebanner.h"
+#include "widgets/docks/statusdock.h" // monitoring (issue 5)
+#include "widgets/docks/statusmessage.h"
+#include "widgets/docks/trafficview.h"
+#include "widgets/motion/travellimitseditor.h" // issue 17
 #include "writeflow.h"
 
 #include "profile/profiledocument.h"

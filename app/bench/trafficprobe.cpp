@@ -3,8 +3,8 @@
 #include "device/poller.h"
 #include "device/readplanner.h"
 #include "session/devicesession.h"
-#include "widgets/trafficmodel.h"
-#include "widgets/trafficview.h"
+#include "widgets/docks/trafficmodel.h"
+#include "widgets/docks/trafficview.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -7,7 +7,7 @@
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
 #include "shooter.h"
-#include "widgets/devicelistdock.h"
+#include "widgets/docks/devicelistdock.h"
 
 #include <QAction>
 

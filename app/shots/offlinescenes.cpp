@@ -10,7 +10,7 @@
 #include "profileactions.h"
 #include "session/devicesession.h"
 #include "shooter.h"
-#include "widgets/parameterfield.h"
+#include "widgets/fields/parameterfield.h"
 
 namespace stepcom::offlinescenes {
 

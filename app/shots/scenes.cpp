@@ -21,10 +21,10 @@
 #include "shooter.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
-#include "widgets/checklistdirectionstep.h"
-#include "widgets/checklistinputstep.h"
-#include "widgets/parameterfield.h"
-#include "widgets/patheditor.h"
+#include "widgets/checklist/checklistdirectionstep.h"
+#include "widgets/checklist/checklistinputstep.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/motion/patheditor.h"
 
 #include <QDockWidget>
 #include <QFile>

@@ -8,11 +8,11 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/checklistcalibrationstep.h"
-#include "widgets/checklistdirectionstep.h"
-#include "widgets/checklistflashstep.h"
-#include "widgets/checklistinputstep.h"
-#include "widgets/checklistmotionstep.h"
+#include "widgets/checklist/checklistcalibrationstep.h"
+#include "widgets/checklist/checklistdirectionstep.h"
+#include "widgets/checklist/checklistflashstep.h"
+#include "widgets/checklist/checklistinputstep.h"
+#include "widgets/checklist/checklistmotionstep.h"
 #include "writeflow.h"
 
 #include <QComboBox>

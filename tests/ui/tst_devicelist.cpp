@@ -2,7 +2,7 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/devicelistdock.h"
+#include "widgets/docks/devicelistdock.h"
 
 #include <QPushButton>
 #include <QSettings>

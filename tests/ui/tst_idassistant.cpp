@@ -8,8 +8,8 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/devicelistdock.h"
-#include "widgets/devicelistsettings.h"
+#include "widgets/docks/devicelistdock.h"
+#include "widgets/docks/devicelistsettings.h"
 
 #include <QAction>
 #include <QApplication>

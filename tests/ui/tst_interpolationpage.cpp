@@ -7,11 +7,11 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/interpolationpreview.h"
-#include "widgets/parameterfield.h"
-#include "widgets/parameterform.h"
-#include "widgets/patheditor.h"
-#include "widgets/xyplot.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/parameterform.h"
+#include "widgets/motion/patheditor.h"
+#include "widgets/plots/interpolationpreview.h"
+#include "widgets/plots/xyplot.h"
 
 #include "darkpalette.h"
 

@@ -6,10 +6,10 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/jogpanel.h"
-#include "widgets/messageview.h"
-#include "widgets/parameterfield.h"
-#include "widgets/trafficview.h"
+#include "widgets/docks/messageview.h"
+#include "widgets/docks/trafficview.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/motion/jogpanel.h"
 
 #include <QAbstractButton>
 #include <QApplication>

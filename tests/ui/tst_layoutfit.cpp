@@ -24,7 +24,7 @@
 #include "profile/backupstore.h"
 #include "session/devicesession.h"
 #include "simsession.h"
-#include "widgets/messageview.h"
+#include "widgets/docks/messageview.h"
 
 #include <QAbstractButton>
 #include <QApplication>

@@ -13,9 +13,9 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/linkstatus.h"
-#include "widgets/parameterfield.h"
-#include "widgets/parameterform.h"
+#include "widgets/docks/linkstatus.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/parameterform.h"
 
 #include <QAction>
 #include <QApplication>

@@ -10,10 +10,10 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/led.h"
-#include "widgets/positionplot.h"
-#include "widgets/statusdock.h"
-#include "widgets/xyplot.h"
+#include "widgets/docks/statusdock.h"
+#include "widgets/fields/led.h"
+#include "widgets/plots/positionplot.h"
+#include "widgets/plots/xyplot.h"
 
 #include "testmaps.h"
 

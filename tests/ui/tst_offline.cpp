@@ -15,9 +15,9 @@
 #include "sim/simhost.h"
 #include "simsession.h"
 #include "testmaps.h"
-#include "widgets/offlinebanner.h"
-#include "widgets/parameterfield.h"
-#include "widgets/patheditor.h"
+#include "widgets/docks/offlinebanner.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/motion/patheditor.h"
 
 #include <QAbstractButton>
 #include <QAction>

@@ -7,11 +7,11 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/derivedvalues.h"
-#include "widgets/led.h"
-#include "widgets/parameterfield.h"
-#include "widgets/parameterform.h"
-#include "widgets/wiringwarnings.h"
+#include "widgets/fields/derivedvalues.h"
+#include "widgets/fields/led.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/parameterform.h"
+#include "widgets/fields/wiringwarnings.h"
 
 #include "testmaps.h"
 

@@ -5,7 +5,7 @@
 #include "session/devicesession.h"
 #include "session/reconnector.h"
 #include "sim/simhost.h"
-#include "widgets/linkstatus.h"
+#include "widgets/docks/linkstatus.h"
 
 #include <QApplication>
 #include <QLabel>

@@ -3,8 +3,8 @@
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/stepmovepanel.h"
-#include "widgets/travellimitseditor.h"
+#include "widgets/motion/stepmovepanel.h"
+#include "widgets/motion/travellimitseditor.h"
 
 #include <QCheckBox>
 #include <QComboBox>

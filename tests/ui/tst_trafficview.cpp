@@ -6,8 +6,8 @@
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
-#include "widgets/trafficmodel.h"
-#include "widgets/trafficview.h"
+#include "widgets/docks/trafficmodel.h"
+#include "widgets/docks/trafficview.h"
 
 #include <QApplication>
 #include <QCheckBox>

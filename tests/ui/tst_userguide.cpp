@@ -7,8 +7,8 @@
 #include "mainwindow.h"
 #include "page.h"
 #include "session/devicesession.h"
-#include "widgets/parameterfield.h"
-#include "widgets/parameterform.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/parameterform.h"
 
 #include <QApplication>
 #include <QFile>

@@ -5,8 +5,8 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/serialports.h"
-#include "widgets/led.h"
-#include "widgets/lineoptionsbox.h"
+#include "widgets/fields/led.h"
+#include "widgets/fields/lineoptionsbox.h"
 
 #include <QButtonGroup>
 #include <QCheckBox>

@@ -3,9 +3,9 @@
 #include "i18n/translators.h"
 #include "language.h"
 #include "session/devicesession.h"
-#include "widgets/led.h"
-#include "widgets/parameterfield.h"
-#include "widgets/wiringwarnings.h"
+#include "widgets/fields/led.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/wiringwarnings.h"
 
 #include <QGridLayout>
 #include <QGroupBox>

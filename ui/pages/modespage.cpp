@@ -3,8 +3,8 @@
 #include "dialogs/writechangesdialog.h"
 #include "language.h"
 #include "session/devicesession.h"
-#include "widgets/parameterfield.h"
-#include "widgets/parameterform.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/parameterform.h"
 
 #include <QComboBox>
 #include <QEvent>

@@ -6,12 +6,12 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
-#include "widgets/homingordereditor.h"
-#include "widgets/jogkeys.h"
-#include "widgets/jogpanel.h"
-#include "widgets/led.h"
-#include "widgets/parameterfield.h"
-#include "widgets/travellimitseditor.h"
+#include "widgets/fields/led.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/motion/homingordereditor.h"
+#include "widgets/motion/jogkeys.h"
+#include "widgets/motion/jogpanel.h"
+#include "widgets/motion/travellimitseditor.h"
 
 #include <QApplication>
 #include <QCheckBox>

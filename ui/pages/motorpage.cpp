@@ -2,9 +2,9 @@
 
 #include "language.h"
 #include "session/devicesession.h"
-#include "widgets/derivedvalues.h"
-#include "widgets/parameterfield.h"
-#include "widgets/parameterform.h"
+#include "widgets/fields/derivedvalues.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/parameterform.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>

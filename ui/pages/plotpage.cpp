@@ -2,8 +2,8 @@
 
 #include "device/statusrecorder.h"
 #include "session/devicesession.h"
-#include "widgets/positionplot.h"
-#include "widgets/xyplot.h"
+#include "widgets/plots/positionplot.h"
+#include "widgets/plots/xyplot.h"
 
 #include <QDateTime>
 #include <QDir>
