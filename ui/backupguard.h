@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 
 #include <QObject>
 #include <QPointer>

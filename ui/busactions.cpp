@@ -1,8 +1,8 @@
 #include "busactions.h"
 
-#include "device/devicesession.h"
 #include "dialogs/idassistantdialog.h"
-#include "widgets/devicelistdock.h"
+#include "session/devicesession.h"
+#include "widgets/docks/devicelistdock.h"
 
 #include <QAction>
 #include <QEvent>

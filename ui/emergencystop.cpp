@@ -1,6 +1,6 @@
 #include "emergencystop.h"
 
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 
 #include <QApplication>
 #include <QKeyEvent>

@@ -1,13 +1,13 @@
 #include "machineactions.h"
 
-#include "device/bussweep.h"
-#include "device/devicesession.h"
 #include "dialogs/applytodevicesdialog.h"
 #include "language.h"
+#include "line/bussweep.h"
 #include "profile/busdump.h"
 #include "profile/profilefile.h"
 #include "report/machinereport.h"
-#include "widgets/devicelistdock.h"
+#include "session/devicesession.h"
+#include "widgets/docks/devicelistdock.h"
 
 #include <QAction>
 #include <QDate>

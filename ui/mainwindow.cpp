@@ -2,11 +2,6 @@
 
 #include "backupguard.h" // issue 17
 #include "busactions.h"  // issue 16
-#include "device/devicesession.h"
-#include "device/jogcontroller.h"
-#include "device/linkhealth.h"
-#include "device/reconnector.h"
-#include "device/sessionlog.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "help/guidewindow.h"
@@ -24,14 +19,19 @@
 #include "pages/motorpage.h"
 #include "pages/plotpage.h" // monitoring (issue 5)
 #include "profileactions.h" // profiles (issue 7)
-#include "widgets/devicelistdock.h"
-#include "widgets/linkstatus.h"
-#include "widgets/messageview.h"
-#include "widgets/offlinebanner.h"
-#include "widgets/statusdock.h" // monitoring (issue 5)
-#include "widgets/statusmessage.h"
-#include "widgets/trafficview.h"
-#include "widgets/travellimitseditor.h" // issue 17
+#include "session/devicesession.h"
+#include "session/jogcontroller.h"
+#include "session/linkhealth.h"
+#include "session/reconnector.h"
+#include "session/sessionlog.h"
+#include "widgets/docks/devicelistdock.h"
+#include "widgets/docks/linkstatus.h"
+#include "widgets/docks/messageview.h"
+#include "widgets/docks/offlinebanner.h"
+#include "widgets/docks/statusdock.h" // monitoring (issue 5)
+#include "widgets/docks/statusmessage.h"
+#include "widgets/docks/trafficview.h"
+#include "widgets/motion/travellimitseditor.h" // issue 17
 #include "writeflow.h"
 
 #include "profile/profiledocument.h"

@@ -2,7 +2,7 @@
 // inside the screen, and the layout saved and restored (split from mainwindow.cpp).
 #include "mainwindow.h"
 
-#include "widgets/statusdock.h"
+#include "widgets/docks/statusdock.h"
 
 #include <QDockWidget>
 #include <QScreen>

@@ -1,6 +1,5 @@
 #include "offlineactions.h"
 
-#include "device/devicesession.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilefilesdialog.h"
 #include "language.h"
@@ -8,6 +7,7 @@
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
 #include "report/reportinput.h"
+#include "session/devicesession.h"
 
 #include <QAction>
 #include <QDir>

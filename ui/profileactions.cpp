@@ -1,6 +1,5 @@
 #include "profileactions.h"
 
-#include "device/devicesession.h"
 #include "dialogs/backupsdialog.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilesavedialog.h"
@@ -8,6 +7,7 @@
 #include "profile/backupstore.h"
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
+#include "session/devicesession.h"
 
 #include <QAction>
 #include <QDate>

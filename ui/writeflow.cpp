@@ -1,8 +1,8 @@
 #include "writeflow.h"
 
-#include "device/devicesession.h"
 #include "device/writereview.h"
 #include "dialogs/writechangesdialog.h"
+#include "session/devicesession.h"
 
 namespace stepcom {
 

@@ -3,10 +3,10 @@
 #include "windowprobe.h"
 
 #include "bus/modbuslink.h"
-#include "device/devicesession.h"
 #include "device/poller.h"
 #include "device/readplanner.h"
-#include "device/sessioninternals.h" // the link itself is what is measured
+#include "session/devicesession.h"
+#include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

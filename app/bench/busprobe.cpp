@@ -3,11 +3,11 @@
 #include "benchrunner.h"
 
 #include "bus/modbuslink.h"
-#include "device/buspoller.h"
-#include "device/devicesession.h"
 #include "device/poller.h"
 #include "device/readplanner.h"
-#include "device/sessioninternals.h" // the link itself is what is measured
+#include "session/buspoller.h"
+#include "session/devicesession.h"
+#include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

@@ -3,9 +3,9 @@
 #include "benchrunner.h"
 
 #include "bus/modbuslink.h"
-#include "device/devicesession.h"
 #include "device/poller.h"
-#include "device/sessioninternals.h" // requests are watched on the link
+#include "session/devicesession.h"
+#include "session/sessioninternals.h" // requests are watched on the link
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

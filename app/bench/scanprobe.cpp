@@ -2,7 +2,7 @@
 
 #include "benchrunner.h"
 
-#include "device/busscanner.h"
+#include "line/busscanner.h"
 #include "sim/simhost.h"
 
 #include <QElapsedTimer>

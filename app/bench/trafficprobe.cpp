@@ -1,10 +1,10 @@
 #include "trafficprobe.h"
 
-#include "device/devicesession.h"
 #include "device/poller.h"
 #include "device/readplanner.h"
-#include "widgets/trafficmodel.h"
-#include "widgets/trafficview.h"
+#include "session/devicesession.h"
+#include "widgets/docks/trafficmodel.h"
+#include "widgets/docks/trafficview.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

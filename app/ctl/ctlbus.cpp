@@ -2,7 +2,7 @@
 #include "ctlrunner.h"
 #include "ctlscan.h"
 
-#include "device/idchange.h"
+#include "line/idchange.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -154,7 +154,7 @@ void CtlRunner::runAssignId()
         return;
     }
     connectThen([this, from, to] {
-        // The same steps as the window's id assistant: core/device/idchange.
+        // The same steps as the window's id assistant: core/line/idchange.
         auto *change = new IdChange(m_session, this);
         connect(change, &IdChange::finished, this, [this, change](bool ok, const QString &text) {
             change->deleteLater();

@@ -1,7 +1,7 @@
 #include "ctlbusmonitor.h"
 
 #include "ctlmonitor.h"
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 #include "signalwatcher.h"
 
 #include <algorithm>

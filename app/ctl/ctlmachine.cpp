@@ -2,7 +2,7 @@
 // into one folder.
 #include "ctlrunner.h"
 
-#include "device/bussweep.h"
+#include "line/bussweep.h"
 #include "profile/busdump.h"
 #include "report/machinereport.h"
 

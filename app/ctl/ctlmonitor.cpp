@@ -1,7 +1,7 @@
 #include "ctlmonitor.h"
 
-#include "device/devicesession.h"
-#include "device/reconnector.h"
+#include "session/devicesession.h"
+#include "session/reconnector.h"
 #include "signalwatcher.h"
 
 #include <QDateTime>

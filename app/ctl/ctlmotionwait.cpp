@@ -1,9 +1,9 @@
 #include "ctlmotionwait.h"
 
-#include "device/devicesession.h"
-#include "device/motionjudge.h"
-#include "device/motionwatch.h"
-#include "device/restartwatch.h"
+#include "motion/motionjudge.h"
+#include "motion/motionwatch.h"
+#include "session/devicesession.h"
+#include "session/restartwatch.h"
 
 #include <QDateTime>
 #include <QJsonArray>

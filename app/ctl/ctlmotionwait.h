@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/motionoutcome.h"
+#include "motion/motionoutcome.h"
 
 #include <QObject>
 #include <QTextStream>

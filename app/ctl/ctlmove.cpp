@@ -1,8 +1,8 @@
 // stepcomctl move and the backups before risky commands: parts of CtlRunner.
 #include "ctlrunner.h"
 
-#include "device/stepmove.h"
 #include "profile/sessionbackup.h"
+#include "session/stepmove.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>

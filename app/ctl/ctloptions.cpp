@@ -1,6 +1,6 @@
 #include "ctloptions.h"
 
-#include "device/idlist.h"
+#include "session/idlist.h"
 
 #include <QCoreApplication>
 

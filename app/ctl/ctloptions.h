@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/devicesession.h" // LinkSettings
+#include "session/devicesession.h" // LinkSettings
 
 #include <QCommandLineParser>
 #include <QStringList>

@@ -4,9 +4,9 @@
 #include "ctlmonitor.h"
 #include "ctlmotionwait.h"
 
-#include "device/motionjudge.h"
-#include "device/simulatorstarter.h"
 #include "i18n/translators.h"
+#include "motion/motionjudge.h"
+#include "session/simulatorstarter.h"
 #include "sim/builtinsimulator.h"
 
 #include <QCoreApplication>

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "ctloptions.h"
-#include "device/devicesession.h"
 #include "map/registermap.h"
+#include "session/devicesession.h"
 
 #include <QObject>
 #include <QTextStream>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/busscanner.h"
+#include "line/busscanner.h"
 
 #include <QElapsedTimer>
 #include <QObject>

@@ -1,13 +1,13 @@
 #include "busscenes.h"
 
-#include "device/devicesession.h"
-#include "device/motionsupervisor.h"
-#include "device/referencetracker.h"
 #include "mainwindow.h"
+#include "motion/referencetracker.h"
 #include "pages/motorpage.h"
 #include "script.h"
+#include "session/devicesession.h"
+#include "session/motionsupervisor.h"
 #include "shooter.h"
-#include "widgets/devicelistdock.h"
+#include "widgets/docks/devicelistdock.h"
 
 #include <QAction>
 

@@ -1,6 +1,5 @@
 #include "offlinescenes.h"
 
-#include "device/devicesession.h"
 #include "dialogs/profilefilesdialog.h"
 #include "mainwindow.h"
 #include "map/factoryvalues.h"
@@ -9,8 +8,9 @@
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
 #include "profileactions.h"
+#include "session/devicesession.h"
 #include "shooter.h"
-#include "widgets/parameterfield.h"
+#include "widgets/fields/parameterfield.h"
 
 namespace stepcom::offlinescenes {
 

@@ -1,8 +1,6 @@
 #include "scenes.h"
 
 #include "busscenes.h"
-#include "device/devicesession.h"
-#include "device/jogcontroller.h"
 #include "dialogs/busscandialog.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/writechangesdialog.h"
@@ -18,13 +16,15 @@
 #include "pages/motorpage.h"
 #include "pages/plotpage.h"
 #include "profileactions.h"
+#include "session/devicesession.h"
+#include "session/jogcontroller.h"
 #include "shooter.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
-#include "widgets/checklistdirectionstep.h"
-#include "widgets/checklistinputstep.h"
-#include "widgets/parameterfield.h"
-#include "widgets/patheditor.h"
+#include "widgets/checklist/checklistdirectionstep.h"
+#include "widgets/checklist/checklistinputstep.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/motion/patheditor.h"
 
 #include <QDockWidget>
 #include <QFile>

@@ -1,10 +1,10 @@
 #include "shooter.h"
 
-#include "device/devicesession.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "page.h"
 #include "scenes.h"
+#include "session/devicesession.h"
 #include "sim/builtinsimulator.h"
 #include "sim/simhost.h"
 

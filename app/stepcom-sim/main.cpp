@@ -1,7 +1,7 @@
 // stepcom-sim: the simulated controller as a program of its own.
 #include "consolereader.h"
-#include "device/idlist.h"
 #include "i18n/translators.h"
+#include "session/idlist.h"
 #include "signalwatcher.h"
 #include "sim/simcommandline.h"
 #include "sim/simconsole.h"

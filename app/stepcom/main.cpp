@@ -1,7 +1,7 @@
-#include "device/devicesession.h"
 #include "i18n/translators.h"
 #include "language.h"
 #include "mainwindow.h"
+#include "session/devicesession.h"
 #include "sim/builtinsimulator.h"
 
 #include <QApplication>

@@ -1,8 +1,8 @@
 #include "profile/profiledocument.h"
 
-#include "device/devicesession.h"
 #include "map/factoryvalues.h"
 #include "profile/profilefile.h"
+#include "session/devicesession.h"
 
 #include <QFileInfo>
 

@@ -1,7 +1,7 @@
 #include "profile/profilerollout.h"
 
-#include "device/devicesession.h"
 #include "profile/backupstore.h"
+#include "session/devicesession.h"
 
 #include <QTimer>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "device/devicesession.h"
 #include "profile/backupstore.h"
+#include "session/devicesession.h"
 
 #include <QCoreApplication>
 

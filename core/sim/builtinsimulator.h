@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/simulatorstarter.h"
+#include "session/simulatorstarter.h"
 
 #include <QList>
 

@@ -1,6 +1,6 @@
 #include "sim/simcommandline.h"
 
-#include "device/idlist.h"
+#include "session/idlist.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>

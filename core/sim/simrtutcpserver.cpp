@@ -7,7 +7,6 @@
 #include <QDataStream>
 #include <QModbusPdu>
 #include <QPointer>
-#include <QTcpServer>
 #include <QTcpSocket>
 #include <QTimer>
 
@@ -30,81 +29,26 @@ int requestLength(const QByteArray &b)
 } // namespace
 
 SimRtuTcpServer::SimRtuTcpServer(SimResponder *responder, bool echo, QObject *parent)
-    : QObject(parent)
+    : SimTcpListener(parent)
     , m_responder(responder)
     , m_echo(echo)
-    , m_server(new QTcpServer(this))
-    , m_reopen(new QTimer(this))
 {
     m_clock.start();
-    m_reopen->setSingleShot(true);
-    connect(m_server, &QTcpServer::newConnection, this, &SimRtuTcpServer::onNewConnection);
-    connect(m_reopen, &QTimer::timeout, this, [this] {
-        if (!m_server->listen(m_address, m_port))
-            m_reopen->start(200); // the port may linger a moment: try again
-    });
 }
 
-SimRtuTcpServer::~SimRtuTcpServer()
+QString SimRtuTcpServer::listenError(const QHostAddress &address, quint16 port,
+                                     const QString &reason) const
 {
-    close();
-}
-
-bool SimRtuTcpServer::listen(const QHostAddress &address, quint16 port, QString *error)
-{
-    if (!m_server->listen(address, port)) {
-        if (error)
-            *error = tr("cannot listen for RTU over TCP on %1:%2: %3")
-                         .arg(address.toString())
-                         .arg(port)
-                         .arg(m_server->errorString());
-        return false;
-    }
-    m_address = address;
-    m_port = m_server->serverPort();
-    return true;
-}
-
-void SimRtuTcpServer::close()
-{
-    m_reopen->stop();
-    m_server->close();
-    const auto sockets = m_buffers.keys();
-    for (QTcpSocket *s : sockets)
-        dropConnection(s);
-}
-
-void SimRtuTcpServer::hangUp(int pauseMs)
-{
-    if (!m_server->isListening() && m_buffers.isEmpty())
-        return;
-    close();
-    m_reopen->start(std::max(0, pauseMs));
-}
-
-void SimRtuTcpServer::onNewConnection()
-{
-    while (QTcpSocket *socket = m_server->nextPendingConnection()) {
-        m_buffers.insert(socket, {});
-        connect(socket, &QTcpSocket::readyRead, this, [this, socket] { onReadyRead(socket); });
-        connect(socket, &QTcpSocket::disconnected, this,
-                [this, socket] { dropConnection(socket); });
-    }
-}
-
-void SimRtuTcpServer::dropConnection(QTcpSocket *socket)
-{
-    if (!m_buffers.remove(socket))
-        return;
-    socket->disconnect(this);
-    socket->abort();
-    socket->deleteLater();
+    return tr("cannot listen for RTU over TCP on %1:%2: %3")
+        .arg(address.toString())
+        .arg(port)
+        .arg(reason);
 }
 
 void SimRtuTcpServer::onReadyRead(QTcpSocket *socket)
 {
-    auto it = m_buffers.find(socket);
-    if (it == m_buffers.end())
+    auto it = buffers().find(socket);
+    if (it == buffers().end())
         return;
     const QByteArray bytes = socket->readAll();
     if (m_echo)
@@ -146,13 +90,13 @@ void SimRtuTcpServer::onReadyRead(QTcpSocket *socket)
         const qint64 leaveAt = std::max(now, m_freeAtMs) + out.delayMs;
         m_freeAtMs = leaveAt;
         QTimer::singleShot(int(leaveAt - now), this, [this, target, answer, hangUpAfter] {
-            if (target && m_buffers.contains(target.data()))
+            if (target && buffers().contains(target.data()))
                 target->write(answer);
             if (hangUpAfter)
                 Q_EMIT hangUpRequested();
         });
-        it = m_buffers.find(socket);
-        if (it == m_buffers.end())
+        it = buffers().find(socket);
+        if (it == buffers().end())
             return;
     }
 }

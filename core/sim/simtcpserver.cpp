@@ -4,7 +4,7 @@
 #include "sim/simresponder.h"
 
 #include <QDataStream>
-#include <QTcpServer>
+#include <QPointer>
 #include <QTcpSocket>
 #include <QTimer>
 
@@ -22,82 +22,20 @@ quint16 be16(const QByteArray &b, int at)
 } // namespace
 
 SimTcpServer::SimTcpServer(SimResponder *responder, QObject *parent)
-    : QObject(parent)
+    : SimTcpListener(parent)
     , m_responder(responder)
-    , m_server(new QTcpServer(this))
-    , m_reopen(new QTimer(this))
-{
-    m_reopen->setSingleShot(true);
-    connect(m_server, &QTcpServer::newConnection, this, &SimTcpServer::onNewConnection);
-    connect(m_reopen, &QTimer::timeout, this, [this] {
-        if (m_server->listen(m_address, m_port))
-            Q_EMIT reopened();
-        else
-            m_reopen->start(200); // the port may linger a moment: try again
-    });
-}
+{}
 
-SimTcpServer::~SimTcpServer()
+QString SimTcpServer::listenError(const QHostAddress &address, quint16 port,
+                                  const QString &reason) const
 {
-    close();
-}
-
-bool SimTcpServer::listen(const QHostAddress &address, quint16 port, QString *error)
-{
-    if (!m_server->listen(address, port)) {
-        if (error)
-            *error = tr("cannot listen on %1:%2: %3")
-                         .arg(address.toString())
-                         .arg(port)
-                         .arg(m_server->errorString());
-        return false;
-    }
-    m_address = address;
-    m_port = m_server->serverPort();
-    return true;
-}
-
-void SimTcpServer::close()
-{
-    m_reopen->stop();
-    m_server->close();
-    const auto sockets = m_buffers.keys();
-    for (QTcpSocket *s : sockets)
-        dropConnection(s);
-}
-
-void SimTcpServer::hangUp(int pauseMs)
-{
-    if (!m_server->isListening() && m_buffers.isEmpty())
-        return;
-    close();
-    Q_EMIT hungUp();
-    m_reopen->start(std::max(0, pauseMs));
-}
-
-void SimTcpServer::onNewConnection()
-{
-    while (QTcpSocket *socket = m_server->nextPendingConnection()) {
-        m_buffers.insert(socket, {});
-        connect(socket, &QTcpSocket::readyRead, this, [this, socket] { onReadyRead(socket); });
-        connect(socket, &QTcpSocket::disconnected, this,
-                [this, socket] { dropConnection(socket); });
-    }
-}
-
-void SimTcpServer::dropConnection(QTcpSocket *socket)
-{
-    if (!m_buffers.remove(socket))
-        return;
-    socket->disconnect(this);
-    socket->abort();
-    socket->deleteLater();
+    return tr("cannot listen on %1:%2: %3").arg(address.toString()).arg(port).arg(reason);
 }
 
 void SimTcpServer::onReadyRead(QTcpSocket *socket)
 {
-    auto it = m_buffers.find(socket);
-    if (it == m_buffers.end())
+    auto it = buffers().find(socket);
+    if (it == buffers().end())
         return;
     it->append(socket->readAll());
     while (it->size() >= kHeader) {
@@ -130,13 +68,13 @@ void SimTcpServer::onReadyRead(QTcpSocket *socket)
         QPointer<QTcpSocket> target(socket);
         const bool hangUpAfter = out.hangUp;
         QTimer::singleShot(out.delayMs, this, [this, target, frame, hangUpAfter] {
-            if (target && m_buffers.contains(target.data()))
+            if (target && buffers().contains(target.data()))
                 target->write(frame);
             if (hangUpAfter)
                 Q_EMIT hangUpRequested();
         });
-        it = m_buffers.find(socket);
-        if (it == m_buffers.end())
+        it = buffers().find(socket);
+        if (it == buffers().end())
             return;
     }
 }

@@ -3,9 +3,9 @@
 // command works the first time; nothing is taken for an echo that is none; no answer is thrown
 // away as "too soon"; the line learns the answer times and fits its timeout to them.
 #include "bus/modbuslink.h"
-#include "device/devicesession.h"
 #include "device/parameterstore.h"
-#include "device/sessioninternals.h"
+#include "session/devicesession.h"
+#include "session/sessioninternals.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

@@ -2,7 +2,7 @@
 // TCP. Whatever the line does, nothing is reported done that the controller does not hold.
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
-#include "device/busscanner.h"
+#include "line/busscanner.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

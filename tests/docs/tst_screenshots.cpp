@@ -1,8 +1,8 @@
-#include "device/devicesession.h"
 #include "language.h"
 #include "laptopscenes.h"
 #include "mainwindow.h"
 #include "scenes.h"
+#include "session/devicesession.h"
 #include "shooter.h"
 
 #include <QApplication>

@@ -1,4 +1,4 @@
-#include "device/idlist.h"
+#include "session/idlist.h"
 #include "sim/simcommandline.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"

@@ -16,10 +16,10 @@
 
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
-#include "device/devicesession.h"
-#include "device/jogcontroller.h"
 #include "device/poller.h"
-#include "device/sessioninternals.h"
+#include "session/devicesession.h"
+#include "session/jogcontroller.h"
+#include "session/sessioninternals.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 

@@ -1,6 +1,6 @@
 #include "simsession.h"
 
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 #include "sim/builtinsimulator.h"
 
 #include <QSignalSpy>

@@ -1,8 +1,8 @@
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/devicelistdock.h"
+#include "widgets/docks/devicelistdock.h"
 
 #include <QPushButton>
 #include <QSettings>

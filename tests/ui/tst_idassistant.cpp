@@ -1,15 +1,15 @@
-#include "device/busscanner.h"
-#include "device/devicesession.h"
-#include "device/idassigner.h"
 #include "dialogs/busscandialog.h"
 #include "dialogs/idassistantdialog.h"
 #include "language.h"
+#include "line/busscanner.h"
+#include "line/idassigner.h"
 #include "mainwindow.h"
+#include "session/devicesession.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/devicelistdock.h"
-#include "widgets/devicelistsettings.h"
+#include "widgets/docks/devicelistdock.h"
+#include "widgets/docks/devicelistsettings.h"
 
 #include <QAction>
 #include <QApplication>

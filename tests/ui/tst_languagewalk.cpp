@@ -1,15 +1,15 @@
-#include "device/devicesession.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "page.h"
 #include "pages/motionpage.h"
+#include "session/devicesession.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/jogpanel.h"
-#include "widgets/messageview.h"
-#include "widgets/parameterfield.h"
-#include "widgets/trafficview.h"
+#include "widgets/docks/messageview.h"
+#include "widgets/docks/trafficview.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/motion/jogpanel.h"
 
 #include <QAbstractButton>
 #include <QApplication>

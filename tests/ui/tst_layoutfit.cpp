@@ -7,7 +7,6 @@
 // view scrolls sideways or a page is cut off at the right, a dialog is larger than the screen,
 // a guide picture is wider than the guide, a status message runs into the link status, the
 // E-STOP is off screen, or a page's main action needs scrolling.
-#include "device/devicesession.h"
 #include "device/parameterstore.h"
 #include "dialogs/backupsdialog.h"
 #include "dialogs/busscandialog.h"
@@ -23,8 +22,9 @@
 #include "page.h"
 #include "pages/connectionpage.h"
 #include "profile/backupstore.h"
+#include "session/devicesession.h"
 #include "simsession.h"
-#include "widgets/messageview.h"
+#include "widgets/docks/messageview.h"
 
 #include <QAbstractButton>
 #include <QApplication>

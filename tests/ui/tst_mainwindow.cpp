@@ -1,7 +1,4 @@
 #include "bus/modbuslink.h"
-#include "device/devicesession.h"
-#include "device/linkhealth.h"
-#include "device/sessioninternals.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "language.h"
@@ -10,12 +7,15 @@
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
 #include "scripteddevice.h"
+#include "session/devicesession.h"
+#include "session/linkhealth.h"
+#include "session/sessioninternals.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/linkstatus.h"
-#include "widgets/parameterfield.h"
-#include "widgets/parameterform.h"
+#include "widgets/docks/linkstatus.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/parameterform.h"
 
 #include <QAction>
 #include <QApplication>

@@ -1,4 +1,3 @@
-#include "device/devicesession.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilefilesdialog.h"
 #include "language.h"
@@ -11,13 +10,14 @@
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
 #include "profileactions.h"
+#include "session/devicesession.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
 #include "testmaps.h"
-#include "widgets/offlinebanner.h"
-#include "widgets/parameterfield.h"
-#include "widgets/patheditor.h"
+#include "widgets/docks/offlinebanner.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/motion/patheditor.h"
 
 #include <QAbstractButton>
 #include <QAction>

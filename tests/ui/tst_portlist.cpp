@@ -1,8 +1,8 @@
 // The Connection page's port list: adapters a person recognises, the stable by-id name opened,
 // and a port plugged in while the page is shown added and offered.
-#include "device/devicesession.h"
-#include "device/serialports.h"
 #include "pages/connectionpage.h"
+#include "session/devicesession.h"
+#include "session/serialports.h"
 
 #include <QApplication>
 #include <QComboBox>

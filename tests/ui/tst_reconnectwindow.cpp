@@ -1,11 +1,11 @@
 // The window after a link loss (issue 15): it tries again on its own, shows the countdown and a
 // Cancel button in the status bar, and shows the controller's values again when it is back.
-#include "device/devicesession.h"
-#include "device/reconnector.h"
 #include "language.h"
 #include "mainwindow.h"
+#include "session/devicesession.h"
+#include "session/reconnector.h"
 #include "sim/simhost.h"
-#include "widgets/linkstatus.h"
+#include "widgets/docks/linkstatus.h"
 
 #include <QApplication>
 #include <QLabel>

@@ -1,10 +1,10 @@
-#include "device/devicesession.h"
-#include "device/stepmove.h"
+#include "session/devicesession.h"
+#include "session/stepmove.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
-#include "widgets/stepmovepanel.h"
-#include "widgets/travellimitseditor.h"
+#include "widgets/motion/stepmovepanel.h"
+#include "widgets/motion/travellimitseditor.h"
 
 #include <QCheckBox>
 #include <QComboBox>

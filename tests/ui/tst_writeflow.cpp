@@ -1,5 +1,5 @@
-#include "device/devicesession.h"
 #include "dialogs/writechangesdialog.h"
+#include "session/devicesession.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"

@@ -1,8 +1,8 @@
 #include "applytodevicesdialog.h"
 
-#include "device/devicesession.h"
 #include "language.h"
 #include "profile/profilerollout.h"
+#include "session/devicesession.h"
 
 #include <QCloseEvent>
 #include <QDialogButtonBox>

@@ -1,8 +1,8 @@
 #include "dialogs/busscandialog.h"
 
-#include "device/busscanner.h"
-#include "device/devicesession.h"
-#include "device/idlist.h"
+#include "line/busscanner.h"
+#include "session/devicesession.h"
+#include "session/idlist.h"
 
 #include <QCheckBox>
 #include <QEvent>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "device/busscanner.h"
-#include "device/devicesession.h"
+#include "line/busscanner.h"
+#include "session/devicesession.h"
 
 #include <QDialog>
 #include <QMap>

@@ -1,6 +1,6 @@
 #include "dialogs/idassistantdialog.h"
 
-#include "device/devicesession.h"
+#include "session/devicesession.h"
 
 #include <QCheckBox>
 #include <QComboBox>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "device/idassigner.h"
+#include "line/idassigner.h"
 
 #include <QDialog>
 

@@ -1,7 +1,7 @@
 #include "dialogs/profilecomparedialog.h"
 
-#include "device/devicesession.h"
 #include "language.h"
+#include "session/devicesession.h"
 
 #include <QCheckBox>
 #include <QEvent>

@@ -1,14 +1,14 @@
 #include "pages/checklistpage.h"
 
 #include "commissioning/checklistfile.h"
-#include "device/devicesession.h"
 #include "profile/profile.h"
 #include "profile/settingsfingerprint.h"
-#include "widgets/checklistcalibrationstep.h"
-#include "widgets/checklistdirectionstep.h"
-#include "widgets/checklistflashstep.h"
-#include "widgets/checklistinputstep.h"
-#include "widgets/checklistmotionstep.h"
+#include "session/devicesession.h"
+#include "widgets/checklist/checklistcalibrationstep.h"
+#include "widgets/checklist/checklistdirectionstep.h"
+#include "widgets/checklist/checklistflashstep.h"
+#include "widgets/checklist/checklistinputstep.h"
+#include "widgets/checklist/checklistmotionstep.h"
 
 #include <QDir>
 #include <QFileDialog>

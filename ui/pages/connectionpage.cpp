@@ -1,12 +1,12 @@
 #include "pages/connectionpage.h"
 
-#include "device/devicesession.h"
-#include "device/linkhealth.h"
-#include "device/linksettingsstore.h"
-#include "device/serialports.h"
 #include "dialogs/busscandialog.h"
-#include "widgets/led.h"
-#include "widgets/lineoptionsbox.h"
+#include "line/linksettingsstore.h"
+#include "session/devicesession.h"
+#include "session/linkhealth.h"
+#include "session/serialports.h"
+#include "widgets/fields/led.h"
+#include "widgets/fields/lineoptionsbox.h"
 
 #include <QButtonGroup>
 #include <QCheckBox>

@@ -1,7 +1,7 @@
 #include "pages/devicepage.h"
 
-#include "device/devicesession.h"
 #include "language.h"
+#include "session/devicesession.h"
 
 #include <QComboBox>
 #include <QGridLayout>

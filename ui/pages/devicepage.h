@@ -1,7 +1,7 @@
 #pragma once
 
-#include "device/devicesession.h"
 #include "page.h"
+#include "session/devicesession.h"
 
 #include <QLabel>
 #include <QPointer>

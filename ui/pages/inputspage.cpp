@@ -1,11 +1,11 @@
 #include "pages/inputspage.h"
 
-#include "device/devicesession.h"
 #include "i18n/translators.h"
 #include "language.h"
-#include "widgets/led.h"
-#include "widgets/parameterfield.h"
-#include "widgets/wiringwarnings.h"
+#include "session/devicesession.h"
+#include "widgets/fields/led.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/wiringwarnings.h"
 
 #include <QGridLayout>
 #include <QGroupBox>

@@ -1,9 +1,9 @@
 #include "pages/interpolationpage.h"
 
-#include "device/devicesession.h"
-#include "widgets/interpolationpreview.h"
-#include "widgets/patheditor.h"
-#include "widgets/verticalscrollarea.h"
+#include "session/devicesession.h"
+#include "widgets/fields/verticalscrollarea.h"
+#include "widgets/motion/patheditor.h"
+#include "widgets/plots/interpolationpreview.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>

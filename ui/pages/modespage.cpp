@@ -1,10 +1,10 @@
 #include "pages/modespage.h"
 
-#include "device/devicesession.h"
 #include "dialogs/writechangesdialog.h"
 #include "language.h"
-#include "widgets/parameterfield.h"
-#include "widgets/parameterform.h"
+#include "session/devicesession.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/parameterform.h"
 
 #include <QComboBox>
 #include <QEvent>

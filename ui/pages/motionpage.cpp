@@ -1,17 +1,17 @@
 #include "pages/motionpage.h"
 
-#include "device/devicesession.h"
-#include "device/jogcontroller.h"
-#include "device/motionjudge.h"
-#include "device/motionsupervisor.h"
 #include "i18n/translators.h"
 #include "language.h"
-#include "widgets/homingordereditor.h"
-#include "widgets/jogkeys.h"
-#include "widgets/jogpanel.h"
-#include "widgets/led.h"
-#include "widgets/parameterfield.h"
-#include "widgets/travellimitseditor.h"
+#include "motion/motionjudge.h"
+#include "session/devicesession.h"
+#include "session/jogcontroller.h"
+#include "session/motionsupervisor.h"
+#include "widgets/fields/led.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/motion/homingordereditor.h"
+#include "widgets/motion/jogkeys.h"
+#include "widgets/motion/jogpanel.h"
+#include "widgets/motion/travellimitseditor.h"
 
 #include <QApplication>
 #include <QCheckBox>

@@ -1,10 +1,10 @@
 #include "pages/motorpage.h"
 
-#include "device/devicesession.h"
 #include "language.h"
-#include "widgets/derivedvalues.h"
-#include "widgets/parameterfield.h"
-#include "widgets/parameterform.h"
+#include "session/devicesession.h"
+#include "widgets/fields/derivedvalues.h"
+#include "widgets/fields/parameterfield.h"
+#include "widgets/fields/parameterform.h"
 
 #include <QGroupBox>
 #include <QHBoxLayout>

@@ -1,9 +1,9 @@
 #include "pages/plotpage.h"
 
-#include "device/devicesession.h"
 #include "device/statusrecorder.h"
-#include "widgets/positionplot.h"
-#include "widgets/xyplot.h"
+#include "session/devicesession.h"
+#include "widgets/plots/positionplot.h"
+#include "widgets/plots/xyplot.h"
 
 #include <QDateTime>
 #include <QDir>

@@ -1,0 +1,54 @@
+#include "motion/motionoutcome.h"
+
+namespace stepcom {
+
+QString MotionOutcome::verdictWord() const
+{
+    switch (verdict) {
+    case Verdict::Done:
+        return QStringLiteral("done");
+    case Verdict::Referenced:
+        return QStringLiteral("referenced");
+    case Verdict::Stopped:
+        return QStringLiteral("stopped");
+    case Verdict::Interrupted:
+        return QStringLiteral("interrupted");
+    case Verdict::NoHomeInput:
+        return QStringLiteral("not_referenced");
+    }
+    return {};
+}
+
+QString MotionOutcome::causeWord() const
+{
+    switch (cause) {
+    case MotionCause::Stop:
+        return QStringLiteral("stop");
+    case MotionCause::EmergencyStop:
+        return QStringLiteral("estop");
+    case MotionCause::LinkLost:
+        return QStringLiteral("link_lost");
+    case MotionCause::Restarted:
+        return QStringLiteral("restarted");
+    case MotionCause::None:
+        break;
+    }
+    if (ok())
+        return QStringLiteral("none");
+    for (const AxisEnd &a : axes) {
+        if (a.limitPositiveOn || a.limitNegativeOn)
+            return QStringLiteral("limit");
+    }
+    return QStringLiteral("unknown");
+}
+
+const AxisEnd *MotionOutcome::axis(int motor) const
+{
+    for (const AxisEnd &a : axes) {
+        if (a.motor == motor)
+            return &a;
+    }
+    return nullptr;
+}
+
+} // namespace stepcom

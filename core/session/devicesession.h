@@ -1,0 +1,314 @@
+#pragma once
+
+// The one header a front-end needs: the session and the value types its API speaks in.
+#include "bus/linksettings.h" // LinkSettings
+#include "bus/linkstats.h"    // LinkStats
+#include "bus/request.h"      // Priority, Result
+#include "bus/trafficlog.h"   // TrafficLog, TrafficEntry
+#include "device/deviceclient.h"
+#include "device/parameterstore.h"
+#include "device/poller.h" // PollStats
+#include "motion/travellimits.h"
+#include "session/busdevicestatus.h"
+
+#include <QMap>
+#include <QObject>
+#include <QSet>
+
+#include <memory>
+
+namespace stepcom {
+
+class BusPoller;
+class DeviceMemory;
+class JogController;
+class LinkHealth;
+class ModbusLink;
+class MotionSupervisor;
+class Reconnector;
+class RestartWatch;
+class SimulatorStarter;
+class StatusRecorder;
+class StepMove;
+
+// One controller connection and everything known about it. Every front-end (the window,
+// stepcomctl, the benchmark, the screenshot tool, the tests) works through this: it reads,
+// writes, pulses commands, jogs, polls the status, records it, and says when motion must stop.
+// It owns the link, the typed client, the parameter store, the status poller, the jog
+// controller, the status recorder and (when a program injects one) the built-in simulator;
+// none of the link's or the poller's parts are handed out. Its declarations are grouped by
+// concern, each group naming the .cpp that implements it (docs/architecture.md, "Who owns what").
+class DeviceSession : public QObject
+{
+    Q_OBJECT
+public:
+    enum class Severity { Info, Warning, Error };
+    Q_ENUM(Severity)
+    enum class LinkState { Disconnected, Connecting, Connected };
+    Q_ENUM(LinkState)
+    // Why every jog must stop now (the rules live here; the window reports what happened).
+    enum class JogStop { PageLeft, FocusLost, WindowClosing };
+    Q_ENUM(JogStop)
+    // Operations after which the controller's settings cannot be had back unless saved first.
+    enum class Risk { Apply, FactoryReset, SaveToFlash, DeviceId, Baud };
+    Q_ENUM(Risk)
+    // Runs before a risky operation (the window's backup), then calls `proceed` once: with an
+    // empty text when it may go on, else why it may not (nothing is done then).
+    using Proceed = std::function<void(const QString &refusal)>;
+    using RiskGuard = std::function<void(Risk risk, Proceed proceed)>;
+    // A command answered after this long is said with its answer time ("answered after 0.8 s").
+    static constexpr qint64 kSlowAnswerMs = 300;
+
+    explicit DeviceSession(const RegisterMap &map = RegisterMap::builtin(),
+                           QObject *parent = nullptr);
+    ~DeviceSession() override;
+
+    // -- Its parts and what it holds (devicesession.cpp) --
+    const RegisterMap &map() const { return m_store->map(); }
+    // The values the session knows: what the controller holds and what the user edited. Pages
+    // and forms bind to this model; the session keeps it up to date.
+    ParameterStore *parameters() const { return m_store; }
+    JogController *jog() const { return m_jog; }
+    // Follows motion commands to their judged outcome and keeps each axis' reference state.
+    MotionSupervisor *motion() const { return m_motion; }
+    // Step jogs and move-to over the single move, judged by the supervisor.
+    StepMove *stepMove() const { return m_step; }
+    // StepCom's software travel limits (not controller registers): steps and move-to beyond
+    // them are refused, a hold-to-move jog crossing them is stopped on the next poll.
+    const TravelLimits &travelLimits() const { return m_limits; }
+    void setTravelLimits(const TravelLimits &limits);
+    // Installed by the window: a backup before every risky operation the session starts
+    // (saveToFlash, factoryReset, changeLink) and the ones a front-end announces (guard()).
+    void setRiskGuard(RiskGuard guard) { m_guard = std::move(guard); }
+    // Runs `proceed` after the guard (at once, agreed, without one).
+    void guard(Risk risk, Proceed proceed);
+    // The live status recorded for the plots; made on first use, recording from then on.
+    StatusRecorder *recorder();
+    TrafficLog *traffic() const;
+    const LinkStats &linkStats() const;
+    void resetLinkStats();
+
+    // -- Connection (devicesessionconnect.cpp; its state and the simulator in devicesession.cpp) --
+    // Port closed / open but not answering / answering: "connected" means answering.
+    LinkHealth *health() const { return m_health; }
+    // Tries again on its own after a link loss (off until a front-end turns it on); while it
+    // waits, an E-STOP is held and sent first when the link is back, then everything is read.
+    Reconnector *reconnector() const { return m_reconnector; }
+    LinkState linkState() const;
+    bool isConnected() const;
+    bool isSimulator() const;
+    LinkSettings settings() const;
+    // Live (the default, as the window wants it): read everything after connecting, poll the
+    // status while connected, read back what a failed write left uncertain. stepcomctl turns it
+    // off, so a command puts on the wire only what it names.
+    // Turning it off while connected stops the polls; on again reads everything and polls
+    // (devicesessionline.cpp).
+    void setLive(bool live);
+    bool isLive() const { return m_live; }
+    // Whether Qt's own qt.modbus messages reach stderr (stepcomctl --verbose); off by default.
+    static void setLinkDiagnosticsShown(bool shown);
+    // The built-in simulator, injected by programs that offer --sim (the session owns it).
+    void setSimulator(std::unique_ptr<SimulatorStarter> simulator);
+    SimulatorStarter *simulatorStarter() const { return m_sim.get(); }
+    // Connect, then (live) read everything (reading never writes). `connected(ok, reason)`
+    // follows.
+    void connectTo(const LinkSettings &settings);
+    // Start the built-in simulated controller in this process and connect to it.
+    void connectSimulator();
+    // Close the link; an empty reason says the user disconnected.
+    void disconnectFrom(const QString &reason = QString());
+    // What the connected controller refuses to read (gaps, parameters it lacks), learnt from
+    // its answers and remembered per line and id for this session's life.
+    const ReadLimits &readLimits() const;
+    // The line a controller is on (port, or host:port); read limits are kept per line and id.
+    static QString lineKey(const LinkSettings &settings);
+    // Every controller's known read limits as text by "line#id", for the saved connection
+    // settings; taken back, the next connect need not learn them again (said once then).
+    QMap<QString, QString> knownReadLimits() const;
+    void setKnownReadLimits(const QMap<QString, QString> &known);
+
+    // -- Reading and writing the device in view (devicesession.cpp) --
+    void readAll();
+    // Read these parameters (or all) and hand the outcome over; the store is left alone.
+    void read(const QList<const Parameter *> &params, std::function<void(const ReadOutcome &)> done,
+              Priority priority = Priority::Read);
+    void readAll(std::function<void(const ReadOutcome &)> done);
+    // Write every edit held in the store, verify, and update the store.
+    void writeChanges();
+    // `done` (optional) hears this write's outcome, after the store has taken it.
+    void write(const QList<ParameterWrite> &writes,
+               std::function<void(const WriteOutcome &)> done = {});
+    // Write a new device id and/or baud, follow the controller and verify it answers there.
+    // On failure `linkChangeFailed` offers the settings that worked before.
+    void changeLink(int deviceId, int baud);
+
+    // -- Commands and stops (devicesession.cpp) --
+    // Pulse a command coil by key, say how it went and emit commandFinished; emergency ones
+    // jump the queue.
+    void command(const QString &key);
+    // The one command path: pulse this coil and hand the result to `done`, which reports it.
+    void command(const Parameter &coil, std::function<void(const Result &)> done);
+    // Always goes out at once, ahead of everything queued; never asks.
+    void emergencyStop();
+    void saveToFlash();
+    void factoryReset(); // the caller confirmed what will be lost
+    // Stop every jog for this reason; returns how many stops were sent or scheduled.
+    int stopJogging(JogStop why);
+
+    // -- Status poll (devicesession.cpp; started on connect when live) --
+    void startStatus();
+    void stopStatus();
+    bool isStatusActive() const;
+    QStringList statusKeys() const;
+    void setStatusIntervalMs(int ms);
+    int statusIntervalMs() const;
+    double statusRate() const;
+    bool isStatusFast() const;
+    QString statusError() const;
+    const PollStats &statusStats() const;
+    void resetStatusStats();
+
+    // -- Line of several (devicesessionline.cpp; a device not in view: sessiondevices.cpp) --
+    // Several controllers on one line (RS-485: one pair of wires, one id each). The link's
+    // device id is the device in view; the others' status is read at the background rate, and
+    // emergencyStop() reaches every one. Empty or one id: a single controller.
+    void setDeviceIds(const QList<int> &ids);
+    QList<int> deviceIds() const;
+    int deviceInView() const;
+    // Show another device of the list without reconnecting: a jog still held is stopped on the
+    // device it runs on, what the store holds is put aside for the device that was in view and
+    // `id`'s is put back at once (then read again), and the live poll moves to `id`. Motion
+    // supervision and references stay per device (MotionSupervisor). False (and a message) when
+    // `id` is not on the list or a step move still runs.
+    bool showDevice(int id);
+    // How often each device not in view has its status read.
+    void setBackgroundIntervalMs(int ms);
+    int backgroundIntervalMs() const;
+    // What the status polls saw of a device, in view or not (Unknown before its first read).
+    BusDeviceStatus deviceStatus(int id) const;
+    // The device values known of any device of the line: the store's for the device in view,
+    // else what was read while it was in view with the background poll's newer status on top.
+    QHash<QString, qint64> knownValues(int id) const;
+    // Read these parameters from the controller at `id`, whoever is in view; the store, the
+    // view and the device list are left alone (probes while ids are given).
+    void readAt(int id, const QList<const Parameter *> &params,
+                std::function<void(const ReadOutcome &)> done);
+    // Reopen the line at another baud without writing to any controller (serial lines only;
+    // elsewhere `done(true)` at once): while ids are given, new controllers arrive at 9600 and
+    // the ones already done listen at the common baud. `done` hears whether the port opened.
+    void setLineBaud(int baud, std::function<void(bool ok, const QString &reason)> done);
+    // Read or write a device of the line whether it is in view or not (sessiondevices.cpp):
+    // the device in view goes through read()/write() (its store follows); another one through
+    // a client addressed to its id, leaving the store alone. Link settings (device.id,
+    // device.baud) are refused for a device not in view: the link cannot follow it there.
+    void readDevice(int id, const QList<const Parameter *> &params,
+                    std::function<void(const ReadOutcome &)> done);
+    void writeDevice(int id, const QList<ParameterWrite> &writes,
+                     std::function<void(const WriteOutcome &)> done);
+    // The link as it reaches device `id` ("/dev/ttyUSB0 · 9600 8N1 · id 2").
+    QString describeDevice(int id) const;
+
+    // -- Restarts (sessionrestart.cpp): nothing to call; controllerRestarted() says it --
+
+Q_SIGNALS:
+    // -- Connection --
+    void connected(bool ok, const QString &reason);
+    void disconnected(const QString &reason);
+    // The link dropped on its own (after `disconnected`).
+    void linkLost(const QString &reason);
+    void linkStateChanged();
+    void linkStatsChanged();
+    // Answers began with the request's own bytes: the adapter echoes and the option is off.
+    void echoSuspected();
+    // Learnt what the controller refuses to read (said once, in words; also a message()).
+    void readLimitsLearned(const QString &text);
+    // -- Reading and writing --
+    void message(stepcom::DeviceSession::Severity severity, const QString &text);
+    void readFinished(bool ok);
+    void writeFinished(const stepcom::WriteOutcome &outcome);
+    void linkChanged(const stepcom::LinkSettings &settings);
+    void linkChangeFailed(const stepcom::LinkSettings &previous, const QString &reason);
+    void travelLimitsChanged();
+    // -- Commands and stops --
+    void commandFinished(const QString &key, bool ok);
+    // After emergencyStop(): which controllers acknowledged their E-STOP, and which did not
+    // (in the order of the list).
+    void emergencyStopFinished(const QList<int> &acknowledged, const QList<int> &notAcknowledged);
+    // emergencyStop() was asked for, before anything is cancelled or sent: work that runs
+    // device after device (a profile applied to several) stops here.
+    void emergencyStopRequested();
+    // -- Status poll --
+    void statusCycleFinished(bool ok, qint64 ms);
+    void statusFastChanged(bool fast);
+    // -- Line of several --
+    void deviceInViewChanged(int id);
+    void deviceStatusChanged(int id);
+    // setDeviceIds() named other devices or another order.
+    void deviceIdsChanged(const QList<int> &ids);
+    // -- Restarts --
+    // Controller `id` restarted (power off?): what it read afterwards differs from what the
+    // session held (`lost`: "motor1.speed 222 → 120 rpm"), or its positions went to 0. Its
+    // references are gone; its values shown are the ones read after the restart.
+    void controllerRestarted(int id, const QStringList &lost);
+
+private:
+    friend class SessionInternals; // tests and the benchmark's link measurements
+
+    void say(Severity severity, const QString &text);
+    // -- Connection (devicesessionconnect.cpp) --
+    void openLink(const LinkSettings &settings);
+    // The reconnector's attempt: the same line (or the simulator) again, limits kept.
+    void reopen(const LinkSettings &settings);
+    void onOpened(bool ok, const QString &reason);
+    void onLost(const QString &reason);
+    // What a connect found already known of this controller, said once in words.
+    void sayKnownLimits(int id);
+    void learnt(int unit, ReadLimits::Lesson lesson, const QString &key);
+    // -- Reading, writing, commands (devicesession.cpp) --
+    void guardedCommand(Risk risk, const QString &key);
+    void writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous);
+    // After a failed write, read back what the controller holds for the keys whose request went
+    // out without a good answer.
+    void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
+    // After a factory reset: show what it holds now, and say where that is not the factory's.
+    void factoryResetReadBack(const ReadOutcome &r);
+    void emergencyStopAll(const QList<int> &ids);
+    // -- Line of several (devicesessionline.cpp) --
+    // The devices not in view, for the background poll.
+    void updateBackground();
+    // -- Restarts (sessionrestart.cpp) --
+    // A restart of the controllers seen and said.
+    void watchRestarts();
+    void checkRestart(int id, const QString &why, bool positionsReset);
+    void restartChecked(int id, const QString &why, bool positionsReset,
+                        const QHash<QString, qint64> &held, const ReadOutcome &read);
+
+    ModbusLink *m_link;
+    DeviceClient *m_client;
+    ParameterStore *m_store;
+    Poller *m_poller;
+    MotionSupervisor *m_motion; // made before the jog controller, which follows it
+    LinkHealth *m_health;
+    JogController *m_jog;
+    StepMove *m_step;
+    TravelLimits m_limits;
+    RiskGuard m_guard;
+    BusPoller *m_bus;
+    DeviceMemory *m_memory; // what the store held for each device not in view
+    QList<int> m_deviceIds; // the line's devices in order; empty: the link's id alone
+    StatusRecorder *m_recorder = nullptr;
+    std::unique_ptr<SimulatorStarter> m_sim;
+    bool m_usingSim = false;
+    bool m_readAfterConnect = false;
+    bool m_readAllAfterStatus = false; // live values first: read everything after one status
+    bool m_live = true;
+    QHash<QString, QHash<int, ReadLimits>> m_knownLimits; // by lineKey(), then unit id
+    Reconnector *m_reconnector = nullptr;
+    bool m_estopPending = false; // pressed while the link was down: sent first when it is back
+    bool m_resumeStatus = false; // the status poll ran when the link was lost
+    QSet<QString> m_restored;    // "line#id" taken from the saved settings, not said yet
+    RestartWatch *m_restarts = nullptr;
+    QSet<int> m_checkingRestart; // devices being read again after a suspected restart
+};
+
+} // namespace stepcom

@@ -1,0 +1,182 @@
+#include "session/sessionlog.h"
+
+#include "session/devicesession.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QRegularExpression>
+#include <QStandardPaths>
+
+namespace stepcom {
+
+SessionLog::SessionLog(DeviceSession *session, QObject *parent)
+    : QObject(parent)
+    , m_directory(defaultDirectory())
+{
+    if (!session)
+        return;
+    connect(session->traffic(), &TrafficLog::entryAdded, this, &SessionLog::write);
+    connect(session, &DeviceSession::linkStateChanged, this, [this, session] {
+        if (session->linkState() == DeviceSession::LinkState::Connecting)
+            beginConnection(session->settings().describe());
+    });
+}
+
+SessionLog::~SessionLog() = default;
+
+QString SessionLog::defaultDirectory()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) +
+           QStringLiteral("/logs");
+}
+
+void SessionLog::setDirectory(const QString &directory)
+{
+    m_file.close();
+    m_directory = directory;
+}
+
+void SessionLog::setLimits(qint64 fileBytes, qint64 totalBytes)
+{
+    m_fileBytes = std::max<qint64>(1024, fileBytes);
+    m_totalBytes = std::max(m_fileBytes, totalBytes);
+}
+
+void SessionLog::beginConnection(const QString &description)
+{
+    m_file.close();
+    m_description = description;
+    m_baseName.clear();
+    m_part = 0;
+}
+
+QString SessionLog::currentFile() const
+{
+    return m_file.isOpen() ? m_file.fileName() : QString();
+}
+
+QStringList SessionLog::files() const
+{
+    const QDir dir(m_directory);
+    QStringList paths;
+    for (const QFileInfo &info :
+         dir.entryInfoList({QStringLiteral("stepcom-*.log")}, QDir::Files, QDir::Name))
+        paths.prepend(info.absoluteFilePath()); // names begin with the time: newest last
+    return paths;
+}
+
+QString SessionLog::kindName(TrafficEntry::Kind kind)
+{
+    switch (kind) {
+    case TrafficEntry::Kind::Poll:
+        return QStringLiteral("poll");
+    case TrafficEntry::Kind::Read:
+        return QStringLiteral("read");
+    case TrafficEntry::Kind::Write:
+        return QStringLiteral("write");
+    case TrafficEntry::Kind::Command:
+        return QStringLiteral("command");
+    case TrafficEntry::Kind::Error:
+        return QStringLiteral("error");
+    case TrafficEntry::Kind::Event:
+        break;
+    }
+    return QStringLiteral("event");
+}
+
+QString SessionLog::formatLine(const TrafficEntry &entry)
+{
+    const char *dir = entry.direction == TrafficEntry::Direction::Sent       ? "TX"
+                      : entry.direction == TrafficEntry::Direction::Received ? "RX"
+                                                                             : "--";
+    const QString hex = QString::fromLatin1(entry.bytes.toHex(' ').toUpper());
+    return QStringLiteral("%1  %2  %3  %4%5\n")
+        .arg(entry.time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")), QLatin1String(dir),
+             kindName(entry.kind).leftJustified(7),
+             hex.isEmpty() ? QString() : hex + QStringLiteral("  "), entry.summary);
+}
+
+bool SessionLog::openFile()
+{
+    if (!QDir().mkpath(m_directory)) {
+        fail(tr("cannot create the log folder %1").arg(m_directory));
+        return false;
+    }
+    if (m_baseName.isEmpty()) {
+        // The time first, so names sort by age; then where the link went, readable and safe.
+        static const QRegularExpression unsafe(QStringLiteral("[^A-Za-z0-9._-]+"));
+        QString where = m_description;
+        where.replace(unsafe, QStringLiteral("_"));
+        where = where.left(60);
+        m_baseName =
+            QStringLiteral("stepcom-%1%2")
+                .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz")),
+                     where.isEmpty() ? QString() : QLatin1Char('-') + where);
+    }
+    ++m_part;
+    const QString name =
+        m_part == 1
+            ? m_baseName + QStringLiteral(".log")
+            : QStringLiteral("%1.part%2.log").arg(m_baseName).arg(m_part, 3, 10, QLatin1Char('0'));
+    m_file.setFileName(QDir(m_directory).filePath(name));
+    if (!m_file.open(QIODevice::WriteOnly | QIODevice::Append | QIODevice::Text)) {
+        fail(
+            tr("cannot write the session log %1: %2").arg(m_file.fileName(), m_file.errorString()));
+        return false;
+    }
+    const QString header =
+        QStringLiteral("# StepCom %1 session log, part %2: %3\n")
+            .arg(QStringLiteral(STEPCOM_VERSION))
+            .arg(m_part)
+            .arg(m_description.isEmpty() ? QStringLiteral("(no connection)") : m_description);
+    m_file.write(header.toUtf8());
+    Q_EMIT fileStarted(m_file.fileName());
+    prune();
+    return true;
+}
+
+void SessionLog::write(const TrafficEntry &entry)
+{
+    const QByteArray line = formatLine(entry).toUtf8();
+    if (m_file.isOpen() && m_file.size() + line.size() > m_fileBytes)
+        m_file.close(); // continue in the next part
+    if (!m_file.isOpen() && !openFile())
+        return;
+    // Flushed at once: after a crash or a pulled plug the last frames are what support needs.
+    if (m_file.write(line) != line.size() || !m_file.flush()) {
+        fail(
+            tr("cannot write the session log %1: %2").arg(m_file.fileName(), m_file.errorString()));
+        m_file.close();
+        return;
+    }
+    m_error.clear();
+}
+
+void SessionLog::prune()
+{
+    // Oldest first (names begin with the time); the file being written always stays.
+    QDir dir(m_directory);
+    const QFileInfoList infos =
+        dir.entryInfoList({QStringLiteral("stepcom-*.log")}, QDir::Files, QDir::Name);
+    qint64 total = 0;
+    for (const QFileInfo &info : infos)
+        total += info.size();
+    for (const QFileInfo &info : infos) {
+        if (total <= m_totalBytes - m_fileBytes)
+            break; // room for the current file to grow to its limit
+        if (info.absoluteFilePath() == QFileInfo(m_file.fileName()).absoluteFilePath())
+            continue;
+        if (QFile::remove(info.absoluteFilePath()))
+            total -= info.size();
+    }
+}
+
+void SessionLog::fail(const QString &reason)
+{
+    if (m_error == reason)
+        return;
+    m_error = reason;
+    Q_EMIT failed(reason);
+}
+
+} // namespace stepcom

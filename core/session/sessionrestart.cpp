@@ -1,0 +1,115 @@
+// DeviceSession: a restart of a controller seen and said. RestartWatch suspects it from the
+// status reads; the session reads everything of that controller again and compares it with
+// what it held, so what is said is what the controller showed, not a guess.
+#include "bus/modbuslink.h"
+#include "device/devicememory.h"
+#include "i18n/translators.h"
+#include "motion/referencetracker.h"
+#include "session/buspoller.h"
+#include "session/devicesession.h"
+#include "session/motionsupervisor.h"
+#include "session/restartwatch.h"
+
+#include <QDateTime>
+
+namespace stepcom {
+
+namespace {
+
+qint64 nowMs()
+{
+    return QDateTime::currentMSecsSinceEpoch();
+}
+
+} // namespace
+
+void DeviceSession::watchRestarts()
+{
+    m_restarts = new RestartWatch(map(), this);
+    connect(m_poller, &Poller::cycleFinished, m_restarts, [this](bool ok) {
+        QHash<QString, qint64> values;
+        for (const QString &key : statusKeys()) {
+            if (const auto raw = m_store->deviceValue(key))
+                values.insert(key, *raw);
+        }
+        m_restarts->statusRead(deviceInView(), ok, values, nowMs());
+    });
+    connect(m_bus, &BusPoller::statusChanged, m_restarts, [this](int id) {
+        if (id == deviceInView())
+            return; // the live poll's cycle above
+        const BusDeviceStatus s = m_bus->status(id);
+        m_restarts->statusRead(id, s.state == BusDeviceStatus::State::Answering, s.values, nowMs());
+    });
+    QHash<quint16, QString> coils;
+    for (const Parameter *p : map().coils())
+        coils.insert(p->address, p->key);
+    connect(m_link, &ModbusLink::dispatched, m_restarts, [this, coils](quint64, const Request &r) {
+        if (r.type == Request::Type::WriteCoil && r.coilOn &&
+            m_restarts->movesOrZeroes(coils.value(r.address)))
+            m_restarts->commandSent(r.unitId > 0 ? r.unitId : m_link->settings().deviceId, nowMs());
+    });
+    connect(this, &DeviceSession::disconnected, m_restarts, &RestartWatch::forget);
+    connect(m_restarts, &RestartWatch::suspected, this, &DeviceSession::checkRestart);
+}
+
+void DeviceSession::checkRestart(int id, const QString &why, bool positionsReset)
+{
+    if (positionsReset)
+        m_motion->restarted(id); // before a motion is judged from the zeros
+    if (m_checkingRestart.contains(id) || !m_link->isConnected())
+        return;
+    m_checkingRestart.insert(id);
+    const QHash<QString, qint64> held = knownValues(id);
+    readDevice(id, map().holdings(), [this, id, why, positionsReset, held](const ReadOutcome &r) {
+        m_checkingRestart.remove(id);
+        restartChecked(id, why, positionsReset, held, r);
+    });
+}
+
+void DeviceSession::restartChecked(int id, const QString &why, bool positionsReset,
+                                   const QHash<QString, qint64> &held, const ReadOutcome &read)
+{
+    const QString locale = Translators::current();
+    const QString device = deviceIds().size() > 1 ? tr("Device %1: ").arg(id) : QString();
+    if (!read.ok) {
+        say(Severity::Warning, device + tr("The controller may have restarted (%1), but reading it "
+                                           "again failed: %2")
+                                            .arg(why, read.errors.join(QLatin1String("; "))));
+        return;
+    }
+    QStringList lost;
+    bool positionsLost = positionsReset;
+    for (const Parameter *p : map().holdings()) {
+        const auto was = held.constFind(p->key);
+        const auto now = read.values.constFind(p->key);
+        if (was == held.cend() || now == read.values.cend() || *was == *now)
+            continue;
+        if (p->localKey == QLatin1String("position"))
+            positionsLost = positionsLost || *now == 0;
+        else if (p->writable())
+            lost << QStringLiteral("%1 %2 → %3")
+                        .arg(p->key, p->displayRaw(*was, locale), p->displayRaw(*now, locale));
+    }
+    // The values read are what the controller holds now; edits the user holds stay held.
+    if (id == deviceInView())
+        m_store->setDeviceValues(read.values);
+    else
+        m_memory->setDeviceValues(id, read.values);
+    if (lost.isEmpty() && !positionsLost) {
+        say(Severity::Info, device + tr("The controller answers again (%1); what it holds is what "
+                                        "StepCom held: nothing shows a restart.")
+                                         .arg(why));
+        return;
+    }
+    if (id == deviceInView())
+        m_store->setUnsavedToFlash(false); // it came back with what its flash holds
+    m_motion->restarted(id);
+    QStringList what{tr("positions lost"), tr("references lost")};
+    if (!lost.isEmpty())
+        what << tr("changes not saved to flash lost: %1").arg(lost.join(QLatin1String(", ")));
+    say(Severity::Warning, device + tr("The controller restarted (power off?): %1. Seen: %2.")
+                                        .arg(what.join(QLatin1String("; ")), why));
+    Q_EMIT controllerRestarted(id, lost);
+}
+
+} // namespace stepcom

@@ -1,0 +1,155 @@
+// A controller whose 24 V is switched off and on: the session sees it, reads everything again,
+// says what was lost, shows what the controller holds now, keeps the user's edits, and forgets
+// the references. On a line of three only the one that restarted is said to.
+#include "device/parameterstore.h"
+#include "motion/referencetracker.h"
+#include "session/devicesession.h"
+#include "session/motionsupervisor.h"
+#include "sim/simdevice.h"
+#include "sim/simhost.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace stepcom;
+
+class TestRestart : public QObject
+{
+    Q_OBJECT
+
+    std::unique_ptr<SimHost> host;
+    std::unique_ptr<DeviceSession> session;
+    QStringList said;
+
+    bool start(const QList<int> &ids)
+    {
+        SimOptions o;
+        o.rtu = true;
+        o.answerDelayMs = 5;
+        o.ids = ids;
+        host = std::make_unique<SimHost>();
+        QString error;
+        if (!host->start(o, &error)) {
+            qWarning() << error;
+            return false;
+        }
+        session = std::make_unique<DeviceSession>();
+        connect(session.get(), &DeviceSession::message, this,
+                [this](DeviceSession::Severity, const QString &text) { said << text; });
+        if (!ids.isEmpty()) {
+            session->setDeviceIds(ids);
+            session->setBackgroundIntervalMs(200);
+        }
+        LinkSettings s;
+        s.portName = host->rtuPath();
+        s.timeoutMs = 200;
+        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->connectTo(s);
+        if (!read.wait(10000) && read.isEmpty())
+            return false;
+        return read.at(0).at(0).toBool();
+    }
+    QString heard() const { return said.join(QLatin1Char('\n')); }
+    bool write(int id, const QString &key, qint64 raw)
+    {
+        const Parameter *p = session->map().find(key);
+        bool done = false;
+        bool ok = false;
+        session->writeDevice(id, {{p, raw}}, [&](const WriteOutcome &w) {
+            done = true;
+            ok = w.ok;
+        });
+        QDeadlineTimer limit(8000);
+        while (!done && !limit.hasExpired())
+            QTest::qWait(10);
+        return ok;
+    }
+
+private Q_SLOTS:
+    void init() { said.clear(); }
+    void cleanup()
+    {
+        session.reset();
+        host.reset();
+    }
+
+    void aPowerCycleWhilePollingIsSeenAndSaid()
+    {
+        QVERIFY(start({}));
+        SimDevice *sim = host->device();
+        const qint64 factory = *sim->value(QStringLiteral("motor1.speed"));
+        QVERIFY(write(1, QStringLiteral("motor1.speed"), factory + 22)); // not saved to flash
+        // An edit the user holds, not written.
+        QVERIFY(session->parameters()->edit(QStringLiteral("motor2.speed"), 150).isEmpty());
+        QVERIFY(sim->command(QStringLiteral("motor1.move")));
+        QTRY_VERIFY_WITH_TIMEOUT(!sim->running(1) && sim->position(1) != 0, 10000);
+        QTRY_VERIFY(session->parameters()->deviceValue(QStringLiteral("motor1.position")) ==
+                    sim->position(1));
+        session->motion()->references()->setReasonOn(1, 1, ReferenceTracker::Reason::Homed);
+        QSignalSpy restarted(session.get(), &DeviceSession::controllerRestarted);
+        QVERIFY(host->powerCycle(1500));
+        QVERIFY2(restarted.wait(15000), qPrintable(heard()));
+        QCOMPARE(restarted.at(0).at(0).toInt(), 1);
+        const QStringList lost = restarted.at(0).at(1).toStringList();
+        QVERIFY2(lost.join(QLatin1Char(' ')).contains(QLatin1String("motor1.speed")),
+                 qPrintable(lost.join(QLatin1Char('\n'))));
+        // What is shown is what the controller holds now.
+        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.speed")), factory);
+        QTRY_COMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.position")), 0);
+        QVERIFY(!session->parameters()->unsavedToFlash());
+        // The edit is still held; the reference is gone.
+        QCOMPARE(*session->parameters()->shownValue(QStringLiteral("motor2.speed")), 150);
+        QCOMPARE(session->motion()->references()->reasonOn(1, 1),
+                 ReferenceTracker::Reason::Restarted);
+        QVERIFY2(heard().contains(QLatin1String("The controller restarted")), qPrintable(heard()));
+        QVERIFY2(heard().contains(QLatin1String("changes not saved to flash lost: motor1.speed")),
+                 qPrintable(heard()));
+        QCOMPARE(restarted.size(), 1); // said once
+    }
+
+    void aRestartAfterSavingLosesOnlyThePositions()
+    {
+        QVERIFY(start({}));
+        QVERIFY(host->device()->command(QStringLiteral("motor1.move")));
+        QTRY_VERIFY_WITH_TIMEOUT(!host->device()->running(1), 10000);
+        QTRY_VERIFY(session->parameters()->deviceValue(QStringLiteral("motor1.position")) ==
+                    host->device()->position(1));
+        QVERIFY(host->device()->save(nullptr)); // everything in flash: no value can be lost
+        const qint64 at = host->device()->position(1);
+        QSignalSpy restarted(session.get(), &DeviceSession::controllerRestarted);
+        QVERIFY(host->powerCycle(1200));
+        QVERIFY2(restarted.wait(15000), qPrintable(heard()));
+        // Restarted all the same: the positions went to 0 (from `at`).
+        QVERIFY(at != 0);
+        QVERIFY(restarted.at(0).at(1).toStringList().isEmpty());
+        QVERIFY2(heard().contains(QLatin1String("positions lost")), qPrintable(heard()));
+        QVERIFY2(!heard().contains(QLatin1String("not saved to flash lost")), qPrintable(heard()));
+    }
+
+    void oneControllerOfThreeRestarts()
+    {
+        QVERIFY(start({1, 2, 3}));
+        QVERIFY(write(2, QStringLiteral("motor1.speed"), 111));
+        QVERIFY(write(3, QStringLiteral("motor1.speed"), 112));
+        QTRY_VERIFY_WITH_TIMEOUT(session->deviceStatus(2).cycles >= 2, 10000);
+        QSignalSpy restarted(session.get(), &DeviceSession::controllerRestarted);
+        QVERIFY(host->powerCycle(1500, 2));
+        QVERIFY2(restarted.wait(20000), qPrintable(heard()));
+        QCOMPARE(restarted.at(0).at(0).toInt(), 2);
+        QVERIFY(restarted.at(0)
+                    .at(1)
+                    .toStringList()
+                    .join(QLatin1Char(' '))
+                    .contains(QLatin1String("motor1.speed")));
+        QVERIFY2(heard().contains(QLatin1String("Device 2: The controller restarted")),
+                 qPrintable(heard()));
+        QTest::qWait(1500);
+        QCOMPARE(restarted.size(), 1); // 1 and 3 went on
+        QCOMPARE(session->knownValues(2).value(QStringLiteral("motor1.speed")),
+                 *host->deviceAt(2)->value(QStringLiteral("motor1.speed")));
+        QCOMPARE(*host->deviceAt(3)->value(QStringLiteral("motor1.speed")), 112);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRestart)
+#include "tst_restart.moc"

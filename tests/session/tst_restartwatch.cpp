@@ -1,0 +1,132 @@
+// RestartWatch: when the status a controller answers with says it may have restarted, and
+// when it does not (moves, homing, zeroing, a short hiccup).
+#include "map/registermap.h"
+#include "session/restartwatch.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace stepcom;
+
+namespace {
+
+QHash<QString, qint64> status(qint64 p1, qint64 p2, bool run1 = false, bool run2 = false)
+{
+    return {{QStringLiteral("motor1.position"), p1},
+            {QStringLiteral("motor2.position"), p2},
+            {QStringLiteral("motor1.running"), run1 ? 1 : 0},
+            {QStringLiteral("motor2.running"), run2 ? 1 : 0}};
+}
+
+} // namespace
+
+class TestRestartWatch : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void positionsBackAtZeroWhileIdle()
+    {
+        RestartWatch w(RegisterMap::builtin());
+        QSignalSpy spy(&w, &RestartWatch::suspected);
+        w.statusRead(1, true, status(1250, -300), 0);
+        w.statusRead(1, true, status(1250, -300), 100);
+        QCOMPARE(spy.size(), 0);
+        w.statusRead(1, true, status(0, 0), 200);
+        QCOMPARE(spy.size(), 1);
+        QCOMPARE(spy.at(0).at(0).toInt(), 1);
+        QVERIFY(spy.at(0).at(2).toBool());
+        // Said once: zeros after zeros are no news.
+        w.statusRead(1, true, status(0, 0), 300);
+        QCOMPARE(spy.size(), 1);
+    }
+
+    void aCommandExplainsTheZeros_data()
+    {
+        QTest::addColumn<qint64>("after");
+        QTest::newRow("next sample") << qint64(100);
+        QTest::newRow("a read under way when it went out") << qint64(1000);
+    }
+    void aCommandExplainsTheZeros()
+    {
+        QFETCH(qint64, after);
+        RestartWatch w(RegisterMap::builtin());
+        QSignalSpy spy(&w, &RestartWatch::suspected);
+        w.statusRead(1, true, status(500, 500), 0);
+        w.commandSent(1, 50); // zero the coordinates
+        if (after > 100)
+            w.statusRead(1, true, status(500, 500), 100); // read before it acted
+        w.statusRead(1, true, status(0, 0), after);
+        QCOMPARE(spy.size(), 0);
+        QVERIFY(w.movesOrZeroes(QStringLiteral("zero_coordinates")));
+        QVERIFY(w.movesOrZeroes(QStringLiteral("motor1.home")));
+        QVERIFY(!w.movesOrZeroes(QStringLiteral("motor1.stop")));
+        QVERIFY(!w.movesOrZeroes(QStringLiteral("estop")));
+        QVERIFY(!w.movesOrZeroes(QStringLiteral("save_to_flash")));
+    }
+
+    void aMotionThatEndsAtZeroIsNoRestart()
+    {
+        RestartWatch w(RegisterMap::builtin());
+        QSignalSpy spy(&w, &RestartWatch::suspected);
+        w.statusRead(1, true, status(300, 0, true), 0);
+        w.statusRead(1, true, status(0, 0), 100);
+        QCOMPARE(spy.size(), 0);
+    }
+
+    void answeringAgainAfterASilence()
+    {
+        RestartWatch w(RegisterMap::builtin());
+        QSignalSpy spy(&w, &RestartWatch::suspected);
+        w.statusRead(2, true, status(700, 0, true), 0);
+        w.statusRead(2, false, {}, 100);
+        w.statusRead(2, false, {}, 2000);
+        w.statusRead(2, true, status(0, 0), 3300);
+        QCOMPARE(spy.size(), 1);
+        QCOMPARE(spy.at(0).at(0).toInt(), 2);
+        QVERIFY2(spy.at(0).at(1).toString().contains(QLatin1String("3.3 s")),
+                 qPrintable(spy.at(0).at(1).toString()));
+        // Running before the silence, at 0 and idle after it: the counters began again.
+        QVERIFY(spy.at(0).at(2).toBool());
+    }
+
+    void aSilenceWithPositionsKeptIsOnlySuspected()
+    {
+        RestartWatch w(RegisterMap::builtin());
+        QSignalSpy spy(&w, &RestartWatch::suspected);
+        w.statusRead(1, true, status(700, 20), 0);
+        w.statusRead(1, false, {}, 100);
+        w.statusRead(1, true, status(700, 20), 1500);
+        QCOMPARE(spy.size(), 1);
+        QVERIFY(!spy.at(0).at(2).toBool());
+    }
+
+    void aShortHiccupIsNothing()
+    {
+        RestartWatch w(RegisterMap::builtin());
+        QSignalSpy spy(&w, &RestartWatch::suspected);
+        w.statusRead(1, true, status(700, 20), 0);
+        w.statusRead(1, false, {}, 100);
+        w.statusRead(1, true, status(700, 20), 400);
+        QCOMPARE(spy.size(), 0);
+    }
+
+    void devicesAreWatchedApart()
+    {
+        RestartWatch w(RegisterMap::builtin());
+        QSignalSpy spy(&w, &RestartWatch::suspected);
+        w.statusRead(1, true, status(100, 0), 0);
+        w.statusRead(2, true, status(100, 0), 0);
+        w.commandSent(1, 10);
+        w.statusRead(1, true, status(0, 0), 100);
+        w.statusRead(2, true, status(0, 0), 100);
+        QCOMPARE(spy.size(), 1);
+        QCOMPARE(spy.at(0).at(0).toInt(), 2);
+        w.forget();
+        w.statusRead(2, true, status(0, 0), 200);
+        QCOMPARE(spy.size(), 1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRestartWatch)
+#include "tst_restartwatch.moc"

@@ -1,0 +1,57 @@
+#pragma once
+
+#include "session/devicesession.h" // TrafficLog
+
+#include <QMap>
+#include <QWidget>
+
+class QCheckBox;
+class QLineEdit;
+class QPushButton;
+class QTableView;
+
+namespace stepcom {
+
+class TrafficModel;
+
+// The traffic dock's content: the frames with filters (polls hidden at first, reads, writes,
+// commands, errors), a search, pause, copy, "Save log…" and "Open log folder" (the session log
+// files, see SessionLog).
+class TrafficView : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit TrafficView(QWidget *parent = nullptr);
+    void setLog(TrafficLog *log);
+    TrafficModel *model() const { return m_model; }
+    QTableView *table() const { return m_table; }
+    // The folder of the session log files ("Open log folder"); empty hides the button.
+    void setLogFolder(const QString &folder);
+    QString logFolder() const { return m_logFolder; }
+    // The rows shown, one line per frame, as TrafficLog::format writes it.
+    QString text() const;
+    bool saveTo(const QString &path, QString *error) const;
+    // Opens the log folder in the desktop's file manager (made first if missing).
+    bool openLogFolder(QString *error = nullptr) const;
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslate();
+    void copySelection();
+    void saveAs();
+
+    TrafficModel *m_model;
+    QTableView *m_table;
+    QCheckBox *m_pause;
+    QMap<TrafficEntry::Kind, QCheckBox *> m_kinds;
+    QLineEdit *m_search;
+    QPushButton *m_clear;
+    QPushButton *m_copy;
+    QPushButton *m_save;
+    QPushButton *m_openFolder;
+    QString m_logFolder;
+};
+
+} // namespace stepcom
