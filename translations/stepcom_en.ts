@@ -4637,6 +4637,97 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::MachineStrip</name>
+    <message>
+        <source>idle</source>
+        <translation>idle</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>running</translation>
+    </message>
+    <message>
+        <source>at a limit</source>
+        <translation>at a limit</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2</source>
+        <translation>Motor %1: %2</translation>
+    </message>
+    <message>
+        <source>referenced</source>
+        <translation>referenced</translation>
+    </message>
+    <message>
+        <source>not referenced</source>
+        <translation>not referenced</translation>
+    </message>
+    <message>
+        <source>Motor %1 position: %2</source>
+        <translation>Motor %1 position: %2</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>unknown</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>on</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>off</translation>
+    </message>
+    <message>
+        <source>port closed</source>
+        <translation>port closed</translation>
+    </message>
+    <message>
+        <source>asking…</source>
+        <translation>asking…</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>not answering</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>answering</translation>
+    </message>
+    <message>
+        <source>Link: %1</source>
+        <translation>Link: %1</translation>
+    </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>Line: %1</translation>
+    </message>
+    <message>
+        <source>Device %1</source>
+        <translation>Device %1</translation>
+    </message>
+    <message>
+        <source>%1 (id %2)</source>
+        <translation>%1 (id %2)</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Motor %1 position</source>
+        <translation>Motor %1 position</translation>
+    </message>
+    <message>
+        <source>IN 1-%1</source>
+        <translation>IN 1-%1</translation>
+    </message>
+    <message>
+        <source>OUT 1-%1</source>
+        <translation>OUT 1-%1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::MainWindow</name>
     <message>
         <source>About StepCom</source>

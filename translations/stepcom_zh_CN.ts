@@ -4610,6 +4610,97 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::MachineStrip</name>
+    <message>
+        <source>idle</source>
+        <translation>空闲</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>at a limit</source>
+        <translation>停在限位</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2</source>
+        <translation>电机 %1：%2</translation>
+    </message>
+    <message>
+        <source>referenced</source>
+        <translation>已建立参考点</translation>
+    </message>
+    <message>
+        <source>not referenced</source>
+        <translation>未建立参考点</translation>
+    </message>
+    <message>
+        <source>Motor %1 position: %2</source>
+        <translation>电机 %1 位置：%2</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>开</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>关</translation>
+    </message>
+    <message>
+        <source>port closed</source>
+        <translation>端口已关闭</translation>
+    </message>
+    <message>
+        <source>asking…</source>
+        <translation>询问中…</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>有应答</translation>
+    </message>
+    <message>
+        <source>Link: %1</source>
+        <translation>链路：%1</translation>
+    </message>
+    <message>
+        <source>Line: %1</source>
+        <translation>线路：%1</translation>
+    </message>
+    <message>
+        <source>Device %1</source>
+        <translation>设备 %1</translation>
+    </message>
+    <message>
+        <source>%1 (id %2)</source>
+        <translation>%1（地址 %2）</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Motor %1 position</source>
+        <translation>电机 %1 位置</translation>
+    </message>
+    <message>
+        <source>IN 1-%1</source>
+        <translation>输入 1-%1</translation>
+    </message>
+    <message>
+        <source>OUT 1-%1</source>
+        <translation>输出 1-%1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::MainWindow</name>
     <message>
         <source>About StepCom</source>

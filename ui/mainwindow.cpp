@@ -26,6 +26,7 @@
 #include "session/sessionlog.h"
 #include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/linkstatus.h"
+#include "widgets/docks/machinestrip.h"
 #include "widgets/docks/messageview.h"
 #include "widgets/docks/offlinebanner.h"
 #include "widgets/docks/statusdock.h" // monitoring (issue 5)
@@ -106,6 +107,10 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     createActions();
     createMenus();
     createDocks();
+    // Under the pages, on every page: positions, states and the E-STOP (issue 25).
+    m_strip = new MachineStrip(session, m_estop, central);
+    m_strip->setDeviceNamer([this](int id) { return m_deviceDock->nameOf(id); });
+    centralLayout->addWidget(m_strip);
     m_linkStatus = new LinkStatus(session, this);
     // A cable pulled and plugged back, an adapter that came back: the window tries again.
     session->reconnector()->setEnabled(true);

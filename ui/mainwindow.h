@@ -19,6 +19,7 @@ class DeviceSession;
 class EmergencyStop;
 class GuideWindow;
 class LinkStatus;
+class MachineStrip; // issue 25
 class MessageView;
 class StatusMessage;
 class MotionPage;     // jogging (issue 5)
@@ -49,6 +50,7 @@ public:
     const QList<Page *> &pages() const { return m_pages; }
     Page *currentPage() const;
     void showPage(int index);
+    MachineStrip *machineStrip() const { return m_strip; }          // issue 25
     StatusDock *statusDock() const { return m_statusDock; }         // monitoring (issue 5)
     DeviceListDock *deviceListDock() const { return m_deviceDock; } // issue 16
     TrafficView *trafficView() const { return m_traffic; }
@@ -111,6 +113,7 @@ private:
     StatusDock *m_statusDock = nullptr;     // monitoring (issue 5)
     DeviceListDock *m_deviceDock = nullptr; // several controllers on one line (issue 16)
     LinkStatus *m_linkStatus = nullptr;
+    MachineStrip *m_strip = nullptr;      // issue 25: positions, state and E-STOP on every page
     StatusMessage *m_status = nullptr;    // issue 19
     MotionPage *m_motion = nullptr;       // jogging (issue 5)
     ProfileActions *m_profiles = nullptr; // profiles (issue 7)

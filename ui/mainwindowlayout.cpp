@@ -2,6 +2,7 @@
 // inside the screen, and the layout saved and restored (split from mainwindow.cpp).
 #include "mainwindow.h"
 
+#include "widgets/docks/machinestrip.h"
 #include "widgets/docks/statusdock.h"
 
 #include <QDockWidget>
@@ -16,6 +17,12 @@ namespace stepcom {
 
 void MainWindow::arrangeDocks()
 {
+    // A short window (1024×600) keeps the strip to one low row (issue 25).
+    // The screen decides too, before the window is fitted into it.
+    const int high =
+        screen() ? std::min(height(), screen()->availableGeometry().height()) : height();
+    if (m_strip)
+        m_strip->setCompact(high < std::max(720, fontMetrics().height() * 40));
     if (!m_statusDock || !centralWidget())
         return;
     const int needed = centralWidget()->minimumSizeHint().width() +

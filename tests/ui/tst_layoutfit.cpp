@@ -6,7 +6,8 @@
 // combo box's current text wider than its field), a widget lies outside its visible parent, a
 // view scrolls sideways or a page is cut off at the right, a dialog is larger than the screen,
 // a guide picture is wider than the guide, a status message runs into the link status, the
-// E-STOP is off screen, or a page's main action needs scrolling.
+// E-STOP is off screen, or a page's main action needs scrolling. The machine strip (issue 25):
+// both positions and its E-STOP on every page, its widest value never cut, its width steady.
 #include "device/parameterstore.h"
 #include "dialogs/backupsdialog.h"
 #include "dialogs/busscandialog.h"
@@ -24,6 +25,7 @@
 #include "profile/backupstore.h"
 #include "session/devicesession.h"
 #include "simsession.h"
+#include "widgets/docks/machinestrip.h"
 #include "widgets/docks/messageview.h"
 
 #include <QAbstractButton>
@@ -175,6 +177,42 @@ class TestLayoutFit : public QObject
         }
     }
 
+    // `w` is shown and lies wholly inside the window (not scrolled away, not behind a tab).
+    void checkOnScreen(const QWidget *w, const QWidget *window, const QString &context,
+                       const QString &what)
+    {
+        if (!w || !w->isVisible() || w->visibleRegion().isEmpty()) {
+            problem(context, QStringLiteral("%1 is not shown").arg(what));
+            return;
+        }
+        const QRect rect(w->mapTo(window, QPoint(0, 0)), w->size());
+        if (!window->rect().contains(rect) || w->visibleRegion().boundingRect() != w->rect())
+            problem(context, QStringLiteral("%1 is not wholly on screen").arg(what));
+    }
+
+    // The machine strip (issue 25): both positions and its E-STOP on every page, no text cut.
+    void checkStrip(MainWindow &window, const QString &context)
+    {
+        MachineStrip *strip = window.machineStrip();
+        if (!strip) {
+            problem(context, QStringLiteral("no machine strip"));
+            return;
+        }
+        if (strip->motorCount() != 2)
+            problem(context, QStringLiteral("the strip shows %1 motors").arg(strip->motorCount()));
+        for (int m = 1; m <= strip->motorCount(); ++m)
+            checkOnScreen(strip->positionLabel(m), &window, context,
+                          QStringLiteral("the strip's motor %1 position").arg(m));
+        checkOnScreen(strip->emergencyStopButton(), &window, context,
+                      QStringLiteral("the strip's E-STOP"));
+        for (QLabel *label : strip->findChildren<QLabel *>()) {
+            QString text;
+            if (label->isVisible() && overflow(label, &text) > 0)
+                problem(context,
+                        QStringLiteral("strip: %1 \"%2\" is cut").arg(describe(label), text));
+        }
+    }
+
     // A dialog or tool window shown over `window`: inside the screen, and its tree as above.
     void checkDialog(QWidget *dialog, const QString &name)
     {
@@ -297,6 +335,7 @@ private Q_SLOTS:
             const QRect estopRect(estop->mapTo(&window, QPoint(0, 0)), estop->size());
             if (!estop->isVisible() || !window.rect().contains(estopRect))
                 problem(context, QStringLiteral("the E-STOP is not on screen"));
+            checkStrip(window, context);
             // The main action in view without scrolling: asked for at 1366×768 and up.
             if (screen.height() < 700)
                 continue;
@@ -309,6 +348,39 @@ private Q_SLOTS:
         m_problems.removeDuplicates();
         QVERIFY2(m_problems.isEmpty(),
                  qPrintable(QStringLiteral("\n") + m_problems.join(QLatin1Char('\n'))));
+    }
+
+    // The strip's readouts hold the widest value a position register can take ("-21474836.48
+    // mm") whole, at the width they had before: digits never move their neighbours.
+    void stripReadoutsHoldTheWidestValue_data() { everyPageFits_data(); }
+    void stripReadoutsHoldTheWidestValue()
+    {
+        QFETCH(QString, language);
+        Language::instance().setLanguage(language);
+        DeviceSession session;
+        MainWindow window(&session);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        test::connectToSimulator(session);
+        QTRY_VERIFY(session.linkStats().answers > 0);
+        MachineStrip *strip = window.machineStrip();
+        QVERIFY(strip);
+        QLabel *position = strip->positionLabel(1);
+        QTRY_VERIFY(position->text() != QStringLiteral("—"));
+        settle();
+        const int width = position->width();
+        const Parameter *p = session.map().find(QStringLiteral("motor1.position"));
+        QVERIFY(p);
+        session.setLive(false); // the poll would put the simulator's value back
+        settle();
+        for (qint64 raw : {p->rawMin, p->rawMax, qint64(0)}) {
+            session.parameters()->setDeviceValues({{p->key, raw}});
+            settle();
+            QString text;
+            QVERIFY2(overflow(position, &text) <= 0, qPrintable(position->text()));
+            QCOMPARE(position->width(), width);
+        }
+        QVERIFY(position->text().contains(QStringLiteral("0")));
     }
 
     // A long message in the status bar stops short of the permanent link status ("Not saved to

@@ -1,0 +1,402 @@
+#include "widgets/docks/machinestrip.h"
+
+#include "emergencystop.h"
+#include "language.h"
+#include "motion/referencetracker.h"
+#include "session/devicesession.h"
+#include "session/linkhealth.h"
+#include "session/motionsupervisor.h"
+#include "widgets/fields/elidedlabel.h"
+#include "widgets/fields/led.h"
+
+#include <QEvent>
+#include <QFontDatabase>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QToolButton>
+
+namespace stepcom {
+
+namespace {
+
+const QString kMotor = QStringLiteral("motor");
+const QString kUnknown = QStringLiteral("—");
+
+enum class Tone { Normal, Good, Warning, Unknown };
+
+// One palette for states, readable on a light and on a dark window.
+QColor toneColour(Tone tone, const QPalette &palette)
+{
+    const bool dark = palette.color(QPalette::Window).lightness() < 128;
+    switch (tone) {
+    case Tone::Good:
+        return dark ? QColor(110, 220, 110) : QColor(0, 120, 0);
+    case Tone::Warning:
+        return dark ? QColor(255, 170, 60) : QColor(170, 80, 0);
+    case Tone::Unknown:
+        return palette.color(QPalette::Disabled, QPalette::WindowText);
+    case Tone::Normal:
+        break;
+    }
+    return palette.color(QPalette::WindowText);
+}
+
+void setTone(QLabel *label, Tone tone)
+{
+    QPalette pal = label->palette();
+    pal.setColor(QPalette::WindowText, toneColour(tone, label->parentWidget()->palette()));
+    label->setPalette(pal);
+}
+
+Led::State lampState(std::optional<qint64> value)
+{
+    if (!value)
+        return Led::State::Unknown;
+    return *value ? Led::State::On : Led::State::Off;
+}
+
+QFrame *separator(QWidget *parent)
+{
+    auto *line = new QFrame(parent);
+    line->setFrameShape(QFrame::VLine);
+    line->setFrameShadow(QFrame::Sunken);
+    return line;
+}
+
+} // namespace
+
+MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget *parent)
+    : QFrame(parent)
+    , m_session(session)
+    , m_inputsCaption(new QLabel(this))
+    , m_outputsCaption(new QLabel(this))
+    , m_link(new QLabel(this))
+    , m_line(new ElidedLabel(this))
+    , m_device(new QLabel(this))
+    , m_estopButton(estop->createButton(this))
+{
+    setObjectName(QStringLiteral("machineStrip"));
+    setFrameShape(QFrame::StyledPanel);
+    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    const RegisterMap &map = session->map();
+    auto *row = new QHBoxLayout(this);
+    for (int n = 1; n <= map.blockCount(kMotor); ++n) {
+        const Parameter *pos = map.blockParameter(kMotor, n, QStringLiteral("position"));
+        if (!pos)
+            break;
+        const Parameter *run = map.blockParameter(kMotor, n, QStringLiteral("running"));
+        MotorView v;
+        v.positionKey = pos->key;
+        v.runningKey = run ? run->key : QString();
+        v.caption = new QLabel(this);
+        v.position = new QLabel(this);
+        v.position->setObjectName(QStringLiteral("stripPosition%1").arg(n));
+        v.position->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        v.position->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        v.motion = new QLabel(this);
+        v.motion->setObjectName(QStringLiteral("stripMotion%1").arg(n));
+        v.reference = new QLabel(this);
+        v.reference->setObjectName(QStringLiteral("stripReference%1").arg(n));
+        auto *grid = new QGridLayout;
+        grid->setVerticalSpacing(0);
+        grid->addWidget(v.caption, 0, 0, Qt::AlignLeft | Qt::AlignBottom);
+        grid->addWidget(v.position, 1, 0, 2, 1);
+        grid->addWidget(v.motion, 1, 1);
+        grid->addWidget(v.reference, 2, 1);
+        row->addLayout(grid);
+        row->addWidget(separator(this));
+        m_motors << v;
+    }
+
+    auto *io = new QGridLayout;
+    io->setVerticalSpacing(2);
+    io->addWidget(m_inputsCaption, 0, 0);
+    io->addWidget(m_outputsCaption, 1, 0);
+    for (int n = 1; map.find(QStringLiteral("io.in%1").arg(n)); ++n) {
+        m_inputKeys << QStringLiteral("io.in%1").arg(n);
+        auto *led = new Led(this);
+        led->setObjectName(QStringLiteral("stripIn%1").arg(n));
+        io->addWidget(led, 0, n);
+        m_inputLeds << led;
+    }
+    for (int n = 1; map.find(QStringLiteral("io.out%1").arg(n)); ++n) {
+        m_outputKeys << QStringLiteral("io.out%1").arg(n);
+        auto *led = new Led(this);
+        led->setObjectName(QStringLiteral("stripOut%1").arg(n));
+        io->addWidget(led, 1, n);
+        m_outputLeds << led;
+    }
+    row->addLayout(io);
+    row->addWidget(separator(this));
+
+    auto *linkColumn = new QVBoxLayout;
+    linkColumn->setSpacing(0);
+    auto *linkRow = new QHBoxLayout;
+    m_device->setObjectName(QStringLiteral("stripDevice"));
+    m_link->setObjectName(QStringLiteral("stripLink"));
+    m_line->setObjectName(QStringLiteral("stripLine"));
+    QFont bold = m_link->font();
+    bold.setBold(true);
+    m_link->setFont(bold);
+    m_device->setFont(bold);
+    linkRow->addWidget(m_device);
+    linkRow->addWidget(m_link, 1);
+    linkColumn->addLayout(linkRow);
+    m_line->setMinimumChars(5);
+    linkColumn->addWidget(m_line);
+    row->addLayout(linkColumn, 1);
+
+    // The same button the toolbar has (one E-STOP behaviour), larger, at the end.
+    m_estopButton->setObjectName(QStringLiteral("emergencyStopButton"));
+    m_estopButton->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Expanding);
+    row->addWidget(m_estopButton);
+
+    m_refresh.setSingleShot(true);
+    m_refresh.setInterval(0);
+    connect(&m_refresh, &QTimer::timeout, this, &MachineStrip::refresh);
+    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &key) {
+        if (key.startsWith(QLatin1String("io.")) || key.startsWith(kMotor))
+            scheduleRefresh();
+    });
+    connect(session, &DeviceSession::linkStateChanged, this, &MachineStrip::scheduleRefresh);
+    connect(session, &DeviceSession::linkStatsChanged, this, &MachineStrip::scheduleRefresh);
+    connect(session, &DeviceSession::deviceInViewChanged, this, &MachineStrip::scheduleRefresh);
+    connect(session, &DeviceSession::deviceIdsChanged, this, &MachineStrip::scheduleRefresh);
+    connect(session->health(), &LinkHealth::stateChanged, this, &MachineStrip::scheduleRefresh);
+    connect(session->motion()->references(), &ReferenceTracker::changed, this,
+            &MachineStrip::scheduleRefresh);
+    applyFonts();
+    retranslate();
+}
+
+QLabel *MachineStrip::positionLabel(int motor) const
+{
+    return motor >= 1 && motor <= m_motors.size() ? m_motors.at(motor - 1).position : nullptr;
+}
+
+QLabel *MachineStrip::motionLabel(int motor) const
+{
+    return motor >= 1 && motor <= m_motors.size() ? m_motors.at(motor - 1).motion : nullptr;
+}
+
+QLabel *MachineStrip::referenceLabel(int motor) const
+{
+    return motor >= 1 && motor <= m_motors.size() ? m_motors.at(motor - 1).reference : nullptr;
+}
+
+MachineStrip::Motion MachineStrip::motion(int motor) const
+{
+    return motor >= 1 && motor <= m_motors.size() ? m_motors.at(motor - 1).state : Motion::Unknown;
+}
+
+void MachineStrip::setCompact(bool compact)
+{
+    if (m_compact == compact)
+        return;
+    m_compact = compact;
+    applyFonts();
+}
+
+void MachineStrip::setDeviceNamer(std::function<QString(int)> namer)
+{
+    m_namer = std::move(namer);
+    scheduleRefresh();
+}
+
+void MachineStrip::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    else if (event->type() == QEvent::FontChange || event->type() == QEvent::PaletteChange)
+        applyFonts();
+    QFrame::changeEvent(event);
+}
+
+void MachineStrip::applyFonts()
+{
+    // Fixed-width digits, as wide as the widest value the register holds ("-21474836.48 mm"):
+    // a changing position never moves its neighbours and is never cut.
+    QFont big = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    big.setPointSizeF(font().pointSizeF() * (m_compact ? 1.3 : 2.0));
+    big.setBold(true);
+    const QFontMetrics fm(big);
+    const QString lang = Language::instance().current();
+    const RegisterMap &map = m_session->map();
+    for (const MotorView &v : std::as_const(m_motors)) {
+        v.position->setFont(big);
+        int widest = fm.horizontalAdvance(kUnknown);
+        if (const Parameter *p = map.find(v.positionKey)) {
+            for (qint64 raw : {p->rawMin, p->rawMax, std::max<qint64>(p->rawMin, -999999999)})
+                widest = std::max(widest, fm.horizontalAdvance(p->displayRaw(raw, lang)));
+        }
+        v.position->setFixedWidth(widest + fm.horizontalAdvance(QLatin1Char(' ')));
+    }
+    layout()->setContentsMargins(m_compact ? QMargins(4, 1, 4, 1) : QMargins(6, 4, 6, 4));
+    QFont estop = font();
+    estop.setBold(true);
+    estop.setPointSizeF(font().pointSizeF() * (m_compact ? 1.2 : 1.7));
+    m_estopButton->setFont(estop);
+    m_estopButton->setMinimumHeight(fm.height());
+    updateGeometry();
+}
+
+void MachineStrip::scheduleRefresh()
+{
+    if (!m_refresh.isActive())
+        m_refresh.start();
+}
+
+QStringList MachineStrip::inputRoles(int n) const
+{
+    QStringList roles;
+    const RegisterMap &map = m_session->map();
+    const ParameterStore *store = m_session->parameters();
+    const QString lang = Language::instance().current();
+    for (int m = 1; m <= m_motors.size(); ++m) {
+        for (const char *role : {"limit_positive", "limit_negative", "home_input"}) {
+            const Parameter *p = map.blockParameter(kMotor, m, QLatin1String(role));
+            if (p && store->deviceValue(p->key) == n)
+                roles << p->label.text(lang);
+        }
+    }
+    return roles;
+}
+
+MachineStrip::Motion MachineStrip::motionOf(int motor, std::optional<qint64> running) const
+{
+    if (!running || !m_session->isConnected())
+        return Motion::Unknown;
+    if (*running)
+        return Motion::Running;
+    // Stopped with one of its limit inputs on: it stands at that limit.
+    const RegisterMap &map = m_session->map();
+    const ParameterStore *store = m_session->parameters();
+    for (const char *role : {"limit_positive", "limit_negative"}) {
+        const Parameter *p = map.blockParameter(kMotor, motor, QLatin1String(role));
+        const auto input = p ? store->deviceValue(p->key) : std::nullopt;
+        if (input && *input > 0 &&
+            store->deviceValue(QStringLiteral("io.in%1").arg(*input)).value_or(0) != 0)
+            return Motion::AtLimit;
+    }
+    return Motion::Idle;
+}
+
+void MachineStrip::refresh()
+{
+    const ParameterStore *store = m_session->parameters();
+    const RegisterMap &map = m_session->map();
+    const QString lang = Language::instance().current();
+    const bool connected = m_session->isConnected();
+    const ReferenceTracker *references = m_session->motion()->references();
+    for (int m = 0; m < m_motors.size(); ++m) {
+        MotorView &v = m_motors[m];
+        const auto raw = connected ? store->deviceValue(v.positionKey) : std::nullopt;
+        const Parameter *p = map.find(v.positionKey);
+        v.position->setText(raw && p ? p->displayRaw(*raw, lang) : kUnknown);
+        setTone(v.position, raw ? Tone::Normal : Tone::Unknown);
+        const auto running = v.runningKey.isEmpty() ? std::nullopt
+                                                    : store->deviceValue(v.runningKey);
+        v.state = motionOf(m + 1, running);
+        switch (v.state) {
+        case Motion::Unknown:
+            v.motion->setText(kUnknown);
+            setTone(v.motion, Tone::Unknown);
+            break;
+        case Motion::Idle:
+            v.motion->setText(tr("idle"));
+            setTone(v.motion, Tone::Normal);
+            break;
+        case Motion::Running:
+            v.motion->setText(tr("running"));
+            setTone(v.motion, Tone::Good);
+            break;
+        case Motion::AtLimit:
+            v.motion->setText(tr("at a limit"));
+            setTone(v.motion, Tone::Warning);
+            break;
+        }
+        v.motion->setAccessibleName(tr("Motor %1: %2").arg(m + 1).arg(v.motion->text()));
+        const bool referenced = references->isReferenced(m + 1);
+        v.reference->setText(referenced ? tr("referenced") : tr("not referenced"));
+        v.reference->setToolTip(references->text(m + 1));
+        setTone(v.reference, referenced ? Tone::Good : Tone::Warning);
+        v.position->setAccessibleName(tr("Motor %1 position: %2").arg(m + 1).arg(
+            v.position->text()));
+    }
+    const auto lamp = [&](Led *led, const QString &key, const QStringList &roles) {
+        const auto value = connected ? store->deviceValue(key) : std::nullopt;
+        led->setState(lampState(value));
+        const Parameter *p = map.find(key);
+        QString tip = QStringLiteral("%1: %2").arg(
+            p ? p->label.text(lang) : key,
+            !value ? tr("unknown") : (*value ? tr("on") : tr("off")));
+        if (!roles.isEmpty())
+            tip += QStringLiteral("\n") + roles.join(QLatin1Char('\n'));
+        led->setToolTip(tip);
+        led->setAccessibleName(tip);
+    };
+    for (int i = 0; i < m_inputLeds.size(); ++i)
+        lamp(m_inputLeds.at(i), m_inputKeys.at(i), inputRoles(i + 1));
+    for (int i = 0; i < m_outputLeds.size(); ++i)
+        lamp(m_outputLeds.at(i), m_outputKeys.at(i), {});
+    refreshLink();
+}
+
+void MachineStrip::refreshLink()
+{
+    Tone tone = Tone::Unknown;
+    switch (m_session->health()->state()) {
+    case LinkHealth::State::Closed:
+        m_link->setText(tr("port closed"));
+        break;
+    case LinkHealth::State::Opening:
+    case LinkHealth::State::Asking:
+        m_link->setText(tr("asking…"));
+        break;
+    case LinkHealth::State::NotAnswering:
+        m_link->setText(tr("not answering"));
+        tone = Tone::Warning;
+        break;
+    case LinkHealth::State::Answering:
+        m_link->setText(tr("answering"));
+        tone = Tone::Good;
+        break;
+    }
+    setTone(m_link, tone);
+    m_link->setToolTip(m_session->health()->state() == LinkHealth::State::NotAnswering
+                           ? LinkHealth::likelyCauses()
+                           : QString());
+    m_link->setAccessibleName(tr("Link: %1").arg(m_link->text()));
+    const int id = m_session->deviceInView();
+    const LinkStats &stats = m_session->linkStats();
+    ElidedLabel *line = m_line;
+    const bool known = m_session->isConnected() && stats.answers > 0;
+    line->setFullText(known ? stats.lineText(id) : kUnknown);
+    setTone(line, known ? Tone::Normal : Tone::Unknown);
+    line->setAccessibleName(tr("Line: %1").arg(line->fullText()));
+    const QList<int> ids = m_session->deviceIds();
+    m_device->setVisible(ids.size() > 1);
+    const QString name = m_namer ? m_namer(id) : QString();
+    m_device->setText(name.isEmpty() ? tr("Device %1").arg(id)
+                                     : tr("%1 (id %2)").arg(name).arg(id));
+}
+
+void MachineStrip::retranslate()
+{
+    for (int m = 0; m < m_motors.size(); ++m) {
+        m_motors.at(m).caption->setText(tr("Motor %1").arg(m + 1));
+        m_motors.at(m).position->setToolTip(tr("Motor %1 position").arg(m + 1));
+    }
+    m_inputsCaption->setText(tr("IN 1-%1").arg(m_inputLeds.size()));
+    m_outputsCaption->setText(tr("OUT 1-%1").arg(m_outputLeds.size()));
+    m_estopButton->setText(EmergencyStop::tr("E-STOP"));
+    m_estopButton->setToolTip(
+        EmergencyStop::tr("Emergency stop: all motors and outputs off (coil 00042). Key: %1")
+            .arg(EmergencyStop::shortcut().toString(QKeySequence::NativeText)));
+    m_estopButton->setAccessibleName(m_estopButton->text());
+    applyFonts(); // the unit's words follow the language
+    refresh();
+}
+
+} // namespace stepcom
