@@ -15,7 +15,9 @@ namespace stepcom {
 namespace {
 
 constexpr int kSampleMs = 100;
-constexpr int kReadsBeforeLost = 5; // failed status reads in a row: the controller is gone
+// No answer for this long: the controller is gone. A controller switched off and on answers
+// again within a few seconds, and that is said as a restart, not as a lost link.
+constexpr qint64 kSilenceBeforeLostMs = 6000;
 
 } // namespace
 
@@ -77,7 +79,8 @@ void CtlMotionWait::start()
                 fail(c.errorText);
                 return;
             }
-            m_restarts->commandSent(m_session->deviceInView(), QDateTime::currentMSecsSinceEpoch());
+            m_answeredAtMs = QDateTime::currentMSecsSinceEpoch();
+            m_restarts->commandSent(m_session->deviceInView(), m_answeredAtMs);
             if (!m_json)
                 m_out << tr("%1: sent, waiting for the motion to end").arg(m_command.key)
                       << Qt::endl;
@@ -103,14 +106,14 @@ void CtlMotionWait::sample()
             if (m_done)
                 return; // the controller restarted
             if (!r.ok) {
-                if (++m_failedReads >= kReadsBeforeLost) {
+                if (now - m_answeredAtMs >= kSilenceBeforeLostMs) {
                     conclude(MotionCause::LinkLost);
                     return;
                 }
                 m_timer.start();
                 return;
             }
-            m_failedReads = 0;
+            m_answeredAtMs = now;
             for (auto it = r.values.cbegin(); it != r.values.cend(); ++it)
                 m_values.insert(it.key(), it.value());
             if (m_watch->sample(r.values))

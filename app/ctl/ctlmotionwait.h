@@ -45,7 +45,7 @@ private:
     std::unique_ptr<MotionWatch> m_watch;
     RestartWatch *m_restarts; // a restart ends the wait: the positions after it mean nothing
     QTimer m_timer;
-    int m_failedReads = 0;
+    qint64 m_answeredAtMs = 0; // the controller's last answer (epoch ms)
     bool m_done = false;
     QTextStream m_out;
     QTextStream m_err;

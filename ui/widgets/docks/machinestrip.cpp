@@ -295,8 +295,8 @@ void MachineStrip::refresh()
         const Parameter *p = map.find(v.positionKey);
         v.position->setText(raw && p ? p->displayRaw(*raw, lang) : kUnknown);
         setTone(v.position, raw ? Tone::Normal : Tone::Unknown);
-        const auto running = v.runningKey.isEmpty() ? std::nullopt
-                                                    : store->deviceValue(v.runningKey);
+        const auto running =
+            v.runningKey.isEmpty() ? std::nullopt : store->deviceValue(v.runningKey);
         v.state = motionOf(m + 1, running);
         switch (v.state) {
         case Motion::Unknown:
@@ -321,16 +321,16 @@ void MachineStrip::refresh()
         v.reference->setText(referenced ? tr("referenced") : tr("not referenced"));
         v.reference->setToolTip(references->text(m + 1));
         setTone(v.reference, referenced ? Tone::Good : Tone::Warning);
-        v.position->setAccessibleName(tr("Motor %1 position: %2").arg(m + 1).arg(
-            v.position->text()));
+        v.position->setAccessibleName(
+            tr("Motor %1 position: %2").arg(m + 1).arg(v.position->text()));
     }
     const auto lamp = [&](Led *led, const QString &key, const QStringList &roles) {
         const auto value = connected ? store->deviceValue(key) : std::nullopt;
         led->setState(lampState(value));
         const Parameter *p = map.find(key);
-        QString tip = QStringLiteral("%1: %2").arg(
-            p ? p->label.text(lang) : key,
-            !value ? tr("unknown") : (*value ? tr("on") : tr("off")));
+        QString tip =
+            QStringLiteral("%1: %2").arg(p ? p->label.text(lang) : key,
+                                         !value ? tr("unknown") : (*value ? tr("on") : tr("off")));
         if (!roles.isEmpty())
             tip += QStringLiteral("\n") + roles.join(QLatin1Char('\n'));
         led->setToolTip(tip);
