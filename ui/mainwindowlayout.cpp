@@ -17,12 +17,14 @@ namespace stepcom {
 
 void MainWindow::arrangeDocks()
 {
-    // A short window (1024×600) keeps the strip to one low row (issue 25).
-    // The screen decides too, before the window is fitted into it.
+    // A short window (1024×600) keeps the strip to one low row, a narrow one (1280×800) to
+    // smaller digits (issue 25). The screen decides too, before the window is fitted into it.
     const int high =
         screen() ? std::min(height(), screen()->availableGeometry().height()) : height();
+    const int wide = screen() ? std::min(width(), screen()->availableGeometry().width()) : width();
     if (m_strip)
-        m_strip->setCompact(high < std::max(720, fontMetrics().height() * 40));
+        m_strip->setCompact(high < std::max(720, fontMetrics().height() * 40) ||
+                            wide < std::max(1440, fontMetrics().averageCharWidth() * 200));
     if (!m_statusDock || !centralWidget())
         return;
     const int needed = centralWidget()->minimumSizeHint().width() +

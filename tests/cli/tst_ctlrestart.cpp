@@ -41,11 +41,10 @@ private Q_SLOTS:
         QVERIFY(host.device()->position(1) != 0);
         ProgramOptions options;
         options.timeoutMs = 30000;
-        const ProgramRun r =
-            runProgram(QStringLiteral("stepcomctl"),
-                       {"--port", host.rtuPath(), "--timeout", "200", "--json", "monitor",
-                        "--count", "50", "--interval", "100"},
-                       options);
+        const ProgramRun r = runProgram(QStringLiteral("stepcomctl"),
+                                        {"--port", host.rtuPath(), "--timeout", "200", "--json",
+                                         "monitor", "--count", "50", "--interval", "100"},
+                                        options);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QStringList events;
         int samples = 0;
@@ -67,17 +66,17 @@ private Q_SLOTS:
         QVERIFY(start(host, 1800, 1500));
         ProgramOptions options;
         options.timeoutMs = 30000;
-        const ProgramRun r = runProgram(
-            QStringLiteral("stepcomctl"),
-            {"--port", host.rtuPath(), "--timeout", "200", "--json", "command", "motor1.home",
-             "--wait"},
-            options);
+        const ProgramRun r = runProgram(QStringLiteral("stepcomctl"),
+                                        {"--port", host.rtuPath(), "--timeout", "200", "--json",
+                                         "command", "motor1.home", "--wait"},
+                                        options);
         QCOMPARE(r.exitCode, 1);
         const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
         QCOMPARE(o.value(QStringLiteral("cause")).toString(), QStringLiteral("restarted"));
         QCOMPARE(o.value(QStringLiteral("ok")).toBool(), false);
-        QVERIFY2(o.value(QStringLiteral("message")).toString().contains(
-                     QLatin1String("the controller restarted")),
+        QVERIFY2(o.value(QStringLiteral("message"))
+                     .toString()
+                     .contains(QLatin1String("the controller restarted")),
                  qPrintable(r.out));
     }
 };
