@@ -38,7 +38,10 @@ QString RoundTrips::text() const
 {
     if (count == 0)
         return {};
-    return tr("%1-%2 ms (median %3 ms)").arg(min).arg(max).arg(median());
+    return QCoreApplication::translate("stepcom::RoundTrips", "%1-%2 ms (median %3 ms)")
+        .arg(min)
+        .arg(max)
+        .arg(median());
 }
 
 void LinkStats::addRoundTrip(qint64 ms, int unit)
