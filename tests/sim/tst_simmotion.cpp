@@ -1,5 +1,6 @@
 #include "sim/simdevice.h"
 
+#include "simdevicechecks.h"
 #include "testmaps.h"
 
 #include <QFile>
@@ -9,27 +10,12 @@
 #include <QTest>
 
 using namespace stepcom;
+using namespace stepcom::test;
 
 // The motion model and the virtual machine, on a manual clock.
 class TstSimMotion : public QObject
 {
     Q_OBJECT
-
-private:
-    static qint64 value(const SimDevice &d, const char *key)
-    {
-        return d.value(QLatin1String(key)).value_or(-999999);
-    }
-    static void set(SimDevice &d, const char *key, qint64 raw)
-    {
-        QString error;
-        QVERIFY2(d.setValue(QLatin1String(key), raw, &error), qPrintable(error));
-    }
-    static void cmd(SimDevice &d, const char *key)
-    {
-        QString error;
-        QVERIFY2(d.command(QLatin1String(key), &error), qPrintable(error));
-    }
 
 private Q_SLOTS:
     void factoryValues()

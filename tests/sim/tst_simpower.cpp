@@ -3,6 +3,7 @@
 #include "sim/simhost.h"
 #include "sim/simmachine.h"
 #include "sim/simregisters.h"
+#include "simdevicechecks.h"
 
 #include <QElapsedTimer>
 #include <QModbusReply>
@@ -14,6 +15,7 @@
 #include <memory>
 
 using namespace stepcom;
+using namespace stepcom::test;
 
 // The 24 V supply switched off and on: silence meanwhile, then what was saved to flash,
 // positions 0, nothing running, referenced or switched on; on a manual clock, on a line of
@@ -23,20 +25,6 @@ class TstSimPower : public QObject
     Q_OBJECT
 
 private:
-    static qint64 value(const SimDevice &d, const char *key)
-    {
-        return d.value(QLatin1String(key)).value_or(-999999);
-    }
-    static void set(SimDevice &d, const char *key, qint64 raw)
-    {
-        QString error;
-        QVERIFY2(d.setValue(QLatin1String(key), raw, &error), qPrintable(error));
-    }
-    static void cmd(SimDevice &d, const char *key)
-    {
-        QString error;
-        QVERIFY2(d.command(QLatin1String(key), &error), qPrintable(error));
-    }
     static QModbusRequest readRequest(int address, int count)
     {
         return QModbusRequest(QModbusPdu::ReadHoldingRegisters, quint16(address), quint16(count));
