@@ -72,6 +72,9 @@ private:
     void fillPorts(const QList<SerialPortEntry> &ports);
     void onPortsChanged(const QList<SerialPortEntry> &ports, const QList<SerialPortEntry> &added);
     void loadSettings();
+    // What the controllers refuse to read, kept with the connection settings
+    // (connectionpagesettings.cpp, with the other settings).
+    void saveReadLimits() const;
     void updateVisibility();
     void updateState();
     void updateLine();
