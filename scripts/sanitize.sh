@@ -9,6 +9,8 @@ scripts/deps.sh --test
 build=${ASAN_BUILD_DIR:-build-asan}
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+# ccache caches compilations with a precompiled header (STEPCOM_PCH) only with this sloppiness.
+export CCACHE_SLOPPINESS=pch_defines,time_macros${CCACHE_SLOPPINESS:+,$CCACHE_SLOPPINESS}
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DSTEPCOM_SANITIZE=ON \
       "${launcher[@]}" >/dev/null
 cmake --build "$build" --parallel "${JOBS:-$(nproc)}"

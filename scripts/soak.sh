@@ -13,4 +13,4 @@ export STEPCOM_SOAK_TRANSACTIONS=${1:-${STEPCOM_SOAK_TRANSACTIONS:-20000}}
 export STEPCOM_SOAK_SEED=${2:-${STEPCOM_SOAK_SEED:-7}}
 export QT_QPA_PLATFORM=offscreen
 echo "soak: $STEPCOM_SOAK_TRANSACTIONS transactions, seed $STEPCOM_SOAK_SEED"
-exec "$build/tests/soak/tst_soak" -maxwarnings 0
+exec "$build/tests/tests_soak" tst_soak -maxwarnings 0

@@ -258,5 +258,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAnyController)
+#include "testregistry.h"
+STEPCOM_TEST(TestAnyController, Guiless)
 #include "tst_anycontroller.moc"

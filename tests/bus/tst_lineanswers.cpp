@@ -362,5 +362,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLineAnswers)
+#include "testregistry.h"
+STEPCOM_TEST(TestLineAnswers, Guiless)
 #include "tst_lineanswers.moc"

@@ -465,5 +465,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestModbusLink)
+#include "testregistry.h"
+STEPCOM_TEST(TestModbusLink, Guiless)
 #include "tst_modbuslink.moc"

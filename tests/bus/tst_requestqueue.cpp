@@ -56,5 +56,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRequestQueue)
+#include "testregistry.h"
+STEPCOM_TEST(TestRequestQueue, Guiless)
 #include "tst_requestqueue.moc"

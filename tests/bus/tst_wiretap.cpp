@@ -50,5 +50,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestWireTap)
+#include "testregistry.h"
+STEPCOM_TEST(TestWireTap, Guiless)
 #include "tst_wiretap.moc"

@@ -263,5 +263,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCtlBus)
+#include "testregistry.h"
+STEPCOM_TEST(TestCtlBus, Guiless)
 #include "tst_ctlbus.moc"

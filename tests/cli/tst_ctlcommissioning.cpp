@@ -162,5 +162,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCtlCommissioning)
+#include "testregistry.h"
+STEPCOM_TEST(TestCtlCommissioning, Guiless)
 #include "tst_ctlcommissioning.moc"

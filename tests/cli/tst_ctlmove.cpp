@@ -158,5 +158,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCtlMove)
+#include "testregistry.h"
+STEPCOM_TEST(TestCtlMove, Guiless)
 #include "tst_ctlmove.moc"

@@ -499,5 +499,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCtlProfile)
+#include "testregistry.h"
+STEPCOM_TEST(TestCtlProfile, Guiless)
 #include "tst_ctlprofile.moc"

@@ -81,5 +81,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCtlRestart)
+#include "testregistry.h"
+STEPCOM_TEST(TestCtlRestart, Guiless)
 #include "tst_ctlrestart.moc"

@@ -225,5 +225,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCtlScan)
+#include "testregistry.h"
+STEPCOM_TEST(TestCtlScan, Guiless)
 #include "tst_ctlscan.moc"

@@ -137,5 +137,6 @@ private:
     }
 };
 
-QTEST_GUILESS_MAIN(TestGapRefusal)
+#include "testregistry.h"
+STEPCOM_TEST(TestGapRefusal, Guiless)
 #include "tst_gaprefusal.moc"

@@ -254,5 +254,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestMonitor)
+#include "testregistry.h"
+STEPCOM_TEST(TestMonitor, Guiless)
 #include "tst_monitor.moc"

@@ -163,5 +163,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestMonitorReconnect)
+#include "testregistry.h"
+STEPCOM_TEST(TestMonitorReconnect, Guiless)
 #include "tst_monitorreconnect.moc"

@@ -225,5 +225,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestProgramInfo)
+#include "testregistry.h"
+STEPCOM_TEST(TestProgramInfo, Guiless)
 #include "tst_programinfo.moc"

@@ -302,5 +302,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestStepcomctl)
+#include "testregistry.h"
+STEPCOM_TEST(TestStepcomctl, Guiless)
 #include "tst_stepcomctl.moc"

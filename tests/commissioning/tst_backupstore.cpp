@@ -163,5 +163,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestBackupStore)
+#include "testregistry.h"
+STEPCOM_TEST(TestBackupStore, Guiless)
 #include "tst_backupstore.moc"

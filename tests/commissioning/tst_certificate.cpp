@@ -235,5 +235,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestCertificate)
+#include "testregistry.h"
+STEPCOM_TEST(TestCertificate, Gui)
 #include "tst_certificate.moc"

@@ -307,5 +307,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestChecklist)
+#include "testregistry.h"
+STEPCOM_TEST(TestChecklist, Guiless)
 #include "tst_checklist.moc"

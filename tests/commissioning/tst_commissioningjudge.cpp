@@ -225,5 +225,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCommissioningJudge)
+#include "testregistry.h"
+STEPCOM_TEST(TestCommissioningJudge, Guiless)
 #include "tst_commissioningjudge.moc"

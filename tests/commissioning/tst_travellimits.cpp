@@ -263,5 +263,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestTravelLimits)
+#include "testregistry.h"
+STEPCOM_TEST(TestTravelLimits, Guiless)
 #include "tst_travellimits.moc"

@@ -123,5 +123,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestParameterStore)
+#include "testregistry.h"
+STEPCOM_TEST(TestParameterStore, Guiless)
 #include "tst_parameterstore.moc"

@@ -285,5 +285,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestPoller)
+#include "testregistry.h"
+STEPCOM_TEST(TestPoller, Guiless)
 #include "tst_poller.moc"

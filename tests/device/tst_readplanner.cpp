@@ -195,5 +195,6 @@ private Q_SLOTS:
     void emptyPlan() { QVERIFY(ReadPlanner::plan({}, 49, ReadCostModel::forBaud(9600)).isEmpty()); }
 };
 
-QTEST_GUILESS_MAIN(TestReadPlanner)
+#include "testregistry.h"
+STEPCOM_TEST(TestReadPlanner, Guiless)
 #include "tst_readplanner.moc"

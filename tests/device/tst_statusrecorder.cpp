@@ -226,5 +226,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstStatusRecorder)
+#include "testregistry.h"
+STEPCOM_TEST(TstStatusRecorder, Guiless)
 #include "tst_statusrecorder.moc"

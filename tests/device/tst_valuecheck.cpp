@@ -58,5 +58,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstValueCheck)
+#include "testregistry.h"
+STEPCOM_TEST(TstValueCheck, Guiless)
 #include "tst_valuecheck.moc"

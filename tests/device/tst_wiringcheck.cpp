@@ -134,5 +134,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstWiringCheck)
+#include "testregistry.h"
+STEPCOM_TEST(TstWiringCheck, Guiless)
 #include "tst_wiringcheck.moc"

@@ -76,5 +76,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestWritePlanner)
+#include "testregistry.h"
+STEPCOM_TEST(TestWritePlanner, Guiless)
 #include "tst_writeplanner.moc"

@@ -177,5 +177,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestScreenshots)
+#include "testregistry.h"
+STEPCOM_TEST(TestScreenshots, Gui)
 #include "tst_screenshots.moc"

@@ -179,5 +179,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestBusScanner)
+#include "testregistry.h"
+STEPCOM_TEST(TestBusScanner, Guiless)
 #include "tst_busscanner.moc"

@@ -198,5 +198,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestIdAssigner)
+#include "testregistry.h"
+STEPCOM_TEST(TestIdAssigner, Guiless)
 #include "tst_idassigner.moc"

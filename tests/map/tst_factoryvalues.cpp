@@ -66,5 +66,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestFactoryValues)
+#include "testregistry.h"
+STEPCOM_TEST(TestFactoryValues, Gui)
 #include "tst_factoryvalues.moc"

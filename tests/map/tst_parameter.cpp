@@ -152,5 +152,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestParameter)
+#include "testregistry.h"
+STEPCOM_TEST(TestParameter, Guiless)
 #include "tst_parameter.moc"

@@ -251,5 +251,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRegisterMap)
+#include "testregistry.h"
+STEPCOM_TEST(TestRegisterMap, Guiless)
 #include "tst_registermap.moc"

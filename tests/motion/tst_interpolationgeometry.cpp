@@ -311,5 +311,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstInterpolationGeometry)
+#include "testregistry.h"
+STEPCOM_TEST(TstInterpolationGeometry, Guiless)
 #include "tst_interpolationgeometry.moc"

@@ -306,5 +306,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstMotionJudge)
+#include "testregistry.h"
+STEPCOM_TEST(TstMotionJudge, Guiless)
 #include "tst_motionjudge.moc"

@@ -319,5 +319,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstMotionPath)
+#include "testregistry.h"
+STEPCOM_TEST(TstMotionPath, Guiless)
 #include "tst_motionpath.moc"

@@ -259,5 +259,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstMotionTiming)
+#include "testregistry.h"
+STEPCOM_TEST(TstMotionTiming, Guiless)
 #include "tst_motiontiming.moc"

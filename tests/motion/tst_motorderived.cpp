@@ -219,5 +219,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstMotorDerived)
+#include "testregistry.h"
+STEPCOM_TEST(TstMotorDerived, Guiless)
 #include "tst_motorderived.moc"

@@ -78,5 +78,6 @@ private Q_SLOTS:
 #endif
 };
 
-QTEST_MAIN(TestIcon)
+#include "testregistry.h"
+STEPCOM_TEST(TestIcon, Gui)
 #include "tst_icon.moc"

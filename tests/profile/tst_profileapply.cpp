@@ -304,5 +304,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestProfileApply)
+#include "testregistry.h"
+STEPCOM_TEST(TestProfileApply, Guiless)
 #include "tst_profileapply.moc"

@@ -325,5 +325,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestProfileFile)
+#include "testregistry.h"
+STEPCOM_TEST(TestProfileFile, Guiless)
 #include "tst_profilefile.moc"

@@ -168,5 +168,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestProfileRollout)
+#include "testregistry.h"
+STEPCOM_TEST(TestProfileRollout, Guiless)
 #include "tst_profilerollout.moc"

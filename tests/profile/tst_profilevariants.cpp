@@ -323,5 +323,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestProfileVariants)
+#include "testregistry.h"
+STEPCOM_TEST(TestProfileVariants, Guiless)
 #include "tst_profilevariants.moc"

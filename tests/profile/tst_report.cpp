@@ -308,5 +308,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestReport)
+#include "testregistry.h"
+STEPCOM_TEST(TestReport, Gui)
 #include "tst_report.moc"

@@ -160,5 +160,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestDeviceBus)
+#include "testregistry.h"
+STEPCOM_TEST(TestDeviceBus, Guiless)
 #include "tst_devicebus.moc"

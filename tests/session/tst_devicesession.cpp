@@ -226,5 +226,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestDeviceSession)
+#include "testregistry.h"
+STEPCOM_TEST(TestDeviceSession, Guiless)
 #include "tst_devicesession.moc"

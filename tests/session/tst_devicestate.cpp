@@ -187,5 +187,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestDeviceState)
+#include "testregistry.h"
+STEPCOM_TEST(TestDeviceState, Guiless)
 #include "tst_devicestate.moc"

@@ -303,5 +303,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestJogController)
+#include "testregistry.h"
+STEPCOM_TEST(TestJogController, Gui)
 #include "tst_jogcontroller.moc"

@@ -201,5 +201,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLiveView)
+#include "testregistry.h"
+STEPCOM_TEST(TestLiveView, Guiless)
 #include "tst_liveview.moc"

@@ -238,5 +238,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestReconnect)
+#include "testregistry.h"
+STEPCOM_TEST(TestReconnect, Guiless)
 #include "tst_reconnect.moc"

@@ -151,5 +151,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRestart)
+#include "testregistry.h"
+STEPCOM_TEST(TestRestart, Guiless)
 #include "tst_restart.moc"

@@ -128,5 +128,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRestartWatch)
+#include "testregistry.h"
+STEPCOM_TEST(TestRestartWatch, Guiless)
 #include "tst_restartwatch.moc"

@@ -134,5 +134,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSerialPorts)
+#include "testregistry.h"
+STEPCOM_TEST(TestSerialPorts, Guiless)
 #include "tst_serialports.moc"

@@ -161,5 +161,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSessionLog)
+#include "testregistry.h"
+STEPCOM_TEST(TestSessionLog, Guiless)
 #include "tst_sessionlog.moc"

@@ -216,5 +216,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestStepMove)
+#include "testregistry.h"
+STEPCOM_TEST(TestStepMove, Guiless)
 #include "tst_stepmove.moc"

@@ -494,5 +494,6 @@ void TestPtyBridge::survivesHangUpOfKeptSlave()
     QTRY_COMPARE(a.received(), QByteArrayLiteral("me too"));
 }
 
-QTEST_GUILESS_MAIN(TestPtyBridge)
+#include "testregistry.h"
+STEPCOM_TEST(TestPtyBridge, Guiless)
 #include "tst_ptybridge.moc"

@@ -206,5 +206,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSimBus)
+#include "testregistry.h"
+STEPCOM_TEST(TstSimBus, Guiless)
 #include "tst_simbus.moc"

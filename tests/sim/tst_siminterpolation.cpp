@@ -196,5 +196,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSimInterpolation)
+#include "testregistry.h"
+STEPCOM_TEST(TstSimInterpolation, Guiless)
 #include "tst_siminterpolation.moc"

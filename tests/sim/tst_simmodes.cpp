@@ -232,5 +232,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSimModes)
+#include "testregistry.h"
+STEPCOM_TEST(TstSimModes, Guiless)
 #include "tst_simmodes.moc"

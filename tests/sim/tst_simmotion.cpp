@@ -327,5 +327,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSimMotion)
+#include "testregistry.h"
+STEPCOM_TEST(TstSimMotion, Guiless)
 #include "tst_simmotion.moc"

@@ -218,5 +218,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSimOptions)
+#include "testregistry.h"
+STEPCOM_TEST(TstSimOptions, Guiless)
 #include "tst_simoptions.moc"

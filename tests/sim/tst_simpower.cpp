@@ -352,5 +352,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSimPower)
+#include "testregistry.h"
+STEPCOM_TEST(TstSimPower, Guiless)
 #include "tst_simpower.moc"

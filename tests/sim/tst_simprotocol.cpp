@@ -295,5 +295,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSimProtocol)
+#include "testregistry.h"
+STEPCOM_TEST(TstSimProtocol, Guiless)
 #include "tst_simprotocol.moc"

@@ -152,5 +152,6 @@ private:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSimSerial)
+#include "testregistry.h"
+STEPCOM_TEST(TestSimSerial, Guiless)
 #include "tst_simserial.moc"

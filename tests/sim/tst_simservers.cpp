@@ -388,5 +388,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSimServers)
+#include "testregistry.h"
+STEPCOM_TEST(TstSimServers, Guiless)
 #include "tst_simservers.moc"

@@ -168,5 +168,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstSimTiming)
+#include "testregistry.h"
+STEPCOM_TEST(TstSimTiming, Guiless)
 #include "tst_simtiming.moc"

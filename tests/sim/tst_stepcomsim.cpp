@@ -224,5 +224,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TstStepcomSim)
+#include "testregistry.h"
+STEPCOM_TEST(TstStepcomSim, Guiless)
 #include "tst_stepcomsim.moc"

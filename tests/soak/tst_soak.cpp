@@ -409,5 +409,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSoak)
+#include "testregistry.h"
+STEPCOM_TEST(TestSoak, Guiless)
 #include "tst_soak.moc"

@@ -273,5 +273,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestChecklistPage)
+#include "testregistry.h"
+STEPCOM_TEST(TestChecklistPage, Gui)
 #include "tst_checklistpage.moc"

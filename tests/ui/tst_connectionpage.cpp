@@ -313,5 +313,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstConnectionPage)
+#include "testregistry.h"
+STEPCOM_TEST(TstConnectionPage, Gui)
 #include "tst_connectionpage.moc"

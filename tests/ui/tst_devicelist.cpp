@@ -104,5 +104,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestDeviceList)
+#include "testregistry.h"
+STEPCOM_TEST(TestDeviceList, Gui)
 #include "tst_devicelist.moc"

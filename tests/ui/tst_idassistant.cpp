@@ -241,5 +241,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestIdAssistant)
+#include "testregistry.h"
+STEPCOM_TEST(TestIdAssistant, Gui)
 #include "tst_idassistant.moc"

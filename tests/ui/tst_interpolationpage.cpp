@@ -429,5 +429,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestInterpolationPage)
+#include "testregistry.h"
+STEPCOM_TEST(TestInterpolationPage, Gui)
 #include "tst_interpolationpage.moc"

@@ -167,5 +167,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestLanguageWalk)
+#include "testregistry.h"
+STEPCOM_TEST(TestLanguageWalk, Gui)
 #include "tst_languagewalk.moc"

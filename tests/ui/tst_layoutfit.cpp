@@ -601,5 +601,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestLayoutFit)
+#include "testregistry.h"
+STEPCOM_TEST(TestLayoutFit, Gui)
 #include "tst_layoutfit.moc"

@@ -192,5 +192,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestMachineActions)
+#include "testregistry.h"
+STEPCOM_TEST(TestMachineActions, Gui)
 #include "tst_machineactions.moc"

@@ -305,5 +305,6 @@ private Q_SLOTS:
     void closingWithoutEditsJustCloses() { QVERIFY(window->close()); }
 };
 
-QTEST_MAIN(TestMainWindow)
+#include "testregistry.h"
+STEPCOM_TEST(TestMainWindow, Gui)
 #include "tst_mainwindow.moc"

@@ -441,5 +441,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstMonitoring)
+#include "testregistry.h"
+STEPCOM_TEST(TstMonitoring, Gui)
 #include "tst_monitoring.moc"

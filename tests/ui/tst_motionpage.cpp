@@ -490,5 +490,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestMotionPage)
+#include "testregistry.h"
+STEPCOM_TEST(TestMotionPage, Gui)
 #include "tst_motionpage.moc"

@@ -489,5 +489,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestOffline)
+#include "testregistry.h"
+STEPCOM_TEST(TestOffline, Gui)
 #include "tst_offline.moc"

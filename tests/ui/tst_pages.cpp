@@ -349,5 +349,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TstPages)
+#include "testregistry.h"
+STEPCOM_TEST(TstPages, Gui)
 #include "tst_pages.moc"

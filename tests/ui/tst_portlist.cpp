@@ -68,5 +68,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestPortList)
+#include "testregistry.h"
+STEPCOM_TEST(TestPortList, Gui)
 #include "tst_portlist.moc"

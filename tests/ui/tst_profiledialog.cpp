@@ -378,5 +378,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestProfileDialog)
+#include "testregistry.h"
+STEPCOM_TEST(TestProfileDialog, Gui)
 #include "tst_profiledialog.moc"

@@ -120,5 +120,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestReconnectWindow)
+#include "testregistry.h"
+STEPCOM_TEST(TestReconnectWindow, Gui)
 #include "tst_reconnectwindow.moc"

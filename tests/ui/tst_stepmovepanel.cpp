@@ -101,5 +101,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestStepMovePanel)
+#include "testregistry.h"
+STEPCOM_TEST(TestStepMovePanel, Gui)
 #include "tst_stepmovepanel.moc"

@@ -195,5 +195,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestTrafficView)
+#include "testregistry.h"
+STEPCOM_TEST(TestTrafficView, Gui)
 #include "tst_trafficview.moc"

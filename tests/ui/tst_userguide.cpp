@@ -164,5 +164,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestUserGuide)
+#include "testregistry.h"
+STEPCOM_TEST(TestUserGuide, Gui)
 #include "tst_userguide.moc"

@@ -132,5 +132,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestWindowBackups)
+#include "testregistry.h"
+STEPCOM_TEST(TestWindowBackups, Gui)
 #include "tst_windowbackups.moc"

@@ -98,5 +98,6 @@ private Q_SLOTS:
     }
 };
 
-QTEST_MAIN(TestWriteFlow)
+#include "testregistry.h"
+STEPCOM_TEST(TestWriteFlow, Gui)
 #include "tst_writeflow.moc"
