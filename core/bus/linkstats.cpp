@@ -44,7 +44,7 @@ QString RoundTrips::text() const
         .arg(median());
 }
 
-void LinkStats::addRoundTrip(qint64 ms, int unit)
+void LinkStats::addRoundTrip(qint64 ms, int unit, int characters)
 {
     lastRoundTripMs = ms;
     minRoundTripMs = minRoundTripMs < 0 ? ms : std::min(minRoundTripMs, ms);
@@ -53,8 +53,11 @@ void LinkStats::addRoundTrip(qint64 ms, int unit)
     const double n = double(std::max<quint64>(answers, 1));
     meanRoundTripMs += (double(ms) - meanRoundTripMs) / n;
     roundTrips.add(ms);
-    if (unit > 0)
+    if (unit > 0) {
         byUnit[unit].add(ms);
+        if (characters > 0)
+            answerTimes[unit].add(characters, double(ms));
+    }
 }
 
 int LinkStats::suggestedTimeoutMs() const

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "bus/answertimefit.h"
+
 #include <QList>
 #include <QMap>
 #include <QString>
@@ -42,11 +44,14 @@ struct LinkStats
     qint64 minRoundTripMs = -1;
     qint64 maxRoundTripMs = -1;
     double meanRoundTripMs = 0.0;
-    RoundTrips roundTrips;        // every controller on the line
-    QMap<int, RoundTrips> byUnit; // per device id
-    int timeoutMs = -1;           // the answer timeout the link uses now (-1 not yet known)
+    RoundTrips roundTrips;                // every controller on the line
+    QMap<int, RoundTrips> byUnit;         // per device id
+    QMap<int, AnswerTimeFit> answerTimes; // per device id: its own time, apart from the wire
+    int timeoutMs = -1;                   // the answer timeout the link uses now (-1 not yet known)
 
-    void addRoundTrip(qint64 ms, int unit = 0);
+    // `characters`: the request's and the answer's on the wire with the silence between them
+    // (0: not known).
+    void addRoundTrip(qint64 ms, int unit = 0, int characters = 0);
     quint64 errors() const { return timeouts + crcErrors + mismatches + exceptions + stale; }
     // An answer timeout that fits the round trips measured so far (the slowest with half
     // again plus 50 ms, in steps of 50 ms, at least 100 ms); -1 until 5 answers were timed.

@@ -314,6 +314,16 @@ void ModbusLink::onUnitAnswered(int unit, int functionCode, const QByteArray &da
     Q_EMIT unitAnswered(unit, exception, values);
 }
 
+std::optional<double> ModbusLink::answerTimeMs(int unit) const
+{
+    if (m_settings.transport != LinkSettings::Transport::Rtu)
+        return std::nullopt;
+    const auto it = m_stats.answerTimes.constFind(unit);
+    if (it == m_stats.answerTimes.cend())
+        return std::nullopt;
+    return it->answerMs(m_settings.charTimeMs());
+}
+
 int ModbusLink::timeoutFor(const Request &req) const
 {
     if (req.timeoutMs > 0)
@@ -461,7 +471,9 @@ void ModbusLink::onAnswered(const LinkAnswer &a)
             }
             break;
         }
-        m_stats.addRoundTrip(a.roundTripMs, req.unitId > 0 ? req.unitId : m_settings.deviceId);
+        // Both frames on the wire (address, PDU, CRC) and the silence between them.
+        m_stats.addRoundTrip(a.roundTripMs, req.unitId > 0 ? req.unitId : m_settings.deviceId,
+                             int(toPdu(req).size() + a.response.size()) + 6 + 7);
         if (req.timeoutMs <= 0)
             m_stats.timeoutMs = timeoutFor(req);
         r.ok = true;

@@ -11,6 +11,8 @@
 #include <QObject>
 #include <QTimer>
 
+#include <optional>
+
 namespace stepcom {
 
 class LinkBackend;
@@ -70,6 +72,11 @@ public:
     static constexpr int kAdaptAfter = 5;
     // A controller that answered this recently is not told to check its id, baud and wiring.
     static constexpr qint64 kRecentAnswerMs = 10000;
+
+    // The controller's own answer time, told apart from the bytes' time on the wire
+    // (AnswerTimeFit): known on a serial line once answers of different lengths were timed;
+    // nothing on TCP, on a pseudo-terminal without a wire, or before.
+    std::optional<double> answerTimeMs(int unit) const;
 
     const LinkStats &stats() const { return m_stats; }
     void resetStats();

@@ -34,11 +34,15 @@ const ReadLimits &DeviceClient::readLimits(int unit) const
     return it == m_limits->cend() ? none : *it;
 }
 
-ReadCostModel DeviceClient::costModel() const
+ReadCostModel DeviceClient::costModel(int unit) const
 {
     const LinkSettings &s = m_link->settings();
+    // The controller's own answer time once the line showed it apart from the wire's (a fast
+    // firmware answers in 2 ms: another request then costs less than reading across a gap);
+    // the manual's until then.
+    const double answerMs = m_link->answerTimeMs(unit).value_or(double(m_map.answerDelayMs()));
     return ReadCostModel::forBaud(s.transport == LinkSettings::Transport::Rtu ? s.baud : 0,
-                                  m_map.answerDelayMs());
+                                  answerMs);
 }
 
 QList<ReadBlock> DeviceClient::planRead(const QList<const Parameter *> &params) const
@@ -59,7 +63,7 @@ QList<ReadBlock> DeviceClient::planRead(int unit, const QList<const Parameter *>
         mayRead = [this, limits](int first, int last) {
             return limits.mayRead(m_map, first, last);
         };
-    return ReadPlanner::plan(present, m_map.maxRegistersPerRequest(), costModel(), mayRead);
+    return ReadPlanner::plan(present, m_map.maxRegistersPerRequest(), costModel(unit), mayRead);
 }
 
 ReadLimits::Lesson DeviceClient::noteRefused(int unit, const ReadBlock &block, const Result &result)

@@ -51,8 +51,9 @@ public:
 
     const RegisterMap &map() const { return m_map; }
     ModbusLink *link() const { return m_link; }
-    // The wire-time model for the link's current baud (TCP: the answer delay only).
-    ReadCostModel costModel() const;
+    // The wire-time model for the link's current baud (TCP: the answer delay only), with
+    // `unit`'s own answer time once the line measured it (ModbusLink::answerTimeMs).
+    ReadCostModel costModel(int unit) const;
     // The cheapest reads of the parameters this controller has, within what it accepts.
     QList<ReadBlock> planRead(const QList<const Parameter *> &params) const;
     QList<ReadBlock> planRead(int unit, const QList<const Parameter *> &params) const;

@@ -3,7 +3,10 @@
 // command works the first time; nothing is taken for an echo that is none; no answer is thrown
 // away as "too soon"; the line learns the answer times and fits its timeout to them.
 #include "bus/modbuslink.h"
+#include "device/deviceclient.h"
 #include "device/parameterstore.h"
+#include "device/poller.h"
+#include "device/readplanner.h"
 #include "session/devicesession.h"
 #include "session/sessioninternals.h"
 #include "sim/simdevice.h"
@@ -21,6 +24,7 @@ class TestAnyController : public QObject
     std::unique_ptr<SimHost> host;
     std::unique_ptr<DeviceSession> session;
     QStringList said;
+    bool noWire = false; // a pseudo-terminal whose bytes take no time
 
     ModbusLink *link() const { return SessionInternals::link(*session); }
 
@@ -31,7 +35,7 @@ class TestAnyController : public QObject
         o.slowCoils = slowCoils;
         o.rtu = true;
         o.answerDelayMs = delayMs;
-        o.wireBaud = baud;
+        o.wireBaud = noWire ? 0 : baud;
         o.checkBaud = false;
         o.echo = adapterEchoes;
         host = std::make_unique<SimHost>();
@@ -72,6 +76,7 @@ private Q_SLOTS:
     {
         session.reset();
         host.reset();
+        noWire = false;
     }
 
     void everythingWorksAtEveryAnswerTime_data()
@@ -127,6 +132,60 @@ private Q_SLOTS:
         const int timeout = link()->timeoutFor(Request::read(0, 13));
         QVERIFY2(timeout < 500 && timeout >= 35, qPrintable(QString::number(timeout)));
         QVERIFY2(s.lineText(1).contains(QLatin1String("no echo")), qPrintable(s.lineText(1)));
+    }
+
+    // The reads are planned for the controller's own answer time once the line showed it
+    // apart from the wire's: a 2 ms controller is read in more, shorter requests than the
+    // manual's 35 ms would plan (reading across a gap then costs more than another request).
+    void readsArePlannedForTheControllersOwnTime_data()
+    {
+        QTest::addColumn<int>("delayMs");
+        QTest::addColumn<int>("baud");
+        QTest::addRow("2 ms at 9600") << 2 << 9600;
+        QTest::addRow("35 ms at 9600") << 35 << 9600;
+        QTest::addRow("2 ms at 38400") << 2 << 38400;
+    }
+    void readsArePlannedForTheControllersOwnTime()
+    {
+        QFETCH(int, delayMs);
+        QFETCH(int, baud);
+        QVERIFY2(start(delayMs, baud, false, false), qPrintable(heard()));
+        const RegisterMap &map = session->map();
+        QList<const Parameter *> status;
+        for (const QString &key : Poller::statusKeys(map))
+            status << map.find(key);
+        const QList<ReadBlock> best = ReadPlanner::plan(status, map.maxRegistersPerRequest(),
+                                                        ReadCostModel::forBaud(baud, delayMs));
+        const QList<ReadBlock> manual = ReadPlanner::plan(status, map.maxRegistersPerRequest(),
+                                                          ReadCostModel::forBaud(baud, 35.0));
+        // Read-all at connect timed reads of many lengths: the answer time is known.
+        QTRY_VERIFY_WITH_TIMEOUT(link()->answerTimeMs(1).has_value(), 10000);
+        // What the plan costs on this line, in the model of the controller as it is: near the
+        // best (the estimate may sit beside a point where two plans cost about the same), far
+        // from the manual's plan when that one is not the best.
+        const ReadCostModel truth = ReadCostModel::forBaud(baud, delayMs);
+        const double bestMs = ReadPlanner::costMs(best, truth);
+        const double manualMs = ReadPlanner::costMs(manual, truth);
+        QCOMPARE(delayMs == 35, manualMs == bestMs); // the case shows what it is meant to
+        const auto planMs = [&] {
+            return ReadPlanner::costMs(SessionInternals::client(*session)->planRead(status), truth);
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(planMs() <= bestMs + 0.25 * (manualMs - bestMs), 10000);
+        if (delayMs == 35)
+            QCOMPARE(SessionInternals::client(*session)->planRead(status), manual);
+        const double answerMs = *link()->answerTimeMs(1);
+        QVERIFY2(answerMs >= 0 && answerMs < delayMs + 15, qPrintable(QString::number(answerMs)));
+    }
+
+    // A pseudo-terminal without a wire (the built-in simulator): round trips do not grow with
+    // the frame, the controller's own time cannot be told apart, the manual's plan stays.
+    void noWireKeepsTheManualsPlan()
+    {
+        noWire = true;
+        QVERIFY2(start(2, 9600, false, false), qPrintable(heard()));
+        Poller *poller = SessionInternals::poller(*session);
+        QTRY_VERIFY_WITH_TIMEOUT(poller->stats().cycles >= 5, 10000);
+        QVERIFY(!link()->answerTimeMs(1).has_value());
     }
 
     // An echoing adapter is found on the first read whatever the setting, and from then on a
