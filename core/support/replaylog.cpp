@@ -93,6 +93,7 @@ bool ReplayLog::open(const QString &path, const Callbacks &callbacks)
     if (!info.exists())
         return fail(Problem::NotFound, tr("%1: no such file").arg(path));
     m_fileSize = info.size();
+    m_snapshotBytes = std::max(kSnapshotBytes, m_fileSize / kMaxSnapshots);
     if (m_fileSize == 0)
         return fail(Problem::Empty, tr("%1 is empty").arg(path));
     Snapshot snap;
@@ -131,7 +132,8 @@ bool ReplayLog::open(const QString &path, const Callbacks &callbacks)
 }
 
 bool ReplayLog::scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const Callbacks &callbacks,
-                     const ReplayDecoder::Sink &sink) const
+                     const ReplayDecoder::Sink &sink, const Visitor &visit,
+                     qint64 visitFromMs) const
 {
     QFile file(m_path);
     if (!file.open(QIODevice::ReadOnly) || !file.seek(snap.offset))
@@ -140,7 +142,7 @@ bool ReplayLog::scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const C
                        : false;
     QByteArray buffer(kLineBuffer, Qt::Uninitialized);
     qint64 offset = snap.offset;
-    qint64 nextSnapshot = offset + kSnapshotBytes;
+    qint64 nextSnapshot = offset + m_snapshotBytes;
     qint64 nextProgress = offset + kProgressBytes;
     for (;;) {
         const qint64 n = file.readLine(buffer.data(), buffer.size());
@@ -193,11 +195,13 @@ bool ReplayLog::scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const C
         }
         snap.decoder.feed(line, ms, snap.lineNo, sink);
         snap.offset = offset;
+        if (visit && ms >= visitFromMs && !visit(chunk, line, ms, snap.decoder.state()))
+            return true;
         if (!opening)
             continue;
         if (offset >= nextSnapshot) {
             opening->m_snapshots.append(snap);
-            nextSnapshot = offset + kSnapshotBytes;
+            nextSnapshot = offset + m_snapshotBytes;
         }
         if (offset >= nextProgress) {
             nextProgress = offset + kProgressBytes;
@@ -216,14 +220,28 @@ ReplayState ReplayLog::stateAt(qint64 ms) const
     if (m_snapshots.isEmpty())
         return {};
     ms = std::clamp<qint64>(ms, 0, m_durationMs);
-    // The last snapshot not after `ms`: everything before it is not after `ms` either.
-    auto it = std::upper_bound(m_snapshots.cbegin(), m_snapshots.cend(), ms,
-                               [](qint64 t, const Snapshot &s) { return t < s.lastMs; });
-    Snapshot snap = it == m_snapshots.cbegin() ? m_snapshots.first() : *std::prev(it);
+    Snapshot snap = snapshotBefore(ms);
     scan(snap, ms, nullptr, {}, {});
     ReplayState state = snap.decoder.state();
     state.ms = ms;
     return state;
+}
+
+ReplayLog::Snapshot ReplayLog::snapshotBefore(qint64 ms) const
+{
+    // The last snapshot before `ms`: everything before it is before `ms` too. (A line at `ms`
+    // itself may follow a snapshot at `ms`: walk() must see it.)
+    auto it = std::lower_bound(m_snapshots.cbegin(), m_snapshots.cend(), ms,
+                               [](const Snapshot &s, qint64 t) { return s.lastMs < t; });
+    return it == m_snapshots.cbegin() ? m_snapshots.first() : *std::prev(it);
+}
+
+void ReplayLog::walk(qint64 fromMs, qint64 toMs, const Visitor &visit) const
+{
+    if (m_snapshots.isEmpty() || !visit)
+        return;
+    Snapshot snap = snapshotBefore(fromMs);
+    scan(snap, toMs, nullptr, {}, {}, visit, fromMs);
 }
 
 std::optional<qint64> ReplayLog::parseTime(const QString &text, QString *error) const

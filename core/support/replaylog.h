@@ -17,8 +17,8 @@ namespace stepcom {
 
 // A session log opened for replay (issue 26): the window's replay mode and `stepcomctl replay`
 // stand on it. open() streams the file once -- never more than a line of it in memory -- and
-// keeps the events (markers) and a snapshot of the decoder every kSnapshotBytes, so stateAt()
-// reads at most that much of the file again: a 2 GB log opens in bounded memory and any moment
+// keeps the events (markers) and snapshots of the decoder, so stateAt() reads little of the
+// file again: a 2 GB log opens in bounded memory and any moment
 // is found in a few milliseconds. Logs without the session log's header (older StepCom) open
 // with what they have.
 class ReplayLog
@@ -32,7 +32,10 @@ public:
         std::function<void(qint64 bytesDone, qint64 bytesTotal)> progress;
         std::function<bool()> cancelled; // asked between chunks; true stops the opening
     };
+    // A snapshot every kSnapshotBytes, or every 1/kMaxSnapshots of a larger file (2 GB: 1 MiB),
+    // so their memory stays bounded and a seek reads at most that much again.
     static constexpr qint64 kSnapshotBytes = 256 * 1024;
+    static constexpr qint64 kMaxSnapshots = 2048;
     // Events kept at most; beyond it they are counted, not kept (a log of a dead line).
     static constexpr int kMaxEvents = 200000;
 
@@ -62,6 +65,12 @@ public:
     // Every controller at `ms` since the start (past the end: the last state); reads the file
     // again from the snapshot before it.
     ReplayState stateAt(qint64 ms) const;
+    // Every line from `fromMs` to `toMs` in order, with the state after it: the traffic view at
+    // a moment (the raw line as written) and the plots up to it (the positions of each state).
+    // `visit` returns false to stop. Reads from the snapshot before `fromMs`.
+    using Visitor = std::function<bool(QByteArrayView raw, const LogLine &line, qint64 ms,
+                                       const ReplayState &state)>;
+    void walk(qint64 fromMs, qint64 toMs, const Visitor &visit) const;
     // "12.5" (seconds from the start) or a clock time "hh:mm:ss[.mmm]" (the first such moment
     // at or after the start) as ms since the start; nullopt and why not.
     std::optional<qint64> parseTime(const QString &text, QString *error) const;
@@ -79,8 +88,12 @@ private:
     // Reads lines from the snapshot on, into `snap`, until a line later than `untilMs` (< 0:
     // to the end), feeding `sink`. open() passes itself as `opening` (the checks, the index);
     // stateAt() passes nothing.
+    // `visit` (optional) sees every line from `visitFromMs` on; false from it ends the scan.
     bool scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const Callbacks &callbacks,
-              const ReplayDecoder::Sink &sink) const;
+              const ReplayDecoder::Sink &sink, const Visitor &visit = {},
+              qint64 visitFromMs = 0) const;
+    // The snapshot to read from for a moment.
+    Snapshot snapshotBefore(qint64 ms) const;
     bool fail(Problem problem, const QString &text);
     void headerLine(const LogLine &line, qint64 lineNo);
 
@@ -90,6 +103,7 @@ private:
     Problem m_problem = Problem::None;
     QString m_error;
     qint64 m_fileSize = 0;
+    qint64 m_snapshotBytes = kSnapshotBytes;
     qint64 m_startStamp = -1;
     qint64 m_durationMs = 0;
     qint64 m_lines = 0;

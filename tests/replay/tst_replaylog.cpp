@@ -210,6 +210,20 @@ private Q_SLOTS:
             const qint64 expected = ms < 10 ? -1 : std::min<qint64>(reads - 1, (ms - 10) / 20);
             QCOMPARE(valueAt(log, ms, "motor1.position"), expected);
         }
+        // The lines of a stretch, in order, each with the state after it (the plots).
+        QList<qint64> positions;
+        QStringList raw;
+        log.walk(100000, 100100,
+                 [&](QByteArrayView line, const LogLine &, qint64, const ReplayState &state) {
+                     raw << QString::fromUtf8(line).trimmed();
+                     positions << state.devices.value(1).values(map()).value(
+                         QStringLiteral("motor1.position"));
+                     return true;
+                 });
+        QCOMPARE(positions,
+                 (QList<qint64>{4999, 5000, 5000, 5001, 5001, 5002, 5002, 5003, 5003, 5004, 5004}));
+        QVERIFY2(raw.first().startsWith(QLatin1String("2026-11-24 22:11:40.000  TX  ")),
+                 qPrintable(raw.first()));
     }
 
     void openingCanBeCancelled()
