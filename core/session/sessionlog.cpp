@@ -23,9 +23,7 @@ SessionLog::SessionLog(DeviceSession *session, QObject *parent)
     });
     // What happened beyond the frames, in kinds of their own so a replay need not read the
     // (translated) text.
-    const auto mark = [this](const char *kind, const QString &text) {
-        writeLine(formatMark(QDateTime::currentDateTime(), kind, text).toUtf8());
-    };
+    const auto mark = [this](const char *kind, const QString &text) { writeMark(kind, text); };
     connect(session, &DeviceSession::connected, this, [session, mark](bool ok, const QString &) {
         if (ok)
             mark(kLinkUp, session->settings().describe());
@@ -68,7 +66,7 @@ void SessionLog::setFile(const QString &path)
 
 void SessionLog::noteUserAction(const QString &text)
 {
-    writeLine(formatMark(QDateTime::currentDateTime(), kUser, text).toUtf8());
+    writeMark(kUser, text);
 }
 
 void SessionLog::setLimits(qint64 fileBytes, qint64 totalBytes)
@@ -221,6 +219,16 @@ bool SessionLog::openFile()
     Q_EMIT fileStarted(m_file.fileName());
     prune();
     return true;
+}
+
+void SessionLog::writeMark(const char *kind, const QString &text)
+{
+    // Not a file of its own: what happens with no link (a page shown before connecting) has no
+    // frames to go with.
+    if (!m_file.isOpen() &&
+        (!m_session || m_session->linkState() == DeviceSession::LinkState::Disconnected))
+        return;
+    writeLine(formatMark(QDateTime::currentDateTime(), kind, text).toUtf8());
 }
 
 void SessionLog::write(const TrafficEntry &entry)

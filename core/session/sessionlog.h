@@ -46,7 +46,7 @@ public:
     // The log files in the directory, newest first.
     QStringList files() const;
     // A user action the core cannot see (the window's page changes, a checklist result), as a
-    // "user" line.
+    // "user" line (while a log is being written: not before the first connection).
     void noteUserAction(const QString &text);
     // Why the last write failed (empty while writing works).
     QString error() const { return m_error; }
@@ -73,6 +73,7 @@ Q_SIGNALS:
 private:
     void write(const TrafficEntry &entry);
     void writeLine(const QByteArray &line);
+    void writeMark(const char *kind, const QString &text);
     bool openFile();
     void prune();
     void fail(const QString &reason);

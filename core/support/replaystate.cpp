@@ -52,13 +52,6 @@ QHash<QString, qint64> decodeAll(const RegisterMap &map, const QMap<quint16, qui
     return out;
 }
 
-QJsonValue engineering(const Parameter &p, qint64 raw)
-{
-    if (p.scale == 1)
-        return QJsonValue(double(raw));
-    return QJsonValue(p.formatRaw(raw).toDouble());
-}
-
 } // namespace
 
 QHash<QString, qint64> ReplayDevice::values(const RegisterMap &map) const
@@ -79,7 +72,8 @@ QJsonObject ReplayState::toJson(const RegisterMap &map) const
         const auto toJson = [&map](const QHash<QString, qint64> &raw) {
             QJsonObject o;
             for (auto v = raw.cbegin(); v != raw.cend(); ++v)
-                o.insert(v.key(), engineering(*map.find(v.key()), v.value()));
+                // raw / scale, correctly rounded: the double `stepcomctl read --json` prints
+                o.insert(v.key(), map.find(v.key())->toEngineering(v.value()));
             return o;
         };
         QJsonObject o{{QStringLiteral("answering"), d.answering},
