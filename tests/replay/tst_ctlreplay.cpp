@@ -148,6 +148,36 @@ private Q_SLOTS:
         QVERIFY(diff.out.contains(QLatin1String("changes: 2")));
     }
 
+    // Several controllers on the line: each one's state, keyed by its id.
+    void everyDeviceOfTheLineHasItsState()
+    {
+        const QString log = dir.filePath(QStringLiteral("line.log"));
+        ProgramOptions options;
+        options.timeoutMs = 30000;
+        const ProgramRun read = runProgram(QStringLiteral("stepcomctl"),
+                                           {"--sim", "--id", "1,2", "--log", log, "--json", "read",
+                                            "motor1.speed", "motor1.position", "device.id"},
+                                           options);
+        QVERIFY2(read.exitCode == 0, qPrintable(read.err));
+        const QJsonObject byId = QJsonDocument::fromJson(read.out.toUtf8()).object();
+        const ProgramRun r = replay(log, {"--at", "99999", "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonObject devices = QJsonDocument::fromJson(r.out.toUtf8())
+                                        .object()
+                                        .value(QStringLiteral("devices"))
+                                        .toObject();
+        QCOMPARE(devices.keys(), (QStringList{"1", "2"}));
+        for (const QString &id : {QStringLiteral("1"), QStringLiteral("2")}) {
+            const QJsonObject values =
+                devices.value(id).toObject().value(QStringLiteral("values")).toObject();
+            QCOMPARE(values, byId.value(id).toObject().value(QStringLiteral("result")).toObject());
+            QCOMPARE(values.value(QStringLiteral("device.id")).toInt(), id.toInt());
+        }
+        QFile f(log);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QVERIFY(f.readAll().contains("\n# ids: 1,2\n"));
+    }
+
     void badInputSaysWhatIsWrong_data()
     {
         QTest::addColumn<QStringList>("args");
