@@ -101,6 +101,18 @@ private Q_SLOTS:
         QVERIFY(d.answering);
     }
 
+    // Modbus TCP frames carry the MBAP header instead of the CRC.
+    void modbusTcpFramesAreReadToo()
+    {
+        LogBuilder b;
+        b.text += QStringLiteral("# line: transport=tcp host=127.0.0.1 port=502 id=3\n");
+        b.frame(true, QByteArray::fromHex("000100000006030300050001"));
+        b.frame(false, QByteArray::fromHex("00010000000503030201C2"));
+        ReplayLog log;
+        QVERIFY2(log.open(b.save(dir)), qPrintable(log.errorString()));
+        QCOMPARE(valueAt(log, log.durationMs(), "motor1.speed", 3), 450);
+    }
+
     void commandsTheEstopAndTheSessionsMarksAreEvents()
     {
         LogBuilder b;
