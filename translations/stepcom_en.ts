@@ -2157,10 +2157,6 @@
         <translation>--probe-timeout: &apos;%1&apos; is not a number of ms from 1 to 10000</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</source>
-        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</translation>
-    </message>
-    <message>
         <source>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): skip the request&apos;s own bytes from the first request on (without it the echo is found by the first read and skipped from then on).</source>
         <translation>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): skip the request&apos;s own bytes from the first request on (without it the echo is found by the first read and skipped from then on).</translation>
     </message>
@@ -2171,6 +2167,54 @@
     <message>
         <source>Always wait --timeout for an answer, instead of fitting the timeout to the controller&apos;s measured answers (4x the median, at most --timeout).</source>
         <translation>Always wait --timeout for an answer, instead of fitting the timeout to the controller&apos;s measured answers (4x the median, at most --timeout).</translation>
+    </message>
+    <message>
+        <source>Append the session log of this run (every frame, with its time) to this file; stepcomctl replay reads it.</source>
+        <translation>Append the session log of this run (every frame, with its time) to this file; stepcomctl replay reads it.</translation>
+    </message>
+    <message>
+        <source>replay: list what happened (time, device, what).</source>
+        <translation>replay: list what happened (time, device, what).</translation>
+    </message>
+    <message>
+        <source>replay: the state of every device at TIME: seconds from the log&apos;s start or a clock time hh:mm:ss[.mmm].</source>
+        <translation>replay: the state of every device at TIME: seconds from the log&apos;s start or a clock time hh:mm:ss[.mmm].</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>time</translation>
+    </message>
+    <message>
+        <source>replay: what changed from T1 to the time after it (--diff T1 T2).</source>
+        <translation>replay: what changed from T1 to the time after it (--diff T1 T2).</translation>
+    </message>
+    <message>
+        <source>T1</source>
+        <translation>T1</translation>
+    </message>
+    <message>
+        <source>replay of a support bundle: the log inside to replay (default: the newest).</source>
+        <translation>replay of a support bundle: the log inside to replay (default: the newest).</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>name</translation>
+    </message>
+    <message>
+        <source>bundle: the session logs of the last N days (default 7).</source>
+        <translation>bundle: the session logs of the last N days (default 7).</translation>
+    </message>
+    <message>
+        <source>bundle: the profile (and its checklist) to add.</source>
+        <translation>bundle: the profile (and its checklist) to add.</translation>
+    </message>
+    <message>
+        <source>--days: &apos;%1&apos; is not a number of days</source>
+        <translation>--days: &apos;%1&apos; is not a number of days</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report, replay, bundle)</source>
+        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report, replay, bundle)</translation>
     </message>
 </context>
 <context>
@@ -2540,6 +2584,62 @@
     <message>
         <source>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</source>
         <translation>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</translation>
+    </message>
+    <message>
+        <source>replay needs a log and one of --events, --at TIME or --diff T1 T2</source>
+        <translation>replay needs a log and one of --events, --at TIME or --diff T1 T2</translation>
+    </message>
+    <message>
+        <source>--entry: the bundle holds no log %1 (it holds: %2)</source>
+        <translation>--entry: the bundle holds no log %1 (it holds: %2)</translation>
+    </message>
+    <message>
+        <source>replaying %1 (logs in the bundle: %2; --entry NAME for another)</source>
+        <translation>replaying %1 (logs in the bundle: %2; --entry NAME for another)</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>warning: %1</translation>
+    </message>
+    <message>
+        <source>at %1, link %2</source>
+        <translation>at %1, link %2</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>up</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>down</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>answering</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>not answering</translation>
+    </message>
+    <message>
+        <source>last error at %1: %2</source>
+        <translation>last error at %1: %2</translation>
+    </message>
+    <message>
+        <source>(last written: %1)</source>
+        <translation>(last written: %1)</translation>
+    </message>
+    <message>
+        <source>from %1 to %2, changes: %3</source>
+        <translation>from %1 to %2, changes: %3</translation>
+    </message>
+    <message>
+        <source>bundle needs the name of the zip file to write</source>
+        <translation>bundle needs the name of the zip file to write</translation>
+    </message>
+    <message>
+        <source>wrote %1 (%2):</source>
+        <translation>wrote %1 (%2):</translation>
     </message>
 </context>
 <context>
@@ -6962,6 +7062,91 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ReplayDecoder</name>
+    <message>
+        <source>late answer (discarded): %1</source>
+        <translation>late answer (discarded): %1</translation>
+    </message>
+    <message>
+        <source>no answer: %1</source>
+        <translation>no answer: %1</translation>
+    </message>
+    <message>
+        <source>E-STOP sent, not acknowledged</source>
+        <translation>E-STOP sent, not acknowledged</translation>
+    </message>
+    <message>
+        <source>refused (%1): %2</source>
+        <translation>refused (%1): %2</translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged</source>
+        <translation>E-STOP acknowledged</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReplayLog</name>
+    <message>
+        <source>lines not of a session log, skipped: %1 (line %2)</source>
+        <translation>lines not of a session log, skipped: %1 (line %2)</translation>
+    </message>
+    <message>
+        <source>the log ends in the middle of line %1 (cut short?): that line is left out</source>
+        <translation>the log ends in the middle of line %1 (cut short?): that line is left out</translation>
+    </message>
+    <message>
+        <source>events not listed (too many): %1</source>
+        <translation>events not listed (too many): %1</translation>
+    </message>
+    <message>
+        <source>line %1: the log was recorded with the register map %2, not with %3 (open it with that map)</source>
+        <translation>line %1: the log was recorded with the register map %2, not with %3 (open it with that map)</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1: no such file</translation>
+    </message>
+    <message>
+        <source>%1 is empty</source>
+        <translation>%1 is empty</translation>
+    </message>
+    <message>
+        <source>%1 is a zip file, not a session log (a support bundle? open it as one)</source>
+        <translation>%1 is a zip file, not a session log (a support bundle? open it as one)</translation>
+    </message>
+    <message>
+        <source>%1 holds no frames, only its header</source>
+        <translation>%1 holds no frames, only its header</translation>
+    </message>
+    <message>
+        <source>%1 is not a StepCom session log: not one of its lines is one (%2 lines)</source>
+        <translation>%1 is not a StepCom session log: not one of its lines is one (%2 lines)</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>cannot read %1: %2</translation>
+    </message>
+    <message>
+        <source>opening %1 was cancelled</source>
+        <translation>opening %1 was cancelled</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a time: give seconds from the start (12.5) or a clock time hh:mm:ss[.mmm]</source>
+        <translation>&apos;%1&apos; is not a time: give seconds from the start (12.5) or a clock time hh:mm:ss[.mmm]</translation>
+    </message>
+    <message>
+        <source>%1 is before the log&apos;s start (%2)</source>
+        <translation>%1 is before the log&apos;s start (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReplayState</name>
+    <message>
+        <source>(unknown)</source>
+        <translation>(unknown)</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ReportFile</name>
     <message>
         <source>cannot write %1: %2</source>
@@ -7778,6 +7963,45 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SupportBundle</name>
+    <message>
+        <source>the profile %1 does not exist</source>
+        <translation>the profile %1 does not exist</translation>
+    </message>
+    <message>
+        <source>cannot create %1 (zip error %2)</source>
+        <translation>cannot create %1 (zip error %2)</translation>
+    </message>
+    <message>
+        <source>cannot write %1 into %2</source>
+        <translation>cannot write %1 into %2</translation>
+    </message>
+    <message>
+        <source>cannot finish %1 (zip error %2)</source>
+        <translation>cannot finish %1 (zip error %2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a zip file (or cannot be read)</source>
+        <translation>%1 is not a zip file (or cannot be read)</translation>
+    </message>
+    <message>
+        <source>the bundle %1 holds no session log</source>
+        <translation>the bundle %1 holds no session log</translation>
+    </message>
+    <message>
+        <source>%1 is not a StepCom support bundle</source>
+        <translation>%1 is not a StepCom support bundle</translation>
+    </message>
+    <message>
+        <source>%1 holds no %2</source>
+        <translation>%1 holds no %2</translation>
+    </message>
+    <message>
+        <source>cannot copy %1 out of %2 into %3</source>
+        <translation>cannot copy %1 out of %2 into %3</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::TrafficModel</name>
     <message>
         <source>Time</source>
@@ -8456,6 +8680,22 @@ file and its checklist, no controller needed;
 (or --json) of id, baud, parity and what answered;
 --probe-timeout MS for slow controllers; exit 0 found,
 1 none, 2 usage, 3 link error</translation>
+    </message>
+    <message>
+        <source>replay a session log (--log FILE or the window&apos;s):
+--events, --at TIME [--json], --diff T1 T2; no
+controller needed</source>
+        <translation>replay a session log (--log FILE or the window&apos;s):
+--events, --at TIME [--json], --diff T1 T2; no
+controller needed</translation>
+    </message>
+    <message>
+        <source>make a support bundle: the session logs of the last
+--days N, --profile FILE, the settings, versions, OS
+and serial adapters, with a README inside</source>
+        <translation>make a support bundle: the session logs of the last
+--days N, --profile FILE, the settings, versions, OS
+and serial adapters, with a README inside</translation>
     </message>
 </context>
 </TS>

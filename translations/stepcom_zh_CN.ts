@@ -2146,10 +2146,6 @@
         <translation>--probe-timeout：“%1” 不是 1 到 10000 之间的毫秒数</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report)</source>
-        <translation>没有给出命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、scan、report）</translation>
-    </message>
-    <message>
         <source>The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo suppression): skip the request&apos;s own bytes from the first request on (without it the echo is found by the first read and skipped from then on).</source>
         <translation>适配器会回显发送的数据（没有回显抑制的半双工 USB-RS485 适配器）：从第一个请求起跳过请求自身的字节（不加此选项时，第一次读取就会发现回显，此后跳过）。</translation>
     </message>
@@ -2160,6 +2156,54 @@
     <message>
         <source>Always wait --timeout for an answer, instead of fitting the timeout to the controller&apos;s measured answers (4x the median, at most --timeout).</source>
         <translation>总是等待完整的 --timeout，而不是按测得的控制器应答时间调整超时（中位数的 4 倍，最多 --timeout）。</translation>
+    </message>
+    <message>
+        <source>Append the session log of this run (every frame, with its time) to this file; stepcomctl replay reads it.</source>
+        <translation>将本次运行的会话日志（每一帧及其时间）追加到此文件；stepcomctl replay 可读取它。</translation>
+    </message>
+    <message>
+        <source>replay: list what happened (time, device, what).</source>
+        <translation>replay：列出发生的事情（时间、设备、内容）。</translation>
+    </message>
+    <message>
+        <source>replay: the state of every device at TIME: seconds from the log&apos;s start or a clock time hh:mm:ss[.mmm].</source>
+        <translation>replay：每台设备在 TIME 时刻的状态：距日志开始的秒数或钟点时间 hh:mm:ss[.mmm]。</translation>
+    </message>
+    <message>
+        <source>time</source>
+        <translation>时间</translation>
+    </message>
+    <message>
+        <source>replay: what changed from T1 to the time after it (--diff T1 T2).</source>
+        <translation>replay：从 T1 到其后时间的变化（--diff T1 T2）。</translation>
+    </message>
+    <message>
+        <source>T1</source>
+        <translation>T1</translation>
+    </message>
+    <message>
+        <source>replay of a support bundle: the log inside to replay (default: the newest).</source>
+        <translation>回放支持包：要回放的包内日志（默认：最新的）。</translation>
+    </message>
+    <message>
+        <source>name</source>
+        <translation>名称</translation>
+    </message>
+    <message>
+        <source>bundle: the session logs of the last N days (default 7).</source>
+        <translation>bundle：最近 N 天的会话日志（默认 7）。</translation>
+    </message>
+    <message>
+        <source>bundle: the profile (and its checklist) to add.</source>
+        <translation>bundle：要加入的参数文件（及其调试清单）。</translation>
+    </message>
+    <message>
+        <source>--days: &apos;%1&apos; is not a number of days</source>
+        <translation>--days：“%1”不是天数</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report, replay, bundle)</source>
+        <translation>未给出命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、scan、report、replay、bundle）</translation>
     </message>
 </context>
 <context>
@@ -2523,6 +2567,62 @@
     <message>
         <source>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</source>
         <translation>scan 不接受参数（“%1”）：请用 --bauds、--parity 和 --ids</translation>
+    </message>
+    <message>
+        <source>replay needs a log and one of --events, --at TIME or --diff T1 T2</source>
+        <translation>replay 需要一个日志以及 --events、--at TIME 或 --diff T1 T2 之一</translation>
+    </message>
+    <message>
+        <source>--entry: the bundle holds no log %1 (it holds: %2)</source>
+        <translation>--entry：支持包中没有日志 %1（其中有：%2）</translation>
+    </message>
+    <message>
+        <source>replaying %1 (logs in the bundle: %2; --entry NAME for another)</source>
+        <translation>正在回放 %1（支持包中的日志数：%2；用 --entry NAME 选择其他日志）</translation>
+    </message>
+    <message>
+        <source>warning: %1</source>
+        <translation>警告：%1</translation>
+    </message>
+    <message>
+        <source>at %1, link %2</source>
+        <translation>在 %1，链路%2</translation>
+    </message>
+    <message>
+        <source>up</source>
+        <translation>已连接</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>已断开</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>有应答</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>last error at %1: %2</source>
+        <translation>最后的错误在 %1：%2</translation>
+    </message>
+    <message>
+        <source>(last written: %1)</source>
+        <translation>（最后写入：%1）</translation>
+    </message>
+    <message>
+        <source>from %1 to %2, changes: %3</source>
+        <translation>从 %1 到 %2，变化数：%3</translation>
+    </message>
+    <message>
+        <source>bundle needs the name of the zip file to write</source>
+        <translation>bundle 需要要写入的 zip 文件名</translation>
+    </message>
+    <message>
+        <source>wrote %1 (%2):</source>
+        <translation>已写入 %1（%2）：</translation>
     </message>
 </context>
 <context>
@@ -6913,6 +7013,91 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ReplayDecoder</name>
+    <message>
+        <source>late answer (discarded): %1</source>
+        <translation>迟到的应答（已丢弃）：%1</translation>
+    </message>
+    <message>
+        <source>no answer: %1</source>
+        <translation>无应答：%1</translation>
+    </message>
+    <message>
+        <source>E-STOP sent, not acknowledged</source>
+        <translation>已发送急停，未得到确认</translation>
+    </message>
+    <message>
+        <source>refused (%1): %2</source>
+        <translation>被拒绝（%1）：%2</translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged</source>
+        <translation>急停已确认</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReplayLog</name>
+    <message>
+        <source>lines not of a session log, skipped: %1 (line %2)</source>
+        <translation>不属于会话日志的行，已跳过：%1（第 %2 行）</translation>
+    </message>
+    <message>
+        <source>the log ends in the middle of line %1 (cut short?): that line is left out</source>
+        <translation>日志在第 %1 行中间结束（被截断？）：该行已略去</translation>
+    </message>
+    <message>
+        <source>events not listed (too many): %1</source>
+        <translation>未列出的事件（过多）：%1</translation>
+    </message>
+    <message>
+        <source>line %1: the log was recorded with the register map %2, not with %3 (open it with that map)</source>
+        <translation>第 %1 行：该日志是用寄存器映射表 %2 记录的，而不是 %3（请用该映射表打开）</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1：文件不存在</translation>
+    </message>
+    <message>
+        <source>%1 is empty</source>
+        <translation>%1 为空</translation>
+    </message>
+    <message>
+        <source>%1 is a zip file, not a session log (a support bundle? open it as one)</source>
+        <translation>%1 是 zip 文件，不是会话日志（是支持包吗？请按支持包打开）</translation>
+    </message>
+    <message>
+        <source>%1 holds no frames, only its header</source>
+        <translation>%1 只有文件头，没有报文</translation>
+    </message>
+    <message>
+        <source>%1 is not a StepCom session log: not one of its lines is one (%2 lines)</source>
+        <translation>%1 不是 StepCom 会话日志：没有一行符合格式（共 %2 行）</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>opening %1 was cancelled</source>
+        <translation>已取消打开 %1</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a time: give seconds from the start (12.5) or a clock time hh:mm:ss[.mmm]</source>
+        <translation>“%1”不是时间：请给出距开始的秒数（12.5）或钟点时间 hh:mm:ss[.mmm]</translation>
+    </message>
+    <message>
+        <source>%1 is before the log&apos;s start (%2)</source>
+        <translation>%1 早于日志的开始时间（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReplayState</name>
+    <message>
+        <source>(unknown)</source>
+        <translation>（未知）</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ReportFile</name>
     <message>
         <source>cannot write %1: %2</source>
@@ -7729,6 +7914,45 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SupportBundle</name>
+    <message>
+        <source>the profile %1 does not exist</source>
+        <translation>参数文件 %1 不存在</translation>
+    </message>
+    <message>
+        <source>cannot create %1 (zip error %2)</source>
+        <translation>无法创建 %1（zip 错误 %2）</translation>
+    </message>
+    <message>
+        <source>cannot write %1 into %2</source>
+        <translation>无法将 %1 写入 %2</translation>
+    </message>
+    <message>
+        <source>cannot finish %1 (zip error %2)</source>
+        <translation>无法完成 %1（zip 错误 %2）</translation>
+    </message>
+    <message>
+        <source>%1 is not a zip file (or cannot be read)</source>
+        <translation>%1 不是 zip 文件（或无法读取）</translation>
+    </message>
+    <message>
+        <source>the bundle %1 holds no session log</source>
+        <translation>支持包 %1 中没有会话日志</translation>
+    </message>
+    <message>
+        <source>%1 is not a StepCom support bundle</source>
+        <translation>%1 不是 StepCom 支持包</translation>
+    </message>
+    <message>
+        <source>%1 holds no %2</source>
+        <translation>%1 中没有 %2</translation>
+    </message>
+    <message>
+        <source>cannot copy %1 out of %2 into %3</source>
+        <translation>无法将 %1 从 %2 复制到 %3</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::TrafficModel</name>
     <message>
         <source>Time</source>
@@ -8404,6 +8628,22 @@ file and its checklist, no controller needed;
 以表格（或 --json）列出 ID、波特率、校验和应答的设备；
 慢速控制器用 --probe-timeout 毫秒；退出码 0 找到，
 1 没有，2 用法错误，3 链路错误</translation>
+    </message>
+    <message>
+        <source>replay a session log (--log FILE or the window&apos;s):
+--events, --at TIME [--json], --diff T1 T2; no
+controller needed</source>
+        <translation>回放会话日志（--log FILE 或窗口写的）：
+--events、--at TIME [--json]、--diff T1 T2；
+无需控制器</translation>
+    </message>
+    <message>
+        <source>make a support bundle: the session logs of the last
+--days N, --profile FILE, the settings, versions, OS
+and serial adapters, with a README inside</source>
+        <translation>生成支持包：最近 --days N 天的会话日志、
+--profile FILE、设置、版本、操作系统和串口适配器，
+内附 README</translation>
     </message>
 </context>
 </TS>

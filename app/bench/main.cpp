@@ -4,6 +4,7 @@
 #include "benchrunner.h"
 #include "busprobe.h"
 #include "firststatusprobe.h"
+#include "replayprobe.h"
 #include "scanprobe.h"
 #include "trafficprobe.h"
 #include "windowprobe.h"
@@ -41,7 +42,8 @@ int main(int argc, char *argv[])
         "9600 when nobody answers, (i) the status cycle and read-all on a controller that "
         "refuses reads covering reserved registers, (j) the time from the port opened to the "
         "first status, both at 9600, (k) (a) and (b) on a controller that answers in 2 ms at "
-        "9600 and 38400. Prints a table "
+        "9600 and 38400, (l) opening and seeking a synthetic 1-hour session log at 10 Hz. Prints a "
+        "table "
         "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -63,6 +65,9 @@ int main(int argc, char *argv[])
         {QStringLiteral("no-bus"), QStringLiteral("Skip (f) and (g).")},
         {QStringLiteral("no-scan"), QStringLiteral("Skip (h).")},
         {QStringLiteral("only-scan"), QStringLiteral("Run only (h), the bus scan.")},
+        {QStringLiteral("no-replay"), QStringLiteral("Skip (l), the replay of an hour's log.")},
+        {QStringLiteral("only-replay"),
+         QStringLiteral("Run only (l): open a synthetic 1-hour log at 10 Hz, seek in it.")},
         {QStringLiteral("no-gaps"), QStringLiteral("Skip (i), the gap-refusing controller.")},
         {QStringLiteral("no-first-status"), QStringLiteral("Skip (j), the time to first status.")},
         {QStringLiteral("no-fast"),
@@ -110,7 +115,8 @@ int main(int argc, char *argv[])
     }
 
     QList<Verdict> rows;
-    if (parser.isSet(QStringLiteral("only-scan"))) {
+    const bool onlyReplay = parser.isSet(QStringLiteral("only-replay"));
+    if (parser.isSet(QStringLiteral("only-scan")) || onlyReplay) {
         bauds.clear();
         config.traffic = false;
         config.stepcomPath.clear();
@@ -176,7 +182,11 @@ int main(int argc, char *argv[])
         rows += firstStatusVerdicts(measureFirstStatus(startBaud, config.firstStatusRuns));
     }
 
-    if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke) {
+    if (!parser.isSet(QStringLiteral("no-replay"))) {
+        err << QStringLiteral("stepcom-bench: replaying a synthetic session log ...") << Qt::endl;
+        rows += replayVerdicts(config.smoke ? measureReplay(60, 10) : measureReplay(3600, 10));
+    }
+    if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke && !onlyReplay) {
         err << QStringLiteral("stepcom-bench: the bus scan of ids 1-247 at 9600 baud ...")
             << Qt::endl;
         rows += scanVerdicts(measureScan(9600));

@@ -38,7 +38,8 @@ double cpuSeconds(qint64 pid)
 #endif
 }
 
-// A line of /proc/<pid>/status in MB ("VmHWM:   81234 kB"); -1 when missing.
+} // namespace
+
 double statusMb(qint64 pid, const QByteArray &field)
 {
     QFile file(QStringLiteral("/proc/%1/status").arg(pid));
@@ -50,8 +51,6 @@ double statusMb(qint64 pid, const QByteArray &field)
     }
     return -1;
 }
-
-} // namespace
 
 WindowResult measureWindow(const BenchConfig &config, SimHost *host, int baud)
 {

@@ -2,6 +2,8 @@
 
 #include "benchtypes.h"
 
+#include <QByteArray>
+
 namespace stepcom {
 class SimHost;
 }
@@ -15,5 +17,7 @@ namespace stepcom::bench {
 // forth meanwhile so the plots and the fast poll path work too. Without one the window starts
 // its built-in simulator (`--sim`), which then runs inside the measured process.
 WindowResult measureWindow(const BenchConfig &config, SimHost *host, int baud);
+// A line of /proc/<pid>/status in MB ("VmHWM:   81234 kB"); -1 when missing.
+double statusMb(qint64 pid, const QByteArray &field);
 
 } // namespace stepcom::bench

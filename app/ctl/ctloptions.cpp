@@ -103,6 +103,24 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
         {QStringLiteral("from"),
          tr("report: make the report from this profile file, not from a controller."),
          tr("profile")},
+        {QStringLiteral("log"),
+         tr("Append the session log of this run (every frame, with its time) to this file; "
+            "stepcomctl replay reads it."),
+         tr("file")},
+        {QStringLiteral("events"), tr("replay: list what happened (time, device, what).")},
+        {QStringLiteral("at"),
+         tr("replay: the state of every device at TIME: seconds from the log's start or a "
+            "clock time hh:mm:ss[.mmm]."),
+         tr("time")},
+        {QStringLiteral("diff"),
+         tr("replay: what changed from T1 to the time after it (--diff T1 T2)."), tr("T1")},
+        {QStringLiteral("entry"),
+         tr("replay of a support bundle: the log inside to replay (default: the newest)."),
+         tr("name")},
+        {QStringLiteral("days"), tr("bundle: the session logs of the last N days (default 7)."),
+         tr("n"), QStringLiteral("7")},
+        {QStringLiteral("profile"), tr("bundle: the profile (and its checklist) to add."),
+         tr("file")},
         {QStringLiteral("count"), tr("monitor: number of samples (default: until stopped)."),
          tr("n")},
         {QStringLiteral("interval"),
@@ -236,6 +254,14 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         (!toInt(parser.value(QStringLiteral("interval")), &o.intervalMs) || o.intervalMs < 0))
         return tr("--interval: '%1' is not a number of ms")
             .arg(parser.value(QStringLiteral("interval")));
+    if (!toInt(parser.value(QStringLiteral("days")), &o.days) || o.days < 0)
+        return tr("--days: '%1' is not a number of days").arg(parser.value(QStringLiteral("days")));
+    o.logFile = parser.value(QStringLiteral("log"));
+    o.events = parser.isSet(QStringLiteral("events"));
+    o.at = parser.value(QStringLiteral("at"));
+    o.diffFrom = parser.value(QStringLiteral("diff"));
+    o.entry = parser.value(QStringLiteral("entry"));
+    o.profile = parser.value(QStringLiteral("profile"));
     o.mapFile = parser.value(QStringLiteral("map"));
     o.json = parser.isSet(QStringLiteral("json"));
     o.verbose = parser.isSet(QStringLiteral("verbose"));
@@ -251,7 +277,7 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.to = parser.value(QStringLiteral("to"));
     if (positional.isEmpty())
         return tr("no command given (params, read, write, command, move, monitor, dump, diff, "
-                  "apply, assign-id, scan, report)");
+                  "apply, assign-id, scan, report, replay, bundle)");
     o.command = positional.first();
     o.arguments = positional.mid(1);
     // --to is a position for move and a device id for assign-id.

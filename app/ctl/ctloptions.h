@@ -36,6 +36,13 @@ struct CtlOptions
     QList<QSerialPort::Parity> scanParities;
     QList<int> scanIds;
     int probeTimeoutMs = 0;
+    QString logFile;     // --log FILE: the session log of this run, appended
+    bool events = false; // replay --events
+    QString at;          // replay --at TIME
+    QString diffFrom;    // replay --diff T1 (T2 is the next argument)
+    QString entry;       // replay BUNDLE.zip --entry NAME: which log of the bundle
+    int days = 7;        // bundle --days N
+    QString profile;     // bundle --profile FILE
     int count = -1;
     int intervalMs = 0;
     QString command;

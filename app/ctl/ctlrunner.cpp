@@ -143,6 +143,16 @@ const QList<CtlCommand> &CtlRunner::commands()
                                          "file and its checklist, no controller needed;\n"
                                          "--id 1,2,3: every controller in one document)"),
          &CtlRunner::runReport},
+        {"replay", "replay LOG|BUNDLE.zip",
+         QT_TRANSLATE_NOOP("stepcomctl", "replay a session log (--log FILE or the window's):\n"
+                                         "--events, --at TIME [--json], --diff T1 T2; no\n"
+                                         "controller needed"),
+         &CtlRunner::runReplay},
+        {"bundle", "bundle OUT.zip",
+         QT_TRANSLATE_NOOP("stepcomctl", "make a support bundle: the session logs of the last\n"
+                                         "--days N, --profile FILE, the settings, versions, OS\n"
+                                         "and serial adapters, with a README inside"),
+         &CtlRunner::runBundle},
     };
     return table;
 }
@@ -252,6 +262,7 @@ void CtlRunner::connectThen(std::function<void()> next)
     // One-shot: no read-all after connecting, no status poll; each command reads what it names.
     m_session = new DeviceSession(m_map, this);
     m_session->setLive(false);
+    startLog();
     DeviceSession::setLinkDiagnosticsShown(m_options.verbose);
     // Said once, in words: what this controller refuses to read, and that the work goes on.
     connect(m_session, &DeviceSession::readLimitsLearned, this, [this](const QString &text) {

@@ -86,6 +86,11 @@ private:
     void runMachineReport();
     // dump into a folder: one file per id, named by BusDump (ctlmachine.cpp).
     void dumpIntoFolder(const QString &folder, const QHash<QString, qint64> &values);
+    // Support (ctlreplay.cpp): replay a session log or a bundle's; make a support bundle;
+    // --log FILE for the session just made.
+    void runReplay();
+    void runBundle();
+    void startLog();
     void confirmThenApply(const QList<ParameterWrite> &writes);
     void applyWrites(const QList<ParameterWrite> &writes);
     // Saves the settings read before an apply as a backup (BackupStore), unless --no-backup;

@@ -11,6 +11,7 @@ namespace stepcom {
 
 SessionLog::SessionLog(DeviceSession *session, QObject *parent)
     : QObject(parent)
+    , m_session(session)
     , m_directory(defaultDirectory())
 {
     if (!session)
@@ -20,6 +21,27 @@ SessionLog::SessionLog(DeviceSession *session, QObject *parent)
         if (session->linkState() == DeviceSession::LinkState::Connecting)
             beginConnection(session->settings().describe());
     });
+    // What happened beyond the frames, in kinds of their own so a replay need not read the
+    // (translated) text.
+    const auto mark = [this](const char *kind, const QString &text) { writeMark(kind, text); };
+    connect(session, &DeviceSession::connected, this, [session, mark](bool ok, const QString &) {
+        if (ok)
+            mark(kLinkUp, session->settings().describe());
+    });
+    // Closed on purpose or lost: the reason says which (linkLost follows this one).
+    connect(session, &DeviceSession::disconnected, this,
+            [mark](const QString &reason) { mark(kLinkDown, reason); });
+    connect(session, &DeviceSession::controllerRestarted, this,
+            [mark](int id, const QStringList &lost) {
+                mark(kRestart,
+                     QStringLiteral("id %1%2").arg(id).arg(
+                         lost.isEmpty() ? QString()
+                                        : QStringLiteral(": ") + lost.join(QStringLiteral("; "))));
+            });
+    connect(session, &DeviceSession::emergencyStopRequested, this,
+            [mark] { mark(kUser, QStringLiteral("E-STOP pressed")); });
+    connect(session, &DeviceSession::deviceInViewChanged, this,
+            [mark](int id) { mark(kUser, QStringLiteral("device in view: id %1").arg(id)); });
 }
 
 SessionLog::~SessionLog() = default;
@@ -34,6 +56,17 @@ void SessionLog::setDirectory(const QString &directory)
 {
     m_file.close();
     m_directory = directory;
+}
+
+void SessionLog::setFile(const QString &path)
+{
+    m_file.close();
+    m_fixedFile = path;
+}
+
+void SessionLog::noteUserAction(const QString &text)
+{
+    writeMark(kUser, text);
 }
 
 void SessionLog::setLimits(qint64 fileBytes, qint64 totalBytes)
@@ -96,8 +129,66 @@ QString SessionLog::formatLine(const TrafficEntry &entry)
              hex.isEmpty() ? QString() : hex + QStringLiteral("  "), entry.summary);
 }
 
+QString SessionLog::formatMark(const QDateTime &time, const char *kind, const QString &text)
+{
+    return QStringLiteral("%1  --  %2  %3\n")
+        .arg(time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
+             QString::fromLatin1(kind).leftJustified(7), text);
+}
+
+QString SessionLog::header(const DeviceSession *session, int part, const QString &description)
+{
+    QString text =
+        QStringLiteral("# StepCom %1 session log, part %2: %3\n")
+            .arg(QStringLiteral(STEPCOM_VERSION))
+            .arg(part)
+            .arg(description.isEmpty() ? QStringLiteral("(no connection)") : description);
+    text += QStringLiteral("# program: StepCom %1\n# qt: %2\n")
+                .arg(QStringLiteral(STEPCOM_VERSION), QLatin1String(qVersion()));
+    if (!session)
+        return text;
+    text += QStringLiteral("# map: %1\n").arg(session->map().identity());
+    const LinkSettings s = session->settings();
+    const char *transport = s.transport == LinkSettings::Transport::Tcp      ? "tcp"
+                            : s.transport == LinkSettings::Transport::RtuTcp ? "rtu-tcp"
+                                                                             : "rtu";
+    QString line = QStringLiteral("transport=%1").arg(QLatin1String(transport));
+    if (s.isNetwork())
+        line += QStringLiteral(" host=%1 port=%2").arg(s.host).arg(s.tcpPort);
+    else
+        line += QStringLiteral(" port=%1 baud=%2 parity=%3 stop=%4")
+                    .arg(s.portName)
+                    .arg(s.baud)
+                    .arg(LinkSettings::parityName(s.parity))
+                    .arg(s.stopBits == QSerialPort::TwoStop ? 2 : 1);
+    line += QStringLiteral(" id=%1 timeout=%2 retries=%3")
+                .arg(s.deviceId)
+                .arg(s.timeoutMs)
+                .arg(s.retries);
+    text += QStringLiteral("# line: %1\n").arg(line);
+    QStringList ids;
+    for (const int id : session->deviceIds())
+        ids << QString::number(id);
+    if (ids.isEmpty())
+        ids << QString::number(s.deviceId);
+    text += QStringLiteral("# ids: %1\n").arg(ids.join(QLatin1Char(',')));
+    return text;
+}
+
 bool SessionLog::openFile()
 {
+    if (!m_fixedFile.isEmpty()) {
+        ++m_part;
+        m_file.setFileName(m_fixedFile);
+        if (!m_file.open(QIODevice::WriteOnly | QIODevice::Append | QIODevice::Text)) {
+            fail(tr("cannot write the session log %1: %2")
+                     .arg(m_file.fileName(), m_file.errorString()));
+            return false;
+        }
+        m_file.write(header(m_session, m_part, m_description).toUtf8());
+        Q_EMIT fileStarted(m_file.fileName());
+        return true;
+    }
     if (!QDir().mkpath(m_directory)) {
         fail(tr("cannot create the log folder %1").arg(m_directory));
         return false;
@@ -124,21 +215,30 @@ bool SessionLog::openFile()
             tr("cannot write the session log %1: %2").arg(m_file.fileName(), m_file.errorString()));
         return false;
     }
-    const QString header =
-        QStringLiteral("# StepCom %1 session log, part %2: %3\n")
-            .arg(QStringLiteral(STEPCOM_VERSION))
-            .arg(m_part)
-            .arg(m_description.isEmpty() ? QStringLiteral("(no connection)") : m_description);
-    m_file.write(header.toUtf8());
+    m_file.write(header(m_session, m_part, m_description).toUtf8());
     Q_EMIT fileStarted(m_file.fileName());
     prune();
     return true;
 }
 
+void SessionLog::writeMark(const char *kind, const QString &text)
+{
+    // Not a file of its own: what happens with no link (a page shown before connecting) has no
+    // frames to go with.
+    if (!m_file.isOpen() &&
+        (!m_session || m_session->linkState() == DeviceSession::LinkState::Disconnected))
+        return;
+    writeLine(formatMark(QDateTime::currentDateTime(), kind, text).toUtf8());
+}
+
 void SessionLog::write(const TrafficEntry &entry)
 {
-    const QByteArray line = formatLine(entry).toUtf8();
-    if (m_file.isOpen() && m_file.size() + line.size() > m_fileBytes)
+    writeLine(formatLine(entry).toUtf8());
+}
+
+void SessionLog::writeLine(const QByteArray &line)
+{
+    if (m_file.isOpen() && m_fixedFile.isEmpty() && m_file.size() + line.size() > m_fileBytes)
         m_file.close(); // continue in the next part
     if (!m_file.isOpen() && !openFile())
         return;

@@ -4,6 +4,7 @@
 
 #include <QFile>
 #include <QObject>
+#include <QPointer>
 
 namespace stepcom {
 
@@ -13,7 +14,11 @@ class DeviceSession;
 // application's data location: what a technician sends to support after a bad day. Files are
 // rotated at a size and the oldest deleted beyond a total, so the log never fills a laptop.
 // Fed by the session's TrafficLog (entryAdded); a new file begins each time the link starts
-// connecting.
+// connecting. Each file (or, with setFile, each connection appended to the one file) begins with
+// '#' header lines that make it replayable on its own (core/support/ReplayLog): the program and
+// Qt versions, the register map, the line and the ids. Beside the frames it notes, as lines of
+// their own kind, what the session knows happened: the link up or lost, a controller restart,
+// user actions (E-STOP pressed, the device in view, noteUserAction()).
 class SessionLog : public QObject
 {
     Q_OBJECT
@@ -25,6 +30,9 @@ public:
     static QString defaultDirectory();
     void setDirectory(const QString &directory);
     QString directory() const { return m_directory; }
+    // One file instead of the directory (stepcomctl --log FILE): appended to, never rotated or
+    // pruned; every connection adds its header. Empty: back to the directory.
+    void setFile(const QString &path);
     // A file is continued in a new part beyond `fileBytes`; the oldest files go beyond
     // `totalBytes` (the file being written is never deleted).
     void setLimits(qint64 fileBytes, qint64 totalBytes);
@@ -37,12 +45,25 @@ public:
     QString currentFile() const;
     // The log files in the directory, newest first.
     QStringList files() const;
+    // A user action the core cannot see (the window's page changes, a checklist result), as a
+    // "user" line (while a log is being written: not before the first connection).
+    void noteUserAction(const QString &text);
     // Why the last write failed (empty while writing works).
     QString error() const { return m_error; }
 
     // "2026-11-24 22:10:01.123  TX  poll   01 03 00 00 00 02 C4 0B  read 40001-40002"
     static QString formatLine(const TrafficEntry &entry);
     static QString kindName(TrafficEntry::Kind kind);
+    // The kinds of the lines the session log adds beside the traffic: ReplayLog reads them.
+    static constexpr const char *kLinkUp = "linkup";
+    static constexpr const char *kLinkDown = "linkdown";
+    static constexpr const char *kRestart = "restart";
+    static constexpr const char *kUser = "user";
+    // "2026-11-24 22:10:01.123  --  user     E-STOP pressed"
+    static QString formatMark(const QDateTime &time, const char *kind, const QString &text);
+    // The header lines of a file: "# StepCom 0.1.0 session log, part 1: <description>", then
+    // "# key: value" lines (program, qt, map, line, ids) for what is known (session may be null).
+    static QString header(const DeviceSession *session, int part, const QString &description);
 
 Q_SIGNALS:
     void fileStarted(const QString &path);
@@ -51,11 +72,15 @@ Q_SIGNALS:
 
 private:
     void write(const TrafficEntry &entry);
+    void writeLine(const QByteArray &line);
+    void writeMark(const char *kind, const QString &text);
     bool openFile();
     void prune();
     void fail(const QString &reason);
 
+    QPointer<DeviceSession> m_session;
     QString m_directory;
+    QString m_fixedFile; // setFile(): one file, appended
     qint64 m_fileBytes = 4 * 1024 * 1024;
     qint64 m_totalBytes = 64 * 1024 * 1024;
     QString m_description;
