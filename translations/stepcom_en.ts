@@ -3393,6 +3393,10 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>Factory reset: read back; %n values differ from the factory values StepCom knows (another firmware&apos;s defaults?): %1</numerusform>
         </translation>
     </message>
+    <message>
+        <source>The controller answers again (%1) and its axes stand at 0 after a motion: whether the motion ended there or the controller restarted cannot be told. The references are not known: home again.</source>
+        <translation>The controller answers again (%1) and its axes stand at 0 after a motion: whether the motion ended there or the controller restarted cannot be told. The references are not known: home again.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -5442,6 +5446,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>the controller restarted</source>
         <translation>the controller restarted</translation>
     </message>
+    <message>
+        <source>no answer while it moved: how it ended is not known (the controller may have restarted)</source>
+        <translation>no answer while it moved: how it ended is not known (the controller may have restarted)</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MotionPage</name>
@@ -7048,6 +7056,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not referenced (the controller restarted)</source>
         <translation>not referenced (the controller restarted)</translation>
+    </message>
+    <message>
+        <source>not referenced (no answer while it moved)</source>
+        <translation>not referenced (no answer while it moved)</translation>
     </message>
 </context>
 <context>

@@ -3369,6 +3369,10 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>恢复出厂设置：已回读；有 %n 个值与 StepCom 所知的出厂值不同（其他固件的默认值？）：%1</numerusform>
         </translation>
     </message>
+    <message>
+        <source>The controller answers again (%1) and its axes stand at 0 after a motion: whether the motion ended there or the controller restarted cannot be told. The references are not known: home again.</source>
+        <translation>控制器重新应答（%1），而且它的轴在一次运动之后停在 0：无法判断是运动在那里结束了，还是控制器重新启动了。参考点未知：请重新回零。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DirectionCheck</name>
@@ -5413,6 +5417,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>the controller restarted</source>
         <translation>控制器重新启动了</translation>
     </message>
+    <message>
+        <source>no answer while it moved: how it ended is not known (the controller may have restarted)</source>
+        <translation>运动时没有应答：不知道它是如何结束的（控制器可能重新启动了）</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MotionPage</name>
@@ -6999,6 +7007,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>not referenced (the controller restarted)</source>
         <translation>无参考点（控制器重新启动了）</translation>
+    </message>
+    <message>
+        <source>not referenced (no answer while it moved)</source>
+        <translation>无参考点（运动时没有应答）</translation>
     </message>
 </context>
 <context>

@@ -37,9 +37,11 @@ CtlMotionWait::CtlMotionWait(DeviceSession *session, const Parameter &command, b
             [this](const QString &) { conclude(MotionCause::LinkLost); });
     m_restarts = new RestartWatch(session->map(), this);
     connect(m_restarts, &RestartWatch::suspected, this,
-            [this](int, const QString &, bool positionsReset) {
-                if (positionsReset)
+            [this](int, const QString &, RestartWatch::Zeros zeros) {
+                if (zeros == RestartWatch::Zeros::Reset)
                     conclude(MotionCause::Restarted);
+                else if (zeros == RestartWatch::Zeros::AfterMotion)
+                    conclude(MotionCause::Silent); // it may have ended there: not known
             });
 }
 

@@ -31,14 +31,15 @@ std::optional<AnswerTimeFit::Line> AnswerTimeFit::fit(double expectedMsPerChar) 
     const int spread = m_byLength.lastKey() - m_byLength.firstKey();
     if (spread * expectedMsPerChar < kMinSpreadMs)
         return std::nullopt;
-    // Least squares through one point per length: its median round trip, so that a round trip
-    // slowed by a busy computer does not pull the line.
+    // Least squares through one point per length: its lower quartile round trip. A busy
+    // computer only ever adds to a round trip, so the quartile stays on the line while most of
+    // a length's round trips were slowed.
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
     for (auto it = m_byLength.cbegin(); it != m_byLength.cend(); ++it) {
         QList<double> sorted = it.value();
         std::sort(sorted.begin(), sorted.end());
         const double x = it.key();
-        const double y = sorted.at(sorted.size() / 2);
+        const double y = sorted.at(sorted.size() / 4);
         sx += x;
         sy += y;
         sxx += x * x;

@@ -34,8 +34,8 @@ public:
         double answerMs = 0;  // the controller's own time (plus an adapter's latency)
         double msPerChar = 0; // the wire's time of one character
     };
-    // The line through the median round trip of every length kept; nothing before two lengths
-    // at least kMinSpreadMs apart at `expectedMsPerChar` were seen.
+    // The line through the lower quartile round trip of every length kept; nothing before two
+    // lengths at least kMinSpreadMs apart at `expectedMsPerChar` were seen.
     std::optional<Line> fit(double expectedMsPerChar) const;
     // The controller's answer time when the fit shows a wire at `expectedMsPerChar` (its time
     // per character within 0.6-1.6x of it); nothing otherwise.

@@ -334,6 +334,9 @@ QString MotionJudge::causeText(MotionCause cause)
         return tr("E-STOP");
     case MotionCause::LinkLost:
         return tr("link lost");
+    case MotionCause::Silent:
+        return tr("no answer while it moved: how it ended is not known (the controller may "
+                  "have restarted)");
     case MotionCause::Restarted:
         return tr("the controller restarted");
     case MotionCause::None:

@@ -28,6 +28,8 @@ QString MotionOutcome::causeWord() const
         return QStringLiteral("estop");
     case MotionCause::LinkLost:
         return QStringLiteral("link_lost");
+    case MotionCause::Silent:
+        return QStringLiteral("silent");
     case MotionCause::Restarted:
         return QStringLiteral("restarted");
     case MotionCause::None:

@@ -17,7 +17,9 @@ using StatusValues = QHash<QString, qint64>;
 enum class MotionKind { SingleMove, Home, HomeInOrder, ReturnToZero, Arc, Line };
 
 // Something from outside the motion that may have ended it, as StepCom saw it go out or happen.
-enum class MotionCause { None, Stop, EmergencyStop, LinkLost, Restarted };
+// Silent: the controller did not answer for a while as it moved and then stood at 0: the motion
+// may have ended there or the controller may have restarted -- how it ended is not known.
+enum class MotionCause { None, Stop, EmergencyStop, LinkLost, Silent, Restarted };
 
 // A motion command as it was acknowledged: which axes it moves and where they should end.
 struct MotionStart

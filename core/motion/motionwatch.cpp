@@ -17,8 +17,10 @@ int rank(MotionCause c)
         return 2;
     case MotionCause::LinkLost:
         return 3;
-    case MotionCause::Restarted:
+    case MotionCause::Silent:
         return 4;
+    case MotionCause::Restarted:
+        return 5;
     }
     return 0;
 }

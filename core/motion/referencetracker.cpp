@@ -46,6 +46,8 @@ QString ReferenceTracker::textOn(int device, int motor) const
         return tr("not referenced (link lost)");
     case Reason::Restarted:
         return tr("not referenced (the controller restarted)");
+    case Reason::Silent:
+        return tr("not referenced (no answer while it moved)");
     }
     return {};
 }

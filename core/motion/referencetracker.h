@@ -25,6 +25,7 @@ public:
         Zeroed, // "zero the coordinates" moved the zero
         LinkLost,
         Restarted, // the controller restarted: its position counters began again at 0
+        Silent,    // no answer while an axis moved: it may have restarted, it is not known
     };
     Q_ENUM(Reason)
 

@@ -10,6 +10,7 @@
 #include "device/poller.h" // PollStats
 #include "motion/travellimits.h"
 #include "session/busdevicestatus.h"
+#include "session/restartwatch.h" // RestartWatch::Zeros
 
 #include <QMap>
 #include <QObject>
@@ -26,7 +27,6 @@ class LinkHealth;
 class ModbusLink;
 class MotionSupervisor;
 class Reconnector;
-class RestartWatch;
 class SimulatorStarter;
 class StatusRecorder;
 class StepMove;
@@ -279,8 +279,8 @@ private:
     // -- Restarts (sessionrestart.cpp) --
     // A restart of the controllers seen and said.
     void watchRestarts();
-    void checkRestart(int id, const QString &why, bool positionsReset);
-    void restartChecked(int id, const QString &why, bool positionsReset,
+    void checkRestart(int id, const QString &why, stepcom::RestartWatch::Zeros zeros);
+    void restartChecked(int id, const QString &why, stepcom::RestartWatch::Zeros zeros,
                         const QHash<QString, qint64> &held, const ReadOutcome &read);
 
     ModbusLink *m_link;

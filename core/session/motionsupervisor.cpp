@@ -246,8 +246,10 @@ void MotionSupervisor::conclude(int device, quint64 id, const StatusValues &end)
         for (const AxisEnd &a : o.axes)
             m_references->setReasonOn(device, a.motor,
                                       a.referenced && o.cause == MotionCause::None ? Reason::Homed
-                                      : o.cause != MotionCause::None ? Reason::HomingStopped
-                                                                     : Reason::HomingFailed);
+                                      : o.cause == MotionCause::Silent             ? Reason::Silent
+                                      : o.cause == MotionCause::Restarted ? Reason::Restarted
+                                      : o.cause != MotionCause::None      ? Reason::HomingStopped
+                                                                          : Reason::HomingFailed);
     }
     if (device == m_view)
         Q_EMIT finished(o);
@@ -255,17 +257,20 @@ void MotionSupervisor::conclude(int device, quint64 id, const StatusValues &end)
     Q_EMIT changed();
 }
 
-void MotionSupervisor::restarted(int device)
+void MotionSupervisor::interrupted(int device, MotionCause cause)
 {
-    // Judged from the last sample before the restart: the positions after it mean nothing.
+    // Judged from the last sample before the restart (or the silence): the positions after it
+    // mean nothing.
     QList<std::pair<quint64, StatusValues>> open;
     for (Followed &f : m_devices[device].followed) {
-        f.watch.interrupt(MotionCause::Restarted);
+        f.watch.interrupt(cause);
         open.append({f.id, f.watch.last()});
     }
     for (const auto &[id, last] : std::as_const(open))
         conclude(device, id, last);
-    m_references->loseAll(device, ReferenceTracker::Reason::Restarted);
+    m_references->loseAll(device, cause == MotionCause::Restarted
+                                      ? ReferenceTracker::Reason::Restarted
+                                      : ReferenceTracker::Reason::Silent);
 }
 
 void MotionSupervisor::onDisconnected()

@@ -51,7 +51,10 @@ public:
     void commandAcknowledged(int device, const QString &key);
     // Controller `device` restarted: every motion followed there ended with it, its references
     // are gone.
-    void restarted(int device);
+    void restarted(int device) { interrupted(device, MotionCause::Restarted); }
+    // `device` did not answer for a while as it moved and stands at 0 now: it may have
+    // restarted or finished; every motion followed there ended unknown, its references too.
+    void silent(int device) { interrupted(device, MotionCause::Silent); }
     // The session: fresh status of `device` is in (the live poll or the background poll).
     void statusRead(int device, bool ok);
     int view() const { return m_view; }
@@ -85,6 +88,7 @@ private:
     const Device &inView() const;
     void onDispatched(const Request &request);
     void onDisconnected();
+    void interrupted(int device, MotionCause cause);
     void setView(int device);
     void readEndThenJudge(int device, quint64 id);
     void conclude(int device, quint64 id, const StatusValues &end);

@@ -53,8 +53,11 @@ void RestartWatch::statusRead(int device, bool ok, const QHash<QString, qint64> 
     // running may have stopped at 0 by itself, unless the controller was silent in between.
     const auto recent = [nowMs](qint64 at) { return at >= 0 && nowMs - at < kCommandWindowMs; };
     const bool explained = d.commanded || recent(d.commandedAtMs) || recent(d.runningAtMs);
-    const bool reset = complete && d.known && d.anyNonZero && (!explained || silent) &&
-                       !anyNonZero && !running && (!d.running || silent);
+    // Back at 0 where a motion was under way or commanded before a silence: a motion may end
+    // at 0 (homing does), a restart puts it there too. Not known.
+    const bool zeroed = complete && d.known && d.anyNonZero && !anyNonZero && !running;
+    const bool reset = zeroed && !explained && !d.running;
+    const Zeros zeros = reset ? Zeros::Reset : zeroed && silent ? Zeros::AfterMotion : Zeros::Kept;
     if (running)
         d.runningAtMs = nowMs;
     if (complete) {
@@ -67,10 +70,10 @@ void RestartWatch::statusRead(int device, bool ok, const QHash<QString, qint64> 
         Q_EMIT suspected(device,
                          tr("it answers again after %1 s without an answer")
                              .arg(double(silentMs) / 1000.0, 0, 'f', 1),
-                         reset);
+                         zeros);
     else if (reset)
         Q_EMIT suspected(device, tr("its positions went back to 0 with no motion and no command"),
-                         true);
+                         zeros);
 }
 
 void RestartWatch::commandSent(int device, qint64 nowMs)

@@ -25,6 +25,15 @@ public:
     // values from before it, and homing stops on the home input before it zeroes the position.
     static constexpr qint64 kCommandWindowMs = 1500;
 
+    // What the positions say, next to a silence.
+    enum class Zeros {
+        Kept,        // not all back at 0 (or not known)
+        Reset,       // back at 0 with no motion and no command that explains it: restarted
+        AfterMotion, // back at 0 after a silence in which an axis moved or was commanded: it
+                     // may have ended there, or restarted -- not known from the positions
+    };
+    Q_ENUM(Zeros)
+
     explicit RestartWatch(const RegisterMap &map, QObject *parent = nullptr);
 
     // A status read of `device` ended at `nowMs`: `values` (raw, by key) when it was answered.
@@ -39,9 +48,9 @@ public:
     bool movesOrZeroes(const QString &coilKey) const;
 
 Q_SIGNALS:
-    // `why`: in words, "it answers again after 3.2 s without an answer"; `positionsReset`: its
-    // positions were not all 0 before and are now, with no command that explains it.
-    void suspected(int device, const QString &why, bool positionsReset);
+    // `why`: in words, "it answers again after 3.2 s without an answer"; `zeros`: what its
+    // positions say.
+    void suspected(int device, const QString &why, stepcom::RestartWatch::Zeros zeros);
 
 private:
     struct Device

@@ -52,21 +52,24 @@ void DeviceSession::watchRestarts()
     connect(m_restarts, &RestartWatch::suspected, this, &DeviceSession::checkRestart);
 }
 
-void DeviceSession::checkRestart(int id, const QString &why, bool positionsReset)
+void DeviceSession::checkRestart(int id, const QString &why, RestartWatch::Zeros zeros)
 {
-    if (positionsReset)
-        m_motion->restarted(id); // before a motion is judged from the zeros
+    // Before a motion is judged from the zeros.
+    if (zeros == RestartWatch::Zeros::Reset)
+        m_motion->restarted(id);
+    else if (zeros == RestartWatch::Zeros::AfterMotion)
+        m_motion->silent(id);
     if (m_checkingRestart.contains(id) || !m_link->isConnected())
         return;
     m_checkingRestart.insert(id);
     const QHash<QString, qint64> held = knownValues(id);
-    readDevice(id, map().holdings(), [this, id, why, positionsReset, held](const ReadOutcome &r) {
+    readDevice(id, map().holdings(), [this, id, why, zeros, held](const ReadOutcome &r) {
         m_checkingRestart.remove(id);
-        restartChecked(id, why, positionsReset, held, r);
+        restartChecked(id, why, zeros, held, r);
     });
 }
 
-void DeviceSession::restartChecked(int id, const QString &why, bool positionsReset,
+void DeviceSession::restartChecked(int id, const QString &why, RestartWatch::Zeros zeros,
                                    const QHash<QString, qint64> &held, const ReadOutcome &read)
 {
     const QString locale = Translators::current();
@@ -78,14 +81,16 @@ void DeviceSession::restartChecked(int id, const QString &why, bool positionsRes
         return;
     }
     QStringList lost;
-    bool positionsLost = positionsReset;
+    // Positions at 0 after a motion prove nothing: it may have ended there.
+    const bool afterMotion = zeros == RestartWatch::Zeros::AfterMotion;
+    bool positionsLost = zeros == RestartWatch::Zeros::Reset;
     for (const Parameter *p : map().holdings()) {
         const auto was = held.constFind(p->key);
         const auto now = read.values.constFind(p->key);
         if (was == held.cend() || now == read.values.cend() || *was == *now)
             continue;
         if (p->localKey == QLatin1String("position"))
-            positionsLost = positionsLost || *now == 0;
+            positionsLost = positionsLost || (*now == 0 && !afterMotion);
         else if (p->writable())
             lost << QStringLiteral("%1 %2 → %3")
                         .arg(p->key, p->displayRaw(*was, locale), p->displayRaw(*now, locale));
@@ -95,6 +100,14 @@ void DeviceSession::restartChecked(int id, const QString &why, bool positionsRes
         m_store->setDeviceValues(read.values);
     else
         m_memory->setDeviceValues(id, read.values);
+    if (lost.isEmpty() && !positionsLost && afterMotion) {
+        say(Severity::Warning,
+            device + tr("The controller answers again (%1) and its axes stand at 0 after a "
+                        "motion: whether the motion ended there or the controller restarted "
+                        "cannot be told. The references are not known: home again.")
+                         .arg(why));
+        return;
+    }
     if (lost.isEmpty() && !positionsLost) {
         say(Severity::Info, device + tr("The controller answers again (%1); what it holds is what "
                                         "StepCom held: nothing shows a restart.")

@@ -51,7 +51,8 @@ private Q_SLOTS:
                  qPrintable(QString::number(*fit.answerMs(charMs))));
     }
 
-    // A busy computer adds to some round trips: the median of each length keeps the line.
+    // A busy computer adds to some round trips: the lower quartile of each length keeps the
+    // line.
     void jitterDoesNotTipTheLine()
     {
         const AnswerTimeFit fit = line(kCharMs9600, 2.0, 6.0);
@@ -100,8 +101,7 @@ private Q_SLOTS:
         AnswerTimeFit fit;
         for (int characters = 20; characters < 20 + 3 * AnswerTimeFit::kLengths; characters += 3)
             fit.add(characters, 500.0); // an old, slow time
-        for (int characters = 100; characters < 100 + 3 * AnswerTimeFit::kLengths;
-             characters += 3)
+        for (int characters = 100; characters < 100 + 3 * AnswerTimeFit::kLengths; characters += 3)
             fit.add(characters, 2.0 + characters * kCharMs9600);
         QVERIFY(fit.answerMs(kCharMs9600));
         QVERIFY(std::abs(*fit.answerMs(kCharMs9600) - 2.0) < 1e-6);

@@ -126,6 +126,31 @@ private Q_SLOTS:
         QVERIFY2(!heard().contains(QLatin1String("not saved to flash lost")), qPrintable(heard()));
     }
 
+    // A power cycle during a homing with nothing unsaved: the axis stands at 0 afterwards, as
+    // a homing that ended would. Nothing proves a restart, so none is claimed: the homing's end
+    // and the references are not known.
+    void aPowerCycleDuringHomingIsNotGuessed()
+    {
+        QVERIFY(start({}));
+        QVERIFY(host->device()->save(nullptr)); // no value can be lost
+        QSignalSpy finished(session->motion(), &MotionSupervisor::finished);
+        QSignalSpy restarted(session.get(), &DeviceSession::controllerRestarted);
+        session->command(QStringLiteral("motor1.home"));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            host->device()->running(1) &&
+                session->parameters()->deviceValue(QStringLiteral("motor1.position")).value_or(0) !=
+                    0,
+            5000);
+        QVERIFY(host->powerCycle(1500));
+        QTRY_VERIFY_WITH_TIMEOUT(heard().contains(QLatin1String("cannot be told")), 15000);
+        QCOMPARE(restarted.size(), 0);
+        QCOMPARE(session->motion()->references()->reasonOn(1, 1), ReferenceTracker::Reason::Silent);
+        QVERIFY(!finished.isEmpty());
+        const auto outcome = finished.last().at(0).value<MotionOutcome>();
+        QCOMPARE(outcome.cause, MotionCause::Silent);
+        QVERIFY2(!heard().contains(QLatin1String("The controller restarted")), qPrintable(heard()));
+    }
+
     void oneControllerOfThreeRestarts()
     {
         QVERIFY(start({1, 2, 3}));
