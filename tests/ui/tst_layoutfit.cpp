@@ -27,6 +27,7 @@
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/messageview.h"
+#include "widgets/docks/pagesidebar.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -205,6 +206,9 @@ class TestLayoutFit : public QObject
                           QStringLiteral("the strip's motor %1 position").arg(m));
         checkOnScreen(strip->emergencyStopButton(), &window, context,
                       QStringLiteral("the strip's E-STOP"));
+        // The sidebar (issue 25): every page's title whole beside its icon and marks.
+        for (const QString &cut : window.sidebar()->cutEntries())
+            problem(context, QStringLiteral("sidebar entry %1 is cut").arg(cut));
         for (QLabel *label : strip->findChildren<QLabel *>()) {
             QString text;
             if (label->isVisible() && overflow(label, &text) > 0)

@@ -204,6 +204,13 @@ void ChecklistPage::refreshList()
     }
     m_summary->setText(QStringLiteral("%1 — %2").arg(Checklist::verdictText(m_checklist.verdict()),
                                                      m_checklist.summary()));
+    Q_EMIT progressChanged();
+}
+
+Page::Progress ChecklistPage::progress() const
+{
+    // An unreadable file: what was passed before is not known, so no count is shown.
+    return {m_checklist.count(StepResult::Passed), int(m_checklist.steps().size()), m_fileUsable};
 }
 
 std::optional<std::pair<Checklist, QString>> ChecklistPage::reportChecklist() const

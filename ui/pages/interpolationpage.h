@@ -21,6 +21,8 @@ public:
     explicit InterpolationPage(DeviceSession *session, QWidget *parent = nullptr);
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("interpolation"); }
+    Stage stage() const override { return Stage::MoveAndRun; }
     QStringList keys() const override;
 
     PathEditor *arcEditor() const { return m_arc; }

@@ -29,6 +29,8 @@ public:
     explicit ModesPage(DeviceSession *session, QWidget *parent = nullptr);
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("modes"); }
+    Stage stage() const override { return Stage::SetUp; }
     QStringList keys() const override;
 
     QComboBox *modeBox() const { return m_mode; }

@@ -33,6 +33,9 @@ public:
     ~MotionPage() override;
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("jog"); }
+    Stage stage() const override { return Stage::SetUp; }
+    bool needsDevice() const override { return true; }
     QStringList keys() const override;
 
     JogPanel *panel(int motor) const { return m_panels.value(motor - 1); }
