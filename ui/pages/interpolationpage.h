@@ -9,6 +9,7 @@ class QTabWidget;
 
 namespace stepcom {
 
+class AboutBox;
 class InterpolationPreview;
 class PathEditor;
 
@@ -45,6 +46,7 @@ private:
     PathEditor *m_arc;
     PathEditor *m_line;
     InterpolationPreview *m_preview;
+    AboutBox *m_about; // issue 25: how the times are estimated, on demand
     QSplitter *m_splitter;
     QTimer m_previewTimer;
     QTimer m_positionTimer;

@@ -14,6 +14,7 @@ class QPushButton;
 
 namespace stepcom {
 
+class AboutBox;
 class HomingOrderEditor;
 class JogController;
 class JogKeys;
@@ -74,6 +75,7 @@ private:
     JogKeys *m_keys;
     QList<JogPanel *> m_panels;
     TravelLimitsEditor *m_limits = nullptr;
+    AboutBox *m_about = nullptr; // issue 25: explanations on demand
     QFrame *m_banner;
     QLabel *m_bannerIcon;
     QLabel *m_bannerText;
