@@ -19,12 +19,14 @@
 #include <QAccessible>
 #include <QApplication>
 #include <QFile>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStandardPaths>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QWheelEvent>
 
 using namespace stepcom;
 
@@ -129,6 +131,37 @@ private Q_SLOTS:
             names << list->child(c)->text(QAccessible::Name);
         for (const Page *page : window.pages())
             QVERIFY2(names.contains(page->title()), qPrintable(names.join(QLatin1Char('|'))));
+    }
+
+    // A sidebar lower than its entries (1366×768 at ×1.5 with the docks below): no scroll bar
+    // takes the titles' room; keys still bring every page into view, and the fade says so.
+    void scrollsWithoutTakingTheTitlesRoom()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        PageSidebar *sidebar = window.sidebar();
+        sidebar->setFixedHeight(sidebar->fontMetrics().height() * 8);
+        QTRY_VERIFY(sidebar->isCompact());
+        QCoreApplication::processEvents();
+        QVERIFY(!sidebar->verticalScrollBar()->isVisible());
+        QVERIFY(sidebar->hasMoreBelow());
+        QVERIFY(!sidebar->hasMoreAbove());
+        const int last = int(window.pages().size()) - 1;
+        window.showPage(last);
+        QCoreApplication::processEvents();
+        QVERIFY(
+            sidebar->viewport()->rect().contains(sidebar->visualItemRect(sidebar->itemOf(last))));
+        QVERIFY(sidebar->hasMoreAbove());
+        // The wheel scrolls it too.
+        const QPoint at = sidebar->viewport()->rect().center();
+        QWheelEvent up(at, sidebar->viewport()->mapToGlobal(at), QPoint(), QPoint(0, 480),
+                       Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        const int before = sidebar->verticalScrollBar()->value();
+        QApplication::sendEvent(sidebar->viewport(), &up);
+        QTRY_VERIFY(sidebar->verticalScrollBar()->value() < before);
+        QVERIFY2(sidebar->cutEntries().isEmpty(), qPrintable(sidebar->cutEntries().join(", ")));
     }
 
     void editsShowOnTheirPage()

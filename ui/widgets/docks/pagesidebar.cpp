@@ -7,7 +7,9 @@
 #include "widgets/fields/lineicon.h"
 
 #include <QEvent>
+#include <QPainter>
 #include <QResizeEvent>
+#include <QScrollBar>
 
 #include <algorithm>
 
@@ -22,6 +24,10 @@ PageSidebar::PageSidebar(DeviceSession *session, QWidget *parent)
     setItemDelegate(m_delegate);
     setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // A scroll bar would take the titles' room on a short screen (1366×768 at ×1.5): the list
+    // still scrolls by wheel and keys, and a fade with an arrow says that more is there.
+    setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    setVerticalScrollMode(QAbstractItemView::ScrollPerPixel);
     setUniformItemSizes(false);
     connect(this, &QListWidget::currentItemChanged, this, [this](QListWidgetItem *item) {
         const int page = item ? item->data(PageRole).toInt() : -1;
@@ -289,6 +295,47 @@ QModelIndex PageSidebar::moveCursor(CursorAction action, Qt::KeyboardModifiers m
         }
     }
     return currentIndex();
+}
+
+bool PageSidebar::hasMoreAbove() const
+{
+    return verticalScrollBar()->value() > verticalScrollBar()->minimum();
+}
+
+bool PageSidebar::hasMoreBelow() const
+{
+    return verticalScrollBar()->value() < verticalScrollBar()->maximum();
+}
+
+void PageSidebar::paintEvent(QPaintEvent *event)
+{
+    QListWidget::paintEvent(event);
+    if (!hasMoreAbove() && !hasMoreBelow())
+        return;
+    QPainter p(viewport());
+    p.setRenderHint(QPainter::Antialiasing);
+    const QRect r = viewport()->rect();
+    const int band = fontMetrics().height();
+    const QColor base = viewport()->palette().color(QPalette::Base);
+    QColor clear = base;
+    clear.setAlpha(0);
+    const auto fade = [&](int top, bool down) {
+        QLinearGradient g(0, top, 0, top + band);
+        g.setColorAt(down ? 0 : 1, clear);
+        g.setColorAt(down ? 1 : 0, base);
+        p.fillRect(QRect(r.left(), top, r.width(), band), g);
+        // A small chevron at the right, pointing where the rest is.
+        const double w = band * 0.6;
+        const QPointF mid(r.right() - w, top + band / 2.0);
+        const double dy = (down ? 1 : -1) * w / 4;
+        p.setPen(QPen(viewport()->palette().color(QPalette::Text), 1.5));
+        p.drawPolyline(QPolygonF(
+            {mid + QPointF(-w / 2, -dy), mid + QPointF(0, dy), mid + QPointF(w / 2, -dy)}));
+    };
+    if (hasMoreAbove())
+        fade(r.top(), false);
+    if (hasMoreBelow())
+        fade(r.bottom() + 1 - band, true);
 }
 
 void PageSidebar::changeEvent(QEvent *event)

@@ -51,6 +51,9 @@ public:
     // The titles of the entries shown narrower than they need (cut with "…"), for the layout
     // checks; each with the width it has and needs.
     QStringList cutEntries() const;
+    // Entries scrolled out of view above or below (shown by a fade and an arrow).
+    bool hasMoreAbove() const;
+    bool hasMoreBelow() const;
     bool isOffline(int page) const;
     // The colours the marks are drawn in, on an entry not selected.
     QColor editColour() const;
@@ -65,6 +68,7 @@ Q_SIGNALS:
 protected:
     void changeEvent(QEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
+    void paintEvent(QPaintEvent *event) override;
     // Over the headers: to the next page in the direction of the key.
     QModelIndex moveCursor(CursorAction action, Qt::KeyboardModifiers modifiers) override;
 
