@@ -1,13 +1,15 @@
 // Issue 25, one visual language: the state colours (statetone.h) stay readable on the style's
 // light palette and on a dark one (tests/support/darkpalette.h): the machine strip's words
 // and lamps, and the sidebar's marks, keep a WCAG contrast of at least 3:1 against what they
-// are drawn on -- disconnected (the unknown grey) and connected (idle, referenced, answering).
+// are drawn on -- disconnected (the unknown grey) and connected (idle, referenced, answering),
+// and the status bar's link state.
 #include "darkpalette.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "pages/checklistpage.h"
 #include "session/devicesession.h"
 #include "simsession.h"
+#include "widgets/docks/linkstatus.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/pagesidebar.h"
 #include "widgets/fields/led.h"
@@ -109,6 +111,15 @@ private Q_SLOTS:
         QTRY_VERIFY(session.linkStats().answers > 0);
         QTRY_VERIFY(window.machineStrip()->motion(1) != MachineStrip::Motion::Unknown);
         checkStrip(window.machineStrip(), QStringLiteral("connected"), dark);
+        // The status bar says the link's state in the same colours.
+        auto *link = window.findChild<LinkStatus *>();
+        QVERIFY(link);
+        for (QLabel *label : link->findChildren<QLabel *>()) {
+            if (label->isVisible() && label->text() == link->stateText())
+                check(QStringLiteral("status bar \"%1\"").arg(label->text()),
+                      label->palette().color(QPalette::WindowText),
+                      link->palette().color(link->backgroundRole()));
+        }
         QVERIFY2(m_problems.isEmpty(),
                  qPrintable(QLatin1Char('\n') + m_problems.join(QLatin1Char('\n'))));
     }
