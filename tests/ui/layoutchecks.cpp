@@ -88,6 +88,11 @@ void LayoutChecks::problem(const QString &where, const QString &what)
     m_problems << line;
 }
 
+QString LayoutChecks::report() const
+{
+    return QLatin1Char('\n') + m_problems.join(QLatin1Char('\n'));
+}
+
 void LayoutChecks::checkTree(QWidget *top, const QString &context)
 {
     const QList<QWidget *> all = top->findChildren<QWidget *>();

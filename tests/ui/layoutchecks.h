@@ -23,6 +23,8 @@ protected:
     QStringList m_problems;
 
     void problem(const QString &where, const QString &what);
+    // The problems found, a line each, for QVERIFY2.
+    QString report() const;
     // Every visible widget of `top`: its text fits, it lies inside its parent, nothing
     // scrolls sideways.
     void checkTree(QWidget *top, const QString &context);

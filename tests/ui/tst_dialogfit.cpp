@@ -81,8 +81,7 @@ private Q_SLOTS:
             checkDialog(dialog, QString::fromLatin1(dialog->metaObject()->className()));
             dialog->close();
         }
-        QVERIFY2(m_problems.isEmpty(),
-                 qPrintable(QStringLiteral("\n") + m_problems.join(QLatin1Char('\n'))));
+        QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
     }
 
     void busScanDialogFits_data() { languages(); }
@@ -98,8 +97,7 @@ private Q_SLOTS:
         QVERIFY(dialog);
         checkDialog(dialog, QStringLiteral("bus scan"));
         dialog->close();
-        QVERIFY2(m_problems.isEmpty(),
-                 qPrintable(QStringLiteral("\n") + m_problems.join(QLatin1Char('\n'))));
+        QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
     }
 
     // Write changes: a dozen edits with long names, and the problems the pages flag above them.
@@ -126,8 +124,7 @@ private Q_SLOTS:
                  "machine's drawing gives for this axis, check the mechanics before writing"),
              QStringLiteral("Motor 2: home input and limit input are wired to the same terminal")});
         checkDialog(&dialog, QStringLiteral("write changes"));
-        QVERIFY2(m_problems.isEmpty(),
-                 qPrintable(QStringLiteral("\n") + m_problems.join(QLatin1Char('\n'))));
+        QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
     }
 
     // File → Backups with a few backups, one of them unreadable.
@@ -159,8 +156,7 @@ private Q_SLOTS:
         BackupsDialog dialog(session.map(), dir.path(), &window);
         QVERIFY(dialog.list()->topLevelItemCount() >= 3);
         checkDialog(&dialog, QStringLiteral("backups"));
-        QVERIFY2(m_problems.isEmpty(),
-                 qPrintable(QStringLiteral("\n") + m_problems.join(QLatin1Char('\n'))));
+        QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
     }
 
     // Help → User guide at a section with pictures: nothing cut, no picture wider than the view.
@@ -206,8 +202,7 @@ private Q_SLOTS:
             }
         }
         QVERIFY2(images > 0, "the guide shows no picture");
-        QVERIFY2(m_problems.isEmpty(),
-                 qPrintable(QStringLiteral("\n") + m_problems.join(QLatin1Char('\n'))));
+        QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
     }
 };
 

@@ -174,8 +174,7 @@ private Q_SLOTS:
                 checkInView(page->findChild<QPushButton *>(QStringLiteral("startButton")), context);
         }
         m_problems.removeDuplicates();
-        QVERIFY2(m_problems.isEmpty(),
-                 qPrintable(QStringLiteral("\n") + m_problems.join(QLatin1Char('\n'))));
+        QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
     }
 
     // The strip's readouts hold the widest value a position register can take ("-21474836.48
@@ -269,8 +268,7 @@ private Q_SLOTS:
             problem(QStringLiteral("status bar"), QStringLiteral("%1 px wide on a screen of %2")
                                                       .arg(window.statusBar()->width())
                                                       .arg(screen.width()));
-        QVERIFY2(m_problems.isEmpty(),
-                 qPrintable(QStringLiteral("\n") + m_problems.join(QLatin1Char('\n'))));
+        QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
     }
 };
 
