@@ -1848,6 +1848,10 @@
         <source>Line: %1</source>
         <translation>Line: %1</translation>
     </message>
+    <message>
+        <source>A controller simulated inside StepCom: nothing reaches real hardware.</source>
+        <translation>A controller simulated inside StepCom: nothing reaches real hardware.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlBusMonitor</name>

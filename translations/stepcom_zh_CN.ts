@@ -1838,6 +1838,10 @@
         <source>Line: %1</source>
         <translation>线路：%1</translation>
     </message>
+    <message>
+        <source>A controller simulated inside StepCom: nothing reaches real hardware.</source>
+        <translation>在 StepCom 内部模拟的控制器：不会发送到真实硬件。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlBusMonitor</name>
