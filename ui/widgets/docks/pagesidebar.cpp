@@ -11,8 +11,6 @@
 #include <QResizeEvent>
 #include <QScrollBar>
 
-#include <algorithm>
-
 namespace stepcom {
 
 PageSidebar::PageSidebar(DeviceSession *session, QWidget *parent)
@@ -43,12 +41,9 @@ void PageSidebar::addPage(Page *page)
 {
     const int number = int(m_pages.size());
     m_pages << page;
-    // Its stage's header, made when the first page of that stage comes; stages in order.
+    // After the last page of its stage; its stage's header made when the first page of that
+    // stage comes, so the stages stand in their order whatever the order of the pages.
     const Page::Stage stage = page->stage();
-    if (!m_stages.contains(stage)) {
-        m_stages << stage;
-        std::sort(m_stages.begin(), m_stages.end());
-    }
     int row = 0;
     for (; row < count(); ++row) {
         const int p = item(row)->data(PageRole).toInt();

@@ -83,7 +83,6 @@ private:
 
     DeviceSession *m_session;
     QList<Page *> m_pages;
-    QList<Page::Stage> m_stages; // the headers present, in order
     PageSidebarDelegate *m_delegate;
     bool m_shortWindow = false;
 };
