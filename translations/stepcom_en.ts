@@ -105,6 +105,10 @@
         <source>Show or hide what this page is for (F1: the user guide)</source>
         <translation>Show or hide what this page is for (F1: the user guide)</translation>
     </message>
+    <message>
+        <source>More in the user guide (F1)</source>
+        <translation>More in the user guide (F1)</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::AnswerCheck</name>

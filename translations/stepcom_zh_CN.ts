@@ -105,6 +105,10 @@
         <source>Show or hide what this page is for (F1: the user guide)</source>
         <translation>显示或隐藏本页的用途说明（F1：用户指南）</translation>
     </message>
+    <message>
+        <source>More in the user guide (F1)</source>
+        <translation>用户指南中的详细说明（F1）</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::AnswerCheck</name>

@@ -4,6 +4,7 @@
 // Chinese, and fails on any label shown by default that holds a paragraph of more than
 // kMaxWords words. Words are counted as docs/ui-style.md says: a run of letters or digits
 // between spaces is one word; Chinese, Japanese and Korean characters count one half each.
+#include "help/guidewindow.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "page.h"
@@ -162,10 +163,24 @@ private Q_SLOTS:
             QCOMPARE(box->button()->accessibleName(), QStringLiteral("About this page"));
         }
         AboutBox *box = boxes.first();
+        for (int i = 0; i < window.pages().size(); ++i) {
+            if (window.pages().at(i)->isAncestorOf(box))
+                window.showPage(i);
+        }
+        QVERIFY(box->isVisible());
+        QVERIFY(!box->guideButton()->isVisible());
         box->button()->click();
         QVERIFY(box->isOpen());
+        // More than the box says: the guide, at the page.
+        QVERIFY(box->guideButton()->isVisible());
+        box->guideButton()->click();
+        GuideWindow *guide = window.findChild<GuideWindow *>();
+        QVERIFY(guide);
+        QTRY_VERIFY(guide->isVisible());
+        guide->close();
         box->button()->click();
         QVERIFY(!box->isOpen());
+        QVERIFY(!box->guideButton()->isVisible());
     }
 };
 

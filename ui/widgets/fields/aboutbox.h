@@ -21,6 +21,9 @@ public:
     bool isOpen() const;
     void setOpen(bool open);
     QToolButton *button() const { return m_button; }
+    // "More in the user guide (F1)", shown with the text: the window's F1 (its "userGuide"
+    // action), so the guide opens at this page.
+    QToolButton *guideButton() const { return m_guide; }
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -30,6 +33,7 @@ private:
 
     QToolButton *m_button;
     QLabel *m_text;
+    QToolButton *m_guide;
 };
 
 } // namespace stepcom
