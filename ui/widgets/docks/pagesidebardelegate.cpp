@@ -12,6 +12,15 @@ namespace stepcom {
 
 namespace {
 
+// A font set in pixels (some platforms' default) has no point size to scale.
+void scaled(QFont &font, double factor)
+{
+    if (font.pointSizeF() > 0)
+        font.setPointSizeF(font.pointSizeF() * factor);
+    else
+        font.setPixelSize(std::max(1, int(font.pixelSize() * factor)));
+}
+
 bool isHeader(const QModelIndex &index)
 {
     return index.data(PageSidebar::PageRole).toInt() < 0;
@@ -29,7 +38,7 @@ QFont PageSidebarDelegate::markFont(const QFont &font) const
     // Compact: a size smaller, so the widest title and its marks still fit a 911 px window.
     QFont f = font;
     if (m_compact)
-        f.setPointSizeF(font.pointSizeF() * 0.85);
+        scaled(f, 0.85);
     return f;
 }
 
@@ -66,7 +75,7 @@ QFont PageSidebarDelegate::headerFont(const QFont &font)
 {
     QFont f = font;
     f.setBold(true);
-    f.setPointSizeF(font.pointSizeF() * 0.9);
+    scaled(f, 0.9);
     return f;
 }
 
