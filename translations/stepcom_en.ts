@@ -96,6 +96,21 @@
     </message>
 </context>
 <context>
+    <name>stepcom::AboutBox</name>
+    <message>
+        <source>About this page</source>
+        <translation>About this page</translation>
+    </message>
+    <message>
+        <source>Show or hide what this page is for (F1: the user guide)</source>
+        <translation>Show or hide what this page is for (F1: the user guide)</translation>
+    </message>
+    <message>
+        <source>More in the user guide (F1)</source>
+        <translation>More in the user guide (F1)</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::AnswerCheck</name>
     <message>
         <source>function %1 answered a request of function %2</source>
@@ -1836,6 +1851,10 @@
     <message>
         <source>Line: %1</source>
         <translation>Line: %1</translation>
+    </message>
+    <message>
+        <source>A controller simulated inside StepCom: nothing reaches real hardware.</source>
+        <translation>A controller simulated inside StepCom: nothing reaches real hardware.</translation>
     </message>
 </context>
 <context>
@@ -5331,6 +5350,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>The profile sets special mode %1.</source>
         <translation>The profile sets special mode %1.</translation>
     </message>
+    <message>
+        <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything.</source>
+        <translation>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MotionJudge</name>
@@ -5783,6 +5806,44 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::PageSidebar</name>
+    <message numerus="yes">
+        <source>%n edit(s) not written</source>
+        <translation>
+            <numerusform>%n edit not written</numerusform>
+            <numerusform>%n edits not written</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps passed</source>
+        <translation>%1 of %2 steps passed</translation>
+    </message>
+    <message>
+        <source>steps passed not known</source>
+        <translation>steps passed not known</translation>
+    </message>
+    <message>
+        <source>needs a controller that answers (%1)</source>
+        <translation>needs a controller that answers (%1)</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Connect</translation>
+    </message>
+    <message>
+        <source>Set up</source>
+        <translation>Set up</translation>
+    </message>
+    <message>
+        <source>Move and run</source>
+        <translation>Move and run</translation>
+    </message>
+    <message>
+        <source>Check, save and report</source>
+        <translation>Check, save and report</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::Parameter</name>
     <message>
         <source>%1: %2 is not one of %3</source>
@@ -6074,6 +6135,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Last run: %1</source>
         <translation>Last run: %1</translation>
+    </message>
+    <message>
+        <source>Times as the simulator runs the path; a real controller may differ.</source>
+        <translation>Times as the simulator runs the path; a real controller may differ.</translation>
     </message>
 </context>
 <context>
@@ -8302,6 +8367,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>StepCom&apos;s limits, not the controller&apos;s: a step or move-to beyond them is refused and a jog is stopped when the polled position crosses them. Saved with the connection settings and in profiles. If the link dies during a jog, only the limit switches stop the axis.</source>
         <translation>StepCom&apos;s limits, not the controller&apos;s: a step or move-to beyond them is refused and a jog is stopped when the polled position crosses them. Saved with the connection settings and in profiles. If the link dies during a jog, only the limit switches stop the axis.</translation>
+    </message>
+    <message>
+        <source>StepCom&apos;s limits, not the controller&apos;s: if the link dies during a jog, only the limit switches stop the axis.</source>
+        <translation>StepCom&apos;s limits, not the controller&apos;s: if the link dies during a jog, only the limit switches stop the axis.</translation>
     </message>
 </context>
 <context>

@@ -96,6 +96,21 @@
     </message>
 </context>
 <context>
+    <name>stepcom::AboutBox</name>
+    <message>
+        <source>About this page</source>
+        <translation>关于本页</translation>
+    </message>
+    <message>
+        <source>Show or hide what this page is for (F1: the user guide)</source>
+        <translation>显示或隐藏本页的用途说明（F1：用户指南）</translation>
+    </message>
+    <message>
+        <source>More in the user guide (F1)</source>
+        <translation>用户指南中的详细说明（F1）</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::AnswerCheck</name>
     <message>
         <source>function %1 answered a request of function %2</source>
@@ -1826,6 +1841,10 @@
     <message>
         <source>Line: %1</source>
         <translation>线路：%1</translation>
+    </message>
+    <message>
+        <source>A controller simulated inside StepCom: nothing reaches real hardware.</source>
+        <translation>在 StepCom 内部模拟的控制器：不会发送到真实硬件。</translation>
     </message>
 </context>
 <context>
@@ -5302,6 +5321,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>The profile sets special mode %1.</source>
         <translation>参数文件设定为特殊模式 %1。</translation>
     </message>
+    <message>
+        <source>Modes 2-5 ignore the limit settings: the limit and home inputs set for the motors no longer stop anything.</source>
+        <translation>模式 2-5 忽略限位设置：为电机设置的限位和原点输入不再起作用。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MotionJudge</name>
@@ -5749,6 +5772,43 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::PageSidebar</name>
+    <message numerus="yes">
+        <source>%n edit(s) not written</source>
+        <translation>
+            <numerusform>%n 处修改未写入</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 steps passed</source>
+        <translation>%2 步中已通过 %1 步</translation>
+    </message>
+    <message>
+        <source>steps passed not known</source>
+        <translation>已通过的步骤未知</translation>
+    </message>
+    <message>
+        <source>needs a controller that answers (%1)</source>
+        <translation>需要有应答的控制器（%1）</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>建立连接</translation>
+    </message>
+    <message>
+        <source>Set up</source>
+        <translation>设置</translation>
+    </message>
+    <message>
+        <source>Move and run</source>
+        <translation>运动与运行</translation>
+    </message>
+    <message>
+        <source>Check, save and report</source>
+        <translation>检查、保存与报告</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::Parameter</name>
     <message>
         <source>%1: %2 is not one of %3</source>
@@ -6038,6 +6098,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Last run: %1</source>
         <translation>上次运行：%1</translation>
+    </message>
+    <message>
+        <source>Times as the simulator runs the path; a real controller may differ.</source>
+        <translation>时间按模拟器运行路径估算；实际控制器可能不同。</translation>
     </message>
 </context>
 <context>
@@ -8253,6 +8317,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>StepCom&apos;s limits, not the controller&apos;s: a step or move-to beyond them is refused and a jog is stopped when the polled position crosses them. Saved with the connection settings and in profiles. If the link dies during a jog, only the limit switches stop the axis.</source>
         <translation>这是 StepCom 的限位，不是控制器的：超出限位的步进或运行到位置会被拒绝；点动时轮询到的位置越过限位即停止。与连接设置一起保存，也保存在参数文件中。点动时如果通讯中断，只有限位开关能让轴停止。</translation>
+    </message>
+    <message>
+        <source>StepCom&apos;s limits, not the controller&apos;s: if the link dies during a jog, only the limit switches stop the axis.</source>
+        <translation>这是 StepCom 的限位，不是控制器的：点动时若通信中断，只有限位开关能停住该轴。</translation>
     </message>
 </context>
 <context>

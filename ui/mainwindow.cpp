@@ -29,7 +29,8 @@
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/messageview.h"
 #include "widgets/docks/offlinebanner.h"
-#include "widgets/docks/statusdock.h" // monitoring (issue 5)
+#include "widgets/docks/pagesidebar.h" // issue 25
+#include "widgets/docks/statusdock.h"  // monitoring (issue 5)
 #include "widgets/docks/statusmessage.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/motion/travellimitseditor.h" // issue 17
@@ -43,7 +44,6 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QHBoxLayout>
-#include <QListWidget>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScreen>
@@ -66,7 +66,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     : QMainWindow(parent)
     , m_session(session)
     , m_estop(new EmergencyStop(session, this))
-    , m_sidebar(new QListWidget(this))
+    , m_sidebar(new PageSidebar(session, this))
     , m_stack(new QStackedWidget(this))
 {
     setObjectName(QStringLiteral("mainWindow"));
@@ -78,8 +78,6 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     splitter->addWidget(m_sidebar);
     splitter->addWidget(m_stack);
     splitter->setStretchFactor(1, 1);
-    m_sidebar->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Expanding);
-    m_sidebar->setMaximumWidth(fontMetrics().horizontalAdvance(QLatin1Char('x')) * 28);
     // Working without the machine (issue 18): the banner above the pages while a file is edited.
     m_offline = new OfflineActions(session, this);
     m_offlineBanner = new OfflineBanner(m_offline->document(), this);
@@ -89,20 +87,21 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     centralLayout->addWidget(m_offlineBanner);
     centralLayout->addWidget(splitter, 1);
     setCentralWidget(central);
-    connect(m_sidebar, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
+    connect(m_sidebar, &PageSidebar::pageChosen, m_stack, &QStackedWidget::setCurrentIndex);
     connect(m_stack, &QStackedWidget::currentChanged, this, &MainWindow::updateTitle);
 
     addPage(new ConnectionPage(session, this));
     for (int n = 1; n <= session->map().blockCount(QStringLiteral("motor")); ++n)
         addPage(new MotorPage(session, n, this));
-    addPage(m_motion = new MotionPage(session, this)); // jogging (issue 5)
+    // In commissioning order (issue 25): the sidebar groups them by Page::stage().
     addPage(new InputsPage(session, this));
-    addPage(new InterpolationPage(session, this)); // interpolation (issue 6)
-    addPage(new ModesPage(session, this));         // special modes (issue 6)
-    addPage(new DevicePage(session, this));
-    addPage(new PlotPage(session, this));                                 // monitoring (issue 5)
+    addPage(m_motion = new MotionPage(session, this)); // jogging and homing (issue 5)
+    addPage(new ModesPage(session, this));             // special modes (issue 6)
+    addPage(new InterpolationPage(session, this));     // interpolation (issue 6)
+    addPage(new PlotPage(session, this));              // monitoring (issue 5)
     addPage(m_checklist = new ChecklistPage(session, m_writeFlow, this)); // issue 17
-    m_sidebar->setCurrentRow(0);
+    addPage(new DevicePage(session, this)); // its id and baud, save to flash, factory reset
+    m_sidebar->setCurrentPage(0);
 
     createActions();
     createMenus();
@@ -115,7 +114,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     // A cable pulled and plugged back, an adapter that came back: the window tries again.
     session->reconnector()->setEnabled(true);
     // A page change stops every jog (the session's rule); jog messages go to the dock.
-    connect(m_sidebar, &QListWidget::currentRowChanged, session,
+    connect(m_sidebar, &PageSidebar::pageChosen, session,
             [session] { session->stopJogging(DeviceSession::JogStop::PageLeft); });
     connect(session->jog(), &JogController::message, m_messages, &MessageView::add);
     connect(m_sessionLog, &SessionLog::failed, this, [this](const QString &reason) {
@@ -175,7 +174,7 @@ void MainWindow::addPage(Page *page)
                             scroll->verticalScrollBar()->sizeHint().width());
     page->installEventFilter(this);
     m_stack->addWidget(scroll);
-    m_sidebar->addItem(page->title());
+    m_sidebar->addPage(page);
 }
 
 WriteChangesDialog *MainWindow::writeDialog() const
@@ -196,7 +195,7 @@ Page *MainWindow::currentPage() const
 
 void MainWindow::showPage(int index)
 {
-    m_sidebar->setCurrentRow(index);
+    m_sidebar->setCurrentPage(index);
 }
 
 QAction *MainWindow::action(const QString &objectName) const
@@ -415,11 +414,6 @@ void MainWindow::retranslate()
     m_toolbar->setWindowTitle(tr("Main toolbar"));
     m_trafficDock->setWindowTitle(tr("Traffic"));
     m_messageDock->setWindowTitle(tr("Messages"));
-    for (int i = 0; i < m_pages.size(); ++i)
-        m_sidebar->item(i)->setText(m_pages.at(i)->title());
-    // Every page title readable in either language, never wider than it must be.
-    m_sidebar->setMinimumWidth(m_sidebar->sizeHintForColumn(0) + 4 * m_sidebar->frameWidth() +
-                               fontMetrics().horizontalAdvance(QLatin1Char('x')) * 2);
     for (QAction *a : m_languages->actions())
         a->setChecked(a->objectName() ==
                       QStringLiteral("language_") + Language::instance().current());

@@ -6,7 +6,6 @@
 class QAction;
 class QActionGroup;
 class QDockWidget;
-class QListWidget;
 class QMessageBox;
 class QStackedWidget;
 class QToolButton;
@@ -26,6 +25,7 @@ class MotionPage;     // jogging (issue 5)
 class OfflineActions; // working without the machine (issue 18)
 class OfflineBanner;
 class Page;
+class PageSidebar; // issue 25
 class MachineActions;
 class ProfileActions; // profiles (issue 7)
 class DeviceListDock; // several controllers on one line (issue 16)
@@ -51,6 +51,7 @@ public:
     Page *currentPage() const;
     void showPage(int index);
     MachineStrip *machineStrip() const { return m_strip; }          // issue 25
+    PageSidebar *sidebar() const { return m_sidebar; }              // issue 25
     StatusDock *statusDock() const { return m_statusDock; }         // monitoring (issue 5)
     DeviceListDock *deviceListDock() const { return m_deviceDock; } // issue 16
     TrafficView *trafficView() const { return m_traffic; }
@@ -102,7 +103,7 @@ private:
     DeviceSession *m_session;
     EmergencyStop *m_estop;
     QToolButton *m_estopButton = nullptr;
-    QListWidget *m_sidebar;
+    PageSidebar *m_sidebar; // the pages in commissioning order, with their states (issue 25)
     QStackedWidget *m_stack;
     QList<Page *> m_pages;
     TrafficView *m_traffic = nullptr;

@@ -3,6 +3,7 @@
 #include "mainwindow.h"
 
 #include "widgets/docks/machinestrip.h"
+#include "widgets/docks/pagesidebar.h"
 #include "widgets/docks/statusdock.h"
 
 #include <QDockWidget>
@@ -22,9 +23,10 @@ void MainWindow::arrangeDocks()
     const int high =
         screen() ? std::min(height(), screen()->availableGeometry().height()) : height();
     const int wide = screen() ? std::min(width(), screen()->availableGeometry().width()) : width();
+    const bool low = high < std::max(720, fontMetrics().height() * 40);
     if (m_strip)
-        m_strip->setCompact(high < std::max(720, fontMetrics().height() * 40) ||
-                            wide < std::max(1440, fontMetrics().averageCharWidth() * 200));
+        m_strip->setCompact(low || wide < std::max(1440, fontMetrics().averageCharWidth() * 200));
+    m_sidebar->setShortWindow(low); // low rows, small icons (issue 25)
     if (!m_statusDock || !centralWidget())
         return;
     const int needed = centralWidget()->minimumSizeHint().width() +

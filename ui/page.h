@@ -1,6 +1,5 @@
 #pragma once
 
-#include <QIcon>
 #include <QWidget>
 
 namespace stepcom {
@@ -17,9 +16,29 @@ public:
     explicit Page(DeviceSession *session, QWidget *parent = nullptr);
 
     virtual QString title() const = 0;
-    virtual QIcon icon() const { return {}; }
+    // The sidebar's picture of the page: resources/sidebar/<name>.svg (issue 25).
+    virtual QString iconName() const = 0;
+    // Where the page sits in the commissioning order: the sidebar's groups (issue 25).
+    enum class Stage { Connect, SetUp, MoveAndRun, CheckAndReport };
+    virtual Stage stage() const = 0;
+    // The page's work needs a controller that answers (jog, plots, the device's own settings):
+    // the sidebar marks it while none does.
+    virtual bool needsDevice() const { return false; }
+    // Steps passed of the steps there are, for a page that has steps (the checklist); total 0
+    // for the others; known false when the page cannot tell (its file unreadable).
+    struct Progress
+    {
+        int passed = 0;
+        int total = 0;
+        bool known = true;
+    };
+    virtual Progress progress() const { return {}; }
     // Keys of the parameters the page shows (for "write this page" and tests).
     virtual QStringList keys() const { return {}; }
+
+Q_SIGNALS:
+    // progress() changed.
+    void progressChanged();
 
 protected:
     virtual void retranslate() = 0;

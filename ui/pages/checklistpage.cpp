@@ -204,6 +204,13 @@ void ChecklistPage::refreshList()
     }
     m_summary->setText(QStringLiteral("%1 — %2").arg(Checklist::verdictText(m_checklist.verdict()),
                                                      m_checklist.summary()));
+    Q_EMIT progressChanged();
+}
+
+Page::Progress ChecklistPage::progress() const
+{
+    // An unreadable file: what was passed before is not known, so no count is shown.
+    return {m_checklist.count(StepResult::Passed), int(m_checklist.steps().size()), m_fileUsable};
 }
 
 std::optional<std::pair<Checklist, QString>> ChecklistPage::reportChecklist() const
@@ -251,12 +258,17 @@ void ChecklistPage::chooseProfile()
 
 void ChecklistPage::retranslate()
 {
+    // File names on the page, the whole paths in the tooltip (issue 25: no path in /tmp/...
+    // between the technician and the steps).
     m_profileLabel->setText(
         m_profile.isEmpty()
             ? tr("No profile chosen: the progress is kept in %1. Choose the machine's profile to "
                  "keep it beside it.")
-                  .arg(m_file)
-            : tr("Profile %1 — the progress is kept in %2").arg(m_profile, m_file));
+                  .arg(QFileInfo(m_file).fileName())
+            : tr("Profile %1 — the progress is kept in %2")
+                  .arg(QFileInfo(m_profile).fileName(), QFileInfo(m_file).fileName()));
+    m_profileLabel->setToolTip(m_profile.isEmpty() ? m_file
+                                                   : m_profile + QLatin1Char('\n') + m_file);
     m_chooseProfile->setText(tr("Choose &profile…"));
     for (ChecklistStepWidget *w : std::as_const(m_widgets))
         w->retranslate();

@@ -27,6 +27,9 @@ public:
     ChecklistPage(DeviceSession *session, WriteFlow *writes, QWidget *parent = nullptr);
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("checklist"); }
+    Stage stage() const override { return Stage::CheckAndReport; }
+    Progress progress() const override;
 
     const Checklist &checklist() const { return m_checklist; }
     // The file the progress is kept in.

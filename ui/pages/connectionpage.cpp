@@ -290,9 +290,13 @@ void ConnectionPage::retranslate()
     m_lineBox->retranslate();
 
     m_simBox->setTitle(tr("Built-in simulator"));
-    m_simText->setText(tr("A simulated controller runs inside StepCom and answers like the real "
-                          "one: every page can be tried without a machine. Nothing reaches "
-                          "real hardware."));
+    // One line on the page, the rest on demand (issue 25).
+    const QString simulator = tr("A simulated controller runs inside StepCom and answers like the "
+                                 "real one: every page can be tried without a machine. Nothing "
+                                 "reaches real hardware.");
+    m_simText->setText(tr("A controller simulated inside StepCom: nothing reaches real hardware."));
+    m_simText->setToolTip(simulator);
+    m_simBox->setWhatsThis(simulator);
 
     m_statusBox->setTitle(tr("Link"));
     m_connect->setText(tr("&Connect"));

@@ -40,6 +40,8 @@ public:
     ~ConnectionPage() override;
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("connection"); }
+    Stage stage() const override { return Stage::Connect; }
 
     Transport transport() const;
     void setTransport(Transport transport);

@@ -24,6 +24,9 @@ public:
     ~DevicePage() override;
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("device"); }
+    Stage stage() const override { return Stage::CheckAndReport; }
+    bool needsDevice() const override { return true; }
     QStringList keys() const override;
 
     QSpinBox *idEditor() const { return m_id; }

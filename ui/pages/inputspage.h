@@ -24,6 +24,8 @@ public:
     explicit InputsPage(DeviceSession *session, QWidget *parent = nullptr);
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("inputs"); }
+    Stage stage() const override { return Stage::SetUp; }
     QStringList keys() const override;
 
     // `localKey`: "limit_positive", "limit_negative" or "home_input".

@@ -1,6 +1,7 @@
 #include "pages/interpolationpage.h"
 
 #include "session/devicesession.h"
+#include "widgets/fields/aboutbox.h"
 #include "widgets/fields/verticalscrollarea.h"
 #include "widgets/motion/patheditor.h"
 #include "widgets/plots/interpolationpreview.h"
@@ -16,10 +17,12 @@ namespace stepcom {
 InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
 {
-    auto *layout = new QHBoxLayout(this);
+    auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
+    m_about = new AboutBox(this);
+    layout->addWidget(m_about);
     m_splitter = new QSplitter(this);
-    layout->addWidget(m_splitter);
+    layout->addWidget(m_splitter, 1);
     m_tabs = new QTabWidget(m_splitter);
     m_arc = new PathEditor(session, PathEditor::Kind::Arc);
     m_line = new PathEditor(session, PathEditor::Kind::Line);
@@ -109,6 +112,7 @@ void InterpolationPage::retranslate()
     m_tabs->setTabText(1, tr("Line"));
     m_arc->retranslate();
     m_line->retranslate();
+    m_about->setText(PathEditor::assumptions());
     const QString unit = [this] {
         const Parameter *p = session()->map().find(QStringLiteral("arc.start_x"));
         return p ? p->unit : QString();

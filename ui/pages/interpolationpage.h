@@ -9,6 +9,7 @@ class QTabWidget;
 
 namespace stepcom {
 
+class AboutBox;
 class InterpolationPreview;
 class PathEditor;
 
@@ -21,6 +22,8 @@ public:
     explicit InterpolationPage(DeviceSession *session, QWidget *parent = nullptr);
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("interpolation"); }
+    Stage stage() const override { return Stage::MoveAndRun; }
     QStringList keys() const override;
 
     PathEditor *arcEditor() const { return m_arc; }
@@ -43,6 +46,7 @@ private:
     PathEditor *m_arc;
     PathEditor *m_line;
     InterpolationPreview *m_preview;
+    AboutBox *m_about; // issue 25: how the times are estimated, on demand
     QSplitter *m_splitter;
     QTimer m_previewTimer;
     QTimer m_positionTimer;

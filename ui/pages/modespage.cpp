@@ -3,6 +3,7 @@
 #include "dialogs/writechangesdialog.h"
 #include "language.h"
 #include "session/devicesession.h"
+#include "widgets/fields/aboutbox.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
 
@@ -99,6 +100,8 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
     m_writeFlow = new WriteFlow(session, this);
     QWidget *content = scrollableContent();
     auto *layout = new QVBoxLayout(content);
+    m_about = new AboutBox(content); // issue 25: explanations on demand
+    layout->addWidget(m_about);
 
     m_modeBox = new QGroupBox(content);
     auto *modeLayout = new QVBoxLayout(m_modeBox);
@@ -337,10 +340,16 @@ void ModesPage::retranslate()
     for (int i = 0; i < kModeCount; ++i)
         m_mode->setItemText(
             i, QStringLiteral("%1 — %2").arg(i).arg(p ? p->displayRaw(i, lang) : QString()));
+    // The warning in one line; which inputs still stop is in the table below and on demand.
+    const QString limits = tr("Modes 2-5 ignore the limit settings: the limit and home inputs set "
+                              "for the motors no longer stop anything. In modes 3-5 only IN3 and "
+                              "IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire "
+                              "and test them before using these modes.");
     m_warning->setText(tr("Modes 2-5 ignore the limit settings: the limit and home inputs set "
-                          "for the motors no longer stop anything. In modes 3-5 only IN3 and "
-                          "IN4 act as limits; in mode 2 nothing does (IN2-IN4 only stop). Wire "
-                          "and test them before using these modes."));
+                          "for the motors no longer stop anything."));
+    m_warning->setToolTip(limits);
+    m_warning->setWhatsThis(limits);
+    m_about->setText(limits);
     m_tableBox->setTitle(tr("What the inputs do in each mode (motor 1; short pulses unless "
                             "“held”)"));
     m_table->setHorizontalHeaderLabels(

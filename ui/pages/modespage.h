@@ -17,6 +17,8 @@ class QTableWidget;
 
 namespace stepcom {
 
+class AboutBox;
+
 class ParameterForm;
 
 // The special modes (40300) and the round-trip count (40301). A mode changes what the machine's
@@ -29,6 +31,8 @@ public:
     explicit ModesPage(DeviceSession *session, QWidget *parent = nullptr);
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("modes"); }
+    Stage stage() const override { return Stage::SetUp; }
     QStringList keys() const override;
 
     QComboBox *modeBox() const { return m_mode; }
@@ -65,6 +69,7 @@ private:
     QLabel *m_current;
     QLabel *m_explanation;
     QLabel *m_warning;
+    AboutBox *m_about; // issue 25: the whole warning, on demand
     QTableWidget *m_table;
     ParameterForm *m_form;
     QLabel *m_tripsNote;

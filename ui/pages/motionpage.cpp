@@ -6,11 +6,13 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "widgets/fields/aboutbox.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/motion/homingordereditor.h"
 #include "widgets/motion/jogkeys.h"
 #include "widgets/motion/jogpanel.h"
+#include "widgets/motion/stepmovepanel.h"
 #include "widgets/motion/travellimitseditor.h"
 
 #include <QApplication>
@@ -86,6 +88,8 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
     makeProminent(m_banner, QPalette::ToolTipBase, QPalette::ToolTipText);
     m_banner->hide();
     rows->addWidget(m_banner);
+    m_about = new AboutBox(content); // issue 25: explanations on demand
+    rows->addWidget(m_about);
 
     auto *keyboardRow = new QHBoxLayout;
     m_keyboard = new QCheckBox(content);
@@ -411,6 +415,8 @@ void MotionPage::retranslate()
     m_keyboardHelp->setText(
         tr("Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward. Hold to move, "
            "let go to stop. Not while typing in a field; leaving the page or the window stops."));
+    m_about->setText(StepMovePanel::explanation() + QStringLiteral("\n\n") +
+                     m_limits->explanation());
     m_homingBox->setTitle(tr("Homing"));
     m_applyOrder->setText(tr("Apply o&rder"));
     m_applyOrder->setToolTip(

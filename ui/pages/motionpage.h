@@ -14,6 +14,7 @@ class QPushButton;
 
 namespace stepcom {
 
+class AboutBox;
 class HomingOrderEditor;
 class JogController;
 class JogKeys;
@@ -33,6 +34,9 @@ public:
     ~MotionPage() override;
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("jog"); }
+    Stage stage() const override { return Stage::SetUp; }
+    bool needsDevice() const override { return true; }
     QStringList keys() const override;
 
     JogPanel *panel(int motor) const { return m_panels.value(motor - 1); }
@@ -71,6 +75,7 @@ private:
     JogKeys *m_keys;
     QList<JogPanel *> m_panels;
     TravelLimitsEditor *m_limits = nullptr;
+    AboutBox *m_about = nullptr; // issue 25: explanations on demand
     QFrame *m_banner;
     QLabel *m_bannerIcon;
     QLabel *m_bannerText;

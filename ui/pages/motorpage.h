@@ -21,6 +21,8 @@ public:
     MotorPage(DeviceSession *session, int motor, QWidget *parent = nullptr);
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("motor"); }
+    Stage stage() const override { return Stage::SetUp; }
     QStringList keys() const override;
     int motor() const { return m_motor; }
 

@@ -30,6 +30,9 @@ public:
     ~PlotPage() override;
 
     QString title() const override;
+    QString iconName() const override { return QStringLiteral("plots"); }
+    Stage stage() const override { return Stage::MoveAndRun; }
+    bool needsDevice() const override { return true; }
 
     StatusRecorder *recorder() const { return m_recorder; }
     PositionPlot *positionPlot() const { return m_positions; }

@@ -1,5 +1,7 @@
 #include "widgets/docks/linkstatus.h"
 
+#include "widgets/fields/statetone.h"
+
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/reconnector.h"
@@ -56,6 +58,8 @@ void LinkStatus::changeEvent(QEvent *event)
     if (event->type() == QEvent::LanguageChange) {
         refresh();
         refreshReconnect();
+    } else if (event->type() == QEvent::PaletteChange) {
+        refresh(); // the state's colour for the new background
     }
     QWidget::changeEvent(event);
 }
@@ -69,15 +73,16 @@ void LinkStatus::refresh()
 {
     // Green "Connected" only once the controller answered; amber while it does not.
     const LinkHealth *health = m_session->health();
-    QColor colour = palette().color(QPalette::WindowText);
+    // The state palette (statetone.h), as the machine strip says it (issue 25).
+    StateTone tone = StateTone::Normal;
     switch (health->state()) {
     case LinkHealth::State::Answering:
         m_state->setText(m_session->isSimulator() ? tr("Connected (simulator)") : tr("Connected"));
-        colour = QColor(0, 140, 0);
+        tone = StateTone::Good;
         break;
     case LinkHealth::State::NotAnswering:
         m_state->setText(tr("Not answering"));
-        colour = QColor(200, 120, 0);
+        tone = StateTone::Warning;
         break;
     case LinkHealth::State::Asking:
         m_state->setText(tr("Port open, waiting for an answer…"));
@@ -90,7 +95,7 @@ void LinkStatus::refresh()
         break;
     }
     QPalette pal = m_state->palette();
-    pal.setColor(QPalette::WindowText, colour);
+    pal.setColor(QPalette::WindowText, stateColour(tone, palette(), backgroundRole()));
     m_state->setPalette(pal);
     m_state->setToolTip(health->state() == LinkHealth::State::NotAnswering
                             ? LinkHealth::likelyCauses()

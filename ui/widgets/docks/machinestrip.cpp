@@ -8,6 +8,7 @@
 #include "session/motionsupervisor.h"
 #include "widgets/fields/elidedlabel.h"
 #include "widgets/fields/led.h"
+#include "widgets/fields/statetone.h"
 
 #include <QEvent>
 #include <QFontDatabase>
@@ -23,29 +24,13 @@ namespace {
 const QString kMotor = QStringLiteral("motor");
 const QString kUnknown = QStringLiteral("—");
 
-enum class Tone { Normal, Good, Warning, Unknown };
-
-// One palette for states, readable on a light and on a dark window.
-QColor toneColour(Tone tone, const QPalette &palette)
+// The state palette (statetone.h) against what the label is drawn on.
+void setTone(QLabel *label, StateTone tone)
 {
-    const bool dark = palette.color(QPalette::Window).lightness() < 128;
-    switch (tone) {
-    case Tone::Good:
-        return dark ? QColor(110, 220, 110) : QColor(0, 120, 0);
-    case Tone::Warning:
-        return dark ? QColor(255, 170, 60) : QColor(170, 80, 0);
-    case Tone::Unknown:
-        return palette.color(QPalette::Disabled, QPalette::WindowText);
-    case Tone::Normal:
-        break;
-    }
-    return palette.color(QPalette::WindowText);
-}
-
-void setTone(QLabel *label, Tone tone)
-{
+    const QWidget *under = label->parentWidget();
     QPalette pal = label->palette();
-    pal.setColor(QPalette::WindowText, toneColour(tone, label->parentWidget()->palette()));
+    pal.setColor(QPalette::WindowText,
+                 stateColour(tone, under->palette(), under->backgroundRole()));
     label->setPalette(pal);
 }
 
@@ -294,33 +279,33 @@ void MachineStrip::refresh()
         const auto raw = connected ? store->deviceValue(v.positionKey) : std::nullopt;
         const Parameter *p = map.find(v.positionKey);
         v.position->setText(raw && p ? p->displayRaw(*raw, lang) : kUnknown);
-        setTone(v.position, raw ? Tone::Normal : Tone::Unknown);
+        setTone(v.position, raw ? StateTone::Normal : StateTone::Unknown);
         const auto running =
             v.runningKey.isEmpty() ? std::nullopt : store->deviceValue(v.runningKey);
         v.state = motionOf(m + 1, running);
         switch (v.state) {
         case Motion::Unknown:
             v.motion->setText(kUnknown);
-            setTone(v.motion, Tone::Unknown);
+            setTone(v.motion, StateTone::Unknown);
             break;
         case Motion::Idle:
             v.motion->setText(tr("idle"));
-            setTone(v.motion, Tone::Normal);
+            setTone(v.motion, StateTone::Normal);
             break;
         case Motion::Running:
             v.motion->setText(tr("running"));
-            setTone(v.motion, Tone::Good);
+            setTone(v.motion, StateTone::Running);
             break;
         case Motion::AtLimit:
             v.motion->setText(tr("at a limit"));
-            setTone(v.motion, Tone::Warning);
+            setTone(v.motion, StateTone::Warning);
             break;
         }
         v.motion->setAccessibleName(tr("Motor %1: %2").arg(m + 1).arg(v.motion->text()));
         const bool referenced = references->isReferenced(m + 1);
         v.reference->setText(referenced ? tr("referenced") : tr("not referenced"));
         v.reference->setToolTip(references->text(m + 1));
-        setTone(v.reference, referenced ? Tone::Good : Tone::Warning);
+        setTone(v.reference, referenced ? StateTone::Good : StateTone::Warning);
         v.position->setAccessibleName(
             tr("Motor %1 position: %2").arg(m + 1).arg(v.position->text()));
     }
@@ -345,7 +330,7 @@ void MachineStrip::refresh()
 
 void MachineStrip::refreshLink()
 {
-    Tone tone = Tone::Unknown;
+    StateTone tone = StateTone::Unknown;
     switch (m_session->health()->state()) {
     case LinkHealth::State::Closed:
         m_link->setText(tr("port closed"));
@@ -356,11 +341,11 @@ void MachineStrip::refreshLink()
         break;
     case LinkHealth::State::NotAnswering:
         m_link->setText(tr("not answering"));
-        tone = Tone::Warning;
+        tone = StateTone::Warning;
         break;
     case LinkHealth::State::Answering:
         m_link->setText(tr("answering"));
-        tone = Tone::Good;
+        tone = StateTone::Good;
         break;
     }
     setTone(m_link, tone);
@@ -373,7 +358,7 @@ void MachineStrip::refreshLink()
     ElidedLabel *line = m_line;
     const bool known = m_session->isConnected() && stats.answers > 0;
     line->setFullText(known ? stats.lineText(id) : kUnknown);
-    setTone(line, known ? Tone::Normal : Tone::Unknown);
+    setTone(line, known ? StateTone::Normal : StateTone::Unknown);
     line->setAccessibleName(tr("Line: %1").arg(line->fullText()));
     const QList<int> ids = m_session->deviceIds();
     m_device->setVisible(ids.size() > 1);

@@ -15,6 +15,7 @@ public:
     void setState(State state);
     State state() const { return m_state; }
     void setOnColor(const QColor &color);
+    QColor onColor() const { return m_on; }
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override { return sizeHint(); }
 

@@ -378,6 +378,14 @@ void PathEditor::openWriteDialog()
     m_writeFlow->openFor(m_keys);
 }
 
+QString PathEditor::assumptions()
+{
+    return tr("Estimated time: the approach from where the axes are now (each axis on its own at "
+              "its own speed) plus the path, driven at the set speed as motor 1 revolutions per "
+              "minute with motor 1's start frequency, acceleration and pitch, as the simulator "
+              "runs it. A real controller may differ.");
+}
+
 void PathEditor::retranslate()
 {
     const bool arc = m_kind == Kind::Arc;
@@ -386,11 +394,10 @@ void PathEditor::retranslate()
     m_runBox->setTitle(arc ? tr("Run the arc") : tr("Run the line"));
     for (const auto &[label, text] : std::as_const(m_rowLabels))
         label->setText(tr(text));
-    m_assumes->setText(
-        tr("Estimated time: the approach from where the axes are now (each axis on its own at "
-           "its own speed) plus the path, driven at the set speed as motor 1 revolutions per "
-           "minute with motor 1's start frequency, acceleration and pitch, as the simulator "
-           "runs it. A real controller may differ."));
+    // The one line a technician needs; how the estimate is made is on demand (issue 25).
+    m_assumes->setText(tr("Times as the simulator runs the path; a real controller may differ."));
+    m_assumes->setToolTip(assumptions());
+    m_assumes->setWhatsThis(assumptions());
     m_write->setText(tr("&Write changes…"));
     m_write->setToolTip(tr("Write this editor's changes to the controller and read them back"));
     m_start->setText(arc ? tr("Start arc") : tr("Start line"));

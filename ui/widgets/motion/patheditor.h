@@ -60,6 +60,8 @@ public:
     // The live position of motors 1 and 2, when both are known.
     std::optional<QPointF> position() const;
     bool anyMotorRunning() const;
+    // How the times are estimated, for the page's "About this page" and the tooltip.
+    static QString assumptions();
     void retranslate();
 
 Q_SIGNALS:

@@ -31,7 +31,6 @@ StepMovePanel::StepMovePanel(DeviceSession *session, int motor, QWidget *parent)
     , m_targetLabel(new QLabel(this))
     , m_target(new QDoubleSpinBox(this))
     , m_moveTo(new QPushButton(this))
-    , m_note(new QLabel(this))
     , m_result(new QLabel(this))
 {
     setObjectName(QStringLiteral("stepMovePanel%1").arg(motor));
@@ -47,7 +46,6 @@ StepMovePanel::StepMovePanel(DeviceSession *session, int motor, QWidget *parent)
     m_target->setRange(-span, span);
     for (QPushButton *b : {m_minus, m_plus, m_moveTo})
         b->setAutoDefault(false);
-    m_note->setWordWrap(true);
     m_result->setWordWrap(true);
     m_result->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_stepLabel->setBuddy(m_step);
@@ -69,7 +67,6 @@ StepMovePanel::StepMovePanel(DeviceSession *session, int motor, QWidget *parent)
     grid->addWidget(m_targetLabel, 2, 0);
     grid->addWidget(m_target, 2, 1);
     grid->addWidget(m_moveTo, 2, 2);
-    grid->addWidget(m_note, 3, 0, 1, 3);
     grid->addWidget(m_result, 4, 0, 1, 3);
     grid->setColumnStretch(1, 1);
     grid->setColumnStretch(2, 1);
@@ -125,8 +122,17 @@ void StepMovePanel::refresh()
     const QString why = m_session->stepMove()->refusal({StepMoveRequest::Kind::By, m_motor, 1});
     for (QPushButton *b : {m_minus, m_plus, m_moveTo}) {
         b->setEnabled(why.isEmpty());
-        b->setToolTip(why);
+        // Why not, when refused; how it works otherwise (issue 25: not a paragraph on the page).
+        b->setToolTip(why.isEmpty() ? explanation() : why);
     }
+}
+
+QString StepMovePanel::explanation()
+{
+    return tr("Steps and move-to use this motor's single-move distance and direction "
+              "registers, then write your own values back and verify them. They refuse "
+              "while those fields hold unwritten edits, and any target beyond the "
+              "software travel limits.");
 }
 
 void StepMovePanel::retranslate()
@@ -143,10 +149,8 @@ void StepMovePanel::retranslate()
     m_plus->setText(tr("+ Step"));
     m_targetLabel->setText(tr("Move &to:"));
     m_moveTo->setText(tr("Move to position"));
-    m_note->setText(tr("Steps and move-to use this motor's single-move distance and direction "
-                       "registers, then write your own values back and verify them. They refuse "
-                       "while those fields hold unwritten edits, and any target beyond the "
-                       "software travel limits."));
+    for (QPushButton *b : {m_minus, m_plus, m_moveTo})
+        b->setWhatsThis(explanation());
     refresh();
 }
 

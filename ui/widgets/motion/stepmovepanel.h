@@ -33,6 +33,9 @@ public:
     // The step chosen (axis units, > 0).
     double stepSize() const;
     void retranslate();
+    // How steps and move-to work: the buttons' tooltip and What's This, and the Jog page's
+    // "About this page" (issue 25).
+    static QString explanation();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -51,7 +54,6 @@ private:
     QLabel *m_targetLabel;
     QDoubleSpinBox *m_target;
     QPushButton *m_moveTo;
-    QLabel *m_note;
     QLabel *m_result;
     bool m_mine = false; // the step running is this panel's
 };

@@ -191,11 +191,20 @@ void TravelLimitsEditor::retranslate()
         r.maxOn->setText(tr("Max"));
     }
     m_apply->setText(tr("Apply limits"));
-    m_note->setText(tr("StepCom's limits, not the controller's: a step or move-to beyond them is "
-                       "refused and a jog is stopped when the polled position crosses them. "
-                       "Saved with the connection settings and in profiles. If the link dies "
-                       "during a jog, only the limit switches stop the axis."));
+    // What a technician must not miss stays on the page; the rest is on demand (issue 25).
+    m_note->setText(tr("StepCom's limits, not the controller's: if the link dies during a jog, "
+                       "only the limit switches stop the axis."));
+    m_note->setToolTip(explanation());
+    m_note->setWhatsThis(explanation());
     refreshOverrun();
+}
+
+QString TravelLimitsEditor::explanation() const
+{
+    return tr("StepCom's limits, not the controller's: a step or move-to beyond them is "
+              "refused and a jog is stopped when the polled position crosses them. "
+              "Saved with the connection settings and in profiles. If the link dies "
+              "during a jog, only the limit switches stop the axis.");
 }
 
 void TravelLimitsEditor::changeEvent(QEvent *event)

@@ -28,6 +28,8 @@ public:
     QPushButton *applyButton() const { return m_apply; }
     QString overrunText(int motor) const;
     QString problemText() const;
+    // What the limits are and are not, for the page's "About this page" and the note's tooltip.
+    QString explanation() const;
 
     // The limits saved with the connection settings (QSettings), into the session.
     static void restoreSaved(DeviceSession *session);

@@ -1,0 +1,256 @@
+// Issue 25: the sidebar shows the workflow. Its entries in commissioning order under group
+// headers that cannot be chosen (the arrow keys pass over them), an icon drawn for each page
+// (crisp at ×1.5 and ×2), the accessible names the page titles, and each page's state from
+// the real models: edits not written, checklist steps passed ("?" when the file cannot be
+// read), pages that need a controller marked until one answers.
+#include "commissioning/checklistfile.h"
+#include "device/parameterstore.h"
+#include "language.h"
+#include "mainwindow.h"
+#include "page.h"
+#include "pages/checklistpage.h"
+#include "pages/motionpage.h"
+#include "pages/motorpage.h"
+#include "session/devicesession.h"
+#include "simsession.h"
+#include "widgets/checklist/checkliststepwidget.h"
+#include "widgets/docks/pagesidebar.h"
+
+#include <QAccessible>
+#include <QApplication>
+#include <QFile>
+#include <QScrollBar>
+#include <QSettings>
+#include <QStackedWidget>
+#include <QStandardPaths>
+#include <QSvgRenderer>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QWheelEvent>
+
+using namespace stepcom;
+
+class TestSidebar : public QObject
+{
+    Q_OBJECT
+
+    static int pageIndex(MainWindow &window, const char *className)
+    {
+        for (int i = 0; i < window.pages().size(); ++i) {
+            if (window.pages().at(i)->inherits(className))
+                return i;
+        }
+        return -1;
+    }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QApplication::setOrganizationName(QStringLiteral("StepComTest"));
+        QSettings().clear();
+        QFile::remove(ChecklistPage::defaultFile());
+        Language::instance().setLanguage(QStringLiteral("en"));
+    }
+
+    void groupsInCommissioningOrder()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        PageSidebar *sidebar = window.sidebar();
+        QVERIFY(sidebar);
+        QStringList rows;
+        for (int r = 0; r < sidebar->count(); ++r) {
+            const QListWidgetItem *item = sidebar->item(r);
+            const bool header = item->data(PageSidebar::PageRole).toInt() < 0;
+            rows << (header ? QStringLiteral("# ") : QString()) + item->text();
+            QCOMPARE(bool(item->flags() & Qt::ItemIsSelectable), !header);
+            QCOMPARE(bool(item->flags() & Qt::ItemIsEnabled), !header);
+        }
+        QCOMPARE(rows,
+                 QStringList({"# Connect", "Connection", "# Set up", "Motor 1", "Motor 2",
+                              "Inputs and limits", "Jog and home", "Special modes",
+                              "# Move and run", "Interpolation", "Plots",
+                              "# Check, save and report", "Commissioning checklist", "Device"}));
+        // Every page once, by its title.
+        for (int i = 0; i < window.pages().size(); ++i)
+            QCOMPARE(sidebar->itemOf(i)->text(), window.pages().at(i)->title());
+    }
+
+    // Drawn from the SVG at every scale: 24×24 logical, 36 and 48 device pixels at ×1.5, ×2.
+    void iconsAreDrawnForEveryScale()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        for (int i = 0; i < window.pages().size(); ++i) {
+            const QString file =
+                QStringLiteral(":/sidebar/%1.svg").arg(window.pages().at(i)->iconName());
+            QSvgRenderer svg(file);
+            QVERIFY2(svg.isValid(), qPrintable(file));
+            QCOMPARE(svg.viewBoxF(), QRectF(0, 0, 24, 24));
+            const QIcon icon = window.sidebar()->itemOf(i)->icon();
+            QVERIFY2(!icon.isNull(), qPrintable(file));
+            for (const qreal scale : {1.0, 1.5, 2.0}) {
+                const QPixmap p = icon.pixmap(QSize(24, 24), scale);
+                QCOMPARE(p.size(), QSize(24, 24) * scale);
+                // Something drawn, in the palette's text colour.
+                const QImage image = p.toImage();
+                bool inked = false;
+                for (int y = 0; y < image.height() && !inked; ++y) {
+                    for (int x = 0; x < image.width() && !inked; ++x)
+                        inked = qAlpha(image.pixel(x, y)) > 200;
+                }
+                QVERIFY2(inked, qPrintable(file));
+            }
+        }
+    }
+
+    void keyboardSkipsHeadersAndNamesArePageTitles()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        PageSidebar *sidebar = window.sidebar();
+        sidebar->setFocus();
+        window.showPage(0);
+        QCOMPARE(window.currentPage(), window.pages().at(0));
+        QTest::keyClick(sidebar, Qt::Key_Down); // over the "Set up" header
+        QCOMPARE(window.currentPage()->title(), QStringLiteral("Motor 1"));
+        QTest::keyClick(sidebar, Qt::Key_Up);
+        QCOMPARE(window.currentPage()->title(), QStringLiteral("Connection"));
+        QTest::keyClick(sidebar, Qt::Key_End);
+        QCOMPARE(window.currentPage()->title(), QStringLiteral("Device"));
+        QTest::keyClick(sidebar, Qt::Key_Home);
+        QCOMPARE(window.currentPage()->title(), QStringLiteral("Connection"));
+        // What the accessibility bus reads: each page by its title.
+        QAccessibleInterface *list = QAccessible::queryAccessibleInterface(sidebar);
+        QVERIFY(list);
+        QStringList names;
+        for (int c = 0; c < list->childCount(); ++c)
+            names << list->child(c)->text(QAccessible::Name);
+        for (const Page *page : window.pages())
+            QVERIFY2(names.contains(page->title()), qPrintable(names.join(QLatin1Char('|'))));
+    }
+
+    // A sidebar lower than its entries (1366×768 at ×1.5 with the docks below): no scroll bar
+    // takes the titles' room; keys still bring every page into view, and the fade says so.
+    void scrollsWithoutTakingTheTitlesRoom()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        PageSidebar *sidebar = window.sidebar();
+        sidebar->setFixedHeight(sidebar->fontMetrics().height() * 8);
+        QTRY_VERIFY(sidebar->isCompact());
+        QCoreApplication::processEvents();
+        QVERIFY(!sidebar->verticalScrollBar()->isVisible());
+        QVERIFY(sidebar->hasMoreBelow());
+        QVERIFY(!sidebar->hasMoreAbove());
+        const int last = int(window.pages().size()) - 1;
+        window.showPage(last);
+        QCoreApplication::processEvents();
+        QVERIFY(
+            sidebar->viewport()->rect().contains(sidebar->visualItemRect(sidebar->itemOf(last))));
+        QVERIFY(sidebar->hasMoreAbove());
+        // The wheel scrolls it too.
+        const QPoint at = sidebar->viewport()->rect().center();
+        QWheelEvent up(at, sidebar->viewport()->mapToGlobal(at), QPoint(), QPoint(0, 480),
+                       Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        const int before = sidebar->verticalScrollBar()->value();
+        QApplication::sendEvent(sidebar->viewport(), &up);
+        QTRY_VERIFY(sidebar->verticalScrollBar()->value() < before);
+        QVERIFY2(sidebar->cutEntries().isEmpty(), qPrintable(sidebar->cutEntries().join(", ")));
+    }
+
+    void editsShowOnTheirPage()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        PageSidebar *sidebar = window.sidebar();
+        const int motor1 = pageIndex(window, "stepcom::MotorPage");
+        const QString key = window.pages().at(motor1)->keys().first();
+        const Parameter *p = session.map().find(key);
+        QVERIFY(p);
+        QCOMPARE(sidebar->editCount(motor1), 0);
+        QVERIFY(session.parameters()->edit(key, p->rawMax).isEmpty());
+        QCOMPARE(sidebar->editCount(motor1), 1);
+        QCOMPARE(sidebar->itemOf(motor1)->data(PageSidebar::EditsRole).toInt(), 1);
+        QVERIFY(sidebar->stateText(motor1).contains(QStringLiteral("1 edit not written")));
+        QVERIFY(sidebar->itemOf(motor1)->toolTip().contains(QStringLiteral("1 edit")));
+        QCOMPARE(sidebar->itemOf(motor1)->data(Qt::AccessibleDescriptionRole).toString(),
+                 sidebar->stateText(motor1));
+        QCOMPARE(sidebar->editCount(motor1 + 1), 0); // motor 2 has none
+        session.parameters()->revertAll();
+        QCOMPARE(sidebar->itemOf(motor1)->data(PageSidebar::EditsRole).toInt(), 0);
+    }
+
+    void checklistStepsPassed()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        PageSidebar *sidebar = window.sidebar();
+        ChecklistPage *page = window.checklistPage();
+        const int index = int(window.pages().indexOf(page));
+        const int total = int(page->checklist().steps().size());
+        QCOMPARE(sidebar->itemOf(index)->data(PageSidebar::ProgressRole).toString(),
+                 QStringLiteral("0/%1").arg(total));
+        const QString id = page->checklist().steps().first().id;
+        Q_EMIT page->stepWidget(id)->recorded(id, StepResult::Passed, {}, QString());
+        QCOMPARE(sidebar->itemOf(index)->data(PageSidebar::ProgressRole).toString(),
+                 QStringLiteral("1/%1").arg(total));
+        QVERIFY(sidebar->stateText(index).contains(QStringLiteral("1 of %1").arg(total)));
+        // A checklist file that cannot be read: the steps passed are not known.
+        QTemporaryDir dir;
+        const QString profile = dir.filePath(QStringLiteral("machine.json"));
+        QFile broken(ChecklistFile::pathFor(profile));
+        QVERIFY(broken.open(QIODevice::WriteOnly) && broken.write("{ not json") > 0);
+        broken.close();
+        page->setProfilePath(profile);
+        QCOMPARE(sidebar->itemOf(index)->data(PageSidebar::ProgressRole).toString(),
+                 QStringLiteral("?"));
+        QCOMPARE(StateTone(sidebar->itemOf(index)->data(PageSidebar::ProgressToneRole).toInt()),
+                 StateTone::Unknown);
+        page->setProfilePath(QString());
+        QFile::remove(ChecklistPage::defaultFile());
+    }
+
+    void pagesNeedingTheControllerMarkedUntilItAnswers()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        PageSidebar *sidebar = window.sidebar();
+        const int jog = int(window.pages().indexOf(window.motionPage()));
+        const int motor1 = pageIndex(window, "stepcom::MotorPage");
+        QVERIFY(sidebar->isOffline(jog));
+        QVERIFY(sidebar->itemOf(jog)->data(PageSidebar::OfflineRole).toBool());
+        QVERIFY(sidebar->stateText(jog).contains(QStringLiteral("needs a controller")));
+        QVERIFY(!sidebar->isOffline(motor1)); // edited without one too
+        test::connectToSimulator(session);
+        QTRY_VERIFY(!sidebar->itemOf(jog)->data(PageSidebar::OfflineRole).toBool());
+        QVERIFY(sidebar->stateText(jog).isEmpty());
+        session.disconnectFrom();
+        QTRY_VERIFY(sidebar->itemOf(jog)->data(PageSidebar::OfflineRole).toBool());
+    }
+
+    // The group headers and states follow the language.
+    void followsTheLanguage()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        Language::instance().setLanguage(QStringLiteral("zh_CN"));
+        QCoreApplication::processEvents();
+        PageSidebar *sidebar = window.sidebar();
+        for (int i = 0; i < window.pages().size(); ++i)
+            QCOMPARE(sidebar->itemOf(i)->text(), window.pages().at(i)->title());
+        QVERIFY(sidebar->item(0)->text() != QStringLiteral("Connect"));
+        Language::instance().setLanguage(QStringLiteral("en"));
+        QCoreApplication::processEvents();
+        QCOMPARE(sidebar->item(0)->text(), QStringLiteral("Connect"));
+    }
+};
+
+#include "testregistry.h"
+STEPCOM_TEST(TestSidebar, Gui)
+#include "tst_sidebar.moc"
