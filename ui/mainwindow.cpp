@@ -33,6 +33,7 @@
 #include "widgets/docks/statusdock.h"  // monitoring (issue 5)
 #include "widgets/docks/statusmessage.h"
 #include "widgets/docks/trafficview.h"
+#include "widgets/fields/verticalscrollarea.h"
 #include "widgets/motion/travellimitseditor.h" // issue 17
 #include "writeflow.h"
 
@@ -331,16 +332,13 @@ void MainWindow::createDocks()
     m_viewMenu->addAction(m_messageDock->toggleViewAction());
     // --- monitoring (issue 5): the live status beside every page ---
     m_statusDock = new StatusDock(m_session, this);
-    // Its content scrolls up and down, so the dock fits a low screen beside or below the page.
+    // Its content scrolls up and down, so the dock fits a low screen beside or below the page;
+    // it asks for the width its content needs now (texts change with the state and the
+    // language: a width taken once cut "18.17 mm" and "IN4" off in Chinese).
     if (QWidget *content = m_statusDock->widget()) {
-        auto *scroll = new QScrollArea(m_statusDock);
-        scroll->setWidgetResizable(true);
+        auto *scroll = new VerticalScrollArea(content, m_statusDock);
         scroll->setFrameShape(QFrame::NoFrame);
-        scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-        scroll->setMinimumWidth(content->minimumSizeHint().width() +
-                                scroll->verticalScrollBar()->sizeHint().width());
         m_statusDock->setWidget(scroll);
-        scroll->setWidget(content);
     }
     addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
     m_viewMenu->addAction(m_statusDock->toggleViewAction());

@@ -40,6 +40,8 @@ void MainWindow::arrangeDocks()
         !m_statusDock->isFloating()) {
         m_statusDockMoved = true;
         tabifyDockWidget(m_messageDock, m_statusDock);
+        // The machine strip shows the positions: the messages stay in front.
+        m_messageDock->raise();
     } else if (!narrow && m_statusDockMoved) {
         m_statusDockMoved = false;
         addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
