@@ -46,11 +46,10 @@ private Q_SLOTS:
 
         ProgramOptions options;
         options.timeoutMs = 30000;
-        const ProgramRun m =
-            runProgram(QStringLiteral("stepcomctl"),
-                       {"--port", port, "--baud", bauds, "--verbose", "--json", "monitor",
-                        "--count", "5", "--interval", "50"},
-                       options);
+        const ProgramRun m = runProgram(QStringLiteral("stepcomctl"),
+                                        {"--port", port, "--baud", bauds, "--verbose", "--json",
+                                         "monitor", "--count", "5", "--interval", "50"},
+                                        options);
         QVERIFY2(m.exitCode == 0, qPrintable(m.err));
         int samples = 0;
         for (const QString &line : m.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
@@ -69,9 +68,9 @@ private Q_SLOTS:
         QVERIFY2(!m.err.contains(QLatin1String("no answer within")), qPrintable(m.err));
         QVERIFY2(!m.err.contains(QLatin1String("Turn on --echo")), qPrintable(m.err));
 
-        const ProgramRun e = runProgram(QStringLiteral("stepcomctl"),
-                                        {"--port", port, "--baud", bauds, "command", "estop"},
-                                        options);
+        const ProgramRun e =
+            runProgram(QStringLiteral("stepcomctl"),
+                       {"--port", port, "--baud", bauds, "command", "estop"}, options);
         QVERIFY2(e.exitCode == 0, qPrintable(e.err + e.out));
     }
 };

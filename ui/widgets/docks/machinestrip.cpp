@@ -58,7 +58,7 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     , m_outputsCaption(new QLabel(this))
     , m_link(new QLabel(this))
     , m_line(new ElidedLabel(this))
-    , m_device(new QLabel(this))
+    , m_device(new ElidedLabel(this))
     , m_estopButton(estop->createButton(this))
 {
     setObjectName(QStringLiteral("machineStrip"));
@@ -125,7 +125,9 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     bold.setBold(true);
     m_link->setFont(bold);
     m_device->setFont(bold);
+    m_device->setMinimumChars(8);
     linkRow->addWidget(m_device);
+    linkRow->addSpacing(fontMetrics().averageCharWidth());
     linkRow->addWidget(m_link, 1);
     linkColumn->addLayout(linkRow);
     m_line->setMinimumChars(5);
@@ -363,8 +365,8 @@ void MachineStrip::refreshLink()
     const QList<int> ids = m_session->deviceIds();
     m_device->setVisible(ids.size() > 1);
     const QString name = m_namer ? m_namer(id) : QString();
-    m_device->setText(name.isEmpty() ? tr("Device %1").arg(id)
-                                     : tr("%1 (id %2)").arg(name).arg(id));
+    m_device->setFullText(name.isEmpty() ? tr("Device %1").arg(id)
+                                         : tr("%1 (id %2)").arg(name).arg(id));
 }
 
 void MachineStrip::retranslate()

@@ -40,7 +40,7 @@ public:
     Led *outputLed(int n) const { return m_outputLeds.value(n - 1); }
     QLabel *linkLabel() const { return m_link; }
     QLabel *lineLabel() const { return m_line; }
-    QLabel *deviceLabel() const { return m_device; }
+    ElidedLabel *deviceLabel() const { return m_device; }
     QToolButton *emergencyStopButton() const { return m_estopButton; }
     // The one-row form for a short window (1024×600): smaller digits, less padding.
     void setCompact(bool compact);
@@ -82,7 +82,7 @@ private:
     QLabel *m_outputsCaption;
     QLabel *m_link;
     ElidedLabel *m_line;
-    QLabel *m_device;
+    ElidedLabel *m_device; // a long name gives way: the strip must not widen the window
     QToolButton *m_estopButton;
     std::function<QString(int)> m_namer;
     bool m_compact = false;
