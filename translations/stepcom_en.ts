@@ -4959,6 +4959,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1%2 — profile file, no controller</source>
         <translation>%1%2 — profile file, no controller</translation>
     </message>
+    <message>
+        <source>%1 — replay, no controller</source>
+        <translation>%1 — replay, no controller</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -7062,6 +7066,97 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ReplayBar</name>
+    <message>
+        <source>id %1</source>
+        <translation>id %1</translation>
+    </message>
+    <message>
+        <source>line</source>
+        <translation>line</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Play</translation>
+    </message>
+    <message>
+        <source>Play the log at the chosen speed, or hold it at this moment</source>
+        <translation>Play the log at the chosen speed, or hold it at this moment</translation>
+    </message>
+    <message>
+        <source>Replay speed</source>
+        <translation>Replay speed</translation>
+    </message>
+    <message>
+        <source>◀ Frame</source>
+        <translation>◀ Frame</translation>
+    </message>
+    <message>
+        <source>The frame before this moment</source>
+        <translation>The frame before this moment</translation>
+    </message>
+    <message>
+        <source>Frame ▶</source>
+        <translation>Frame ▶</translation>
+    </message>
+    <message>
+        <source>The next frame after this moment</source>
+        <translation>The next frame after this moment</translation>
+    </message>
+    <message>
+        <source>Moment of the log</source>
+        <translation>Moment of the log</translation>
+    </message>
+    <message>
+        <source>Time from the start of the log (clock time)</source>
+        <translation>Time from the start of the log (clock time)</translation>
+    </message>
+    <message>
+        <source>◀ Event</source>
+        <translation>◀ Event</translation>
+    </message>
+    <message>
+        <source>The event before this moment</source>
+        <translation>The event before this moment</translation>
+    </message>
+    <message>
+        <source>Event ▶</source>
+        <translation>Event ▶</translation>
+    </message>
+    <message>
+        <source>The next event after this moment</source>
+        <translation>The next event after this moment</translation>
+    </message>
+    <message>
+        <source>Events of the log</source>
+        <translation>Events of the log</translation>
+    </message>
+    <message>
+        <source>Writes, commands, E-STOPs, errors, the link and restarts; choose one to see that moment</source>
+        <translation>Writes, commands, E-STOPs, errors, the link and restarts; choose one to see that moment</translation>
+    </message>
+    <message>
+        <source>&amp;Device:</source>
+        <translation>&amp;Device:</translation>
+    </message>
+    <message>
+        <source>The controller of the line shown on the pages</source>
+        <translation>The controller of the line shown on the pages</translation>
+    </message>
+    <message>
+        <source>Close replay</source>
+        <translation>Close replay</translation>
+    </message>
+    <message>
+        <source>Leave the replay; the window is empty again, ready to connect</source>
+        <translation>Leave the replay; the window is empty again, ready to connect</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ReplayDecoder</name>
     <message>
         <source>late answer (discarded): %1</source>
@@ -7137,6 +7232,83 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 is before the log&apos;s start (%2)</source>
         <translation>%1 is before the log&apos;s start (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReplayMode</name>
+    <message>
+        <source>Replay of %1 — nothing is written or moved. The pages show what the log says the controller held at the moment chosen below; connect or close the replay to work with a controller.</source>
+        <translation>Replay of %1 — nothing is written or moved. The pages show what the log says the controller held at the moment chosen below; connect or close the replay to work with a controller.</translation>
+    </message>
+    <message>
+        <source>Open session &amp;log…</source>
+        <translation>Open session &amp;log…</translation>
+    </message>
+    <message>
+        <source>Replay a session log or a support bundle: see what the window showed then, without a controller (%1)</source>
+        <translation>Replay a session log or a support bundle: see what the window showed then, without a controller (%1)</translation>
+    </message>
+    <message>
+        <source>Close re&amp;play</source>
+        <translation>Close re&amp;play</translation>
+    </message>
+    <message>
+        <source>A session log is being opened already.</source>
+        <translation>A session log is being opened already.</translation>
+    </message>
+    <message>
+        <source>Disconnect from the controller before replaying a log: a replay shows the log&apos;s values where the controller&apos;s are.</source>
+        <translation>Disconnect from the controller before replaying a log: a replay shows the log&apos;s values where the controller&apos;s are.</translation>
+    </message>
+    <message>
+        <source>Close the profile file before replaying a log.</source>
+        <translation>Close the profile file before replaying a log.</translation>
+    </message>
+    <message>
+        <source>Open session log</source>
+        <translation>Open session log</translation>
+    </message>
+    <message>
+        <source>Session logs and support bundles (*.log *.txt *.zip);;All files (*)</source>
+        <translation>Session logs and support bundles (*.log *.txt *.zip);;All files (*)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be replayed: %2</source>
+        <translation>%1 cannot be replayed: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 holds %n session log(s). Which one to replay?</source>
+        <translation>
+            <numerusform>%1 holds %n session log. Which one to replay?</numerusform>
+            <numerusform>%1 holds %n session logs. Which one to replay?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation>Reading %1…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Opening %1 was cancelled.</source>
+        <translation>Opening %1 was cancelled.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Replaying %1: %2 s, %n event(s).</source>
+        <translation>
+            <numerusform>Replaying %1: %2 s, %n event.</numerusform>
+            <numerusform>Replaying %1: %2 s, %n events.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Warning: %1.</source>
+        <translation>Warning: %1.</translation>
+    </message>
+    <message>
+        <source>Replay of %1 closed.</source>
+        <translation>Replay of %1 closed.</translation>
     </message>
 </context>
 <context>

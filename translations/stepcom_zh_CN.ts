@@ -4930,6 +4930,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1%2 — profile file, no controller</source>
         <translation>%1%2 — 参数文件，未连接控制器</translation>
     </message>
+    <message>
+        <source>%1 — replay, no controller</source>
+        <translation>%1 — 回放，无控制器</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -7013,6 +7017,97 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ReplayBar</name>
+    <message>
+        <source>id %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>line</source>
+        <translation>总线</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <source>Play the log at the chosen speed, or hold it at this moment</source>
+        <translation>按所选速度播放日志，或停在此刻</translation>
+    </message>
+    <message>
+        <source>Replay speed</source>
+        <translation>回放速度</translation>
+    </message>
+    <message>
+        <source>◀ Frame</source>
+        <translation>◀ 帧</translation>
+    </message>
+    <message>
+        <source>The frame before this moment</source>
+        <translation>此刻之前的一帧</translation>
+    </message>
+    <message>
+        <source>Frame ▶</source>
+        <translation>帧 ▶</translation>
+    </message>
+    <message>
+        <source>The next frame after this moment</source>
+        <translation>此刻之后的下一帧</translation>
+    </message>
+    <message>
+        <source>Moment of the log</source>
+        <translation>日志中的时刻</translation>
+    </message>
+    <message>
+        <source>Time from the start of the log (clock time)</source>
+        <translation>从日志开始起的时间（时钟时间）</translation>
+    </message>
+    <message>
+        <source>◀ Event</source>
+        <translation>◀ 事件</translation>
+    </message>
+    <message>
+        <source>The event before this moment</source>
+        <translation>此刻之前的事件</translation>
+    </message>
+    <message>
+        <source>Event ▶</source>
+        <translation>事件 ▶</translation>
+    </message>
+    <message>
+        <source>The next event after this moment</source>
+        <translation>此刻之后的下一个事件</translation>
+    </message>
+    <message>
+        <source>Events of the log</source>
+        <translation>日志中的事件</translation>
+    </message>
+    <message>
+        <source>Writes, commands, E-STOPs, errors, the link and restarts; choose one to see that moment</source>
+        <translation>写入、命令、急停、错误、连接和重启；选择一项即可查看那一时刻</translation>
+    </message>
+    <message>
+        <source>&amp;Device:</source>
+        <translation>设备(&amp;D)：</translation>
+    </message>
+    <message>
+        <source>The controller of the line shown on the pages</source>
+        <translation>页面上显示的总线上的控制器</translation>
+    </message>
+    <message>
+        <source>Close replay</source>
+        <translation>关闭回放</translation>
+    </message>
+    <message>
+        <source>Leave the replay; the window is empty again, ready to connect</source>
+        <translation>退出回放；窗口恢复为空，可以连接</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ReplayDecoder</name>
     <message>
         <source>late answer (discarded): %1</source>
@@ -7088,6 +7183,81 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 is before the log&apos;s start (%2)</source>
         <translation>%1 早于日志的开始时间（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReplayMode</name>
+    <message>
+        <source>Replay of %1 — nothing is written or moved. The pages show what the log says the controller held at the moment chosen below; connect or close the replay to work with a controller.</source>
+        <translation>回放 %1 — 不写入任何参数，也不运动。页面显示日志记录的控制器在下方所选时刻的状态；如需操作控制器，请连接或关闭回放。</translation>
+    </message>
+    <message>
+        <source>Open session &amp;log…</source>
+        <translation>打开会话日志(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>Replay a session log or a support bundle: see what the window showed then, without a controller (%1)</source>
+        <translation>回放会话日志或支持包：无需控制器即可看到当时窗口显示的内容（%1）</translation>
+    </message>
+    <message>
+        <source>Close re&amp;play</source>
+        <translation>关闭回放(&amp;P)</translation>
+    </message>
+    <message>
+        <source>A session log is being opened already.</source>
+        <translation>已在打开一个会话日志。</translation>
+    </message>
+    <message>
+        <source>Disconnect from the controller before replaying a log: a replay shows the log&apos;s values where the controller&apos;s are.</source>
+        <translation>回放日志前请先断开控制器：回放会在控制器数值的位置显示日志中的数值。</translation>
+    </message>
+    <message>
+        <source>Close the profile file before replaying a log.</source>
+        <translation>回放日志前请先关闭参数文件。</translation>
+    </message>
+    <message>
+        <source>Open session log</source>
+        <translation>打开会话日志</translation>
+    </message>
+    <message>
+        <source>Session logs and support bundles (*.log *.txt *.zip);;All files (*)</source>
+        <translation>会话日志和支持包 (*.log *.txt *.zip);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be replayed: %2</source>
+        <translation>无法回放 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 holds %n session log(s). Which one to replay?</source>
+        <translation>
+            <numerusform>%1 包含 %n 个会话日志。要回放哪一个？</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation>正在读取 %1…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Opening %1 was cancelled.</source>
+        <translation>已取消打开 %1。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Replaying %1: %2 s, %n event(s).</source>
+        <translation>
+            <numerusform>正在回放 %1：%2 秒，%n 个事件。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Warning: %1.</source>
+        <translation>警告：%1。</translation>
+    </message>
+    <message>
+        <source>Replay of %1 closed.</source>
+        <translation>已关闭 %1 的回放。</translation>
     </message>
 </context>
 <context>

@@ -19,6 +19,7 @@
 #include "pages/motorpage.h"
 #include "pages/plotpage.h" // monitoring (issue 5)
 #include "profileactions.h" // profiles (issue 7)
+#include "replaymode.h"     // replaying a session log (issue 26)
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/linkhealth.h"
@@ -33,6 +34,7 @@
 #include "widgets/docks/statusmessage.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/motion/travellimitseditor.h" // issue 17
+#include "widgets/replay/replaybar.h"
 #include "writeflow.h"
 
 #include "profile/profiledocument.h"
@@ -87,6 +89,8 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     auto *centralLayout = new QVBoxLayout(central);
     centralLayout->setContentsMargins(0, 0, 0, 0);
     centralLayout->addWidget(m_offlineBanner);
+    m_replay = new ReplayMode(session, this); // issue 26: its banner there too, its bar below
+    centralLayout->addWidget(m_replay->banner());
     centralLayout->addWidget(splitter, 1);
     setCentralWidget(central);
     connect(m_sidebar, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
@@ -110,6 +114,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     // Under the pages, on every page: positions, states and the E-STOP (issue 25).
     m_strip = new MachineStrip(session, m_estop, central);
     m_strip->setDeviceNamer([this](int id) { return m_deviceDock->nameOf(id); });
+    centralLayout->addWidget(m_replay->bar());
     centralLayout->addWidget(m_strip);
     m_linkStatus = new LinkStatus(session, this);
     // A cable pulled and plugged back, an adapter that came back: the window tries again.
@@ -137,6 +142,11 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     });
     connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
     // --- end working without the machine ---
+    m_replay->setTrafficView(m_traffic); // issue 26
+    connect(m_replay, &ReplayMode::activeChanged, this, &MainWindow::showOrigin);
+    connect(m_replay, &ReplayMode::finished, this, [this](bool ok, const QString &text) {
+        m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning, text);
+    });
 
     connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
     connect(session->parameters(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
@@ -280,6 +290,8 @@ void MainWindow::createMenus()
     m_fileMenu->addAction(m_offline->saveAsAction());
     m_fileMenu->addAction(m_offline->closeAction());
     m_fileMenu->addAction(m_offline->compareAction());
+    m_fileMenu->addAction(m_replay->openAction()); // issue 26
+    m_fileMenu->addAction(m_replay->closeAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->saveFromDeviceAction());
     m_fileMenu->addAction(m_profiles->saveFromEditedAction());
@@ -368,6 +380,11 @@ void MainWindow::showOrigin()
 {
     updateTitle();
     const ProfileDocument *file = m_offline->document();
+    if (m_replay->isActive()) { // issue 26: a recording, in its banner's colour
+        statusBar()->setStyleSheet(QStringLiteral(
+            "QStatusBar { background: #fff0c8; } QStatusBar QLabel { color: black; }"));
+        return;
+    }
     if (!file->isOpen()) {
         statusBar()->setStyleSheet(QString());
         return;
@@ -408,6 +425,7 @@ void MainWindow::retranslate()
     m_fileMenu->setTitle(tr("&File"));
     m_profiles->retranslate(); // profiles (issue 7)
     m_offline->retranslate();  // issue 18
+    m_replay->retranslate();   // issue 26
     m_deviceMenu->setTitle(tr("&Device"));
     m_viewMenu->setTitle(tr("&View"));
     m_languageMenu->setTitle(tr("&Language"));
@@ -448,6 +466,10 @@ void MainWindow::updateTitle()
 {
     // One title: the platform adds the program's name ("Motor 1 — StepCom"), so the page, or
     // the profile file being edited without a controller, is all we add.
+    if (m_replay && m_replay->isActive()) {
+        setWindowTitle(tr("%1 — replay, no controller").arg(m_replay->displayName()));
+        return;
+    }
     const ProfileDocument *file = m_offline ? m_offline->document() : nullptr;
     if (file && file->isOpen()) {
         setWindowTitle(
