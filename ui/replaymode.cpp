@@ -136,6 +136,11 @@ ReplayMode::~ReplayMode()
     }
 }
 
+void ReplayMode::setTrafficView(TrafficView *view)
+{
+    m_view = view;
+}
+
 QMessageBox *ReplayMode::errorBox() const
 {
     return m_errorBox;

@@ -47,7 +47,7 @@ public:
     QFrame *banner() const { return m_banner; }
     ReplayBar *bar() const { return m_bar; }
     // The traffic dock shows the replay's lines while it runs, the session's again after.
-    void setTrafficView(TrafficView *view) { m_view = view; }
+    void setTrafficView(TrafficView *view);
 
     bool isActive() const { return m_active; }
     bool isOpening() const { return m_opening != nullptr; }
