@@ -195,7 +195,7 @@ void ParameterStore::applyWriteOutcome(const QList<ParameterWrite> &writes,
         setUnsavedToFlash(true);
 }
 
-void ParameterStore::openFile(const QString &name, const QHash<QString, qint64> &values)
+void ParameterStore::holdOnly(const QHash<QString, qint64> &values)
 {
     const QStringList keys = m_entries.keys(); // update() may detach a hash a snapshot shares
     for (const QString &key : keys)
@@ -203,6 +203,11 @@ void ParameterStore::openFile(const QString &name, const QHash<QString, qint64> 
                Entry{values.contains(key) ? std::optional<qint64>(values.value(key)) : std::nullopt,
                      std::nullopt, State::Unknown, QString()});
     setUnsavedToFlash(false);
+}
+
+void ParameterStore::openFile(const QString &name, const QHash<QString, qint64> &values)
+{
+    holdOnly(values);
     m_file = true;
     m_fileName = name;
     m_replay = false;
@@ -210,14 +215,19 @@ void ParameterStore::openFile(const QString &name, const QHash<QString, qint64> 
     Q_EMIT originChanged();
 }
 
+void ParameterStore::closeFile()
+{
+    if (!m_file)
+        return;
+    holdOnly({});
+    m_file = false;
+    m_fileName.clear();
+    Q_EMIT originChanged();
+}
+
 void ParameterStore::showReplay(const QString &name, const QHash<QString, qint64> &values)
 {
-    const QStringList keys = m_entries.keys(); // update() may detach a hash a snapshot shares
-    for (const QString &key : keys)
-        update(key,
-               Entry{values.contains(key) ? std::optional<qint64>(values.value(key)) : std::nullopt,
-                     std::nullopt, State::Unknown, QString()});
-    setUnsavedToFlash(false);
+    holdOnly(values);
     const bool began = !m_replay || m_replayName != name;
     m_replay = true;
     m_replayName = name;
@@ -229,23 +239,9 @@ void ParameterStore::closeReplay()
 {
     if (!m_replay)
         return;
-    const QStringList keys = m_entries.keys();
-    for (const QString &key : keys)
-        update(key, Entry());
+    holdOnly({});
     m_replay = false;
     m_replayName.clear();
-    Q_EMIT originChanged();
-}
-
-void ParameterStore::closeFile()
-{
-    if (!m_file)
-        return;
-    const QStringList keys = m_entries.keys();
-    for (const QString &key : keys)
-        update(key, Entry());
-    m_file = false;
-    m_fileName.clear();
     Q_EMIT originChanged();
 }
 

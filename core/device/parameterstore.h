@@ -109,6 +109,8 @@ Q_SIGNALS:
 
 private:
     void update(const QString &key, const Entry &entry);
+    // Holds `values` as the device's and nothing else: every other value unknown, no edits.
+    void holdOnly(const QHash<QString, qint64> &values);
     static State stateOf(const Entry &e);
 
     RegisterMap m_map;

@@ -125,14 +125,15 @@ private Q_SLOTS:
     {
         QStandardPaths::setTestModeEnabled(true);
         QApplication::setOrganizationName(QStringLiteral("StepComTest"));
+        // The window records its session into one file, as `stepcomctl --log` does.
+        logPath = dir.filePath(QStringLiteral("logs/session.log"));
+        QDir().mkpath(dir.filePath(QStringLiteral("logs")));
         Language::instance().setLanguage(QStringLiteral("en"));
         session = std::make_unique<DeviceSession>();
         test::useBuiltinSimulator(*session);
         window = std::make_unique<MainWindow>(session.get());
-        window->show();
-        logPath = dir.filePath(QStringLiteral("logs/session.log"));
-        QDir().mkpath(dir.filePath(QStringLiteral("logs")));
         window->sessionLog()->setFile(logPath);
+        window->show();
 
         // 1. connect and read everything
         test::connectToSimulator(*session);
