@@ -1,5 +1,6 @@
 #include "replaymode.h"
 
+#include "device/statusrecorder.h"
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
 #include "support/supportbundle.h"
@@ -305,6 +306,9 @@ void ReplayMode::openingDone()
     }
     if (m_active)
         close();
+    // The plots show the log now; a CSV recording of the live status ends here.
+    if (m_session->recorder()->isRecording())
+        m_session->recorder()->stopRecording();
     m_log = o->log;
     m_unpacked = std::move(o->unpacked);
     m_name = o->name;
@@ -366,12 +370,21 @@ void ReplayMode::showMoment()
 {
     const ReplayState state = m_log.stateAt(m_moment);
     m_session->parameters()->showReplay(m_name, state.devices.value(m_device).values(m_log.map()));
-    // The lines up to the moment, as the traffic view showed them then.
+    // The lines up to the moment, as the traffic view showed them then, and a sample for the
+    // plots after every answer.
     m_traffic->clear();
-    m_log.walk(std::max<qint64>(0, m_moment - kTrafficWindowMs), m_moment,
-               [this](QByteArrayView, const LogLine &line, qint64, const ReplayState &) {
+    StatusRecorder *recorder = m_session->recorder();
+    recorder->clear();
+    const qint64 epoch =
+        QDateTime::fromString(m_log.startText(), QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
+            .toMSecsSinceEpoch();
+    m_log.walk(std::max<qint64>(0, m_moment - kHistoryMs), m_moment,
+               [&](QByteArrayView, const LogLine &line, qint64 ms, const ReplayState &after) {
                    if (line.type == LogLine::Type::Frame || line.type == LogLine::Type::Mark)
                        m_traffic->add(entryOf(line));
+                   if (line.type == LogLine::Type::Frame && !line.sent)
+                       recorder->addSample(after.devices.value(m_device).values(m_log.map()), ms,
+                                           epoch + ms);
                    return true;
                });
     m_bar->setMoment(m_moment);
@@ -420,6 +433,7 @@ void ReplayMode::close()
     if (m_view)
         m_view->setLog(m_session->traffic());
     m_traffic->clear();
+    m_session->recorder()->clear();
     m_banner->hide();
     m_bar->hide();
     m_close->setEnabled(false);

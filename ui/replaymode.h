@@ -27,16 +27,16 @@ class TrafficView;
 // log… opens it (off the GUI thread, with progress and Cancel), then every page shows what the
 // log says the controller held at the moment chosen on the bar: its values go into the
 // session's store as a read would put them (ParameterStore::showReplay), the traffic view shows
-// the log's lines up to that moment. No link is opened, so nothing that writes or moves is
-// enabled, as while a profile file is edited; connecting, opening a profile file or Close replay
-// ends it. Choosers and messages are non-modal; openPath() and openBundleEntry() do the work and
-// are what tests call.
+// the log's lines and the plots (the session's StatusRecorder) the positions up to that moment. No
+// link is opened, so nothing that writes or moves is enabled, as while a profile file is edited;
+// connecting, opening a profile file or Close replay ends it. Choosers and messages are non-modal;
+// openPath() and openBundleEntry() do the work and are what tests call.
 class ReplayMode : public QObject
 {
     Q_OBJECT
 public:
-    // The traffic view shows at most this much of the log before the moment.
-    static constexpr qint64 kTrafficWindowMs = 30000;
+    // The traffic view and the plots show this much of the log before the moment.
+    static constexpr qint64 kHistoryMs = 60000;
 
     ReplayMode(DeviceSession *session, QWidget *window);
     ~ReplayMode() override;

@@ -3,6 +3,7 @@
 // E-STOP) opens in replay mode, and at each chosen moment the store and the machine strip hold
 // exactly what the session held then; nothing writes; the markers are the log's events; bad
 // files give a message naming what is wrong and leave the window as it was.
+#include "device/statusrecorder.h"
 #include "enabledcontrols.h"
 #include "language.h"
 #include "mainwindow.h"
@@ -228,6 +229,15 @@ private Q_SLOTS:
                                                             ? MachineStrip::Motion::Running
                                                             : MachineStrip::Motion::Idle);
             QCOMPARE(replay()->bar()->momentLabel()->text(), replay()->log().momentText(*ms));
+            // The plots end at the moment too, with the same position.
+            const StatusRecorder *plots = session->recorder();
+            QVERIFY(!plots->isEmpty());
+            QVERIFY(plots->last().elapsedMs <= *ms);
+            QCOMPARE(plots->last().positions.value(0),
+                     session->map()
+                         .find(key("position"))
+                         ->toEngineering(m.values.value(key("position"))));
+            QCOMPARE(plots->last().running.value(0), qint8(m.values.value(key("running"))));
             TrafficModel *traffic = window->trafficView()->model();
             traffic->flush();
             QVERIFY(traffic->storedCount() > 0);
