@@ -298,8 +298,9 @@ void ReplayMode::openingDone()
     o->poll.stop();
     if (m_progress)
         m_progress->deleteLater();
-    if (!o->ok) {
-        fail(o->log.problem() == ReplayLog::Problem::Cancelled
+    // Cancel pressed after the last chunk was read still means: do not open it.
+    if (!o->ok || o->cancel) {
+        fail(o->cancel || o->log.problem() == ReplayLog::Problem::Cancelled
                  ? tr("Opening %1 was cancelled.").arg(o->name)
                  : tr("%1 cannot be replayed: %2").arg(o->name, o->log.errorString()));
         return;

@@ -3,6 +3,7 @@
 // E-STOP) opens in replay mode, and at each chosen moment the store and the machine strip hold
 // exactly what the session held then; nothing writes; the markers are the log's events; bad
 // files give a message naming what is wrong and leave the window as it was.
+#include "../replay/logbuilder.h"
 #include "device/statusrecorder.h"
 #include "enabledcontrols.h"
 #include "language.h"
@@ -25,6 +26,7 @@
 #include <QInputDialog>
 #include <QLabel>
 #include <QMessageBox>
+#include <QProgressDialog>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -410,6 +412,51 @@ private Q_SLOTS:
         QVERIFY(openReplay(path));
         QVERIFY2(said.last().at(1).toString().contains(QStringLiteral("cut short")),
                  qPrintable(said.last().at(1).toString()));
+    }
+
+    // A line of several controllers: each one's values, chosen on the bar.
+    void severalDevicesEachTheirOwn()
+    {
+        const Parameter *speed = session->map().find(key("speed"));
+        test::LogBuilder log;
+        log.header();
+        log.read(1, speed->address, {300});
+        log.read(2, speed->address, {450});
+        log.read(1, speed->address, {310});
+        const QString path = log.save(dir, QStringLiteral("two.log"));
+        QVERIFY(openReplay(path));
+        QCOMPARE(replay()->devices(), (QList<int>{1, 2}));
+        QComboBox *devices = replay()->bar()->deviceList();
+        QVERIFY(devices->isVisibleTo(window.get()));
+        QCOMPARE(devices->count(), 2);
+        replay()->seek(replay()->log().durationMs());
+        QCOMPARE(store()->deviceValue(speed->key), 310);
+        devices->setCurrentIndex(1);
+        Q_EMIT devices->activated(1);
+        QCOMPARE(replay()->device(), 2);
+        QCOMPARE(store()->deviceValue(speed->key), 450);
+    }
+
+    // A big log shows its progress while it is read, and Cancel leaves the window as it was.
+    void aBigLogCanBeCancelled()
+    {
+        const Parameter *speed = session->map().find(key("speed"));
+        test::LogBuilder log;
+        log.header();
+        for (int i = 0; i < 150000; ++i) // about 20 MB
+            log.read(1, speed->address, {quint16(300 + i % 100)});
+        const QString path = log.save(dir, QStringLiteral("big.log"));
+        QSignalSpy failed(replay(), &ReplayMode::failed);
+        QVERIFY(replay()->openPath(path));
+        QVERIFY(replay()->isOpening());
+        QVERIFY(replay()->progress());
+        Q_EMIT replay()->progress()->canceled(); // what its Cancel button does
+        QVERIFY(failed.wait(15000) || !failed.isEmpty());
+        QVERIFY2(failed.at(0).at(0).toString().contains(QStringLiteral("cancelled")),
+                 qPrintable(failed.at(0).at(0).toString()));
+        QVERIFY(!replay()->isOpening());
+        QVERIFY(!replay()->isActive());
+        QVERIFY(!store()->isReplay());
     }
 };
 
