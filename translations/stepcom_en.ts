@@ -4963,6 +4963,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1 — replay, no controller</source>
         <translation>%1 — replay, no controller</translation>
     </message>
+    <message>
+        <source>Create &amp;support bundle…</source>
+        <translation>Create &amp;support bundle…</translation>
+    </message>
+    <message>
+        <source>One .zip file with the session logs, the profile and the settings, to send to support</source>
+        <translation>One .zip file with the session logs, the profile and the settings, to send to support</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -8171,6 +8179,60 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>cannot copy %1 out of %2 into %3</source>
         <translation>cannot copy %1 out of %2 into %3</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SupportBundleDialog</name>
+    <message>
+        <source>Create support bundle</source>
+        <translation>Create support bundle</translation>
+    </message>
+    <message>
+        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
+        <translation>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</translation>
+    </message>
+    <message>
+        <source>The profile %1 and its checklist</source>
+        <translation>The profile %1 and its checklist</translation>
+    </message>
+    <message>
+        <source>No profile is open</source>
+        <translation>No profile is open</translation>
+    </message>
+    <message>
+        <source>&amp;Save bundle…</source>
+        <translation>&amp;Save bundle…</translation>
+    </message>
+    <message>
+        <source>Profile:</source>
+        <translation>Profile:</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n session log(s), %1</source>
+        <translation>
+            <numerusform>%n session log, %1</numerusform>
+            <numerusform>%n session logs, %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save support bundle</source>
+        <translation>Save support bundle</translation>
+    </message>
+    <message>
+        <source>Zip files (*.zip)</source>
+        <translation>Zip files (*.zip)</translation>
+    </message>
+    <message>
+        <source>Support bundle written: %1 (%2). It holds:</source>
+        <translation>Support bundle written: %1 (%2). It holds:</translation>
+    </message>
+    <message>
+        <source>The support bundle was not written: %1</source>
+        <translation>The support bundle was not written: %1</translation>
+    </message>
+    <message>
+        <source>Session logs of the last days:</source>
+        <translation>Session logs of the last days:</translation>
     </message>
 </context>
 <context>

@@ -4934,6 +4934,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1 — replay, no controller</source>
         <translation>%1 — 回放，无控制器</translation>
     </message>
+    <message>
+        <source>Create &amp;support bundle…</source>
+        <translation>创建支持包(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>One .zip file with the session logs, the profile and the settings, to send to support</source>
+        <translation>一个包含会话日志、参数文件和设置的 .zip 文件，用于发给技术支持</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -8120,6 +8128,59 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>cannot copy %1 out of %2 into %3</source>
         <translation>无法将 %1 从 %2 复制到 %3</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SupportBundleDialog</name>
+    <message>
+        <source>Create support bundle</source>
+        <translation>创建支持包</translation>
+    </message>
+    <message>
+        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
+        <translation>发给技术支持的单个 .zip 文件：会话日志（每次连接的每一帧）、参数文件及其调试清单、StepCom 的设置（其中没有任何密码）、StepCom、Qt 和操作系统的版本，以及见过的串口适配器。其中的 README 列出全部内容。</translation>
+    </message>
+    <message>
+        <source>The profile %1 and its checklist</source>
+        <translation>参数文件 %1 及其调试清单</translation>
+    </message>
+    <message>
+        <source>No profile is open</source>
+        <translation>未打开参数文件</translation>
+    </message>
+    <message>
+        <source>&amp;Save bundle…</source>
+        <translation>保存支持包(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Profile:</source>
+        <translation>参数文件：</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n session log(s), %1</source>
+        <translation>
+            <numerusform>%n 个会话日志，%1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save support bundle</source>
+        <translation>保存支持包</translation>
+    </message>
+    <message>
+        <source>Zip files (*.zip)</source>
+        <translation>Zip 文件 (*.zip)</translation>
+    </message>
+    <message>
+        <source>Support bundle written: %1 (%2). It holds:</source>
+        <translation>已写入支持包：%1（%2）。其中包含：</translation>
+    </message>
+    <message>
+        <source>The support bundle was not written: %1</source>
+        <translation>未写入支持包：%1</translation>
+    </message>
+    <message>
+        <source>Session logs of the last days:</source>
+        <translation>最近几天的会话日志：</translation>
     </message>
 </context>
 <context>

@@ -1,7 +1,8 @@
 #include "mainwindow.h"
 
-#include "backupguard.h" // issue 17
-#include "busactions.h"  // issue 16
+#include "backupguard.h"                 // issue 17
+#include "busactions.h"                  // issue 16
+#include "dialogs/supportbundledialog.h" // issue 26
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "help/guidewindow.h"
@@ -251,6 +252,20 @@ void MainWindow::createActions()
         openGuide(UserGuide::topics().contains(topic) ? topic : QString());
     });
     m_guideAction->setShortcutContext(Qt::ApplicationShortcut);
+    // Help from afar (issue 26): the dialog does the work, with the profile in use.
+    m_bundle = make("createSupportBundle", QKeySequence(), [this] {
+        const ProfileDocument *file = m_offline->document();
+        QString profile = file->isOpen() ? file->path() : m_checklist->profilePath();
+        if (profile.isEmpty())
+            profile = ProfileActions::recentFiles().value(0);
+        auto *dialog = new SupportBundleDialog(profile, this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        connect(dialog, &SupportBundleDialog::written, this, [this](bool ok, const QString &text) {
+            m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,
+                           text.section(QLatin1Char('\n'), 0, 0));
+        });
+        dialog->open();
+    });
     m_whatsThis = QWhatsThis::createAction(this);
     m_whatsThis->setObjectName(QStringLiteral("whatsThis"));
     m_languages = new QActionGroup(this);
@@ -319,6 +334,7 @@ void MainWindow::createMenus()
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_guideAction);
     m_helpMenu->addAction(m_whatsThis);
+    m_helpMenu->addAction(m_bundle); // issue 26
     m_helpMenu->addSeparator();
     m_helpMenu->addAction(m_about);
 }
@@ -402,6 +418,9 @@ void MainWindow::retranslate()
         tr("The user guide at the section about this page (%1)")
             .arg(m_guideAction->shortcut().toString(QKeySequence::NativeText)));
     m_whatsThis->setText(tr("What's &this?"));
+    m_bundle->setText(tr("Create &support bundle…"));
+    m_bundle->setToolTip(tr("One .zip file with the session logs, the profile and the settings, "
+                            "to send to support"));
     m_readAll->setText(tr("&Read all"));
     m_readAll->setToolTip(tr("Read every parameter from the controller (%1)")
                               .arg(m_readAll->shortcut().toString(QKeySequence::NativeText)));

@@ -142,6 +142,7 @@ private:
     QAction *m_about = nullptr;
     QAction *m_guideAction = nullptr;
     QAction *m_whatsThis = nullptr;
+    QAction *m_bundle = nullptr; // Help → Create support bundle… (issue 26)
     GuideWindow *m_guide = nullptr;
     QActionGroup *m_languages = nullptr;
     QMenu *m_fileMenu = nullptr;

@@ -22,16 +22,16 @@ inline QStringList enabledControls(MainWindow *window, const QSet<QString> &also
     // Reaches no controller: files, languages, editing, connecting (which ends the file editing
     // or the replay), finding controllers (a scan reads only; connecting from it ends them too),
     // and the views of what was recorded or logged.
-    QSet<QString> harmless{"newProfile", "openProfile", "saveProfile", "saveProfileAs",
-                           "closeProfile", "compareProfiles", "reportFromProfile",
-                           "saveProfileFromEdited", "revert", "quit", "about", "userGuide",
-                           "whatsThis", "emergencyStopButton", "emergencyStop", "language_en",
-                           "language_zh_CN", "connect", "scan", "refresh", "pauseButton",
-                           "fitButton", "clearTraceButton", "exportPngButton", "exportCsvButton",
-                           "recordButton", "previewFit", "previewExport", "openSessionLog",
-                           // StepCom's own settings and the checklist file, not the controller:
-                           // travel limits, the profile beside the checklist, a step skipped
-                           "applyTravelLimits", "chooseChecklistProfile", "skipButton"};
+    QSet<QString> harmless{
+        "newProfile", "openProfile", "saveProfile", "saveProfileAs", "closeProfile",
+        "compareProfiles", "reportFromProfile", "saveProfileFromEdited", "revert", "quit", "about",
+        "userGuide", "whatsThis", "emergencyStopButton", "emergencyStop", "language_en",
+        "language_zh_CN", "connect", "scan", "refresh", "pauseButton", "fitButton",
+        "clearTraceButton", "exportPngButton", "exportCsvButton", "recordButton", "previewFit",
+        "previewExport", "openSessionLog", "createSupportBundle",
+        // StepCom's own settings and the checklist file, not the controller:
+        // travel limits, the profile beside the checklist, a step skipped
+        "applyTravelLimits", "chooseChecklistProfile", "skipButton"};
     harmless.unite(alsoHarmless);
     const QSet<QString> logViews{"stepcom::TrafficView", "stepcom::MessageView"};
     QStringList enabled;

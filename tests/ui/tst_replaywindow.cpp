@@ -5,6 +5,7 @@
 // files give a message naming what is wrong and leave the window as it was.
 #include "../replay/logbuilder.h"
 #include "device/statusrecorder.h"
+#include "dialogs/supportbundledialog.h"
 #include "enabledcontrols.h"
 #include "language.h"
 #include "mainwindow.h"
@@ -457,6 +458,30 @@ private Q_SLOTS:
         QVERIFY(!replay()->isOpening());
         QVERIFY(!replay()->isActive());
         QVERIFY(!store()->isReplay());
+    }
+
+    // Help → Create support bundle…: the days' logs counted and sized, the bundle written and
+    // said, and it replays (the round trip).
+    void supportBundleFromTheHelpMenu()
+    {
+        window->action(QStringLiteral("createSupportBundle"))->trigger();
+        auto *dialog = window->findChild<SupportBundleDialog *>();
+        QVERIFY(dialog);
+        QVERIFY(dialog->isVisible());
+        dialog->setLogDirectory(dir.filePath(QStringLiteral("logs")));
+        dialog->setDays(3);
+        QVERIFY2(dialog->logsText().startsWith(QStringLiteral("1 session log, ")),
+                 qPrintable(dialog->logsText()));
+        QCOMPARE(dialog->input().days, 3);
+        QSignalSpy written(dialog, &SupportBundleDialog::written);
+        const QString zip = dir.filePath(QStringLiteral("from-window.zip"));
+        QVERIFY(dialog->createFile(zip));
+        QCOMPARE(written.size(), 1);
+        const QString said = written.at(0).at(1).toString();
+        QVERIFY2(said.contains(QStringLiteral("logs/session.log")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("README.txt")), qPrintable(said));
+        QVERIFY(openReplay(zip));
+        QCOMPARE(replay()->log().events().size(), replay()->bar()->slider()->markerCount());
     }
 };
 
