@@ -483,6 +483,23 @@ private Q_SLOTS:
         QVERIFY(openReplay(zip));
         QCOMPARE(replay()->log().events().size(), replay()->bar()->slider()->markerCount());
     }
+
+    // A low window (1024×600) gets the bar in one row; the replay never makes the window wider.
+    void theBarFitsALaptop()
+    {
+        const int before = window->minimumSizeHint().width();
+        QVERIFY(openReplay(logPath));
+        window->resize(1024, 600);
+        QCoreApplication::processEvents();
+        QVERIFY(replay()->bar()->isCompact());
+        QVERIFY2(window->minimumSizeHint().width() <= std::max(1024, before),
+                 qPrintable(QStringLiteral("%1 > %2")
+                                .arg(window->minimumSizeHint().width())
+                                .arg(std::max(1024, before))));
+        window->resize(1366, 900);
+        QCoreApplication::processEvents();
+        QVERIFY(!replay()->bar()->isCompact());
+    }
 };
 
 #include "testregistry.h"

@@ -57,25 +57,13 @@ ReplayBar::ReplayBar(QWidget *parent)
     m_devices->setObjectName(QStringLiteral("replayDevices"));
     m_deviceCaption->setBuddy(m_devices);
 
-    auto *top = new QHBoxLayout;
-    top->addWidget(m_play);
-    top->addWidget(m_speed);
-    top->addWidget(m_backFrame);
-    top->addWidget(m_nextFrame);
-    top->addWidget(m_slider, 1);
-    top->addWidget(m_momentLabel);
-    auto *bottom = new QHBoxLayout;
-    bottom->addWidget(m_backEvent);
-    bottom->addWidget(m_events, 1);
-    bottom->addWidget(m_nextEvent);
-    bottom->addWidget(m_deviceCaption);
-    bottom->addWidget(m_devices);
-    bottom->addStretch();
-    bottom->addWidget(m_close);
+    m_top = new QHBoxLayout;
+    m_bottom = new QHBoxLayout;
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 2, 4, 2);
-    layout->addLayout(top);
-    layout->addLayout(bottom);
+    layout->addLayout(m_top);
+    layout->addLayout(m_bottom);
+    place();
 
     m_timer.setInterval(kTickMs);
     connect(&m_timer, &QTimer::timeout, this, &ReplayBar::tick);
@@ -96,6 +84,54 @@ ReplayBar::ReplayBar(QWidget *parent)
             [this](int index) { Q_EMIT deviceChosen(m_devices->itemData(index).toInt()); });
     connect(m_close, &QToolButton::clicked, this, &ReplayBar::closeRequested);
     retranslate();
+}
+
+void ReplayBar::place()
+{
+    for (QHBoxLayout *row : {m_top, m_bottom}) {
+        while (QLayoutItem *item = row->takeAt(0))
+            delete item; // the widgets stay, only their places go
+    }
+    m_top->addWidget(m_play);
+    m_top->addWidget(m_speed);
+    m_top->addWidget(m_backFrame);
+    m_top->addWidget(m_nextFrame);
+    m_top->addWidget(m_slider, m_compact ? 2 : 1);
+    m_top->addWidget(m_momentLabel);
+    QHBoxLayout *events = m_compact ? m_top : m_bottom;
+    events->addWidget(m_backEvent);
+    events->addWidget(m_events, 1);
+    events->addWidget(m_nextEvent);
+    events->addWidget(m_deviceCaption);
+    events->addWidget(m_devices);
+    if (!m_compact)
+        events->addStretch();
+    events->addWidget(m_close);
+    m_events->setMinimumContentsLength(m_compact ? 12 : 24);
+}
+
+void ReplayBar::setCompact(bool compact)
+{
+    if (compact == m_compact)
+        return;
+    m_compact = compact;
+    place();
+}
+
+void ReplayBar::showEvent(QShowEvent *event)
+{
+    // The window's height decides, as it does for the machine strip.
+    if (window() != this)
+        window()->installEventFilter(this);
+    setCompact(window()->height() < std::max(720, fontMetrics().height() * 40));
+    QFrame::showEvent(event);
+}
+
+bool ReplayBar::eventFilter(QObject *watched, QEvent *event)
+{
+    if (watched == window() && event->type() == QEvent::Resize)
+        setCompact(window()->height() < std::max(720, fontMetrics().height() * 40));
+    return QFrame::eventFilter(watched, event);
 }
 
 void ReplayBar::setLog(qint64 durationMs, const QList<ReplayEvent> &events,

@@ -8,6 +8,7 @@
 #include <functional>
 
 class QComboBox;
+class QHBoxLayout;
 class QLabel;
 class QToolButton;
 
@@ -47,6 +48,9 @@ public:
     QComboBox *eventList() const { return m_events; }
     QComboBox *deviceList() const { return m_devices; }
     QToolButton *playButton() const { return m_play; }
+    // One row instead of two, for a low window (1024×600): the pages keep their room.
+    void setCompact(bool compact);
+    bool isCompact() const { return m_compact; }
 
 Q_SIGNALS:
     void seekRequested(qint64 ms);
@@ -56,11 +60,14 @@ Q_SIGNALS:
 
 protected:
     void changeEvent(QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     void retranslate();
     void fillEvents();
     void stepEvent(int direction);
+    void place();
 
     QToolButton *m_play;
     QComboBox *m_speed;
@@ -75,6 +82,9 @@ private:
     QComboBox *m_devices;
     QToolButton *m_close;
     QTimer m_timer;
+    QHBoxLayout *m_top;
+    QHBoxLayout *m_bottom;
+    bool m_compact = false;
     QList<ReplayEvent> m_eventList;
     std::function<QString(qint64)> m_momentText;
     qint64 m_moment = 0;
