@@ -7318,6 +7318,26 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Replay of %1 closed.</source>
         <translation>Replay of %1 closed.</translation>
     </message>
+    <message>
+        <source>Its last error, at %1: %2.</source>
+        <translation>Its last error, at %1: %2.</translation>
+    </message>
+    <message>
+        <source>At this moment the link is up.</source>
+        <translation>At this moment the link is up.</translation>
+    </message>
+    <message>
+        <source>At this moment the link is down.</source>
+        <translation>At this moment the link is down.</translation>
+    </message>
+    <message>
+        <source>Id %1 answers.</source>
+        <translation>Id %1 answers.</translation>
+    </message>
+    <message>
+        <source>Id %1 does not answer.</source>
+        <translation>Id %1 does not answer.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ReplayState</name>

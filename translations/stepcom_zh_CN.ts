@@ -7267,6 +7267,26 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Replay of %1 closed.</source>
         <translation>已关闭 %1 的回放。</translation>
     </message>
+    <message>
+        <source>Its last error, at %1: %2.</source>
+        <translation>其最后一次错误发生在 %1：%2。</translation>
+    </message>
+    <message>
+        <source>At this moment the link is up.</source>
+        <translation>此刻连接正常。</translation>
+    </message>
+    <message>
+        <source>At this moment the link is down.</source>
+        <translation>此刻连接已断开。</translation>
+    </message>
+    <message>
+        <source>Id %1 answers.</source>
+        <translation>ID %1 有应答。</translation>
+    </message>
+    <message>
+        <source>Id %1 does not answer.</source>
+        <translation>ID %1 无应答。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ReplayState</name>

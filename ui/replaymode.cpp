@@ -88,6 +88,7 @@ ReplayMode::ReplayMode(DeviceSession *session, QWidget *window)
     , m_close(new QAction(this))
     , m_banner(new QFrame(window))
     , m_bannerText(new QLabel(m_banner))
+    , m_bannerState(new QLabel(m_banner))
     , m_bar(new ReplayBar(window))
     , m_traffic(new TrafficLog(this))
     , m_log(session->map())
@@ -109,7 +110,12 @@ ReplayMode::ReplayMode(DeviceSession *session, QWidget *window)
     QFont bold = m_bannerText->font();
     bold.setBold(true);
     m_bannerText->setFont(bold);
-    (new QVBoxLayout(m_banner))->addWidget(m_bannerText);
+    m_bannerState->setObjectName(QStringLiteral("replayBannerState"));
+    m_bannerState->setWordWrap(true);
+    m_bannerState->setTextFormat(Qt::PlainText);
+    auto *bannerLayout = new QVBoxLayout(m_banner);
+    bannerLayout->addWidget(m_bannerText);
+    bannerLayout->addWidget(m_bannerState);
     m_banner->hide();
     m_bar->hide();
     m_traffic->setCapacity(5000);
@@ -165,6 +171,21 @@ QString ReplayMode::bannerText() const
         .arg(m_name);
 }
 
+QString ReplayMode::stateText(const ReplayState &state) const
+{
+    const ReplayDevice device = state.devices.value(m_device);
+    // Whole sentences, so each language words them its own way.
+    QString text =
+        (state.linkUp ? tr("At this moment the link is up.")
+                      : tr("At this moment the link is down.")) +
+        QLatin1Char(' ') +
+        (device.answering ? tr("Id %1 answers.") : tr("Id %1 does not answer.")).arg(m_device);
+    if (!device.lastError.isEmpty())
+        text += QLatin1Char(' ') + tr("Its last error, at %1: %2.")
+                                       .arg(m_log.momentText(device.lastErrorMs), device.lastError);
+    return text;
+}
+
 void ReplayMode::retranslate()
 {
     m_open->setText(tr("Open session &log…"));
@@ -173,6 +194,9 @@ void ReplayMode::retranslate()
                            .arg(m_open->shortcut().toString(QKeySequence::NativeText)));
     m_close->setText(tr("Close re&play"));
     m_bannerText->setText(bannerText());
+    if (m_active) // the words of the new language
+        m_stateText = stateText(m_log.stateAt(m_moment));
+    m_bannerState->setText(m_stateText);
 }
 
 bool ReplayMode::refused(QString *why) const
@@ -389,6 +413,8 @@ void ReplayMode::showMoment()
                    return true;
                });
     m_bar->setMoment(m_moment);
+    m_stateText = stateText(state);
+    m_bannerState->setText(m_stateText);
     Q_EMIT momentChanged(m_moment);
 }
 
@@ -442,6 +468,7 @@ void ReplayMode::close()
     m_unpacked.reset();
     const QString name = m_name;
     m_name.clear();
+    m_stateText.clear();
     m_devices.clear();
     Q_EMIT activeChanged(false);
     Q_EMIT finished(true, tr("Replay of %1 closed.").arg(name));

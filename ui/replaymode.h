@@ -55,6 +55,8 @@ public:
     // "session.log" (or "bundle.zip: logs/session.log").
     QString displayName() const { return m_name; }
     QString bannerText() const;
+    // What the link and the device in view were doing at the moment, in words.
+    QString momentStateText() const { return m_stateText; }
     qint64 moment() const { return m_moment; }
     int device() const { return m_device; }
     QList<int> devices() const { return m_devices; }
@@ -94,6 +96,7 @@ private:
     void openingDone();
     void fail(const QString &reason);
     void showMoment();
+    QString stateText(const ReplayState &state) const;
 
     DeviceSession *m_session;
     QWidget *m_window;
@@ -101,6 +104,7 @@ private:
     QAction *m_close;
     QFrame *m_banner;
     QLabel *m_bannerText;
+    QLabel *m_bannerState;
     ReplayBar *m_bar;
     QPointer<TrafficView> m_view;
     TrafficLog *m_traffic;
@@ -108,6 +112,7 @@ private:
     std::unique_ptr<QTemporaryDir> m_unpacked; // a bundle's log, copied out for the seeks
     std::shared_ptr<Opening> m_opening;
     QString m_name;
+    QString m_stateText;
     bool m_active = false;
     qint64 m_moment = 0;
     int m_device = 0;

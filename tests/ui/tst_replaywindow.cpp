@@ -246,6 +246,12 @@ private Q_SLOTS:
             QVERIFY(traffic->storedCount() > 0);
             QCOMPARE(session->traffic()->entries().size(), sent); // the session's own: nothing new
         }
+        QVERIFY2(
+            replay()->momentStateText().contains(QStringLiteral("the link is up. Id 1 answers.")),
+            qPrintable(replay()->momentStateText()));
+        replay()->seek(replay()->log().durationMs()); // after the disconnect
+        QVERIFY2(replay()->momentStateText().contains(QStringLiteral("link is down")),
+                 qPrintable(replay()->momentStateText()));
         QCOMPARE(moments.at(3).values.value(key("running")), 1);
         QVERIFY(moments.at(3).values.value(key("position")) !=
                 moments.at(4).values.value(key("position")));
