@@ -9,6 +9,10 @@
 #include "enabledcontrols.h"
 #include "language.h"
 #include "mainwindow.h"
+#include "map/factoryvalues.h"
+#include "offlineactions.h"
+#include "profile/profiledocument.h"
+#include "profile/profilefile.h"
 #include "replaymode.h"
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
@@ -505,6 +509,51 @@ private Q_SLOTS:
         window->resize(1366, 900);
         QCoreApplication::processEvents();
         QVERIFY(!replay()->bar()->isCompact());
+    }
+
+    // A bundle of several logs asks which one, the newest first.
+    void aBundleOfSeveralLogsAsks()
+    {
+        const QString logs = dir.filePath(QStringLiteral("two-logs"));
+        QDir().mkpath(logs);
+        QVERIFY(QFile::copy(logPath, logs + QStringLiteral("/a-older.log")));
+        QVERIFY(QFile::copy(logPath, logs + QStringLiteral("/b-newer.log")));
+        BundleInput input;
+        input.logDirectory = logs;
+        const QString zip = dir.filePath(QStringLiteral("two.zip"));
+        QString error;
+        QVERIFY2(SupportBundle::create(zip, input, nullptr, &error), qPrintable(error));
+        QSignalSpy opened(replay(), &ReplayMode::opened);
+        QVERIFY(replay()->openPath(zip));
+        QInputDialog *chooser = replay()->entryChooser();
+        QVERIFY(chooser);
+        QVERIFY(chooser->isVisible());
+        QCOMPARE(chooser->comboBoxItems(), (QStringList{"logs/b-newer.log", "logs/a-older.log"}));
+        QVERIFY(!replay()->isActive());
+        Q_EMIT chooser->textValueSelected(QStringLiteral("logs/a-older.log"));
+        chooser->close();
+        QVERIFY(opened.wait(15000) || !opened.isEmpty());
+        QVERIFY(replay()->displayName().endsWith(QStringLiteral("logs/a-older.log")));
+    }
+
+    // A profile file opened during a replay ends it; while a file is edited a replay is refused.
+    void aProfileFileAndAReplayTakeTurns()
+    {
+        const RegisterMap &map = session->map();
+        const QString profile = dir.filePath(QStringLiteral("machine.json"));
+        QCOMPARE(ProfileFile::save(
+                     profile, Profile::fromValues(map, FactoryValues::writable(map), false), map),
+                 QString());
+        QVERIFY(openReplay(logPath));
+        QVERIFY(window->offlineActions()->openFile(profile));
+        QVERIFY(!replay()->isActive());
+        QVERIFY(store()->isFile());
+        QVERIFY(!replay()->banner()->isVisibleTo(window.get()));
+        QSignalSpy failed(replay(), &ReplayMode::failed);
+        QVERIFY(!replay()->openPath(logPath));
+        QVERIFY(failed.at(0).at(0).toString().contains(QStringLiteral("profile file")));
+        QVERIFY(window->offlineActions()->closeFile());
+        QVERIFY(openReplay(logPath));
     }
 };
 
