@@ -13,6 +13,7 @@
 #include "offlineactions.h"
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
+#include "programrun.h"
 #include "replaymode.h"
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
@@ -29,6 +30,8 @@
 #include <QComboBox>
 #include <QFile>
 #include <QInputDialog>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -554,6 +557,36 @@ private Q_SLOTS:
         QVERIFY(failed.at(0).at(0).toString().contains(QStringLiteral("profile file")));
         QVERIFY(window->offlineActions()->closeFile());
         QVERIFY(openReplay(logPath));
+    }
+
+    // `stepcomctl replay --at` agrees with the window at every chosen moment.
+    void theCommandLineAgreesWithTheWindow()
+    {
+        QVERIFY(openReplay(logPath));
+        for (const Moment &m : std::as_const(moments)) {
+            const test::ProgramRun r = test::runProgram(
+                QStringLiteral("stepcomctl"), {"replay", logPath, "--at", m.clock, "--json"});
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            const QJsonObject cli = QJsonDocument::fromJson(r.out.toUtf8())
+                                        .object()
+                                        .value(QStringLiteral("devices"))
+                                        .toObject()
+                                        .value(QStringLiteral("1"))
+                                        .toObject()
+                                        .value(QStringLiteral("values"))
+                                        .toObject();
+            QString error;
+            replay()->seek(*replay()->log().parseTime(m.clock, &error));
+            const QHash<QString, qint64> shown = deviceValues();
+            QCOMPARE(cli.size(), shown.size());
+            for (auto it = shown.cbegin(); it != shown.cend(); ++it)
+                QVERIFY2(cli.value(it.key()).toDouble() ==
+                             session->map().find(it.key())->toEngineering(it.value()),
+                         qPrintable(QStringLiteral("%1 at %2: window %3, stepcomctl %4")
+                                        .arg(it.key(), m.what)
+                                        .arg(it.value())
+                                        .arg(cli.value(it.key()).toDouble())));
+        }
     }
 };
 
