@@ -7163,6 +7163,13 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Leave the replay; the window is empty again, ready to connect</source>
         <translation>Leave the replay; the window is empty again, ready to connect</translation>
     </message>
+    <message numerus="yes">
+        <source>… %n more event(s): Event ▶ reaches them</source>
+        <translation>
+            <numerusform>… %n more event: Event ▶ reaches them</numerusform>
+            <numerusform>… %n more events: Event ▶ reaches them</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ReplayDecoder</name>

@@ -7114,6 +7114,12 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Leave the replay; the window is empty again, ready to connect</source>
         <translation>退出回放；窗口恢复为空，可以连接</translation>
     </message>
+    <message numerus="yes">
+        <source>… %n more event(s): Event ▶ reaches them</source>
+        <translation>
+            <numerusform>… 还有 %n 个事件：用“事件 ▶”查看</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ReplayDecoder</name>

@@ -1,8 +1,8 @@
 // The window's replay of a session log (issue 26), offscreen: a session recorded by the window
 // itself against the built-in simulator (connect and read-all, a write, a move, a move stopped by
 // E-STOP) opens in replay mode, and at each chosen moment the store and the machine strip hold
-// exactly what the session held then; nothing writes; the markers are the log's events; bad
-// files give a message naming what is wrong and leave the window as it was.
+// exactly what the session held then (and what `stepcomctl replay --at` says); nothing writes;
+// the markers are the log's events; bundles replay; the support bundle dialog writes one.
 #include "../replay/logbuilder.h"
 #include "device/statusrecorder.h"
 #include "dialogs/supportbundledialog.h"
@@ -14,6 +14,7 @@
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
 #include "programrun.h"
+#include "replayfixture.h"
 #include "replaymode.h"
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
@@ -44,7 +45,7 @@
 
 using namespace stepcom;
 
-class TestReplayWindow : public QObject
+class TestReplayWindow : public test::ReplayFixture
 {
     Q_OBJECT
     // What the session held at a moment, and that moment's clock time in the log.
@@ -55,27 +56,9 @@ class TestReplayWindow : public QObject
         QHash<QString, qint64> values;
         QString position1; // the strip's text, when it had settled
     };
-    std::unique_ptr<DeviceSession> session;
-    std::unique_ptr<MainWindow> window;
-    QTemporaryDir dir;
     QString logPath;
     QList<Moment> moments;
 
-    ParameterStore *store() const { return session->parameters(); }
-    ReplayMode *replay() const { return window->replayMode(); }
-    QString key(const char *role) const
-    {
-        return session->map().blockParameter(QStringLiteral("motor"), 1, QLatin1String(role))->key;
-    }
-    QHash<QString, qint64> deviceValues() const
-    {
-        QHash<QString, qint64> out;
-        for (const Parameter *p : session->map().holdings()) {
-            if (const auto v = store()->deviceValue(p->key))
-                out.insert(p->key, *v);
-        }
-        return out;
-    }
     // What the session holds at the end of the next status cycle that satisfies `when`, taken in
     // the cycle's own signal: the poller puts a cycle's values into the store at its end, so
     // between its reads the log is ahead of the window.
@@ -103,28 +86,6 @@ class TestReplayWindow : public QObject
         disconnect(c);
         moments << *taken;
     }
-    bool openReplay(const QString &path)
-    {
-        QSignalSpy opened(replay(), &ReplayMode::opened);
-        if (!replay()->openPath(path))
-            return false;
-        return opened.wait(15000) || !opened.isEmpty();
-    }
-    QString failure(const QString &path)
-    {
-        QSignalSpy failed(replay(), &ReplayMode::failed);
-        if (replay()->openPath(path) && failed.isEmpty() && !failed.wait(15000))
-            return QString();
-        return failed.value(0).value(0).toString();
-    }
-    QString writeFile(const QString &name, const QByteArray &bytes) const
-    {
-        const QString path = dir.filePath(name);
-        QFile f(path);
-        if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size())
-            return {};
-        return path;
-    }
     QByteArray recorded() const
     {
         QFile f(logPath);
@@ -134,17 +95,11 @@ class TestReplayWindow : public QObject
 private Q_SLOTS:
     void initTestCase()
     {
-        QStandardPaths::setTestModeEnabled(true);
-        QApplication::setOrganizationName(QStringLiteral("StepComTest"));
         // The window records its session into one file, as `stepcomctl --log` does.
         logPath = dir.filePath(QStringLiteral("logs/session.log"));
         QDir().mkpath(dir.filePath(QStringLiteral("logs")));
-        Language::instance().setLanguage(QStringLiteral("en"));
-        session = std::make_unique<DeviceSession>();
-        test::useBuiltinSimulator(*session);
-        window = std::make_unique<MainWindow>(session.get());
+        openWindow();
         window->sessionLog()->setFile(logPath);
-        window->show();
 
         // 1. connect and read everything
         test::connectToSimulator(*session);
@@ -191,17 +146,8 @@ private Q_SLOTS:
         if (qEnvironmentVariableIsSet("REPLAY_KEEP_LOG"))
             QFile::copy(logPath, qEnvironmentVariable("REPLAY_KEEP_LOG"));
     }
-    void cleanupTestCase()
-    {
-        window.reset();
-        session.reset();
-    }
-    void cleanup()
-    {
-        replay()->close();
-        if (replay()->errorBox())
-            replay()->errorBox()->close();
-    }
+    void cleanupTestCase() { closeWindow(); }
+    void cleanup() { closeReplay(); }
 
     // At each chosen moment the store and the strip hold what the session held then, and the
     // traffic view ends at that moment.
@@ -383,39 +329,6 @@ private Q_SLOTS:
         QCOMPARE(replay()->log().events().size(), replay()->bar()->slider()->markerCount());
     }
 
-    void badFilesNameWhatIsWrong_data()
-    {
-        QTest::addColumn<QByteArray>("bytes");
-        QTest::addColumn<QString>("expected");
-        QTest::newRow("garbage") << QByteArray("hello\nthis is no log\n\x01\x02\x03\n")
-                                 << QStringLiteral("not a StepCom session log");
-        QTest::newRow("empty") << QByteArray() << QStringLiteral("is empty");
-        QTest::newRow("header only")
-            << QByteArray("# StepCom 0.1.0 session log, part 1: x\n# program: StepCom 0.1.0\n")
-            << QStringLiteral("holds no frames");
-        QTest::newRow("other map")
-            << QByteArray("# StepCom 0.1.0 session log, part 1: x\n# map: other/9\n")
-            << QStringLiteral("register map other/9");
-        QTest::newRow("zip without logs")
-            << QByteArray("PK\x03\x04garbage") << QStringLiteral("cannot be replayed");
-    }
-    void badFilesNameWhatIsWrong()
-    {
-        QFETCH(QByteArray, bytes);
-        QFETCH(QString, expected);
-        const QString title = window->windowTitle();
-        const QString path = writeFile(QStringLiteral("bad.log"), bytes);
-        const QString reason = failure(path);
-        QVERIFY2(reason.contains(expected), qPrintable(reason));
-        QVERIFY(replay()->errorBox());
-        QCOMPARE(replay()->errorBox()->text(), reason);
-        QVERIFY(!replay()->isActive());
-        QVERIFY(!store()->isReplay());
-        QCOMPARE(window->windowTitle(), title);
-        QVERIFY(failure(dir.filePath(QStringLiteral("missing.log")))
-                    .contains(QStringLiteral("no such file")));
-    }
-
     // A log cut short opens with what it has, and says so.
     void truncatedLogOpensWithAWarning()
     {
@@ -426,51 +339,6 @@ private Q_SLOTS:
         QVERIFY(openReplay(path));
         QVERIFY2(said.last().at(1).toString().contains(QStringLiteral("cut short")),
                  qPrintable(said.last().at(1).toString()));
-    }
-
-    // A line of several controllers: each one's values, chosen on the bar.
-    void severalDevicesEachTheirOwn()
-    {
-        const Parameter *speed = session->map().find(key("speed"));
-        test::LogBuilder log;
-        log.header();
-        log.read(1, speed->address, {300});
-        log.read(2, speed->address, {450});
-        log.read(1, speed->address, {310});
-        const QString path = log.save(dir, QStringLiteral("two.log"));
-        QVERIFY(openReplay(path));
-        QCOMPARE(replay()->devices(), (QList<int>{1, 2}));
-        QComboBox *devices = replay()->bar()->deviceList();
-        QVERIFY(devices->isVisibleTo(window.get()));
-        QCOMPARE(devices->count(), 2);
-        replay()->seek(replay()->log().durationMs());
-        QCOMPARE(store()->deviceValue(speed->key), 310);
-        devices->setCurrentIndex(1);
-        Q_EMIT devices->activated(1);
-        QCOMPARE(replay()->device(), 2);
-        QCOMPARE(store()->deviceValue(speed->key), 450);
-    }
-
-    // A big log shows its progress while it is read, and Cancel leaves the window as it was.
-    void aBigLogCanBeCancelled()
-    {
-        const Parameter *speed = session->map().find(key("speed"));
-        test::LogBuilder log;
-        log.header();
-        for (int i = 0; i < 150000; ++i) // about 20 MB
-            log.read(1, speed->address, {quint16(300 + i % 100)});
-        const QString path = log.save(dir, QStringLiteral("big.log"));
-        QSignalSpy failed(replay(), &ReplayMode::failed);
-        QVERIFY(replay()->openPath(path));
-        QVERIFY(replay()->isOpening());
-        QVERIFY(replay()->progress());
-        Q_EMIT replay()->progress()->canceled(); // what its Cancel button does
-        QVERIFY(failed.wait(15000) || !failed.isEmpty());
-        QVERIFY2(failed.at(0).at(0).toString().contains(QStringLiteral("cancelled")),
-                 qPrintable(failed.at(0).at(0).toString()));
-        QVERIFY(!replay()->isOpening());
-        QVERIFY(!replay()->isActive());
-        QVERIFY(!store()->isReplay());
     }
 
     // Help → Create support bundle…: the days' logs counted and sized, the bundle written and

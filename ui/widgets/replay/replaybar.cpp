@@ -7,6 +7,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
+#include <QStandardItemModel>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -158,12 +159,19 @@ void ReplayBar::setLog(qint64 durationMs, const QList<ReplayEvent> &events,
 void ReplayBar::fillEvents()
 {
     m_events->clear();
-    for (const ReplayEvent &e : m_eventList) {
+    const int listed = int(std::min<qsizetype>(m_eventList.size(), kListedEvents));
+    for (int i = 0; i < listed; ++i) {
+        const ReplayEvent &e = m_eventList.at(i);
         const QString moment = QStringLiteral("%1 s").arg(double(e.ms) / 1000.0, 0, 'f', 3);
         const QString device = e.device > 0 ? tr("id %1").arg(e.device) : tr("line");
         m_events->addItem(QStringLiteral("%1  %2  %3").arg(moment, device, e.text));
-        m_events->setItemData(m_events->count() - 1, QColor(ReplaySlider::colorOf(e.kind)),
-                              Qt::ForegroundRole);
+        m_events->setItemData(i, QColor(ReplaySlider::colorOf(e.kind)), Qt::ForegroundRole);
+    }
+    if (m_eventList.size() > listed) {
+        m_events->addItem(tr("… %n more event(s): Event ▶ reaches them", nullptr,
+                             int(m_eventList.size() - listed)));
+        if (auto *model = qobject_cast<QStandardItemModel *>(m_events->model()))
+            model->item(listed)->setEnabled(false); // shown, not chosen
     }
     m_events->setEnabled(!m_eventList.isEmpty());
     m_backEvent->setEnabled(!m_eventList.isEmpty());
@@ -186,7 +194,7 @@ void ReplayBar::setMoment(qint64 ms)
                                         [](qint64 t, const ReplayEvent &e) { return t < e.ms; });
     const int index = int(after - m_eventList.cbegin()) - 1;
     if (index >= 0)
-        m_events->setCurrentIndex(index);
+        m_events->setCurrentIndex(index < kListedEvents ? index : -1);
     if (ms >= m_duration)
         setPlaying(false);
 }

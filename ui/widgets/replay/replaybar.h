@@ -25,6 +25,9 @@ class ReplayBar : public QFrame
     Q_OBJECT
 public:
     static constexpr int kTickMs = 100; // playing: one step of the moment every tick
+    // The list names at most this many events (a dead line logs thousands of timeouts); the
+    // timeline and Event ◀ ▶ reach every one.
+    static constexpr int kListedEvents = 2000;
 
     explicit ReplayBar(QWidget *parent = nullptr);
 

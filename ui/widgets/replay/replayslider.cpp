@@ -2,6 +2,7 @@
 
 #include <QHelpEvent>
 #include <QPainter>
+#include <QSet>
 #include <QStyle>
 #include <QStyleOptionSlider>
 #include <QToolTip>
@@ -100,8 +101,14 @@ void ReplaySlider::paintEvent(QPaintEvent *event)
     QSlider::paintEvent(event);
     QPainter painter(this);
     const int top = height() * 2 / 3;
+    // A line per pixel and kind, however many events fall there (a dead line: thousands).
+    QSet<qint64> drawn;
     for (const ReplayEvent &e : m_events) {
         const int x = xOf(e.ms);
+        const qint64 place = qint64(x) * 16 + int(e.kind);
+        if (drawn.contains(place))
+            continue;
+        drawn.insert(place);
         // An E-STOP is drawn taller: it is what an engineer looks for first.
         const int from = e.kind == ReplayEvent::Kind::EmergencyStop ? height() / 3 : top;
         painter.setPen(QPen(colorOf(e.kind), 2));
