@@ -7345,6 +7345,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Id %1 does not answer.</source>
         <translation>Id %1 does not answer.</translation>
     </message>
+    <message>
+        <source>StepCom is trying to reconnect to the controller: cancel that before replaying a log.</source>
+        <translation>StepCom is trying to reconnect to the controller: cancel that before replaying a log.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ReplayState</name>

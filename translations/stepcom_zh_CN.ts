@@ -7293,6 +7293,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Id %1 does not answer.</source>
         <translation>ID %1 无应答。</translation>
     </message>
+    <message>
+        <source>StepCom is trying to reconnect to the controller: cancel that before replaying a log.</source>
+        <translation>StepCom 正在尝试重新连接控制器：回放日志前请先取消。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ReplayState</name>

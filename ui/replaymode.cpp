@@ -2,6 +2,7 @@
 
 #include "device/statusrecorder.h"
 #include "session/devicesession.h"
+#include "session/reconnector.h"
 #include "session/sessionlog.h"
 #include "support/supportbundle.h"
 #include "widgets/docks/trafficview.h"
@@ -203,6 +204,9 @@ bool ReplayMode::refused(QString *why) const
 {
     if (m_opening)
         *why = tr("A session log is being opened already.");
+    else if (m_session->reconnector()->isActive())
+        *why = tr("StepCom is trying to reconnect to the controller: cancel that before "
+                  "replaying a log.");
     else if (m_session->linkState() != DeviceSession::LinkState::Disconnected)
         *why = tr("Disconnect from the controller before replaying a log: a replay shows the "
                   "log's values where the controller's are.");
