@@ -144,6 +144,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
     // --- end working without the machine ---
     m_replay->setTrafficView(m_traffic); // issue 26
+    m_replay->setDeviceList(m_deviceDock);
     connect(m_replay, &ReplayMode::activeChanged, this, &MainWindow::showOrigin);
     connect(m_replay, &ReplayMode::finished, this, [this](bool ok, const QString &text) {
         m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning, text);

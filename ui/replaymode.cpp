@@ -5,6 +5,7 @@
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
 #include "support/supportbundle.h"
+#include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/replay/replaybar.h"
 
@@ -147,6 +148,11 @@ ReplayMode::~ReplayMode()
 void ReplayMode::setTrafficView(TrafficView *view)
 {
     m_view = view;
+}
+
+void ReplayMode::setDeviceList(DeviceListDock *list)
+{
+    m_deviceList = list;
 }
 
 QMessageBox *ReplayMode::errorBox() const
@@ -418,6 +424,13 @@ void ReplayMode::showMoment()
                });
     m_bar->setMoment(m_moment);
     m_stateText = stateText(state);
+    if (m_deviceList && m_devices.size() > 1) { // each device's state, as the list shows a line
+        QHash<int, bool> answering;
+        for (auto it = state.devices.cbegin(); it != state.devices.cend(); ++it)
+            answering.insert(it.key(), it->answering);
+        m_deviceList->showReplay(m_devices, answering, m_device,
+                                 [this](int id) { showDevice(id); });
+    }
     m_bannerState->setText(m_stateText);
     Q_EMIT momentChanged(m_moment);
 }
@@ -465,6 +478,8 @@ void ReplayMode::close()
         m_view->setLog(m_session->traffic());
     m_traffic->clear();
     m_session->recorder()->clear();
+    if (m_deviceList)
+        m_deviceList->endReplay();
     m_banner->hide();
     m_bar->hide();
     m_close->setEnabled(false);

@@ -18,6 +18,7 @@ class QWidget;
 
 namespace stepcom {
 
+class DeviceListDock;
 class DeviceSession;
 class ReplayBar;
 class TrafficLog;
@@ -48,6 +49,8 @@ public:
     ReplayBar *bar() const { return m_bar; }
     // The traffic dock shows the replay's lines while it runs, the session's again after.
     void setTrafficView(TrafficView *view);
+    // The device list shows the log's devices while it runs, the session's again after.
+    void setDeviceList(DeviceListDock *list);
 
     bool isActive() const { return m_active; }
     bool isOpening() const { return m_opening != nullptr; }
@@ -107,6 +110,7 @@ private:
     QLabel *m_bannerState;
     ReplayBar *m_bar;
     QPointer<TrafficView> m_view;
+    QPointer<DeviceListDock> m_deviceList;
     TrafficLog *m_traffic;
     ReplayLog m_log;
     std::unique_ptr<QTemporaryDir> m_unpacked; // a bundle's log, copied out for the seeks

@@ -3,11 +3,13 @@
 // session log at all (each named by what is wrong, the window left as it was).
 #include "../replay/logbuilder.h"
 #include "replayfixture.h"
+#include "widgets/docks/devicelistdock.h"
 #include "widgets/replay/replaybar.h"
 #include "widgets/replay/replayslider.h"
 
 #include <QComboBox>
 #include <QProgressDialog>
+#include <QTableWidget>
 #include <QTest>
 
 using namespace stepcom;
@@ -75,6 +77,18 @@ private Q_SLOTS:
         Q_EMIT devices->activated(1);
         QCOMPARE(replay()->device(), 2);
         QCOMPARE(store()->deviceValue(speed->key), 450);
+        // The device list shows the log's devices, and a click there shows one too.
+        DeviceListDock *list = window->deviceListDock();
+        QVERIFY(list->isReplay());
+        QCOMPARE(list->table()->rowCount(), 2);
+        QCOMPARE(list->rowTexts(0).value(0), QStringLiteral("1"));
+        QCOMPARE(list->rowTexts(1).value(2), QStringLiteral("answering (in view)"));
+        Q_EMIT list->table()->cellClicked(0, 0);
+        QCOMPARE(replay()->device(), 1);
+        QCOMPARE(store()->deviceValue(speed->key), 310);
+        QCOMPARE(list->rowTexts(0).value(2), QStringLiteral("answering (in view)"));
+        replay()->close();
+        QVERIFY(!list->isReplay());
     }
 
     // A big log shows its progress while it is read, and Cancel leaves the window as it was.
