@@ -11,6 +11,7 @@
 #include "mainwindow.h"
 #include "map/factoryvalues.h"
 #include "offlineactions.h"
+#include "pages/checklistpage.h"
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
 #include "programrun.h"
@@ -21,6 +22,7 @@
 #include "session/stepmove.h"
 #include "simsession.h"
 #include "support/supportbundle.h"
+#include "widgets/checklist/checkliststepwidget.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
@@ -139,6 +141,10 @@ private Q_SLOTS:
             last = now;
             return same;
         });
+        // 5. a checklist result (skipped), a user line of the log
+        auto *step = window->checklistPage()->stepWidget(QStringLiteral("motor1.direction"));
+        QVERIFY(step);
+        step->skipButton()->click();
         session->disconnectFrom();
         QTRY_VERIFY(!session->isConnected());
         QVERIFY(!store()->deviceValue(key("position")).has_value());
@@ -251,6 +257,12 @@ private Q_SLOTS:
         QVERIFY2(kinds.contains(QStringLiteral("write")), qPrintable(kinds.join(u' ')));
         QVERIFY2(kinds.contains(QStringLiteral("command")), qPrintable(kinds.join(u' ')));
         QVERIFY2(kinds.contains(QStringLiteral("estop")), qPrintable(kinds.join(u' ')));
+        const auto checklist =
+            std::find_if(events.cbegin(), events.cend(), [](const ReplayEvent &e) {
+                return e.kind == ReplayEvent::Kind::User && e.text.startsWith(u"checklist");
+            });
+        QVERIFY2(checklist != events.cend(), qPrintable(kinds.join(u' ')));
+        QCOMPARE(checklist->text, QStringLiteral("checklist motor1.direction: skipped"));
         const auto estop = std::find_if(events.cbegin(), events.cend(), [](const ReplayEvent &e) {
             return e.kind == ReplayEvent::Kind::EmergencyStop;
         });
