@@ -4982,6 +4982,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1%2 — profile file, no controller</source>
         <translation>%1%2 — profile file, no controller</translation>
     </message>
+    <message>
+        <source>%1 — replay, no controller</source>
+        <translation>%1 — replay, no controller</translation>
+    </message>
+    <message>
+        <source>Create &amp;support bundle…</source>
+        <translation>Create &amp;support bundle…</translation>
+    </message>
+    <message>
+        <source>One .zip file with the session logs, the profile and the settings, to send to support</source>
+        <translation>One .zip file with the session logs, the profile and the settings, to send to support</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -7139,6 +7151,104 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ReplayBar</name>
+    <message>
+        <source>id %1</source>
+        <translation>id %1</translation>
+    </message>
+    <message>
+        <source>line</source>
+        <translation>line</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Play</translation>
+    </message>
+    <message>
+        <source>Play the log at the chosen speed, or hold it at this moment</source>
+        <translation>Play the log at the chosen speed, or hold it at this moment</translation>
+    </message>
+    <message>
+        <source>Replay speed</source>
+        <translation>Replay speed</translation>
+    </message>
+    <message>
+        <source>◀ Frame</source>
+        <translation>◀ Frame</translation>
+    </message>
+    <message>
+        <source>The frame before this moment</source>
+        <translation>The frame before this moment</translation>
+    </message>
+    <message>
+        <source>Frame ▶</source>
+        <translation>Frame ▶</translation>
+    </message>
+    <message>
+        <source>The next frame after this moment</source>
+        <translation>The next frame after this moment</translation>
+    </message>
+    <message>
+        <source>Moment of the log</source>
+        <translation>Moment of the log</translation>
+    </message>
+    <message>
+        <source>Time from the start of the log (clock time)</source>
+        <translation>Time from the start of the log (clock time)</translation>
+    </message>
+    <message>
+        <source>◀ Event</source>
+        <translation>◀ Event</translation>
+    </message>
+    <message>
+        <source>The event before this moment</source>
+        <translation>The event before this moment</translation>
+    </message>
+    <message>
+        <source>Event ▶</source>
+        <translation>Event ▶</translation>
+    </message>
+    <message>
+        <source>The next event after this moment</source>
+        <translation>The next event after this moment</translation>
+    </message>
+    <message>
+        <source>Events of the log</source>
+        <translation>Events of the log</translation>
+    </message>
+    <message>
+        <source>Writes, commands, E-STOPs, errors, the link and restarts; choose one to see that moment</source>
+        <translation>Writes, commands, E-STOPs, errors, the link and restarts; choose one to see that moment</translation>
+    </message>
+    <message>
+        <source>&amp;Device:</source>
+        <translation>&amp;Device:</translation>
+    </message>
+    <message>
+        <source>The controller of the line shown on the pages</source>
+        <translation>The controller of the line shown on the pages</translation>
+    </message>
+    <message>
+        <source>Close replay</source>
+        <translation>Close replay</translation>
+    </message>
+    <message>
+        <source>Leave the replay; the window is empty again, ready to connect</source>
+        <translation>Leave the replay; the window is empty again, ready to connect</translation>
+    </message>
+    <message numerus="yes">
+        <source>… %n more event(s): Event ▶ reaches them</source>
+        <translation>
+            <numerusform>… %n more event: Event ▶ reaches them</numerusform>
+            <numerusform>… %n more events: Event ▶ reaches them</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ReplayDecoder</name>
     <message>
         <source>late answer (discarded): %1</source>
@@ -7214,6 +7324,107 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 is before the log&apos;s start (%2)</source>
         <translation>%1 is before the log&apos;s start (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReplayMode</name>
+    <message>
+        <source>Replay of %1 — nothing is written or moved. The pages show what the log says the controller held at the moment chosen below; connect or close the replay to work with a controller.</source>
+        <translation>Replay of %1 — nothing is written or moved. The pages show what the log says the controller held at the moment chosen below; connect or close the replay to work with a controller.</translation>
+    </message>
+    <message>
+        <source>Open session &amp;log…</source>
+        <translation>Open session &amp;log…</translation>
+    </message>
+    <message>
+        <source>Replay a session log or a support bundle: see what the window showed then, without a controller (%1)</source>
+        <translation>Replay a session log or a support bundle: see what the window showed then, without a controller (%1)</translation>
+    </message>
+    <message>
+        <source>Close re&amp;play</source>
+        <translation>Close re&amp;play</translation>
+    </message>
+    <message>
+        <source>A session log is being opened already.</source>
+        <translation>A session log is being opened already.</translation>
+    </message>
+    <message>
+        <source>Disconnect from the controller before replaying a log: a replay shows the log&apos;s values where the controller&apos;s are.</source>
+        <translation>Disconnect from the controller before replaying a log: a replay shows the log&apos;s values where the controller&apos;s are.</translation>
+    </message>
+    <message>
+        <source>Close the profile file before replaying a log.</source>
+        <translation>Close the profile file before replaying a log.</translation>
+    </message>
+    <message>
+        <source>Open session log</source>
+        <translation>Open session log</translation>
+    </message>
+    <message>
+        <source>Session logs and support bundles (*.log *.txt *.zip);;All files (*)</source>
+        <translation>Session logs and support bundles (*.log *.txt *.zip);;All files (*)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be replayed: %2</source>
+        <translation>%1 cannot be replayed: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 holds %n session log(s). Which one to replay?</source>
+        <translation>
+            <numerusform>%1 holds %n session log. Which one to replay?</numerusform>
+            <numerusform>%1 holds %n session logs. Which one to replay?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation>Reading %1…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancel</translation>
+    </message>
+    <message>
+        <source>Opening %1 was cancelled.</source>
+        <translation>Opening %1 was cancelled.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Replaying %1: %2 s, %n event(s).</source>
+        <translation>
+            <numerusform>Replaying %1: %2 s, %n event.</numerusform>
+            <numerusform>Replaying %1: %2 s, %n events.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Warning: %1.</source>
+        <translation>Warning: %1.</translation>
+    </message>
+    <message>
+        <source>Replay of %1 closed.</source>
+        <translation>Replay of %1 closed.</translation>
+    </message>
+    <message>
+        <source>Its last error, at %1: %2.</source>
+        <translation>Its last error, at %1: %2.</translation>
+    </message>
+    <message>
+        <source>At this moment the link is up.</source>
+        <translation>At this moment the link is up.</translation>
+    </message>
+    <message>
+        <source>At this moment the link is down.</source>
+        <translation>At this moment the link is down.</translation>
+    </message>
+    <message>
+        <source>Id %1 answers.</source>
+        <translation>Id %1 answers.</translation>
+    </message>
+    <message>
+        <source>Id %1 does not answer.</source>
+        <translation>Id %1 does not answer.</translation>
+    </message>
+    <message>
+        <source>StepCom is trying to reconnect to the controller: cancel that before replaying a log.</source>
+        <translation>StepCom is trying to reconnect to the controller: cancel that before replaying a log.</translation>
     </message>
 </context>
 <context>
@@ -8076,6 +8287,60 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>cannot copy %1 out of %2 into %3</source>
         <translation>cannot copy %1 out of %2 into %3</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SupportBundleDialog</name>
+    <message>
+        <source>Create support bundle</source>
+        <translation>Create support bundle</translation>
+    </message>
+    <message>
+        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
+        <translation>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</translation>
+    </message>
+    <message>
+        <source>The profile %1 and its checklist</source>
+        <translation>The profile %1 and its checklist</translation>
+    </message>
+    <message>
+        <source>No profile is open</source>
+        <translation>No profile is open</translation>
+    </message>
+    <message>
+        <source>&amp;Save bundle…</source>
+        <translation>&amp;Save bundle…</translation>
+    </message>
+    <message>
+        <source>Profile:</source>
+        <translation>Profile:</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n session log(s), %1</source>
+        <translation>
+            <numerusform>%n session log, %1</numerusform>
+            <numerusform>%n session logs, %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save support bundle</source>
+        <translation>Save support bundle</translation>
+    </message>
+    <message>
+        <source>Zip files (*.zip)</source>
+        <translation>Zip files (*.zip)</translation>
+    </message>
+    <message>
+        <source>Support bundle written: %1 (%2). It holds:</source>
+        <translation>Support bundle written: %1 (%2). It holds:</translation>
+    </message>
+    <message>
+        <source>The support bundle was not written: %1</source>
+        <translation>The support bundle was not written: %1</translation>
+    </message>
+    <message>
+        <source>Session logs of the last days:</source>
+        <translation>Session logs of the last days:</translation>
     </message>
 </context>
 <context>

@@ -4953,6 +4953,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1%2 — profile file, no controller</source>
         <translation>%1%2 — 参数文件，未连接控制器</translation>
     </message>
+    <message>
+        <source>%1 — replay, no controller</source>
+        <translation>%1 — 回放，无控制器</translation>
+    </message>
+    <message>
+        <source>Create &amp;support bundle…</source>
+        <translation>创建支持包(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>One .zip file with the session logs, the profile and the settings, to send to support</source>
+        <translation>一个包含会话日志、参数文件和设置的 .zip 文件，用于发给技术支持</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MessageView</name>
@@ -7089,6 +7101,103 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ReplayBar</name>
+    <message>
+        <source>id %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>line</source>
+        <translation>总线</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <source>Play the log at the chosen speed, or hold it at this moment</source>
+        <translation>按所选速度播放日志，或停在此刻</translation>
+    </message>
+    <message>
+        <source>Replay speed</source>
+        <translation>回放速度</translation>
+    </message>
+    <message>
+        <source>◀ Frame</source>
+        <translation>◀ 帧</translation>
+    </message>
+    <message>
+        <source>The frame before this moment</source>
+        <translation>此刻之前的一帧</translation>
+    </message>
+    <message>
+        <source>Frame ▶</source>
+        <translation>帧 ▶</translation>
+    </message>
+    <message>
+        <source>The next frame after this moment</source>
+        <translation>此刻之后的下一帧</translation>
+    </message>
+    <message>
+        <source>Moment of the log</source>
+        <translation>日志中的时刻</translation>
+    </message>
+    <message>
+        <source>Time from the start of the log (clock time)</source>
+        <translation>从日志开始起的时间（时钟时间）</translation>
+    </message>
+    <message>
+        <source>◀ Event</source>
+        <translation>◀ 事件</translation>
+    </message>
+    <message>
+        <source>The event before this moment</source>
+        <translation>此刻之前的事件</translation>
+    </message>
+    <message>
+        <source>Event ▶</source>
+        <translation>事件 ▶</translation>
+    </message>
+    <message>
+        <source>The next event after this moment</source>
+        <translation>此刻之后的下一个事件</translation>
+    </message>
+    <message>
+        <source>Events of the log</source>
+        <translation>日志中的事件</translation>
+    </message>
+    <message>
+        <source>Writes, commands, E-STOPs, errors, the link and restarts; choose one to see that moment</source>
+        <translation>写入、命令、急停、错误、连接和重启；选择一项即可查看那一时刻</translation>
+    </message>
+    <message>
+        <source>&amp;Device:</source>
+        <translation>设备(&amp;D)：</translation>
+    </message>
+    <message>
+        <source>The controller of the line shown on the pages</source>
+        <translation>页面上显示的总线上的控制器</translation>
+    </message>
+    <message>
+        <source>Close replay</source>
+        <translation>关闭回放</translation>
+    </message>
+    <message>
+        <source>Leave the replay; the window is empty again, ready to connect</source>
+        <translation>退出回放；窗口恢复为空，可以连接</translation>
+    </message>
+    <message numerus="yes">
+        <source>… %n more event(s): Event ▶ reaches them</source>
+        <translation>
+            <numerusform>… 还有 %n 个事件：用“事件 ▶”查看</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ReplayDecoder</name>
     <message>
         <source>late answer (discarded): %1</source>
@@ -7164,6 +7273,105 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 is before the log&apos;s start (%2)</source>
         <translation>%1 早于日志的开始时间（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ReplayMode</name>
+    <message>
+        <source>Replay of %1 — nothing is written or moved. The pages show what the log says the controller held at the moment chosen below; connect or close the replay to work with a controller.</source>
+        <translation>回放 %1 — 不写入任何参数，也不运动。页面显示日志记录的控制器在下方所选时刻的状态；如需操作控制器，请连接或关闭回放。</translation>
+    </message>
+    <message>
+        <source>Open session &amp;log…</source>
+        <translation>打开会话日志(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>Replay a session log or a support bundle: see what the window showed then, without a controller (%1)</source>
+        <translation>回放会话日志或支持包：无需控制器即可看到当时窗口显示的内容（%1）</translation>
+    </message>
+    <message>
+        <source>Close re&amp;play</source>
+        <translation>关闭回放(&amp;P)</translation>
+    </message>
+    <message>
+        <source>A session log is being opened already.</source>
+        <translation>已在打开一个会话日志。</translation>
+    </message>
+    <message>
+        <source>Disconnect from the controller before replaying a log: a replay shows the log&apos;s values where the controller&apos;s are.</source>
+        <translation>回放日志前请先断开控制器：回放会在控制器数值的位置显示日志中的数值。</translation>
+    </message>
+    <message>
+        <source>Close the profile file before replaying a log.</source>
+        <translation>回放日志前请先关闭参数文件。</translation>
+    </message>
+    <message>
+        <source>Open session log</source>
+        <translation>打开会话日志</translation>
+    </message>
+    <message>
+        <source>Session logs and support bundles (*.log *.txt *.zip);;All files (*)</source>
+        <translation>会话日志和支持包 (*.log *.txt *.zip);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be replayed: %2</source>
+        <translation>无法回放 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 holds %n session log(s). Which one to replay?</source>
+        <translation>
+            <numerusform>%1 包含 %n 个会话日志。要回放哪一个？</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reading %1…</source>
+        <translation>正在读取 %1…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Opening %1 was cancelled.</source>
+        <translation>已取消打开 %1。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Replaying %1: %2 s, %n event(s).</source>
+        <translation>
+            <numerusform>正在回放 %1：%2 秒，%n 个事件。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Warning: %1.</source>
+        <translation>警告：%1。</translation>
+    </message>
+    <message>
+        <source>Replay of %1 closed.</source>
+        <translation>已关闭 %1 的回放。</translation>
+    </message>
+    <message>
+        <source>Its last error, at %1: %2.</source>
+        <translation>其最后一次错误发生在 %1：%2。</translation>
+    </message>
+    <message>
+        <source>At this moment the link is up.</source>
+        <translation>此刻连接正常。</translation>
+    </message>
+    <message>
+        <source>At this moment the link is down.</source>
+        <translation>此刻连接已断开。</translation>
+    </message>
+    <message>
+        <source>Id %1 answers.</source>
+        <translation>ID %1 有应答。</translation>
+    </message>
+    <message>
+        <source>Id %1 does not answer.</source>
+        <translation>ID %1 无应答。</translation>
+    </message>
+    <message>
+        <source>StepCom is trying to reconnect to the controller: cancel that before replaying a log.</source>
+        <translation>StepCom 正在尝试重新连接控制器：回放日志前请先取消。</translation>
     </message>
 </context>
 <context>
@@ -8026,6 +8234,59 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>cannot copy %1 out of %2 into %3</source>
         <translation>无法将 %1 从 %2 复制到 %3</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SupportBundleDialog</name>
+    <message>
+        <source>Create support bundle</source>
+        <translation>创建支持包</translation>
+    </message>
+    <message>
+        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
+        <translation>发给技术支持的单个 .zip 文件：会话日志（每次连接的每一帧）、参数文件及其调试清单、StepCom 的设置（其中没有任何密码）、StepCom、Qt 和操作系统的版本，以及见过的串口适配器。其中的 README 列出全部内容。</translation>
+    </message>
+    <message>
+        <source>The profile %1 and its checklist</source>
+        <translation>参数文件 %1 及其调试清单</translation>
+    </message>
+    <message>
+        <source>No profile is open</source>
+        <translation>未打开参数文件</translation>
+    </message>
+    <message>
+        <source>&amp;Save bundle…</source>
+        <translation>保存支持包(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Profile:</source>
+        <translation>参数文件：</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n session log(s), %1</source>
+        <translation>
+            <numerusform>%n 个会话日志，%1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save support bundle</source>
+        <translation>保存支持包</translation>
+    </message>
+    <message>
+        <source>Zip files (*.zip)</source>
+        <translation>Zip 文件 (*.zip)</translation>
+    </message>
+    <message>
+        <source>Support bundle written: %1 (%2). It holds:</source>
+        <translation>已写入支持包：%1（%2）。其中包含：</translation>
+    </message>
+    <message>
+        <source>The support bundle was not written: %1</source>
+        <translation>未写入支持包：%1</translation>
+    </message>
+    <message>
+        <source>Session logs of the last days:</source>
+        <translation>最近几天的会话日志：</translation>
     </message>
 </context>
 <context>

@@ -1,7 +1,8 @@
 #include "mainwindow.h"
 
-#include "backupguard.h" // issue 17
-#include "busactions.h"  // issue 16
+#include "backupguard.h"                 // issue 17
+#include "busactions.h"                  // issue 16
+#include "dialogs/supportbundledialog.h" // issue 26
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "help/guidewindow.h"
@@ -19,6 +20,7 @@
 #include "pages/motorpage.h"
 #include "pages/plotpage.h" // monitoring (issue 5)
 #include "profileactions.h" // profiles (issue 7)
+#include "replaymode.h"     // replaying a session log (issue 26)
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/linkhealth.h"
@@ -35,6 +37,7 @@
 #include "widgets/docks/trafficview.h"
 #include "widgets/fields/verticalscrollarea.h"
 #include "widgets/motion/travellimitseditor.h" // issue 17
+#include "widgets/replay/replaybar.h"
 #include "writeflow.h"
 
 #include "profile/profiledocument.h"
@@ -86,6 +89,8 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     auto *centralLayout = new QVBoxLayout(central);
     centralLayout->setContentsMargins(0, 0, 0, 0);
     centralLayout->addWidget(m_offlineBanner);
+    m_replay = new ReplayMode(session, this); // issue 26: its banner there too, its bar below
+    centralLayout->addWidget(m_replay->banner());
     centralLayout->addWidget(splitter, 1);
     setCentralWidget(central);
     connect(m_sidebar, &PageSidebar::pageChosen, m_stack, &QStackedWidget::setCurrentIndex);
@@ -110,6 +115,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     // Under the pages, on every page: positions, states and the E-STOP (issue 25).
     m_strip = new MachineStrip(session, m_estop, central);
     m_strip->setDeviceNamer([this](int id) { return m_deviceDock->nameOf(id); });
+    centralLayout->addWidget(m_replay->bar());
     centralLayout->addWidget(m_strip);
     m_linkStatus = new LinkStatus(session, this);
     // A cable pulled and plugged back, an adapter that came back: the window tries again.
@@ -137,6 +143,14 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     });
     connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
     // --- end working without the machine ---
+    m_replay->setTrafficView(m_traffic); // issue 26
+    m_replay->setDeviceList(m_deviceDock);
+    // Checklist results become markers of a replay (the session log's user lines).
+    connect(m_checklist, &ChecklistPage::resultRecorded, m_sessionLog, &SessionLog::noteUserAction);
+    connect(m_replay, &ReplayMode::activeChanged, this, &MainWindow::showOrigin);
+    connect(m_replay, &ReplayMode::finished, this, [this](bool ok, const QString &text) {
+        m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning, text);
+    });
 
     connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
     connect(session->parameters(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
@@ -241,6 +255,20 @@ void MainWindow::createActions()
         openGuide(UserGuide::topics().contains(topic) ? topic : QString());
     });
     m_guideAction->setShortcutContext(Qt::ApplicationShortcut);
+    // Help from afar (issue 26): the dialog does the work, with the profile in use.
+    m_bundle = make("createSupportBundle", QKeySequence(), [this] {
+        const ProfileDocument *file = m_offline->document();
+        QString profile = file->isOpen() ? file->path() : m_checklist->profilePath();
+        if (profile.isEmpty())
+            profile = ProfileActions::recentFiles().value(0);
+        auto *dialog = new SupportBundleDialog(profile, this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        connect(dialog, &SupportBundleDialog::written, this, [this](bool ok, const QString &text) {
+            m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,
+                           text.section(QLatin1Char('\n'), 0, 0));
+        });
+        dialog->open();
+    });
     m_whatsThis = QWhatsThis::createAction(this);
     m_whatsThis->setObjectName(QStringLiteral("whatsThis"));
     m_languages = new QActionGroup(this);
@@ -280,6 +308,8 @@ void MainWindow::createMenus()
     m_fileMenu->addAction(m_offline->saveAsAction());
     m_fileMenu->addAction(m_offline->closeAction());
     m_fileMenu->addAction(m_offline->compareAction());
+    m_fileMenu->addAction(m_replay->openAction()); // issue 26
+    m_fileMenu->addAction(m_replay->closeAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->saveFromDeviceAction());
     m_fileMenu->addAction(m_profiles->saveFromEditedAction());
@@ -307,6 +337,7 @@ void MainWindow::createMenus()
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_guideAction);
     m_helpMenu->addAction(m_whatsThis);
+    m_helpMenu->addAction(m_bundle); // issue 26
     m_helpMenu->addSeparator();
     m_helpMenu->addAction(m_about);
 }
@@ -365,6 +396,11 @@ void MainWindow::showOrigin()
 {
     updateTitle();
     const ProfileDocument *file = m_offline->document();
+    if (m_replay->isActive()) { // issue 26: a recording, in its banner's colour
+        statusBar()->setStyleSheet(QStringLiteral(
+            "QStatusBar { background: #fff0c8; } QStatusBar QLabel { color: black; }"));
+        return;
+    }
     if (!file->isOpen()) {
         statusBar()->setStyleSheet(QString());
         return;
@@ -382,6 +418,9 @@ void MainWindow::retranslate()
         tr("The user guide at the section about this page (%1)")
             .arg(m_guideAction->shortcut().toString(QKeySequence::NativeText)));
     m_whatsThis->setText(tr("What's &this?"));
+    m_bundle->setText(tr("Create &support bundle…"));
+    m_bundle->setToolTip(tr("One .zip file with the session logs, the profile and the settings, "
+                            "to send to support"));
     m_readAll->setText(tr("&Read all"));
     m_readAll->setToolTip(tr("Read every parameter from the controller (%1)")
                               .arg(m_readAll->shortcut().toString(QKeySequence::NativeText)));
@@ -405,6 +444,7 @@ void MainWindow::retranslate()
     m_fileMenu->setTitle(tr("&File"));
     m_profiles->retranslate(); // profiles (issue 7)
     m_offline->retranslate();  // issue 18
+    m_replay->retranslate();   // issue 26
     m_deviceMenu->setTitle(tr("&Device"));
     m_viewMenu->setTitle(tr("&View"));
     m_languageMenu->setTitle(tr("&Language"));
@@ -440,6 +480,10 @@ void MainWindow::updateTitle()
 {
     // One title: the platform adds the program's name ("Motor 1 — StepCom"), so the page, or
     // the profile file being edited without a controller, is all we add.
+    if (m_replay && m_replay->isActive()) {
+        setWindowTitle(tr("%1 — replay, no controller").arg(m_replay->displayName()));
+        return;
+    }
     const ProfileDocument *file = m_offline ? m_offline->document() : nullptr;
     if (file && file->isOpen()) {
         setWindowTitle(

@@ -28,6 +28,7 @@ class Page;
 class PageSidebar; // issue 25
 class MachineActions;
 class ProfileActions; // profiles (issue 7)
+class ReplayMode;     // replaying a session log (issue 26)
 class DeviceListDock; // several controllers on one line (issue 16)
 class SessionLog;
 class StatusDock; // monitoring (issue 5)
@@ -63,6 +64,7 @@ public:
     MachineActions *machineActions() const { return m_machine; }  // issue 16
     OfflineActions *offlineActions() const { return m_offline; }  // issue 18
     OfflineBanner *offlineBanner() const { return m_offlineBanner; }
+    ReplayMode *replayMode() const { return m_replay; }          // issue 26
     ChecklistPage *checklistPage() const { return m_checklist; } // issue 17
     BackupGuard *backupGuard() const { return m_backups; }       // issue 17
     // The dialogs a test (or a curious user) may want to reach while they are open.
@@ -121,7 +123,8 @@ private:
     MachineActions *m_machine = nullptr;  // every device of the line (issue 16)
     OfflineActions *m_offline = nullptr;  // issue 18
     OfflineBanner *m_offlineBanner = nullptr;
-    bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once
+    ReplayMode *m_replay = nullptr; // issue 26
+    bool m_jogStopAwaited = false;  // jogging (issue 5): close waited for the stops once
     WriteFlow *m_writeFlow = nullptr;
     ChecklistPage *m_checklist = nullptr; // issue 17
     BackupGuard *m_backups = nullptr;     // issue 17
@@ -140,6 +143,7 @@ private:
     QAction *m_about = nullptr;
     QAction *m_guideAction = nullptr;
     QAction *m_whatsThis = nullptr;
+    QAction *m_bundle = nullptr; // Help → Create support bundle… (issue 26)
     GuideWindow *m_guide = nullptr;
     QActionGroup *m_languages = nullptr;
     QMenu *m_fileMenu = nullptr;

@@ -8,7 +8,10 @@
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
 #include "profileactions.h"
+#include "replaymode.h"
 #include "session/devicesession.h"
+#include "session/sessionlog.h"
+#include "session/stepmove.h"
 #include "shooter.h"
 #include "widgets/fields/parameterfield.h"
 
@@ -80,6 +83,54 @@ void compareFiles(Shooter &s)
                    [dialog] { return dialog() && dialog()->isVisible(); });
     s.shoot(Shooter::sceneFileName(QStringLiteral("profile-files-compare")), -1, dialog);
     script.then([dialog] { dialog()->close(); });
+}
+
+void replay(Shooter &s)
+{
+    Script &script = s.script();
+    const int page = s.pageIndex<MotorPage>();
+    const QString log = s.scratchPath(QStringLiteral("session-%1.log").arg(s.language()));
+    const QString speed = QStringLiteral("motor1.speed");
+    auto written = std::make_shared<qint64>(0);
+    script.then([&s, log] {
+        s.window()->sessionLog()->setFile(log);
+        s.session()->connectSimulator();
+    });
+    script.waitFor(QStringLiteral("the read-all of the recorded session"), [&s] {
+        return s.session()->isConnected() &&
+               s.session()->parameters()->deviceValue(QStringLiteral("motor1.position"));
+    });
+    script.then([&s, speed, written] {
+        *written = s.session()->parameters()->deviceValue(speed).value_or(300) + 50;
+        s.session()->parameters()->edit(speed, *written);
+        s.session()->writeChanges();
+    });
+    script.waitFor(QStringLiteral("the recorded write"), [&s, speed, written] {
+        return s.session()->parameters()->deviceValue(speed) == *written;
+    });
+    script.then([&s] { s.session()->stepMove()->start({StepMoveRequest::Kind::By, 1, 20.0, 0}); });
+    script.sleep(300);
+    script.waitFor(QStringLiteral("the recorded move"),
+                   [&s] { return !s.session()->stepMove()->isBusy(); });
+    script.then([&s] { s.session()->disconnectFrom(); });
+    script.waitFor(QStringLiteral("the disconnect"), [&s] { return !s.session()->isConnected(); });
+    script.then([&s, log] {
+        s.window()->sessionLog()->setFile(QString());
+        s.window()->replayMode()->openPath(log);
+    });
+    script.waitFor(QStringLiteral("the replay"),
+                   [&s] { return s.window()->replayMode()->isActive(); });
+    script.then([&s, page] {
+        ReplayMode *replay = s.window()->replayMode();
+        // A moment of the move: after its command, before it ends.
+        for (const ReplayEvent &e : replay->log().events()) {
+            if (e.kind == ReplayEvent::Kind::Command)
+                replay->seek(e.ms + 400);
+        }
+        s.window()->showPage(page);
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("replay")), page);
+    script.then([&s] { s.window()->replayMode()->close(); });
 }
 
 } // namespace stepcom::offlinescenes

@@ -529,6 +529,7 @@ const QList<Scene> &scenes()
         // Without a controller (issue 18): after port-missing, which leaves it disconnected.
         {QStringLiteral("offline-editing"), W::AfterPages, &offlinescenes::editing},
         {QStringLiteral("profile-files-compare"), W::AfterPages, &offlinescenes::compareFiles},
+        {QStringLiteral("replay"), W::AfterPages, &offlinescenes::replay}, // issue 26
     };
     return table;
 }

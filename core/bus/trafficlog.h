@@ -40,6 +40,8 @@ public:
     void addFrame(TrafficEntry::Direction direction, const QByteArray &raw, int pduOffset,
                   int crcBytes, const Request *context);
     void addEvent(const QString &text, TrafficEntry::Kind kind = TrafficEntry::Kind::Event);
+    // An entry made elsewhere, its time included (a replayed session log's line).
+    void add(const TrafficEntry &entry) { append(entry); }
     const QList<TrafficEntry> &entries() const { return m_entries; }
     void clear();
 

@@ -61,8 +61,8 @@ void ParameterStore::setDeviceValues(const QHash<QString, qint64> &values)
 
 void ParameterStore::forgetDeviceValues()
 {
-    if (m_file)
-        return;                                // a file's values: no link to lose
+    if (m_file || m_replay)
+        return;                                // a file's or a log's values: no link to lose
     const QStringList keys = m_entries.keys(); // update() may detach a hash a snapshot shares
     for (const QString &key : keys) {
         Entry e = m_entries.value(key);
@@ -195,7 +195,7 @@ void ParameterStore::applyWriteOutcome(const QList<ParameterWrite> &writes,
         setUnsavedToFlash(true);
 }
 
-void ParameterStore::openFile(const QString &name, const QHash<QString, qint64> &values)
+void ParameterStore::holdOnly(const QHash<QString, qint64> &values)
 {
     const QStringList keys = m_entries.keys(); // update() may detach a hash a snapshot shares
     for (const QString &key : keys)
@@ -203,8 +203,15 @@ void ParameterStore::openFile(const QString &name, const QHash<QString, qint64> 
                Entry{values.contains(key) ? std::optional<qint64>(values.value(key)) : std::nullopt,
                      std::nullopt, State::Unknown, QString()});
     setUnsavedToFlash(false);
+}
+
+void ParameterStore::openFile(const QString &name, const QHash<QString, qint64> &values)
+{
+    holdOnly(values);
     m_file = true;
     m_fileName = name;
+    m_replay = false;
+    m_replayName.clear();
     Q_EMIT originChanged();
 }
 
@@ -212,11 +219,29 @@ void ParameterStore::closeFile()
 {
     if (!m_file)
         return;
-    const QStringList keys = m_entries.keys();
-    for (const QString &key : keys)
-        update(key, Entry());
+    holdOnly({});
     m_file = false;
     m_fileName.clear();
+    Q_EMIT originChanged();
+}
+
+void ParameterStore::showReplay(const QString &name, const QHash<QString, qint64> &values)
+{
+    holdOnly(values);
+    const bool began = !m_replay || m_replayName != name;
+    m_replay = true;
+    m_replayName = name;
+    if (began)
+        Q_EMIT originChanged();
+}
+
+void ParameterStore::closeReplay()
+{
+    if (!m_replay)
+        return;
+    holdOnly({});
+    m_replay = false;
+    m_replayName.clear();
     Q_EMIT originChanged();
 }
 

@@ -85,6 +85,15 @@ public:
     bool isFile() const { return m_file; }
     QString fileName() const { return m_fileName; }
 
+    // Replaying a session log (issue 26): what the log says the controller held at a moment
+    // stands where the controller's values would, as a read would have put it (views show it
+    // unchanged, the link's state aside). Replaces everything held, edits included; each moment
+    // shown calls it again. closeReplay() forgets it all.
+    void showReplay(const QString &name, const QHash<QString, qint64> &values);
+    void closeReplay();
+    bool isReplay() const { return m_replay; }
+    QString replayName() const { return m_replayName; }
+
     // Set after any successful write until "save to flash" succeeds.
     bool unsavedToFlash() const { return m_unsaved; }
     void setUnsavedToFlash(bool unsaved);
@@ -95,11 +104,13 @@ Q_SIGNALS:
     void unsavedChanged(bool unsaved);
     // revertAll(): every field drops what it shows that is not held (a rejected typed value).
     void reverted();
-    // A file was opened or closed (openFile, closeFile).
+    // A file was opened or closed (openFile, closeFile), a replay begun or ended.
     void originChanged();
 
 private:
     void update(const QString &key, const Entry &entry);
+    // Holds `values` as the device's and nothing else: every other value unknown, no edits.
+    void holdOnly(const QHash<QString, qint64> &values);
     static State stateOf(const Entry &e);
 
     RegisterMap m_map;
@@ -107,6 +118,8 @@ private:
     bool m_unsaved = false;
     bool m_file = false;
     QString m_fileName;
+    bool m_replay = false;
+    QString m_replayName;
 };
 
 } // namespace stepcom

@@ -86,23 +86,47 @@ void StatusRecorder::attach(Poller *poller)
 
 void StatusRecorder::takeSample()
 {
+    const qint64 elapsed = m_clock.elapsed();
+    append(sampleOf([this](const QString &key) { return m_store->deviceValue(key); }, elapsed,
+                    m_epochAtStart + elapsed));
+}
+
+void StatusRecorder::addSample(const QHash<QString, qint64> &values, qint64 elapsedMs,
+                               qint64 epochMs)
+{
+    append(sampleOf(
+        [&values](const QString &key) {
+            const auto it = values.constFind(key);
+            return it == values.cend() ? std::nullopt : std::optional<qint64>(*it);
+        },
+        elapsedMs, epochMs));
+}
+
+StatusSample
+StatusRecorder::sampleOf(const std::function<std::optional<qint64>(const QString &)> &valueOf,
+                         qint64 elapsedMs, qint64 epochMs) const
+{
     StatusSample s;
-    s.elapsedMs = m_clock.elapsed();
-    s.epochMs = m_epochAtStart + s.elapsedMs;
+    s.elapsedMs = elapsedMs;
+    s.epochMs = epochMs;
     s.positions.reserve(m_motors);
     s.running.reserve(m_motors);
     for (int m = 0; m < m_motors; ++m) {
-        const auto raw = m_store->deviceValue(m_positionKeys.at(m));
+        const auto raw = valueOf(m_positionKeys.at(m));
         s.positions << (raw ? double(*raw) / m_positionScale.at(m)
                             : std::numeric_limits<double>::quiet_NaN());
-        s.running << flagOf(m_runningKeys.at(m).isEmpty()
-                                ? std::nullopt
-                                : m_store->deviceValue(m_runningKeys.at(m)));
+        s.running << flagOf(m_runningKeys.at(m).isEmpty() ? std::nullopt
+                                                          : valueOf(m_runningKeys.at(m)));
     }
     for (const QString &k : std::as_const(m_inputKeys))
-        s.inputs << flagOf(m_store->deviceValue(k));
+        s.inputs << flagOf(valueOf(k));
     for (const QString &k : std::as_const(m_outputKeys))
-        s.outputs << flagOf(m_store->deviceValue(k));
+        s.outputs << flagOf(valueOf(k));
+    return s;
+}
+
+void StatusRecorder::append(const StatusSample &s)
+{
     m_history.push_back(s);
     trim();
     if (m_file.isOpen()) {

@@ -2,11 +2,14 @@
 
 #include <QElapsedTimer>
 #include <QFile>
+#include <QHash>
 #include <QObject>
 #include <QStringList>
 #include <QVector>
 
 #include <deque>
+#include <functional>
+#include <optional>
 
 namespace stepcom {
 
@@ -50,6 +53,9 @@ public:
     void attach(Poller *poller);
     // Sample the store now (what attach() does after each cycle).
     void takeSample();
+    // A sample of `values` (raw, by key; a key missing is unknown) at a moment of another clock:
+    // a replayed log's (issue 26). Kept and recorded as any other sample.
+    void addSample(const QHash<QString, qint64> &values, qint64 elapsedMs, qint64 epochMs);
 
     // The history keeps at most this many samples and drops those older than maxAgeMs.
     void setCapacity(int samples);
@@ -95,6 +101,9 @@ Q_SIGNALS:
 
 private:
     void trim();
+    void append(const StatusSample &sample);
+    StatusSample sampleOf(const std::function<std::optional<qint64>(const QString &)> &valueOf,
+                          qint64 elapsedMs, qint64 epochMs) const;
 
     ParameterStore *m_store;
     int m_motors = 0;

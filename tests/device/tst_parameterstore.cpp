@@ -121,6 +121,40 @@ private Q_SLOTS:
         store.revertAll();
         QCOMPARE(store.state(QStringLiteral("motor1.speed")), ParameterStore::State::Unknown);
     }
+
+    // A replayed moment (issue 26) stands where the controller's values would: the moment's
+    // values only, edits dropped, kept when a link is lost, forgotten when the replay closes.
+    void aReplayedMomentHoldsOnlyItsValues()
+    {
+        ParameterStore store(map);
+        const QString speed = QStringLiteral("motor1.speed");
+        const QString pitch = QStringLiteral("motor1.pitch");
+        store.setDeviceValues({{speed, 300}, {pitch, 500}});
+        QVERIFY(store.edit(speed, 450).isEmpty());
+        QSignalSpy origin(&store, &ParameterStore::originChanged);
+        store.showReplay(QStringLiteral("a.log"), {{speed, 320}});
+        QVERIFY(store.isReplay());
+        QCOMPARE(store.replayName(), QStringLiteral("a.log"));
+        QCOMPARE(store.deviceValue(speed), 320);
+        QCOMPARE(store.state(speed), ParameterStore::State::InSync);
+        QVERIFY(!store.deviceValue(pitch).has_value());
+        QVERIFY(!store.hasEdits());
+        store.showReplay(QStringLiteral("a.log"), {{pitch, 250}}); // another moment
+        QVERIFY(!store.deviceValue(speed).has_value());
+        QCOMPARE(store.deviceValue(pitch), 250);
+        QCOMPARE(origin.size(), 1); // one replay, many moments
+        store.forgetDeviceValues(); // no link to lose
+        QCOMPARE(store.deviceValue(pitch), 250);
+        store.closeReplay();
+        QVERIFY(!store.isReplay());
+        QVERIFY(!store.deviceValue(pitch).has_value());
+        QCOMPARE(origin.size(), 2);
+        // A profile file opened during a replay ends it.
+        store.showReplay(QStringLiteral("a.log"), {{pitch, 250}});
+        store.openFile(QStringLiteral("m.json"), {{speed, 400}});
+        QVERIFY(!store.isReplay());
+        QVERIFY(store.isFile());
+    }
 };
 
 #include "testregistry.h"

@@ -1,5 +1,6 @@
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilefilesdialog.h"
+#include "enabledcontrols.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "map/factoryvalues.h"
@@ -209,59 +210,7 @@ private Q_SLOTS:
         QVERIFY(offline()->openFile(path));
         field(QStringLiteral("motor1.speed"))->enterText(QStringLiteral("450")); // an edit
         field(QStringLiteral("motor1.move_distance"))->enterText(QStringLiteral("12"));
-        // Reaches no controller: files, languages, editing, connecting (which ends the file
-        // editing), finding controllers (a scan reads only; connecting from it ends the file
-        // editing too), and the views of what was recorded or logged.
-        const QSet<QString> harmless{
-            "newProfile", "openProfile", "saveProfile", "saveProfileAs", "closeProfile",
-            "compareProfiles", "reportFromProfile", "saveProfileFromEdited", "revert", "quit",
-            "about", "userGuide", "whatsThis", "emergencyStopButton", "emergencyStop",
-            "language_en", "language_zh_CN", "connect", "scan", "refresh", "pauseButton",
-            "fitButton", "clearTraceButton", "exportPngButton", "exportCsvButton", "recordButton",
-            "previewFit", "previewExport",
-            // StepCom's own settings and the checklist file, not the
-            // controller: travel limits, the profile beside the
-            // checklist, a step skipped
-            "applyTravelLimits", "chooseChecklistProfile", "skipButton"};
-        const QSet<QString> logViews{"stepcom::TrafficView", "stepcom::MessageView"};
-        QStringList enabled;
-        for (QAction *a : window->findChildren<QAction *>()) {
-            if (!a->isEnabled() || a->isSeparator() || a->menu() || a->text().isEmpty())
-                continue;
-            if (a->objectName().isEmpty() && a->isCheckable())
-                continue; // a dock's or toolbar's show/hide toggle
-            if (auto *menu = qobject_cast<QMenu *>(a->parent());
-                menu && menu->objectName() == QLatin1String("recentProfiles"))
-                continue; // a recent profile: opened as a file too
-            if (!harmless.contains(a->objectName()))
-                enabled << QStringLiteral("action %1 \"%2\"").arg(a->objectName(), a->text());
-        }
-        const auto walk = [&](QWidget *root, const QString &where) {
-            for (QAbstractButton *b : root->findChildren<QAbstractButton *>()) {
-                if (!b->isEnabled() || !b->isVisibleTo(window.get()))
-                    continue;
-                auto *tool = qobject_cast<QToolButton *>(b);
-                if (b->isCheckable() && !qobject_cast<QPushButton *>(b))
-                    continue; // check boxes and radio buttons choose, they do not act
-                if (b->objectName().startsWith(u"qt_") ||
-                    (tool && !tool->defaultAction() && b->objectName().isEmpty()))
-                    continue; // scroll and tab arrows, a dock's float and close buttons
-                if (tool && tool->defaultAction())
-                    continue; // a toolbar's action: walked above
-                if (b->parentWidget() && logViews.contains(QString::fromLatin1(
-                                             b->parentWidget()->metaObject()->className())))
-                    continue; // clear, copy or save a log
-                if (!harmless.contains(b->objectName()))
-                    enabled << QStringLiteral("%1: button %2 \"%3\"")
-                                   .arg(where, b->objectName(), b->text());
-            }
-        };
-        for (int i = 0; i < window->pages().size(); ++i) {
-            window->showPage(i); // every page as the user sees it
-            QCoreApplication::processEvents();
-            walk(window->pages().at(i), window->pages().at(i)->title());
-        }
-        walk(window.get(), QStringLiteral("window")); // docks, toolbar, the last page again
+        const QStringList enabled = test::enabledControls(window.get());
         QVERIFY2(enabled.isEmpty(), qPrintable(enabled.join(QLatin1Char('\n'))));
         QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
         QVERIFY(!window->action(QStringLiteral("saveToFlash"))->isEnabled());

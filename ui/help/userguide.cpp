@@ -34,6 +34,8 @@ const Section sections[] = {
     {"stepcom::ProfileCompareDialog", "Profiles and the commissioning report",
      "参数文件与调试报告"},
     {"stepcom::TrafficView", "The traffic log and the session log files", "通信记录与会话日志文件"},
+    {"stepcom::SupportBundleDialog", "Help from afar: replay a session, send a support bundle",
+     "远程支持：回放会话、发送支持包"},
 };
 
 } // namespace

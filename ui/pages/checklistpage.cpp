@@ -169,6 +169,8 @@ void ChecklistPage::onRecorded(const QString &id, StepResult result,
         m_problem->setText(e);
         return;
     }
+    Q_EMIT resultRecorded(
+        QStringLiteral("checklist %1: %2").arg(id, ChecklistStep::resultWord(result)));
     // The settings this result was had with: the report warns when the machine's differ now.
     QHash<QString, qint64> values;
     for (const Parameter *p : Profile::profileParameters(session()->map(), false)) {

@@ -53,6 +53,11 @@ public:
 protected:
     void retranslate() override;
 
+Q_SIGNALS:
+    // A step's result was recorded: "checklist motor1.direction: passed" (English, for the
+    // session log's user lines, issue 26).
+    void resultRecorded(const QString &what);
+
 private:
     void load();
     void onRecorded(const QString &id, StepResult result,

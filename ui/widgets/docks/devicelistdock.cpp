@@ -203,8 +203,37 @@ void DeviceListDock::retranslate()
     refresh();
 }
 
+void DeviceListDock::showReplay(const QList<int> &ids, const QHash<int, bool> &answering,
+                                int inView, const std::function<void(int)> &choose)
+{
+    m_replay = Replay{ids, answering, inView, choose};
+    refresh();
+}
+
+void DeviceListDock::endReplay()
+{
+    m_replay.reset();
+    refresh();
+}
+
+QList<int> DeviceListDock::ids() const
+{
+    return m_replay ? m_replay->ids : m_session->deviceIds();
+}
+
+int DeviceListDock::inView() const
+{
+    return m_replay ? m_replay->inView : m_session->deviceInView();
+}
+
 QString DeviceListDock::stateText(int id) const
 {
+    if (m_replay) { // what the log says of it at the moment shown
+        const bool answering = m_replay->answering.value(id);
+        if (id == m_replay->inView)
+            return answering ? tr("answering (in view)") : tr("not answering (in view)");
+        return answering ? tr("answering") : tr("not answering");
+    }
     if (!m_session->isConnected())
         return tr("not connected");
     // A motion followed on a device (in view or not) says more than "answering".
@@ -236,7 +265,7 @@ QString DeviceListDock::stateText(int id) const
 
 QString DeviceListDock::referencedText(int id) const
 {
-    if (!m_session->isConnected())
+    if (m_replay || !m_session->isConnected())
         return tr("unknown");
     QStringList axes; // references are followed on every device of the line
     for (int m : m_session->motion()->references()->referencedMotors(id))
@@ -248,12 +277,13 @@ QString DeviceListDock::referencedText(int id) const
 
 void DeviceListDock::refresh()
 {
-    const QList<int> ids = m_session->deviceIds();
+    const QList<int> ids = this->ids();
     m_filling = true;
     m_table->setRowCount(int(ids.size()));
     for (int row = 0; row < ids.size(); ++row) {
         const int id = ids.at(row);
-        const BusDeviceStatus status = m_session->deviceStatus(id);
+        const BusDeviceStatus status =
+            m_replay ? BusDeviceStatus::of(id) : m_session->deviceStatus(id);
         const QStringList texts{QString::number(id), m_names.value(id), stateText(id),
                                 referencedText(id),
                                 status.cycles > 0 ? QString::number(status.errors) : QString()};
@@ -270,7 +300,7 @@ void DeviceListDock::refresh()
             if (c == ErrorsColumn) // failed status reads; the last one's reason on hover
                 item->setToolTip(status.errors > 0 ? status.lastError : QString());
         }
-        if (id == m_session->deviceInView())
+        if (id == inView())
             m_table->selectRow(row);
     }
     m_filling = false;
@@ -278,8 +308,12 @@ void DeviceListDock::refresh()
 
 void DeviceListDock::onCellClicked(int row)
 {
-    const int id = m_session->deviceIds().value(row, 0);
-    if (id > 0 && id != m_session->deviceInView())
+    const int id = ids().value(row, 0);
+    if (id <= 0 || id == inView())
+        return;
+    if (m_replay)
+        m_replay->choose(id);
+    else
         m_session->showDevice(id);
 }
 
@@ -287,7 +321,7 @@ void DeviceListDock::onCellChanged(int row, int column)
 {
     if (m_filling || column != NameColumn)
         return;
-    const int id = m_session->deviceIds().value(row, 0);
+    const int id = ids().value(row, 0);
     if (id > 0) {
         m_names.insert(id, m_table->item(row, column)->text().trimmed());
         saveList();

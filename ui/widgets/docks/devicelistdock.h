@@ -3,6 +3,9 @@
 #include <QDockWidget>
 #include <QHash>
 
+#include <functional>
+#include <optional>
+
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -37,6 +40,13 @@ public:
     bool restoreList();
     // The row's texts, for tests and the accessibility bus: id, name, state, referenced, errors.
     QStringList rowTexts(int row) const;
+    // A replayed log's devices (issue 26) instead of the session's: whether each one answered at
+    // the moment shown, the one in view, and what a click on another one does. endReplay():
+    // the session's again.
+    void showReplay(const QList<int> &ids, const QHash<int, bool> &answering, int inView,
+                    const std::function<void(int)> &choose);
+    void endReplay();
+    bool isReplay() const { return m_replay.has_value(); }
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -49,6 +59,8 @@ private:
     void onConnected(bool ok);
     QString stateText(int id) const;
     QString referencedText(int id) const;
+    QList<int> ids() const;
+    int inView() const;
 
     DeviceSession *m_session;
     QTableWidget *m_table;
@@ -59,6 +71,14 @@ private:
     QSpinBox *m_backgroundMs;
     QHash<int, QString> m_names;
     bool m_filling = false;
+    struct Replay
+    {
+        QList<int> ids;
+        QHash<int, bool> answering;
+        int inView = 0;
+        std::function<void(int)> choose;
+    };
+    std::optional<Replay> m_replay;
     bool m_connectedBefore = false; // a reopen at another baud is no new connection
 };
 

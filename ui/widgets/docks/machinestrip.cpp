@@ -146,6 +146,8 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
         if (key.startsWith(QLatin1String("io.")) || key.startsWith(kMotor))
             scheduleRefresh();
     });
+    connect(session->parameters(), &ParameterStore::originChanged, this,
+            &MachineStrip::scheduleRefresh);
     connect(session, &DeviceSession::linkStateChanged, this, &MachineStrip::scheduleRefresh);
     connect(session, &DeviceSession::linkStatsChanged, this, &MachineStrip::scheduleRefresh);
     connect(session, &DeviceSession::deviceInViewChanged, this, &MachineStrip::scheduleRefresh);
@@ -252,7 +254,8 @@ QStringList MachineStrip::inputRoles(int n) const
 
 MachineStrip::Motion MachineStrip::motionOf(int motor, std::optional<qint64> running) const
 {
-    if (!running || !m_session->isConnected())
+    // A replayed log's moment (issue 26) is known as a connected controller's is.
+    if (!running || !(m_session->isConnected() || m_session->parameters()->isReplay()))
         return Motion::Unknown;
     if (*running)
         return Motion::Running;
@@ -274,7 +277,7 @@ void MachineStrip::refresh()
     const ParameterStore *store = m_session->parameters();
     const RegisterMap &map = m_session->map();
     const QString lang = Language::instance().current();
-    const bool connected = m_session->isConnected();
+    const bool connected = m_session->isConnected() || store->isReplay(); // issue 26
     const ReferenceTracker *references = m_session->motion()->references();
     for (int m = 0; m < m_motors.size(); ++m) {
         MotorView &v = m_motors[m];

@@ -19,8 +19,14 @@ void TrafficModel::setLog(TrafficLog *log)
     if (m_log)
         m_log->disconnect(this);
     m_log = log;
-    if (m_log)
-        connect(m_log, &TrafficLog::entryAdded, this, &TrafficModel::append);
+    // Another log (a replay's, then the session's again): its rows, not the last one's.
+    clear();
+    if (!m_log)
+        return;
+    for (const TrafficEntry &e : m_log->entries())
+        append(e);
+    connect(m_log, &TrafficLog::entryAdded, this, &TrafficModel::append);
+    connect(m_log, &TrafficLog::cleared, this, &TrafficModel::clear);
 }
 
 void TrafficModel::setCapacity(int entries)
