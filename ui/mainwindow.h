@@ -51,6 +51,9 @@ public:
     const QList<Page *> &pages() const { return m_pages; }
     Page *currentPage() const;
     void showPage(int index);
+    // Shows the window as the user left it; the first time, maximized on a small screen (below
+    // 1440×900) and on a larger one sized to most of it, in its middle (issue 25).
+    void showOnScreen();
     MachineStrip *machineStrip() const { return m_strip; }          // issue 25
     PageSidebar *sidebar() const { return m_sidebar; }              // issue 25
     StatusDock *statusDock() const { return m_statusDock; }         // monitoring (issue 5)
@@ -131,6 +134,7 @@ private:
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;
     bool m_statusDockMoved = false; // arrangeDocks() put it into the bottom tabs
+    bool m_firstStart = false;      // no geometry saved: showOnScreen() chooses one
     bool m_answeredOnce = false;    // this connection's controller answered (the page jumped)
 
     QAction *m_readAll = nullptr;

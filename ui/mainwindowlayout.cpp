@@ -70,7 +70,8 @@ void MainWindow::restoreLayout()
 {
     QSettings settings;
     settings.beginGroup(QStringLiteral("window"));
-    if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray())) {
+    m_firstStart = !restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray());
+    if (m_firstStart) {
         // First start: room for a page beside the sidebar, docks a quarter of the height.
         const QFontMetrics fm = fontMetrics();
         resize(fm.horizontalAdvance(QLatin1Char('x')) * 185, fm.height() * 50);
@@ -88,6 +89,28 @@ void MainWindow::restoreLayout()
         arrangeDocks();
         fitIntoScreen();
     });
+}
+
+void MainWindow::showOnScreen()
+{
+    const QScreen *where = screen();
+    if (!m_firstStart || !where) {
+        show();
+        return;
+    }
+    const QRect available = where->availableGeometry();
+    if (available.width() < 1440 || available.height() < 900) {
+        showMaximized(); // a laptop's screen: every pixel for the page and the strip
+        return;
+    }
+    // A large screen: most of it (a third of 1920×1080 left the page cramped), never less than
+    // the window needs, in the middle.
+    const QSize size = QSize(available.width() * 4 / 5, available.height() * 17 / 20)
+                           .expandedTo(minimumSizeHint())
+                           .boundedTo(available.size());
+    resize(size);
+    move(available.center() - QPoint(size.width() / 2, size.height() / 2));
+    show();
 }
 
 void MainWindow::saveLayout()

@@ -164,7 +164,7 @@ int main(int argc, char *argv[])
     DeviceSession session;
     session.setSimulator(std::make_unique<BuiltinSimulator>()); // the Connection page offers it
     MainWindow window(&session);
-    window.show();
+    window.showOnScreen();
     if (parser.isSet(options.sim))
         session.connectSimulator();
     else if (startLink)

@@ -23,6 +23,7 @@
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTableWidget>
@@ -289,6 +290,22 @@ private Q_SLOTS:
         QCOMPARE(label->text(), QStringLiteral("细分:"));
         Language::instance().setLanguage(QStringLiteral("en"));
         QCOMPARE(window->action(QStringLiteral("readAll"))->text(), QStringLiteral("&Read all"));
+    }
+
+    // The first start on a small screen (the offscreen one is 800×600): maximized, every pixel
+    // for the page and the strip. Later starts come back as the window was left.
+    void firstStartFillsASmallScreen()
+    {
+        window.reset();
+        QSettings().remove(QStringLiteral("window"));
+        window = std::make_unique<MainWindow>(session.get());
+        window->showOnScreen();
+        QVERIFY(window->isMaximized());
+        window->showNormal();
+        QVERIFY(window->close()); // saves where it was
+        window = std::make_unique<MainWindow>(session.get());
+        window->showOnScreen();
+        QVERIFY(!window->isMaximized());
     }
 
     void closingWithEditsAsks()
