@@ -11,6 +11,7 @@
 #include "session/sessioninternals.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -79,15 +80,7 @@ private Q_SLOTS:
         noWire = false;
     }
 
-    void everythingWorksAtEveryAnswerTime_data()
-    {
-        QTest::addColumn<int>("delayMs");
-        QTest::addColumn<int>("baud");
-        for (int baud : {9600, 38400}) {
-            for (int delay : {2, 5, 15, 35})
-                QTest::addRow("%d ms at %d", delay, baud) << delay << baud;
-        }
-    }
+    void everythingWorksAtEveryAnswerTime_data() { test::addAnswerTimeRows(); }
     void everythingWorksAtEveryAnswerTime()
     {
         QFETCH(int, delayMs);

@@ -5,6 +5,7 @@
 #include "programrun.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -18,27 +19,13 @@ class TestCtlAnyController : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
-    void monitorAndEstopOnAnyController_data()
-    {
-        QTest::addColumn<int>("delayMs");
-        QTest::addColumn<int>("baud");
-        for (int baud : {9600, 38400}) {
-            for (int delay : {2, 5, 15, 35})
-                QTest::addRow("%d ms at %d", delay, baud) << delay << baud;
-        }
-    }
+    void monitorAndEstopOnAnyController_data() { test::addAnswerTimeRows(); }
     void monitorAndEstopOnAnyController()
     {
         QFETCH(int, delayMs);
         QFETCH(int, baud);
         SimHost host;
-        SimOptions o;
-        o.rtu = true;
-        o.answerDelayMs = delayMs;
-        o.wireBaud = baud;
-        o.checkBaud = false;
-        QString error;
-        QVERIFY2(host.start(o, &error), qPrintable(error));
+        QVERIFY(test::startModelledController(host, delayMs, baud));
         QVERIFY(host.device()->command(QStringLiteral("motor1.move")));
         QTRY_VERIFY_WITH_TIMEOUT(!host.device()->running(1), 5000);
         const QString port = host.rtuPath();

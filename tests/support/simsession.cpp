@@ -2,6 +2,7 @@
 
 #include "session/devicesession.h"
 #include "sim/builtinsimulator.h"
+#include "sim/simhost.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -19,6 +20,30 @@ void useBuiltinSimulator(DeviceSession &session, const QList<int> &ids)
     auto sim = std::make_unique<BuiltinSimulator>();
     sim->setIds(ids);
     session.setSimulator(std::move(sim));
+}
+
+void addAnswerTimeRows()
+{
+    QTest::addColumn<int>("delayMs");
+    QTest::addColumn<int>("baud");
+    for (int baud : {9600, 38400}) {
+        for (int delay : {2, 5, 15, 35})
+            QTest::addRow("%d ms at %d", delay, baud) << delay << baud;
+    }
+}
+
+bool startModelledController(SimHost &host, int delayMs, int baud)
+{
+    SimOptions o;
+    o.rtu = true;
+    o.answerDelayMs = delayMs;
+    o.wireBaud = baud;
+    o.checkBaud = false;
+    QString error;
+    if (host.start(o, &error))
+        return true;
+    qWarning("%s", qPrintable(error));
+    return false;
 }
 
 SimHost *simHost(const DeviceSession &session)

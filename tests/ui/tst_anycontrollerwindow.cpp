@@ -6,6 +6,7 @@
 #include "session/devicesession.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
+#include "simsession.h"
 #include "widgets/docks/machinestrip.h"
 
 #include <QLabel>
@@ -20,27 +21,13 @@ class TestAnyControllerWindow : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
-    void theWindowFollowsAnyController_data()
-    {
-        QTest::addColumn<int>("delayMs");
-        QTest::addColumn<int>("baud");
-        for (int baud : {9600, 38400}) {
-            for (int delay : {2, 5, 15, 35})
-                QTest::addRow("%d ms at %d", delay, baud) << delay << baud;
-        }
-    }
+    void theWindowFollowsAnyController_data() { test::addAnswerTimeRows(); }
     void theWindowFollowsAnyController()
     {
         QFETCH(int, delayMs);
         QFETCH(int, baud);
         SimHost host;
-        SimOptions o;
-        o.rtu = true;
-        o.answerDelayMs = delayMs;
-        o.wireBaud = baud;
-        o.checkBaud = false;
-        QString error;
-        QVERIFY2(host.start(o, &error), qPrintable(error));
+        QVERIFY(test::startModelledController(host, delayMs, baud));
         SimDevice *sim = host.device();
 
         DeviceSession session;
