@@ -145,8 +145,8 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     // --- end working without the machine ---
     m_replay->setTrafficView(m_traffic); // issue 26
     m_replay->setDeviceList(m_deviceDock);
-    // Checklist results become markers of a replay (the session log's user lines).
-    connect(m_checklist, &ChecklistPage::resultRecorded, m_sessionLog, &SessionLog::noteUserAction);
+    // Pages chosen, changes written and checklist results become markers of a replay.
+    ReplayMode::recordActions(m_sessionLog, m_sidebar, m_pages, m_writeFlow, m_checklist);
     connect(m_replay, &ReplayMode::activeChanged, this, &MainWindow::showOrigin);
     connect(m_replay, &ReplayMode::finished, this, [this](bool ok, const QString &text) {
         m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning, text);

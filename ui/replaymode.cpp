@@ -1,13 +1,18 @@
 #include "replaymode.h"
 
 #include "device/statusrecorder.h"
+#include "dialogs/writechangesdialog.h"
+#include "page.h"
+#include "pages/checklistpage.h"
 #include "session/devicesession.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
 #include "support/supportbundle.h"
 #include "widgets/docks/devicelistdock.h"
+#include "widgets/docks/pagesidebar.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/replay/replaybar.h"
+#include "writeflow.h"
 
 #include <QAction>
 #include <QFile>
@@ -143,6 +148,22 @@ ReplayMode::~ReplayMode()
         m_opening->cancel = true;
         m_opening->thread->wait();
     }
+}
+
+void ReplayMode::recordActions(SessionLog *log, PageSidebar *sidebar, const QList<Page *> &pages,
+                               WriteFlow *writes, ChecklistPage *checklist)
+{
+    // Only while a connection is logged (SessionLog writes nothing before the first one), in
+    // the words the technician saw.
+    connect(sidebar, &PageSidebar::pageChosen, log, [log, pages](int index) {
+        if (index >= 0 && index < pages.size())
+            log->noteUserAction(
+                QStringLiteral("page %1: %2").arg(index + 1).arg(pages.at(index)->title()));
+    });
+    connect(writes, &WriteFlow::confirmed, log, [log](const QString &what) {
+        log->noteUserAction(QStringLiteral("write changes: ") + what);
+    });
+    connect(checklist, &ChecklistPage::resultRecorded, log, &SessionLog::noteUserAction);
 }
 
 void ReplayMode::setTrafficView(TrafficView *view)

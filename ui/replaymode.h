@@ -18,11 +18,16 @@ class QWidget;
 
 namespace stepcom {
 
+class ChecklistPage;
 class DeviceListDock;
 class DeviceSession;
+class Page;
+class PageSidebar;
 class ReplayBar;
+class SessionLog;
 class TrafficLog;
 class TrafficView;
+class WriteFlow;
 
 // The window's replay of a session log or a support bundle (issue 26): File → Open session
 // log… opens it (off the GUI thread, with progress and Cancel), then every page shows what the
@@ -41,6 +46,12 @@ public:
 
     ReplayMode(DeviceSession *session, QWidget *window);
     ~ReplayMode() override;
+
+    // What a replay of the window's session logs shows as the user's doing (the log's "user"
+    // lines, markers in the timeline): the page chosen, the changes confirmed for writing, the
+    // checklist's results.
+    static void recordActions(SessionLog *log, PageSidebar *sidebar, const QList<Page *> &pages,
+                              WriteFlow *writes, ChecklistPage *checklist);
 
     QAction *openAction() const { return m_open; }
     QAction *closeAction() const { return m_close; }

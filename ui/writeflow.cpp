@@ -2,6 +2,7 @@
 
 #include "device/writereview.h"
 #include "dialogs/writechangesdialog.h"
+#include "map/parameter.h"
 #include "session/devicesession.h"
 
 namespace stepcom {
@@ -38,8 +39,13 @@ bool WriteFlow::show(WriteChangesDialog *dialog)
         m_dialog->close();
     m_dialog = dialog;
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QDialog::accepted, this,
-            [this, dialog] { m_session->write(dialog->writes()); });
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        QStringList what;
+        for (const ParameterWrite &w : dialog->writes())
+            what << QStringLiteral("%1 = %2").arg(w.parameter->key).arg(w.raw);
+        Q_EMIT confirmed(what.join(QLatin1String(", ")));
+        m_session->write(dialog->writes());
+    });
     dialog->open();
     return true;
 }

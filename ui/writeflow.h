@@ -29,6 +29,11 @@ public:
     bool openAll();
     WriteChangesDialog *dialog() const { return m_dialog; }
 
+Q_SIGNALS:
+    // The user confirmed the dialog: "motor1.speed = 222, motor2.pitch = 500" (raw values, as
+    // they go out) is being written.
+    void confirmed(const QString &writes);
+
 private:
     bool show(WriteChangesDialog *dialog);
 

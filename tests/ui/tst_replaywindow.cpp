@@ -6,11 +6,13 @@
 #include "../replay/logbuilder.h"
 #include "device/statusrecorder.h"
 #include "dialogs/supportbundledialog.h"
+#include "dialogs/writechangesdialog.h"
 #include "enabledcontrols.h"
 #include "language.h"
 #include "mainwindow.h"
 #include "map/factoryvalues.h"
 #include "offlineactions.h"
+#include "page.h"
 #include "pages/checklistpage.h"
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
@@ -24,6 +26,7 @@
 #include "support/supportbundle.h"
 #include "widgets/checklist/checkliststepwidget.h"
 #include "widgets/docks/machinestrip.h"
+#include "widgets/docks/pagesidebar.h"
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/replay/replaybar.h"
@@ -111,7 +114,9 @@ private Q_SLOTS:
         const qint64 speed = *store()->deviceValue(key("speed"));
         QVERIFY(store()->edit(key("speed"), speed + 17).isEmpty());
         QSignalSpy written(session.get(), &DeviceSession::writeFinished);
-        session->writeChanges();
+        window->writeChanges(); // the window's dialog, confirmed: a user line of the log
+        QTRY_VERIFY(window->writeDialog());
+        window->writeDialog()->accept();
         QVERIFY(written.wait(10000));
         QCOMPARE(store()->deviceValue(key("speed")), speed + 17);
         captureAtCycleEnd(QStringLiteral("written"), true);
@@ -141,7 +146,8 @@ private Q_SLOTS:
             last = now;
             return same;
         });
-        // 5. a checklist result (skipped), a user line of the log
+        // 5. a page chosen and a checklist result (skipped), user lines of the log
+        window->sidebar()->setCurrentPage(2);
         auto *step = window->checklistPage()->stepWidget(QStringLiteral("motor1.direction"));
         QVERIFY(step);
         step->skipButton()->click();
@@ -263,6 +269,19 @@ private Q_SLOTS:
             });
         QVERIFY2(checklist != events.cend(), qPrintable(kinds.join(u' ')));
         QCOMPARE(checklist->text, QStringLiteral("checklist motor1.direction: skipped"));
+        // The page chosen and the changes confirmed, as the technician saw them.
+        const auto userLine = [&events](QStringView start) {
+            for (const ReplayEvent &e : events) {
+                if (e.kind == ReplayEvent::Kind::User && e.text.startsWith(start))
+                    return e.text;
+            }
+            return QString();
+        };
+        QCOMPARE(userLine(u"page 3"),
+                 QStringLiteral("page 3: %1").arg(window->pages().at(2)->title()));
+        QVERIFY2(userLine(u"write changes: ")
+                     .startsWith(QStringLiteral("write changes: %1 = ").arg(key("speed"))),
+                 qPrintable(userLine(u"write changes")));
         const auto estop = std::find_if(events.cbegin(), events.cend(), [](const ReplayEvent &e) {
             return e.kind == ReplayEvent::Kind::EmergencyStop;
         });
