@@ -7426,6 +7426,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>StepCom is trying to reconnect to the controller: cancel that before replaying a log.</source>
         <translation>StepCom is trying to reconnect to the controller: cancel that before replaying a log.</translation>
     </message>
+    <message>
+        <source>replay: %1</source>
+        <translation>replay: %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ReplayState</name>

@@ -7373,6 +7373,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>StepCom is trying to reconnect to the controller: cancel that before replaying a log.</source>
         <translation>StepCom 正在尝试重新连接控制器：回放日志前请先取消。</translation>
     </message>
+    <message>
+        <source>replay: %1</source>
+        <translation>回放：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ReplayState</name>

@@ -145,6 +145,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     // --- end working without the machine ---
     m_replay->setTrafficView(m_traffic); // issue 26
     m_replay->setDeviceList(m_deviceDock);
+    m_replay->setMachineStrip(m_strip);
     // Pages chosen, changes written and checklist results become markers of a replay.
     ReplayMode::recordActions(m_sessionLog, m_sidebar, m_pages, m_writeFlow, m_checklist);
     connect(m_replay, &ReplayMode::activeChanged, this, &MainWindow::showOrigin);

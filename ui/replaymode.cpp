@@ -9,6 +9,7 @@
 #include "session/sessionlog.h"
 #include "support/supportbundle.h"
 #include "widgets/docks/devicelistdock.h"
+#include "widgets/docks/machinestrip.h"
 #include "widgets/docks/pagesidebar.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/replay/replaybar.h"
@@ -169,6 +170,11 @@ void ReplayMode::recordActions(SessionLog *log, PageSidebar *sidebar, const QLis
 void ReplayMode::setTrafficView(TrafficView *view)
 {
     m_view = view;
+}
+
+void ReplayMode::setMachineStrip(MachineStrip *strip)
+{
+    m_strip = strip;
 }
 
 void ReplayMode::setDeviceList(DeviceListDock *list)
@@ -444,6 +450,11 @@ void ReplayMode::showMoment()
                    return true;
                });
     m_bar->setMoment(m_moment);
+    if (m_strip) { // the line as the log's header names it (an older log: not known)
+        const QString line = m_log.header().value(QStringLiteral("line"));
+        m_strip->showReplayLink(state.linkUp, state.devices.value(m_device).answering,
+                                line.isEmpty() ? QString() : tr("replay: %1").arg(line));
+    }
     m_stateText = stateText(state);
     if (m_deviceList && m_devices.size() > 1) { // each device's state, as the list shows a line
         QHash<int, bool> answering;
@@ -501,6 +512,8 @@ void ReplayMode::close()
     m_session->recorder()->clear();
     if (m_deviceList)
         m_deviceList->endReplay();
+    if (m_strip)
+        m_strip->endReplay();
     m_banner->hide();
     m_bar->hide();
     m_close->setEnabled(false);

@@ -21,6 +21,7 @@ namespace stepcom {
 class ChecklistPage;
 class DeviceListDock;
 class DeviceSession;
+class MachineStrip;
 class Page;
 class PageSidebar;
 class ReplayBar;
@@ -62,6 +63,8 @@ public:
     void setTrafficView(TrafficView *view);
     // The device list shows the log's devices while it runs, the session's again after.
     void setDeviceList(DeviceListDock *list);
+    // The strip shows the link as the log has it at the moment.
+    void setMachineStrip(MachineStrip *strip);
 
     bool isActive() const { return m_active; }
     bool isOpening() const { return m_opening != nullptr; }
@@ -122,6 +125,7 @@ private:
     ReplayBar *m_bar;
     QPointer<TrafficView> m_view;
     QPointer<DeviceListDock> m_deviceList;
+    QPointer<MachineStrip> m_strip;
     TrafficLog *m_traffic;
     ReplayLog m_log;
     std::unique_ptr<QTemporaryDir> m_unpacked; // a bundle's log, copied out for the seeks

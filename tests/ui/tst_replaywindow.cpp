@@ -29,6 +29,7 @@
 #include "widgets/docks/pagesidebar.h"
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
+#include "widgets/fields/elidedlabel.h"
 #include "widgets/replay/replaybar.h"
 #include "widgets/replay/replayslider.h"
 
@@ -296,6 +297,33 @@ private Q_SLOTS:
         bar->eventList()->setCurrentIndex(row);
         Q_EMIT bar->eventList()->activated(row);
         QCOMPARE(replay()->moment(), estop->ms);
+    }
+
+    // The machine strip shows the link as the log has it at the moment, and the log's line;
+    // the session's own again when the replay ends.
+    void theStripShowsTheLogsLink()
+    {
+        QVERIFY(openReplay(logPath));
+        const QList<ReplayEvent> &events = replay()->log().events();
+        const auto estop = std::find_if(events.cbegin(), events.cend(), [](const ReplayEvent &e) {
+            return e.kind == ReplayEvent::Kind::EmergencyStop;
+        });
+        QVERIFY(estop != events.cend());
+        ReplayBar *bar = replay()->bar();
+        const int row = int(estop - events.cbegin());
+        bar->eventList()->setCurrentIndex(row);
+        Q_EMIT bar->eventList()->activated(row);
+        MachineStrip *strip = window->machineStrip();
+        QCOMPARE(strip->linkLabel()->text(), QStringLiteral("answering"));
+        const QString line = static_cast<ElidedLabel *>(strip->lineLabel())->fullText();
+        QVERIFY2(line.startsWith(QStringLiteral("replay: ")), qPrintable(line));
+        QVERIFY2(line.contains(replay()->log().header().value(QStringLiteral("line"))),
+                 qPrintable(line));
+        closeReplay();
+        QCOMPARE(strip->linkLabel()->text(), QStringLiteral("port closed"));
+        QVERIFY(!static_cast<ElidedLabel *>(strip->lineLabel())
+                     ->fullText()
+                     .startsWith(QStringLiteral("replay: ")));
     }
 
     // Nothing that writes or moves a controller is enabled in a replay; E-STOP sends nothing.

@@ -333,10 +333,27 @@ void MachineStrip::refresh()
     refreshLink();
 }
 
+void MachineStrip::showReplayLink(bool linkUp, bool answering, const QString &line)
+{
+    m_replay = ReplayLink{linkUp, answering, line};
+    refreshLink();
+}
+
+void MachineStrip::endReplay()
+{
+    m_replay.reset();
+    refreshLink();
+}
+
 void MachineStrip::refreshLink()
 {
     StateTone tone = StateTone::Unknown;
-    switch (m_session->health()->state()) {
+    LinkHealth::State state = m_session->health()->state();
+    if (m_replay)
+        state = !m_replay->linkUp     ? LinkHealth::State::Closed
+                : m_replay->answering ? LinkHealth::State::Answering
+                                      : LinkHealth::State::NotAnswering;
+    switch (state) {
     case LinkHealth::State::Closed:
         m_link->setText(tr("port closed"));
         break;
@@ -354,15 +371,18 @@ void MachineStrip::refreshLink()
         break;
     }
     setTone(m_link, tone);
-    m_link->setToolTip(m_session->health()->state() == LinkHealth::State::NotAnswering
+    m_link->setToolTip(state == LinkHealth::State::NotAnswering && !m_replay
                            ? LinkHealth::likelyCauses()
                            : QString());
     m_link->setAccessibleName(tr("Link: %1").arg(m_link->text()));
     const int id = m_session->deviceInView();
     const LinkStats &stats = m_session->linkStats();
     ElidedLabel *line = m_line;
-    const bool known = m_session->isConnected() && stats.answers > 0;
-    line->setFullText(known ? stats.lineText(id) : kUnknown);
+    const bool known =
+        (m_session->isConnected() && stats.answers > 0) || (m_replay && !m_replay->line.isEmpty());
+    line->setFullText(m_replay ? (known ? m_replay->line : kUnknown)
+                      : known  ? stats.lineText(id)
+                               : kUnknown);
     setTone(line, known ? StateTone::Normal : StateTone::Unknown);
     line->setAccessibleName(tr("Line: %1").arg(line->fullText()));
     const QList<int> ids = m_session->deviceIds();

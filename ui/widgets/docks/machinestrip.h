@@ -47,6 +47,11 @@ public:
     bool isCompact() const { return m_compact; }
     // The name the user gave a device of the line (the device list's), for "the device in view".
     void setDeviceNamer(std::function<QString(int)> namer);
+    // A replay (issue 26): the link as the log shows it at the moment -- up and `answering` or
+    // not, or down -- and `line` (the log's line settings) instead of the session's, until
+    // endReplay().
+    void showReplayLink(bool linkUp, bool answering, const QString &line);
+    void endReplay();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -85,6 +90,13 @@ private:
     ElidedLabel *m_device; // a long name gives way: the strip must not widen the window
     QToolButton *m_estopButton;
     std::function<QString(int)> m_namer;
+    struct ReplayLink
+    {
+        bool linkUp = false;
+        bool answering = false;
+        QString line;
+    };
+    std::optional<ReplayLink> m_replay;
     bool m_compact = false;
     QTimer m_refresh; // the store's per-key signals, one update a cycle
 };
