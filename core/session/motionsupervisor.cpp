@@ -9,6 +9,28 @@
 
 namespace stepcom {
 
+namespace {
+
+// Why an axis is not referenced once `cause` (not None) cut a homing or came after it.
+ReferenceTracker::Reason lostReference(MotionCause cause)
+{
+    using Reason = ReferenceTracker::Reason;
+    switch (cause) {
+    case MotionCause::Silent:
+        return Reason::Silent;
+    case MotionCause::Restarted:
+        return Reason::Restarted;
+    case MotionCause::None:
+    case MotionCause::Stop:
+    case MotionCause::EmergencyStop:
+    case MotionCause::LinkLost:
+        break;
+    }
+    return Reason::HomingStopped;
+}
+
+} // namespace
+
 MotionSupervisor::MotionSupervisor(DeviceSession *session, ModbusLink *link)
     : QObject(session)
     , m_session(session)
@@ -246,10 +268,8 @@ void MotionSupervisor::conclude(int device, quint64 id, const StatusValues &end)
         for (const AxisEnd &a : o.axes)
             m_references->setReasonOn(device, a.motor,
                                       a.referenced && o.cause == MotionCause::None ? Reason::Homed
-                                      : o.cause == MotionCause::Silent             ? Reason::Silent
-                                      : o.cause == MotionCause::Restarted ? Reason::Restarted
-                                      : o.cause != MotionCause::None      ? Reason::HomingStopped
-                                                                          : Reason::HomingFailed);
+                                      : o.cause != MotionCause::None ? lostReference(o.cause)
+                                                                     : Reason::HomingFailed);
     }
     if (device == m_view)
         Q_EMIT finished(o);
@@ -268,9 +288,7 @@ void MotionSupervisor::interrupted(int device, MotionCause cause)
     }
     for (const auto &[id, last] : std::as_const(open))
         conclude(device, id, last);
-    m_references->loseAll(device, cause == MotionCause::Restarted
-                                      ? ReferenceTracker::Reason::Restarted
-                                      : ReferenceTracker::Reason::Silent);
+    m_references->loseAll(device, lostReference(cause));
 }
 
 void MotionSupervisor::onDisconnected()
