@@ -5482,8 +5482,12 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>the controller restarted</translation>
     </message>
     <message>
-        <source>no answer while it moved: how it ended is not known (the controller may have restarted)</source>
-        <translation>no answer while it moved: how it ended is not known (the controller may have restarted)</translation>
+        <source>no answer while it moved; the controller may have restarted</source>
+        <translation>no answer while it moved; the controller may have restarted</translation>
+    </message>
+    <message>
+        <source>%1: how it ended is not known, last seen at %2 (%3): not referenced</source>
+        <translation>%1: how it ended is not known, last seen at %2 (%3): not referenced</translation>
     </message>
 </context>
 <context>

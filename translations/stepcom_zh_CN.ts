@@ -5453,8 +5453,12 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>控制器重新启动了</translation>
     </message>
     <message>
-        <source>no answer while it moved: how it ended is not known (the controller may have restarted)</source>
-        <translation>运动时没有应答：不知道它是如何结束的（控制器可能重新启动了）</translation>
+        <source>no answer while it moved; the controller may have restarted</source>
+        <translation>运动时没有应答；控制器可能重新启动了</translation>
+    </message>
+    <message>
+        <source>%1: how it ended is not known, last seen at %2 (%3): not referenced</source>
+        <translation>%1：不知道它是如何结束的，最后一次看到时位于 %2（%3）：未建立参考点</translation>
     </message>
 </context>
 <context>

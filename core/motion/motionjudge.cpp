@@ -234,7 +234,9 @@ MotionOutcome MotionJudge::judge(const RegisterMap &map, const MotionStart &star
         o.axes << a;
     }
     using V = MotionOutcome::Verdict;
-    if (homing)
+    if (cause == MotionCause::Silent)
+        o.verdict = V::NotKnown; // not "interrupted", not "stopped": nothing showed how it ended
+    else if (homing)
         o.verdict = cause != MotionCause::None ? V::Interrupted
                     : allGood                  ? V::Referenced
                                                : V::NoHomeInput;
@@ -335,8 +337,7 @@ QString MotionJudge::causeText(MotionCause cause)
     case MotionCause::LinkLost:
         return tr("link lost");
     case MotionCause::Silent:
-        return tr("no answer while it moved: how it ended is not known (the controller may "
-                  "have restarted)");
+        return tr("no answer while it moved; the controller may have restarted");
     case MotionCause::Restarted:
         return tr("the controller restarted");
     case MotionCause::None:
@@ -395,6 +396,9 @@ QString MotionJudge::text(const RegisterMap &map, const MotionOutcome &o)
                    ? tr("%1 interrupted at %2 (%3): not referenced").arg(what, where(false), cause)
                    : tr("%1 interrupted at %2 (%3): motor %4 not referenced")
                          .arg(what, where(false), cause, Translators::joinList(notReferenced));
+    case MotionOutcome::Verdict::NotKnown:
+        return tr("%1: how it ended is not known, last seen at %2 (%3): not referenced")
+            .arg(what, where(false), cause);
     case MotionOutcome::Verdict::NoHomeInput:
         return o.axes.size() == 1
                    ? tr("%1 ended without the home input at %2: not referenced")

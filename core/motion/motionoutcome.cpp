@@ -15,6 +15,8 @@ QString MotionOutcome::verdictWord() const
         return QStringLiteral("interrupted");
     case Verdict::NoHomeInput:
         return QStringLiteral("not_referenced");
+    case Verdict::NotKnown:
+        return QStringLiteral("not_known");
     }
     return {};
 }

@@ -54,6 +54,7 @@ struct MotionOutcome
         Stopped,     // a move ended elsewhere
         Interrupted, // homing was stopped (stop, E-STOP, link loss)
         NoHomeInput, // homing ended without the home input
+        NotKnown,    // the controller fell silent as it moved: where and how it ended is not known
     };
 
     MotionStart start;

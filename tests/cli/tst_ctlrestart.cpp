@@ -74,6 +74,7 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 1);
         const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
         QCOMPARE(o.value(QStringLiteral("cause")).toString(), QStringLiteral("silent"));
+        QCOMPARE(o.value(QStringLiteral("outcome")).toString(), QStringLiteral("not_known"));
         QCOMPARE(o.value(QStringLiteral("ok")).toBool(), false);
         QVERIFY2(o.value(QStringLiteral("message"))
                      .toString()

@@ -148,6 +148,7 @@ private Q_SLOTS:
         QVERIFY(!finished.isEmpty());
         const auto outcome = finished.last().at(0).value<MotionOutcome>();
         QCOMPARE(outcome.cause, MotionCause::Silent);
+        QCOMPARE(outcome.verdict, MotionOutcome::Verdict::NotKnown); // not "interrupted"
         QVERIFY2(!heard().contains(QLatin1String("The controller restarted")), qPrintable(heard()));
     }
 
