@@ -107,6 +107,7 @@ void ModbusLink::open(const LinkSettings &settings)
     m_settings = settings;
     m_stats.echo = settings.transport == LinkSettings::Transport::Tcp ? 0 : -1; // learnt anew
     m_lastAnswer.clear();
+    m_backoff.clear();
     ++m_attempt;
     m_failing = false;
     m_closingReason.clear(); // a callback reopens while the link closes: submit queues again
@@ -340,7 +341,8 @@ int ModbusLink::timeoutFor(const Request &req) const
     constexpr double kSlackMs = 40;
     const double floor = std::max(0, m_settings.answerDelayMs) + frameMs + kSlackMs;
     const double fitted = 4.0 * double(trips.median()) + frameMs + kSlackMs / 2;
-    return std::min(ceiling, int(std::ceil(std::max(floor, fitted))));
+    const double backedOff = std::max(floor, fitted) * double(1 << m_backoff.value(id, 0));
+    return std::min(ceiling, int(std::ceil(backedOff)));
 }
 
 void ModbusLink::onEchoLearned(bool echoes)
@@ -457,6 +459,7 @@ void ModbusLink::onAnswered(const LinkAnswer &a)
     case LinkAnswer::Kind::Answer:
         ++m_stats.answers;
         m_lastAnswer.insert(req.unitId > 0 ? req.unitId : m_settings.deviceId, m_clock.elapsed());
+        m_backoff.remove(req.unitId > 0 ? req.unitId : m_settings.deviceId);
         if (const int code = a.exceptionCode; code != 0) {
             ++m_stats.exceptions;
             ++m_stats.exceptionsByCode[code];
@@ -488,8 +491,12 @@ void ModbusLink::onAnswered(const LinkAnswer &a)
         if (item.attempts > 1)
             m_backend->requireQuiet();
         break;
-    case LinkAnswer::Kind::Timeout:
+    case LinkAnswer::Kind::Timeout: {
         ++m_stats.timeouts;
+        if (!m_scanMode) {
+            int &backoff = m_backoff[req.unitId > 0 ? req.unitId : m_settings.deviceId];
+            backoff = std::min(backoff + 1, kMaxBackoff);
+        }
         r.error = QModbusDevice::TimeoutError;
         r.errorText = noAnswerText(req, a);
         retry = req.retryable && item.attempts <= m_settings.retries;
@@ -498,6 +505,7 @@ void ModbusLink::onAnswered(const LinkAnswer &a)
             r.errorText += tr(" -- the controller may have acted on it");
         }
         break;
+    }
     case LinkAnswer::Kind::Failed:
         r.error = QModbusDevice::WriteError;
         r.errorText = tr("%1: could not send: %2").arg(describe(req), a.errorText);

@@ -66,10 +66,16 @@ public:
     void setScanMode(bool on);
 
     // The answer timeout for `request` now: its own, or the settings' fitted to the round
-    // trips measured for its device (LinkSettings::adaptTimeout).
+    // trips measured for its device (LinkSettings::adaptTimeout). After a timeout the fitted
+    // one doubles for that device with each further timeout (up to the set timeout) until it
+    // answers again, as TCP backs off its retransmission timer: a controller or a computer
+    // busy for a moment costs one more try, not a string of them, while a silent device is
+    // still given up on at the set timeout.
     int timeoutFor(const Request &request) const;
     // Round trips counted before the timeout adapts to them.
     static constexpr int kAdaptAfter = 5;
+    // Doublings of the fitted timeout at most (x8).
+    static constexpr int kMaxBackoff = 3;
     // A controller that answered this recently is not told to check its id, baud and wiring.
     static constexpr qint64 kRecentAnswerMs = 10000;
 
@@ -135,6 +141,7 @@ private:
     int m_inFlightTimeoutMs = 0;
     QElapsedTimer m_clock;
     QHash<int, qint64> m_lastAnswer; // by device id: m_clock's time of its last answer
+    QHash<int, int> m_backoff;       // by device id: timeouts since its last answer (capped)
     QString m_closingReason;         // while close() fails what was queued; empty otherwise
     quint64 m_attempt = 0;           // connect attempts, so stale deferred checks do nothing
 };

@@ -3,6 +3,7 @@
 #include "map/registermap.h"
 #include "scripteddevice.h"
 
+#include <QSet>
 #include <QSignalSpy>
 #include <QTemporaryFile>
 #include <QTest>
@@ -138,6 +139,64 @@ private Q_SLOTS:
         QTRY_VERIFY(second.done);
         QVERIFY2(second.result.ok, qPrintable(second.result.errorText));
         QCOMPARE(second.result.values, QVector<quint16>{7});
+    }
+
+    // A timeout fitted to quick answers doubles with each timeout of that device (up to the set
+    // one) and is fitted again once it answers: a moment of a busy computer or controller costs
+    // one more try, not a string of them.
+    void fittedTimeoutBacksOffAfterATimeout()
+    {
+        QSet<int> silent{6, 7};
+        device->setResponder(
+            [&silent](const QByteArray &r, int index) -> std::optional<QByteArray> {
+                if (silent.contains(index))
+                    return std::nullopt;
+                return withCrc(r.left(2) + fromHex("02 00 07"));
+            });
+        openLink(2000, 0);
+        const Request read = Request::read(0, 1);
+        for (int i = 0; i < ModbusLink::kAdaptAfter + 1; ++i) {
+            Outcome o;
+            link->submit(read, into(&o));
+            QTRY_VERIFY(o.done);
+            QVERIFY2(o.result.ok, qPrintable(o.result.errorText));
+        }
+        const int fitted = link->timeoutFor(read);
+        QVERIFY2(fitted < 2000 / 4, qPrintable(QString::number(fitted)));
+        int previous = fitted;
+        for (int timeouts = 1; timeouts <= 2; ++timeouts) {
+            Outcome o;
+            link->submit(read, into(&o));
+            QTRY_VERIFY_WITH_TIMEOUT(o.done, 10000);
+            QCOMPARE(o.result.error, QModbusDevice::TimeoutError);
+            const int now = link->timeoutFor(read);
+            QVERIFY2(now >= 2 * previous - 1 && now <= 2 * previous,
+                     qPrintable(QStringLiteral("%1 after %2").arg(now).arg(previous)));
+            previous = now;
+        }
+        Outcome answered;
+        link->submit(read, into(&answered));
+        QTRY_VERIFY(answered.done);
+        QVERIFY2(answered.result.ok, qPrintable(answered.result.errorText));
+        QVERIFY2(
+            link->timeoutFor(read) < previous / 2,
+            qPrintable(
+                QStringLiteral("%1, backed off %2").arg(link->timeoutFor(read)).arg(previous)));
+        // It stops doubling at eight times the fitted timeout, and never passes the set one.
+        for (int i = 9; i < 13; ++i)
+            silent.insert(i);
+        QList<int> backedOff;
+        for (int i = 0; i < 4; ++i) {
+            Outcome o;
+            link->submit(read, into(&o));
+            QTRY_VERIFY_WITH_TIMEOUT(o.done, 15000);
+            QCOMPARE(o.result.error, QModbusDevice::TimeoutError);
+            backedOff << link->timeoutFor(read);
+        }
+        QCOMPARE(backedOff.at(3), backedOff.at(2));
+        QVERIFY2(backedOff.at(2) > backedOff.at(1) || backedOff.at(2) == 2000,
+                 qPrintable(QString::number(backedOff.at(2))));
+        QVERIFY(backedOff.at(3) <= 2000);
     }
 
     // Destroying the link with a request in flight tells no one: the objects behind the
