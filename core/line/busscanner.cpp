@@ -111,11 +111,13 @@ qint64 BusScanner::worstCaseMs(const Plan &plan)
 {
     qint64 ms = 0;
     for (const LinkSettings &line : lines(plan)) {
-        // Opening waits for a quiet line; each probe is the request's frame and the timeout.
+        // Opening waits for a quiet line; each probe is the request's frame and the timeout;
+        // then the last probes' late answers are listened for.
         ms += kOpenQuietMs;
+        const int timeoutMs = probeTimeoutMs(line, plan.probeTimeoutMs);
+        ms += std::max(timeoutMs, kLateListenMs - timeoutMs);
         const double frameMs = line.isNetwork() ? 0.0 : 8 * line.charTimeMs();
-        ms += qint64(plan.ids.size()) *
-              qint64(std::ceil(frameMs + probeTimeoutMs(line, plan.probeTimeoutMs)));
+        ms += qint64(plan.ids.size()) * qint64(std::ceil(frameMs + timeoutMs));
     }
     return ms;
 }
@@ -253,10 +255,13 @@ void BusScanner::probeNext()
         return;
     }
     if (m_idIndex >= m_plan.ids.size()) {
-        // The last probes' late answers may still come: wait out one more timeout.
+        // The last probes' late answers may still come: listen for them (every answer frame
+        // names its id, so a late one is found while this wait runs).
         if (!m_probedAt.isEmpty() && m_link && !m_waitedForLate) {
             m_waitedForLate = true;
-            QTimer::singleShot(m_timeoutMs, this, [this, link = QPointer<ModbusLink>(m_link)] {
+            const qint64 sinceLastMs = m_clock.elapsed() - m_lastProbeAtMs;
+            const int waitMs = int(std::max<qint64>(m_timeoutMs, kLateListenMs - sinceLastMs));
+            QTimer::singleShot(waitMs, this, [this, link = QPointer<ModbusLink>(m_link)] {
                 if (m_link == link)
                     probeNext();
             });
@@ -274,6 +279,7 @@ void BusScanner::probeNext()
     probe.timeoutMs = m_timeoutMs;
     probe.what = tr("scan id %1 at %2").arg(id).arg(where(m_lines.at(m_lineIndex)));
     m_probedAt.insert(id, m_clock.elapsed());
+    m_lastProbeAtMs = m_clock.elapsed();
     m_link->submit(
         probe,
         [this, id, baud](const Result &r) {
