@@ -49,6 +49,17 @@ int RtuFrame::answerLength(const QByteArray &bytes)
     return 2 + dataSize + 2;
 }
 
+int RtuFrame::requestLength(const QByteArray &bytes)
+{
+    if (bytes.size() < 2)
+        return 0;
+    const QModbusRequest probe(QModbusPdu::FunctionCode(quint8(bytes.at(1))), bytes.mid(2));
+    const int size = QModbusRequest::calculateDataSize(probe);
+    if (size < 0)
+        return int(bytes.size());
+    return 2 + size + 2;
+}
+
 bool RtuFrame::crcOk(const QByteArray &frame)
 {
     if (frame.size() < 4)

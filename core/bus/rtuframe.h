@@ -16,6 +16,9 @@ public:
     // Bytes the answer frame at the start of `bytes` takes, CRC included: > 0 a length,
     // 0 not known yet (more bytes needed), -1 it cannot be an answer frame (garbage).
     static int answerLength(const QByteArray &bytes);
+    // Bytes the request frame at the start of `bytes` takes, CRC included; 0 when more are
+    // needed. A function code Qt cannot size: the bytes there are (a burst is one frame).
+    static int requestLength(const QByteArray &bytes);
     static bool crcOk(const QByteArray &frame);
     // The PDU of a complete answer frame (no CRC check).
     static QModbusResponse response(const QByteArray &frame);

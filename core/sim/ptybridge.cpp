@@ -2,6 +2,7 @@
 
 #include <QPointer>
 #include <QSocketNotifier>
+#include <QTimer>
 
 #ifdef Q_OS_UNIX
 #include <QFile>
@@ -11,6 +12,7 @@
 #include <cerrno>
 #include <climits>
 #include <fcntl.h>
+#include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
 #include <utility>
@@ -222,6 +224,9 @@ void PtyBridge::teardown()
         closeFd(p.slave);
         p.path.clear();
         p.pending.clear();
+        p.partial.clear();
+        p.frames.clear();
+        p.awaitingRead = false;
     }
 }
 
@@ -284,6 +289,25 @@ void PtyBridge::readMaster(Side from)
     Q_EMIT bytesSeen(from, bytes);
     if (!self || generation != m_generation)
         return;
+    if (!p.framer) {
+        passOn(from, bytes);
+        return;
+    }
+    p.partial.append(bytes);
+    while (!p.partial.isEmpty()) {
+        const int length = p.framer(p.partial);
+        if (length <= 0 || length > p.partial.size())
+            break;
+        p.frames.append(p.partial.left(length));
+        p.partial.remove(0, length);
+    }
+    deliverFrames(from);
+}
+
+void PtyBridge::passOn(Side from, const QByteArray &bytes)
+{
+    const quint64 generation = m_generation;
+    const QPointer<PtyBridge> self(this);
     QByteArray out = bytes;
     if (m_tap) {
         const Tap tap = m_tap; // a copy, so the tap may replace itself with setTap()
@@ -293,6 +317,76 @@ void PtyBridge::readMaster(Side from)
     }
     if (!out.isEmpty())
         forward(otherSide(from), out);
+}
+
+bool PtyBridge::otherSideHasRead(Side from)
+{
+    Port &to = port(otherSide(from));
+    if (!to.pending.isEmpty())
+        return false;
+    if (!to.awaitingRead)
+        return true;
+    int queued = 0;
+    // The slave's input queue is the tty's, shared by every opener: our kept fd sees it.
+    if (to.slave < 0 || ::ioctl(to.slave, FIONREAD, &queued) != 0)
+        return true;
+    if (queued > 0)
+        to.seenQueued = true;
+    else if (to.seenQueued || to.handedAt.elapsed() >= kUntoldMs)
+        to.awaitingRead = false;
+    return !to.awaitingRead;
+}
+
+void PtyBridge::frameRead(Side side)
+{
+    Port &p = port(side);
+    p.awaitingRead = false;
+    const Port &from = port(otherSide(side));
+    if (m_frameTimer && (!from.frames.isEmpty() || !from.partial.isEmpty()))
+        m_frameTimer->start(0);
+}
+
+void PtyBridge::deliverFrames(Side from)
+{
+    Port &p = port(from);
+    const quint64 generation = m_generation;
+    const QPointer<PtyBridge> self(this);
+    while (!p.frames.isEmpty() && otherSideHasRead(from)) {
+        Port &to = port(otherSide(from));
+        to.awaitingRead = true;
+        to.seenQueued = false;
+        to.handedAt.start();
+        passOn(from, p.frames.takeFirst());
+        if (!self || generation != m_generation)
+            return;
+    }
+    if (!p.frames.isEmpty()) {
+        m_frameTimer->start(1); // the other side reads the one before first
+        return;
+    }
+    if (!p.partial.isEmpty())
+        m_frameTimer->start(kFrameSilenceMs); // a silence: what came is all there is
+}
+
+void PtyBridge::setFramer(Side from, Framer framer)
+{
+    port(from).framer = std::move(framer);
+    if (m_frameTimer)
+        return;
+    m_frameTimer = new QTimer(this);
+    m_frameTimer->setSingleShot(true);
+    connect(m_frameTimer, &QTimer::timeout, this, [this] {
+        for (const Side side : {Side::A, Side::B}) {
+            Port &p = port(side);
+            if (!p.framer)
+                continue;
+            // Waited out a silence with an incomplete frame and nothing held: noise, or a
+            // frame this framer cannot size; it goes on as it came.
+            if (p.frames.isEmpty() && !p.partial.isEmpty() && otherSideHasRead(side))
+                p.frames.append(std::exchange(p.partial, {}));
+            deliverFrames(side);
+        }
+    });
 }
 
 void PtyBridge::forward(Side to, const QByteArray &bytes)
@@ -419,6 +513,17 @@ QString PtyBridge::path(Side side) const
 void PtyBridge::setTap(Tap tap)
 {
     m_tap = std::move(tap);
+}
+
+void PtyBridge::setFramer(Side from, Framer framer)
+{
+    Q_UNUSED(from)
+    Q_UNUSED(framer)
+}
+
+void PtyBridge::frameRead(Side side)
+{
+    Q_UNUSED(side)
 }
 
 void PtyBridge::inject(Side to, const QByteArray &bytes)

@@ -12,22 +12,6 @@
 
 namespace stepcom {
 
-namespace {
-
-// Bytes of the request frame at the start of `b` (CRC included), 0 when more are needed.
-int requestLength(const QByteArray &b)
-{
-    if (b.size() < 2)
-        return 0;
-    const QModbusRequest probe(QModbusPdu::FunctionCode(quint8(b.at(1))), b.mid(2));
-    const int size = QModbusRequest::calculateDataSize(probe);
-    if (size < 0) // a function code Qt cannot size: the burst is the frame
-        return int(b.size());
-    return 2 + size + 2;
-}
-
-} // namespace
-
 SimRtuTcpServer::SimRtuTcpServer(SimResponder *responder, bool echo, QObject *parent)
     : SimTcpListener(parent)
     , m_responder(responder)
@@ -55,7 +39,7 @@ void SimRtuTcpServer::onReadyRead(QTcpSocket *socket)
         socket->write(bytes); // a half-duplex adapter hears itself
     it->append(bytes);
     while (true) {
-        const int length = requestLength(*it);
+        const int length = RtuFrame::requestLength(*it);
         if (length == 0 || it->size() < length)
             return;
         const QByteArray frame = it->left(length);

@@ -1,5 +1,6 @@
 #include "sim/simworker.h"
 
+#include "bus/rtuframe.h"
 #include "sim/ptybridge.h"
 #include "sim/simdevice.h"
 #include "sim/simresponder.h"
@@ -115,6 +116,9 @@ bool SimWorker::openRtu(QString *error)
             return bad;
         });
     }
+    // The controller hears the silence between requests: Qt's server reads a burst as one
+    // frame, so requests that came while it was busy are handed to it one by one.
+    m_bridge->setFramer(PtyBridge::Side::B, &RtuFrame::requestLength);
     if (!m_bridge->open(error))
         return false;
     if (!m_options.linkPath.isEmpty() &&
@@ -128,6 +132,11 @@ bool SimWorker::openRtu(QString *error)
             clientBaud = [this] { return m_bridge->clientBaud(PtyBridge::Side::B); };
         m_rtu = new SimRtuServer(m_responder.get(), clientBaud, this);
         connect(m_rtu, &SimRtuServer::hangUpRequested, this, &SimWorker::scheduleHangUp);
+        // Qt's server reads (and answers) in its port's readyRead, connected before this:
+        // once it returns, the next request may go to it.
+        if (auto *port = m_rtu->findChild<QSerialPort *>())
+            connect(port, &QSerialPort::readyRead, m_bridge,
+                    [this] { m_bridge->frameRead(PtyBridge::Side::A); });
         connect(m_rtu, &QModbusDevice::errorOccurred, this, [this](QModbusDevice::Error e) {
             if (e != QModbusDevice::NoError)
                 Q_EMIT message(tr("RTU server: %1").arg(m_rtu->errorString()));

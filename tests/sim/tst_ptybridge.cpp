@@ -1,5 +1,7 @@
 #include "sim/ptybridge.h"
 
+#include "bus/rtuframe.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QSerialPort>
@@ -73,6 +75,7 @@ private Q_SLOTS:
     void noEchoFromASideNobodyHasOpen();
     void tapModifies();
     void tapDrops();
+    void framerHandsOnOneFrameAtATime();
     void injectDeliversWithoutTap();
     void bytesSeenReportsEveryChunkBeforeTap();
     void clientBaudFollowsSerialPort();
@@ -188,6 +191,48 @@ void TestPtyBridge::tapDrops()
     dropping = false;
     b.write(QByteArrayLiteral("marker"));
     QTRY_COMPARE(a.received(), QByteArrayLiteral("marker"));
+}
+
+// Requests that arrive glued together (the program on side A was too busy to read between
+// them) are handed on one by one, each once A has read the one before; a burst that makes no
+// whole frame goes on after a silence, as it came.
+void TestPtyBridge::framerHandsOnOneFrameAtATime()
+{
+    PtyBridge bridge;
+    OPEN_BRIDGE(bridge);
+    bridge.setFramer(Side::B, &stepcom::RtuFrame::requestLength);
+    QList<QByteArray> tapped;
+    bridge.setTap([&tapped](Side from, const QByteArray &bytes) {
+        if (from == Side::B)
+            tapped << bytes;
+        return bytes;
+    });
+    QSignalSpy seen(&bridge, &PtyBridge::bytesSeen);
+    // Side A read by hand, so that nothing reads it while the test does not.
+    const int a =
+        ::open(QFile::encodeName(bridge.path(Side::A)).constData(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+    QVERIFY(a >= 0);
+    QByteArray onA; // what side A has read so far
+    const auto readA = [a, &onA] {
+        char buffer[256];
+        const ssize_t n = ::read(a, buffer, sizeof buffer);
+        if (n > 0)
+            onA += QByteArray(buffer, n);
+        return onA;
+    };
+    Peer b(bridge.path(Side::B));
+    OPEN_PEER(b);
+    const QByteArray first = QByteArray::fromHex("010300000001840A");
+    const QByteArray second = QByteArray::fromHex("020600010004D9FA");
+    b.write(first + second + QByteArray::fromHex("03"));
+    QTRY_COMPARE(seenFrom(seen, Side::B).size(), first.size() + second.size() + 1);
+    QTest::qWait(50); // time enough to hand on more, had it done so
+    QCOMPARE(readA(), first);
+    QTRY_COMPARE(readA(), first + second);
+    // The lone byte makes no frame: after a silence it goes on all the same.
+    QTRY_COMPARE(readA(), first + second + QByteArray::fromHex("03"));
+    QCOMPARE(tapped, (QList<QByteArray>{first, second, QByteArray::fromHex("03")}));
+    ::close(a);
 }
 
 void TestPtyBridge::injectDeliversWithoutTap()
