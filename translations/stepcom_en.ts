@@ -8332,10 +8332,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Create support bundle</translation>
     </message>
     <message>
-        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
-        <translation>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</translation>
-    </message>
-    <message>
         <source>The profile %1 and its checklist</source>
         <translation>The profile %1 and its checklist</translation>
     </message>
@@ -8377,6 +8373,37 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Session logs of the last days:</source>
         <translation>Session logs of the last days:</translation>
+    </message>
+    <message>
+        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, the commissioning report of the machine, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
+        <translation>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, the commissioning report of the machine, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</translation>
+    </message>
+    <message>
+        <source>Report:</source>
+        <translation>Report:</translation>
+    </message>
+    <message numerus="yes">
+        <source>id(s) %1 as last read</source>
+        <translation>
+            <numerusform>id %1 as last read</numerusform>
+            <numerusform>ids %1 as last read</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the profile %1</source>
+        <translation>the profile %1</translation>
+    </message>
+    <message>
+        <source>The support bundle was cancelled: nothing was written.</source>
+        <translation>The support bundle was cancelled: nothing was written.</translation>
+    </message>
+    <message>
+        <source>The commissioning report of the machine</source>
+        <translation>The commissioning report of the machine</translation>
+    </message>
+    <message>
+        <source>None: no device&apos;s settings were read in this session and no profile goes in</source>
+        <translation>None: no device&apos;s settings were read in this session and no profile goes in</translation>
     </message>
 </context>
 <context>

@@ -8279,10 +8279,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>创建支持包</translation>
     </message>
     <message>
-        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
-        <translation>发给技术支持的单个 .zip 文件：会话日志（每次连接的每一帧）、参数文件及其调试清单、StepCom 的设置（其中没有任何密码）、StepCom、Qt 和操作系统的版本，以及见过的串口适配器。其中的 README 列出全部内容。</translation>
-    </message>
-    <message>
         <source>The profile %1 and its checklist</source>
         <translation>参数文件 %1 及其调试清单</translation>
     </message>
@@ -8323,6 +8319,36 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Session logs of the last days:</source>
         <translation>最近几天的会话日志：</translation>
+    </message>
+    <message>
+        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, the commissioning report of the machine, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
+        <translation>发给技术支持的单个 .zip 文件：会话日志（每次连接的每一帧）、参数文件及其调试清单、整机调试报告、StepCom 的设置（其中没有任何密码）、StepCom、Qt 和操作系统的版本，以及见过的串口适配器。其中的 README 列出全部内容。</translation>
+    </message>
+    <message>
+        <source>Report:</source>
+        <translation>报告：</translation>
+    </message>
+    <message numerus="yes">
+        <source>id(s) %1 as last read</source>
+        <translation>
+            <numerusform>ID %1（最后读取的值）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the profile %1</source>
+        <translation>参数文件 %1</translation>
+    </message>
+    <message>
+        <source>The support bundle was cancelled: nothing was written.</source>
+        <translation>支持包已取消：未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>The commissioning report of the machine</source>
+        <translation>整机调试报告</translation>
+    </message>
+    <message>
+        <source>None: no device&apos;s settings were read in this session and no profile goes in</source>
+        <translation>无：本次会话未读取任何设备的参数，也没有放入参数文件</translation>
     </message>
 </context>
 <context>

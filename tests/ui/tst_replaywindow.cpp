@@ -416,7 +416,9 @@ private Q_SLOTS:
         QSignalSpy written(dialog, &SupportBundleDialog::written);
         const QString zip = dir.filePath(QStringLiteral("from-window.zip"));
         QVERIFY(dialog->createFile(zip));
+        QVERIFY(written.wait(30000) || written.size() == 1); // on its own thread
         QCOMPARE(written.size(), 1);
+        QVERIFY(written.at(0).at(0).toBool());
         const QString said = written.at(0).at(1).toString();
         QVERIFY2(said.contains(QStringLiteral("logs/session.log")), qPrintable(said));
         QVERIFY2(said.contains(QStringLiteral("README.txt")), qPrintable(said));
