@@ -2551,10 +2551,6 @@
         <translation>link: %1</translation>
     </message>
     <message>
-        <source>%1: give one device id; several ids work with read, monitor, diff, apply, dump, report and command (without --wait)</source>
-        <translation>%1: give one device id; several ids work with read, monitor, diff, apply, dump, report and command (without --wait)</translation>
-    </message>
-    <message>
         <source>saved the settings of %1 to %2</source>
         <translation>saved the settings of %1 to %2</translation>
     </message>
@@ -2659,6 +2655,26 @@
     <message>
         <source>wrote %1 (%2):</source>
         <translation>wrote %1 (%2):</translation>
+    </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, monitor, diff, apply, dump, report, bundle and command (without --wait)</source>
+        <translation>%1: give one device id; several ids work with read, monitor, diff, apply, dump, report, bundle and command (without --wait)</translation>
+    </message>
+    <message>
+        <source>--profile: %1 does not exist</source>
+        <translation>--profile: %1 does not exist</translation>
+    </message>
+    <message>
+        <source>the profile goes into the bundle as it is, but not into the report</source>
+        <translation>the profile goes into the bundle as it is, but not into the report</translation>
+    </message>
+    <message>
+        <source>no bundle: not every controller could be read completely (without --port, --tcp or --sim the bundle has no controller in its report)</source>
+        <translation>no bundle: not every controller could be read completely (without --port, --tcp or --sim the bundle has no controller in its report)</translation>
+    </message>
+    <message>
+        <source>no machine report: no controller was read (--port, --tcp or --sim) and no profile was given (--profile)</source>
+        <translation>no machine report: no controller was read (--port, --tcp or --sim) and no profile was given (--profile)</translation>
     </message>
 </context>
 <context>
@@ -8265,18 +8281,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>the profile %1 does not exist</translation>
     </message>
     <message>
-        <source>cannot create %1 (zip error %2)</source>
-        <translation>cannot create %1 (zip error %2)</translation>
-    </message>
-    <message>
-        <source>cannot write %1 into %2</source>
-        <translation>cannot write %1 into %2</translation>
-    </message>
-    <message>
-        <source>cannot finish %1 (zip error %2)</source>
-        <translation>cannot finish %1 (zip error %2)</translation>
-    </message>
-    <message>
         <source>%1 is not a zip file (or cannot be read)</source>
         <translation>%1 is not a zip file (or cannot be read)</translation>
     </message>
@@ -8296,16 +8300,36 @@ Every other master on the bus must use the new settings too, and no other device
         <source>cannot copy %1 out of %2 into %3</source>
         <translation>cannot copy %1 out of %2 into %3</translation>
     </message>
+    <message>
+        <source>cannot create the zip file (zip error %1)</source>
+        <translation>cannot create the zip file (zip error %1)</translation>
+    </message>
+    <message>
+        <source>cannot write %1 into the bundle</source>
+        <translation>cannot write %1 into the bundle</translation>
+    </message>
+    <message>
+        <source>cannot finish the zip file (zip error %1)</source>
+        <translation>cannot finish the zip file (zip error %1)</translation>
+    </message>
+    <message>
+        <source>cannot create %1: %2</source>
+        <translation>cannot create %1: %2</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>cancelled</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>cannot write %1: %2</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SupportBundleDialog</name>
     <message>
         <source>Create support bundle</source>
         <translation>Create support bundle</translation>
-    </message>
-    <message>
-        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
-        <translation>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</translation>
     </message>
     <message>
         <source>The profile %1 and its checklist</source>
@@ -8349,6 +8373,37 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Session logs of the last days:</source>
         <translation>Session logs of the last days:</translation>
+    </message>
+    <message>
+        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, the commissioning report of the machine, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
+        <translation>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, the commissioning report of the machine, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</translation>
+    </message>
+    <message>
+        <source>Report:</source>
+        <translation>Report:</translation>
+    </message>
+    <message numerus="yes">
+        <source>id(s) %1 as last read</source>
+        <translation>
+            <numerusform>id %1 as last read</numerusform>
+            <numerusform>ids %1 as last read</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the profile %1</source>
+        <translation>the profile %1</translation>
+    </message>
+    <message>
+        <source>The support bundle was cancelled: nothing was written.</source>
+        <translation>The support bundle was cancelled: nothing was written.</translation>
+    </message>
+    <message>
+        <source>The commissioning report of the machine</source>
+        <translation>The commissioning report of the machine</translation>
+    </message>
+    <message>
+        <source>None: no device&apos;s settings were read in this session and no profile goes in</source>
+        <translation>None: no device&apos;s settings were read in this session and no profile goes in</translation>
     </message>
 </context>
 <context>
@@ -9046,10 +9101,14 @@ controller needed</translation>
     <message>
         <source>make a support bundle: the session logs of the last
 --days N, --profile FILE, the settings, versions, OS
-and serial adapters, with a README inside</source>
+and serial adapters, the machine report (of the
+profile, and of the controllers given with --port,
+--tcp or --sim and --id), with a README inside</source>
         <translation>make a support bundle: the session logs of the last
 --days N, --profile FILE, the settings, versions, OS
-and serial adapters, with a README inside</translation>
+and serial adapters, the machine report (of the
+profile, and of the controllers given with --port,
+--tcp or --sim and --id), with a README inside</translation>
     </message>
 </context>
 </TS>

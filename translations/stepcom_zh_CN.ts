@@ -2536,10 +2536,6 @@
         <translation>链路：%1</translation>
     </message>
     <message>
-        <source>%1: give one device id; several ids work with read, monitor, diff, apply, dump, report and command (without --wait)</source>
-        <translation>%1：请只给一个设备 ID；多个 ID 只适用于 read、monitor、diff、apply、dump、report 和 command（不带 --wait）</translation>
-    </message>
-    <message>
         <source>saved the settings of %1 to %2</source>
         <translation>已将 %1 的设置保存到 %2</translation>
     </message>
@@ -2642,6 +2638,26 @@
     <message>
         <source>wrote %1 (%2):</source>
         <translation>已写入 %1（%2）：</translation>
+    </message>
+    <message>
+        <source>%1: give one device id; several ids work with read, monitor, diff, apply, dump, report, bundle and command (without --wait)</source>
+        <translation>%1：请只给一个设备 ID；多个 ID 只适用于 read、monitor、diff、apply、dump、report、bundle 和 command（不带 --wait）</translation>
+    </message>
+    <message>
+        <source>--profile: %1 does not exist</source>
+        <translation>--profile：%1 不存在</translation>
+    </message>
+    <message>
+        <source>the profile goes into the bundle as it is, but not into the report</source>
+        <translation>参数文件按原样放入支持包，但不进入报告</translation>
+    </message>
+    <message>
+        <source>no bundle: not every controller could be read completely (without --port, --tcp or --sim the bundle has no controller in its report)</source>
+        <translation>未生成支持包：并非每台控制器都能完整读取（不加 --port、--tcp 或 --sim 时，支持包的报告中不含控制器）</translation>
+    </message>
+    <message>
+        <source>no machine report: no controller was read (--port, --tcp or --sim) and no profile was given (--profile)</source>
+        <translation>无整机报告：未读取任何控制器（--port、--tcp 或 --sim），也未给出参数文件（--profile）</translation>
     </message>
 </context>
 <context>
@@ -8212,18 +8228,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>参数文件 %1 不存在</translation>
     </message>
     <message>
-        <source>cannot create %1 (zip error %2)</source>
-        <translation>无法创建 %1（zip 错误 %2）</translation>
-    </message>
-    <message>
-        <source>cannot write %1 into %2</source>
-        <translation>无法将 %1 写入 %2</translation>
-    </message>
-    <message>
-        <source>cannot finish %1 (zip error %2)</source>
-        <translation>无法完成 %1（zip 错误 %2）</translation>
-    </message>
-    <message>
         <source>%1 is not a zip file (or cannot be read)</source>
         <translation>%1 不是 zip 文件（或无法读取）</translation>
     </message>
@@ -8243,16 +8247,36 @@ Every other master on the bus must use the new settings too, and no other device
         <source>cannot copy %1 out of %2 into %3</source>
         <translation>无法将 %1 从 %2 复制到 %3</translation>
     </message>
+    <message>
+        <source>cannot create the zip file (zip error %1)</source>
+        <translation>无法创建 zip 文件（zip 错误 %1）</translation>
+    </message>
+    <message>
+        <source>cannot write %1 into the bundle</source>
+        <translation>无法将 %1 写入支持包</translation>
+    </message>
+    <message>
+        <source>cannot finish the zip file (zip error %1)</source>
+        <translation>无法完成 zip 文件（zip 错误 %1）</translation>
+    </message>
+    <message>
+        <source>cannot create %1: %2</source>
+        <translation>无法创建 %1：%2</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>已取消</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SupportBundleDialog</name>
     <message>
         <source>Create support bundle</source>
         <translation>创建支持包</translation>
-    </message>
-    <message>
-        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
-        <translation>发给技术支持的单个 .zip 文件：会话日志（每次连接的每一帧）、参数文件及其调试清单、StepCom 的设置（其中没有任何密码）、StepCom、Qt 和操作系统的版本，以及见过的串口适配器。其中的 README 列出全部内容。</translation>
     </message>
     <message>
         <source>The profile %1 and its checklist</source>
@@ -8295,6 +8319,36 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Session logs of the last days:</source>
         <translation>最近几天的会话日志：</translation>
+    </message>
+    <message>
+        <source>One .zip file to send to support: the session logs (every frame of every connection), the profile and its checklist, the commissioning report of the machine, StepCom&apos;s settings (there are no passwords in them), the versions of StepCom, Qt and the system, and the serial adapters seen. A README inside lists it all.</source>
+        <translation>发给技术支持的单个 .zip 文件：会话日志（每次连接的每一帧）、参数文件及其调试清单、整机调试报告、StepCom 的设置（其中没有任何密码）、StepCom、Qt 和操作系统的版本，以及见过的串口适配器。其中的 README 列出全部内容。</translation>
+    </message>
+    <message>
+        <source>Report:</source>
+        <translation>报告：</translation>
+    </message>
+    <message numerus="yes">
+        <source>id(s) %1 as last read</source>
+        <translation>
+            <numerusform>ID %1（最后读取的值）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the profile %1</source>
+        <translation>参数文件 %1</translation>
+    </message>
+    <message>
+        <source>The support bundle was cancelled: nothing was written.</source>
+        <translation>支持包已取消：未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>The commissioning report of the machine</source>
+        <translation>整机调试报告</translation>
+    </message>
+    <message>
+        <source>None: no device&apos;s settings were read in this session and no profile goes in</source>
+        <translation>无：本次会话未读取任何设备的参数，也没有放入参数文件</translation>
     </message>
 </context>
 <context>
@@ -8989,10 +9043,13 @@ controller needed</source>
     <message>
         <source>make a support bundle: the session logs of the last
 --days N, --profile FILE, the settings, versions, OS
-and serial adapters, with a README inside</source>
+and serial adapters, the machine report (of the
+profile, and of the controllers given with --port,
+--tcp or --sim and --id), with a README inside</source>
         <translation>生成支持包：最近 --days N 天的会话日志、
---profile FILE、设置、版本、操作系统和串口适配器，
-内附 README</translation>
+--profile FILE、设置、版本、操作系统和串口适配器、
+整机报告（参数文件的，以及用 --port、--tcp 或
+--sim 和 --id 给出的控制器的），内附 README</translation>
     </message>
 </context>
 </TS>

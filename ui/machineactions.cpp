@@ -222,22 +222,8 @@ void MachineActions::reportFile(const QString &path, const QString &title, const
               }
               QList<ReportInput> inputs;
               const QDateTime now = QDateTime::currentDateTime();
-              for (int id : s->ids()) {
-                  ReportInput input;
-                  input.map = m_session->map();
-                  input.values = s->outcome(id).values;
-                  input.link = m_session->describeDevice(id);
-                  input.line = m_session->linkStats().lineText(id);
-                  input.deviceId = id;
-                  input.title = names.value(id);
-                  input.date = now;
-                  input.lastRead = now;
-                  if (id == m_session->deviceInView()) { // what the window follows
-                      input.travelLimits = m_session->travelLimits();
-                      input.savedToFlash = !m_session->parameters()->unsavedToFlash();
-                  }
-                  inputs << input;
-              }
+              for (int id : s->ids())
+                  inputs << sheet(id, s->outcome(id).values, names.value(id), now);
               const MachineReport report(inputs, title, notes, Language::instance().current());
               if (const QString e = report.write(path); !e.isEmpty()) {
                   Q_EMIT finished(false, e);
@@ -247,6 +233,53 @@ void MachineActions::reportFile(const QString &path, const QString &title, const
                                        nullptr, int(inputs.size()))
                                         .arg(path));
           });
+}
+
+ReportInput MachineActions::sheet(int id, const QHash<QString, qint64> &values, const QString &name,
+                                  const QDateTime &read) const
+{
+    ReportInput input;
+    input.map = m_session->map();
+    input.values = values;
+    input.link = m_session->describeDevice(id);
+    input.line = m_session->linkStats().lineText(id);
+    input.deviceId = id;
+    input.title = name;
+    input.date = QDateTime::currentDateTime();
+    input.lastRead = read;
+    if (id == m_session->deviceInView()) { // what the window follows
+        input.travelLimits = m_session->travelLimits();
+        input.savedToFlash = !m_session->parameters()->unsavedToFlash();
+    }
+    return input;
+}
+
+QList<ReportInput> MachineActions::knownSheets() const
+{
+    QList<int> ids = m_session->deviceIds();
+    if (ids.isEmpty())
+        ids << m_session->deviceInView();
+    const QHash<int, QString> names = this->names();
+    QList<ReportInput> sheets;
+    for (int id : std::as_const(ids)) {
+        const QHash<QString, qint64> values = m_session->knownValues(id);
+        // Only the live status seen (never in view): no sheet to speak of.
+        const bool settings =
+            std::any_of(values.keyBegin(), values.keyEnd(), [this](const QString &key) {
+                const Parameter *p = m_session->map().find(key);
+                return p && p->writable();
+            });
+        if (settings)
+            sheets << sheet(id, values, names.value(id), {});
+    }
+    return sheets;
+}
+
+std::optional<ReportInput> MachineActions::profileSheet(const QString &path,
+                                                        QStringList *problems) const
+{
+    return ReportInput::fromProfileFile(m_session->map(), path, Language::instance().current(),
+                                        problems);
 }
 
 } // namespace stepcom

@@ -5,6 +5,7 @@
 #include <QPointer>
 
 #include <functional>
+#include <optional>
 
 class QAction;
 class QMenu;
@@ -17,6 +18,7 @@ class BusSweep;
 class DeviceListDock;
 class DeviceSession;
 struct Parameter;
+struct ReportInput;
 
 // The File menu's actions for every device of the line (enabled with several devices on the
 // list): apply one profile to several of them, save each one as a profile into a folder, and
@@ -45,6 +47,11 @@ public:
     void dumpIntoFolder(const QString &folder);
     // Reads every device of the list, then writes one report of them all (.pdf or .html).
     void reportFile(const QString &path, const QString &title, const QString &notes);
+    // The machine's sheets as the window knows them now, nothing read for them: each device of
+    // the line whose settings were read (as last read), for a support bundle's report.
+    QList<ReportInput> knownSheets() const;
+    // The sheet of a profile file (and its checklist); nullopt and why not.
+    std::optional<ReportInput> profileSheet(const QString &path, QStringList *problems) const;
 
 Q_SIGNALS:
     // Every outcome, for the message dock; ok = false for errors.
@@ -57,6 +64,9 @@ private:
     void chooseDump();
     void chooseReport();
     QHash<int, QString> names() const;
+    // Device `id`'s sheet with these values, read at `read` (invalid: not just now).
+    ReportInput sheet(int id, const QHash<QString, qint64> &values, const QString &name,
+                      const QDateTime &read) const;
     // Reads every device of the list, then runs `done` (the sweep is deleted after it).
     void sweep(const QString &what, const QList<const Parameter *> &params,
                std::function<void(BusSweep *)> done);

@@ -262,7 +262,7 @@ void MainWindow::createActions()
         QString profile = file->isOpen() ? file->path() : m_checklist->profilePath();
         if (profile.isEmpty())
             profile = ProfileActions::recentFiles().value(0);
-        auto *dialog = new SupportBundleDialog(profile, this);
+        auto *dialog = new SupportBundleDialog(profile, m_machine, this);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         connect(dialog, &SupportBundleDialog::written, this, [this](bool ok, const QString &text) {
             m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,

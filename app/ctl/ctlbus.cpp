@@ -42,10 +42,15 @@ void CtlRunner::startMulti()
         runMachineReport();
         return;
     }
+    if (QLatin1String(m_chosen->name) == QLatin1String("bundle")) {
+        m_chosen = nullptr; // one bundle, its report of the whole line
+        runBundle();
+        return;
+    }
     if (!runsPerId(*m_chosen)) {
         const CtlCommand *chosen = std::exchange(m_chosen, nullptr); // a usage error, not per id
         fail(UsageError, tr("%1: give one device id; several ids work with read, monitor, diff, "
-                            "apply, dump, report and command (without --wait)")
+                            "apply, dump, report, bundle and command (without --wait)")
                              .arg(QLatin1String(chosen->name)));
         return;
     }

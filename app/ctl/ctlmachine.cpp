@@ -43,44 +43,55 @@ void CtlRunner::runMachineReport()
         return;
     }
     connectThen([this, path] {
-        auto *sweep = new BusSweep(m_session, this);
-        connect(sweep, &BusSweep::finished, this, [this, sweep, path](bool ok) {
-            sweep->deleteLater();
-            if (!ok) {
-                // A machine's report never leaves a controller out silently: none then.
-                for (int id : m_options.ids) {
-                    for (const QString &e : sweep->outcome(id).errors)
-                        m_err << QStringLiteral("stepcomctl: ") << tr("id %1: %2").arg(id).arg(e)
+        readMachine(tr("no report: not every controller could be read completely"),
+                    [this, path](const QList<ReportInput> &inputs) {
+                        const MachineReport report(inputs, m_options.name, m_options.notes,
+                                                   m_options.language);
+                        if (const QString e = report.write(path); !e.isEmpty()) {
+                            fail(UsageError, e);
+                            return;
+                        }
+                        m_out << tr("report of %n controller(s) written to %1", nullptr,
+                                    int(inputs.size()))
+                                     .arg(path)
                               << Qt::endl;
-                }
-                fail(DeviceError, tr("no report: not every controller could be read completely"));
-                return;
-            }
-            QList<ReportInput> inputs;
-            const QDateTime now = QDateTime::currentDateTime();
-            for (int id : m_options.ids) {
-                ReportInput input;
-                input.map = m_map;
-                input.values = sweep->outcome(id).values;
-                input.link = m_session->describeDevice(id);
-                input.line = m_session->linkStats().lineText(id);
-                input.deviceId = id;
-                input.date = now;
-                input.lastRead = now; // one-shot: the flash state is not known
-                inputs << input;
-            }
-            const MachineReport report(inputs, m_options.name, m_options.notes, m_options.language);
-            if (const QString e = report.write(path); !e.isEmpty()) {
-                fail(UsageError, e);
-                return;
-            }
-            m_out << tr("report of %n controller(s) written to %1", nullptr, int(inputs.size()))
-                         .arg(path)
-                  << Qt::endl;
-            finish(Ok);
-        });
-        sweep->start(m_options.ids, m_map.holdings());
+                        finish(Ok);
+                    });
     });
+}
+
+void CtlRunner::readMachine(const QString &failure,
+                            std::function<void(const QList<ReportInput> &)> done)
+{
+    auto *sweep = new BusSweep(m_session, this);
+    connect(sweep, &BusSweep::finished, this, [this, sweep, failure, done](bool ok) {
+        sweep->deleteLater();
+        if (!ok) {
+            // A machine's report never leaves a controller out silently: none then.
+            for (int id : m_options.ids) {
+                for (const QString &e : sweep->outcome(id).errors)
+                    m_err << QStringLiteral("stepcomctl: ") << tr("id %1: %2").arg(id).arg(e)
+                          << Qt::endl;
+            }
+            fail(DeviceError, failure);
+            return;
+        }
+        QList<ReportInput> inputs;
+        const QDateTime now = QDateTime::currentDateTime();
+        for (int id : m_options.ids) {
+            ReportInput input;
+            input.map = m_map;
+            input.values = sweep->outcome(id).values;
+            input.link = m_session->describeDevice(id);
+            input.line = m_session->linkStats().lineText(id);
+            input.deviceId = id;
+            input.date = now;
+            input.lastRead = now; // one-shot: the flash state is not known
+            inputs << input;
+        }
+        done(inputs);
+    });
+    sweep->start(m_options.ids, m_map.holdings());
 }
 
 } // namespace stepcom

@@ -2,6 +2,7 @@
 // replayed without a controller, and the support bundle a technician sends.
 #include "ctlrunner.h"
 
+#include "report/machinereport.h"
 #include "session/sessionlog.h"
 #include "support/replaylog.h"
 #include "support/supportbundle.h"
@@ -185,11 +186,57 @@ void CtlRunner::runBundle()
         fail(UsageError, tr("bundle needs the name of the zip file to write"));
         return;
     }
+    if (!m_options.profile.isEmpty() && !QFileInfo::exists(m_options.profile)) {
+        fail(UsageError, tr("--profile: %1 does not exist").arg(m_options.profile));
+        return;
+    }
     BundleInput input;
     input.logDirectory = SupportBundle::defaultLogDirectory();
     input.days = m_options.days;
     input.profilePath = m_options.profile;
     input.settingsFiles = SupportBundle::defaultSettingsFiles();
+    // The machine report: the controllers given (--port, --tcp or --sim, with --id), read now,
+    // and the profile's sheet.
+    QList<ReportInput> sheets;
+    if (!m_options.profile.isEmpty()) {
+        QStringList problems;
+        if (const auto sheet = ReportInput::fromProfileFile(m_map, m_options.profile,
+                                                            m_options.language, &problems)) {
+            sheets << *sheet;
+        } else {
+            for (const QString &e : std::as_const(problems))
+                m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+            m_err << QStringLiteral("stepcomctl: ")
+                  << tr("the profile goes into the bundle as it is, but not into the report")
+                  << Qt::endl;
+            input.noReport = QStringLiteral("the profile %1 could not be read (%2)")
+                                 .arg(QFileInfo(m_options.profile).fileName(),
+                                      problems.join(QStringLiteral("; ")));
+        }
+    }
+    if (m_options.target == CtlOptions::Target::None) {
+        writeBundle(input, sheets);
+        return;
+    }
+    connectThen([this, input, sheets] {
+        readMachine(tr("no bundle: not every controller could be read completely (without "
+                       "--port, --tcp or --sim the bundle has no controller in its report)"),
+                    [this, input, sheets](const QList<ReportInput> &read) {
+                        writeBundle(input, read + sheets);
+                    });
+    });
+}
+
+void CtlRunner::writeBundle(BundleInput input, const QList<ReportInput> &sheets)
+{
+    if (!sheets.isEmpty()) {
+        const MachineReport report(sheets, m_options.name, m_options.notes, m_options.language);
+        input.reportHtml = report.selfContainedHtml().toUtf8();
+        input.reportSheets = report.sheetLines();
+    } else if (input.noReport.isEmpty()) {
+        input.noReport = QStringLiteral("no controller was read (--port, --tcp or --sim) and no "
+                                        "profile was given (--profile)");
+    }
     QStringList contents;
     QString error;
     const QString out = m_options.arguments.first();
@@ -201,6 +248,10 @@ void CtlRunner::runBundle()
           << Qt::endl;
     for (const QString &name : std::as_const(contents))
         m_out << QStringLiteral("  ") << name << Qt::endl;
+    if (input.reportHtml.isEmpty() && m_options.profile.isEmpty()) // else said above
+        m_out << tr("no machine report: no controller was read (--port, --tcp or --sim) and no "
+                    "profile was given (--profile)")
+              << Qt::endl;
     finish(Ok);
 }
 

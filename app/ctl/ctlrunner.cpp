@@ -151,7 +151,9 @@ const QList<CtlCommand> &CtlRunner::commands()
         {"bundle", "bundle OUT.zip",
          QT_TRANSLATE_NOOP("stepcomctl", "make a support bundle: the session logs of the last\n"
                                          "--days N, --profile FILE, the settings, versions, OS\n"
-                                         "and serial adapters, with a README inside"),
+                                         "and serial adapters, the machine report (of the\n"
+                                         "profile, and of the controllers given with --port,\n"
+                                         "--tcp or --sim and --id), with a README inside"),
          &CtlRunner::runBundle},
     };
     return table;

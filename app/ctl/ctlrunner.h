@@ -9,7 +9,9 @@
 
 namespace stepcom {
 
+struct BundleInput;
 struct Profile;
+struct ReportInput;
 class CtlRunner;
 
 // One stepcomctl command: its name, how it is called, its help (English source, translated in
@@ -84,12 +86,17 @@ private:
     void runReportFromFile(const QString &path);
     // report --id 1,2,3: every controller of the line in one document (ctlmachine.cpp).
     void runMachineReport();
+    // Reads every controller of --id (one or several) completely, then `done` with their
+    // sheets for a machine's report; fails with `failure` (and each one's errors) otherwise.
+    void readMachine(const QString &failure, std::function<void(const QList<ReportInput> &)> done);
     // dump into a folder: one file per id, named by BusDump (ctlmachine.cpp).
     void dumpIntoFolder(const QString &folder, const QHash<QString, qint64> &values);
     // Support (ctlreplay.cpp): replay a session log or a bundle's; make a support bundle;
     // --log FILE for the session just made.
     void runReplay();
     void runBundle();
+    // The bundle with the machine report of `sheets` (none: `input.noReport` says why).
+    void writeBundle(BundleInput input, const QList<ReportInput> &sheets);
     void startLog();
     void confirmThenApply(const QList<ParameterWrite> &writes);
     void applyWrites(const QList<ParameterWrite> &writes);

@@ -14,8 +14,9 @@ using namespace stepcom;
 
 namespace {
 
-// Only `report` draws (QTextDocument, QPdfWriter, QPainter) and needs a QGuiApplication; every
-// other command stays a plain QCoreApplication that runs without any display.
+// Only `report` and `bundle` (its machine report) draw (QTextDocument, QPdfWriter, QPainter) and
+// need a QGuiApplication; every other command stays a plain QCoreApplication that runs without
+// any display.
 bool wantsReport(int argc, char *argv[])
 {
     QStringList args;
@@ -26,7 +27,9 @@ bool wantsReport(int argc, char *argv[])
     parser.addOption(Translators::languageOption());
     parser.addHelpOption();
     parser.addVersionOption();
-    return parser.parse(args) && parser.positionalArguments().value(0) == QLatin1String("report");
+    // A support bundle holds the machine's report.
+    const QString command = parser.parse(args) ? parser.positionalArguments().value(0) : QString();
+    return command == QLatin1String("report") || command == QLatin1String("bundle");
 }
 
 } // namespace

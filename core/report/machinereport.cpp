@@ -118,14 +118,36 @@ QString MachineReport::write(const QString &path) const
     if (m_devices.isEmpty())
         return tr("%1: no controller to report on").arg(path);
     return ReportFile::write(
-        path, title(), [this] { return document(); },
-        [this] {
-            // One self-contained file: each picture travels inside it as a data URL.
-            QStringList sources;
-            for (const ReportInput &d : m_devices)
-                sources << ReportFile::pngDataUrl(CommissioningReport(d).picture());
-            return html(sources);
-        });
+        path, title(), [this] { return document(); }, [this] { return selfContainedHtml(); });
+}
+
+QString MachineReport::selfContainedHtml() const
+{
+    QStringList sources;
+    for (const ReportInput &d : m_devices)
+        sources << ReportFile::pngDataUrl(CommissioningReport(d).picture());
+    return html(sources);
+}
+
+QStringList MachineReport::sheetLines() const
+{
+    QStringList lines;
+    for (const ReportInput &d : m_devices) {
+        QString line = QStringLiteral("id %1").arg(d.deviceId);
+        if (!d.title.isEmpty())
+            line += QStringLiteral(" \"%1\"").arg(d.title);
+        if (d.fromFile())
+            line += QStringLiteral(": made from the profile file %1 (no controller read)")
+                        .arg(d.sourceFile);
+        else
+            line += QStringLiteral(": %1, values as read%2")
+                        .arg(d.link.isEmpty() ? QStringLiteral("controller") : d.link,
+                             d.lastRead.isValid()
+                                 ? QStringLiteral(" at ") + d.lastRead.toString(Qt::ISODate)
+                                 : QString());
+        lines << line;
+    }
+    return lines;
 }
 
 } // namespace stepcom

@@ -26,6 +26,13 @@ public:
     // The picture of device `index` is referenced as imageSources.at(index).
     QString html(const QStringList &imageSources) const;
     std::unique_ptr<QTextDocument> document() const;
+    // The whole report as one file: each picture travels inside it as a data URL (what a .html
+    // report holds, and report.html in a support bundle).
+    QString selfContainedHtml() const;
+    // One line per controller, in English, for a README: "id 1: /dev/ttyUSB0 · 9600 8N1 · id 1,
+    // values as read" or "id 1 \"Machine A\": made from the profile file machine-a.json".
+    QStringList sheetLines() const;
+    bool isEmpty() const { return m_devices.isEmpty(); }
     // By the file's suffix (.pdf, .html/.htm); atomic; empty on success, else why not.
     QString write(const QString &path) const;
 

@@ -2,6 +2,7 @@
 
 #include "commissioning/checklistfile.h"
 #include "profile/profile.h"
+#include "profile/profilefile.h"
 
 #include <QFileInfo>
 
@@ -36,6 +37,18 @@ ReportInput ReportInput::fromProfile(const RegisterMap &map, const Profile &prof
             in.checklistErrors = r.errors;
     }
     return in;
+}
+
+std::optional<ReportInput> ReportInput::fromProfileFile(const RegisterMap &map, const QString &path,
+                                                        const QString &locale, QStringList *errors)
+{
+    const ProfileParseResult r = ProfileFile::load(path, map, ProfileFile::OtherMaps::Accept);
+    if (!r.ok()) {
+        if (errors)
+            *errors = r.errors;
+        return std::nullopt;
+    }
+    return fromProfile(map, *r.profile, path, locale);
 }
 
 } // namespace stepcom

@@ -62,6 +62,10 @@ public:
     // checklist kept beside it (ChecklistFile::pathFor) when there is one.
     static ReportInput fromProfile(const RegisterMap &map, const Profile &profile,
                                    const QString &path, const QString &locale);
+    // The same read from the file at `path` (profiles of other maps too); nullopt and why
+    // not when it is no profile StepCom can read.
+    static std::optional<ReportInput> fromProfileFile(const RegisterMap &map, const QString &path,
+                                                      const QString &locale, QStringList *errors);
 };
 
 } // namespace stepcom

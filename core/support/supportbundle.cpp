@@ -8,9 +8,12 @@
 #include <QSerialPortInfo>
 #include <QStandardPaths>
 #include <QSysInfo>
+#include <QTemporaryFile>
 
 #include <quazip.h>
 #include <quazipfile.h>
+
+#include <filesystem>
 
 namespace stepcom {
 
@@ -86,22 +89,99 @@ QString SupportBundle::systemText(const BundleInput &input)
     return text;
 }
 
-bool SupportBundle::create(const QString &zipPath, const BundleInput &input, QStringList *contents,
-                           QString *error)
+namespace {
+
+// name inside → file outside (or text), in the order the README lists them
+struct Item
 {
-    // name inside → file outside (or text), in the order the README lists them
-    struct Item
-    {
-        QString name;
-        QString source;
-        QByteArray text;
-        QString what;
+    QString name;
+    QString source;
+    QByteArray text;
+    QString what;
+    qint64 size() const { return source.isEmpty() ? text.size() : QFileInfo(source).size(); }
+};
+
+// Puts the items into the zip at `path`; false and why not, or false when cancelled.
+bool writeZip(const QString &path, const QList<Item> &items, QStringList *contents,
+              const SupportBundle::Callbacks &callbacks, QString *error)
+{
+    qint64 total = 0;
+    for (const Item &item : items)
+        total += item.size();
+    qint64 done = 0;
+    const auto advance = [&](qint64 bytes) {
+        done = std::min(total, done + bytes);
+        if (callbacks.progress)
+            callbacks.progress(done, total);
     };
+    const auto cancelled = [&] { return callbacks.cancelled && callbacks.cancelled(); };
+    QuaZip zip(path);
+    if (!zip.open(QuaZip::mdCreate)) {
+        *error =
+            SupportBundle::tr("cannot create the zip file (zip error %1)").arg(zip.getZipError());
+        return false;
+    }
+    for (const Item &item : items) {
+        QuaZipFile out(&zip);
+        QuaZipNewInfo info(item.name);
+        if (!item.source.isEmpty())
+            info = QuaZipNewInfo(item.name, item.source);
+        if (!out.open(QIODevice::WriteOnly, info)) {
+            *error = SupportBundle::tr("cannot write %1 into the bundle").arg(item.name);
+            return false;
+        }
+        bool ok = true;
+        if (item.source.isEmpty()) {
+            ok = out.write(item.text) == item.text.size();
+            advance(item.text.size());
+        } else {
+            QFile in(item.source);
+            ok = in.open(QIODevice::ReadOnly);
+            QByteArray buffer;
+            while (ok && !in.atEnd() && !cancelled()) {
+                buffer = in.read(kChunk);
+                ok = !buffer.isEmpty() && out.write(buffer) == buffer.size();
+                advance(buffer.size());
+            }
+        }
+        out.close();
+        if (cancelled())
+            return false;
+        if (!ok || out.getZipError() != 0) {
+            *error = SupportBundle::tr("cannot write %1 into the bundle").arg(item.name);
+            return false;
+        }
+        if (contents)
+            *contents << item.name;
+    }
+    zip.close();
+    if (zip.getZipError() != 0) {
+        *error =
+            SupportBundle::tr("cannot finish the zip file (zip error %1)").arg(zip.getZipError());
+        return false;
+    }
+    advance(total - done); // a file that shrank meanwhile: the end is the end
+    return true;
+}
+
+} // namespace
+
+bool SupportBundle::create(const QString &zipPath, const BundleInput &input, QStringList *contents,
+                           QString *error, const Callbacks &callbacks)
+{
     QList<Item> items;
     items << Item{QStringLiteral("system.txt"),
                   {},
                   systemText(input).toUtf8(),
                   QStringLiteral("StepCom's and Qt's versions, the OS, the serial adapters seen")};
+    if (!input.reportHtml.isEmpty())
+        items << Item{QStringLiteral("report.html"),
+                      {},
+                      input.reportHtml,
+                      QStringLiteral("the commissioning report of the machine (open it in a web "
+                                     "browser), %1 controller sheet(s):\n        %2")
+                          .arg(input.reportSheets.size())
+                          .arg(input.reportSheets.join(QStringLiteral("\n        ")))};
     for (const QFileInfo &log : logsFor(input))
         items << Item{QStringLiteral("logs/") + log.fileName(),
                       log.absoluteFilePath(),
@@ -140,42 +220,43 @@ bool SupportBundle::create(const QString &zipPath, const BundleInput &input, QSt
             .arg(input.days);
     for (const Item &item : std::as_const(items))
         readme += QStringLiteral("%1\n    %2\n").arg(item.name, item.what);
+    if (input.reportHtml.isEmpty())
+        readme +=
+            QStringLiteral("\nNo commissioning report of the machine: %1.\n")
+                .arg(input.noReport.isEmpty() ? QStringLiteral("none was made") : input.noReport);
     items.prepend(Item{QStringLiteral("README.txt"), {}, readme.toUtf8(), {}});
 
-    QuaZip zip(zipPath);
-    if (!zip.open(QuaZip::mdCreate)) {
-        *error = tr("cannot create %1 (zip error %2)").arg(zipPath).arg(zip.getZipError());
+    // Written under another name beside it, renamed when whole: nothing half-written is left,
+    // and a bundle of the same name stays as it was until the new one is complete.
+    const QFileInfo target(zipPath);
+    QTemporaryFile partial(target.absoluteDir().filePath(QLatin1Char('.') + target.fileName() +
+                                                         QStringLiteral(".XXXXXX.part")));
+    if (!partial.open()) {
+        *error = tr("cannot create %1: %2").arg(zipPath, partial.errorString());
         return false;
     }
-    for (const Item &item : std::as_const(items)) {
-        QuaZipFile out(&zip);
-        QuaZipNewInfo info(item.name);
-        if (!item.source.isEmpty())
-            info = QuaZipNewInfo(item.name, item.source);
-        if (!out.open(QIODevice::WriteOnly, info)) {
-            *error = tr("cannot write %1 into %2").arg(item.name, zipPath);
-            return false;
-        }
-        bool ok = true;
-        if (item.source.isEmpty()) {
-            ok = out.write(item.text) == item.text.size();
-        } else {
-            QFile in(item.source);
-            ok = in.open(QIODevice::ReadOnly) && copyInto(in, out);
-        }
-        out.close();
-        if (!ok || out.getZipError() != 0) {
-            *error = tr("cannot write %1 into %2").arg(item.name, zipPath);
-            return false;
-        }
-        if (contents)
-            *contents << item.name;
-    }
-    zip.close();
-    if (zip.getZipError() != 0) {
-        *error = tr("cannot finish %1 (zip error %2)").arg(zipPath).arg(zip.getZipError());
+    partial.close(); // QuaZip writes it by its name; the object removes it unless renamed
+    QStringList names;
+    const bool written = writeZip(partial.fileName(), items, &names, callbacks, error);
+    if (callbacks.cancelled && callbacks.cancelled()) {
+        *error = tr("cancelled");
         return false;
     }
+    if (!written) {
+        *error = QStringLiteral("%1: %2").arg(zipPath, *error);
+        return false;
+    }
+    std::error_code failed;
+    std::filesystem::rename(std::filesystem::path(partial.fileName().toStdU16String()),
+                            std::filesystem::path(zipPath.toStdU16String()), failed);
+    if (failed) {
+        *error = tr("cannot write %1: %2")
+                     .arg(zipPath, QString::fromLocal8Bit(failed.message().c_str()));
+        return false;
+    }
+    partial.setAutoRemove(false); // it is the bundle now
+    if (contents)
+        *contents << names;
     return true;
 }
 

@@ -1,6 +1,7 @@
 // The dialogs fit the screens technicians have (issue 19, split from tst_layoutfit): write
-// changes, bus scan, profile save and compare, files compare, backups and the user guide window
-// at the screen the test runs on (the same five as tst_layoutfit), in English and Chinese.
+// changes, bus scan, profile save and compare, files compare, backups, the support bundle and
+// the user guide window at the screen the test runs on (the same five as tst_layoutfit), in
+// English and Chinese.
 // Fails when a dialog is larger than the screen or cannot shrink to it, a text in it is cut, a
 // widget lies outside its parent, a view scrolls sideways, or a guide picture is wider than the
 // guide.
@@ -12,6 +13,7 @@
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilefilesdialog.h"
 #include "dialogs/profilesavedialog.h"
+#include "dialogs/supportbundledialog.h"
 #include "dialogs/writechangesdialog.h"
 #include "help/guidewindow.h"
 #include "language.h"
@@ -21,6 +23,7 @@
 #include "profile/backupstore.h"
 #include "session/devicesession.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QScreen>
 #include <QSettings>
@@ -81,6 +84,23 @@ private Q_SLOTS:
             checkDialog(dialog, QString::fromLatin1(dialog->metaObject()->className()));
             dialog->close();
         }
+        QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
+    }
+
+    // Help → Create support bundle…, nothing read yet: the longest words it shows.
+    void supportBundleDialogFits_data() { languages(); }
+    void supportBundleDialogFits()
+    {
+        QFETCH(QString, language);
+        Language::instance().setLanguage(language);
+        DeviceSession session;
+        MainWindow window(&session);
+        window.show();
+        window.action(QStringLiteral("createSupportBundle"))->trigger();
+        auto *dialog = window.findChild<SupportBundleDialog *>();
+        QVERIFY(dialog);
+        checkDialog(dialog, QStringLiteral("support bundle"));
+        dialog->close();
         QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
     }
 

@@ -54,44 +54,6 @@ using namespace stepcom;
 class TestReplayWindow : public test::ReplayFixture
 {
     Q_OBJECT
-    // What the session held at a moment, and that moment's clock time in the log.
-    struct Moment
-    {
-        QString what;
-        QString clock;
-        QHash<QString, qint64> values;
-        QString position1; // the strip's text, when it had settled
-    };
-    QString logPath;
-    QList<Moment> moments;
-
-    // What the session holds at the end of the next status cycle that satisfies `when`, taken in
-    // the cycle's own signal: the poller puts a cycle's values into the store at its end, so
-    // between its reads the log is ahead of the window.
-    void captureAtCycleEnd(const QString &what, bool withStrip,
-                           const std::function<bool()> &when = {})
-    {
-        std::optional<Moment> taken;
-        const auto c =
-            connect(session.get(), &DeviceSession::statusCycleFinished, this, [&](bool ok, qint64) {
-                if (taken || !ok || (when && !when()))
-                    return;
-                QFile f(logPath);
-                if (!f.open(QIODevice::ReadOnly))
-                    return;
-                const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
-                Moment m;
-                m.what = what;
-                m.clock = QString::fromLatin1(lines.last().mid(11, 12));
-                m.values = deviceValues();
-                if (withStrip) // settled: the strip shows these values
-                    m.position1 = window->machineStrip()->positionLabel(1)->text();
-                taken = m;
-            });
-        QTRY_VERIFY_WITH_TIMEOUT(taken.has_value(), 10000);
-        disconnect(c);
-        moments << *taken;
-    }
     QByteArray recorded() const
     {
         QFile f(logPath);
@@ -139,14 +101,7 @@ private Q_SLOTS:
         QVERIFY(stopped.at(0).at(1).toBool());
         QTRY_VERIFY_WITH_TIMEOUT(store()->deviceValue(key("running")) == 0, 10000);
         QTRY_COMPARE(window->machineStrip()->motion(1), MachineStrip::Motion::Idle);
-        // Settled: the same position two cycles running, so the strip shows it already.
-        std::optional<qint64> last;
-        captureAtCycleEnd(QStringLiteral("stopped"), true, [this, &last] {
-            const auto now = store()->deviceValue(key("position"));
-            const bool same = now == last;
-            last = now;
-            return same;
-        });
+        captureSettled(QStringLiteral("stopped"));
         // 5. a page chosen and a checklist result (skipped), user lines of the log
         window->sidebar()->setCurrentPage(2);
         auto *step = window->checklistPage()->stepWidget(QStringLiteral("motor1.direction"));
@@ -178,38 +133,9 @@ private Q_SLOTS:
         QVERIFY(replay()->bar()->isVisibleTo(window.get()));
         QVERIFY(store()->isReplay());
         for (const Moment &m : std::as_const(moments)) {
-            QString error;
-            const auto ms = replay()->log().parseTime(m.clock, &error);
-            QVERIFY2(ms, qPrintable(error));
-            replay()->seek(*ms);
-            QCoreApplication::processEvents();
-            QCOMPARE(replay()->moment(), *ms);
-            const QHash<QString, qint64> shown = deviceValues();
-            for (auto it = m.values.cbegin(); it != m.values.cend(); ++it)
-                QVERIFY2(shown.value(it.key(), -1) == it.value(),
-                         qPrintable(QStringLiteral("%1 at %2: %3, held %4")
-                                        .arg(it.key(), m.what)
-                                        .arg(shown.value(it.key(), -1))
-                                        .arg(it.value())));
-            QCOMPARE(shown.size(), m.values.size());
-            if (!m.position1.isEmpty())
-                QCOMPARE(window->machineStrip()->positionLabel(1)->text(), m.position1);
-            QCOMPARE(window->machineStrip()->motion(1), m.values.value(key("running")) == 1
-                                                            ? MachineStrip::Motion::Running
-                                                            : MachineStrip::Motion::Idle);
-            QCOMPARE(replay()->bar()->momentLabel()->text(), replay()->log().momentText(*ms));
-            // The plots end at the moment too, with the same position.
-            const StatusRecorder *plots = session->recorder();
-            QVERIFY(!plots->isEmpty());
-            QVERIFY(plots->last().elapsedMs <= *ms);
-            QCOMPARE(plots->last().positions.value(0),
-                     session->map()
-                         .find(key("position"))
-                         ->toEngineering(m.values.value(key("position"))));
-            QCOMPARE(plots->last().running.value(0), qint8(m.values.value(key("running"))));
-            TrafficModel *traffic = window->trafficView()->model();
-            traffic->flush();
-            QVERIFY(traffic->storedCount() > 0);
+            checkReplayAt(m);
+            if (QTest::currentTestFailed())
+                return;
             QCOMPARE(session->traffic()->entries().size(), sent); // the session's own: nothing new
         }
         QVERIFY2(
@@ -416,7 +342,9 @@ private Q_SLOTS:
         QSignalSpy written(dialog, &SupportBundleDialog::written);
         const QString zip = dir.filePath(QStringLiteral("from-window.zip"));
         QVERIFY(dialog->createFile(zip));
+        QVERIFY(written.wait(30000) || written.size() == 1); // on its own thread
         QCOMPARE(written.size(), 1);
+        QVERIFY(written.at(0).at(0).toBool());
         const QString said = written.at(0).at(1).toString();
         QVERIFY2(said.contains(QStringLiteral("logs/session.log")), qPrintable(said));
         QVERIFY2(said.contains(QStringLiteral("README.txt")), qPrintable(said));
@@ -491,28 +419,9 @@ private Q_SLOTS:
     {
         QVERIFY(openReplay(logPath));
         for (const Moment &m : std::as_const(moments)) {
-            const test::ProgramRun r = test::runProgram(
-                QStringLiteral("stepcomctl"), {"replay", logPath, "--at", m.clock, "--json"});
-            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-            const QJsonObject cli = QJsonDocument::fromJson(r.out.toUtf8())
-                                        .object()
-                                        .value(QStringLiteral("devices"))
-                                        .toObject()
-                                        .value(QStringLiteral("1"))
-                                        .toObject()
-                                        .value(QStringLiteral("values"))
-                                        .toObject();
-            QString error;
-            replay()->seek(*replay()->log().parseTime(m.clock, &error));
-            const QHash<QString, qint64> shown = deviceValues();
-            QCOMPARE(cli.size(), shown.size());
-            for (auto it = shown.cbegin(); it != shown.cend(); ++it)
-                QVERIFY2(cli.value(it.key()).toDouble() ==
-                             session->map().find(it.key())->toEngineering(it.value()),
-                         qPrintable(QStringLiteral("%1 at %2: window %3, stepcomctl %4")
-                                        .arg(it.key(), m.what)
-                                        .arg(it.value())
-                                        .arg(cli.value(it.key()).toDouble())));
+            checkCommandLineAt(m);
+            if (QTest::currentTestFailed())
+                return;
         }
     }
 };
