@@ -8,6 +8,7 @@
 #include <QSerialPort>
 #include <QTcpSocket>
 
+#include <algorithm>
 #include <cmath>
 
 #ifdef Q_OS_UNIX
@@ -144,6 +145,7 @@ void RtuTransport::close()
     m_stray.clear();
     m_strayParsed = 0;
     m_owed.clear();
+    m_lateMs = 0;
     m_discarded.clear();
     m_crcErrors = 0;
     if (QIODevice *device = m_device.data()) {
@@ -345,7 +347,7 @@ void RtuTransport::processBuffer()
         // The controller answers in order: a frame while answers are owed is the oldest's.
         const bool owed = !m_owed.isEmpty();
         if (owed && m_owed.first().adu != adu) {
-            m_owed.removeFirst();
+            owedAnswerCame();
             discard(f, tr("a late answer to an earlier request"));
             continue;
         }
@@ -353,15 +355,15 @@ void RtuTransport::processBuffer()
         if (const QString why = AnswerCheck::mismatch(m_pending->request, quint8(f.at(1)), data);
             !why.isEmpty()) {
             if (owed)
-                m_owed.removeFirst();
+                owedAnswerCame();
             discard(f, why);
             continue;
         }
         if (owed) {
             // An earlier attempt of this very request: its answer is this one's too, and this
             // attempt's own answer may still come.
-            m_owed.removeFirst();
-            m_owed.append({adu, owedUntilMs()});
+            owedAnswerCame();
+            m_owed.append({adu, owedUntilMs(), m_sentAtMs});
         }
         // An answer with no copy before it: a read or block write shows the adapter is quiet.
         if (!copyCanAnswer && !m_echoStripped)
@@ -385,7 +387,7 @@ void RtuTransport::onTimeout()
         return;
     // A scan owes no answer: a late one names its unit and is counted for it.
     if (!m_scan)
-        m_owed.append({m_pending->adu, owedUntilMs()});
+        m_owed.append({m_pending->adu, owedUntilMs(), m_sentAtMs});
     LinkAnswer a;
     a.kind = LinkAnswer::Kind::Timeout;
     a.onlyEcho = m_echoStripped && m_rx.isEmpty();
@@ -398,8 +400,16 @@ void RtuTransport::onTimeout()
 double RtuTransport::owedUntilMs() const
 {
     // A timeout fitted to the answers seen so far may be far shorter than the one set: an
-    // answer is owed for as long as the set one says an answer may take.
-    return m_sentAtMs + kOwedTimeouts * std::max(m_pending->timeoutMs, m_settings.timeoutMs);
+    // answer is owed for as long as the set one says an answer may take -- or, once the
+    // controller answered later than that, as long as it showed it may take.
+    return m_sentAtMs + kOwedTimeouts * std::max({double(m_pending->timeoutMs),
+                                                  double(m_settings.timeoutMs), m_lateMs});
+}
+
+void RtuTransport::owedAnswerCame()
+{
+    m_lateMs = std::max(m_lateMs, nowMs() - m_owed.first().sentAtMs);
+    m_owed.removeFirst();
 }
 
 void RtuTransport::pruneOwed()
@@ -423,7 +433,7 @@ void RtuTransport::takeStrayFrames()
         reportForeign(f);
         pruneOwed();
         if (!m_owed.isEmpty() && quint8(f.at(0)) == m_unit) {
-            m_owed.removeFirst();
+            owedAnswerCame();
         } else if (!m_copyAnswered.isEmpty() && f == m_copyAnswered) {
             // A second copy of a command nothing else owes: the first was the adapter's echo,
             // this the controller's answer (which confirms the command all the same).

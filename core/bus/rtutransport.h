@@ -50,8 +50,9 @@ public:
     enum class Echo { Unknown, Yes, No };
     Echo echoSeen() const { return m_echoSeen; }
     // How long after an attempt that timed out its answer is still expected, in timeouts (the
-    // set one, or the request's own if longer): a different request waits until then (or until
-    // that answer came), the same request may go again and take it.
+    // set one, the request's own if longer, or the latest an owed answer of this line came if
+    // later still): a different request waits until then (or until that answer came), the
+    // same request may go again and take it.
     static constexpr int kOwedTimeouts = 2;
 
 private:
@@ -69,6 +70,7 @@ private:
     {
         QByteArray adu;
         double untilMs = 0;
+        double sentAtMs = 0;
     };
 
     double nowMs() const { return double(m_clock.nsecsElapsed()) / 1e6; }
@@ -82,6 +84,8 @@ private:
     void onTimeout();
     void pruneOwed();
     double owedUntilMs() const;
+    // The oldest owed answer came: the controller showed how late it answers.
+    void owedAnswerCame();
     void takeStrayFrames();
     // Scan mode: name the unit of a foreign answer frame (CRC checked by the caller).
     void reportForeign(const QByteArray &frame);
@@ -118,6 +122,7 @@ private:
     QStringList m_discarded;
     int m_crcErrors = 0;
     QList<Owed> m_owed;
+    double m_lateMs = 0; // the latest an owed answer came, after its attempt went (since open)
     int m_unit = 1;
     int m_strayParsed = 0; // bytes of m_stray already cut into frames
     QTimer m_writeTimer;

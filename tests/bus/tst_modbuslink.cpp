@@ -7,6 +7,7 @@
 #include <QSignalSpy>
 #include <QTemporaryFile>
 #include <QTest>
+#include <QTimer>
 
 using namespace stepcom;
 using namespace stepcom::test;
@@ -197,6 +198,45 @@ private Q_SLOTS:
         QVERIFY2(backedOff.at(2) > backedOff.at(1) || backedOff.at(2) == 2000,
                  qPrintable(QString::number(backedOff.at(2))));
         QVERIFY(backedOff.at(3) <= 2000);
+    }
+
+    // A controller that showed it answers later than the timeout is given that long: the next
+    // request of another shape waits for an answer still owed for as long as the controller
+    // showed an answer may take, so that answer is not taken for the next one's.
+    void anAnswerOwedIsAwaitedAsLongAsTheControllerShowedItTakes()
+    {
+        const auto answer = [](const QByteArray &r, quint16 value) {
+            return withCrc(r.left(2) + QByteArray(1, char(2)) + char(value >> 8) + char(value));
+        };
+        device->setAnswerDelayMs(0);
+        device->setResponder(
+            [this, answer](const QByteArray &r, int index) -> std::optional<QByteArray> {
+                // 170 ms late, then 280 ms late: past the timeout, the second past twice it; then
+                // in 150 ms, within the third request's own timeout.
+                const int delayMs = index == 0 ? 170 : index == 1 ? 280 : 150;
+                QTimer::singleShot(delayMs, device.get(), [this, r, answer, index] {
+                    device->bridge().inject(PtyBridge::Side::A,
+                                            answer(r, quint16(std::min(index + 1, 3))));
+                });
+                return std::nullopt;
+            });
+        openLink(100, 0);
+        Outcome first;
+        link->submit(Request::read(0, 1), into(&first));
+        QTRY_VERIFY(first.done);
+        QCOMPARE(first.result.error, QModbusDevice::TimeoutError);
+        Outcome second;
+        link->submit(Request::read(1, 1), into(&second));
+        QTRY_VERIFY_WITH_TIMEOUT(second.done, 5000);
+        QCOMPARE(second.result.error, QModbusDevice::TimeoutError);
+        Outcome third;
+        Request read = Request::read(2, 1);
+        read.timeoutMs = 1000;
+        link->submit(read, into(&third));
+        QTRY_VERIFY_WITH_TIMEOUT(third.done, 5000);
+        QVERIFY2(third.result.ok, qPrintable(third.result.errorText));
+        QCOMPARE(third.result.values, QVector<quint16>{3}); // never the second's late 2
+        QCOMPARE(device->requests().size(), 3);
     }
 
     // Destroying the link with a request in flight tells no one: the objects behind the
