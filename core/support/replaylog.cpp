@@ -2,6 +2,8 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QRegularExpression>
 
 namespace stepcom {
@@ -30,6 +32,7 @@ void applyHeader(ReplayDecoder &decoder, const LogLine &line)
 
 ReplayLog::ReplayLog(const RegisterMap &map)
     : m_map(std::make_shared<const RegisterMap>(map))
+    , m_track(std::make_shared<ReplayTrack>(map))
 {}
 
 bool ReplayLog::fail(Problem problem, const QString &text)
@@ -109,6 +112,7 @@ bool ReplayLog::open(const QString &path, const Callbacks &callbacks)
         return false;
     m_lines = snap.lineNo;
     m_durationMs = snap.lastMs;
+    m_track->finish();
     if (m_validLines == 0) {
         QFile f(path);
         const bool zip =
@@ -195,6 +199,10 @@ bool ReplayLog::scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const C
         }
         snap.decoder.feed(line, ms, snap.lineNo, sink);
         snap.offset = offset;
+        if (opening && snap.decoder.answeredUnit() != 0) {
+            const int unit = snap.decoder.answeredUnit();
+            opening->m_track->add(unit, ms, *snap.decoder.state().devices.constFind(unit));
+        }
         if (visit && ms >= visitFromMs && !visit(chunk, line, ms, snap.decoder.state()))
             return true;
         if (!opening)
@@ -242,6 +250,33 @@ void ReplayLog::walk(qint64 fromMs, qint64 toMs, const Visitor &visit) const
         return;
     Snapshot snap = snapshotBefore(fromMs);
     scan(snap, toMs, nullptr, {}, {}, visit, fromMs);
+}
+
+void ReplayLog::walkTail(qint64 toMs, qint64 lines, const Visitor &visit) const
+{
+    if (m_snapshots.isEmpty() || !visit)
+        return;
+    // The snapshot before the moment, then one at least `lines` lines before that.
+    const Snapshot &near = snapshotBefore(toMs);
+    const qint64 wanted = near.lineNo - lines;
+    auto it = std::upper_bound(m_snapshots.cbegin(), m_snapshots.cend(), wanted,
+                               [](qint64 line, const Snapshot &s) { return line < s.lineNo; });
+    Snapshot snap = it == m_snapshots.cbegin() ? m_snapshots.first() : *std::prev(it);
+    scan(snap, toMs, nullptr, {}, {}, visit, 0);
+}
+
+QHash<int, QString> ReplayLog::deviceNames() const
+{
+    QHash<int, QString> names;
+    const QJsonObject o =
+        QJsonDocument::fromJson(m_header.value(QStringLiteral("names")).toUtf8()).object();
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        bool ok = false;
+        const int id = it.key().toInt(&ok);
+        if (ok && it.value().isString() && !it.value().toString().trimmed().isEmpty())
+            names.insert(id, it.value().toString().trimmed());
+    }
+    return names;
 }
 
 std::optional<qint64> ReplayLog::parseTime(const QString &text, QString *error) const
