@@ -2974,6 +2974,10 @@
         <source>running: %1</source>
         <translation>running: %1</translation>
     </message>
+    <message>
+        <source>%1; restarted %2</source>
+        <translation>%1; restarted %2</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DevicePage</name>

@@ -2955,6 +2955,10 @@
         <source>running: %1</source>
         <translation>运行中：%1</translation>
     </message>
+    <message>
+        <source>%1; restarted %2</source>
+        <translation>%1；于 %2 重新启动</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DevicePage</name>
