@@ -123,15 +123,14 @@ void ReplayViews::showAfresh(qint64 moment, int device, const ReplayState &state
 {
     // The traffic view: the last lines through the moment, read from a snapshot before them.
     std::deque<TrafficEntry> tail;
-    m_log->walkTail(moment, kTrafficLines,
-                    [&tail](QByteArrayView, const LogLine &line, qint64, const ReplayState &) {
-                        if (shownInTraffic(line)) {
-                            tail.push_back(entryOf(line));
-                            if (tail.size() > std::size_t(kTrafficLines))
-                                tail.pop_front();
-                        }
-                        return true;
-                    });
+    m_log->walkTail(moment, kTrafficLines, [&tail](QByteArrayView, const LogLine &line, qint64) {
+        if (shownInTraffic(line)) {
+            tail.push_back(entryOf(line));
+            if (tail.size() > std::size_t(kTrafficLines))
+                tail.pop_front();
+        }
+        return true;
+    });
     m_traffic->clear();
     for (const TrafficEntry &e : tail)
         m_traffic->add(e);
@@ -151,10 +150,8 @@ void ReplayViews::showAfresh(qint64 moment, int device, const ReplayState &state
     }
     addLastAnswer(&samples, samples.isEmpty() ? -1 : samples.last().elapsedMs, device, state);
     recorder->addSamples(samples);
-    if (m_plots) {
-        const int room = m_plots->xyPlot()->traceLimit() * 3 / 4; // and some for playing on
-        m_plots->showTrace(track.path(device, moment, room));
-    }
+    if (m_plots) // drawn at the plot's resolution; playing on adds to it up to its limit
+        m_plots->showTrace(track.path(device, moment, kTracePoints));
 }
 
 void ReplayViews::follow(qint64 from, qint64 moment, int device, const ReplayState &state)
@@ -167,7 +164,7 @@ void ReplayViews::follow(qint64 from, qint64 moment, int device, const ReplaySta
                 });
     StatusRecorder *recorder = m_session->recorder();
     QList<StatusSample> samples = m_log->track().samples(device, from + 1, moment, m_epochMs);
-    const qint64 last = !samples.isEmpty()      ? samples.last().elapsedMs
+    const qint64 last = !samples.isEmpty()     ? samples.last().elapsedMs
                         : !recorder->isEmpty() ? recorder->last().elapsedMs
                                                : -1;
     addLastAnswer(&samples, last, device, state);
@@ -208,8 +205,8 @@ void ReplayViews::showDevices(int device, const QList<int> &devices, const Repla
             row.requests = d.requests;
             row.errors = d.errors;
             if (!d.lastError.isEmpty())
-                row.lastError = QStringLiteral("%1: %2").arg(m_log->momentText(d.lastErrorMs),
-                                                             d.lastError);
+                row.lastError =
+                    QStringLiteral("%1: %2").arg(m_log->momentText(d.lastErrorMs), d.lastError);
             if (d.restartMs >= 0) {
                 row.restartAt = m_log->momentText(d.restartMs);
                 row.restartText = d.restartText;
@@ -217,14 +214,13 @@ void ReplayViews::showDevices(int device, const QList<int> &devices, const Repla
             // Its running flags as last read, and the motion command acknowledged last.
             const QHash<QString, qint64> values = d.values(map);
             for (int m = 1; m <= motors; ++m) {
-                const Parameter *run = map.blockParameter(QStringLiteral("motor"), m,
-                                                          QStringLiteral("running"));
+                const Parameter *run =
+                    map.blockParameter(QStringLiteral("motor"), m, QStringLiteral("running"));
                 if (run && values.value(run->key) != 0)
                     row.runningMotors << m;
             }
             const Parameter *command = map.find(d.lastCommand);
-            if (!row.runningMotors.isEmpty() && command &&
-                command->command == CommandClass::Motion)
+            if (!row.runningMotors.isEmpty() && command && command->command == CommandClass::Motion)
                 row.command = command->label.text(Translators::current());
         }
         rows.insert(id, row);

@@ -32,6 +32,9 @@ public:
     // The traffic view's lines at a moment chosen anywhere (playing on adds to them up to the
     // view's own limit): about 8 minutes of polling at 10 Hz.
     static constexpr int kTrafficLines = 20000;
+    // The XY trace's points at a moment chosen anywhere: the whole path from the start at the
+    // plot's resolution (ReplayTrack::path), so drawing it stays cheap.
+    static constexpr int kTracePoints = 4000;
     // A step forward at most this long is fed on instead of shown afresh.
     static constexpr qint64 kFollowMs = 10000;
 

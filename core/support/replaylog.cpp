@@ -136,8 +136,8 @@ bool ReplayLog::open(const QString &path, const Callbacks &callbacks)
 }
 
 bool ReplayLog::scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const Callbacks &callbacks,
-                     const ReplayDecoder::Sink &sink, const Visitor &visit,
-                     qint64 visitFromMs) const
+                     const ReplayDecoder::Sink &sink, const Visitor &visit, qint64 visitFromMs,
+                     bool decode) const
 {
     QFile file(m_path);
     if (!file.open(QIODevice::ReadOnly) || !file.seek(snap.offset))
@@ -197,7 +197,8 @@ bool ReplayLog::scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const C
                 opening->m_garbageNumbers << snap.lineNo;
             ++opening->m_garbage;
         }
-        snap.decoder.feed(line, ms, snap.lineNo, sink);
+        if (decode)
+            snap.decoder.feed(line, ms, snap.lineNo, sink);
         snap.offset = offset;
         if (opening && snap.decoder.answeredUnit() != 0) {
             const int unit = snap.decoder.answeredUnit();
@@ -252,7 +253,7 @@ void ReplayLog::walk(qint64 fromMs, qint64 toMs, const Visitor &visit) const
     scan(snap, toMs, nullptr, {}, {}, visit, fromMs);
 }
 
-void ReplayLog::walkTail(qint64 toMs, qint64 lines, const Visitor &visit) const
+void ReplayLog::walkTail(qint64 toMs, qint64 lines, const LineVisitor &visit) const
 {
     if (m_snapshots.isEmpty() || !visit)
         return;
@@ -262,7 +263,12 @@ void ReplayLog::walkTail(qint64 toMs, qint64 lines, const Visitor &visit) const
     auto it = std::upper_bound(m_snapshots.cbegin(), m_snapshots.cend(), wanted,
                                [](qint64 line, const Snapshot &s) { return line < s.lineNo; });
     Snapshot snap = it == m_snapshots.cbegin() ? m_snapshots.first() : *std::prev(it);
-    scan(snap, toMs, nullptr, {}, {}, visit, 0);
+    scan(
+        snap, toMs, nullptr, {}, {},
+        [&visit](QByteArrayView raw, const LogLine &line, qint64 ms, const ReplayState &) {
+            return visit(raw, line, ms);
+        },
+        0, false);
 }
 
 QHash<int, QString> ReplayLog::deviceNames() const

@@ -78,8 +78,10 @@ public:
     void walk(qint64 fromMs, qint64 toMs, const Visitor &visit) const;
     // Every line through `toMs` in order, from early enough that at least `lines` lines come
     // before the moment (from the start of a shorter log): the traffic view's last rows at a
-    // moment. Reads from a snapshot, never the whole log; `visit` keeps the last ones it wants.
-    void walkTail(qint64 toMs, qint64 lines, const Visitor &visit) const;
+    // moment. Reads from a snapshot, never the whole log, and decodes nothing (no state);
+    // `visit` keeps the last ones it wants.
+    using LineVisitor = std::function<bool(QByteArrayView raw, const LogLine &line, qint64 ms)>;
+    void walkTail(qint64 toMs, qint64 lines, const LineVisitor &visit) const;
     // "12.5" (seconds from the start) or a clock time "hh:mm:ss[.mmm]" (the first such moment
     // at or after the start) as ms since the start; nullopt and why not.
     std::optional<qint64> parseTime(const QString &text, QString *error) const;
@@ -98,9 +100,10 @@ private:
     // to the end), feeding `sink`. open() passes itself as `opening` (the checks, the index);
     // stateAt() passes nothing.
     // `visit` (optional) sees every line from `visitFromMs` on; false from it ends the scan.
+    // Without `decode` the lines are only read (the state stays the snapshot's).
     bool scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const Callbacks &callbacks,
-              const ReplayDecoder::Sink &sink, const Visitor &visit = {},
-              qint64 visitFromMs = 0) const;
+              const ReplayDecoder::Sink &sink, const Visitor &visit = {}, qint64 visitFromMs = 0,
+              bool decode = true) const;
     // The snapshot to read from for a moment.
     Snapshot snapshotBefore(qint64 ms) const;
     bool fail(Problem problem, const QString &text);

@@ -238,15 +238,30 @@ QList<QPointF> ReplayTrack::path(int id, qint64 toMs, int maxPoints) const
     maxPoints = std::max(4, maxPoints);
     if (points.size() <= maxPoints)
         return points;
-    // The newest half whole; the older part evenly thinned into the rest, its first point kept.
-    const qsizetype whole = maxPoints / 2;
-    const qsizetype older = points.size() - whole;
-    const qsizetype room = maxPoints - whole;
+    // Finer than any plot shows: points closer than 1/kPathResolution of the extent to the last
+    // one kept are left out (the last point always stays).
+    QPointF low = points.first();
+    QPointF high = low;
+    for (const QPointF &p : std::as_const(points)) {
+        low = QPointF(std::min(low.x(), p.x()), std::min(low.y(), p.y()));
+        high = QPointF(std::max(high.x(), p.x()), std::max(high.y(), p.y()));
+    }
+    const double near = std::max(high.x() - low.x(), high.y() - low.y()) / kPathResolution;
+    QList<QPointF> kept{points.first()};
+    for (qsizetype i = 1; i + 1 < points.size(); ++i) {
+        const QPointF d = points.at(i) - kept.last();
+        if (std::hypot(d.x(), d.y()) >= near)
+            kept << points.at(i);
+    }
+    kept << points.last();
+    if (kept.size() <= maxPoints)
+        return kept;
+    // Still too many (a path over and over the same ground): evenly thinned, the ends kept.
     QList<QPointF> thinned;
     thinned.reserve(maxPoints);
-    for (qsizetype k = 0; k < room; ++k)
-        thinned << points.at(k * older / room);
-    thinned.append(points.mid(older));
+    for (qsizetype k = 0; k < maxPoints - 1; ++k)
+        thinned << kept.at(k * (kept.size() - 1) / (maxPoints - 1));
+    thinned << kept.last();
     return thinned;
 }
 

@@ -28,6 +28,7 @@ class ReplayTrack
 public:
     static constexpr qint64 kRunMs = 1000;
     static constexpr qsizetype kMaxSamples = 1000000;
+    static constexpr int kPathResolution = 2000;
 
     ReplayTrack() = default;
     explicit ReplayTrack(const RegisterMap &map);
@@ -51,8 +52,9 @@ public:
     // The last sample of `id` at or before `ms`, if any.
     std::optional<StatusSample> sampleAt(int id, qint64 ms, qint64 epochMs) const;
     // The tool's path (motor 1 = x, motor 2 = y) from the start of the log through `toMs`, a
-    // point each time it moved. More than `maxPoints`: the newest half of them whole, the older
-    // part thinned evenly, so the whole path is there, its latest part in every detail.
+    // point each time it moved. More than `maxPoints`: points closer to the last one kept than
+    // 1/kPathResolution of the path's extent are left out (finer than a plot shows), then, if
+    // still too many, the rest thinned evenly; the first and the last point always stay.
     QList<QPointF> path(int id, qint64 toMs, int maxPoints) const;
 
 private:

@@ -106,7 +106,52 @@ private Q_SLOTS:
         const QList<QPointF> thin = log.track().path(1, 90000, 400);
         QCOMPARE(thin.size(), 400);
         QCOMPARE(thin.first(), path.first());
-        QCOMPARE(thin.mid(200), path.mid(path.size() - 200));
+        QCOMPARE(thin.last(), path.last());
+        for (qsizetype i = 1, j = 1; i < thin.size(); ++i) { // in the path's order
+            while (j < path.size() && path.at(j) != thin.at(i))
+                ++j;
+            QVERIFY2(j < path.size(), qPrintable(QString::number(i)));
+        }
+        // Back and forth at a step finer than a plot shows: the points closer than
+        // 1/kPathResolution of the extent to the last one kept are left out, the turns stay.
+        LogBuilder b;
+        b.header();
+        const Parameter *p1 = param("motor1.position");
+        const Parameter *p2 = param("motor2.position");
+        b.read(1, p2->address, positionWords(p2, 0));
+        const int leg = 5000; // 50 mm in steps of 0.01 mm; a plot shows 0.025 mm at best
+        for (int i = 0; i < 3 * leg; ++i) {
+            const bool back = (i / leg) % 2 != 0;
+            b.read(1, p1->address, positionWords(p1, back ? leg - i % leg : i % leg));
+        }
+        ReplayLog zigzag;
+        QVERIFY2(zigzag.open(b.save(dir, QStringLiteral("zigzag.log"))),
+                 qPrintable(zigzag.errorString()));
+        const QList<QPointF> fine = zigzag.track().path(1, zigzag.durationMs(), 100000);
+        QCOMPARE(fine.size(), 3 * leg);
+        const QList<QPointF> coarse = zigzag.track().path(1, zigzag.durationMs(), 8000);
+        QVERIFY2(coarse.size() > 4000 && coarse.size() <= 8000,
+                 qPrintable(QString::number(coarse.size())));
+        QCOMPARE(coarse.first(), fine.first());
+        QCOMPARE(coarse.last(), fine.last());
+        const double near = 50.0 / ReplayTrack::kPathResolution;
+        double furthest = 0;
+        for (qsizetype i = 0; i < coarse.size(); ++i) {
+            furthest = std::max(furthest, coarse.at(i).x());
+            if (i > 0 && i + 1 < coarse.size())
+                QVERIFY2(std::abs(coarse.at(i).x() - coarse.at(i - 1).x()) >= near - 1e-9,
+                         qPrintable(QStringLiteral("%1: %2 %3 %4")
+                                        .arg(i)
+                                        .arg(coarse.at(i - 1).x())
+                                        .arg(coarse.at(i).x())
+                                        .arg(coarse.size())));
+        }
+        QVERIFY2(furthest >= 50.0 - near, qPrintable(QString::number(furthest))); // the turn
+        // Still too many: evenly thinned, the ends kept.
+        const QList<QPointF> few = zigzag.track().path(1, zigzag.durationMs(), 1000);
+        QCOMPARE(few.size(), 1000);
+        QCOMPARE(few.first(), fine.first());
+        QCOMPARE(few.last(), fine.last());
         QCOMPARE(log.track().path(1, 5, 400), QList<QPointF>{});
     }
 
@@ -165,18 +210,17 @@ private Q_SLOTS:
         QVERIFY2(log.open(movingLog(600)), qPrintable(log.errorString()));
         QVERIFY(log.snapshotCount() > 3);
         QList<qint64> times;
-        log.walkTail(400000, 3000, [&](QByteArrayView, const LogLine &line, qint64 ms,
-                                       const ReplayState &) {
+        log.walkTail(400000, 3000, [&](QByteArrayView, const LogLine &line, qint64 ms) {
             if (line.type == LogLine::Type::Frame)
                 times << ms;
             return true;
         });
         QVERIFY2(times.size() >= 3000, qPrintable(QString::number(times.size())));
-        QVERIFY(times.size() < 24000); // not the whole log before the moment
+        QVERIFY(times.size() < 24000);  // not the whole log before the moment
         QCOMPARE(times.last(), 400000); // the read sent at the moment
         QVERIFY(std::is_sorted(times.cbegin(), times.cend()));
         qsizetype fromStart = 0;
-        log.walkTail(300, 3000, [&](QByteArrayView, const LogLine &, qint64, const ReplayState &) {
+        log.walkTail(300, 3000, [&](QByteArrayView, const LogLine &, qint64) {
             ++fromStart;
             return true;
         });
@@ -206,7 +250,8 @@ private Q_SLOTS:
         QCOMPARE(at.devices.value(2).errors, 2);
         QVERIFY2(at.devices.value(2).lastError.startsWith(QLatin1String("refused")),
                  qPrintable(at.devices.value(2).lastError));
-        QCOMPARE(at.devices.value(2).restartText, QStringLiteral("id 2: motor1.speed 450 → 120 rpm"));
+        QCOMPARE(at.devices.value(2).restartText,
+                 QStringLiteral("id 2: motor1.speed 450 → 120 rpm"));
         QCOMPARE(at.devices.value(2).restartMs, 70);
         QCOMPARE(at.devices.value(1).restartMs, -1);
         QCOMPARE(log.stateAt(5).devices.value(2).requests, 0);

@@ -22,9 +22,9 @@ using namespace stepcom;
 
 namespace {
 
-constexpr int kCycles = 900;   // 180 s
-constexpr int kCycleMs = 200;  // a cycle: three reads of id 1, one of id 2
-constexpr int kSilentFrom = 450; // id 2 answers no more from here (90 s)
+constexpr int kCycles = 900;      // 180 s
+constexpr int kCycleMs = 200;     // a cycle: three reads of id 1, one of id 2
+constexpr int kSilentFrom = 450;  // id 2 answers no more from here (90 s)
 constexpr int kRunningFrom = 600; // motor 1 of id 1 runs from here (120 s)
 constexpr int kRestartAt = 500;   // the session saw id 2 restart (100 s)
 
@@ -177,18 +177,18 @@ private Q_SLOTS:
         seek(30 * 1000 + 50);
         QVERIFY(list->isReplay());
         QCOMPARE(list->table()->rowCount(), 2);
-        QCOMPARE(list->rowTexts(0), (QStringList{"1", "X gantry", "answering (in view)",
-                                                  "unknown", "0"}));
+        QCOMPARE(list->rowTexts(0),
+                 (QStringList{"1", "X gantry", "answering (in view)", "unknown", "0"}));
         QCOMPARE(list->rowTexts(1), (QStringList{"2", "Lift", "answering", "unknown", "0"}));
         // Late: id 1 runs, id 2 answers no more and was seen to restart.
         seek(850 * kCycleMs + 50);
-        QCOMPARE(list->rowTexts(0), (QStringList{"1", "X gantry", "running: motor 1", "unknown",
-                                                  "0"}));
+        QCOMPARE(list->rowTexts(0),
+                 (QStringList{"1", "X gantry", "running: motor 1", "unknown", "0"}));
         const QStringList second = list->rowTexts(1);
         QCOMPARE(second.value(0), QStringLiteral("2"));
         QCOMPARE(second.value(1), QStringLiteral("Lift"));
         QVERIFY2(second.value(2).startsWith(QLatin1String("not answering; restarted +100.000 s "
-                                                           "(22:11:40.000)")),
+                                                          "(22:11:40.000)")),
                  qPrintable(second.value(2)));
         QCOMPARE(second.value(4), QString::number(850 - kSilentFrom)); // each cycle's read
         QVERIFY2(list->table()->item(1, 4)->toolTip().contains(QLatin1String("no answer")),
