@@ -93,8 +93,11 @@ void ReplayViews::stop()
 {
     m_log = nullptr;
     m_shownAt = -1;
-    if (m_view)
+    m_firstLine = -1;
+    if (m_view) {
+        m_view->setEarlier({});
         m_view->setLog(m_session->traffic());
+    }
     m_traffic->clear();
     m_session->recorder()->clear();
     if (m_deviceList)
@@ -122,18 +125,22 @@ void ReplayViews::show(qint64 moment, int device, const QList<int> &devices,
 void ReplayViews::showAfresh(qint64 moment, int device, const ReplayState &state)
 {
     // The traffic view: the last lines through the moment, read from a snapshot before them.
-    std::deque<TrafficEntry> tail;
-    m_log->walkTail(moment, kTrafficLines, [&tail](QByteArrayView, const LogLine &line, qint64) {
-        if (shownInTraffic(line)) {
-            tail.push_back(entryOf(line));
-            if (tail.size() > std::size_t(kTrafficLines))
-                tail.pop_front();
-        }
-        return true;
-    });
+    std::deque<std::pair<TrafficEntry, qint64>> tail; // with its line number
+    m_log->walkTail(moment, kTrafficLines,
+                    [&tail](QByteArrayView, const LogLine &line, qint64, qint64 lineNo) {
+                        if (shownInTraffic(line)) {
+                            tail.emplace_back(entryOf(line), lineNo);
+                            if (tail.size() > std::size_t(kTrafficLines))
+                                tail.pop_front();
+                        }
+                        return true;
+                    });
     m_traffic->clear();
-    for (const TrafficEntry &e : tail)
-        m_traffic->add(e);
+    for (const auto &[entry, lineNo] : tail)
+        m_traffic->add(entry);
+    m_firstLine = tail.empty() ? -1 : tail.front().second;
+    if (m_view) // scrolled back: the lines before these (enabled again)
+        m_view->setEarlier([this] { return earlierLines(); });
     // The plots: the half hour the live recorder keeps, from the track (a run that began
     // before it from the window's start); the XY plot: the whole path.
     StatusRecorder *recorder = m_session->recorder();
@@ -152,6 +159,25 @@ void ReplayViews::showAfresh(qint64 moment, int device, const ReplayState &state
     recorder->addSamples(samples);
     if (m_plots) // drawn at the plot's resolution; playing on adds to it up to its limit
         m_plots->showTrace(track.path(device, moment, kTracePoints));
+}
+
+QList<TrafficEntry> ReplayViews::earlierLines()
+{
+    QList<TrafficEntry> lines;
+    // Chunk after chunk back, until one holds a line the view shows (or the log begins).
+    while (m_log && m_firstLine > 1 && lines.isEmpty()) {
+        const qint64 before = m_firstLine;
+        m_log->walkBefore(before, kTrafficLines,
+                          [&](QByteArrayView, const LogLine &line, qint64, qint64 lineNo) {
+                              m_firstLine = std::min(m_firstLine, lineNo);
+                              if (shownInTraffic(line))
+                                  lines << entryOf(line);
+                              return true;
+                          });
+        if (m_firstLine == before) // nothing before it could be read
+            break;
+    }
+    return lines;
 }
 
 void ReplayViews::follow(qint64 from, qint64 moment, int device, const ReplayState &state)

@@ -15,15 +15,16 @@ class PlotPage;
 class ReplayLog;
 struct ReplayState;
 class TrafficLog;
+struct TrafficEntry;
 class TrafficView;
 
 // What the window's views beside the pages show of a replayed log at its moment (issue 26), as
 // the live window showed them then: the traffic view the log's lines through the moment (its
-// last kTrafficLines, scrollable back), the plots (the session's StatusRecorder) the positions,
-// flags, inputs and outputs of the half hour before it (what the live recorder keeps), the XY
-// plot the whole path from the start of the log, the device list each device's state.
-// A short step forward (playing) feeds only what came since, as the live window is fed; any
-// other moment is shown afresh from the log's snapshots (ReplayLog::walkTail) and its track
+// last kTrafficLines; scrolled back, the ones before), the plots (the session's StatusRecorder) the
+// positions, flags, inputs and outputs of the half hour before it (what the live recorder keeps),
+// the XY plot the whole path from the start of the log, the device list each device's state. A
+// short step forward (playing) feeds only what came since, as the live window is fed; any other
+// moment is shown afresh from the log's snapshots (ReplayLog::walkTail) and its track
 // (ReplayLog::track), never by reading the whole log again.
 class ReplayViews : public QObject
 {
@@ -56,6 +57,8 @@ public:
 private:
     void showAfresh(qint64 moment, int device, const ReplayState &state);
     void follow(qint64 from, qint64 moment, int device, const ReplayState &state);
+    // The traffic view scrolled back: the lines before the first one it has.
+    QList<TrafficEntry> earlierLines();
     void showDevices(int device, const QList<int> &devices, const ReplayState &state);
     // The device's sample at its last answer through the moment, when it is later than `after`.
     void addLastAnswer(QList<StatusSample> *samples, qint64 after, int device,
@@ -71,6 +74,7 @@ private:
     qint64 m_epochMs = 0;  // the log's first moment on the wall clock
     qint64 m_shownAt = -1; // the moment the traffic and the plots were fed up to; -1: none
     int m_shownDevice = 0;
+    qint64 m_firstLine = -1; // the log's line number of the traffic view's first row
 };
 
 } // namespace stepcom

@@ -146,8 +146,8 @@ ReplayWindowResult measureReplayWindow(int seconds, int hz, int seeks)
     const QList<QByteArray> lines = child.readAllStandardOutput().trimmed().split('\n');
     const QJsonObject o = QJsonDocument::fromJson(lines.last()).object();
     if (o.isEmpty()) {
-        r.error = QStringLiteral("the window said nothing readable (exit code %1)")
-                      .arg(child.exitCode());
+        r.error =
+            QStringLiteral("the window said nothing readable (exit code %1)").arg(child.exitCode());
         return r;
     }
     r.error = o.value(QStringLiteral("error")).toString();
@@ -191,8 +191,7 @@ QList<Verdict> replayWindowVerdicts(const ReplayWindowResult &r)
                 QStringLiteral("(m) replay in the window: seek, every view updated and painted"),
                 QStringLiteral("median %1 ms, max %2 ms (%3 seeks; %4 traffic rows, %5 trace "
                                "points at the last)")
-                    .arg(QString::number(median(r.seeksMs), 'f', 1),
-                         QString::number(worst, 'f', 1))
+                    .arg(QString::number(median(r.seeksMs), 'f', 1), QString::number(worst, 'f', 1))
                     .arg(r.seeksMs.size())
                     .arg(r.trafficRows)
                     .arg(r.tracePoints),

@@ -265,8 +265,27 @@ void ReplayLog::walkTail(qint64 toMs, qint64 lines, const LineVisitor &visit) co
     Snapshot snap = it == m_snapshots.cbegin() ? m_snapshots.first() : *std::prev(it);
     scan(
         snap, toMs, nullptr, {}, {},
-        [&visit](QByteArrayView raw, const LogLine &line, qint64 ms, const ReplayState &) {
-            return visit(raw, line, ms);
+        [&visit, &snap](QByteArrayView raw, const LogLine &line, qint64 ms, const ReplayState &) {
+            return visit(raw, line, ms, snap.lineNo);
+        },
+        0, false);
+}
+
+void ReplayLog::walkBefore(qint64 beforeLine, qint64 lines, const LineVisitor &visit) const
+{
+    const qint64 first = std::max<qint64>(1, beforeLine - lines);
+    if (m_snapshots.isEmpty() || !visit || first >= beforeLine)
+        return;
+    // The last snapshot whose next line is the first one wanted or before it.
+    auto it = std::upper_bound(m_snapshots.cbegin(), m_snapshots.cend(), first - 1,
+                               [](qint64 line, const Snapshot &s) { return line < s.lineNo; });
+    Snapshot snap = it == m_snapshots.cbegin() ? m_snapshots.first() : *std::prev(it);
+    scan(
+        snap, -1, nullptr, {}, {},
+        [&](QByteArrayView raw, const LogLine &line, qint64 ms, const ReplayState &) {
+            if (snap.lineNo >= beforeLine)
+                return false;
+            return snap.lineNo < first || visit(raw, line, ms, snap.lineNo);
         },
         0, false);
 }

@@ -79,9 +79,13 @@ public:
     // Every line through `toMs` in order, from early enough that at least `lines` lines come
     // before the moment (from the start of a shorter log): the traffic view's last rows at a
     // moment. Reads from a snapshot, never the whole log, and decodes nothing (no state);
-    // `visit` keeps the last ones it wants.
-    using LineVisitor = std::function<bool(QByteArrayView raw, const LogLine &line, qint64 ms)>;
+    // `visit` keeps the last ones it wants; `lineNo` is a line's number in the log.
+    using LineVisitor =
+        std::function<bool(QByteArrayView raw, const LogLine &line, qint64 ms, qint64 lineNo)>;
     void walkTail(qint64 toMs, qint64 lines, const LineVisitor &visit) const;
+    // The `lines` lines before line number `beforeLine` (fewer at the start of the log), in
+    // order, read from a snapshot: the traffic view scrolled back beyond its first row.
+    void walkBefore(qint64 beforeLine, qint64 lines, const LineVisitor &visit) const;
     // "12.5" (seconds from the start) or a clock time "hh:mm:ss[.mmm]" (the first such moment
     // at or after the start) as ms since the start; nullopt and why not.
     std::optional<qint64> parseTime(const QString &text, QString *error) const;

@@ -210,7 +210,7 @@ private Q_SLOTS:
         QVERIFY2(log.open(movingLog(600)), qPrintable(log.errorString()));
         QVERIFY(log.snapshotCount() > 3);
         QList<qint64> times;
-        log.walkTail(400000, 3000, [&](QByteArrayView, const LogLine &line, qint64 ms) {
+        log.walkTail(400000, 3000, [&](QByteArrayView, const LogLine &line, qint64 ms, qint64) {
             if (line.type == LogLine::Type::Frame)
                 times << ms;
             return true;
@@ -220,11 +220,49 @@ private Q_SLOTS:
         QCOMPARE(times.last(), 400000); // the read sent at the moment
         QVERIFY(std::is_sorted(times.cbegin(), times.cend()));
         qsizetype fromStart = 0;
-        log.walkTail(300, 3000, [&](QByteArrayView, const LogLine &, qint64) {
+        log.walkTail(300, 3000, [&](QByteArrayView, const LogLine &, qint64, qint64) {
             ++fromStart;
             return true;
         });
         QCOMPARE(fromStart, 5 + 13); // the header, then the frames through 300 ms
+    }
+
+    // The lines before a line number, exactly, from a snapshot: the traffic view scrolled back.
+    void theLinesBeforeALine()
+    {
+        ReplayLog log;
+        QVERIFY2(log.open(movingLog(600)), qPrintable(log.errorString()));
+        QList<qint64> numbers;
+        log.walkTail(400000, 3000, [&](QByteArrayView, const LogLine &, qint64, qint64 lineNo) {
+            numbers << lineNo;
+            return true;
+        });
+        for (qsizetype i = 1; i < numbers.size(); ++i)
+            QCOMPARE(numbers.at(i), numbers.at(i - 1) + 1);
+        QCOMPARE(numbers.last(), 5 + 4 * 4000 + 1); // the header, 4000 cycles, the request
+        QList<qint64> before;
+        QList<qint64> times;
+        log.walkBefore(numbers.first(), 5000,
+                       [&](QByteArrayView, const LogLine &, qint64 ms, qint64 lineNo) {
+                           before << lineNo;
+                           times << ms;
+                           return true;
+                       });
+        QCOMPARE(before.size(), 5000);
+        QCOMPARE(before.first(), numbers.first() - 5000);
+        QCOMPARE(before.last(), numbers.first() - 1);
+        QVERIFY(times.last() <= 400000);
+        // At the start of the log: what there is.
+        QList<qint64> first;
+        log.walkBefore(9, 100, [&](QByteArrayView, const LogLine &, qint64, qint64 lineNo) {
+            first << lineNo;
+            return true;
+        });
+        QCOMPARE(first, (QList<qint64>{1, 2, 3, 4, 5, 6, 7, 8}));
+        bool any = false;
+        log.walkBefore(1, 100,
+                       [&](QByteArrayView, const LogLine &, qint64, qint64) { return any = true; });
+        QVERIFY(!any);
     }
 
     // Each device's requests, errors, last restart; an answer means the line is up.

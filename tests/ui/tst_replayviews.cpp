@@ -15,6 +15,10 @@
 #include "widgets/plots/xyplot.h"
 #include "widgets/replay/replaybar.h"
 
+#include <QDockWidget>
+#include <QPushButton>
+#include <QScrollBar>
+#include <QTableView>
 #include <QTableWidget>
 #include <QTest>
 
@@ -135,6 +139,48 @@ private Q_SLOTS:
         QCOMPARE(clock(lastRow()), QStringLiteral("22:12:00.060"));
         QCOMPARE(lastRow().direction, TrafficEntry::Direction::Sent);
         QCOMPARE(lastRow().bytes, test::LogBuilder::readRequest(2, param("speed")->address, 1));
+    }
+
+    // Beyond its rows the traffic view goes back on: scrolled to the top, or with "Earlier
+    // lines", to the start of the log.
+    void theTrafficViewScrollsBackToTheStart()
+    {
+        test::LogBuilder b;
+        b.header();
+        const quint16 speed = param("speed")->address;
+        for (int i = 0; i < 16000; ++i) // 32 000 lines: more than the view takes at a moment
+            b.read(1, speed, {quint16(i)});
+        QVERIFY(openReplay(b.save(dir, QStringLiteral("long.log"))));
+        for (QWidget *w = window->trafficView(); w; w = w->parentWidget()) {
+            if (auto *dock = qobject_cast<QDockWidget *>(w))
+                dock->show();
+        }
+        seek(replay()->log().durationMs());
+        TrafficView *view = window->trafficView();
+        QVERIFY(view->earlierButton()->isVisibleTo(window.get()));
+        QCOMPARE(clock(lastRow()), QStringLiteral("22:15:19.990"));
+        QCOMPARE(traffic()->rowCount(), ReplayViews::kTrafficLines);
+        const QString firstBefore = clock(traffic()->entryAt(0));
+        QVERIFY(firstBefore > QStringLiteral("22:10:00.000"));
+        // Scrolled to the top: the lines before come, the rows in sight stay in sight.
+        QScrollBar *bar = view->table()->verticalScrollBar();
+        QTRY_VERIFY(bar->maximum() > 0);
+        bar->setValue(bar->minimum());
+        QTRY_COMPARE(traffic()->rowCount(), 32000);
+        QCOMPARE(clock(traffic()->entryAt(0)), QStringLiteral("22:10:00.000"));
+        QCOMPARE(clock(traffic()->entryAt(32000 - ReplayViews::kTrafficLines)), firstBefore);
+        QCOMPARE(clock(lastRow()), QStringLiteral("22:15:19.990")); // it still ends there
+        QVERIFY(bar->value() > bar->minimum());
+        // None left: the button says so.
+        QCOMPARE(view->showEarlier(), 0);
+        QVERIFY(!view->earlierButton()->isEnabled());
+        // Another moment: its own last rows, and the button again.
+        seek(100000);
+        QVERIFY(view->earlierButton()->isEnabled());
+        QCOMPARE(clock(lastRow()), QStringLiteral("22:11:40.000"));
+        QCOMPARE(traffic()->rowCount(), 10001);
+        replay()->close();
+        QVERIFY(!view->earlierButton()->isVisibleTo(window.get()));
     }
 
     // Playing on adds what came since to the views; it does not build them again.
