@@ -30,9 +30,9 @@ class ReplayViews : public QObject
 {
     Q_OBJECT
 public:
-    // The traffic view's lines at a moment chosen anywhere (playing on adds to them up to the
-    // view's own limit): about 8 minutes of polling at 10 Hz.
-    static constexpr int kTrafficLines = 20000;
+    // The traffic view's lines at a moment chosen anywhere, about 4 minutes of polling at 10 Hz
+    // (scrolled back, as many again each time; playing on adds to them; the view's own limit).
+    static constexpr int kTrafficLines = 10000;
     // The XY trace's points at a moment chosen anywhere: the whole path from the start at the
     // plot's resolution (ReplayTrack::path), so drawing it stays cheap.
     static constexpr int kTracePoints = 4000;

@@ -168,11 +168,21 @@ qsizetype ReplayTrack::upperBound(const Track &t, qint64 ms) const
     return lo;
 }
 
-StatusSample ReplayTrack::sampleOf(const qint64 *c, qint64 epochMs) const
+StatusSample ReplayTrack::sampleOf(const qint64 *c, qint64 epochMs,
+                                   const StatusSample *previous) const
 {
     const qint64 *bits = c + 1 + m_motors;
-    const auto flag = [&](int f) {
-        return bit(bits, m_motors + 2 * f) ? qint8(bit(bits, m_motors + 2 * f + 1)) : qint8(-1);
+    // The flags as the previous sample's when they are the same (they seldom change): its
+    // vectors shared, not allocated again -- a seek makes tens of thousands of samples.
+    const auto flags = [&](int from, int count, const QVector<qint8> *same) {
+        QVarLengthArray<qint8, 32> v(count);
+        for (int n = 0; n < count; ++n) {
+            const int f = from + n;
+            v[n] = bit(bits, m_motors + 2 * f) ? qint8(bit(bits, m_motors + 2 * f + 1)) : qint8(-1);
+        }
+        if (same && same->size() == count && std::equal(v.cbegin(), v.cend(), same->cbegin()))
+            return *same;
+        return QVector<qint8>(v.cbegin(), v.cend());
     };
     const int outputs = int(m_flags.size()) - m_runningCount - m_inputCount;
     StatusSample s;
@@ -182,15 +192,10 @@ StatusSample ReplayTrack::sampleOf(const qint64 *c, qint64 epochMs) const
     for (int m = 0; m < m_motors; ++m)
         s.positions[m] = bit(bits, m) ? double(c[1 + m]) / m_scale.at(m)
                                       : std::numeric_limits<double>::quiet_NaN();
-    s.running.resize(m_runningCount);
-    for (int f = 0; f < m_runningCount; ++f)
-        s.running[f] = flag(f);
-    s.inputs.resize(m_inputCount);
-    for (int n = 0; n < m_inputCount; ++n)
-        s.inputs[n] = flag(m_runningCount + n);
-    s.outputs.resize(outputs);
-    for (int n = 0; n < outputs; ++n)
-        s.outputs[n] = flag(m_runningCount + m_inputCount + n);
+    s.running = flags(0, m_runningCount, previous ? &previous->running : nullptr);
+    s.inputs = flags(m_runningCount, m_inputCount, previous ? &previous->inputs : nullptr);
+    s.outputs =
+        flags(m_runningCount + m_inputCount, outputs, previous ? &previous->outputs : nullptr);
     return s;
 }
 
@@ -204,7 +209,7 @@ QList<StatusSample> ReplayTrack::samples(int id, qint64 fromMs, qint64 toMs, qin
     const qsizetype to = upperBound(*it, toMs);
     out.reserve(std::max<qsizetype>(0, to - from));
     for (qsizetype i = from; i < to; ++i)
-        out << sampleOf(at(*it, i), epochMs);
+        out << sampleOf(at(*it, i), epochMs, out.isEmpty() ? nullptr : &out.constLast());
     return out;
 }
 
@@ -216,7 +221,7 @@ std::optional<StatusSample> ReplayTrack::sampleAt(int id, qint64 ms, qint64 epoc
     const qsizetype i = upperBound(*it, ms);
     if (i == 0)
         return std::nullopt;
-    return sampleOf(at(*it, i - 1), epochMs);
+    return sampleOf(at(*it, i - 1), epochMs, nullptr);
 }
 
 QList<QPointF> ReplayTrack::path(int id, qint64 toMs, int maxPoints) const

@@ -71,7 +71,7 @@ private:
     // Index of the first sample later than `ms`.
     qsizetype upperBound(const Track &t, qint64 ms) const;
     bool sameStatus(const qint64 *a, const qint64 *b) const;
-    StatusSample sampleOf(const qint64 *cells, qint64 epochMs) const;
+    StatusSample sampleOf(const qint64 *cells, qint64 epochMs, const StatusSample *previous) const;
 
     int m_motors = 0;
     QList<const Parameter *> m_positions;
