@@ -1,6 +1,5 @@
 #include "replayviews.h"
 
-#include "i18n/translators.h"
 #include "pages/plotpage.h"
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
@@ -247,7 +246,7 @@ void ReplayViews::showDevices(int device, const QList<int> &devices, const Repla
             }
             const Parameter *command = map.find(d.lastCommand);
             if (!row.runningMotors.isEmpty() && command && command->command == CommandClass::Motion)
-                row.command = command->label.text(Translators::current());
+                row.command = command->key; // the list names it in the language shown
         }
         rows.insert(id, row);
     }

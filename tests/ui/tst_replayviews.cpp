@@ -84,6 +84,8 @@ private Q_SLOTS:
                 b.read(2, speed, {300});
             else
                 b.frame(true, test::LogBuilder::readRequest(2, speed, 1)); // no answer
+            if (i == kRunningFrom - 1) // what sets motor 1 running, acknowledged
+                b.coil(1, param("forward")->address);
             b.time = start.addMSecs(kCycleMs);
         }
         logPath = b.save(dir, QStringLiteral("two-devices.log"));
@@ -232,10 +234,13 @@ private Q_SLOTS:
         QCOMPARE(list->rowTexts(0),
                  (QStringList{"1", "X gantry", "answering (in view)", "unknown", "0"}));
         QCOMPARE(list->rowTexts(1), (QStringList{"2", "Lift", "answering", "unknown", "0"}));
-        // Late: id 1 runs, id 2 answers no more and was seen to restart.
+        // Late: id 1 runs (the motion command it acknowledged, in the list's words), id 2
+        // answers no more and was seen to restart.
         seek(850 * kCycleMs + 50);
+        const QString forward = param("forward")->label.text(QStringLiteral("en"));
+        QCOMPARE(forward, QStringLiteral("Forward"));
         QCOMPARE(list->rowTexts(0),
-                 (QStringList{"1", "X gantry", "running: motor 1", "unknown", "0"}));
+                 (QStringList{"1", "X gantry", "running: " + forward, "unknown", "0"}));
         const QStringList second = list->rowTexts(1);
         QCOMPARE(second.value(0), QStringLiteral("2"));
         QCOMPARE(second.value(1), QStringLiteral("Lift"));
@@ -252,7 +257,7 @@ private Q_SLOTS:
         QCOMPARE(replay()->device(), 2);
         QVERIFY2(list->rowTexts(1).value(2).startsWith(QLatin1String("not answering (in view)")),
                  qPrintable(list->rowTexts(1).value(2)));
-        QCOMPARE(list->rowTexts(0).value(2), QStringLiteral("running: motor 1"));
+        QCOMPARE(list->rowTexts(0).value(2), "running: " + forward);
         // At the start nothing has answered yet: the line is not known to be up.
         seek(0);
         QCOMPARE(list->rowTexts(0).value(2), QStringLiteral("not connected"));

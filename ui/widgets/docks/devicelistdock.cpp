@@ -238,9 +238,12 @@ QString DeviceListDock::stateText(int id) const
         QString state;
         if (!r.linkUp)
             state = tr("not connected");
-        else if (!r.runningMotors.isEmpty())
-            state = tr("running: %1")
-                        .arg(!r.command.isEmpty() ? r.command : motorsText(r.runningMotors));
+        else if (!r.runningMotors.isEmpty()) // the command in the language shown, as live
+            state =
+                tr("running: %1")
+                    .arg(m_session->map().find(r.command)
+                             ? m_session->map().find(r.command)->label.text(Translators::current())
+                             : motorsText(r.runningMotors));
         else if (!r.asked)
             state = inView ? tr("asking (in view)") : tr("asking");
         else if (inView)

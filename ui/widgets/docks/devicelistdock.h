@@ -23,7 +23,7 @@ struct ReplayDeviceRow
     bool asked = false;       // a request to it had come back or been given up by then
     bool answering = false;   // its last request was answered
     QList<int> runningMotors; // its motors running, as last read
-    QString command;          // the motion command acknowledged last, while they run
+    QString command;          // the motion command acknowledged last (its key), while they run
     int requests = 0;
     int errors = 0;      // refused or not answered, of those requests
     QString lastError;   // the last of them and when
