@@ -2990,6 +2990,10 @@
         <source>running: %1</source>
         <translation>running: %1</translation>
     </message>
+    <message>
+        <source>%1; restarted %2</source>
+        <translation>%1; restarted %2</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DevicePage</name>
@@ -8518,6 +8522,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>No file manager opened %1. The session log files are there.</source>
         <translation>No file manager opened %1. The session log files are there.</translation>
+    </message>
+    <message>
+        <source>Earlier lines</source>
+        <translation>Earlier lines</translation>
+    </message>
+    <message>
+        <source>Show the lines of the replayed log before the first one here (scrolling to the top does it too)</source>
+        <translation>Show the lines of the replayed log before the first one here (scrolling to the top does it too)</translation>
     </message>
 </context>
 <context>

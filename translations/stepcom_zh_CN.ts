@@ -2971,6 +2971,10 @@
         <source>running: %1</source>
         <translation>运行中：%1</translation>
     </message>
+    <message>
+        <source>%1; restarted %2</source>
+        <translation>%1；于 %2 重新启动</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DevicePage</name>
@@ -8463,6 +8467,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>No file manager opened %1. The session log files are there.</source>
         <translation>没有文件管理器能打开 %1。会话日志文件就在那里。</translation>
+    </message>
+    <message>
+        <source>Earlier lines</source>
+        <translation>更早的日志行</translation>
+    </message>
+    <message>
+        <source>Show the lines of the replayed log before the first one here (scrolling to the top does it too)</source>
+        <translation>显示回放日志中此处第一行之前的日志行（滚动到顶部也会加载）</translation>
     </message>
 </context>
 <context>

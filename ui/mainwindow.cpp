@@ -104,7 +104,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     addPage(m_motion = new MotionPage(session, this)); // jogging and homing (issue 5)
     addPage(new ModesPage(session, this));             // special modes (issue 6)
     addPage(new InterpolationPage(session, this));     // interpolation (issue 6)
-    addPage(new PlotPage(session, this));              // monitoring (issue 5)
+    addPage(m_plots = new PlotPage(session, this));    // monitoring (issue 5)
     addPage(m_checklist = new ChecklistPage(session, m_writeFlow, this)); // issue 17
     addPage(new DevicePage(session, this)); // its id and baud, save to flash, factory reset
     m_sidebar->setCurrentPage(0);
@@ -143,11 +143,10 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     });
     connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
     // --- end working without the machine ---
-    m_replay->setTrafficView(m_traffic); // issue 26
-    m_replay->setDeviceList(m_deviceDock);
-    m_replay->setMachineStrip(m_strip);
-    // Pages chosen, changes written and checklist results become markers of a replay.
-    ReplayMode::recordActions(m_sessionLog, m_sidebar, m_pages, m_writeFlow, m_checklist);
+    m_replay->setViews({m_traffic, m_deviceDock, m_plots, m_strip}); // issue 26
+    // Pages chosen, changes written, checklist results and device names go into the log.
+    ReplayMode::recordActions(m_sessionLog, m_sidebar, m_pages, m_writeFlow, m_checklist,
+                              m_deviceDock);
     connect(m_replay, &ReplayMode::activeChanged, this, &MainWindow::showOrigin);
     connect(m_replay, &ReplayMode::finished, this, [this](bool ok, const QString &text) {
         m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning, text);

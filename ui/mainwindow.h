@@ -14,6 +14,7 @@ namespace stepcom {
 
 class BackupGuard;
 class ChecklistPage;
+class PlotPage;
 class DeviceSession;
 class EmergencyStop;
 class GuideWindow;
@@ -69,7 +70,8 @@ public:
     OfflineBanner *offlineBanner() const { return m_offlineBanner; }
     ReplayMode *replayMode() const { return m_replay; }          // issue 26
     ChecklistPage *checklistPage() const { return m_checklist; } // issue 17
-    BackupGuard *backupGuard() const { return m_backups; }       // issue 17
+    PlotPage *plotPage() const { return m_plots; }
+    BackupGuard *backupGuard() const { return m_backups; } // issue 17
     // The dialogs a test (or a curious user) may want to reach while they are open.
     WriteChangesDialog *writeDialog() const;
     QMessageBox *closeQuestion() const;
@@ -130,7 +132,8 @@ private:
     bool m_jogStopAwaited = false;  // jogging (issue 5): close waited for the stops once
     WriteFlow *m_writeFlow = nullptr;
     ChecklistPage *m_checklist = nullptr; // issue 17
-    BackupGuard *m_backups = nullptr;     // issue 17
+    PlotPage *m_plots = nullptr;
+    BackupGuard *m_backups = nullptr; // issue 17
     QPointer<QMessageBox> m_closeQuestion;
     bool m_closeConfirmed = false;
     bool m_statusDockMoved = false; // arrangeDocks() put it into the bottom tabs

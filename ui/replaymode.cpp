@@ -4,6 +4,7 @@
 #include "dialogs/writechangesdialog.h"
 #include "page.h"
 #include "pages/checklistpage.h"
+#include "replayviews.h"
 #include "session/devicesession.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
@@ -54,32 +55,6 @@ constexpr int kProgressSteps = 1000;
 constexpr int kProgressPollMs = 100;
 constexpr qint64 kFirstBackSpanMs = 1000;
 
-// A line of the log as the traffic view shows a live one.
-TrafficEntry entryOf(const LogLine &line)
-{
-    TrafficEntry e;
-    e.time = QDateTime::fromString(LogLine::stampText(line.stamp),
-                                   QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"));
-    const QString kind = QString::fromLatin1(line.kind);
-    e.summary = line.text;
-    bool known = false;
-    for (const auto k :
-         {TrafficEntry::Kind::Event, TrafficEntry::Kind::Poll, TrafficEntry::Kind::Read,
-          TrafficEntry::Kind::Write, TrafficEntry::Kind::Command, TrafficEntry::Kind::Error}) {
-        if (SessionLog::kindName(k) == kind) {
-            e.kind = k;
-            known = true;
-        }
-    }
-    if (line.type == LogLine::Type::Frame) {
-        e.direction = line.sent ? TrafficEntry::Direction::Sent : TrafficEntry::Direction::Received;
-        e.bytes = line.bytes;
-    } else if (!known) { // the session's own marks: "linkdown: the port vanished"
-        e.summary = QStringLiteral("%1: %2").arg(kind, line.text);
-    }
-    return e;
-}
-
 bool isZip(const QString &path)
 {
     QFile f(path);
@@ -98,7 +73,7 @@ ReplayMode::ReplayMode(DeviceSession *session, QWidget *window)
     , m_bannerText(new QLabel(m_banner))
     , m_bannerState(new QLabel(m_banner))
     , m_bar(new ReplayBar(window))
-    , m_traffic(new TrafficLog(this))
+    , m_views(new ReplayViews(session, this))
     , m_log(session->map())
 {
     m_open->setObjectName(QStringLiteral("openSessionLog"));
@@ -126,7 +101,6 @@ ReplayMode::ReplayMode(DeviceSession *session, QWidget *window)
     bannerLayout->addWidget(m_bannerState);
     m_banner->hide();
     m_bar->hide();
-    m_traffic->setCapacity(5000);
     connect(m_bar, &ReplayBar::seekRequested, this, &ReplayMode::seek);
     connect(m_bar, &ReplayBar::stepFrame, this, &ReplayMode::stepFrame);
     connect(m_bar, &ReplayBar::deviceChosen, this, &ReplayMode::showDevice);
@@ -152,8 +126,11 @@ ReplayMode::~ReplayMode()
 }
 
 void ReplayMode::recordActions(SessionLog *log, PageSidebar *sidebar, const QList<Page *> &pages,
-                               WriteFlow *writes, ChecklistPage *checklist)
+                               WriteFlow *writes, ChecklistPage *checklist, DeviceListDock *devices)
 {
+    log->setDeviceNames(devices->names());
+    connect(devices, &DeviceListDock::namesChanged, log,
+            [log, devices] { log->setDeviceNames(devices->names()); });
     // Only while a connection is logged (SessionLog writes nothing before the first one), in
     // the words the technician saw.
     connect(sidebar, &PageSidebar::pageChosen, log, [log, pages](int index) {
@@ -167,19 +144,12 @@ void ReplayMode::recordActions(SessionLog *log, PageSidebar *sidebar, const QLis
     connect(checklist, &ChecklistPage::resultRecorded, log, &SessionLog::noteUserAction);
 }
 
-void ReplayMode::setTrafficView(TrafficView *view)
+void ReplayMode::setViews(const Views &views)
 {
-    m_view = view;
-}
-
-void ReplayMode::setMachineStrip(MachineStrip *strip)
-{
-    m_strip = strip;
-}
-
-void ReplayMode::setDeviceList(DeviceListDock *list)
-{
-    m_deviceList = list;
+    m_views->setTrafficView(views.traffic);
+    m_views->setDeviceList(views.devices);
+    m_views->setPlots(views.plots);
+    m_strip = views.strip;
 }
 
 QMessageBox *ReplayMode::errorBox() const
@@ -378,8 +348,7 @@ void ReplayMode::openingDone()
     m_device = m_devices.value(0, 0);
     m_moment = 0;
     m_active = true;
-    if (m_view)
-        m_view->setLog(m_traffic);
+    m_views->start(&m_log, [this](int id) { showDevice(id); });
     const ReplayLog *log = &m_log;
     m_bar->setLog(m_log.durationMs(), m_log.events(), m_devices,
                   [log](qint64 ms) { return log->momentText(ms); });
@@ -432,23 +401,7 @@ void ReplayMode::showMoment()
 {
     const ReplayState state = m_log.stateAt(m_moment);
     m_session->parameters()->showReplay(m_name, state.devices.value(m_device).values(m_log.map()));
-    // The lines up to the moment, as the traffic view showed them then, and a sample for the
-    // plots after every answer.
-    m_traffic->clear();
-    StatusRecorder *recorder = m_session->recorder();
-    recorder->clear();
-    const qint64 epoch =
-        QDateTime::fromString(m_log.startText(), QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz"))
-            .toMSecsSinceEpoch();
-    m_log.walk(std::max<qint64>(0, m_moment - kHistoryMs), m_moment,
-               [&](QByteArrayView, const LogLine &line, qint64 ms, const ReplayState &after) {
-                   if (line.type == LogLine::Type::Frame || line.type == LogLine::Type::Mark)
-                       m_traffic->add(entryOf(line));
-                   if (line.type == LogLine::Type::Frame && !line.sent)
-                       recorder->addSample(after.devices.value(m_device).values(m_log.map()), ms,
-                                           epoch + ms);
-                   return true;
-               });
+    m_views->show(m_moment, m_device, m_devices, state);
     m_bar->setMoment(m_moment);
     if (m_strip) { // the line as the log's header names it (an older log: not known)
         const QString line = m_log.header().value(QStringLiteral("line"));
@@ -456,13 +409,6 @@ void ReplayMode::showMoment()
                                 line.isEmpty() ? QString() : tr("replay: %1").arg(line));
     }
     m_stateText = stateText(state);
-    if (m_deviceList && m_devices.size() > 1) { // each device's state, as the list shows a line
-        QHash<int, bool> answering;
-        for (auto it = state.devices.cbegin(); it != state.devices.cend(); ++it)
-            answering.insert(it.key(), it->answering);
-        m_deviceList->showReplay(m_devices, answering, m_device,
-                                 [this](int id) { showDevice(id); });
-    }
     m_bannerState->setText(m_stateText);
     Q_EMIT momentChanged(m_moment);
 }
@@ -506,12 +452,7 @@ void ReplayMode::close()
     m_active = false;
     if (m_session->parameters()->isReplay())
         m_session->parameters()->closeReplay();
-    if (m_view)
-        m_view->setLog(m_session->traffic());
-    m_traffic->clear();
-    m_session->recorder()->clear();
-    if (m_deviceList)
-        m_deviceList->endReplay();
+    m_views->stop();
     if (m_strip)
         m_strip->endReplay();
     m_banner->hide();

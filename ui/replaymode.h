@@ -24,17 +24,18 @@ class DeviceSession;
 class MachineStrip;
 class Page;
 class PageSidebar;
+class PlotPage;
 class ReplayBar;
+class ReplayViews;
 class SessionLog;
-class TrafficLog;
 class TrafficView;
 class WriteFlow;
 
 // The window's replay of a session log or a support bundle (issue 26): File → Open session
 // log… opens it (off the GUI thread, with progress and Cancel), then every page shows what the
 // log says the controller held at the moment chosen on the bar: its values go into the
-// session's store as a read would put them (ParameterStore::showReplay), the traffic view shows
-// the log's lines and the plots (the session's StatusRecorder) the positions up to that moment. No
+// session's store as a read would put them (ParameterStore::showReplay); the traffic view, the
+// plots and the device list show it as the live window showed them then (ReplayViews). No
 // link is opened, so nothing that writes or moves is enabled, as while a profile file is edited;
 // connecting, opening a profile file or Close replay ends it. Choosers and messages are non-modal;
 // openPath() and openBundleEntry() do the work and are what tests call.
@@ -42,29 +43,32 @@ class ReplayMode : public QObject
 {
     Q_OBJECT
 public:
-    // The traffic view and the plots show this much of the log before the moment.
-    static constexpr qint64 kHistoryMs = 60000;
-
     ReplayMode(DeviceSession *session, QWidget *window);
     ~ReplayMode() override;
 
     // What a replay of the window's session logs shows as the user's doing (the log's "user"
     // lines, markers in the timeline): the page chosen, the changes confirmed for writing, the
-    // checklist's results.
+    // checklist's results; and the names of the devices, in the log's header.
     static void recordActions(SessionLog *log, PageSidebar *sidebar, const QList<Page *> &pages,
-                              WriteFlow *writes, ChecklistPage *checklist);
+                              WriteFlow *writes, ChecklistPage *checklist, DeviceListDock *devices);
 
     QAction *openAction() const { return m_open; }
     QAction *closeAction() const { return m_close; }
     // For the window to place: the banner above the pages, the bar below them.
     QFrame *banner() const { return m_banner; }
     ReplayBar *bar() const { return m_bar; }
-    // The traffic dock shows the replay's lines while it runs, the session's again after.
-    void setTrafficView(TrafficView *view);
-    // The device list shows the log's devices while it runs, the session's again after.
-    void setDeviceList(DeviceListDock *list);
-    // The strip shows the link as the log has it at the moment.
-    void setMachineStrip(MachineStrip *strip);
+    // What shows the log beside the pages while it runs (the session's again after): the
+    // traffic dock, the device list and the plots (ReplayViews), and the strip, the link as the
+    // log has it at the moment.
+    struct Views
+    {
+        TrafficView *traffic = nullptr;
+        DeviceListDock *devices = nullptr;
+        PlotPage *plots = nullptr;
+        MachineStrip *strip = nullptr;
+    };
+    void setViews(const Views &views);
+    ReplayViews *views() const { return m_views; }
 
     bool isActive() const { return m_active; }
     bool isOpening() const { return m_opening != nullptr; }
@@ -123,10 +127,8 @@ private:
     QLabel *m_bannerText;
     QLabel *m_bannerState;
     ReplayBar *m_bar;
-    QPointer<TrafficView> m_view;
-    QPointer<DeviceListDock> m_deviceList;
+    ReplayViews *m_views;
     QPointer<MachineStrip> m_strip;
-    TrafficLog *m_traffic;
     ReplayLog m_log;
     std::unique_ptr<QTemporaryDir> m_unpacked; // a bundle's log, copied out for the seeks
     std::shared_ptr<Opening> m_opening;

@@ -5,6 +5,7 @@
 #include "busprobe.h"
 #include "firststatusprobe.h"
 #include "replayprobe.h"
+#include "replaywindowprobe.h"
 #include "scanprobe.h"
 #include "trafficprobe.h"
 #include "windowprobe.h"
@@ -42,8 +43,8 @@ int main(int argc, char *argv[])
         "9600 when nobody answers, (i) the status cycle and read-all on a controller that "
         "refuses reads covering reserved registers, (j) the time from the port opened to the "
         "first status, both at 9600, (k) (a) and (b) on a controller that answers in 2 ms at "
-        "9600 and 38400, (l) opening and seeking a synthetic 1-hour session log at 10 Hz. Prints a "
-        "table "
+        "9600 and 38400, (l) opening and seeking a synthetic 1-hour session log at 10 Hz, (m) the "
+        "same in the window's replay mode. Prints a table "
         "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -67,7 +68,10 @@ int main(int argc, char *argv[])
         {QStringLiteral("only-scan"), QStringLiteral("Run only (h), the bus scan.")},
         {QStringLiteral("no-replay"), QStringLiteral("Skip (l), the replay of an hour's log.")},
         {QStringLiteral("only-replay"),
-         QStringLiteral("Run only (l): open a synthetic 1-hour log at 10 Hz, seek in it.")},
+         QStringLiteral("Run only (l) and (m): open a synthetic 1-hour log at 10 Hz, seek in it; "
+                        "in the core, then in the window.")},
+        {QStringLiteral("no-replay-window"),
+         QStringLiteral("Skip (m), the replay of an hour's log in the window.")},
         {QStringLiteral("no-gaps"), QStringLiteral("Skip (i), the gap-refusing controller.")},
         {QStringLiteral("no-first-status"), QStringLiteral("Skip (j), the time to first status.")},
         {QStringLiteral("no-fast"),
@@ -80,7 +84,21 @@ int main(int argc, char *argv[])
          QStringLiteral("Write the table between the bench markers of this Markdown file."),
          QStringLiteral("file")},
     });
+    // (m) measures the window in a process of its own: this program, run again.
+    QCommandLineOption replayChild(QStringLiteral("replay-window-child"),
+                                   QStringLiteral("(m) the measured window."),
+                                   QStringLiteral("log"));
+    QCommandLineOption replaySeeks(QStringLiteral("replay-window-seeks"),
+                                   QStringLiteral("(m) seeks to measure."), QStringLiteral("n"),
+                                   QStringLiteral("20"));
+    for (QCommandLineOption *o : {&replayChild, &replaySeeks}) {
+        o->setFlags(QCommandLineOption::HiddenFromHelp);
+        parser.addOption(*o);
+    }
     parser.process(app);
+    if (parser.isSet(replayChild))
+        return runReplayWindowChild(parser.value(replayChild),
+                                    std::max(1, parser.value(replaySeeks).toInt()));
 
     BenchConfig config;
     config.smoke = parser.isSet(QStringLiteral("smoke"));
@@ -185,6 +203,11 @@ int main(int argc, char *argv[])
     if (!parser.isSet(QStringLiteral("no-replay"))) {
         err << QStringLiteral("stepcom-bench: replaying a synthetic session log ...") << Qt::endl;
         rows += replayVerdicts(config.smoke ? measureReplay(60, 10) : measureReplay(3600, 10));
+        if (!parser.isSet(QStringLiteral("no-replay-window"))) {
+            err << QStringLiteral("stepcom-bench: replaying it in the window ...") << Qt::endl;
+            rows += replayWindowVerdicts(config.smoke ? measureReplayWindow(60, 10, 5)
+                                                      : measureReplayWindow(3600, 10, 20));
+        }
     }
     if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke && !onlyReplay) {
         err << QStringLiteral("stepcom-bench: the bus scan of ids 1-247 at 9600 baud ...")

@@ -25,8 +25,9 @@ QByteArray words(const QList<quint16> &values)
     return b;
 }
 
-// Writes `seconds` of polling as the session log writes it, streamed (never held whole).
-bool writeLog(const QString &path, int seconds, int hz, QString *error)
+} // namespace
+
+bool writeReplayLog(const QString &path, int seconds, int hz, QString *error)
 {
     QFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
@@ -85,8 +86,6 @@ bool writeLog(const QString &path, int seconds, int hz, QString *error)
     return file.error() == QFile::NoError;
 }
 
-} // namespace
-
 ReplayResult measureReplay(int seconds, int hz)
 {
     ReplayResult r;
@@ -94,7 +93,7 @@ ReplayResult measureReplay(int seconds, int hz)
     r.hz = hz;
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("hour.log"));
-    if (!writeLog(path, seconds, hz, &r.error))
+    if (!writeReplayLog(path, seconds, hz, &r.error))
         return r;
     r.bytes = QFileInfo(path).size();
     const qint64 pid = QCoreApplication::applicationPid();

@@ -28,6 +28,9 @@ struct ReplayResult
     double peakRssMb = 0;
 };
 
+// The synthetic log of (l) and (m): `seconds` of polling at `hz` as the session log writes it
+// (motor 1 and 2 moving all the while), streamed to `path`, never held whole.
+bool writeReplayLog(const QString &path, int seconds, int hz, QString *error);
 ReplayResult measureReplay(int seconds, int hz);
 QList<Verdict> replayVerdicts(const ReplayResult &r);
 

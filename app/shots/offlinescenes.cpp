@@ -5,6 +5,7 @@
 #include "map/factoryvalues.h"
 #include "offlineactions.h"
 #include "pages/motorpage.h"
+#include "pages/plotpage.h"
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
 #include "profileactions.h"
@@ -13,6 +14,7 @@
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
 #include "shooter.h"
+#include "widgets/docks/devicelistdock.h"
 #include "widgets/fields/parameterfield.h"
 
 namespace stepcom::offlinescenes {
@@ -130,7 +132,21 @@ void replay(Shooter &s)
         s.window()->showPage(page);
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("replay")), page);
-    script.then([&s] { s.window()->replayMode()->close(); });
+    // The last moment the link was up, on the Plots page with the device list open: the
+    // position plot and the XY path of the move, each device's state then.
+    script.then([&s] {
+        ReplayMode *replay = s.window()->replayMode();
+        qint64 at = replay->log().durationMs();
+        while (at > 0 && !replay->log().stateAt(at).linkUp)
+            at -= 10;
+        replay->seek(at);
+        s.window()->deviceListDock()->toggleViewAction()->trigger(); // as View → Devices does
+    });
+    s.shoot(Shooter::sceneFileName(QStringLiteral("replay-plots")), s.pageIndex<PlotPage>());
+    script.then([&s] {
+        s.window()->deviceListDock()->toggleViewAction()->trigger();
+        s.window()->replayMode()->close();
+    });
 }
 
 } // namespace stepcom::offlinescenes

@@ -43,27 +43,39 @@ QString describePath(const QString &path)
 
 } // namespace
 
-StatusRecorder::StatusRecorder(const RegisterMap &map, ParameterStore *store, QObject *parent)
-    : QObject(parent)
-    , m_store(store)
+StatusColumns::StatusColumns(const RegisterMap &map)
 {
     for (int n = 1; n <= map.blockCount(kMotor); ++n) {
         const Parameter *pos = map.blockParameter(kMotor, n, QStringLiteral("position"));
         const Parameter *run = map.blockParameter(kMotor, n, QStringLiteral("running"));
         if (!pos)
             break;
-        ++m_motors;
-        m_positionKeys << pos->key;
-        m_positionScale << pos->scale;
-        m_positionDecimals << pos->decimals();
-        m_runningKeys << (run ? run->key : QString());
-        if (m_unit.isEmpty())
-            m_unit = pos->unit;
+        positionKeys << pos->key;
+        positionScale << pos->scale;
+        positionDecimals << pos->decimals();
+        runningKeys << (run ? run->key : QString());
+        if (unit.isEmpty())
+            unit = pos->unit;
     }
     for (int n = 1; map.find(QStringLiteral("io.in%1").arg(n)); ++n)
-        m_inputKeys << QStringLiteral("io.in%1").arg(n);
+        inputKeys << QStringLiteral("io.in%1").arg(n);
     for (int n = 1; map.find(QStringLiteral("io.out%1").arg(n)); ++n)
-        m_outputKeys << QStringLiteral("io.out%1").arg(n);
+        outputKeys << QStringLiteral("io.out%1").arg(n);
+}
+
+StatusRecorder::StatusRecorder(const RegisterMap &map, ParameterStore *store, QObject *parent)
+    : QObject(parent)
+    , m_store(store)
+{
+    const StatusColumns columns(map);
+    m_motors = columns.motors();
+    m_positionKeys = columns.positionKeys;
+    m_positionScale = columns.positionScale;
+    m_positionDecimals = columns.positionDecimals;
+    m_runningKeys = columns.runningKeys;
+    m_unit = columns.unit;
+    m_inputKeys = columns.inputKeys;
+    m_outputKeys = columns.outputKeys;
     m_clock.start();
     m_epochAtStart = QDateTime::currentMSecsSinceEpoch();
 }
@@ -127,22 +139,37 @@ StatusRecorder::sampleOf(const std::function<std::optional<qint64>(const QString
 
 void StatusRecorder::append(const StatusSample &s)
 {
-    m_history.push_back(s);
+    keep(s);
     trim();
-    if (m_file.isOpen()) {
-        if (m_recordingOrigin < 0)
-            m_recordingOrigin = s.elapsedMs;
-        const QByteArray line = (csvRow(s, m_recordingOrigin) + QLatin1Char('\n')).toUtf8();
-        if (m_file.write(line) != line.size() || !m_file.flush()) {
-            const QString error = tr("Recording to “%1” stopped: %2")
-                                      .arg(describePath(m_file.fileName()), m_file.errorString());
-            stopRecording();
-            Q_EMIT recordingFailed(error);
-        } else {
-            ++m_rows;
-        }
-    }
     Q_EMIT sampleAdded();
+}
+
+void StatusRecorder::addSamples(const QList<StatusSample> &samples)
+{
+    if (samples.isEmpty())
+        return;
+    for (const StatusSample &s : samples)
+        keep(s);
+    trim();
+    Q_EMIT sampleAdded();
+}
+
+void StatusRecorder::keep(const StatusSample &s)
+{
+    m_history.push_back(s);
+    if (!m_file.isOpen())
+        return;
+    if (m_recordingOrigin < 0)
+        m_recordingOrigin = s.elapsedMs;
+    const QByteArray line = (csvRow(s, m_recordingOrigin) + QLatin1Char('\n')).toUtf8();
+    if (m_file.write(line) != line.size() || !m_file.flush()) {
+        const QString error = tr("Recording to “%1” stopped: %2")
+                                  .arg(describePath(m_file.fileName()), m_file.errorString());
+        stopRecording();
+        Q_EMIT recordingFailed(error);
+    } else {
+        ++m_rows;
+    }
 }
 
 void StatusRecorder::setCapacity(int samples)

@@ -29,6 +29,23 @@ struct StatusSample
     QVector<qint8> outputs;    // output 1.., same encoding
 };
 
+// The status columns of a map, in CSV order: each motor's position (and its scale, decimals,
+// unit) and running flag, the inputs (io.in1..), the outputs (io.out1..). The recorder samples
+// them; a replay's track of a whole log (ReplayTrack, issue 26) keeps the same.
+struct StatusColumns
+{
+    explicit StatusColumns(const RegisterMap &map);
+    int motors() const { return int(positionKeys.size()); }
+
+    QStringList positionKeys;
+    QStringList runningKeys; // one per motor; empty when the map has no running flag for it
+    QStringList inputKeys;
+    QStringList outputKeys;
+    QVector<int> positionScale;
+    QVector<int> positionDecimals;
+    QString unit;
+};
+
 // Samples the status values (positions, running flags, inputs, outputs) once per completed
 // poll cycle into a bounded in-memory history, and records them to CSV on request. No widgets:
 // the plots, the CLI and the tests share it. A cycle that read only the positions (a motor
@@ -56,6 +73,9 @@ public:
     // A sample of `values` (raw, by key; a key missing is unknown) at a moment of another clock:
     // a replayed log's (issue 26). Kept and recorded as any other sample.
     void addSample(const QHash<QString, qint64> &values, qint64 elapsedMs, qint64 epochMs);
+    // Samples made elsewhere (a replay's, in time order), kept and recorded as any other; one
+    // sampleAdded() for all of them.
+    void addSamples(const QList<StatusSample> &samples);
 
     // The history keeps at most this many samples and drops those older than maxAgeMs.
     void setCapacity(int samples);
@@ -102,6 +122,7 @@ Q_SIGNALS:
 private:
     void trim();
     void append(const StatusSample &sample);
+    void keep(const StatusSample &sample); // into the history and the recording
     StatusSample sampleOf(const std::function<std::optional<qint64>(const QString &)> &valueOf,
                           qint64 elapsedMs, qint64 epochMs) const;
 

@@ -4,6 +4,8 @@
 
 #include <QDateTime>
 #include <QDir>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QRegularExpression>
 #include <QStandardPaths>
 
@@ -136,7 +138,8 @@ QString SessionLog::formatMark(const QDateTime &time, const char *kind, const QS
              QString::fromLatin1(kind).leftJustified(7), text);
 }
 
-QString SessionLog::header(const DeviceSession *session, int part, const QString &description)
+QString SessionLog::header(const DeviceSession *session, int part, const QString &description,
+                           const QHash<int, QString> &names)
 {
     QString text =
         QStringLiteral("# StepCom %1 session log, part %2: %3\n")
@@ -172,6 +175,14 @@ QString SessionLog::header(const DeviceSession *session, int part, const QString
     if (ids.isEmpty())
         ids << QString::number(s.deviceId);
     text += QStringLiteral("# ids: %1\n").arg(ids.join(QLatin1Char(',')));
+    QJsonObject named;
+    for (auto it = names.cbegin(); it != names.cend(); ++it) {
+        if (!it.value().trimmed().isEmpty())
+            named.insert(QString::number(it.key()), it.value().trimmed());
+    }
+    if (!named.isEmpty())
+        text += QStringLiteral("# names: %1\n")
+                    .arg(QString::fromUtf8(QJsonDocument(named).toJson(QJsonDocument::Compact)));
     return text;
 }
 
@@ -185,7 +196,7 @@ bool SessionLog::openFile()
                      .arg(m_file.fileName(), m_file.errorString()));
             return false;
         }
-        m_file.write(header(m_session, m_part, m_description).toUtf8());
+        m_file.write(header(m_session, m_part, m_description, m_names).toUtf8());
         Q_EMIT fileStarted(m_file.fileName());
         return true;
     }
@@ -215,7 +226,7 @@ bool SessionLog::openFile()
             tr("cannot write the session log %1: %2").arg(m_file.fileName(), m_file.errorString()));
         return false;
     }
-    m_file.write(header(m_session, m_part, m_description).toUtf8());
+    m_file.write(header(m_session, m_part, m_description, m_names).toUtf8());
     Q_EMIT fileStarted(m_file.fileName());
     prune();
     return true;

@@ -3,6 +3,7 @@
 #include "bus/trafficlog.h"
 
 #include <QFile>
+#include <QHash>
 #include <QObject>
 #include <QPointer>
 
@@ -48,6 +49,9 @@ public:
     // A user action the core cannot see (the window's page changes, a checklist result), as a
     // "user" line (while a log is being written: not before the first connection).
     void noteUserAction(const QString &text);
+    // The names the user gave the ids of the line (the window's device list): the header of
+    // the next file says them ("# names: {\"1\":\"X gantry\"}"), so a replay shows them too.
+    void setDeviceNames(const QHash<int, QString> &names) { m_names = names; }
     // Why the last write failed (empty while writing works).
     QString error() const { return m_error; }
 
@@ -62,8 +66,10 @@ public:
     // "2026-11-24 22:10:01.123  --  user     E-STOP pressed"
     static QString formatMark(const QDateTime &time, const char *kind, const QString &text);
     // The header lines of a file: "# StepCom 0.1.0 session log, part 1: <description>", then
-    // "# key: value" lines (program, qt, map, line, ids) for what is known (session may be null).
-    static QString header(const DeviceSession *session, int part, const QString &description);
+    // "# key: value" lines (program, qt, map, line, ids, names) for what is known (session may
+    // be null).
+    static QString header(const DeviceSession *session, int part, const QString &description,
+                          const QHash<int, QString> &names = {});
 
 Q_SIGNALS:
     void fileStarted(const QString &path);
@@ -88,6 +94,7 @@ private:
     int m_part = 0;
     QFile m_file;
     QString m_error;
+    QHash<int, QString> m_names;
 };
 
 } // namespace stepcom

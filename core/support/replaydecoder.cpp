@@ -63,6 +63,7 @@ bool ReplayDecoder::split(const QByteArray &raw, Framing framing, int *unit, QBy
 void ReplayDecoder::feed(const LogLine &line, qint64 ms, qint64 lineNo, const Sink &sink)
 {
     m_state.ms = ms;
+    m_answeredUnit = 0;
     if (line.type == LogLine::Type::Frame)
         frame(line, ms, lineNo, sink);
     else if (line.type == LogLine::Type::Mark)
@@ -164,6 +165,8 @@ void ReplayDecoder::timedOut(const Pending &p, qint64 ms, qint64 lineNo, const S
 {
     ReplayDevice &d = m_state.devices[p.unit];
     d.answering = false;
+    ++d.requests;
+    ++d.errors;
     d.lastError = tr("no answer: %1").arg(describe(p.pdu));
     d.lastErrorMs = ms;
     const bool estop = m_map && functionOf(p.pdu) == 0x05 && p.pdu.size() >= 5 && [&] {
@@ -183,10 +186,16 @@ void ReplayDecoder::timedOut(const Pending &p, qint64 ms, qint64 lineNo, const S
 void ReplayDecoder::answered(const Pending &p, const QByteArray &a, qint64 ms, qint64 lineNo,
                              const Sink &sink)
 {
+    // An answer came over the line: it is up (a log that begins in the middle of a
+    // connection, a later part of a rotated one, has no line saying so).
+    m_state.linkUp = true;
     ReplayDevice &d = m_state.devices[p.unit];
     d.answering = true;
     d.lastAnswerMs = ms;
+    ++d.requests;
+    m_answeredUnit = p.unit;
     if (quint8(a.at(0)) & 0x80) {
+        ++d.errors;
         const int code = a.size() > 1 ? quint8(a.at(1)) : 0;
         d.lastError = tr("refused (%1): %2").arg(exceptionText(code), describe(p.pdu));
         d.lastErrorMs = ms;
@@ -268,6 +277,11 @@ void ReplayDecoder::mark(const LogLine &line, qint64 ms, qint64 lineNo, const Si
     } else if (kind == "restart") {
         // "id 2: motor1.speed 222 → 120 rpm"
         const int id = line.text.section(QLatin1Char(' '), 1, 1).remove(QLatin1Char(':')).toInt();
+        if (id > 0) {
+            ReplayDevice &d = m_state.devices[id];
+            d.restartMs = ms;
+            d.restartText = line.text;
+        }
         emitEvent(sink, ms, id, ReplayEvent::Kind::Restart, line.text, lineNo);
     } else if (kind == "user") {
         emitEvent(sink, ms, 0, ReplayEvent::Kind::User, line.text, lineNo);

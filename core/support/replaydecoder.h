@@ -37,6 +37,8 @@ public:
     // The end of the log: a request still waiting had no answer.
     void finish(qint64 ms, const Sink &sink);
     const ReplayState &state() const { return m_state; }
+    // The controller whose answer the line fed last was (0: that line answered nothing).
+    int answeredUnit() const { return m_answeredUnit; }
     ReplayState &state() { return m_state; }
 
     // The unit and the PDU of a raw frame (RTU with a good CRC, or Modbus TCP's MBAP).
@@ -63,6 +65,7 @@ private:
     const RegisterMap *m_map;
     Framing m_framing = Framing::Auto;
     bool m_marked = false;
+    int m_answeredUnit = 0;
     std::optional<Pending> m_pending;
     QList<Pending> m_owed; // the last requests given up, newest last
     ReplayState m_state;

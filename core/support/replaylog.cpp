@@ -2,6 +2,8 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QRegularExpression>
 
 namespace stepcom {
@@ -30,6 +32,7 @@ void applyHeader(ReplayDecoder &decoder, const LogLine &line)
 
 ReplayLog::ReplayLog(const RegisterMap &map)
     : m_map(std::make_shared<const RegisterMap>(map))
+    , m_track(std::make_shared<ReplayTrack>(map))
 {}
 
 bool ReplayLog::fail(Problem problem, const QString &text)
@@ -109,6 +112,7 @@ bool ReplayLog::open(const QString &path, const Callbacks &callbacks)
         return false;
     m_lines = snap.lineNo;
     m_durationMs = snap.lastMs;
+    m_track->finish();
     if (m_validLines == 0) {
         QFile f(path);
         const bool zip =
@@ -132,8 +136,8 @@ bool ReplayLog::open(const QString &path, const Callbacks &callbacks)
 }
 
 bool ReplayLog::scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const Callbacks &callbacks,
-                     const ReplayDecoder::Sink &sink, const Visitor &visit,
-                     qint64 visitFromMs) const
+                     const ReplayDecoder::Sink &sink, const Visitor &visit, qint64 visitFromMs,
+                     bool decode) const
 {
     QFile file(m_path);
     if (!file.open(QIODevice::ReadOnly) || !file.seek(snap.offset))
@@ -193,8 +197,13 @@ bool ReplayLog::scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const C
                 opening->m_garbageNumbers << snap.lineNo;
             ++opening->m_garbage;
         }
-        snap.decoder.feed(line, ms, snap.lineNo, sink);
+        if (decode)
+            snap.decoder.feed(line, ms, snap.lineNo, sink);
         snap.offset = offset;
+        if (opening && snap.decoder.answeredUnit() != 0) {
+            const int unit = snap.decoder.answeredUnit();
+            opening->m_track->add(unit, ms, *snap.decoder.state().devices.constFind(unit));
+        }
         if (visit && ms >= visitFromMs && !visit(chunk, line, ms, snap.decoder.state()))
             return true;
         if (!opening)
@@ -242,6 +251,57 @@ void ReplayLog::walk(qint64 fromMs, qint64 toMs, const Visitor &visit) const
         return;
     Snapshot snap = snapshotBefore(fromMs);
     scan(snap, toMs, nullptr, {}, {}, visit, fromMs);
+}
+
+void ReplayLog::walkTail(qint64 toMs, qint64 lines, const LineVisitor &visit) const
+{
+    if (m_snapshots.isEmpty() || !visit)
+        return;
+    // The snapshot before the moment, then one at least `lines` lines before that.
+    const Snapshot &near = snapshotBefore(toMs);
+    const qint64 wanted = near.lineNo - lines;
+    auto it = std::upper_bound(m_snapshots.cbegin(), m_snapshots.cend(), wanted,
+                               [](qint64 line, const Snapshot &s) { return line < s.lineNo; });
+    Snapshot snap = it == m_snapshots.cbegin() ? m_snapshots.first() : *std::prev(it);
+    scan(
+        snap, toMs, nullptr, {}, {},
+        [&visit, &snap](QByteArrayView raw, const LogLine &line, qint64 ms, const ReplayState &) {
+            return visit(raw, line, ms, snap.lineNo);
+        },
+        0, false);
+}
+
+void ReplayLog::walkBefore(qint64 beforeLine, qint64 lines, const LineVisitor &visit) const
+{
+    const qint64 first = std::max<qint64>(1, beforeLine - lines);
+    if (m_snapshots.isEmpty() || !visit || first >= beforeLine)
+        return;
+    // The last snapshot whose next line is the first one wanted or before it.
+    auto it = std::upper_bound(m_snapshots.cbegin(), m_snapshots.cend(), first - 1,
+                               [](qint64 line, const Snapshot &s) { return line < s.lineNo; });
+    Snapshot snap = it == m_snapshots.cbegin() ? m_snapshots.first() : *std::prev(it);
+    scan(
+        snap, -1, nullptr, {}, {},
+        [&](QByteArrayView raw, const LogLine &line, qint64 ms, const ReplayState &) {
+            if (snap.lineNo >= beforeLine)
+                return false;
+            return snap.lineNo < first || visit(raw, line, ms, snap.lineNo);
+        },
+        0, false);
+}
+
+QHash<int, QString> ReplayLog::deviceNames() const
+{
+    QHash<int, QString> names;
+    const QJsonObject o =
+        QJsonDocument::fromJson(m_header.value(QStringLiteral("names")).toUtf8()).object();
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        bool ok = false;
+        const int id = it.key().toInt(&ok);
+        if (ok && it.value().isString() && !it.value().toString().trimmed().isEmpty())
+            names.insert(id, it.value().toString().trimmed());
+    }
+    return names;
 }
 
 std::optional<qint64> ReplayLog::parseTime(const QString &text, QString *error) const

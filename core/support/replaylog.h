@@ -3,6 +3,7 @@
 #include "map/registermap.h"
 #include "support/replaydecoder.h"
 #include "support/replaystate.h"
+#include "support/replaytrack.h"
 
 #include <QCoreApplication>
 #include <QHash>
@@ -62,6 +63,10 @@ public:
     int snapshotCount() const { return int(m_snapshots.size()); }
 
     const QList<ReplayEvent> &events() const { return m_events; }
+    // Each controller's status through the whole log, for the plots (gathered by open()).
+    const ReplayTrack &track() const { return *m_track; }
+    // The names the window's device list gave the ids ("# names:" in the header), if any.
+    QHash<int, QString> deviceNames() const;
     // Every controller at `ms` since the start (past the end: the last state); reads the file
     // again from the snapshot before it.
     ReplayState stateAt(qint64 ms) const;
@@ -71,6 +76,16 @@ public:
     using Visitor = std::function<bool(QByteArrayView raw, const LogLine &line, qint64 ms,
                                        const ReplayState &state)>;
     void walk(qint64 fromMs, qint64 toMs, const Visitor &visit) const;
+    // Every line through `toMs` in order, from early enough that at least `lines` lines come
+    // before the moment (from the start of a shorter log): the traffic view's last rows at a
+    // moment. Reads from a snapshot, never the whole log, and decodes nothing (no state);
+    // `visit` keeps the last ones it wants; `lineNo` is a line's number in the log.
+    using LineVisitor =
+        std::function<bool(QByteArrayView raw, const LogLine &line, qint64 ms, qint64 lineNo)>;
+    void walkTail(qint64 toMs, qint64 lines, const LineVisitor &visit) const;
+    // The `lines` lines before line number `beforeLine` (fewer at the start of the log), in
+    // order, read from a snapshot: the traffic view scrolled back beyond its first row.
+    void walkBefore(qint64 beforeLine, qint64 lines, const LineVisitor &visit) const;
     // "12.5" (seconds from the start) or a clock time "hh:mm:ss[.mmm]" (the first such moment
     // at or after the start) as ms since the start; nullopt and why not.
     std::optional<qint64> parseTime(const QString &text, QString *error) const;
@@ -89,9 +104,10 @@ private:
     // to the end), feeding `sink`. open() passes itself as `opening` (the checks, the index);
     // stateAt() passes nothing.
     // `visit` (optional) sees every line from `visitFromMs` on; false from it ends the scan.
+    // Without `decode` the lines are only read (the state stays the snapshot's).
     bool scan(Snapshot &snap, qint64 untilMs, ReplayLog *opening, const Callbacks &callbacks,
-              const ReplayDecoder::Sink &sink, const Visitor &visit = {},
-              qint64 visitFromMs = 0) const;
+              const ReplayDecoder::Sink &sink, const Visitor &visit = {}, qint64 visitFromMs = 0,
+              bool decode = true) const;
     // The snapshot to read from for a moment.
     Snapshot snapshotBefore(qint64 ms) const;
     bool fail(Problem problem, const QString &text);
@@ -114,7 +130,8 @@ private:
     bool m_truncated = false;
     QHash<QString, QString> m_header;
     QList<ReplayEvent> m_events;
-    QList<Snapshot> m_snapshots; // the first at the start of the file
+    QList<Snapshot> m_snapshots;          // the first at the start of the file
+    std::shared_ptr<ReplayTrack> m_track; // shared by the copies: it does not change once open
 };
 
 } // namespace stepcom

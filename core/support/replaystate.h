@@ -43,7 +43,11 @@ struct ReplayDevice
     QString lastError;              // the last refusal or missing answer, and when
     qint64 lastErrorMs = -1;
     qint64 lastAnswerMs = -1;
-    QString lastCommand; // the last acknowledged command coil
+    QString lastCommand;   // the last acknowledged command coil
+    int requests = 0;      // requests to it that were answered or given up
+    int errors = 0;        // of those, refused or not answered
+    qint64 restartMs = -1; // the last restart the session saw, and what it said of it
+    QString restartText;
 
     // Every holding parameter whose registers are all known, as raw values.
     QHash<QString, qint64> values(const RegisterMap &map) const;

@@ -18,7 +18,7 @@ declare -A allowed=(
     [core/commissioning]="map device profile"
     [core/report]="map device motion profile commissioning"
     [core/sim]="map bus motion session"
-    [core/support]="map bus session commissioning"
+    [core/support]="map bus device session commissioning"
     [ui]="map device motion session line profile commissioning report i18n support"
 )
 bad=0

@@ -87,7 +87,8 @@ private Q_SLOTS:
         QSignalSpy stepped(session->stepMove(), &StepMove::finished);
         QCOMPARE(session->stepMove()->start({StepMoveRequest::Kind::By, 1, 2.0, 0}), QString());
         QVERIFY(stepped.wait(20000));
-        QVERIFY(stepped.at(0).at(0).value<StepMoveResult>().ok());
+        QVERIFY2(stepped.at(0).at(0).value<StepMoveResult>().ok(),
+                 qPrintable(stepped.at(0).at(0).value<StepMoveResult>().text));
         QTRY_COMPARE(window->machineStrip()->motion(1), MachineStrip::Motion::Idle);
         captureAtCycleEnd(QStringLiteral("moved"), true);
         // 4. a long move, seen running, then E-STOP

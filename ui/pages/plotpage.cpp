@@ -156,6 +156,17 @@ void PlotPage::clearTrace()
     m_xy->clearTrace();
 }
 
+void PlotPage::showTrace(const QList<QPointF> &path)
+{
+    m_xy->clearTrace();
+    m_xy->appendTrace(path);
+    if (path.isEmpty())
+        m_xy->clearMarker();
+    else
+        m_xy->setMarker(path.last());
+    m_fedUntilMs = m_recorder->isEmpty() ? -1 : m_recorder->last().elapsedMs;
+}
+
 void PlotPage::scheduleXY()
 {
     if (!m_xyTimer.isActive())

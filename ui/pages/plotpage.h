@@ -46,6 +46,9 @@ public:
     bool isPaused() const;
     void fit();
     void clearTrace();
+    // A replay's whole path up to its moment (issue 26) as the trace: the recorder holds only
+    // the last half hour of it. Samples recorded after it go on feeding the trace as live ones.
+    void showTrace(const QList<QPointF> &path);
 
     // The direct forms of the buttons (tests and scripts): false and an error naming the path.
     bool exportPng(const QString &path, QString *error);

@@ -107,8 +107,10 @@ bool DeviceListDock::addDevice(int id, const QString &name)
         return false;
     }
     m_problem->clear();
-    if (!name.trimmed().isEmpty())
+    if (!name.trimmed().isEmpty()) {
         m_names.insert(id, name.trimmed());
+        Q_EMIT namesChanged();
+    }
     ids.append(id);
     m_session->setDeviceIds(ids);
     refresh();
@@ -123,6 +125,7 @@ void DeviceListDock::setName(int id, const QString &name)
         m_names.insert(id, name.trimmed());
     refresh();
     saveList();
+    Q_EMIT namesChanged();
 }
 
 void DeviceListDock::saveList() const
@@ -147,6 +150,7 @@ bool DeviceListDock::restoreList()
         return false; // the user (or a scan) named the devices for this connection already
     for (auto it = saved.names.cbegin(); it != saved.names.cend(); ++it)
         m_names.insert(it.key(), it.value());
+    Q_EMIT namesChanged();
     QList<int> ids = saved.ids;
     // The device in view is on the list it belongs to.
     if (!ids.contains(m_session->deviceInView()))
@@ -203,10 +207,10 @@ void DeviceListDock::retranslate()
     refresh();
 }
 
-void DeviceListDock::showReplay(const QList<int> &ids, const QHash<int, bool> &answering,
+void DeviceListDock::showReplay(const QList<int> &ids, const QHash<int, ReplayDeviceRow> &rows,
                                 int inView, const std::function<void(int)> &choose)
 {
-    m_replay = Replay{ids, answering, inView, choose};
+    m_replay = Replay{ids, rows, inView, choose};
     refresh();
 }
 
@@ -228,11 +232,25 @@ int DeviceListDock::inView() const
 
 QString DeviceListDock::stateText(int id) const
 {
-    if (m_replay) { // what the log says of it at the moment shown
-        const bool answering = m_replay->answering.value(id);
-        if (id == m_replay->inView)
-            return answering ? tr("answering (in view)") : tr("not answering (in view)");
-        return answering ? tr("answering") : tr("not answering");
+    if (m_replay) { // what the log says of it at the moment shown, in the live list's words
+        const ReplayDeviceRow r = m_replay->rows.value(id);
+        const bool inView = id == m_replay->inView;
+        QString state;
+        if (!r.linkUp)
+            state = tr("not connected");
+        else if (!r.runningMotors.isEmpty()) // the command in the language shown, as live
+            state =
+                tr("running: %1")
+                    .arg(m_session->map().find(r.command)
+                             ? m_session->map().find(r.command)->label.text(Translators::current())
+                             : motorsText(r.runningMotors));
+        else if (!r.asked)
+            state = inView ? tr("asking (in view)") : tr("asking");
+        else if (inView)
+            state = r.answering ? tr("answering (in view)") : tr("not answering (in view)");
+        else
+            state = r.answering ? tr("answering") : tr("not answering");
+        return r.restartAt.isEmpty() ? state : tr("%1; restarted %2").arg(state, r.restartAt);
     }
     if (!m_session->isConnected())
         return tr("not connected");
@@ -267,12 +285,17 @@ QString DeviceListDock::referencedText(int id) const
 {
     if (m_replay || !m_session->isConnected())
         return tr("unknown");
-    QStringList axes; // references are followed on every device of the line
-    for (int m : m_session->motion()->references()->referencedMotors(id))
-        axes << QString::number(m);
-    if (axes.isEmpty())
-        return tr("no");
-    return tr("motor %1").arg(axes.join(QLatin1String(", ")));
+    // References are followed on every device of the line.
+    const QList<int> motors = m_session->motion()->references()->referencedMotors(id);
+    return motors.isEmpty() ? tr("no") : motorsText(motors);
+}
+
+QString DeviceListDock::motorsText(const QList<int> &motors) const
+{
+    QStringList numbers;
+    for (const int m : motors)
+        numbers << QString::number(m);
+    return tr("motor %1").arg(numbers.join(QLatin1String(", ")));
 }
 
 void DeviceListDock::refresh()
@@ -282,10 +305,19 @@ void DeviceListDock::refresh()
     m_table->setRowCount(int(ids.size()));
     for (int row = 0; row < ids.size(); ++row) {
         const int id = ids.at(row);
-        const BusDeviceStatus status =
-            m_replay ? BusDeviceStatus::of(id) : m_session->deviceStatus(id);
-        const QStringList texts{QString::number(id), m_names.value(id), stateText(id),
-                                referencedText(id),
+        BusDeviceStatus status = m_replay ? BusDeviceStatus::of(id) : m_session->deviceStatus(id);
+        QString name = m_names.value(id);
+        QString stateTip;
+        if (m_replay) { // the requests to it in the log up to the moment, and what failed
+            const ReplayDeviceRow r = m_replay->rows.value(id);
+            status.cycles = r.requests;
+            status.errors = r.errors;
+            status.lastError = r.lastError;
+            stateTip = r.restartText;
+            if (!r.name.isEmpty())
+                name = r.name;
+        }
+        const QStringList texts{QString::number(id), name, stateText(id), referencedText(id),
                                 status.cycles > 0 ? QString::number(status.errors) : QString()};
         for (int c = 0; c < ColumnCount; ++c) {
             QTableWidgetItem *item = m_table->item(row, c);
@@ -299,6 +331,8 @@ void DeviceListDock::refresh()
             item->setText(texts.at(c));
             if (c == ErrorsColumn) // failed status reads; the last one's reason on hover
                 item->setToolTip(status.errors > 0 ? status.lastError : QString());
+            if (c == StateColumn)
+                item->setToolTip(stateTip);
         }
         if (id == inView())
             m_table->selectRow(row);
@@ -325,6 +359,7 @@ void DeviceListDock::onCellChanged(int row, int column)
     if (id > 0) {
         m_names.insert(id, m_table->item(row, column)->text().trimmed());
         saveList();
+        Q_EMIT namesChanged();
     }
 }
 

@@ -15,6 +15,23 @@ namespace stepcom {
 
 class DeviceSession;
 
+// What a replayed session log says of one device at the moment shown (issue 26): the device
+// list's row for it, as the live list shows a device.
+struct ReplayDeviceRow
+{
+    bool linkUp = false;      // the line was up then
+    bool asked = false;       // a request to it had come back or been given up by then
+    bool answering = false;   // its last request was answered
+    QList<int> runningMotors; // its motors running, as last read
+    QString command;          // the motion command acknowledged last (its key), while they run
+    int requests = 0;
+    int errors = 0;      // refused or not answered, of those requests
+    QString lastError;   // the last of them and when
+    QString restartAt;   // the moment of the last restart the session saw, or empty
+    QString restartText; // what the session said of it
+    QString name;        // the name the log's header gives it (else the list's own)
+};
+
 // The controllers on the line beside the pages: id, the name the user gives it, its state,
 // referenced or not, errors. Clicking one shows its pages at once, without reconnecting;
 // "Add device" puts another id on the list. Hidden until the user opens it (View menu).
@@ -40,13 +57,18 @@ public:
     bool restoreList();
     // The row's texts, for tests and the accessibility bus: id, name, state, referenced, errors.
     QStringList rowTexts(int row) const;
-    // A replayed log's devices (issue 26) instead of the session's: whether each one answered at
-    // the moment shown, the one in view, and what a click on another one does. endReplay():
-    // the session's again.
-    void showReplay(const QList<int> &ids, const QHash<int, bool> &answering, int inView,
+    QHash<int, QString> names() const { return m_names; }
+    // A replayed log's devices (issue 26) instead of the session's: each one's state at the
+    // moment shown, the one in view, and what a click on another one does. endReplay(): the
+    // session's again.
+    void showReplay(const QList<int> &ids, const QHash<int, ReplayDeviceRow> &rows, int inView,
                     const std::function<void(int)> &choose);
     void endReplay();
     bool isReplay() const { return m_replay.has_value(); }
+
+Q_SIGNALS:
+    // The user named a device (or the saved names came back): the session log says them.
+    void namesChanged();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -59,6 +81,7 @@ private:
     void onConnected(bool ok);
     QString stateText(int id) const;
     QString referencedText(int id) const;
+    QString motorsText(const QList<int> &motors) const; // "motor 1, 2"
     QList<int> ids() const;
     int inView() const;
 
@@ -74,7 +97,7 @@ private:
     struct Replay
     {
         QList<int> ids;
-        QHash<int, bool> answering;
+        QHash<int, ReplayDeviceRow> rows;
         int inView = 0;
         std::function<void(int)> choose;
     };

@@ -106,6 +106,26 @@ void TrafficModel::append(const TrafficEntry &entry)
         m_batch.start();
 }
 
+int TrafficModel::prepend(const QList<TrafficEntry> &entries)
+{
+    const qsizetype room = m_capacity - qsizetype(m_entries.size() + m_pending.size());
+    const qsizetype take = std::clamp<qsizetype>(room, 0, entries.size());
+    std::deque<qint64> shown;
+    for (qsizetype i = entries.size() - 1, seq = m_firstSeq - 1; i >= entries.size() - take;
+         --i, --seq) {
+        m_entries.push_front(shared(entries.at(i)));
+        if (matches(m_entries.front()))
+            shown.push_front(seq);
+    }
+    m_firstSeq -= take;
+    if (shown.empty())
+        return 0;
+    beginInsertRows({}, 0, int(shown.size()) - 1);
+    m_visible.insert(m_visible.begin(), shown.begin(), shown.end());
+    endInsertRows();
+    return int(shown.size());
+}
+
 bool TrafficModel::matches(const TrafficEntry &entry) const
 {
     if (m_hiddenKinds.contains(int(entry.kind)))

@@ -16,7 +16,9 @@
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSaveFile>
+#include <QScrollBar>
 #include <QTableView>
+#include <QTimer>
 #include <QUrl>
 
 namespace stepcom {
@@ -31,6 +33,7 @@ TrafficView::TrafficView(QWidget *parent)
     , m_copy(new QPushButton(this))
     , m_save(new QPushButton(this))
     , m_openFolder(new QPushButton(this))
+    , m_earlierButton(new QPushButton(this))
 {
     m_table->setModel(m_model);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -73,6 +76,7 @@ TrafficView::TrafficView(QWidget *parent)
     }
     filters->addStretch();
     auto *actions = new QHBoxLayout;
+    actions->addWidget(m_earlierButton);
     actions->addWidget(m_search, 1);
     actions->addWidget(m_clear);
     actions->addWidget(m_copy);
@@ -99,7 +103,45 @@ TrafficView::TrafficView(QWidget *parent)
         box->open();
     });
     m_openFolder->hide();
+    // A replay's earlier lines: on the button, or when the rows are scrolled to the top.
+    m_earlierButton->setObjectName(QStringLiteral("earlierLines"));
+    m_earlierButton->hide();
+    connect(m_earlierButton, &QPushButton::clicked, this, &TrafficView::showEarlier);
+    QScrollBar *bar = m_table->verticalScrollBar();
+    connect(bar, &QScrollBar::valueChanged, this, [this, bar](int value) {
+        if (m_earlier && value == bar->minimum() && bar->maximum() > 0)
+            QTimer::singleShot(0, this, [this, bar] {
+                if (m_earlier && bar->value() == bar->minimum() && bar->maximum() > 0)
+                    showEarlier();
+            });
+    });
     retranslate();
+}
+
+void TrafficView::setEarlier(const Earlier &earlier)
+{
+    m_earlier = earlier;
+    m_earlierButton->setVisible(bool(earlier));
+    m_earlierButton->setEnabled(bool(earlier));
+}
+
+int TrafficView::showEarlier()
+{
+    if (!m_earlier)
+        return 0;
+    int added = 0;
+    while (added < kEarlierRows &&
+           m_model->storedCount() + m_model->pendingCount() < m_model->capacity()) {
+        const QList<TrafficEntry> more = m_earlier();
+        if (more.isEmpty()) {
+            m_earlierButton->setEnabled(false); // the start of the log
+            break;
+        }
+        added += m_model->prepend(more);
+    }
+    if (added > 0 && added < m_model->rowCount()) // the rows that were first, still in sight
+        m_table->scrollTo(m_model->index(added, 0), QAbstractItemView::PositionAtTop);
+    return added;
 }
 
 void TrafficView::setLog(TrafficLog *log)
@@ -138,6 +180,10 @@ void TrafficView::retranslate()
     m_copy->setText(tr("&Copy"));
     m_copy->setToolTip(tr("Copy the selected rows (all rows shown when none are selected)"));
     m_save->setText(tr("&Save log…"));
+    m_earlierButton->setText(tr("Earlier lines"));
+    m_earlierButton->setToolTip(
+        tr("Show the lines of the replayed log before the first one here (scrolling to the top "
+           "does it too)"));
     m_save->setToolTip(tr("Save the rows shown to a file"));
     m_openFolder->setText(tr("Open log &folder"));
     m_openFolder->setToolTip(

@@ -5,6 +5,8 @@
 #include <QMap>
 #include <QWidget>
 
+#include <functional>
+
 class QCheckBox;
 class QLineEdit;
 class QPushButton;
@@ -33,6 +35,16 @@ public:
     bool saveTo(const QString &path, QString *error) const;
     // Opens the log folder in the desktop's file manager (made first if missing).
     bool openLogFolder(QString *error = nullptr) const;
+    // A replay's view (issue 26): `earlier` gives the lines before the first one kept, in order
+    // (none: the start of the log). Scrolled to the top the view asks for them, as does
+    // "Earlier lines". Unset: the live view, which has all it keeps.
+    using Earlier = std::function<QList<TrafficEntry>()>;
+    void setEarlier(const Earlier &earlier);
+    // Earlier lines at the top until kEarlierRows more rows show, none are left or the view is
+    // full; the rows that were first stay in sight. The rows added.
+    int showEarlier();
+    static constexpr int kEarlierRows = 50;
+    QPushButton *earlierButton() const { return m_earlierButton; }
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -51,6 +63,8 @@ private:
     QPushButton *m_copy;
     QPushButton *m_save;
     QPushButton *m_openFolder;
+    QPushButton *m_earlierButton;
+    Earlier m_earlier;
     QString m_logFolder;
 };
 

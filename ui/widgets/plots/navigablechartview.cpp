@@ -10,6 +10,18 @@
 
 namespace stepcom {
 
+void NavigableChartView::setAxisRange(QValueAxis *axis, double min, double max, double step)
+{
+    const bool coarser = step >= axis->tickInterval();
+    if (coarser)
+        axis->setTickInterval(step);
+    axis->setRange(min, max);
+    if (!coarser)
+        axis->setTickInterval(step);
+    const int decimals = std::max(0, int(-std::floor(std::log10(step) + 1e-9)));
+    axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimals));
+}
+
 void NavigableChartView::styleChart(std::initializer_list<QValueAxis *> axes)
 {
     const QPalette pal = palette();

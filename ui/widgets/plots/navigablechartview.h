@@ -27,6 +27,10 @@ protected:
     // Background, legend and axes from the palette and font, so plots follow a dark palette
     // and the scale factor like every other widget.
     void styleChart(std::initializer_list<QValueAxis *> axes);
+    // The axis from `min` to `max` with a tick (and a label of as many decimals) every `step`;
+    // the step set before the range when it grows, after it when it shrinks: a range laid out
+    // with the old, much finer step would make thousands of labels first (hundreds of ms).
+    static void setAxisRange(QValueAxis *axis, double min, double max, double step);
 
     void wheelEvent(QWheelEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;

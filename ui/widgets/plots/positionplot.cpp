@@ -189,12 +189,12 @@ void PositionPlot::setRanges(double fromS, double toS, double low, double high, 
     const double wantLow = std::floor((low - (high - low) * 0.05) / step) * step;
     const double wantHigh = std::ceil((high + (high - low) * 0.05) / step) * step;
     m_settingRange = true;
-    m_axisX->setRange(fromS, toS);
+    setAxisRange(m_axisX, fromS, toS, niceStep(toS - fromS, 6));
     // Keep the scale while the data fits and fills it: no jumping axis on every sample.
     const bool fits = !exact && m_axisY->min() <= low && m_axisY->max() >= high &&
                       (m_axisY->max() - m_axisY->min()) <= 2.0 * (wantHigh - wantLow);
     if (!fits)
-        m_axisY->setRange(wantLow, wantHigh);
+        setAxisRange(m_axisY, wantLow, wantHigh, niceStep(wantHigh - wantLow, 5));
     tuneTicks();
     m_settingRange = false;
     m_low = low;
@@ -203,12 +203,8 @@ void PositionPlot::setRanges(double fromS, double toS, double low, double high, 
 
 void PositionPlot::tuneTicks()
 {
-    for (QValueAxis *a : {m_axisX, m_axisY}) {
-        const double step = niceStep(a->max() - a->min(), a == m_axisX ? 6 : 5);
-        const int decimals = std::max(0, int(-std::floor(std::log10(step) + 1e-9)));
-        a->setTickInterval(step);
-        a->setLabelFormat(QStringLiteral("%.%1f").arg(decimals));
-    }
+    for (QValueAxis *a : {m_axisX, m_axisY})
+        setAxisRange(a, a->min(), a->max(), niceStep(a->max() - a->min(), a == m_axisX ? 6 : 5));
 }
 
 void PositionPlot::userChangedRange()

@@ -291,15 +291,10 @@ void XYPlot::setView(const QRectF &wanted)
         h = perPixel * area.height();
     }
     m_settingRange = true;
-    m_axisX->setRange(centre.x() - w / 2, centre.x() + w / 2);
-    m_axisY->setRange(centre.y() - h / 2, centre.y() + h / 2);
     // One tick step for both axes, from the shorter one: round labels, equal grid squares.
     const double step = niceStep(std::min(w, h), 4);
-    const int decimals = std::max(0, int(-std::floor(std::log10(step) + 1e-9)));
-    for (QValueAxis *a : {m_axisX, m_axisY}) {
-        a->setTickInterval(step);
-        a->setLabelFormat(QStringLiteral("%.%1f").arg(decimals));
-    }
+    setAxisRange(m_axisX, centre.x() - w / 2, centre.x() + w / 2, step);
+    setAxisRange(m_axisY, centre.y() - h / 2, centre.y() + h / 2, step);
     m_settingRange = false;
 }
 

@@ -45,6 +45,7 @@ public:
     const QList<QPointF> &trace() const { return m_trace; }
     int traceCount() const { return int(m_trace.size()); }
     void setTraceLimit(int points);
+    int traceLimit() const { return m_traceLimit; }
     void setTraceName(const QString &name);
 
     void setMarker(const QPointF &point);
