@@ -211,9 +211,9 @@ private Q_SLOTS:
         device->setAnswerDelayMs(0);
         device->setResponder(
             [this, answer](const QByteArray &r, int index) -> std::optional<QByteArray> {
-                // 170 ms late, then 280 ms late: past the timeout, the second past twice it; then
+                // 170 ms late, then 220 ms late: past the timeout, the second past twice it; then
                 // in 150 ms, within the third request's own timeout.
-                const int delayMs = index == 0 ? 170 : index == 1 ? 280 : 150;
+                const int delayMs = index == 0 ? 170 : index == 1 ? 220 : 150;
                 QTimer::singleShot(delayMs, device.get(), [this, r, answer, index] {
                     device->bridge().inject(PtyBridge::Side::A,
                                             answer(r, quint16(std::min(index + 1, 3))));

@@ -116,8 +116,8 @@ private Q_SLOTS:
         // 3. a jog forward, held until the axis went a millimetre, let go
         const qint64 before = *store()->deviceValue(key("position"));
         QVERIFY(session->jog()->press(1, JogController::Direction::Forward));
-        QTRY_VERIFY_WITH_TIMEOUT(store()->deviceValue(key("position")).value_or(before) > before + 100,
-                                 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            store()->deviceValue(key("position")).value_or(before) > before + 100, 20000);
         session->jog()->release(1);
         QTRY_COMPARE_WITH_TIMEOUT(session->jog()->state(1), JogController::State::Idle, 10000);
         captureSettled(QStringLiteral("jogged"));
@@ -146,8 +146,7 @@ private Q_SLOTS:
         // up; the retry takes that answer, the retry's own comes late and is discarded. Should
         // a stalled machine let the first answer in on time, it goes again.
         const quint64 staleBefore = session->linkStats().stale;
-        for (int attempt = 0; attempt < 3 && session->linkStats().stale == staleBefore;
-             ++attempt) {
+        for (int attempt = 0; attempt < 3 && session->linkStats().stale == staleBefore; ++attempt) {
             QSignalSpy commanded(session.get(), &DeviceSession::commandFinished);
             session->command(QStringLiteral("output1_on"));
             QTRY_VERIFY_WITH_TIMEOUT(!commanded.isEmpty(), 20000);
@@ -203,9 +202,8 @@ private Q_SLOTS:
         QStringList names;
         for (const Moment &m : std::as_const(moments))
             names << m.what;
-        QCOMPARE(names, (QStringList{"read-all", "written", "jogged", "homed", "running",
-                                     "stopped", "late answer", "reconnected", "restarted",
-                                     "written again"}));
+        QCOMPARE(names, (QStringList{"read-all", "written", "jogged", "homed", "running", "stopped",
+                                     "late answer", "reconnected", "restarted", "written again"}));
         const qint64 factory = moment(QStringLiteral("read-all")).values.value(key("speed"));
         QCOMPARE(moment(QStringLiteral("written")).values.value(key("speed")), factory + 17);
         QCOMPARE(moment(QStringLiteral("restarted")).values.value(key("speed")), factory);
@@ -237,9 +235,9 @@ private Q_SLOTS:
         window->resize(1366, 900); // a laptop's window: the timeline as wide as there
         QVERIFY(openReplay(logPath));
         QCoreApplication::processEvents();
-        const QList<ReplayEvent> late = eventsBetween(ReplayEvent::Kind::LateAnswer,
-                                                      msOf(QStringLiteral("stopped")),
-                                                      msOf(QStringLiteral("late answer")));
+        const QList<ReplayEvent> late =
+            eventsBetween(ReplayEvent::Kind::LateAnswer, msOf(QStringLiteral("stopped")),
+                          msOf(QStringLiteral("late answer")));
         const auto coil = std::find_if(late.cbegin(), late.cend(), [](const ReplayEvent &e) {
             return e.text.contains(QLatin1String("output1_on"));
         });
@@ -247,9 +245,9 @@ private Q_SLOTS:
         QVERIFY2(coil->text.startsWith(QLatin1String("late answer")), qPrintable(coil->text));
         checkMarker(*coil);
 
-        const QList<ReplayEvent> down = eventsBetween(ReplayEvent::Kind::LinkDown,
-                                                      msOf(QStringLiteral("late answer")),
-                                                      msOf(QStringLiteral("reconnected")));
+        const QList<ReplayEvent> down =
+            eventsBetween(ReplayEvent::Kind::LinkDown, msOf(QStringLiteral("late answer")),
+                          msOf(QStringLiteral("reconnected")));
         QVERIFY(!down.isEmpty());
         checkMarker(down.first());
         const QList<ReplayEvent> up = eventsBetween(ReplayEvent::Kind::LinkUp, down.first().ms,
@@ -257,9 +255,9 @@ private Q_SLOTS:
         QVERIFY(!up.isEmpty());
         checkMarker(up.last());
 
-        const QList<ReplayEvent> restart = eventsBetween(ReplayEvent::Kind::Restart,
-                                                         msOf(QStringLiteral("reconnected")),
-                                                         msOf(QStringLiteral("restarted")));
+        const QList<ReplayEvent> restart =
+            eventsBetween(ReplayEvent::Kind::Restart, msOf(QStringLiteral("reconnected")),
+                          msOf(QStringLiteral("restarted")));
         QCOMPARE(restart.size(), 1);
         QVERIFY2(restart.first().text.startsWith(QLatin1String("id 1: ")) &&
                      restart.first().text.contains(key("speed")),
