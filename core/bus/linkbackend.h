@@ -36,6 +36,8 @@ Q_SIGNALS:
     void failed(const QString &reason);
     // The request left (after the silences it had to wait for).
     void sent();
+    // The request waits `ms` more before it leaves (a silence, an answer still owed).
+    void writeDeferred(int ms);
     void answered(const stepcom::LinkAnswer &answer);
     // Bytes that crossed the line: `pduOffset` where the function code starts, `crcBytes` at
     // the end.

@@ -153,6 +153,16 @@ void ModbusLink::open(const LinkSettings &settings)
     connect(m_backend, &LinkBackend::failed, this, &ModbusLink::failLink);
     connect(m_backend, &LinkBackend::answered, this, &ModbusLink::onAnswered);
     connect(m_backend, &LinkBackend::frame, this, &ModbusLink::onFrame);
+    // The watchdog waits for the driver, not for the silences the transport keeps: it starts
+    // again for the answer once the request left, and covers a wait announced before.
+    connect(m_backend, &LinkBackend::writeDeferred, this, [this](int ms) {
+        if (m_inFlight)
+            m_watchdog.start(ms + m_inFlightTimeoutMs + m_settings.turnaroundMs + kWatchdogGraceMs);
+    });
+    connect(m_backend, &LinkBackend::sent, this, [this] {
+        if (m_inFlight)
+            m_watchdog.start(m_inFlightTimeoutMs + m_settings.turnaroundMs + kWatchdogGraceMs);
+    });
     m_traffic->addEvent(tr("connecting to %1").arg(settings.describe()));
     const quint64 attempt = m_attempt;
     m_backend->open(settings);

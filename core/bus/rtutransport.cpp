@@ -200,14 +200,16 @@ void RtuTransport::scheduleWrite()
         at = std::max(at, m_lastRxMs + std::max(m_gapMs, double(m_settings.turnaroundMs)));
     if (m_needQuiet) // drain: the line has to be silent for the quiet time first
         at = std::max(at, std::max(m_quietFromMs, m_lastRxMs) + m_quietMs);
-    // An answer still owed to another request would be taken for this one's: wait for it.
+    // An answer still owed to another request could be taken for this one's: wait for it. One
+    // of another shape (a read's answer, owed, and an E-STOP's) is told apart by what it says.
     pruneOwed();
     for (const Owed &o : std::as_const(m_owed)) {
-        if (o.adu != m_pending->adu)
+        if (o.adu != m_pending->adu && couldPassForPending(o.adu))
             at = std::max(at, o.untilMs);
     }
     if (at > now + 0.05) {
         m_writeTimer.start(int(std::ceil(at - now)));
+        Q_EMIT writeDeferred(m_writeTimer.interval());
         return;
     }
     writeNow();
@@ -344,25 +346,34 @@ void RtuTransport::processBuffer()
             continue;
         }
         pruneOwed();
-        // The controller answers in order: a frame while answers are owed is the oldest's.
-        const bool owed = !m_owed.isEmpty();
-        if (owed && m_owed.first().adu != adu) {
-            owedAnswerCame();
+        // A controller answers in order: a frame while it owes answers is the oldest's --
+        // unless it is what this request asked for and no answer to that one: then the owed
+        // answer never came (the controller did not hear that attempt).
+        qsizetype owedAt = oldestOwed(quint8(f.at(0)));
+        const QByteArray data = f.mid(2, f.size() - 4);
+        if (owedAt >= 0 && m_owed.at(owedAt).adu != adu && answers(adu, quint8(f.at(1)), data) &&
+            !answers(m_owed.at(owedAt).adu, quint8(f.at(1)), data)) {
+            const char unit = f.at(0);
+            m_owed.removeIf([unit](const Owed &o) { return o.adu.at(0) == unit; });
+            owedAt = -1;
+        }
+        const bool owed = owedAt >= 0;
+        if (owed && m_owed.at(owedAt).adu != adu) {
+            owedAnswerCame(owedAt);
             discard(f, tr("a late answer to an earlier request"));
             continue;
         }
-        const QByteArray data = f.mid(2, f.size() - 4);
         if (const QString why = AnswerCheck::mismatch(m_pending->request, quint8(f.at(1)), data);
             !why.isEmpty()) {
             if (owed)
-                owedAnswerCame();
+                owedAnswerCame(owedAt);
             discard(f, why);
             continue;
         }
         if (owed) {
             // An earlier attempt of this very request: its answer is this one's too, and this
             // attempt's own answer may still come.
-            owedAnswerCame();
+            owedAnswerCame(owedAt);
             m_owed.append({adu, owedUntilMs(), m_sentAtMs});
         }
         // An answer with no copy before it: a read or block write shows the adapter is quiet.
@@ -406,10 +417,44 @@ double RtuTransport::owedUntilMs() const
                                                   double(m_settings.timeoutMs), m_lateMs});
 }
 
-void RtuTransport::owedAnswerCame()
+qsizetype RtuTransport::oldestOwed(quint8 unit) const
 {
-    m_lateMs = std::max(m_lateMs, nowMs() - m_owed.first().sentAtMs);
-    m_owed.removeFirst();
+    for (qsizetype i = 0; i < m_owed.size(); ++i) {
+        if (quint8(m_owed.at(i).adu.at(0)) == unit)
+            return i;
+    }
+    return -1;
+}
+
+void RtuTransport::owedAnswerCame(qsizetype index)
+{
+    m_lateMs = std::min(kMaxLateMs, std::max(m_lateMs, nowMs() - m_owed.at(index).sentAtMs));
+    m_owed.removeAt(index);
+}
+
+bool RtuTransport::answers(const QByteArray &adu, int functionCode, const QByteArray &data)
+{
+    const QModbusRequest request(QModbusPdu::FunctionCode(quint8(adu.at(1))),
+                                 adu.mid(2, adu.size() - 4));
+    return AnswerCheck::mismatch(request, functionCode, data).isEmpty();
+}
+
+bool RtuTransport::couldPassForPending(const QByteArray &owedAdu) const
+{
+    const QByteArray &adu = m_pending->adu;
+    if (owedAdu.size() < 6 || adu.size() < 6 || owedAdu.at(0) != adu.at(0) ||
+        owedAdu.at(1) != adu.at(1))
+        return false;
+    switch (quint8(adu.at(1))) {
+    case 0x03: // the answer carries the count of registers asked for
+        return owedAdu.mid(4, 2) == adu.mid(4, 2);
+    case 0x05:
+    case 0x06:
+    case 0x10: // the answer repeats the address and the value (or count)
+        return owedAdu.mid(2, 4) == adu.mid(2, 4);
+    default:
+        return true;
+    }
 }
 
 void RtuTransport::pruneOwed()
@@ -432,8 +477,8 @@ void RtuTransport::takeStrayFrames()
         m_strayParsed += length;
         reportForeign(f);
         pruneOwed();
-        if (!m_owed.isEmpty() && quint8(f.at(0)) == m_unit) {
-            owedAnswerCame();
+        if (const qsizetype owedAt = oldestOwed(quint8(f.at(0))); owedAt >= 0) {
+            owedAnswerCame(owedAt);
         } else if (!m_copyAnswered.isEmpty() && f == m_copyAnswered) {
             // A second copy of a command nothing else owes: the first was the adapter's echo,
             // this the controller's answer (which confirms the command all the same).

@@ -84,8 +84,15 @@ private:
     void onTimeout();
     void pruneOwed();
     double owedUntilMs() const;
-    // The oldest owed answer came: the controller showed how late it answers.
-    void owedAnswerCame();
+    // The oldest answer `unit` owes (an index into m_owed), or -1.
+    qsizetype oldestOwed(quint8 unit) const;
+    // That owed answer came: the controller showed how late it answers.
+    void owedAnswerCame(qsizetype index);
+    // An answer to `owedAdu` could pass the content check of the request pending now (same
+    // unit, function and shape): only then does the request wait for it.
+    bool couldPassForPending(const QByteArray &owedAdu) const;
+    // A frame (function code and data) is what `adu` asked for.
+    static bool answers(const QByteArray &adu, int functionCode, const QByteArray &data);
     void takeStrayFrames();
     // Scan mode: name the unit of a foreign answer frame (CRC checked by the caller).
     void reportForeign(const QByteArray &frame);
@@ -123,6 +130,7 @@ private:
     int m_crcErrors = 0;
     QList<Owed> m_owed;
     double m_lateMs = 0; // the latest an owed answer came, after its attempt went (since open)
+    static constexpr double kMaxLateMs = 5000; // beyond this an owed answer is not waited for
     int m_unit = 1;
     int m_strayParsed = 0; // bytes of m_stray already cut into frames
     QTimer m_writeTimer;

@@ -239,6 +239,42 @@ private Q_SLOTS:
         QCOMPARE(device->requests().size(), 3);
     }
 
+    // An E-STOP after a read that timed out goes at once: the read's answer, still owed, has
+    // another shape (told apart by what it says), so the E-STOP does not wait for it, and its
+    // own answer is taken.
+    void emergencyStopDoesNotWaitForAnAnswerOfAnotherShape()
+    {
+        bool lateAnswerSent = false;
+        bool estopBeforeIt = false;
+        device->setAnswerDelayMs(0);
+        device->setResponder([&](const QByteArray &r, int index) -> std::optional<QByteArray> {
+            if (index == 0) {
+                QTimer::singleShot(550, device.get(), [this, r, &lateAnswerSent] {
+                    lateAnswerSent = true;
+                    device->bridge().inject(PtyBridge::Side::A,
+                                            withCrc(r.left(2) + fromHex("02 00 07")));
+                });
+                return std::nullopt;
+            }
+            estopBeforeIt = !lateAnswerSent;
+            return r; // a coil write is answered with its own copy
+        });
+        openLink(300, 0);
+        Outcome read;
+        link->submit(Request::read(0, 1), into(&read));
+        QTRY_VERIFY(read.done);
+        QCOMPARE(read.result.error, QModbusDevice::TimeoutError);
+        Request estop = Request::coil(41, true, Priority::Emergency);
+        estop.retryable = false;
+        Outcome stopped;
+        link->submit(estop, into(&stopped));
+        QTRY_VERIFY_WITH_TIMEOUT(stopped.done, 5000);
+        QVERIFY2(stopped.result.ok, qPrintable(stopped.result.errorText));
+        QVERIFY(estopBeforeIt); // it left before the read's late answer
+        QTRY_VERIFY(lateAnswerSent);
+        QVERIFY(link->isConnected());
+    }
+
     // Destroying the link with a request in flight tells no one: the objects behind the
     // callbacks are going away too (stepcomctl crashed here when its runner was destroyed).
     void destroyedWithARequestInFlightCallsNoOne()
