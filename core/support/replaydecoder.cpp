@@ -135,6 +135,28 @@ void ReplayDecoder::frame(const LogLine &line, qint64 ms, qint64 lineNo, const S
 {
     int unit = 0;
     QByteArray pdu;
+    if (!line.sent && m_framing != Framing::Tcp && !split(line.bytes, m_framing, &unit, &pdu)) {
+        // Bytes that came together between two requests are logged as they came: answers
+        // owed to earlier attempts, one after the other. Each whole frame counts.
+        QByteArray rest = line.bytes;
+        bool cut = false;
+        while (true) {
+            const int length = RtuFrame::answerLength(rest);
+            if (length <= 0 || length >= rest.size() || !RtuFrame::crcOk(rest.left(length)))
+                break;
+            LogLine one = line;
+            one.bytes = rest.left(length);
+            rest.remove(0, length);
+            frame(one, ms, lineNo, sink);
+            cut = true;
+        }
+        if (cut) {
+            LogLine last = line;
+            last.bytes = rest;
+            frame(last, ms, lineNo, sink);
+        }
+        return;
+    }
     if (!split(line.bytes, m_framing, &unit, &pdu) || pdu.isEmpty())
         return; // a frame cut short or damaged on the wire: StepCom dropped it too
     if (line.sent) {
