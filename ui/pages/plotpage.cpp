@@ -2,6 +2,7 @@
 
 #include "device/statusrecorder.h"
 #include "session/devicesession.h"
+#include "widgets/fields/wrappingrow.h"
 #include "widgets/plots/positionplot.h"
 #include "widgets/plots/xyplot.h"
 
@@ -42,8 +43,10 @@ PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     m_xy = new XYPlot(this);
 
     auto *layout = new QVBoxLayout(this);
-    auto *bar = new QHBoxLayout;
-    const auto button = [this, bar](const char *name) {
+    // The plot's controls, then the files': in two rows on a narrow page (1366×768 at ×1.5).
+    auto *controls = new WrappingRow(this);
+    QHBoxLayout *bar = controls->first();
+    const auto button = [this, &bar](const char *name) {
         auto *b = new QPushButton(this);
         b->setObjectName(QLatin1String(name));
         bar->addWidget(b);
@@ -61,11 +64,13 @@ PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     bar->addWidget(m_windowLabel);
     bar->addWidget(m_window);
     bar->addStretch(1);
+    bar = controls->second();
+    bar->addStretch(1);
     m_exportPng = button("exportPngButton");
     m_exportCsv = button("exportCsvButton");
     m_record = button("recordButton");
     m_record->setCheckable(true);
-    layout->addLayout(bar);
+    layout->addWidget(controls);
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("recordingStatus"));
     m_status->setWordWrap(true);
