@@ -83,6 +83,10 @@ PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     m_splitter->setStretchFactor(0, 3);
     m_splitter->setStretchFactor(1, 2);
     m_splitter->setChildrenCollapsible(false);
+    // Never so low that the charts cut their axes' numbers and titles to "…" (1366×768 at ×1.5
+    // did): a low window scrolls the page instead. Scaled up, the charts need more lines for
+    // the same text (measured: 13 lines whole at ×1, 17 at ×1.5).
+    m_splitter->setMinimumHeight(fontMetrics().height() * (devicePixelRatioF() > 1.2 ? 17 : 13));
     layout->addWidget(m_splitter, 1);
     // Without a second motor there is no plane to draw.
     m_xy->setVisible(m_recorder->motorCount() >= 2);
