@@ -3,7 +3,8 @@
 #   scripts/deps.sh          build and run
 #   scripts/deps.sh --test   also the test peers (mbpoll, socat, pymodbus with serial-asyncio, Xvfb), the package
 #                            checks (dpkg-dev, desktop-file-utils, appstream), clang with
-#                            libFuzzer (scripts/fuzz.sh) and clang-format (scripts/check-format.sh)
+#                            libFuzzer (scripts/fuzz.sh), clang-format (scripts/check-format.sh)
+#                            and the accessibility bus with pyatspi (tests/a11y/a11y-walk.py)
 set -euo pipefail
 
 packages=(build-essential cmake ninja-build pkg-config
@@ -13,7 +14,8 @@ packages=(build-essential cmake ninja-build pkg-config
           qt6-qpa-plugins fonts-noto-cjk help2man)
 if [[ "${1:-}" == "--test" ]]; then
     packages+=(mbpoll socat python3-pymodbus python3-serial-asyncio xvfb xauth dpkg-dev file poppler-utils
-               desktop-file-utils appstream clang libclang-rt-dev clang-format)
+               desktop-file-utils appstream clang libclang-rt-dev clang-format
+               python3-pyatspi at-spi2-core dbus-daemon dbus-bin)
 fi
 
 missing=()

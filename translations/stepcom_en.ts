@@ -841,6 +841,14 @@
         <source>Propose the pitch</source>
         <translation>Propose the pitch</translation>
     </message>
+    <message>
+        <source>Commanded distance</source>
+        <translation>Commanded distance</translation>
+    </message>
+    <message>
+        <source>Measured distance</source>
+        <translation>Measured distance</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ChecklistDirectionStep</name>
@@ -883,6 +891,10 @@
     <message>
         <source>No, toward −</source>
         <translation>No, toward −</translation>
+    </message>
+    <message>
+        <source>Small step distance</source>
+        <translation>Small step distance</translation>
     </message>
 </context>
 <context>
@@ -8276,6 +8288,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Steps and move-to use this motor&apos;s single-move distance and direction registers, then write your own values back and verify them. They refuse while those fields hold unwritten edits, and any target beyond the software travel limits.</source>
         <translation>Steps and move-to use this motor&apos;s single-move distance and direction registers, then write your own values back and verify them. They refuse while those fields hold unwritten edits, and any target beyond the software travel limits.</translation>
+    </message>
+    <message>
+        <source>Custom step</source>
+        <translation>Custom step</translation>
     </message>
 </context>
 <context>

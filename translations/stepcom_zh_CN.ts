@@ -834,6 +834,14 @@
         <source>Propose the pitch</source>
         <translation>计算螺距</translation>
     </message>
+    <message>
+        <source>Commanded distance</source>
+        <translation>指令距离</translation>
+    </message>
+    <message>
+        <source>Measured distance</source>
+        <translation>实测距离</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ChecklistDirectionStep</name>
@@ -876,6 +884,10 @@
     <message>
         <source>No, toward −</source>
         <translation>否，朝 −</translation>
+    </message>
+    <message>
+        <source>Small step distance</source>
+        <translation>小步距离</translation>
     </message>
 </context>
 <context>
@@ -8223,6 +8235,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Steps and move-to use this motor&apos;s single-move distance and direction registers, then write your own values back and verify them. They refuse while those fields hold unwritten edits, and any target beyond the software travel limits.</source>
         <translation>步进和运行到位置会使用此电机的单次运行距离和方向寄存器，结束后写回您原来的值并校验。这些字段有未写入的修改时，或目标超出软件行程限位时，将拒绝运行。</translation>
+    </message>
+    <message>
+        <source>Custom step</source>
+        <translation>自定义步长</translation>
     </message>
 </context>
 <context>

@@ -351,14 +351,10 @@ void MainWindow::createDocks()
     m_trafficDock = new QDockWidget(this);
     m_trafficDock->setObjectName(QStringLiteral("trafficDock"));
     m_trafficDock->setWidget(m_traffic);
-    addDockWidget(Qt::BottomDockWidgetArea, m_trafficDock);
     m_messages = new MessageView(this);
     m_messageDock = new QDockWidget(this);
     m_messageDock->setObjectName(QStringLiteral("messageDock"));
     m_messageDock->setWidget(m_messages);
-    addDockWidget(Qt::BottomDockWidgetArea, m_messageDock);
-    tabifyDockWidget(m_trafficDock, m_messageDock);
-    m_messageDock->raise();
     m_viewMenu->addAction(m_trafficDock->toggleViewAction());
     m_viewMenu->addAction(m_messageDock->toggleViewAction());
     // --- monitoring (issue 5): the live status beside every page ---
@@ -371,15 +367,11 @@ void MainWindow::createDocks()
         scroll->setFrameShape(QFrame::NoFrame);
         m_statusDock->setWidget(scroll);
     }
-    addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
     m_viewMenu->addAction(m_statusDock->toggleViewAction());
     // --- end monitoring ---
     // Several controllers on one line (issue 16): opened from the View menu.
     m_deviceDock = new DeviceListDock(m_session, this);
-    // A tab beside the messages: beside the pages it would widen the window past a laptop's.
-    addDockWidget(Qt::BottomDockWidgetArea, m_deviceDock);
-    tabifyDockWidget(m_messageDock, m_deviceDock);
-    m_deviceDock->hide();
+    placeDocks();
     connect(m_deviceDock->toggleViewAction(), &QAction::triggered, m_deviceDock, [this](bool on) {
         if (!on)
             return;

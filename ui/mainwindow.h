@@ -55,6 +55,11 @@ public:
     // Shows the window as the user left it; the first time, maximized on a small screen (below
     // 1440×900) and on a larger one sized to most of it, in its middle (issue 25).
     void showOnScreen();
+    // The layout of a first start on the window's screen, as if nothing had been saved: the
+    // docks where they start, the bottom ones as high as that screen allows, arranged for its
+    // width; showOnScreen() then shows it as a first start does. stepcom-shots' laptop scenes
+    // take their pictures this way (the real program's path, not an imitation).
+    void useDefaultLayout();
     MachineStrip *machineStrip() const { return m_strip; }          // issue 25
     PageSidebar *sidebar() const { return m_sidebar; }              // issue 25
     StatusDock *statusDock() const { return m_statusDock; }         // monitoring (issue 5)
@@ -105,6 +110,14 @@ private:
     // Title and status bar say whether a file or a controller is being edited (issue 18).
     void showOrigin();
     void restoreLayout();
+    // Where the docks start: traffic and messages in tabs below (the messages in front), the
+    // status beside the page, the device list a hidden tab beside the messages.
+    void placeDocks();
+    // A first start's size and docks' heights for the screen, the docks arranged for it.
+    void firstStartLayout();
+    // The bottom docks' first height: up to 9 lines, less on a low screen (a sixth of it),
+    // where the page needs the room (1024×600).
+    void resizeBottomDocks();
     void saveLayout();
 
     DeviceSession *m_session;

@@ -2,6 +2,7 @@
 // inside the screen, and the layout saved and restored (split from mainwindow.cpp).
 #include "mainwindow.h"
 
+#include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/pagesidebar.h"
 #include "widgets/docks/statusdock.h"
@@ -70,25 +71,71 @@ void MainWindow::restoreLayout()
 {
     QSettings settings;
     settings.beginGroup(QStringLiteral("window"));
-    m_firstStart = !restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray());
-    if (m_firstStart) {
-        // First start: room for a page beside the sidebar, docks a quarter of the height.
-        const QFontMetrics fm = fontMetrics();
-        resize(fm.horizontalAdvance(QLatin1Char('x')) * 185, fm.height() * 50);
+    if (!restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray())) {
+        firstStartLayout(); // the docks are where createDocks() placed them
+    } else {
+        m_firstStart = false;
+        if (!restoreState(settings.value(QStringLiteral("state")).toByteArray()))
+            resizeBottomDocks();
+        // A layout saved on a larger screen still fits: the docks first (the saved state may
+        // put the status dock beside the page), then the window.
+        m_statusDockMoved = false;
+        arrangeDocks();
+        fitIntoScreen();
     }
-    if (!restoreState(settings.value(QStringLiteral("state")).toByteArray()))
-        resizeDocks({m_trafficDock, m_messageDock},
-                    {fontMetrics().height() * 9, fontMetrics().height() * 9}, Qt::Vertical);
-    // A layout saved on a larger screen, or the default on a small one, still fits: the docks
-    // first (the saved state may put the status dock beside the page), then the window.
-    m_statusDockMoved = false;
-    arrangeDocks();
-    fitIntoScreen();
     // Once every minimum size is known (after the layout requests): arrange and fit again.
     QTimer::singleShot(0, this, [this] {
         arrangeDocks();
         fitIntoScreen();
+        if (m_firstStart)
+            resizeBottomDocks();
     });
+}
+
+void MainWindow::useDefaultLayout()
+{
+    placeDocks();
+    firstStartLayout();
+}
+
+void MainWindow::firstStartLayout()
+{
+    m_firstStart = true;
+    // Room for a page beside the sidebar; showOnScreen() decides the size on the screen.
+    const QFontMetrics fm = fontMetrics();
+    resize(fm.horizontalAdvance(QLatin1Char('x')) * 185, fm.height() * 50);
+    m_statusDockMoved = false;
+    arrangeDocks();
+    fitIntoScreen();
+    resizeBottomDocks();
+}
+
+void MainWindow::placeDocks()
+{
+    for (QDockWidget *dock :
+         {m_trafficDock, m_messageDock, static_cast<QDockWidget *>(m_deviceDock)}) {
+        dock->setFloating(false);
+        addDockWidget(Qt::BottomDockWidgetArea, dock);
+    }
+    tabifyDockWidget(m_trafficDock, m_messageDock);
+    // A tab beside the messages: beside the pages it would widen the window past a laptop's.
+    tabifyDockWidget(m_messageDock, m_deviceDock);
+    m_statusDock->setFloating(false);
+    addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
+    m_statusDockMoved = false;
+    for (QDockWidget *dock :
+         {m_trafficDock, m_messageDock, static_cast<QDockWidget *>(m_statusDock)})
+        dock->show();
+    m_deviceDock->hide();
+    m_messageDock->raise();
+}
+
+void MainWindow::resizeBottomDocks()
+{
+    const int line = fontMetrics().height();
+    const int high = screen() ? screen()->availableGeometry().height() : height();
+    const int lines = std::clamp(high / 6 / line, 4, 9);
+    resizeDocks({m_trafficDock, m_messageDock}, {line * lines, line * lines}, Qt::Vertical);
 }
 
 void MainWindow::showOnScreen()

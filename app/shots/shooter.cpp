@@ -17,6 +17,8 @@
 #include <QTextStream>
 #include <QWindow>
 
+#include <memory>
+
 namespace stepcom {
 
 namespace {
@@ -206,17 +208,22 @@ void Shooter::shootOnScreen(const QString &fileName, int page, const QString &sc
         });
         return;
     }
-    const auto moveTo = [this](QScreen *screen, QSize size) {
-        m_window->windowHandle()->setScreen(screen);
-        m_window->setGeometry(QRect(screen->availableGeometry().topLeft(), size));
-    };
-    // Twice: on the small screen the window first moves its status dock below the page (its
-    // minimum width shrinks then), and only then can it be as narrow as the screen.
-    m_script.then([moveTo, target] { moveTo(target, target->availableGeometry().size()); });
-    m_script.sleep(kSettleMs);
-    m_script.then([moveTo, target] { moveTo(target, target->availableGeometry().size()); });
+    // What a first start on that screen does (app/stepcom/main.cpp: the constructor's
+    // restoreLayout with nothing saved, then showOnScreen), on this window.
+    auto saved = std::make_shared<QByteArray>();
+    m_script.then([this, target, saved] {
+        *saved = m_window->saveState();
+        m_window->hide();
+        // The picture is the window's inside: without a frame, maximized fills the screen
+        // (the offscreen platform keeps a frame's margins from a maximized window).
+        m_window->setWindowFlag(Qt::FramelessWindowHint, true);
+        m_window->setScreen(target);
+        m_window->move(target->availableGeometry().topLeft());
+        m_window->useDefaultLayout();
+        m_window->showOnScreen();
+    });
     m_script.waitFor(QStringLiteral("the window to fill %1").arg(screenName), [this, target] {
-        return m_window->screen() == target &&
+        return m_window->isVisible() && m_window->screen() == target &&
                m_window->size() == target->availableGeometry().size();
     });
     m_script.then([this, page] {
@@ -224,9 +231,17 @@ void Shooter::shootOnScreen(const QString &fileName, int page, const QString &sc
             m_window->showPage(page);
     });
     m_script.sleep(kSettleMs);
-    m_script.then([this, fileName, moveTo] {
+    m_script.then([this, fileName, saved] {
         save(composite(m_window.get(), nullptr), fileName);
-        moveTo(QGuiApplication::primaryScreen(), m_options.size);
+        m_window->hide();
+        m_window->setWindowFlag(Qt::FramelessWindowHint, false);
+        m_window->setWindowState(Qt::WindowNoState);
+        m_window->setScreen(QGuiApplication::primaryScreen());
+        m_window->setGeometry(
+            QRect(QGuiApplication::primaryScreen()->availableGeometry().topLeft(), m_options.size));
+        m_window->restoreState(*saved);
+        m_window->show();
+        m_window->activateWindow();
     });
     m_script.waitFor(QStringLiteral("the window back on the first screen"), [this] {
         return m_window->screen() == QGuiApplication::primaryScreen() &&

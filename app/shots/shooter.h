@@ -60,8 +60,10 @@ public:
     // Plans: show the page (when >= 0), let it settle, grab the window (with `dialog` drawn
     // over it, centred, when given) and save it as `fileName`.
     void shoot(const QString &fileName, int page = -1, std::function<QWidget *()> dialog = {});
-    // As shoot(), with the window moved onto the screen `screenName` and filling it (as it
-    // arranges itself there); it goes back to the first screen and its usual size afterwards.
+    // As shoot(), with the window as the program first starts on the screen `screenName`
+    // (MainWindow::useDefaultLayout and showOnScreen there: maximized on a laptop's screen, the
+    // docks arranged and sized for it); it goes back to the first screen, its usual size and
+    // its docks as they were afterwards.
     void shootOnScreen(const QString &fileName, int page, const QString &screenName);
     // A second simulated controller on a pty, for the scan scene; null when it cannot start
     // (the reason goes to the script).

@@ -58,9 +58,15 @@ inline QStringList enabledControls(MainWindow *window, const QSet<QString> &also
                 continue; // scroll and tab arrows, a dock's float and close buttons
             if (tool && tool->defaultAction())
                 continue; // a toolbar's action: walked above
-            if (b->parentWidget() && logViews.contains(QString::fromLatin1(
-                                         b->parentWidget()->metaObject()->className())))
-                continue; // clear, copy or save a log
+            const auto inLogView = [&logViews](const QWidget *w) {
+                for (; w; w = w->parentWidget()) {
+                    if (logViews.contains(QString::fromLatin1(w->metaObject()->className())))
+                        return true;
+                }
+                return false;
+            };
+            if (inLogView(b->parentWidget()))
+                continue; // clear, copy or save a log (in a row of the log's view)
             if (!harmless.contains(b->objectName()))
                 enabled << QStringLiteral("%1: button %2 \"%3\"")
                                .arg(where, b->objectName(), b->text());

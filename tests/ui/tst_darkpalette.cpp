@@ -38,7 +38,7 @@ class TestDarkPalette : public QObject
                               .arg(ratio, 0, 'f', 2);
     }
 
-    void checkStrip(MachineStrip *strip, const QString &context, bool lamps)
+    void checkStrip(MachineStrip *strip, const QString &context)
     {
         for (QLabel *label : strip->findChildren<QLabel *>()) {
             if (!label->isVisible() || label->text().isEmpty())
@@ -48,18 +48,44 @@ class TestDarkPalette : public QObject
                   label->palette().color(QPalette::WindowText),
                   under->palette().color(under->backgroundRole()));
         }
-        // The lamps keep their bright green on a light window (a lit lamp, framed); on a dark one
-        // they must stand out from the window and from an unlit lamp.
-        for (Led *led : lamps ? strip->findChildren<Led *>() : QList<Led *>()) {
-            const QWidget *under = led->parentWidget();
-            const QColor back = under->palette().color(under->backgroundRole());
-            check(context + QStringLiteral(" lamp frame"),
-                  led->palette().color(QPalette::WindowText), back);
-            check(context + QStringLiteral(" lamp on"), led->onColor(), back);
-            // On and off told apart by more than the hue.
-            check(context + QStringLiteral(" lamp on against off"), led->onColor(),
-                  led->palette().color(QPalette::Mid));
+        for (Led *led : strip->findChildren<Led *>())
+            checkLamp(led, context);
+    }
+
+    // A lamp as it is drawn, in each state: lit, filled in a colour that stands out from the
+    // window; off and unknown hollow (the window shows through their middle), off inside a ring
+    // that stands out: lit and unlit told apart by more than the colour.
+    void checkLamp(Led *led, const QString &context)
+    {
+        if (!led->isVisible())
+            return;
+        const QWidget *under = led->parentWidget();
+        const QColor back = under->palette().color(under->backgroundRole());
+        const QString what = QStringLiteral("%1 lamp %2").arg(context, led->objectName());
+        const Led::State was = led->state();
+        for (const Led::State state : {Led::State::On, Led::State::Off, Led::State::Unknown}) {
+            led->setState(state);
+            const QImage image = led->grab().toImage();
+            const QColor middle = image.pixelColor(image.rect().center());
+            double ring = 1.0; // the ring: the strongest contrast across the middle row
+            for (int x = 0; x < image.width(); ++x)
+                ring = std::max(ring, contrastRatio(image.pixelColor(x, image.height() / 2), back));
+            if (state == Led::State::On) {
+                check(what + QStringLiteral(" lit"), middle, back);
+                check(what + QStringLiteral(" lit, as it says"), led->litColor(), back);
+            } else if (contrastRatio(middle, back) > 1.1) {
+                m_problems << QStringLiteral("%1 %2: not hollow, its middle is %3 on %4")
+                                  .arg(what,
+                                       state == Led::State::Off ? QStringLiteral("off")
+                                                                : QStringLiteral("unknown"),
+                                       middle.name(), back.name());
+            }
+            if (state == Led::State::Off && ring < kMinContrast)
+                m_problems << QStringLiteral("%1 off: its ring has a contrast of %2")
+                                  .arg(what)
+                                  .arg(ring, 0, 'f', 2);
         }
+        led->setState(was);
     }
 
 private Q_SLOTS:
@@ -99,7 +125,7 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        checkStrip(window.machineStrip(), QStringLiteral("disconnected"), dark);
+        checkStrip(window.machineStrip(), QStringLiteral("disconnected"));
         PageSidebar *sidebar = window.sidebar();
         const QColor base = sidebar->viewport()->palette().color(QPalette::Base);
         check(QStringLiteral("sidebar edits"), sidebar->editColour(), base);
@@ -110,7 +136,7 @@ private Q_SLOTS:
         test::connectToSimulator(session);
         QTRY_VERIFY(session.linkStats().answers > 0);
         QTRY_VERIFY(window.machineStrip()->motion(1) != MachineStrip::Motion::Unknown);
-        checkStrip(window.machineStrip(), QStringLiteral("connected"), dark);
+        checkStrip(window.machineStrip(), QStringLiteral("connected"));
         // The status bar says the link's state in the same colours.
         auto *link = window.findChild<LinkStatus *>();
         QVERIFY(link);

@@ -37,6 +37,9 @@ class TestLayoutFit : public QObject, public test::LayoutChecks
 {
     Q_OBJECT
 
+    // What the window's least width leaves of the screen's, at least: 1/40 (23 px of 910).
+    static constexpr int kHeadroomPart = 40;
+
     // `w` is shown and lies wholly inside the window (not scrolled away, not behind a tab).
     void checkOnScreen(const QWidget *w, const QWidget *window, const QString &context,
                        const QString &what)
@@ -159,6 +162,14 @@ private Q_SLOTS:
                 problem(context, QStringLiteral("the window cannot shrink below %1×%2 now")
                                      .arg(needs.width())
                                      .arg(needs.height()));
+            // Not only just so: a longer word must not cut a text (issue 25: the plots' row of
+            // buttons left 3 px at 1366×768 ×1.5 in English).
+            else if (needs.width() > screen.width() - screen.width() / kHeadroomPart)
+                problem(context, QStringLiteral("the window needs %1 px of the screen's %2: less "
+                                                "than 1/%3 to spare")
+                                     .arg(needs.width())
+                                     .arg(screen.width())
+                                     .arg(kHeadroomPart));
             QToolButton *estop = window.emergencyStopButton();
             const QRect estopRect(estop->mapTo(&window, QPoint(0, 0)), estop->size());
             if (!estop->isVisible() || !window.rect().contains(estopRect))

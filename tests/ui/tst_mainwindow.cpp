@@ -14,15 +14,20 @@
 #include "sim/simhost.h"
 #include "simsession.h"
 #include "widgets/docks/linkstatus.h"
+#include "widgets/docks/messageview.h"
+#include "widgets/docks/trafficview.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
 
 #include <QAction>
 #include <QApplication>
+#include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
+#include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -306,6 +311,39 @@ private Q_SLOTS:
         window = std::make_unique<MainWindow>(session.get());
         window->showOnScreen();
         QVERIFY(!window->isMaximized());
+    }
+
+    // The bottom docks leave the height to the page on a low screen (issue 25: at 1024×600 they
+    // took 140 px, the page 294): each may be as low as a row of controls and two rows of what
+    // it lists, and the first start asks no more of them than a sixth of the screen.
+    void bottomDocksLeaveTheHeightToThePage()
+    {
+        window.reset();
+        QSettings().remove(QStringLiteral("window"));
+        window = std::make_unique<MainWindow>(session.get());
+        window->showOnScreen();
+        QVERIFY(QTest::qWaitForWindowExposed(window.get()));
+        const int line = window->fontMetrics().height();
+        const int room = window->screen()->availableGeometry().height();
+        for (QWidget *content : {static_cast<QWidget *>(window->messageView()),
+                                 static_cast<QWidget *>(window->trafficView())}) {
+            auto *dock = qobject_cast<QDockWidget *>(content->parentWidget());
+            QVERIFY(dock);
+            QVERIFY2(dock->minimumSizeHint().height() <= 8 * line,
+                     qPrintable(QStringLiteral("%1 needs %2 px, more than 8 lines of %3")
+                                    .arg(dock->windowTitle())
+                                    .arg(dock->minimumSizeHint().height())
+                                    .arg(line)));
+        }
+        auto *messages = qobject_cast<QDockWidget *>(window->messageView()->parentWidget());
+        QTRY_VERIFY2(messages->height() <=
+                         std::max(messages->minimumSizeHint().height(), room / 6) + line,
+                     qPrintable(QStringLiteral("the messages take %1 px of a %2 px screen")
+                                    .arg(messages->height())
+                                    .arg(room)));
+        const auto *list = window->messageView()->findChild<QListWidget *>();
+        QVERIFY(list && list->height() >= 2 * list->fontMetrics().height());
+        QVERIFY(window->close());
     }
 
     void closingWithEditsAsks()

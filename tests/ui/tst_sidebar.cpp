@@ -133,6 +133,47 @@ private Q_SLOTS:
             QVERIFY2(names.contains(page->title()), qPrintable(names.join(QLatin1Char('|'))));
     }
 
+    // A screen reader (or a switch or voice tool) chooses an entry through the accessibility
+    // interface: the entry's own action, as AT-SPI offers it, or the list's row selection. That
+    // selects the entry without making it the current item, and the page did not change
+    // (found by tests/a11y/a11y-walk.py).
+    void accessibilityChoosesThePage()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        PageSidebar *sidebar = window.sidebar();
+        window.showPage(0);
+        QAccessibleInterface *list = QAccessible::queryAccessibleInterface(sidebar);
+        QVERIFY(list && list->tableInterface());
+        const auto rowOf = [sidebar](const Page *page) {
+            return sidebar->row(sidebar->itemOf(int(sidebar->pages().indexOf(page))));
+        };
+        // Each page's entry by its action ("Toggle" on the bus), the other way back by the row.
+        for (Page *page : window.pages()) {
+            if (page == window.currentPage())
+                continue;
+            QAccessibleInterface *entry = list->child(rowOf(page));
+            QVERIFY(entry && entry->actionInterface());
+            QVERIFY(entry->actionInterface()->actionNames().contains(
+                QAccessibleActionInterface::toggleAction()));
+            entry->actionInterface()->doAction(QAccessibleActionInterface::toggleAction());
+            QTRY_COMPARE(window.currentPage(), page);
+            QVERIFY(entry->state().selected);
+        }
+        const Page *first = window.pages().at(0);
+        QVERIFY(list->tableInterface()->selectRow(rowOf(first)));
+        QTRY_COMPARE(window.currentPage(), first);
+        // A header stays what it is: choosing it shows no page and keeps the one shown.
+        QAccessibleInterface *header = list->child(0);
+        QVERIFY(header && !header->state().selectable);
+        if (QAccessibleActionInterface *action = header->actionInterface())
+            action->doAction(QAccessibleActionInterface::toggleAction());
+        QCoreApplication::processEvents();
+        QCOMPARE(window.currentPage(), first);
+    }
+
     // A sidebar lower than its entries (1366×768 at ×1.5 with the docks below): no scroll bar
     // takes the titles' room; keys still bring every page into view, and the fade says so.
     void scrollsWithoutTakingTheTitlesRoom()

@@ -2,6 +2,7 @@
 
 #include "device/statusrecorder.h"
 #include "session/devicesession.h"
+#include "widgets/fields/wrappingrow.h"
 #include "widgets/plots/positionplot.h"
 #include "widgets/plots/xyplot.h"
 
@@ -42,8 +43,10 @@ PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     m_xy = new XYPlot(this);
 
     auto *layout = new QVBoxLayout(this);
-    auto *bar = new QHBoxLayout;
-    const auto button = [this, bar](const char *name) {
+    // The plot's controls, then the files': in two rows on a narrow page (1366×768 at ×1.5).
+    auto *controls = new WrappingRow(this);
+    QHBoxLayout *bar = controls->first();
+    const auto button = [this, &bar](const char *name) {
         auto *b = new QPushButton(this);
         b->setObjectName(QLatin1String(name));
         bar->addWidget(b);
@@ -61,11 +64,13 @@ PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     bar->addWidget(m_windowLabel);
     bar->addWidget(m_window);
     bar->addStretch(1);
+    bar = controls->second();
+    bar->addStretch(1);
     m_exportPng = button("exportPngButton");
     m_exportCsv = button("exportCsvButton");
     m_record = button("recordButton");
     m_record->setCheckable(true);
-    layout->addLayout(bar);
+    layout->addWidget(controls);
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("recordingStatus"));
     m_status->setWordWrap(true);
@@ -78,6 +83,10 @@ PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     m_splitter->setStretchFactor(0, 3);
     m_splitter->setStretchFactor(1, 2);
     m_splitter->setChildrenCollapsible(false);
+    // Never so low that the charts cut their axes' numbers and titles to "…" (1366×768 at ×1.5
+    // did): a low window scrolls the page instead. Scaled up, the charts need more lines for
+    // the same text (measured: 13 lines whole at ×1, 17 at ×1.5).
+    m_splitter->setMinimumHeight(fontMetrics().height() * (devicePixelRatioF() > 1.2 ? 17 : 13));
     layout->addWidget(m_splitter, 1);
     // Without a second motor there is no plane to draw.
     m_xy->setVisible(m_recorder->motorCount() >= 2);

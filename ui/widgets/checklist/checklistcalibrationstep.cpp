@@ -139,6 +139,9 @@ void ChecklistCalibrationStep::retranslate()
     ChecklistStepWidget::retranslate();
     m_commanded->setPrefix(tr("Commanded: "));
     m_measured->setPrefix(tr("Measured: "));
+    // The prefixes say it on screen; a screen reader needs the names.
+    m_commanded->setAccessibleName(tr("Commanded distance"));
+    m_measured->setAccessibleName(tr("Measured distance"));
     m_move->setText(tr("Move this distance"));
     m_propose->setText(tr("Propose the pitch"));
     if (m_proposal) {

@@ -133,6 +133,7 @@ void ChecklistDirectionStep::retranslate()
 {
     ChecklistStepWidget::retranslate();
     m_move->setText(tr("Move a small step"));
+    m_distance->setAccessibleName(tr("Small step distance"));
     m_yes->setText(tr("Yes, toward +"));
     m_no->setText(tr("No, toward −"));
     if (m_flipTo) {

@@ -7,6 +7,8 @@
 #include <QStyle>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace stepcom {
 
 MessageView::MessageView(QWidget *parent)
@@ -19,6 +21,12 @@ MessageView::MessageView(QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     layout->addWidget(m_list);
+    // Two messages are enough in view; the page needs the height more (1024×600, issue 25).
+    // Small icons beside a line of text: a row as high as the text, not as a large icon.
+    const int icon = m_list->style()->pixelMetric(QStyle::PM_SmallIconSize, nullptr, m_list);
+    m_list->setIconSize(QSize(icon, icon));
+    const int row = std::max(m_list->fontMetrics().height(), icon) + 6;
+    m_list->setMinimumHeight(2 * row + 2 * m_list->frameWidth());
     layout->addWidget(m_clear, 0, Qt::AlignRight);
     connect(m_clear, &QPushButton::clicked, m_list, &QListWidget::clear);
     m_clear->setText(tr("C&lear messages"));

@@ -32,6 +32,14 @@ PageSidebar::PageSidebar(DeviceSession *session, QWidget *parent)
         if (page >= 0)
             Q_EMIT pageChosen(page);
     });
+    // A screen reader chooses an entry through the accessibility interface (AT-SPI's Toggle
+    // action, a table's row selection): that selects it without making it current.
+    connect(this, &QListWidget::itemSelectionChanged, this, [this] {
+        const QList<QListWidgetItem *> chosen = selectedItems();
+        if (chosen.size() == 1 && chosen.first() != currentItem() &&
+            chosen.first()->data(PageRole).toInt() >= 0)
+            setCurrentItem(chosen.first());
+    });
     connect(session->parameters(), &ParameterStore::editsChanged, this, &PageSidebar::refresh);
     connect(session->health(), &LinkHealth::stateChanged, this, &PageSidebar::refresh);
     connect(session, &DeviceSession::linkStateChanged, this, &PageSidebar::refresh);

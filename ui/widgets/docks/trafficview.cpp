@@ -1,6 +1,7 @@
 #include "widgets/docks/trafficview.h"
 
 #include "widgets/docks/trafficmodel.h"
+#include "widgets/fields/wrappingrow.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -62,7 +63,10 @@ TrafficView::TrafficView(QWidget *parent)
     m_search->setClearButtonEnabled(true);
     m_openFolder->setObjectName(QStringLiteral("openLogFolder"));
     m_save->setObjectName(QStringLiteral("saveLog"));
-    auto *filters = new QHBoxLayout;
+    // The filters and the actions side by side where the dock is wide enough (a low screen
+    // keeps the line for the page, issue 25), one above the other where not.
+    auto *controls = new WrappingRow(this);
+    QHBoxLayout *filters = controls->first();
     filters->addWidget(m_pause);
     for (const TrafficEntry::Kind kind :
          {TrafficEntry::Kind::Poll, TrafficEntry::Kind::Read, TrafficEntry::Kind::Write,
@@ -75,7 +79,7 @@ TrafficView::TrafficView(QWidget *parent)
         filters->addWidget(box);
     }
     filters->addStretch();
-    auto *actions = new QHBoxLayout;
+    QHBoxLayout *actions = controls->second();
     actions->addWidget(m_earlierButton);
     actions->addWidget(m_search, 1);
     actions->addWidget(m_clear);
@@ -85,9 +89,12 @@ TrafficView::TrafficView(QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     layout->setSpacing(2);
-    layout->addLayout(filters);
-    layout->addLayout(actions);
+    layout->addWidget(controls);
     layout->addWidget(m_table);
+    // A few rows are enough to see frames go by; the page needs the height more (1024×600).
+    m_table->setMinimumHeight(m_table->horizontalHeader()->sizeHint().height() +
+                              2 * m_table->verticalHeader()->defaultSectionSize() +
+                              2 * m_table->frameWidth());
     connect(m_pause, &QCheckBox::toggled, m_model, &TrafficModel::setPaused);
     connect(m_search, &QLineEdit::textChanged, m_model, &TrafficModel::setSearch);
     connect(m_clear, &QPushButton::clicked, m_model, &TrafficModel::clear);

@@ -1,6 +1,10 @@
 #include "widgets/fields/led.h"
 
+#include "widgets/fields/statetone.h"
+
 #include <QPainter>
+
+#include <algorithm>
 
 namespace stepcom {
 
@@ -30,23 +34,34 @@ QSize Led::sizeHint() const
     return {d, d};
 }
 
+QColor Led::litColor() const
+{
+    return withContrast(m_on, palette().color(backgroundRole()), kMinContrast);
+}
+
 void Led::paintEvent(QPaintEvent *)
 {
     QPainter p(this);
     p.setRenderHint(QPainter::Antialiasing);
-    const qreal d = std::min(width(), height()) - 2.0;
+    // A ring wide enough to read as one at any scale, inside the widget.
+    const qreal ring = std::max(1.0, std::min(width(), height()) / 9.0);
+    const qreal d = std::min(width(), height()) - ring - 1.0;
     const QRectF r((width() - d) / 2.0, (height() - d) / 2.0, d, d);
-    const QColor frame = palette().color(QPalette::WindowText);
-    p.setPen(QPen(frame, 1.0));
     switch (m_state) {
-    case State::Unknown:
+    case State::Unknown: {
+        QPen dotted(stateColour(StateTone::Unknown, palette(), backgroundRole()), ring);
+        dotted.setStyle(Qt::DotLine);
+        p.setPen(dotted);
         p.setBrush(Qt::NoBrush);
         break;
+    }
     case State::Off:
-        p.setBrush(palette().color(QPalette::Mid));
+        p.setPen(QPen(palette().color(QPalette::WindowText), ring));
+        p.setBrush(Qt::NoBrush);
         break;
     case State::On:
-        p.setBrush(m_on);
+        p.setPen(QPen(palette().color(QPalette::WindowText), 1.0));
+        p.setBrush(litColor());
         break;
     }
     p.drawEllipse(r);

@@ -4,7 +4,9 @@
 
 namespace stepcom {
 
-// A round indicator lamp: on, off or unknown (hollow), with a caption under or beside it.
+// A round indicator lamp. Lit: filled, in its colour made to stand out from the window (3:1,
+// on a light and on a dark palette); off: a hollow ring; unknown: a hollow dotted ring in the
+// "unknown" grey. On and off differ by more than the colour (issue 25).
 class Led : public QWidget
 {
     Q_OBJECT
@@ -16,6 +18,9 @@ public:
     State state() const { return m_state; }
     void setOnColor(const QColor &color);
     QColor onColor() const { return m_on; }
+    // What a lit lamp is filled with on this palette: the on colour, darkened on a light
+    // window and lightened on a dark one until it stands out from it.
+    QColor litColor() const;
     QSize sizeHint() const override;
     QSize minimumSizeHint() const override { return sizeHint(); }
 

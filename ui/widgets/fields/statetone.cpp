@@ -59,12 +59,18 @@ QColor stateColour(StateTone tone, const QPalette &palette, QPalette::ColorRole 
         colour = palette.color(QPalette::Active, QPalette::WindowText);
         break;
     }
-    // A palette of the system's own may put any background under it: move towards black or
-    // white until the mark stands out as much as the rule asks.
-    const QColor extreme = dark ? QColor(Qt::white) : QColor(Qt::black);
-    for (int step = 1; step <= 10 && contrastRatio(colour, back) < kMinContrast; ++step)
-        colour = mix(colour, extreme, 0.1 * step);
-    return colour;
+    // A palette of the system's own may put any background under it.
+    return withContrast(colour, back, kMinContrast);
+}
+
+QColor withContrast(const QColor &colour, const QColor &background, double ratio)
+{
+    // Move towards black or white until the mark stands out as much as the rule asks.
+    const QColor extreme = background.lightness() < 128 ? QColor(Qt::white) : QColor(Qt::black);
+    QColor c = colour.toRgb();
+    for (int step = 1; step <= 10 && contrastRatio(c, background) < ratio; ++step)
+        c = mix(c, extreme, 0.1 * step);
+    return c;
 }
 
 } // namespace stepcom

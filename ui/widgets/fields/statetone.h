@@ -15,6 +15,10 @@ enum class StateTone { Normal, Good, Running, Warning, Fault, Unknown };
 QColor stateColour(StateTone tone, const QPalette &palette,
                    QPalette::ColorRole background = QPalette::Window);
 
+// `colour` darkened on a light `background`, lightened on a dark one, until their contrast is
+// at least `ratio` (a lamp's own hue, made readable on any window).
+QColor withContrast(const QColor &colour, const QColor &background, double ratio);
+
 // WCAG 2 contrast ratio of two colours (1 to 21).
 double contrastRatio(const QColor &a, const QColor &b);
 

@@ -143,6 +143,7 @@ void StepMovePanel::retranslate()
     for (int i = 0; i < 4; ++i)
         m_step->setItemText(i, QStringLiteral("%1 %2").arg(QLocale().toString(kSteps[i]), unit));
     m_step->setItemText(4, tr("Custom"));
+    m_custom->setAccessibleName(tr("Custom step"));
     m_custom->setSuffix(QLatin1Char(' ') + unit);
     m_target->setSuffix(QLatin1Char(' ') + unit);
     m_minus->setText(tr("− Step"));
