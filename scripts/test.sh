@@ -12,12 +12,12 @@ build=${BUILD_DIR:-build}
 ctest --test-dir "$build" --output-on-failure --timeout 300 -j "${CTEST_JOBS:-$((3 * $(nproc)))}" "$@"
 [[ $# -gt 0 ]] && exit 0 # a chosen subset of the tests: nothing more
 
-# The fuzz targets, 20 s each here (docs/testing.md): the suite replays their corpus and
+# The fuzz targets, 10 s each here (docs/testing.md): the suite replays their corpus and
 # regressions already; this keeps the libFuzzer build working and explores a little on every
 # run. Longer runs: scripts/fuzz.sh (60 s a target) or FUZZ_SECONDS=600 scripts/fuzz.sh.
 # STEPCOM_TEST_FUZZ=0 leaves them out.
 if [[ ${STEPCOM_TEST_FUZZ:-1} != 0 ]]; then
-    FUZZ_SECONDS=${FUZZ_SECONDS:-20} scripts/fuzz.sh
+    FUZZ_SECONDS=${FUZZ_SECONDS:-10} scripts/fuzz.sh
 fi
 # The whole suite again under ASan + UBSan: a second full build, so only on request.
 if [[ ${STEPCOM_TEST_SANITIZE:-0} != 0 ]]; then

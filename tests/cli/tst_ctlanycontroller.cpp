@@ -52,14 +52,14 @@ private Q_SLOTS:
         QCOMPARE(samples, 5);
         // The summary --verbose prints: the answers were taken as they came (the defect this
         // guards against lost every one), no echo. A computer busy with other programs may
-        // hold an answer past its timeout now and then: one such try in ten is let pass.
+        // hold an answer past its timeout now and then: one such try in four is let pass.
         const QRegularExpressionMatch counts =
             QRegularExpression(QStringLiteral("(\\d+) requests, \\d+ answers; (\\d+) timeouts"))
                 .match(m.err);
         QVERIFY2(counts.hasMatch(), qPrintable(m.err));
         const int requests = counts.captured(1).toInt();
         const int timeouts = counts.captured(2).toInt();
-        QVERIFY2(requests >= samples && timeouts * 10 <= requests, qPrintable(m.err.right(600)));
+        QVERIFY2(requests >= samples && timeouts * 4 <= requests, qPrintable(m.err.right(600)));
         QCOMPARE(int(m.err.count(QLatin1String("no answer within"))), timeouts);
         QVERIFY2(m.err.contains(QLatin1String("no echo")), qPrintable(m.err));
         QVERIFY2(!m.err.contains(QLatin1String("Turn on --echo")), qPrintable(m.err));

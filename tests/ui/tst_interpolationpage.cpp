@@ -100,9 +100,9 @@ class TestInterpolationPage : public QObject
                                          1e-6 &&
                                      std::abs(preview->plot()->marker()->y() - endY / 100.0) < 1e-6,
                                  10000);
-        // (How many points lie between depends on how often the poll came round while it ran:
-        // fewer on a busy computer.)
-        QVERIFY2(preview->plot()->traceCount() >= 2,
+        // (How many points lie before it depends on how often the poll came round while it
+        // ran: on a busy computer the whole run may fall between two polls.)
+        QVERIFY2(preview->plot()->traceCount() >= 1,
                  qPrintable(QString::number(preview->plot()->traceCount())));
     }
 
