@@ -85,6 +85,13 @@ QJsonObject ReplayState::toJson(const RegisterMap &map) const
         }
         if (!d.lastCommand.isEmpty())
             o.insert(QStringLiteral("last_command"), d.lastCommand);
+        // What the window's device list says of it: requests, how many failed, a restart.
+        o.insert(QStringLiteral("requests"), d.requests);
+        o.insert(QStringLiteral("errors"), d.errors);
+        if (d.restartMs >= 0) {
+            o.insert(QStringLiteral("restart_s"), double(d.restartMs) / 1000.0);
+            o.insert(QStringLiteral("restart"), d.restartText);
+        }
         devicesJson.insert(QString::number(it.key()), o);
     }
     return {{QStringLiteral("at_s"), double(ms) / 1000.0},

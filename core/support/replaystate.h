@@ -65,7 +65,8 @@ public:
     QMap<int, ReplayDevice> devices;
 
     // {"devices": {"1": {"answering", "last_error", "values": {key: engineering value},
-    // "written": {key: value}}}}; values in engineering units as `stepcomctl read --json`.
+    // "written": {key: value}, "requests", "errors", "restart_s", "restart"}}}; values in
+    // engineering units as `stepcomctl read --json`.
     QJsonObject toJson(const RegisterMap &map) const;
     // What differs from `before`: one line per device and parameter,
     // "id 1  motor1.position  0.00 mm → 12.50 mm".

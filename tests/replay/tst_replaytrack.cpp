@@ -9,6 +9,7 @@
 #include "simsession.h"
 #include "support/replaylog.h"
 
+#include <QJsonObject>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -294,6 +295,17 @@ private Q_SLOTS:
         QCOMPARE(at.devices.value(1).restartMs, -1);
         QCOMPARE(log.stateAt(5).devices.value(2).requests, 0);
         QVERIFY(!log.stateAt(5).linkUp);
+        // `stepcomctl replay --at --json` says the same.
+        const QJsonObject two = at.toJson(map())
+                                    .value(QStringLiteral("devices"))
+                                    .toObject()
+                                    .value(QStringLiteral("2"))
+                                    .toObject();
+        QCOMPARE(two.value(QStringLiteral("requests")).toInt(), 3);
+        QCOMPARE(two.value(QStringLiteral("errors")).toInt(), 2);
+        QCOMPARE(two.value(QStringLiteral("restart_s")).toDouble(), 0.07);
+        QCOMPARE(two.value(QStringLiteral("restart")).toString(),
+                 QStringLiteral("id 2: motor1.speed 450 → 120 rpm"));
     }
 
     // The names the user gave the devices go into the header and come back from it.
