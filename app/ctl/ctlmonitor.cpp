@@ -57,31 +57,79 @@ CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, bool j
     connect(m_session, &DeviceSession::linkLost, this, [this](const QString &reason) {
         event(QStringLiteral("lost"),
               tr("link lost: %1; trying again on its own (Ctrl-C ends)").arg(reason),
-              QStringLiteral("reason"), reason);
+              QStringLiteral(",\"reason\":") + quoted(reason));
     });
     connect(reconnector, &Reconnector::restored, this, [this](const LinkSettings &s, int n) {
         event(QStringLiteral("back"),
               tr("link back at %1 after %n attempt(s)", nullptr, n).arg(s.describe()),
-              QStringLiteral("port"),
-              s.transport == LinkSettings::Transport::Tcp
-                  ? QStringLiteral("%1:%2").arg(s.host).arg(s.tcpPort)
-                  : s.portName);
+              QStringLiteral(",\"port\":") +
+                  quoted(s.transport == LinkSettings::Transport::Tcp
+                             ? QStringLiteral("%1:%2").arg(s.host).arg(s.tcpPort)
+                             : s.portName));
     });
     connect(reconnector, &Reconnector::cancelled, this, [this] { end(1); });
     connect(m_session, &DeviceSession::controllerRestarted, this,
-            [this](int id, const QStringList &lost) {
+            [this](int id, const QStringList &lost, const RestartWatch::Evidence &seen) {
+                const QString axes = RestartWatch::describe(seen, m_session->map());
                 event(QStringLiteral("restarted"),
-                      tr("controller %1 restarted (power off?): positions and references lost%2")
+                      tr("controller %1 restarted (power off?): positions and references lost%2%3")
                           .arg(id)
                           .arg(lost.isEmpty() ? QString()
                                               : tr("; not saved to flash, lost: %1")
-                                                    .arg(lost.join(QLatin1String(", ")))),
-                      QStringLiteral("lost"), lost.join(QLatin1String(", ")));
+                                                    .arg(lost.join(QLatin1String(", "))),
+                               axes.isEmpty() ? QString() : tr("; seen: %1").arg(axes)),
+                      QStringLiteral(",\"lost\":") + quoted(lost.join(QLatin1String(", "))) +
+                          evidenceFields(id, seen));
+            });
+    // Zeros after a silence where only moving axes went to 0: said as what it is, not hidden.
+    connect(m_session, &DeviceSession::controllerMayHaveRestarted, this,
+            [this](int id, const RestartWatch::Evidence &seen) {
+                event(QStringLiteral("possible_restart"),
+                      tr("controller %1 may have restarted (power off?): it did not answer for "
+                         "%2 s and every axis reads 0 (%3); whether a motion ended there cannot "
+                         "be told: the references are not known, home again")
+                          .arg(id)
+                          .arg(double(seen.silentMs) / 1000.0, 0, 'f', 1)
+                          .arg(RestartWatch::describe(seen, m_session->map())),
+                      evidenceFields(id, seen));
             });
 }
 
-void CtlMonitor::event(const QString &name, const QString &text, const QString &detailKey,
-                       const QString &detail)
+QString CtlMonitor::evidenceFields(int id, const RestartWatch::Evidence &seen) const
+{
+    const RegisterMap &map = m_session->map();
+    const auto name = [&map](int motor) {
+        const Parameter *p =
+            map.blockParameter(QStringLiteral("motor"), motor, QStringLiteral("position"));
+        return p ? p->key.section(QLatin1Char('.'), 0, 0) : QStringLiteral("motor%1").arg(motor);
+    };
+    const auto names = [&name](const QList<int> &motors) {
+        QStringList out;
+        for (const int motor : motors)
+            out << quoted(name(motor));
+        return QLatin1Char('[') + out.join(QLatin1Char(',')) + QLatin1Char(']');
+    };
+    // Where each axis stood at the last answer before: an axis that stood still there and
+    // reads 0 now is the proof.
+    QStringList before;
+    QList<int> motors = seen.before.keys();
+    std::sort(motors.begin(), motors.end());
+    for (const int motor : std::as_const(motors)) {
+        const Parameter *p =
+            map.blockParameter(QStringLiteral("motor"), motor, QStringLiteral("position"));
+        const qint64 raw = seen.before.value(motor);
+        before << quoted(name(motor)) + QLatin1Char(':') +
+                      (p ? p->formatRaw(raw) : QString::number(raw));
+    }
+    return QStringLiteral(",\"id\":%1,\"silent_ms\":%2,\"zeroed\":%3,\"stood_still\":%4,"
+                          "\"moving\":%5,\"before\":{%6}")
+        .arg(id)
+        .arg(seen.silentMs)
+        .arg(names(seen.zeroed), names(seen.stoodStill), names(seen.moving),
+             before.join(QLatin1Char(',')));
+}
+
+void CtlMonitor::event(const QString &name, const QString &text, const QString &fields)
 {
     if (m_ended)
         return;
@@ -91,10 +139,10 @@ void CtlMonitor::event(const QString &name, const QString &text, const QString &
     }
     QDateTime now = QDateTime::currentDateTime();
     now = now.toOffsetFromUtc(now.offsetFromUtc());
-    m_out << QStringLiteral("{\"event\":%1,\"time\":\"%2\",\"t_ms\":%3,%4:%5}")
+    m_out << QStringLiteral("{\"event\":%1,\"time\":\"%2\",\"t_ms\":%3%4}")
                  .arg(quoted(name), now.toString(Qt::ISODateWithMs))
                  .arg(m_clock.elapsed())
-                 .arg(quoted(detailKey), quoted(detail))
+                 .arg(fields)
           << QLatin1Char('\n');
     m_out.flush();
     std::fflush(stdout);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "session/restartwatch.h"
+
 #include <QElapsedTimer>
 #include <QList>
 #include <QObject>
@@ -19,6 +21,8 @@ struct Parameter;
 // units by map key} -- flushed line by line, until --count samples or SIGINT/SIGTERM. A lost
 // link is tried again with a growing pause; "lost" and "back" are said as JSON lines
 // ({"event":"lost"|"back", ...}) with --json, else as text on stderr, and the samples go on.
+// So is a restart of the controller: "restarted" where it is proven, "possible_restart" where
+// only moving axes went to 0 after a silence, each with what was seen (evidenceFields()).
 class CtlMonitor : public QObject
 {
     Q_OBJECT
@@ -45,8 +49,11 @@ Q_SIGNALS:
 private:
     void onCycle(bool ok);
     void end(int exitCode);
-    void event(const QString &name, const QString &text, const QString &detailKey,
-               const QString &detail);
+    // One event: `text` on stderr, or with --json a line {"event":name,"time","t_ms"`fields`}
+    // (`fields`: `,"key":value` each, JSON already).
+    void event(const QString &name, const QString &text, const QString &fields);
+    // `,"id","silent_ms","zeroed","stood_still","moving","before"` of a (possible) restart.
+    QString evidenceFields(int id, const RestartWatch::Evidence &seen) const;
 
     DeviceSession *m_session;
     SignalWatcher *m_signals = nullptr;

@@ -47,7 +47,8 @@ QString ReferenceTracker::textOn(int device, int motor) const
     case Reason::Restarted:
         return tr("not referenced (the controller restarted)");
     case Reason::Silent:
-        return tr("not referenced (no answer while it moved)");
+        return tr("reference not known (no answer while it moved: the controller may have "
+                  "restarted)");
     }
     return {};
 }

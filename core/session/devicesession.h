@@ -208,7 +208,8 @@ public:
     // The link as it reaches device `id` ("/dev/ttyUSB0 · 9600 8N1 · id 2").
     QString describeDevice(int id) const;
 
-    // -- Restarts (sessionrestart.cpp): nothing to call; controllerRestarted() says it --
+    // -- Restarts (sessionrestart.cpp): nothing to call; controllerRestarted() and
+    // controllerMayHaveRestarted() say it --
 
 Q_SIGNALS:
     // -- Connection --
@@ -247,9 +248,15 @@ Q_SIGNALS:
     void deviceIdsChanged(const QList<int> &ids);
     // -- Restarts --
     // Controller `id` restarted (power off?): what it read afterwards differs from what the
-    // session held (`lost`: "motor1.speed 222 → 120 rpm"), or its positions went to 0. Its
-    // references are gone; its values shown are the ones read after the restart.
-    void controllerRestarted(int id, const QStringList &lost);
+    // session held (`lost`: "motor1.speed 222 → 120 rpm"), or an axis that stood still went to
+    // 0 (`seen`: the silence and each axis). Its followed motions ended, its references are
+    // gone; its values shown are the ones read after the restart.
+    void controllerRestarted(int id, const QStringList &lost,
+                             const stepcom::RestartWatch::Evidence &seen);
+    // Controller `id` may have restarted: it answers again after a silence with every axis at
+    // 0, but only axes that were moving went there (a motion may end at 0) and nothing else it
+    // holds differs. Its followed motions ended "not known", its references are not known.
+    void controllerMayHaveRestarted(int id, const stepcom::RestartWatch::Evidence &seen);
 
 private:
     friend class SessionInternals; // tests and the benchmark's link measurements
@@ -279,8 +286,10 @@ private:
     // -- Restarts (sessionrestart.cpp) --
     // A restart of the controllers seen and said.
     void watchRestarts();
-    void checkRestart(int id, const QString &why, stepcom::RestartWatch::Zeros zeros);
+    void checkRestart(int id, const QString &why, stepcom::RestartWatch::Zeros zeros,
+                      const stepcom::RestartWatch::Evidence &seen);
     void restartChecked(int id, const QString &why, stepcom::RestartWatch::Zeros zeros,
+                        const stepcom::RestartWatch::Evidence &seen,
                         const QHash<QString, qint64> &held, const ReadOutcome &read);
 
     ModbusLink *m_link;

@@ -289,6 +289,14 @@ void MotionSupervisor::interrupted(int device, MotionCause cause)
     for (const auto &[id, last] : std::as_const(open))
         conclude(device, id, last);
     m_references->loseAll(device, lostReference(cause));
+    // A silence that was only a possible restart, proven one after all (by what it lost).
+    if (cause == MotionCause::Restarted) {
+        using Reason = ReferenceTracker::Reason;
+        for (int n = 1; n <= m_references->motorCount(); ++n) {
+            if (m_references->reasonOn(device, n) == Reason::Silent)
+                m_references->setReasonOn(device, n, Reason::Restarted);
+        }
+    }
 }
 
 void MotionSupervisor::onDisconnected()

@@ -44,15 +44,17 @@ void DeviceSession::watchRestarts()
     for (const Parameter *p : map().coils())
         coils.insert(p->address, p->key);
     connect(m_link, &ModbusLink::dispatched, m_restarts, [this, coils](quint64, const Request &r) {
-        if (r.type == Request::Type::WriteCoil && r.coilOn &&
-            m_restarts->movesOrZeroes(coils.value(r.address)))
-            m_restarts->commandSent(r.unitId > 0 ? r.unitId : m_link->settings().deviceId, nowMs());
+        const QString key = coils.value(r.address);
+        if (r.type == Request::Type::WriteCoil && r.coilOn && m_restarts->movesOrZeroes(key))
+            m_restarts->commandSent(r.unitId > 0 ? r.unitId : m_link->settings().deviceId, nowMs(),
+                                    RestartWatch::motorsOf(map(), key));
     });
     connect(this, &DeviceSession::disconnected, m_restarts, &RestartWatch::forget);
     connect(m_restarts, &RestartWatch::suspected, this, &DeviceSession::checkRestart);
 }
 
-void DeviceSession::checkRestart(int id, const QString &why, RestartWatch::Zeros zeros)
+void DeviceSession::checkRestart(int id, const QString &why, RestartWatch::Zeros zeros,
+                                 const RestartWatch::Evidence &seen)
 {
     // Before a motion is judged from the zeros.
     if (zeros == RestartWatch::Zeros::Reset)
@@ -63,26 +65,42 @@ void DeviceSession::checkRestart(int id, const QString &why, RestartWatch::Zeros
         return;
     m_checkingRestart.insert(id);
     const QHash<QString, qint64> held = knownValues(id);
-    readDevice(id, map().holdings(), [this, id, why, zeros, held](const ReadOutcome &r) {
+    readDevice(id, map().holdings(), [this, id, why, zeros, seen, held](const ReadOutcome &r) {
         m_checkingRestart.remove(id);
-        restartChecked(id, why, zeros, held, r);
+        restartChecked(id, why, zeros, seen, held, r);
     });
 }
 
 void DeviceSession::restartChecked(int id, const QString &why, RestartWatch::Zeros zeros,
+                                   const RestartWatch::Evidence &seen,
                                    const QHash<QString, qint64> &held, const ReadOutcome &read)
 {
     const QString locale = Translators::current();
     const QString device = deviceIds().size() > 1 ? tr("Device %1: ").arg(id) : QString();
+    // What was seen, in words: the silence or the zeros, then each axis.
+    const QString axes = RestartWatch::describe(seen, map());
+    const QString evidence = axes.isEmpty() ? why : why + QLatin1String("; ") + axes;
+    // Positions at 0 after a motion prove nothing: it may have ended there.
+    const bool afterMotion = zeros == RestartWatch::Zeros::AfterMotion;
     if (!read.ok) {
+        const QString failed = read.errors.join(QLatin1String("; "));
+        if (zeros == RestartWatch::Zeros::Reset) {
+            say(Severity::Warning,
+                device + tr("The controller restarted (power off?): positions lost; references "
+                            "lost. Seen: %1. Reading it again failed (%2): what else it lost is "
+                            "not known.")
+                             .arg(evidence, failed));
+            Q_EMIT controllerRestarted(id, {}, seen);
+            return;
+        }
         say(Severity::Warning, device + tr("The controller may have restarted (%1), but reading it "
                                            "again failed: %2")
-                                            .arg(why, read.errors.join(QLatin1String("; "))));
+                                            .arg(evidence, failed));
+        if (afterMotion)
+            Q_EMIT controllerMayHaveRestarted(id, seen);
         return;
     }
     QStringList lost;
-    // Positions at 0 after a motion prove nothing: it may have ended there.
-    const bool afterMotion = zeros == RestartWatch::Zeros::AfterMotion;
     bool positionsLost = zeros == RestartWatch::Zeros::Reset;
     for (const Parameter *p : map().holdings()) {
         const auto was = held.constFind(p->key);
@@ -102,10 +120,12 @@ void DeviceSession::restartChecked(int id, const QString &why, RestartWatch::Zer
         m_memory->setDeviceValues(id, read.values);
     if (lost.isEmpty() && !positionsLost && afterMotion) {
         say(Severity::Warning,
-            device + tr("The controller answers again (%1) and its axes stand at 0 after a "
-                        "motion: whether the motion ended there or the controller restarted "
-                        "cannot be told. The references are not known: home again.")
-                         .arg(why));
+            device + tr("The controller may have restarted (power off?): %1. Every axis reads 0, "
+                        "but only axes that were moving went there: whether they ended there or "
+                        "the controller restarted cannot be told. The references are not known: "
+                        "home again.")
+                         .arg(evidence));
+        Q_EMIT controllerMayHaveRestarted(id, seen);
         return;
     }
     if (lost.isEmpty() && !positionsLost) {
@@ -121,8 +141,8 @@ void DeviceSession::restartChecked(int id, const QString &why, RestartWatch::Zer
     if (!lost.isEmpty())
         what << tr("changes not saved to flash lost: %1").arg(lost.join(QLatin1String(", ")));
     say(Severity::Warning, device + tr("The controller restarted (power off?): %1. Seen: %2.")
-                                        .arg(what.join(QLatin1String("; ")), why));
-    Q_EMIT controllerRestarted(id, lost);
+                                        .arg(what.join(QLatin1String("; ")), evidence));
+    Q_EMIT controllerRestarted(id, lost, seen);
 }
 
 } // namespace stepcom

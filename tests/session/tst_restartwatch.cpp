@@ -115,6 +115,92 @@ private Q_SLOTS:
         QCOMPARE(zeros(spy, 1), RestartWatch::Zeros::AfterMotion);
     }
 
+    // Motor 1 stood still away from 0, motor 2 ran: after a silence both read 0. Motor 1 cannot
+    // have gone there by itself: the counters began again, whatever motor 2 did.
+    void anAxisThatStoodStillProvesARestart()
+    {
+        RestartWatch w(RegisterMap::builtin());
+        QSignalSpy spy(&w, &RestartWatch::suspected);
+        w.statusRead(1, true, status(-123456, 4000, false, true), 0);
+        w.statusRead(1, true, status(-123456, 5000, false, true), 100);
+        w.statusRead(1, false, {}, 200);
+        w.statusRead(1, false, {}, 2000);
+        w.statusRead(1, true, status(0, 0), 3400);
+        QCOMPARE(spy.size(), 1);
+        QCOMPARE(zeros(spy, 0), RestartWatch::Zeros::Reset);
+        const auto seen = spy.at(0).at(3).value<RestartWatch::Evidence>();
+        QCOMPARE(seen.silentMs, 3300);
+        QCOMPARE(seen.zeroed, (QList<int>{1, 2}));
+        QCOMPARE(seen.stoodStill, QList<int>{1});
+        QCOMPARE(seen.moving, QList<int>{2});
+        QCOMPARE(seen.before.value(1), -123456);
+        QVERIFY(seen.conclusive());
+        const QString words = RestartWatch::describe(seen, RegisterMap::builtin());
+        QVERIFY2(words.contains(QLatin1String("motor 1 stood still at -1234.56 mm and reads 0.00")),
+                 qPrintable(words));
+        QVERIFY2(words.contains(QLatin1String("motor 2 was moving and reads 0.00")),
+                 qPrintable(words));
+
+        // Without a silence the same (a slow background poll may miss the time it was off).
+        w.statusRead(2, true, status(-500, 300, false, true), 0);
+        w.statusRead(2, true, status(0, 0), 900);
+        QCOMPARE(spy.size(), 2);
+        QCOMPARE(zeros(spy, 1), RestartWatch::Zeros::Reset);
+        QCOMPARE(spy.at(1).at(3).value<RestartWatch::Evidence>().silentMs, 0);
+    }
+
+    // Only the moving axis went to 0 (the other stood at 0 all along): a possible restart,
+    // said with what was seen, never claimed.
+    void onlyAMovingAxisAtZeroIsAPossibleRestart()
+    {
+        RestartWatch w(RegisterMap::builtin());
+        QSignalSpy spy(&w, &RestartWatch::suspected);
+        w.statusRead(1, true, status(0, 5000, false, true), 0);
+        w.statusRead(1, false, {}, 100);
+        w.statusRead(1, true, status(0, 0), 2500);
+        QCOMPARE(spy.size(), 1);
+        QCOMPARE(zeros(spy, 0), RestartWatch::Zeros::AfterMotion);
+        const auto seen = spy.at(0).at(3).value<RestartWatch::Evidence>();
+        QCOMPARE(seen.silentMs, 2500);
+        QCOMPARE(seen.zeroed, QList<int>{2});
+        QCOMPARE(seen.stoodStill, QList<int>{1});
+        QCOMPARE(seen.moving, QList<int>{2});
+        QVERIFY(!seen.conclusive());
+    }
+
+    // A command to motor 1 makes its zeros its own; one to motor 2 says nothing of motor 1.
+    void commandsCountForTheirOwnAxis()
+    {
+        RestartWatch w(RegisterMap::builtin());
+        QSignalSpy spy(&w, &RestartWatch::suspected);
+        const RegisterMap &map = RegisterMap::builtin();
+        QCOMPARE(RestartWatch::motorsOf(map, QStringLiteral("motor2.move")), QList<int>{2});
+        QCOMPARE(RestartWatch::motorsOf(map, QStringLiteral("motor1.home")), QList<int>{1});
+        QVERIFY(RestartWatch::motorsOf(map, QStringLiteral("zero_coordinates")).isEmpty());
+        QVERIFY(RestartWatch::motorsOf(map, QStringLiteral("return_to_zero")).isEmpty());
+        w.statusRead(1, true, status(700, 300), 0);
+        w.commandSent(1, 50, {1});
+        w.statusRead(1, false, {}, 100);
+        w.statusRead(1, true, status(0, 0), 2500);
+        w.statusRead(2, true, status(700, 300), 0);
+        w.commandSent(2, 50, {2});
+        w.statusRead(2, false, {}, 100);
+        w.statusRead(2, true, status(0, 0), 2500);
+        QCOMPARE(spy.size(), 2);
+        QCOMPARE(zeros(spy, 0), RestartWatch::Zeros::Reset); // motor 2 stood still
+        QCOMPARE(spy.at(0).at(3).value<RestartWatch::Evidence>().stoodStill, QList<int>{2});
+        QCOMPARE(zeros(spy, 1), RestartWatch::Zeros::Reset); // motor 1 stood still
+        QCOMPARE(spy.at(1).at(3).value<RestartWatch::Evidence>().moving, QList<int>{2});
+        // A command to every axis (zeroing) just before the last sample: nothing is proven.
+        w.statusRead(3, true, status(700, 300), 0);
+        w.commandSent(3, 900);
+        w.statusRead(3, true, status(700, 300), 1000); // read under way when it went out
+        w.statusRead(3, false, {}, 1100);
+        w.statusRead(3, true, status(0, 0), 4000);
+        QCOMPARE(spy.size(), 3);
+        QCOMPARE(zeros(spy, 2), RestartWatch::Zeros::AfterMotion);
+    }
+
     void aSilenceWithPositionsKeptIsOnlySuspected()
     {
         RestartWatch w(RegisterMap::builtin());
