@@ -39,7 +39,7 @@ int main(int argc, char *argv[])
         "full rate, (d) the window's CPU and memory while polling at full rate, (e) the Traffic "
         "dock holding an hour of that polling, (f) the status of three controllers on one line "
         "in turn, (g) the E-STOP to every controller of a line of 2, 3 and 8, (h) a bus scan of "
-        "ids 1-247 at "
+        "ids 1-247 and 1-40 at "
         "9600 when nobody answers, (i) the status cycle and read-all on a controller that "
         "refuses reads covering reserved registers, (j) the time from the port opened to the "
         "first status, both at 9600, (k) (a) and (b) on a controller that answers in 2 ms at "
@@ -210,9 +210,10 @@ int main(int argc, char *argv[])
         }
     }
     if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke && !onlyReplay) {
-        err << QStringLiteral("stepcom-bench: the bus scan of ids 1-247 at 9600 baud ...")
+        err << QStringLiteral("stepcom-bench: the bus scan of ids 1-247 and 1-40 at 9600 baud ...")
             << Qt::endl;
         rows += scanVerdicts(measureScan(9600));
+        rows += scanVerdicts(measureScan(9600, 40));
     }
 
     const QString result =

@@ -9,11 +9,11 @@
 
 namespace stepcom::bench {
 
-ScanResult measureScan(int baud)
+ScanResult measureScan(int baud, int ids)
 {
     ScanResult r;
     r.baud = baud;
-    r.ids = 247;
+    r.ids = ids;
     SimHost sim;
     SimOptions o;
     o.rtu = true;

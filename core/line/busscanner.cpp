@@ -89,6 +89,12 @@ int BusScanner::suggestedTimeoutMs(qint64 answerMs)
     return int(std::max<qint64>(LinkSettings().timeoutMs, ms));
 }
 
+int BusScanner::lateListenMs(int probeTimeoutMs, qint64 slowestAnswerMs)
+{
+    const qint64 slow = slowestAnswerMs > 0 ? qint64(std::ceil(1.5 * double(slowestAnswerMs))) : 0;
+    return int(std::max<qint64>(2 * qint64(probeTimeoutMs), slow));
+}
+
 QList<LinkSettings> BusScanner::lines(const Plan &plan)
 {
     if (plan.base.isNetwork())
@@ -112,10 +118,10 @@ qint64 BusScanner::worstCaseMs(const Plan &plan)
     qint64 ms = 0;
     for (const LinkSettings &line : lines(plan)) {
         // Opening waits for a quiet line; each probe is the request's frame and the timeout;
-        // then the last probes' late answers are listened for.
+        // then the last probes' late answers are listened for (nobody answering: none seen).
         ms += kOpenQuietMs;
         const int timeoutMs = probeTimeoutMs(line, plan.probeTimeoutMs);
-        ms += std::max(timeoutMs, kLateListenMs - timeoutMs);
+        ms += lateListenMs(timeoutMs, -1) - timeoutMs;
         const double frameMs = line.isNetwork() ? 0.0 : 8 * line.charTimeMs();
         ms += qint64(plan.ids.size()) * qint64(std::ceil(frameMs + timeoutMs));
     }
@@ -142,6 +148,7 @@ void BusScanner::start(const Plan &plan)
     m_lines = lines(plan);
     m_found.clear();
     m_late.clear();
+    m_slowestMs = -1;
     m_done = 0;
     m_total = int(m_lines.size() * plan.ids.size());
     m_lineIndex = -1;
@@ -239,6 +246,7 @@ void BusScanner::onLateAnswer(int unit, int exceptionCode, const QList<quint16> 
     if (!m_running || !m_probedAt.contains(unit) || (exceptionCode == 0 && values.size() != 1))
         return;
     const qint64 answerMs = m_clock.elapsed() - m_probedAt.take(unit);
+    m_slowestMs = std::max(m_slowestMs, answerMs);
     m_late << foundAt(unit, exceptionCode, values, answerMs);
 }
 
@@ -255,12 +263,14 @@ void BusScanner::probeNext()
         return;
     }
     if (m_idIndex >= m_plan.ids.size()) {
-        // The last probes' late answers may still come: listen for them (every answer frame
-        // names its id, so a late one is found while this wait runs).
+        // The last probes' late answers may still come: listen for them as long as the probe
+        // timeout or the slowest controller seen says (every answer frame names its id, so a
+        // late one is found while this wait runs).
         if (!m_probedAt.isEmpty() && m_link && !m_waitedForLate) {
             m_waitedForLate = true;
             const qint64 sinceLastMs = m_clock.elapsed() - m_lastProbeAtMs;
-            const int waitMs = int(std::max<qint64>(m_timeoutMs, kLateListenMs - sinceLastMs));
+            const int waitMs =
+                int(std::max<qint64>(0, lateListenMs(m_timeoutMs, m_slowestMs) - sinceLastMs));
             QTimer::singleShot(waitMs, this, [this, link = QPointer<ModbusLink>(m_link)] {
                 if (m_link == link)
                     probeNext();

@@ -68,11 +68,11 @@ public:
     // Opening a serial line waits this long for it to be quiet; also the quiet time after
     // bytes arrived that no probe was waiting for.
     static constexpr int kOpenQuietMs = 50;
-    // After a line's last probe, its late answers are listened for this long (counted from
-    // that probe, at least one probe timeout): a slow controller among the last ids is found
-    // too, by the answer it sends later (the link's default timeout: what a controller the
-    // scan suggests connecting to may take).
-    static constexpr int kLateListenMs = 500;
+    // How long after a line's last probe its late answers are listened for: the probe timeout
+    // once more after that probe's own, or half as long again as the slowest answer seen in
+    // this scan (`slowestAnswerMs`, < 0: none), so more controllers like it among the last ids
+    // are found too. An answer that comes while later ids are probed is taken then anyway.
+    static int lateListenMs(int probeTimeoutMs, qint64 slowestAnswerMs);
     // The shortest wait for a probe's answer on `line` (its baud and parity; over a network
     // the converter's baud as given): the request's frame, the controller's answer delay, the
     // longest answer frame to a probe, and the margin.
@@ -130,6 +130,7 @@ private:
     QList<Found> m_late;           // found by a late answer, identified before the next probe
     bool m_waitedForLate = false;  // this line's last probe's late answers were waited for
     qint64 m_lastProbeAtMs = 0;    // m_clock's time of this line's last probe
+    qint64 m_slowestMs = -1;       // the slowest late answer of this scan
 };
 
 } // namespace stepcom

@@ -8,6 +8,8 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <cmath>
+
 using namespace stepcom;
 
 class TestBusScanner : public QObject
@@ -130,6 +132,54 @@ private Q_SLOTS:
         QCOMPARE(BusScanner::suggestedTimeoutMs(36), 500);
         QCOMPARE(BusScanner::suggestedTimeoutMs(400), 600);
         QCOMPARE(BusScanner::suggestedTimeoutMs(401), 650);
+    }
+
+    // After a line's last probe its late answers are listened for as long as the probe
+    // timeout says, once more, not a fixed half second: ids 1-40 where nobody answers stay
+    // within 1.5x of the wire's limit. A slow controller seen in the scan makes it longer.
+    void theTailIsWhatTheProbeTimeoutSays()
+    {
+        LinkSettings line;
+        line.baud = 9600;
+        const int timeoutMs = BusScanner::fittedProbeTimeoutMs(line);
+        QCOMPARE(BusScanner::lateListenMs(timeoutMs, -1), 2 * timeoutMs);
+        QCOMPARE(BusScanner::lateListenMs(600, -1), 1200); // a --probe-timeout given
+        QCOMPARE(BusScanner::lateListenMs(timeoutMs, 400), 600);
+        BusScanner::Plan plan;
+        plan.bauds = {9600};
+        for (int id = 1; id <= 40; ++id)
+            plan.ids << id;
+        const qint64 probesMs = 40 * qint64(std::ceil(8 * line.charTimeMs() + timeoutMs));
+        const qint64 tailMs = BusScanner::worstCaseMs(plan) - BusScanner::kOpenQuietMs - probesMs;
+        QCOMPARE(tailMs, qint64(timeoutMs));
+    }
+
+    // Two controllers that answer after 300 ms, one of them the last id: the first one's late
+    // answer says the line has slow controllers, so the scan listens long enough after the
+    // last probe to find the second.
+    void aSlowControllerSeenMakesTheTailWaitForItsLike()
+    {
+        SimHost sim;
+        SimOptions options;
+        options.rtu = true;
+        options.ids = {2, 8};
+        options.answerDelayMs = 300;
+        QString error;
+        QVERIFY2(sim.start(options, &error), qPrintable(error));
+        BusScanner scanner;
+        QSignalSpy finished(&scanner, &BusScanner::finished);
+        BusScanner::Plan plan;
+        plan.base.portName = sim.rtuPath();
+        plan.bauds = {9600};
+        plan.ids = {1, 2, 3, 4, 5, 6, 7, 8};
+        scanner.start(plan);
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+        QList<int> ids;
+        for (const BusScanner::Found &f : scanner.found()) {
+            ids << f.deviceId;
+            QVERIFY(f.late);
+        }
+        QCOMPARE(ids, (QList<int>{2, 8}));
     }
 
     void linesOfAPlan()
