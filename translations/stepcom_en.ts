@@ -1902,12 +1902,20 @@
         </translation>
     </message>
     <message>
-        <source>controller %1 restarted (power off?): positions and references lost%2</source>
-        <translation>controller %1 restarted (power off?): positions and references lost%2</translation>
-    </message>
-    <message>
         <source>; not saved to flash, lost: %1</source>
         <translation>; not saved to flash, lost: %1</translation>
+    </message>
+    <message>
+        <source>controller %1 restarted (power off?): positions and references lost%2%3</source>
+        <translation>controller %1 restarted (power off?): positions and references lost%2%3</translation>
+    </message>
+    <message>
+        <source>; seen: %1</source>
+        <translation>; seen: %1</translation>
+    </message>
+    <message>
+        <source>controller %1 may have restarted (power off?): it did not answer for %2 s and every axis reads 0 (%3); whether a motion ended there cannot be told: the references are not known, home again</source>
+        <translation>controller %1 may have restarted (power off?): it did not answer for %2 s and every axis reads 0 (%3); whether a motion ended there cannot be told: the references are not known, home again</translation>
     </message>
 </context>
 <context>
@@ -3445,8 +3453,12 @@ Every other master on the bus must use the new settings too, and no other device
         </translation>
     </message>
     <message>
-        <source>The controller answers again (%1) and its axes stand at 0 after a motion: whether the motion ended there or the controller restarted cannot be told. The references are not known: home again.</source>
-        <translation>The controller answers again (%1) and its axes stand at 0 after a motion: whether the motion ended there or the controller restarted cannot be told. The references are not known: home again.</translation>
+        <source>The controller restarted (power off?): positions lost; references lost. Seen: %1. Reading it again failed (%2): what else it lost is not known.</source>
+        <translation>The controller restarted (power off?): positions lost; references lost. Seen: %1. Reading it again failed (%2): what else it lost is not known.</translation>
+    </message>
+    <message>
+        <source>The controller may have restarted (power off?): %1. Every axis reads 0, but only axes that were moving went there: whether they ended there or the controller restarted cannot be told. The references are not known: home again.</source>
+        <translation>The controller may have restarted (power off?): %1. Every axis reads 0, but only axes that were moving went there: whether they ended there or the controller restarted cannot be told. The references are not known: home again.</translation>
     </message>
 </context>
 <context>
@@ -7171,8 +7183,8 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>not referenced (the controller restarted)</translation>
     </message>
     <message>
-        <source>not referenced (no answer while it moved)</source>
-        <translation>not referenced (no answer while it moved)</translation>
+        <source>reference not known (no answer while it moved: the controller may have restarted)</source>
+        <translation>reference not known (no answer while it moved: the controller may have restarted)</translation>
     </message>
 </context>
 <context>
@@ -7492,8 +7504,20 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>it answers again after %1 s without an answer</translation>
     </message>
     <message>
-        <source>its positions went back to 0 with no motion and no command</source>
-        <translation>its positions went back to 0 with no motion and no command</translation>
+        <source>its positions went back to 0 where an axis stood still, with no command</source>
+        <translation>its positions went back to 0 where an axis stood still, with no command</translation>
+    </message>
+    <message>
+        <source>motor %1 stood still at %2 and reads %3</source>
+        <translation>motor %1 stood still at %2 and reads %3</translation>
+    </message>
+    <message>
+        <source>motor %1 stood still at %2</source>
+        <translation>motor %1 stood still at %2</translation>
+    </message>
+    <message>
+        <source>motor %1 was moving and reads %2</source>
+        <translation>motor %1 was moving and reads %2</translation>
     </message>
 </context>
 <context>

@@ -1891,12 +1891,20 @@
         </translation>
     </message>
     <message>
-        <source>controller %1 restarted (power off?): positions and references lost%2</source>
-        <translation>控制器 %1 重新启动了（断电？）：位置和参考点丢失%2</translation>
-    </message>
-    <message>
         <source>; not saved to flash, lost: %1</source>
         <translation>；未保存到闪存而丢失的：%1</translation>
+    </message>
+    <message>
+        <source>controller %1 restarted (power off?): positions and references lost%2%3</source>
+        <translation>控制器 %1 重新启动了（断电？）：位置和参考点丢失%2%3</translation>
+    </message>
+    <message>
+        <source>; seen: %1</source>
+        <translation>；所见：%1</translation>
+    </message>
+    <message>
+        <source>controller %1 may have restarted (power off?): it did not answer for %2 s and every axis reads 0 (%3); whether a motion ended there cannot be told: the references are not known, home again</source>
+        <translation>控制器 %1 可能重新启动了（断电？）：它 %2 s 没有应答，现在所有轴都读到 0（%3）；无法判断是否只是运动停在那里：参考点未知，请重新回零</translation>
     </message>
 </context>
 <context>
@@ -3421,8 +3429,12 @@ Every other master on the bus must use the new settings too, and no other device
         </translation>
     </message>
     <message>
-        <source>The controller answers again (%1) and its axes stand at 0 after a motion: whether the motion ended there or the controller restarted cannot be told. The references are not known: home again.</source>
-        <translation>控制器重新应答（%1），而且它的轴在一次运动之后停在 0：无法判断是运动在那里结束了，还是控制器重新启动了。参考点未知：请重新回零。</translation>
+        <source>The controller restarted (power off?): positions lost; references lost. Seen: %1. Reading it again failed (%2): what else it lost is not known.</source>
+        <translation>控制器重新启动了（断电？）：位置丢失；参考点丢失。所见：%1。重新读取失败（%2）：不知道还丢失了什么。</translation>
+    </message>
+    <message>
+        <source>The controller may have restarted (power off?): %1. Every axis reads 0, but only axes that were moving went there: whether they ended there or the controller restarted cannot be told. The references are not known: home again.</source>
+        <translation>控制器可能重新启动了（断电？）：%1。所有轴都读到 0，但变成 0 的只有原在运动的轴：无法判断是运动恰好停在那里，还是控制器重新启动了。参考点未知：请重新回零。</translation>
     </message>
 </context>
 <context>
@@ -7121,8 +7133,8 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>无参考点（控制器重新启动了）</translation>
     </message>
     <message>
-        <source>not referenced (no answer while it moved)</source>
-        <translation>无参考点（运动时没有应答）</translation>
+        <source>reference not known (no answer while it moved: the controller may have restarted)</source>
+        <translation>参考点未知（运动时没有应答：控制器可能重新启动了）</translation>
     </message>
 </context>
 <context>
@@ -7439,8 +7451,20 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>它在 %1 s 没有应答之后重新应答</translation>
     </message>
     <message>
-        <source>its positions went back to 0 with no motion and no command</source>
-        <translation>它的位置在没有运动、没有命令的情况下回到了 0</translation>
+        <source>its positions went back to 0 where an axis stood still, with no command</source>
+        <translation>在有轴静止、没有命令的情况下，它的位置回到了 0</translation>
+    </message>
+    <message>
+        <source>motor %1 stood still at %2 and reads %3</source>
+        <translation>电机 %1 原停在 %2，现在读数为 %3</translation>
+    </message>
+    <message>
+        <source>motor %1 stood still at %2</source>
+        <translation>电机 %1 原停在 %2</translation>
+    </message>
+    <message>
+        <source>motor %1 was moving and reads %2</source>
+        <translation>电机 %1 原在运动，现在读数为 %2</translation>
     </message>
 </context>
 <context>
