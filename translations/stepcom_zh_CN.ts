@@ -7466,6 +7466,11 @@ Every other master on the bus must use the new settings too, and no other device
         <source>motor %1 was moving and reads %2</source>
         <translation>电机 %1 原在运动，现在读数为 %2</translation>
     </message>
+    <message>
+        <source>; </source>
+        <comment>between what was seen</comment>
+        <translation>；</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::RoundTrips</name>

@@ -141,7 +141,7 @@ void RestartWatch::forget()
     m_devices.clear();
 }
 
-QString RestartWatch::describe(const Evidence &e, const RegisterMap &map)
+QString RestartWatch::describe(const Evidence &e, const RegisterMap &map, const QString &first)
 {
     const QString locale = Translators::current();
     const auto at = [&](int motor, qint64 raw) {
@@ -150,6 +150,8 @@ QString RestartWatch::describe(const Evidence &e, const RegisterMap &map)
         return p ? p->displayRaw(raw, locale) : QString::number(raw);
     };
     QStringList parts;
+    if (!first.isEmpty())
+        parts << first;
     for (const int motor : e.stoodStill) {
         if (e.zeroed.contains(motor))
             parts << tr("motor %1 stood still at %2 and reads %3")
@@ -161,7 +163,7 @@ QString RestartWatch::describe(const Evidence &e, const RegisterMap &map)
     // A moving axis's position before says nothing: it went on moving after it.
     for (const int motor : e.moving)
         parts << tr("motor %1 was moving and reads %2").arg(motor).arg(at(motor, 0));
-    return parts.join(QLatin1String("; "));
+    return parts.join(tr("; ", "between what was seen"));
 }
 
 } // namespace stepcom

@@ -62,9 +62,10 @@ public:
     // The motors a coil of `map` moves or zeroes: its own motor, or every one (empty).
     static QList<int> motorsOf(const RegisterMap &map, const QString &coilKey);
 
-    // "motor 1 stood still at −1,234.56 mm and reads 0.00 mm; motor 2 was moving and reads
-    // 0.00 mm", in the installed language.
-    static QString describe(const Evidence &evidence, const RegisterMap &map);
+    // "motor 1 stood still at -1234.56 mm and reads 0.00 mm; motor 2 was moving and reads
+    // 0.00 mm", in the installed language, after `first` (the silence) when given.
+    static QString describe(const Evidence &evidence, const RegisterMap &map,
+                            const QString &first = {});
 
 Q_SIGNALS:
     // `why`: in words, "it answers again after 3.2 s without an answer"; `zeros`: what its

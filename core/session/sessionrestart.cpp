@@ -78,8 +78,7 @@ void DeviceSession::restartChecked(int id, const QString &why, RestartWatch::Zer
     const QString locale = Translators::current();
     const QString device = deviceIds().size() > 1 ? tr("Device %1: ").arg(id) : QString();
     // What was seen, in words: the silence or the zeros, then each axis.
-    const QString axes = RestartWatch::describe(seen, map());
-    const QString evidence = axes.isEmpty() ? why : why + QLatin1String("; ") + axes;
+    const QString evidence = RestartWatch::describe(seen, map(), why);
     // Positions at 0 after a motion prove nothing: it may have ended there.
     const bool afterMotion = zeros == RestartWatch::Zeros::AfterMotion;
     if (!read.ok) {
