@@ -66,6 +66,9 @@ void CtlRunner::runMove()
     request.value = value;
     connectThen([this, request] {
         StepMove *step = m_session->stepMove();
+        connect(step, &StepMove::warned, this, [this](const QString &warning) {
+            m_err << QStringLiteral("stepcomctl: ") << warning << Qt::endl;
+        });
         connect(step, &StepMove::finished, this, [this](const StepMoveResult &r) {
             const Parameter *pos = m_map.blockParameter(QStringLiteral("motor"), r.request.motor,
                                                         QStringLiteral("position"));
@@ -90,6 +93,7 @@ void CtlRunner::runMove()
                     {QStringLiteral("outcome"),
                      r.outcome ? r.outcome->verdictWord() : QJsonValue()},
                     {QStringLiteral("cause"), r.outcome ? r.outcome->causeWord() : QJsonValue()},
+                    {QStringLiteral("warning"), r.warning.isEmpty() ? QJsonValue() : r.warning},
                     {QStringLiteral("message"), r.text}};
                 m_out << QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Indented));
             } else {
