@@ -3,6 +3,7 @@
 
 #include "consolereader.h"
 
+#include "device/writereview.h"
 #include "profile/backupstore.h"
 #include "profile/busdump.h"
 #include "profile/profilecomparison.h"
@@ -315,6 +316,16 @@ void CtlRunner::runApply()
                         finish(Ok);
                     return;
                 }
+                // What the window's write dialog asks, said before the question (and with --yes).
+                const QStringList questions = WriteReview::problems(
+                    m_map,
+                    [values = r.values](const QString &key) {
+                        const auto it = values.constFind(key);
+                        return it == values.cend() ? std::nullopt : std::optional<qint64>(*it);
+                    },
+                    writes);
+                for (const QString &q : questions)
+                    m_out << tr("check: %1").arg(q) << Qt::endl;
                 confirmThenApply(writes);
             });
     });

@@ -54,6 +54,9 @@ private:
     void runRead();
     void runWrite();
     void writeThenReport(const QList<ParameterWrite> &writes);
+    // The window's review of `writes` (WriteReview), on what the controller holds: its
+    // questions printed; without --yes nothing is written (exit 2), else `next`.
+    void reviewThen(const QList<ParameterWrite> &writes, std::function<void()> next);
     void runCommand();
     // command NAME --wait: sends it and judges where the motion ended (CtlMotionWait).
     void runCommandWait();
