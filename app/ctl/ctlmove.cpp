@@ -19,9 +19,9 @@ void CtlRunner::backupThen(DeviceSession::Risk risk, std::function<void()> next)
     SessionBackup::save(
         m_session, BackupStore(), risk, [this, next](const BackupStore::Saved &saved) {
             if (!saved.ok()) {
-                fail(UsageError, tr("no backup of the controller's settings could be saved "
-                                    "(%1): nothing was done (--no-backup goes on without one)")
-                                     .arg(saved.error));
+                fail(DeviceError, tr("no backup of the controller's settings could be saved "
+                                     "(%1): nothing was done (--no-backup goes on without one)")
+                                      .arg(saved.error));
                 return;
             }
             m_out << tr("backup of the controller's settings: %1").arg(saved.path) << Qt::endl;

@@ -151,7 +151,7 @@ void CtlRunner::runDiff()
     Profile profile;
     if (!loadProfileArgument(QStringLiteral("diff"), &profile))
         return;
-    m_linkError = 3; // 1 means "different" here
+    m_linkError = LinkError; // 1 means "different" here
     connectThen([this, profile] {
         m_session->read(
             Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
@@ -387,9 +387,9 @@ bool CtlRunner::backupBeforeApply()
     const BackupStore::Saved saved = store.save(m_map, m_beforeApply, BackupStore::Operation::Apply,
                                                 m_session->settings().describe());
     if (!saved.ok()) {
-        fail(UsageError, tr("no backup of the controller's settings could be saved (%1): nothing "
-                            "was written (--no-backup applies without one)")
-                             .arg(saved.error));
+        fail(DeviceError, tr("no backup of the controller's settings could be saved (%1): nothing "
+                             "was written (--no-backup applies without one)")
+                              .arg(saved.error));
         return false;
     }
     m_out << tr("backup of the controller's settings: %1").arg(saved.path) << Qt::endl;

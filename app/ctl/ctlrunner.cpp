@@ -108,8 +108,8 @@ const QList<CtlCommand> &CtlRunner::commands()
                            "into a folder: one file per --id, \"id2 NAME DATE.json\""),
          &CtlRunner::runDump},
         {"diff", "diff FILE",
-         QT_TRANSLATE_NOOP("stepcomctl", "compare the controller with a profile; exit 0 same,\n"
-                                         "1 different, 2 bad file, 3 link or device error"),
+         QT_TRANSLATE_NOOP("stepcomctl", "compare the controller with a profile (exit 0 the\n"
+                                         "same, 1 different, 3 link or device error)"),
          &CtlRunner::runDiff},
         {"diff", "diff A.json B.json",
          QT_TRANSLATE_NOOP("stepcomctl", "compare two profiles, no controller needed; exit 0\n"
@@ -157,20 +157,6 @@ const QList<CtlCommand> &CtlRunner::commands()
          &CtlRunner::runBundle},
     };
     return table;
-}
-
-QString CtlRunner::commandsHelp()
-{
-    // "  usage<padded to 23>help", continuation lines indented under the help.
-    QString text = QCoreApplication::translate("stepcomctl", "Commands:") + QLatin1Char('\n');
-    for (const CtlCommand &c : commands()) {
-        const QStringList lines =
-            QCoreApplication::translate("stepcomctl", c.help).split(QLatin1Char('\n'));
-        text += QStringLiteral("  %1%2\n").arg(QLatin1String(c.usage), -23).arg(lines.first());
-        for (qsizetype i = 1; i < lines.size(); ++i)
-            text += QString(25, QLatin1Char(' ')) + lines.at(i) + QLatin1Char('\n');
-    }
-    return text;
 }
 
 QString CtlRunner::unknownCommandMessage(const QString &name)

@@ -26,13 +26,15 @@ struct CtlCommand
     bool CtlOptions::*when = nullptr;
 };
 
-// Runs one stepcomctl command against a controller and reports an exit code:
-// 0 success, 1 link or device error, 2 usage or validation error.
+// Runs one stepcomctl command against a controller and reports an exit code (Exit).
 class CtlRunner : public QObject
 {
     Q_OBJECT
 public:
-    enum Exit { Ok = 0, DeviceError = 1, UsageError = 2 };
+    // The exit codes, as exitCodesHelp() explains them: 1 is also a command's "no" (diff:
+    // different, scan: none found, move and command --wait: not arrived), and diff and scan say
+    // a link error with LinkError, their 1 being an answer.
+    enum Exit { Ok = 0, DeviceError = 1, UsageError = 2, LinkError = 3 };
 
     CtlRunner(const CtlOptions &options, const RegisterMap &map, QObject *parent = nullptr);
     // Starts the command; `finished` follows once.
@@ -40,8 +42,14 @@ public:
 
     // Every command, in the order the help lists them.
     static const QList<CtlCommand> &commands();
-    // The "Commands:" part of --help, built from the table.
+    // The "Commands:" part of --help, built from the table (ctlhelp.cpp): the help column
+    // starts after the longest usage, so the two never run together in any language.
     static QString commandsHelp();
+    // The one table of exit codes, for every command (--help, `NAME --help`, man page, guide).
+    static QString exitCodesHelp();
+    // `stepcomctl NAME --help`: that command's usages, help and the exit codes; empty for a
+    // name that is not a command.
+    static QString commandHelp(const QString &name);
     // The message for a command that is not in the table.
     static QString unknownCommandMessage(const QString &name);
 

@@ -27,11 +27,11 @@ class TestCtlReview : public QObject
     {
         ProgramOptions options;
         options.environment = {QStringLiteral("XDG_DATA_HOME=") + dir.path()};
-        return runProgram(QStringLiteral("stepcomctl"),
-                          QStringList{QStringLiteral("--port"), host->rtuPath(),
-                                      QStringLiteral("--verbose")} +
-                              args,
-                          options);
+        return runProgram(
+            QStringLiteral("stepcomctl"),
+            QStringList{QStringLiteral("--port"), host->rtuPath(), QStringLiteral("--verbose")} +
+                args,
+            options);
     }
     // The write frames (FC05, FC06, FC10) that went out, from the traffic on standard error.
     static int writeFrames(const ProgramRun &r)
@@ -82,7 +82,8 @@ private Q_SLOTS:
         QVERIFY2(r.err.contains(QStringLiteral("ignores the limit settings")), qPrintable(r.err));
         QCOMPARE(writeFrames(r), 0);
         QCOMPARE(held("mode.system"), 0);
-        r = ctl({QStringLiteral("--yes"), QStringLiteral("write"), QStringLiteral("mode.system=4")});
+        r = ctl(
+            {QStringLiteral("--yes"), QStringLiteral("write"), QStringLiteral("mode.system=4")});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(held("mode.system"), 4);
     }

@@ -111,33 +111,31 @@ void CtlRunner::reviewThen(const QList<ParameterWrite> &writes, std::function<vo
 void CtlRunner::writeThenReport(const QList<ParameterWrite> &writes)
 {
     m_session->write(writes, [this, writes](const WriteOutcome &w) {
-            for (const ParameterWrite &pw : writes) {
-                const bool verified = w.written.contains(pw.parameter->key) &&
-                                      std::none_of(w.mismatches.cbegin(), w.mismatches.cend(),
-                                                   [&](const WriteMismatch &m) {
-                                                       return m.key == pw.parameter->key;
-                                                   });
-                if (verified)
-                    m_out << pw.parameter->key << QStringLiteral(" = ")
-                          << valueText(*pw.parameter, pw.raw) << QStringLiteral("  ")
-                          << tr("(written, verified)") << Qt::endl;
-            }
-            for (const QString &e : w.errors)
-                m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-            if (!w.notWritten.isEmpty())
-                m_err << QStringLiteral("stepcomctl: ")
-                      << tr("not written: %1").arg(w.notWritten.join(QLatin1String(", ")))
-                      << Qt::endl;
-            if (!w.ok) {
-                finish(DeviceError);
-                return;
-            }
-            if (!m_options.saveToFlash) {
-                finish(Ok);
-                return;
-            }
-            saveToFlashThenFinish();
-        });
+        for (const ParameterWrite &pw : writes) {
+            const bool verified =
+                w.written.contains(pw.parameter->key) &&
+                std::none_of(w.mismatches.cbegin(), w.mismatches.cend(),
+                             [&](const WriteMismatch &m) { return m.key == pw.parameter->key; });
+            if (verified)
+                m_out << pw.parameter->key << QStringLiteral(" = ")
+                      << valueText(*pw.parameter, pw.raw) << QStringLiteral("  ")
+                      << tr("(written, verified)") << Qt::endl;
+        }
+        for (const QString &e : w.errors)
+            m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+        if (!w.notWritten.isEmpty())
+            m_err << QStringLiteral("stepcomctl: ")
+                  << tr("not written: %1").arg(w.notWritten.join(QLatin1String(", "))) << Qt::endl;
+        if (!w.ok) {
+            finish(DeviceError);
+            return;
+        }
+        if (!m_options.saveToFlash) {
+            finish(Ok);
+            return;
+        }
+        saveToFlashThenFinish();
+    });
 }
 
 } // namespace stepcom
