@@ -42,8 +42,8 @@ QString columns(const QList<std::pair<QString, QString>> &rows)
     QString text;
     for (const auto &[first, help] : rows) {
         const QStringList lines = help.split(QLatin1Char('\n'));
-        text += QStringLiteral("  ") + first.leftJustified(width) + lines.first() +
-                QLatin1Char('\n');
+        text +=
+            QStringLiteral("  ") + first.leftJustified(width) + lines.first() + QLatin1Char('\n');
         for (qsizetype i = 1; i < lines.size(); ++i)
             text += QString(width + 2, QLatin1Char(' ')) + lines.at(i) + QLatin1Char('\n');
     }
@@ -78,12 +78,14 @@ QString CtlRunner::commandHelp(const QString &name)
     QList<std::pair<QString, QString>> rows;
     for (const CtlCommand &c : commands()) {
         if (name == QLatin1String(c.name))
-            rows.append({QStringLiteral("stepcomctl ") + QLatin1String(c.usage), translated(c.help)});
+            rows.append(
+                {QStringLiteral("stepcomctl ") + QLatin1String(c.usage), translated(c.help)});
     }
     if (rows.isEmpty())
         return {};
     QString text = translated("Usage:") + QLatin1Char('\n') + columns(rows) + QLatin1Char('\n');
-    text += translated("The link and the other options: stepcomctl --help") + QStringLiteral("\n\n");
+    text +=
+        translated("The link and the other options: stepcomctl --help") + QStringLiteral("\n\n");
     return text + exitCodesHelp();
 }
 

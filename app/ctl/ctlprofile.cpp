@@ -13,6 +13,7 @@
 
 #include <QCoreApplication>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QLocale>
 
 namespace stepcom {
@@ -126,9 +127,11 @@ void CtlRunner::runDump()
             profile.notes = m_options.notes;
             profile.deviceId = m_session->settings().deviceId;
             if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
-                fail(UsageError, e);
+                fail(DeviceError, e); // not done: the file could not be written
                 return;
             }
+            m_result = QJsonObject{{QStringLiteral("file"), path},
+                                   {QStringLiteral("parameters"), int(profile.values.size())}};
             m_out << tr("saved %n parameter(s) of %1 to %2", nullptr, int(profile.values.size()))
                          .arg(m_session->settings().describe(), path)
                   << Qt::endl;
@@ -165,8 +168,17 @@ void CtlRunner::runDiff()
                 const int unsupported = noteUnsupported(r, &compared);
                 const auto diffs =
                     ProfileDiff::differences(ProfileDiff::compare(m_map, compared, r.values));
-                for (const ProfileDifference &d : diffs)
+                QJsonArray rows;
+                for (const ProfileDifference &d : diffs) {
                     m_out << ProfileDiff::describe(d) << Qt::endl;
+                    const auto value = [&d](const std::optional<qint64> &raw) {
+                        return raw ? jsonValue(*d.parameter, *raw) : QJsonValue();
+                    };
+                    rows.append(QJsonObject{{QStringLiteral("key"), d.parameter->key},
+                                            {QStringLiteral("controller"), value(d.device)},
+                                            {QStringLiteral("profile"), value(d.profile)}});
+                }
+                m_result.insert(QStringLiteral("differences"), rows);
                 printLeftOut(compared, tr("left out of the comparison:"));
                 const ProfileVariance &v = compared.variance;
                 const int leftOut =
@@ -181,6 +193,8 @@ void CtlRunner::runDiff()
                     m_out << tr("%n value(s) differ (controller -> profile)", nullptr,
                                 int(diffs.size()))
                           << Qt::endl;
+                m_result.insert(QStringLiteral("left_out"), leftOut);
+                m_result.insert(QStringLiteral("same"), diffs.isEmpty() && leftOut == 0);
                 // A comparison that had to leave values out is not "the same".
                 finish(diffs.isEmpty() && leftOut == 0 ? 0 : 1);
             });
@@ -243,6 +257,17 @@ void CtlRunner::runDiffFiles()
                          .arg(f.key, number(f.a), number(f.b), f.reason)
                   << Qt::endl;
     }
+    QJsonArray rows;
+    for (const ProfileDifference &d : differing)
+        rows.append(QJsonObject{
+            {QStringLiteral("key"), d.parameter->key},
+            {QStringLiteral("a"), d.device ? jsonValue(*d.parameter, *d.device) : QJsonValue()},
+            {QStringLiteral("b"), d.profile ? jsonValue(*d.parameter, *d.profile) : QJsonValue()}});
+    m_result = QJsonObject{{QStringLiteral("same"), c.identical()},
+                           {QStringLiteral("differences"), rows},
+                           {QStringLiteral("only_in_a"), int(onlyA.size())},
+                           {QStringLiteral("only_in_b"), int(onlyB.size())},
+                           {QStringLiteral("outside_map"), int(foreign.size())}};
     if (c.identical()) {
         m_out << tr("the two profiles hold the same values") << Qt::endl;
         finish(0);
@@ -337,18 +362,21 @@ void CtlRunner::confirmThenApply(const QList<ParameterWrite> &writes)
         applyWrites(writes);
         return;
     }
-    if (isMulti()) {
+    if (isMulti() || isEnveloped()) {
         // With several ids the output is keyed by id at the end; what the question is about
         // must be seen before it is answered (on standard error with --json, which stays JSON).
         m_out.flush();
         QTextStream console(m_options.json ? stderr : stdout);
-        console << tr("== device id %1 ==").arg(m_options.ids.at(m_idIndex)) << Qt::endl
-                << m_buffer
+        if (isMulti())
+            console << tr("== device id %1 ==").arg(m_options.ids.at(m_idIndex)) << Qt::endl;
+        console << m_buffer
                 << tr("Write these %n value(s) to id %1? [y/N] ", nullptr, int(writes.size()))
                        .arg(m_options.ids.at(m_idIndex))
                 << Qt::flush;
-        m_buffer.clear();
-        m_out.setString(&m_buffer);
+        if (isMulti()) { // shown now; one id's messages stay in its JSON object
+            m_buffer.clear();
+            m_out.setString(&m_buffer);
+        }
     } else {
         m_out << tr("Write these %n value(s) to the controller? [y/N] ", nullptr,
                     int(writes.size()))
@@ -401,21 +429,7 @@ void CtlRunner::applyWrites(const QList<ParameterWrite> &writes)
     if (!backupBeforeApply())
         return;
     m_session->write(writes, [this, writes](const WriteOutcome &w) {
-        for (const ParameterWrite &pw : writes) {
-            const bool verified =
-                w.written.contains(pw.parameter->key) &&
-                std::none_of(w.mismatches.cbegin(), w.mismatches.cend(),
-                             [&](const WriteMismatch &m) { return m.key == pw.parameter->key; });
-            if (verified)
-                m_out << pw.parameter->key << QStringLiteral(" = ")
-                      << valueText(*pw.parameter, pw.raw) << QStringLiteral("  ")
-                      << tr("(written, verified)") << Qt::endl;
-        }
-        for (const QString &e : w.errors)
-            m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-        if (!w.notWritten.isEmpty())
-            m_err << QStringLiteral("stepcomctl: ")
-                  << tr("not written: %1").arg(w.notWritten.join(QLatin1String(", "))) << Qt::endl;
+        reportWritten(writes, w);
         if (!w.ok) {
             finish(DeviceError);
             return;

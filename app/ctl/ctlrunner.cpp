@@ -53,13 +53,6 @@ QString commandName(CommandClass c)
     return {};
 }
 
-QJsonValue engineering(const Parameter &p, qint64 raw)
-{
-    if (p.scale == 1)
-        return QJsonValue(double(raw));
-    return QJsonValue(p.formatRaw(raw).toDouble());
-}
-
 } // namespace
 
 CtlRunner::CtlRunner(const CtlOptions &options, const RegisterMap &map, QObject *parent)
@@ -159,6 +152,13 @@ const QList<CtlCommand> &CtlRunner::commands()
     return table;
 }
 
+QJsonValue CtlRunner::jsonValue(const Parameter &p, qint64 raw)
+{
+    if (p.scale == 1)
+        return QJsonValue(double(raw));
+    return QJsonValue(p.formatRaw(raw).toDouble());
+}
+
 QString CtlRunner::unknownCommandMessage(const QString &name)
 {
     QStringList names;
@@ -184,6 +184,10 @@ void CtlRunner::start()
     }
     if (chosen) {
         m_chosen = chosen;
+        if (isEnveloped() && !isPerId()) {
+            m_out.setString(&m_buffer); // kept for the JSON object at the end
+            m_err.setString(&m_errBuffer);
+        }
         if (isPerId())
             startMulti();
         else
@@ -208,6 +212,8 @@ void CtlRunner::finish(int code)
             return;
         code = worstCode();
         printMulti();
+    } else if (isEnveloped()) {
+        printEnvelope(code);
     }
     m_finished = true;
     // The line's health and the timeout it suggests, for whoever tunes the link (monitor runs
@@ -259,8 +265,10 @@ void CtlRunner::connectThen(std::function<void()> next)
     if (isMulti())
         m_session->setDeviceIds(m_options.ids);
     if (m_options.verbose) {
-        connect(m_session->traffic(), &TrafficLog::entryAdded, this,
-                [this](const TrafficEntry &e) { m_err << TrafficLog::format(e) << Qt::endl; });
+        connect(m_session->traffic(), &TrafficLog::entryAdded, this, [](const TrafficEntry &e) {
+            // Straight to standard error: never one of the JSON object's errors.
+            QTextStream(stderr) << TrafficLog::format(e) << Qt::endl;
+        });
     }
     // Only the first opening runs the command: a write of device.baud reopens the link at the
     // new baud, and that must not start the command a second time.
@@ -314,8 +322,8 @@ void CtlRunner::runParams()
                           {QStringLiteral("label_zh_CN"), p.label.zh},
                           {QStringLiteral("help"), p.help.en}};
             if (p.isHolding()) {
-                o.insert(QStringLiteral("min"), engineering(p, p.rawMin));
-                o.insert(QStringLiteral("max"), engineering(p, p.rawMax));
+                o.insert(QStringLiteral("min"), jsonValue(p, p.rawMin));
+                o.insert(QStringLiteral("max"), jsonValue(p, p.rawMax));
                 if (!p.values.isEmpty()) {
                     QJsonArray values;
                     for (const EnumValue &v : p.values)
@@ -369,7 +377,7 @@ void CtlRunner::runRead()
                 QJsonObject o;
                 for (const Parameter *p : params) {
                     if (r.values.contains(p->key))
-                        o.insert(p->key, engineering(*p, r.values.value(p->key)));
+                        o.insert(p->key, jsonValue(*p, r.values.value(p->key)));
                 }
                 m_out << QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Indented));
             } else {
@@ -431,6 +439,10 @@ void CtlRunner::runCommand()
                     fail(DeviceError, r.errorText);
                     return;
                 }
+                m_result = QJsonObject{{QStringLiteral("command"), p->key},
+                                       {QStringLiteral("state"), p->command == CommandClass::Motion
+                                                                     ? QStringLiteral("sent")
+                                                                     : QStringLiteral("done")}};
                 // A moving command is only acknowledged: its end is known with --wait.
                 m_out << (p->command == CommandClass::Motion
                               ? tr("%1: sent (add --wait to wait for how it ends)").arg(p->key)

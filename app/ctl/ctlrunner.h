@@ -4,6 +4,7 @@
 #include "map/registermap.h"
 #include "session/devicesession.h"
 
+#include <QJsonObject>
 #include <QObject>
 #include <QTextStream>
 
@@ -62,6 +63,9 @@ private:
     void runRead();
     void runWrite();
     void writeThenReport(const QList<ParameterWrite> &writes);
+    // Prints each value written and verified, and what was not, into the output and the JSON
+    // result ("written", "not_written"); write and apply.
+    void reportWritten(const QList<ParameterWrite> &writes, const WriteOutcome &w);
     // The window's review of `writes` (WriteReview), on what the controller holds: its
     // questions printed; without --yes nothing is written (exit 2), else `next`.
     void reviewThen(const QList<ParameterWrite> &writes, std::function<void()> next);
@@ -129,6 +133,15 @@ private:
     void runForCurrentId();
     void printMulti();
     int worstCode() const;
+    // --json for a command without JSON of its own (write, command, diff, apply, dump,
+    // assign-id, report, bundle): what it prints is kept and one object ends the run, as each
+    // id's member does with several ids: exit, result (m_result), errors, messages (ctlbus.cpp).
+    bool isEnveloped() const;
+    QJsonObject envelope(int code, const QString &out, const QStringList &errors,
+                         const QJsonObject &result) const;
+    void printEnvelope(int code);
+    // A value in engineering units as JSON: a number.
+    static QJsonValue jsonValue(const Parameter &p, qint64 raw);
     void fail(int code, const QString &message);
     void finish(int code);
     QString valueText(const Parameter &p, qint64 raw) const;
@@ -150,8 +163,10 @@ private:
     QString m_buffer;        // the current id's output
     QString m_errBuffer;     // the current id's messages, printed prefixed with its id
     QList<QStringList> m_idErrors;
-    QString m_multiArgument; // dump: the path asked for, suffixed per id
-    QString m_dumpFolder;    // dump: the folder asked for, one file per id inside
+    QJsonObject m_result;           // --json: what the current run came to
+    QList<QJsonObject> m_idResults; // each id's
+    QString m_multiArgument;        // dump: the path asked for, suffixed per id
+    QString m_dumpFolder;           // dump: the folder asked for, one file per id inside
 };
 
 } // namespace stepcom

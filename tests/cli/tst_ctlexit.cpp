@@ -5,6 +5,8 @@
 #include "testpaths.h"
 
 #include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
@@ -49,6 +51,16 @@ private Q_SLOTS:
         profile = dir.filePath(QStringLiteral("machine.json"));
         const ProgramRun r = ctl({QStringLiteral("--sim"), QStringLiteral("dump"), profile});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        // A profile the built-in controller does not hold: diff says "different", apply writes.
+        QFile f(profile);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QJsonObject o = QJsonDocument::fromJson(f.readAll()).object();
+        f.close();
+        QJsonObject values = o.value(QStringLiteral("values")).toObject();
+        values.insert(QStringLiteral("motor1.speed"), 123);
+        o.insert(QStringLiteral("values"), values);
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(QJsonDocument(o).toJson());
     }
 
     void failuresEndWithTheTablesCode_data()
@@ -60,8 +72,8 @@ private Q_SLOTS:
         QTest::newRow("params") << QStringList{"params"} << 0 << "success";
         QTest::newRow("read dead") << QStringList{"read"} << 1 << "link or device error";
         QTest::newRow("read unknown") << QStringList{"read", "nope"} << 2 << "usage";
-        QTest::newRow("write dead") << QStringList{"write", "motor1.speed=300"} << 1
-                                    << "link or device error";
+        QTest::newRow("write dead")
+            << QStringList{"write", "motor1.speed=300"} << 1 << "link or device error";
         QTest::newRow("write bad") << QStringList{"write", "motor1.speed=x"} << 2 << "validation";
         QTest::newRow("command dead") << QStringList{"command", "estop"} << 1 << "link";
         QTest::newRow("command unknown") << QStringList{"command", "nope"} << 2 << "usage";
@@ -70,18 +82,17 @@ private Q_SLOTS:
         QTest::newRow("move dead") << QStringList{"move", "motor1", "--by", "1"} << 1 << "link";
         QTest::newRow("move bad") << QStringList{"move", "motor9", "--by", "1"} << 2 << "usage";
         QTest::newRow("monitor dead") << QStringList{"monitor", "--count", "1"} << 1 << "link";
-        QTest::newRow("dump dead") << QStringList{"dump", dir.filePath(QStringLiteral("x.json"))}
-                                   << 1 << "link";
+        QTest::newRow("dump dead")
+            << QStringList{"dump", dir.filePath(QStringLiteral("x.json"))} << 1 << "link";
         QTest::newRow("diff dead") << QStringList{"diff", profile} << 3 << "diff";
         QTest::newRow("diff missing") << QStringList{"diff", missing} << 2 << "bad";
         QTest::newRow("apply dead") << QStringList{"apply", profile, "--yes"} << 1 << "link";
         QTest::newRow("apply missing") << QStringList{"apply", missing} << 2 << "bad";
         QTest::newRow("assign-id dead") << QStringList{"assign-id", "--to", "2"} << 1 << "link";
         QTest::newRow("scan dead") << QStringList{"scan", "--ids", "1-2"} << 3 << "scan";
-        QTest::newRow("report dead") << QStringList{"report", dir.filePath(QStringLiteral("r.pdf"))}
-                                     << 1 << "link";
-        QTest::newRow("replay missing") << QStringList{"replay", missing, "--events"} << 2
-                                        << "bad";
+        QTest::newRow("report dead")
+            << QStringList{"report", dir.filePath(QStringLiteral("r.pdf"))} << 1 << "link";
+        QTest::newRow("replay missing") << QStringList{"replay", missing, "--events"} << 2 << "bad";
         QTest::newRow("unknown command") << QStringList{"frobnicate"} << 2 << "usage";
     }
     void failuresEndWithTheTablesCode()
@@ -96,7 +107,8 @@ private Q_SLOTS:
         const QStringList dead{QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:1"),
                                QStringLiteral("--timeout"), QStringLiteral("200")};
         const ProgramRun r = ctl(dead + args);
-        QVERIFY2(r.exitCode == code, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.exitCode == code,
+                 qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
     }
 
     void aBackupThatCannotBeSavedIsNotAUsageError()
@@ -115,6 +127,52 @@ private Q_SLOTS:
         QVERIFY2(r.err.contains(QStringLiteral("no backup")), qPrintable(r.err));
     }
 
+    void jsonForEveryCommand_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<int>("code");
+        QTest::newRow("write") << QStringList{"write", "motor1.speed=250"} << 0;
+        QTest::newRow("write asked") << QStringList{"write", "mode.system=4"} << 2;
+        QTest::newRow("command") << QStringList{"command", "output1_on"} << 0;
+        // The built-in controller's speed differs from the profile's: diff says 1.
+        QTest::newRow("diff") << QStringList{"diff", QStringLiteral("PROFILE")} << 1;
+        QTest::newRow("apply") << QStringList{"--yes", "--no-backup", "apply", "PROFILE"} << 0;
+        QTest::newRow("dump") << QStringList{"dump", "DUMP"} << 0;
+    }
+    void jsonForEveryCommand()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(int, code);
+        args.replaceInStrings(QStringLiteral("PROFILE"), profile);
+        args.replaceInStrings(QStringLiteral("DUMP"), dir.filePath(QStringLiteral("d.json")));
+        // One id, and two: the same object, alone or as each id's member.
+        for (const QString &ids : {QStringLiteral("1"), QStringLiteral("1-2")}) {
+            // write takes one id; dump's files per id are checked in tst_ctlbus.
+            if (ids != QLatin1String("1") &&
+                (args.contains(QStringLiteral("write")) || args.contains(QStringLiteral("dump"))))
+                continue;
+            QStringList line{QStringLiteral("--sim"), QStringLiteral("--id"), ids,
+                             QStringLiteral("--json")};
+            const ProgramRun r = ctl(line + args);
+            const QJsonDocument doc = QJsonDocument::fromJson(r.out.toUtf8());
+            QVERIFY2(doc.isObject(), qPrintable(r.out + r.err));
+            QList<QJsonObject> runs;
+            if (ids == QLatin1String("1")) {
+                runs << doc.object();
+            } else {
+                runs << doc.object().value(QStringLiteral("1")).toObject()
+                     << doc.object().value(QStringLiteral("2")).toObject();
+            }
+            for (const QJsonObject &o : std::as_const(runs)) {
+                QVERIFY2(o.value(QStringLiteral("result")).isObject(), qPrintable(r.out));
+                QVERIFY(o.value(QStringLiteral("errors")).isArray());
+                QVERIFY(!o.contains(QStringLiteral("output")));
+                QCOMPARE(o.value(QStringLiteral("exit")).toInt(-1), code);
+            }
+            QCOMPARE(r.exitCode, code);
+        }
+    }
+
     void theManPageHasTheTable()
     {
         // help2man puts --help in the page; its EXIT STATUS section is written by hand.
@@ -131,10 +189,14 @@ private Q_SLOTS:
     {
         QTest::addColumn<QString>("command");
         QTest::addColumn<QString>("usage");
-        QTest::newRow("read") << "read" << "stepcomctl read [KEY...]";
-        QTest::newRow("move") << "move" << "stepcomctl move MOTOR --by D|--to X";
-        QTest::newRow("diff") << "diff" << "stepcomctl diff A.json B.json";
-        QTest::newRow("command") << "command" << "stepcomctl command NAME --wait";
+        QTest::newRow("read") << "read"
+                              << "stepcomctl read [KEY...]";
+        QTest::newRow("move") << "move"
+                              << "stepcomctl move MOTOR --by D|--to X";
+        QTest::newRow("diff") << "diff"
+                              << "stepcomctl diff A.json B.json";
+        QTest::newRow("command") << "command"
+                                 << "stepcomctl command NAME --wait";
     }
     void oneCommandsHelp()
     {
@@ -166,8 +228,7 @@ private Q_SLOTS:
             const qsizetype at = r.out.indexOf(QLatin1String(usage));
             QVERIFY2(at > 0, usage);
             const qsizetype end = at + qsizetype(qstrlen(usage));
-            QVERIFY2(r.out.mid(end, 2) == QStringLiteral("  "),
-                     qPrintable(r.out.mid(at, 80)));
+            QVERIFY2(r.out.mid(end, 2) == QStringLiteral("  "), qPrintable(r.out.mid(at, 80)));
         }
     }
 };

@@ -4,6 +4,8 @@
 
 #include "device/writereview.h"
 
+#include <QJsonArray>
+
 namespace stepcom {
 
 void CtlRunner::runWrite()
@@ -81,6 +83,8 @@ void CtlRunner::reviewThen(const QList<ParameterWrite> &writes, std::function<vo
             writes);
         for (const QString &p : problems)
             m_err << QStringLiteral("stepcomctl: ") << tr("check: %1").arg(p) << Qt::endl;
+        if (!problems.isEmpty())
+            m_result.insert(QStringLiteral("questions"), QJsonArray::fromStringList(problems));
         if (!problems.isEmpty() && !m_options.yes) {
             fail(UsageError, tr("nothing was written: the window asks before writing these "
                                 "values; add --yes to write them anyway"));
@@ -111,21 +115,7 @@ void CtlRunner::reviewThen(const QList<ParameterWrite> &writes, std::function<vo
 void CtlRunner::writeThenReport(const QList<ParameterWrite> &writes)
 {
     m_session->write(writes, [this, writes](const WriteOutcome &w) {
-        for (const ParameterWrite &pw : writes) {
-            const bool verified =
-                w.written.contains(pw.parameter->key) &&
-                std::none_of(w.mismatches.cbegin(), w.mismatches.cend(),
-                             [&](const WriteMismatch &m) { return m.key == pw.parameter->key; });
-            if (verified)
-                m_out << pw.parameter->key << QStringLiteral(" = ")
-                      << valueText(*pw.parameter, pw.raw) << QStringLiteral("  ")
-                      << tr("(written, verified)") << Qt::endl;
-        }
-        for (const QString &e : w.errors)
-            m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-        if (!w.notWritten.isEmpty())
-            m_err << QStringLiteral("stepcomctl: ")
-                  << tr("not written: %1").arg(w.notWritten.join(QLatin1String(", "))) << Qt::endl;
+        reportWritten(writes, w);
         if (!w.ok) {
             finish(DeviceError);
             return;
@@ -136,6 +126,29 @@ void CtlRunner::writeThenReport(const QList<ParameterWrite> &writes)
         }
         saveToFlashThenFinish();
     });
+}
+
+void CtlRunner::reportWritten(const QList<ParameterWrite> &writes, const WriteOutcome &w)
+{
+    QJsonObject written;
+    for (const ParameterWrite &pw : writes) {
+        const bool verified =
+            w.written.contains(pw.parameter->key) &&
+            std::none_of(w.mismatches.cbegin(), w.mismatches.cend(),
+                         [&](const WriteMismatch &m) { return m.key == pw.parameter->key; });
+        if (!verified)
+            continue;
+        written.insert(pw.parameter->key, jsonValue(*pw.parameter, pw.raw));
+        m_out << pw.parameter->key << QStringLiteral(" = ") << valueText(*pw.parameter, pw.raw)
+              << QStringLiteral("  ") << tr("(written, verified)") << Qt::endl;
+    }
+    m_result.insert(QStringLiteral("written"), written);
+    m_result.insert(QStringLiteral("not_written"), QJsonArray::fromStringList(w.notWritten));
+    for (const QString &e : w.errors)
+        m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+    if (!w.notWritten.isEmpty())
+        m_err << QStringLiteral("stepcomctl: ")
+              << tr("not written: %1").arg(w.notWritten.join(QLatin1String(", "))) << Qt::endl;
 }
 
 } // namespace stepcom
