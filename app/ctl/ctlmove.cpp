@@ -8,6 +8,8 @@
 #include <QJsonObject>
 #include <QRegularExpression>
 
+#include <cmath>
+
 namespace stepcom {
 
 void CtlRunner::backupThen(DeviceSession::Risk risk, std::function<void()> next)
@@ -59,6 +61,20 @@ void CtlRunner::runMove()
                  .arg(m_options.by.isEmpty() ? QStringLiteral("--to") : QStringLiteral("--by"),
                       text));
         return;
+    }
+    // As write refuses a third decimal: a step the axis cannot count is not rounded silently.
+    const QString option = m_options.by.isEmpty() ? QStringLiteral("--to") : QStringLiteral("--by");
+    if (const Parameter *pos =
+            m_map.blockParameter(QStringLiteral("motor"), motor, QStringLiteral("position"))) {
+        const double counts = value * double(pos->scale);
+        if (std::abs(counts - std::round(counts)) > 1e-6) {
+            fail(UsageError, tr("%1: %2 has more decimals than motor %3 counts in (steps of %4 "
+                                "%5): nothing was moved")
+                                 .arg(option, text)
+                                 .arg(motor)
+                                 .arg(pos->formatRaw(1), pos->unit));
+            return;
+        }
     }
     StepMoveRequest request;
     request.kind = m_options.by.isEmpty() ? StepMoveRequest::Kind::To : StepMoveRequest::Kind::By;

@@ -24,7 +24,7 @@ bool CtlRunner::loadProfile(const QString &path, Profile *out)
     // this map knows; the commands list the rest before they act.
     const ProfileParseResult r = ProfileFile::load(path, m_map, ProfileFile::OtherMaps::Accept);
     if (!r.ok()) {
-        for (const QString &e : r.errors)
+        for (const QString &e : condensed(r.errors))
             m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
         return false;
     }
@@ -97,7 +97,7 @@ void CtlRunner::runDump()
             m_session->read(Profile::profileParameters(m_map, true),
                             [this, path](const ReadOutcome &r) {
                                 if (!r.ok) {
-                                    for (const QString &e : r.errors)
+                                    for (const QString &e : condensed(r.errors))
                                         m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                                     fail(DeviceError, tr("nothing was saved: the controller "
                                                          "could not be read completely"));
@@ -112,7 +112,7 @@ void CtlRunner::runDump()
         m_session->read(Profile::profileParameters(m_map, true), [this,
                                                                   path](const ReadOutcome &r) {
             if (!r.ok) {
-                for (const QString &e : r.errors)
+                for (const QString &e : condensed(r.errors))
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                 fail(DeviceError, tr("nothing was saved: the controller could "
                                      "not be read completely"));
@@ -159,7 +159,7 @@ void CtlRunner::runDiff()
         m_session->read(
             Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
                 if (!r.ok) {
-                    for (const QString &e : r.errors)
+                    for (const QString &e : condensed(r.errors))
                         m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                     finish(m_linkError);
                     return;
@@ -301,7 +301,7 @@ void CtlRunner::runApply()
         m_session->read(
             Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
                 if (!r.ok) {
-                    for (const QString &e : r.errors)
+                    for (const QString &e : condensed(r.errors))
                         m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                     fail(DeviceError, tr("nothing was written"));
                     return;
@@ -483,7 +483,7 @@ void CtlRunner::runReport()
     connectThen([this, path] {
         m_session->readAll([this, path](const ReadOutcome &r) {
             if (!r.ok) {
-                for (const QString &e : r.errors)
+                for (const QString &e : condensed(r.errors))
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                 fail(DeviceError, tr("no report: the controller could not be read completely"));
                 return;

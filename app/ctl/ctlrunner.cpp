@@ -159,6 +159,30 @@ QJsonValue CtlRunner::jsonValue(const Parameter &p, qint64 raw)
     return QJsonValue(p.formatRaw(raw).toDouble());
 }
 
+QStringList CtlRunner::condensed(const QStringList &errors)
+{
+    QStringList out;
+    QList<int> more;
+    QHash<QString, qsizetype> first; // the answer after "read block n/m [address]: "
+    for (const QString &e : errors) {
+        const qsizetype at = e.indexOf(QLatin1String("]: "));
+        const QString answer = at < 0 ? e : e.mid(at + 3);
+        if (const auto it = first.constFind(answer); it != first.cend()) {
+            ++more[*it];
+            continue;
+        }
+        first.insert(answer, out.size());
+        out << e;
+        more << 0;
+    }
+    for (qsizetype i = 0; i < out.size(); ++i) {
+        if (more.at(i) > 0)
+            out[i] += QLatin1Char(' ') +
+                      tr("(the same for %n more read(s) of this command)", nullptr, more.at(i));
+    }
+    return out;
+}
+
 QString CtlRunner::unknownCommandMessage(const QString &name)
 {
     QStringList names;
@@ -391,7 +415,7 @@ void CtlRunner::runRead()
                 m_err << QStringLiteral("stepcomctl: ")
                       << tr("%1 is not supported by this controller").arg(key) << Qt::endl;
             if (!r.ok) {
-                for (const QString &e : r.errors)
+                for (const QString &e : condensed(r.errors))
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                 finish(DeviceError);
                 return;

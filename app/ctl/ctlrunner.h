@@ -140,6 +140,9 @@ private:
     QJsonObject envelope(int code, const QString &out, const QStringList &errors,
                          const QJsonObject &result) const;
     void printEnvelope(int code);
+    // The errors of one read, each answer said once: on a dead line every block of the read
+    // gets the same "no answer", which is said for the first with how many more had it.
+    static QStringList condensed(const QStringList &errors);
     // A value in engineering units as JSON: a number.
     static QJsonValue jsonValue(const Parameter &p, qint64 raw);
     void fail(int code, const QString &message);

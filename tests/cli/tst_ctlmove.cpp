@@ -104,6 +104,13 @@ private Q_SLOTS:
                               << "exactly one of --by D and --to X";
         QTest::newRow("neither") << QStringList{"move", "motor1"}
                                  << "exactly one of --by D and --to X";
+        // As write: a third decimal is refused, not rounded or taken for nothing to move.
+        QTest::newRow("three decimals")
+            << QStringList{"move", "motor1", "--by", "0.015"} << "--by: 0.015 has more decimals";
+        QTest::newRow("too small")
+            << QStringList{"move", "motor1", "--by", "0.001"} << "--by: 0.001 has more decimals";
+        QTest::newRow("to, three decimals")
+            << QStringList{"move", "motor1", "--to", "1.234"} << "--to: 1.234 has more decimals";
         QTest::newRow("not a number")
             << QStringList{"move", "motor1", "--by", "ten"} << "--by: 'ten' is not a number";
     }

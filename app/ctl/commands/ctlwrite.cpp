@@ -102,7 +102,7 @@ void CtlRunner::reviewThen(const QList<ParameterWrite> &writes, std::function<vo
     }
     m_session->read(params, [this, judge](const ReadOutcome &r) {
         if (!r.ok) {
-            for (const QString &e : r.errors)
+            for (const QString &e : condensed(r.errors))
                 m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
             fail(DeviceError, tr("what the values are checked against could not be read: "
                                  "nothing was written"));
