@@ -62,7 +62,8 @@ QString CtlRunner::commandsHelp()
     QList<std::pair<QString, QString>> rows;
     for (const CtlCommand &c : commands())
         rows.append({QLatin1String(c.usage), translated(c.help)});
-    return translated("Commands:") + QLatin1Char('\n') + columns(rows);
+    return translated(QT_TRANSLATE_NOOP("stepcomctl", "Commands:")) + QLatin1Char('\n') +
+           columns(rows);
 }
 
 QString CtlRunner::exitCodesHelp()
@@ -70,7 +71,8 @@ QString CtlRunner::exitCodesHelp()
     QList<std::pair<QString, QString>> rows;
     for (const ExitCodeRow &r : kExitCodes)
         rows.append({QString::number(r.code), translated(r.meaning)});
-    return translated("Exit codes (every command):") + QLatin1Char('\n') + columns(rows);
+    return translated(QT_TRANSLATE_NOOP("stepcomctl", "Exit codes (every command):")) +
+           QLatin1Char('\n') + columns(rows);
 }
 
 QString CtlRunner::commandHelp(const QString &name)
@@ -83,9 +85,11 @@ QString CtlRunner::commandHelp(const QString &name)
     }
     if (rows.isEmpty())
         return {};
-    QString text = translated("Usage:") + QLatin1Char('\n') + columns(rows) + QLatin1Char('\n');
-    text +=
-        translated("The link and the other options: stepcomctl --help") + QStringLiteral("\n\n");
+    QString text = translated(QT_TRANSLATE_NOOP("stepcomctl", "Usage:")) + QLatin1Char('\n') +
+                   columns(rows) + QLatin1Char('\n');
+    text += translated(QT_TRANSLATE_NOOP("stepcomctl",
+                                         "The link and the other options: stepcomctl --help")) +
+            QStringLiteral("\n\n");
     return text + exitCodesHelp();
 }
 

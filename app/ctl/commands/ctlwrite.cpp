@@ -1,6 +1,6 @@
 // stepcomctl write: parsed and checked, reviewed as the window reviews it (WriteReview), then
 // written and verified: a part of CtlRunner.
-#include "ctlrunner.h"
+#include "../ctlrunner.h"
 
 #include "device/writereview.h"
 
