@@ -164,7 +164,7 @@ private Q_SLOTS:
         const Run r = ctl({QStringLiteral("read")});
         QCOMPARE(r.exitCode, 1);
         QCOMPARE(r.err.count(QStringLiteral("no answer within 200 ms")), 1);
-        QVERIFY2(r.err.contains(QStringLiteral("(the same for 4 more read(s) of this command)")),
+        QVERIFY2(r.err.contains(QStringLiteral("(the same for 4 more reads of this command)")),
                  qPrintable(r.err));
     }
 
