@@ -5318,10 +5318,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>IN%1: %2</translation>
     </message>
     <message>
-        <source>The limit settings are ignored in this mode.</source>
-        <translation>The limit settings are ignored in this mode.</translation>
-    </message>
-    <message>
         <source>Change the system mode</source>
         <translation>Change the system mode</translation>
     </message>

@@ -5288,10 +5288,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>IN%1：%2</translation>
     </message>
     <message>
-        <source>The limit settings are ignored in this mode.</source>
-        <translation>此模式下限位设置无效。</translation>
-    </message>
-    <message>
         <source>Change the system mode</source>
         <translation>更改系统模式</translation>
     </message>

@@ -60,17 +60,14 @@ private Q_SLOTS:
         QTest::addColumn<Values>("values");
         QTest::addColumn<QString>("question"); // empty: nothing to ask
         QTest::newRow("home on the positive limit")
-            << Values{{u"motor1.home_input"_s, 1}}
-            << u"the home input IN1 is the positive limit"_s;
+            << Values{{u"motor1.home_input"_s, 1}} << u"the home input IN1 is the positive limit"_s;
         QTest::newRow("mode 4") << Values{{u"mode.system"_s, 4}}
                                 << u"System mode 4 “Hold-to-jog” changes what the inputs IN1-IN4 "
                                    "do, at once, and ignores the limit settings"_s;
-        QTest::newRow("mode 1") << Values{{u"mode.system"_s, 1}}
-                                << u"System mode 1"_s;
+        QTest::newRow("mode 1") << Values{{u"mode.system"_s, 1}} << u"System mode 1"_s;
         QTest::newRow("mode kept") << Values{{u"mode.system"_s, 0}} << QString();
         QTest::newRow("arc starting at its centre")
-            << Values{{u"arc.start_x"_s, 1000}, {u"arc.start_y"_s, 0}}
-            << u"Arc: "_s;
+            << Values{{u"arc.start_x"_s, 1000}, {u"arc.start_y"_s, 0}} << u"Arc: "_s;
         QTest::newRow("a speed") << Values{{u"motor1.speed"_s, 250}} << QString();
         QTest::newRow("home on the negative limit")
             << Values{{u"motor1.home_input"_s, 2}} << QString();

@@ -243,8 +243,10 @@ void ModesPage::confirmMode(int mode)
     for (int i = 0; i < 4; ++i)
         inputs += tr("IN%1: %2").arg(i + 1).arg(tr(kModes[mode].inputs[i])) + QLatin1Char('\n');
     QString details = tr(kModes[mode].explanation) + QStringLiteral("\n\n") + inputs;
-    if (WriteReview::modeIgnoresLimits(mode))
-        details += QLatin1Char('\n') + tr("The limit settings are ignored in this mode.");
+    // What stepcomctl prints before the same write: one review (core/device/writereview).
+    const QStringList review = WriteReview::problems(*session()->parameters(), {{p, mode}});
+    if (!review.isEmpty())
+        details += QLatin1Char('\n') + review.join(QLatin1Char('\n'));
     auto *box = new QMessageBox(
         QMessageBox::Warning, tr("Change the system mode"),
         tr("Change the controller to mode %1 “%2”? This changes what the machine's inputs "
