@@ -321,6 +321,7 @@ void CtlRunner::runApply()
                     keys << d.parameter->key;
                     m_out << tr("will write %1").arg(ProfileDiff::describe(d)) << Qt::endl;
                 }
+                m_result.insert(QStringLiteral("to_write"), QJsonArray::fromStringList(keys));
                 // Said before asking, and with --yes too: what of the profile is not applied.
                 printLeftOut(applied, tr("not applied:"));
                 QStringList errors;
@@ -370,8 +371,11 @@ void CtlRunner::confirmThenApply(const QList<ParameterWrite> &writes)
         if (isMulti())
             console << tr("== device id %1 ==").arg(m_options.ids.at(m_idIndex)) << Qt::endl;
         console << m_buffer
-                << tr("Write these %n value(s) to id %1? [y/N] ", nullptr, int(writes.size()))
-                       .arg(m_options.ids.at(m_idIndex))
+                << (isMulti() ? tr("Write these %n value(s) to id %1? [y/N] ", nullptr,
+                                   int(writes.size()))
+                                    .arg(m_options.ids.at(m_idIndex))
+                              : tr("Write these %n value(s) to the controller? [y/N] ", nullptr,
+                                   int(writes.size())))
                 << Qt::flush;
         if (isMulti()) { // shown now; one id's messages stay in its JSON object
             m_buffer.clear();
