@@ -2696,6 +2696,29 @@
         <source>no machine report: no controller was read (--port, --tcp or --sim) and no profile was given (--profile)</source>
         <translation>no machine report: no controller was read (--port, --tcp or --sim) and no profile was given (--profile)</translation>
     </message>
+    <message>
+        <source>check: %1</source>
+        <translation>check: %1</translation>
+    </message>
+    <message>
+        <source>nothing was written: the window asks before writing these values; add --yes to write them anyway</source>
+        <translation>nothing was written: the window asks before writing these values; add --yes to write them anyway</translation>
+    </message>
+    <message>
+        <source>what the values are checked against could not be read: nothing was written</source>
+        <translation>what the values are checked against could not be read: nothing was written</translation>
+    </message>
+    <message>
+        <source>%1: %2 has more decimals than motor %3 counts in (steps of %4 %5): nothing was moved</source>
+        <translation>%1: %2 has more decimals than motor %3 counts in (steps of %4 %5): nothing was moved</translation>
+    </message>
+    <message numerus="yes">
+        <source>(the same for %n more read(s) of this command)</source>
+        <translation>
+            <numerusform>(the same for %n more read of this command)</numerusform>
+            <numerusform>(the same for %n more reads of this command)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlScan</name>
@@ -5305,10 +5328,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>IN%1: %2</source>
         <translation>IN%1: %2</translation>
-    </message>
-    <message>
-        <source>The limit settings are ignored in this mode.</source>
-        <translation>The limit settings are ignored in this mode.</translation>
     </message>
     <message>
         <source>Change the system mode</source>
@@ -8978,6 +8997,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Line: %1</source>
         <translation>Line: %1</translation>
     </message>
+    <message>
+        <source>System mode %1 “%2” changes what the inputs IN1-IN4 do, at once, and ignores the limit settings: no limit input stops a motor then.</source>
+        <translation>System mode %1 “%2” changes what the inputs IN1-IN4 do, at once, and ignores the limit settings: no limit input stops a motor then.</translation>
+    </message>
+    <message>
+        <source>System mode %1 “%2” changes what the inputs IN1-IN4 do, at once.</source>
+        <translation>System mode %1 “%2” changes what the inputs IN1-IN4 do, at once.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::XYPlot</name>
@@ -9048,22 +9075,12 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>pulse a command coil (e.g. motor1.stop, estop)</translation>
     </message>
     <message>
-        <source>compare the controller with a profile; exit 0 same,
-1 different, 2 bad file, 3 link or device error</source>
-        <translation>compare the controller with a profile; exit 0 same,
-1 different, 2 bad file, 3 link or device error</translation>
-    </message>
-    <message>
         <source>Commands:</source>
         <translation>Commands:</translation>
     </message>
     <message>
         <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</source>
         <translation>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</translation>
-    </message>
-    <message>
-        <source>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</translation>
     </message>
     <message>
         <source>compare two profiles, no controller needed; exit 0
@@ -9166,6 +9183,58 @@ profile, and of the controllers given with --port,
 and serial adapters, the machine report (of the
 profile, and of the controllers given with --port,
 --tcp or --sim and --id), with a README inside</translation>
+    </message>
+    <message>
+        <source>success: done, written and verified; diff: the same;
+scan: found; move, command --wait: arrived</source>
+        <translation>success: done, written and verified; diff: the same;
+scan: found; move, command --wait: arrived</translation>
+    </message>
+    <message>
+        <source>not done: a link or device error, a value not
+verified, a file or backup that could not be
+written; diff: different; scan: none found; move,
+command --wait: stopped elsewhere or not known</source>
+        <translation>not done: a link or device error, a value not
+verified, a file or backup that could not be
+written; diff: different; scan: none found; move,
+command --wait: stopped elsewhere or not known</translation>
+    </message>
+    <message>
+        <source>nothing was done: a usage or validation error, a bad
+file, a write the window asks about without --yes,
+an apply not confirmed</source>
+        <translation>nothing was done: a usage or validation error, a bad
+file, a write the window asks about without --yes,
+an apply not confirmed</translation>
+    </message>
+    <message>
+        <source>diff, scan: a link or device error (their 1 is an
+answer)</source>
+        <translation>diff, scan: a link or device error (their 1 is an
+answer)</translation>
+    </message>
+    <message>
+        <source>Exit codes (every command):</source>
+        <translation>Exit codes (every command):</translation>
+    </message>
+    <message>
+        <source>Usage:</source>
+        <translation>Usage:</translation>
+    </message>
+    <message>
+        <source>The link and the other options: stepcomctl --help</source>
+        <translation>The link and the other options: stepcomctl --help</translation>
+    </message>
+    <message>
+        <source>compare the controller with a profile (exit 0 the
+same, 1 different, 3 link or device error)</source>
+        <translation>compare the controller with a profile (exit 0 the
+same, 1 different, 3 link or device error)</translation>
+    </message>
+    <message>
+        <source>One command&apos;s help: stepcomctl NAME --help</source>
+        <translation>One command&apos;s help: stepcomctl NAME --help</translation>
     </message>
 </context>
 </TS>

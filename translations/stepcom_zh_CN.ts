@@ -2679,6 +2679,28 @@
         <source>no machine report: no controller was read (--port, --tcp or --sim) and no profile was given (--profile)</source>
         <translation>无整机报告：未读取任何控制器（--port、--tcp 或 --sim），也未给出参数文件（--profile）</translation>
     </message>
+    <message>
+        <source>check: %1</source>
+        <translation>请确认：%1</translation>
+    </message>
+    <message>
+        <source>nothing was written: the window asks before writing these values; add --yes to write them anyway</source>
+        <translation>未写入任何值：窗口写入这些值前会先询问；确定要写入请加 --yes</translation>
+    </message>
+    <message>
+        <source>what the values are checked against could not be read: nothing was written</source>
+        <translation>无法读取用于检查这些值的参数：未写入任何值</translation>
+    </message>
+    <message>
+        <source>%1: %2 has more decimals than motor %3 counts in (steps of %4 %5): nothing was moved</source>
+        <translation>%1：%2 的小数位多于电机 %3 的计数精度（步长 %4 %5）：未运行</translation>
+    </message>
+    <message numerus="yes">
+        <source>(the same for %n more read(s) of this command)</source>
+        <translation>
+            <numerusform>（本命令另有 %n 次读取得到相同结果）</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlScan</name>
@@ -5276,10 +5298,6 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>IN%1: %2</source>
         <translation>IN%1：%2</translation>
-    </message>
-    <message>
-        <source>The limit settings are ignored in this mode.</source>
-        <translation>此模式下限位设置无效。</translation>
     </message>
     <message>
         <source>Change the system mode</source>
@@ -8921,6 +8939,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Line: %1</source>
         <translation>直线：%1</translation>
     </message>
+    <message>
+        <source>System mode %1 “%2” changes what the inputs IN1-IN4 do, at once, and ignores the limit settings: no limit input stops a motor then.</source>
+        <translation>系统模式 %1“%2”会立即改变输入 IN1-IN4 的作用，并忽略限位设置：届时没有限位输入能停止电机。</translation>
+    </message>
+    <message>
+        <source>System mode %1 “%2” changes what the inputs IN1-IN4 do, at once.</source>
+        <translation>系统模式 %1“%2”会立即改变输入 IN1-IN4 的作用。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::XYPlot</name>
@@ -8991,22 +9017,12 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>触发一个命令线圈（例如 motor1.stop、estop）</translation>
     </message>
     <message>
-        <source>compare the controller with a profile; exit 0 same,
-1 different, 2 bad file, 3 link or device error</source>
-        <translation>将控制器与参数文件比较；退出码 0 相同，
-1 不同，2 文件错误，3 连接或设备错误</translation>
-    </message>
-    <message>
         <source>Commands:</source>
         <translation>命令：</translation>
     </message>
     <message>
         <source>Read and write the parameters of a 2-axis stepper controller over Modbus RTU/TCP.</source>
         <translation>通过 Modbus RTU/TCP 读写两轴步进电机控制器的参数。</translation>
-    </message>
-    <message>
-        <source>Exit codes: 0 success, 1 link or device error, 2 usage or validation error.</source>
-        <translation>退出码：0 成功，1 连接或设备错误，2 用法或校验错误。</translation>
     </message>
     <message>
         <source>compare two profiles, no controller needed; exit 0
@@ -9107,6 +9123,58 @@ profile, and of the controllers given with --port,
 --profile FILE、设置、版本、操作系统和串口适配器、
 整机报告（参数文件的，以及用 --port、--tcp 或
 --sim 和 --id 给出的控制器的），内附 README</translation>
+    </message>
+    <message>
+        <source>success: done, written and verified; diff: the same;
+scan: found; move, command --wait: arrived</source>
+        <translation>成功：已完成，已写入并校验；diff：相同；
+scan：已找到；move、command --wait：已到达</translation>
+    </message>
+    <message>
+        <source>not done: a link or device error, a value not
+verified, a file or backup that could not be
+written; diff: different; scan: none found; move,
+command --wait: stopped elsewhere or not known</source>
+        <translation>未完成：通信或设备错误、值未通过校验、
+文件或备份无法写入；diff：不同；
+scan：未找到；move、command --wait：
+停在别处或结果未知</translation>
+    </message>
+    <message>
+        <source>nothing was done: a usage or validation error, a bad
+file, a write the window asks about without --yes,
+an apply not confirmed</source>
+        <translation>什么也没做：用法或数值错误、文件有误、
+窗口会询问的写入未加 --yes、
+apply 未确认</translation>
+    </message>
+    <message>
+        <source>diff, scan: a link or device error (their 1 is an
+answer)</source>
+        <translation>diff、scan：通信或设备错误（它们的 1
+是一种结果）</translation>
+    </message>
+    <message>
+        <source>Exit codes (every command):</source>
+        <translation>退出码（所有命令）：</translation>
+    </message>
+    <message>
+        <source>Usage:</source>
+        <translation>用法：</translation>
+    </message>
+    <message>
+        <source>The link and the other options: stepcomctl --help</source>
+        <translation>连接及其他选项：stepcomctl --help</translation>
+    </message>
+    <message>
+        <source>compare the controller with a profile (exit 0 the
+same, 1 different, 3 link or device error)</source>
+        <translation>将控制器与配置文件比较（退出码 0 相同，
+1 不同，3 通信或设备错误）</translation>
+    </message>
+    <message>
+        <source>One command&apos;s help: stepcomctl NAME --help</source>
+        <translation>单个命令的帮助：stepcomctl 命令名 --help</translation>
     </message>
 </context>
 </TS>

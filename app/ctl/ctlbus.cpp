@@ -99,6 +99,7 @@ bool CtlRunner::nextId(int code)
         err << prefix << tr("id %1: %2").arg(m_options.ids.at(m_idIndex)).arg(line) << Qt::endl;
     }
     m_idErrors << errors;
+    m_idResults << std::exchange(m_result, {});
     if (m_idIndex + 1 >= m_options.ids.size())
         return false;
     ++m_idIndex;
@@ -117,19 +118,10 @@ void CtlRunner::printMulti()
     QTextStream out(stdout);
     if (m_options.json) {
         QJsonObject all;
-        for (qsizetype i = 0; i < m_idOutputs.size(); ++i) {
-            QJsonObject one{{QStringLiteral("exit"), m_idCodes.at(i)}};
-            if (!m_idErrors.at(i).isEmpty())
-                one.insert(QStringLiteral("errors"), QJsonArray::fromStringList(m_idErrors.at(i)));
-            const QJsonDocument doc = QJsonDocument::fromJson(m_idOutputs.at(i).toUtf8());
-            if (doc.isObject())
-                one.insert(QStringLiteral("result"), doc.object());
-            else if (doc.isArray())
-                one.insert(QStringLiteral("result"), doc.array());
-            else if (!m_idOutputs.at(i).trimmed().isEmpty())
-                one.insert(QStringLiteral("output"), m_idOutputs.at(i).trimmed());
-            all.insert(QString::number(m_options.ids.at(i)), one);
-        }
+        for (qsizetype i = 0; i < m_idOutputs.size(); ++i)
+            all.insert(
+                QString::number(m_options.ids.at(i)),
+                envelope(m_idCodes.at(i), m_idOutputs.at(i), m_idErrors.at(i), m_idResults.at(i)));
         out << QString::fromUtf8(QJsonDocument(all).toJson(QJsonDocument::Indented));
     } else {
         for (qsizetype i = 0; i < m_idOutputs.size(); ++i) {
@@ -198,6 +190,60 @@ void CtlRunner::runScan()
     auto *scan = new CtlScan(plan, m_map, m_options.json, this);
     connect(scan, &CtlScan::finished, this, &CtlRunner::finish);
     scan->start();
+}
+
+} // namespace stepcom
+
+namespace stepcom {
+
+bool CtlRunner::isEnveloped() const
+{
+    static const QStringList names{QStringLiteral("write"),  QStringLiteral("command"),
+                                   QStringLiteral("diff"),   QStringLiteral("apply"),
+                                   QStringLiteral("dump"),   QStringLiteral("assign-id"),
+                                   QStringLiteral("report"), QStringLiteral("bundle")};
+    // command --wait has JSON of its own.
+    return m_options.json && m_chosen && !m_chosen->when &&
+           names.contains(QLatin1String(m_chosen->name));
+}
+
+QJsonObject CtlRunner::envelope(int code, const QString &out, const QStringList &errors,
+                                const QJsonObject &result) const
+{
+    QJsonObject one{{QStringLiteral("exit"), code},
+                    {QStringLiteral("errors"), QJsonArray::fromStringList(errors)}};
+    // A command with JSON of its own printed it: that is the result.
+    const QJsonDocument doc = QJsonDocument::fromJson(out.toUtf8());
+    if (result.isEmpty() && doc.isObject()) {
+        one.insert(QStringLiteral("result"), doc.object());
+    } else if (result.isEmpty() && doc.isArray()) {
+        one.insert(QStringLiteral("result"), doc.array());
+    } else {
+        one.insert(QStringLiteral("result"), result);
+        const QStringList lines = out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        if (!lines.isEmpty())
+            one.insert(QStringLiteral("messages"), QJsonArray::fromStringList(lines));
+    }
+    return one;
+}
+
+void CtlRunner::printEnvelope(int code)
+{
+    m_out.flush();
+    m_err.flush();
+    const QString prefix = QStringLiteral("stepcomctl: ");
+    QStringList errors;
+    QTextStream err(stderr);
+    for (QString line : m_errBuffer.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        err << line << Qt::endl; // still said where a person reads it
+        if (line.startsWith(prefix))
+            line = line.mid(prefix.size());
+        errors << line;
+    }
+    QTextStream(stdout) << QString::fromUtf8(
+        QJsonDocument(envelope(code, m_buffer, errors, m_result)).toJson(QJsonDocument::Indented));
+    m_buffer.clear();
+    m_errBuffer.clear();
 }
 
 } // namespace stepcom

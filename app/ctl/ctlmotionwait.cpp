@@ -57,8 +57,12 @@ void CtlMotionWait::fail(const QString &message)
 
 void CtlMotionWait::start()
 {
-    // Where it should end comes from what the controller holds now: read everything first.
-    m_session->readAll([this](const ReadOutcome &r) {
+    // Where it should end, and what may stop it, from what the controller holds now: the
+    // registers the judge reads, as `move` reads them.
+    QList<const Parameter *> params;
+    for (const QString &k : MotionJudge::inputKeys(m_session->map(), m_command.key))
+        params << m_session->map().find(k);
+    m_session->read(params, [this](const ReadOutcome &r) {
         m_values = r.values;
         if (!r.ok) {
             fail(r.errors.join(QLatin1String("; ")));

@@ -8,6 +8,8 @@
 #include <QJsonObject>
 #include <QRegularExpression>
 
+#include <cmath>
+
 namespace stepcom {
 
 void CtlRunner::backupThen(DeviceSession::Risk risk, std::function<void()> next)
@@ -19,9 +21,9 @@ void CtlRunner::backupThen(DeviceSession::Risk risk, std::function<void()> next)
     SessionBackup::save(
         m_session, BackupStore(), risk, [this, next](const BackupStore::Saved &saved) {
             if (!saved.ok()) {
-                fail(UsageError, tr("no backup of the controller's settings could be saved "
-                                    "(%1): nothing was done (--no-backup goes on without one)")
-                                     .arg(saved.error));
+                fail(DeviceError, tr("no backup of the controller's settings could be saved "
+                                     "(%1): nothing was done (--no-backup goes on without one)")
+                                      .arg(saved.error));
                 return;
             }
             m_out << tr("backup of the controller's settings: %1").arg(saved.path) << Qt::endl;
@@ -60,12 +62,29 @@ void CtlRunner::runMove()
                       text));
         return;
     }
+    // As write refuses a third decimal: a step the axis cannot count is not rounded silently.
+    const QString option = m_options.by.isEmpty() ? QStringLiteral("--to") : QStringLiteral("--by");
+    if (const Parameter *pos =
+            m_map.blockParameter(QStringLiteral("motor"), motor, QStringLiteral("position"))) {
+        const double counts = value * double(pos->scale);
+        if (std::abs(counts - std::round(counts)) > 1e-6) {
+            fail(UsageError, tr("%1: %2 has more decimals than motor %3 counts in (steps of %4 "
+                                "%5): nothing was moved")
+                                 .arg(option, text)
+                                 .arg(motor)
+                                 .arg(pos->formatRaw(1), pos->unit));
+            return;
+        }
+    }
     StepMoveRequest request;
     request.kind = m_options.by.isEmpty() ? StepMoveRequest::Kind::To : StepMoveRequest::Kind::By;
     request.motor = motor;
     request.value = value;
     connectThen([this, request] {
         StepMove *step = m_session->stepMove();
+        connect(step, &StepMove::warned, this, [this](const QString &warning) {
+            m_err << QStringLiteral("stepcomctl: ") << warning << Qt::endl;
+        });
         connect(step, &StepMove::finished, this, [this](const StepMoveResult &r) {
             const Parameter *pos = m_map.blockParameter(QStringLiteral("motor"), r.request.motor,
                                                         QStringLiteral("position"));
@@ -90,6 +109,7 @@ void CtlRunner::runMove()
                     {QStringLiteral("outcome"),
                      r.outcome ? r.outcome->verdictWord() : QJsonValue()},
                     {QStringLiteral("cause"), r.outcome ? r.outcome->causeWord() : QJsonValue()},
+                    {QStringLiteral("warning"), r.warning.isEmpty() ? QJsonValue() : r.warning},
                     {QStringLiteral("message"), r.text}};
                 m_out << QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Indented));
             } else {

@@ -3,6 +3,7 @@
 
 #include "consolereader.h"
 
+#include "device/writereview.h"
 #include "profile/backupstore.h"
 #include "profile/busdump.h"
 #include "profile/profilecomparison.h"
@@ -12,6 +13,7 @@
 
 #include <QCoreApplication>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QLocale>
 
 namespace stepcom {
@@ -22,7 +24,7 @@ bool CtlRunner::loadProfile(const QString &path, Profile *out)
     // this map knows; the commands list the rest before they act.
     const ProfileParseResult r = ProfileFile::load(path, m_map, ProfileFile::OtherMaps::Accept);
     if (!r.ok()) {
-        for (const QString &e : r.errors)
+        for (const QString &e : condensed(r.errors))
             m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
         return false;
     }
@@ -95,7 +97,7 @@ void CtlRunner::runDump()
             m_session->read(Profile::profileParameters(m_map, true),
                             [this, path](const ReadOutcome &r) {
                                 if (!r.ok) {
-                                    for (const QString &e : r.errors)
+                                    for (const QString &e : condensed(r.errors))
                                         m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                                     fail(DeviceError, tr("nothing was saved: the controller "
                                                          "could not be read completely"));
@@ -110,7 +112,7 @@ void CtlRunner::runDump()
         m_session->read(Profile::profileParameters(m_map, true), [this,
                                                                   path](const ReadOutcome &r) {
             if (!r.ok) {
-                for (const QString &e : r.errors)
+                for (const QString &e : condensed(r.errors))
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                 fail(DeviceError, tr("nothing was saved: the controller could "
                                      "not be read completely"));
@@ -125,9 +127,11 @@ void CtlRunner::runDump()
             profile.notes = m_options.notes;
             profile.deviceId = m_session->settings().deviceId;
             if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
-                fail(UsageError, e);
+                fail(DeviceError, e); // not done: the file could not be written
                 return;
             }
+            m_result = QJsonObject{{QStringLiteral("file"), path},
+                                   {QStringLiteral("parameters"), int(profile.values.size())}};
             m_out << tr("saved %n parameter(s) of %1 to %2", nullptr, int(profile.values.size()))
                          .arg(m_session->settings().describe(), path)
                   << Qt::endl;
@@ -150,12 +154,12 @@ void CtlRunner::runDiff()
     Profile profile;
     if (!loadProfileArgument(QStringLiteral("diff"), &profile))
         return;
-    m_linkError = 3; // 1 means "different" here
+    m_linkError = LinkError; // 1 means "different" here
     connectThen([this, profile] {
         m_session->read(
             Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
                 if (!r.ok) {
-                    for (const QString &e : r.errors)
+                    for (const QString &e : condensed(r.errors))
                         m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                     finish(m_linkError);
                     return;
@@ -164,8 +168,17 @@ void CtlRunner::runDiff()
                 const int unsupported = noteUnsupported(r, &compared);
                 const auto diffs =
                     ProfileDiff::differences(ProfileDiff::compare(m_map, compared, r.values));
-                for (const ProfileDifference &d : diffs)
+                QJsonArray rows;
+                for (const ProfileDifference &d : diffs) {
                     m_out << ProfileDiff::describe(d) << Qt::endl;
+                    const auto value = [&d](const std::optional<qint64> &raw) {
+                        return raw ? jsonValue(*d.parameter, *raw) : QJsonValue();
+                    };
+                    rows.append(QJsonObject{{QStringLiteral("key"), d.parameter->key},
+                                            {QStringLiteral("controller"), value(d.device)},
+                                            {QStringLiteral("profile"), value(d.profile)}});
+                }
+                m_result.insert(QStringLiteral("differences"), rows);
                 printLeftOut(compared, tr("left out of the comparison:"));
                 const ProfileVariance &v = compared.variance;
                 const int leftOut =
@@ -180,6 +193,8 @@ void CtlRunner::runDiff()
                     m_out << tr("%n value(s) differ (controller -> profile)", nullptr,
                                 int(diffs.size()))
                           << Qt::endl;
+                m_result.insert(QStringLiteral("left_out"), leftOut);
+                m_result.insert(QStringLiteral("same"), diffs.isEmpty() && leftOut == 0);
                 // A comparison that had to leave values out is not "the same".
                 finish(diffs.isEmpty() && leftOut == 0 ? 0 : 1);
             });
@@ -242,6 +257,17 @@ void CtlRunner::runDiffFiles()
                          .arg(f.key, number(f.a), number(f.b), f.reason)
                   << Qt::endl;
     }
+    QJsonArray rows;
+    for (const ProfileDifference &d : differing)
+        rows.append(QJsonObject{
+            {QStringLiteral("key"), d.parameter->key},
+            {QStringLiteral("a"), d.device ? jsonValue(*d.parameter, *d.device) : QJsonValue()},
+            {QStringLiteral("b"), d.profile ? jsonValue(*d.parameter, *d.profile) : QJsonValue()}});
+    m_result = QJsonObject{{QStringLiteral("same"), c.identical()},
+                           {QStringLiteral("differences"), rows},
+                           {QStringLiteral("only_in_a"), int(onlyA.size())},
+                           {QStringLiteral("only_in_b"), int(onlyB.size())},
+                           {QStringLiteral("outside_map"), int(foreign.size())}};
     if (c.identical()) {
         m_out << tr("the two profiles hold the same values") << Qt::endl;
         finish(0);
@@ -275,7 +301,7 @@ void CtlRunner::runApply()
         m_session->read(
             Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
                 if (!r.ok) {
-                    for (const QString &e : r.errors)
+                    for (const QString &e : condensed(r.errors))
                         m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                     fail(DeviceError, tr("nothing was written"));
                     return;
@@ -295,6 +321,7 @@ void CtlRunner::runApply()
                     keys << d.parameter->key;
                     m_out << tr("will write %1").arg(ProfileDiff::describe(d)) << Qt::endl;
                 }
+                m_result.insert(QStringLiteral("to_write"), QJsonArray::fromStringList(keys));
                 // Said before asking, and with --yes too: what of the profile is not applied.
                 printLeftOut(applied, tr("not applied:"));
                 QStringList errors;
@@ -315,6 +342,16 @@ void CtlRunner::runApply()
                         finish(Ok);
                     return;
                 }
+                // What the window's write dialog asks, said before the question (and with --yes).
+                const QStringList questions = WriteReview::problems(
+                    m_map,
+                    [values = r.values](const QString &key) {
+                        const auto it = values.constFind(key);
+                        return it == values.cend() ? std::nullopt : std::optional<qint64>(*it);
+                    },
+                    writes);
+                for (const QString &q : questions)
+                    m_out << tr("check: %1").arg(q) << Qt::endl;
                 confirmThenApply(writes);
             });
     });
@@ -326,18 +363,24 @@ void CtlRunner::confirmThenApply(const QList<ParameterWrite> &writes)
         applyWrites(writes);
         return;
     }
-    if (isMulti()) {
+    if (isMulti() || isEnveloped()) {
         // With several ids the output is keyed by id at the end; what the question is about
         // must be seen before it is answered (on standard error with --json, which stays JSON).
         m_out.flush();
         QTextStream console(m_options.json ? stderr : stdout);
-        console << tr("== device id %1 ==").arg(m_options.ids.at(m_idIndex)) << Qt::endl
-                << m_buffer
-                << tr("Write these %n value(s) to id %1? [y/N] ", nullptr, int(writes.size()))
-                       .arg(m_options.ids.at(m_idIndex))
+        if (isMulti())
+            console << tr("== device id %1 ==").arg(m_options.ids.at(m_idIndex)) << Qt::endl;
+        console << m_buffer
+                << (isMulti() ? tr("Write these %n value(s) to id %1? [y/N] ", nullptr,
+                                   int(writes.size()))
+                                    .arg(m_options.ids.at(m_idIndex))
+                              : tr("Write these %n value(s) to the controller? [y/N] ", nullptr,
+                                   int(writes.size())))
                 << Qt::flush;
-        m_buffer.clear();
-        m_out.setString(&m_buffer);
+        if (isMulti()) { // shown now; one id's messages stay in its JSON object
+            m_buffer.clear();
+            m_out.setString(&m_buffer);
+        }
     } else {
         m_out << tr("Write these %n value(s) to the controller? [y/N] ", nullptr,
                     int(writes.size()))
@@ -376,9 +419,9 @@ bool CtlRunner::backupBeforeApply()
     const BackupStore::Saved saved = store.save(m_map, m_beforeApply, BackupStore::Operation::Apply,
                                                 m_session->settings().describe());
     if (!saved.ok()) {
-        fail(UsageError, tr("no backup of the controller's settings could be saved (%1): nothing "
-                            "was written (--no-backup applies without one)")
-                             .arg(saved.error));
+        fail(DeviceError, tr("no backup of the controller's settings could be saved (%1): nothing "
+                             "was written (--no-backup applies without one)")
+                              .arg(saved.error));
         return false;
     }
     m_out << tr("backup of the controller's settings: %1").arg(saved.path) << Qt::endl;
@@ -390,21 +433,7 @@ void CtlRunner::applyWrites(const QList<ParameterWrite> &writes)
     if (!backupBeforeApply())
         return;
     m_session->write(writes, [this, writes](const WriteOutcome &w) {
-        for (const ParameterWrite &pw : writes) {
-            const bool verified =
-                w.written.contains(pw.parameter->key) &&
-                std::none_of(w.mismatches.cbegin(), w.mismatches.cend(),
-                             [&](const WriteMismatch &m) { return m.key == pw.parameter->key; });
-            if (verified)
-                m_out << pw.parameter->key << QStringLiteral(" = ")
-                      << valueText(*pw.parameter, pw.raw) << QStringLiteral("  ")
-                      << tr("(written, verified)") << Qt::endl;
-        }
-        for (const QString &e : w.errors)
-            m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-        if (!w.notWritten.isEmpty())
-            m_err << QStringLiteral("stepcomctl: ")
-                  << tr("not written: %1").arg(w.notWritten.join(QLatin1String(", "))) << Qt::endl;
+        reportWritten(writes, w);
         if (!w.ok) {
             finish(DeviceError);
             return;
@@ -458,7 +487,7 @@ void CtlRunner::runReport()
     connectThen([this, path] {
         m_session->readAll([this, path](const ReadOutcome &r) {
             if (!r.ok) {
-                for (const QString &e : r.errors)
+                for (const QString &e : condensed(r.errors))
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                 fail(DeviceError, tr("no report: the controller could not be read completely"));
                 return;

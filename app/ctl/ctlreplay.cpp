@@ -241,7 +241,7 @@ void CtlRunner::writeBundle(BundleInput input, const QList<ReportInput> &sheets)
     QString error;
     const QString out = m_options.arguments.first();
     if (!SupportBundle::create(out, input, &contents, &error)) {
-        fail(UsageError, error);
+        fail(DeviceError, error); // not done: the file could not be written
         return;
     }
     m_out << tr("wrote %1 (%2):").arg(out, QLocale::c().formattedDataSize(QFileInfo(out).size()))

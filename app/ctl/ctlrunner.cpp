@@ -53,13 +53,6 @@ QString commandName(CommandClass c)
     return {};
 }
 
-QJsonValue engineering(const Parameter &p, qint64 raw)
-{
-    if (p.scale == 1)
-        return QJsonValue(double(raw));
-    return QJsonValue(p.formatRaw(raw).toDouble());
-}
-
 } // namespace
 
 CtlRunner::CtlRunner(const CtlOptions &options, const RegisterMap &map, QObject *parent)
@@ -108,8 +101,8 @@ const QList<CtlCommand> &CtlRunner::commands()
                            "into a folder: one file per --id, \"id2 NAME DATE.json\""),
          &CtlRunner::runDump},
         {"diff", "diff FILE",
-         QT_TRANSLATE_NOOP("stepcomctl", "compare the controller with a profile; exit 0 same,\n"
-                                         "1 different, 2 bad file, 3 link or device error"),
+         QT_TRANSLATE_NOOP("stepcomctl", "compare the controller with a profile (exit 0 the\n"
+                                         "same, 1 different, 3 link or device error)"),
          &CtlRunner::runDiff},
         {"diff", "diff A.json B.json",
          QT_TRANSLATE_NOOP("stepcomctl", "compare two profiles, no controller needed; exit 0\n"
@@ -159,18 +152,35 @@ const QList<CtlCommand> &CtlRunner::commands()
     return table;
 }
 
-QString CtlRunner::commandsHelp()
+QJsonValue CtlRunner::jsonValue(const Parameter &p, qint64 raw)
 {
-    // "  usage<padded to 23>help", continuation lines indented under the help.
-    QString text = QCoreApplication::translate("stepcomctl", "Commands:") + QLatin1Char('\n');
-    for (const CtlCommand &c : commands()) {
-        const QStringList lines =
-            QCoreApplication::translate("stepcomctl", c.help).split(QLatin1Char('\n'));
-        text += QStringLiteral("  %1%2\n").arg(QLatin1String(c.usage), -23).arg(lines.first());
-        for (qsizetype i = 1; i < lines.size(); ++i)
-            text += QString(25, QLatin1Char(' ')) + lines.at(i) + QLatin1Char('\n');
+    if (p.scale == 1)
+        return QJsonValue(double(raw));
+    return QJsonValue(p.formatRaw(raw).toDouble());
+}
+
+QStringList CtlRunner::condensed(const QStringList &errors)
+{
+    QStringList out;
+    QList<int> more;
+    QHash<QString, qsizetype> first; // the answer after "read block n/m [address]: "
+    for (const QString &e : errors) {
+        const qsizetype at = e.indexOf(QLatin1String("]: "));
+        const QString answer = at < 0 ? e : e.mid(at + 3);
+        if (const auto it = first.constFind(answer); it != first.cend()) {
+            ++more[*it];
+            continue;
+        }
+        first.insert(answer, out.size());
+        out << e;
+        more << 0;
     }
-    return text;
+    for (qsizetype i = 0; i < out.size(); ++i) {
+        if (more.at(i) > 0)
+            out[i] += QLatin1Char(' ') +
+                      tr("(the same for %n more read(s) of this command)", nullptr, more.at(i));
+    }
+    return out;
 }
 
 QString CtlRunner::unknownCommandMessage(const QString &name)
@@ -198,6 +208,10 @@ void CtlRunner::start()
     }
     if (chosen) {
         m_chosen = chosen;
+        if (isEnveloped() && !isPerId()) {
+            m_out.setString(&m_buffer); // kept for the JSON object at the end
+            m_err.setString(&m_errBuffer);
+        }
         if (isPerId())
             startMulti();
         else
@@ -222,6 +236,8 @@ void CtlRunner::finish(int code)
             return;
         code = worstCode();
         printMulti();
+    } else if (isEnveloped()) {
+        printEnvelope(code);
     }
     m_finished = true;
     // The line's health and the timeout it suggests, for whoever tunes the link (monitor runs
@@ -273,8 +289,10 @@ void CtlRunner::connectThen(std::function<void()> next)
     if (isMulti())
         m_session->setDeviceIds(m_options.ids);
     if (m_options.verbose) {
-        connect(m_session->traffic(), &TrafficLog::entryAdded, this,
-                [this](const TrafficEntry &e) { m_err << TrafficLog::format(e) << Qt::endl; });
+        connect(m_session->traffic(), &TrafficLog::entryAdded, this, [](const TrafficEntry &e) {
+            // Straight to standard error: never one of the JSON object's errors.
+            QTextStream(stderr) << TrafficLog::format(e) << Qt::endl;
+        });
     }
     // Only the first opening runs the command: a write of device.baud reopens the link at the
     // new baud, and that must not start the command a second time.
@@ -328,8 +346,8 @@ void CtlRunner::runParams()
                           {QStringLiteral("label_zh_CN"), p.label.zh},
                           {QStringLiteral("help"), p.help.en}};
             if (p.isHolding()) {
-                o.insert(QStringLiteral("min"), engineering(p, p.rawMin));
-                o.insert(QStringLiteral("max"), engineering(p, p.rawMax));
+                o.insert(QStringLiteral("min"), jsonValue(p, p.rawMin));
+                o.insert(QStringLiteral("max"), jsonValue(p, p.rawMax));
                 if (!p.values.isEmpty()) {
                     QJsonArray values;
                     for (const EnumValue &v : p.values)
@@ -383,7 +401,7 @@ void CtlRunner::runRead()
                 QJsonObject o;
                 for (const Parameter *p : params) {
                     if (r.values.contains(p->key))
-                        o.insert(p->key, engineering(*p, r.values.value(p->key)));
+                        o.insert(p->key, jsonValue(*p, r.values.value(p->key)));
                 }
                 m_out << QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Indented));
             } else {
@@ -397,7 +415,7 @@ void CtlRunner::runRead()
                 m_err << QStringLiteral("stepcomctl: ")
                       << tr("%1 is not supported by this controller").arg(key) << Qt::endl;
             if (!r.ok) {
-                for (const QString &e : r.errors)
+                for (const QString &e : condensed(r.errors))
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                 finish(DeviceError);
                 return;
@@ -405,101 +423,6 @@ void CtlRunner::runRead()
             finish(Ok);
         });
     });
-}
-
-void CtlRunner::runWrite()
-{
-    if (m_options.arguments.isEmpty()) {
-        fail(UsageError, tr("write needs KEY=VALUE arguments"));
-        return;
-    }
-    QList<ParameterWrite> writes;
-    QStringList problems;
-    for (const QString &arg : std::as_const(m_options.arguments)) {
-        const qsizetype eq = arg.indexOf(QLatin1Char('='));
-        if (eq <= 0) {
-            problems << tr("'%1' is not KEY=VALUE").arg(arg);
-            continue;
-        }
-        const QString key = arg.left(eq).trimmed();
-        const Parameter *p = m_map.find(key);
-        if (!p) {
-            problems << tr("unknown parameter '%1' (see: stepcomctl params)").arg(key);
-            continue;
-        }
-        if (!p->writable()) {
-            problems << (p->isCoil() ? tr("%1 is a command: use 'stepcomctl command %1'").arg(key)
-                                     : tr("%1 is read-only").arg(key));
-            continue;
-        }
-        QString error;
-        const auto raw = p->parse(arg.mid(eq + 1), &error);
-        if (!raw) {
-            problems << error;
-            continue;
-        }
-        writes.append({p, *raw});
-    }
-    if (problems.isEmpty())
-        problems = DeviceClient::validate(writes); // duplicates, as the device client checks
-    if (!problems.isEmpty()) {
-        for (const QString &p : std::as_const(problems))
-            m_err << QStringLiteral("stepcomctl: ") << p << Qt::endl;
-        m_err << QStringLiteral("stepcomctl: ") << tr("nothing was written") << Qt::endl;
-        finish(UsageError);
-        return;
-    }
-    // A new id or baud, or a save to flash after the write: the settings before it are backed up.
-    std::optional<DeviceSession::Risk> risk;
-    for (const ParameterWrite &w : std::as_const(writes)) {
-        if (w.parameter->key == QLatin1String("device.id"))
-            risk = DeviceSession::Risk::DeviceId;
-        else if (w.parameter->key == QLatin1String("device.baud") && !risk)
-            risk = DeviceSession::Risk::Baud;
-    }
-    if (!risk && m_options.saveToFlash)
-        risk = DeviceSession::Risk::SaveToFlash;
-    connectThen([this, writes, risk] {
-        if (risk) {
-            backupThen(*risk, [this, writes] { writeThenReport(writes); });
-            return;
-        }
-        writeThenReport(writes);
-    });
-}
-
-void CtlRunner::writeThenReport(const QList<ParameterWrite> &writes)
-{
-    {
-        m_session->write(writes, [this, writes](const WriteOutcome &w) {
-            for (const ParameterWrite &pw : writes) {
-                const bool verified = w.written.contains(pw.parameter->key) &&
-                                      std::none_of(w.mismatches.cbegin(), w.mismatches.cend(),
-                                                   [&](const WriteMismatch &m) {
-                                                       return m.key == pw.parameter->key;
-                                                   });
-                if (verified)
-                    m_out << pw.parameter->key << QStringLiteral(" = ")
-                          << valueText(*pw.parameter, pw.raw) << QStringLiteral("  ")
-                          << tr("(written, verified)") << Qt::endl;
-            }
-            for (const QString &e : w.errors)
-                m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-            if (!w.notWritten.isEmpty())
-                m_err << QStringLiteral("stepcomctl: ")
-                      << tr("not written: %1").arg(w.notWritten.join(QLatin1String(", ")))
-                      << Qt::endl;
-            if (!w.ok) {
-                finish(DeviceError);
-                return;
-            }
-            if (!m_options.saveToFlash) {
-                finish(Ok);
-                return;
-            }
-            saveToFlashThenFinish();
-        });
-    }
 }
 
 const Parameter *CtlRunner::commandArgument()
@@ -540,6 +463,10 @@ void CtlRunner::runCommand()
                     fail(DeviceError, r.errorText);
                     return;
                 }
+                m_result = QJsonObject{{QStringLiteral("command"), p->key},
+                                       {QStringLiteral("state"), p->command == CommandClass::Motion
+                                                                     ? QStringLiteral("sent")
+                                                                     : QStringLiteral("done")}};
                 // A moving command is only acknowledged: its end is known with --wait.
                 m_out << (p->command == CommandClass::Motion
                               ? tr("%1: sent (add --wait to wait for how it ends)").arg(p->key)

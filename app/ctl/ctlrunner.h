@@ -4,6 +4,7 @@
 #include "map/registermap.h"
 #include "session/devicesession.h"
 
+#include <QJsonObject>
 #include <QObject>
 #include <QTextStream>
 
@@ -26,13 +27,15 @@ struct CtlCommand
     bool CtlOptions::*when = nullptr;
 };
 
-// Runs one stepcomctl command against a controller and reports an exit code:
-// 0 success, 1 link or device error, 2 usage or validation error.
+// Runs one stepcomctl command against a controller and reports an exit code (Exit).
 class CtlRunner : public QObject
 {
     Q_OBJECT
 public:
-    enum Exit { Ok = 0, DeviceError = 1, UsageError = 2 };
+    // The exit codes, as exitCodesHelp() explains them: 1 is also a command's "no" (diff:
+    // different, scan: none found, move and command --wait: not arrived), and diff and scan say
+    // a link error with LinkError, their 1 being an answer.
+    enum Exit { Ok = 0, DeviceError = 1, UsageError = 2, LinkError = 3 };
 
     CtlRunner(const CtlOptions &options, const RegisterMap &map, QObject *parent = nullptr);
     // Starts the command; `finished` follows once.
@@ -40,8 +43,14 @@ public:
 
     // Every command, in the order the help lists them.
     static const QList<CtlCommand> &commands();
-    // The "Commands:" part of --help, built from the table.
+    // The "Commands:" part of --help, built from the table (ctlhelp.cpp): the help column
+    // starts after the longest usage, so the two never run together in any language.
     static QString commandsHelp();
+    // The one table of exit codes, for every command (--help, `NAME --help`, man page, guide).
+    static QString exitCodesHelp();
+    // `stepcomctl NAME --help`: that command's usages, help and the exit codes; empty for a
+    // name that is not a command.
+    static QString commandHelp(const QString &name);
     // The message for a command that is not in the table.
     static QString unknownCommandMessage(const QString &name);
 
@@ -54,6 +63,12 @@ private:
     void runRead();
     void runWrite();
     void writeThenReport(const QList<ParameterWrite> &writes);
+    // Prints each value written and verified, and what was not, into the output and the JSON
+    // result ("written", "not_written"); write and apply.
+    void reportWritten(const QList<ParameterWrite> &writes, const WriteOutcome &w);
+    // The window's review of `writes` (WriteReview), on what the controller holds: its
+    // questions printed; without --yes nothing is written (exit 2), else `next`.
+    void reviewThen(const QList<ParameterWrite> &writes, std::function<void()> next);
     void runCommand();
     // command NAME --wait: sends it and judges where the motion ended (CtlMotionWait).
     void runCommandWait();
@@ -118,6 +133,18 @@ private:
     void runForCurrentId();
     void printMulti();
     int worstCode() const;
+    // --json for a command without JSON of its own (write, command, diff, apply, dump,
+    // assign-id, report, bundle): what it prints is kept and one object ends the run, as each
+    // id's member does with several ids: exit, result (m_result), errors, messages (ctlbus.cpp).
+    bool isEnveloped() const;
+    QJsonObject envelope(int code, const QString &out, const QStringList &errors,
+                         const QJsonObject &result) const;
+    void printEnvelope(int code);
+    // The errors of one read, each answer said once: on a dead line every block of the read
+    // gets the same "no answer", which is said for the first with how many more had it.
+    static QStringList condensed(const QStringList &errors);
+    // A value in engineering units as JSON: a number.
+    static QJsonValue jsonValue(const Parameter &p, qint64 raw);
     void fail(int code, const QString &message);
     void finish(int code);
     QString valueText(const Parameter &p, qint64 raw) const;
@@ -139,8 +166,10 @@ private:
     QString m_buffer;        // the current id's output
     QString m_errBuffer;     // the current id's messages, printed prefixed with its id
     QList<QStringList> m_idErrors;
-    QString m_multiArgument; // dump: the path asked for, suffixed per id
-    QString m_dumpFolder;    // dump: the folder asked for, one file per id inside
+    QJsonObject m_result;           // --json: what the current run came to
+    QList<QJsonObject> m_idResults; // each id's
+    QString m_multiArgument;        // dump: the path asked for, suffixed per id
+    QString m_dumpFolder;           // dump: the folder asked for, one file per id inside
 };
 
 } // namespace stepcom

@@ -65,9 +65,8 @@ int main(int argc, char *argv[])
         QCoreApplication::translate("stepcomctl", "Read and write the parameters of a 2-axis "
                                                   "stepper controller over Modbus RTU/TCP.") +
         QStringLiteral("\n\n") + CtlRunner::commandsHelp() + QLatin1Char('\n') +
-        QCoreApplication::translate(
-            "stepcomctl",
-            "Exit codes: 0 success, 1 link or device error, 2 usage or validation error."));
+        CtlRunner::exitCodesHelp() + QLatin1Char('\n') +
+        QCoreApplication::translate("stepcomctl", "One command's help: stepcomctl NAME --help"));
     parser.addHelpOption();
     parser.addVersionOption();
     parser.addPositionalArgument(QStringLiteral("command"),
@@ -78,8 +77,15 @@ int main(int argc, char *argv[])
         err << QStringLiteral("stepcomctl: ") << parser.errorText() << Qt::endl;
         return CtlRunner::UsageError;
     }
-    if (parser.isSet(QStringLiteral("help")))
+    if (parser.isSet(QStringLiteral("help"))) {
+        // NAME --help: that command alone.
+        const QString help = CtlRunner::commandHelp(parser.positionalArguments().value(0));
+        if (!help.isEmpty()) {
+            QTextStream(stdout) << help;
+            return CtlRunner::Ok;
+        }
         parser.showHelp(0);
+    }
     if (parser.isSet(QStringLiteral("version")))
         parser.showVersion();
 

@@ -2,12 +2,58 @@
 
 #include "device/parameterstore.h"
 #include "device/wiringcheck.h"
+#include "i18n/translators.h"
 #include "motion/interpolationgeometry.h"
 #include "motion/pathsetup.h"
 
 namespace stepcom {
 
+namespace {
+
+const QString kMode = QStringLiteral("mode.system");
+
+bool isWiring(const QString &key)
+{
+    return key.endsWith(QLatin1String(".limit_positive")) ||
+           key.endsWith(QLatin1String(".limit_negative")) ||
+           key.endsWith(QLatin1String(".home_input")) || key == kMode;
+}
+
+} // namespace
+
 QStringList WriteReview::problems(const ParameterStore &store, const QList<ParameterWrite> &writes)
+{
+    return problems(
+        store.map(), [&store](const QString &key) { return store.deviceValue(key); }, writes);
+}
+
+QStringList WriteReview::keysRead(const RegisterMap &map, const QList<ParameterWrite> &writes)
+{
+    QStringList prefixes;
+    bool wiring = false;
+    for (const ParameterWrite &w : writes) {
+        const QString &k = w.parameter->key;
+        if (k.startsWith(QLatin1String("arc.")))
+            prefixes << QStringLiteral("arc.");
+        if (k.startsWith(QLatin1String("line.")))
+            prefixes << QStringLiteral("line.");
+        wiring = wiring || isWiring(k);
+    }
+    QStringList keys;
+    for (const Parameter *p : map.holdings()) {
+        const bool wanted =
+            (wiring && isWiring(p->key)) ||
+            std::any_of(prefixes.cbegin(), prefixes.cend(),
+                        [p](const QString &prefix) { return p->key.startsWith(prefix); });
+        // The written ones too: a mode is questioned only when it changes.
+        if (wanted)
+            keys << p->key;
+    }
+    return keys;
+}
+
+QStringList WriteReview::problems(const RegisterMap &map, const Held &held,
+                                  const QList<ParameterWrite> &writes)
 {
     QHash<QString, qint64> after;
     for (const ParameterWrite &w : writes)
@@ -15,7 +61,7 @@ QStringList WriteReview::problems(const ParameterStore &store, const QList<Param
     const auto raw = [&](const QString &key) -> std::optional<qint64> {
         if (after.contains(key))
             return after.value(key);
-        return store.deviceValue(key);
+        return held(key);
     };
     const auto touches = [&](const QString &prefix) {
         return std::any_of(after.keyBegin(), after.keyEnd(),
@@ -31,7 +77,21 @@ QStringList WriteReview::problems(const ParameterStore &store, const QList<Param
     };
 
     QStringList problems;
-    const RegisterMap &map = store.map();
+    // The window's mode page asks before any change of mode: what the inputs do changes at once.
+    if (const Parameter *mode = map.find(kMode); mode && after.contains(kMode)) {
+        const qint64 next = after.value(kMode);
+        if (held(kMode) != next) {
+            const QString lang = Translators::current();
+            problems << (modeIgnoresLimits(next)
+                             ? tr("System mode %1 “%2” changes what the inputs IN1-IN4 do, at "
+                                  "once, and ignores the limit settings: no limit input stops "
+                                  "a motor then.")
+                             : tr("System mode %1 “%2” changes what the inputs IN1-IN4 do, at "
+                                  "once."))
+                            .arg(next)
+                            .arg(mode->displayRaw(next, lang));
+        }
+    }
     if (touches(QStringLiteral("arc."))) {
         const interpolation::ArcSetup arc = interpolation::arcSetup(map, raw);
         const char *third = arc.mode == interpolation::ArcMode::Centre ? "center" : "middle";
@@ -45,11 +105,7 @@ QStringList WriteReview::problems(const ParameterStore &store, const QList<Param
         if (known(QStringLiteral("line."), {"start", "end"}) && !g.valid)
             problems << tr("Line: %1").arg(g.error);
     }
-    const bool wiring = std::any_of(after.keyBegin(), after.keyEnd(), [](const QString &k) {
-        return k.endsWith(QLatin1String(".limit_positive")) ||
-               k.endsWith(QLatin1String(".limit_negative")) ||
-               k.endsWith(QLatin1String(".home_input")) || k == QLatin1String("mode.system");
-    });
+    const bool wiring = std::any_of(after.keyBegin(), after.keyEnd(), isWiring);
     if (wiring) {
         QList<MotorWiring> motors;
         for (int n = 1; n <= map.blockCount(QStringLiteral("motor")); ++n) {

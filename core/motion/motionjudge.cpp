@@ -38,9 +38,17 @@ bool inputOn(const StatusValues &v, qint64 input)
     return input > 0 && get(v, QStringLiteral("io.in%1").arg(input)).value_or(0) == 1;
 }
 
+// Modes 1-5 give the inputs other meanings and ignore the limit registers.
+bool limitsApply(const StatusValues &v)
+{
+    return get(v, QStringLiteral("mode.system")).value_or(0) == 0;
+}
+
 // The input number of motor's limit in `direction` (+1/-1) when it reads ON, else 0.
 int limitOn(const RegisterMap &map, const StatusValues &v, int motor, int direction)
 {
+    if (!limitsApply(v))
+        return 0;
     const qint64 input =
         motorValue(map, v, motor, direction > 0 ? "limit_positive" : "limit_negative").value_or(0);
     return inputOn(v, input) ? int(input) : 0;
@@ -146,6 +154,58 @@ QStringList MotionJudge::watchKeys(const RegisterMap &map)
     return keys;
 }
 
+QStringList MotionJudge::inputKeys(const RegisterMap &map, const QString &command)
+{
+    const auto kind = kindOf(map, command);
+    if (!kind)
+        return {};
+    QStringList keys = watchKeys(map);
+    const auto add = [&keys](const Parameter *p) {
+        if (p && p->readable() && !keys.contains(p->key))
+            keys << p->key;
+    };
+    add(map.find(QStringLiteral("mode.system")));
+    QList<int> motors;
+    switch (*kind) {
+    case MotionKind::SingleMove:
+    case MotionKind::Home:
+        motors = {map.find(command)->instance};
+        break;
+    case MotionKind::HomeInOrder:
+        add(map.find(QStringLiteral("homing.first")));
+        add(map.find(QStringLiteral("homing.second")));
+        [[fallthrough]];
+    case MotionKind::ReturnToZero:
+    case MotionKind::Arc:
+    case MotionKind::Line:
+        for (int n = 1; n <= map.blockCount(kMotor); ++n)
+            motors << n;
+        break;
+    }
+    const bool path = *kind == MotionKind::Arc || *kind == MotionKind::Line;
+    for (int n : std::as_const(motors)) {
+        for (const char *local :
+             {"move_distance", "direction", "limit_positive", "limit_negative", "home_input"})
+            add(motorParam(map, n, local));
+        // The path's end points in counts need each axis's step angle, microsteps and pitch.
+        if (path) {
+            for (const Parameter *p : map.holdings()) {
+                if (p->block == kMotor && p->instance == n)
+                    add(p);
+            }
+        }
+    }
+    if (path) {
+        const QString prefix =
+            *kind == MotionKind::Arc ? QStringLiteral("arc.") : QStringLiteral("line.");
+        for (const Parameter *p : map.holdings()) {
+            if (p->key.startsWith(prefix))
+                add(p);
+        }
+    }
+    return keys;
+}
+
 std::optional<MotionStart> MotionJudge::plan(const RegisterMap &map, const QString &command,
                                              const StatusValues &before)
 {
@@ -248,8 +308,7 @@ MotionOutcome MotionJudge::judge(const RegisterMap &map, const MotionStart &star
 QString MotionJudge::limitWarning(const RegisterMap &map, const QString &command,
                                   const StatusValues &now)
 {
-    // Modes 1-5 give the inputs other meanings and ignore the limit registers.
-    if (get(now, QStringLiteral("mode.system")).value_or(0) != 0)
+    if (!limitsApply(now))
         return {};
     const auto kind = kindOf(map, command);
     if (!kind)

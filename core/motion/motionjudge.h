@@ -30,6 +30,11 @@ public:
                                 const StatusValues &now);
     // What must be read to judge the end: positions, running flags, inputs.
     static QStringList watchKeys(const RegisterMap &map);
+    // Every register plan(), limitWarning() and judge() read for `command`, beyond the end's
+    // watchKeys(): the moved axes' targets, limit and home inputs, the system mode, the
+    // homing order, the arc or line. Every front-end reads these before the command goes out,
+    // so a motion is judged on the same inputs whoever sent it.
+    static QStringList inputKeys(const RegisterMap &map, const QString &command);
 
     // The outcome in words, in the installed language.
     static QString text(const RegisterMap &map, const MotionOutcome &outcome);

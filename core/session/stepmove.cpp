@@ -1,5 +1,6 @@
 #include "session/stepmove.h"
 
+#include "motion/motionjudge.h"
 #include "motion/travellimits.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
@@ -86,11 +87,20 @@ QString StepMove::start(const StepMoveRequest &request)
     m_waitingCommand = false;
     m_unsavedBefore = m_session->parameters()->unsavedToFlash();
     const RegisterMap &map = m_session->map();
-    QList<const Parameter *> params;
+    // The step's own registers and what the motion judge reads (limits, inputs, the mode):
+    // a step is judged on what `command motorN.move --wait` is judged on.
+    QStringList keys;
     for (const char *local : {"position", "running", "move_distance", "direction"}) {
         if (const Parameter *p = map.blockParameter(kMotor, request.motor, QLatin1String(local)))
-            params << p;
+            keys << p->key;
     }
+    for (const QString &k : MotionJudge::inputKeys(map, key("move"))) {
+        if (!keys.contains(k))
+            keys << k;
+    }
+    QList<const Parameter *> params;
+    for (const QString &k : std::as_const(keys))
+        params << map.find(k);
     Q_EMIT started(request);
     // What the axis and the user's registers hold now, not what the last poll saw.
     m_session->read(
@@ -175,6 +185,14 @@ void StepMove::onRead(bool ok, const QHash<QString, qint64> &values, const QStri
     }
     const qint64 direction =
         r.kind == StepMoveRequest::Kind::Raw ? r.direction : (delta > 0 ? 0 : 1);
+    // Said before the move, as the jog panel and `command --wait` say it: a limit already ON
+    // in the step's direction.
+    StatusValues planned = values;
+    planned.insert(dist->key, distanceRaw);
+    planned.insert(key("direction"), direction);
+    m_result.warning = MotionJudge::limitWarning(map, key("move"), planned);
+    if (!m_result.warning.isEmpty())
+        Q_EMIT warned(m_result.warning);
     QList<ParameterWrite> writes;
     if (distanceRaw != m_userDistance)
         writes.append({dist, distanceRaw});

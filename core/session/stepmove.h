@@ -39,6 +39,7 @@ struct StepMoveResult
     std::optional<MotionOutcome> outcome;
     std::optional<double> startPosition; // axis units, as read before the move
     std::optional<double> target;
+    QString warning; // a limit already ON in the step's direction, said before it went out
     QString text;
     bool ok() const { return arrived && restored; }
 };
@@ -66,6 +67,8 @@ public:
 
 Q_SIGNALS:
     void started(const stepcom::StepMoveRequest &request);
+    // Before the move coil goes out: the step runs into a limit that is already ON.
+    void warned(const QString &warning);
     void finished(const stepcom::StepMoveResult &result);
 
 private:

@@ -212,12 +212,19 @@ bool SupportBundle::create(const QString &zipPath, const BundleInput &input, QSt
                           {},
                           QStringLiteral("StepCom's settings (it keeps no passwords)")};
     }
+    const bool logs = std::any_of(items.cbegin(), items.cend(), [](const Item &item) {
+        return item.name.startsWith(QLatin1String("logs/"));
+    });
     QString readme =
-        QStringLiteral("StepCom support bundle, made %1 by StepCom %2.\n\n"
-                       "Session logs of the last %3 day(s); replay them with `stepcomctl replay "
-                       "THIS.zip --events` or in the window (File > Open session log).\n\n")
-            .arg(input.now.toString(Qt::ISODate), QStringLiteral(STEPCOM_VERSION))
-            .arg(input.days);
+        QStringLiteral("StepCom support bundle, made %1 by StepCom %2.\n\n")
+            .arg(input.now.toString(Qt::ISODate), QStringLiteral(STEPCOM_VERSION)) +
+        (logs ? QStringLiteral("Session logs of the last %1 day(s); replay them with `stepcomctl "
+                               "replay THIS.zip --events` or in the window (File > Open session "
+                               "log).\n\n")
+                    .arg(input.days)
+              : QStringLiteral("No session log of the last %1 day(s) was found in %2.\n\n")
+                    .arg(input.days)
+                    .arg(QDir::toNativeSeparators(input.logDirectory)));
     for (const Item &item : std::as_const(items))
         readme += QStringLiteral("%1\n    %2\n").arg(item.name, item.what);
     if (input.reportHtml.isEmpty())

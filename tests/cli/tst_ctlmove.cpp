@@ -104,6 +104,13 @@ private Q_SLOTS:
                               << "exactly one of --by D and --to X";
         QTest::newRow("neither") << QStringList{"move", "motor1"}
                                  << "exactly one of --by D and --to X";
+        // As write: a third decimal is refused, not rounded or taken for nothing to move.
+        QTest::newRow("three decimals")
+            << QStringList{"move", "motor1", "--by", "0.015"} << "--by: 0.015 has more decimals";
+        QTest::newRow("too small")
+            << QStringList{"move", "motor1", "--by", "0.001"} << "--by: 0.001 has more decimals";
+        QTest::newRow("to, three decimals")
+            << QStringList{"move", "motor1", "--to", "1.234"} << "--to: 1.234 has more decimals";
         QTest::newRow("not a number")
             << QStringList{"move", "motor1", "--by", "ten"} << "--by: 'ten' is not a number";
     }
@@ -127,6 +134,48 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(!r.err.isEmpty(), qPrintable(r.out));
         userValuesBack();
+    }
+
+    void moveAndWaitNameTheSameLimit()
+    {
+        // The simulated controller over its pseudo-terminal (as stepcom-sim serves it), motor 1
+        // on its positive limit: a step forward and the single move with --wait are one motion,
+        // judged alike -- the limit named, before and after.
+        SimHost pty;
+        SimOptions options;
+        options.rtu = true;
+        QString error;
+        QVERIFY2(pty.start(options, &error), qPrintable(error));
+        SimDevice *d = pty.device();
+        QVERIFY(d->setValue(QStringLiteral("motor1.limit_positive"), 1));
+        QVERIFY(d->setValue(QStringLiteral("motor1.direction"), 0));
+        d->setInput(1, SimDevice::InputForce::On);
+        ProgramOptions env;
+        env.environment = {QStringLiteral("XDG_DATA_HOME=") + dir.filePath(QStringLiteral("data"))};
+        const QStringList link{QStringLiteral("--port"), pty.rtuPath()};
+        const QString limit = QStringLiteral("positive limit (IN1)");
+        const ProgramRun move = runProgram(QStringLiteral("stepcomctl"),
+                                           link + QStringList{"move", "motor1", "--by", "10"}, env);
+        QCOMPARE(move.exitCode, 1);
+        QVERIFY2(move.err.contains(QStringLiteral("Motor 1's ") + limit + " is already ON"),
+                 qPrintable(move.err));
+        QVERIFY2(move.err.contains(QStringLiteral("(motor 1's ") + limit + " is ON)"),
+                 qPrintable(move.err));
+        QVERIFY(!move.err.contains(QStringLiteral("no stop, limit or E-STOP seen")));
+        const ProgramRun wait =
+            runProgram(QStringLiteral("stepcomctl"),
+                       link + QStringList{"command", "motor1.move", "--wait"}, env);
+        QCOMPARE(wait.exitCode, 1);
+        QVERIFY2(wait.err.contains(QStringLiteral("(motor 1's ") + limit + " is ON)"),
+                 qPrintable(wait.err));
+        // --json: the same cause word from both.
+        const ProgramRun json =
+            runProgram(QStringLiteral("stepcomctl"),
+                       link + QStringList{"--json", "move", "motor1", "--by", "10"}, env);
+        QCOMPARE(json.exitCode, 1);
+        const QJsonObject o = QJsonDocument::fromJson(json.out.toUtf8()).object();
+        QCOMPARE(o.value(QStringLiteral("cause")).toString(), QStringLiteral("limit"));
+        QVERIFY(o.value(QStringLiteral("warning")).toString().contains(limit));
     }
 
     void backupsBeforeRiskyCommands()

@@ -157,6 +157,17 @@ private Q_SLOTS:
         QVERIFY2(r.err.contains(QStringLiteral("no answer within 200 ms")), qPrintable(r.err));
     }
 
+    void aDeadLineIsSaidOnce()
+    {
+        // Every block of a whole read gets the same "no answer": said once, with how many more.
+        device->setResponder({});
+        const Run r = ctl({QStringLiteral("read")});
+        QCOMPARE(r.exitCode, 1);
+        QCOMPARE(r.err.count(QStringLiteral("no answer within 200 ms")), 1);
+        QVERIFY2(r.err.contains(QStringLiteral("(the same for 4 more reads of this command)")),
+                 qPrintable(r.err));
+    }
+
     void commandPulsesTheCoil()
     {
         const Run r = ctl({QStringLiteral("command"), QStringLiteral("motor2.reverse")});

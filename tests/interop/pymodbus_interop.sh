@@ -61,6 +61,21 @@ run read-two 0 read motor1.speed motor2.microsteps && expect read-two "motor1.sp
 run write 0 write motor1.speed=222 motor1.move_distance=12.5
 run read-back 0 read motor1.speed motor1.move_distance &&
     expect read-back "motor1.speed.*222" && expect read-back "motor1.move_distance.*12\.50"
+# What the window asks before writing is asked here too: exit 2 and no write frame without --yes.
+nowrite() { # nowrite NAME: no write frame went out in NAME's traffic
+    if grep -qE "  TX  .*  write " "$dir/$1.err"; then
+        echo "FAIL $1: a write frame went out"
+        failed=$((failed + 1))
+    fi
+}
+run home-on-limit 2 write motor1.home_input=1 && nowrite home-on-limit
+grep -q "positive limit" "$dir/home-on-limit.err" ||
+    { echo "FAIL home-on-limit: the question is not printed"; failed=$((failed + 1)); }
+run mode-4 2 write mode.system=4 && nowrite mode-4
+run review-held 0 read motor1.home_input mode.system &&
+    expect review-held "motor1.home_input = 2" && expect review-held "mode.system = 0"
+run mode-4-yes 0 --yes write mode.system=4
+run mode-0 0 --yes write mode.system=0
 run command-output 0 command output1_on
 run command-stop 0 command motor1.stop
 run command-estop 0 command estop

@@ -166,6 +166,56 @@ private Q_SLOTS:
         QCOMPARE(MotionJudge::text(map, o), text);
     }
 
+    // What inputKeys() names is all a front-end needs to read: plan, warning and verdict from
+    // those registers alone are the ones from everything.
+    void theInputKeysAreEnoughToJudge_data()
+    {
+        QTest::addColumn<QString>("command");
+        for (const char *c : {"motor1.move", "motor2.home", "home_all", "return_to_zero",
+                              "arc.start", "line.start"})
+            QTest::newRow(c) << QString::fromLatin1(c);
+    }
+    void theInputKeysAreEnoughToJudge()
+    {
+        QFETCH(QString, command);
+        // Limits ON everywhere, axes away from 0: warnings and limits to name.
+        const StatusValues all = with(idleMachine(), {{u"io.in1"_s, 1},
+                                                      {u"io.in2"_s, 1},
+                                                      {u"io.in3"_s, 1},
+                                                      {u"io.in4"_s, 1},
+                                                      {u"motor1.position"_s, 300},
+                                                      {u"motor2.position"_s, -200}});
+        StatusValues read;
+        for (const QString &k : MotionJudge::inputKeys(map, command)) {
+            if (all.contains(k))
+                read.insert(k, all.value(k));
+        }
+        QCOMPARE(MotionJudge::limitWarning(map, command, read),
+                 MotionJudge::limitWarning(map, command, all));
+        const auto fromAll = MotionJudge::plan(map, command, all);
+        const auto fromRead = MotionJudge::plan(map, command, read);
+        QCOMPARE(bool(fromRead), bool(fromAll));
+        if (!fromAll)
+            return;
+        QCOMPARE(fromRead->motors, fromAll->motors);
+        QCOMPARE(fromRead->target, fromAll->target);
+        QCOMPARE(
+            MotionJudge::text(map, MotionJudge::judge(map, *fromRead, read, MotionCause::None)),
+            MotionJudge::text(map, MotionJudge::judge(map, *fromAll, all, MotionCause::None)));
+    }
+
+    void aSpecialModeNamesNoLimit()
+    {
+        // Modes 1-5 give IN1-IN4 other meanings: an input ON is no limit there.
+        const auto start = MotionJudge::plan(map, u"motor1.move"_s, idleMachine());
+        QVERIFY(start);
+        const StatusValues after = with(
+            idleMachine(), {{u"motor1.position"_s, 700}, {u"io.in1"_s, 1}, {u"mode.system"_s, 3}});
+        const MotionOutcome o = MotionJudge::judge(map, *start, after, MotionCause::None);
+        QCOMPARE(o.causeWord(), u"unknown"_s);
+        QVERIFY(!MotionJudge::text(map, o).contains(u"limit (IN1) is ON"_s));
+    }
+
     void homingIsReferencedOnlyOnTheHomeInputAtZero_data()
     {
         QTest::addColumn<qint64>("end");

@@ -165,6 +165,23 @@ private Q_SLOTS:
                  qPrintable(error));
     }
 
+    // No log of those days: the README says there is none, not that the logs are inside.
+    void withoutLogsTheReadmeSaysSo()
+    {
+        BundleInput none = input;
+        none.logDirectory = dir.filePath(QStringLiteral("no-logs"));
+        none.days = 3;
+        const QString zip = dir.filePath(QStringLiteral("nologs.zip"));
+        QStringList contents;
+        QString error;
+        QVERIFY2(SupportBundle::create(zip, none, &contents, &error), qPrintable(error));
+        QTemporaryDir out;
+        const QString readme = QString::fromUtf8(readEntry(zip, QStringLiteral("README.txt"), out));
+        QVERIFY2(!readme.contains(QLatin1String("Session logs of the last")), qPrintable(readme));
+        QVERIFY2(readme.contains(QLatin1String("No session log of the last 3 day(s)")),
+                 qPrintable(readme));
+    }
+
     // The progress never goes back, counts every byte that goes in and ends at the end.
     void progressReachesTheEnd()
     {

@@ -399,6 +399,11 @@ private Q_SLOTS:
         QVERIFY(page.confirmation()->text().contains(QStringLiteral("IN1-IN4")));
         QVERIFY(
             page.confirmation()->informativeText().contains(QStringLiteral("IN3: positive limit")));
+        // The review stepcomctl prints before the same write, word for word.
+        QVERIFY2(page.confirmation()->informativeText().contains(
+                     QStringLiteral("System mode 3 “Forward/reverse trigger” changes what the "
+                                    "inputs IN1-IN4 do, at once, and ignores the limit settings")),
+                 qPrintable(page.confirmation()->informativeText()));
         QVERIFY(page.explanation()->text().contains(QStringLiteral("IN1")));
         page.confirmation()->button(QMessageBox::Cancel)->click();
         QTRY_VERIFY(!page.confirmation());

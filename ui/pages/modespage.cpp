@@ -1,5 +1,6 @@
 #include "pages/modespage.h"
 
+#include "device/writereview.h"
 #include "dialogs/writechangesdialog.h"
 #include "language.h"
 #include "session/devicesession.h"
@@ -30,7 +31,6 @@ struct ModeText
 {
     const char *explanation;
     const char *inputs[4];
-    bool ignoresLimits;
 };
 
 const ModeText kModes[] = {
@@ -41,8 +41,7 @@ const ModeText kModes[] = {
      {QT_TRANSLATE_NOOP("stepcom::ModesPage", "as set in the limit settings"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "as set in the limit settings"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "as set in the limit settings"),
-      QT_TRANSLATE_NOOP("stepcom::ModesPage", "as set in the limit settings")},
-     false},
+      QT_TRANSLATE_NOOP("stepcom::ModesPage", "as set in the limit settings")}},
     {QT_TRANSLATE_NOOP("stepcom::ModesPage",
                        "Motor 1 only. A start on IN4 runs it forward to the positive limit "
                        "(IN1), then in reverse to the negative limit (IN2): one round trip, "
@@ -51,8 +50,7 @@ const ModeText kModes[] = {
      {QT_TRANSLATE_NOOP("stepcom::ModesPage", "positive limit"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "negative limit"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "emergency stop"),
-      QT_TRANSLATE_NOOP("stepcom::ModesPage", "start (forward)")},
-     false},
+      QT_TRANSLATE_NOOP("stepcom::ModesPage", "start (forward)")}},
     {QT_TRANSLATE_NOOP("stepcom::ModesPage",
                        "Motor 1 runs on a short pulse: IN1 starts it (forward the first time), "
                        "IN2-IN4 stop it and choose the direction of the next start. The limit "
@@ -60,8 +58,7 @@ const ModeText kModes[] = {
      {QT_TRANSLATE_NOOP("stepcom::ModesPage", "start (forward the first time)"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "stop; next start keeps the direction"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "stop; next start reverses"),
-      QT_TRANSLATE_NOOP("stepcom::ModesPage", "stop; next start goes forward")},
-     true},
+      QT_TRANSLATE_NOOP("stepcom::ModesPage", "stop; next start goes forward")}},
     {QT_TRANSLATE_NOOP("stepcom::ModesPage",
                        "Motor 1 runs forward on a pulse on IN1 and in reverse on a pulse on IN2; "
                        "IN3 and IN4 are its limits. The limit settings are ignored."),
@@ -69,8 +66,7 @@ const ModeText kModes[] = {
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "run reverse"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "positive limit: stops a forward run, only "
                                               "reverse allowed then"),
-      QT_TRANSLATE_NOOP("stepcom::ModesPage", "negative limit: stops a reverse run")},
-     true},
+      QT_TRANSLATE_NOOP("stepcom::ModesPage", "negative limit: stops a reverse run")}},
     {QT_TRANSLATE_NOOP("stepcom::ModesPage",
                        "Motor 1 runs while IN1 (forward) or IN2 (reverse) is held and stops when "
                        "it is released; IN3 and IN4 are its limits. The limit settings are "
@@ -78,8 +74,7 @@ const ModeText kModes[] = {
      {QT_TRANSLATE_NOOP("stepcom::ModesPage", "held: forward; released: stop"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "held: reverse; released: stop"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "positive limit"),
-      QT_TRANSLATE_NOOP("stepcom::ModesPage", "negative limit")},
-     true},
+      QT_TRANSLATE_NOOP("stepcom::ModesPage", "negative limit")}},
     {QT_TRANSLATE_NOOP("stepcom::ModesPage",
                        "Each pulse on IN1 moves motor 1 forward by its set move distance, each "
                        "pulse on IN2 in reverse; IN3 and IN4 are its limits. The limit settings "
@@ -87,8 +82,7 @@ const ModeText kModes[] = {
      {QT_TRANSLATE_NOOP("stepcom::ModesPage", "forward by the set distance"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "reverse by the set distance"),
       QT_TRANSLATE_NOOP("stepcom::ModesPage", "positive limit"),
-      QT_TRANSLATE_NOOP("stepcom::ModesPage", "negative limit")},
-     true},
+      QT_TRANSLATE_NOOP("stepcom::ModesPage", "negative limit")}},
 };
 constexpr int kModeCount = int(std::size(kModes));
 
@@ -249,8 +243,10 @@ void ModesPage::confirmMode(int mode)
     for (int i = 0; i < 4; ++i)
         inputs += tr("IN%1: %2").arg(i + 1).arg(tr(kModes[mode].inputs[i])) + QLatin1Char('\n');
     QString details = tr(kModes[mode].explanation) + QStringLiteral("\n\n") + inputs;
-    if (kModes[mode].ignoresLimits)
-        details += QLatin1Char('\n') + tr("The limit settings are ignored in this mode.");
+    // What stepcomctl prints before the same write: one review (core/device/writereview).
+    const QStringList review = WriteReview::problems(*session()->parameters(), {{p, mode}});
+    if (!review.isEmpty())
+        details += QLatin1Char('\n') + review.join(QLatin1Char('\n'));
     auto *box = new QMessageBox(
         QMessageBox::Warning, tr("Change the system mode"),
         tr("Change the controller to mode %1 “%2”? This changes what the machine's inputs "
@@ -314,8 +310,8 @@ void ModesPage::describe()
                                : tr("The controller is in special mode %1.").arg(*device));
     m_explanation->setText(shown >= 0 ? tr(kModes[shown].explanation) : QString());
     const bool ignoring =
-        (shown >= 0 && kModes[shown].ignoresLimits) ||
-        (device && *device >= 0 && *device < kModeCount && kModes[*device].ignoresLimits);
+        (shown >= 0 && WriteReview::modeIgnoresLimits(shown)) ||
+        (device && *device >= 0 && *device < kModeCount && WriteReview::modeIgnoresLimits(*device));
     QPalette pal = m_warning->palette();
     pal.setColor(QPalette::WindowText,
                  ignoring ? QColor(220, 40, 40) : palette().color(QPalette::WindowText));
@@ -358,7 +354,8 @@ void ModesPage::retranslate()
         m_table->item(r, 0)->setText(m_mode->itemText(r));
         for (int i = 0; i < 4; ++i)
             m_table->item(r, i + 1)->setText(tr(kModes[r].inputs[i]));
-        m_table->item(r, 5)->setText(kModes[r].ignoresLimits ? tr("ignored") : tr("used"));
+        m_table->item(r, 5)->setText(WriteReview::modeIgnoresLimits(r) ? tr("ignored")
+                                                                       : tr("used"));
     }
     m_tripsBox->setTitle(tr("Round trips (40301)"));
     m_tripsNote->setText(tr("Only used in mode 1 (round trip): how many round trips motor 1 "
