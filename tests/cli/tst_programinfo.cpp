@@ -99,10 +99,13 @@ private Q_SLOTS:
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("said");
         const QString missing = QStringLiteral("/nonexistent/machine.json");
-        QTest::newRow("missing") << QStringList{missing} << missing + QStringLiteral(": no such file");
-        QTest::newRow("two") << QStringList{missing, missing} << QStringLiteral("one file at a time");
-        QTest::newRow("with --sim") << QStringList{QStringLiteral("--sim"), sourcePath(QStringLiteral("README.md"))}
-                                    << QStringLiteral("without --sim");
+        QTest::newRow("missing") << QStringList{missing}
+                                 << missing + QStringLiteral(": no such file");
+        QTest::newRow("two") << QStringList{missing, missing}
+                             << QStringLiteral("one file at a time");
+        QTest::newRow("with --sim")
+            << QStringList{QStringLiteral("--sim"), sourcePath(QStringLiteral("README.md"))}
+            << QStringLiteral("without --sim");
     }
     void stepcomTakesAFile()
     {

@@ -117,13 +117,13 @@ private Q_SLOTS:
         QTest::addColumn<QString>("name");
         QTest::addColumn<QByteArray>("bytes");
         QTest::addColumn<QString>("said");
-        QTest::newRow("a picture") << QStringLiteral("photo.png")
-                                   << QByteArray("\x89PNG\r\n\x1a\n", 8)
-                                   << QStringLiteral("neither a StepCom profile");
+        QTest::newRow("a picture")
+            << QStringLiteral("photo.png") << QByteArray("\x89PNG\r\n\x1a\n", 8)
+            << QStringLiteral("neither a StepCom profile");
         QTest::newRow("missing") << QStringLiteral("gone.json") << QByteArray()
                                  << QStringLiteral("no such file");
-        QTest::newRow("broken profile") << QStringLiteral("broken.json")
-                                        << QByteArray("{ \"format\": ") << QString();
+        QTest::newRow("broken profile")
+            << QStringLiteral("broken.json") << QByteArray("{ \"format\": ") << QString();
     }
     void otherFilesAreRefusedByName()
     {
@@ -132,8 +132,7 @@ private Q_SLOTS:
         QFETCH(QString, said);
         DeviceSession session;
         MainWindow window(&session);
-        const QString path =
-            bytes.isEmpty() ? dir.filePath(name) : writeFile(name, bytes);
+        const QString path = bytes.isEmpty() ? dir.filePath(name) : writeFile(name, bytes);
         QVERIFY(!window.openGivenFile(path));
         QVERIFY(!session.parameters()->isFile());
         QVERIFY(!session.parameters()->isReplay());

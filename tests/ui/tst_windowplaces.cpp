@@ -40,8 +40,8 @@ namespace {
 QList<QToolButton *> shownEmergencyStops(QWidget *window)
 {
     QList<QToolButton *> shown;
-    for (QToolButton *b : window->findChildren<QToolButton *>(
-             QStringLiteral("emergencyStopButton"))) {
+    for (QToolButton *b :
+         window->findChildren<QToolButton *>(QStringLiteral("emergencyStopButton"))) {
         if (b->isVisibleTo(window) && !b->visibleRegion().isEmpty())
             shown << b;
     }
