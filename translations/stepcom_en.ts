@@ -4615,10 +4615,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Disconnected</translation>
     </message>
     <message>
-        <source>%1 transactions/s · status %2 Hz</source>
-        <translation>%1 transactions/s · status %2 Hz</translation>
-    </message>
-    <message>
         <source>⚠ Not saved to flash</source>
         <translation>⚠ Not saved to flash</translation>
     </message>
@@ -4657,6 +4653,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Line: %1 (at most %2 ms)</source>
         <translation>Line: %1 (at most %2 ms)</translation>
+    </message>
+    <message>
+        <source>%1 transactions/s</source>
+        <translation>%1 transactions/s</translation>
     </message>
 </context>
 <context>

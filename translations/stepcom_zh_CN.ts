@@ -4591,10 +4591,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>未连接</translation>
     </message>
     <message>
-        <source>%1 transactions/s · status %2 Hz</source>
-        <translation>%1 次通信/s · 状态刷新 %2 Hz</translation>
-    </message>
-    <message>
         <source>⚠ Not saved to flash</source>
         <translation>⚠ 未保存到闪存</translation>
     </message>
@@ -4633,6 +4629,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Line: %1 (at most %2 ms)</source>
         <translation>线路：%1（最多 %2 ms）</translation>
+    </message>
+    <message>
+        <source>%1 transactions/s</source>
+        <translation>%1 次通信/s</translation>
     </message>
 </context>
 <context>

@@ -21,6 +21,7 @@ StatusPollRow::StatusPollRow(DeviceSession *session, QWidget *parent)
     // Two rows, so a narrow page (1366×768 at ×1.5) or a longer language never cuts them.
     auto *rows = new QFormLayout(this);
     rows->setContentsMargins(0, 0, 0, 0);
+    rows->setFieldGrowthPolicy(QFormLayout::FieldsStayAtSizeHint);
     m_interval->setObjectName(QStringLiteral("pollInterval"));
     for (int ms : {0, 100, 250, 500, 1000})
         m_interval->addItem(QString(), ms);
