@@ -5,7 +5,6 @@
 #include "dialogs/supportbundledialog.h" // issue 26
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
-#include "givenfile.h"
 #include "help/guidewindow.h"
 #include "help/userguide.h"
 #include "language.h"
@@ -533,34 +532,6 @@ void MainWindow::updateActions()
     m_revert->setEnabled(edits);
     m_save->setEnabled(connected);
     m_disconnect->setEnabled(connected);
-}
-
-bool MainWindow::openGivenFile(const QString &path)
-{
-    QString why;
-    switch (GivenFile::classify(path, &why)) {
-    case GivenFile::Kind::Profile:
-        return m_profiles->openFile(path); // no controller connected: edited as a file
-    case GivenFile::Kind::SessionLog:
-    case GivenFile::Kind::SupportBundle:
-        return m_replay->openPath(path);
-    case GivenFile::Kind::Unreadable:
-    case GivenFile::Kind::Unknown:
-        break;
-    }
-    m_messages->add(DeviceSession::Severity::Error, why);
-    if (m_givenFileError)
-        m_givenFileError->deleteLater();
-    m_givenFileError =
-        new QMessageBox(QMessageBox::Warning, tr("Open a file"), why, QMessageBox::Ok, this);
-    m_givenFileError->setAttribute(Qt::WA_DeleteOnClose);
-    m_givenFileError->open();
-    return false;
-}
-
-QMessageBox *MainWindow::givenFileError() const
-{
-    return m_givenFileError;
 }
 
 void MainWindow::writeChanges()
