@@ -2,7 +2,8 @@
 # Installs what StepCom needs from Debian/Ubuntu packages, only what is missing.
 #   scripts/deps.sh          build and run
 #   scripts/deps.sh --test   also the test peers (mbpoll, socat, pymodbus with serial-asyncio, Xvfb), the package
-#                            checks (dpkg-dev, desktop-file-utils, appstream), clang with
+#                            checks (dpkg-dev, desktop-file-utils, appstream, shared-mime-info and
+#                            gio for the file types), clang with
 #                            libFuzzer (scripts/fuzz.sh), clang-format (scripts/check-format.sh)
 #                            and the accessibility bus with pyatspi (tests/a11y/a11y-walk.py)
 set -euo pipefail
@@ -15,7 +16,7 @@ packages=(build-essential cmake ninja-build pkg-config
 if [[ "${1:-}" == "--test" ]]; then
     packages+=(mbpoll socat python3-pymodbus python3-serial-asyncio xvfb xauth dpkg-dev file poppler-utils
                desktop-file-utils appstream clang libclang-rt-dev clang-format
-               python3-pyatspi at-spi2-core dbus-daemon dbus-bin)
+               python3-pyatspi at-spi2-core dbus-daemon dbus-bin shared-mime-info libglib2.0-bin)
 fi
 
 missing=()

@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
 <context>
+    <name>GivenFile</name>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1: no such file</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a file</source>
+        <translation>%1 is a folder, not a file</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 cannot be read: %2</translation>
+    </message>
+    <message>
+        <source>%1 is neither a StepCom profile, a session log nor a support bundle: StepCom opens those.</source>
+        <translation>%1 is neither a StepCom profile, a session log nor a support bundle: StepCom opens those.</translation>
+    </message>
+</context>
+<context>
     <name>stepcom</name>
     <message>
         <source>Commissioning window for a 2-axis stepper controller (Modbus RTU/TCP).</source>
@@ -58,6 +77,10 @@
     <message>
         <source>parity</source>
         <translation>parity</translation>
+    </message>
+    <message>
+        <source>A profile to edit without a controller, or a session log or support bundle to replay.</source>
+        <translation>A profile to edit without a controller, or a session log or support bundle to replay.</translation>
     </message>
 </context>
 <context>
@@ -3505,6 +3528,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Emergency stop: all motors and outputs off (coil 00042). Key: %1</source>
         <translation>Emergency stop: all motors and outputs off (coil 00042). Key: %1</translation>
     </message>
+    <message>
+        <source>Nothing to stop: a session log is replayed and no controller is connected. Connect to a controller to use the emergency stop.</source>
+        <translation>Nothing to stop: a session log is replayed and no controller is connected. Connect to a controller to use the emergency stop.</translation>
+    </message>
+    <message>
+        <source>Nothing to stop: a profile file is edited and no controller is connected. Connect to a controller to use the emergency stop.</source>
+        <translation>Nothing to stop: a profile file is edited and no controller is connected. Connect to a controller to use the emergency stop.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::FaultInjector</name>
@@ -4396,10 +4427,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Stop motor %1 at once, whatever started it</translation>
     </message>
     <message>
-        <source>Position:</source>
-        <translation>Position:</translation>
-    </message>
-    <message>
         <source>Jog speed:</source>
         <translation>Jog speed:</translation>
     </message>
@@ -4623,10 +4650,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Disconnected</translation>
     </message>
     <message>
-        <source>%1 transactions/s · status %2 Hz</source>
-        <translation>%1 transactions/s · status %2 Hz</translation>
-    </message>
-    <message>
         <source>⚠ Not saved to flash</source>
         <translation>⚠ Not saved to flash</translation>
     </message>
@@ -4665,6 +4688,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Line: %1 (at most %2 ms)</source>
         <translation>Line: %1 (at most %2 ms)</translation>
+    </message>
+    <message>
+        <source>%1 transactions/s</source>
+        <translation>%1 transactions/s</translation>
     </message>
 </context>
 <context>
@@ -4972,10 +4999,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>All motors and outputs off, at once (key: %1)</translation>
     </message>
     <message>
-        <source>E-STOP</source>
-        <translation>E-STOP</translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation>&amp;Quit</translation>
     </message>
@@ -5060,6 +5083,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>One .zip file with the session logs, the profile and the settings, to send to support</source>
         <translation>One .zip file with the session logs, the profile and the settings, to send to support</translation>
+    </message>
+    <message>
+        <source>Open a file</source>
+        <translation>Open a file</translation>
     </message>
 </context>
 <context>
@@ -5687,8 +5714,8 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>&amp;Stop motor %1</translation>
     </message>
     <message>
-        <source>Stops the motor at once, without a ramp. The E-STOP in the toolbar stops everything.</source>
-        <translation>Stops the motor at once, without a ramp. The E-STOP in the toolbar stops everything.</translation>
+        <source>Stops the motor at once, without a ramp. The E-STOP under every page stops everything.</source>
+        <translation>Stops the motor at once, without a ramp. The E-STOP under every page stops everything.</translation>
     </message>
 </context>
 <context>
@@ -5920,6 +5947,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Check, save and report</source>
         <translation>Check, save and report</translation>
+    </message>
+    <message>
+        <source>More pages above</source>
+        <translation>More pages above</translation>
+    </message>
+    <message>
+        <source>More pages below</source>
+        <translation>More pages below</translation>
     </message>
 </context>
 <context>
@@ -8145,14 +8180,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>off</translation>
     </message>
     <message>
-        <source>measuring…</source>
-        <translation>measuring…</translation>
-    </message>
-    <message>
-        <source>%1 Hz</source>
-        <translation>%1 Hz</translation>
-    </message>
-    <message>
         <source>Status</source>
         <translation>Status</translation>
     </message>
@@ -8180,17 +8207,28 @@ Every other master on the bus must use the new settings too, and no other device
         <source>OUT%1</source>
         <translation>OUT%1</translation>
     </message>
+</context>
+<context>
+    <name>stepcom::StatusPollRow</name>
     <message>
-        <source>Update rate</source>
-        <translation>Update rate</translation>
+        <source>unknown</source>
+        <translation>unknown</translation>
     </message>
     <message>
-        <source>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</source>
-        <translation>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</translation>
+        <source>measuring…</source>
+        <translation>measuring…</translation>
     </message>
     <message>
-        <source>&amp;Poll every</source>
-        <translation>&amp;Poll every</translation>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Status updates: %1</source>
+        <translation>Status updates: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Read the status every:</source>
+        <translation>&amp;Read the status every:</translation>
     </message>
     <message>
         <source>How often the status is read. Full rate reads again as soon as a cycle ends; the link decides how fast that is.</source>
@@ -8203,6 +8241,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Achieved:</source>
+        <translation>Achieved:</translation>
+    </message>
+    <message>
+        <source>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</source>
+        <translation>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</translation>
     </message>
 </context>
 <context>

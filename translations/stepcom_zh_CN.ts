@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>GivenFile</name>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1：文件不存在</translation>
+    </message>
+    <message>
+        <source>%1 is a folder, not a file</source>
+        <translation>%1 是文件夹，不是文件</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is neither a StepCom profile, a session log nor a support bundle: StepCom opens those.</source>
+        <translation>%1 既不是 StepCom 参数文件，也不是会话日志或支持包：StepCom 只能打开这几种文件。</translation>
+    </message>
+</context>
+<context>
     <name>stepcom</name>
     <message>
         <source>Commissioning window for a 2-axis stepper controller (Modbus RTU/TCP).</source>
@@ -58,6 +77,10 @@
     <message>
         <source>parity</source>
         <translation>校验位</translation>
+    </message>
+    <message>
+        <source>A profile to edit without a controller, or a session log or support bundle to replay.</source>
+        <translation>要在不连接控制器时编辑的参数文件，或要回放的会话日志或支持包。</translation>
     </message>
 </context>
 <context>
@@ -3480,6 +3503,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Emergency stop: all motors and outputs off (coil 00042). Key: %1</source>
         <translation>急停：停止所有电机并关闭所有输出（线圈 00042）。快捷键：%1</translation>
     </message>
+    <message>
+        <source>Nothing to stop: a session log is replayed and no controller is connected. Connect to a controller to use the emergency stop.</source>
+        <translation>无可停止的对象：正在回放会话日志，未连接控制器。连接控制器后才能使用急停。</translation>
+    </message>
+    <message>
+        <source>Nothing to stop: a profile file is edited and no controller is connected. Connect to a controller to use the emergency stop.</source>
+        <translation>无可停止的对象：正在编辑参数文件，未连接控制器。连接控制器后才能使用急停。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::FaultInjector</name>
@@ -4371,10 +4402,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>立即停止电机 %1，无论是由什么启动的</translation>
     </message>
     <message>
-        <source>Position:</source>
-        <translation>实时坐标：</translation>
-    </message>
-    <message>
         <source>Jog speed:</source>
         <translation>点动速度：</translation>
     </message>
@@ -4598,10 +4625,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>未连接</translation>
     </message>
     <message>
-        <source>%1 transactions/s · status %2 Hz</source>
-        <translation>%1 次通信/s · 状态刷新 %2 Hz</translation>
-    </message>
-    <message>
         <source>⚠ Not saved to flash</source>
         <translation>⚠ 未保存到闪存</translation>
     </message>
@@ -4640,6 +4663,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Line: %1 (at most %2 ms)</source>
         <translation>线路：%1（最多 %2 ms）</translation>
+    </message>
+    <message>
+        <source>%1 transactions/s</source>
+        <translation>%1 次通信/s</translation>
     </message>
 </context>
 <context>
@@ -4944,10 +4971,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>立即停止所有电机并关闭所有输出（快捷键：%1）</translation>
     </message>
     <message>
-        <source>E-STOP</source>
-        <translation>急停</translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
@@ -5030,6 +5053,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>One .zip file with the session logs, the profile and the settings, to send to support</source>
         <translation>一个包含会话日志、参数文件和设置的 .zip 文件，用于发给技术支持</translation>
+    </message>
+    <message>
+        <source>Open a file</source>
+        <translation>打开文件</translation>
     </message>
 </context>
 <context>
@@ -5657,8 +5684,8 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>停止电机 %1(&amp;S)</translation>
     </message>
     <message>
-        <source>Stops the motor at once, without a ramp. The E-STOP in the toolbar stops everything.</source>
-        <translation>立即停止电机，不经减速。工具栏中的“急停”会停止所有电机并关闭所有输出。</translation>
+        <source>Stops the motor at once, without a ramp. The E-STOP under every page stops everything.</source>
+        <translation>立即停止电机，不经减速。每个页面下方的“急停”会停止所有电机并关闭所有输出。</translation>
     </message>
 </context>
 <context>
@@ -5884,6 +5911,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Check, save and report</source>
         <translation>检查、保存与报告</translation>
+    </message>
+    <message>
+        <source>More pages above</source>
+        <translation>上方还有页面</translation>
+    </message>
+    <message>
+        <source>More pages below</source>
+        <translation>下方还有页面</translation>
     </message>
 </context>
 <context>
@@ -8091,14 +8126,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>关 (OFF)</translation>
     </message>
     <message>
-        <source>measuring…</source>
-        <translation>正在测量…</translation>
-    </message>
-    <message>
-        <source>%1 Hz</source>
-        <translation>%1 Hz</translation>
-    </message>
-    <message>
         <source>Status</source>
         <translation>状态</translation>
     </message>
@@ -8126,17 +8153,28 @@ Every other master on the bus must use the new settings too, and no other device
         <source>OUT%1</source>
         <translation>OUT%1</translation>
     </message>
+</context>
+<context>
+    <name>stepcom::StatusPollRow</name>
     <message>
-        <source>Update rate</source>
-        <translation>刷新率</translation>
+        <source>unknown</source>
+        <translation>未知</translation>
     </message>
     <message>
-        <source>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</source>
-        <translation>实际达到的每秒状态刷新次数（完整读取周期数，而不是设定的频率）</translation>
+        <source>measuring…</source>
+        <translation>正在测量…</translation>
     </message>
     <message>
-        <source>&amp;Poll every</source>
-        <translation>轮询间隔(&amp;P)</translation>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Status updates: %1</source>
+        <translation>状态刷新：%1</translation>
+    </message>
+    <message>
+        <source>&amp;Read the status every:</source>
+        <translation>状态读取间隔(&amp;R)：</translation>
     </message>
     <message>
         <source>How often the status is read. Full rate reads again as soon as a cycle ends; the link decides how fast that is.</source>
@@ -8149,6 +8187,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>Achieved:</source>
+        <translation>实际刷新率：</translation>
+    </message>
+    <message>
+        <source>Status updates per second actually achieved by the poller (complete read cycles, not the configured rate)</source>
+        <translation>实际达到的每秒状态刷新次数（完整读取周期数，而不是设定的频率）</translation>
     </message>
 </context>
 <context>

@@ -13,6 +13,9 @@ EmergencyStop::EmergencyStop(DeviceSession *session, QObject *parent)
     , m_session(session)
 {
     qApp->installEventFilter(this);
+    connect(session, &DeviceSession::linkStateChanged, this, &EmergencyStop::refresh);
+    connect(session->parameters(), &ParameterStore::originChanged, this, &EmergencyStop::refresh);
+    m_available = isAvailable();
 }
 
 EmergencyStop::~EmergencyStop()
@@ -20,10 +23,49 @@ EmergencyStop::~EmergencyStop()
     qApp->removeEventFilter(this);
 }
 
+bool EmergencyStop::isAvailable() const
+{
+    // Reconnecting keeps it: an E-STOP then is held and sent first when the link is back.
+    const ParameterStore *store = m_session->parameters();
+    return m_session->linkState() != DeviceSession::LinkState::Disconnected ||
+           !(store->isReplay() || store->isFile());
+}
+
+QString EmergencyStop::toolTip() const
+{
+    const QString key = shortcut().toString(QKeySequence::NativeText);
+    const ParameterStore *store = m_session->parameters();
+    if (isAvailable())
+        return tr("Emergency stop: all motors and outputs off (coil 00042). Key: %1").arg(key);
+    return store->isReplay()
+               ? tr("Nothing to stop: a session log is replayed and no controller is connected. "
+                    "Connect to a controller to use the emergency stop.")
+               : tr("Nothing to stop: a profile file is edited and no controller is connected. "
+                    "Connect to a controller to use the emergency stop.");
+}
+
 void EmergencyStop::trigger()
 {
     m_session->emergencyStop();
     Q_EMIT triggered();
+}
+
+void EmergencyStop::refresh()
+{
+    const bool available = isAvailable();
+    for (const QPointer<QToolButton> &button : std::as_const(m_buttons)) {
+        if (!button)
+            continue;
+        button->setEnabled(available);
+        button->setText(tr("E-STOP"));
+        button->setToolTip(toolTip());
+        button->setAccessibleName(button->text());
+        button->setAccessibleDescription(toolTip());
+    }
+    if (available != m_available) {
+        m_available = available;
+        Q_EMIT availabilityChanged(available);
+    }
 }
 
 bool EmergencyStop::eventFilter(QObject *watched, QEvent *event)
@@ -37,6 +79,8 @@ bool EmergencyStop::eventFilter(QObject *watched, QEvent *event)
             return true;
         }
     }
+    if (event->type() == QEvent::LanguageChange && watched == qApp)
+        refresh();
     return QObject::eventFilter(watched, event);
 }
 
@@ -44,9 +88,6 @@ QToolButton *EmergencyStop::createButton(QWidget *parent)
 {
     auto *button = new QToolButton(parent);
     button->setObjectName(QStringLiteral("emergencyStopButton"));
-    button->setText(tr("E-STOP"));
-    button->setToolTip(tr("Emergency stop: all motors and outputs off (coil 00042). Key: %1")
-                           .arg(shortcut().toString(QKeySequence::NativeText)));
     button->setFocusPolicy(Qt::NoFocus); // a click must never be needed twice
     QFont font = button->font();
     font.setBold(true);
@@ -57,13 +98,18 @@ QToolButton *EmergencyStop::createButton(QWidget *parent)
     pal.setColor(QPalette::ButtonText, Qt::white);
     button->setPalette(pal);
     button->setAutoFillBackground(true);
-    // Style sheets are the only reliable way to get a red button in every style.
+    // Style sheets are the only reliable way to get a red button in every style; greyed, it
+    // must not look like a stop that works.
     button->setStyleSheet(
         QStringLiteral("QToolButton#emergencyStopButton { background: #c81414; color: white; "
                        "border: 2px solid #7a0000;"
                        " border-radius: 4px; padding: 0.3em 1.2em; }"
-                       "QToolButton#emergencyStopButton:pressed { background: #8a0000; }"));
+                       "QToolButton#emergencyStopButton:pressed { background: #8a0000; }"
+                       "QToolButton#emergencyStopButton:disabled { background: #d4d4d4; "
+                       "color: #606060; border: 2px dashed #909090; }"));
     connect(button, &QToolButton::clicked, this, &EmergencyStop::trigger);
+    m_buttons << button;
+    refresh();
     return button;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 
 #include <QKeySequence>
+#include <QList>
 #include <QObject>
+#include <QPointer>
 
 class QToolButton;
 
@@ -9,9 +11,11 @@ namespace stepcom {
 
 class DeviceSession;
 
-// The stop that always works: a red button for the toolbar and a key (F12) caught by an
-// application-wide event filter, so it fires from every page and from inside any dialog,
-// modal or not. It never asks for confirmation.
+// The stop that always works: a red button and a key (F12) caught by an application-wide event
+// filter, so it fires from every page and from inside any dialog, modal or not. It never asks
+// for confirmation. While a replay or a profile file stands where the controller's values
+// would and no controller is connected there is nothing to stop: the button is greyed and its
+// tooltip says why.
 class EmergencyStop : public QObject
 {
     Q_OBJECT
@@ -20,18 +24,28 @@ public:
     ~EmergencyStop() override;
 
     static QKeySequence shortcut() { return QKeySequence(Qt::Key_F12); }
-    // A new red button wired to trigger(); the caller places it.
+    // A new red button wired to trigger(); the caller places it. Its text, tooltip and state
+    // follow the session and the language.
     QToolButton *createButton(QWidget *parent);
     void trigger();
+    // False while a replay or a profile file is shown without a controller connected.
+    bool isAvailable() const;
+    // What the button's tooltip says: what it does, or why there is nothing to stop.
+    QString toolTip() const;
 
 Q_SIGNALS:
     void triggered();
+    void availabilityChanged(bool available);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
+    void refresh();
+
     DeviceSession *m_session;
+    QList<QPointer<QToolButton>> m_buttons;
+    bool m_available = true;
 };
 
 } // namespace stepcom

@@ -117,6 +117,12 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     m_strip->setDeviceNamer([this](int id) { return m_deviceDock->nameOf(id); });
     centralLayout->addWidget(m_replay->bar());
     centralLayout->addWidget(m_strip);
+    m_estopButton = m_strip->emergencyStopButton();
+    m_estopAction->setEnabled(m_estop->isAvailable());
+    connect(m_estop, &EmergencyStop::availabilityChanged, this, [this](bool available) {
+        m_estopAction->setEnabled(available);
+        retranslateEmergencyStop();
+    });
     m_linkStatus = new LinkStatus(session, this);
     // A cable pulled and plugged back, an adapter that came back: the window tries again.
     session->reconnector()->setEnabled(true);
@@ -289,11 +295,7 @@ void MainWindow::createActions()
     m_toolbar->addAction(m_save);
     m_toolbar->addSeparator();
     m_toolbar->addAction(m_disconnect);
-    auto *spacer = new QWidget(m_toolbar);
-    spacer->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
-    m_toolbar->addWidget(spacer);
-    m_estopButton = m_estop->createButton(m_toolbar);
-    m_toolbar->addWidget(m_estopButton);
+    // The E-STOP is the machine strip's, on every page: one button, one place to reach for.
 }
 
 void MainWindow::createMenus()
@@ -425,12 +427,7 @@ void MainWindow::retranslate()
     m_save->setToolTip(
         tr("Save the controller's parameters to its non-volatile memory (coil 00096)"));
     m_disconnect->setText(tr("&Disconnect"));
-    m_estopAction->setText(tr("&Emergency stop"));
-    m_estopAction->setToolTip(
-        tr("All motors and outputs off, at once (key: %1)")
-            .arg(EmergencyStop::shortcut().toString(QKeySequence::NativeText)));
-    m_estopButton->setText(tr("E-STOP"));
-    m_estopButton->setToolTip(m_estopAction->toolTip());
+    retranslateEmergencyStop();
     m_quit->setText(tr("&Quit"));
     m_about->setText(tr("&About StepCom"));
     m_fileMenu->setTitle(tr("&File"));
@@ -447,6 +444,16 @@ void MainWindow::retranslate()
     for (QAction *a : m_languages->actions())
         a->setChecked(a->objectName() ==
                       QStringLiteral("language_") + Language::instance().current());
+}
+
+void MainWindow::retranslateEmergencyStop()
+{
+    m_estopAction->setText(tr("&Emergency stop"));
+    m_estopAction->setToolTip(
+        m_estop->isAvailable()
+            ? tr("All motors and outputs off, at once (key: %1)")
+                  .arg(EmergencyStop::shortcut().toString(QKeySequence::NativeText))
+            : m_estop->toolTip());
 }
 
 bool MainWindow::eventFilter(QObject *watched, QEvent *event)

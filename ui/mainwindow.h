@@ -82,6 +82,12 @@ public:
     QMessageBox *closeQuestion() const;
     QAction *action(const QString &objectName) const;
 
+    // A file handed to the window (`stepcom FILE`, "Open with StepCom"): a profile is edited
+    // without a controller, a session log or a support bundle replayed; anything else is
+    // refused with a message naming the file. False when refused at once.
+    bool openGivenFile(const QString &path);
+    QMessageBox *givenFileError() const;
+
     // Ask before writing: opens the write dialog (non-modal to the event loop).
     void writeChanges();
     // Help → User guide (F1): the guide in the window's language at the section of `topic`
@@ -100,6 +106,7 @@ private:
     void createDocks();
     void addPage(Page *page);
     void retranslate();
+    void retranslateEmergencyStop();
     void updateActions();
     void updateTitle();
     // Narrow window: the status dock joins the bottom tabs, so the page keeps its width; wide
@@ -148,6 +155,7 @@ private:
     PlotPage *m_plots = nullptr;
     BackupGuard *m_backups = nullptr; // issue 17
     QPointer<QMessageBox> m_closeQuestion;
+    QPointer<QMessageBox> m_givenFileError;
     bool m_closeConfirmed = false;
     bool m_statusDockMoved = false; // arrangeDocks() put it into the bottom tabs
     bool m_firstStart = false;      // no geometry saved: showOnScreen() chooses one

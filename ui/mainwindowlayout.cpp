@@ -24,7 +24,9 @@ void MainWindow::arrangeDocks()
     const int high =
         screen() ? std::min(height(), screen()->availableGeometry().height()) : height();
     const int wide = screen() ? std::min(width(), screen()->availableGeometry().width()) : width();
-    const bool low = high < std::max(720, fontMetrics().height() * 40);
+    // Low as 1280×720 or lower, whatever the scale that made it so (1024×600, 1366×768 and
+    // 1920×1080 at ×1.5): there the sidebar's full rows need scrolling beside the docks.
+    const bool low = high <= std::max(720, fontMetrics().height() * 40);
     if (m_strip)
         m_strip->setCompact(low || wide < std::max(1440, fontMetrics().averageCharWidth() * 200));
     m_sidebar->setShortWindow(low); // low rows, small icons (issue 25)
@@ -123,9 +125,11 @@ void MainWindow::placeDocks()
     m_statusDock->setFloating(false);
     addDockWidget(Qt::RightDockWidgetArea, m_statusDock);
     m_statusDockMoved = false;
-    for (QDockWidget *dock :
-         {m_trafficDock, m_messageDock, static_cast<QDockWidget *>(m_statusDock)})
+    for (QDockWidget *dock : {m_trafficDock, m_messageDock})
         dock->show();
+    // The machine strip shows the positions, states and lamps on every page: the status dock
+    // would be a second place for them (View → Status brings it back).
+    m_statusDock->hide();
     m_deviceDock->hide();
     m_messageDock->raise();
 }

@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFileInfo>
 #include <QIcon>
 #include <QTextStream>
 
@@ -55,8 +56,33 @@ struct Options
         parser.addVersionOption();
         parser.addOption(Translators::languageOption());
         parser.addOptions({sim, port, tcp, rtuTcp, baud, parity, id, echo});
+        parser.addPositionalArgument(
+            QStringLiteral("file"),
+            QCoreApplication::translate("stepcom",
+                                        "A profile to edit without a controller, or a session "
+                                        "log or support bundle to replay."),
+            QStringLiteral("[FILE]"));
     }
 };
+
+// The file to open at start (what a file manager's "Open with StepCom" gives), if any.
+QString fileFromArguments(const QCommandLineParser &parser, QString *file)
+{
+    const auto tr = [](const char *text) { return QCoreApplication::translate("stepcom", text); };
+    const QStringList files = parser.positionalArguments();
+    if (files.isEmpty())
+        return {};
+    if (files.size() > 1)
+        return tr("give one file at a time, not %1").arg(files.size());
+    if (!QFileInfo::exists(files.first()))
+        return tr("%1: no such file").arg(files.first());
+    if (parser.isSet(QStringLiteral("sim")) || parser.isSet(QStringLiteral("port")) ||
+        parser.isSet(QStringLiteral("tcp")) || parser.isSet(QStringLiteral("rtu-tcp")))
+        return tr("a file is opened without a controller: give it without --sim, --port, --tcp "
+                  "and --rtu-tcp");
+    *file = files.first();
+    return {};
+}
 
 QString linkFromArguments(const QCommandLineParser &parser, const Options &options,
                           std::optional<LinkSettings> *out)
@@ -109,9 +135,11 @@ bool answersWithoutWindow(const QStringList &arguments)
     if (!probe.parse(arguments))
         return true;
     std::optional<LinkSettings> link;
+    QString file;
     return probe.isSet(QStringLiteral("help")) || probe.isSet(QStringLiteral("help-all")) ||
            probe.isSet(QStringLiteral("version")) ||
-           !linkFromArguments(probe, options, &link).isEmpty();
+           !linkFromArguments(probe, options, &link).isEmpty() ||
+           !fileFromArguments(probe, &file).isEmpty();
 }
 
 } // namespace
@@ -160,6 +188,11 @@ int main(int argc, char *argv[])
         QTextStream(stderr) << QStringLiteral("stepcom: ") << problem << Qt::endl;
         return 2;
     }
+    QString startFile;
+    if (const auto problem = fileFromArguments(parser, &startFile); !problem.isEmpty()) {
+        QTextStream(stderr) << QStringLiteral("stepcom: ") << problem << Qt::endl;
+        return 2;
+    }
 
     DeviceSession session;
     session.setSimulator(std::make_unique<BuiltinSimulator>()); // the Connection page offers it
@@ -169,5 +202,7 @@ int main(int argc, char *argv[])
         session.connectSimulator();
     else if (startLink)
         session.connectTo(*startLink); // an unusable port is reported by the session, in the window
+    else if (!startFile.isEmpty())
+        window.openGivenFile(startFile); // what it is, or why not, is said in the window
     return QCoreApplication::exec();
 }

@@ -9,7 +9,8 @@ checks, from outside the process, what the accessibility bus says:
     in that direction;
   - every showing button, field, box and slider has a name;
   - both motor positions and the E-STOP of the machine strip are showing, whole, inside the
-    strip, the window and the screen, and the positions are known (not "—");
+    strip, the window and the screen, and the positions are known (not "—"); that E-STOP is
+    the only one showing (a second, elsewhere, would be a second place to reach for);
   - the window's parts (menu bar, toolbar, docks, page area, status bar) do not overlap.
 
 A report per screen and language; the exit status is 1 on any finding, 2 when the program could
@@ -535,6 +536,10 @@ class Walker:
         in_strip = [b for b in estops if strip is not None and b.parent == strip]
         if not in_strip:
             self.finding(page, "the machine strip's E-STOP (%s) is not showing" % self.estop)
+        elsewhere = [b for b in estops if b not in in_strip and self.showing(b)]
+        if elsewhere:
+            self.finding(page, "%d E-STOP(s) besides the strip's are showing: %s" % (
+                len(elsewhere), ", ".join(self.describe(b, self.extents(b)) for b in elsewhere)))
         for b in in_strip:
             self.check_sane(page, "the E-STOP", b, self.extents(b), strip, w)
 

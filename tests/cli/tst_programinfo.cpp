@@ -91,6 +91,37 @@ private Q_SLOTS:
         QVERIFY2(!r.err.contains(QStringLiteral("QCommandLineParser")), qPrintable(r.err));
     }
 
+    // `stepcom FILE` (a file manager's "Open with StepCom"): the help names it; a file that is
+    // not there, two files, or a file with a link to connect to are answered in the terminal,
+    // naming what was wrong, before any window (the window says what an existing file is).
+    void stepcomTakesAFile_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("said");
+        const QString missing = QStringLiteral("/nonexistent/machine.json");
+        QTest::newRow("missing") << QStringList{missing}
+                                 << missing + QStringLiteral(": no such file");
+        QTest::newRow("two") << QStringList{missing, missing}
+                             << QStringLiteral("one file at a time");
+        QTest::newRow("with --sim")
+            << QStringList{QStringLiteral("--sim"), sourcePath(QStringLiteral("README.md"))}
+            << QStringLiteral("without --sim");
+    }
+    void stepcomTakesAFile()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, said);
+        const Run help = run(QStringLiteral("stepcom"), {QStringLiteral("--help")},
+                             {QStringLiteral("LANG=C.UTF-8")});
+        QVERIFY2(help.out.contains(QStringLiteral("[FILE]")) &&
+                     help.out.simplified().contains(
+                         QStringLiteral("session log or support bundle to replay")),
+                 qPrintable(help.out));
+        const Run r = run(QStringLiteral("stepcom"), args, {QStringLiteral("LANG=C.UTF-8")});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(said), qPrintable(r.err));
+    }
+
     // The help in Chinese, however the environment or the command line asks for it.
     void helpInChinese_data()
     {

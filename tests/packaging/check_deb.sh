@@ -48,6 +48,7 @@ done
 contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
 expect=(./usr/bin/stepcom ./usr/bin/stepcomctl ./usr/bin/stepcom-sim
         ./usr/share/applications/org.stepcom.StepCom.desktop
+        ./usr/share/mime/packages/org.stepcom.StepCom.xml
         ./usr/share/metainfo/org.stepcom.StepCom.metainfo.xml
         ./usr/share/icons/hicolor/scalable/apps/stepcom.svg
         ./usr/share/man/man1/stepcom.1.gz ./usr/share/man/man1/stepcomctl.1.gz

@@ -79,6 +79,49 @@ class TestLayoutFit : public QObject, public test::LayoutChecks
         }
     }
 
+    // The sidebar (issue: 1366×768 at ×1.5): low rows whenever the screen is as low as 1280×720
+    // (1024×600, 1366×768 or 1920×1080 at ×1.5); every entry can be brought into view whole,
+    // clear of the arrows that say more is above or below, and a click on it shows its page.
+    void checkSidebar(MainWindow &window, const QString &context)
+    {
+        PageSidebar *sidebar = window.sidebar();
+        const int high = QGuiApplication::primaryScreen()->availableGeometry().height();
+        if (high <= 720 && !sidebar->isCompact())
+            problem(context,
+                    QStringLiteral("the sidebar has full rows on a screen %1 px high").arg(high));
+        const int shown = int(window.pages().indexOf(window.currentPage()));
+        for (int i = 0; i < window.pages().size(); ++i) {
+            QListWidgetItem *entry = sidebar->itemOf(i);
+            sidebar->scrollToItem(entry);
+            settle();
+            const QRect rect = sidebar->visualItemRect(entry);
+            const QRect clear = sidebar->clearArea();
+            const QString title = entry->text();
+            if (!clear.contains(rect)) {
+                problem(context, QStringLiteral("sidebar entry %1 is not wholly in view and clear "
+                                                "of the arrows (%2,%3 %4×%5 in %6,%7 %8×%9)")
+                                     .arg(title)
+                                     .arg(rect.x())
+                                     .arg(rect.y())
+                                     .arg(rect.width())
+                                     .arg(rect.height())
+                                     .arg(clear.x())
+                                     .arg(clear.y())
+                                     .arg(clear.width())
+                                     .arg(clear.height()));
+                continue;
+            }
+            QTest::mouseClick(sidebar->viewport(), Qt::LeftButton, Qt::NoModifier, rect.center());
+            settle();
+            if (window.currentPage() != window.pages().at(i))
+                problem(context, QStringLiteral("a click on sidebar entry %1 does not show its "
+                                                "page")
+                                     .arg(title));
+        }
+        window.showPage(shown);
+        settle();
+    }
+
     // `w` (a page's main action) can be seen without scrolling.
     void checkInView(QWidget *w, const QString &context)
     {
@@ -184,6 +227,7 @@ private Q_SLOTS:
                 QLatin1String("stepcom::InterpolationPage"))
                 checkInView(page->findChild<QPushButton *>(QStringLiteral("startButton")), context);
         }
+        checkSidebar(window, QStringLiteral("sidebar"));
         m_problems.removeDuplicates();
         QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
     }

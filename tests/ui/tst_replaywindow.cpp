@@ -46,6 +46,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
 
 #include <memory>
 
@@ -267,8 +268,14 @@ private Q_SLOTS:
         QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
         QVERIFY(!window->action(QStringLiteral("saveToFlash"))->isEnabled());
         QVERIFY(!window->action(QStringLiteral("readAll"))->isEnabled());
+        // Nothing to stop: the E-STOP is greyed and says why; F12 still reaches the session,
+        // which says that nothing was sent.
+        QVERIFY(!window->action(QStringLiteral("emergencyStop"))->isEnabled());
+        QVERIFY(!window->emergencyStopButton()->isEnabled());
+        QVERIFY(
+            window->emergencyStopButton()->toolTip().contains(QStringLiteral("Nothing to stop")));
         QSignalSpy said(session.get(), &DeviceSession::message);
-        window->action(QStringLiteral("emergencyStop"))->trigger();
+        QTest::keyClick(window.get(), Qt::Key_F12);
         QVERIFY(said.size() >= 1);
         QVERIFY(said.at(0).at(1).toString().contains(QStringLiteral("nothing was sent")));
         QCOMPARE(session->traffic()->entries().size(), sent);

@@ -26,6 +26,7 @@
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
 #include <QWheelEvent>
 
 using namespace stepcom;
@@ -203,6 +204,71 @@ private Q_SLOTS:
         QApplication::sendEvent(sidebar->viewport(), &up);
         QTRY_VERIFY(sidebar->verticalScrollBar()->value() < before);
         QVERIFY2(sidebar->cutEntries().isEmpty(), qPrintable(sidebar->cutEntries().join(", ")));
+    }
+
+    // A sidebar lower than its rows (1366×768 at ×1.5 with the docks below): no entry ever lies
+    // under an arrow -- the arrows have rooms of their own above and below the rows -- every
+    // entry comes into view whole, and a click on it shows its page ("Device" did not).
+    void noEntryUnderTheArrows()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        PageSidebar *sidebar = window.sidebar();
+        sidebar->setFixedHeight(sidebar->fontMetrics().height() * 7);
+        QTRY_VERIFY(sidebar->hasMoreBelow());
+        QVERIFY(sidebar->moreBelowArrow()->isVisible());
+        QVERIFY(sidebar->moreAboveArrow()->isVisible());
+        QVERIFY(!sidebar->moreAboveArrow()->isEnabled()); // nothing above yet
+        const QRect viewport(sidebar->viewport()->mapTo(sidebar, QPoint(0, 0)),
+                             sidebar->viewport()->size());
+        QVERIFY(!sidebar->moreBelowArrow()->geometry().intersects(viewport));
+        QVERIFY(!sidebar->moreAboveArrow()->geometry().intersects(viewport));
+        for (int i = int(window.pages().size()) - 1; i >= 0; --i) {
+            QListWidgetItem *entry = sidebar->itemOf(i);
+            sidebar->scrollToItem(entry);
+            QCoreApplication::processEvents();
+            const QRect rect = sidebar->visualItemRect(entry);
+            QVERIFY2(sidebar->clearArea().contains(rect), qPrintable(entry->text()));
+            QTest::mouseClick(sidebar->viewport(), Qt::LeftButton, Qt::NoModifier, rect.center());
+            QTRY_COMPARE(window.currentPage(), window.pages().at(i));
+        }
+        // The arrow scrolls too.
+        const int top = sidebar->verticalScrollBar()->value();
+        QVERIFY(sidebar->moreBelowArrow()->isEnabled());
+        sidebar->moreBelowArrow()->click();
+        QTRY_VERIFY(sidebar->verticalScrollBar()->value() > top);
+    }
+
+    // Where the low rows alone do not fit (1366×768 at ×1.5 in Chinese: two entries were out of
+    // view), the group titles become thin lines and every page is in view without scrolling.
+    void everyPageInViewWithThinHeaders()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        PageSidebar *sidebar = window.sidebar();
+        const int line = sidebar->fontMetrics().height();
+        // Room for the low rows (a 16 px icon or a line, a pixel above and below) and four thin
+        // lines, not for four headers' titles as well.
+        const int pages = int(window.pages().size());
+        sidebar->setFixedHeight(pages * (std::max(16, line) + 2) + 4 * 6 +
+                                2 * sidebar->frameWidth() + 2);
+        QTRY_VERIFY(sidebar->isCompact());
+        QCoreApplication::processEvents();
+        QVERIFY(sidebar->hasThinHeaders());
+        QVERIFY(!sidebar->hasMoreBelow());
+        QVERIFY(!sidebar->hasMoreAbove());
+        for (int i = 0; i < window.pages().size(); ++i)
+            QVERIFY2(sidebar->clearArea().contains(sidebar->visualItemRect(sidebar->itemOf(i))),
+                     qPrintable(sidebar->itemOf(i)->text()));
+        // A header's title stays there for the mouse and a screen reader.
+        QCOMPARE(sidebar->item(0)->toolTip(), QStringLiteral("Connect"));
+        // Room again: the titles come back.
+        sidebar->setFixedHeight(line * 30);
+        QTRY_VERIFY(!sidebar->hasThinHeaders());
     }
 
     void editsShowOnTheirPage()

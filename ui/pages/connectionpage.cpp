@@ -6,6 +6,7 @@
 #include "session/serialports.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/lineoptionsbox.h"
+#include "widgets/fields/statuspollrow.h"
 
 #include <QButtonGroup>
 #include <QCheckBox>
@@ -214,6 +215,9 @@ void ConnectionPage::buildUi()
     auto *statusLayout = new QVBoxLayout(m_statusBox);
     statusLayout->addLayout(statusLine);
     statusLayout->addWidget(m_line);
+    // How often the status is read lives with the link it loads (not beside every page).
+    m_poll = new StatusPollRow(this->session(), m_statusBox);
+    statusLayout->addWidget(m_poll);
     statusLayout->addLayout(buttons);
 
     auto *column = new QVBoxLayout;

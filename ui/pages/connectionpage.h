@@ -24,6 +24,7 @@ class BusScanDialog;
 class Led;
 class LineOptionsBox;
 class SerialPorts;
+class StatusPollRow;
 struct SerialPortEntry;
 
 // Where the controller is and how to reach it: serial (RTU), Modbus TCP or the built-in
@@ -53,6 +54,8 @@ public:
     // What the status line says ("Connected to ...", "Connecting to ...", the last error).
     QString statusText() const;
     BusScanDialog *scanDialog() const;
+    // How often the status is read and was, in the Link box.
+    StatusPollRow *statusPoll() const { return m_poll; }
 
     // What the buttons do (also for MainWindow's actions and tests).
     void connectNow();
@@ -122,6 +125,7 @@ private:
     QLabel *m_simText = nullptr;
 
     QGroupBox *m_statusBox = nullptr;
+    StatusPollRow *m_poll = nullptr; // how often the status is read, and was
     Led *m_led = nullptr;
     QLabel *m_stateIcon = nullptr;
     QLabel *m_status = nullptr;

@@ -164,7 +164,7 @@ void MotorPage::retranslate()
         stop ? QStringLiteral("%1 — %2").arg(stop->label.text(lang), stop->registerName())
              : QString());
     m_stopNote->setText(
-        tr("Stops the motor at once, without a ramp. The E-STOP in the toolbar stops "
+        tr("Stops the motor at once, without a ramp. The E-STOP under every page stops "
            "everything."));
     updateDerived();
 }

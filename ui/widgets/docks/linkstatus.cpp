@@ -109,10 +109,9 @@ void LinkStatus::refresh()
         m_perSecond = double(s.answers - m_lastAnswers) * 1000.0 / double(now - m_lastMs);
     m_lastAnswers = s.answers;
     m_lastMs = now;
-    m_rate->setFullText(m_session->isConnected() ? tr("%1 transactions/s · status %2 Hz")
-                                                       .arg(m_perSecond, 0, 'f', 1)
-                                                       .arg(m_session->statusRate(), 0, 'f', 1)
-                                                 : QString());
+    // The status rate is the Connection page's, beside the choice of how often to read it.
+    m_rate->setFullText(
+        m_session->isConnected() ? tr("%1 transactions/s").arg(m_perSecond, 0, 'f', 1) : QString());
     // Counted from this connection's start (the session resets them on every connect).
     m_errors->setFullText(tr("errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)")
                               .arg(s.errors())

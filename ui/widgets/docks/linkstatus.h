@@ -11,9 +11,9 @@ namespace stepcom {
 class DeviceSession;
 class ElidedLabel;
 
-// The status bar's right side: link state, port/baud/id, transactions per second, errors,
-// polling rate and the "not saved to flash" warning; after a link loss the countdown to the
-// next attempt and a Cancel button.
+// The status bar's right side: link state, port/baud/id, transactions per second, errors and
+// the "not saved to flash" warning (the status rate is the Connection page's); after a link loss
+// the countdown to the next attempt and a Cancel button.
 class LinkStatus : public QWidget
 {
     Q_OBJECT

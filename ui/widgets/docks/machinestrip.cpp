@@ -134,8 +134,7 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     linkColumn->addWidget(m_line);
     row->addLayout(linkColumn, 1);
 
-    // The same button the toolbar has (one E-STOP behaviour), larger, at the end.
-    m_estopButton->setObjectName(QStringLiteral("emergencyStopButton"));
+    // The window's one E-STOP button, at the end: on every page, beside the machine's state.
     m_estopButton->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Expanding);
     row->addWidget(m_estopButton);
 
@@ -400,11 +399,6 @@ void MachineStrip::retranslate()
     }
     m_inputsCaption->setText(tr("IN 1-%1").arg(m_inputLeds.size()));
     m_outputsCaption->setText(tr("OUT 1-%1").arg(m_outputLeds.size()));
-    m_estopButton->setText(EmergencyStop::tr("E-STOP"));
-    m_estopButton->setToolTip(
-        EmergencyStop::tr("Emergency stop: all motors and outputs off (coil 00042). Key: %1")
-            .arg(EmergencyStop::shortcut().toString(QKeySequence::NativeText)));
-    m_estopButton->setAccessibleName(m_estopButton->text());
     applyFonts(); // the unit's words follow the language
     refresh();
 }

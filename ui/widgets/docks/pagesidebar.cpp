@@ -7,9 +7,9 @@
 #include "widgets/fields/lineicon.h"
 
 #include <QEvent>
-#include <QPainter>
 #include <QResizeEvent>
 #include <QScrollBar>
+#include <QToolButton>
 
 namespace stepcom {
 
@@ -17,6 +17,8 @@ PageSidebar::PageSidebar(DeviceSession *session, QWidget *parent)
     : QListWidget(parent)
     , m_session(session)
     , m_delegate(new PageSidebarDelegate(this))
+    , m_up(new QToolButton(this))
+    , m_down(new QToolButton(this))
 {
     setObjectName(QStringLiteral("sidebar"));
     setItemDelegate(m_delegate);
@@ -27,6 +29,22 @@ PageSidebar::PageSidebar(DeviceSession *session, QWidget *parent)
     setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     setVerticalScrollMode(QAbstractItemView::ScrollPerPixel);
     setUniformItemSizes(false);
+    for (QToolButton *arrow : {m_up, m_down}) {
+        arrow->setAutoRaise(true);
+        arrow->setFocusPolicy(Qt::NoFocus); // the arrow keys scroll the list already
+        arrow->setAutoRepeat(true);
+        arrow->hide();
+    }
+    m_up->setObjectName(QStringLiteral("sidebarMoreAbove"));
+    m_down->setObjectName(QStringLiteral("sidebarMoreBelow"));
+    m_up->setArrowType(Qt::UpArrow);
+    m_down->setArrowType(Qt::DownArrow);
+    connect(m_up, &QToolButton::clicked, this,
+            [this] { verticalScrollBar()->triggerAction(QAbstractSlider::SliderSingleStepSub); });
+    connect(m_down, &QToolButton::clicked, this,
+            [this] { verticalScrollBar()->triggerAction(QAbstractSlider::SliderSingleStepAdd); });
+    connect(verticalScrollBar(), &QScrollBar::valueChanged, this, &PageSidebar::updateArrows);
+    connect(verticalScrollBar(), &QScrollBar::rangeChanged, this, &PageSidebar::updateArrows);
     connect(this, &QListWidget::currentItemChanged, this, [this](QListWidgetItem *item) {
         const int page = item ? item->data(PageRole).toInt() : -1;
         if (page >= 0)
@@ -213,7 +231,13 @@ void PageSidebar::retranslate()
         const int page = row->data(PageRole).toInt();
         row->setText(page >= 0 ? m_pages.at(page)->title()
                                : stageTitle(Page::Stage(row->data(Qt::UserRole).toInt())));
+        if (page < 0)
+            row->setToolTip(row->text());
     }
+    m_up->setToolTip(tr("More pages above"));
+    m_up->setAccessibleName(m_up->toolTip());
+    m_down->setToolTip(tr("More pages below"));
+    m_down->setAccessibleName(m_down->toolTip());
     refreshIcons();
     refresh();
     updateWidth();
@@ -223,6 +247,11 @@ void PageSidebar::retranslate()
 bool PageSidebar::isCompact() const
 {
     return m_delegate->isCompact();
+}
+
+bool PageSidebar::hasThinHeaders() const
+{
+    return m_delegate->hasThinHeaders();
 }
 
 QStringList PageSidebar::cutEntries() const
@@ -243,19 +272,56 @@ QStringList PageSidebar::cutEntries() const
 
 void PageSidebar::updateCompact()
 {
+    const bool wasCompact = m_delegate->isCompact();
+    const bool wasThin = m_delegate->hasThinHeaders();
+    m_delegate->setThinHeaders(false);
+    m_delegate->setCompact(false);
+    // The room the rows have without the arrows (the viewport shrinks while they show).
+    const int room = contentsRect().height();
+    const bool compact = m_shortWindow || rowsHeight() > room;
+    m_delegate->setCompact(compact);
+    // Every page in view matters more than the groups' titles.
+    const bool thin = compact && rowsHeight() > room;
+    m_delegate->setThinHeaders(thin);
+    if (compact != wasCompact || thin != wasThin) {
+        updateWidth();
+        // The rows' heights changed: lay them out now, so the scroll range and the rows a click
+        // finds are those drawn.
+        doItemsLayout();
+    }
+    updateArrows();
+}
+
+int PageSidebar::rowsHeight() const
+{
     QStyleOptionViewItem option;
     initViewItemOption(&option);
-    const bool wasCompact = m_delegate->isCompact();
-    m_delegate->setCompact(false);
-    int full = 0;
+    int height = 0;
     for (int r = 0; r < count(); ++r)
-        full += m_delegate->sizeHint(option, indexFromItem(item(r))).height();
-    const bool compact = m_shortWindow || full > viewport()->height();
-    m_delegate->setCompact(compact);
-    if (compact != wasCompact) {
-        updateWidth();
-        scheduleDelayedItemsLayout();
-    }
+        height += m_delegate->sizeHint(option, indexFromItem(item(r))).height() + 2 * spacing();
+    return height;
+}
+
+void PageSidebar::updateArrows()
+{
+    const QRect room = contentsRect();
+    const bool scrolls = rowsHeight() > room.height();
+    const int band = scrolls ? std::max(12, fontMetrics().height() * 3 / 4) : 0;
+    if (viewportMargins() != QMargins(0, band, 0, band))
+        setViewportMargins(0, band, 0, band);
+    m_up->setVisible(scrolls);
+    m_down->setVisible(scrolls);
+    if (!scrolls)
+        return;
+    m_up->setGeometry(room.left(), room.top(), room.width(), band);
+    m_down->setGeometry(room.left(), room.bottom() + 1 - band, room.width(), band);
+    m_up->setEnabled(hasMoreAbove());
+    m_down->setEnabled(hasMoreBelow());
+}
+
+QRect PageSidebar::clearArea() const
+{
+    return viewport()->rect();
 }
 
 void PageSidebar::setShortWindow(bool isShort)
@@ -308,37 +374,6 @@ bool PageSidebar::hasMoreAbove() const
 bool PageSidebar::hasMoreBelow() const
 {
     return verticalScrollBar()->value() < verticalScrollBar()->maximum();
-}
-
-void PageSidebar::paintEvent(QPaintEvent *event)
-{
-    QListWidget::paintEvent(event);
-    if (!hasMoreAbove() && !hasMoreBelow())
-        return;
-    QPainter p(viewport());
-    p.setRenderHint(QPainter::Antialiasing);
-    const QRect r = viewport()->rect();
-    const int band = fontMetrics().height();
-    const QColor base = viewport()->palette().color(QPalette::Base);
-    QColor clear = base;
-    clear.setAlpha(0);
-    const auto fade = [&](int top, bool down) {
-        QLinearGradient g(0, top, 0, top + band);
-        g.setColorAt(down ? 0 : 1, clear);
-        g.setColorAt(down ? 1 : 0, base);
-        p.fillRect(QRect(r.left(), top, r.width(), band), g);
-        // A small chevron at the right, pointing where the rest is.
-        const double w = band * 0.6;
-        const QPointF mid(r.right() - w, top + band / 2.0);
-        const double dy = (down ? 1 : -1) * w / 4;
-        p.setPen(QPen(viewport()->palette().color(QPalette::Text), 1.5));
-        p.drawPolyline(QPolygonF(
-            {mid + QPointF(-w / 2, -dy), mid + QPointF(0, dy), mid + QPointF(w / 2, -dy)}));
-    };
-    if (hasMoreAbove())
-        fade(r.top(), false);
-    if (hasMoreBelow())
-        fade(r.bottom() + 1 - band, true);
 }
 
 void PageSidebar::changeEvent(QEvent *event)

@@ -5,6 +5,8 @@
 
 #include <QListWidget>
 
+class QToolButton;
+
 namespace stepcom {
 
 class DeviceSession;
@@ -45,15 +47,22 @@ public:
     QString stateText(int page) const;
     int editCount(int page) const;
     bool isCompact() const;
+    // The group headers drawn as thin lines: the low rows alone did not fit.
+    bool hasThinHeaders() const;
     // The window is short (1024×600, 1366×768 at ×1.5): low rows from the start, before the
     // sidebar's own height is known, so the window opens at the width it will keep.
     void setShortWindow(bool isShort);
     // The titles of the entries shown narrower than they need (cut with "…"), for the layout
     // checks; each with the width it has and needs.
     QStringList cutEntries() const;
-    // Entries scrolled out of view above or below (shown by a fade and an arrow).
+    // Entries scrolled out of view above or below: an arrow above or below the rows says so
+    // (and scrolls when clicked); the arrows take rooms of their own, so no entry lies under one.
     bool hasMoreAbove() const;
     bool hasMoreBelow() const;
+    QToolButton *moreAboveArrow() const { return m_up; }
+    QToolButton *moreBelowArrow() const { return m_down; }
+    // Where entries are drawn, in the viewport's coordinates: nothing covers this part.
+    QRect clearArea() const;
     bool isOffline(int page) const;
     // The colours the marks are drawn in, on an entry not selected.
     QColor editColour() const;
@@ -68,7 +77,6 @@ Q_SIGNALS:
 protected:
     void changeEvent(QEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
-    void paintEvent(QPaintEvent *event) override;
     // Over the headers: to the next page in the direction of the key.
     QModelIndex moveCursor(CursorAction action, Qt::KeyboardModifiers modifiers) override;
 
@@ -79,12 +87,17 @@ private:
     void updateWidth();
     // Low rows when the full ones would need scrolling (a 1024×600 screen).
     void updateCompact();
+    // The arrows' rooms above and below the rows when the rows need more height than there is.
+    void updateArrows();
+    int rowsHeight() const;
     static QString stageTitle(Page::Stage stage);
 
     DeviceSession *m_session;
     QList<Page *> m_pages;
     PageSidebarDelegate *m_delegate;
     bool m_shortWindow = false;
+    QToolButton *m_up;
+    QToolButton *m_down;
 };
 
 } // namespace stepcom

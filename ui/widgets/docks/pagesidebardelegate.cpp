@@ -21,6 +21,8 @@ void scaled(QFont &font, double factor)
         font.setPixelSize(std::max(1, int(font.pixelSize() * factor)));
 }
 
+constexpr int kThinHeader = 5; // px: a line with room above and below
+
 bool isHeader(const QModelIndex &index)
 {
     return index.data(PageSidebar::PageRole).toInt() < 0;
@@ -56,7 +58,9 @@ int PageSidebarDelegate::marksWidth(const QFontMetrics &fm, const QModelIndex &i
 
 int PageSidebarDelegate::padding(const QFontMetrics &fm) const
 {
-    return m_compact ? 2 : std::max(3, fm.height() / 5);
+    // Compact: a pixel above and below, so every entry fits a 512 px high window (1366×768
+    // at ×1.5) beside the docks.
+    return m_compact ? 1 : std::max(3, fm.height() / 5);
 }
 
 int PageSidebarDelegate::gap(int pad) const
@@ -87,6 +91,8 @@ QSize PageSidebarDelegate::sizeHint(const QStyleOptionViewItem &option,
     const QString title = index.data(Qt::DisplayRole).toString();
     if (isHeader(index)) {
         const QFontMetrics hm(headerFont(option.font));
+        if (m_thinHeaders)
+            return {2 * pad, kThinHeader};
         return {hm.horizontalAdvance(title) + 2 * pad, hm.height() + pad + (m_compact ? 0 : pad)};
     }
     const int icon = iconSize(fm);
@@ -134,6 +140,14 @@ void PageSidebarDelegate::paint(QPainter *painter, const QStyleOptionViewItem &o
     const int pad = padding(fm);
     const QString title = opt.text;
     painter->save();
+    if (isHeader(index) && m_thinHeaders) {
+        // The group's end, as a line; its title is the row's tooltip and accessible name.
+        painter->setPen(opt.palette.color(QPalette::Active, QPalette::Mid));
+        const int y = opt.rect.center().y();
+        painter->drawLine(opt.rect.left() + pad, y, opt.rect.right() - pad, y);
+        painter->restore();
+        return;
+    }
     if (isHeader(index)) {
         // Not a place to go: no selection, no focus, a caption over its pages.
         painter->setFont(headerFont(opt.font));

@@ -16,6 +16,10 @@ public:
     // Small icons and little padding, for a sidebar too short for every row (1024×600).
     void setCompact(bool compact) { m_compact = compact; }
     bool isCompact() const { return m_compact; }
+    // Headers as thin lines between the groups (their titles in the tooltips), for a sidebar
+    // that the low rows alone do not fit (1366×768 at ×1.5 in Chinese).
+    void setThinHeaders(bool thin) { m_thinHeaders = thin; }
+    bool hasThinHeaders() const { return m_thinHeaders; }
 
     void paint(QPainter *painter, const QStyleOptionViewItem &option,
                const QModelIndex &index) const override;
@@ -44,6 +48,7 @@ private:
     int gap(int pad) const;
 
     bool m_compact = false;
+    bool m_thinHeaders = false;
 };
 
 } // namespace stepcom

@@ -6,14 +6,12 @@
 #include "session/motionsupervisor.h"
 #include "widgets/fields/led.h"
 
-#include <QComboBox>
 #include <QEvent>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QSettings>
 #include <QVBoxLayout>
 
 namespace stepcom {
@@ -120,40 +118,6 @@ StatusDock::StatusDock(DeviceSession *session, QWidget *parent)
     io->setColumnStretch(kLampsPerRow + 1, 1);
     rows->addWidget(m_ioBox);
 
-    auto *rateRow = new QHBoxLayout;
-    m_rateCaption = new QLabel(content);
-    m_rate = new QLabel(content);
-    m_rate->setObjectName(QStringLiteral("statusRate"));
-    m_rate->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    rateRow->addWidget(m_rateCaption);
-    rateRow->addWidget(m_rate, 1);
-    rows->addLayout(rateRow);
-    // How often to poll: full rate watches a move closely; slower leaves the bus to others.
-    auto *intervalRow = new QHBoxLayout;
-    m_intervalCaption = new QLabel(content);
-    m_interval = new QComboBox(content);
-    m_interval->setObjectName(QStringLiteral("pollInterval"));
-    for (int ms : {0, 100, 250, 500, 1000})
-        m_interval->addItem(QString(), ms);
-    m_intervalCaption->setBuddy(m_interval);
-    intervalRow->addWidget(m_intervalCaption);
-    intervalRow->addWidget(m_interval, 1);
-    rows->addLayout(intervalRow);
-    // STEPCOM_POLL_INTERVAL_MS (benchmarks, scripts) wins over the remembered choice.
-    if (!qEnvironmentVariableIsSet("STEPCOM_POLL_INTERVAL_MS"))
-        session->setStatusIntervalMs(
-            QSettings()
-                .value(QStringLiteral("monitor/pollIntervalMs"), session->statusIntervalMs())
-                .toInt());
-    const int current = m_interval->findData(session->statusIntervalMs());
-    if (current < 0)
-        m_interval->addItem(QString(), session->statusIntervalMs());
-    m_interval->setCurrentIndex(current < 0 ? m_interval->count() - 1 : current);
-    connect(m_interval, &QComboBox::activated, this, [this](int index) {
-        const int ms = m_interval->itemData(index).toInt();
-        m_session->setStatusIntervalMs(ms);
-        QSettings().setValue(QStringLiteral("monitor/pollIntervalMs"), ms);
-    });
     rows->addStretch(1);
     setWidget(content);
 
@@ -168,8 +132,6 @@ StatusDock::StatusDock(DeviceSession *session, QWidget *parent)
     connect(session, &DeviceSession::linkStateChanged, this, &StatusDock::scheduleRefresh);
     connect(session->motion()->references(), &ReferenceTracker::changed, this,
             &StatusDock::scheduleRefresh);
-    connect(&m_rateTimer, &QTimer::timeout, this, &StatusDock::refreshRate);
-    m_rateTimer.start(1000);
     retranslate();
 }
 
@@ -183,11 +145,6 @@ QString StatusDock::runningText(int motor) const
 {
     const QLabel *l = m_running.value(motor - 1);
     return l ? l->text() : QString();
-}
-
-QString StatusDock::rateText() const
-{
-    return m_rate->text();
 }
 
 void StatusDock::changeEvent(QEvent *event)
@@ -239,19 +196,6 @@ void StatusDock::refresh()
         lamp(m_inputLeds.at(i), m_inputKeys.at(i));
     for (int i = 0; i < m_outputLeds.size(); ++i)
         lamp(m_outputLeds.at(i), m_outputKeys.at(i));
-    refreshRate();
-}
-
-void StatusDock::refreshRate()
-{
-    const double rate = m_session->statusRate();
-    if (!m_session->isConnected() || !m_session->isStatusActive())
-        m_rate->setText(tr("unknown"));
-    else if (rate <= 0.0)
-        m_rate->setText(tr("measuring…"));
-    else
-        m_rate->setText(tr("%1 Hz").arg(rate, 0, 'f', 1));
-    m_rate->setEnabled(m_session->isConnected());
 }
 
 void StatusDock::retranslate()
@@ -271,18 +215,6 @@ void StatusDock::retranslate()
         m_inputNames.at(i)->setText(tr("IN%1").arg(i + 1));
     for (int i = 0; i < m_outputNames.size(); ++i)
         m_outputNames.at(i)->setText(tr("OUT%1").arg(i + 1));
-    m_rateCaption->setText(tr("Update rate"));
-    m_intervalCaption->setText(tr("&Poll every"));
-    m_interval->setToolTip(tr("How often the status is read. Full rate reads again as soon as a "
-                              "cycle ends; the link decides how fast that is."));
-    for (int i = 0; i < m_interval->count(); ++i) {
-        const int ms = m_interval->itemData(i).toInt();
-        m_interval->setItemText(i, ms == 0 ? tr("full rate") : tr("%1 ms").arg(ms));
-    }
-    const QString rateTip = tr("Status updates per second actually achieved by the poller "
-                               "(complete read cycles, not the configured rate)");
-    m_rateCaption->setToolTip(rateTip);
-    m_rate->setToolTip(rateTip);
     refresh();
 }
 

@@ -6,16 +6,15 @@
 class QGroupBox;
 class QLabel;
 
-class QComboBox;
-
 namespace stepcom {
 
 class DeviceSession;
 class Led;
 
 // The live status, visible beside every page: each motor's position in the map's distance unit
-// (large digits), its running state, the inputs and outputs as lamps, and the status update
-// rate the poller actually achieves. Everything reads "unknown" while nothing is known.
+// (large digits), its running state, the inputs and outputs as lamps. Off at first: the
+// machine strip shows the same on every page (View → Status brings it back); how often the
+// status is read is the Connection page's. Everything reads "unknown" while nothing is known.
 // Motor, input and output counts follow the register map.
 class StatusDock : public QDockWidget
 {
@@ -33,9 +32,6 @@ public:
     Led *runningLed(int motor) const { return m_runningLeds.value(motor - 1); }
     Led *inputLed(int n) const { return m_inputLeds.value(n - 1); }
     Led *outputLed(int n) const { return m_outputLeds.value(n - 1); }
-    QString rateText() const;
-    // The poll interval chooser (ms as item data; 0 = as fast as the link allows).
-    QComboBox *intervalBox() const { return m_interval; }
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -44,7 +40,6 @@ private:
     void retranslate();
     void scheduleRefresh();
     void refresh();
-    void refreshRate();
 
     DeviceSession *m_session;
     QStringList m_positionKeys;
@@ -63,12 +58,7 @@ private:
     QList<QLabel *> m_inputNames;
     QList<Led *> m_outputLeds;
     QList<QLabel *> m_outputNames;
-    QLabel *m_rateCaption;
-    QLabel *m_rate;
-    QLabel *m_intervalCaption;
-    QComboBox *m_interval;
     QTimer m_refresh; // coalesces the store's per-key signals into one update a cycle
-    QTimer m_rateTimer;
 };
 
 } // namespace stepcom

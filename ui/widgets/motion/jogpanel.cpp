@@ -60,19 +60,9 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     m_led = new Led(this);
     m_status = new QLabel(this);
     m_status->setWordWrap(true);
-    m_positionLabel = new QLabel(this);
-    m_position = new QLabel(this);
-    m_position->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_position->setMinimumWidth(
-        m_position->fontMetrics().horizontalAdvance(QStringLiteral("-21474836.48 mm")));
-    m_position->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    QFont big = m_position->font();
-    big.setBold(true);
-    m_position->setFont(big);
+    // What the jog is doing; the position is the machine strip's, under every page.
     state->addWidget(m_led);
     state->addWidget(m_status, 1);
-    state->addWidget(m_positionLabel);
-    state->addWidget(m_position);
     column->addLayout(state);
 
     auto *grid = new QGridLayout;
@@ -308,7 +298,6 @@ void JogPanel::refresh()
     m_status->setText(statusText());
     m_led->setToolTip(m_status->text());
     m_led->setAccessibleName(m_status->text());
-    m_position->setText(positionText());
 
     // The jog buttons depend on the link only: disabling one while held would end the jog.
     m_reverse->setEnabled(connected);
@@ -374,7 +363,6 @@ void JogPanel::retranslate()
     m_forward->setToolTip(tr("Hold to run motor %1 forward; let go to stop").arg(m_motor));
     m_stop->setText(tr("Stop motor &%1").arg(m_motor));
     m_stop->setToolTip(tr("Stop motor %1 at once, whatever started it").arg(m_motor));
-    m_positionLabel->setText(tr("Position:"));
     m_speedLabel->setText(tr("Jog speed:"));
     m_applySpeed->setText(tr("&Apply speed"));
     m_applySpeed->setToolTip(

@@ -16,7 +16,8 @@ class ParameterField;
 class StepMovePanel;
 
 // One motor's hands-on controls: hold-to-move reverse/forward, stop, the jog speed with its own
-// "apply", the running lamp and live position, the single move with the distance, direction
+// "apply", the running lamp and what the jog is doing (the position is the machine strip's,
+// under every page: one place for a live value), the single move with the distance, direction
 // and speed it will use, and homing. Everything shown comes from the session's store.
 class JogPanel : public QGroupBox
 {
@@ -37,6 +38,7 @@ public:
     // "referenced" / "not referenced (E-STOP)": homed onto the home input since the last loss.
     QString referenceText() const;
     QString statusText() const;
+    // The motor's position in the map's unit, as the strip shows it ("—" when not known).
     QString positionText() const;
     QString moveText() const;
     QStringList keys() const { return m_keys; }
@@ -68,8 +70,6 @@ private:
     QPushButton *m_stop;
     Led *m_led;
     QLabel *m_status;
-    QLabel *m_positionLabel;
-    QLabel *m_position;
     QLabel *m_speedLabel;
     ParameterField *m_speed = nullptr;
     QPushButton *m_applySpeed;
