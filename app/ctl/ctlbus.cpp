@@ -1,4 +1,5 @@
 // stepcomctl --id 1,2,3: one command for several controllers on one line, in turn.
+#include "ctllinkadvice.h"
 #include "ctlrunner.h"
 #include "ctlscan.h"
 
@@ -161,16 +162,35 @@ void CtlRunner::runAssignId()
     connectThen([this, from, to] {
         // The same steps as the window's id assistant: core/line/idchange.
         auto *change = new IdChange(m_session, this);
-        connect(change, &IdChange::finished, this, [this, change](bool ok, const QString &text) {
-            change->deleteLater();
-            if (!ok) {
-                fail(change->problem() == IdChange::Problem::Refused ? UsageError : DeviceError,
-                     text);
-                return;
-            }
-            m_out << text << Qt::endl;
-            finish(Ok);
-        });
+        change->setSaveToFlash(m_options.saveToFlash);
+        connect(
+            change, &IdChange::finished, this, [this, change, to](bool ok, const QString &text) {
+                change->deleteLater();
+                if (!ok) {
+                    // Answering at the new id but not saved: say how to reach it anyway.
+                    if (change->problem() == IdChange::Problem::NotSaved)
+                        m_err << QStringLiteral("stepcomctl: ")
+                              << tr("next commands: stepcomctl %1 ...")
+                                     .arg(CtlLinkAdvice::nextOptions(m_options, to,
+                                                                     m_options.link.baud))
+                              << Qt::endl;
+                    fail(change->problem() == IdChange::Problem::Refused ? UsageError : DeviceError,
+                         text);
+                    return;
+                }
+                m_out << text << Qt::endl;
+                if (!m_options.saveToFlash)
+                    m_out << tr("not saved to flash: id %1 lasts until the power is "
+                                "switched off, then the controller answers at the id in "
+                                "its flash again (id 1 from the factory); add "
+                                "--save-to-flash to keep it")
+                                 .arg(to)
+                          << Qt::endl;
+                m_out << tr("next commands: stepcomctl %1 ...")
+                             .arg(CtlLinkAdvice::nextOptions(m_options, to, m_options.link.baud))
+                      << Qt::endl;
+                finish(Ok);
+            });
         change->start(from, to);
     });
 }

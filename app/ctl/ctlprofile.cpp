@@ -124,6 +124,7 @@ void CtlRunner::runDump()
                 m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
             profile.notes = m_options.notes;
             profile.deviceId = m_session->settings().deviceId;
+            profile.fromSimulator = m_session->isSimulator();
             if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
                 fail(UsageError, e);
                 return;
@@ -469,6 +470,7 @@ void CtlRunner::runReport()
             input.values = r.values;
             input.unsupported = r.unsupported;
             input.link = m_session->settings().describe();
+            input.simulator = m_session->isSimulator();
             input.line = m_session->linkStats().lineText(m_session->deviceInView());
             input.deviceId = m_session->settings().deviceId;
             input.title = m_options.name;

@@ -1,6 +1,7 @@
 #include "ctlrunner.h"
 
 #include "ctlbusmonitor.h"
+#include "ctllinkadvice.h"
 #include "ctlmonitor.h"
 #include "ctlmotionwait.h"
 
@@ -137,6 +138,11 @@ const QList<CtlCommand> &CtlRunner::commands()
                            "--probe-timeout MS for slow controllers; exit 0 found,\n"
                            "1 none, 2 usage, 3 link error"),
          &CtlRunner::runScan},
+        {"ports", "ports",
+         QT_TRANSLATE_NOOP("stepcomctl", "list the serial ports: stable by-id name, adapter\n"
+                                         "(vendor, product, serial number) and whether another\n"
+                                         "program holds it; no controller needed"),
+         &CtlRunner::runPorts},
         {"report", "report FILE.pdf|.html",
          QT_TRANSLATE_NOOP("stepcomctl", "write the commissioning report (--name, --notes,\n"
                                          "--lang en|zh_CN; --from PROFILE: from a profile\n"
@@ -299,6 +305,9 @@ void CtlRunner::connectThen(std::function<void()> next)
         // rehearses an echoing adapter on it).
         auto sim = std::make_unique<BuiltinSimulator>();
         sim->setEcho(m_options.link.echo);
+        // As a real controller: silent at another id or baud, what it saved kept between runs.
+        sim->setClientLink(m_options.link.deviceId, m_options.link.baud);
+        sim->setFlashPath(BuiltinSimulator::defaultFlashPath());
         if (isMulti())
             sim->setIds(m_options.ids); // one simulated controller per id, on one line
         m_session->setSimulator(std::move(sim));
@@ -493,6 +502,9 @@ void CtlRunner::writeThenReport(const QList<ParameterWrite> &writes)
                 finish(DeviceError);
                 return;
             }
+            for (const QString &note :
+                 CtlLinkAdvice::notes(m_options, writes, m_options.saveToFlash))
+                m_out << note << Qt::endl;
             if (!m_options.saveToFlash) {
                 finish(Ok);
                 return;

@@ -69,6 +69,8 @@ private:
     void runAssignId();
     // scan (ctlbus.cpp): every controller on the line, at the bauds, parities and ids asked.
     void runScan();
+    // ports (ctlports.cpp): every serial port, its stable name, adapter and who holds it.
+    void runPorts();
     // Profiles and the report (ctlprofile.cpp).
     void runDump();
     void runDiff();
