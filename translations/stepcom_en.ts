@@ -59,6 +59,10 @@
         <source>parity</source>
         <translation>parity</translation>
     </message>
+    <message>
+        <source>Start the built-in simulator from the factory again: forget what it saved to flash.</source>
+        <translation>Start the built-in simulator from the factory again: forget what it saved to flash.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -300,6 +304,17 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BuiltinSimulator</name>
+    <message>
+        <source>cannot remove %1: %2</source>
+        <translation>cannot remove %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot make the folder of %1</source>
+        <translation>cannot make the folder of %1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusActions</name>
     <message>
         <source>Assign device ids…</source>
@@ -308,6 +323,26 @@
     <message>
         <source>Give each controller of a new line its own id, one controller at a time</source>
         <translation>Give each controller of a new line its own id, one controller at a time</translation>
+    </message>
+    <message>
+        <source>the built-in simulator is reset to the factory</source>
+        <translation>the built-in simulator is reset to the factory</translation>
+    </message>
+    <message>
+        <source>The built-in simulator could not be reset: %1</source>
+        <translation>The built-in simulator could not be reset: %1</translation>
+    </message>
+    <message>
+        <source>The built-in simulator is back at the factory: id 1, 9600 baud, nothing saved. Connect to it again to start it.</source>
+        <translation>The built-in simulator is back at the factory: id 1, 9600 baud, nothing saved. Connect to it again to start it.</translation>
+    </message>
+    <message>
+        <source>Reset the built-in simulator to factory</source>
+        <translation>Reset the built-in simulator to factory</translation>
+    </message>
+    <message>
+        <source>Forget what the built-in simulator saved to flash: it starts again as it leaves the factory</source>
+        <translation>Forget what the built-in simulator saved to flash: it starts again as it leaves the factory</translation>
     </message>
 </context>
 <context>
@@ -1609,6 +1644,18 @@
         <source>Link, as measured</source>
         <translation>Link, as measured</translation>
     </message>
+    <message>
+        <source>StepCom&apos;s built-in simulator -- not a machine</source>
+        <translation>StepCom&apos;s built-in simulator -- not a machine</translation>
+    </message>
+    <message>
+        <source>%1 -- simulator, not a machine</source>
+        <translation>%1 -- simulator, not a machine</translation>
+    </message>
+    <message>
+        <source>SIMULATOR -- NOT A MACHINE: these values were read from StepCom&apos;s built-in simulator. This sheet certifies no machine.</source>
+        <translation>SIMULATOR -- NOT A MACHINE: these values were read from StepCom&apos;s built-in simulator. This sheet certifies no machine.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1885,6 +1932,25 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CtlLinkAdvice</name>
+    <message>
+        <source>not saved to flash: the built-in simulator starts its next run with the id and baud it saved (add --save-to-flash to keep them)</source>
+        <translation>not saved to flash: the built-in simulator starts its next run with the id and baud it saved (add --save-to-flash to keep them)</translation>
+    </message>
+    <message>
+        <source>not saved to flash: after the next power-off the controller answers at the id and baud it saved before (add --save-to-flash to keep them)</source>
+        <translation>not saved to flash: after the next power-off the controller answers at the id and baud it saved before (add --save-to-flash to keep them)</translation>
+    </message>
+    <message>
+        <source>the controller now speaks %1 baud on its RS-485 side: set the converter&apos;s (gateway&apos;s) serial side to %1 baud too, or it no longer reaches the controller</source>
+        <translation>the controller now speaks %1 baud on its RS-485 side: set the converter&apos;s (gateway&apos;s) serial side to %1 baud too, or it no longer reaches the controller</translation>
+    </message>
+    <message>
+        <source>next commands: stepcomctl %1 ...</source>
+        <translation>next commands: stepcomctl %1 ...</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>no sample was read: every poll failed (see the errors above)</source>
@@ -1938,10 +2004,6 @@
     <message>
         <source>host:port</source>
         <translation>host:port</translation>
-    </message>
-    <message>
-        <source>Use the built-in simulated controller.</source>
-        <translation>Use the built-in simulated controller.</translation>
     </message>
     <message>
         <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600).</source>
@@ -2244,8 +2306,20 @@
         <translation>--days: &apos;%1&apos; is not a number of days</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report, replay, bundle)</source>
-        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report, replay, bundle)</translation>
+        <source>Use the built-in simulated controller (it keeps what it saved to flash between runs).</source>
+        <translation>Use the built-in simulated controller (it keeps what it saved to flash between runs).</translation>
+    </message>
+    <message>
+        <source>Start the built-in simulator from the factory again (id 1, 9600 baud): forget what it saved to flash. Alone, or before a --sim command.</source>
+        <translation>Start the built-in simulator from the factory again (id 1, 9600 baud): forget what it saved to flash. Alone, or before a --sim command.</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, ports, report, replay, bundle)</source>
+        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, ports, report, replay, bundle)</translation>
+    </message>
+    <message>
+        <source>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</source>
+        <translation>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</translation>
     </message>
 </context>
 <context>
@@ -2687,6 +2761,38 @@
     <message>
         <source>no machine report: no controller was read (--port, --tcp or --sim) and no profile was given (--profile)</source>
         <translation>no machine report: no controller was read (--port, --tcp or --sim) and no profile was given (--profile)</translation>
+    </message>
+    <message>
+        <source>next commands: stepcomctl %1 ...</source>
+        <translation>next commands: stepcomctl %1 ...</translation>
+    </message>
+    <message>
+        <source>not saved to flash: id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</source>
+        <translation>not saved to flash: id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</translation>
+    </message>
+    <message>
+        <source>ports takes no arguments (&apos;%1&apos;)</source>
+        <translation>ports takes no arguments (&apos;%1&apos;)</translation>
+    </message>
+    <message>
+        <source>no serial port found: is the USB adapter plugged in? (its driver&apos;s messages: sudo dmesg | tail)</source>
+        <translation>no serial port found: is the USB adapter plugged in? (its driver&apos;s messages: sudo dmesg | tail)</translation>
+    </message>
+    <message>
+        <source>S/N %1</source>
+        <translation>S/N %1</translation>
+    </message>
+    <message>
+        <source>stable name: %1</source>
+        <translation>stable name: %1</translation>
+    </message>
+    <message>
+        <source>no permission to open it: add yourself to its group (ls -l %1; usually dialout), then log in again</source>
+        <translation>no permission to open it: add yourself to its group (ls -l %1; usually dialout), then log in again</translation>
+    </message>
+    <message>
+        <source>open it with: stepcomctl --port %1 read device.id</source>
+        <translation>open it with: stepcomctl --port %1 read device.id</translation>
     </message>
 </context>
 <context>
@@ -3701,6 +3807,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</source>
         <translation>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</translation>
     </message>
+    <message>
+        <source>Save each id to flash (else lost at power-off)</source>
+        <translation>Save each id to flash (else lost at power-off)</translation>
+    </message>
+    <message>
+        <source>Without saving, a controller is back at id %1 and %2 baud after its next power-off.</source>
+        <translation>Without saving, a controller is back at id %1 and %2 baud after its next power-off.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::IdChange</name>
@@ -3775,6 +3889,26 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>device id %1 → %2: the controller answers at id %2</source>
         <translation>device id %1 → %2: the controller answers at id %2</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1, but the register map has no save_to_flash: the id lasts until the power is switched off</source>
+        <translation>the controller answers at id %1, but the register map has no save_to_flash: the id lasts until the power is switched off</translation>
+    </message>
+    <message>
+        <source>Saving to flash at id %1</source>
+        <translation>Saving to flash at id %1</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1, but saving to flash failed (%2): the id lasts until the power is switched off; save to flash again</source>
+        <translation>the controller answers at id %1, but saving to flash failed (%2): the id lasts until the power is switched off; save to flash again</translation>
+    </message>
+    <message>
+        <source>; saved to flash</source>
+        <translation>; saved to flash</translation>
+    </message>
+    <message>
+        <source>; not saved to flash: lost at power-off</source>
+        <translation>; not saved to flash: lost at power-off</translation>
     </message>
 </context>
 <context>
@@ -4790,6 +4924,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: no controller to report on</source>
         <translation>%1: no controller to report on</translation>
     </message>
+    <message>
+        <source>%1 -- simulator, not a machine</source>
+        <translation>%1 -- simulator, not a machine</translation>
+    </message>
+    <message>
+        <source>built-in simulator -- not a machine</source>
+        <translation>built-in simulator -- not a machine</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MachineStrip</name>
@@ -5164,14 +5306,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation> (discarded: %1)</translation>
     </message>
     <message>
-        <source> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers</source>
-        <translation> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers</translation>
-    </message>
-    <message>
-        <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers</source>
-        <translation> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers</translation>
-    </message>
-    <message>
         <source>stale/foreign answer discarded: %1</source>
         <translation>stale/foreign answer discarded: %1</translation>
     </message>
@@ -5190,6 +5324,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source> -- it answered %1 s ago: busy (writing its flash?), switched off, or a disturbed line</source>
         <translation> -- it answered %1 s ago: busy (writing its flash?), switched off, or a disturbed line</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</source>
+        <translation> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</source>
+        <translation> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</translation>
     </message>
 </context>
 <context>
@@ -6333,6 +6475,37 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::PortSurvey</name>
+    <message>
+        <source>lock file %1</source>
+        <translation>lock file %1</translation>
+    </message>
+    <message>
+        <source>has it open</source>
+        <translation>has it open</translation>
+    </message>
+    <message>
+        <source>free, as far as this user can see</source>
+        <translation>free, as far as this user can see</translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation>free</translation>
+    </message>
+    <message>
+        <source>%1 (pid %2, %3)</source>
+        <translation>%1 (pid %2, %3)</translation>
+    </message>
+    <message>
+        <source>a program</source>
+        <translation>a program</translation>
+    </message>
+    <message>
+        <source>held by %1</source>
+        <translation>held by %1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::PositionPlot</name>
     <message>
         <source>Cannot write the picture “%1”.</source>
@@ -6913,6 +7086,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</source>
         <translation>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;source&quot; is &quot;simulator&quot; or absent, found &quot;%1&quot;</source>
+        <translation>&quot;metadata&quot;: &quot;source&quot; is &quot;simulator&quot; or absent, found &quot;%1&quot;</translation>
     </message>
 </context>
 <context>
@@ -9137,6 +9314,18 @@ profile, and of the controllers given with --port,
 and serial adapters, the machine report (of the
 profile, and of the controllers given with --port,
 --tcp or --sim and --id), with a README inside</translation>
+    </message>
+    <message>
+        <source>list the serial ports: stable by-id name, adapter
+(vendor, product, serial number) and whether another
+program holds it; no controller needed</source>
+        <translation>list the serial ports: stable by-id name, adapter
+(vendor, product, serial number) and whether another
+program holds it; no controller needed</translation>
+    </message>
+    <message>
+        <source>the built-in simulator starts from the factory again (id 1, 9600 baud)</source>
+        <translation>the built-in simulator starts from the factory again (id 1, 9600 baud)</translation>
     </message>
 </context>
 </TS>

@@ -59,6 +59,10 @@
         <source>parity</source>
         <translation>校验位</translation>
     </message>
+    <message>
+        <source>Start the built-in simulator from the factory again: forget what it saved to flash.</source>
+        <translation>让内置仿真器恢复出厂状态：清除它保存到闪存的内容。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -298,6 +302,17 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BuiltinSimulator</name>
+    <message>
+        <source>cannot remove %1: %2</source>
+        <translation>无法删除 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot make the folder of %1</source>
+        <translation>无法创建 %1 所在的文件夹</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusActions</name>
     <message>
         <source>Assign device ids…</source>
@@ -306,6 +321,26 @@
     <message>
         <source>Give each controller of a new line its own id, one controller at a time</source>
         <translation>为新总线上的每台控制器逐台分配各自的 ID</translation>
+    </message>
+    <message>
+        <source>the built-in simulator is reset to the factory</source>
+        <translation>内置仿真器已恢复出厂状态</translation>
+    </message>
+    <message>
+        <source>The built-in simulator could not be reset: %1</source>
+        <translation>无法重置内置仿真器：%1</translation>
+    </message>
+    <message>
+        <source>The built-in simulator is back at the factory: id 1, 9600 baud, nothing saved. Connect to it again to start it.</source>
+        <translation>内置仿真器已恢复出厂状态：ID 1，9600 波特，未保存任何内容。重新连接即可启动它。</translation>
+    </message>
+    <message>
+        <source>Reset the built-in simulator to factory</source>
+        <translation>将内置仿真器恢复出厂状态</translation>
+    </message>
+    <message>
+        <source>Forget what the built-in simulator saved to flash: it starts again as it leaves the factory</source>
+        <translation>清除内置仿真器保存到闪存的内容：它将以出厂状态重新启动</translation>
     </message>
 </context>
 <context>
@@ -1599,6 +1634,18 @@
         <source>Link, as measured</source>
         <translation>实测通信</translation>
     </message>
+    <message>
+        <source>StepCom&apos;s built-in simulator -- not a machine</source>
+        <translation>StepCom 内置仿真器 —— 不是真实机器</translation>
+    </message>
+    <message>
+        <source>%1 -- simulator, not a machine</source>
+        <translation>%1 —— 仿真器，不是真实机器</translation>
+    </message>
+    <message>
+        <source>SIMULATOR -- NOT A MACHINE: these values were read from StepCom&apos;s built-in simulator. This sheet certifies no machine.</source>
+        <translation>仿真器 —— 不是真实机器：这些值读自 StepCom 内置仿真器。本报告不证明任何机器。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1875,6 +1922,25 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CtlLinkAdvice</name>
+    <message>
+        <source>not saved to flash: the built-in simulator starts its next run with the id and baud it saved (add --save-to-flash to keep them)</source>
+        <translation>未保存到闪存：内置仿真器下次运行时使用它已保存的 ID 和波特率（加 --save-to-flash 可保留新设置）</translation>
+    </message>
+    <message>
+        <source>not saved to flash: after the next power-off the controller answers at the id and baud it saved before (add --save-to-flash to keep them)</source>
+        <translation>未保存到闪存：下次断电后，控制器将以之前保存的 ID 和波特率应答（加 --save-to-flash 可保留新设置）</translation>
+    </message>
+    <message>
+        <source>the controller now speaks %1 baud on its RS-485 side: set the converter&apos;s (gateway&apos;s) serial side to %1 baud too, or it no longer reaches the controller</source>
+        <translation>控制器的 RS-485 端现在使用 %1 波特：请把转换器（网关）的串口也设为 %1 波特，否则它将无法再连到控制器</translation>
+    </message>
+    <message>
+        <source>next commands: stepcomctl %1 ...</source>
+        <translation>后续命令：stepcomctl %1 ...</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>no sample was read: every poll failed (see the errors above)</source>
@@ -1927,10 +1993,6 @@
     <message>
         <source>host:port</source>
         <translation>主机:端口</translation>
-    </message>
-    <message>
-        <source>Use the built-in simulated controller.</source>
-        <translation>使用内置仿真控制器。</translation>
     </message>
     <message>
         <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600).</source>
@@ -2233,8 +2295,20 @@
         <translation>--days：“%1”不是天数</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report, replay, bundle)</source>
-        <translation>未给出命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、scan、report、replay、bundle）</translation>
+        <source>Use the built-in simulated controller (it keeps what it saved to flash between runs).</source>
+        <translation>使用内置仿真控制器（它在多次运行之间保留已保存到闪存的内容）。</translation>
+    </message>
+    <message>
+        <source>Start the built-in simulator from the factory again (id 1, 9600 baud): forget what it saved to flash. Alone, or before a --sim command.</source>
+        <translation>让内置仿真器恢复出厂状态（ID 1，9600 波特）：清除它保存到闪存的内容。可单独使用，或用在 --sim 命令之前。</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, ports, report, replay, bundle)</source>
+        <translation>未给出命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、scan、ports、report、replay、bundle）</translation>
+    </message>
+    <message>
+        <source>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</source>
+        <translation>--baud：“%1”不是 4800、9600、19200 或 38400</translation>
     </message>
 </context>
 <context>
@@ -2670,6 +2744,38 @@
     <message>
         <source>no machine report: no controller was read (--port, --tcp or --sim) and no profile was given (--profile)</source>
         <translation>无整机报告：未读取任何控制器（--port、--tcp 或 --sim），也未给出参数文件（--profile）</translation>
+    </message>
+    <message>
+        <source>next commands: stepcomctl %1 ...</source>
+        <translation>后续命令：stepcomctl %1 ...</translation>
+    </message>
+    <message>
+        <source>not saved to flash: id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</source>
+        <translation>未保存到闪存：ID %1 只保持到断电为止，之后控制器将重新以闪存中的 ID 应答（出厂为 ID 1）；加 --save-to-flash 可保留它</translation>
+    </message>
+    <message>
+        <source>ports takes no arguments (&apos;%1&apos;)</source>
+        <translation>ports 不带参数（“%1”）</translation>
+    </message>
+    <message>
+        <source>no serial port found: is the USB adapter plugged in? (its driver&apos;s messages: sudo dmesg | tail)</source>
+        <translation>未找到串口：USB 适配器插好了吗？（驱动信息：sudo dmesg | tail）</translation>
+    </message>
+    <message>
+        <source>S/N %1</source>
+        <translation>序列号 %1</translation>
+    </message>
+    <message>
+        <source>stable name: %1</source>
+        <translation>固定名称：%1</translation>
+    </message>
+    <message>
+        <source>no permission to open it: add yourself to its group (ls -l %1; usually dialout), then log in again</source>
+        <translation>没有打开它的权限：请把自己加入它所属的组（ls -l %1；通常为 dialout），然后重新登录</translation>
+    </message>
+    <message>
+        <source>open it with: stepcomctl --port %1 read device.id</source>
+        <translation>打开方式：stepcomctl --port %1 read device.id</translation>
     </message>
 </context>
 <context>
@@ -3677,6 +3783,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</source>
         <translation>请先连接总线（控制器所在的端口，%1 波特率，设备 ID %2），再按“开始”。</translation>
     </message>
+    <message>
+        <source>Save each id to flash (else lost at power-off)</source>
+        <translation>把每个 ID 保存到闪存（否则断电后丢失）</translation>
+    </message>
+    <message>
+        <source>Without saving, a controller is back at id %1 and %2 baud after its next power-off.</source>
+        <translation>不保存时，控制器下次断电后会回到 ID %1、%2 波特。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::IdChange</name>
@@ -3751,6 +3865,26 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>device id %1 → %2: the controller answers at id %2</source>
         <translation>设备 ID %1 → %2：控制器在 ID %2 上应答</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1, but the register map has no save_to_flash: the id lasts until the power is switched off</source>
+        <translation>控制器在 ID %1 应答，但寄存器表中没有 save_to_flash：该 ID 只保持到断电为止</translation>
+    </message>
+    <message>
+        <source>Saving to flash at id %1</source>
+        <translation>正在 ID %1 保存到闪存</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1, but saving to flash failed (%2): the id lasts until the power is switched off; save to flash again</source>
+        <translation>控制器在 ID %1 应答，但保存到闪存失败（%2）：该 ID 只保持到断电为止；请再次保存到闪存</translation>
+    </message>
+    <message>
+        <source>; saved to flash</source>
+        <translation>；已保存到闪存</translation>
+    </message>
+    <message>
+        <source>; not saved to flash: lost at power-off</source>
+        <translation>；未保存到闪存：断电后丢失</translation>
     </message>
 </context>
 <context>
@@ -4763,6 +4897,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: no controller to report on</source>
         <translation>%1：没有可报告的控制器</translation>
     </message>
+    <message>
+        <source>%1 -- simulator, not a machine</source>
+        <translation>%1 —— 仿真器，不是真实机器</translation>
+    </message>
+    <message>
+        <source>built-in simulator -- not a machine</source>
+        <translation>内置仿真器 —— 不是真实机器</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MachineStrip</name>
@@ -5135,14 +5277,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>（已丢弃：%1）</translation>
     </message>
     <message>
-        <source> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers</source>
-        <translation> —— 请检查站号（%1）、主机和端口以及转换器的串口设置；总线扫描可以找到控制器</translation>
-    </message>
-    <message>
-        <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers</source>
-        <translation> —— 请检查站号（%1）、波特率和校验（%2）以及 A/B 接线；总线扫描可以找到控制器</translation>
-    </message>
-    <message>
         <source>stale/foreign answer discarded: %1</source>
         <translation>已丢弃过时/无关的应答：%1</translation>
     </message>
@@ -5161,6 +5295,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source> -- it answered %1 s ago: busy (writing its flash?), switched off, or a disturbed line</source>
         <translation> —— 它在 %1 s 前还应答过：正忙（正在写闪存？）、已断电，或线路受到干扰</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</source>
+        <translation> —— 请检查站号（%1）、主机和端口以及转换器的串口设置；总线扫描可以找到控制器（窗口中的“扫描总线”，或 stepcomctl scan）</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</source>
+        <translation> —— 请检查站号（%1）、波特率和校验（%2）以及 A/B 接线；总线扫描可以找到控制器（窗口中的“扫描总线”，或 stepcomctl scan）</translation>
     </message>
 </context>
 <context>
@@ -6293,6 +6435,37 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::PortSurvey</name>
+    <message>
+        <source>lock file %1</source>
+        <translation>锁文件 %1</translation>
+    </message>
+    <message>
+        <source>has it open</source>
+        <translation>已打开它</translation>
+    </message>
+    <message>
+        <source>free, as far as this user can see</source>
+        <translation>空闲（就当前用户所能看到的而言）</translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation>空闲</translation>
+    </message>
+    <message>
+        <source>%1 (pid %2, %3)</source>
+        <translation>%1（pid %2，%3）</translation>
+    </message>
+    <message>
+        <source>a program</source>
+        <translation>某个程序</translation>
+    </message>
+    <message>
+        <source>held by %1</source>
+        <translation>被占用：%1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::PositionPlot</name>
     <message>
         <source>Cannot write the picture “%1”.</source>
@@ -6866,6 +7039,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</source>
         <translation>&quot;metadata&quot;：&quot;unsupported&quot;：%1 不是寄存器表中的参数</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;source&quot; is &quot;simulator&quot; or absent, found &quot;%1&quot;</source>
+        <translation>&quot;metadata&quot;：&quot;source&quot; 应为 &quot;simulator&quot; 或不写，实际为 &quot;%1&quot;</translation>
     </message>
 </context>
 <context>
@@ -9078,6 +9255,18 @@ profile, and of the controllers given with --port,
 --profile FILE、设置、版本、操作系统和串口适配器、
 整机报告（参数文件的，以及用 --port、--tcp 或
 --sim 和 --id 给出的控制器的），内附 README</translation>
+    </message>
+    <message>
+        <source>list the serial ports: stable by-id name, adapter
+(vendor, product, serial number) and whether another
+program holds it; no controller needed</source>
+        <translation>列出串口：固定的 by-id 名称、适配器
+（厂商、产品、序列号）以及是否被其他程序
+占用；无需控制器</translation>
+    </message>
+    <message>
+        <source>the built-in simulator starts from the factory again (id 1, 9600 baud)</source>
+        <translation>内置仿真器已恢复出厂状态（ID 1，9600 波特）</translation>
     </message>
 </context>
 </TS>
