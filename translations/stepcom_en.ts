@@ -2679,10 +2679,6 @@
         <translation>%1 is not supported by this controller</translation>
     </message>
     <message>
-        <source>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</source>
-        <translation>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</translation>
-    </message>
-    <message>
         <source>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</source>
         <translation>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</translation>
     </message>
@@ -2793,6 +2789,14 @@
     <message>
         <source>open it with: stepcomctl --port %1 read device.id</source>
         <translation>open it with: stepcomctl --port %1 read device.id</translation>
+    </message>
+    <message>
+        <source>scan: give the line to scan: --port, --rtu-tcp, --tcp or --sim</source>
+        <translation>scan: give the line to scan: --port, --rtu-tcp, --tcp or --sim</translation>
+    </message>
+    <message>
+        <source>it has no serial line here</source>
+        <translation>it has no serial line here</translation>
     </message>
 </context>
 <context>
@@ -9284,18 +9288,6 @@ file and its checklist, no controller needed;
 --id 1,2,3: every controller in one document)</translation>
     </message>
     <message>
-        <source>find every controller on the line (--port or --rtu-tcp;
---tcp: ids only) at --bauds, --parity and --ids; a table
-(or --json) of id, baud, parity and what answered;
---probe-timeout MS for slow controllers; exit 0 found,
-1 none, 2 usage, 3 link error</source>
-        <translation>find every controller on the line (--port or --rtu-tcp;
---tcp: ids only) at --bauds, --parity and --ids; a table
-(or --json) of id, baud, parity and what answered;
---probe-timeout MS for slow controllers; exit 0 found,
-1 none, 2 usage, 3 link error</translation>
-    </message>
-    <message>
         <source>replay a session log (--log FILE or the window&apos;s):
 --events, --at TIME [--json], --diff T1 T2; no
 controller needed</source>
@@ -9326,6 +9318,18 @@ program holds it; no controller needed</translation>
     <message>
         <source>the built-in simulator starts from the factory again (id 1, 9600 baud)</source>
         <translation>the built-in simulator starts from the factory again (id 1, 9600 baud)</translation>
+    </message>
+    <message>
+        <source>find every controller on the line (--port, --rtu-tcp or
+--sim; --tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</source>
+        <translation>find every controller on the line (--port, --rtu-tcp or
+--sim; --tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</translation>
     </message>
 </context>
 </TS>

@@ -2662,10 +2662,6 @@
         <translation>此控制器不支持 %1</translation>
     </message>
     <message>
-        <source>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</source>
-        <translation>scan：请给出要扫描的线路：--port、--rtu-tcp 或 --tcp（内置仿真器是 ID 已知的一台控制器；请改为扫描 stepcom-sim --pty）</translation>
-    </message>
-    <message>
         <source>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</source>
         <translation>scan 不接受参数（“%1”）：请用 --bauds、--parity 和 --ids</translation>
     </message>
@@ -2776,6 +2772,14 @@
     <message>
         <source>open it with: stepcomctl --port %1 read device.id</source>
         <translation>打开方式：stepcomctl --port %1 read device.id</translation>
+    </message>
+    <message>
+        <source>scan: give the line to scan: --port, --rtu-tcp, --tcp or --sim</source>
+        <translation>scan：请给出要扫描的线路：--port、--rtu-tcp、--tcp 或 --sim</translation>
+    </message>
+    <message>
+        <source>it has no serial line here</source>
+        <translation>它在这里没有串行线路</translation>
     </message>
 </context>
 <context>
@@ -9226,18 +9230,6 @@ file and its checklist, no controller needed;
 --id 1,2,3：所有控制器合为一份文档）</translation>
     </message>
     <message>
-        <source>find every controller on the line (--port or --rtu-tcp;
---tcp: ids only) at --bauds, --parity and --ids; a table
-(or --json) of id, baud, parity and what answered;
---probe-timeout MS for slow controllers; exit 0 found,
-1 none, 2 usage, 3 link error</source>
-        <translation>找出线路上的所有控制器（--port 或 --rtu-tcp；
---tcp 只扫描 ID），按 --bauds、--parity 和 --ids 尝试；
-以表格（或 --json）列出 ID、波特率、校验和应答的设备；
-慢速控制器用 --probe-timeout 毫秒；退出码 0 找到，
-1 没有，2 用法错误，3 链路错误</translation>
-    </message>
-    <message>
         <source>replay a session log (--log FILE or the window&apos;s):
 --events, --at TIME [--json], --diff T1 T2; no
 controller needed</source>
@@ -9267,6 +9259,18 @@ program holds it; no controller needed</source>
     <message>
         <source>the built-in simulator starts from the factory again (id 1, 9600 baud)</source>
         <translation>内置仿真器已恢复出厂状态（ID 1，9600 波特）</translation>
+    </message>
+    <message>
+        <source>find every controller on the line (--port, --rtu-tcp or
+--sim; --tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</source>
+        <translation>找出线路上的所有控制器（--port、--rtu-tcp 或
+--sim；--tcp 只扫描 ID），按 --bauds、--parity 和 --ids 尝试；
+以表格（或 --json）列出 ID、波特率、校验和应答的设备；
+慢速控制器用 --probe-timeout 毫秒；退出码 0 找到，
+1 没有，2 用法错误，3 链路错误</translation>
     </message>
 </context>
 </TS>

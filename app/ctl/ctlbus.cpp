@@ -4,6 +4,7 @@
 #include "ctlscan.h"
 
 #include "line/idchange.h"
+#include "sim/builtinsimulator.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -197,11 +198,8 @@ void CtlRunner::runAssignId()
 
 void CtlRunner::runScan()
 {
-    if (m_options.target == CtlOptions::Target::None ||
-        m_options.target == CtlOptions::Target::Sim) {
-        fail(UsageError, tr("scan: give the line to scan: --port, --rtu-tcp or --tcp (the "
-                            "built-in simulator is one controller at a known id; scan "
-                            "stepcom-sim --pty instead)"));
+    if (m_options.target == CtlOptions::Target::None) {
+        fail(UsageError, tr("scan: give the line to scan: --port, --rtu-tcp, --tcp or --sim"));
         return;
     }
     if (!m_options.arguments.isEmpty()) {
@@ -215,6 +213,20 @@ void CtlRunner::runScan()
     plan.parities = m_options.scanParities;
     plan.ids = m_options.scanIds;
     plan.probeTimeoutMs = m_options.probeTimeoutMs;
+    if (m_options.target == CtlOptions::Target::Sim) {
+        // Its pty, whatever id and baud it saved to flash: finding them is what a scan is for.
+        auto sim = std::make_unique<BuiltinSimulator>();
+        sim->setFlashPath(BuiltinSimulator::defaultFlashPath());
+        QString error;
+        const std::optional<LinkSettings> link = sim->start(m_map, &error);
+        if (!link || link->transport != LinkSettings::Transport::Rtu) {
+            fail(CtlScan::LinkError, tr("cannot start the built-in simulator: %1")
+                                         .arg(link ? tr("it has no serial line here") : error));
+            return;
+        }
+        plan.base.portName = link->portName;
+        m_scanSim = std::move(sim);
+    }
     auto *scan = new CtlScan(plan, m_map, m_options.json, this);
     connect(scan, &CtlScan::finished, this, &CtlRunner::finish);
     scan->start();

@@ -18,7 +18,9 @@ void CtlRunner::runPorts()
     // Tests hand in a fake system (sys/, dev/, proc/, run/lock/ under one folder).
     const PortSurvey survey(qEnvironmentVariable("STEPCOMCTL_SYSTEM_ROOT"));
     const QList<PortSurvey::Port> ports = survey.ports();
-    const auto hex = [](quint16 id) { return QStringLiteral("%1").arg(id, 4, 16, QLatin1Char('0')); };
+    const auto hex = [](quint16 id) {
+        return QStringLiteral("%1").arg(id, 4, 16, QLatin1Char('0'));
+    };
     if (m_options.json) {
         QJsonArray array;
         for (const PortSurvey::Port &p : ports) {
@@ -33,7 +35,8 @@ void CtlRunner::runPorts()
                 {QStringLiteral("by_id"), p.entry.byId.isEmpty() ? QJsonValue() : p.entry.byId},
                 {QStringLiteral("open_with"), p.entry.path()},
                 {QStringLiteral("driver"), p.driver},
-                {QStringLiteral("vendor_id"), usb ? QJsonValue(hex(p.entry.vendorId)) : QJsonValue()},
+                {QStringLiteral("vendor_id"),
+                 usb ? QJsonValue(hex(p.entry.vendorId)) : QJsonValue()},
                 {QStringLiteral("product_id"),
                  usb ? QJsonValue(hex(p.entry.productId)) : QJsonValue()},
                 {QStringLiteral("vendor"), p.entry.manufacturer},
@@ -68,9 +71,8 @@ void CtlRunner::runPorts()
             adapter << tr("S/N %1").arg(p.entry.serialNumber);
         if (adapter.isEmpty() && !p.driver.isEmpty())
             adapter << p.driver;
-        m_out << p.entry.systemLocation << QStringLiteral("  ")
-              << adapter.join(QLatin1String(", ")) << QStringLiteral("  ")
-              << PortSurvey::holdersText(p) << Qt::endl;
+        m_out << p.entry.systemLocation << QStringLiteral("  ") << adapter.join(QLatin1String(", "))
+              << QStringLiteral("  ") << PortSurvey::holdersText(p) << Qt::endl;
         if (!p.entry.byId.isEmpty())
             m_out << QStringLiteral("    ") << tr("stable name: %1").arg(p.entry.byId) << Qt::endl;
         if (!p.accessible)

@@ -132,8 +132,8 @@ const QList<CtlCommand> &CtlRunner::commands()
          &CtlRunner::runAssignId},
         {"scan", "scan",
          QT_TRANSLATE_NOOP("stepcomctl",
-                           "find every controller on the line (--port or --rtu-tcp;\n"
-                           "--tcp: ids only) at --bauds, --parity and --ids; a table\n"
+                           "find every controller on the line (--port, --rtu-tcp or\n"
+                           "--sim; --tcp: ids only) at --bauds, --parity and --ids; a table\n"
                            "(or --json) of id, baud, parity and what answered;\n"
                            "--probe-timeout MS for slow controllers; exit 0 found,\n"
                            "1 none, 2 usage, 3 link error"),

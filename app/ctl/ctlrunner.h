@@ -3,6 +3,7 @@
 #include "ctloptions.h"
 #include "map/registermap.h"
 #include "session/devicesession.h"
+#include "session/simulatorstarter.h"
 
 #include <QObject>
 #include <QTextStream>
@@ -143,6 +144,7 @@ private:
     QList<QStringList> m_idErrors;
     QString m_multiArgument; // dump: the path asked for, suffixed per id
     QString m_dumpFolder;    // dump: the folder asked for, one file per id inside
+    std::unique_ptr<SimulatorStarter> m_scanSim; // scan --sim: the simulator scanned
 };
 
 } // namespace stepcom

@@ -86,7 +86,8 @@ void PortSurvey::readAdapter(const QString &ttyName, Port *port) const
     for (int up = 0; up < 6 && !dir.isRoot(); ++up) {
         if (dir.exists(QStringLiteral("idVendor"))) {
             bool ok = false;
-            port->entry.vendorId = readLine(dir.filePath(QStringLiteral("idVendor"))).toUShort(&ok, 16);
+            port->entry.vendorId =
+                readLine(dir.filePath(QStringLiteral("idVendor"))).toUShort(&ok, 16);
             port->entry.productId =
                 readLine(dir.filePath(QStringLiteral("idProduct"))).toUShort(&ok, 16);
             port->entry.manufacturer = readLine(dir.filePath(QStringLiteral("manufacturer")));
@@ -150,8 +151,8 @@ QList<PortSurvey::Holder> PortSurvey::holders(const QString &devicePath, bool *i
         });
         if (!holds)
             continue;
-        const auto known = std::find_if(out.begin(), out.end(),
-                                        [pid](const Holder &h) { return h.pid == pid; });
+        const auto known =
+            std::find_if(out.begin(), out.end(), [pid](const Holder &h) { return h.pid == pid; });
         if (known != out.end())
             known->how += QStringLiteral(", ") + tr("has it open");
         else

@@ -28,9 +28,9 @@ class TestCtlIds : public QObject
     ProgramRun ctl(const QStringList &args, const QStringList &environment = {})
     {
         ProgramOptions options;
-        options.environment =
-            QStringList{QStringLiteral("XDG_DATA_HOME=") + m_home.filePath(QStringLiteral("data"))} +
-            environment;
+        options.environment = QStringList{QStringLiteral("XDG_DATA_HOME=") +
+                                          m_home.filePath(QStringLiteral("data"))} +
+                              environment;
         return runProgram(QStringLiteral("stepcomctl"), args, options);
     }
     // The simulated controllers answer after 5 ms: a write's answer repeats the request, so with
@@ -143,8 +143,8 @@ private Q_SLOTS:
     {
         SimHost host;
         QVERIFY(start(host, rtuOptions()));
-        ProgramRun r = ctl(rtu(host.rtuPath()) +
-                           QStringList{"write", "device.id=7", "device.baud=19200"});
+        ProgramRun r =
+            ctl(rtu(host.rtuPath()) + QStringList{"write", "device.id=7", "device.baud=19200"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("not saved to flash")), qPrintable(r.out));
         const QString next =
@@ -168,8 +168,8 @@ private Q_SLOTS:
     {
         SimHost host;
         QVERIFY(start(host, rtuOptions()));
-        const ProgramRun r = ctl(rtu(host.rtuPath()) + QStringList{"--id", "9", "read",
-                                                                   "device.id"});
+        const ProgramRun r =
+            ctl(rtu(host.rtuPath()) + QStringList{"--id", "9", "read", "device.id"});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(QStringLiteral("stepcomctl scan")), qPrintable(r.err));
     }
@@ -180,16 +180,16 @@ private Q_SLOTS:
         SimOptions o;
         o.tcp = true;
         QVERIFY(start(host, o));
-        const ProgramRun r =
-            ctl({"--tcp", QStringLiteral("127.0.0.1:%1").arg(host.tcpPort()), "write",
-                 "device.baud=19200"});
+        const ProgramRun r = ctl({"--tcp", QStringLiteral("127.0.0.1:%1").arg(host.tcpPort()),
+                                  "write", "device.baud=19200"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("set the converter's (gateway's) serial side to "
                                                "19200 baud too")),
                  qPrintable(r.out));
-        QVERIFY2(r.out.contains(QStringLiteral("next commands: stepcomctl --tcp 127.0.0.1:%1 --id 1")
-                                    .arg(host.tcpPort())),
-                 qPrintable(r.out));
+        QVERIFY2(
+            r.out.contains(QStringLiteral("next commands: stepcomctl --tcp 127.0.0.1:%1 --id 1")
+                               .arg(host.tcpPort())),
+            qPrintable(r.out));
     }
 
     // As a real controller: nobody answers at another id or baud.
@@ -215,10 +215,12 @@ private Q_SLOTS:
     // What it saved is there on the next run, as after a power cycle; --sim-reset forgets it.
     void theBuiltinSimulatorKeepsItsFlashBetweenRuns()
     {
-        ProgramRun r = ctl({"--sim", "write", "motor1.speed=450", "device.id=5", "--save-to-flash"});
+        ProgramRun r =
+            ctl({"--sim", "write", "motor1.speed=450", "device.id=5", "--save-to-flash"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("next commands: stepcomctl --sim --baud 9600 --id 5")),
-                 qPrintable(r.out));
+        QVERIFY2(
+            r.out.contains(QStringLiteral("next commands: stepcomctl --sim --baud 9600 --id 5")),
+            qPrintable(r.out));
         r = ctl({"--sim", "--id", "5", "read", "motor1.speed", "device.id"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("motor1.speed = 450")), qPrintable(r.out));
@@ -235,6 +237,25 @@ private Q_SLOTS:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("device.id = 1")), qPrintable(r.out));
         QVERIFY2(!r.out.contains(QStringLiteral("motor1.speed = 450")), qPrintable(r.out));
+    }
+
+    // The guide's practice for a forgotten id and baud, on the built-in simulator.
+    void theScanFindsTheBuiltinSimulatorsSavedIdAndBaud()
+    {
+        ProgramRun r =
+            ctl({"--sim", "write", "device.id=7", "device.baud=19200", "--save-to-flash"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        r = ctl({"--sim", "--timeout", "200", "--retries", "0", "read", "device.id"});
+        QCOMPARE(r.exitCode, 1);
+        r = ctl({"--sim", "scan", "--ids", "6-8", "--bauds", "9600,19200", "--json"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const QJsonArray found = QJsonDocument::fromJson(r.out.toUtf8()).array();
+        QCOMPARE(found.size(), 1);
+        QCOMPARE(found.at(0).toObject().value("id").toInt(), 7);
+        QCOMPARE(found.at(0).toObject().value("baud").toInt(), 19200);
+        r = ctl({"--sim", "--id", "7", "--baud", "19200", "read", "device.id"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("device.id = 7")), qPrintable(r.out));
     }
 
     void whatIsMadeOfTheSimulatorSaysSo()
