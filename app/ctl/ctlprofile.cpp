@@ -1,4 +1,5 @@
 // stepcomctl dump, diff, apply and report: CtlRunner's profile commands (docs/profiles.md).
+#include "ctllinkadvice.h"
 #include "ctlrunner.h"
 
 #include "consolereader.h"
@@ -410,6 +411,9 @@ void CtlRunner::applyWrites(const QList<ParameterWrite> &writes)
             finish(DeviceError);
             return;
         }
+        // --include-link: how the next command reaches a new id or baud (the flash is said below).
+        for (const QString &note : CtlLinkAdvice::notes(m_options, writes, true))
+            m_out << note << Qt::endl;
         if (m_options.saveToFlash)
             saveToFlashThenFinish();
         else {

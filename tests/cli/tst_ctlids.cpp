@@ -163,6 +163,33 @@ private Q_SLOTS:
         QCOMPARE(host.device()->baud(), 19200);
     }
 
+    // apply --include-link moves the controller too: the next command is named.
+    void applyWithTheLinkSaysWhatTheNextCommandNeeds()
+    {
+        SimHost host;
+        QVERIFY(start(host, rtuOptions()));
+        const QString path = m_home.filePath(QStringLiteral("with-link.json"));
+        ProgramRun r = ctl(rtu(host.rtuPath()) + QStringList{"dump", path, "--include-link"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QJsonObject top = QJsonDocument::fromJson(f.readAll()).object();
+        f.close();
+        QJsonObject values = top.value("values").toObject();
+        values.insert("device.id", 4);
+        top.insert("values", values);
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(QJsonDocument(top).toJson());
+        f.close();
+        r = ctl(rtu(host.rtuPath()) + QStringList{"apply", path, "--include-link", "--yes"});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("next commands: stepcomctl --port %1 --baud 9600 "
+                                               "--id 4")
+                                    .arg(host.rtuPath())),
+                 qPrintable(r.out));
+        QCOMPARE(host.device()->deviceId(), 4);
+    }
+
     // The next failure names the command that finds a controller.
     void noAnswerNamesTheScanCommand()
     {
