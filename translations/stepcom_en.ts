@@ -3307,6 +3307,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Restore &amp;factory settings…</source>
         <translation>Restore &amp;factory settings…</translation>
     </message>
+    <message>
+        <source>Save to flash at the new settings (else lost at power-off)</source>
+        <translation>Save to flash at the new settings (else lost at power-off)</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DeviceSession</name>

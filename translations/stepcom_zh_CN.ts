@@ -3288,6 +3288,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Restore &amp;factory settings…</source>
         <translation>恢复出厂设置(&amp;F)…</translation>
     </message>
+    <message>
+        <source>Save to flash at the new settings (else lost at power-off)</source>
+        <translation>在新设置下保存到闪存（否则断电后丢失）</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::DeviceSession</name>
