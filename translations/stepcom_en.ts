@@ -2763,10 +2763,6 @@
         <translation>next commands: stepcomctl %1 ...</translation>
     </message>
     <message>
-        <source>not saved to flash: id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</source>
-        <translation>not saved to flash: id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</translation>
-    </message>
-    <message>
         <source>ports takes no arguments (&apos;%1&apos;)</source>
         <translation>ports takes no arguments (&apos;%1&apos;)</translation>
     </message>
@@ -2797,6 +2793,10 @@
     <message>
         <source>it has no serial line here</source>
         <translation>it has no serial line here</translation>
+    </message>
+    <message>
+        <source>id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</source>
+        <translation>id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</translation>
     </message>
 </context>
 <context>

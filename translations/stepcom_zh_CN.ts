@@ -2746,10 +2746,6 @@
         <translation>后续命令：stepcomctl %1 ...</translation>
     </message>
     <message>
-        <source>not saved to flash: id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</source>
-        <translation>未保存到闪存：ID %1 只保持到断电为止，之后控制器将重新以闪存中的 ID 应答（出厂为 ID 1）；加 --save-to-flash 可保留它</translation>
-    </message>
-    <message>
         <source>ports takes no arguments (&apos;%1&apos;)</source>
         <translation>ports 不带参数（“%1”）</translation>
     </message>
@@ -2780,6 +2776,10 @@
     <message>
         <source>it has no serial line here</source>
         <translation>它在这里没有串行线路</translation>
+    </message>
+    <message>
+        <source>id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</source>
+        <translation>ID %1 只保持到断电为止，之后控制器将重新以闪存中的 ID 应答（出厂为 ID 1）；加 --save-to-flash 可保留它</translation>
     </message>
 </context>
 <context>

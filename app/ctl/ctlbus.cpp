@@ -181,10 +181,9 @@ void CtlRunner::runAssignId()
                 }
                 m_out << text << Qt::endl;
                 if (!m_options.saveToFlash)
-                    m_out << tr("not saved to flash: id %1 lasts until the power is "
-                                "switched off, then the controller answers at the id in "
-                                "its flash again (id 1 from the factory); add "
-                                "--save-to-flash to keep it")
+                    m_out << tr("id %1 lasts until the power is switched off, then the "
+                                "controller answers at the id in its flash again (id 1 from "
+                                "the factory); add --save-to-flash to keep it")
                                  .arg(to)
                           << Qt::endl;
                 m_out << tr("next commands: stepcomctl %1 ...")

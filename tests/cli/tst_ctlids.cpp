@@ -126,7 +126,8 @@ private Q_SLOTS:
         QVERIFY(start(host, rtuOptions()));
         const ProgramRun r = ctl(rtu(host.rtuPath()) + QStringList{"assign-id", "--to", "3"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        QVERIFY2(r.out.contains(QStringLiteral("not saved to flash: id 3 lasts until the power is "
+        QVERIFY2(r.out.contains(QStringLiteral("not saved to flash: lost at power-off\nid 3 lasts "
+                                               "until the power is "
                                                "switched off")),
                  qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("--save-to-flash")), qPrintable(r.out));
