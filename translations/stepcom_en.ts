@@ -766,6 +766,10 @@
         <source>Accepted by (customer)</source>
         <translation>Accepted by (customer)</translation>
     </message>
+    <message>
+        <source>Read from StepCom&apos;s built-in simulator, not from a machine: nothing here can be signed for a machine.</source>
+        <translation>Read from StepCom&apos;s built-in simulator, not from a machine: nothing here can be signed for a machine.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::Checklist</name>

@@ -759,6 +759,10 @@
         <source>Accepted by (customer)</source>
         <translation>验收人（客户）</translation>
     </message>
+    <message>
+        <source>Read from StepCom&apos;s built-in simulator, not from a machine: nothing here can be signed for a machine.</source>
+        <translation>读自 StepCom 内置仿真器，而非真实机器：此处不能为任何机器签字。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::Checklist</name>

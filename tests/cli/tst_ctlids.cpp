@@ -299,6 +299,8 @@ private Q_SLOTS:
         QVERIFY2(text.contains(QStringLiteral("SIMULATOR -- NOT A MACHINE")), qPrintable(text));
         QVERIFY(text.contains(QStringLiteral("<title>Commissioning report -- simulator, not a "
                                              "machine</title>")));
+        // Above the signatures too.
+        QVERIFY(text.contains(QStringLiteral("nothing here can be signed for a machine")));
 
         r = ctl({"--sim", "dump", profile});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
