@@ -6516,6 +6516,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>held by %1</source>
         <translation>held by %1</translation>
     </message>
+    <message>
+        <source>whether another program holds it is not known here</source>
+        <translation>whether another program holds it is not known here</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::PositionPlot</name>

@@ -6476,6 +6476,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>held by %1</source>
         <translation>被占用：%1</translation>
     </message>
+    <message>
+        <source>whether another program holds it is not known here</source>
+        <translation>此处无法得知是否被其他程序占用</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::PositionPlot</name>

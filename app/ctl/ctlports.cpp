@@ -43,10 +43,11 @@ void CtlRunner::runPorts()
                 {QStringLiteral("product"), p.entry.description},
                 {QStringLiteral("serial_number"), p.entry.serialNumber},
                 {QStringLiteral("accessible"), p.accessible},
-                {QStringLiteral("held"), !p.holders.isEmpty()},
+                {QStringLiteral("held"),
+                 p.holdersKnown ? QJsonValue(!p.holders.isEmpty()) : QJsonValue()},
                 {QStringLiteral("holders"), holders},
                 // Another user's processes cannot be looked into: a holder may be missing.
-                {QStringLiteral("holders_complete"), !p.holdersIncomplete}});
+                {QStringLiteral("holders_complete"), p.holdersKnown && !p.holdersIncomplete}});
         }
         m_out << QString::fromUtf8(QJsonDocument(array).toJson(QJsonDocument::Indented));
         finish(Ok);

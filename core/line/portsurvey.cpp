@@ -32,6 +32,16 @@ QList<PortSurvey::Port> PortSurvey::ports() const
 {
     QList<Port> out;
     const QDir ttys(path(QStringLiteral("/sys/class/tty")));
+    if (m_root.isEmpty() && !ttys.exists()) {
+        // No sysfs (Windows, macOS): what Qt lists, with nobody known to hold it.
+        for (const SerialPortEntry &entry : SerialPorts::systemPorts()) {
+            Port port;
+            port.entry = entry;
+            port.holdersKnown = false;
+            out << port;
+        }
+        return out;
+    }
     const QFileInfoList links =
         QDir(path(QStringLiteral("/dev/serial/by-id")))
             .entryInfoList(QDir::Files | QDir::System | QDir::NoDotAndDotDot);
@@ -163,6 +173,8 @@ QList<PortSurvey::Holder> PortSurvey::holders(const QString &devicePath, bool *i
 
 QString PortSurvey::holdersText(const Port &port)
 {
+    if (!port.holdersKnown)
+        return tr("whether another program holds it is not known here");
     if (port.holders.isEmpty())
         return port.holdersIncomplete ? tr("free, as far as this user can see") : tr("free");
     QStringList parts;

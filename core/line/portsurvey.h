@@ -13,6 +13,7 @@ namespace stepcom {
 // sysfs, as QSerialPortInfo reads them), and whether another program holds it -- a UUCP lock
 // file (/run/lock/LCK..ttyUSB0, /var/lock) naming a living process, or a process with the device
 // open (/proc/PID/fd). Everything is read under a root folder, so tests hand in a fake system.
+// Without sysfs (Windows, macOS) the ports are Qt's list, their holders unknown.
 class PortSurvey
 {
     Q_DECLARE_TR_FUNCTIONS(stepcom::PortSurvey)
@@ -31,6 +32,8 @@ public:
         QList<Holder> holders; // other programs using it (this one left out)
         // /proc of some processes could not be read (another user's): holders may be missing.
         bool holdersIncomplete = false;
+        // Nothing could be looked at (no /proc, no lock folders): held or not is unknown.
+        bool holdersKnown = true;
         bool accessible = true; // read and write permission for this user
     };
 
