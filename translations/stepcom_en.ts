@@ -3200,14 +3200,6 @@
         <translation>Change the controller from %1 to %2?</translation>
     </message>
     <message>
-        <source>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
-
-Every other master on the bus must use the new settings too, and no other device may use the new ID. Save to flash afterwards to keep them after a power cycle.</source>
-        <translation>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
-
-Every other master on the bus must use the new settings too, and no other device may use the new ID. Save to flash afterwards to keep them after a power cycle.</translation>
-    </message>
-    <message>
         <source>&amp;Change</source>
         <translation>&amp;Change</translation>
     </message>
@@ -3314,6 +3306,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Save to flash at the new settings (else lost at power-off)</source>
         <translation>Save to flash at the new settings (else lost at power-off)</translation>
+    </message>
+    <message>
+        <source>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
+
+Every other master on the bus must use the new settings too, and no other device may use the new ID. Unsaved, they last until the next power-off.</source>
+        <translation>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
+
+Every other master on the bus must use the new settings too, and no other device may use the new ID. Unsaved, they last until the next power-off.</translation>
     </message>
 </context>
 <context>

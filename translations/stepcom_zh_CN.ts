@@ -3181,14 +3181,6 @@
         <translation>将控制器从 %1 更改为 %2？</translation>
     </message>
     <message>
-        <source>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
-
-Every other master on the bus must use the new settings too, and no other device may use the new ID. Save to flash afterwards to keep them after a power cycle.</source>
-        <translation>控制器会立即切换。StepCom 随之切换并检查控制器是否应答；如果没有应答，可以用原设置重新连接。
-
-总线上的其他主站也必须改用新设置，并且新 ID 不能与其他设备重复。之后请保存到闪存，使设置在断电重启后仍然有效。</translation>
-    </message>
-    <message>
         <source>&amp;Change</source>
         <translation>更改(&amp;C)</translation>
     </message>
@@ -3295,6 +3287,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Save to flash at the new settings (else lost at power-off)</source>
         <translation>在新设置下保存到闪存（否则断电后丢失）</translation>
+    </message>
+    <message>
+        <source>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
+
+Every other master on the bus must use the new settings too, and no other device may use the new ID. Unsaved, they last until the next power-off.</source>
+        <translation>控制器会立即切换。StepCom 随之切换并检查控制器是否应答；如果没有应答，可以用原设置重新连接。
+
+总线上的其他主站也必须改用新设置，并且新 ID 不能与其他设备重复。未保存时，新设置只保持到下次断电。</translation>
     </message>
 </context>
 <context>

@@ -368,8 +368,8 @@ void DevicePage::requestLinkChange()
                          tr("The controller switches at once. StepCom follows it and checks that "
                             "it answers; if it does not, you can reconnect with the old settings."
                             "\n\nEvery other master on the bus must use the new settings too, and "
-                            "no other device may use the new ID. Save to flash afterwards to keep "
-                            "them after a power cycle."),
+                            "no other device may use the new ID. Unsaved, they last until the next "
+                            "power-off."),
                          tr("&Change"));
     // Asked here, on by default: a new id or baud not saved is gone at the next power-off.
     auto *save = new QCheckBox(tr("Save to flash at the new settings (else lost at power-off)"));
