@@ -22,9 +22,16 @@ public:
     BusActions(DeviceSession *session, DeviceListDock *dock, QWidget *window);
 
     QAction *assignIdsAction() const { return m_assignIds; }
+    // "Reset the built-in simulator to factory": disconnects from it, forgets what it saved.
+    QAction *resetSimulatorAction() const { return m_resetSim; }
+    void resetSimulator();
     // Opens (or raises) the assistant.
     IdAssistantDialog *openAssistant();
     IdAssistantDialog *assistant() const;
+
+Q_SIGNALS:
+    // What happened, for the window's messages.
+    void message(const QString &text);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -36,6 +43,7 @@ private:
     DeviceListDock *m_dock;
     QWidget *m_window;
     QAction *m_assignIds;
+    QAction *m_resetSim;
     QPointer<IdAssistantDialog> m_assistant;
 };
 

@@ -181,8 +181,9 @@ void MachineActions::dumpIntoFolder(const QString &folder)
                                 tr("id %1 was not saved: it could not be read completely").arg(id));
                 continue;
             }
-            const BusDump::Saved saved = BusDump::save(folder, m_session->map(), id,
-                                                       names.value(id), QString(), r.values, today);
+            const BusDump::Saved saved =
+                BusDump::save(folder, m_session->map(), id, names.value(id), QString(), r.values,
+                              today, m_session->isSimulator());
             Q_EMIT finished(saved.ok(),
                             saved.ok() ? tr("id %1 saved to %2").arg(id).arg(saved.path)
                                        : tr("id %1 was not saved: %2").arg(id).arg(saved.error));
@@ -242,6 +243,7 @@ ReportInput MachineActions::sheet(int id, const QHash<QString, qint64> &values, 
     input.map = m_session->map();
     input.values = values;
     input.link = m_session->describeDevice(id);
+    input.simulator = m_session->isSimulator();
     input.line = m_session->linkStats().lineText(id);
     input.deviceId = id;
     input.title = name;

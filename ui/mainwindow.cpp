@@ -383,7 +383,11 @@ void MainWindow::createDocks()
     });
     m_viewMenu->addAction(m_deviceDock->toggleViewAction());
     m_deviceMenu->addSeparator();
-    m_deviceMenu->addAction((new BusActions(m_session, m_deviceDock, this))->assignIdsAction());
+    auto *bus = new BusActions(m_session, m_deviceDock, this);
+    m_deviceMenu->addAction(bus->assignIdsAction());
+    m_deviceMenu->addAction(bus->resetSimulatorAction());
+    connect(bus, &BusActions::message, this,
+            [this](const QString &text) { m_messages->add(DeviceSession::Severity::Info, text); });
 }
 
 void MainWindow::showOrigin()

@@ -347,6 +347,7 @@ void ProfileActions::saveFromDeviceFile(const QString &path, const QString &name
         profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
         profile.notes = notes;
         profile.deviceId = self->m_session->settings().deviceId;
+        profile.fromSimulator = self->m_session->isSimulator();
         profile.travelLimits = self->m_session->travelLimits();
         if (const QString e = ProfileFile::save(path, profile, self->m_session->map());
             !e.isEmpty()) {
@@ -381,8 +382,10 @@ bool ProfileActions::saveFromEditedFile(const QString &path, const QString &name
     Profile profile = Profile::fromValues(m_session->map(), values, true);
     profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
     profile.notes = notes;
-    if (m_session->isConnected())
+    if (m_session->isConnected()) {
         profile.deviceId = m_session->settings().deviceId;
+        profile.fromSimulator = m_session->isSimulator();
+    }
     profile.travelLimits = m_session->travelLimits();
     if (const QString e = ProfileFile::save(path, profile, m_session->map()); !e.isEmpty()) {
         showErrors(tr("Save profile"), {e});
@@ -419,6 +422,7 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         input.values = r.values;
         input.unsupported = r.unsupported;
         input.link = self->m_session->settings().describe();
+        input.simulator = self->m_session->isSimulator();
         input.line = self->m_session->linkStats().lineText(self->m_session->deviceInView());
         input.deviceId = self->m_session->settings().deviceId;
         input.notes = notes;

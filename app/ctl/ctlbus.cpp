@@ -1,8 +1,10 @@
 // stepcomctl --id 1,2,3: one command for several controllers on one line, in turn.
+#include "ctllinkadvice.h"
 #include "ctlrunner.h"
 #include "ctlscan.h"
 
 #include "line/idchange.h"
+#include "sim/builtinsimulator.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -153,27 +155,42 @@ void CtlRunner::runAssignId()
     connectThen([this, from, to] {
         // The same steps as the window's id assistant: core/line/idchange.
         auto *change = new IdChange(m_session, this);
-        connect(change, &IdChange::finished, this, [this, change](bool ok, const QString &text) {
-            change->deleteLater();
-            if (!ok) {
-                fail(change->problem() == IdChange::Problem::Refused ? UsageError : DeviceError,
-                     text);
-                return;
-            }
-            m_out << text << Qt::endl;
-            finish(Ok);
-        });
+        change->setSaveToFlash(m_options.saveToFlash);
+        connect(
+            change, &IdChange::finished, this, [this, change, to](bool ok, const QString &text) {
+                change->deleteLater();
+                if (!ok) {
+                    // Answering at the new id but not saved: say how to reach it anyway.
+                    if (change->problem() == IdChange::Problem::NotSaved)
+                        m_err << QStringLiteral("stepcomctl: ")
+                              << tr("next commands: stepcomctl %1 ...")
+                                     .arg(CtlLinkAdvice::nextOptions(m_options, to,
+                                                                     m_options.link.baud))
+                              << Qt::endl;
+                    fail(change->problem() == IdChange::Problem::Refused ? UsageError : DeviceError,
+                         text);
+                    return;
+                }
+                m_out << text << Qt::endl;
+                if (!m_options.saveToFlash)
+                    m_out << tr("id %1 lasts until the power is switched off, then the "
+                                "controller answers at the id in its flash again (id 1 from "
+                                "the factory); add --save-to-flash to keep it")
+                                 .arg(to)
+                          << Qt::endl;
+                m_out << tr("next commands: stepcomctl %1 ...")
+                             .arg(CtlLinkAdvice::nextOptions(m_options, to, m_options.link.baud))
+                      << Qt::endl;
+                finish(Ok);
+            });
         change->start(from, to);
     });
 }
 
 void CtlRunner::runScan()
 {
-    if (m_options.target == CtlOptions::Target::None ||
-        m_options.target == CtlOptions::Target::Sim) {
-        fail(UsageError, tr("scan: give the line to scan: --port, --rtu-tcp or --tcp (the "
-                            "built-in simulator is one controller at a known id; scan "
-                            "stepcom-sim --pty instead)"));
+    if (m_options.target == CtlOptions::Target::None) {
+        fail(UsageError, tr("scan: give the line to scan: --port, --rtu-tcp, --tcp or --sim"));
         return;
     }
     if (!m_options.arguments.isEmpty()) {
@@ -187,6 +204,20 @@ void CtlRunner::runScan()
     plan.parities = m_options.scanParities;
     plan.ids = m_options.scanIds;
     plan.probeTimeoutMs = m_options.probeTimeoutMs;
+    if (m_options.target == CtlOptions::Target::Sim) {
+        // Its pty, whatever id and baud it saved to flash: finding them is what a scan is for.
+        auto sim = std::make_unique<BuiltinSimulator>();
+        sim->setFlashPath(BuiltinSimulator::defaultFlashPath());
+        QString error;
+        const std::optional<LinkSettings> link = sim->start(m_map, &error);
+        if (!link || link->transport != LinkSettings::Transport::Rtu) {
+            fail(CtlScan::LinkError, tr("cannot start the built-in simulator: %1")
+                                         .arg(link ? tr("it has no serial line here") : error));
+            return;
+        }
+        plan.base.portName = link->portName;
+        m_scanSim = std::move(sim);
+    }
     auto *scan = new CtlScan(plan, m_map, m_options.json, this);
     connect(scan, &CtlScan::finished, this, &CtlRunner::finish);
     scan->start();

@@ -14,8 +14,9 @@ namespace stepcom {
 void CtlRunner::dumpIntoFolder(const QString &folder, const QHash<QString, qint64> &values)
 {
     const int id = m_session->deviceInView();
-    const BusDump::Saved saved = BusDump::save(folder, m_map, id, m_options.name, m_options.notes,
-                                               values, QDate::currentDate());
+    const BusDump::Saved saved =
+        BusDump::save(folder, m_map, id, m_options.name, m_options.notes, values,
+                      QDate::currentDate(), m_session->isSimulator());
     if (!saved.ok()) {
         fail(UsageError, saved.error);
         return;
@@ -83,6 +84,7 @@ void CtlRunner::readMachine(const QString &failure,
             input.map = m_map;
             input.values = sweep->outcome(id).values;
             input.link = m_session->describeDevice(id);
+            input.simulator = m_session->isSimulator();
             input.line = m_session->linkStats().lineText(id);
             input.deviceId = id;
             input.date = now;

@@ -35,7 +35,12 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          tr("RS-485/Ethernet converter in transparent mode: Modbus RTU frames over TCP, "
             "HOST:PORT."),
          tr("host:port")},
-        {QStringLiteral("sim"), tr("Use the built-in simulated controller.")},
+        {QStringLiteral("sim"),
+         tr("Use the built-in simulated controller (it keeps what it saved to flash between "
+            "runs).")},
+        {QStringLiteral("sim-reset"),
+         tr("Start the built-in simulator from the factory again (id 1, 9600 baud): forget "
+            "what it saved to flash. Alone, or before a --sim command.")},
         {QStringLiteral("echo"),
          tr("The adapter echoes what it sends (half-duplex USB-RS485 adapters without echo "
             "suppression): skip the request's own bytes from the first request on (without it "
@@ -275,9 +280,14 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.from = parser.value(QStringLiteral("from"));
     o.by = parser.value(QStringLiteral("by"));
     o.to = parser.value(QStringLiteral("to"));
+    o.simReset = parser.isSet(QStringLiteral("sim-reset"));
+    if (positional.isEmpty() && o.simReset) {
+        *out = o; // --sim-reset alone: nothing else to do
+        return {};
+    }
     if (positional.isEmpty())
         return tr("no command given (params, read, write, command, move, monitor, dump, diff, "
-                  "apply, assign-id, scan, report, replay, bundle)");
+                  "apply, assign-id, scan, ports, report, replay, bundle)");
     o.command = positional.first();
     o.arguments = positional.mid(1);
     // --to is a position for move and a device id for assign-id.
@@ -289,6 +299,8 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         if (o.target != Target::Sim) {
             if (const QString problem = o.link.validate(); !problem.isEmpty())
                 return problem;
+        } else if (!LinkSettings::supportedBauds().contains(o.link.baud)) {
+            return tr("--baud: '%1' is not 4800, 9600, 19200 or 38400").arg(o.link.baud);
         }
     }
     *out = o;

@@ -21,14 +21,15 @@ struct CtlOptions
     bool verbose = false;
     bool yes = false;
     bool saveToFlash = false;
-    bool wait = false;                       // command: wait for a motion's end and judge it
-    bool includeLink = false;                // dump/apply: device.id and device.baud too
-    bool noBackup = false;                   // apply: no backup of the controller's settings first
-    QString name;                            // dump/report: the profile's or the machine's name
-    QString notes;                           // dump/report
-    QString from;                            // report --from PROFILE: from a file, no controller
-    QString by;                              // move --by D: a step of D axis units
-    QString to;                              // move --to X: to position X
+    bool simReset = false;    // --sim-reset: the built-in simulator's flash back to the factory
+    bool wait = false;        // command: wait for a motion's end and judge it
+    bool includeLink = false; // dump/apply: device.id and device.baud too
+    bool noBackup = false;    // apply: no backup of the controller's settings first
+    QString name;             // dump/report: the profile's or the machine's name
+    QString notes;            // dump/report
+    QString from;             // report --from PROFILE: from a file, no controller
+    QString by;               // move --by D: a step of D axis units
+    QString to;               // move --to X: to position X
     QString language = QStringLiteral("en"); // --lang or the environment: messages and the report
     int assignTo = 0;                        // assign-id --to N
     // scan: the bauds, parities and ids to try, and the probe timeout (0: fitted to the baud).

@@ -1,4 +1,5 @@
 // stepcomctl dump, diff, apply and report: CtlRunner's profile commands (docs/profiles.md).
+#include "ctllinkadvice.h"
 #include "ctlrunner.h"
 
 #include "consolereader.h"
@@ -126,6 +127,7 @@ void CtlRunner::runDump()
                 m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
             profile.notes = m_options.notes;
             profile.deviceId = m_session->settings().deviceId;
+            profile.fromSimulator = m_session->isSimulator();
             if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
                 fail(DeviceError, e); // not done: the file could not be written
                 return;
@@ -438,6 +440,9 @@ void CtlRunner::applyWrites(const QList<ParameterWrite> &writes)
             finish(DeviceError);
             return;
         }
+        // --include-link: how the next command reaches a new id or baud (the flash is said below).
+        for (const QString &note : CtlLinkAdvice::notes(m_options, writes, true))
+            m_out << note << Qt::endl;
         if (m_options.saveToFlash)
             saveToFlashThenFinish();
         else {
@@ -498,6 +503,7 @@ void CtlRunner::runReport()
             input.values = r.values;
             input.unsupported = r.unsupported;
             input.link = m_session->settings().describe();
+            input.simulator = m_session->isSimulator();
             input.line = m_session->linkStats().lineText(m_session->deviceInView());
             input.deviceId = m_session->settings().deviceId;
             input.title = m_options.name;

@@ -1,6 +1,7 @@
 #include "ctlrunner.h"
 
 #include "ctlbusmonitor.h"
+#include "ctllinkadvice.h"
 #include "ctlmonitor.h"
 #include "ctlmotionwait.h"
 
@@ -124,12 +125,17 @@ const QList<CtlCommand> &CtlRunner::commands()
          &CtlRunner::runAssignId},
         {"scan", "scan",
          QT_TRANSLATE_NOOP("stepcomctl",
-                           "find every controller on the line (--port or --rtu-tcp;\n"
-                           "--tcp: ids only) at --bauds, --parity and --ids; a table\n"
+                           "find every controller on the line (--port, --rtu-tcp or\n"
+                           "--sim; --tcp: ids only) at --bauds, --parity and --ids; a table\n"
                            "(or --json) of id, baud, parity and what answered;\n"
                            "--probe-timeout MS for slow controllers; exit 0 found,\n"
                            "1 none, 2 usage, 3 link error"),
          &CtlRunner::runScan},
+        {"ports", "ports",
+         QT_TRANSLATE_NOOP("stepcomctl", "list the serial ports: stable by-id name, adapter\n"
+                                         "(vendor, product, serial number) and whether another\n"
+                                         "program holds it; no controller needed"),
+         &CtlRunner::runPorts},
         {"report", "report FILE.pdf|.html",
          QT_TRANSLATE_NOOP("stepcomctl", "write the commissioning report (--name, --notes,\n"
                                          "--lang en|zh_CN; --from PROFILE: from a profile\n"
@@ -317,6 +323,9 @@ void CtlRunner::connectThen(std::function<void()> next)
         // rehearses an echoing adapter on it).
         auto sim = std::make_unique<BuiltinSimulator>();
         sim->setEcho(m_options.link.echo);
+        // As a real controller: silent at another id or baud, what it saved kept between runs.
+        sim->setClientLink(m_options.link.deviceId, m_options.link.baud);
+        sim->setFlashPath(BuiltinSimulator::defaultFlashPath());
         if (isMulti())
             sim->setIds(m_options.ids); // one simulated controller per id, on one line
         m_session->setSimulator(std::move(sim));

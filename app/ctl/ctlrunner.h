@@ -3,6 +3,7 @@
 #include "ctloptions.h"
 #include "map/registermap.h"
 #include "session/devicesession.h"
+#include "session/simulatorstarter.h"
 
 #include <QJsonObject>
 #include <QObject>
@@ -84,6 +85,8 @@ private:
     void runAssignId();
     // scan (ctlbus.cpp): every controller on the line, at the bauds, parities and ids asked.
     void runScan();
+    // ports (ctlports.cpp): every serial port, its stable name, adapter and who holds it.
+    void runPorts();
     // Profiles and the report (ctlprofile.cpp).
     void runDump();
     void runDiff();
@@ -170,6 +173,7 @@ private:
     QList<QJsonObject> m_idResults; // each id's
     QString m_multiArgument;        // dump: the path asked for, suffixed per id
     QString m_dumpFolder;           // dump: the folder asked for, one file per id inside
+    std::unique_ptr<SimulatorStarter> m_scanSim; // scan --sim: the simulator scanned
 };
 
 } // namespace stepcom

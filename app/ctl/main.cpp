@@ -2,6 +2,7 @@
 #include "ctlrunner.h"
 #include "i18n/translators.h"
 #include "map/registermap.h"
+#include "sim/builtinsimulator.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -95,6 +96,20 @@ int main(int argc, char *argv[])
         return CtlRunner::UsageError;
     }
     options.language = language; // the report is written in the program's language
+    if (options.simReset) {
+        QString problem;
+        if (!BuiltinSimulator::resetFlash(BuiltinSimulator::defaultFlashPath(), &problem)) {
+            err << QStringLiteral("stepcomctl: ") << problem << Qt::endl;
+            return CtlRunner::DeviceError;
+        }
+        err << QStringLiteral("stepcomctl: ")
+            << QCoreApplication::translate("stepcomctl",
+                                           "the built-in simulator starts from the factory "
+                                           "again (id 1, 9600 baud)")
+            << Qt::endl;
+        if (options.command.isEmpty())
+            return CtlRunner::Ok;
+    }
     RegisterMap map = RegisterMap::builtin();
     if (!options.mapFile.isEmpty()) {
         QStringList errors;

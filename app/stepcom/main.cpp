@@ -23,6 +23,10 @@ struct Options
     QCommandLineOption sim{
         QStringLiteral("sim"),
         QCoreApplication::translate("stepcom", "Start connected to the built-in simulator.")};
+    QCommandLineOption simReset{
+        QStringLiteral("sim-reset"),
+        QCoreApplication::translate("stepcom", "Start the built-in simulator from the factory "
+                                               "again: forget what it saved to flash.")};
     QCommandLineOption port{
         QStringLiteral("port"),
         QCoreApplication::translate("stepcom", "Connect to this serial port at start."),
@@ -55,7 +59,7 @@ struct Options
         parser.addHelpOption();
         parser.addVersionOption();
         parser.addOption(Translators::languageOption());
-        parser.addOptions({sim, port, tcp, rtuTcp, baud, parity, id, echo});
+        parser.addOptions({sim, simReset, port, tcp, rtuTcp, baud, parity, id, echo});
         parser.addPositionalArgument(
             QStringLiteral("file"),
             QCoreApplication::translate("stepcom",
@@ -194,8 +198,18 @@ int main(int argc, char *argv[])
         return 2;
     }
 
+    if (parser.isSet(options.simReset)) {
+        QString problem;
+        if (!BuiltinSimulator::resetFlash(BuiltinSimulator::defaultFlashPath(), &problem)) {
+            QTextStream(stderr) << QStringLiteral("stepcom: ") << problem << Qt::endl;
+            return 1;
+        }
+    }
     DeviceSession session;
-    session.setSimulator(std::make_unique<BuiltinSimulator>()); // the Connection page offers it
+    // The Connection page offers it; what it saves to flash is there again on the next start.
+    auto sim = std::make_unique<BuiltinSimulator>();
+    sim->setFlashPath(BuiltinSimulator::defaultFlashPath());
+    session.setSimulator(std::move(sim));
     MainWindow window(&session);
     window.showOnScreen();
     if (parser.isSet(options.sim))

@@ -429,11 +429,13 @@ QString ModbusLink::noAnswerText(const Request &req, const LinkAnswer &a) const
     } else if (a.discarded.isEmpty() && a.crcErrors == 0 && !a.onlyEcho) {
         if (m_settings.isNetwork())
             text += tr(" -- check the device id (%1), the host and port, and the converter's "
-                       "serial settings; the bus scan finds controllers")
+                       "serial settings; the bus scan finds controllers (the window's Scan bus, or "
+                       "stepcomctl scan)")
                         .arg(id);
         else
             text += tr(" -- check the device id (%1), the baud rate and parity (%2), the A/B "
-                       "wiring; the bus scan finds controllers")
+                       "wiring; the bus scan finds controllers (the window's Scan bus, or "
+                       "stepcomctl scan)")
                         .arg(id)
                         .arg(QStringLiteral("%1 8%2%3")
                                  .arg(m_settings.baud)

@@ -44,6 +44,10 @@ public:
     // The baud every controller gets (serial lines; 0 or 9600: they keep 9600).
     void setCommonBaud(int baud);
     int commonBaud() const { return m_commonBaud; }
+    // Save each id (and baud) to flash once verified; off, a controller is back at id 1 and
+    // 9600 after its next power-off (IdChange::setSaveToFlash).
+    void setSaveToFlash(bool save) { m_change->setSaveToFlash(save); }
+    bool savesToFlash() const { return m_change->savesToFlash(); }
 
     // Starts (or starts again after finish()): needs a connected session. False and text() says
     // why when it cannot. `newLine`: the session's device list starts empty (a list restored

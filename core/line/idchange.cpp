@@ -1,5 +1,6 @@
 #include "line/idchange.h"
 
+#include "map/parameter.h"
 #include "session/devicesession.h"
 
 #include <QPointer>
@@ -165,7 +166,7 @@ void IdChange::onOldIdProbed(const ReadOutcome &r, bool garbled)
         writeBaud();
         return;
     }
-    succeed();
+    saveThenSucceed();
 }
 
 void IdChange::writeBaud()
@@ -184,7 +185,37 @@ void IdChange::onBaudWritten(bool ok, const QString &reason)
                                         .arg(reason));
         return;
     }
-    succeed();
+    saveThenSucceed();
+}
+
+void IdChange::saveThenSucceed()
+{
+    if (!m_saveToFlash) {
+        succeed();
+        return;
+    }
+    const Parameter *save = m_session->map().find(QStringLiteral("save_to_flash"));
+    if (!save || !save->isCoil()) {
+        fail(Problem::NotSaved, tr("the controller answers at id %1, but the register map has no "
+                                   "save_to_flash: the id lasts until the power is switched off")
+                                    .arg(m_to));
+        return;
+    }
+    Q_EMIT progress(tr("Saving to flash at id %1").arg(m_to));
+    QPointer<IdChange> self(this);
+    m_session->command(*save, [self](const Result &r) {
+        if (!self)
+            return;
+        if (!r.ok) {
+            self->fail(Problem::NotSaved,
+                       tr("the controller answers at id %1, but saving to flash failed (%2): the "
+                          "id lasts until the power is switched off; save to flash again")
+                           .arg(self->m_to)
+                           .arg(r.errorText));
+            return;
+        }
+        self->succeed();
+    });
 }
 
 void IdChange::succeed()
@@ -196,6 +227,8 @@ void IdChange::succeed()
                        .arg(m_to)
                        .arg(m_baud)
                  : tr("device id %1 → %2: the controller answers at id %2").arg(m_from).arg(m_to);
+    m_text +=
+        m_saveToFlash ? tr("; saved to flash") : tr("; not saved to flash: lost at power-off");
     Q_EMIT finished(true, m_text);
 }
 

@@ -15,7 +15,9 @@ struct ReadOutcome;
 // garble each other), nobody answers at `to` yet, the id is written and read back at `to`,
 // nobody answers at `from` any more, then the baud is written and read back at the new baud.
 // The controller takes a new id or baud at once (manual, 40212/40213), so the link follows it
-// after each write's answer. stepcomctl assign-id and the id assistant both run this.
+// after each write's answer. A new id or baud lasts until the power is switched off unless it is
+// saved to flash (setSaveToFlash): then the change ends with the save, at the new id and baud.
+// stepcomctl assign-id and the id assistant both run this.
 class IdChange : public QObject
 {
     Q_OBJECT
@@ -29,6 +31,7 @@ public:
         NotAtNewId,   // the id write or its read-back at `to` failed
         StillAtOldId, // after the change someone still answers at `from`
         NotAtNewBaud, // the baud write or its read-back at the new baud failed
+        NotSaved,     // the controller answers at the new id (and baud), but the save failed
     };
     Q_ENUM(Problem)
 
@@ -37,6 +40,9 @@ public:
 
     // `baud` 0 (or the line's baud, or a line that is not serial): the baud stays.
     void start(int from, int to, int baud = 0);
+    // Save the new id and baud to flash once they are verified (off: they last until power-off).
+    void setSaveToFlash(bool save) { m_saveToFlash = save; }
+    bool savesToFlash() const { return m_saveToFlash; }
     bool isRunning() const { return m_running; }
     Problem problem() const { return m_problem; }
     // What happened, in words, once finished.
@@ -60,6 +66,7 @@ private:
     void changeLink(int id, int baud, void (IdChange::*then)(bool ok, const QString &reason));
     void onIdWritten(bool ok, const QString &reason);
     void onBaudWritten(bool ok, const QString &reason);
+    void saveThenSucceed();
     void succeed();
     void fail(Problem problem, const QString &text);
     void dropConnections();
@@ -70,6 +77,7 @@ private:
     int m_to = 0;
     int m_baud = 0;
     bool m_running = false;
+    bool m_saveToFlash = false;
     Problem m_problem = Problem::None;
     QString m_text;
     QMetaObject::Connection m_changed;

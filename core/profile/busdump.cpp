@@ -32,12 +32,14 @@ QString BusDump::checkDirectory(const QString &directory)
 
 BusDump::Saved BusDump::save(const QString &directory, const RegisterMap &map, int id,
                              const QString &name, const QString &notes,
-                             const QHash<QString, qint64> &values, const QDate &date)
+                             const QHash<QString, qint64> &values, const QDate &date,
+                             bool fromSimulator)
 {
     Profile profile = Profile::fromValues(map, values, true);
     profile.name = name.trimmed().isEmpty() ? tr("Controller id %1").arg(id) : name.trimmed();
     profile.notes = notes;
     profile.deviceId = id;
+    profile.fromSimulator = fromSimulator;
     Saved saved;
     saved.path = QDir(directory).filePath(fileName(id, name, date));
     saved.error = ProfileFile::save(saved.path, profile, map); // QSaveFile: whole or nothing

@@ -27,10 +27,11 @@ public:
         QString error; // empty on success
         bool ok() const { return error.isEmpty(); }
     };
-    // `values` as read from device `id` (link settings included) saved into `directory`.
+    // `values` as read from device `id` (link settings included) saved into `directory`;
+    // `fromSimulator`: read from the built-in simulator (the file records it).
     static Saved save(const QString &directory, const RegisterMap &map, int id, const QString &name,
-                      const QString &notes, const QHash<QString, qint64> &values,
-                      const QDate &date);
+                      const QString &notes, const QHash<QString, qint64> &values, const QDate &date,
+                      bool fromSimulator = false);
 };
 
 } // namespace stepcom

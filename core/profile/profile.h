@@ -38,6 +38,9 @@ struct Profile
     // followed ("apply", "factory-reset", "save-to-flash", "device-id", "baud") and the link.
     QString backupOperation;
     QString backupDevice;
+    // Read from StepCom's built-in simulator, not from a machine (schema 2, metadata "source":
+    // "simulator"): a report of it says so on its face.
+    bool fromSimulator = false;
 
     // The parameters a profile holds for `map`: every read-write holding register; the link
     // settings only when `withLink`.

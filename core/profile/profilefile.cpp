@@ -318,7 +318,7 @@ private:
                            QStringLiteral("deviceId"),   QStringLiteral("baud"),
                            QStringLiteral("unsupported")};
         if (m_schema >= 2)
-            fields << QStringLiteral("backup");
+            fields << QStringLiteral("backup") << QStringLiteral("source");
         unknownFields(o, fields, QStringLiteral("metadata"));
         if (m_schema >= 2 && o.contains(QLatin1String("backup")))
             readBackup(o.value(QLatin1String("backup")), profile);
@@ -377,6 +377,13 @@ private:
         };
         link("deviceId", "device.id", &profile->deviceId);
         link("baud", "device.baud", &profile->baud);
+        QString source;
+        text("source", &source);
+        if (!source.isEmpty() && source != QLatin1String("simulator"))
+            m_errors << ProfileFile::tr("\"metadata\": \"source\" is \"simulator\" or absent, "
+                                        "found \"%1\"")
+                            .arg(source.left(40));
+        profile->fromSimulator = source == QLatin1String("simulator");
     }
 
     // A key of another map's profile that this map has no setting for: listed, not used.
@@ -532,6 +539,10 @@ QByteArray ProfileFile::toJson(const Profile &profile, const RegisterMap &map)
         if (!profile.backupDevice.isEmpty())
             backup.insert(QStringLiteral("device"), profile.backupDevice);
         metadata.insert(QStringLiteral("backup"), backup);
+        schema2 = true;
+    }
+    if (profile.fromSimulator) {
+        metadata.insert(QStringLiteral("source"), QStringLiteral("simulator"));
         schema2 = true;
     }
     QJsonObject values;

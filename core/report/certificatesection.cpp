@@ -101,6 +101,11 @@ QString CertificateSection::travelLimits() const
 QString CertificateSection::signatures() const
 {
     QString h = QStringLiteral("<h2>%1</h2>\n").arg(esc(tr("Signatures")));
+    // Where a certificate is signed, a simulator's must not pass for a machine's.
+    if (m_in.simulator)
+        h += QStringLiteral("<p><b>%1</b></p>\n")
+                 .arg(esc(tr("Read from StepCom's built-in simulator, not from a machine: "
+                             "nothing here can be signed for a machine.")));
     h += QLatin1String(kTable);
     h += row({esc(tr("Role")), esc(tr("Name")), esc(tr("Signature")), esc(tr("Date"))}, true);
     const QString blank = QStringLiteral("&nbsp;<br>&nbsp;");

@@ -54,6 +54,8 @@ QString CommissioningReport::controllerSection() const
         h += row({esc(what), esc(value)});
     };
     line(tr("Device id"), m_in.deviceId > 0 ? QString::number(m_in.deviceId) : text("device.id"));
+    if (m_in.simulator)
+        line(tr("Controller"), tr("StepCom's built-in simulator -- not a machine"));
     if (m_in.fromFile())
         line(tr("Link"), tr("none: made from a file, not read from a controller"));
     else
@@ -239,8 +241,9 @@ QString CommissioningReport::interpolationSection(const QString &imageSource) co
 
 QString CommissioningReport::title() const
 {
-    return m_in.fromFile() ? tr("Commissioning report (from a profile file)")
-                           : tr("Commissioning report");
+    const QString title = m_in.fromFile() ? tr("Commissioning report (from a profile file)")
+                                          : tr("Commissioning report");
+    return m_in.simulator ? tr("%1 -- simulator, not a machine").arg(title) : title;
 }
 
 QString CommissioningReport::html(const QString &imageSource) const
@@ -258,6 +261,10 @@ QString CommissioningReport::body(const QString &imageSource) const
     QString h;
     if (!m_in.title.isEmpty())
         h += QStringLiteral("<p><b>%1</b></p>\n").arg(esc(m_in.title));
+    if (m_in.simulator)
+        h += QStringLiteral("<p><b>%1</b></p>\n")
+                 .arg(esc(tr("SIMULATOR -- NOT A MACHINE: these values were read from StepCom's "
+                             "built-in simulator. This sheet certifies no machine.")));
     if (m_in.fromFile())
         h += QStringLiteral("<p><b>%1</b></p>\n")
                  .arg(esc(tr("Made from the profile file %1, not read from a controller: these "

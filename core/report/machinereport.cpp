@@ -9,6 +9,8 @@
 #include <QTextDocument>
 #include <QUrl>
 
+#include <algorithm>
+
 namespace stepcom {
 
 namespace {
@@ -39,8 +41,11 @@ MachineReport::MachineReport(QList<ReportInput> devices, const QString &title, c
 
 QString MachineReport::title() const
 {
-    return tr("Commissioning report of a machine: %n controller(s)", nullptr,
-              int(m_devices.size()));
+    const QString title =
+        tr("Commissioning report of a machine: %n controller(s)", nullptr, int(m_devices.size()));
+    const bool simulated = std::any_of(m_devices.cbegin(), m_devices.cend(),
+                                       [](const ReportInput &d) { return d.simulator; });
+    return simulated ? tr("%1 -- simulator, not a machine").arg(title) : title;
 }
 
 QString MachineReport::heading(const ReportInput &device) const
@@ -60,7 +65,9 @@ QString MachineReport::summary() const
     for (const ReportInput &d : m_devices) {
         h += row({QString::number(d.deviceId),
                   esc(d.title.isEmpty() ? QStringLiteral("—") : d.title),
-                  esc(d.link.isEmpty() ? QStringLiteral("—") : d.link),
+                  esc(d.simulator        ? tr("built-in simulator -- not a machine")
+                      : d.link.isEmpty() ? QStringLiteral("—")
+                                         : d.link),
                   esc(SettingsFingerprint::line(d.map, SettingsFingerprint::ordered(d.values)))});
     }
     h += QStringLiteral("</table>\n");
@@ -145,6 +152,8 @@ QStringList MachineReport::sheetLines() const
                              d.lastRead.isValid()
                                  ? QStringLiteral(" at ") + d.lastRead.toString(Qt::ISODate)
                                  : QString());
+        if (d.simulator)
+            line += QStringLiteral(" -- the built-in simulator, not a machine");
         lines << line;
     }
     return lines;

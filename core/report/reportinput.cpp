@@ -24,6 +24,7 @@ ReportInput ReportInput::fromProfile(const RegisterMap &map, const Profile &prof
     in.fileCreated = profile.created;
     in.fileStepcomVersion = profile.stepcomVersion;
     in.fileBaud = profile.baud;
+    in.simulator = profile.fromSimulator;
     if (profile.variance.isVariant())
         in.fileMap = profile.variance.fileMap;
     in.notFromFile = profile.variance.describe(map, locale);

@@ -24,6 +24,9 @@ public:
     RegisterMap map;
     QHash<QString, qint64> values;
     QString link; // LinkSettings::describe()
+    // Read from StepCom's built-in simulator (or from a profile made of it): no machine. The
+    // report says so on its face.
+    bool simulator = false;
     QString line; // what the line showed: LinkStats::lineText() ("answers in 4-6 ms, ...")
     int deviceId = 0;
     QString title; // e.g. the machine's name

@@ -21,14 +21,14 @@ SessionLog::SessionLog(DeviceSession *session, QObject *parent)
     connect(session->traffic(), &TrafficLog::entryAdded, this, &SessionLog::write);
     connect(session, &DeviceSession::linkStateChanged, this, [this, session] {
         if (session->linkState() == DeviceSession::LinkState::Connecting)
-            beginConnection(session->settings().describe());
+            beginConnection(linkText(session));
     });
     // What happened beyond the frames, in kinds of their own so a replay need not read the
     // (translated) text.
     const auto mark = [this](const char *kind, const QString &text) { writeMark(kind, text); };
     connect(session, &DeviceSession::connected, this, [session, mark](bool ok, const QString &) {
         if (ok)
-            mark(kLinkUp, session->settings().describe());
+            mark(kLinkUp, linkText(session));
     });
     // Closed on purpose or lost: the reason says which (linkLost follows this one).
     connect(session, &DeviceSession::disconnected, this,
@@ -47,6 +47,15 @@ SessionLog::SessionLog(DeviceSession *session, QObject *parent)
 }
 
 SessionLog::~SessionLog() = default;
+
+QString SessionLog::linkText(const DeviceSession *session)
+{
+    // A log of the built-in simulator must not pass for one of a machine.
+    const QString link = session->settings().describe();
+    return session->isSimulator()
+               ? QStringLiteral("built-in simulator, not a machine: %1").arg(link)
+               : link;
+}
 
 QString SessionLog::defaultDirectory()
 {
@@ -168,6 +177,8 @@ QString SessionLog::header(const DeviceSession *session, int part, const QString
                 .arg(s.deviceId)
                 .arg(s.timeoutMs)
                 .arg(s.retries);
+    if (session->isSimulator())
+        line += QStringLiteral(" simulator=built-in (not a machine)");
     text += QStringLiteral("# line: %1\n").arg(line);
     QStringList ids;
     for (const int id : session->deviceIds())

@@ -65,6 +65,9 @@ public:
     static constexpr const char *kUser = "user";
     // "2026-11-24 22:10:01.123  --  user     E-STOP pressed"
     static QString formatMark(const QDateTime &time, const char *kind, const QString &text);
+    // The link a file is about, in its header and link-up marks: "built-in simulator, not a
+    // machine: /dev/pts/3 · 9600 8N1 · id 1" when it is the built-in simulator.
+    static QString linkText(const DeviceSession *session);
     // The header lines of a file: "# StepCom 0.1.0 session log, part 1: <description>", then
     // "# key: value" lines (program, qt, map, line, ids, names) for what is known (session may
     // be null).

@@ -23,6 +23,9 @@ public:
     virtual bool isRunning() const = 0;
     // Whether a link with these settings talks to this simulator.
     virtual bool serves(const LinkSettings &settings) const = 0;
+    // Stops it and forgets what it saved to flash: the next start is at the factory values.
+    // False and why when that cannot be done.
+    virtual bool resetToFactory(QString *error) = 0;
 };
 
 } // namespace stepcom

@@ -212,7 +212,6 @@ private Q_SLOTS:
             << (port + QStringList{"read", "--parity", "none,even"})
             << "--parity: give one parity; several are for scan";
         QTest::newRow("no line") << QStringList{"scan"} << "scan: give the line to scan";
-        QTest::newRow("sim") << QStringList{"--sim", "scan"} << "scan: give the line to scan";
         QTest::newRow("argument") << (port + QStringList{"scan", "7"}) << "scan takes no arguments";
     }
     void badArguments()

@@ -133,7 +133,9 @@ private Q_SLOTS:
         const QString ctl = QStringLiteral("stepcomctl");
         const QStringList help{QStringLiteral("--help")};
         const QString ctlContext = QStringLiteral("stepcom::CtlOptions");
-        const QString ctlText = QStringLiteral("Use the built-in simulated controller.");
+        const QString ctlText =
+            QStringLiteral("Use the built-in simulated controller (it keeps what it saved to flash "
+                           "between runs).");
         QTest::newRow("stepcomctl LANGUAGE, C locale")
             << ctl << help
             << QStringList{QStringLiteral("LANGUAGE=zh_CN"), QStringLiteral("LC_ALL=C.UTF-8")}

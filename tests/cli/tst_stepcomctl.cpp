@@ -104,10 +104,11 @@ private Q_SLOTS:
             << QStringList{"write", "motor1.speed"} << "is not KEY=VALUE";
         QTest::newRow("destructive without yes")
             << QStringList{"command", "factory_reset"} << "add --yes";
-        QTest::newRow("unknown command") << QStringList{"frobnicate"}
-                                         << "unknown command 'frobnicate' (params, read, write, "
-                                            "command, move, monitor, dump, diff, "
-                                            "apply, assign-id, scan, report, replay, bundle)";
+        QTest::newRow("unknown command")
+            << QStringList{"frobnicate"}
+            << "unknown command 'frobnicate' (params, read, write, "
+               "command, move, monitor, dump, diff, "
+               "apply, assign-id, scan, ports, report, replay, bundle)";
         QTest::newRow("read unknown") << QStringList{"read", "nope"} << "unknown parameter 'nope'";
     }
     void invalidValuesWriteNothing()

@@ -84,6 +84,18 @@ run monitor 0 monitor --count 3 --json &&
     [[ $(grep -c '"motor1.position"' "$dir/monitor.out") -eq 3 ]] ||
     { echo "FAIL monitor: not 3 samples"; failed=$((failed + 1)); }
 grep -hE "^stepcomctl: link:|line:" "$dir/monitor.err" | head -1
+# At an id nobody has, the independent server is silent too: the message names the command
+# that finds controllers.
+"$ctl" --port "$dir/ctl" --id 9 --timeout 300 --retries 0 read device.id >"$dir/wrong-id.out" \
+    2>"$dir/wrong-id.err"
+got=$?
+if [[ $got -ne 1 ]] || ! grep -q "stepcomctl scan" "$dir/wrong-id.err"; then
+    echo "FAIL wrong-id: exit $got (expected 1), or the message does not name stepcomctl scan"
+    sed 's/^/    /' "$dir/wrong-id.out" "$dir/wrong-id.err"
+    failed=$((failed + 1))
+else
+    echo "ok   wrong-id"
+fi
 
 if [[ $failed -ne 0 ]]; then
     echo "pymodbus server log:"; sed 's/^/    /' "$dir/server.log"

@@ -48,6 +48,34 @@ private Q_SLOTS:
     void init() { session = std::make_unique<DeviceSession>(); }
     void cleanup() { session.reset(); }
 
+    // The id assistant asks to save each id: a power cycle then keeps it; unsaved, it is gone.
+    void aSavedIdSurvivesAPowerCycle_data()
+    {
+        QTest::addColumn<bool>("save");
+        QTest::addColumn<int>("idAfter");
+        QTest::newRow("saved") << true << 2;
+        QTest::newRow("not saved") << false << 1;
+    }
+    void aSavedIdSurvivesAPowerCycle()
+    {
+        QFETCH(bool, save);
+        QFETCH(int, idAfter);
+        connectLine({1});
+        IdAssigner a(session.get());
+        a.setSaveToFlash(save);
+        QVERIFY(a.start());
+        a.next();
+        waitWhileWorking(a);
+        QVERIFY2(a.state() == IdAssigner::State::Waiting, qPrintable(a.text()));
+        QVERIFY2(a.text().contains(save ? QStringLiteral("saved to flash")
+                                        : QStringLiteral("not saved to flash")),
+                 qPrintable(a.text()));
+        QCOMPARE(sim(0)->deviceId(), 2);
+        sim(0)->powerCycle(1);
+        QTRY_VERIFY_WITH_TIMEOUT(!sim(0)->isPoweredOff(), 10000);
+        QCOMPARE(sim(0)->deviceId(), idAfter);
+    }
+
     void controllersAddedOneAtATimeGetTheNextFreeIds()
     {
         connectLine({1, 201, 202, 203}); // one connected, three still in their boxes

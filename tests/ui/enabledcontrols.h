@@ -31,7 +31,9 @@ inline QStringList enabledControls(MainWindow *window, const QSet<QString> &also
         "previewExport", "openSessionLog", "createSupportBundle",
         // StepCom's own settings and the checklist file, not the controller:
         // travel limits, the profile beside the checklist, a step skipped
-        "applyTravelLimits", "chooseChecklistProfile", "skipButton"};
+        "applyTravelLimits", "chooseChecklistProfile", "skipButton",
+        // the built-in simulator's saved state, no machine's
+        "resetSimulator"};
     harmless.unite(alsoHarmless);
     const QSet<QString> logViews{"stepcom::TrafficView", "stepcom::MessageView"};
     QStringList enabled;

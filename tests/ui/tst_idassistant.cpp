@@ -4,7 +4,9 @@
 #include "line/busscanner.h"
 #include "line/idassigner.h"
 #include "mainwindow.h"
+#include "map/factoryvalues.h"
 #include "session/devicesession.h"
+#include "sim/builtinsimulator.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "simsession.h"
@@ -13,12 +15,15 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
+#include <QFileInfo>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTableWidget>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace stepcom;
@@ -238,6 +243,75 @@ private Q_SLOTS:
         QVERIFY(DeviceListSettings::load().ids.isEmpty());
         DeviceListSettings::clear();
         QVERIFY(DeviceListSettings::load().line.isEmpty());
+    }
+
+    // The assistant asks whether to save each id (yes by default): saved, it survives the next
+    // power-off; not saved, the controller is back at id 1.
+    void theAssistantAsksToSaveEachId_data()
+    {
+        QTest::addColumn<bool>("save");
+        QTest::addColumn<int>("idAfter");
+        QTest::newRow("saved") << true << 2;
+        QTest::newRow("not saved") << false << 1;
+    }
+    void theAssistantAsksToSaveEachId()
+    {
+        QFETCH(bool, save);
+        QFETCH(int, idAfter);
+        DeviceSession session;
+        test::useBuiltinSimulator(session, {1});
+        MainWindow window(&session);
+        window.show();
+        test::connectToSimulator(session);
+        SimDevice *sim = test::simHost(session)->device();
+        window.action(QStringLiteral("assignIds"))->trigger();
+        auto *dialog = window.findChild<IdAssistantDialog *>();
+        QVERIFY(dialog);
+        auto *box = dialog->findChild<QCheckBox *>(QStringLiteral("saveToFlash"));
+        QVERIFY(box && box->isEnabled() && !box->text().isEmpty());
+        QVERIFY(box->isChecked());
+        box->setChecked(save);
+        click(dialog, "start");
+        click(dialog, "next");
+        waitWhileWorking(dialog);
+        QVERIFY2(dialog->assigner()->state() == IdAssigner::State::Waiting,
+                 qPrintable(dialog->statusText()));
+        QVERIFY(!box->isEnabled()); // fixed for the run
+        QCOMPARE(sim->deviceId(), 2);
+        sim->powerCycle(1);
+        QTRY_VERIFY_WITH_TIMEOUT(!sim->isPoweredOff(), 10000);
+        QCOMPARE(sim->deviceId(), idAfter);
+    }
+
+    // Device → Reset the built-in simulator to factory: away from it, its flash forgotten.
+    void theBuiltinSimulatorIsResetToFactory()
+    {
+        QTemporaryDir dir;
+        DeviceSession session;
+        auto sim = std::make_unique<BuiltinSimulator>();
+        const QString flash = dir.filePath(QStringLiteral("sim/flash.json"));
+        sim->setFlashPath(flash);
+        session.setSimulator(std::move(sim));
+        MainWindow window(&session);
+        window.show();
+        test::connectToSimulator(session);
+        QVERIFY(test::simHost(session)->device()->setValue(QStringLiteral("motor1.speed"), 450));
+        QVERIFY(test::simHost(session)->device()->command(QStringLiteral("save_to_flash")));
+        QVERIFY(QFileInfo::exists(flash));
+
+        QAction *reset = window.action(QStringLiteral("resetSimulator"));
+        QVERIFY(reset && reset->isEnabled() && !reset->text().isEmpty());
+        reset->trigger();
+        QCOMPARE(session.linkState(), DeviceSession::LinkState::Disconnected);
+        QVERIFY(!QFileInfo::exists(flash));
+        QSignalSpy read(&session, &DeviceSession::readFinished);
+        session.connectSimulator();
+        QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 30000);
+        const qint64 factory =
+            FactoryValues::writable(session.map()).value(QStringLiteral("motor1.speed"));
+        QVERIFY(factory != 450);
+        QCOMPARE(test::simHost(session)->device()->value(QStringLiteral("motor1.speed")),
+                 std::optional<qint64>(factory));
     }
 };
 

@@ -18,6 +18,7 @@
 #include "darkpalette.h"
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
@@ -208,6 +209,38 @@ private Q_SLOTS:
         readAgain(); // the session reads at the new id
         QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("device.id")), 5);
         QCOMPARE(page.idEditor()->value(), 5);
+    }
+
+    // The change asks whether to save to flash (yes by default): saved, the id survives the
+    // next power-off; not saved, the controller is back at the old one.
+    void anIdChangeIsSavedWhenAsked_data()
+    {
+        QTest::addColumn<bool>("save");
+        QTest::addColumn<int>("idAfter");
+        QTest::newRow("saved") << true << 6;
+        QTest::newRow("not saved") << false << 1;
+    }
+    void anIdChangeIsSavedWhenAsked()
+    {
+        QFETCH(bool, save);
+        QFETCH(int, idAfter);
+        connectSim();
+        DevicePage page(session.get());
+        page.idEditor()->setValue(6);
+        QTest::mouseClick(page.applyLinkButton(), Qt::LeftButton);
+        QMessageBox *box = page.confirmation();
+        QVERIFY(box && box->checkBox());
+        QVERIFY(box->checkBox()->isChecked());
+        QVERIFY(!box->checkBox()->text().isEmpty());
+        box->checkBox()->setChecked(save);
+        QSignalSpy saved(session.get(), &DeviceSession::commandFinished);
+        box->button(QMessageBox::Yes)->click();
+        QTRY_COMPARE_WITH_TIMEOUT(sim()->deviceId(), 6, 5000);
+        if (save)
+            QTRY_COMPARE_WITH_TIMEOUT(saved.size(), 1, 10000);
+        sim()->powerCycle(1);
+        QTRY_VERIFY_WITH_TIMEOUT(!sim()->isPoweredOff(), 10000);
+        QCOMPARE(sim()->deviceId(), idAfter);
     }
 
     void failedIdChangeOffersTheOldSettings()

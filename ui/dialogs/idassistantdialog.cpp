@@ -42,12 +42,17 @@ IdAssistantDialog::IdAssistantDialog(DeviceSession *session, QWidget *parent)
     m_newLine = new QCheckBox(m_optionsBox);
     m_newLine->setObjectName(QStringLiteral("newLine"));
     m_newLine->setChecked(true);
+    // Asked here, on by default: an id not saved is gone at the next power-off.
+    m_saveToFlash = new QCheckBox(m_optionsBox);
+    m_saveToFlash->setObjectName(QStringLiteral("saveToFlash"));
+    m_saveToFlash->setChecked(true);
     m_name = new QLineEdit(m_optionsBox);
     m_name->setObjectName(QStringLiteral("name"));
     // Labels made here: an empty label text makes no label at all.
     m_form->addRow(new QLabel(m_optionsBox), m_firstId);
     m_form->addRow(new QLabel(m_optionsBox), m_baud);
     m_form->addRow(m_newLine);
+    m_form->addRow(m_saveToFlash);
     m_form->addRow(new QLabel(m_optionsBox), m_name);
     layout->addWidget(m_optionsBox);
 
@@ -132,6 +137,7 @@ void IdAssistantDialog::start()
     m_table->setRowCount(0);
     m_assigner->setFirstId(m_firstId->value());
     m_assigner->setCommonBaud(m_baud->isEnabled() ? m_baud->currentData().toInt() : 0);
+    m_assigner->setSaveToFlash(m_saveToFlash->isChecked());
     m_assigner->start(m_newLine->isChecked());
     updateControls(); // a refusal changes no state, but says why
 }
@@ -208,6 +214,11 @@ void IdAssistantDialog::retranslate()
         m_baud->addItem(QString::number(b), b);
     m_baud->setCurrentIndex(std::max(0, m_baud->findData(baud)));
     m_newLine->setText(tr("New line: start with an empty device list"));
+    m_saveToFlash->setText(tr("Save each id to flash (else lost at power-off)"));
+    m_saveToFlash->setToolTip(tr("Without saving, a controller is back at id %1 and %2 baud "
+                                 "after its next power-off.")
+                                  .arg(IdAssigner::kFactoryId)
+                                  .arg(IdAssigner::kFactoryBaud));
     m_name->setPlaceholderText(tr("optional, e.g. X/Y table"));
     m_table->setHorizontalHeaderLabels({tr("Id"), tr("Name")});
     m_start->setText(tr("Start"));
@@ -228,6 +239,7 @@ void IdAssistantDialog::updateControls()
     m_firstId->setEnabled(idle);
     m_baud->setEnabled(idle && serial);
     m_newLine->setEnabled(idle);
+    m_saveToFlash->setEnabled(idle);
     m_start->setEnabled(idle && connected);
     m_next->setEnabled(connected && (state == State::Waiting || state == State::Collision ||
                                      state == State::Failed));

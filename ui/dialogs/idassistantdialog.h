@@ -64,6 +64,7 @@ private:
     QSpinBox *m_firstId = nullptr;
     QComboBox *m_baud = nullptr;
     QCheckBox *m_newLine = nullptr;
+    QCheckBox *m_saveToFlash = nullptr;
     QLineEdit *m_name = nullptr;
     QLabel *m_status = nullptr;
     QLabel *m_step = nullptr;

@@ -3,6 +3,7 @@
 #include "language.h"
 #include "session/devicesession.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -15,6 +16,8 @@
 #include <QSpinBox>
 #include <QStyle>
 #include <QVBoxLayout>
+
+#include <utility>
 
 namespace stepcom {
 
@@ -154,9 +157,13 @@ DevicePage::DevicePage(DeviceSession *session, QWidget *parent)
         m_idTouched = m_baudTouched = false;
         showDeviceValues();
         setLinkEvent(LinkEvent::Changed);
+        // Saved at the new id and baud, as asked: without it they last until power-off.
+        if (std::exchange(m_saveAfterLinkChange, false))
+            this->session()->saveToFlash();
     });
     connect(session, &DeviceSession::linkChangeFailed, this,
             [this](const LinkSettings &previous, const QString &reason) {
+                m_saveAfterLinkChange = false;
                 m_previous = previous;
                 m_reason = reason;
                 setLinkEvent(LinkEvent::Failed);
@@ -361,12 +368,18 @@ void DevicePage::requestLinkChange()
                          tr("The controller switches at once. StepCom follows it and checks that "
                             "it answers; if it does not, you can reconnect with the old settings."
                             "\n\nEvery other master on the bus must use the new settings too, and "
-                            "no other device may use the new ID. Save to flash afterwards to keep "
-                            "them after a power cycle."),
+                            "no other device may use the new ID. Unsaved, they last until the next "
+                            "power-off."),
                          tr("&Change"));
-    connect(box, &QMessageBox::finished, this, [this, id, baud](int result) {
+    // Asked here, on by default: a new id or baud not saved is gone at the next power-off.
+    auto *save = new QCheckBox(tr("Save to flash at the new settings (else lost at power-off)"));
+    save->setObjectName(QStringLiteral("saveLinkToFlash"));
+    save->setChecked(true);
+    box->setCheckBox(save);
+    connect(box, &QMessageBox::finished, this, [this, id, baud, save](int result) {
         if (result != QMessageBox::Yes)
             return;
+        m_saveAfterLinkChange = save->isChecked();
         m_targetId = id;
         m_targetBaud = baud;
         m_previous = session()->settings();

@@ -105,6 +105,7 @@ private:
     LinkSettings m_previous;  // what worked before a failed change
     bool m_idTouched = false; // the user typed a new id: device updates must not undo it
     bool m_baudTouched = false;
+    bool m_saveAfterLinkChange = false; // asked with the change: save once it answers there
 };
 
 } // namespace stepcom

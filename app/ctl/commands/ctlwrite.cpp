@@ -2,6 +2,8 @@
 // written and verified: a part of CtlRunner.
 #include "../ctlrunner.h"
 
+#include "../ctllinkadvice.h"
+
 #include "device/writereview.h"
 
 #include <QJsonArray>
@@ -120,6 +122,8 @@ void CtlRunner::writeThenReport(const QList<ParameterWrite> &writes)
             finish(DeviceError);
             return;
         }
+        for (const QString &note : CtlLinkAdvice::notes(m_options, writes, m_options.saveToFlash))
+            m_out << note << Qt::endl;
         if (!m_options.saveToFlash) {
             finish(Ok);
             return;
