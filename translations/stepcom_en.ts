@@ -59,6 +59,18 @@
         <source>parity</source>
         <translation>parity</translation>
     </message>
+    <message>
+        <source>Start the phone pendant at launch (watch only) on this port, 0 for any free one; prints its address.</source>
+        <translation>Start the phone pendant at launch (watch only) on this port, 0 for any free one; prints its address.</translation>
+    </message>
+    <message>
+        <source>[address:]port</source>
+        <translation>[address:]port</translation>
+    </message>
+    <message>
+        <source>Allow jogging from the pendant from launch.</source>
+        <translation>Allow jogging from the pendant from launch.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -6187,6 +6199,341 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Times as the simulator runs the path; a real controller may differ.</source>
         <translation>Times as the simulator runs the path; a real controller may differ.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantActions</name>
+    <message>
+        <source>A replay serves no pendant: close the session log first</source>
+        <translation>A replay serves no pendant: close the session log first</translation>
+    </message>
+    <message>
+        <source>A profile file edited without a controller serves no pendant</source>
+        <translation>A profile file edited without a controller serves no pendant</translation>
+    </message>
+    <message>
+        <source>A phone or tablet as the pendant: watch, E-STOP, and jog when you allow it</source>
+        <translation>A phone or tablet as the pendant: watch, E-STOP, and jog when you allow it</translation>
+    </message>
+    <message>
+        <source>Pendant: jogging from %1</source>
+        <translation>Pendant: jogging from %1</translation>
+    </message>
+    <message>
+        <source>Pendant: 1 phone watching</source>
+        <translation>Pendant: 1 phone watching</translation>
+    </message>
+    <message>
+        <source>Pendant: %1 phones watching</source>
+        <translation>Pendant: %1 phones watching</translation>
+    </message>
+    <message>
+        <source>Pendant…</source>
+        <translation>Pendant…</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantControl</name>
+    <message>
+        <source>no hold from the pendant for %1 ms</source>
+        <translation>no hold from the pendant for %1 ms</translation>
+    </message>
+    <message>
+        <source>the pendant stopped</source>
+        <translation>the pendant stopped</translation>
+    </message>
+    <message>
+        <source>jogging from the pendant was turned off</source>
+        <translation>jogging from the pendant was turned off</translation>
+    </message>
+    <message>
+        <source>Jogging from the pendant is not allowed in the window</source>
+        <translation>Jogging from the pendant is not allowed in the window</translation>
+    </message>
+    <message>
+        <source>another phone took control</source>
+        <translation>another phone took control</translation>
+    </message>
+    <message>
+        <source>the phone gave up control</source>
+        <translation>the phone gave up control</translation>
+    </message>
+    <message>
+        <source>the window took control back</source>
+        <translation>the window took control back</translation>
+    </message>
+    <message>
+        <source>the phone&apos;s connection closed</source>
+        <translation>the phone&apos;s connection closed</translation>
+    </message>
+    <message>
+        <source>Take control first</source>
+        <translation>Take control first</translation>
+    </message>
+    <message>
+        <source>Another phone holds control</source>
+        <translation>Another phone holds control</translation>
+    </message>
+    <message>
+        <source>There is no motor %1</source>
+        <translation>There is no motor %1</translation>
+    </message>
+    <message>
+        <source>Motor %1 does not move</source>
+        <translation>Motor %1 does not move</translation>
+    </message>
+    <message>
+        <source>A step must be greater than 0</source>
+        <translation>A step must be greater than 0</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantDialog</name>
+    <message>
+        <source>Pendant</source>
+        <translation>Pendant</translation>
+    </message>
+    <message>
+        <source>A phone or tablet on the same network becomes the pendant: scan the code or type the address into its browser. It shows the positions, inputs and outputs and has an E-STOP; it jogs only while you allow it here.</source>
+        <translation>A phone or tablet on the same network becomes the pendant: scan the code or type the address into its browser. It shows the positions, inputs and outputs and has an E-STOP; it jogs only while you allow it here.</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>&amp;Port:</translation>
+    </message>
+    <message>
+        <source>Allow jogging from the pendant</source>
+        <translation>Allow jogging from the pendant</translation>
+    </message>
+    <message>
+        <source>Take control back</source>
+        <translation>Take control back</translation>
+    </message>
+    <message>
+        <source>Phones connected:</source>
+        <translation>Phones connected:</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <source>Browser</source>
+        <translation>Browser</translation>
+    </message>
+    <message>
+        <source>Since</source>
+        <translation>Since</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Disconnect</translation>
+    </message>
+    <message>
+        <source>The phone is no safety device: the machine&apos;s own E-STOP circuit stays the safety.</source>
+        <translation>The phone is no safety device: the machine&apos;s own E-STOP circuit stays the safety.</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+    <message>
+        <source>QR code of the pendant&apos;s address</source>
+        <translation>QR code of the pendant&apos;s address</translation>
+    </message>
+    <message>
+        <source>&amp;Stop the pendant</source>
+        <translation>&amp;Stop the pendant</translation>
+    </message>
+    <message>
+        <source>&amp;Start the pendant</source>
+        <translation>&amp;Start the pendant</translation>
+    </message>
+    <message>
+        <source>The pendant is off.</source>
+        <translation>The pendant is off.</translation>
+    </message>
+    <message>
+        <source>Pendant address: %1</source>
+        <translation>Pendant address: %1</translation>
+    </message>
+    <message>
+        <source>Control: %1</source>
+        <translation>Control: %1</translation>
+    </message>
+    <message>
+        <source>Control: nobody (the window)</source>
+        <translation>Control: nobody (the window)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantPage</name>
+    <message>
+        <source>StepCom pendant</source>
+        <translation>StepCom pendant</translation>
+    </message>
+    <message>
+        <source>Motor 1 position</source>
+        <translation>Motor 1 position</translation>
+    </message>
+    <message>
+        <source>Motor 2 position</source>
+        <translation>Motor 2 position</translation>
+    </message>
+    <message>
+        <source>Motor 1 forward</source>
+        <translation>Motor 1 forward</translation>
+    </message>
+    <message>
+        <source>Motor 1 reverse</source>
+        <translation>Motor 1 reverse</translation>
+    </message>
+    <message>
+        <source>Motor 2 forward</source>
+        <translation>Motor 2 forward</translation>
+    </message>
+    <message>
+        <source>Motor 2 reverse</source>
+        <translation>Motor 2 reverse</translation>
+    </message>
+    <message>
+        <source>Motor 1</source>
+        <translation>Motor 1</translation>
+    </message>
+    <message>
+        <source>Motor 2</source>
+        <translation>Motor 2</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <source>Take control</source>
+        <translation>Take control</translation>
+    </message>
+    <message>
+        <source>Give up control</source>
+        <translation>Give up control</translation>
+    </message>
+    <message>
+        <source>You hold control: hold a button to jog</source>
+        <translation>You hold control: hold a button to jog</translation>
+    </message>
+    <message>
+        <source>%1 holds control</source>
+        <translation>%1 holds control</translation>
+    </message>
+    <message>
+        <source>Watching only: jogging is not allowed in the window</source>
+        <translation>Watching only: jogging is not allowed in the window</translation>
+    </message>
+    <message>
+        <source>Jogging is allowed: take control to jog</source>
+        <translation>Jogging is allowed: take control to jog</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>idle</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>running</translation>
+    </message>
+    <message>
+        <source>at a limit</source>
+        <translation>at a limit</translation>
+    </message>
+    <message>
+        <source>referenced</source>
+        <translation>referenced</translation>
+    </message>
+    <message>
+        <source>not referenced</source>
+        <translation>not referenced</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Inputs</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Outputs</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Link</translation>
+    </message>
+    <message>
+        <source>port closed</source>
+        <translation>port closed</translation>
+    </message>
+    <message>
+        <source>asking…</source>
+        <translation>asking…</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>not answering</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>answering</translation>
+    </message>
+    <message>
+        <source>Device %1</source>
+        <translation>Device %1</translation>
+    </message>
+    <message>
+        <source>%1 (id %2)</source>
+        <translation>%1 (id %2)</translation>
+    </message>
+    <message>
+        <source>no data</source>
+        <translation>no data</translation>
+    </message>
+    <message>
+        <source>updated %1 s ago</source>
+        <translation>updated %1 s ago</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Step</translation>
+    </message>
+    <message>
+        <source>Motor %1 step −</source>
+        <translation>Motor %1 step −</translation>
+    </message>
+    <message>
+        <source>Motor %1 step +</source>
+        <translation>Motor %1 step +</translation>
+    </message>
+    <message>
+        <source>The pendant was stopped in StepCom</source>
+        <translation>The pendant was stopped in StepCom</translation>
+    </message>
+    <message>
+        <source>Connection lost: reload the page</source>
+        <translation>Connection lost: reload the page</translation>
+    </message>
+    <message>
+        <source>This phone is no safety device: the machine&apos;s own E-STOP is.</source>
+        <translation>This phone is no safety device: the machine&apos;s own E-STOP is.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantServer</name>
+    <message>
+        <source>&apos;%1&apos; is not [ADDRESS:]PORT: the port must be a number from 0 to 65535</source>
+        <translation>&apos;%1&apos; is not [ADDRESS:]PORT: the port must be a number from 0 to 65535</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not [ADDRESS:]PORT: &apos;%2&apos; is not an IP address</source>
+        <translation>&apos;%1&apos; is not [ADDRESS:]PORT: &apos;%2&apos; is not an IP address</translation>
+    </message>
+    <message>
+        <source>The pendant cannot listen on %1 port %2: %3</source>
+        <translation>The pendant cannot listen on %1 port %2: %3</translation>
     </message>
 </context>
 <context>

@@ -59,6 +59,18 @@
         <source>parity</source>
         <translation>校验位</translation>
     </message>
+    <message>
+        <source>Start the phone pendant at launch (watch only) on this port, 0 for any free one; prints its address.</source>
+        <translation>启动时在此端口启动手机手持器（仅监视），0 表示任一空闲端口；并打印其地址。</translation>
+    </message>
+    <message>
+        <source>[address:]port</source>
+        <translation>[地址:]端口</translation>
+    </message>
+    <message>
+        <source>Allow jogging from the pendant from launch.</source>
+        <translation>启动时即允许从手持器点动。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -6150,6 +6162,341 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Times as the simulator runs the path; a real controller may differ.</source>
         <translation>时间按模拟器运行路径估算；实际控制器可能不同。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantActions</name>
+    <message>
+        <source>A replay serves no pendant: close the session log first</source>
+        <translation>回放时不提供手持器：请先关闭会话日志</translation>
+    </message>
+    <message>
+        <source>A profile file edited without a controller serves no pendant</source>
+        <translation>离线编辑参数文件时不提供手持器</translation>
+    </message>
+    <message>
+        <source>A phone or tablet as the pendant: watch, E-STOP, and jog when you allow it</source>
+        <translation>将手机或平板用作手持器：监视、急停，并在允许时点动</translation>
+    </message>
+    <message>
+        <source>Pendant: jogging from %1</source>
+        <translation>手持器：%1 正在点动</translation>
+    </message>
+    <message>
+        <source>Pendant: 1 phone watching</source>
+        <translation>手持器：1 部手机在监视</translation>
+    </message>
+    <message>
+        <source>Pendant: %1 phones watching</source>
+        <translation>手持器：%1 部手机在监视</translation>
+    </message>
+    <message>
+        <source>Pendant…</source>
+        <translation>手持器…</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantControl</name>
+    <message>
+        <source>no hold from the pendant for %1 ms</source>
+        <translation>%1 毫秒内未收到手持器的按住信号</translation>
+    </message>
+    <message>
+        <source>the pendant stopped</source>
+        <translation>手持器已停止</translation>
+    </message>
+    <message>
+        <source>jogging from the pendant was turned off</source>
+        <translation>已关闭从手持器点动</translation>
+    </message>
+    <message>
+        <source>Jogging from the pendant is not allowed in the window</source>
+        <translation>窗口中未允许从手持器点动</translation>
+    </message>
+    <message>
+        <source>another phone took control</source>
+        <translation>另一部手机取得了控制权</translation>
+    </message>
+    <message>
+        <source>the phone gave up control</source>
+        <translation>手机已交出控制权</translation>
+    </message>
+    <message>
+        <source>the window took control back</source>
+        <translation>窗口收回了控制权</translation>
+    </message>
+    <message>
+        <source>the phone&apos;s connection closed</source>
+        <translation>手机的连接已关闭</translation>
+    </message>
+    <message>
+        <source>Take control first</source>
+        <translation>请先取得控制权</translation>
+    </message>
+    <message>
+        <source>Another phone holds control</source>
+        <translation>另一部手机持有控制权</translation>
+    </message>
+    <message>
+        <source>There is no motor %1</source>
+        <translation>没有电机 %1</translation>
+    </message>
+    <message>
+        <source>Motor %1 does not move</source>
+        <translation>电机 %1 未运动</translation>
+    </message>
+    <message>
+        <source>A step must be greater than 0</source>
+        <translation>步距必须大于 0</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantDialog</name>
+    <message>
+        <source>Pendant</source>
+        <translation>手持器</translation>
+    </message>
+    <message>
+        <source>A phone or tablet on the same network becomes the pendant: scan the code or type the address into its browser. It shows the positions, inputs and outputs and has an E-STOP; it jogs only while you allow it here.</source>
+        <translation>同一网络中的手机或平板可作为手持器：扫描二维码，或在其浏览器中输入地址。它显示位置、输入和输出，并带有急停；只有在此处允许时才能点动。</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>端口(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>Allow jogging from the pendant</source>
+        <translation>允许从手持器点动</translation>
+    </message>
+    <message>
+        <source>Take control back</source>
+        <translation>收回控制权</translation>
+    </message>
+    <message>
+        <source>Phones connected:</source>
+        <translation>已连接的手机：</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>Browser</source>
+        <translation>浏览器</translation>
+    </message>
+    <message>
+        <source>Since</source>
+        <translation>连接时间</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>断开(&amp;D)</translation>
+    </message>
+    <message>
+        <source>The phone is no safety device: the machine&apos;s own E-STOP circuit stays the safety.</source>
+        <translation>手机不是安全装置：机器自身的急停回路仍是安全保障。</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>QR code of the pendant&apos;s address</source>
+        <translation>手持器地址的二维码</translation>
+    </message>
+    <message>
+        <source>&amp;Stop the pendant</source>
+        <translation>停止手持器(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Start the pendant</source>
+        <translation>启动手持器(&amp;S)</translation>
+    </message>
+    <message>
+        <source>The pendant is off.</source>
+        <translation>手持器已关闭。</translation>
+    </message>
+    <message>
+        <source>Pendant address: %1</source>
+        <translation>手持器地址：%1</translation>
+    </message>
+    <message>
+        <source>Control: %1</source>
+        <translation>控制权：%1</translation>
+    </message>
+    <message>
+        <source>Control: nobody (the window)</source>
+        <translation>控制权：无人（窗口）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantPage</name>
+    <message>
+        <source>StepCom pendant</source>
+        <translation>StepCom 手持器</translation>
+    </message>
+    <message>
+        <source>Motor 1 position</source>
+        <translation>电机 1 位置</translation>
+    </message>
+    <message>
+        <source>Motor 2 position</source>
+        <translation>电机 2 位置</translation>
+    </message>
+    <message>
+        <source>Motor 1 forward</source>
+        <translation>电机 1 正转</translation>
+    </message>
+    <message>
+        <source>Motor 1 reverse</source>
+        <translation>电机 1 反转</translation>
+    </message>
+    <message>
+        <source>Motor 2 forward</source>
+        <translation>电机 2 正转</translation>
+    </message>
+    <message>
+        <source>Motor 2 reverse</source>
+        <translation>电机 2 反转</translation>
+    </message>
+    <message>
+        <source>Motor 1</source>
+        <translation>电机 1</translation>
+    </message>
+    <message>
+        <source>Motor 2</source>
+        <translation>电机 2</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>Take control</source>
+        <translation>取得控制权</translation>
+    </message>
+    <message>
+        <source>Give up control</source>
+        <translation>交出控制权</translation>
+    </message>
+    <message>
+        <source>You hold control: hold a button to jog</source>
+        <translation>您持有控制权：按住按钮即可点动</translation>
+    </message>
+    <message>
+        <source>%1 holds control</source>
+        <translation>%1 持有控制权</translation>
+    </message>
+    <message>
+        <source>Watching only: jogging is not allowed in the window</source>
+        <translation>仅监视：窗口中未允许点动</translation>
+    </message>
+    <message>
+        <source>Jogging is allowed: take control to jog</source>
+        <translation>已允许点动：取得控制权后即可点动</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>静止</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>at a limit</source>
+        <translation>在限位处</translation>
+    </message>
+    <message>
+        <source>referenced</source>
+        <translation>已回零</translation>
+    </message>
+    <message>
+        <source>not referenced</source>
+        <translation>未回零</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>输入</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>输出</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>port closed</source>
+        <translation>端口已关闭</translation>
+    </message>
+    <message>
+        <source>asking…</source>
+        <translation>询问中…</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>有应答</translation>
+    </message>
+    <message>
+        <source>Device %1</source>
+        <translation>设备 %1</translation>
+    </message>
+    <message>
+        <source>%1 (id %2)</source>
+        <translation>%1（ID %2）</translation>
+    </message>
+    <message>
+        <source>no data</source>
+        <translation>无数据</translation>
+    </message>
+    <message>
+        <source>updated %1 s ago</source>
+        <translation>%1 秒前更新</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>步距</translation>
+    </message>
+    <message>
+        <source>Motor %1 step −</source>
+        <translation>电机 %1 步进 −</translation>
+    </message>
+    <message>
+        <source>Motor %1 step +</source>
+        <translation>电机 %1 步进 +</translation>
+    </message>
+    <message>
+        <source>The pendant was stopped in StepCom</source>
+        <translation>手持器已在 StepCom 中停止</translation>
+    </message>
+    <message>
+        <source>Connection lost: reload the page</source>
+        <translation>连接已断开：请重新加载页面</translation>
+    </message>
+    <message>
+        <source>This phone is no safety device: the machine&apos;s own E-STOP is.</source>
+        <translation>这部手机不是安全装置：机器自身的急停才是。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantServer</name>
+    <message>
+        <source>&apos;%1&apos; is not [ADDRESS:]PORT: the port must be a number from 0 to 65535</source>
+        <translation>“%1”不是 [地址:]端口：端口必须是 0 到 65535 之间的数字</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not [ADDRESS:]PORT: &apos;%2&apos; is not an IP address</source>
+        <translation>“%1”不是 [地址:]端口：“%2”不是 IP 地址</translation>
+    </message>
+    <message>
+        <source>The pendant cannot listen on %1 port %2: %3</source>
+        <translation>手持器无法在 %1 的端口 %2 上监听：%3</translation>
     </message>
 </context>
 <context>
