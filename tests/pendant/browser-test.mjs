@@ -130,15 +130,28 @@ async function main() {
     'E-STOP', 'Take control']) {
     check(await page.$(`aria/${name}`) !== null, `"${name}" is on the page`);
   }
-  const sizes = await page.$$eval('button', (all) => all.map((b) => {
-    const r = b.getBoundingClientRect();
-    return [b.getAttribute('aria-label'), r.width, r.height];
-  }));
-  check(sizes.every(([, w, h]) => w >= 48 && h >= 48), `every button at least 48 px: ${JSON.stringify(sizes)}`);
-  const font = await page.$eval('#pos1', (e) => parseFloat(getComputedStyle(e).fontSize));
-  check(font >= 28, `positions at ${font} px`);
-  const overflow = await page.evaluate(() => document.documentElement.scrollWidth > innerWidth);
-  check(!overflow, 'nothing cut at 390x844 (no sideways scrolling)');
+  // Phone-sized, portrait and landscape: nothing wider than the screen, every button at least
+  // 48 px, the positions at 28 px or more, and scrolled to the end nothing under the E-STOP.
+  for (const [width, height] of [[360, 640], [640, 360], [844, 390], [390, 844]]) {
+    await page.setViewport({ width, height, isMobile: true });
+    await sleep(200);
+    const at = `${width}x${height}`;
+    const sizes = await page.$$eval('button, select', (all) => all.map((b) => {
+      const r = b.getBoundingClientRect();
+      return [b.getAttribute('aria-label') || b.id, Math.round(r.width), Math.round(r.height)];
+    }));
+    check(sizes.every(([, w, h]) => w >= 48 && h >= 48), `${at}: every control at least 48 px: ${JSON.stringify(sizes)}`);
+    const font = await page.$eval('#pos1', (e) => parseFloat(getComputedStyle(e).fontSize));
+    check(font >= 28, `${at}: positions at ${font} px`);
+    const layout = await page.evaluate(() => {
+      window.scrollTo(0, document.documentElement.scrollHeight);
+      const last = document.querySelector('.safety').getBoundingClientRect();
+      const estop = document.getElementById('estop').getBoundingClientRect();
+      return { wide: document.documentElement.scrollWidth > innerWidth, covered: last.bottom > estop.top };
+    });
+    check(!layout.wide && !layout.covered, `${at}: nothing cut (${JSON.stringify(layout)})`);
+    await page.evaluate(() => window.scrollTo(0, 0));
+  }
 
   // Take control and hold "Motor 1 forward": it runs, the position grows while read.
   await (await page.waitForSelector('aria/Take control')).click();
