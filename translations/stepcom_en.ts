@@ -6231,6 +6231,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Pendant…</source>
         <translation>Pendant…</translation>
     </message>
+    <message>
+        <source>Pendant: on, no phone yet</source>
+        <translation>Pendant: on, no phone yet</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::PendantControl</name>

@@ -6194,6 +6194,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Pendant…</source>
         <translation>手持器…</translation>
     </message>
+    <message>
+        <source>Pendant: on, no phone yet</source>
+        <translation>手持器：已开启，尚无手机</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::PendantControl</name>

@@ -80,12 +80,15 @@ void PendantActions::update()
         const int holder = m_server->control()->holder();
         if (holder)
             text = tr("Pendant: jogging from %1").arg(m_server->describe(holder));
+        else if (phones == 0)
+            text = tr("Pendant: on, no phone yet");
         else if (phones == 1)
             text = tr("Pendant: 1 phone watching");
         else
             text = tr("Pendant: %1 phones watching").arg(phones);
     }
-    m_strip->setPendantText(text);
+    if (m_strip)
+        m_strip->setPendantText(text);
 }
 
 bool PendantActions::eventFilter(QObject *watched, QEvent *event)

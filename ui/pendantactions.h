@@ -24,8 +24,8 @@ class PendantActions : public QObject
 {
     Q_OBJECT
 public:
-    PendantActions(DeviceSession *session, MachineStrip *strip, SessionLog *log,
-                   ReplayMode *replay, OfflineActions *offline, QWidget *window);
+    PendantActions(DeviceSession *session, MachineStrip *strip, SessionLog *log, ReplayMode *replay,
+                   OfflineActions *offline, QWidget *window);
 
     QAction *pendantAction() const { return m_action; }
     PendantServer *server() const { return m_server; }
@@ -42,7 +42,7 @@ private:
     void update();
 
     PendantServer *m_server;
-    MachineStrip *m_strip;
+    QPointer<MachineStrip> m_strip; // gone before us when the window closes
     ReplayMode *m_replay;
     OfflineActions *m_offline;
     QWidget *m_window;

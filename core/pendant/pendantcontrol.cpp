@@ -108,10 +108,9 @@ QString PendantControl::jog(int client, int motor, bool forward)
     QString said;
     const auto listen = connect(jog, &JogController::message, this,
                                 [&said](DeviceSession::Severity, const QString &t) { said = t; });
-    const bool started = jog->press(motor,
-                                    forward ? JogController::Direction::Forward
-                                            : JogController::Direction::Reverse,
-                                    JogController::Source::Pendant);
+    const bool started = jog->press(
+        motor, forward ? JogController::Direction::Forward : JogController::Direction::Reverse,
+        JogController::Source::Pendant);
     disconnect(listen);
     if (!started)
         return said.isEmpty() ? tr("Motor %1 does not move").arg(motor) : said;

@@ -36,7 +36,7 @@ private:
 
     Clock m_clock;
     QString m_token;
-    QHash<QString, QList<qint64>> m_wrong;   // when each wrong token came, the last minute's
+    QHash<QString, QList<qint64>> m_wrong; // when each wrong token came, the last minute's
     QHash<QString, qint64> m_refusedUntil;
 };
 

@@ -19,8 +19,7 @@ const QByteArray kNoStore = QByteArrayLiteral("no-store");
 PendantHttp::PendantHttp(PendantGate *gate, QObject *parent)
     : QAbstractHttpServer(parent)
     , m_gate(gate)
-{
-}
+{}
 
 bool PendantHttp::splitPath(const QString &path, QString *token, QString *file)
 {
@@ -69,10 +68,11 @@ bool PendantHttp::handleRequest(const QHttpServerRequest &request, QTcpSocket *s
          {QStringLiteral(":/pendant/pendant.css"), "text/css; charset=utf-8"}},
     };
     if (file == QLatin1String("strings.json")) {
-        const QString lang = PendantPage::languageOf(request.value(QByteArrayLiteral("accept-language")));
-        responder.write(PendantPage::strings(lang),
-                        {{"Content-Type", "application/json; charset=utf-8"},
-                         {"Cache-Control", kNoStore}});
+        const QString lang =
+            PendantPage::languageOf(request.value(QByteArrayLiteral("accept-language")));
+        responder.write(
+            PendantPage::strings(lang),
+            {{"Content-Type", "application/json; charset=utf-8"}, {"Cache-Control", kNoStore}});
         return true;
     }
     const auto it = files.constFind(file);

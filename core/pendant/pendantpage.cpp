@@ -38,11 +38,13 @@ const Word kWords[] = {
     {"estop", QT_TRANSLATE_NOOP("stepcom::PendantPage", "E-STOP")},
     {"take", QT_TRANSLATE_NOOP("stepcom::PendantPage", "Take control")},
     {"giveBack", QT_TRANSLATE_NOOP("stepcom::PendantPage", "Give up control")},
-    {"youHold", QT_TRANSLATE_NOOP("stepcom::PendantPage", "You hold control: hold a button to jog")},
+    {"youHold",
+     QT_TRANSLATE_NOOP("stepcom::PendantPage", "You hold control: hold a button to jog")},
     {"otherHolds", QT_TRANSLATE_NOOP("stepcom::PendantPage", "%1 holds control")},
-    {"watchOnly",
-     QT_TRANSLATE_NOOP("stepcom::PendantPage", "Watching only: jogging is not allowed in the window")},
-    {"mayTake", QT_TRANSLATE_NOOP("stepcom::PendantPage", "Jogging is allowed: take control to jog")},
+    {"watchOnly", QT_TRANSLATE_NOOP("stepcom::PendantPage",
+                                    "Watching only: jogging is not allowed in the window")},
+    {"mayTake",
+     QT_TRANSLATE_NOOP("stepcom::PendantPage", "Jogging is allowed: take control to jog")},
     {"idle", QT_TRANSLATE_NOOP("stepcom::PendantPage", "idle")},
     {"running", QT_TRANSLATE_NOOP("stepcom::PendantPage", "running")},
     {"atLimit", QT_TRANSLATE_NOOP("stepcom::PendantPage", "at a limit")},
@@ -64,9 +66,8 @@ const Word kWords[] = {
     {"stepPlus", QT_TRANSLATE_NOOP("stepcom::PendantPage", "Motor %1 step +")},
     {"ended", QT_TRANSLATE_NOOP("stepcom::PendantPage", "The pendant was stopped in StepCom")},
     {"lost", QT_TRANSLATE_NOOP("stepcom::PendantPage", "Connection lost: reload the page")},
-    {"safety",
-     QT_TRANSLATE_NOOP("stepcom::PendantPage",
-                       "This phone is no safety device: the machine's own E-STOP is.")},
+    {"safety", QT_TRANSLATE_NOOP("stepcom::PendantPage",
+                                 "This phone is no safety device: the machine's own E-STOP is.")},
 };
 
 // One translator per language for the life of the program (the page asks often).
@@ -128,8 +129,8 @@ QByteArray PendantPage::strings(const QString &language)
     QJsonObject o;
     for (const Word &w : kWords)
         o.insert(QLatin1String(w.key), text(w.source, language));
-    o.insert(QStringLiteral("lang"), language == QLatin1String("zh_CN") ? QStringLiteral("zh-CN")
-                                                                        : QStringLiteral("en"));
+    o.insert(QStringLiteral("lang"),
+             language == QLatin1String("zh_CN") ? QStringLiteral("zh-CN") : QStringLiteral("en"));
     return QJsonDocument(o).toJson(QJsonDocument::Compact);
 }
 
@@ -146,8 +147,10 @@ QJsonObject PendantPage::status(const DeviceSession &session, const QString &lan
     QJsonArray motors;
     const int count = map.blockCount(QStringLiteral("motor"));
     for (int n = 1; n <= count; ++n) {
-        const Parameter *pos = map.blockParameter(QStringLiteral("motor"), n, QStringLiteral("position"));
-        const Parameter *run = map.blockParameter(QStringLiteral("motor"), n, QStringLiteral("running"));
+        const Parameter *pos =
+            map.blockParameter(QStringLiteral("motor"), n, QStringLiteral("position"));
+        const Parameter *run =
+            map.blockParameter(QStringLiteral("motor"), n, QStringLiteral("running"));
         QJsonObject m;
         m.insert(QStringLiteral("n"), n);
         const auto raw = pos ? value(pos->key) : std::nullopt;
@@ -161,7 +164,8 @@ QJsonObject PendantPage::status(const DeviceSession &session, const QString &lan
             state = QStringLiteral("idle");
             // Stopped with one of its limit inputs on: it stands at that limit (as the strip).
             for (const char *role : {"limit_positive", "limit_negative"}) {
-                const Parameter *p = map.blockParameter(QStringLiteral("motor"), n, QLatin1String(role));
+                const Parameter *p =
+                    map.blockParameter(QStringLiteral("motor"), n, QLatin1String(role));
                 const auto input = p ? value(p->key) : std::nullopt;
                 if (input && *input > 0 &&
                     value(QStringLiteral("io.in%1").arg(*input)).value_or(0) != 0)

@@ -21,18 +21,18 @@ namespace {
 // "Chrome on Android": enough to tell two phones apart in the window.
 QString browserOf(const QString &ua)
 {
-    QString browser = ua.contains(QLatin1String("Firefox")) ? QStringLiteral("Firefox")
-                      : ua.contains(QLatin1String("Edg/"))  ? QStringLiteral("Edge")
-                      : ua.contains(QLatin1String("Chrom")) ? QStringLiteral("Chrome")
+    QString browser = ua.contains(QLatin1String("Firefox"))  ? QStringLiteral("Firefox")
+                      : ua.contains(QLatin1String("Edg/"))   ? QStringLiteral("Edge")
+                      : ua.contains(QLatin1String("Chrom"))  ? QStringLiteral("Chrome")
                       : ua.contains(QLatin1String("Safari")) ? QStringLiteral("Safari")
                                                              : QString();
-    const QString os = ua.contains(QLatin1String("Android")) ? QStringLiteral("Android")
-                       : ua.contains(QLatin1String("iPhone")) ? QStringLiteral("iPhone")
-                       : ua.contains(QLatin1String("iPad"))   ? QStringLiteral("iPad")
+    const QString os = ua.contains(QLatin1String("Android"))   ? QStringLiteral("Android")
+                       : ua.contains(QLatin1String("iPhone"))  ? QStringLiteral("iPhone")
+                       : ua.contains(QLatin1String("iPad"))    ? QStringLiteral("iPad")
                        : ua.contains(QLatin1String("Windows")) ? QStringLiteral("Windows")
-                       : ua.contains(QLatin1String("Mac OS")) ? QStringLiteral("macOS")
-                       : ua.contains(QLatin1String("Linux"))  ? QStringLiteral("Linux")
-                                                              : QString();
+                       : ua.contains(QLatin1String("Mac OS"))  ? QStringLiteral("macOS")
+                       : ua.contains(QLatin1String("Linux"))   ? QStringLiteral("Linux")
+                                                               : QString();
     if (browser.isEmpty())
         return ua.left(40);
     return os.isEmpty() ? browser : QStringLiteral("%1, %2").arg(browser, os);
@@ -118,8 +118,8 @@ bool PendantServer::parseListen(const QString &text, QHostAddress *address, quin
     bool ok = false;
     const uint p = portText.toUInt(&ok);
     if (!ok || p > 65535) {
-        *error = tr("'%1' is not [ADDRESS:]PORT: the port must be a number from 0 to 65535")
-                     .arg(text);
+        *error =
+            tr("'%1' is not [ADDRESS:]PORT: the port must be a number from 0 to 65535").arg(text);
         return false;
     }
     QHostAddress a(QHostAddress::Any);
@@ -166,8 +166,11 @@ void PendantServer::stop(const QString &why)
     m_control->takeBack();
     m_control->setAllowed(false); // allowed for one run of the pendant only
     for (auto &[id, c] : m_connections) {
-        send(id, {{QStringLiteral("t"), QStringLiteral("bye")},
-                  {QStringLiteral("text"), why.isEmpty() ? PendantPage::text("The pendant was stopped in StepCom", c.language) : why}});
+        send(id,
+             {{QStringLiteral("t"), QStringLiteral("bye")},
+              {QStringLiteral("text"),
+               why.isEmpty() ? PendantPage::text("The pendant was stopped in StepCom", c.language)
+                             : why}});
         c.socket->disconnect(this);
         c.socket->close(QWebSocketProtocol::CloseCodeGoingAway);
         c.socket.release()->deleteLater();
@@ -227,9 +230,11 @@ void PendantServer::disconnectClient(int id)
         return;
     say(id, QStringLiteral("disconnected in the window"));
     send(id, {{QStringLiteral("t"), QStringLiteral("bye")},
-              {QStringLiteral("text"), PendantPage::text("The pendant was stopped in StepCom",
-                                                         it->second.language)}});
-    it->second.socket->close(QWebSocketProtocol::CloseCodeNormal);
+              {QStringLiteral("text"),
+               PendantPage::text("The pendant was stopped in StepCom", it->second.language)}});
+    // close() may say `disconnected` at once, which ends the connection (onClosed): once only.
+    QWebSocket *socket = it->second.socket.get();
+    socket->close(QWebSocketProtocol::CloseCodeNormal);
     onClosed(id);
 }
 
@@ -321,15 +326,16 @@ void PendantServer::onMessage(int id, const QString &text)
     } else if (type == QLatin1String("step")) {
         const double size = m.value(QStringLiteral("size")).toDouble();
         refusal = m_control->step(id, motor, forward, size);
-        say(id, refusal.isEmpty() ? QStringLiteral("motor %1 step %2%3")
-                                        .arg(motor)
-                                        .arg(forward ? QLatin1Char('+') : QLatin1Char('-'))
-                                        .arg(size)
-                                  : QStringLiteral("motor %1 step refused: %2").arg(motor).arg(refusal));
+        say(id, refusal.isEmpty()
+                    ? QStringLiteral("motor %1 step %2%3")
+                          .arg(motor)
+                          .arg(forward ? QLatin1Char('+') : QLatin1Char('-'))
+                          .arg(size)
+                    : QStringLiteral("motor %1 step refused: %2").arg(motor).arg(refusal));
     }
     if (!refusal.isEmpty())
-        send(id, {{QStringLiteral("t"), QStringLiteral("refused")},
-                  {QStringLiteral("text"), refusal}});
+        send(id,
+             {{QStringLiteral("t"), QStringLiteral("refused")}, {QStringLiteral("text"), refusal}});
 }
 
 void PendantServer::send(int id, const QJsonObject &message)
@@ -369,7 +375,8 @@ void PendantServer::push()
     for (const auto &[id, c] : m_connections) {
         auto it = byLanguage.find(c.language);
         if (it == byLanguage.end())
-            it = byLanguage.insert(c.language, PendantPage::status(*m_session, c.language, m_namer));
+            it =
+                byLanguage.insert(c.language, PendantPage::status(*m_session, c.language, m_namer));
         send(id, *it);
     }
 }

@@ -89,9 +89,10 @@ private Q_SLOTS:
         QString said;
         QCOMPARE(PendantServer::parseListen(text, &parsed, &parsedPort, &said), ok);
         if (ok) {
-            QCOMPARE(parsed.toString(), parsed == QHostAddress(QHostAddress::Any)
-                                            ? (address == QLatin1String("0.0.0.0") ? parsed.toString() : address)
-                                            : address);
+            QCOMPARE(parsed.toString(),
+                     parsed == QHostAddress(QHostAddress::Any)
+                         ? (address == QLatin1String("0.0.0.0") ? parsed.toString() : address)
+                         : address);
             QCOMPARE(int(parsedPort), port);
             QVERIFY(said.isEmpty());
         } else {
@@ -105,8 +106,10 @@ private Q_SLOTS:
         QCOMPARE(PendantPage::languageOf("zh-CN,zh;q=0.9,en;q=0.8"), QStringLiteral("zh_CN"));
         QCOMPARE(PendantPage::languageOf("en-US,en;q=0.9,zh;q=0.8"), QStringLiteral("en"));
         QCOMPARE(PendantPage::languageOf(""), QStringLiteral("en"));
-        const auto zh = QJsonDocument::fromJson(PendantPage::strings(QStringLiteral("zh_CN"))).object();
-        const auto en = QJsonDocument::fromJson(PendantPage::strings(QStringLiteral("en"))).object();
+        const auto zh =
+            QJsonDocument::fromJson(PendantPage::strings(QStringLiteral("zh_CN"))).object();
+        const auto en =
+            QJsonDocument::fromJson(PendantPage::strings(QStringLiteral("en"))).object();
         QCOMPARE(en.value(QStringLiteral("estop")).toString(), QStringLiteral("E-STOP"));
         QCOMPARE(en.value(QStringLiteral("m1fwd")).toString(), QStringLiteral("Motor 1 forward"));
         // Every word has its Chinese (from the .ts files, as the window's).

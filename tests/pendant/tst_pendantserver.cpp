@@ -88,9 +88,10 @@ class TestPendantServer : public QObject
     {
         auto phone = std::make_unique<Phone>(server->url());
         [&] { QTRY_VERIFY(phone->socket.state() == QAbstractSocket::ConnectedState); }();
-        phone->send({{QStringLiteral("t"), QStringLiteral("hello")},
-                     {QStringLiteral("lang"), QStringLiteral("en-US")},
-                     {QStringLiteral("ua"), QStringLiteral("Mozilla/5.0 (Linux; Android 14) Chrome/120")}});
+        phone->send(
+            {{QStringLiteral("t"), QStringLiteral("hello")},
+             {QStringLiteral("lang"), QStringLiteral("en-US")},
+             {QStringLiteral("ua"), QStringLiteral("Mozilla/5.0 (Linux; Android 14) Chrome/120")}});
         [&] { QTRY_VERIFY(!phone->of("status").isEmpty()); }();
         return phone;
     }
@@ -140,10 +141,10 @@ private Q_SLOTS:
         };
         const QString root = QStringLiteral("http://127.0.0.1:%1").arg(server->port());
         int status = 0;
-        for (const QString &path : {QStringLiteral("/"), QStringLiteral("/p/"),
-                                    QStringLiteral("/p/0123456789abcdef0123456789abcdef"),
-                                    QStringLiteral("/p/wrong/pendant.js"),
-                                    QStringLiteral("/favicon.ico")}) {
+        for (const QString &path :
+             {QStringLiteral("/"), QStringLiteral("/p/"),
+              QStringLiteral("/p/0123456789abcdef0123456789abcdef"),
+              QStringLiteral("/p/wrong/pendant.js"), QStringLiteral("/favicon.ico")}) {
             const QByteArray body = get(root + path, &status);
             QCOMPARE(status, 403);
             QVERIFY2(body.isEmpty(), qPrintable(path));
@@ -178,7 +179,9 @@ private Q_SLOTS:
         const QJsonObject s = phone->of("status").last();
         const QJsonArray motors = s.value(QStringLiteral("motors")).toArray();
         QCOMPARE(motors.size(), 2);
-        QTRY_VERIFY(!phone->of("status").last()[QStringLiteral("motors")][0][QStringLiteral("position")].isNull());
+        QTRY_VERIFY(!phone->of("status")
+                         .last()[QStringLiteral("motors")][0][QStringLiteral("position")]
+                         .isNull());
         QCOMPARE(s.value(QStringLiteral("inputs")).toArray().size(), 4);
         QCOMPARE(s.value(QStringLiteral("outputs")).toArray().size(), 3);
         QCOMPARE(s[QStringLiteral("device")][QStringLiteral("id")].toInt(), 1);
@@ -231,7 +234,8 @@ private Q_SLOTS:
         phone->say("stop", 1);
         QTRY_VERIFY(whats().contains(QStringLiteral("motor1.stop")));
         QTRY_VERIFY(!sim()->running(1));
-        QTRY_VERIFY(actions.join(QLatin1Char('\n')).contains(QLatin1String("motor 1 jog stopped (finger lifted)")));
+        QTRY_VERIFY(actions.join(QLatin1Char('\n'))
+                        .contains(QLatin1String("motor 1 jog stopped (finger lifted)")));
         QTRY_COMPARE(session->jog()->state(1), JogController::State::Idle); // read back
     }
 
@@ -250,7 +254,8 @@ private Q_SLOTS:
         QTRY_VERIFY(whats().contains(QStringLiteral("motor2.stop")));
         QVERIFY(clock.elapsed() >= PendantControl::kHoldTimeoutMs - 50);
         QTRY_VERIFY(!sim()->running(2));
-        QVERIFY(actions.join(QLatin1Char('\n')).contains(QLatin1String("no hold from the pendant for 300 ms")));
+        QVERIFY(actions.join(QLatin1Char('\n'))
+                    .contains(QLatin1String("no hold from the pendant for 300 ms")));
         QTRY_VERIFY(!phone->of("jog").isEmpty() &&
                     !phone->of("jog").last().value(QStringLiteral("jogging")).toBool());
     }
@@ -294,7 +299,8 @@ private Q_SLOTS:
         second->say("take");
         QTRY_VERIFY(server->control()->holder() != holder);
         QTRY_VERIFY(!sim()->running(1));
-        QVERIFY(actions.join(QLatin1Char('\n')).contains(QLatin1String("another phone took control")));
+        QVERIFY(
+            actions.join(QLatin1Char('\n')).contains(QLatin1String("another phone took control")));
     }
 
     void windowStopsAndTakeBackEndThePendantJog()

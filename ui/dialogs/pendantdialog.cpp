@@ -98,7 +98,9 @@ PendantDialog::PendantDialog(PendantServer *server, QWidget *parent)
         if (QTableWidgetItem *item = m_phones->item(row, 0))
             m_server->disconnectClient(item->data(Qt::UserRole).toInt());
     });
-    connect(m_phones, &QTableWidget::itemSelectionChanged, this, &PendantDialog::refresh);
+    connect(m_phones, &QTableWidget::itemSelectionChanged, this, [this] {
+        m_disconnect->setEnabled(m_phones->currentRow() >= 0 && m_phones->rowCount() > 0);
+    });
     connect(m_close, &QPushButton::clicked, this, &QDialog::close);
     connect(server, &PendantServer::runningChanged, this, &PendantDialog::refresh);
     connect(server, &PendantServer::clientsChanged, this, &PendantDialog::refresh);
@@ -139,6 +141,7 @@ void PendantDialog::toggle()
     if (!m_server->start(QHostAddress::Any, quint16(m_port->value())))
         m_error->setText(m_server->error());
     refresh();
+    adjustSize(); // room for the code and the address that just came
 }
 
 void PendantDialog::changeEvent(QEvent *event)
@@ -178,10 +181,14 @@ void PendantDialog::refresh()
     m_error->setVisible(!m_error->text().isEmpty());
     const QString url = m_server->url().toString();
     m_address->setText(running ? url : tr("The pendant is off."));
+    // The whole address, never cut: it is typed into a phone when the code cannot be scanned.
+    m_address->setMinimumWidth(m_address->fontMetrics().horizontalAdvance(m_address->text()));
     m_address->setAccessibleName(tr("Pendant address: %1").arg(m_address->text()));
     if (running) {
         const QImage code = qrCode(url, 5);
         m_qr->setPixmap(QPixmap::fromImage(code));
+        // A cut code scans as nothing: the label never gets less than the whole code.
+        m_qr->setMinimumSize(code.size());
     } else {
         m_qr->clear();
     }
@@ -195,6 +202,7 @@ void PendantDialog::refresh()
     m_takeBack->setEnabled(holder != 0);
     const QList<PendantServer::Client> clients = m_server->clients();
     const int selected = m_phones->currentRow();
+    const QSignalBlocker quiet(m_phones); // rebuilt here: its own signals must not call back
     m_phones->setRowCount(int(clients.size()));
     for (int row = 0; row < clients.size(); ++row) {
         const PendantServer::Client &c = clients.at(row);
@@ -202,7 +210,8 @@ void PendantDialog::refresh()
         address->setData(Qt::UserRole, c.id);
         m_phones->setItem(row, 0, address);
         m_phones->setItem(row, 1, new QTableWidgetItem(c.browser));
-        m_phones->setItem(row, 2, new QTableWidgetItem(c.since.toString(QStringLiteral("HH:mm:ss"))));
+        m_phones->setItem(row, 2,
+                          new QTableWidgetItem(c.since.toString(QStringLiteral("HH:mm:ss"))));
     }
     if (selected >= 0 && selected < clients.size())
         m_phones->selectRow(selected);
