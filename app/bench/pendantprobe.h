@@ -13,14 +13,16 @@ namespace stepcom::bench {
 struct PendantResult
 {
     int baud = 0;
+    int answerDelayMs = 35; // the simulated controller's answer delay
     QString error;
     QList<double> pressMs;    // jog message -> motorN.forward frame
     QList<double> releaseMs;  // stop message -> motorN.stop frame
     QList<double> lastHoldMs; // last hold -> motorN.stop frame (the server's watchdog)
 };
 
-PendantResult measurePendant(int baud, int rounds);
-// Median and max of each against 50 ms, 50 ms and 350 ms (the max is judged).
-QList<Verdict> pendantVerdicts(const PendantResult &r);
+PendantResult measurePendant(int baud, int rounds, int answerDelayMs);
+// Median and max of each against 50 ms, 50 ms and 350 ms (the max is judged); `judged` false:
+// the same rows for information (a slow line, where the frame waits for the one in flight).
+QList<Verdict> pendantVerdicts(const PendantResult &r, bool judged);
 
 } // namespace stepcom::bench

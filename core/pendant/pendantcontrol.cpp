@@ -16,6 +16,7 @@ PendantControl::PendantControl(DeviceSession *session, QObject *parent)
         h.watchdog = std::make_unique<QTimer>();
         h.watchdog->setSingleShot(true);
         h.watchdog->setInterval(kHoldTimeoutMs);
+        h.watchdog->setTimerType(Qt::PreciseTimer); // a coarse timer may add 5 %: 15 ms
         connect(h.watchdog.get(), &QTimer::timeout, this, [this, n] {
             stopMotor(n, tr("no hold from the pendant for %1 ms").arg(kHoldTimeoutMs));
         });
