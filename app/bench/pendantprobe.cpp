@@ -139,16 +139,18 @@ QList<Verdict> pendantVerdicts(const PendantResult &r, bool judged)
         std::sort(ms.begin(), ms.end());
         const double median = ms.isEmpty() ? 0 : ms.at(ms.size() / 2);
         const double max = ms.isEmpty() ? 0 : ms.last();
-        const Verdict::Result result = !judged ? Verdict::Result::Info
+        const Verdict::Result result = !judged                         ? Verdict::Result::Info
                                        : !ms.isEmpty() && max < target ? Verdict::Result::Pass
                                                                        : Verdict::Result::Fail;
-        return Verdict{baud, who + what,
+        return Verdict{baud,
+                       who + what,
                        QStringLiteral("median %1 ms, max %2 ms over %3")
                            .arg(median, 0, 'f', 1)
                            .arg(max, 0, 'f', 1)
                            .arg(ms.size()),
                        QStringLiteral("max < %1 ms").arg(target),
-                       QString::number(max / target, 'f', 2), result};
+                       QString::number(max / target, 'f', 2),
+                       result};
     };
     return {row(QStringLiteral("press on the page -> jog frame on the wire"), r.pressMs, 50),
             row(QStringLiteral("release -> stop frame"), r.releaseMs, 50),

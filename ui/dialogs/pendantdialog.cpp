@@ -76,16 +76,21 @@ PendantDialog::PendantDialog(PendantServer *server, QWidget *parent)
     phoneButtons->addStretch(1);
     phoneButtons->addWidget(m_disconnect);
     phoneButtons->addWidget(m_close);
+    // The code beside the rest: low enough for a 1366×768 screen at 150 %.
+    auto *side = new QVBoxLayout;
+    side->addWidget(m_address);
+    side->addWidget(m_allow);
+    side->addLayout(control);
+    side->addWidget(m_phonesLabel);
+    side->addWidget(m_phones, 1);
+    auto *middle = new QHBoxLayout;
+    middle->addWidget(m_qr, 0, Qt::AlignTop);
+    middle->addLayout(side, 1);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_intro);
     layout->addLayout(top);
     layout->addWidget(m_error);
-    layout->addWidget(m_qr);
-    layout->addWidget(m_address);
-    layout->addWidget(m_allow);
-    layout->addLayout(control);
-    layout->addWidget(m_phonesLabel);
-    layout->addWidget(m_phones, 1);
+    layout->addLayout(middle, 1);
     layout->addWidget(m_safety);
     layout->addLayout(phoneButtons);
 
