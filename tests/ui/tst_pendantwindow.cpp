@@ -1,8 +1,12 @@
 #include "dialogs/pendantdialog.h"
 #include "mainwindow.h"
+#include "map/factoryvalues.h"
+#include "offlineactions.h"
 #include "pendant/pendantcontrol.h"
 #include "pendant/pendantserver.h"
 #include "pendantactions.h"
+#include "profile/profile.h"
+#include "profile/profilefile.h"
 #include "session/devicesession.h"
 #include "simsession.h"
 #include "testregistry.h"
@@ -15,6 +19,7 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTcpSocket>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace stepcom;
@@ -105,6 +110,26 @@ private Q_SLOTS:
         QVERIFY(!server->isRunning());
         QVERIFY(!server->control()->isAllowed()); // allowed for one run only
         QVERIFY(window.machineStrip()->pendantLabel()->isHidden());
+    }
+
+    void aProfileEditedOfflineServesNoPendant()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        window.show();
+        PendantServer *server = window.pendantActions()->server();
+        QVERIFY(server->start(QHostAddress::LocalHost, 0));
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("machine.json"));
+        const Profile p =
+            Profile::fromValues(session.map(), FactoryValues::writable(session.map()), false);
+        QVERIFY(ProfileFile::save(path, p, session.map()).isEmpty());
+        QVERIFY(window.offlineActions()->openFile(path));
+        QTRY_VERIFY(!server->isRunning()); // stopped, the phones told
+        QAction *action = window.action(QStringLiteral("pendant"));
+        QVERIFY(!action->isEnabled());
+        QVERIFY(!window.pendantActions()->refusal().isEmpty());
+        QVERIFY(!window.pendantActions()->openDialog());
     }
 };
 
