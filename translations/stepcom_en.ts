@@ -6524,6 +6524,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>This phone is no safety device: the machine&apos;s own E-STOP is.</source>
         <translation>This phone is no safety device: the machine&apos;s own E-STOP is.</translation>
     </message>
+    <message>
+        <source>StepCom disconnected this phone</source>
+        <translation>StepCom disconnected this phone</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::PendantServer</name>

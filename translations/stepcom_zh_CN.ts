@@ -6487,6 +6487,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>This phone is no safety device: the machine&apos;s own E-STOP is.</source>
         <translation>这部手机不是安全装置：机器自身的急停才是。</translation>
     </message>
+    <message>
+        <source>StepCom disconnected this phone</source>
+        <translation>StepCom 已断开这部手机</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::PendantServer</name>

@@ -65,6 +65,7 @@ const Word kWords[] = {
     {"stepMinus", QT_TRANSLATE_NOOP("stepcom::PendantPage", "Motor %1 step −")},
     {"stepPlus", QT_TRANSLATE_NOOP("stepcom::PendantPage", "Motor %1 step +")},
     {"ended", QT_TRANSLATE_NOOP("stepcom::PendantPage", "The pendant was stopped in StepCom")},
+    {"dropped", QT_TRANSLATE_NOOP("stepcom::PendantPage", "StepCom disconnected this phone")},
     {"lost", QT_TRANSLATE_NOOP("stepcom::PendantPage", "Connection lost: reload the page")},
     {"safety", QT_TRANSLATE_NOOP("stepcom::PendantPage",
                                  "This phone is no safety device: the machine's own E-STOP is.")},

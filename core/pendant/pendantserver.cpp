@@ -231,7 +231,7 @@ void PendantServer::disconnectClient(int id)
     say(id, QStringLiteral("disconnected in the window"));
     send(id, {{QStringLiteral("t"), QStringLiteral("bye")},
               {QStringLiteral("text"),
-               PendantPage::text("The pendant was stopped in StepCom", it->second.language)}});
+               PendantPage::text("StepCom disconnected this phone", it->second.language)}});
     // close() may say `disconnected` at once, which ends the connection (onClosed): once only.
     QWebSocket *socket = it->second.socket.get();
     socket->close(QWebSocketProtocol::CloseCodeNormal);

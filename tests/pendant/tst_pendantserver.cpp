@@ -192,6 +192,13 @@ private Q_SLOTS:
         QCOMPARE(server->clients().first().browser, QStringLiteral("Chrome, Android"));
         QVERIFY2(actions.join(QLatin1Char('\n')).contains(QLatin1String("127.0.0.1: paired")),
                  qPrintable(actions.join(QLatin1Char('\n'))));
+        // Disconnecting tells the phones: the link closed, the positions no longer known.
+        session->disconnectFrom();
+        QTRY_COMPARE(phone->of("status").last().value(QStringLiteral("link")).toString(),
+                     QStringLiteral("closed"));
+        QVERIFY(phone->of("status")
+                    .last()[QStringLiteral("motors")][0][QStringLiteral("position")]
+                    .isNull());
     }
 
     void jogIsRefusedUntilAllowed()
@@ -267,10 +274,18 @@ private Q_SLOTS:
         auto phone = pairedPhone();
         phone->say("take");
         QTRY_VERIFY(server->control()->holder() != 0);
+        QTimer holds; // held until the phone goes: the watchdog has no reason to stop it
+        connect(&holds, &QTimer::timeout, phone.get(), [&] { phone->say("hold", 1); });
+        holds.start(50);
         phone->say("jog", 1, "rev");
         QTRY_VERIFY(sim()->running(1));
+        holds.stop();
         phone->socket.abort(); // the phone is gone: no stop, no close frame
         QTRY_VERIFY(whats().contains(QStringLiteral("motor1.stop")));
+        // Stopped for the closed socket itself, not only later by the hold watchdog.
+        QTRY_VERIFY2(actions.join(QLatin1Char('\n'))
+                         .contains(QLatin1String("jog stopped (the phone's connection closed)")),
+                     qPrintable(actions.join(QLatin1Char('\n'))));
         QTRY_VERIFY(!sim()->running(1));
         QTRY_COMPARE(server->control()->holder(), 0);
         QVERIFY(server->clients().isEmpty());
