@@ -8,12 +8,14 @@
 #include "profile/profile.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
+#include "session/sessionlog.h"
 #include "simsession.h"
 #include "testregistry.h"
 #include "widgets/docks/machinestrip.h"
 
 #include <QAction>
 #include <QCheckBox>
+#include <QFile>
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -51,6 +53,7 @@ private Q_SLOTS:
         test::useBuiltinSimulator(session);
         MainWindow window(&session);
         window.show();
+        test::connectToSimulator(session); // a session log is written from the first connection
         QAction *action = window.action(QStringLiteral("pendant"));
         QVERIFY(action);
         QVERIFY(action->isEnabled());
@@ -105,6 +108,13 @@ private Q_SLOTS:
         dialog->disconnectButton()->click();
         QTRY_VERIFY(server->clients().isEmpty());
         QTRY_VERIFY(phone.state() != QAbstractSocket::ConnectedState);
+
+        // What the phones did is in the session log as user actions (a replay shows them).
+        QFile log(window.sessionLog()->currentFile());
+        QVERIFY2(log.open(QIODevice::ReadOnly), qPrintable(log.fileName()));
+        const QByteArray logged = log.readAll();
+        QVERIFY2(logged.contains("user     pendant 127.0.0.1: took control"), logged.right(2000));
+        QVERIFY(logged.contains("user     pendant: jogging allowed in the window"));
 
         dialog->startButton()->click(); // stop
         QVERIFY(!server->isRunning());
