@@ -7,6 +7,7 @@
 #include "pendantactions.h"
 #include "profile/profile.h"
 #include "profile/profilefile.h"
+#include "replaymode.h"
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
@@ -139,6 +140,24 @@ private Q_SLOTS:
         QAction *action = window.action(QStringLiteral("pendant"));
         QVERIFY(!action->isEnabled());
         QVERIFY(!window.pendantActions()->refusal().isEmpty());
+        QVERIFY(!window.pendantActions()->openDialog());
+    }
+
+    void aReplayServesNoPendant()
+    {
+        DeviceSession session;
+        test::useBuiltinSimulator(session);
+        MainWindow window(&session);
+        window.show();
+        test::connectToSimulator(session); // a session log to replay
+        const QString path = window.sessionLog()->currentFile();
+        session.disconnectFrom();
+        PendantServer *server = window.pendantActions()->server();
+        QVERIFY(server->start(QHostAddress::LocalHost, 0));
+        QVERIFY(window.replayMode()->openPath(path));
+        QTRY_VERIFY_WITH_TIMEOUT(window.replayMode()->isActive(), 20000);
+        QTRY_VERIFY(!server->isRunning());
+        QVERIFY(!window.action(QStringLiteral("pendant"))->isEnabled());
         QVERIFY(!window.pendantActions()->openDialog());
     }
 };
