@@ -29,7 +29,8 @@ set(CPACK_DEBIAN_PACKAGE_SECTION electronics)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_MAINTAINER ${CPACK_PACKAGE_CONTACT})
 # Depends come from the programs' shared libraries (dpkg-shlibdeps: libc6, libqt6core6,
-# libqt6serialbus6, libqt6widgets6, libqt6svg6, ...). Qt's own translations (QCommandLineParser's
+# libqt6serialbus6, libqt6widgets6, libqt6svg6, the pendant's libqt6httpserver6,
+# libqt6websockets6 and libqrencode4, ...). Qt's own translations (QCommandLineParser's
 # texts, standard buttons) are a separate package; the window on Wayland needs Qt's plugin.
 # libqt6svg6 holds the plugins that draw the SVG window icon (iconengines/libqsvgicon.so):
 # loaded at run time, so dpkg-shlibdeps cannot see it.

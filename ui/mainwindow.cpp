@@ -9,7 +9,7 @@
 #include "help/userguide.h"
 #include "language.h"
 #include "machineactions.h"
-#include "offlineactions.h"      // working without the machine (issue 18)
+#include "offlineactions.h"
 #include "pages/checklistpage.h" // issue 17
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
@@ -19,6 +19,8 @@
 #include "pages/motionpage.h"        // jogging (issue 5)
 #include "pages/motorpage.h"
 #include "pages/plotpage.h" // monitoring (issue 5)
+#include "pendant/pendantserver.h"
+#include "pendantactions.h" // working without the machine (issue 18)
 #include "profileactions.h" // profiles (issue 7)
 #include "replaymode.h"     // replaying a session log (issue 26)
 #include "session/devicesession.h"
@@ -115,6 +117,9 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     // Under the pages, on every page: positions, states and the E-STOP (issue 25).
     m_strip = new MachineStrip(session, m_estop, central);
     m_strip->setDeviceNamer([this](int id) { return m_deviceDock->nameOf(id); });
+    m_pendant = new PendantActions(m_session, m_strip, m_sessionLog, m_replay, m_offline, this);
+    m_pendant->server()->setDeviceNamer([this](int id) { return m_deviceDock->nameOf(id); });
+    m_deviceMenu->addAction(m_pendant->pendantAction());
     centralLayout->addWidget(m_replay->bar());
     centralLayout->addWidget(m_strip);
     m_estopButton = m_strip->emergencyStopButton();

@@ -26,6 +26,7 @@ class MotionPage;     // jogging (issue 5)
 class OfflineActions; // working without the machine (issue 18)
 class OfflineBanner;
 class Page;
+class PendantActions;
 class PageSidebar; // issue 25
 class MachineActions;
 class ProfileActions; // profiles (issue 7)
@@ -74,6 +75,7 @@ public:
     OfflineActions *offlineActions() const { return m_offline; }  // issue 18
     OfflineBanner *offlineBanner() const { return m_offlineBanner; }
     ReplayMode *replayMode() const { return m_replay; }          // issue 26
+    PendantActions *pendantActions() const { return m_pendant; } // a phone as the pendant
     ChecklistPage *checklistPage() const { return m_checklist; } // issue 17
     PlotPage *plotPage() const { return m_plots; }
     BackupGuard *backupGuard() const { return m_backups; } // issue 17
@@ -149,7 +151,8 @@ private:
     OfflineActions *m_offline = nullptr;  // issue 18
     OfflineBanner *m_offlineBanner = nullptr;
     ReplayMode *m_replay = nullptr; // issue 26
-    bool m_jogStopAwaited = false;  // jogging (issue 5): close waited for the stops once
+    PendantActions *m_pendant = nullptr;
+    bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once
     WriteFlow *m_writeFlow = nullptr;
     ChecklistPage *m_checklist = nullptr; // issue 17
     PlotPage *m_plots = nullptr;

@@ -1,6 +1,9 @@
 #include "i18n/translators.h"
 #include "language.h"
 #include "mainwindow.h"
+#include "pendant/pendantcontrol.h"
+#include "pendant/pendantserver.h"
+#include "pendantactions.h"
 #include "session/devicesession.h"
 #include "sim/builtinsimulator.h"
 
@@ -54,12 +57,22 @@ struct Options
                           QCoreApplication::translate("stepcom", "Device id (default 1)."),
                           QCoreApplication::translate("stepcom", "id"), QStringLiteral("1")};
 
+    QCommandLineOption pendant{
+        QStringLiteral("pendant"),
+        QCoreApplication::translate("stepcom",
+                                    "Start the phone pendant at launch (watch only) on this "
+                                    "port, 0 for any free one; prints its address."),
+        QCoreApplication::translate("stepcom", "[address:]port")};
+    QCommandLineOption pendantJog{
+        QStringLiteral("pendant-allow-jog"),
+        QCoreApplication::translate("stepcom", "Allow jogging from the pendant from launch.")};
+
     void addTo(QCommandLineParser &parser) const
     {
         parser.addHelpOption();
         parser.addVersionOption();
         parser.addOption(Translators::languageOption());
-        parser.addOptions({sim, simReset, port, tcp, rtuTcp, baud, parity, id, echo});
+        parser.addOptions({sim, simReset, port, tcp, rtuTcp, baud, parity, id, echo, pendant, pendantJog});
         parser.addPositionalArgument(
             QStringLiteral("file"),
             QCoreApplication::translate("stepcom",
@@ -128,6 +141,25 @@ QString linkFromArguments(const QCommandLineParser &parser, const Options &optio
     return {};
 }
 
+// The pendant's [ADDRESS:]PORT, if --pendant was given; a message naming what was wrong.
+QString pendantFromArguments(const QCommandLineParser &parser, const Options &options,
+                             std::optional<std::pair<QHostAddress, quint16>> *out)
+{
+    const auto tr = [](const char *text) { return QCoreApplication::translate("stepcom", text); };
+    if (!parser.isSet(options.pendant)) {
+        if (parser.isSet(options.pendantJog))
+            return tr("--pendant-allow-jog needs --pendant [ADDRESS:]PORT");
+        return {};
+    }
+    QHostAddress address;
+    quint16 port = 0;
+    QString error;
+    if (!PendantServer::parseListen(parser.value(options.pendant), &address, &port, &error))
+        return QStringLiteral("--pendant: ") + error;
+    *out = std::make_pair(address, port);
+    return {};
+}
+
 // --help, --version, a mistyped command line and a bad link value are answered in the terminal and
 // need no display: deciding before QApplication exists keeps them working over ssh and in packaging
 // checks (a QApplication without a display aborts).
@@ -140,10 +172,12 @@ bool answersWithoutWindow(const QStringList &arguments)
         return true;
     std::optional<LinkSettings> link;
     QString file;
+    std::optional<std::pair<QHostAddress, quint16>> pendant;
     return probe.isSet(QStringLiteral("help")) || probe.isSet(QStringLiteral("help-all")) ||
            probe.isSet(QStringLiteral("version")) ||
            !linkFromArguments(probe, options, &link).isEmpty() ||
-           !fileFromArguments(probe, &file).isEmpty();
+           !fileFromArguments(probe, &file).isEmpty() ||
+           !pendantFromArguments(probe, options, &pendant).isEmpty();
 }
 
 } // namespace
@@ -205,6 +239,12 @@ int main(int argc, char *argv[])
             return 1;
         }
     }
+    std::optional<std::pair<QHostAddress, quint16>> pendant;
+    if (const auto problem = pendantFromArguments(parser, options, &pendant); !problem.isEmpty()) {
+        QTextStream(stderr) << QStringLiteral("stepcom: ") << problem << Qt::endl;
+        return 2;
+    }
+
     DeviceSession session;
     // The Connection page offers it; what it saves to flash is there again on the next start.
     auto sim = std::make_unique<BuiltinSimulator>();
@@ -212,6 +252,16 @@ int main(int argc, char *argv[])
     session.setSimulator(std::move(sim));
     MainWindow window(&session);
     window.showOnScreen();
+    if (pendant) {
+        PendantServer *server = window.pendantActions()->server();
+        if (!server->start(pendant->first, pendant->second)) {
+            QTextStream(stderr) << QStringLiteral("stepcom: ") << server->error() << Qt::endl;
+            return 2;
+        }
+        server->control()->setAllowed(parser.isSet(options.pendantJog));
+        // The address with the port actually bound (--pendant 127.0.0.1:0), for a script.
+        QTextStream(stdout) << QStringLiteral("pendant: ") << server->url().toString() << Qt::endl;
+    }
     if (parser.isSet(options.sim))
         session.connectSimulator();
     else if (startLink)

@@ -101,6 +101,16 @@ std::optional<JogController::Direction> JogController::direction(int motor) cons
     return at(motor).direction;
 }
 
+JogController::Source JogController::source(int motor) const
+{
+    return validMotor(motor) ? at(motor).source : Source::Pointer;
+}
+
+QString JogController::stopReason(int motor) const
+{
+    return validMotor(motor) ? at(motor).stopReason : QString();
+}
+
 bool JogController::isBusy() const
 {
     if (m_checksInFlight > 0)
@@ -223,8 +233,9 @@ bool JogController::press(int motor, Direction direction, Source source)
     return true;
 }
 
-void JogController::release(int motor, Source source)
+void JogController::release(int motor, Source source, const QString &reason)
 {
+    const QString why = reason.isEmpty() ? tr("released") : reason;
     if (!validMotor(motor))
         return;
     Motor &m = at(motor);
@@ -233,11 +244,11 @@ void JogController::release(int motor, Source source)
     if (m.startPending) {
         // A stop now could overtake the queued start (stops jump the queue): stop right after.
         m.stopWanted = true;
-        m.stopReason = tr("released");
+        m.stopReason = why;
         setState(motor, State::Stopping);
         return;
     }
-    sendStop(motor, tr("released"));
+    sendStop(motor, why);
 }
 
 void JogController::stop(int motor, const QString &reason)

@@ -24,8 +24,9 @@ class JogController : public QObject
 public:
     enum class Direction { Forward, Reverse };
     Q_ENUM(Direction)
-    // Who holds the jog: a release only ends a jog started by the same hand.
-    enum class Source { Pointer, Keyboard };
+    // Who holds the jog: a release only ends a jog started by the same hand. Pendant: a phone
+    // through core/pendant, whose hold messages keep it going.
+    enum class Source { Pointer, Keyboard, Pendant };
     Q_ENUM(Source)
     enum class State {
         Idle,
@@ -46,8 +47,9 @@ public:
     // this motor already jogs, when it moves on its own, or for keys while keyboard jogging is
     // off; returns whether the jog started.
     bool press(int motor, Direction direction, Source source = Source::Pointer);
-    // The hand let go: stops the motor if this source holds its jog.
-    void release(int motor, Source source = Source::Pointer);
+    // The hand let go: stops the motor if this source holds its jog (`reason` for the messages;
+    // "released" when empty).
+    void release(int motor, Source source = Source::Pointer, const QString &reason = QString());
     // The stop button: send the stop now, whoever started the motion.
     void stop(int motor, const QString &reason = QString());
     // Stop every jog this controller started (focus loss, page change, exit ...). Returns how
@@ -56,6 +58,10 @@ public:
 
     State state(int motor) const;
     std::optional<Direction> direction(int motor) const; // of the jog held, if any
+    // Who started the jog held or stopping now (meaningless while Idle).
+    Source source(int motor) const;
+    // Why the last stop of this motor was sent ("released", "E-STOP", "page changed" ...).
+    QString stopReason(int motor) const;
     bool isJogging(int motor) const { return state(motor) == State::Jogging; }
     // Something is held, or a stop is still on its way or unverified.
     bool isBusy() const;

@@ -19,7 +19,8 @@ declare -A allowed=(
     [core/report]="map device motion profile commissioning"
     [core/sim]="map bus motion session"
     [core/support]="map bus device session commissioning"
-    [ui]="map device motion session line profile commissioning report i18n support"
+    [core/pendant]="map device motion session"
+    [ui]="map device motion session line profile commissioning report i18n support pendant"
 )
 bad=0
 # The rules themselves must have no cycle: a room never reaches itself through the others.

@@ -1,5 +1,6 @@
 // The dialogs fit the screens technicians have (issue 19, split from tst_layoutfit): write
-// changes, bus scan, profile save and compare, files compare, backups, the support bundle and
+// changes, bus scan, profile save and compare, files compare, backups, the support bundle, the
+// pendant and
 // the user guide window at the screen the test runs on (the same five as tst_layoutfit), in
 // English and Chinese.
 // Fails when a dialog is larger than the screen or cannot shrink to it, a text in it is cut, a
@@ -10,6 +11,7 @@
 #include "device/parameterstore.h"
 #include "dialogs/backupsdialog.h"
 #include "dialogs/busscandialog.h"
+#include "dialogs/pendantdialog.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilefilesdialog.h"
 #include "dialogs/profilesavedialog.h"
@@ -20,6 +22,8 @@
 #include "mainwindow.h"
 #include "map/factoryvalues.h"
 #include "pages/connectionpage.h"
+#include "pendant/pendantserver.h"
+#include "pendantactions.h"
 #include "profile/backupstore.h"
 #include "session/devicesession.h"
 
@@ -88,6 +92,24 @@ private Q_SLOTS:
     }
 
     // Help → Create support bundle…, nothing read yet: the longest words it shows.
+    void pendantDialogFits_data() { languages(); }
+    void pendantDialogFits()
+    {
+        QFETCH(QString, language);
+        Language::instance().setLanguage(language);
+        DeviceSession session;
+        MainWindow window(&session);
+        window.show();
+        PendantServer *server = window.pendantActions()->server();
+        QVERIFY2(server->start(QHostAddress::LocalHost, 0), qPrintable(server->error()));
+        PendantDialog *dialog = window.pendantActions()->openDialog(); // running: code, address
+        QVERIFY(dialog);
+        checkDialog(dialog, QStringLiteral("pendant"));
+        dialog->close();
+        server->stop();
+        QVERIFY2(m_problems.isEmpty(), qPrintable(report()));
+    }
+
     void supportBundleDialogFits_data() { languages(); }
     void supportBundleDialogFits()
     {

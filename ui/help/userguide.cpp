@@ -22,6 +22,7 @@ const Section sections[] = {
     {"stepcom::ConnectionPage", "The Connection page", "连接页面"},
     {"stepcom::MotorPage", "Setting up a motor", "设定电机参数"},
     {"stepcom::MotionPage", "Jogging and homing", "点动与回零"},
+    {"stepcom::PendantDialog", "A phone as the pendant", "手机作为手持器"},
     {"stepcom::InputsPage", "Limit and home inputs", "限位与原点信号"},
     {"stepcom::InterpolationPage", "Arc and line interpolation", "圆弧插补与直线插补"},
     {"stepcom::ModesPage", "Special modes", "特殊功能模式"},

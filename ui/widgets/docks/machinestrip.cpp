@@ -59,6 +59,7 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     , m_link(new QLabel(this))
     , m_line(new ElidedLabel(this))
     , m_device(new ElidedLabel(this))
+    , m_pendant(new QLabel(this))
     , m_estopButton(estop->createButton(this))
 {
     setObjectName(QStringLiteral("machineStrip"));
@@ -132,6 +133,9 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     linkColumn->addLayout(linkRow);
     m_line->setMinimumChars(5);
     linkColumn->addWidget(m_line);
+    m_pendant->setObjectName(QStringLiteral("stripPendant"));
+    m_pendant->hide();
+    linkColumn->addWidget(m_pendant);
     row->addLayout(linkColumn, 1);
 
     // The window's one E-STOP button, at the end: on every page, beside the machine's state.
@@ -336,6 +340,13 @@ void MachineStrip::showReplayLink(bool linkUp, bool answering, const QString &li
 {
     m_replay = ReplayLink{linkUp, answering, line};
     refreshLink();
+}
+
+void MachineStrip::setPendantText(const QString &text)
+{
+    m_pendant->setText(text);
+    m_pendant->setAccessibleName(text);
+    m_pendant->setVisible(!text.isEmpty());
 }
 
 void MachineStrip::endReplay()

@@ -52,6 +52,9 @@ public:
     // endReplay().
     void showReplayLink(bool linkUp, bool answering, const QString &line);
     void endReplay();
+    // "Pendant: 1 phone watching" / "Pendant: jogging from 192.168.1.23"; empty hides it.
+    void setPendantText(const QString &text);
+    QLabel *pendantLabel() const { return m_pendant; }
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -88,6 +91,7 @@ private:
     QLabel *m_link;
     ElidedLabel *m_line;
     ElidedLabel *m_device; // a long name gives way: the strip must not widen the window
+    QLabel *m_pendant;     // who watches or jogs from a phone (PendantActions)
     QToolButton *m_estopButton;
     std::function<QString(int)> m_namer;
     struct ReplayLink
