@@ -82,6 +82,22 @@
         <source>A profile to edit without a controller, or a session log or support bundle to replay.</source>
         <translation>A profile to edit without a controller, or a session log or support bundle to replay.</translation>
     </message>
+    <message>
+        <source>Start the built-in simulator from the factory again: forget what it saved to flash.</source>
+        <translation>Start the built-in simulator from the factory again: forget what it saved to flash.</translation>
+    </message>
+    <message>
+        <source>Start the phone pendant at launch (watch only) on this port, 0 for any free one; prints its address.</source>
+        <translation>Start the phone pendant at launch (watch only) on this port, 0 for any free one; prints its address.</translation>
+    </message>
+    <message>
+        <source>[address:]port</source>
+        <translation>[address:]port</translation>
+    </message>
+    <message>
+        <source>Allow jogging from the pendant from launch.</source>
+        <translation>Allow jogging from the pendant from launch.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -323,6 +339,17 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BuiltinSimulator</name>
+    <message>
+        <source>cannot remove %1: %2</source>
+        <translation>cannot remove %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot make the folder of %1</source>
+        <translation>cannot make the folder of %1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusActions</name>
     <message>
         <source>Assign device ids…</source>
@@ -331,6 +358,26 @@
     <message>
         <source>Give each controller of a new line its own id, one controller at a time</source>
         <translation>Give each controller of a new line its own id, one controller at a time</translation>
+    </message>
+    <message>
+        <source>the built-in simulator is reset to the factory</source>
+        <translation>the built-in simulator is reset to the factory</translation>
+    </message>
+    <message>
+        <source>The built-in simulator could not be reset: %1</source>
+        <translation>The built-in simulator could not be reset: %1</translation>
+    </message>
+    <message>
+        <source>The built-in simulator is back at the factory: id 1, 9600 baud, nothing saved. Connect to it again to start it.</source>
+        <translation>The built-in simulator is back at the factory: id 1, 9600 baud, nothing saved. Connect to it again to start it.</translation>
+    </message>
+    <message>
+        <source>Reset the built-in simulator to factory</source>
+        <translation>Reset the built-in simulator to factory</translation>
+    </message>
+    <message>
+        <source>Forget what the built-in simulator saved to flash: it starts again as it leaves the factory</source>
+        <translation>Forget what the built-in simulator saved to flash: it starts again as it leaves the factory</translation>
     </message>
 </context>
 <context>
@@ -753,6 +800,10 @@
     <message>
         <source>Accepted by (customer)</source>
         <translation>Accepted by (customer)</translation>
+    </message>
+    <message>
+        <source>Read from StepCom&apos;s built-in simulator, not from a machine: nothing here can be signed for a machine.</source>
+        <translation>Read from StepCom&apos;s built-in simulator, not from a machine: nothing here can be signed for a machine.</translation>
     </message>
 </context>
 <context>
@@ -1632,6 +1683,18 @@
         <source>Link, as measured</source>
         <translation>Link, as measured</translation>
     </message>
+    <message>
+        <source>StepCom&apos;s built-in simulator -- not a machine</source>
+        <translation>StepCom&apos;s built-in simulator -- not a machine</translation>
+    </message>
+    <message>
+        <source>%1 -- simulator, not a machine</source>
+        <translation>%1 -- simulator, not a machine</translation>
+    </message>
+    <message>
+        <source>SIMULATOR -- NOT A MACHINE: these values were read from StepCom&apos;s built-in simulator. This sheet certifies no machine.</source>
+        <translation>SIMULATOR -- NOT A MACHINE: these values were read from StepCom&apos;s built-in simulator. This sheet certifies no machine.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1908,6 +1971,25 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CtlLinkAdvice</name>
+    <message>
+        <source>not saved to flash: the built-in simulator starts its next run with the id and baud it saved (add --save-to-flash to keep them)</source>
+        <translation>not saved to flash: the built-in simulator starts its next run with the id and baud it saved (add --save-to-flash to keep them)</translation>
+    </message>
+    <message>
+        <source>not saved to flash: after the next power-off the controller answers at the id and baud it saved before (add --save-to-flash to keep them)</source>
+        <translation>not saved to flash: after the next power-off the controller answers at the id and baud it saved before (add --save-to-flash to keep them)</translation>
+    </message>
+    <message>
+        <source>the controller now speaks %1 baud on its RS-485 side: set the converter&apos;s (gateway&apos;s) serial side to %1 baud too, or it no longer reaches the controller</source>
+        <translation>the controller now speaks %1 baud on its RS-485 side: set the converter&apos;s (gateway&apos;s) serial side to %1 baud too, or it no longer reaches the controller</translation>
+    </message>
+    <message>
+        <source>next commands: stepcomctl %1 ...</source>
+        <translation>next commands: stepcomctl %1 ...</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>no sample was read: every poll failed (see the errors above)</source>
@@ -1969,10 +2051,6 @@
     <message>
         <source>host:port</source>
         <translation>host:port</translation>
-    </message>
-    <message>
-        <source>Use the built-in simulated controller.</source>
-        <translation>Use the built-in simulated controller.</translation>
     </message>
     <message>
         <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600).</source>
@@ -2275,8 +2353,20 @@
         <translation>--days: &apos;%1&apos; is not a number of days</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report, replay, bundle)</source>
-        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report, replay, bundle)</translation>
+        <source>Use the built-in simulated controller (it keeps what it saved to flash between runs).</source>
+        <translation>Use the built-in simulated controller (it keeps what it saved to flash between runs).</translation>
+    </message>
+    <message>
+        <source>Start the built-in simulator from the factory again (id 1, 9600 baud): forget what it saved to flash. Alone, or before a --sim command.</source>
+        <translation>Start the built-in simulator from the factory again (id 1, 9600 baud): forget what it saved to flash. Alone, or before a --sim command.</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, ports, report, replay, bundle)</source>
+        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, ports, report, replay, bundle)</translation>
+    </message>
+    <message>
+        <source>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</source>
+        <translation>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</translation>
     </message>
 </context>
 <context>
@@ -2636,10 +2726,6 @@
         <translation>%1 is not supported by this controller</translation>
     </message>
     <message>
-        <source>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</source>
-        <translation>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</translation>
-    </message>
-    <message>
         <source>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</source>
         <translation>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</translation>
     </message>
@@ -2741,6 +2827,46 @@
             <numerusform>(the same for %n more read of this command)</numerusform>
             <numerusform>(the same for %n more reads of this command)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>next commands: stepcomctl %1 ...</source>
+        <translation>next commands: stepcomctl %1 ...</translation>
+    </message>
+    <message>
+        <source>id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</source>
+        <translation>id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</translation>
+    </message>
+    <message>
+        <source>scan: give the line to scan: --port, --rtu-tcp, --tcp or --sim</source>
+        <translation>scan: give the line to scan: --port, --rtu-tcp, --tcp or --sim</translation>
+    </message>
+    <message>
+        <source>it has no serial line here</source>
+        <translation>it has no serial line here</translation>
+    </message>
+    <message>
+        <source>ports takes no arguments (&apos;%1&apos;)</source>
+        <translation>ports takes no arguments (&apos;%1&apos;)</translation>
+    </message>
+    <message>
+        <source>no serial port found: is the USB adapter plugged in? (its driver&apos;s messages: sudo dmesg | tail)</source>
+        <translation>no serial port found: is the USB adapter plugged in? (its driver&apos;s messages: sudo dmesg | tail)</translation>
+    </message>
+    <message>
+        <source>S/N %1</source>
+        <translation>S/N %1</translation>
+    </message>
+    <message>
+        <source>stable name: %1</source>
+        <translation>stable name: %1</translation>
+    </message>
+    <message>
+        <source>no permission to open it: add yourself to its group (ls -l %1; usually dialout), then log in again</source>
+        <translation>no permission to open it: add yourself to its group (ls -l %1; usually dialout), then log in again</translation>
+    </message>
+    <message>
+        <source>open it with: stepcomctl --port %1 read device.id</source>
+        <translation>open it with: stepcomctl --port %1 read device.id</translation>
     </message>
 </context>
 <context>
@@ -3140,14 +3266,6 @@
         <translation>Change the controller from %1 to %2?</translation>
     </message>
     <message>
-        <source>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
-
-Every other master on the bus must use the new settings too, and no other device may use the new ID. Save to flash afterwards to keep them after a power cycle.</source>
-        <translation>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
-
-Every other master on the bus must use the new settings too, and no other device may use the new ID. Save to flash afterwards to keep them after a power cycle.</translation>
-    </message>
-    <message>
         <source>&amp;Change</source>
         <translation>&amp;Change</translation>
     </message>
@@ -3250,6 +3368,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Restore &amp;factory settings…</source>
         <translation>Restore &amp;factory settings…</translation>
+    </message>
+    <message>
+        <source>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
+
+Every other master on the bus must use the new settings too, and no other device may use the new ID. Unsaved, they last until the next power-off.</source>
+        <translation>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
+
+Every other master on the bus must use the new settings too, and no other device may use the new ID. Unsaved, they last until the next power-off.</translation>
+    </message>
+    <message>
+        <source>Save to flash at the new settings (else lost at power-off)</source>
+        <translation>Save to flash at the new settings (else lost at power-off)</translation>
     </message>
 </context>
 <context>
@@ -3767,6 +3897,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</source>
         <translation>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</translation>
     </message>
+    <message>
+        <source>Save each id to flash (else lost at power-off)</source>
+        <translation>Save each id to flash (else lost at power-off)</translation>
+    </message>
+    <message>
+        <source>Without saving, a controller is back at id %1 and %2 baud after its next power-off.</source>
+        <translation>Without saving, a controller is back at id %1 and %2 baud after its next power-off.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::IdChange</name>
@@ -3841,6 +3979,26 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>device id %1 → %2: the controller answers at id %2</source>
         <translation>device id %1 → %2: the controller answers at id %2</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1, but the register map has no save_to_flash: the id lasts until the power is switched off</source>
+        <translation>the controller answers at id %1, but the register map has no save_to_flash: the id lasts until the power is switched off</translation>
+    </message>
+    <message>
+        <source>Saving to flash at id %1</source>
+        <translation>Saving to flash at id %1</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1, but saving to flash failed (%2): the id lasts until the power is switched off; save to flash again</source>
+        <translation>the controller answers at id %1, but saving to flash failed (%2): the id lasts until the power is switched off; save to flash again</translation>
+    </message>
+    <message>
+        <source>; saved to flash</source>
+        <translation>; saved to flash</translation>
+    </message>
+    <message>
+        <source>; not saved to flash: lost at power-off</source>
+        <translation>; not saved to flash: lost at power-off</translation>
     </message>
 </context>
 <context>
@@ -4852,6 +5010,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: no controller to report on</source>
         <translation>%1: no controller to report on</translation>
     </message>
+    <message>
+        <source>%1 -- simulator, not a machine</source>
+        <translation>%1 -- simulator, not a machine</translation>
+    </message>
+    <message>
+        <source>built-in simulator -- not a machine</source>
+        <translation>built-in simulator -- not a machine</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MachineStrip</name>
@@ -5226,14 +5392,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation> (discarded: %1)</translation>
     </message>
     <message>
-        <source> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers</source>
-        <translation> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers</translation>
-    </message>
-    <message>
-        <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers</source>
-        <translation> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers</translation>
-    </message>
-    <message>
         <source>stale/foreign answer discarded: %1</source>
         <translation>stale/foreign answer discarded: %1</translation>
     </message>
@@ -5252,6 +5410,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source> -- it answered %1 s ago: busy (writing its flash?), switched off, or a disturbed line</source>
         <translation> -- it answered %1 s ago: busy (writing its flash?), switched off, or a disturbed line</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</source>
+        <translation> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</source>
+        <translation> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</translation>
     </message>
 </context>
 <context>
@@ -6256,6 +6422,349 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::PendantActions</name>
+    <message>
+        <source>A replay serves no pendant: close the session log first</source>
+        <translation>A replay serves no pendant: close the session log first</translation>
+    </message>
+    <message>
+        <source>A profile file edited without a controller serves no pendant</source>
+        <translation>A profile file edited without a controller serves no pendant</translation>
+    </message>
+    <message>
+        <source>A phone or tablet as the pendant: watch, E-STOP, and jog when you allow it</source>
+        <translation>A phone or tablet as the pendant: watch, E-STOP, and jog when you allow it</translation>
+    </message>
+    <message>
+        <source>Pendant: jogging from %1</source>
+        <translation>Pendant: jogging from %1</translation>
+    </message>
+    <message>
+        <source>Pendant: on, no phone yet</source>
+        <translation>Pendant: on, no phone yet</translation>
+    </message>
+    <message>
+        <source>Pendant: 1 phone watching</source>
+        <translation>Pendant: 1 phone watching</translation>
+    </message>
+    <message>
+        <source>Pendant: %1 phones watching</source>
+        <translation>Pendant: %1 phones watching</translation>
+    </message>
+    <message>
+        <source>Pendant…</source>
+        <translation>Pendant…</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantControl</name>
+    <message>
+        <source>no hold from the pendant for %1 ms</source>
+        <translation>no hold from the pendant for %1 ms</translation>
+    </message>
+    <message>
+        <source>the pendant stopped</source>
+        <translation>the pendant stopped</translation>
+    </message>
+    <message>
+        <source>jogging from the pendant was turned off</source>
+        <translation>jogging from the pendant was turned off</translation>
+    </message>
+    <message>
+        <source>Jogging from the pendant is not allowed in the window</source>
+        <translation>Jogging from the pendant is not allowed in the window</translation>
+    </message>
+    <message>
+        <source>another phone took control</source>
+        <translation>another phone took control</translation>
+    </message>
+    <message>
+        <source>the phone gave up control</source>
+        <translation>the phone gave up control</translation>
+    </message>
+    <message>
+        <source>the window took control back</source>
+        <translation>the window took control back</translation>
+    </message>
+    <message>
+        <source>the phone&apos;s connection closed</source>
+        <translation>the phone&apos;s connection closed</translation>
+    </message>
+    <message>
+        <source>Take control first</source>
+        <translation>Take control first</translation>
+    </message>
+    <message>
+        <source>Another phone holds control</source>
+        <translation>Another phone holds control</translation>
+    </message>
+    <message>
+        <source>There is no motor %1</source>
+        <translation>There is no motor %1</translation>
+    </message>
+    <message>
+        <source>Motor %1 does not move</source>
+        <translation>Motor %1 does not move</translation>
+    </message>
+    <message>
+        <source>A step must be greater than 0</source>
+        <translation>A step must be greater than 0</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantDialog</name>
+    <message>
+        <source>Pendant</source>
+        <translation>Pendant</translation>
+    </message>
+    <message>
+        <source>A phone or tablet on the same network becomes the pendant: scan the code or type the address into its browser. It shows the positions, inputs and outputs and has an E-STOP; it jogs only while you allow it here.</source>
+        <translation>A phone or tablet on the same network becomes the pendant: scan the code or type the address into its browser. It shows the positions, inputs and outputs and has an E-STOP; it jogs only while you allow it here.</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>&amp;Port:</translation>
+    </message>
+    <message>
+        <source>Allow jogging from the pendant</source>
+        <translation>Allow jogging from the pendant</translation>
+    </message>
+    <message>
+        <source>Take control back</source>
+        <translation>Take control back</translation>
+    </message>
+    <message>
+        <source>Phones connected:</source>
+        <translation>Phones connected:</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>Address</translation>
+    </message>
+    <message>
+        <source>Browser</source>
+        <translation>Browser</translation>
+    </message>
+    <message>
+        <source>Since</source>
+        <translation>Since</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Disconnect</translation>
+    </message>
+    <message>
+        <source>The phone is no safety device: the machine&apos;s own E-STOP circuit stays the safety.</source>
+        <translation>The phone is no safety device: the machine&apos;s own E-STOP circuit stays the safety.</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Close</translation>
+    </message>
+    <message>
+        <source>QR code of the pendant&apos;s address</source>
+        <translation>QR code of the pendant&apos;s address</translation>
+    </message>
+    <message>
+        <source>&amp;Stop the pendant</source>
+        <translation>&amp;Stop the pendant</translation>
+    </message>
+    <message>
+        <source>&amp;Start the pendant</source>
+        <translation>&amp;Start the pendant</translation>
+    </message>
+    <message>
+        <source>The pendant is off.</source>
+        <translation>The pendant is off.</translation>
+    </message>
+    <message>
+        <source>Pendant address: %1</source>
+        <translation>Pendant address: %1</translation>
+    </message>
+    <message>
+        <source>Control: %1</source>
+        <translation>Control: %1</translation>
+    </message>
+    <message>
+        <source>Control: nobody (the window)</source>
+        <translation>Control: nobody (the window)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantPage</name>
+    <message>
+        <source>StepCom pendant</source>
+        <translation>StepCom pendant</translation>
+    </message>
+    <message>
+        <source>Motor 1 position</source>
+        <translation>Motor 1 position</translation>
+    </message>
+    <message>
+        <source>Motor 2 position</source>
+        <translation>Motor 2 position</translation>
+    </message>
+    <message>
+        <source>Motor 1 forward</source>
+        <translation>Motor 1 forward</translation>
+    </message>
+    <message>
+        <source>Motor 1 reverse</source>
+        <translation>Motor 1 reverse</translation>
+    </message>
+    <message>
+        <source>Motor 2 forward</source>
+        <translation>Motor 2 forward</translation>
+    </message>
+    <message>
+        <source>Motor 2 reverse</source>
+        <translation>Motor 2 reverse</translation>
+    </message>
+    <message>
+        <source>Motor 1</source>
+        <translation>Motor 1</translation>
+    </message>
+    <message>
+        <source>Motor 2</source>
+        <translation>Motor 2</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <source>Take control</source>
+        <translation>Take control</translation>
+    </message>
+    <message>
+        <source>Give up control</source>
+        <translation>Give up control</translation>
+    </message>
+    <message>
+        <source>You hold control: hold a button to jog</source>
+        <translation>You hold control: hold a button to jog</translation>
+    </message>
+    <message>
+        <source>%1 holds control</source>
+        <translation>%1 holds control</translation>
+    </message>
+    <message>
+        <source>Watching only: jogging is not allowed in the window</source>
+        <translation>Watching only: jogging is not allowed in the window</translation>
+    </message>
+    <message>
+        <source>Jogging is allowed: take control to jog</source>
+        <translation>Jogging is allowed: take control to jog</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>idle</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>running</translation>
+    </message>
+    <message>
+        <source>at a limit</source>
+        <translation>at a limit</translation>
+    </message>
+    <message>
+        <source>referenced</source>
+        <translation>referenced</translation>
+    </message>
+    <message>
+        <source>not referenced</source>
+        <translation>not referenced</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>Inputs</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>Outputs</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Link</translation>
+    </message>
+    <message>
+        <source>port closed</source>
+        <translation>port closed</translation>
+    </message>
+    <message>
+        <source>asking…</source>
+        <translation>asking…</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>not answering</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>answering</translation>
+    </message>
+    <message>
+        <source>Device %1</source>
+        <translation>Device %1</translation>
+    </message>
+    <message>
+        <source>%1 (id %2)</source>
+        <translation>%1 (id %2)</translation>
+    </message>
+    <message>
+        <source>no data</source>
+        <translation>no data</translation>
+    </message>
+    <message>
+        <source>updated %1 s ago</source>
+        <translation>updated %1 s ago</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Step</translation>
+    </message>
+    <message>
+        <source>Motor %1 step −</source>
+        <translation>Motor %1 step −</translation>
+    </message>
+    <message>
+        <source>Motor %1 step +</source>
+        <translation>Motor %1 step +</translation>
+    </message>
+    <message>
+        <source>The pendant was stopped in StepCom</source>
+        <translation>The pendant was stopped in StepCom</translation>
+    </message>
+    <message>
+        <source>StepCom disconnected this phone</source>
+        <translation>StepCom disconnected this phone</translation>
+    </message>
+    <message>
+        <source>Connection lost: reload the page</source>
+        <translation>Connection lost: reload the page</translation>
+    </message>
+    <message>
+        <source>This phone is no safety device: the machine&apos;s own E-STOP is.</source>
+        <translation>This phone is no safety device: the machine&apos;s own E-STOP is.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantServer</name>
+    <message>
+        <source>&apos;%1&apos; is not [ADDRESS:]PORT: the port must be a number from 0 to 65535</source>
+        <translation>&apos;%1&apos; is not [ADDRESS:]PORT: the port must be a number from 0 to 65535</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not [ADDRESS:]PORT: &apos;%2&apos; is not an IP address</source>
+        <translation>&apos;%1&apos; is not [ADDRESS:]PORT: &apos;%2&apos; is not an IP address</translation>
+    </message>
+    <message>
+        <source>The pendant cannot listen on %1 port %2: %3</source>
+        <translation>The pendant cannot listen on %1 port %2: %3</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::PlotPage</name>
     <message>
         <source>Plots</source>
@@ -6396,6 +6905,41 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>poll %1/%2 (%3)</source>
         <translation>poll %1/%2 (%3)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PortSurvey</name>
+    <message>
+        <source>lock file %1</source>
+        <translation>lock file %1</translation>
+    </message>
+    <message>
+        <source>has it open</source>
+        <translation>has it open</translation>
+    </message>
+    <message>
+        <source>whether another program holds it is not known here</source>
+        <translation>whether another program holds it is not known here</translation>
+    </message>
+    <message>
+        <source>free, as far as this user can see</source>
+        <translation>free, as far as this user can see</translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation>free</translation>
+    </message>
+    <message>
+        <source>%1 (pid %2, %3)</source>
+        <translation>%1 (pid %2, %3)</translation>
+    </message>
+    <message>
+        <source>a program</source>
+        <translation>a program</translation>
+    </message>
+    <message>
+        <source>held by %1</source>
+        <translation>held by %1</translation>
     </message>
 </context>
 <context>
@@ -6979,6 +7523,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</source>
         <translation>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;source&quot; is &quot;simulator&quot; or absent, found &quot;%1&quot;</source>
+        <translation>&quot;metadata&quot;: &quot;source&quot; is &quot;simulator&quot; or absent, found &quot;%1&quot;</translation>
     </message>
 </context>
 <context>
@@ -9199,18 +9747,6 @@ file and its checklist, no controller needed;
 --id 1,2,3: every controller in one document)</translation>
     </message>
     <message>
-        <source>find every controller on the line (--port or --rtu-tcp;
---tcp: ids only) at --bauds, --parity and --ids; a table
-(or --json) of id, baud, parity and what answered;
---probe-timeout MS for slow controllers; exit 0 found,
-1 none, 2 usage, 3 link error</source>
-        <translation>find every controller on the line (--port or --rtu-tcp;
---tcp: ids only) at --bauds, --parity and --ids; a table
-(or --json) of id, baud, parity and what answered;
---probe-timeout MS for slow controllers; exit 0 found,
-1 none, 2 usage, 3 link error</translation>
-    </message>
-    <message>
         <source>replay a session log (--log FILE or the window&apos;s):
 --events, --at TIME [--json], --diff T1 T2; no
 controller needed</source>
@@ -9281,6 +9817,30 @@ same, 1 different, 3 link or device error)</translation>
     <message>
         <source>One command&apos;s help: stepcomctl NAME --help</source>
         <translation>One command&apos;s help: stepcomctl NAME --help</translation>
+    </message>
+    <message>
+        <source>find every controller on the line (--port, --rtu-tcp or
+--sim; --tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</source>
+        <translation>find every controller on the line (--port, --rtu-tcp or
+--sim; --tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</translation>
+    </message>
+    <message>
+        <source>list the serial ports: stable by-id name, adapter
+(vendor, product, serial number) and whether another
+program holds it; no controller needed</source>
+        <translation>list the serial ports: stable by-id name, adapter
+(vendor, product, serial number) and whether another
+program holds it; no controller needed</translation>
+    </message>
+    <message>
+        <source>the built-in simulator starts from the factory again (id 1, 9600 baud)</source>
+        <translation>the built-in simulator starts from the factory again (id 1, 9600 baud)</translation>
     </message>
 </context>
 </TS>

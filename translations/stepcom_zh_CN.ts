@@ -82,6 +82,22 @@
         <source>A profile to edit without a controller, or a session log or support bundle to replay.</source>
         <translation>要在不连接控制器时编辑的参数文件，或要回放的会话日志或支持包。</translation>
     </message>
+    <message>
+        <source>Start the built-in simulator from the factory again: forget what it saved to flash.</source>
+        <translation>让内置仿真器恢复出厂状态：清除它保存到闪存的内容。</translation>
+    </message>
+    <message>
+        <source>Start the phone pendant at launch (watch only) on this port, 0 for any free one; prints its address.</source>
+        <translation>启动时在此端口启动手机手持器（仅监视），0 表示任一空闲端口；并打印其地址。</translation>
+    </message>
+    <message>
+        <source>[address:]port</source>
+        <translation>[地址:]端口</translation>
+    </message>
+    <message>
+        <source>Allow jogging from the pendant from launch.</source>
+        <translation>启动时即允许从手持器点动。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -321,6 +337,17 @@
     </message>
 </context>
 <context>
+    <name>stepcom::BuiltinSimulator</name>
+    <message>
+        <source>cannot remove %1: %2</source>
+        <translation>无法删除 %1：%2</translation>
+    </message>
+    <message>
+        <source>cannot make the folder of %1</source>
+        <translation>无法创建 %1 所在的文件夹</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BusActions</name>
     <message>
         <source>Assign device ids…</source>
@@ -329,6 +356,26 @@
     <message>
         <source>Give each controller of a new line its own id, one controller at a time</source>
         <translation>为新总线上的每台控制器逐台分配各自的 ID</translation>
+    </message>
+    <message>
+        <source>the built-in simulator is reset to the factory</source>
+        <translation>内置仿真器已恢复出厂状态</translation>
+    </message>
+    <message>
+        <source>The built-in simulator could not be reset: %1</source>
+        <translation>无法重置内置仿真器：%1</translation>
+    </message>
+    <message>
+        <source>The built-in simulator is back at the factory: id 1, 9600 baud, nothing saved. Connect to it again to start it.</source>
+        <translation>内置仿真器已恢复出厂状态：ID 1，9600 波特，未保存任何内容。重新连接即可启动它。</translation>
+    </message>
+    <message>
+        <source>Reset the built-in simulator to factory</source>
+        <translation>将内置仿真器恢复出厂状态</translation>
+    </message>
+    <message>
+        <source>Forget what the built-in simulator saved to flash: it starts again as it leaves the factory</source>
+        <translation>清除内置仿真器保存到闪存的内容：它将以出厂状态重新启动</translation>
     </message>
 </context>
 <context>
@@ -746,6 +793,10 @@
     <message>
         <source>Accepted by (customer)</source>
         <translation>验收人（客户）</translation>
+    </message>
+    <message>
+        <source>Read from StepCom&apos;s built-in simulator, not from a machine: nothing here can be signed for a machine.</source>
+        <translation>读自 StepCom 内置仿真器，而非真实机器：此处不能为任何机器签字。</translation>
     </message>
 </context>
 <context>
@@ -1622,6 +1673,18 @@
         <source>Link, as measured</source>
         <translation>实测通信</translation>
     </message>
+    <message>
+        <source>StepCom&apos;s built-in simulator -- not a machine</source>
+        <translation>StepCom 内置仿真器 —— 不是真实机器</translation>
+    </message>
+    <message>
+        <source>%1 -- simulator, not a machine</source>
+        <translation>%1 —— 仿真器，不是真实机器</translation>
+    </message>
+    <message>
+        <source>SIMULATOR -- NOT A MACHINE: these values were read from StepCom&apos;s built-in simulator. This sheet certifies no machine.</source>
+        <translation>仿真器 —— 不是真实机器：这些值读自 StepCom 内置仿真器。本报告不证明任何机器。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ConnectionPage</name>
@@ -1898,6 +1961,25 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CtlLinkAdvice</name>
+    <message>
+        <source>not saved to flash: the built-in simulator starts its next run with the id and baud it saved (add --save-to-flash to keep them)</source>
+        <translation>未保存到闪存：内置仿真器下次运行时使用它已保存的 ID 和波特率（加 --save-to-flash 可保留新设置）</translation>
+    </message>
+    <message>
+        <source>not saved to flash: after the next power-off the controller answers at the id and baud it saved before (add --save-to-flash to keep them)</source>
+        <translation>未保存到闪存：下次断电后，控制器将以之前保存的 ID 和波特率应答（加 --save-to-flash 可保留新设置）</translation>
+    </message>
+    <message>
+        <source>the controller now speaks %1 baud on its RS-485 side: set the converter&apos;s (gateway&apos;s) serial side to %1 baud too, or it no longer reaches the controller</source>
+        <translation>控制器的 RS-485 端现在使用 %1 波特：请把转换器（网关）的串口也设为 %1 波特，否则它将无法再连到控制器</translation>
+    </message>
+    <message>
+        <source>next commands: stepcomctl %1 ...</source>
+        <translation>后续命令：stepcomctl %1 ...</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>no sample was read: every poll failed (see the errors above)</source>
@@ -1958,10 +2040,6 @@
     <message>
         <source>host:port</source>
         <translation>主机:端口</translation>
-    </message>
-    <message>
-        <source>Use the built-in simulated controller.</source>
-        <translation>使用内置仿真控制器。</translation>
     </message>
     <message>
         <source>Baud rate: 4800, 9600, 19200 or 38400 (default 9600).</source>
@@ -2264,8 +2342,20 @@
         <translation>--days：“%1”不是天数</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, report, replay, bundle)</source>
-        <translation>未给出命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、scan、report、replay、bundle）</translation>
+        <source>Use the built-in simulated controller (it keeps what it saved to flash between runs).</source>
+        <translation>使用内置仿真控制器（它在多次运行之间保留已保存到闪存的内容）。</translation>
+    </message>
+    <message>
+        <source>Start the built-in simulator from the factory again (id 1, 9600 baud): forget what it saved to flash. Alone, or before a --sim command.</source>
+        <translation>让内置仿真器恢复出厂状态（ID 1，9600 波特）：清除它保存到闪存的内容。可单独使用，或用在 --sim 命令之前。</translation>
+    </message>
+    <message>
+        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, ports, report, replay, bundle)</source>
+        <translation>未给出命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、scan、ports、report、replay、bundle）</translation>
+    </message>
+    <message>
+        <source>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</source>
+        <translation>--baud：“%1”不是 4800、9600、19200 或 38400</translation>
     </message>
 </context>
 <context>
@@ -2619,10 +2709,6 @@
         <translation>此控制器不支持 %1</translation>
     </message>
     <message>
-        <source>scan: give the line to scan: --port, --rtu-tcp or --tcp (the built-in simulator is one controller at a known id; scan stepcom-sim --pty instead)</source>
-        <translation>scan：请给出要扫描的线路：--port、--rtu-tcp 或 --tcp（内置仿真器是 ID 已知的一台控制器；请改为扫描 stepcom-sim --pty）</translation>
-    </message>
-    <message>
         <source>scan takes no arguments (&apos;%1&apos;): give --bauds, --parity and --ids</source>
         <translation>scan 不接受参数（“%1”）：请用 --bauds、--parity 和 --ids</translation>
     </message>
@@ -2723,6 +2809,46 @@
         <translation>
             <numerusform>（本命令另有 %n 次读取得到相同结果）</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>next commands: stepcomctl %1 ...</source>
+        <translation>后续命令：stepcomctl %1 ...</translation>
+    </message>
+    <message>
+        <source>id %1 lasts until the power is switched off, then the controller answers at the id in its flash again (id 1 from the factory); add --save-to-flash to keep it</source>
+        <translation>ID %1 只保持到断电为止，之后控制器将重新以闪存中的 ID 应答（出厂为 ID 1）；加 --save-to-flash 可保留它</translation>
+    </message>
+    <message>
+        <source>scan: give the line to scan: --port, --rtu-tcp, --tcp or --sim</source>
+        <translation>scan：请给出要扫描的线路：--port、--rtu-tcp、--tcp 或 --sim</translation>
+    </message>
+    <message>
+        <source>it has no serial line here</source>
+        <translation>它在这里没有串行线路</translation>
+    </message>
+    <message>
+        <source>ports takes no arguments (&apos;%1&apos;)</source>
+        <translation>ports 不带参数（“%1”）</translation>
+    </message>
+    <message>
+        <source>no serial port found: is the USB adapter plugged in? (its driver&apos;s messages: sudo dmesg | tail)</source>
+        <translation>未找到串口：USB 适配器插好了吗？（驱动信息：sudo dmesg | tail）</translation>
+    </message>
+    <message>
+        <source>S/N %1</source>
+        <translation>序列号 %1</translation>
+    </message>
+    <message>
+        <source>stable name: %1</source>
+        <translation>固定名称：%1</translation>
+    </message>
+    <message>
+        <source>no permission to open it: add yourself to its group (ls -l %1; usually dialout), then log in again</source>
+        <translation>没有打开它的权限：请把自己加入它所属的组（ls -l %1；通常为 dialout），然后重新登录</translation>
+    </message>
+    <message>
+        <source>open it with: stepcomctl --port %1 read device.id</source>
+        <translation>打开方式：stepcomctl --port %1 read device.id</translation>
     </message>
 </context>
 <context>
@@ -3120,14 +3246,6 @@
         <translation>将控制器从 %1 更改为 %2？</translation>
     </message>
     <message>
-        <source>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
-
-Every other master on the bus must use the new settings too, and no other device may use the new ID. Save to flash afterwards to keep them after a power cycle.</source>
-        <translation>控制器会立即切换。StepCom 随之切换并检查控制器是否应答；如果没有应答，可以用原设置重新连接。
-
-总线上的其他主站也必须改用新设置，并且新 ID 不能与其他设备重复。之后请保存到闪存，使设置在断电重启后仍然有效。</translation>
-    </message>
-    <message>
         <source>&amp;Change</source>
         <translation>更改(&amp;C)</translation>
     </message>
@@ -3230,6 +3348,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Restore &amp;factory settings…</source>
         <translation>恢复出厂设置(&amp;F)…</translation>
+    </message>
+    <message>
+        <source>The controller switches at once. StepCom follows it and checks that it answers; if it does not, you can reconnect with the old settings.
+
+Every other master on the bus must use the new settings too, and no other device may use the new ID. Unsaved, they last until the next power-off.</source>
+        <translation>控制器会立即切换。StepCom 随之切换并检查控制器是否应答；如果没有应答，可以用原设置重新连接。
+
+总线上的其他主站也必须改用新设置，并且新 ID 不能与其他设备重复。未保存时，新设置只保持到下次断电。</translation>
+    </message>
+    <message>
+        <source>Save to flash at the new settings (else lost at power-off)</source>
+        <translation>在新设置下保存到闪存（否则断电后丢失）</translation>
     </message>
 </context>
 <context>
@@ -3742,6 +3872,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Connect to the line first (the port the controllers are on, %1 baud, device id %2), then press Start.</source>
         <translation>请先连接总线（控制器所在的端口，%1 波特率，设备 ID %2），再按“开始”。</translation>
     </message>
+    <message>
+        <source>Save each id to flash (else lost at power-off)</source>
+        <translation>把每个 ID 保存到闪存（否则断电后丢失）</translation>
+    </message>
+    <message>
+        <source>Without saving, a controller is back at id %1 and %2 baud after its next power-off.</source>
+        <translation>不保存时，控制器下次断电后会回到 ID %1、%2 波特。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::IdChange</name>
@@ -3816,6 +3954,26 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>device id %1 → %2: the controller answers at id %2</source>
         <translation>设备 ID %1 → %2：控制器在 ID %2 上应答</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1, but the register map has no save_to_flash: the id lasts until the power is switched off</source>
+        <translation>控制器在 ID %1 应答，但寄存器表中没有 save_to_flash：该 ID 只保持到断电为止</translation>
+    </message>
+    <message>
+        <source>Saving to flash at id %1</source>
+        <translation>正在 ID %1 保存到闪存</translation>
+    </message>
+    <message>
+        <source>the controller answers at id %1, but saving to flash failed (%2): the id lasts until the power is switched off; save to flash again</source>
+        <translation>控制器在 ID %1 应答，但保存到闪存失败（%2）：该 ID 只保持到断电为止；请再次保存到闪存</translation>
+    </message>
+    <message>
+        <source>; saved to flash</source>
+        <translation>；已保存到闪存</translation>
+    </message>
+    <message>
+        <source>; not saved to flash: lost at power-off</source>
+        <translation>；未保存到闪存：断电后丢失</translation>
     </message>
 </context>
 <context>
@@ -4824,6 +4982,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>%1: no controller to report on</source>
         <translation>%1：没有可报告的控制器</translation>
     </message>
+    <message>
+        <source>%1 -- simulator, not a machine</source>
+        <translation>%1 —— 仿真器，不是真实机器</translation>
+    </message>
+    <message>
+        <source>built-in simulator -- not a machine</source>
+        <translation>内置仿真器 —— 不是真实机器</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MachineStrip</name>
@@ -5196,14 +5362,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>（已丢弃：%1）</translation>
     </message>
     <message>
-        <source> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers</source>
-        <translation> —— 请检查站号（%1）、主机和端口以及转换器的串口设置；总线扫描可以找到控制器</translation>
-    </message>
-    <message>
-        <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers</source>
-        <translation> —— 请检查站号（%1）、波特率和校验（%2）以及 A/B 接线；总线扫描可以找到控制器</translation>
-    </message>
-    <message>
         <source>stale/foreign answer discarded: %1</source>
         <translation>已丢弃过时/无关的应答：%1</translation>
     </message>
@@ -5222,6 +5380,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source> -- it answered %1 s ago: busy (writing its flash?), switched off, or a disturbed line</source>
         <translation> —— 它在 %1 s 前还应答过：正忙（正在写闪存？）、已断电，或线路受到干扰</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the host and port, and the converter&apos;s serial settings; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</source>
+        <translation> —— 请检查站号（%1）、主机和端口以及转换器的串口设置；总线扫描可以找到控制器（窗口中的“扫描总线”，或 stepcomctl scan）</translation>
+    </message>
+    <message>
+        <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</source>
+        <translation> —— 请检查站号（%1）、波特率和校验（%2）以及 A/B 接线；总线扫描可以找到控制器（窗口中的“扫描总线”，或 stepcomctl scan）</translation>
     </message>
 </context>
 <context>
@@ -6218,6 +6384,349 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::PendantActions</name>
+    <message>
+        <source>A replay serves no pendant: close the session log first</source>
+        <translation>回放时不提供手持器：请先关闭会话日志</translation>
+    </message>
+    <message>
+        <source>A profile file edited without a controller serves no pendant</source>
+        <translation>离线编辑参数文件时不提供手持器</translation>
+    </message>
+    <message>
+        <source>A phone or tablet as the pendant: watch, E-STOP, and jog when you allow it</source>
+        <translation>将手机或平板用作手持器：监视、急停，并在允许时点动</translation>
+    </message>
+    <message>
+        <source>Pendant: jogging from %1</source>
+        <translation>手持器：%1 正在点动</translation>
+    </message>
+    <message>
+        <source>Pendant: on, no phone yet</source>
+        <translation>手持器：已开启，尚无手机</translation>
+    </message>
+    <message>
+        <source>Pendant: 1 phone watching</source>
+        <translation>手持器：1 部手机在监视</translation>
+    </message>
+    <message>
+        <source>Pendant: %1 phones watching</source>
+        <translation>手持器：%1 部手机在监视</translation>
+    </message>
+    <message>
+        <source>Pendant…</source>
+        <translation>手持器…</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantControl</name>
+    <message>
+        <source>no hold from the pendant for %1 ms</source>
+        <translation>%1 毫秒内未收到手持器的按住信号</translation>
+    </message>
+    <message>
+        <source>the pendant stopped</source>
+        <translation>手持器已停止</translation>
+    </message>
+    <message>
+        <source>jogging from the pendant was turned off</source>
+        <translation>已关闭从手持器点动</translation>
+    </message>
+    <message>
+        <source>Jogging from the pendant is not allowed in the window</source>
+        <translation>窗口中未允许从手持器点动</translation>
+    </message>
+    <message>
+        <source>another phone took control</source>
+        <translation>另一部手机取得了控制权</translation>
+    </message>
+    <message>
+        <source>the phone gave up control</source>
+        <translation>手机已交出控制权</translation>
+    </message>
+    <message>
+        <source>the window took control back</source>
+        <translation>窗口收回了控制权</translation>
+    </message>
+    <message>
+        <source>the phone&apos;s connection closed</source>
+        <translation>手机的连接已关闭</translation>
+    </message>
+    <message>
+        <source>Take control first</source>
+        <translation>请先取得控制权</translation>
+    </message>
+    <message>
+        <source>Another phone holds control</source>
+        <translation>另一部手机持有控制权</translation>
+    </message>
+    <message>
+        <source>There is no motor %1</source>
+        <translation>没有电机 %1</translation>
+    </message>
+    <message>
+        <source>Motor %1 does not move</source>
+        <translation>电机 %1 未运动</translation>
+    </message>
+    <message>
+        <source>A step must be greater than 0</source>
+        <translation>步距必须大于 0</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantDialog</name>
+    <message>
+        <source>Pendant</source>
+        <translation>手持器</translation>
+    </message>
+    <message>
+        <source>A phone or tablet on the same network becomes the pendant: scan the code or type the address into its browser. It shows the positions, inputs and outputs and has an E-STOP; it jogs only while you allow it here.</source>
+        <translation>同一网络中的手机或平板可作为手持器：扫描二维码，或在其浏览器中输入地址。它显示位置、输入和输出，并带有急停；只有在此处允许时才能点动。</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>端口(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>Allow jogging from the pendant</source>
+        <translation>允许从手持器点动</translation>
+    </message>
+    <message>
+        <source>Take control back</source>
+        <translation>收回控制权</translation>
+    </message>
+    <message>
+        <source>Phones connected:</source>
+        <translation>已连接的手机：</translation>
+    </message>
+    <message>
+        <source>Address</source>
+        <translation>地址</translation>
+    </message>
+    <message>
+        <source>Browser</source>
+        <translation>浏览器</translation>
+    </message>
+    <message>
+        <source>Since</source>
+        <translation>连接时间</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>断开(&amp;D)</translation>
+    </message>
+    <message>
+        <source>The phone is no safety device: the machine&apos;s own E-STOP circuit stays the safety.</source>
+        <translation>手机不是安全装置：机器自身的急停回路仍是安全保障。</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>QR code of the pendant&apos;s address</source>
+        <translation>手持器地址的二维码</translation>
+    </message>
+    <message>
+        <source>&amp;Stop the pendant</source>
+        <translation>停止手持器(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Start the pendant</source>
+        <translation>启动手持器(&amp;S)</translation>
+    </message>
+    <message>
+        <source>The pendant is off.</source>
+        <translation>手持器已关闭。</translation>
+    </message>
+    <message>
+        <source>Pendant address: %1</source>
+        <translation>手持器地址：%1</translation>
+    </message>
+    <message>
+        <source>Control: %1</source>
+        <translation>控制权：%1</translation>
+    </message>
+    <message>
+        <source>Control: nobody (the window)</source>
+        <translation>控制权：无人（窗口）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantPage</name>
+    <message>
+        <source>StepCom pendant</source>
+        <translation>StepCom 手持器</translation>
+    </message>
+    <message>
+        <source>Motor 1 position</source>
+        <translation>电机 1 位置</translation>
+    </message>
+    <message>
+        <source>Motor 2 position</source>
+        <translation>电机 2 位置</translation>
+    </message>
+    <message>
+        <source>Motor 1 forward</source>
+        <translation>电机 1 正转</translation>
+    </message>
+    <message>
+        <source>Motor 1 reverse</source>
+        <translation>电机 1 反转</translation>
+    </message>
+    <message>
+        <source>Motor 2 forward</source>
+        <translation>电机 2 正转</translation>
+    </message>
+    <message>
+        <source>Motor 2 reverse</source>
+        <translation>电机 2 反转</translation>
+    </message>
+    <message>
+        <source>Motor 1</source>
+        <translation>电机 1</translation>
+    </message>
+    <message>
+        <source>Motor 2</source>
+        <translation>电机 2</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>Take control</source>
+        <translation>取得控制权</translation>
+    </message>
+    <message>
+        <source>Give up control</source>
+        <translation>交出控制权</translation>
+    </message>
+    <message>
+        <source>You hold control: hold a button to jog</source>
+        <translation>您持有控制权：按住按钮即可点动</translation>
+    </message>
+    <message>
+        <source>%1 holds control</source>
+        <translation>%1 持有控制权</translation>
+    </message>
+    <message>
+        <source>Watching only: jogging is not allowed in the window</source>
+        <translation>仅监视：窗口中未允许点动</translation>
+    </message>
+    <message>
+        <source>Jogging is allowed: take control to jog</source>
+        <translation>已允许点动：取得控制权后即可点动</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>静止</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>运行中</translation>
+    </message>
+    <message>
+        <source>at a limit</source>
+        <translation>在限位处</translation>
+    </message>
+    <message>
+        <source>referenced</source>
+        <translation>已回零</translation>
+    </message>
+    <message>
+        <source>not referenced</source>
+        <translation>未回零</translation>
+    </message>
+    <message>
+        <source>Inputs</source>
+        <translation>输入</translation>
+    </message>
+    <message>
+        <source>Outputs</source>
+        <translation>输出</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>port closed</source>
+        <translation>端口已关闭</translation>
+    </message>
+    <message>
+        <source>asking…</source>
+        <translation>询问中…</translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>answering</source>
+        <translation>有应答</translation>
+    </message>
+    <message>
+        <source>Device %1</source>
+        <translation>设备 %1</translation>
+    </message>
+    <message>
+        <source>%1 (id %2)</source>
+        <translation>%1（ID %2）</translation>
+    </message>
+    <message>
+        <source>no data</source>
+        <translation>无数据</translation>
+    </message>
+    <message>
+        <source>updated %1 s ago</source>
+        <translation>%1 秒前更新</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>步距</translation>
+    </message>
+    <message>
+        <source>Motor %1 step −</source>
+        <translation>电机 %1 步进 −</translation>
+    </message>
+    <message>
+        <source>Motor %1 step +</source>
+        <translation>电机 %1 步进 +</translation>
+    </message>
+    <message>
+        <source>The pendant was stopped in StepCom</source>
+        <translation>手持器已在 StepCom 中停止</translation>
+    </message>
+    <message>
+        <source>StepCom disconnected this phone</source>
+        <translation>StepCom 已断开这部手机</translation>
+    </message>
+    <message>
+        <source>Connection lost: reload the page</source>
+        <translation>连接已断开：请重新加载页面</translation>
+    </message>
+    <message>
+        <source>This phone is no safety device: the machine&apos;s own E-STOP is.</source>
+        <translation>这部手机不是安全装置：机器自身的急停才是。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PendantServer</name>
+    <message>
+        <source>&apos;%1&apos; is not [ADDRESS:]PORT: the port must be a number from 0 to 65535</source>
+        <translation>“%1”不是 [地址:]端口：端口必须是 0 到 65535 之间的数字</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not [ADDRESS:]PORT: &apos;%2&apos; is not an IP address</source>
+        <translation>“%1”不是 [地址:]端口：“%2”不是 IP 地址</translation>
+    </message>
+    <message>
+        <source>The pendant cannot listen on %1 port %2: %3</source>
+        <translation>手持器无法在 %1 的端口 %2 上监听：%3</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::PlotPage</name>
     <message>
         <source>Plots</source>
@@ -6355,6 +6864,41 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>poll %1/%2 (%3)</source>
         <translation>轮询 %1/%2（%3）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PortSurvey</name>
+    <message>
+        <source>lock file %1</source>
+        <translation>锁文件 %1</translation>
+    </message>
+    <message>
+        <source>has it open</source>
+        <translation>已打开它</translation>
+    </message>
+    <message>
+        <source>whether another program holds it is not known here</source>
+        <translation>此处无法得知是否被其他程序占用</translation>
+    </message>
+    <message>
+        <source>free, as far as this user can see</source>
+        <translation>空闲（就当前用户所能看到的而言）</translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation>空闲</translation>
+    </message>
+    <message>
+        <source>%1 (pid %2, %3)</source>
+        <translation>%1（pid %2，%3）</translation>
+    </message>
+    <message>
+        <source>a program</source>
+        <translation>某个程序</translation>
+    </message>
+    <message>
+        <source>held by %1</source>
+        <translation>被占用：%1</translation>
     </message>
 </context>
 <context>
@@ -6931,6 +7475,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>&quot;metadata&quot;: &quot;unsupported&quot;: %1 is no parameter of the map</source>
         <translation>&quot;metadata&quot;：&quot;unsupported&quot;：%1 不是寄存器表中的参数</translation>
+    </message>
+    <message>
+        <source>&quot;metadata&quot;: &quot;source&quot; is &quot;simulator&quot; or absent, found &quot;%1&quot;</source>
+        <translation>&quot;metadata&quot;：&quot;source&quot; 应为 &quot;simulator&quot; 或不写，实际为 &quot;%1&quot;</translation>
     </message>
 </context>
 <context>
@@ -9140,18 +9688,6 @@ file and its checklist, no controller needed;
 --id 1,2,3：所有控制器合为一份文档）</translation>
     </message>
     <message>
-        <source>find every controller on the line (--port or --rtu-tcp;
---tcp: ids only) at --bauds, --parity and --ids; a table
-(or --json) of id, baud, parity and what answered;
---probe-timeout MS for slow controllers; exit 0 found,
-1 none, 2 usage, 3 link error</source>
-        <translation>找出线路上的所有控制器（--port 或 --rtu-tcp；
---tcp 只扫描 ID），按 --bauds、--parity 和 --ids 尝试；
-以表格（或 --json）列出 ID、波特率、校验和应答的设备；
-慢速控制器用 --probe-timeout 毫秒；退出码 0 找到，
-1 没有，2 用法错误，3 链路错误</translation>
-    </message>
-    <message>
         <source>replay a session log (--log FILE or the window&apos;s):
 --events, --at TIME [--json], --diff T1 T2; no
 controller needed</source>
@@ -9221,6 +9757,30 @@ same, 1 different, 3 link or device error)</source>
     <message>
         <source>One command&apos;s help: stepcomctl NAME --help</source>
         <translation>单个命令的帮助：stepcomctl 命令名 --help</translation>
+    </message>
+    <message>
+        <source>find every controller on the line (--port, --rtu-tcp or
+--sim; --tcp: ids only) at --bauds, --parity and --ids; a table
+(or --json) of id, baud, parity and what answered;
+--probe-timeout MS for slow controllers; exit 0 found,
+1 none, 2 usage, 3 link error</source>
+        <translation>找出线路上的所有控制器（--port、--rtu-tcp 或
+--sim；--tcp 只扫描 ID），按 --bauds、--parity 和 --ids 尝试；
+以表格（或 --json）列出 ID、波特率、校验和应答的设备；
+慢速控制器用 --probe-timeout 毫秒；退出码 0 找到，
+1 没有，2 用法错误，3 链路错误</translation>
+    </message>
+    <message>
+        <source>list the serial ports: stable by-id name, adapter
+(vendor, product, serial number) and whether another
+program holds it; no controller needed</source>
+        <translation>列出串口：固定的 by-id 名称、适配器
+（厂商、产品、序列号）以及是否被其他程序
+占用；无需控制器</translation>
+    </message>
+    <message>
+        <source>the built-in simulator starts from the factory again (id 1, 9600 baud)</source>
+        <translation>内置仿真器已恢复出厂状态（ID 1，9600 波特）</translation>
     </message>
 </context>
 </TS>
