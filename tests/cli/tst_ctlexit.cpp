@@ -4,6 +4,7 @@
 #include "programrun.h"
 #include "testpaths.h"
 
+#include <QDir>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -113,12 +114,15 @@ private Q_SLOTS:
 
     void aBackupThatCannotBeSavedIsNotAUsageError()
     {
-        // The backups' folder cannot be made under a file: not done (1), not bad usage (2).
-        QFile blocker(dir.filePath(QStringLiteral("blocker")));
+        // The backups' folder cannot be made, a file stands in its place: not done (1), not bad
+        // usage (2). The rest of the data folder stays usable (the simulator keeps its flash there).
+        const QString data = dir.filePath(QStringLiteral("data"));
+        QVERIFY(QDir().mkpath(data + QStringLiteral("/StepCom/stepcom")));
+        QFile blocker(data + QStringLiteral("/StepCom/stepcom/backups"));
         QVERIFY(blocker.open(QIODevice::WriteOnly));
         blocker.close();
         ProgramOptions options;
-        options.environment = {QStringLiteral("XDG_DATA_HOME=") + blocker.fileName()};
+        options.environment = {QStringLiteral("XDG_DATA_HOME=") + data};
         const ProgramRun r = runProgram(
             QStringLiteral("stepcomctl"),
             {QStringLiteral("--sim"), QStringLiteral("command"), QStringLiteral("save_to_flash")},
