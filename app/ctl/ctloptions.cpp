@@ -123,6 +123,8 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          tr("file")},
         {QStringLiteral("count"), tr("monitor: number of samples (default: until stopped)."),
          tr("n")},
+        {QStringLiteral("seconds"), tr("listen: stop after N seconds (default: until Ctrl-C)."),
+         tr("n")},
         {QStringLiteral("interval"),
          tr("monitor: ms between samples (default: as fast as the "
             "link allows)."),
@@ -254,6 +256,10 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         (!toInt(parser.value(QStringLiteral("interval")), &o.intervalMs) || o.intervalMs < 0))
         return tr("--interval: '%1' is not a number of ms")
             .arg(parser.value(QStringLiteral("interval")));
+    if (parser.isSet(QStringLiteral("seconds")) &&
+        (!toInt(parser.value(QStringLiteral("seconds")), &o.seconds) || o.seconds < 1))
+        return tr("--seconds: '%1' is not a positive number of seconds")
+            .arg(parser.value(QStringLiteral("seconds")));
     if (!toInt(parser.value(QStringLiteral("days")), &o.days) || o.days < 0)
         return tr("--days: '%1' is not a number of days").arg(parser.value(QStringLiteral("days")));
     o.logFile = parser.value(QStringLiteral("log"));

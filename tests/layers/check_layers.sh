@@ -19,6 +19,7 @@ declare -A allowed=(
     [core/report]="map device motion profile commissioning"
     [core/sim]="map bus motion session"
     [core/support]="map bus device session commissioning"
+    [core/listen]="map bus session support"
     [ui]="map device motion session line profile commissioning report i18n support"
 )
 bad=0

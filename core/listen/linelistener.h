@@ -1,0 +1,71 @@
+#pragma once
+
+#include "bus/linksettings.h"
+#include "listen/framefinder.h"
+#include "listen/listendecoder.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+
+QT_BEGIN_NAMESPACE
+class QSerialPort;
+class QTimer;
+QT_END_NAMESPACE
+
+namespace stepcom {
+
+class RegisterMap;
+
+// A serial line another master drives, heard from the side: the port opened read-only (a
+// listener never puts a byte on the line), its bytes through FrameFinder and ListenDecoder as
+// they arrive, every frame and every paired request said at once. The time base is ms since
+// open(); a quiet line is looked at every kTickMs so a frame cut short and a request never
+// answered are said without waiting for the next byte.
+class LineListener : public QObject
+{
+    Q_OBJECT
+public:
+    static constexpr int kTickMs = 20;
+
+    explicit LineListener(const RegisterMap *map, QObject *parent = nullptr);
+    ~LineListener() override;
+
+    // Opens the port read-only at the line's baud, parity and stop bits; false and why not.
+    bool open(const LinkSettings &settings, QString *error);
+    void close();
+    bool isOpen() const;
+    const LinkSettings &settings() const { return m_settings; }
+
+    // Bytes heard from a source other than the port (a recorded line, a test): as if they had
+    // arrived at `ms`.
+    void feed(const QByteArray &bytes, qint64 ms);
+    // The quiet line until `ms` (the timer calls it with the clock).
+    void idle(qint64 ms);
+    // The end: a request still waiting had no answer; bytes held are no frame.
+    void finish();
+    // ms since open() on the listener's clock.
+    qint64 now() const { return m_clock.isValid() ? m_clock.elapsed() : 0; }
+
+    const FrameFinder &finder() const { return m_finder; }
+    const ListenDecoder &decoder() const { return m_decoder; }
+
+Q_SIGNALS:
+    void frameHeard(const stepcom::HeardFrame &frame);
+    void heard(const stepcom::HeardEvent &event);
+    // The port failed (unplugged): nothing more will be heard.
+    void lost(const QString &reason);
+
+private:
+    void readPort();
+    void emitAll(const QList<HeardFrame> &frames);
+
+    const RegisterMap *m_map;
+    LinkSettings m_settings;
+    QSerialPort *m_port = nullptr;
+    QTimer *m_tick = nullptr;
+    QElapsedTimer m_clock;
+    FrameFinder m_finder;
+    ListenDecoder m_decoder;
+};
+
+} // namespace stepcom
