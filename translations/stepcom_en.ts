@@ -1914,6 +1914,10 @@
         <source>id %1: %2 requests, none answered</source>
         <translation>id %1: %2 requests, none answered</translation>
     </message>
+    <message>
+        <source>adapter: %1</source>
+        <translation>adapter: %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlMonitor</name>
@@ -2285,6 +2289,30 @@
     <message>
         <source>--seconds: &apos;%1&apos; is not a positive number of seconds</source>
         <translation>--seconds: &apos;%1&apos; is not a positive number of seconds</translation>
+    </message>
+    <message>
+        <source>Who switches an RS-485 adapter&apos;s direction: auto (the adapter itself, default), kernel (the driver&apos;s RS-485 mode, RTS on send) or rts (StepCom raises RTS for each request).</source>
+        <translation>Who switches an RS-485 adapter&apos;s direction: auto (the adapter itself, default), kernel (the driver&apos;s RS-485 mode, RTS on send) or rts (StepCom raises RTS for each request).</translation>
+    </message>
+    <message>
+        <source>mode</source>
+        <translation>mode</translation>
+    </message>
+    <message>
+        <source>--rs485 kernel: the delays before and after sending, in us (default 0,0).</source>
+        <translation>--rs485 kernel: the delays before and after sending, in us (default 0,0).</translation>
+    </message>
+    <message>
+        <source>before,after</source>
+        <translation>before,after</translation>
+    </message>
+    <message>
+        <source>--rs485: &apos;%1&apos; is not auto, kernel or rts</source>
+        <translation>--rs485: &apos;%1&apos; is not auto, kernel or rts</translation>
+    </message>
+    <message>
+        <source>--rs485-delays: &apos;%1&apos; is not BEFORE,AFTER in us (e.g. 0,500)</source>
+        <translation>--rs485-delays: &apos;%1&apos; is not BEFORE,AFTER in us (e.g. 0,500)</translation>
     </message>
 </context>
 <context>

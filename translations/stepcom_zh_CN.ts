@@ -1904,6 +1904,10 @@
         <source>id %1: %2 requests, none answered</source>
         <translation>站号 %1：%2 个请求，均无应答</translation>
     </message>
+    <message>
+        <source>adapter: %1</source>
+        <translation>适配器：%1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlMonitor</name>
@@ -2274,6 +2278,30 @@
     <message>
         <source>--seconds: &apos;%1&apos; is not a positive number of seconds</source>
         <translation>--seconds：“%1”不是正的秒数</translation>
+    </message>
+    <message>
+        <source>Who switches an RS-485 adapter&apos;s direction: auto (the adapter itself, default), kernel (the driver&apos;s RS-485 mode, RTS on send) or rts (StepCom raises RTS for each request).</source>
+        <translation>由谁切换 RS-485 适配器的收发方向：auto（适配器自己，默认）、kernel（驱动的 RS-485 模式，发送时置 RTS）或 rts（StepCom 为每个请求拉高 RTS）。</translation>
+    </message>
+    <message>
+        <source>mode</source>
+        <translation>模式</translation>
+    </message>
+    <message>
+        <source>--rs485 kernel: the delays before and after sending, in us (default 0,0).</source>
+        <translation>--rs485 kernel：发送前后的延时，单位 us（默认 0,0）。</translation>
+    </message>
+    <message>
+        <source>before,after</source>
+        <translation>前,后</translation>
+    </message>
+    <message>
+        <source>--rs485: &apos;%1&apos; is not auto, kernel or rts</source>
+        <translation>--rs485：“%1”不是 auto、kernel 或 rts</translation>
+    </message>
+    <message>
+        <source>--rs485-delays: &apos;%1&apos; is not BEFORE,AFTER in us (e.g. 0,500)</source>
+        <translation>--rs485-delays：“%1”不是以 us 为单位的 前,后（例如 0,500）</translation>
     </message>
 </context>
 <context>

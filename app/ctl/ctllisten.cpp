@@ -58,6 +58,8 @@ void CtlListen::start()
                  .arg(m_line.portName)
                  .arg(m_line.baud)
           << Qt::endl;
+    if (const QString adapter = m_listener->adapterText(); !adapter.isEmpty())
+        m_err << tr("adapter: %1").arg(adapter) << Qt::endl;
     if (m_seconds > 0)
         QTimer::singleShot(m_seconds * 1000, this, [this] { end(0); });
 }

@@ -67,8 +67,8 @@ QList<PortHolders::Holder> PortHolders::holders(const QString &port)
     };
     // The lock file: Qt's QLockFile writes the pid on its first line, UUCP locks pad it.
     // Named as Qt names it: the path below /dev with '/' as '_' (LCK..ttyUSB0, LCK..pts_5).
-    QString base = device.startsWith(QLatin1String("/dev/")) ? device.mid(5)
-                                                             : QFileInfo(device).fileName();
+    QString base =
+        device.startsWith(QLatin1String("/dev/")) ? device.mid(5) : QFileInfo(device).fileName();
     base.replace(QLatin1Char('/'), QLatin1Char('_'));
     const QString lockName = QStringLiteral("LCK..") + base;
     for (const QString &dir : std::as_const(roots().lockDirs)) {

@@ -95,14 +95,15 @@ SerialAdapter SerialAdapter::identify(const QString &port)
     a.tty = QFileInfo(path).fileName();
     if (path.startsWith(QLatin1String("/dev/pts/"))) {
         a.family = Family::PseudoTerminal;
+        a.driver = QStringLiteral("pty");
         return a;
     }
     const QString ttyDir = QStringLiteral("%1/class/tty/%2").arg(root(), a.tty);
     const QString device = QFileInfo(ttyDir + QStringLiteral("/device")).canonicalFilePath();
     if (device.isEmpty())
         return a;
-    a.driver = QFileInfo(QFileInfo(device + QStringLiteral("/driver")).canonicalFilePath())
-                   .fileName();
+    a.driver =
+        QFileInfo(QFileInfo(device + QStringLiteral("/driver")).canonicalFilePath()).fileName();
     a.family = familyOf(a.driver, a.tty);
     const QString latency = readText(device + QStringLiteral("/latency_timer"));
     bool ok = false;
@@ -137,10 +138,10 @@ QString SerialAdapter::name() const
 {
     const QString id = vendorId.toLower() + QLatin1Char(':') + productId.toLower();
     static const QList<std::pair<const char *, const char *>> known = {
-        {"0403:6001", "FTDI FT232R"},  {"0403:6014", "FTDI FT232H"}, {"0403:6015", "FTDI FT-X"},
-        {"0403:6010", "FTDI FT2232"},  {"0403:6011", "FTDI FT4232"}, {"1a86:7523", "CH340"},
-        {"1a86:5523", "CH341"},        {"1a86:55d4", "CH9102"},      {"10c4:ea60", "CP210x"},
-        {"067b:2303", "PL2303"},       {"067b:23a3", "PL2303GC"},
+        {"0403:6001", "FTDI FT232R"}, {"0403:6014", "FTDI FT232H"}, {"0403:6015", "FTDI FT-X"},
+        {"0403:6010", "FTDI FT2232"}, {"0403:6011", "FTDI FT4232"}, {"1a86:7523", "CH340"},
+        {"1a86:5523", "CH341"},       {"1a86:55d4", "CH9102"},      {"10c4:ea60", "CP210x"},
+        {"067b:2303", "PL2303"},      {"067b:23a3", "PL2303GC"},
     };
     for (const auto &[ids, label] : known)
         if (id == QLatin1String(ids))
@@ -168,7 +169,8 @@ QString SerialAdapter::name() const
 
 QString SerialAdapter::summary() const
 {
-    const QString n = name();
+    // A pseudo-terminal is no adapter: the line's summary stays as it was.
+    const QString n = family == Family::PseudoTerminal ? QString() : name();
     if (n.isEmpty())
         return {};
     QString text = n;

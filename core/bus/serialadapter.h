@@ -17,12 +17,12 @@ struct SerialAdapter
 public:
     enum class Family {
         Unknown,
-        Ftdi,         // ftdi_sio
-        Ch34x,        // ch341-uart (CH340, CH341)
-        Cp210x,       // cp210x
-        Pl2303,       // pl2303
-        CdcAcm,       // cdc_acm: a microcontroller's own USB serial
-        NativeUart,   // serial8250 and other on-board UARTs
+        Ftdi,       // ftdi_sio
+        Ch34x,      // ch341-uart (CH340, CH341)
+        Cp210x,     // cp210x
+        Pl2303,     // pl2303
+        CdcAcm,     // cdc_acm: a microcontroller's own USB serial
+        NativeUart, // serial8250 and other on-board UARTs
         PseudoTerminal,
     };
     struct Quirk
@@ -53,7 +53,8 @@ public:
 
     // "FTDI FT232R", "CH340", "CP210x", "native UART", "pseudo-terminal", or the maker's names.
     QString name() const;
-    // "FTDI FT232R, latency timer 16 ms", "CH340 (ch341-uart)"; empty when nothing is known.
+    // "FTDI FT232R, latency timer 16 ms", "CH340 (ch341-uart)"; empty when nothing is known
+    // and for a pseudo-terminal.
     QString summary() const;
     // This family's quirks, translated; empty when none are known.
     QString quirk() const;

@@ -70,8 +70,7 @@ QList<int> FrameFinder::candidateLengths(const QByteArray &b)
     case 0x05:
     case 0x06:
         // Request and answer alike; a coil is set by FF00 or cleared by 0000 only.
-        if (fc == 0x06 || b.size() < 6 ||
-            ((wordAt(b, 4) == 0xFF00 || wordAt(b, 4) == 0x0000)))
+        if (fc == 0x06 || b.size() < 6 || ((wordAt(b, 4) == 0xFF00 || wordAt(b, 4) == 0x0000)))
             out << 8;
         break;
     case 0x0F:

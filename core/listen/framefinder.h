@@ -18,9 +18,9 @@ class FrameFinder
 public:
     struct Stats
     {
-        qint64 bytes = 0;      // every byte fed
-        qint64 frames = 0;     // whole frames with a good CRC
-        qint64 damaged = 0;    // runs of 4 bytes or more that made no frame (a bad CRC, a lost byte)
+        qint64 bytes = 0;   // every byte fed
+        qint64 frames = 0;  // whole frames with a good CRC
+        qint64 damaged = 0; // runs of 4 bytes or more that made no frame (a bad CRC, a lost byte)
         qint64 strayBytes = 0; // runs of 1-3 bytes that made no frame (a stray 0x00, noise)
     };
 

@@ -112,7 +112,8 @@ QList<QJsonObject> HeardEvent::toJson(qint64 startMs) const
     base.insert(QStringLiteral("id"), unit);
     base.insert(QStringLiteral("fc"), fc);
     base.insert(QStringLiteral("kind"), kindName(kind));
-    base.insert(QStringLiteral("address"), (isRegisterFunction(fc) ? registerBase(fc) : 1) + address);
+    base.insert(QStringLiteral("address"),
+                (isRegisterFunction(fc) ? registerBase(fc) : 1) + address);
     base.insert(QStringLiteral("count"), count);
     if (answerMs >= 0)
         base.insert(QStringLiteral("answer_ms"), qRound(answerMs * 10) / 10.0);

@@ -12,8 +12,8 @@ namespace stepcom {
 // One value a heard request or answer carried, named by the register map.
 struct HeardValue
 {
-    QString key;    // "motor1.speed" (as `stepcomctl params --json` names it)
-    qint64 raw = 0; // as on the wire, scale applied
+    QString key;        // "motor1.speed" (as `stepcomctl params --json` names it)
+    qint64 raw = 0;     // as on the wire, scale applied
     double value = 0.0; // engineering value
     QString unit;
     QString text; // "777 rpm", or an enum's label
@@ -38,12 +38,12 @@ public:
     qint64 requestMs = 0; // when the request ended
     int unit = 0;
     int fc = 0;
-    quint16 address = 0; // protocol address (40001 is 0)
-    int count = 0;       // registers or coils
-    QList<HeardValue> values;      // read: the values answered; write: the values written
-    QMap<quint16, quint16> words;  // registers no parameter of the map names whole
-    QList<bool> coils;             // coils a command set or a coil read answered
-    double answerMs = -1.0;        // request's end to the answer's start; < 0 none
+    quint16 address = 0;          // protocol address (40001 is 0)
+    int count = 0;                // registers or coils
+    QList<HeardValue> values;     // read: the values answered; write: the values written
+    QMap<quint16, quint16> words; // registers no parameter of the map names whole
+    QList<bool> coils;            // coils a command set or a coil read answered
+    double answerMs = -1.0;       // request's end to the answer's start; < 0 none
     int exception = 0;
     QByteArray request; // the frames, CRC included
     QByteArray answer;

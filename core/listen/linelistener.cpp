@@ -1,6 +1,7 @@
 #include "listen/linelistener.h"
 
 #include "bus/portholders.h"
+#include "bus/portsetup.h"
 
 #include <QSerialPort>
 #include <QTimer>
@@ -28,18 +29,29 @@ bool LineListener::open(const LinkSettings &settings, QString *error)
     m_port->setPortName(settings.portName);
     // Read-only: whatever happens, a listener cannot put a byte on the line.
     if (!m_port->open(QIODevice::ReadOnly)) {
-        *error = PortHolders::openFailure(settings.portName, m_port->error(),
-                                          m_port->errorString());
+        *error =
+            PortHolders::openFailure(settings.portName, m_port->error(), m_port->errorString());
         delete std::exchange(m_port, nullptr);
         return false;
     }
     const bool set = m_port->setBaudRate(settings.baud) &&
                      m_port->setDataBits(QSerialPort::Data8) &&
-                     m_port->setParity(settings.parity) &&
-                     m_port->setStopBits(settings.stopBits) &&
+                     m_port->setParity(settings.parity) && m_port->setStopBits(settings.stopBits) &&
                      m_port->setFlowControl(QSerialPort::NoFlowControl);
     if (!set) {
         *error = m_port->errorString();
+        close();
+        return false;
+    }
+    m_adapter = SerialAdapter::identify(settings.portName);
+    // Frames are said as soon as their bytes are in: an FTDI chip should not hold them 16 ms.
+    if (m_adapter.family == SerialAdapter::Family::Ftdi &&
+        PortSetup::requestLowLatency(int(m_port->handle())).isEmpty())
+        m_adapter.refreshLatency();
+    // RTS-switched RS-485 direction: RTS low keeps the adapter receiving, never driving.
+    if (const QString refused = PortSetup::applyRs485(int(m_port->handle()), settings, m_adapter);
+        !refused.isEmpty()) {
+        *error = refused;
         close();
         return false;
     }

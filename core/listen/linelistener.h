@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bus/linksettings.h"
+#include "bus/serialadapter.h"
 #include "listen/framefinder.h"
 #include "listen/listendecoder.h"
 
@@ -35,6 +36,8 @@ public:
     void close();
     bool isOpen() const;
     const LinkSettings &settings() const { return m_settings; }
+    // The adapter behind the port, once open (SerialAdapter::summary(), empty when not known).
+    QString adapterText() const { return m_adapter.summary(); }
 
     // Bytes heard from a source other than the port (a recorded line, a test): as if they had
     // arrived at `ms`.
@@ -61,6 +64,7 @@ private:
 
     const RegisterMap *m_map;
     LinkSettings m_settings;
+    SerialAdapter m_adapter;
     QSerialPort *m_port = nullptr;
     QTimer *m_tick = nullptr;
     QElapsedTimer m_clock;

@@ -51,10 +51,9 @@ bool ListenLog::open(const QString &path, QString *error)
         *error = tr("cannot write the session log %1: %2").arg(path, m_file.errorString());
         return false;
     }
-    const QString description =
-        tr("%1 %2 baud, listening (another master drives the line)")
-            .arg(m_line.portName)
-            .arg(m_line.baud);
+    const QString description = tr("%1 %2 baud, listening (another master drives the line)")
+                                    .arg(m_line.portName)
+                                    .arg(m_line.baud);
     QString header = SessionLog::header(nullptr, 1, description);
     header += QStringLiteral("# map: %1\n").arg(m_map.identity());
     header += QStringLiteral("# line: transport=rtu port=%1 baud=%2 parity=%3 stop=%4 id=0\n")
@@ -62,7 +61,8 @@ bool ListenLog::open(const QString &path, QString *error)
                   .arg(m_line.baud)
                   .arg(LinkSettings::parityName(m_line.parity))
                   .arg(m_line.stopBits == QSerialPort::TwoStop ? 2 : 1);
-    header += QStringLiteral("# listen: StepCom only listened; the requests are another master's\n");
+    header +=
+        QStringLiteral("# listen: StepCom only listened; the requests are another master's\n");
     writeLine(header);
     return m_error.isEmpty();
 }
@@ -73,15 +73,13 @@ void ListenLog::write(const HeardEvent &e)
         return;
     const QString text = e.text();
     if (!e.request.isEmpty()) {
-        writeLine(SessionLog::formatLine(TrafficEntry{m_start.addMSecs(e.requestMs),
-                                                      TrafficEntry::Direction::Sent, kindOf(e),
-                                                      e.request, e.answer.isEmpty() ? text
-                                                                                    : QString()}));
+        writeLine(SessionLog::formatLine(
+            TrafficEntry{m_start.addMSecs(e.requestMs), TrafficEntry::Direction::Sent, kindOf(e),
+                         e.request, e.answer.isEmpty() ? text : QString()}));
     }
     if (!e.answer.isEmpty())
-        writeLine(SessionLog::formatLine(TrafficEntry{m_start.addMSecs(e.ms),
-                                                      TrafficEntry::Direction::Received,
-                                                      kindOf(e), e.answer, text}));
+        writeLine(SessionLog::formatLine(TrafficEntry{
+            m_start.addMSecs(e.ms), TrafficEntry::Direction::Received, kindOf(e), e.answer, text}));
 }
 
 void ListenLog::note(const char *kind, const QString &text, qint64 ms)
@@ -95,8 +93,8 @@ void ListenLog::writeLine(const QString &line)
     const QByteArray bytes = line.toUtf8();
     // Flushed at once: after a pulled plug the last frames are what support needs.
     if (m_file.write(bytes) != bytes.size() || !m_file.flush()) {
-        m_error = tr("cannot write the session log %1: %2")
-                      .arg(m_file.fileName(), m_file.errorString());
+        m_error =
+            tr("cannot write the session log %1: %2").arg(m_file.fileName(), m_file.errorString());
         m_file.close();
     }
 }

@@ -106,7 +106,7 @@ private Q_SLOTS:
             << QStringList{"command", "factory_reset"} << "add --yes";
         QTest::newRow("unknown command") << QStringList{"frobnicate"}
                                          << "unknown command 'frobnicate' (params, read, write, "
-                                            "command, move, monitor, dump, diff, "
+                                            "command, move, monitor, listen, dump, diff, "
                                             "apply, assign-id, scan, report, replay, bundle)";
         QTest::newRow("read unknown") << QStringList{"read", "nope"} << "unknown parameter 'nope'";
     }

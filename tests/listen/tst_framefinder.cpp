@@ -72,10 +72,9 @@ private Q_SLOTS:
         const QByteArray all = kRead + kReadAnswer + kWrite + kWrite + kWriteMany +
                                kWriteManyAnswer + kCoil + kCoil + kInputs + kInputsAnswer + kRead +
                                kException + kCoils + kCoilsAnswer;
-        const QList<QByteArray> allFrames = {kRead,  kReadAnswer, kWrite,   kWrite,
-                                             kWriteMany, kWriteManyAnswer, kCoil, kCoil,
-                                             kInputs, kInputsAnswer, kRead, kException,
-                                             kCoils, kCoilsAnswer};
+        const QList<QByteArray> allFrames = {
+            kRead, kReadAnswer, kWrite,        kWrite, kWriteMany, kWriteManyAnswer, kCoil,
+            kCoil, kInputs,     kInputsAnswer, kRead,  kException, kCoils,           kCoilsAnswer};
         QTest::newRow("every function code in one packet")
             << QList<QByteArray>{all} << QList<int>{} << allFrames << 0 << 0;
         for (const int size : {1, 2, 3, 5, 7, 16, 64})
@@ -110,8 +109,8 @@ private Q_SLOTS:
             << QList<QByteArray>{rtu("01 2B 0E 01 00") + kWrite} << QList<int>{}
             << QList<QByteArray>{kWrite} << 1 << 0;
         QTest::newRow("a request whose answer never comes")
-            << QList<QByteArray>{kRead, kRead} << QList<int>{1}
-            << QList<QByteArray>{kRead, kRead} << 0 << 0;
+            << QList<QByteArray>{kRead, kRead} << QList<int>{1} << QList<QByteArray>{kRead, kRead}
+            << 0 << 0;
     }
 
     void findsFrames()
@@ -159,7 +158,8 @@ private Q_SLOTS:
         QTest::newRow("FC10 with a byte count that does not fit")
             << QByteArray::fromHex("01100006000205") << QList<int>{8};
         QTest::newRow("exception") << QByteArray::fromHex("0183") << QList<int>{5};
-        QTest::newRow("exception of an unknown code") << QByteArray::fromHex("01AB") << QList<int>{};
+        QTest::newRow("exception of an unknown code")
+            << QByteArray::fromHex("01AB") << QList<int>{};
         QTest::newRow("function 0") << QByteArray::fromHex("0100") << QList<int>{};
     }
 

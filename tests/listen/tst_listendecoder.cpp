@@ -75,12 +75,10 @@ private Q_SLOTS:
             << QStringList{"PLC sent motor1.move = on, motor1.forward = off to id 1 "
                            "(answered in 0.9 ms)"};
         QTest::newRow("FC04 input registers")
-            << QList<Heard>{{"01 04 00 10 00 01", 0}, {"01 04 02 12 34", 4}}
-            << QStringList{"read"}
+            << QList<Heard>{{"01 04 00 10 00 01", 0}, {"01 04 02 12 34", 4}} << QStringList{"read"}
             << QStringList{"PLC read 30017 from id 1: 30017 = 4660 (answered in 2.2 ms)"};
         QTest::newRow("exception")
-            << QList<Heard>{{"01 03 00 70 00 0C", 0}, {"01 83 02", 5}}
-            << QStringList{"exception"}
+            << QList<Heard>{{"01 03 00 70 00 0C", 0}, {"01 83 02", 5}} << QStringList{"exception"}
             << QStringList{"id 1 refused the PLC's FC03 at 40113-40124: illegal data address (02)"};
         QTest::newRow("a request whose answer never comes, then the next")
             << QList<Heard>{{"03 03 00 00 00 02", 0},

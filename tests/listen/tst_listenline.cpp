@@ -23,7 +23,8 @@ private Q_SLOTS:
     void initTestCase()
     {
         if (QProcess::execute(QStringLiteral("/usr/bin/python3"),
-                              {QStringLiteral("-c"), QStringLiteral("import pymodbus.client")}) != 0)
+                              {QStringLiteral("-c"), QStringLiteral("import pymodbus.client")}) !=
+            0)
             QSKIP("python3-pymodbus is missing (scripts/deps.sh --test)");
     }
 
@@ -98,8 +99,7 @@ private Q_SLOTS:
             if (s.startsWith(u"write "))
                 writes << QStringLiteral("motor1.speed=%1").arg(s.section(u' ', 2).toInt());
             else if (s.startsWith(u"write32 "))
-                writes << QStringLiteral("motor2.pitch=%1")
-                              .arg(s.section(u' ', 2).toInt() / 100.0);
+                writes << QStringLiteral("motor2.pitch=%1").arg(s.section(u' ', 2).toInt() / 100.0);
         }
         QStringList heardWrites;
         int reads = 0;
@@ -130,8 +130,9 @@ private Q_SLOTS:
         QVERIFY(hub.bytesSent(0) > 0);
         QVERIFY(hub.bytesSent(3) > 0);
         // What was heard is a session log stepcomctl replays like any other.
-        const ProgramRun replay = runProgram(
-            QStringLiteral("stepcomctl"), {QStringLiteral("replay"), logPath, QStringLiteral("--events")});
+        const ProgramRun replay =
+            runProgram(QStringLiteral("stepcomctl"),
+                       {QStringLiteral("replay"), logPath, QStringLiteral("--events")});
         QVERIFY2(replay.exitCode == 0, qPrintable(replay.err));
         QVERIFY2(replay.out.contains(QStringLiteral("motor1.speed")), qPrintable(replay.out));
         hub.close();

@@ -51,8 +51,8 @@ Q_SIGNALS:
 private:
     struct Party
     {
-        int fd = -1;      // the master (or the attached terminal)
-        int slave = -1;   // kept open (pseudo-terminals of our own)
+        int fd = -1;    // the master (or the attached terminal)
+        int slave = -1; // kept open (pseudo-terminals of our own)
         QString path;
         bool attached = false;
         QSocketNotifier *reader = nullptr;
