@@ -4808,6 +4808,89 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ListenMode</name>
+    <message>
+        <source>Listening needs the window free: disconnect, and close any profile file or replay first.</source>
+        <translation>Listening needs the window free: disconnect, and close any profile file or replay first.</translation>
+    </message>
+    <message>
+        <source>Listening hears a serial line: choose its port on the Connection page.</source>
+        <translation>Listening hears a serial line: choose its port on the Connection page.</translation>
+    </message>
+    <message>
+        <source>Cannot listen on %1: %2</source>
+        <translation>Cannot listen on %1: %2</translation>
+    </message>
+    <message>
+        <source>Listening ended: the port %1 was lost: %2</source>
+        <translation>Listening ended: the port %1 was lost: %2</translation>
+    </message>
+    <message>
+        <source>E-STOP into the other master&apos;s line (try %1)</source>
+        <translation>E-STOP into the other master&apos;s line (try %1)</translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged by id %1</source>
+        <translation>E-STOP acknowledged by id %1</translation>
+    </message>
+    <message>
+        <source>E-STOP sent %1 times into the other master&apos;s line, and id %2 never answered it: stop the machine by its own E-STOP</source>
+        <translation>E-STOP sent %1 times into the other master&apos;s line, and id %2 never answered it: stop the machine by its own E-STOP</translation>
+    </message>
+    <message>
+        <source>listening on %1 at %2 baud: another master drives the line, StepCom sends nothing</source>
+        <translation>listening on %1 at %2 baud: another master drives the line, StepCom sends nothing</translation>
+    </message>
+    <message>
+        <source>heard on %1</source>
+        <translation>heard on %1</translation>
+    </message>
+    <message>
+        <source>Stop listening</source>
+        <translation>Stop listening</translation>
+    </message>
+    <message>
+        <source>listening ended</source>
+        <translation>listening ended</translation>
+    </message>
+    <message>
+        <source>PLC (heard)</source>
+        <translation>PLC (heard)</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <source>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it.</source>
+        <translation>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it.</translation>
+    </message>
+    <message>
+        <source>Send E-STOP</source>
+        <translation>Send E-STOP</translation>
+    </message>
+    <message>
+        <source>The E-STOP could not be sent on %1</source>
+        <translation>The E-STOP could not be sent on %1</translation>
+    </message>
+    <message>
+        <source>E-STOP sent into a line driven by another master</source>
+        <translation>E-STOP sent into a line driven by another master</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Listening on %1&lt;/b&gt; — another master drives the line. The values shown are the ones last heard in its traffic with id %2, not read by StepCom; a value never heard is unknown. Nothing is written, jogged or polled; the E-STOP asks first. The other master&apos;s writes (%3):</source>
+        <translation>&lt;b&gt;Listening on %1&lt;/b&gt; — another master drives the line. The values shown are the ones last heard in its traffic with id %2, not read by StepCom; a value never heard is unknown. Nothing is written, jogged or polled; the E-STOP asks first. The other master&apos;s writes (%3):</translation>
+    </message>
+    <message>
+        <source>Listen only (another master drives the line)</source>
+        <translation>Listen only (another master drives the line)</translation>
+    </message>
+    <message>
+        <source>The other master&apos;s writes</source>
+        <translation>The other master&apos;s writes</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::MachineActions</name>
     <message>
         <source>Apply profile to &amp;several devices…</source>

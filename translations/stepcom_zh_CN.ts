@@ -4783,6 +4783,89 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ListenMode</name>
+    <message>
+        <source>Listening needs the window free: disconnect, and close any profile file or replay first.</source>
+        <translation>监听需要窗口空闲：请先断开连接，并关闭所有参数文件或回放。</translation>
+    </message>
+    <message>
+        <source>Listening hears a serial line: choose its port on the Connection page.</source>
+        <translation>监听针对串口线路：请在连接页面选择其端口。</translation>
+    </message>
+    <message>
+        <source>Cannot listen on %1: %2</source>
+        <translation>无法在 %1 上监听：%2</translation>
+    </message>
+    <message>
+        <source>Listening ended: the port %1 was lost: %2</source>
+        <translation>监听已结束：端口 %1 已断开：%2</translation>
+    </message>
+    <message>
+        <source>E-STOP into the other master&apos;s line (try %1)</source>
+        <translation>向另一个主站的线路发送急停（第 %1 次）</translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged by id %1</source>
+        <translation>站号 %1 已确认急停</translation>
+    </message>
+    <message>
+        <source>E-STOP sent %1 times into the other master&apos;s line, and id %2 never answered it: stop the machine by its own E-STOP</source>
+        <translation>已向另一个主站的线路发送急停 %1 次，站号 %2 始终未应答：请用机器自身的急停按钮停机</translation>
+    </message>
+    <message>
+        <source>listening on %1 at %2 baud: another master drives the line, StepCom sends nothing</source>
+        <translation>正在 %1 上以 %2 波特率监听：由另一个主站驱动线路，StepCom 不发送任何数据</translation>
+    </message>
+    <message>
+        <source>heard on %1</source>
+        <translation>在 %1 上听到</translation>
+    </message>
+    <message>
+        <source>Stop listening</source>
+        <translation>停止监听</translation>
+    </message>
+    <message>
+        <source>listening ended</source>
+        <translation>监听已结束</translation>
+    </message>
+    <message>
+        <source>PLC (heard)</source>
+        <translation>PLC（听到）</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it.</source>
+        <translation>这条线路由另一个主站驱动。要向站号 %1 发送急停，插入其通信中吗？急停会在第一个静默中发出，并重复发送直到控制器应答。</translation>
+    </message>
+    <message>
+        <source>Send E-STOP</source>
+        <translation>发送急停</translation>
+    </message>
+    <message>
+        <source>The E-STOP could not be sent on %1</source>
+        <translation>无法在 %1 上发送急停</translation>
+    </message>
+    <message>
+        <source>E-STOP sent into a line driven by another master</source>
+        <translation>急停已发送到由另一个主站驱动的线路</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Listening on %1&lt;/b&gt; — another master drives the line. The values shown are the ones last heard in its traffic with id %2, not read by StepCom; a value never heard is unknown. Nothing is written, jogged or polled; the E-STOP asks first. The other master&apos;s writes (%3):</source>
+        <translation>&lt;b&gt;正在 %1 上监听&lt;/b&gt;——由另一个主站驱动线路。显示的值是在它与站号 %2 的通信中最后听到的值，并非 StepCom 读取；从未听到的值为未知。不写入、不点动、不轮询；急停会先询问。另一个主站的写入（%3）：</translation>
+    </message>
+    <message>
+        <source>Listen only (another master drives the line)</source>
+        <translation>仅监听（由另一个主站驱动线路）</translation>
+    </message>
+    <message>
+        <source>The other master&apos;s writes</source>
+        <translation>另一个主站的写入</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::MachineActions</name>
     <message>
         <source>Apply profile to &amp;several devices…</source>

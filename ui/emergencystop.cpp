@@ -22,7 +22,10 @@ EmergencyStop::~EmergencyStop()
 
 void EmergencyStop::trigger()
 {
-    m_session->emergencyStop();
+    if (m_handler)
+        m_handler();
+    else
+        m_session->emergencyStop();
     Q_EMIT triggered();
 }
 

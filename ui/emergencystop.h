@@ -3,6 +3,8 @@
 #include <QKeySequence>
 #include <QObject>
 
+#include <functional>
+
 class QToolButton;
 
 namespace stepcom {
@@ -23,6 +25,9 @@ public:
     // A new red button wired to trigger(); the caller places it.
     QToolButton *createButton(QWidget *parent);
     void trigger();
+    // While a mode drives the E-STOP itself (listening beside another master: it asks, then
+    // sends in the line's silence), it takes the trigger; empty: the session's E-STOP again.
+    void setHandler(std::function<void()> handler) { m_handler = std::move(handler); }
 
 Q_SIGNALS:
     void triggered();
@@ -32,6 +37,7 @@ protected:
 
 private:
     DeviceSession *m_session;
+    std::function<void()> m_handler;
 };
 
 } // namespace stepcom

@@ -30,6 +30,7 @@ class PageSidebar; // issue 25
 class MachineActions;
 class ProfileActions; // profiles (issue 7)
 class ReplayMode;     // replaying a session log (issue 26)
+class ListenMode;
 class DeviceListDock; // several controllers on one line (issue 16)
 class SessionLog;
 class StatusDock; // monitoring (issue 5)
@@ -73,7 +74,8 @@ public:
     MachineActions *machineActions() const { return m_machine; }  // issue 16
     OfflineActions *offlineActions() const { return m_offline; }  // issue 18
     OfflineBanner *offlineBanner() const { return m_offlineBanner; }
-    ReplayMode *replayMode() const { return m_replay; }          // issue 26
+    ReplayMode *replayMode() const { return m_replay; } // issue 26
+    ListenMode *listenMode() const { return m_listen; }
     ChecklistPage *checklistPage() const { return m_checklist; } // issue 17
     PlotPage *plotPage() const { return m_plots; }
     BackupGuard *backupGuard() const { return m_backups; } // issue 17
@@ -142,6 +144,7 @@ private:
     OfflineActions *m_offline = nullptr;  // issue 18
     OfflineBanner *m_offlineBanner = nullptr;
     ReplayMode *m_replay = nullptr; // issue 26
+    ListenMode *m_listen = nullptr; // beside another master: heard, never driven
     bool m_jogStopAwaited = false;  // jogging (issue 5): close waited for the stops once
     WriteFlow *m_writeFlow = nullptr;
     ChecklistPage *m_checklist = nullptr; // issue 17

@@ -2,6 +2,8 @@
 
 #include "bus/portholders.h"
 #include "bus/portsetup.h"
+#include "bus/rtuframe.h"
+#include "map/registermap.h"
 
 #include <QSerialPort>
 #include <QTimer>
@@ -28,7 +30,8 @@ bool LineListener::open(const LinkSettings &settings, QString *error)
     m_port = new QSerialPort(this);
     m_port->setPortName(settings.portName);
     // Read-only: whatever happens, a listener cannot put a byte on the line.
-    if (!m_port->open(QIODevice::ReadOnly)) {
+    m_outgoing.clear();
+    if (!m_port->open(m_mayTransmit ? QIODevice::ReadWrite : QIODevice::ReadOnly)) {
         *error =
             PortHolders::openFailure(settings.portName, m_port->error(), m_port->errorString());
         delete std::exchange(m_port, nullptr);
@@ -96,7 +99,12 @@ void LineListener::readPort()
 
 void LineListener::feed(const QByteArray &bytes, qint64 ms)
 {
+    m_lastByteMs = ms;
     emitAll(m_finder.feed(bytes, ms));
+    // The first silence after the other master's frame: an answer just ended a pair.
+    if (!m_outgoing.isEmpty() && !m_decoder.waiting() && m_finder.held() == 0 &&
+        (m_sentAtMs < 0 || ms - m_sentAtMs >= kAnswerWaitMs))
+        sendNow();
 }
 
 void LineListener::idle(qint64 ms)
@@ -104,6 +112,56 @@ void LineListener::idle(qint64 ms)
     emitAll(m_finder.idle(ms));
     for (const HeardEvent &e : m_decoder.idle(ms))
         Q_EMIT heard(e);
+    // Or the line has been quiet for a silence (nobody is answering anything now).
+    if (!m_outgoing.isEmpty() && ms - m_lastByteMs >= m_finder.silenceMs() &&
+        (m_sentAtMs < 0 || ms - m_sentAtMs >= kAnswerWaitMs))
+        sendNow();
+}
+
+QByteArray LineListener::emergencyStopFrame(const RegisterMap &map, int unit)
+{
+    for (const Parameter *c : map.coils()) {
+        if (c->command != CommandClass::Emergency)
+            continue;
+        QByteArray pdu;
+        pdu.append(char(c->address >> 8));
+        pdu.append(char(c->address & 0xFF));
+        pdu.append(char(0xFF));
+        pdu.append(char(0x00));
+        return RtuFrame::adu(unit, QModbusRequest(QModbusPdu::WriteSingleCoil, pdu));
+    }
+    return {};
+}
+
+bool LineListener::sendInSilence(const QByteArray &frame)
+{
+    if (!m_port || !m_mayTransmit || !m_port->isOpen())
+        return false;
+    m_outgoing = frame;
+    m_tries = 0;
+    m_sentAtMs = -1;
+    if (now() - m_lastByteMs >= m_finder.silenceMs() && !m_decoder.waiting())
+        sendNow();
+    return true;
+}
+
+void LineListener::sendNow()
+{
+    if (m_tries >= kSendTries) {
+        Q_EMIT sendFailed(std::exchange(m_outgoing, {}));
+        return;
+    }
+    ++m_tries;
+    const int fd = int(m_port->handle());
+    const bool rts = m_settings.rs485 == LinkSettings::Rs485::Rts;
+    if (rts)
+        PortSetup::setRts(fd, true);
+    m_port->write(m_outgoing);
+    m_port->flush();
+    if (rts)
+        PortSetup::endOfSend(fd);
+    m_sentAtMs = now();
+    Q_EMIT frameSent(m_outgoing, m_tries);
 }
 
 void LineListener::finish()
@@ -116,6 +174,11 @@ void LineListener::finish()
 void LineListener::emitAll(const QList<HeardFrame> &frames)
 {
     for (const HeardFrame &f : frames) {
+        // The controller's answer to what StepCom sent (a copy of it) ends the sending.
+        if (!m_outgoing.isEmpty() && m_sentAtMs >= 0 && f.bytes == m_outgoing) {
+            Q_EMIT frameAnswered(std::exchange(m_outgoing, {}));
+            continue;
+        }
         Q_EMIT frameHeard(f);
         for (const HeardEvent &e : m_decoder.frame(f))
             Q_EMIT heard(e);

@@ -45,6 +45,8 @@ public:
     QList<HeardEvent> finish();
 
     const ReplayState &state() const { return m_state; }
+    // A request of the other master waits for its answer.
+    bool waiting() const { return m_pending.has_value(); }
     const QMap<int, DeviceStats> &deviceStats() const { return m_stats; }
     int pairs() const { return m_pairs; }
     int strayAnswers() const { return m_strays; }

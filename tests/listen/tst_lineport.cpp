@@ -48,8 +48,11 @@ bool makeTty(const QString &sys, const QString &tty, const QString &driver, cons
     if (latency >= 0)
         ok = ok && writeFile(port + QStringLiteral("/latency_timer"), QByteArray::number(latency));
     if (usb) {
-        ok = ok && writeFile(usbDevice + QStringLiteral("/idVendor"), ids.section(u':', 0, 0).toLatin1()) &&
-             writeFile(usbDevice + QStringLiteral("/idProduct"), ids.section(u':', 1, 1).toLatin1()) &&
+        ok = ok &&
+             writeFile(usbDevice + QStringLiteral("/idVendor"),
+                       ids.section(u':', 0, 0).toLatin1()) &&
+             writeFile(usbDevice + QStringLiteral("/idProduct"),
+                       ids.section(u':', 1, 1).toLatin1()) &&
              writeFile(usbDevice + QStringLiteral("/product"), product.toUtf8()) &&
              writeFile(usbDevice + QStringLiteral("/serial"), serial.toUtf8());
     }
@@ -72,27 +75,34 @@ private Q_SLOTS:
         QTest::addColumn<QString>("tty");
         QTest::addColumn<QString>("summary");
         QTest::addColumn<int>("family");
-        QTest::newRow("FTDI FT232R") << "ftdi_sio" << "0403:6001" << 16 << "ttyUSB0"
+        QTest::newRow("FTDI FT232R") << "ftdi_sio"
+                                     << "0403:6001" << 16 << "ttyUSB0"
                                      << "FTDI FT232R, latency timer 16 ms, serial A5XK3RJT"
                                      << int(SerialAdapter::Family::Ftdi);
-        QTest::newRow("FTDI FT232H") << "ftdi_sio" << "0403:6014" << 1 << "ttyUSB0"
+        QTest::newRow("FTDI FT232H") << "ftdi_sio"
+                                     << "0403:6014" << 1 << "ttyUSB0"
                                      << "FTDI FT232H, latency timer 1 ms, serial A5XK3RJT"
                                      << int(SerialAdapter::Family::Ftdi);
-        QTest::newRow("CH340") << "ch341-uart" << "1a86:7523" << -1 << "ttyUSB1"
+        QTest::newRow("CH340") << "ch341-uart"
+                               << "1a86:7523" << -1 << "ttyUSB1"
                                << "CH340 (ch341-uart), serial A5XK3RJT"
                                << int(SerialAdapter::Family::Ch34x);
-        QTest::newRow("CP210x") << "cp210x" << "10c4:ea60" << -1 << "ttyUSB2"
+        QTest::newRow("CP210x") << "cp210x"
+                                << "10c4:ea60" << -1 << "ttyUSB2"
                                 << "CP210x (cp210x), serial A5XK3RJT"
                                 << int(SerialAdapter::Family::Cp210x);
-        QTest::newRow("PL2303") << "pl2303" << "067b:2303" << -1 << "ttyUSB3"
+        QTest::newRow("PL2303") << "pl2303"
+                                << "067b:2303" << -1 << "ttyUSB3"
                                 << "PL2303 (pl2303), serial A5XK3RJT"
                                 << int(SerialAdapter::Family::Pl2303);
         QTest::newRow("a microcontroller's USB serial")
-            << "cdc_acm" << "2e8a:000a" << -1 << "ttyACM0" << "Pico (cdc_acm), serial A5XK3RJT"
-            << int(SerialAdapter::Family::CdcAcm);
-        QTest::newRow("native UART") << "serial8250" << "" << -1 << "ttyS0"
-                                     << "native UART (serial8250)"
-                                     << int(SerialAdapter::Family::NativeUart);
+            << "cdc_acm"
+            << "2e8a:000a" << -1 << "ttyACM0"
+            << "Pico (cdc_acm), serial A5XK3RJT" << int(SerialAdapter::Family::CdcAcm);
+        QTest::newRow("native UART")
+            << "serial8250"
+            << "" << -1 << "ttyS0"
+            << "native UART (serial8250)" << int(SerialAdapter::Family::NativeUart);
     }
 
     void identifies()
@@ -105,8 +115,8 @@ private Q_SLOTS:
         QFETCH(int, family);
         QTemporaryDir dir;
         const QString sys = dir.filePath(QStringLiteral("sys"));
-        QVERIFY(makeTty(sys, tty, driver, ids, QStringLiteral("Pico"),
-                        QStringLiteral("A5XK3RJT"), latency));
+        QVERIFY(makeTty(sys, tty, driver, ids, QStringLiteral("Pico"), QStringLiteral("A5XK3RJT"),
+                        latency));
         SerialAdapter::setSysRoot(sys);
         const SerialAdapter a = SerialAdapter::identify(QStringLiteral("/dev/") + tty);
         QCOMPARE(a.driver, driver);
@@ -144,7 +154,8 @@ private Q_SLOTS:
         QTest::addColumn<QString>("message");
         QTest::newRow("kernel") << "kernel"
                                 << "the driver (pty) has no kernel RS-485 mode";
-        QTest::newRow("rts") << "rts" << "the driver (pty) refused to switch RTS";
+        QTest::newRow("rts") << "rts"
+                             << "the driver (pty) refused to switch RTS";
     }
 
     void rs485RefusedOnAPty()

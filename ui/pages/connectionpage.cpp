@@ -19,6 +19,7 @@
 #include <QRadioButton>
 #include <QSpinBox>
 #include <QStyle>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace stepcom {
@@ -206,7 +207,7 @@ void ConnectionPage::buildUi()
     statusLine->addWidget(m_led, 0, Qt::AlignTop);
     statusLine->addWidget(m_stateIcon, 0, Qt::AlignTop);
     statusLine->addWidget(m_status, 1);
-    auto *buttons = new QHBoxLayout;
+    auto *buttons = m_buttons = new QHBoxLayout;
     buttons->addWidget(m_connect);
     buttons->addWidget(m_disconnect);
     buttons->addStretch(1);
@@ -538,6 +539,14 @@ BusScanDialog *ConnectionPage::openBusScan()
     m_scanDialog->raise();
     m_scanDialog->activateWindow();
     return m_scanDialog;
+}
+
+void ConnectionPage::addLineAction(QAction *action)
+{
+    auto *button = new QToolButton(m_statusBox);
+    button->setDefaultAction(action);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    m_buttons->insertWidget(2, button);
 }
 
 } // namespace stepcom
