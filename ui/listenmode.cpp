@@ -102,11 +102,10 @@ bool ListenMode::start(const LinkSettings &settings, QString *why)
         Q_EMIT finished(false, tr("Listening ended: the port %1 was lost: %2").arg(port, reason));
     });
     connect(m_listener, &LineListener::frameSent, this, [this](const QByteArray &frame, int n) {
-        m_session->traffic()->add(TrafficEntry{QDateTime::currentDateTime(),
-                                               TrafficEntry::Direction::Sent,
-                                               TrafficEntry::Kind::Command, frame,
-                                               tr("E-STOP into the other master's line (try %1)")
-                                                   .arg(n)});
+        m_session->traffic()->add(
+            TrafficEntry{QDateTime::currentDateTime(), TrafficEntry::Direction::Sent,
+                         TrafficEntry::Kind::Command, frame,
+                         tr("E-STOP into the other master's line (try %1)").arg(n)});
     });
     connect(m_listener, &LineListener::frameAnswered, this, [this] {
         const QString text = tr("E-STOP acknowledged by id %1").arg(m_settings.deviceId);
@@ -172,10 +171,9 @@ void ListenMode::onHeard(const HeardEvent &e)
     const QString text = e.text();
     const QDateTime now = QDateTime::currentDateTime();
     if (!e.request.isEmpty())
-        m_session->traffic()->add(TrafficEntry{now.addMSecs(e.requestMs - e.ms),
-                                               TrafficEntry::Direction::Sent,
-                                               TrafficEntry::Kind::Read, e.request,
-                                               tr("PLC (heard)")});
+        m_session->traffic()->add(
+            TrafficEntry{now.addMSecs(e.requestMs - e.ms), TrafficEntry::Direction::Sent,
+                         TrafficEntry::Kind::Read, e.request, tr("PLC (heard)")});
     if (!e.answer.isEmpty() || e.request.isEmpty())
         m_session->traffic()->add(TrafficEntry{now, TrafficEntry::Direction::Received,
                                                TrafficEntry::Kind::Read, e.answer, text});
@@ -183,8 +181,8 @@ void ListenMode::onHeard(const HeardEvent &e)
         m_session->traffic()->addEvent(text);
     if (e.kind == HeardEvent::Kind::Write || e.kind == HeardEvent::Kind::Command) {
         ++m_heardWrites;
-        m_writes->insertItem(0, QStringLiteral("%1  %2").arg(
-                                    now.toString(QStringLiteral("HH:mm:ss.zzz")), text));
+        m_writes->insertItem(
+            0, QStringLiteral("%1  %2").arg(now.toString(QStringLiteral("HH:mm:ss.zzz")), text));
         while (m_writes->count() > kWritesKept)
             delete m_writes->takeItem(m_writes->count() - 1);
         updateBanner();
@@ -227,7 +225,8 @@ void ListenMode::askEmergencyStop()
 
 void ListenMode::sendEmergencyStop()
 {
-    const QByteArray frame = LineListener::emergencyStopFrame(m_session->map(), m_settings.deviceId);
+    const QByteArray frame =
+        LineListener::emergencyStopFrame(m_session->map(), m_settings.deviceId);
     if (!m_listener || frame.isEmpty() || !m_listener->sendInSilence(frame)) {
         Q_EMIT finished(false, tr("The E-STOP could not be sent on %1").arg(m_settings.portName));
         return;

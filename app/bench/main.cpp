@@ -4,6 +4,7 @@
 #include "benchrunner.h"
 #include "busprobe.h"
 #include "firststatusprobe.h"
+#include "listenprobe.h"
 #include "replayprobe.h"
 #include "replaywindowprobe.h"
 #include "scanprobe.h"
@@ -67,6 +68,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("no-scan"), QStringLiteral("Skip (h).")},
         {QStringLiteral("only-scan"), QStringLiteral("Run only (h), the bus scan.")},
         {QStringLiteral("no-replay"), QStringLiteral("Skip (l), the replay of an hour's log.")},
+        {QStringLiteral("no-listen"), QStringLiteral("Skip (n), listening beside a PLC.")},
+        {QStringLiteral("only-listen"), QStringLiteral("Run only (n), listening beside a PLC.")},
         {QStringLiteral("only-replay"),
          QStringLiteral("Run only (l) and (m): open a synthetic 1-hour log at 10 Hz, seek in it; "
                         "in the core, then in the window.")},
@@ -134,7 +137,8 @@ int main(int argc, char *argv[])
 
     QList<Verdict> rows;
     const bool onlyReplay = parser.isSet(QStringLiteral("only-replay"));
-    if (parser.isSet(QStringLiteral("only-scan")) || onlyReplay) {
+    const bool onlyListen = parser.isSet(QStringLiteral("only-listen"));
+    if (parser.isSet(QStringLiteral("only-scan")) || onlyReplay || onlyListen) {
         bauds.clear();
         config.traffic = false;
         config.stepcomPath.clear();
@@ -200,7 +204,7 @@ int main(int argc, char *argv[])
         rows += firstStatusVerdicts(measureFirstStatus(startBaud, config.firstStatusRuns));
     }
 
-    if (!parser.isSet(QStringLiteral("no-replay"))) {
+    if (!parser.isSet(QStringLiteral("no-replay")) && !onlyListen) {
         err << QStringLiteral("stepcom-bench: replaying a synthetic session log ...") << Qt::endl;
         rows += replayVerdicts(config.smoke ? measureReplay(60, 10) : measureReplay(3600, 10));
         if (!parser.isSet(QStringLiteral("no-replay-window"))) {
@@ -209,7 +213,12 @@ int main(int argc, char *argv[])
                                                       : measureReplayWindow(3600, 10, 20));
         }
     }
-    if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke && !onlyReplay) {
+    if (!parser.isSet(QStringLiteral("no-listen")) && !onlyReplay &&
+        !parser.isSet(QStringLiteral("only-scan"))) {
+        err << QStringLiteral("stepcom-bench: listening beside a PLC at 38400 ...") << Qt::endl;
+        rows += listenVerdicts(config.smoke ? measureListen(10, 20) : measureListen(120, 200));
+    }
+    if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke && !onlyReplay && !onlyListen) {
         err << QStringLiteral("stepcom-bench: the bus scan of ids 1-247 at 9600 baud ...")
             << Qt::endl;
         rows += scanVerdicts(measureScan(9600));

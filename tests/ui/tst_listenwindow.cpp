@@ -100,13 +100,15 @@ private Q_SLOTS:
         MachineStrip *strip = window.findChild<MachineStrip *>();
         QVERIFY(strip);
         QVERIFY(ask(plc, rtu("01 03 00 6B 00 04"), 13));
-        QTRY_VERIFY(session.parameters()->shownValue(QStringLiteral("motor1.position")).has_value());
+        QTRY_VERIFY(
+            session.parameters()->shownValue(QStringLiteral("motor1.position")).has_value());
         const QString before = strip->positionLabel(1)->text();
         QVERIFY(ask(plc, rtu("01 05 00 00 FF 00"), 8)); // motor1.move
         QTRY_VERIFY_WITH_TIMEOUT(
             [&] {
                 ask(plc, rtu("01 03 00 6B 00 04"), 13);
-                return session.parameters()->shownValue(QStringLiteral("motor1.position"))
+                return session.parameters()
+                           ->shownValue(QStringLiteral("motor1.position"))
                            .value_or(0) != 0;
             }(),
             20000);
