@@ -59,6 +59,14 @@
         <source>parity</source>
         <translation>parity</translation>
     </message>
+    <message>
+        <source>With --port: listen only, another master drives the line (nothing is sent but the E-STOP).</source>
+        <translation>With --port: listen only, another master drives the line (nothing is sent but the E-STOP).</translation>
+    </message>
+    <message>
+        <source>--listen needs --port</source>
+        <translation>--listen needs --port</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -4602,6 +4610,26 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Remember echo</source>
         <translation>Remember echo</translation>
+    </message>
+    <message>
+        <source>&amp;RS-485 direction:</source>
+        <translation>&amp;RS-485 direction:</translation>
+    </message>
+    <message>
+        <source>the adapter switches by itself</source>
+        <translation>the adapter switches by itself</translation>
+    </message>
+    <message>
+        <source>the driver&apos;s RS-485 mode (RTS on send)</source>
+        <translation>the driver&apos;s RS-485 mode (RTS on send)</translation>
+    </message>
+    <message>
+        <source>StepCom switches RTS</source>
+        <translation>StepCom switches RTS</translation>
+    </message>
+    <message>
+        <source>Who switches an RS-485 adapter between sending and receiving. Most adapters do it themselves; some converters need RTS. A driver that refuses is named when connecting, and nothing is sent</source>
+        <translation>Who switches an RS-485 adapter between sending and receiving. Most adapters do it themselves; some converters need RTS. A driver that refuses is named when connecting, and nothing is sent</translation>
     </message>
 </context>
 <context>

@@ -59,6 +59,14 @@
         <source>parity</source>
         <translation>校验位</translation>
     </message>
+    <message>
+        <source>With --port: listen only, another master drives the line (nothing is sent but the E-STOP).</source>
+        <translation>与 --port 一起使用：仅监听，由另一个主站驱动线路（除急停外不发送任何数据）。</translation>
+    </message>
+    <message>
+        <source>--listen needs --port</source>
+        <translation>--listen 需要 --port</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -4577,6 +4585,26 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Remember echo</source>
         <translation>记住回显</translation>
+    </message>
+    <message>
+        <source>&amp;RS-485 direction:</source>
+        <translation>RS-485 收发方向(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>the adapter switches by itself</source>
+        <translation>适配器自动切换</translation>
+    </message>
+    <message>
+        <source>the driver&apos;s RS-485 mode (RTS on send)</source>
+        <translation>驱动的 RS-485 模式（发送时置 RTS）</translation>
+    </message>
+    <message>
+        <source>StepCom switches RTS</source>
+        <translation>由 StepCom 切换 RTS</translation>
+    </message>
+    <message>
+        <source>Who switches an RS-485 adapter between sending and receiving. Most adapters do it themselves; some converters need RTS. A driver that refuses is named when connecting, and nothing is sent</source>
+        <translation>由谁切换 RS-485 适配器的发送与接收。大多数适配器自动切换；有些转换器需要 RTS。驱动拒绝时，连接时会指明该驱动，并且不发送任何数据</translation>
     </message>
 </context>
 <context>

@@ -138,8 +138,12 @@ ListenResult measureListen(int seconds, int delaySamples)
 QList<Verdict> listenVerdicts(const ListenResult &r)
 {
     if (!r.error.isEmpty())
-        return {Verdict{QString::number(kBaud), QStringLiteral("(n) listen beside a PLC"),
-                        r.error, {}, {}, Verdict::Result::Error}};
+        return {Verdict{QString::number(kBaud),
+                        QStringLiteral("(n) listen beside a PLC"),
+                        r.error,
+                        {},
+                        {},
+                        Verdict::Result::Error}};
     // The line carries at most 3840 bytes a second: about 200 frames of a PLC's cycle.
     const double lineFrames = double(r.frames) / r.seconds;
     return {
@@ -156,16 +160,16 @@ QList<Verdict> listenVerdicts(const ListenResult &r)
                 QString::number(lineFrames * 10 / std::max(1.0, r.framesPerSecond), 'f', 3),
                 r.framesPerSecond > lineFrames * 10 ? Verdict::Result::Pass
                                                     : Verdict::Result::Fail},
-        Verdict{QString::number(kBaud),
-                QStringLiteral("(n) listen: a frame's last byte to its decoded line (pty)"),
-                QStringLiteral("mean %1 ms, max %2 ms (%3 frames)")
-                    .arg(QString::number(r.delayMeanMs, 'f', 2),
-                         QString::number(r.delayMaxMs, 'f', 2))
-                    .arg(r.delaySamples),
-                // Said at the last byte, not at the next silence or tick (20 ms): the mean
-                // tells it; the max is the busy machine's scheduling.
-                QStringLiteral("mean < 10 ms"), QString::number(r.delayMeanMs / 10.0, 'f', 2),
-                r.delayMeanMs < 10 ? Verdict::Result::Pass : Verdict::Result::Fail},
+        Verdict{
+            QString::number(kBaud),
+            QStringLiteral("(n) listen: a frame's last byte to its decoded line (pty)"),
+            QStringLiteral("mean %1 ms, max %2 ms (%3 frames)")
+                .arg(QString::number(r.delayMeanMs, 'f', 2), QString::number(r.delayMaxMs, 'f', 2))
+                .arg(r.delaySamples),
+            // Said at the last byte, not at the next silence or tick (20 ms): the mean
+            // tells it; the max is the busy machine's scheduling.
+            QStringLiteral("mean < 10 ms"), QString::number(r.delayMeanMs / 10.0, 'f', 2),
+            r.delayMeanMs < 10 ? Verdict::Result::Pass : Verdict::Result::Fail},
     };
 }
 

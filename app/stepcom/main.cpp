@@ -1,5 +1,6 @@
 #include "i18n/translators.h"
 #include "language.h"
+#include "listenmode.h"
 #include "mainwindow.h"
 #include "session/devicesession.h"
 #include "sim/builtinsimulator.h"
@@ -45,6 +46,10 @@ struct Options
     QCommandLineOption baud{QStringLiteral("baud"),
                             QCoreApplication::translate("stepcom", "Baud rate (default 9600)."),
                             QCoreApplication::translate("stepcom", "rate"), QStringLiteral("9600")};
+    QCommandLineOption listen{
+        QStringLiteral("listen"),
+        QCoreApplication::translate("stepcom", "With --port: listen only, another master drives "
+                                               "the line (nothing is sent but the E-STOP).")};
     QCommandLineOption id{QStringLiteral("id"),
                           QCoreApplication::translate("stepcom", "Device id (default 1)."),
                           QCoreApplication::translate("stepcom", "id"), QStringLiteral("1")};
@@ -54,7 +59,7 @@ struct Options
         parser.addHelpOption();
         parser.addVersionOption();
         parser.addOption(Translators::languageOption());
-        parser.addOptions({sim, port, tcp, rtuTcp, baud, parity, id, echo});
+        parser.addOptions({sim, port, tcp, rtuTcp, baud, parity, id, echo, listen});
     }
 };
 
@@ -165,7 +170,15 @@ int main(int argc, char *argv[])
     session.setSimulator(std::make_unique<BuiltinSimulator>()); // the Connection page offers it
     MainWindow window(&session);
     window.showOnScreen();
-    if (parser.isSet(options.sim))
+    QString why;
+    if (parser.isSet(options.listen)) {
+        // Beside a PLC: the port heard, never driven; a refusal is said in the window.
+        if (!startLink || !window.listenMode()->start(*startLink, &why))
+            window.listenMode()->finished(
+                false, why.isEmpty()
+                           ? QCoreApplication::translate("stepcom", "--listen needs --port")
+                           : why);
+    } else if (parser.isSet(options.sim))
         session.connectSimulator();
     else if (startLink)
         session.connectTo(*startLink); // an unusable port is reported by the session, in the window

@@ -4,21 +4,26 @@
 // window's pty sends nothing; the E-STOP asks first, then goes into the line and is answered.
 #include "emergencystop.h"
 #include "enabledcontrols.h"
+#include "line/linksettingsstore.h"
 #include "listenmode.h"
 #include "mainwindow.h"
+#include "pages/connectionpage.h"
 #include "session/devicesession.h"
 #include "sim/line/linehub.h"
 #include "sim/simdevice.h"
 #include "sim/simhost.h"
 #include "widgets/docks/machinestrip.h"
 
+#include <QComboBox>
 #include <QFrame>
 #include <QLabel>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSerialPort>
+#include <QSettings>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace stepcom;
@@ -144,6 +149,31 @@ private Q_SLOTS:
         QVERIFY(!listen->banner()->isVisible());
         hub.close();
         host.stop();
+    }
+
+    // The RS-485 direction is chosen on the Connection page and kept with the line.
+    void rs485OnTheConnectionPage()
+    {
+        DeviceSession session;
+        MainWindow window(&session);
+        auto *page = window.findChild<ConnectionPage *>();
+        QVERIFY(page);
+        auto *rs485 = page->findChild<QComboBox *>(QStringLiteral("rs485"));
+        QVERIFY(rs485);
+        QCOMPARE(page->currentSettings().rs485, LinkSettings::Rs485::Auto);
+        rs485->setCurrentIndex(2);
+        QCOMPARE(page->currentSettings().rs485, LinkSettings::Rs485::Rts);
+        QTemporaryDir dir;
+        QSettings store(dir.filePath(QStringLiteral("line.ini")), QSettings::IniFormat);
+        LinkSettings line = page->currentSettings();
+        line.rs485 = LinkSettings::Rs485::Kernel;
+        line.rs485DelayAfterUs = 500;
+        LinkSettingsStore::write(store, line);
+        const LinkSettings back = LinkSettingsStore::read(store);
+        QCOMPARE(back.rs485, LinkSettings::Rs485::Kernel);
+        QCOMPARE(back.rs485DelayAfterUs, 500);
+        page->applySettings(back);
+        QCOMPARE(rs485->currentIndex(), 1);
     }
 };
 

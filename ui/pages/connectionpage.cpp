@@ -492,6 +492,7 @@ void ConnectionPage::updateState()
     m_lineBox->answerDelay()->setEnabled(idle);
     m_lineBox->turnaround()->setEnabled(idle);
     m_lineBox->echo()->setEnabled(idle);
+    m_lineBox->rs485()->setEnabled(idle);
     m_connect->setEnabled(idle);
     m_disconnect->setEnabled(!idle);
     m_scan->setEnabled(transport() != Transport::Simulator);
