@@ -4917,6 +4917,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>The other master&apos;s writes</source>
         <translation>The other master&apos;s writes</translation>
     </message>
+    <message>
+        <source>listening on %1</source>
+        <translation>listening on %1</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MachineActions</name>

@@ -4892,6 +4892,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>The other master&apos;s writes</source>
         <translation>另一个主站的写入</translation>
     </message>
+    <message>
+        <source>listening on %1</source>
+        <translation>正在 %1 上监听</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MachineActions</name>

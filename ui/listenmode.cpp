@@ -4,15 +4,16 @@
 #include "listen/linelistener.h"
 #include "listen/listenlog.h"
 #include "session/sessionlog.h"
+#include "widgets/docks/machinestrip.h"
 
 #include <QAction>
 #include <QDateTime>
 #include <QFrame>
+#include <QGridLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QVBoxLayout>
 
 namespace stepcom {
 
@@ -50,13 +51,16 @@ ListenMode::ListenMode(DeviceSession *session, EmergencyStop *estop, QWidget *wi
                                            "QFrame#listenBanner QLabel { color: #3d2c00; }"));
     m_bannerText->setWordWrap(true);
     m_writes->setObjectName(QStringLiteral("heardWrites"));
-    m_writes->setMaximumHeight(m_writes->fontMetrics().height() * 5);
+    // Three rows: a small screen keeps its page; the list scrolls.
+    m_writes->setMaximumHeight(m_writes->fontMetrics().height() * 3 + 2 * m_writes->frameWidth());
     m_stop->setObjectName(QStringLiteral("stopListening"));
     connect(m_stop, &QPushButton::clicked, this, &ListenMode::stop);
-    auto *layout = new QVBoxLayout(m_banner);
-    layout->addWidget(m_bannerText);
-    layout->addWidget(m_writes);
-    layout->addWidget(m_stop, 0, Qt::AlignLeft);
+    auto *layout = new QGridLayout(m_banner);
+    layout->setContentsMargins(6, 4, 6, 4);
+    layout->addWidget(m_bannerText, 0, 0);
+    layout->addWidget(m_stop, 0, 1, Qt::AlignTop);
+    layout->addWidget(m_writes, 1, 0, 1, 2);
+    layout->setColumnStretch(0, 1);
     m_banner->hide();
     retranslate();
     // Connecting ends the listening first: the port is the link's then, and it drives the line.
@@ -153,10 +157,17 @@ void ListenMode::stop()
     if (m_question)
         m_question->close();
     m_session->parameters()->closeReplay();
+    if (m_strip)
+        m_strip->endReplay();
     m_session->traffic()->addEvent(tr("listening ended"));
     m_banner->hide();
     retranslate();
     Q_EMIT activeChanged(false);
+}
+
+void ListenMode::setStrip(MachineStrip *strip)
+{
+    m_strip = strip;
 }
 
 QString ListenMode::logFile() const
@@ -196,6 +207,9 @@ void ListenMode::showValues()
     const ReplayDevice device = m_listener->decoder().state().devices.value(m_settings.deviceId);
     m_session->parameters()->showReplay(tr("heard on %1").arg(m_settings.portName),
                                         device.values(m_session->map()));
+    if (m_strip)
+        m_strip->showReplayLink(true, device.answering,
+                                tr("listening on %1").arg(m_settings.portName));
 }
 
 void ListenMode::askEmergencyStop()

@@ -19,6 +19,7 @@ class QWidget;
 namespace stepcom {
 
 class EmergencyStop;
+class MachineStrip;
 class LineListener;
 class ListenLog;
 struct HeardEvent;
@@ -43,6 +44,8 @@ public:
     // triggered).
     QAction *startAction() const { return m_start; }
     void setSettingsSource(std::function<LinkSettings()> source) { m_source = std::move(source); }
+    // The strip says the line is heard, and whether the device in view answers on it.
+    void setStrip(MachineStrip *strip);
     QFrame *banner() const { return m_banner; }
     QListWidget *writes() const { return m_writes; }
     // The E-STOP's question while it is open.
@@ -79,6 +82,7 @@ private:
     QListWidget *m_writes;
     QPushButton *m_stop;
     QPointer<QMessageBox> m_question;
+    QPointer<MachineStrip> m_strip;
     std::function<LinkSettings()> m_source;
     LineListener *m_listener = nullptr;
     std::unique_ptr<ListenLog> m_log;

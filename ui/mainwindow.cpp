@@ -150,6 +150,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
     // --- end working without the machine ---
     m_replay->setViews({m_traffic, m_deviceDock, m_plots, m_strip}); // issue 26
+    m_listen->setStrip(m_strip);
     // Pages chosen, changes written, checklist results and device names go into the log.
     ReplayMode::recordActions(m_sessionLog, m_sidebar, m_pages, m_writeFlow, m_checklist,
                               m_deviceDock);
