@@ -2,6 +2,7 @@
 #include "language.h"
 #include "listenmode.h"
 #include "mainwindow.h"
+#include "pages/connectionpage.h"
 #include "session/devicesession.h"
 #include "sim/builtinsimulator.h"
 
@@ -172,7 +173,10 @@ int main(int argc, char *argv[])
     window.showOnScreen();
     QString why;
     if (parser.isSet(options.listen)) {
-        // Beside a PLC: the port heard, never driven; a refusal is said in the window.
+        // Beside a PLC: the port heard, never driven; a refusal is said in the window. The
+        // Connection page shows the port heard.
+        if (auto *page = window.findChild<ConnectionPage *>(); page && startLink)
+            page->applySettings(*startLink);
         if (!startLink || !window.listenMode()->start(*startLink, &why))
             window.listenMode()->finished(
                 false, why.isEmpty()
