@@ -25,7 +25,10 @@ EmergencyStop::~EmergencyStop()
 
 bool EmergencyStop::isAvailable() const
 {
-    // Reconnecting keeps it: an E-STOP then is held and sent first when the link is back.
+    // Reconnecting keeps it: an E-STOP then is held and sent first when the link is back. A mode
+    // that drives the E-STOP itself (listening beside another master) has a line to send it on.
+    if (m_handler)
+        return true;
     const ParameterStore *store = m_session->parameters();
     return m_session->linkState() != DeviceSession::LinkState::Disconnected ||
            !(store->isReplay() || store->isFile());
@@ -46,7 +49,10 @@ QString EmergencyStop::toolTip() const
 
 void EmergencyStop::trigger()
 {
-    m_session->emergencyStop();
+    if (m_handler)
+        m_handler();
+    else
+        m_session->emergencyStop();
     Q_EMIT triggered();
 }
 

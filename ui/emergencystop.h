@@ -5,6 +5,8 @@
 #include <QObject>
 #include <QPointer>
 
+#include <functional>
+
 class QToolButton;
 
 namespace stepcom {
@@ -32,6 +34,13 @@ public:
     bool isAvailable() const;
     // What the button's tooltip says: what it does, or why there is nothing to stop.
     QString toolTip() const;
+    // While a mode drives the E-STOP itself (listening beside another master: it asks, then
+    // sends in the line's silence), it takes the trigger; empty: the session's E-STOP again.
+    void setHandler(std::function<void()> handler)
+    {
+        m_handler = std::move(handler);
+        refresh();
+    }
 
 Q_SIGNALS:
     void triggered();
@@ -46,6 +55,7 @@ private:
     DeviceSession *m_session;
     QList<QPointer<QToolButton>> m_buttons;
     bool m_available = true;
+    std::function<void()> m_handler;
 };
 
 } // namespace stepcom

@@ -8,6 +8,7 @@
 #include "help/guidewindow.h"
 #include "help/userguide.h"
 #include "language.h"
+#include "listenmode.h"
 #include "machineactions.h"
 #include "offlineactions.h"
 #include "pages/checklistpage.h" // issue 17
@@ -98,7 +99,8 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     connect(m_sidebar, &PageSidebar::pageChosen, m_stack, &QStackedWidget::setCurrentIndex);
     connect(m_stack, &QStackedWidget::currentChanged, this, &MainWindow::updateTitle);
 
-    addPage(new ConnectionPage(session, this));
+    auto *connectionPage = new ConnectionPage(session, this);
+    addPage(connectionPage);
     for (int n = 1; n <= session->map().blockCount(QStringLiteral("motor")); ++n)
         addPage(new MotorPage(session, n, this));
     // In commissioning order (issue 25): the sidebar groups them by Page::stage().
@@ -112,6 +114,10 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     m_sidebar->setCurrentPage(0);
 
     createActions();
+    m_listen = new ListenMode(session, m_estop, this);
+    m_listen->setSettingsSource([connectionPage] { return connectionPage->currentSettings(); });
+    connectionPage->addLineAction(m_listen->startAction());
+    centralLayout->insertWidget(2, m_listen->banner());
     createMenus();
     createDocks();
     // Under the pages, on every page: positions, states and the E-STOP (issue 25).
@@ -155,12 +161,17 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
     // --- end working without the machine ---
     m_replay->setViews({m_traffic, m_deviceDock, m_plots, m_strip}); // issue 26
+    m_listen->setStrip(m_strip);
     // Pages chosen, changes written, checklist results and device names go into the log.
     ReplayMode::recordActions(m_sessionLog, m_sidebar, m_pages, m_writeFlow, m_checklist,
                               m_deviceDock);
     connect(m_replay, &ReplayMode::activeChanged, this, &MainWindow::showOrigin);
     connect(m_replay, &ReplayMode::finished, this, [this](bool ok, const QString &text) {
         m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning, text);
+    });
+    connect(m_listen, &ListenMode::finished, this, [this](bool ok, const QString &text) {
+        m_messages->add(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning,
+                        text);
     });
 
     connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
@@ -336,6 +347,7 @@ void MainWindow::createMenus()
     m_deviceMenu->addActions({m_readAll, m_write, m_revert, m_save});
     m_deviceMenu->addSeparator();
     m_deviceMenu->addAction(m_disconnect);
+    m_deviceMenu->addAction(m_listen->startAction());
     m_deviceMenu->addSeparator();
     m_deviceMenu->addAction(m_estopAction);
     m_viewMenu = menuBar()->addMenu(QString());
@@ -443,6 +455,7 @@ void MainWindow::retranslate()
     m_profiles->retranslate(); // profiles (issue 7)
     m_offline->retranslate();  // issue 18
     m_replay->retranslate();   // issue 26
+    m_listen->retranslate();
     m_deviceMenu->setTitle(tr("&Device"));
     m_viewMenu->setTitle(tr("&View"));
     m_languageMenu->setTitle(tr("&Language"));

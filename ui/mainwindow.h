@@ -31,6 +31,7 @@ class PageSidebar; // issue 25
 class MachineActions;
 class ProfileActions; // profiles (issue 7)
 class ReplayMode;     // replaying a session log (issue 26)
+class ListenMode;
 class DeviceListDock; // several controllers on one line (issue 16)
 class SessionLog;
 class StatusDock; // monitoring (issue 5)
@@ -76,6 +77,7 @@ public:
     OfflineBanner *offlineBanner() const { return m_offlineBanner; }
     ReplayMode *replayMode() const { return m_replay; }          // issue 26
     PendantActions *pendantActions() const { return m_pendant; } // a phone as the pendant
+    ListenMode *listenMode() const { return m_listen; }
     ChecklistPage *checklistPage() const { return m_checklist; } // issue 17
     PlotPage *plotPage() const { return m_plots; }
     BackupGuard *backupGuard() const { return m_backups; } // issue 17
@@ -152,7 +154,8 @@ private:
     OfflineBanner *m_offlineBanner = nullptr;
     ReplayMode *m_replay = nullptr; // issue 26
     PendantActions *m_pendant = nullptr;
-    bool m_jogStopAwaited = false; // jogging (issue 5): close waited for the stops once
+    ListenMode *m_listen = nullptr; // beside another master: heard, never driven
+    bool m_jogStopAwaited = false;  // jogging (issue 5): close waited for the stops once
     WriteFlow *m_writeFlow = nullptr;
     ChecklistPage *m_checklist = nullptr; // issue 17
     PlotPage *m_plots = nullptr;

@@ -6,6 +6,7 @@
 #include "pendant/pendantserver.h"
 #include "profile/profiledocument.h"
 #include "replaymode.h"
+#include "session/devicesession.h"
 #include "session/sessionlog.h"
 #include "widgets/docks/machinestrip.h"
 
@@ -18,6 +19,7 @@ namespace stepcom {
 PendantActions::PendantActions(DeviceSession *session, MachineStrip *strip, SessionLog *log,
                                ReplayMode *replay, OfflineActions *offline, QWidget *window)
     : QObject(window)
+    , m_session(session)
     , m_server(new PendantServer(session, this))
     , m_strip(strip)
     , m_replay(replay)
@@ -33,6 +35,7 @@ PendantActions::PendantActions(DeviceSession *session, MachineStrip *strip, Sess
     connect(m_server->control(), &PendantControl::holderChanged, this, &PendantActions::update);
     connect(replay, &ReplayMode::activeChanged, this, &PendantActions::update);
     connect(offline->document(), &ProfileDocument::changed, this, &PendantActions::update);
+    connect(session->parameters(), &ParameterStore::originChanged, this, &PendantActions::update);
     window->installEventFilter(this); // its language changes are ours
     retranslate();
 }
@@ -43,6 +46,9 @@ QString PendantActions::refusal() const
         return tr("A replay serves no pendant: close the session log first");
     if (m_offline->document()->isOpen())
         return tr("A profile file edited without a controller serves no pendant");
+    // Heard values stand in the store as a replay's do: listening beside another master.
+    if (m_session->parameters()->isReplay())
+        return tr("Listening beside another master serves no pendant: stop listening first");
     return {};
 }
 

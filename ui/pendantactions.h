@@ -19,7 +19,8 @@ class SessionLog;
 // The window's phone pendant (Device → Pendant…): owns the server (off at every start of
 // StepCom), opens its dialog, notes what the phones do in the session log and says in the
 // machine strip who watches or jogs. A replay or a profile file edited without a controller
-// serves no pendant: it is stopped then and cannot be started.
+// serves no pendant, nor does listening beside another master: it is stopped then and cannot
+// be started.
 class PendantActions : public QObject
 {
     Q_OBJECT
@@ -31,7 +32,7 @@ public:
     PendantServer *server() const { return m_server; }
     PendantDialog *openDialog();
     PendantDialog *dialog() const;
-    // Why the pendant cannot run now (replay, offline file), or empty.
+    // Why the pendant cannot run now (replay, offline file, listening), or empty.
     QString refusal() const;
 
 protected:
@@ -41,6 +42,7 @@ private:
     void retranslate();
     void update();
 
+    DeviceSession *m_session;
     PendantServer *m_server;
     QPointer<MachineStrip> m_strip; // gone before us when the window closes
     ReplayMode *m_replay;

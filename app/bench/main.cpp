@@ -4,6 +4,7 @@
 #include "benchrunner.h"
 #include "busprobe.h"
 #include "firststatusprobe.h"
+#include "listenprobe.h"
 #include "pendantprobe.h"
 #include "replayprobe.h"
 #include "replaywindowprobe.h"
@@ -46,7 +47,8 @@ int main(int argc, char *argv[])
         "first status, both at 9600, (k) (a) and (b) on a controller that answers in 2 ms at "
         "9600 and 38400, (l) opening and seeking a synthetic 1-hour session log at 10 Hz, (m) the "
         "same in the window's replay mode, (n) the phone pendant on loopback: press to jog frame, "
-        "release to stop frame, last hold to stop frame. Prints a table "
+        "release to stop frame, last hold to stop frame, (o) listening beside a PLC: frames "
+        "decoded per second and a frame's last byte to its decoded line. Prints a table "
         "with PASS/FAIL per target; exits 1 when a target is missed. See docs/performance.md."));
     parser.addHelpOption();
     parser.addVersionOption();
@@ -69,6 +71,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("no-scan"), QStringLiteral("Skip (h).")},
         {QStringLiteral("only-scan"), QStringLiteral("Run only (h), the bus scan.")},
         {QStringLiteral("no-replay"), QStringLiteral("Skip (l), the replay of an hour's log.")},
+        {QStringLiteral("no-listen"), QStringLiteral("Skip (o), listening beside a PLC.")},
+        {QStringLiteral("only-listen"), QStringLiteral("Run only (o), listening beside a PLC.")},
         {QStringLiteral("only-replay"),
          QStringLiteral("Run only (l) and (m): open a synthetic 1-hour log at 10 Hz, seek in it; "
                         "in the core, then in the window.")},
@@ -137,7 +141,8 @@ int main(int argc, char *argv[])
 
     QList<Verdict> rows;
     const bool onlyReplay = parser.isSet(QStringLiteral("only-replay"));
-    if (parser.isSet(QStringLiteral("only-scan")) || onlyReplay) {
+    const bool onlyListen = parser.isSet(QStringLiteral("only-listen"));
+    if (parser.isSet(QStringLiteral("only-scan")) || onlyReplay || onlyListen) {
         bauds.clear();
         config.traffic = false;
         config.stepcomPath.clear();
@@ -202,7 +207,7 @@ int main(int argc, char *argv[])
             << Qt::endl;
         rows += firstStatusVerdicts(measureFirstStatus(startBaud, config.firstStatusRuns));
     }
-    if (!parser.isSet(QStringLiteral("no-pendant")) && !onlyReplay) {
+    if (!parser.isSet(QStringLiteral("no-pendant")) && !onlyReplay && !onlyListen) {
         // Judged where the wire waits little (a frame waits for the one transaction in flight,
         // as the window's own buttons do): 38400 and a controller answering in 2 ms; the
         // manual's 35 ms at 9600 for information.
@@ -214,7 +219,7 @@ int main(int argc, char *argv[])
             rows += pendantVerdicts(measurePendant(9600, rounds, 35), false);
     }
 
-    if (!parser.isSet(QStringLiteral("no-replay"))) {
+    if (!parser.isSet(QStringLiteral("no-replay")) && !onlyListen) {
         err << QStringLiteral("stepcom-bench: replaying a synthetic session log ...") << Qt::endl;
         rows += replayVerdicts(config.smoke ? measureReplay(60, 10) : measureReplay(3600, 10));
         if (!parser.isSet(QStringLiteral("no-replay-window"))) {
@@ -223,7 +228,12 @@ int main(int argc, char *argv[])
                                                       : measureReplayWindow(3600, 10, 20));
         }
     }
-    if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke && !onlyReplay) {
+    if (!parser.isSet(QStringLiteral("no-listen")) && !onlyReplay &&
+        !parser.isSet(QStringLiteral("only-scan"))) {
+        err << QStringLiteral("stepcom-bench: listening beside a PLC at 38400 ...") << Qt::endl;
+        rows += listenVerdicts(config.smoke ? measureListen(10, 20) : measureListen(120, 200));
+    }
+    if (!parser.isSet(QStringLiteral("no-scan")) && !config.smoke && !onlyReplay && !onlyListen) {
         err << QStringLiteral("stepcom-bench: the bus scan of ids 1-247 and 1-40 at 9600 baud ...")
             << Qt::endl;
         rows += scanVerdicts(measureScan(9600));

@@ -128,6 +128,16 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          tr("file")},
         {QStringLiteral("count"), tr("monitor: number of samples (default: until stopped)."),
          tr("n")},
+        {QStringLiteral("seconds"), tr("listen: stop after N seconds (default: until Ctrl-C)."),
+         tr("n")},
+        {QStringLiteral("rs485"),
+         tr("Who switches an RS-485 adapter's direction: auto (the adapter itself, default), "
+            "kernel (the driver's RS-485 mode, RTS on send) or rts (StepCom raises RTS for "
+            "each request)."),
+         tr("mode"), QStringLiteral("auto")},
+        {QStringLiteral("rs485-delays"),
+         tr("--rs485 kernel: the delays before and after sending, in us (default 0,0)."),
+         tr("before,after"), QStringLiteral("0,0")},
         {QStringLiteral("interval"),
          tr("monitor: ms between samples (default: as fast as the "
             "link allows)."),
@@ -259,6 +269,21 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         (!toInt(parser.value(QStringLiteral("interval")), &o.intervalMs) || o.intervalMs < 0))
         return tr("--interval: '%1' is not a number of ms")
             .arg(parser.value(QStringLiteral("interval")));
+    if (!LinkSettings::parseRs485(parser.value(QStringLiteral("rs485")), &o.link.rs485))
+        return tr("--rs485: '%1' is not auto, kernel or rts")
+            .arg(parser.value(QStringLiteral("rs485")));
+    {
+        const QStringList delays = parser.value(QStringLiteral("rs485-delays")).split(u',');
+        if (delays.size() != 2 || !toInt(delays.at(0), &o.link.rs485DelayBeforeUs) ||
+            !toInt(delays.at(1), &o.link.rs485DelayAfterUs) || o.link.rs485DelayBeforeUs < 0 ||
+            o.link.rs485DelayAfterUs < 0)
+            return tr("--rs485-delays: '%1' is not BEFORE,AFTER in us (e.g. 0,500)")
+                .arg(parser.value(QStringLiteral("rs485-delays")));
+    }
+    if (parser.isSet(QStringLiteral("seconds")) &&
+        (!toInt(parser.value(QStringLiteral("seconds")), &o.seconds) || o.seconds < 1))
+        return tr("--seconds: '%1' is not a positive number of seconds")
+            .arg(parser.value(QStringLiteral("seconds")));
     if (!toInt(parser.value(QStringLiteral("days")), &o.days) || o.days < 0)
         return tr("--days: '%1' is not a number of days").arg(parser.value(QStringLiteral("days")));
     o.logFile = parser.value(QStringLiteral("log"));

@@ -44,6 +44,7 @@ struct CtlOptions
     QString entry;       // replay BUNDLE.zip --entry NAME: which log of the bundle
     int days = 7;        // bundle --days N
     QString profile;     // bundle --profile FILE
+    int seconds = 0;     // listen --seconds N: stop after N s (0: until Ctrl-C)
     int count = -1;
     int intervalMs = 0;
     QString command;

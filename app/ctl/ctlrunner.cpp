@@ -95,6 +95,15 @@ const QList<CtlCommand> &CtlRunner::commands()
                                          "with --id 1,2,3 each device in turn, one line a\n"
                                          "sample keyed by its id (--json for JSON)"),
          &CtlRunner::runMonitor},
+        {"listen", "listen",
+         QT_TRANSLATE_NOOP("stepcomctl",
+                           "hear a line another master (a PLC, an HMI) drives, never\n"
+                           "sending a byte: each request paired with its answer and\n"
+                           "decoded by the map, a line each as heard (--json), until\n"
+                           "Ctrl-C or --seconds N; a summary of frames, pairs, CRC\n"
+                           "errors and answer times on stderr (--port, --baud,\n"
+                           "--parity; --log FILE keeps it as a session log)"),
+         &CtlRunner::runListen},
         {"dump", "dump FILE|FOLDER/",
          QT_TRANSLATE_NOOP("stepcomctl",
                            "read every setting and save it as a profile file\n"

@@ -76,6 +76,8 @@ private:
     // The one coil `command` names, checked; nullptr after failing with the reason.
     const Parameter *commandArgument();
     void runMonitor();
+    // listen (ctllisten.cpp): hears a line another master drives; nothing is sent.
+    void runListen();
     // move MOTOR --by D | --to X: a step or move-to over the single move (ctlmove.cpp).
     void runMove();
     // Saves a backup of the controller's settings before `risk` (unless --no-backup), prints
@@ -128,7 +130,8 @@ private:
     // Several ids and a command run once per id (monitor watches them all in one run).
     bool isPerId() const
     {
-        return isMulti() && m_chosen && QLatin1String(m_chosen->name) != QLatin1String("monitor");
+        return isMulti() && m_chosen && QLatin1String(m_chosen->name) != QLatin1String("monitor") &&
+               QLatin1String(m_chosen->name) != QLatin1String("listen");
     }
     void startMulti();
     // One id's run ended with `code`: true when the next one was started.

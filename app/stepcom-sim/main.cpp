@@ -3,6 +3,7 @@
 #include "i18n/translators.h"
 #include "session/idlist.h"
 #include "signalwatcher.h"
+#include "sim/line/linehub.h"
 #include "sim/simcommandline.h"
 #include "sim/simconsole.h"
 #include "sim/simdevice.h"
@@ -62,13 +63,23 @@ int main(int argc, char *argv[])
     SignalWatcher watcher;
     QObject::connect(&watcher, &SignalWatcher::terminationRequested, &app, &QCoreApplication::quit);
 
+    // --line N: the controller's pty is one party of the line; the N ptys are the programs'.
+    const QString lineLink =
+        options.line > 0 ? std::exchange(options.linkPath, QString()) : QString();
     SimHost host;
+    LineHub hub;
     QObject::connect(&host, &SimHost::message, &app,
                      [&err](const QString &text) { err << text << Qt::endl; });
     QObject::connect(&host, &SimHost::hungUp, &app, [&out] {
         out << QCoreApplication::translate("stepcom-sim", "port hung up") << Qt::endl;
     });
-    QObject::connect(&host, &SimHost::reopened, &app, [&out](const QString &path) {
+    QObject::connect(&host, &SimHost::reopened, &app, [&](const QString &path) {
+        if (hub.isOpen()) {
+            QString attachError;
+            if (!hub.reattach(path, &attachError))
+                err << attachError << Qt::endl;
+            return; // the line's ptys stay as they were
+        }
         out << QCoreApplication::translate("stepcom-sim", "port back: %1").arg(path) << Qt::endl;
     });
     if (!host.start(options, &error)) {
@@ -94,7 +105,27 @@ int main(int argc, char *argv[])
                    .arg(IdList::format(ids))
             << Qt::endl;
     }
-    if (options.rtu) {
+    if (options.line > 0) {
+        if (!hub.open(options.line, &error) || !hub.attach(host.ptyPath(), &error)) {
+            err << QCoreApplication::translate("stepcom-sim", "stepcom-sim: %1").arg(error)
+                << Qt::endl;
+            host.stop();
+            return 1;
+        }
+        const QStringList paths = hub.paths();
+        for (int i = 0; i < paths.size(); ++i) {
+            out << QStringLiteral("line %1: %2").arg(i + 1).arg(paths.at(i)) << Qt::endl;
+            const QString link = QStringLiteral("%1.%2").arg(lineLink).arg(i + 1);
+            if (!lineLink.isEmpty() && !hub.createLink(i, link, &error)) {
+                err << QCoreApplication::translate("stepcom-sim", "stepcom-sim: %1").arg(error)
+                    << Qt::endl;
+                host.stop();
+                return 1;
+            }
+            if (!lineLink.isEmpty())
+                out << QStringLiteral("link %1: %2").arg(i + 1).arg(link) << Qt::endl;
+        }
+    } else if (options.rtu) {
         out << QStringLiteral("pty: %1").arg(host.ptyPath()) << Qt::endl;
         if (!options.linkPath.isEmpty())
             out << QStringLiteral("link: %1").arg(options.linkPath) << Qt::endl;
@@ -125,6 +156,15 @@ int main(int argc, char *argv[])
         });
     }
     const int rc = app.exec();
+    if (hub.isOpen()) {
+        // What each program sent onto the line: a listener's count proves it sent nothing.
+        for (int i = 0; i < hub.paths().size(); ++i)
+            err << QCoreApplication::translate("stepcom-sim", "line %1 sent %2 bytes")
+                       .arg(i + 1)
+                       .arg(hub.bytesSent(i))
+                << Qt::endl;
+        hub.close();
+    }
     host.stop();
     return rc;
 }

@@ -1,6 +1,8 @@
 #include "i18n/translators.h"
 #include "language.h"
+#include "listenmode.h"
 #include "mainwindow.h"
+#include "pages/connectionpage.h"
 #include "pendant/pendantcontrol.h"
 #include "pendant/pendantserver.h"
 #include "pendantactions.h"
@@ -53,6 +55,10 @@ struct Options
     QCommandLineOption baud{QStringLiteral("baud"),
                             QCoreApplication::translate("stepcom", "Baud rate (default 9600)."),
                             QCoreApplication::translate("stepcom", "rate"), QStringLiteral("9600")};
+    QCommandLineOption listen{
+        QStringLiteral("listen"),
+        QCoreApplication::translate("stepcom", "With --port: listen only, another master drives "
+                                               "the line (nothing is sent but the E-STOP).")};
     QCommandLineOption id{QStringLiteral("id"),
                           QCoreApplication::translate("stepcom", "Device id (default 1)."),
                           QCoreApplication::translate("stepcom", "id"), QStringLiteral("1")};
@@ -72,7 +78,8 @@ struct Options
         parser.addHelpOption();
         parser.addVersionOption();
         parser.addOption(Translators::languageOption());
-        parser.addOptions({sim, simReset, port, tcp, rtuTcp, baud, parity, id, echo, pendant, pendantJog});
+        parser.addOptions({sim, simReset, port, tcp, rtuTcp, baud, parity, id, echo, pendant,
+                           pendantJog, listen});
         parser.addPositionalArgument(
             QStringLiteral("file"),
             QCoreApplication::translate("stepcom",
@@ -262,7 +269,18 @@ int main(int argc, char *argv[])
         // The address with the port actually bound (--pendant 127.0.0.1:0), for a script.
         QTextStream(stdout) << QStringLiteral("pendant: ") << server->url().toString() << Qt::endl;
     }
-    if (parser.isSet(options.sim))
+    QString why;
+    if (parser.isSet(options.listen)) {
+        // Beside a PLC: the port heard, never driven; a refusal is said in the window. The
+        // Connection page shows the port heard.
+        if (auto *page = window.findChild<ConnectionPage *>(); page && startLink)
+            page->applySettings(*startLink);
+        if (!startLink || !window.listenMode()->start(*startLink, &why))
+            window.listenMode()->finished(
+                false, why.isEmpty()
+                           ? QCoreApplication::translate("stepcom", "--listen needs --port")
+                           : why);
+    } else if (parser.isSet(options.sim))
         session.connectSimulator();
     else if (startLink)
         session.connectTo(*startLink); // an unusable port is reported by the session, in the window

@@ -29,6 +29,9 @@ public:
     virtual void setDeviceId(int) {}
     // A bus scan (ModbusLink::setScanMode): only an RTU transport can name a foreign answer.
     virtual void setScanMode(bool) {}
+    // The adapter behind the line, once open ("FTDI FT232R, latency timer 1 ms"); empty when
+    // not known.
+    virtual QString adapterText() const { return {}; }
 
 Q_SIGNALS:
     void opened(bool ok, const QString &reason);

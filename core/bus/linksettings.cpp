@@ -92,6 +92,11 @@ QString LinkSettings::validate() const
         return tr("answer delay %1 ms is outside 0-1000 ms").arg(answerDelayMs);
     if (turnaroundMs < 0 || turnaroundMs > 1000)
         return tr("turnaround %1 ms is outside 0-1000 ms").arg(turnaroundMs);
+    if (rs485DelayBeforeUs < 0 || rs485DelayBeforeUs > 100000 || rs485DelayAfterUs < 0 ||
+        rs485DelayAfterUs > 100000)
+        return tr("RS-485 delays %1/%2 us are outside 0-100000 us")
+            .arg(rs485DelayBeforeUs)
+            .arg(rs485DelayAfterUs);
     if (answerDelayMs >= timeoutMs)
         return tr("the answer delay (%1 ms) must be shorter than the timeout (%2 ms)")
             .arg(answerDelayMs)
@@ -125,7 +130,33 @@ bool operator==(const LinkSettings &a, const LinkSettings &b)
            a.parity == b.parity && a.stopBits == b.stopBits && a.host == b.host &&
            a.tcpPort == b.tcpPort && a.deviceId == b.deviceId && a.timeoutMs == b.timeoutMs &&
            a.retries == b.retries && a.answerDelayMs == b.answerDelayMs && a.echo == b.echo &&
-           a.turnaroundMs == b.turnaroundMs && a.adaptTimeout == b.adaptTimeout;
+           a.turnaroundMs == b.turnaroundMs && a.adaptTimeout == b.adaptTimeout &&
+           a.rs485 == b.rs485 && a.rs485DelayBeforeUs == b.rs485DelayBeforeUs &&
+           a.rs485DelayAfterUs == b.rs485DelayAfterUs;
+}
+
+QString LinkSettings::rs485Name(Rs485 mode)
+{
+    switch (mode) {
+    case Rs485::Kernel:
+        return QStringLiteral("kernel");
+    case Rs485::Rts:
+        return QStringLiteral("rts");
+    case Rs485::Auto:
+        break;
+    }
+    return QStringLiteral("auto");
+}
+
+bool LinkSettings::parseRs485(const QString &text, Rs485 *mode)
+{
+    for (const Rs485 m : {Rs485::Auto, Rs485::Kernel, Rs485::Rts}) {
+        if (text.trimmed().compare(rs485Name(m), Qt::CaseInsensitive) == 0) {
+            *mode = m;
+            return true;
+        }
+    }
+    return false;
 }
 
 } // namespace stepcom

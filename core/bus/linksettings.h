@@ -36,6 +36,14 @@ struct LinkSettings
     bool echo = false;
     // Extra silence after an answer before the next request, for converters that need it.
     int turnaroundMs = 0;
+    // Who switches an RS-485 adapter between sending and receiving. Auto: the adapter itself
+    // (most do); Kernel: the driver's RS-485 mode (TIOCSRS485, RTS on send, the delays before
+    // and after sending in us); Rts: StepCom raises RTS for a request and drops it once the
+    // last byte has left.
+    enum class Rs485 { Auto, Kernel, Rts };
+    Rs485 rs485 = Rs485::Auto;
+    int rs485DelayBeforeUs = 0;
+    int rs485DelayAfterUs = 0;
 
     // Host and port rather than a serial port (Modbus TCP or RTU over TCP).
     bool isNetwork() const { return transport != Transport::Rtu; }
@@ -51,6 +59,9 @@ struct LinkSettings
 
     static const QList<int> &supportedBauds();
     static QString parityName(QSerialPort::Parity parity);
+    // "auto", "kernel", "rts"; parseRs485 false for anything else.
+    static QString rs485Name(Rs485 mode);
+    static bool parseRs485(const QString &text, Rs485 *mode);
     static bool parseParity(const QString &text, QSerialPort::Parity *parity);
     // "HOST:PORT" or, when `defaultPort` > 0, "HOST" alone; false when it is neither.
     static bool parseHostPort(const QString &text, int defaultPort, QString *host, int *port);

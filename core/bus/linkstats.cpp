@@ -72,6 +72,8 @@ QString LinkStats::lineText(int unit) const
 {
     const RoundTrips &trips = unit > 0 ? byUnit.value(unit) : roundTrips;
     QStringList parts;
+    if (!adapter.isEmpty())
+        parts << adapter;
     parts << (trips.count == 0 ? tr("no answer timed yet") : tr("answers in %1").arg(trips.text()));
     parts << (echo < 0 ? tr("echo not known yet")
               : echo   ? tr("the adapter echoes")

@@ -48,6 +48,7 @@ struct LinkStats
     QMap<int, RoundTrips> byUnit;         // per device id
     QMap<int, AnswerTimeFit> answerTimes; // per device id: its own time, apart from the wire
     int timeoutMs = -1;                   // the answer timeout the link uses now (-1 not yet known)
+    QString adapter; // the adapter behind the line ("FTDI FT232R, latency timer 1 ms"), if known
 
     // `characters`: the request's and the answer's on the wire with the silence between them
     // (0: not known).

@@ -181,6 +181,9 @@ void ModbusLink::onBackendOpened(bool ok, const QString &reason)
     m_connectTimer.stop();
     setState(State::Connected, m_settings.describe());
     m_traffic->addEvent(tr("connected to %1").arg(m_settings.describe()));
+    m_stats.adapter = m_backend ? m_backend->adapterText() : QString();
+    if (!m_stats.adapter.isEmpty())
+        m_traffic->addEvent(tr("adapter: %1").arg(m_stats.adapter));
     finishOpen(true, QString());
     schedulePump(0);
 }

@@ -1,6 +1,8 @@
 #include "bus/rtutransport.h"
 
 #include "bus/answercheck.h"
+#include "bus/portholders.h"
+#include "bus/portsetup.h"
 #include "bus/rtuframe.h"
 
 #include <QCoreApplication>
@@ -110,12 +112,28 @@ void RtuTransport::open(const LinkSettings &settings)
     m_byteMs = pty ? 0.0 : RtuFrame::charsMs(1, settings.baud, bits);
     m_gapMs = 3.5 * m_byteMs;
     if (!port->open(QIODevice::ReadWrite)) {
-        const QString why = port->errorString();
+        // Another program on the port is named, not taken for a permission problem.
+        const QString why =
+            PortHolders::openFailure(settings.portName, port->error(), port->errorString());
         delete port;
         m_opening = false;
         Q_EMIT opened(false,
                       QCoreApplication::translate("stepcom::RtuTransport", "cannot open %1: %2")
                           .arg(settings.portName, why));
+        return;
+    }
+    m_adapter = SerialAdapter::identify(settings.portName);
+    // An FTDI chip holds answers up to its latency timer (16 ms): ask for 1 ms, no root needed.
+    if (m_adapter.family == SerialAdapter::Family::Ftdi &&
+        PortSetup::requestLowLatency(int(port->handle())).isEmpty())
+        m_adapter.refreshLatency();
+    // The RS-485 direction is set before anything is sent, or nothing is sent at all.
+    if (const QString refused = PortSetup::applyRs485(int(port->handle()), settings, m_adapter);
+        !refused.isEmpty()) {
+        port->close();
+        delete port;
+        m_opening = false;
+        Q_EMIT opened(false, refused);
         return;
     }
     connect(port, &QSerialPort::errorOccurred, this, [this, port](QSerialPort::SerialPortError e) {
@@ -227,7 +245,16 @@ void RtuTransport::writeNow()
     m_echoStripped = false;
     m_copyAnswered.clear();
     const QByteArray &adu = m_pending->adu;
+    auto *port = qobject_cast<QSerialPort *>(m_device.data());
+    const bool rts = port && m_settings.rs485 == LinkSettings::Rs485::Rts;
+    if (rts)
+        PortSetup::setRts(int(port->handle()), true);
     const qint64 written = m_device->write(adu);
+    if (rts) {
+        // The request out of Qt's buffer and off the wire, then RTS falls for the answer.
+        port->flush();
+        PortSetup::endOfSend(int(port->handle()));
+    }
     if (written != adu.size()) {
         LinkAnswer a;
         a.kind = LinkAnswer::Kind::Failed;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bus/linkbackend.h"
+#include "bus/serialadapter.h"
 
 #include <QByteArray>
 #include <QElapsedTimer>
@@ -42,6 +43,7 @@ public:
     void setQuietTimeMs(int ms) override { m_quietMs = ms; }
     void requireQuiet() override;
     void setScanMode(bool on) override { m_scan = on; }
+    QString adapterText() const override { return m_adapter.summary(); }
 
     // Empty when `path` can be a serial port; otherwise why not ("not a serial port").
     static QString notASerialPort(const QString &path);
@@ -107,6 +109,7 @@ private:
 
     LinkSettings m_settings;
     QPointer<QIODevice> m_device;
+    SerialAdapter m_adapter; // the port's adapter, from sysfs once open
     bool m_opening = false;
     bool m_failing = false;
     double m_byteMs = 0; // one character on the line (0 on a pty or TCP: no wire)

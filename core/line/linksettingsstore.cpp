@@ -26,6 +26,9 @@ LinkSettings read(QSettings &settings)
     s.answerDelayMs = value("answerDelayMs", s.answerDelayMs).toInt();
     s.turnaroundMs = value("turnaroundMs", s.turnaroundMs).toInt();
     s.echo = value("echo", s.echo).toBool();
+    LinkSettings::parseRs485(value("rs485", {}).toString(), &s.rs485); // keeps auto if unknown
+    s.rs485DelayBeforeUs = value("rs485DelayBeforeUs", 0).toInt();
+    s.rs485DelayAfterUs = value("rs485DelayAfterUs", 0).toInt();
     s.adaptTimeout = value("adaptTimeout", s.adaptTimeout).toBool();
     return s;
 }
@@ -50,6 +53,9 @@ void write(QSettings &settings, const LinkSettings &s)
     set("answerDelayMs", s.answerDelayMs);
     set("turnaroundMs", s.turnaroundMs);
     set("echo", s.echo);
+    set("rs485", LinkSettings::rs485Name(s.rs485));
+    set("rs485DelayBeforeUs", s.rs485DelayBeforeUs);
+    set("rs485DelayAfterUs", s.rs485DelayAfterUs);
     set("adaptTimeout", s.adaptTimeout);
 }
 

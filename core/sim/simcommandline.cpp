@@ -40,6 +40,10 @@ void SimCommandLine::addOptions(QCommandLineParser &p)
                  tr("Serve Modbus RTU on the serial PORT (e.g. COM10, one end of a com0com "
                     "pair, or /dev/ttyUSB1) at the device's baud rate, 8N1."),
                  tr("PORT")});
+    p.addOption({QStringLiteral("line"),
+                 tr("Serve a line of N pseudo-terminals: every byte one program sends reaches "
+                    "the others and the controller, as on RS-485 (a master and a listener)."),
+                 n});
     p.addOption({QStringLiteral("no-baud-check"),
                  tr("Answer whatever baud rate the client set (by default a client whose baud "
                     "differs from register 40213 gets silence, as on a real line).")});
@@ -231,6 +235,12 @@ bool SimCommandLine::toOptions(const QCommandLineParser &p, SimOptions *o, QStri
     o->rtu = p.isSet(QStringLiteral("pty")) || p.isSet(QStringLiteral("link"));
     o->linkPath = p.value(QStringLiteral("link"));
     o->checkBaud = !p.isSet(QStringLiteral("no-baud-check"));
+    if (p.isSet(QStringLiteral("line"))) {
+        if (!toInt(p.value(QStringLiteral("line")), 1, 32, &o->line))
+            return fail(tr("--line: '%1' is not a number of ptys from 1 to 32")
+                            .arg(p.value(QStringLiteral("line"))));
+        o->rtu = true;
+    }
     o->serialPort = p.value(QStringLiteral("serial"));
     if (p.isSet(QStringLiteral("serial")) && o->serialPort.isEmpty())
         return fail(tr("--serial: no port given"));

@@ -30,6 +30,12 @@ struct SimOptions
     // comes straight back to it, as on half-duplex USB-RS485 adapters without echo suppression.
     bool echo = false;
 
+    // A line of this many pseudo-terminals (stepcom-sim --line N): every byte one program sends
+    // on its pty reaches the others and the controller, as on RS-485, so a master and a
+    // listener share the line. 0: one pty for one client. With --link PATH the ptys get the
+    // links PATH.1 .. PATH.N.
+    int line = 0;
+
     // Modbus RTU frames over plain TCP, as behind a transparent RS-485/Ethernet converter.
     bool rtuTcp = false;
     quint16 rtuTcpPort = 0; // 0: any free port, see SimHost::rtuTcpPort()

@@ -28,6 +28,7 @@ import argparse
 import os
 import re
 import select
+import shlex
 import shutil
 import signal
 import subprocess
@@ -187,7 +188,8 @@ def run_one(args, size_text, lang):
         env = dict(session.env)
         if scale:
             env["QT_SCALE_FACTOR"] = scale
-        app = session.start("stepcom", [args.stepcom, "--sim", "--lang", lang], env=env,
+        start_args = shlex.split(args.app_args) if args.app_args else ["--sim"]
+        app = session.start("stepcom", [args.stepcom] + start_args + ["--lang", lang], env=env,
                             stdout=subprocess.DEVNULL)
         walker = [sys.executable, os.path.abspath(__file__), "--walk", str(app.pid),
                   "--lang", lang, "--screen", "%dx%d" % size, "--title", title,
@@ -656,6 +658,10 @@ def main():
     parser.add_argument("--dump", help="the showing objects of every page, as text, into this "
                         "folder")
     parser.add_argument("--timeout", type=int, default=300, help="seconds for one walk")
+    parser.add_argument("--app-args", metavar="ARGS",
+                        help="how stepcom starts instead of --sim, one string (e.g. "
+                             "--app-args='--port P --listen': the window listening beside "
+                             "another master)")
     parser.add_argument("--startup", type=int, default=90,
                         help="seconds to wait for the program on the bus and connected")
     parser.add_argument("--walk", type=int, help=argparse.SUPPRESS)

@@ -115,7 +115,8 @@ private Q_SLOTS:
     void aBackupThatCannotBeSavedIsNotAUsageError()
     {
         // The backups' folder cannot be made, a file stands in its place: not done (1), not bad
-        // usage (2). The rest of the data folder stays usable (the simulator keeps its flash there).
+        // usage (2). The rest of the data folder stays usable (the simulator keeps its flash
+        // there).
         const QString data = dir.filePath(QStringLiteral("data"));
         QVERIFY(QDir().mkpath(data + QStringLiteral("/StepCom/stepcom")));
         QFile blocker(data + QStringLiteral("/StepCom/stepcom/backups"));

@@ -107,7 +107,7 @@ private Q_SLOTS:
         QTest::newRow("unknown command")
             << QStringList{"frobnicate"}
             << "unknown command 'frobnicate' (params, read, write, "
-               "command, move, monitor, dump, diff, "
+               "command, move, monitor, listen, dump, diff, "
                "apply, assign-id, scan, ports, report, replay, bundle)";
         QTest::newRow("read unknown") << QStringList{"read", "nope"} << "unknown parameter 'nope'";
     }

@@ -20,7 +20,8 @@ declare -A allowed=(
     [core/sim]="map bus motion session"
     [core/support]="map bus device session commissioning"
     [core/pendant]="map device motion session"
-    [ui]="map device motion session line profile commissioning report i18n support pendant"
+    [core/listen]="map bus session support"
+    [ui]="map device motion session line profile commissioning report i18n support pendant listen"
 )
 bad=0
 # The rules themselves must have no cycle: a room never reaches itself through the others.

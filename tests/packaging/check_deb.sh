@@ -50,6 +50,7 @@ expect=(./usr/bin/stepcom ./usr/bin/stepcomctl ./usr/bin/stepcom-sim
         ./usr/share/applications/org.stepcom.StepCom.desktop
         ./usr/share/mime/packages/org.stepcom.StepCom.xml
         ./usr/share/metainfo/org.stepcom.StepCom.metainfo.xml
+        ./usr/lib/udev/rules.d/60-stepcom-ftdi-latency.rules
         ./usr/share/icons/hicolor/scalable/apps/stepcom.svg
         ./usr/share/man/man1/stepcom.1.gz ./usr/share/man/man1/stepcomctl.1.gz
         ./usr/share/man/man1/stepcom-sim.1.gz ./usr/share/doc/stepcom/copyright

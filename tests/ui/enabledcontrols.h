@@ -29,6 +29,8 @@ inline QStringList enabledControls(MainWindow *window, const QSet<QString> &also
         "language_zh_CN", "connect", "scan", "refresh", "pauseButton", "fitButton",
         "clearTraceButton", "exportPngButton", "exportCsvButton", "recordButton", "previewFit",
         "previewExport", "openSessionLog", "createSupportBundle",
+        // listening beside another master sends nothing (its own test says what stays on)
+        "listenOnly",
         // StepCom's own settings and the checklist file, not the controller:
         // travel limits, the profile beside the checklist, a step skipped
         "applyTravelLimits", "chooseChecklistProfile", "skipButton",

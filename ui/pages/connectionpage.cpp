@@ -20,6 +20,7 @@
 #include <QRadioButton>
 #include <QSpinBox>
 #include <QStyle>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace stepcom {
@@ -207,7 +208,7 @@ void ConnectionPage::buildUi()
     statusLine->addWidget(m_led, 0, Qt::AlignTop);
     statusLine->addWidget(m_stateIcon, 0, Qt::AlignTop);
     statusLine->addWidget(m_status, 1);
-    auto *buttons = new QHBoxLayout;
+    auto *buttons = m_buttons = new QHBoxLayout;
     buttons->addWidget(m_connect);
     buttons->addWidget(m_disconnect);
     buttons->addStretch(1);
@@ -495,6 +496,7 @@ void ConnectionPage::updateState()
     m_lineBox->answerDelay()->setEnabled(idle);
     m_lineBox->turnaround()->setEnabled(idle);
     m_lineBox->echo()->setEnabled(idle);
+    m_lineBox->rs485()->setEnabled(idle);
     m_connect->setEnabled(idle);
     m_disconnect->setEnabled(!idle);
     m_scan->setEnabled(transport() != Transport::Simulator);
@@ -542,6 +544,14 @@ BusScanDialog *ConnectionPage::openBusScan()
     m_scanDialog->raise();
     m_scanDialog->activateWindow();
     return m_scanDialog;
+}
+
+void ConnectionPage::addLineAction(QAction *action)
+{
+    auto *button = new QToolButton(m_statusBox);
+    button->setDefaultAction(action);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    m_buttons->insertWidget(2, button);
 }
 
 } // namespace stepcom

@@ -18,6 +18,9 @@ class QPushButton;
 class QRadioButton;
 class QSpinBox;
 
+class QAction;
+class QHBoxLayout;
+
 namespace stepcom {
 
 class BusScanDialog;
@@ -61,6 +64,8 @@ public:
     void connectNow();
     void disconnectNow();
     void refreshPorts();
+    // A button for `action` beside Connect and Disconnect (the window's "Listen only").
+    void addLineAction(QAction *action);
     // The port list's source (tests hand it a fake listing); watched while the page is shown.
     SerialPorts *serialPorts() const { return m_serialPorts; }
     BusScanDialog *openBusScan();
@@ -133,6 +138,7 @@ private:
     QPushButton *m_connect = nullptr;
     QPushButton *m_disconnect = nullptr;
     QPushButton *m_scan = nullptr;
+    QHBoxLayout *m_buttons = nullptr;
 
     std::function<QString()> m_note;
     bool m_noteIsProblem = false;

@@ -3,12 +3,15 @@
 #include "line/linksettingsstore.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QStyle>
+
+#include <algorithm>
 
 namespace stepcom {
 
@@ -30,6 +33,8 @@ LineOptionsBox::LineOptionsBox(QWidget *parent)
     , m_turnaroundLabel(new QLabel(this))
     , m_turnaround(newMsSpin(this))
     , m_echo(new QCheckBox(this))
+    , m_rs485Label(new QLabel(this))
+    , m_rs485(new QComboBox(this))
     , m_offer(new QWidget(this))
     , m_offerText(new QLabel(m_offer))
     , m_acceptEcho(new QPushButton(m_offer))
@@ -39,6 +44,9 @@ LineOptionsBox::LineOptionsBox(QWidget *parent)
     m_turnaround->setObjectName(QStringLiteral("turnaround"));
     m_echo->setObjectName(QStringLiteral("echo"));
     m_acceptEcho->setObjectName(QStringLiteral("acceptEcho"));
+    m_rs485->setObjectName(QStringLiteral("rs485"));
+    m_rs485Label->setBuddy(m_rs485);
+    m_rs485->addItems({QString(), QString(), QString()}); // Auto, Kernel, Rts: texts below
     m_answerDelayLabel->setBuddy(m_answerDelay);
     m_turnaroundLabel->setBuddy(m_turnaround);
 
@@ -62,6 +70,8 @@ LineOptionsBox::LineOptionsBox(QWidget *parent)
     grid->setColumnStretch(4, 1);
     grid->addWidget(m_echo, 1, 0, 1, 5);
     grid->addWidget(m_offer, 2, 0, 1, 5);
+    grid->addWidget(m_rs485Label, 3, 0);
+    grid->addWidget(m_rs485, 3, 1, 1, 4, Qt::AlignLeft);
 
     connect(m_acceptEcho, &QPushButton::clicked, this, [this] {
         m_echo->setChecked(true);
@@ -80,6 +90,7 @@ void LineOptionsBox::apply(const LinkSettings &settings)
     m_answerDelay->setValue(settings.answerDelayMs);
     m_turnaround->setValue(settings.turnaroundMs);
     m_echo->setChecked(settings.echo);
+    m_rs485->setCurrentIndex(int(settings.rs485));
 }
 
 void LineOptionsBox::fillInto(LinkSettings &settings) const
@@ -87,6 +98,7 @@ void LineOptionsBox::fillInto(LinkSettings &settings) const
     settings.answerDelayMs = m_answerDelay->value();
     settings.turnaroundMs = m_turnaround->value();
     settings.echo = m_echo->isChecked();
+    settings.rs485 = LinkSettings::Rs485(std::max(0, m_rs485->currentIndex()));
 }
 
 void LineOptionsBox::offerEcho()
@@ -114,6 +126,13 @@ void LineOptionsBox::retranslate()
            "timeout is fitted to. Answers are judged by what they say, however soon they "
            "come"));
     m_answerDelay->setSuffix(tr(" ms"));
+    m_rs485Label->setText(tr("&RS-485 direction:"));
+    m_rs485->setItemText(0, tr("the adapter switches by itself"));
+    m_rs485->setItemText(1, tr("the driver's RS-485 mode (RTS on send)"));
+    m_rs485->setItemText(2, tr("StepCom switches RTS"));
+    m_rs485->setToolTip(tr("Who switches an RS-485 adapter between sending and receiving. Most "
+                           "adapters do it themselves; some converters need RTS. A driver that "
+                           "refuses is named when connecting, and nothing is sent"));
     m_turnaroundLabel->setText(tr("T&urnaround:"));
     m_turnaround->setToolTip(
         tr("Extra silence after an answer before the next request, for converters that need "

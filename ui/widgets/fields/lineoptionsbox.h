@@ -3,6 +3,7 @@
 #include <QGroupBox>
 
 class QCheckBox;
+class QComboBox;
 class QLabel;
 class QPushButton;
 class QSpinBox;
@@ -31,6 +32,8 @@ public:
     QSpinBox *answerDelay() const { return m_answerDelay; }
     QSpinBox *turnaround() const { return m_turnaround; }
     QCheckBox *echo() const { return m_echo; }
+    // Who switches an RS-485 adapter's direction (LinkSettings::Rs485, in its order).
+    QComboBox *rs485() const { return m_rs485; }
     QPushButton *acceptEcho() const { return m_acceptEcho; }
 
 Q_SIGNALS:
@@ -43,6 +46,8 @@ private:
     QLabel *m_turnaroundLabel;
     QSpinBox *m_turnaround;
     QCheckBox *m_echo;
+    QLabel *m_rs485Label;
+    QComboBox *m_rs485;
     QWidget *m_offer;
     QLabel *m_offerText;
     QPushButton *m_acceptEcho;
