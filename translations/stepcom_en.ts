@@ -98,6 +98,14 @@
         <source>Allow jogging from the pendant from launch.</source>
         <translation>Allow jogging from the pendant from launch.</translation>
     </message>
+    <message>
+        <source>With --port: listen only, another master drives the line (nothing is sent but the E-STOP).</source>
+        <translation>With --port: listen only, another master drives the line (nothing is sent but the E-STOP).</translation>
+    </message>
+    <message>
+        <source>--listen needs --port</source>
+        <translation>--listen needs --port</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -132,6 +140,10 @@
     <message>
         <source>%1 controllers on the line, ids %2 (the console acts on the first)</source>
         <translation>%1 controllers on the line, ids %2 (the console acts on the first)</translation>
+    </message>
+    <message>
+        <source>line %1 sent %2 bytes</source>
+        <translation>line %1 sent %2 bytes</translation>
     </message>
 </context>
 <context>
@@ -1990,6 +2002,37 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CtlListen</name>
+    <message>
+        <source>stepcomctl: the port %1 was lost: %2</source>
+        <translation>stepcomctl: the port %1 was lost: %2</translation>
+    </message>
+    <message>
+        <source>stepcomctl: cannot open %1 to listen: %2</source>
+        <translation>stepcomctl: cannot open %1 to listen: %2</translation>
+    </message>
+    <message>
+        <source>listening on %1 at %2 baud; nothing is sent (Ctrl-C ends)</source>
+        <translation>listening on %1 at %2 baud; nothing is sent (Ctrl-C ends)</translation>
+    </message>
+    <message>
+        <source>adapter: %1</source>
+        <translation>adapter: %1</translation>
+    </message>
+    <message>
+        <source>heard %1 frames (%2 bytes): %3 pairs, %4 unanswered, %5 exceptions, %6 CRC errors (frames skipped), %7 stray bytes, %8 answers without their request</source>
+        <translation>heard %1 frames (%2 bytes): %3 pairs, %4 unanswered, %5 exceptions, %6 CRC errors (frames skipped), %7 stray bytes, %8 answers without their request</translation>
+    </message>
+    <message>
+        <source>id %1: %2 requests, %3 answered in %4-%5 ms (%6 ms on average), %7 unanswered</source>
+        <translation>id %1: %2 requests, %3 answered in %4-%5 ms (%6 ms on average), %7 unanswered</translation>
+    </message>
+    <message>
+        <source>id %1: %2 requests, none answered</source>
+        <translation>id %1: %2 requests, none answered</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>no sample was read: every poll failed (see the errors above)</source>
@@ -2367,6 +2410,38 @@
     <message>
         <source>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</source>
         <translation>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</translation>
+    </message>
+    <message>
+        <source>listen: stop after N seconds (default: until Ctrl-C).</source>
+        <translation>listen: stop after N seconds (default: until Ctrl-C).</translation>
+    </message>
+    <message>
+        <source>Who switches an RS-485 adapter&apos;s direction: auto (the adapter itself, default), kernel (the driver&apos;s RS-485 mode, RTS on send) or rts (StepCom raises RTS for each request).</source>
+        <translation>Who switches an RS-485 adapter&apos;s direction: auto (the adapter itself, default), kernel (the driver&apos;s RS-485 mode, RTS on send) or rts (StepCom raises RTS for each request).</translation>
+    </message>
+    <message>
+        <source>mode</source>
+        <translation>mode</translation>
+    </message>
+    <message>
+        <source>--rs485 kernel: the delays before and after sending, in us (default 0,0).</source>
+        <translation>--rs485 kernel: the delays before and after sending, in us (default 0,0).</translation>
+    </message>
+    <message>
+        <source>before,after</source>
+        <translation>before,after</translation>
+    </message>
+    <message>
+        <source>--rs485: &apos;%1&apos; is not auto, kernel or rts</source>
+        <translation>--rs485: &apos;%1&apos; is not auto, kernel or rts</translation>
+    </message>
+    <message>
+        <source>--rs485-delays: &apos;%1&apos; is not BEFORE,AFTER in us (e.g. 0,500)</source>
+        <translation>--rs485-delays: &apos;%1&apos; is not BEFORE,AFTER in us (e.g. 0,500)</translation>
+    </message>
+    <message>
+        <source>--seconds: &apos;%1&apos; is not a positive number of seconds</source>
+        <translation>--seconds: &apos;%1&apos; is not a positive number of seconds</translation>
     </message>
 </context>
 <context>
@@ -2867,6 +2942,14 @@
     <message>
         <source>open it with: stepcomctl --port %1 read device.id</source>
         <translation>open it with: stepcomctl --port %1 read device.id</translation>
+    </message>
+    <message>
+        <source>listen takes no arguments, only --port, --baud, --parity, --seconds, --json and --log</source>
+        <translation>listen takes no arguments, only --port, --baud, --parity, --seconds, --json and --log</translation>
+    </message>
+    <message>
+        <source>listen hears a serial line: give --port (a line StepCom does not drive; --tcp and --sim have no other master to hear)</source>
+        <translation>listen hears a serial line: give --port (a line StepCom does not drive; --tcp and --sim have no other master to hear)</translation>
     </message>
 </context>
 <context>
@@ -3711,6 +3794,56 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Sections</source>
         <translation>Sections</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::HeardEvent</name>
+    <message>
+        <source> (answered in %1 ms)</source>
+        <translation> (answered in %1 ms)</translation>
+    </message>
+    <message>
+        <source>coils %1-%2</source>
+        <translation>coils %1-%2</translation>
+    </message>
+    <message>
+        <source>coil %1</source>
+        <translation>coil %1</translation>
+    </message>
+    <message>
+        <source>PLC read %1 from id %2: %3%4</source>
+        <translation>PLC read %1 from id %2: %3%4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s)</source>
+        <translation>
+            <numerusform>%n value</numerusform>
+            <numerusform>%n values</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>PLC wrote %1 to id %2%3</source>
+        <translation>PLC wrote %1 to id %2%3</translation>
+    </message>
+    <message>
+        <source>PLC sent %1 to id %2%3</source>
+        <translation>PLC sent %1 to id %2%3</translation>
+    </message>
+    <message>
+        <source>id %1 refused the PLC&apos;s FC%2 at %3: %4</source>
+        <translation>id %1 refused the PLC&apos;s FC%2 at %3: %4</translation>
+    </message>
+    <message>
+        <source>id %1 did not answer the PLC&apos;s FC%2 at %3%4</source>
+        <translation>id %1 did not answer the PLC&apos;s FC%2 at %3%4</translation>
+    </message>
+    <message>
+        <source>PLC broadcast FC%1 at %2 to every id: %3</source>
+        <translation>PLC broadcast FC%1 at %2 to every id: %3</translation>
+    </message>
+    <message>
+        <source>an answer from id %1 (FC%2) whose request was not heard</source>
+        <translation>an answer from id %1 (FC%2) whose request was not heard</translation>
     </message>
 </context>
 <context>
@@ -4622,6 +4755,41 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::LineHub</name>
+    <message>
+        <source>the line is already open</source>
+        <translation>the line is already open</translation>
+    </message>
+    <message>
+        <source>a line needs at least one party, not %1</source>
+        <translation>a line needs at least one party, not %1</translation>
+    </message>
+    <message>
+        <source>cannot make a pseudo-terminal: %1</source>
+        <translation>cannot make a pseudo-terminal: %1</translation>
+    </message>
+    <message>
+        <source>a line of pseudo-terminals needs Unix</source>
+        <translation>a line of pseudo-terminals needs Unix</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>cannot open %1: %2</translation>
+    </message>
+    <message>
+        <source>no party %1 on the line</source>
+        <translation>no party %1 on the line</translation>
+    </message>
+    <message>
+        <source>%1 exists and is not a symlink: not replaced</source>
+        <translation>%1 exists and is not a symlink: not replaced</translation>
+    </message>
+    <message>
+        <source>cannot make the symlink %1</source>
+        <translation>cannot make the symlink %1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::LineOptionsBox</name>
     <message>
         <source>Line and adapter</source>
@@ -4662,6 +4830,26 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Remember echo</source>
         <translation>Remember echo</translation>
+    </message>
+    <message>
+        <source>&amp;RS-485 direction:</source>
+        <translation>&amp;RS-485 direction:</translation>
+    </message>
+    <message>
+        <source>the adapter switches by itself</source>
+        <translation>the adapter switches by itself</translation>
+    </message>
+    <message>
+        <source>the driver&apos;s RS-485 mode (RTS on send)</source>
+        <translation>the driver&apos;s RS-485 mode (RTS on send)</translation>
+    </message>
+    <message>
+        <source>StepCom switches RTS</source>
+        <translation>StepCom switches RTS</translation>
+    </message>
+    <message>
+        <source>Who switches an RS-485 adapter between sending and receiving. Most adapters do it themselves; some converters need RTS. A driver that refuses is named when connecting, and nothing is sent</source>
+        <translation>Who switches an RS-485 adapter between sending and receiving. Most adapters do it themselves; some converters need RTS. A driver that refuses is named when connecting, and nothing is sent</translation>
     </message>
 </context>
 <context>
@@ -4748,6 +4936,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the answer delay (%1 ms) must be shorter than the timeout (%2 ms)</source>
         <translation>the answer delay (%1 ms) must be shorter than the timeout (%2 ms)</translation>
+    </message>
+    <message>
+        <source>RS-485 delays %1/%2 us are outside 0-100000 us</source>
+        <translation>RS-485 delays %1/%2 us are outside 0-100000 us</translation>
     </message>
 </context>
 <context>
@@ -4850,6 +5042,104 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 transactions/s</source>
         <translation>%1 transactions/s</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ListenLog</name>
+    <message>
+        <source>cannot write the session log %1: %2</source>
+        <translation>cannot write the session log %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 %2 baud, listening (another master drives the line)</source>
+        <translation>%1 %2 baud, listening (another master drives the line)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ListenMode</name>
+    <message>
+        <source>Listening needs the window free: disconnect, and close any profile file or replay first.</source>
+        <translation>Listening needs the window free: disconnect, and close any profile file or replay first.</translation>
+    </message>
+    <message>
+        <source>Listening hears a serial line: choose its port on the Connection page.</source>
+        <translation>Listening hears a serial line: choose its port on the Connection page.</translation>
+    </message>
+    <message>
+        <source>Cannot listen on %1: %2</source>
+        <translation>Cannot listen on %1: %2</translation>
+    </message>
+    <message>
+        <source>Listening ended: the port %1 was lost: %2</source>
+        <translation>Listening ended: the port %1 was lost: %2</translation>
+    </message>
+    <message>
+        <source>E-STOP into the other master&apos;s line (try %1)</source>
+        <translation>E-STOP into the other master&apos;s line (try %1)</translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged by id %1</source>
+        <translation>E-STOP acknowledged by id %1</translation>
+    </message>
+    <message>
+        <source>E-STOP sent %1 times into the other master&apos;s line, and id %2 never answered it: stop the machine by its own E-STOP</source>
+        <translation>E-STOP sent %1 times into the other master&apos;s line, and id %2 never answered it: stop the machine by its own E-STOP</translation>
+    </message>
+    <message>
+        <source>listening on %1 at %2 baud: another master drives the line, StepCom sends nothing</source>
+        <translation>listening on %1 at %2 baud: another master drives the line, StepCom sends nothing</translation>
+    </message>
+    <message>
+        <source>heard on %1</source>
+        <translation>heard on %1</translation>
+    </message>
+    <message>
+        <source>Stop listening</source>
+        <translation>Stop listening</translation>
+    </message>
+    <message>
+        <source>listening ended</source>
+        <translation>listening ended</translation>
+    </message>
+    <message>
+        <source>PLC (heard)</source>
+        <translation>PLC (heard)</translation>
+    </message>
+    <message>
+        <source>listening on %1</source>
+        <translation>listening on %1</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>E-STOP</translation>
+    </message>
+    <message>
+        <source>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it.</source>
+        <translation>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it.</translation>
+    </message>
+    <message>
+        <source>Send E-STOP</source>
+        <translation>Send E-STOP</translation>
+    </message>
+    <message>
+        <source>The E-STOP could not be sent on %1</source>
+        <translation>The E-STOP could not be sent on %1</translation>
+    </message>
+    <message>
+        <source>E-STOP sent into a line driven by another master</source>
+        <translation>E-STOP sent into a line driven by another master</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Listening on %1&lt;/b&gt; — another master drives the line. The values shown are the ones last heard in its traffic with id %2, not read by StepCom; a value never heard is unknown. Nothing is written, jogged or polled; the E-STOP asks first. The other master&apos;s writes (%3):</source>
+        <translation>&lt;b&gt;Listening on %1&lt;/b&gt; — another master drives the line. The values shown are the ones last heard in its traffic with id %2, not read by StepCom; a value never heard is unknown. Nothing is written, jogged or polled; the E-STOP asks first. The other master&apos;s writes (%3):</translation>
+    </message>
+    <message>
+        <source>Listen only (another master drives the line)</source>
+        <translation>Listen only (another master drives the line)</translation>
+    </message>
+    <message>
+        <source>The other master&apos;s writes</source>
+        <translation>The other master&apos;s writes</translation>
     </message>
 </context>
 <context>
@@ -5418,6 +5708,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</source>
         <translation> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</translation>
+    </message>
+    <message>
+        <source>adapter: %1</source>
+        <translation>adapter: %1</translation>
     </message>
 </context>
 <context>
@@ -6455,6 +6749,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Pendant…</source>
         <translation>Pendant…</translation>
     </message>
+    <message>
+        <source>Listening beside another master serves no pendant: stop listening first</source>
+        <translation>Listening beside another master serves no pendant: stop listening first</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::PendantControl</name>
@@ -6905,6 +7203,48 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>poll %1/%2 (%3)</source>
         <translation>poll %1/%2 (%3)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PortHolders</name>
+    <message>
+        <source>process %1</source>
+        <translation>process %1</translation>
+    </message>
+    <message>
+        <source>%1, process %2</source>
+        <translation>%1, process %2</translation>
+    </message>
+    <message>
+        <source>%1 is in use by another program</source>
+        <translation>%1 is in use by another program</translation>
+    </message>
+    <message>
+        <source>%1 is in use by another program (%2)</source>
+        <translation>%1 is in use by another program (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PortSetup</name>
+    <message>
+        <source>its driver</source>
+        <translation>its driver</translation>
+    </message>
+    <message>
+        <source>not on this system</source>
+        <translation>not on this system</translation>
+    </message>
+    <message>
+        <source>%1: the driver (%2) refused to switch RTS (%3); StepCom cannot drive the RS-485 direction by RTS here: try --rs485 auto with an adapter that switches by itself</source>
+        <translation>%1: the driver (%2) refused to switch RTS (%3); StepCom cannot drive the RS-485 direction by RTS here: try --rs485 auto with an adapter that switches by itself</translation>
+    </message>
+    <message>
+        <source>%1: the driver (%2) has no kernel RS-485 mode (%3): try --rs485 rts (StepCom switches RTS itself) or --rs485 auto (the adapter switches by itself)</source>
+        <translation>%1: the driver (%2) has no kernel RS-485 mode (%3): try --rs485 rts (StepCom switches RTS itself) or --rs485 auto (the adapter switches by itself)</translation>
+    </message>
+    <message>
+        <source>%1: RS-485 direction modes need Linux: use --rs485 auto</source>
+        <translation>%1: RS-485 direction modes need Linux: use --rs485 auto</translation>
     </message>
 </context>
 <context>
@@ -8174,6 +8514,49 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SerialAdapter</name>
+    <message>
+        <source>holds received bytes up to its latency timer (16 ms by default), which adds up to 16 ms to every answer; StepCom asks for low latency (1 ms) when it opens the port, and the package&apos;s udev rule sets 1 ms; the kernel&apos;s RS-485 mode is supported by some chips</source>
+        <translation>holds received bytes up to its latency timer (16 ms by default), which adds up to 16 ms to every answer; StepCom asks for low latency (1 ms) when it opens the port, and the package&apos;s udev rule sets 1 ms; the kernel&apos;s RS-485 mode is supported by some chips</translation>
+    </message>
+    <message>
+        <source>no latency timer to set; delivers bytes in small USB packets; the driver refuses the kernel&apos;s RS-485 mode (use --rs485 auto with an adapter that switches by itself, or rts)</source>
+        <translation>no latency timer to set; delivers bytes in small USB packets; the driver refuses the kernel&apos;s RS-485 mode (use --rs485 auto with an adapter that switches by itself, or rts)</translation>
+    </message>
+    <message>
+        <source>no latency timer to set; RS-485 direction, when the adapter has it, is switched by the chip itself (set in its configuration), not by the kernel&apos;s RS-485 mode</source>
+        <translation>no latency timer to set; RS-485 direction, when the adapter has it, is switched by the chip itself (set in its configuration), not by the kernel&apos;s RS-485 mode</translation>
+    </message>
+    <message>
+        <source>copies of the chip are common and the driver may refuse them; no kernel RS-485 mode; bytes come in USB packets</source>
+        <translation>copies of the chip are common and the driver may refuse them; no kernel RS-485 mode; bytes come in USB packets</translation>
+    </message>
+    <message>
+        <source>a microcontroller&apos;s own USB serial: the baud set may mean nothing to it and the line&apos;s timing is its firmware&apos;s</source>
+        <translation>a microcontroller&apos;s own USB serial: the baud set may mean nothing to it and the line&apos;s timing is its firmware&apos;s</translation>
+    </message>
+    <message>
+        <source>an on-board UART: no USB packets; RS-485 direction through the kernel&apos;s RS-485 mode where the board wires it, else by RTS</source>
+        <translation>an on-board UART: no USB packets; RS-485 direction through the kernel&apos;s RS-485 mode where the board wires it, else by RTS</translation>
+    </message>
+    <message>
+        <source>native UART</source>
+        <translation>native UART</translation>
+    </message>
+    <message>
+        <source>pseudo-terminal</source>
+        <translation>pseudo-terminal</translation>
+    </message>
+    <message>
+        <source>, latency timer %1 ms</source>
+        <translation>, latency timer %1 ms</translation>
+    </message>
+    <message>
+        <source>, serial %1</source>
+        <translation>, serial %1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SerialPorts</name>
     <message>
         <source>S/N %1</source>
@@ -8447,6 +8830,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>--slow-coil: &apos;%1&apos;: %2 is no coil of the map</source>
         <translation>--slow-coil: &apos;%1&apos;: %2 is no coil of the map</translation>
+    </message>
+    <message>
+        <source>Serve a line of N pseudo-terminals: every byte one program sends reaches the others and the controller, as on RS-485 (a master and a listener).</source>
+        <translation>Serve a line of N pseudo-terminals: every byte one program sends reaches the others and the controller, as on RS-485 (a master and a listener).</translation>
+    </message>
+    <message>
+        <source>--line: &apos;%1&apos; is not a number of ptys from 1 to 32</source>
+        <translation>--line: &apos;%1&apos; is not a number of ptys from 1 to 32</translation>
     </message>
 </context>
 <context>
@@ -9841,6 +10232,20 @@ program holds it; no controller needed</translation>
     <message>
         <source>the built-in simulator starts from the factory again (id 1, 9600 baud)</source>
         <translation>the built-in simulator starts from the factory again (id 1, 9600 baud)</translation>
+    </message>
+    <message>
+        <source>hear a line another master (a PLC, an HMI) drives, never
+sending a byte: each request paired with its answer and
+decoded by the map, a line each as heard (--json), until
+Ctrl-C or --seconds N; a summary of frames, pairs, CRC
+errors and answer times on stderr (--port, --baud,
+--parity; --log FILE keeps it as a session log)</source>
+        <translation>hear a line another master (a PLC, an HMI) drives, never
+sending a byte: each request paired with its answer and
+decoded by the map, a line each as heard (--json), until
+Ctrl-C or --seconds N; a summary of frames, pairs, CRC
+errors and answer times on stderr (--port, --baud,
+--parity; --log FILE keeps it as a session log)</translation>
     </message>
 </context>
 </TS>

@@ -98,6 +98,14 @@
         <source>Allow jogging from the pendant from launch.</source>
         <translation>启动时即允许从手持器点动。</translation>
     </message>
+    <message>
+        <source>With --port: listen only, another master drives the line (nothing is sent but the E-STOP).</source>
+        <translation>与 --port 一起使用：仅监听，由另一个主站驱动线路（除急停外不发送任何数据）。</translation>
+    </message>
+    <message>
+        <source>--listen needs --port</source>
+        <translation>--listen 需要 --port</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -132,6 +140,10 @@
     <message>
         <source>%1 controllers on the line, ids %2 (the console acts on the first)</source>
         <translation>总线上有 %1 台控制器，ID 为 %2（控制台操作第一台）</translation>
+    </message>
+    <message>
+        <source>line %1 sent %2 bytes</source>
+        <translation>线路端口 %1 发送了 %2 字节</translation>
     </message>
 </context>
 <context>
@@ -1980,6 +1992,37 @@
     </message>
 </context>
 <context>
+    <name>stepcom::CtlListen</name>
+    <message>
+        <source>stepcomctl: the port %1 was lost: %2</source>
+        <translation>stepcomctl：端口 %1 已断开：%2</translation>
+    </message>
+    <message>
+        <source>stepcomctl: cannot open %1 to listen: %2</source>
+        <translation>stepcomctl：无法打开 %1 进行监听：%2</translation>
+    </message>
+    <message>
+        <source>listening on %1 at %2 baud; nothing is sent (Ctrl-C ends)</source>
+        <translation>正在 %1 上以 %2 波特率监听；不发送任何数据（Ctrl-C 结束）</translation>
+    </message>
+    <message>
+        <source>adapter: %1</source>
+        <translation>适配器：%1</translation>
+    </message>
+    <message>
+        <source>heard %1 frames (%2 bytes): %3 pairs, %4 unanswered, %5 exceptions, %6 CRC errors (frames skipped), %7 stray bytes, %8 answers without their request</source>
+        <translation>听到 %1 帧（%2 字节）：%3 对请求与应答，%4 个无应答，%5 个异常，%6 个 CRC 错误（帧已跳过），%7 个杂散字节，%8 个应答未听到其请求</translation>
+    </message>
+    <message>
+        <source>id %1: %2 requests, %3 answered in %4-%5 ms (%6 ms on average), %7 unanswered</source>
+        <translation>站号 %1：%2 个请求，%3 个在 %4-%5 ms 内应答（平均 %6 ms），%7 个无应答</translation>
+    </message>
+    <message>
+        <source>id %1: %2 requests, none answered</source>
+        <translation>站号 %1：%2 个请求，均无应答</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::CtlMonitor</name>
     <message>
         <source>no sample was read: every poll failed (see the errors above)</source>
@@ -2356,6 +2399,38 @@
     <message>
         <source>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</source>
         <translation>--baud：“%1”不是 4800、9600、19200 或 38400</translation>
+    </message>
+    <message>
+        <source>listen: stop after N seconds (default: until Ctrl-C).</source>
+        <translation>listen：N 秒后停止（默认：直到 Ctrl-C）。</translation>
+    </message>
+    <message>
+        <source>Who switches an RS-485 adapter&apos;s direction: auto (the adapter itself, default), kernel (the driver&apos;s RS-485 mode, RTS on send) or rts (StepCom raises RTS for each request).</source>
+        <translation>由谁切换 RS-485 适配器的收发方向：auto（适配器自己，默认）、kernel（驱动的 RS-485 模式，发送时置 RTS）或 rts（StepCom 为每个请求拉高 RTS）。</translation>
+    </message>
+    <message>
+        <source>mode</source>
+        <translation>模式</translation>
+    </message>
+    <message>
+        <source>--rs485 kernel: the delays before and after sending, in us (default 0,0).</source>
+        <translation>--rs485 kernel：发送前后的延时，单位 us（默认 0,0）。</translation>
+    </message>
+    <message>
+        <source>before,after</source>
+        <translation>前,后</translation>
+    </message>
+    <message>
+        <source>--rs485: &apos;%1&apos; is not auto, kernel or rts</source>
+        <translation>--rs485：“%1”不是 auto、kernel 或 rts</translation>
+    </message>
+    <message>
+        <source>--rs485-delays: &apos;%1&apos; is not BEFORE,AFTER in us (e.g. 0,500)</source>
+        <translation>--rs485-delays：“%1”不是以 us 为单位的 前,后（例如 0,500）</translation>
+    </message>
+    <message>
+        <source>--seconds: &apos;%1&apos; is not a positive number of seconds</source>
+        <translation>--seconds：“%1”不是正的秒数</translation>
     </message>
 </context>
 <context>
@@ -2849,6 +2924,14 @@
     <message>
         <source>open it with: stepcomctl --port %1 read device.id</source>
         <translation>打开方式：stepcomctl --port %1 read device.id</translation>
+    </message>
+    <message>
+        <source>listen takes no arguments, only --port, --baud, --parity, --seconds, --json and --log</source>
+        <translation>listen 不带参数，只接受 --port、--baud、--parity、--seconds、--json 和 --log</translation>
+    </message>
+    <message>
+        <source>listen hears a serial line: give --port (a line StepCom does not drive; --tcp and --sim have no other master to hear)</source>
+        <translation>listen 监听串口线路：请给出 --port（一条不由 StepCom 驱动的线路；--tcp 和 --sim 上没有其他主站可听）</translation>
     </message>
 </context>
 <context>
@@ -3686,6 +3769,55 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Sections</source>
         <translation>章节</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::HeardEvent</name>
+    <message>
+        <source> (answered in %1 ms)</source>
+        <translation>（%1 ms 内应答）</translation>
+    </message>
+    <message>
+        <source>coils %1-%2</source>
+        <translation>线圈 %1-%2</translation>
+    </message>
+    <message>
+        <source>coil %1</source>
+        <translation>线圈 %1</translation>
+    </message>
+    <message>
+        <source>PLC read %1 from id %2: %3%4</source>
+        <translation>PLC 从站号 %2 读取 %1：%3%4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s)</source>
+        <translation>
+            <numerusform>%n 个值</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>PLC wrote %1 to id %2%3</source>
+        <translation>PLC 向站号 %2 写入 %1%3</translation>
+    </message>
+    <message>
+        <source>PLC sent %1 to id %2%3</source>
+        <translation>PLC 向站号 %2 发送 %1%3</translation>
+    </message>
+    <message>
+        <source>id %1 refused the PLC&apos;s FC%2 at %3: %4</source>
+        <translation>站号 %1 拒绝了 PLC 在 %3 的 FC%2：%4</translation>
+    </message>
+    <message>
+        <source>id %1 did not answer the PLC&apos;s FC%2 at %3%4</source>
+        <translation>站号 %1 未应答 PLC 在 %3 的 FC%2%4</translation>
+    </message>
+    <message>
+        <source>PLC broadcast FC%1 at %2 to every id: %3</source>
+        <translation>PLC 向所有站号广播 %2 的 FC%1：%3</translation>
+    </message>
+    <message>
+        <source>an answer from id %1 (FC%2) whose request was not heard</source>
+        <translation>来自站号 %1 的应答（FC%2），未听到其请求</translation>
     </message>
 </context>
 <context>
@@ -4597,6 +4729,41 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::LineHub</name>
+    <message>
+        <source>the line is already open</source>
+        <translation>线路已打开</translation>
+    </message>
+    <message>
+        <source>a line needs at least one party, not %1</source>
+        <translation>线路至少需要一个端口，而不是 %1</translation>
+    </message>
+    <message>
+        <source>cannot make a pseudo-terminal: %1</source>
+        <translation>无法创建伪终端：%1</translation>
+    </message>
+    <message>
+        <source>a line of pseudo-terminals needs Unix</source>
+        <translation>伪终端线路需要 Unix 系统</translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>no party %1 on the line</source>
+        <translation>线路上没有端口 %1</translation>
+    </message>
+    <message>
+        <source>%1 exists and is not a symlink: not replaced</source>
+        <translation>%1 已存在且不是符号链接：未替换</translation>
+    </message>
+    <message>
+        <source>cannot make the symlink %1</source>
+        <translation>无法创建符号链接 %1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::LineOptionsBox</name>
     <message>
         <source>Line and adapter</source>
@@ -4637,6 +4804,26 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Remember echo</source>
         <translation>记住回显</translation>
+    </message>
+    <message>
+        <source>&amp;RS-485 direction:</source>
+        <translation>RS-485 收发方向(&amp;R)：</translation>
+    </message>
+    <message>
+        <source>the adapter switches by itself</source>
+        <translation>适配器自动切换</translation>
+    </message>
+    <message>
+        <source>the driver&apos;s RS-485 mode (RTS on send)</source>
+        <translation>驱动的 RS-485 模式（发送时置 RTS）</translation>
+    </message>
+    <message>
+        <source>StepCom switches RTS</source>
+        <translation>由 StepCom 切换 RTS</translation>
+    </message>
+    <message>
+        <source>Who switches an RS-485 adapter between sending and receiving. Most adapters do it themselves; some converters need RTS. A driver that refuses is named when connecting, and nothing is sent</source>
+        <translation>由谁切换 RS-485 适配器的发送与接收。大多数适配器自动切换；有些转换器需要 RTS。驱动拒绝时，连接时会指明该驱动，并且不发送任何数据</translation>
     </message>
 </context>
 <context>
@@ -4723,6 +4910,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>the answer delay (%1 ms) must be shorter than the timeout (%2 ms)</source>
         <translation>应答延时（%1 ms）必须短于超时（%2 ms）</translation>
+    </message>
+    <message>
+        <source>RS-485 delays %1/%2 us are outside 0-100000 us</source>
+        <translation>RS-485 延时 %1/%2 us 超出 0-100000 us</translation>
     </message>
 </context>
 <context>
@@ -4825,6 +5016,104 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>%1 transactions/s</source>
         <translation>%1 次通信/s</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ListenLog</name>
+    <message>
+        <source>cannot write the session log %1: %2</source>
+        <translation>无法写入会话日志 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 %2 baud, listening (another master drives the line)</source>
+        <translation>%1 %2 波特率，监听（由另一个主站驱动线路）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ListenMode</name>
+    <message>
+        <source>Listening needs the window free: disconnect, and close any profile file or replay first.</source>
+        <translation>监听需要窗口空闲：请先断开连接，并关闭所有参数文件或回放。</translation>
+    </message>
+    <message>
+        <source>Listening hears a serial line: choose its port on the Connection page.</source>
+        <translation>监听针对串口线路：请在连接页面选择其端口。</translation>
+    </message>
+    <message>
+        <source>Cannot listen on %1: %2</source>
+        <translation>无法在 %1 上监听：%2</translation>
+    </message>
+    <message>
+        <source>Listening ended: the port %1 was lost: %2</source>
+        <translation>监听已结束：端口 %1 已断开：%2</translation>
+    </message>
+    <message>
+        <source>E-STOP into the other master&apos;s line (try %1)</source>
+        <translation>向另一个主站的线路发送急停（第 %1 次）</translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged by id %1</source>
+        <translation>站号 %1 已确认急停</translation>
+    </message>
+    <message>
+        <source>E-STOP sent %1 times into the other master&apos;s line, and id %2 never answered it: stop the machine by its own E-STOP</source>
+        <translation>已向另一个主站的线路发送急停 %1 次，站号 %2 始终未应答：请用机器自身的急停按钮停机</translation>
+    </message>
+    <message>
+        <source>listening on %1 at %2 baud: another master drives the line, StepCom sends nothing</source>
+        <translation>正在 %1 上以 %2 波特率监听：由另一个主站驱动线路，StepCom 不发送任何数据</translation>
+    </message>
+    <message>
+        <source>heard on %1</source>
+        <translation>在 %1 上听到</translation>
+    </message>
+    <message>
+        <source>Stop listening</source>
+        <translation>停止监听</translation>
+    </message>
+    <message>
+        <source>listening ended</source>
+        <translation>监听已结束</translation>
+    </message>
+    <message>
+        <source>PLC (heard)</source>
+        <translation>PLC（听到）</translation>
+    </message>
+    <message>
+        <source>listening on %1</source>
+        <translation>正在 %1 上监听</translation>
+    </message>
+    <message>
+        <source>E-STOP</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it.</source>
+        <translation>这条线路由另一个主站驱动。要向站号 %1 发送急停，插入其通信中吗？急停会在第一个静默中发出，并重复发送直到控制器应答。</translation>
+    </message>
+    <message>
+        <source>Send E-STOP</source>
+        <translation>发送急停</translation>
+    </message>
+    <message>
+        <source>The E-STOP could not be sent on %1</source>
+        <translation>无法在 %1 上发送急停</translation>
+    </message>
+    <message>
+        <source>E-STOP sent into a line driven by another master</source>
+        <translation>急停已发送到由另一个主站驱动的线路</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Listening on %1&lt;/b&gt; — another master drives the line. The values shown are the ones last heard in its traffic with id %2, not read by StepCom; a value never heard is unknown. Nothing is written, jogged or polled; the E-STOP asks first. The other master&apos;s writes (%3):</source>
+        <translation>&lt;b&gt;正在 %1 上监听&lt;/b&gt;——由另一个主站驱动线路。显示的值是在它与站号 %2 的通信中最后听到的值，并非 StepCom 读取；从未听到的值为未知。不写入、不点动、不轮询；急停会先询问。另一个主站的写入（%3）：</translation>
+    </message>
+    <message>
+        <source>Listen only (another master drives the line)</source>
+        <translation>仅监听（由另一个主站驱动线路）</translation>
+    </message>
+    <message>
+        <source>The other master&apos;s writes</source>
+        <translation>另一个主站的写入</translation>
     </message>
 </context>
 <context>
@@ -5388,6 +5677,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source> -- check the device id (%1), the baud rate and parity (%2), the A/B wiring; the bus scan finds controllers (the window&apos;s Scan bus, or stepcomctl scan)</source>
         <translation> —— 请检查站号（%1）、波特率和校验（%2）以及 A/B 接线；总线扫描可以找到控制器（窗口中的“扫描总线”，或 stepcomctl scan）</translation>
+    </message>
+    <message>
+        <source>adapter: %1</source>
+        <translation>适配器：%1</translation>
     </message>
 </context>
 <context>
@@ -6417,6 +6710,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Pendant…</source>
         <translation>手持器…</translation>
     </message>
+    <message>
+        <source>Listening beside another master serves no pendant: stop listening first</source>
+        <translation>在另一个主站旁监听时不提供手持器：请先停止监听</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::PendantControl</name>
@@ -6864,6 +7161,48 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>poll %1/%2 (%3)</source>
         <translation>轮询 %1/%2（%3）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PortHolders</name>
+    <message>
+        <source>process %1</source>
+        <translation>进程 %1</translation>
+    </message>
+    <message>
+        <source>%1, process %2</source>
+        <translation>%1，进程 %2</translation>
+    </message>
+    <message>
+        <source>%1 is in use by another program</source>
+        <translation>%1 正被另一个程序占用</translation>
+    </message>
+    <message>
+        <source>%1 is in use by another program (%2)</source>
+        <translation>%1 正被另一个程序占用（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::PortSetup</name>
+    <message>
+        <source>its driver</source>
+        <translation>其驱动</translation>
+    </message>
+    <message>
+        <source>not on this system</source>
+        <translation>本系统不支持</translation>
+    </message>
+    <message>
+        <source>%1: the driver (%2) refused to switch RTS (%3); StepCom cannot drive the RS-485 direction by RTS here: try --rs485 auto with an adapter that switches by itself</source>
+        <translation>%1：驱动（%2）拒绝切换 RTS（%3）；StepCom 无法在此用 RTS 控制 RS-485 方向：请改用 --rs485 auto，并使用能自动切换方向的适配器</translation>
+    </message>
+    <message>
+        <source>%1: the driver (%2) has no kernel RS-485 mode (%3): try --rs485 rts (StepCom switches RTS itself) or --rs485 auto (the adapter switches by itself)</source>
+        <translation>%1：驱动（%2）没有内核 RS-485 模式（%3）：请尝试 --rs485 rts（由 StepCom 自己切换 RTS）或 --rs485 auto（由适配器自动切换）</translation>
+    </message>
+    <message>
+        <source>%1: RS-485 direction modes need Linux: use --rs485 auto</source>
+        <translation>%1：RS-485 方向模式需要 Linux：请使用 --rs485 auto</translation>
     </message>
 </context>
 <context>
@@ -8120,6 +8459,49 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SerialAdapter</name>
+    <message>
+        <source>holds received bytes up to its latency timer (16 ms by default), which adds up to 16 ms to every answer; StepCom asks for low latency (1 ms) when it opens the port, and the package&apos;s udev rule sets 1 ms; the kernel&apos;s RS-485 mode is supported by some chips</source>
+        <translation>收到的字节最多保留到延迟定时器到期（默认 16 ms），每个应答最多因此多出 16 ms；StepCom 打开端口时请求低延迟（1 ms），安装包的 udev 规则将其设为 1 ms；部分芯片支持内核 RS-485 模式</translation>
+    </message>
+    <message>
+        <source>no latency timer to set; delivers bytes in small USB packets; the driver refuses the kernel&apos;s RS-485 mode (use --rs485 auto with an adapter that switches by itself, or rts)</source>
+        <translation>没有可设置的延迟定时器；字节以小 USB 包送达；驱动不支持内核 RS-485 模式（请对能自动切换方向的适配器使用 --rs485 auto，或使用 rts）</translation>
+    </message>
+    <message>
+        <source>no latency timer to set; RS-485 direction, when the adapter has it, is switched by the chip itself (set in its configuration), not by the kernel&apos;s RS-485 mode</source>
+        <translation>没有可设置的延迟定时器；适配器若带 RS-485，方向由芯片自身切换（在其配置中设定），而不是由内核 RS-485 模式切换</translation>
+    </message>
+    <message>
+        <source>copies of the chip are common and the driver may refuse them; no kernel RS-485 mode; bytes come in USB packets</source>
+        <translation>该芯片的仿制品很常见，驱动可能拒绝它们；没有内核 RS-485 模式；字节以 USB 包送达</translation>
+    </message>
+    <message>
+        <source>a microcontroller&apos;s own USB serial: the baud set may mean nothing to it and the line&apos;s timing is its firmware&apos;s</source>
+        <translation>单片机自带的 USB 串口：设置的波特率对它可能没有意义，线路时序取决于其固件</translation>
+    </message>
+    <message>
+        <source>an on-board UART: no USB packets; RS-485 direction through the kernel&apos;s RS-485 mode where the board wires it, else by RTS</source>
+        <translation>板载 UART：没有 USB 包延迟；若电路板已连线，RS-485 方向通过内核 RS-485 模式切换，否则通过 RTS</translation>
+    </message>
+    <message>
+        <source>native UART</source>
+        <translation>板载 UART</translation>
+    </message>
+    <message>
+        <source>pseudo-terminal</source>
+        <translation>伪终端</translation>
+    </message>
+    <message>
+        <source>, latency timer %1 ms</source>
+        <translation>，延迟定时器 %1 ms</translation>
+    </message>
+    <message>
+        <source>, serial %1</source>
+        <translation>，序列号 %1</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SerialPorts</name>
     <message>
         <source>S/N %1</source>
@@ -8393,6 +8775,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>--slow-coil: &apos;%1&apos;: %2 is no coil of the map</source>
         <translation>--slow-coil：“%1”：%2 不是寄存器表中的线圈</translation>
+    </message>
+    <message>
+        <source>Serve a line of N pseudo-terminals: every byte one program sends reaches the others and the controller, as on RS-485 (a master and a listener).</source>
+        <translation>提供由 N 个伪终端组成的线路：一个程序发送的每个字节都会到达其他程序和控制器，如同 RS-485（一个主站和一个监听者）。</translation>
+    </message>
+    <message>
+        <source>--line: &apos;%1&apos; is not a number of ptys from 1 to 32</source>
+        <translation>--line：“%1”不是 1 到 32 之间的伪终端数量</translation>
     </message>
 </context>
 <context>
@@ -9781,6 +10171,20 @@ program holds it; no controller needed</source>
     <message>
         <source>the built-in simulator starts from the factory again (id 1, 9600 baud)</source>
         <translation>内置仿真器已恢复出厂状态（ID 1，9600 波特）</translation>
+    </message>
+    <message>
+        <source>hear a line another master (a PLC, an HMI) drives, never
+sending a byte: each request paired with its answer and
+decoded by the map, a line each as heard (--json), until
+Ctrl-C or --seconds N; a summary of frames, pairs, CRC
+errors and answer times on stderr (--port, --baud,
+--parity; --log FILE keeps it as a session log)</source>
+        <translation>监听由另一个主站（PLC、HMI）驱动的线路，从不发送
+任何字节：每个请求与其应答配对，按寄存器表解码，
+听到即输出一行（--json），直到 Ctrl-C 或 --seconds N；
+结束时在标准错误输出帧、配对、CRC 错误和应答时间的
+汇总（--port、--baud、--parity；--log FILE 将其保存
+为会话日志）</translation>
     </message>
 </context>
 </TS>
