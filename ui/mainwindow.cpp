@@ -1,8 +1,8 @@
 #include "mainwindow.h"
 
-#include "backupguard.h"                 // issue 17
-#include "busactions.h"                  // issue 16
-#include "dialogs/supportbundledialog.h" // issue 26
+#include "backupguard.h"
+#include "busactions.h"
+#include "dialogs/supportbundledialog.h"
 #include "dialogs/writechangesdialog.h"
 #include "emergencystop.h"
 #include "help/guidewindow.h"
@@ -11,19 +11,19 @@
 #include "listenmode.h"
 #include "machineactions.h"
 #include "offlineactions.h"
-#include "pages/checklistpage.h" // issue 17
+#include "pages/checklistpage.h"
 #include "pages/connectionpage.h"
 #include "pages/devicepage.h"
 #include "pages/inputspage.h"
-#include "pages/interpolationpage.h" // interpolation (issue 6)
-#include "pages/modespage.h"         // special modes (issue 6)
-#include "pages/motionpage.h"        // jogging (issue 5)
+#include "pages/interpolationpage.h" // interpolation
+#include "pages/modespage.h"         // special modes
+#include "pages/motionpage.h"        // jogging
 #include "pages/motorpage.h"
-#include "pages/plotpage.h" // monitoring (issue 5)
+#include "pages/plotpage.h" // monitoring
 #include "pendant/pendantserver.h"
-#include "pendantactions.h" // working without the machine (issue 18)
-#include "profileactions.h" // profiles (issue 7)
-#include "replaymode.h"     // replaying a session log (issue 26)
+#include "pendantactions.h" // working without the machine
+#include "profileactions.h" // profiles
+#include "replaymode.h"     // replaying a session log
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/linkhealth.h"
@@ -34,12 +34,12 @@
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/messageview.h"
 #include "widgets/docks/offlinebanner.h"
-#include "widgets/docks/pagesidebar.h" // issue 25
-#include "widgets/docks/statusdock.h"  // monitoring (issue 5)
+#include "widgets/docks/pagesidebar.h"
+#include "widgets/docks/statusdock.h" // monitoring
 #include "widgets/docks/statusmessage.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/fields/verticalscrollarea.h"
-#include "widgets/motion/travellimitseditor.h" // issue 17
+#include "widgets/motion/travellimitseditor.h"
 #include "widgets/replay/replaybar.h"
 #include "writeflow.h"
 
@@ -78,21 +78,21 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
 {
     setObjectName(QStringLiteral("mainWindow"));
     m_writeFlow = new WriteFlow(session, this);
-    // --- commissioning (issue 17): backups before risky operations, saved travel limits ---
+    // --- commissioning: backups before risky operations, saved travel limits ---
     m_backups = new BackupGuard(session, this);
     TravelLimitsEditor::restoreSaved(session);
     auto *splitter = new QSplitter(this);
     splitter->addWidget(m_sidebar);
     splitter->addWidget(m_stack);
     splitter->setStretchFactor(1, 1);
-    // Working without the machine (issue 18): the banner above the pages while a file is edited.
+    // Working without the machine: the banner above the pages while a file is edited.
     m_offline = new OfflineActions(session, this);
     m_offlineBanner = new OfflineBanner(m_offline->document(), this);
     auto *central = new QWidget(this);
     auto *centralLayout = new QVBoxLayout(central);
     centralLayout->setContentsMargins(0, 0, 0, 0);
     centralLayout->addWidget(m_offlineBanner);
-    m_replay = new ReplayMode(session, this); // issue 26: its banner there too, its bar below
+    m_replay = new ReplayMode(session, this); // Its banner there too, its bar below
     centralLayout->addWidget(m_replay->banner());
     centralLayout->addWidget(splitter, 1);
     setCentralWidget(central);
@@ -103,13 +103,13 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     addPage(connectionPage);
     for (int n = 1; n <= session->map().blockCount(QStringLiteral("motor")); ++n)
         addPage(new MotorPage(session, n, this));
-    // In commissioning order (issue 25): the sidebar groups them by Page::stage().
+    // In commissioning order: the sidebar groups them by Page::stage().
     addPage(new InputsPage(session, this));
-    addPage(m_motion = new MotionPage(session, this)); // jogging and homing (issue 5)
-    addPage(new ModesPage(session, this));             // special modes (issue 6)
-    addPage(new InterpolationPage(session, this));     // interpolation (issue 6)
-    addPage(m_plots = new PlotPage(session, this));    // monitoring (issue 5)
-    addPage(m_checklist = new ChecklistPage(session, m_writeFlow, this)); // issue 17
+    addPage(m_motion = new MotionPage(session, this)); // jogging and homing
+    addPage(new ModesPage(session, this));             // special modes
+    addPage(new InterpolationPage(session, this));     // interpolation
+    addPage(m_plots = new PlotPage(session, this));    // monitoring
+    addPage(m_checklist = new ChecklistPage(session, m_writeFlow, this));
     addPage(new DevicePage(session, this)); // its id and baud, save to flash, factory reset
     m_sidebar->setCurrentPage(0);
 
@@ -120,7 +120,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     centralLayout->insertWidget(2, m_listen->banner());
     createMenus();
     createDocks();
-    // Under the pages, on every page: positions, states and the E-STOP (issue 25).
+    // Under the pages, on every page: positions, states and the E-STOP.
     m_strip = new MachineStrip(session, m_estop, central);
     m_strip->setDeviceNamer([this](int id) { return m_deviceDock->nameOf(id); });
     m_pendant = new PendantActions(m_session, m_strip, m_sessionLog, m_replay, m_offline, this);
@@ -144,23 +144,23 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     connect(m_sessionLog, &SessionLog::failed, this, [this](const QString &reason) {
         m_messages->add(DeviceSession::Severity::Warning, reason);
     });
-    connect(m_profiles, &ProfileActions::finished, this, // profiles (issue 7)
+    connect(m_profiles, &ProfileActions::finished, this, // profiles
             [this](bool ok, const QString &text) {
                 m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Error,
                                text);
             });
-    // Passing messages left of the link status, cut short before they reach it (issue 19).
+    // Passing messages left of the link status, cut short before they reach it.
     m_status = new StatusMessage(m_messages, this);
     statusBar()->addWidget(m_status, 1);
     statusBar()->addPermanentWidget(m_linkStatus);
-    // --- working without the machine (issue 18) ---
+    // --- working without the machine ---
     m_profiles->setOfflineOpener([this](const QString &path) { return m_offline->openFile(path); });
     connect(m_offline, &OfflineActions::finished, this, [this](bool ok, const QString &text) {
         m_status->post(ok ? DeviceSession::Severity::Info : DeviceSession::Severity::Warning, text);
     });
     connect(m_offline->document(), &ProfileDocument::changed, this, &MainWindow::showOrigin);
     // --- end working without the machine ---
-    m_replay->setViews({m_traffic, m_deviceDock, m_plots, m_strip}); // issue 26
+    m_replay->setViews({m_traffic, m_deviceDock, m_plots, m_strip});
     m_listen->setStrip(m_strip);
     // Pages chosen, changes written, checklist results and device names go into the log.
     ReplayMode::recordActions(m_sessionLog, m_sidebar, m_pages, m_writeFlow, m_checklist,
@@ -277,7 +277,7 @@ void MainWindow::createActions()
         openGuide(UserGuide::topics().contains(topic) ? topic : QString());
     });
     m_guideAction->setShortcutContext(Qt::ApplicationShortcut);
-    // Help from afar (issue 26): the dialog does the work, with the profile in use.
+    // Help from afar: the dialog does the work, with the profile in use.
     m_bundle = make("createSupportBundle", QKeySequence(), [this] {
         const ProfileDocument *file = m_offline->document();
         QString profile = file->isOpen() ? file->path() : m_checklist->profilePath();
@@ -317,27 +317,27 @@ void MainWindow::createActions()
 void MainWindow::createMenus()
 {
     m_fileMenu = menuBar()->addMenu(QString());
-    // --- profiles (issue 7): open/compare/apply, save, recent, the commissioning report ---
+    // --- profiles: open/compare/apply, save, recent, the commissioning report ---
     m_profiles = new ProfileActions(m_session, this);
-    m_fileMenu->addAction(m_offline->newAction()); // issue 18
+    m_fileMenu->addAction(m_offline->newAction());
     m_fileMenu->addAction(m_profiles->openAction());
     m_fileMenu->addMenu(m_profiles->recentMenu());
     m_fileMenu->addAction(m_offline->saveAction());
     m_fileMenu->addAction(m_offline->saveAsAction());
     m_fileMenu->addAction(m_offline->closeAction());
     m_fileMenu->addAction(m_offline->compareAction());
-    m_fileMenu->addAction(m_replay->openAction()); // issue 26
+    m_fileMenu->addAction(m_replay->openAction());
     m_fileMenu->addAction(m_replay->closeAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->saveFromDeviceAction());
     m_fileMenu->addAction(m_profiles->saveFromEditedAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_profiles->reportAction());
-    m_fileMenu->addAction(m_offline->reportAction());   // issue 18
-    m_fileMenu->addAction(m_profiles->backupsAction()); // issue 17
+    m_fileMenu->addAction(m_offline->reportAction());
+    m_fileMenu->addAction(m_profiles->backupsAction());
     m_profiles->setBackupDirectory(m_backups->directory());
     m_profiles->setChecklistSource([this] { return m_checklist->reportChecklist(); });
-    m_machine = new MachineActions(m_session, this); // every device of the line (issue 16)
+    m_machine = new MachineActions(m_session, this); // every device of the line
     m_machine->addTo(m_fileMenu, m_backups->directory(), [this] { return m_deviceDock; });
     connect(m_machine, &MachineActions::finished, m_profiles, &ProfileActions::finished);
     m_fileMenu->addSeparator();
@@ -356,7 +356,7 @@ void MainWindow::createMenus()
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_guideAction);
     m_helpMenu->addAction(m_whatsThis);
-    m_helpMenu->addAction(m_bundle); // issue 26
+    m_helpMenu->addAction(m_bundle);
     m_helpMenu->addSeparator();
     m_helpMenu->addAction(m_about);
 }
@@ -376,7 +376,7 @@ void MainWindow::createDocks()
     m_messageDock->setWidget(m_messages);
     m_viewMenu->addAction(m_trafficDock->toggleViewAction());
     m_viewMenu->addAction(m_messageDock->toggleViewAction());
-    // --- monitoring (issue 5): the live status beside every page ---
+    // --- monitoring: the live status beside every page ---
     m_statusDock = new StatusDock(m_session, this);
     // Its content scrolls up and down, so the dock fits a low screen beside or below the page;
     // it asks for the width its content needs now (texts change with the state and the
@@ -388,7 +388,7 @@ void MainWindow::createDocks()
     }
     m_viewMenu->addAction(m_statusDock->toggleViewAction());
     // --- end monitoring ---
-    // Several controllers on one line (issue 16): opened from the View menu.
+    // Several controllers on one line: opened from the View menu.
     m_deviceDock = new DeviceListDock(m_session, this);
     placeDocks();
     connect(m_deviceDock->toggleViewAction(), &QAction::triggered, m_deviceDock, [this](bool on) {
@@ -411,7 +411,7 @@ void MainWindow::showOrigin()
 {
     updateTitle();
     const ProfileDocument *file = m_offline->document();
-    if (m_replay->isActive()) { // issue 26: a recording, in its banner's colour
+    if (m_replay->isActive()) { // A recording, in its banner's colour
         statusBar()->setStyleSheet(QStringLiteral(
             "QStatusBar { background: #fff0c8; } QStatusBar QLabel { color: black; }"));
         return;
@@ -452,9 +452,9 @@ void MainWindow::retranslate()
     m_quit->setText(tr("&Quit"));
     m_about->setText(tr("&About StepCom"));
     m_fileMenu->setTitle(tr("&File"));
-    m_profiles->retranslate(); // profiles (issue 7)
-    m_offline->retranslate();  // issue 18
-    m_replay->retranslate();   // issue 26
+    m_profiles->retranslate(); // profiles
+    m_offline->retranslate();
+    m_replay->retranslate();
     m_listen->retranslate();
     m_deviceMenu->setTitle(tr("&Device"));
     m_viewMenu->setTitle(tr("&View"));

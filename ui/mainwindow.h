@@ -19,22 +19,22 @@ class DeviceSession;
 class EmergencyStop;
 class GuideWindow;
 class LinkStatus;
-class MachineStrip; // issue 25
+class MachineStrip;
 class MessageView;
 class StatusMessage;
-class MotionPage;     // jogging (issue 5)
-class OfflineActions; // working without the machine (issue 18)
+class MotionPage;     // jogging
+class OfflineActions; // working without the machine
 class OfflineBanner;
 class Page;
 class PendantActions;
-class PageSidebar; // issue 25
+class PageSidebar;
 class MachineActions;
-class ProfileActions; // profiles (issue 7)
-class ReplayMode;     // replaying a session log (issue 26)
+class ProfileActions; // profiles
+class ReplayMode;     // replaying a session log
 class ListenMode;
-class DeviceListDock; // several controllers on one line (issue 16)
+class DeviceListDock; // several controllers on one line
 class SessionLog;
-class StatusDock; // monitoring (issue 5)
+class StatusDock; // monitoring
 class TrafficView;
 class WriteChangesDialog;
 class WriteFlow;
@@ -55,32 +55,32 @@ public:
     Page *currentPage() const;
     void showPage(int index);
     // Shows the window as the user left it; the first time, maximized on a small screen (below
-    // 1440×900) and on a larger one sized to most of it, in its middle (issue 25).
+    // 1440×900) and on a larger one sized to most of it, in its middle.
     void showOnScreen();
     // The layout of a first start on the window's screen, as if nothing had been saved: the
     // docks where they start, the bottom ones as high as that screen allows, arranged for its
     // width; showOnScreen() then shows it as a first start does. stepcom-shots' laptop scenes
     // take their pictures this way (the real program's path, not an imitation).
     void useDefaultLayout();
-    MachineStrip *machineStrip() const { return m_strip; }          // issue 25
-    PageSidebar *sidebar() const { return m_sidebar; }              // issue 25
-    StatusDock *statusDock() const { return m_statusDock; }         // monitoring (issue 5)
-    DeviceListDock *deviceListDock() const { return m_deviceDock; } // issue 16
+    MachineStrip *machineStrip() const { return m_strip; }
+    PageSidebar *sidebar() const { return m_sidebar; }
+    StatusDock *statusDock() const { return m_statusDock; } // monitoring
+    DeviceListDock *deviceListDock() const { return m_deviceDock; }
     TrafficView *trafficView() const { return m_traffic; }
     // Every frame of every connection in a file (the Traffic dock's "Open log folder").
     SessionLog *sessionLog() const { return m_sessionLog; }
     MessageView *messageView() const { return m_messages; }
-    MotionPage *motionPage() const { return m_motion; }           // jogging (issue 5)
-    ProfileActions *profileActions() const { return m_profiles; } // profiles (issue 7)
-    MachineActions *machineActions() const { return m_machine; }  // issue 16
-    OfflineActions *offlineActions() const { return m_offline; }  // issue 18
+    MotionPage *motionPage() const { return m_motion; }           // jogging
+    ProfileActions *profileActions() const { return m_profiles; } // profiles
+    MachineActions *machineActions() const { return m_machine; }
+    OfflineActions *offlineActions() const { return m_offline; }
     OfflineBanner *offlineBanner() const { return m_offlineBanner; }
-    ReplayMode *replayMode() const { return m_replay; }          // issue 26
+    ReplayMode *replayMode() const { return m_replay; }
     PendantActions *pendantActions() const { return m_pendant; } // a phone as the pendant
     ListenMode *listenMode() const { return m_listen; }
-    ChecklistPage *checklistPage() const { return m_checklist; } // issue 17
+    ChecklistPage *checklistPage() const { return m_checklist; }
     PlotPage *plotPage() const { return m_plots; }
-    BackupGuard *backupGuard() const { return m_backups; } // issue 17
+    BackupGuard *backupGuard() const { return m_backups; }
     // The dialogs a test (or a curious user) may want to reach while they are open.
     WriteChangesDialog *writeDialog() const;
     QMessageBox *closeQuestion() const;
@@ -118,7 +118,7 @@ private:
     void arrangeDocks();
     // Inside the available screen, however large the saved or default size.
     void fitIntoScreen();
-    // Title and status bar say whether a file or a controller is being edited (issue 18).
+    // Title and status bar say whether a file or a controller is being edited.
     void showOrigin();
     void restoreLayout();
     // Where the docks start: traffic and messages in tabs below (the messages in front), the
@@ -134,7 +134,7 @@ private:
     DeviceSession *m_session;
     EmergencyStop *m_estop;
     QToolButton *m_estopButton = nullptr;
-    PageSidebar *m_sidebar; // the pages in commissioning order, with their states (issue 25)
+    PageSidebar *m_sidebar; // the pages in commissioning order, with their states
     QStackedWidget *m_stack;
     QList<Page *> m_pages;
     TrafficView *m_traffic = nullptr;
@@ -142,24 +142,24 @@ private:
     MessageView *m_messages = nullptr;
     QDockWidget *m_trafficDock = nullptr;
     QDockWidget *m_messageDock = nullptr;
-    StatusDock *m_statusDock = nullptr;     // monitoring (issue 5)
-    DeviceListDock *m_deviceDock = nullptr; // several controllers on one line (issue 16)
+    StatusDock *m_statusDock = nullptr;     // monitoring
+    DeviceListDock *m_deviceDock = nullptr; // several controllers on one line
     LinkStatus *m_linkStatus = nullptr;
-    MachineStrip *m_strip = nullptr;      // issue 25: positions, state and E-STOP on every page
-    StatusMessage *m_status = nullptr;    // issue 19
-    MotionPage *m_motion = nullptr;       // jogging (issue 5)
-    ProfileActions *m_profiles = nullptr; // profiles (issue 7)
-    MachineActions *m_machine = nullptr;  // every device of the line (issue 16)
-    OfflineActions *m_offline = nullptr;  // issue 18
+    MachineStrip *m_strip = nullptr; // Positions, state and E-STOP on every page
+    StatusMessage *m_status = nullptr;
+    MotionPage *m_motion = nullptr;       // jogging
+    ProfileActions *m_profiles = nullptr; // profiles
+    MachineActions *m_machine = nullptr;  // every device of the line
+    OfflineActions *m_offline = nullptr;
     OfflineBanner *m_offlineBanner = nullptr;
-    ReplayMode *m_replay = nullptr; // issue 26
+    ReplayMode *m_replay = nullptr;
     PendantActions *m_pendant = nullptr;
     ListenMode *m_listen = nullptr; // beside another master: heard, never driven
-    bool m_jogStopAwaited = false;  // jogging (issue 5): close waited for the stops once
+    bool m_jogStopAwaited = false;  // jogging: close waited for the stops once
     WriteFlow *m_writeFlow = nullptr;
-    ChecklistPage *m_checklist = nullptr; // issue 17
+    ChecklistPage *m_checklist = nullptr;
     PlotPage *m_plots = nullptr;
-    BackupGuard *m_backups = nullptr; // issue 17
+    BackupGuard *m_backups = nullptr;
     QPointer<QMessageBox> m_closeQuestion;
     QPointer<QMessageBox> m_givenFileError;
     bool m_closeConfirmed = false;
@@ -177,7 +177,7 @@ private:
     QAction *m_about = nullptr;
     QAction *m_guideAction = nullptr;
     QAction *m_whatsThis = nullptr;
-    QAction *m_bundle = nullptr; // Help → Create support bundle… (issue 26)
+    QAction *m_bundle = nullptr; // Help → Create support bundle…
     GuideWindow *m_guide = nullptr;
     QActionGroup *m_languages = nullptr;
     QMenu *m_fileMenu = nullptr;

@@ -20,7 +20,7 @@ namespace stepcom {
 void MainWindow::arrangeDocks()
 {
     // A short window (1024×600) keeps the strip to one low row, a narrow one (1280×800) to
-    // smaller digits (issue 25). The screen decides too, before the window is fitted into it.
+    // smaller digits. The screen decides too, before the window is fitted into it.
     const int high =
         screen() ? std::min(height(), screen()->availableGeometry().height()) : height();
     const int wide = screen() ? std::min(width(), screen()->availableGeometry().width()) : width();
@@ -29,7 +29,7 @@ void MainWindow::arrangeDocks()
     const bool low = high <= std::max(720, fontMetrics().height() * 40);
     if (m_strip)
         m_strip->setCompact(low || wide < std::max(1440, fontMetrics().averageCharWidth() * 200));
-    m_sidebar->setShortWindow(low); // low rows, small icons (issue 25)
+    m_sidebar->setShortWindow(low); // low rows, small icons
     if (!m_statusDock || !centralWidget())
         return;
     const int needed = centralWidget()->minimumSizeHint().width() +

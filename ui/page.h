@@ -16,9 +16,9 @@ public:
     explicit Page(DeviceSession *session, QWidget *parent = nullptr);
 
     virtual QString title() const = 0;
-    // The sidebar's picture of the page: resources/sidebar/<name>.svg (issue 25).
+    // The sidebar's picture of the page: resources/sidebar/<name>.svg.
     virtual QString iconName() const = 0;
-    // Where the page sits in the commissioning order: the sidebar's groups (issue 25).
+    // Where the page sits in the commissioning order: the sidebar's groups.
     enum class Stage { Connect, SetUp, MoveAndRun, CheckAndReport };
     virtual Stage stage() const = 0;
     // The page's work needs a controller that answers (jog, plots, the device's own settings):

@@ -31,7 +31,7 @@ class SessionLog;
 class TrafficView;
 class WriteFlow;
 
-// The window's replay of a session log or a support bundle (issue 26): File → Open session
+// The window's replay of a session log or a support bundle: File → Open session
 // log… opens it (off the GUI thread, with progress and Cancel), then every page shows what the
 // log says the controller held at the moment chosen on the bar: its values go into the
 // session's store as a read would put them (ParameterStore::showReplay); the traffic view, the

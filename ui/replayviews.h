@@ -18,7 +18,7 @@ class TrafficLog;
 struct TrafficEntry;
 class TrafficView;
 
-// What the window's views beside the pages show of a replayed log at its moment (issue 26), as
+// What the window's views beside the pages show of a replayed log at its moment, as
 // the live window showed them then: the traffic view the log's lines through the moment (its
 // last kTrafficLines; scrolled back, the ones before), the plots (the session's StatusRecorder) the
 // positions, flags, inputs and outputs of the half hour before it (what the live recorder keeps),

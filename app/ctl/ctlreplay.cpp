@@ -1,4 +1,4 @@
-// stepcomctl replay and bundle (issue 26), and --log FILE: a session log written by this run,
+// stepcomctl replay and bundle, and --log FILE: a session log written by this run,
 // replayed without a controller, and the support bundle a technician sends.
 #include "ctlrunner.h"
 

@@ -4,7 +4,7 @@ namespace stepcom {
 class Shooter;
 }
 
-// Scenes of a line of several controllers (issue 16): the device list with three of them.
+// Scenes of a line of several controllers: the device list with three of them.
 namespace stepcom::busscenes {
 
 void deviceList(Shooter &s);

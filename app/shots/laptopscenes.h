@@ -8,7 +8,7 @@ namespace stepcom {
 
 class Shooter;
 
-// The window on the small laptop screens technicians carry (issue 19): the guide's "On a small
+// The window on the small laptop screens technicians carry: the guide's "On a small
 // laptop screen" pictures. Unlike the other pictures they are not 1280×800.
 namespace laptopscenes {
 

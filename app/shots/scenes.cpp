@@ -522,14 +522,14 @@ const QList<Scene> &scenes()
         {QStringLiteral("checklist-direction"), W::AfterPages, &checklistDirection},
         {QStringLiteral("checklist-miswired"), W::AfterPages, &checklistMiswired},
         {QStringLiteral("device-list"), W::AfterPages, &busscenes::deviceList},
-        // Small laptop screens (issue 19), while connected: before port-missing.
+        // Small laptop screens, while connected: before port-missing.
         {QStringLiteral("laptop-1024x600"), W::AfterPages, &laptopscenes::small},
         {QStringLiteral("laptop-1366x768-150"), W::AfterPages, &laptopscenes::scaled},
         {QStringLiteral("port-missing"), W::AfterPages, &portMissing},
-        // Without a controller (issue 18): after port-missing, which leaves it disconnected.
+        // Without a controller: after port-missing, which leaves it disconnected.
         {QStringLiteral("offline-editing"), W::AfterPages, &offlinescenes::editing},
         {QStringLiteral("profile-files-compare"), W::AfterPages, &offlinescenes::compareFiles},
-        {QStringLiteral("replay"), W::AfterPages, &offlinescenes::replay}, // issue 26
+        {QStringLiteral("replay"), W::AfterPages, &offlinescenes::replay},
     };
     return table;
 }

@@ -85,7 +85,7 @@ public:
     bool isFile() const { return m_file; }
     QString fileName() const { return m_fileName; }
 
-    // Replaying a session log (issue 26): what the log says the controller held at a moment
+    // Replaying a session log: what the log says the controller held at a moment
     // stands where the controller's values would, as a read would have put it (views show it
     // unchanged, the link's state aside). Replaces everything held, edits included; each moment
     // shown calls it again. closeReplay() forgets it all.

@@ -31,7 +31,7 @@ struct StatusSample
 
 // The status columns of a map, in CSV order: each motor's position (and its scale, decimals,
 // unit) and running flag, the inputs (io.in1..), the outputs (io.out1..). The recorder samples
-// them; a replay's track of a whole log (ReplayTrack, issue 26) keeps the same.
+// them; a replay's track of a whole log (ReplayTrack) keeps the same.
 struct StatusColumns
 {
     explicit StatusColumns(const RegisterMap &map);
@@ -71,7 +71,7 @@ public:
     // Sample the store now (what attach() does after each cycle).
     void takeSample();
     // A sample of `values` (raw, by key; a key missing is unknown) at a moment of another clock:
-    // a replayed log's (issue 26). Kept and recorded as any other sample.
+    // a replayed log's. Kept and recorded as any other sample.
     void addSample(const QHash<QString, qint64> &values, qint64 elapsedMs, qint64 epochMs);
     // Samples made elsewhere (a replay's, in time order), kept and recorded as any other; one
     // sampleAdded() for all of them.

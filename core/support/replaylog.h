@@ -16,7 +16,7 @@
 
 namespace stepcom {
 
-// A session log opened for replay (issue 26): the window's replay mode and `stepcomctl replay`
+// A session log opened for replay: the window's replay mode and `stepcomctl replay`
 // stand on it. open() streams the file once -- never more than a line of it in memory -- and
 // keeps the events (markers) and snapshots of the decoder, so stateAt() reads little of the
 // file again: a 2 GB log opens in bounded memory and any moment

@@ -16,7 +16,7 @@ class RegisterMap;
 struct ReplayDevice;
 
 // The status of each controller through a whole session log -- what the plots show up to a
-// moment of a replay (issue 26) -- gathered once while ReplayLog opens the log, so a seek reads
+// moment of a replay -- gathered once while ReplayLog opens the log, so a seek reads
 // nothing of the file again for the plots. A sample (the StatusRecorder's columns: positions,
 // running flags, inputs, outputs) after every answer that changed one of them; an unchanged run
 // longer than kRunMs keeps its last answer too, so the lines drawn between samples are the ones

@@ -28,7 +28,7 @@ struct BundleInput
     QString noReport;
 };
 
-// One .zip a technician sends to support (issue 26): the session logs of the last days, the
+// One .zip a technician sends to support: the session logs of the last days, the
 // open profile and its checklist, the machine's commissioning report, the settings, StepCom's
 // and Qt's versions, the OS and the serial adapters seen, and a README.txt saying what is
 // inside. Read back, its logs open for replay (extract(), then ReplayLog). The window's Help →

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The window as a screen reader sees it (issue 25): starts the real `stepcom --sim` under Xvfb
+"""The window as a screen reader sees it: starts the real `stepcom --sim` under Xvfb
 at a given screen size and language, with a private D-Bus session and the AT-SPI bus, and visits
 every page by choosing its sidebar entry through the accessibility interface. On each page it
 checks, from outside the process, what the accessibility bus says:

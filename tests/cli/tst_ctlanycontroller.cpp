@@ -1,4 +1,4 @@
-// stepcomctl on any controller (issue 24): a controller that answers in 2, 5, 15 or 35 ms on a
+// stepcomctl on any controller: a controller that answers in 2, 5, 15 or 35 ms on a
 // modelled wire at 9600 and 38400 baud. `monitor` takes every sample at the first try and shows
 // what the controller holds; `command estop` is acknowledged; nothing is taken for an echo and
 // nothing goes unanswered.

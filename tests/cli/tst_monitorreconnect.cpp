@@ -1,4 +1,4 @@
-// `stepcomctl monitor` when the cable is pulled and plugged back (issue 15): it says "lost" and
+// `stepcomctl monitor` when the cable is pulled and plugged back: it says "lost" and
 // "back" (a JSON line with --json, a text line on stderr without) and goes on printing samples.
 // The adapter's stable name (as /dev/serial/by-id gives it) stays while the pty behind changes.
 #include "sim/simhost.h"

@@ -122,7 +122,7 @@ private Q_SLOTS:
         QCOMPARE(store.state(QStringLiteral("motor1.speed")), ParameterStore::State::Unknown);
     }
 
-    // A replayed moment (issue 26) stands where the controller's values would: the moment's
+    // A replayed moment stands where the controller's values would: the moment's
     // values only, edits dropped, kept when a link is lost, forgotten when the replay closes.
     void aReplayedMomentHoldsOnlyItsValues()
     {

@@ -1,4 +1,4 @@
-// The support bundle (issue 26): what goes in (the logs of the last days, the profile and its
+// The support bundle: what goes in (the logs of the last days, the profile and its
 // checklist, the machine's report, the settings, versions and the serial adapters, a README
 // naming it all), read back, and replayed by stepcomctl; its progress, and that a bundle
 // cancelled or failed leaves no file.

@@ -1,4 +1,4 @@
-// stepcomctl --log and replay (issue 26): a session recorded against the simulator, one
+// stepcomctl --log and replay: a session recorded against the simulator, one
 // stepcomctl run after another into one log (read-all, a write, a move, an E-STOP), replays to
 // exactly what each run read and wrote; bad input gives a message and a non-zero exit.
 #include "logbuilder.h"

@@ -1,4 +1,4 @@
-// What a replay's views stand on beside the state (issue 26), in the core: the track of each
+// What a replay's views stand on beside the state, in the core: the track of each
 // controller's status through the whole log (the plots up to any moment, the XY path from the
 // start), thinned only beyond its bound; the last lines before a moment (the traffic view),
 // read from a snapshot; each device's requests, errors and restarts; the names of the devices

@@ -1,4 +1,4 @@
-// The live view on connect (issue 15): the status is read before everything else, and it keeps
+// The live view on connect: the status is read before everything else, and it keeps
 // running on a controller that refuses gap reads or lacks a listed register.
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
@@ -159,7 +159,7 @@ private Q_SLOTS:
     }
 
     // Kept in the saved connection settings: the next session reads gap-free at once and
-    // says once in words what it knew (issue 15).
+    // says once in words what it knew.
     void knownLimitsNeedNoLearning()
     {
         SimHost host;

@@ -1,4 +1,4 @@
-// Reconnect after a link loss (issue 15): the session tries again on its own with a growing
+// Reconnect after a link loss: the session tries again on its own with a growing
 // pause, finds a USB adapter that came back under another name by its serial number, sends the
 // pending stops first, then reads the status and everything else again.
 #include "bus/modbuslink.h"

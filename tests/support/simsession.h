@@ -17,7 +17,7 @@ void useBuiltinSimulator(DeviceSession &session, const QList<int> &ids);
 // The simulator the session started (null before useBuiltinSimulator()).
 SimHost *simHost(const DeviceSession &session);
 
-// The any-controller matrix (issue 24): rows "2 ms at 9600" ... "35 ms at 38400" of the
+// The any-controller matrix: rows "2 ms at 9600" ... "35 ms at 38400" of the
 // columns delayMs and baud, for a data function.
 void addAnswerTimeRows();
 // Starts `host` as a controller answering `delayMs` after a request on a wire modelled at

@@ -14,8 +14,8 @@
 namespace stepcom::test {
 
 // Every action and button of the window (every page shown in turn) that is enabled and could
-// reach a controller: what must be none while a profile file is edited (issue 18) or a log is
-// replayed (issue 26). What stays on works on files, views or the language; E-STOP stays on
+// reach a controller: what must be none while a profile file is edited or a log is
+// replayed. What stays on works on files, views or the language; E-STOP stays on
 // and claims nothing. `alsoHarmless`: object names the caller's mode adds.
 inline QStringList enabledControls(MainWindow *window, const QSet<QString> &alsoHarmless = {})
 {

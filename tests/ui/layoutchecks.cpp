@@ -17,8 +17,8 @@ namespace stepcom::test {
 
 namespace {
 
-// What issue 19 has not fixed yet, named so that nothing else slips in: these are reported, every
-// other problem fails the test. Take a line out when it is fixed.
+// Known layout problems not fixed yet, named so that nothing else slips in: these are reported,
+// every other problem fails the test. Take a line out when it is fixed.
 const QStringList kKnownProblems = {};
 
 } // namespace

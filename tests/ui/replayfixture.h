@@ -30,7 +30,7 @@
 
 namespace stepcom::test {
 
-// What the window's replay suites (issue 26) share: a window on a session with the built-in
+// What the window's replay suites share: a window on a session with the built-in
 // simulator, a scratch folder, and the replay opened as a user opens it (openPath, then the
 // opening on its thread); for a session the window records itself, the moments it held and
 // the checks that the replay (and `stepcomctl replay --at`) shows the same at each.

@@ -1,4 +1,4 @@
-// The window on any controller (issue 24): a controller that answers in 2, 5, 15 or 35 ms on a
+// The window on any controller: a controller that answers in 2, 5, 15 or 35 ms on a
 // modelled wire at 9600 and 38400 baud. The window polls it at its defaults: the machine strip
 // follows the controller's positions as an axis moves and says when it stands, the strip's
 // E-STOP stops it at once, and no message speaks of an echo or of a missing answer.

@@ -1,4 +1,4 @@
-// Help → Create support bundle… (issue 26): the machine's commissioning report goes in (the
+// Help → Create support bundle…: the machine's commissioning report goes in (the
 // devices as the window last read them, the profile's sheet), or the README says why not; the
 // bundle is written on a thread of its own, the window answering meanwhile; Cancel leaves
 // nothing.

@@ -1,4 +1,4 @@
-// Issue 25, one visual language: the state colours (statetone.h) stay readable on the style's
+// One visual language: the state colours (statetone.h) stay readable on the style's
 // light palette and on a dark one (tests/support/darkpalette.h): the machine strip's words
 // and lamps, and the sidebar's marks, keep a WCAG contrast of at least 3:1 against what they
 // are drawn on -- disconnected (the unknown grey) and connected (idle, referenced, answering),

@@ -1,4 +1,4 @@
-// The dialogs fit the screens technicians have (issue 19, split from tst_layoutfit): write
+// The dialogs fit the screens technicians have (split from tst_layoutfit): write
 // changes, bus scan, profile save and compare, files compare, backups, the support bundle, the
 // pendant and
 // the user guide window at the screen the test runs on (the same five as tst_layoutfit), in

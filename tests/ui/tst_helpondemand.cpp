@@ -1,4 +1,4 @@
-// Issue 25, help on demand: a page shows values and actions; explanations live in tooltips,
+// Help on demand: a page shows values and actions; explanations live in tooltips,
 // What's This (Shift+F1), the guide (F1) and the "About this page" boxes, which start closed.
 // Walks every page of the window, disconnected and connected to the simulator, in English and
 // Chinese, and fails on any label shown by default that holds a paragraph of more than

@@ -193,7 +193,7 @@ private Q_SLOTS:
         runToEnd(line, page.preview(), 725, -400);
     }
 
-    // Issue 13: motor 2 sat on its negative limit, only the approach ran, and the arc was
+    // Motor 2 sat on its negative limit, only the approach ran, and the arc was
     // reported "done". Now: warned before Start, and the outcome says where it stopped and why.
     void anArcAgainstAnActiveLimitIsWarnedAndNotDone()
     {

@@ -30,7 +30,7 @@
 
 using namespace stepcom;
 
-// Issue 13: after a live language switch every text shown is in the new language -- states,
+// After a live language switch every text shown is in the new language -- states,
 // outcomes, reasons, banners -- on every page, back and forth. Logs (messages, traffic) are
 // history and keep the language they were written in.
 class TestLanguageWalk : public QObject

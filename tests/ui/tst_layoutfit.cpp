@@ -5,7 +5,7 @@
 // combo box's current text wider than its field, a sidebar title cut), a widget lies outside
 // its visible parent, a view scrolls sideways or a page is cut off at the right, a status
 // message runs into the link status, the E-STOP is off screen, or a page's main action needs
-// scrolling. The machine strip (issue 25): both positions and its E-STOP on every page, its
+// scrolling. The machine strip: both positions and its E-STOP on every page, its
 // widest value never cut, its width steady. The dialogs are tst_dialogfit's.
 #include "layoutchecks.h"
 
@@ -53,7 +53,7 @@ class TestLayoutFit : public QObject, public test::LayoutChecks
             problem(context, QStringLiteral("%1 is not wholly on screen").arg(what));
     }
 
-    // The machine strip (issue 25): both positions and its E-STOP on every page, no text cut.
+    // The machine strip: both positions and its E-STOP on every page, no text cut.
     void checkStrip(MainWindow &window, const QString &context)
     {
         MachineStrip *strip = window.machineStrip();
@@ -68,7 +68,7 @@ class TestLayoutFit : public QObject, public test::LayoutChecks
                           QStringLiteral("the strip's motor %1 position").arg(m));
         checkOnScreen(strip->emergencyStopButton(), &window, context,
                       QStringLiteral("the strip's E-STOP"));
-        // The sidebar (issue 25): every page's title whole beside its icon and marks.
+        // The sidebar: every page's title whole beside its icon and marks.
         for (const QString &cut : window.sidebar()->cutEntries())
             problem(context, QStringLiteral("sidebar entry %1 is cut").arg(cut));
         for (QLabel *label : strip->findChildren<QLabel *>()) {
@@ -205,7 +205,7 @@ private Q_SLOTS:
                 problem(context, QStringLiteral("the window cannot shrink below %1×%2 now")
                                      .arg(needs.width())
                                      .arg(needs.height()));
-            // Not only just so: a longer word must not cut a text (issue 25: the plots' row of
+            // Not only just so: a longer word must not cut a text (the plots' row of
             // buttons left 3 px at 1366×768 ×1.5 in English).
             else if (needs.width() > screen.width() - screen.width() / kHeadroomPart)
                 problem(context, QStringLiteral("the window needs %1 px of the screen's %2: less "

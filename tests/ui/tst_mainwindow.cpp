@@ -313,7 +313,7 @@ private Q_SLOTS:
         QVERIFY(!window->isMaximized());
     }
 
-    // The bottom docks leave the height to the page on a low screen (issue 25: at 1024×600 they
+    // The bottom docks leave the height to the page on a low screen (at 1024×600 they
     // took 140 px, the page 294): each may be as low as a row of controls and two rows of what
     // it lists, and the first start asks no more of them than a sixth of the screen.
     void bottomDocksLeaveTheHeightToThePage()

@@ -375,7 +375,7 @@ private Q_SLOTS:
         window.statusDock()->toggleViewAction()->trigger();
         QVERIFY(window.statusDock()->isVisible());
         // Beside the page on a wide screen; on a narrow one (the offscreen default is 800 px
-        // wide) in the bottom tabs, so the page keeps its width (issue 19).
+        // wide) in the bottom tabs, so the page keeps its width.
         const bool wide = window.screen()->availableGeometry().width() >=
                           window.centralWidget()->minimumSizeHint().width() +
                               window.statusDock()->minimumSizeHint().width() + 20;

@@ -295,7 +295,7 @@ private Q_SLOTS:
         QTRY_COMPARE(p->referenceText(), QStringLiteral("not referenced (coordinates zeroed)"));
     }
 
-    // The bug of issue 13: E-STOP during homing showed "Idle — Homing done".
+    // A bug once seen: E-STOP during homing showed "Idle — Homing done".
     void eStopDuringHomingIsNotReferenced()
     {
         connectSim();

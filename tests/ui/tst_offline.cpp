@@ -41,7 +41,7 @@
 
 using namespace stepcom;
 
-// Working without the machine (issue 18), in the window, offscreen: a profile file edited on
+// Working without the machine, in the window, offscreen: a profile file edited on
 // the usual pages, saved and read back exactly; nothing that reaches a controller enabled;
 // connecting compares the edited values; two files compared; the report made from a file.
 class TestOffline : public QObject

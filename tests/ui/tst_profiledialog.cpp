@@ -159,7 +159,7 @@ private Q_SLOTS:
     }
 
     // A controller that lacks a key of the profile: the row is left out with a note, and Apply
-    // never tries to write it (issue 15).
+    // never tries to write it.
     void unsupportedKeysAreLeftOut()
     {
         connectSim();

@@ -1,4 +1,4 @@
-// The window after a link loss (issue 15): it tries again on its own, shows the countdown and a
+// The window after a link loss: it tries again on its own, shows the countdown and a
 // Cancel button in the status bar, and shows the controller's values again when it is back.
 #include "language.h"
 #include "mainwindow.h"

@@ -1,4 +1,4 @@
-// A whole commissioning session recorded by the window (issue 26) against a simulated controller
+// A whole commissioning session recorded by the window against a simulated controller
 // with faults to rehearse: connect and read-all, edits written, a jog, homing, a move stopped by
 // E-STOP, a command answered late (its coil answers after the link gave the first attempt up), a
 // link lost and back (the port hangs up), a power cycle, and the lost edit written again. The

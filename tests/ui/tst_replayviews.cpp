@@ -1,4 +1,4 @@
-// The window's views in a replay (issue 26), offscreen, on a log of three minutes of two
+// The window's views in a replay, offscreen, on a log of three minutes of two
 // controllers made for the purpose: at a late moment the plots and the XY trace hold what the
 // live window held (the path back to the start, not only the last minute), the traffic view
 // ends at the moment's frame and goes back over the earlier ones, the device list shows each

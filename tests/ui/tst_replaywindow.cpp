@@ -1,4 +1,4 @@
-// The window's replay of a session log (issue 26), offscreen: a session recorded by the window
+// The window's replay of a session log, offscreen: a session recorded by the window
 // itself against the built-in simulator (connect and read-all, a write, a move, a move stopped by
 // E-STOP) opens in replay mode, and at each chosen moment the store and the machine strip hold
 // exactly what the session held then (and what `stepcomctl replay --at` says); nothing writes;

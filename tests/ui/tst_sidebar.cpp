@@ -1,4 +1,4 @@
-// Issue 25: the sidebar shows the workflow. Its entries in commissioning order under group
+// The sidebar shows the workflow. Its entries in commissioning order under group
 // headers that cannot be chosen (the arrow keys pass over them), an icon drawn for each page
 // (crisp at ×1.5 and ×2), the accessible names the page titles, and each page's state from
 // the real models: edits not written, checklist steps passed ("?" when the file cannot be

@@ -19,7 +19,7 @@ class MachineActions;
 struct BundleInput;
 struct ReportInput;
 
-// Help → Create support bundle… (issue 26): how many days of session logs (their number and
+// Help → Create support bundle…: how many days of session logs (their number and
 // size shown), whether the open profile and its checklist go in, whether the machine's
 // commissioning report goes in (the devices as the window last read them, the profile's sheet),
 // then where to save; the bundle is written by SupportBundle, as `stepcomctl bundle` writes it,

@@ -260,7 +260,7 @@ void ChecklistPage::chooseProfile()
 
 void ChecklistPage::retranslate()
 {
-    // File names on the page, the whole paths in the tooltip (issue 25: no path in /tmp/...
+    // File names on the page, the whole paths in the tooltip (no path in /tmp/...
     // between the technician and the steps).
     m_profileLabel->setText(
         m_profile.isEmpty()

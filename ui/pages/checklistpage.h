@@ -55,7 +55,7 @@ protected:
 
 Q_SIGNALS:
     // A step's result was recorded: "checklist motor1.direction: passed" (English, for the
-    // session log's user lines, issue 26).
+    // session log's user lines).
     void resultRecorded(const QString &what);
 
 private:

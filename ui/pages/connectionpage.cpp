@@ -295,7 +295,7 @@ void ConnectionPage::retranslate()
     m_lineBox->retranslate();
 
     m_simBox->setTitle(tr("Built-in simulator"));
-    // One line on the page, the rest on demand (issue 25).
+    // One line on the page, the rest on demand.
     const QString simulator = tr("A simulated controller runs inside StepCom and answers like the "
                                  "real one: every page can be tried without a machine. Nothing "
                                  "reaches real hardware.");

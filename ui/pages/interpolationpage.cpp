@@ -27,14 +27,14 @@ InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
     m_arc = new PathEditor(session, PathEditor::Kind::Arc);
     m_line = new PathEditor(session, PathEditor::Kind::Line);
     for (PathEditor *editor : {m_arc, m_line}) {
-        // The form scrolls; Write, Start and Stop stay in view below it (issue 19).
+        // The form scrolls; Write, Start and Stop stay in view below it.
         auto *tab = new QWidget(m_tabs);
         auto *column = new QVBoxLayout(tab);
         column->setContentsMargins(0, 0, 0, 0);
         QGroupBox *run = editor->runBox();
         if (QLayout *form = editor->layout())
             form->removeWidget(run);
-        // Up and down only: read values made it scroll sideways at 1024×600 (issue 19).
+        // Up and down only: read values made it scroll sideways at 1024×600.
         column->addWidget(new VerticalScrollArea(editor, tab), 1);
         column->addWidget(run);
         m_tabs->addTab(tab, QString());

@@ -46,7 +46,7 @@ private:
     PathEditor *m_arc;
     PathEditor *m_line;
     InterpolationPreview *m_preview;
-    AboutBox *m_about; // issue 25: how the times are estimated, on demand
+    AboutBox *m_about; // How the times are estimated, on demand
     QSplitter *m_splitter;
     QTimer m_previewTimer;
     QTimer m_positionTimer;

@@ -94,7 +94,7 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
     m_writeFlow = new WriteFlow(session, this);
     QWidget *content = scrollableContent();
     auto *layout = new QVBoxLayout(content);
-    m_about = new AboutBox(content); // issue 25: explanations on demand
+    m_about = new AboutBox(content); // Explanations on demand
     layout->addWidget(m_about);
 
     m_modeBox = new QGroupBox(content);
@@ -204,7 +204,7 @@ void ModesPage::fitTable()
 
 std::optional<qint64> ModesPage::deviceMode() const
 {
-    // Editing a profile file (issue 18): the mode the file will hold.
+    // Editing a profile file: the mode the file will hold.
     if (session()->parameters()->isFile())
         return session()->parameters()->shownValue(kModeKey);
     return session()->parameters()->deviceValue(kModeKey);

@@ -69,7 +69,7 @@ private:
     QLabel *m_current;
     QLabel *m_explanation;
     QLabel *m_warning;
-    AboutBox *m_about; // issue 25: the whole warning, on demand
+    AboutBox *m_about; // The whole warning, on demand
     QTableWidget *m_table;
     ParameterForm *m_form;
     QLabel *m_tripsNote;

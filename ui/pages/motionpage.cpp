@@ -88,7 +88,7 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
     makeProminent(m_banner, QPalette::ToolTipBase, QPalette::ToolTipText);
     m_banner->hide();
     rows->addWidget(m_banner);
-    m_about = new AboutBox(content); // issue 25: explanations on demand
+    m_about = new AboutBox(content); // Explanations on demand
     rows->addWidget(m_about);
 
     auto *keyboardRow = new QHBoxLayout;
@@ -116,7 +116,7 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
                     [this, f] { showBannerOf([f] { return f->rejectionText(); }); });
     }
     rows->addLayout(panels);
-    m_limits = new TravelLimitsEditor(session, content); // issue 17
+    m_limits = new TravelLimitsEditor(session, content);
     rows->addWidget(m_limits);
 
     auto *bottom = new QHBoxLayout;

@@ -75,7 +75,7 @@ private:
     JogKeys *m_keys;
     QList<JogPanel *> m_panels;
     TravelLimitsEditor *m_limits = nullptr;
-    AboutBox *m_about = nullptr; // issue 25: explanations on demand
+    AboutBox *m_about = nullptr; // Explanations on demand
     QFrame *m_banner;
     QLabel *m_bannerIcon;
     QLabel *m_bannerText;

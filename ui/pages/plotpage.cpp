@@ -127,7 +127,7 @@ PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     m_xyTimer.setInterval(200);
     connect(&m_xyTimer, &QTimer::timeout, this, &PlotPage::updateXY);
     connect(m_recorder, &StatusRecorder::sampleAdded, this, &PlotPage::scheduleXY);
-    // Cleared (a replay shows another moment, issue 26): the trace starts again with it.
+    // Cleared (a replay shows another moment): the trace starts again with it.
     connect(m_recorder, &StatusRecorder::cleared, this, [this] {
         m_xy->clearTrace();
         m_xy->clearMarker();

@@ -46,7 +46,7 @@ public:
     bool isPaused() const;
     void fit();
     void clearTrace();
-    // A replay's whole path up to its moment (issue 26) as the trace: the recorder holds only
+    // A replay's whole path up to its moment as the trace: the recorder holds only
     // the last half hour of it. Samples recorded after it go on feeding the trace as live ones.
     void showTrace(const QList<QPointF> &path);
 

@@ -15,7 +15,7 @@ namespace stepcom {
 
 class DeviceSession;
 
-// What a replayed session log says of one device at the moment shown (issue 26): the device
+// What a replayed session log says of one device at the moment shown: the device
 // list's row for it, as the live list shows a device.
 struct ReplayDeviceRow
 {
@@ -58,7 +58,7 @@ public:
     // The row's texts, for tests and the accessibility bus: id, name, state, referenced, errors.
     QStringList rowTexts(int row) const;
     QHash<int, QString> names() const { return m_names; }
-    // A replayed log's devices (issue 26) instead of the session's: each one's state at the
+    // A replayed log's devices instead of the session's: each one's state at the
     // moment shown, the one in view, and what a click on another one does. endReplay(): the
     // session's again.
     void showReplay(const QList<int> &ids, const QHash<int, ReplayDeviceRow> &rows, int inView,

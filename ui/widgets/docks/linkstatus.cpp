@@ -73,7 +73,7 @@ void LinkStatus::refresh()
 {
     // Green "Connected" only once the controller answered; amber while it does not.
     const LinkHealth *health = m_session->health();
-    // The state palette (statetone.h), as the machine strip says it (issue 25).
+    // The state palette (statetone.h), as the machine strip says it.
     StateTone tone = StateTone::Normal;
     switch (health->state()) {
     case LinkHealth::State::Answering:

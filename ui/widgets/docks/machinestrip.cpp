@@ -257,7 +257,7 @@ QStringList MachineStrip::inputRoles(int n) const
 
 MachineStrip::Motion MachineStrip::motionOf(int motor, std::optional<qint64> running) const
 {
-    // A replayed log's moment (issue 26) is known as a connected controller's is.
+    // A replayed log's moment is known as a connected controller's is.
     if (!running || !(m_session->isConnected() || m_session->parameters()->isReplay()))
         return Motion::Unknown;
     if (*running)
@@ -280,7 +280,7 @@ void MachineStrip::refresh()
     const ParameterStore *store = m_session->parameters();
     const RegisterMap &map = m_session->map();
     const QString lang = Language::instance().current();
-    const bool connected = m_session->isConnected() || store->isReplay(); // issue 26
+    const bool connected = m_session->isConnected() || store->isReplay();
     const ReferenceTracker *references = m_session->motion()->references();
     for (int m = 0; m < m_motors.size(); ++m) {
         MotorView &v = m_motors[m];

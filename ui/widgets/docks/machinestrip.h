@@ -17,7 +17,7 @@ class DeviceSession;
 class EmergencyStop;
 class Led;
 
-// The strip under the pages that a technician trusts at a glance (issue 25): per motor the
+// The strip under the pages that a technician trusts at a glance: per motor the
 // position (large fixed-width digits that never jump or clip), the motion state in words and
 // colour, referenced or not; the inputs and outputs as lamps with their roles; the link's
 // state and what the line showed; the device in view when a line has several; and the E-STOP
@@ -47,7 +47,7 @@ public:
     bool isCompact() const { return m_compact; }
     // The name the user gave a device of the line (the device list's), for "the device in view".
     void setDeviceNamer(std::function<QString(int)> namer);
-    // A replay (issue 26): the link as the log shows it at the moment -- up and `answering` or
+    // A replay: the link as the log shows it at the moment -- up and `answering` or
     // not, or down -- and `line` (the log's line settings) instead of the session's, until
     // endReplay().
     void showReplayLink(bool linkUp, bool answering, const QString &line);

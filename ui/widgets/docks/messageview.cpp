@@ -21,7 +21,7 @@ MessageView::MessageView(QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
     layout->addWidget(m_list);
-    // Two messages are enough in view; the page needs the height more (1024×600, issue 25).
+    // Two messages are enough in view; the page needs the height more (1024×600).
     // Small icons beside a line of text: a row as high as the text, not as a large icon.
     const int icon = m_list->style()->pixelMetric(QStyle::PM_SmallIconSize, nullptr, m_list);
     m_list->setIconSize(QSize(icon, icon));

@@ -12,7 +12,7 @@ namespace stepcom {
 class DeviceSession;
 class PageSidebarDelegate;
 
-// The window's list of pages as the commissioning goes (issue 25): group headers in order
+// The window's list of pages as the commissioning goes: group headers in order
 // (connect; set up; move and run; check, save and report), each page with its icon and its
 // state -- the edits on it not written (an amber dot and their number), the steps passed of a
 // page that has steps ("3/15", "?" when the page cannot tell), and greyed while a page that

@@ -40,7 +40,7 @@ public:
 
     // Queues a frame; flush() (run by a timer) makes the rows.
     void append(const TrafficEntry &entry);
-    // Frames from before the first one kept (a replay scrolled back, issue 26), in order, as
+    // Frames from before the first one kept (a replay scrolled back), in order, as
     // many as there is room for below capacity() (the newest of them); the rows shown added.
     int prepend(const QList<TrafficEntry> &entries);
     void flush();

@@ -64,7 +64,7 @@ TrafficView::TrafficView(QWidget *parent)
     m_openFolder->setObjectName(QStringLiteral("openLogFolder"));
     m_save->setObjectName(QStringLiteral("saveLog"));
     // The filters and the actions side by side where the dock is wide enough (a low screen
-    // keeps the line for the page, issue 25), one above the other where not.
+    // keeps the line for the page), one above the other where not.
     auto *controls = new WrappingRow(this);
     QHBoxLayout *filters = controls->first();
     filters->addWidget(m_pause);

@@ -35,7 +35,7 @@ public:
     bool saveTo(const QString &path, QString *error) const;
     // Opens the log folder in the desktop's file manager (made first if missing).
     bool openLogFolder(QString *error = nullptr) const;
-    // A replay's view (issue 26): `earlier` gives the lines before the first one kept, in order
+    // A replay's view: `earlier` gives the lines before the first one kept, in order
     // (none: the start of the log). Scrolled to the top the view asks for them, as does
     // "Earlier lines". Unset: the live view, which has all it keeps.
     using Earlier = std::function<QList<TrafficEntry>()>;

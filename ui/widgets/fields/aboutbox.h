@@ -7,7 +7,7 @@ class QToolButton;
 
 namespace stepcom {
 
-// "About this page" (issue 25, help on demand): a page's explanation behind a button that
+// "About this page" (help on demand): a page's explanation behind a button that
 // starts closed, so the page shows values and actions first. The text is the page's (set in
 // its retranslate()); it is also the box's What's This, and the guide (F1) says more.
 class AboutBox : public QWidget

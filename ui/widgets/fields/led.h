@@ -6,7 +6,7 @@ namespace stepcom {
 
 // A round indicator lamp. Lit: filled, in its colour made to stand out from the window (3:1,
 // on a light and on a dark palette); off: a hollow ring; unknown: a hollow dotted ring in the
-// "unknown" grey. On and off differ by more than the colour (issue 25).
+// "unknown" grey. On and off differ by more than the colour.
 class Led : public QWidget
 {
     Q_OBJECT

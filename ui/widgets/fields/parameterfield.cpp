@@ -257,7 +257,7 @@ void ParameterField::applyStateLook()
         stateTip = tr("Not supported by this controller: it refuses to read this register");
         break;
     }
-    // Editing a profile file (issue 18): the values are the file's, nothing reaches a controller.
+    // Editing a profile file: the values are the file's, nothing reaches a controller.
     if (m_store->isFile() && e.state != ParameterStore::State::WriteFailed)
         stateTip =
             e.state == ParameterStore::State::Unknown  ? tr("The profile file lacks this value")

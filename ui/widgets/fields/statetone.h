@@ -5,7 +5,7 @@
 
 namespace stepcom {
 
-// One palette for states (issue 25): the machine strip's words, the sidebar's marks and the
+// One palette for states: the machine strip's words, the sidebar's marks and the
 // status bar's link state take their colours here, so a state looks the same everywhere and
 // stays readable on a light and on a dark window.
 enum class StateTone { Normal, Good, Running, Warning, Fault, Unknown };

@@ -8,7 +8,7 @@ class QHBoxLayout;
 namespace stepcom {
 
 // Two groups of controls: side by side when there is room, the second under the first when
-// not. What it asks for at least is the wider group, not both (issue 25: the plots' buttons in
+// not. What it asks for at least is the wider group, not both (the plots' buttons in
 // one row left the window 3 px to spare at 1366×768 ×1.5 in English; the traffic's filters and
 // actions in two rows took a line from the page at 1024×600). Side by side until it is seen
 // narrower: hidden, or behind a tab, it asks for one row's height.

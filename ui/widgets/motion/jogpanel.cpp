@@ -103,7 +103,7 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     grid->addWidget(m_reference, 4, 1, 1, 2);
     grid->setColumnStretch(1, 1);
     column->addLayout(grid);
-    m_steps = new StepMovePanel(session, motor, this); // step jog and move-to (issue 17)
+    m_steps = new StepMovePanel(session, motor, this); // step jog and move-to
     column->addWidget(m_steps);
 
     connect(m_reverse, &JogButton::jogPressed, this, [this] {

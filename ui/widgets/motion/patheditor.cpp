@@ -78,7 +78,7 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
         auto *value = new QLabel(m_resultBox);
         value->setTextInteractionFlags(Qt::TextSelectableByMouse);
         // "0.000 / 0.002 (difference 0.002, at most 0.010)" wraps rather than widening the
-        // page past a 1366×768 screen at 150 % (issue 19).
+        // page past a 1366×768 screen at 150 %.
         value->setWordWrap(true);
         m_rowLabels << qMakePair(name, label);
         m_results->addRow(name, value);
@@ -394,7 +394,7 @@ void PathEditor::retranslate()
     m_runBox->setTitle(arc ? tr("Run the arc") : tr("Run the line"));
     for (const auto &[label, text] : std::as_const(m_rowLabels))
         label->setText(tr(text));
-    // The one line a technician needs; how the estimate is made is on demand (issue 25).
+    // The one line a technician needs; how the estimate is made is on demand.
     m_assumes->setText(tr("Times as the simulator runs the path; a real controller may differ."));
     m_assumes->setToolTip(assumptions());
     m_assumes->setWhatsThis(assumptions());

@@ -122,7 +122,7 @@ void StepMovePanel::refresh()
     const QString why = m_session->stepMove()->refusal({StepMoveRequest::Kind::By, m_motor, 1});
     for (QPushButton *b : {m_minus, m_plus, m_moveTo}) {
         b->setEnabled(why.isEmpty());
-        // Why not, when refused; how it works otherwise (issue 25: not a paragraph on the page).
+        // Why not, when refused; how it works otherwise (not a paragraph on the page).
         b->setToolTip(why.isEmpty() ? explanation() : why);
     }
 }

@@ -34,7 +34,7 @@ public:
     double stepSize() const;
     void retranslate();
     // How steps and move-to work: the buttons' tooltip and What's This, and the Jog page's
-    // "About this page" (issue 25).
+    // "About this page".
     static QString explanation();
 
 protected:

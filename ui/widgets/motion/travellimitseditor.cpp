@@ -191,7 +191,7 @@ void TravelLimitsEditor::retranslate()
         r.maxOn->setText(tr("Max"));
     }
     m_apply->setText(tr("Apply limits"));
-    // What a technician must not miss stays on the page; the rest is on demand (issue 25).
+    // What a technician must not miss stays on the page; the rest is on demand.
     m_note->setText(tr("StepCom's limits, not the controller's: if the link dies during a jog, "
                        "only the limit switches stop the axis."));
     m_note->setToolTip(explanation());

@@ -16,7 +16,7 @@ namespace stepcom {
 
 class ReplaySlider;
 
-// The replay's controls under the pages (issue 26): play/pause, the speed (1×, 4×, 16×), a
+// The replay's controls under the pages: play/pause, the speed (1×, 4×, 16×), a
 // frame back and on, the timeline with its event markers, the moment in words, the events in a
 // list with the one before and after, and the device shown when the log has several. A view: it
 // asks for moments (seekRequested, stepFrame, deviceChosen) and shows the one it is given.

@@ -7,7 +7,7 @@
 
 namespace stepcom {
 
-// The replay's timeline (issue 26): a slider over the log's duration in milliseconds with a
+// The replay's timeline: a slider over the log's duration in milliseconds with a
 // marker for every event, coloured by its kind (writes, commands, E-STOP, errors, the link,
 // restarts); a tooltip names the events under the pointer.
 class ReplaySlider : public QSlider
