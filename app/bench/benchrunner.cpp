@@ -7,8 +7,8 @@
 #include "device/readplanner.h"
 #include "session/devicesession.h"
 #include "session/sessioninternals.h" // the link itself is what is measured
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

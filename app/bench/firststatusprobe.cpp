@@ -6,8 +6,8 @@
 #include "device/poller.h"
 #include "session/devicesession.h"
 #include "session/sessioninternals.h" // requests are watched on the link
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QElapsedTimer>
 

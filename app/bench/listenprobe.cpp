@@ -5,7 +5,7 @@
 #include "listen/linelistener.h"
 #include "listen/listendecoder.h"
 #include "map/registermap.h"
-#include "sim/line/linehub.h"
+#include "sim/serve/linehub.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

@@ -8,8 +8,8 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/sessioninternals.h" // frames are watched on the link
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QElapsedTimer>
 #include <QJsonDocument>

@@ -3,15 +3,15 @@
 #include "replayprobe.h" // writeReplayLog
 #include "windowprobe.h" // statusMb
 
-#include "mainwindow.h"
 #include "pages/plotpage.h"
-#include "replaymode.h"
+#include "replay/replaymode.h"
 #include "session/devicesession.h"
 #include "support/replaylog.h"
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/plots/positionplot.h"
 #include "widgets/plots/xyplot.h"
+#include "window/mainwindow.h"
 
 #include <QCoreApplication>
 #include <QDockWidget>

@@ -3,7 +3,7 @@
 #include "benchrunner.h"
 
 #include "line/busscanner.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
 
 #include <QElapsedTimer>
 

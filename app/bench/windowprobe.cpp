@@ -2,8 +2,8 @@
 
 #include "benchrunner.h"
 
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QElapsedTimer>
 #include <QFile>

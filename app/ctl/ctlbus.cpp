@@ -4,7 +4,7 @@
 #include "ctlscan.h"
 
 #include "line/idchange.h"
-#include "sim/builtinsimulator.h"
+#include "sim/host/builtinsimulator.h"
 
 #include <QDir>
 #include <QFileInfo>

@@ -8,7 +8,7 @@
 #include "i18n/translators.h"
 #include "motion/motionjudge.h"
 #include "session/simulatorstarter.h"
-#include "sim/builtinsimulator.h"
+#include "sim/host/builtinsimulator.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

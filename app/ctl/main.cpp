@@ -2,7 +2,7 @@
 #include "ctlrunner.h"
 #include "i18n/translators.h"
 #include "map/registermap.h"
-#include "sim/builtinsimulator.h"
+#include "sim/host/builtinsimulator.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

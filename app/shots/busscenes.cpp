@@ -1,6 +1,5 @@
 #include "busscenes.h"
 
-#include "mainwindow.h"
 #include "motion/referencetracker.h"
 #include "pages/motorpage.h"
 #include "script.h"
@@ -8,6 +7,7 @@
 #include "session/motionsupervisor.h"
 #include "shooter.h"
 #include "widgets/docks/devicelistdock.h"
+#include "window/mainwindow.h"
 
 #include <QAction>
 

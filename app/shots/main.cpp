@@ -1,6 +1,6 @@
 // stepcom-shots: the user guide's screenshots, taken from the real window on the built-in
 // simulator (scripts/screenshots.sh runs it offscreen). Not installed; a tool of the docs.
-#include "language.h"
+#include "base/language.h"
 #include "laptopscenes.h"
 #include "scenes.h"
 #include "shooter.h"

@@ -1,21 +1,21 @@
 #include "offlinescenes.h"
 
 #include "dialogs/profilefilesdialog.h"
-#include "mainwindow.h"
 #include "map/factoryvalues.h"
-#include "offlineactions.h"
 #include "pages/motorpage.h"
 #include "pages/plotpage.h"
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
-#include "profileactions.h"
-#include "replaymode.h"
+#include "replay/replaymode.h"
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
 #include "shooter.h"
 #include "widgets/docks/devicelistdock.h"
 #include "widgets/fields/parameterfield.h"
+#include "window/mainwindow.h"
+#include "window/offlineactions.h"
+#include "window/profileactions.h"
 
 namespace stepcom::offlinescenes {
 

@@ -1,11 +1,10 @@
 #include "scenes.h"
 
+#include "base/writechangesdialog.h"
 #include "busscenes.h"
 #include "dialogs/busscandialog.h"
 #include "dialogs/profilecomparedialog.h"
-#include "dialogs/writechangesdialog.h"
 #include "laptopscenes.h"
-#include "mainwindow.h"
 #include "offlinescenes.h"
 #include "pages/checklistpage.h"
 #include "pages/connectionpage.h"
@@ -15,16 +14,17 @@
 #include "pages/motionpage.h"
 #include "pages/motorpage.h"
 #include "pages/plotpage.h"
-#include "profileactions.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "shooter.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "widgets/checklist/checklistdirectionstep.h"
 #include "widgets/checklist/checklistinputstep.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/motion/patheditor.h"
+#include "window/mainwindow.h"
+#include "window/profileactions.h"
 
 #include <QDockWidget>
 #include <QFile>

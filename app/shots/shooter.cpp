@@ -1,12 +1,12 @@
 #include "shooter.h"
 
-#include "language.h"
-#include "mainwindow.h"
-#include "page.h"
+#include "base/language.h"
+#include "base/page.h"
 #include "scenes.h"
 #include "session/devicesession.h"
-#include "sim/builtinsimulator.h"
-#include "sim/simhost.h"
+#include "sim/host/builtinsimulator.h"
+#include "sim/host/simhost.h"
+#include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QHash>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "mainwindow.h"
-#include "page.h"
+#include "base/page.h"
 #include "script.h"
+#include "window/mainwindow.h"
 
 #include <QDir>
 #include <QSize>

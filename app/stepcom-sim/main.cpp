@@ -3,11 +3,11 @@
 #include "i18n/translators.h"
 #include "session/idlist.h"
 #include "signalwatcher.h"
-#include "sim/line/linehub.h"
-#include "sim/simcommandline.h"
-#include "sim/simconsole.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simcommandline.h"
+#include "sim/host/simconsole.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
+#include "sim/serve/linehub.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>

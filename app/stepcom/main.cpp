@@ -1,13 +1,13 @@
+#include "base/language.h"
 #include "i18n/translators.h"
-#include "language.h"
-#include "listenmode.h"
-#include "mainwindow.h"
 #include "pages/connectionpage.h"
 #include "pendant/pendantcontrol.h"
 #include "pendant/pendantserver.h"
-#include "pendantactions.h"
 #include "session/devicesession.h"
-#include "sim/builtinsimulator.h"
+#include "sim/host/builtinsimulator.h"
+#include "window/listenmode.h"
+#include "window/mainwindow.h"
+#include "window/pendantactions.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -3,8 +3,8 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "line/busscanner.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QDeadlineTimer>
 #include <QSignalSpy>

@@ -3,8 +3,8 @@
 // what the controller holds; `command estop` is acknowledged; nothing is taken for an echo and
 // nothing goes unanswered.
 #include "programrun.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 
 #include <QJsonDocument>

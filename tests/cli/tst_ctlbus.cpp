@@ -1,8 +1,8 @@
 #include "map/registermap.h"
 #include "profile/profilefile.h"
 #include "programrun.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QDate>
 #include <QDir>

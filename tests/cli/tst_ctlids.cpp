@@ -1,6 +1,6 @@
 #include "programrun.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "testpaths.h"
 
 #include <QDir>

@@ -5,8 +5,8 @@
 // as a homing that ended would: whether it ended or the controller restarted is not known), not
 // "done" and not "link lost".
 #include "programrun.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "testpaths.h"
 
 #include <QJsonArray>

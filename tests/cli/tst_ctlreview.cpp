@@ -3,8 +3,8 @@
 // its centre. Over the simulated controller's pseudo-terminal: without --yes the questions are
 // printed, the exit code is 2 and no write frame goes out; with --yes it is written.
 #include "programrun.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QFile>
 #include <QJsonDocument>

@@ -2,8 +2,8 @@
 // (--refuse-gaps) and one that also lacks listed registers (--lacks 40110 --lacks motor2.speed):
 // read, monitor, dump, diff, apply and report go on.
 #include "programrun.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QFile>
 #include <QJsonArray>

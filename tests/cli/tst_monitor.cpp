@@ -1,5 +1,5 @@
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "testpaths.h"
 
 #include <QDateTime>

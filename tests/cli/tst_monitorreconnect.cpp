@@ -1,7 +1,7 @@
 // `stepcomctl monitor` when the cable is pulled and plugged back: it says "lost" and
 // "back" (a JSON line with --json, a text line on stderr without) and goes on printing samples.
 // The adapter's stable name (as /dev/serial/by-id gives it) stays while the pty behind changes.
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
 #include "testpaths.h"
 
 #include <QDeadlineTimer>

@@ -1,7 +1,7 @@
 #include "programrun.h"
 #include "scripteddevice.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "testpaths.h"
 
 #include <QJsonArray>

@@ -5,8 +5,8 @@
 #include "scripteddevice.h"
 #include "session/devicesession.h"
 #include "session/sessioninternals.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 
 #include <QElapsedTimer>

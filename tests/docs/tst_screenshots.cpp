@@ -1,9 +1,9 @@
-#include "language.h"
+#include "base/language.h"
 #include "laptopscenes.h"
-#include "mainwindow.h"
 #include "scenes.h"
 #include "session/devicesession.h"
 #include "shooter.h"
+#include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QDir>

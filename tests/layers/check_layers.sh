@@ -66,6 +66,49 @@ while IFS= read -r hit; do
     echo "$hit: front-ends include no bus/ or poll/ header (use session/devicesession.h)"
     bad=1
 done < <(grep -rnE '^#include "(bus|poll)/' app ui --include='*.cpp' --include='*.h' | grep -v '^app/bench/')
+# Floors inside ui/ and rooms inside core/sim: a file includes its own floor and those below.
+floor_rank() { # floor_rank FLOOR-LIST NAME: the place of NAME in the list, or nothing
+    local i=0 f
+    for f in $1; do
+        [[ $f == "$2" ]] && { echo $i; return; }
+        i=$((i + 1))
+    done
+}
+check_floors() { # check_floors DIR "FLOORS low to high" PREFIX (what includes of DIR start with)
+    local dir=$1 floors=$2 prefix=$3 floor own target file line text
+    for floor in $floors; do
+        [[ -d $dir/$floor ]] || { echo "check_layers: no folder $dir/$floor"; bad=1; continue; }
+        own=$(floor_rank "$floors" "$floor")
+        while IFS=: read -r file line text; do
+            target=$(sed -E "s|.*#include \"${prefix}([a-z0-9_]+)/.*|\1|" <<<"$text")
+            local rank
+            rank=$(floor_rank "$floors" "$target")
+            [[ -z $rank || $rank -le $own ]] && continue
+            echo "$file:$line: $dir/$floor may not include $target/, a floor above it ($text)"
+            bad=1
+        done < <(grep -rnE "^#include \"${prefix}[a-z0-9_]+/" "$dir/$floor" --include='*.cpp' --include='*.h')
+    done
+    # Every folder there stands on a floor.
+    local sub
+    for sub in "$dir"/*/; do
+        sub=$(basename "$sub")
+        [[ -n $(floor_rank "$floors" "$sub") ]] || { echo "check_layers: $dir/$sub is on no floor"; bad=1; }
+    done
+}
+check_floors ui "base help widgets dialogs pages replay window" ""
+check_floors core/sim "model serve host" "sim/"
+# A room holds at most 15 sources: past that it holds more than one concern.
+while read -r count folder; do
+    [[ $count -gt 15 ]] || continue
+    echo "check_layers: $folder holds $count .cpp files (at most 15: split it along a seam)"
+    bad=1
+done < <(find core ui app -name '*.cpp' -not -path '*/build*' -printf '%h\n' | sort | uniq -c)
+# History stays in the commits: the reader of the code has no issue tracker.
+while IFS= read -r hit; do
+    echo "$hit: names an issue number (say why, not when)"
+    bad=1
+done < <(grep -rnIiE '\bissues? #?[0-9]+\b' core ui app tests scripts docs packaging resources \
+             translations/tsv --exclude-dir=node_modules --exclude-dir='build*' 2>/dev/null)
 if [[ $bad -ne 0 ]]; then
     exit 1
 fi

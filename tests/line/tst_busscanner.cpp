@@ -2,8 +2,8 @@
 // from what the device showed, and a real scan of the simulator at id 7.
 #include "line/busscanner.h"
 #include "map/registermap.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QSignalSpy>
 #include <QTest>

@@ -1,7 +1,7 @@
 #include "line/idassigner.h"
 #include "session/devicesession.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 
 #include <QSignalSpy>

@@ -3,8 +3,8 @@
 // third pty. Every write is decoded with its key and value, every read paired, no frame lost
 // or damaged, and the listener put not one byte on the line.
 #include "programrun.h"
-#include "sim/line/linehub.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/serve/linehub.h"
 #include "testpaths.h"
 
 #include <QJsonDocument>

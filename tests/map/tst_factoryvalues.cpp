@@ -1,5 +1,5 @@
 #include "map/factoryvalues.h"
-#include "sim/simregisters.h"
+#include "sim/model/simregisters.h"
 #include "testmaps.h"
 
 #include <QTest>

@@ -1,7 +1,7 @@
 #include "map/registermap.h"
 #include "motion/interpolationgeometry.h"
 #include "motion/interpolationtiming.h"
-#include "sim/simdevice.h"
+#include "sim/model/simdevice.h"
 
 #include <QTest>
 

@@ -1,5 +1,5 @@
 #include "motion/motorderived.h"
-#include "sim/simdevice.h"
+#include "sim/model/simdevice.h"
 
 #include <QTest>
 

@@ -4,8 +4,8 @@
 #include "profile/profilerollout.h"
 #include "session/devicesession.h"
 #include "session/sessioninternals.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 
 #include <QDir>

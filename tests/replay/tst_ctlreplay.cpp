@@ -3,7 +3,7 @@
 // exactly what each run read and wrote; bad input gives a message and a non-zero exit.
 #include "logbuilder.h"
 #include "programrun.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
 
 #include <QFile>
 #include <QJsonArray>

@@ -4,8 +4,8 @@
 #include "session/motionsupervisor.h"
 #include "session/sessioninternals.h"
 #include "session/stepmove.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 
 #include <QSignalSpy>

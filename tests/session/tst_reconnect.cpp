@@ -6,8 +6,8 @@
 #include "session/jogcontroller.h"
 #include "session/reconnector.h"
 #include "session/sessioninternals.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QDir>
 #include <QSignalSpy>

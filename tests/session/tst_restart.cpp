@@ -6,8 +6,8 @@
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
 #include "session/restartwatch.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QSignalSpy>
 #include <QTest>

@@ -1,4 +1,4 @@
-#include "sim/ptybridge.h"
+#include "sim/serve/ptybridge.h"
 
 #include "bus/rtuframe.h"
 

@@ -1,7 +1,7 @@
 #include "session/idlist.h"
-#include "sim/simcommandline.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simcommandline.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QModbusReply>
 #include <QModbusRtuSerialClient>

@@ -1,4 +1,4 @@
-#include "sim/simdevice.h"
+#include "sim/model/simdevice.h"
 
 #include <QTest>
 

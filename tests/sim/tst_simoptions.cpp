@@ -1,9 +1,9 @@
-#include "sim/faultinjector.h"
-#include "sim/simcommandline.h"
-#include "sim/simconsole.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
-#include "sim/simresponder.h"
+#include "sim/host/simcommandline.h"
+#include "sim/host/simconsole.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
+#include "sim/serve/faultinjector.h"
+#include "sim/serve/simresponder.h"
 
 #include <QTest>
 

@@ -1,8 +1,8 @@
-#include "sim/simconsole.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
-#include "sim/simmachine.h"
-#include "sim/simregisters.h"
+#include "sim/host/simconsole.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
+#include "sim/model/simmachine.h"
+#include "sim/model/simregisters.h"
 #include "simdevicechecks.h"
 
 #include <QElapsedTimer>

@@ -1,6 +1,6 @@
 // stepcom-sim --serial: the simulated controller on a serial port (here one end of a socat
 // null-modem pair, as com0com gives on Windows), checked with mbpoll (libmodbus) on the other.
-#include "sim/simcommandline.h"
+#include "sim/host/simcommandline.h"
 #include "testpaths.h"
 
 #include <QCommandLineParser>

@@ -1,6 +1,6 @@
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
-#include "sim/simresponder.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
+#include "sim/serve/simresponder.h"
 
 #include <QElapsedTimer>
 #include <QModbusReply>

@@ -20,8 +20,8 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/sessioninternals.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QLoggingCategory>
 #include <QRandomGenerator>

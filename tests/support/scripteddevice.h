@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sim/ptybridge.h"
+#include "sim/serve/ptybridge.h"
 
 #include <QByteArray>
 #include <QList>

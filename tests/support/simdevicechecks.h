@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sim/simdevice.h"
+#include "sim/model/simdevice.h"
 
 #include <QTest>
 

@@ -1,8 +1,8 @@
 #include "simsession.h"
 
 #include "session/devicesession.h"
-#include "sim/builtinsimulator.h"
-#include "sim/simhost.h"
+#include "sim/host/builtinsimulator.h"
+#include "sim/host/simhost.h"
 
 #include <QSignalSpy>
 #include <QTest>

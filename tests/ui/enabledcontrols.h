@@ -1,7 +1,7 @@
 #pragma once
 
-#include "mainwindow.h"
-#include "page.h"
+#include "base/page.h"
+#include "window/mainwindow.h"
 
 #include <QAbstractButton>
 #include <QAction>

@@ -1,16 +1,16 @@
 #pragma once
 
+#include "base/language.h"
 #include "device/statusrecorder.h"
-#include "language.h"
-#include "mainwindow.h"
 #include "programrun.h"
-#include "replaymode.h"
+#include "replay/replaybar.h"
+#include "replay/replaymode.h"
 #include "session/devicesession.h"
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
-#include "widgets/replay/replaybar.h"
+#include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QFile>

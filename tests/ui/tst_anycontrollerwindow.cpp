@@ -2,12 +2,12 @@
 // modelled wire at 9600 and 38400 baud. The window polls it at its defaults: the machine strip
 // follows the controller's positions as an axis moves and says when it stands, the strip's
 // E-STOP stops it at once, and no message speaks of an echo or of a missing answer.
-#include "mainwindow.h"
 #include "session/devicesession.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
+#include "window/mainwindow.h"
 
 #include <QLabel>
 #include <QSignalSpy>

@@ -2,15 +2,15 @@
 // devices as the window last read them, the profile's sheet), or the README says why not; the
 // bundle is written on a thread of its own, the window answering meanwhile; Cancel leaves
 // nothing.
+#include "base/language.h"
 #include "dialogs/supportbundledialog.h"
-#include "language.h"
-#include "machineactions.h"
 #include "map/factoryvalues.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
 #include "simsession.h"
 #include "support/supportbundle.h"
 #include "widgets/docks/devicelistdock.h"
+#include "window/machineactions.h"
 
 #include <QApplication>
 #include <QDialogButtonBox>
@@ -42,7 +42,8 @@ class TestBundleDialog : public QObject
 
     SupportBundleDialog *openDialog(const QString &profilePath)
     {
-        auto *dialog = new SupportBundleDialog(profilePath, actions, window.get());
+        auto *dialog = new SupportBundleDialog(
+            profilePath, actions ? actions->reportSheets() : ReportSheets{}, window.get());
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         dialog->setLogDirectory(dir.filePath(QStringLiteral("no-logs")));
         dialog->show();

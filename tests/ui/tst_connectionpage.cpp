@@ -3,8 +3,8 @@
 #include "line/busscanner.h"
 #include "pages/connectionpage.h"
 #include "session/devicesession.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 
 #include <QApplication>

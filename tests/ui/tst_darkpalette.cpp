@@ -3,9 +3,8 @@
 // and lamps, and the sidebar's marks, keep a WCAG contrast of at least 3:1 against what they
 // are drawn on -- disconnected (the unknown grey) and connected (idle, referenced, answering),
 // and the status bar's link state.
+#include "base/language.h"
 #include "darkpalette.h"
-#include "language.h"
-#include "mainwindow.h"
 #include "pages/checklistpage.h"
 #include "session/devicesession.h"
 #include "simsession.h"
@@ -14,6 +13,7 @@
 #include "widgets/docks/pagesidebar.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/statetone.h"
+#include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QLabel>

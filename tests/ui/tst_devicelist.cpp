@@ -1,6 +1,6 @@
 #include "session/devicesession.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 #include "widgets/docks/devicelistdock.h"
 

@@ -8,6 +8,8 @@
 // guide.
 #include "layoutchecks.h"
 
+#include "base/language.h"
+#include "base/writechangesdialog.h"
 #include "device/parameterstore.h"
 #include "dialogs/backupsdialog.h"
 #include "dialogs/busscandialog.h"
@@ -16,16 +18,14 @@
 #include "dialogs/profilefilesdialog.h"
 #include "dialogs/profilesavedialog.h"
 #include "dialogs/supportbundledialog.h"
-#include "dialogs/writechangesdialog.h"
 #include "help/guidewindow.h"
-#include "language.h"
-#include "mainwindow.h"
 #include "map/factoryvalues.h"
 #include "pages/connectionpage.h"
 #include "pendant/pendantserver.h"
-#include "pendantactions.h"
 #include "profile/backupstore.h"
 #include "session/devicesession.h"
+#include "window/mainwindow.h"
+#include "window/pendantactions.h"
 
 #include <QAction>
 #include <QApplication>

@@ -3,14 +3,14 @@
 // told by what the file holds; a file that is none of them, or cannot be read, is refused
 // with a message naming it, and the window stays as it was.
 #include "../replay/logbuilder.h"
-#include "givenfile.h"
-#include "language.h"
-#include "mainwindow.h"
-#include "offlineactions.h"
+#include "base/language.h"
 #include "profile/profiledocument.h"
-#include "replaymode.h"
+#include "replay/replaymode.h"
 #include "session/devicesession.h"
 #include "support/supportbundle.h"
+#include "window/givenfile.h"
+#include "window/mainwindow.h"
+#include "window/offlineactions.h"
 
 #include <QApplication>
 #include <QFile>

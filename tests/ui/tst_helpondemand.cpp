@@ -4,13 +4,13 @@
 // Chinese, and fails on any label shown by default that holds a paragraph of more than
 // kMaxWords words. Words are counted as docs/ui-style.md says: a run of letters or digits
 // between spaces is one word; Chinese, Japanese and Korean characters count one half each.
+#include "base/language.h"
+#include "base/page.h"
 #include "help/guidewindow.h"
-#include "language.h"
-#include "mainwindow.h"
-#include "page.h"
 #include "session/devicesession.h"
 #include "simsession.h"
 #include "widgets/fields/aboutbox.h"
+#include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QLabel>

@@ -1,17 +1,17 @@
+#include "base/language.h"
 #include "dialogs/busscandialog.h"
 #include "dialogs/idassistantdialog.h"
-#include "language.h"
 #include "line/busscanner.h"
 #include "line/idassigner.h"
-#include "mainwindow.h"
 #include "map/factoryvalues.h"
 #include "session/devicesession.h"
-#include "sim/builtinsimulator.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/builtinsimulator.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 #include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/devicelistsettings.h"
+#include "window/mainwindow.h"
 
 #include <QAction>
 #include <QApplication>

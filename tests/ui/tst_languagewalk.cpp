@@ -1,15 +1,15 @@
-#include "language.h"
-#include "mainwindow.h"
-#include "page.h"
+#include "base/language.h"
+#include "base/page.h"
 #include "pages/motionpage.h"
 #include "session/devicesession.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 #include "widgets/docks/messageview.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/motion/jogpanel.h"
+#include "window/mainwindow.h"
 
 #include <QAbstractButton>
 #include <QApplication>

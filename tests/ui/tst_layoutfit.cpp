@@ -9,15 +9,15 @@
 // widest value never cut, its width steady. The dialogs are tst_dialogfit's.
 #include "layoutchecks.h"
 
-#include "language.h"
-#include "mainwindow.h"
-#include "page.h"
+#include "base/language.h"
+#include "base/page.h"
 #include "pages/connectionpage.h"
 #include "session/devicesession.h"
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/messageview.h"
 #include "widgets/docks/pagesidebar.h"
+#include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QLabel>

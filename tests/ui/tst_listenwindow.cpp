@@ -2,17 +2,17 @@
 // controller, the window's): the strip and the pages follow what the PLC reads and writes,
 // marked as heard; the PLC's writes are listed; nothing can write, jog or poll and the
 // window's pty sends nothing; the E-STOP asks first, then goes into the line and is answered.
-#include "emergencystop.h"
+#include "base/emergencystop.h"
 #include "enabledcontrols.h"
 #include "line/linksettingsstore.h"
-#include "listenmode.h"
-#include "mainwindow.h"
 #include "pages/connectionpage.h"
 #include "session/devicesession.h"
-#include "sim/line/linehub.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
+#include "sim/serve/linehub.h"
 #include "widgets/docks/machinestrip.h"
+#include "window/listenmode.h"
+#include "window/mainwindow.h"
 
 #include <QComboBox>
 #include <QFrame>

@@ -1,15 +1,15 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "dialogs/applytodevicesdialog.h"
-#include "machineactions.h"
 #include "profile/profilefile.h"
 #include "profile/profilerollout.h"
 #include "session/devicesession.h"
 #include "session/sessioninternals.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 #include "widgets/docks/devicelistdock.h"
+#include "window/machineactions.h"
 
 #include <QAction>
 #include <QDate>

@@ -1,18 +1,18 @@
 #include "dialogs/pendantdialog.h"
-#include "mainwindow.h"
 #include "map/factoryvalues.h"
-#include "offlineactions.h"
 #include "pendant/pendantcontrol.h"
 #include "pendant/pendantserver.h"
-#include "pendantactions.h"
 #include "profile/profile.h"
 #include "profile/profilefile.h"
-#include "replaymode.h"
+#include "replay/replaymode.h"
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
 #include "testregistry.h"
 #include "widgets/docks/machinestrip.h"
+#include "window/mainwindow.h"
+#include "window/offlineactions.h"
+#include "window/pendantactions.h"
 
 #include <QAction>
 #include <QCheckBox>

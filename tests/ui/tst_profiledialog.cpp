@@ -1,16 +1,16 @@
+#include "base/language.h"
 #include "bus/modbuslink.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilesavedialog.h"
-#include "language.h"
-#include "mainwindow.h"
 #include "profile/profilefile.h"
-#include "profileactions.h"
 #include "session/devicesession.h"
 #include "session/sessioninternals.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
 #include "testpaths.h"
+#include "window/mainwindow.h"
+#include "window/profileactions.h"
 
 #include <QApplication>
 #include <QCheckBox>

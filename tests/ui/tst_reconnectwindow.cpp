@@ -1,11 +1,11 @@
 // The window after a link loss: it tries again on its own, shows the countdown and a
 // Cancel button in the status bar, and shows the controller's values again when it is back.
-#include "language.h"
-#include "mainwindow.h"
+#include "base/language.h"
 #include "session/devicesession.h"
 #include "session/reconnector.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
 #include "widgets/docks/linkstatus.h"
+#include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QLabel>

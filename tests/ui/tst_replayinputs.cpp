@@ -2,10 +2,10 @@
 // big log cancelled while it is read, a dead line's thousands of timeouts, and files that are no
 // session log at all (each named by what is wrong, the window left as it was).
 #include "../replay/logbuilder.h"
+#include "replay/replaybar.h"
+#include "replay/replayslider.h"
 #include "replayfixture.h"
 #include "widgets/docks/devicelistdock.h"
-#include "widgets/replay/replaybar.h"
-#include "widgets/replay/replayslider.h"
 
 #include <QComboBox>
 #include <QProgressDialog>

@@ -5,17 +5,17 @@
 // replay shows exactly what the live window held at ten chosen moments -- after each fault too --
 // as `stepcomctl replay --at` does, and the faults are markers: late answer, link lost and back,
 // controller restarted.
-#include "dialogs/writechangesdialog.h"
+#include "base/writechangesdialog.h"
+#include "replay/replaybar.h"
+#include "replay/replayslider.h"
 #include "replayfixture.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
-#include "widgets/replay/replaybar.h"
-#include "widgets/replay/replayslider.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 
 #include <QComboBox>
 #include <QTest>

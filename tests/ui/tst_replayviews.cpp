@@ -7,13 +7,13 @@
 #include "../replay/logbuilder.h"
 #include "device/statusrecorder.h"
 #include "pages/plotpage.h"
+#include "replay/replaybar.h"
+#include "replay/replayviews.h"
 #include "replayfixture.h"
-#include "replayviews.h"
 #include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/plots/xyplot.h"
-#include "widgets/replay/replaybar.h"
 
 #include <QDockWidget>
 #include <QPushButton>

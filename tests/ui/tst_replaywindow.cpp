@@ -4,21 +4,21 @@
 // exactly what the session held then (and what `stepcomctl replay --at` says); nothing writes;
 // the markers are the log's events; bundles replay; the support bundle dialog writes one.
 #include "../replay/logbuilder.h"
+#include "base/language.h"
+#include "base/page.h"
+#include "base/writechangesdialog.h"
 #include "device/statusrecorder.h"
 #include "dialogs/supportbundledialog.h"
-#include "dialogs/writechangesdialog.h"
 #include "enabledcontrols.h"
-#include "language.h"
-#include "mainwindow.h"
 #include "map/factoryvalues.h"
-#include "offlineactions.h"
-#include "page.h"
 #include "pages/checklistpage.h"
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
 #include "programrun.h"
+#include "replay/replaybar.h"
+#include "replay/replaymode.h"
+#include "replay/replayslider.h"
 #include "replayfixture.h"
-#include "replaymode.h"
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
@@ -30,8 +30,8 @@
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/fields/elidedlabel.h"
-#include "widgets/replay/replaybar.h"
-#include "widgets/replay/replayslider.h"
+#include "window/mainwindow.h"
+#include "window/offlineactions.h"
 
 #include <QApplication>
 #include <QComboBox>

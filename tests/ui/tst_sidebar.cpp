@@ -3,11 +3,10 @@
 // (crisp at ×1.5 and ×2), the accessible names the page titles, and each page's state from
 // the real models: edits not written, checklist steps passed ("?" when the file cannot be
 // read), pages that need a controller marked until one answers.
+#include "base/language.h"
+#include "base/page.h"
 #include "commissioning/checklistfile.h"
 #include "device/parameterstore.h"
-#include "language.h"
-#include "mainwindow.h"
-#include "page.h"
 #include "pages/checklistpage.h"
 #include "pages/motionpage.h"
 #include "pages/motorpage.h"
@@ -15,6 +14,7 @@
 #include "simsession.h"
 #include "widgets/checklist/checkliststepwidget.h"
 #include "widgets/docks/pagesidebar.h"
+#include "window/mainwindow.h"
 
 #include <QAccessible>
 #include <QApplication>

@@ -1,13 +1,13 @@
 // The Traffic dock fit for support: polls hidden at first, filters by kind, search, pause that
 // keeps frames, a bounded memory that drops the oldest rows, "Save log…", and the session log
 // file written for a real connection of the window.
-#include "language.h"
-#include "mainwindow.h"
+#include "base/language.h"
 #include "session/devicesession.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
+#include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QCheckBox>

@@ -1,14 +1,14 @@
 // Help in the window: every F1 target is a heading of BOTH guides, each page's F1 opens the guide
 // in the window's language at that page's section, links between sections work, and "What's
 // this" on a parameter gives the register map's help.
+#include "base/language.h"
+#include "base/page.h"
 #include "help/guidewindow.h"
 #include "help/userguide.h"
-#include "language.h"
-#include "mainwindow.h"
-#include "page.h"
 #include "session/devicesession.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
+#include "window/mainwindow.h"
 
 #include <QApplication>
 #include <QFile>

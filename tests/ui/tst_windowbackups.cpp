@@ -1,15 +1,15 @@
-#include "backupguard.h"
+#include "base/backupguard.h"
 #include "bus/modbuslink.h"
 #include "dialogs/backupsdialog.h"
 #include "dialogs/profilecomparedialog.h"
 #include "profile/backupstore.h"
 #include "profile/profilefile.h"
-#include "profileactions.h"
 #include "session/devicesession.h"
 #include "session/sessioninternals.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
+#include "window/profileactions.h"
 
 #include <QPushButton>
 #include <QSignalSpy>

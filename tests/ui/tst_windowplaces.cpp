@@ -6,19 +6,19 @@
 // nothing is connected, the E-STOP has nothing to stop: greyed, its tooltip says why, and F12
 // still reaches the session from every page and dialog.
 #include "../replay/logbuilder.h"
-#include "emergencystop.h"
-#include "language.h"
-#include "mainwindow.h"
-#include "offlineactions.h"
-#include "page.h"
+#include "base/emergencystop.h"
+#include "base/language.h"
+#include "base/page.h"
 #include "pages/connectionpage.h"
 #include "pages/motionpage.h"
-#include "replaymode.h"
+#include "replay/replaymode.h"
 #include "session/devicesession.h"
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/statusdock.h"
 #include "widgets/fields/statuspollrow.h"
+#include "window/mainwindow.h"
+#include "window/offlineactions.h"
 
 #include <QAction>
 #include <QApplication>

@@ -1,9 +1,9 @@
-#include "dialogs/writechangesdialog.h"
+#include "base/writechangesdialog.h"
+#include "base/writeflow.h"
 #include "session/devicesession.h"
-#include "sim/simdevice.h"
-#include "sim/simhost.h"
+#include "sim/host/simhost.h"
+#include "sim/model/simdevice.h"
 #include "simsession.h"
-#include "writeflow.h"
 
 #include <QSignalSpy>
 #include <QTest>

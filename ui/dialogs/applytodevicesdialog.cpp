@@ -1,6 +1,6 @@
 #include "applytodevicesdialog.h"
 
-#include "language.h"
+#include "base/language.h"
 #include "profile/profilerollout.h"
 #include "session/devicesession.h"
 

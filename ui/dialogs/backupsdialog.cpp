@@ -1,6 +1,6 @@
 #include "dialogs/backupsdialog.h"
 
-#include "dialogs/fittoscreen.h"
+#include "base/fittoscreen.h"
 #include "profile/backupstore.h"
 
 #include <QHBoxLayout>

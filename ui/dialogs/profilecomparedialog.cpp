@@ -1,6 +1,6 @@
 #include "dialogs/profilecomparedialog.h"
 
-#include "language.h"
+#include "base/language.h"
 #include "session/devicesession.h"
 
 #include <QCheckBox>

@@ -1,7 +1,7 @@
 #include "dialogs/profilefilesdialog.h"
 
-#include "dialogs/fittoscreen.h"
-#include "language.h"
+#include "base/fittoscreen.h"
+#include "base/language.h"
 #include "map/registermap.h"
 
 #include <QCheckBox>

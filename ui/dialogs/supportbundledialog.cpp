@@ -1,7 +1,6 @@
 #include "dialogs/supportbundledialog.h"
 
-#include "language.h"
-#include "machineactions.h"
+#include "base/language.h"
 #include "report/machinereport.h"
 #include "support/supportbundle.h"
 
@@ -45,11 +44,11 @@ struct SupportBundleDialog::Work
     QString error;
 };
 
-SupportBundleDialog::SupportBundleDialog(const QString &profilePath, MachineActions *machine,
+SupportBundleDialog::SupportBundleDialog(const QString &profilePath, ReportSheets sheets,
                                          QWidget *parent)
     : QDialog(parent)
     , m_profilePath(profilePath)
-    , m_machine(machine)
+    , m_sheets(std::move(sheets))
     , m_logDirectory(SupportBundle::defaultLogDirectory())
     , m_days(new QSpinBox(this))
     , m_logs(new QLabel(this))
@@ -150,11 +149,10 @@ void SupportBundleDialog::setReportIncluded(bool included)
 QList<ReportInput> SupportBundleDialog::availableSheets(QStringList *problems) const
 {
     QList<ReportInput> sheets;
-    if (!m_machine)
-        return sheets;
-    sheets = m_machine->knownSheets();
-    if (m_profile->isChecked()) {
-        if (const auto sheet = m_machine->profileSheet(m_profilePath, problems))
+    if (m_sheets.known)
+        sheets = m_sheets.known();
+    if (m_profile->isChecked() && m_sheets.fromProfile) {
+        if (const auto sheet = m_sheets.fromProfile(m_profilePath, problems))
             sheets << *sheet;
     }
     return sheets;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "dialogs/reportsheets.h"
+
 #include <QDialog>
 #include <QPointer>
 #include <QTimer>
@@ -15,7 +17,6 @@ class QSpinBox;
 
 namespace stepcom {
 
-class MachineActions;
 struct BundleInput;
 struct ReportInput;
 
@@ -29,10 +30,9 @@ class SupportBundleDialog : public QDialog
 {
     Q_OBJECT
 public:
-    // `profilePath`: the profile open in the window (empty: none); `machine`: the window's
-    // devices, for the report (null: none).
-    SupportBundleDialog(const QString &profilePath, MachineActions *machine,
-                        QWidget *parent = nullptr);
+    // `profilePath`: the profile open in the window (empty: none); `sheets`: the window's
+    // devices, for the report (empty functions: none).
+    SupportBundleDialog(const QString &profilePath, ReportSheets sheets, QWidget *parent = nullptr);
     ~SupportBundleDialog() override;
 
     void setLogDirectory(const QString &directory);
@@ -75,7 +75,7 @@ private:
     void showResult(bool ok, const QString &message, int icon);
 
     QString m_profilePath;
-    QPointer<MachineActions> m_machine;
+    ReportSheets m_sheets;
     QString m_logDirectory;
     QSpinBox *m_days;
     QLabel *m_logs;

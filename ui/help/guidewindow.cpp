@@ -1,6 +1,6 @@
 #include "help/guidewindow.h"
 
-#include "dialogs/fittoscreen.h"
+#include "base/fittoscreen.h"
 #include "help/userguide.h"
 
 #include <QAbstractTextDocumentLayout>

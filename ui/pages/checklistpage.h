@@ -1,7 +1,7 @@
 #pragma once
 
+#include "base/page.h"
 #include "commissioning/checklist.h"
-#include "page.h"
 
 #include <QHash>
 

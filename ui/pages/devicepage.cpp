@@ -1,6 +1,6 @@
 #include "pages/devicepage.h"
 
-#include "language.h"
+#include "base/language.h"
 #include "session/devicesession.h"
 
 #include <QCheckBox>

@@ -1,7 +1,7 @@
 #include "pages/inputspage.h"
 
+#include "base/language.h"
 #include "i18n/translators.h"
-#include "language.h"
 #include "session/devicesession.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/parameterfield.h"

@@ -1,7 +1,7 @@
 #pragma once
 
+#include "base/page.h"
 #include "device/wiringcheck.h"
-#include "page.h"
 
 #include <QHash>
 

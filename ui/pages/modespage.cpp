@@ -1,8 +1,8 @@
 #include "pages/modespage.h"
 
+#include "base/language.h"
+#include "base/writechangesdialog.h"
 #include "device/writereview.h"
-#include "dialogs/writechangesdialog.h"
-#include "language.h"
 #include "session/devicesession.h"
 #include "widgets/fields/aboutbox.h"
 #include "widgets/fields/parameterfield.h"

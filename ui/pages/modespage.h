@@ -1,9 +1,9 @@
 #pragma once
 
-#include "page.h"
+#include "base/page.h"
 
-#include "dialogs/writechangesdialog.h"
-#include "writeflow.h"
+#include "base/writechangesdialog.h"
+#include "base/writeflow.h"
 
 #include <QMessageBox>
 #include <QPointer>

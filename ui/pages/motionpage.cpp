@@ -1,7 +1,7 @@
 #include "pages/motionpage.h"
 
+#include "base/language.h"
 #include "i18n/translators.h"
-#include "language.h"
 #include "motion/motionjudge.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "page.h"
+#include "base/page.h"
 
 #include <QHash>
 

@@ -1,6 +1,6 @@
 #include "pages/motorpage.h"
 
-#include "language.h"
+#include "base/language.h"
 #include "session/devicesession.h"
 #include "widgets/fields/derivedvalues.h"
 #include "widgets/fields/parameterfield.h"

@@ -1,7 +1,7 @@
 #pragma once
 
+#include "base/page.h"
 #include "motion/motorderived.h"
-#include "page.h"
 
 class QGroupBox;
 class QLabel;

@@ -1,9 +1,9 @@
 #include "widgets/checklist/checkliststepwidget.h"
 
-#include "dialogs/writechangesdialog.h"
-#include "language.h"
+#include "base/language.h"
+#include "base/writechangesdialog.h"
+#include "base/writeflow.h"
 #include "session/devicesession.h"
-#include "writeflow.h"
 
 #include <QEvent>
 #include <QHBoxLayout>

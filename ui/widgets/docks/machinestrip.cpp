@@ -1,7 +1,7 @@
 #include "widgets/docks/machinestrip.h"
 
-#include "emergencystop.h"
-#include "language.h"
+#include "base/emergencystop.h"
+#include "base/language.h"
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
 #include "session/linkhealth.h"

@@ -1,6 +1,6 @@
 #include "widgets/docks/offlinebanner.h"
 
-#include "language.h"
+#include "base/language.h"
 #include "profile/profiledocument.h"
 
 #include <QEvent>

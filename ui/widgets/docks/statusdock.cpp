@@ -1,6 +1,6 @@
 #include "widgets/docks/statusdock.h"
 
-#include "language.h"
+#include "base/language.h"
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"

@@ -1,7 +1,7 @@
 #include "widgets/fields/parameterform.h"
 
+#include "base/language.h"
 #include "device/parameterstore.h"
-#include "language.h"
 #include "widgets/fields/parameterfield.h"
 
 #include <QEvent>

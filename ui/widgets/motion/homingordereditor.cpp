@@ -1,7 +1,7 @@
 #include "widgets/motion/homingordereditor.h"
 
+#include "base/language.h"
 #include "device/parameterstore.h"
-#include "language.h"
 
 #include <QComboBox>
 #include <QEvent>

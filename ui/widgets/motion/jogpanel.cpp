@@ -1,7 +1,7 @@
 #include "widgets/motion/jogpanel.h"
 
+#include "base/language.h"
 #include "i18n/translators.h"
-#include "language.h"
 #include "motion/motionjudge.h"
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"

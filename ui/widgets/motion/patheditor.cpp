@@ -1,6 +1,6 @@
 #include "widgets/motion/patheditor.h"
 
-#include "dialogs/writechangesdialog.h"
+#include "base/writechangesdialog.h"
 #include "motion/motionjudge.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"

@@ -3,8 +3,8 @@
 #include "motion/interpolationgeometry.h"
 #include "motion/interpolationtiming.h"
 
-#include "dialogs/writechangesdialog.h"
-#include "writeflow.h"
+#include "base/writechangesdialog.h"
+#include "base/writeflow.h"
 
 #include <QPointer>
 #include <QTimer>

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "sim/serve/simtcplistener.h"
+
+namespace stepcom {
+
+class SimResponder;
+
+// Modbus TCP (MBAP framing) in front of the simulated controller. Our own rather than
+// QModbusTcpServer: Qt 6.4's writes a frame even for "no answer", so dropped answers and
+// answers for other unit ids could not be silent, and it cannot delay without blocking.
+// Only the device's own unit id is answered, as a TCP-to-RTU gateway would.
+class SimTcpServer : public SimTcpListener
+{
+    Q_OBJECT
+public:
+    explicit SimTcpServer(SimResponder *responder, QObject *parent = nullptr);
+
+private:
+    QString listenError(const QHostAddress &address, quint16 port,
+                        const QString &reason) const override;
+    void onReadyRead(QTcpSocket *socket) override;
+
+    SimResponder *m_responder;
+};
+
+} // namespace stepcom

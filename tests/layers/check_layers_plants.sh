@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# The layer check must fail on what it guards against: each plant goes into a copy of the
+# sources, and check_layers.sh has to reject it (and pass the copy without it).
+set -uo pipefail
+src=$(cd "${1:-$(dirname "$0")/../..}" && pwd)
+check="$src/tests/layers/check_layers.sh"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fresh() { # a clean copy of what the check reads
+    rm -rf "$tmp/tree"
+    mkdir -p "$tmp/tree"
+    (cd "$src" && tar cf - --exclude='build*' --exclude=node_modules \
+        core ui app tests scripts docs packaging resources translations/tsv) |
+        (cd "$tmp/tree" && tar xf -)
+}
+failed=0
+expect() { # expect WORDS: the check fails on the tree as planted, saying WORDS
+    local out
+    if out=$(bash "$check" "$tmp/tree" 2>&1); then
+        echo "NOT CAUGHT: $plant"
+        failed=1
+    elif ! grep -qF -- "$1" <<<"$out"; then
+        echo "CAUGHT, but without '$1': $plant"
+        echo "$out"
+        failed=1
+    else
+        echo "caught: $plant"
+    fi
+}
+fresh
+if ! out=$(bash "$check" "$tmp/tree" 2>&1); then
+    echo "the copy without plants fails already:"
+    echo "$out"
+    exit 1
+fi
+
+plant="ui/base includes a floor above it (window/)"
+fresh
+sed -i '0,/^#include/s//#include "window\/mainwindow.h"\n#include/' "$tmp/tree/ui/base/page.cpp"
+expect "ui/base may not include window/"
+
+plant="ui/widgets includes a dialog"
+fresh
+sed -i '0,/^#include/s//#include "dialogs\/backupsdialog.h"\n#include/' \
+    "$tmp/tree/ui/widgets/fields/led.cpp"
+expect "ui/widgets may not include dialogs/"
+
+plant="core/sim/model includes the host"
+fresh
+sed -i '0,/^#include/s//#include "sim\/host\/simhost.h"\n#include/' \
+    "$tmp/tree/core/sim/model/simaxis.cpp"
+expect "core/sim/model may not include host/"
+
+plant="a 16th source in a room"
+fresh
+n=$(find "$tmp/tree/core/map" -maxdepth 1 -name '*.cpp' | wc -l)
+for ((i = n; i < 16; i++)); do echo "// planted" >"$tmp/tree/core/map/planted$i.cpp"; done
+expect "core/map holds 16 .cpp files"
+
+plant="a comment naming an issue number"
+fresh
+# split, or this file would be caught itself
+echo "// fixed for iss""ue 12" >>"$tmp/tree/core/map/registermap.h"
+expect "names an issue number"
+
+plant="a folder of ui/ on no floor"
+fresh
+mkdir -p "$tmp/tree/ui/misc"
+echo "// planted" >"$tmp/tree/ui/misc/x.cpp"
+expect "ui/misc is on no floor"
+
+exit $failed

@@ -1,0 +1,53 @@
+#include "base/writeflow.h"
+
+#include "base/writechangesdialog.h"
+#include "device/writereview.h"
+#include "map/parameter.h"
+#include "session/devicesession.h"
+
+namespace stepcom {
+
+WriteFlow::WriteFlow(DeviceSession *session, QWidget *dialogParent)
+    : QObject(dialogParent)
+    , m_session(session)
+    , m_dialogParent(dialogParent)
+{}
+
+bool WriteFlow::openFor(const QStringList &keys)
+{
+    if (!m_session->isConnected())
+        return false;
+    return show(new WriteChangesDialog(*m_session->parameters(), keys, m_dialogParent));
+}
+
+bool WriteFlow::openAll()
+{
+    if (!m_session->isConnected() || !m_session->parameters()->hasEdits())
+        return false;
+    return show(new WriteChangesDialog(*m_session->parameters(), m_dialogParent));
+}
+
+bool WriteFlow::show(WriteChangesDialog *dialog)
+{
+    if (dialog->writes().isEmpty()) {
+        dialog->deleteLater();
+        return false;
+    }
+    // What the pages already flag in these values is said before anything goes out.
+    dialog->setProblems(WriteReview::problems(*m_session->parameters(), dialog->writes()));
+    if (m_dialog)
+        m_dialog->close();
+    m_dialog = dialog;
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] {
+        QStringList what;
+        for (const ParameterWrite &w : dialog->writes())
+            what << QStringLiteral("%1 = %2").arg(w.parameter->key).arg(w.raw);
+        Q_EMIT confirmed(what.join(QLatin1String(", ")));
+        m_session->write(dialog->writes());
+    });
+    dialog->open();
+    return true;
+}
+
+} // namespace stepcom
