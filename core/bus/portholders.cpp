@@ -1,96 +1,106 @@
 #include "bus/portholders.h"
 
+#include "bus/systemroot.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QtEndian>
+
+#include <algorithm>
 
 namespace stepcom {
 
 namespace {
 
-struct Roots
-{
-    QStringList lockDirs{QStringLiteral("/run/lock"), QStringLiteral("/var/lock")};
-    QString proc = QStringLiteral("/proc");
-};
-
-Roots &roots()
-{
-    static Roots r;
-    return r;
-}
-
 QString programOf(qint64 pid)
 {
-    QFile comm(QStringLiteral("%1/%2/comm").arg(roots().proc).arg(pid));
+    QFile comm(SystemRoot::path(QStringLiteral("/proc/%1/comm").arg(pid)));
     if (!comm.open(QIODevice::ReadOnly))
         return {};
-    return QString::fromLocal8Bit(comm.readAll()).trimmed();
+    return QString::fromLocal8Bit(comm.readLine()).trimmed();
 }
 
 bool alive(qint64 pid)
 {
-    return QFileInfo::exists(QStringLiteral("%1/%2").arg(roots().proc).arg(pid));
+    return QFileInfo::exists(SystemRoot::path(QStringLiteral("/proc/%1").arg(pid)));
 }
 
-// The real device behind a by-id link or a relative path.
-QString deviceOf(const QString &port)
+// The pid in a lock file: Qt's QLockFile writes it on the first line (the program and host
+// after it), UUCP locks pad it to ten columns, old programs wrote 4 binary bytes.
+qint64 lockPid(QFile &lock)
 {
-    const QString canonical = QFileInfo(port).canonicalFilePath();
-    return canonical.isEmpty() ? port : canonical;
+    const QByteArray data = lock.read(64);
+    bool ok = false;
+    const qint64 pid = data.left(data.indexOf('\n')).trimmed().toLongLong(&ok);
+    if (ok)
+        return pid;
+    return data.size() == 4 ? qFromUnaligned<qint32>(data.constData()) : 0;
 }
 
 } // namespace
 
-void PortHolders::setRoots(const QStringList &lockDirs, const QString &procRoot)
+QString PortHolders::lockName(const QString &device)
 {
-    roots() = Roots{};
-    if (!lockDirs.isEmpty())
-        roots().lockDirs = lockDirs;
-    if (!procRoot.isEmpty())
-        roots().proc = procRoot;
-}
-
-QList<PortHolders::Holder> PortHolders::holders(const QString &port)
-{
-    const QString device = deviceOf(port);
-    const qint64 self = QCoreApplication::applicationPid();
-    QList<Holder> out;
-    auto add = [&](qint64 pid) {
-        if (pid <= 0 || pid == self || !alive(pid))
-            return;
-        for (const Holder &h : std::as_const(out))
-            if (h.pid == pid)
-                return;
-        out << Holder{pid, programOf(pid)};
-    };
-    // The lock file: Qt's QLockFile writes the pid on its first line, UUCP locks pad it.
-    // Named as Qt names it: the path below /dev with '/' as '_' (LCK..ttyUSB0, LCK..pts_5).
     QString base =
         device.startsWith(QLatin1String("/dev/")) ? device.mid(5) : QFileInfo(device).fileName();
     base.replace(QLatin1Char('/'), QLatin1Char('_'));
-    const QString lockName = QStringLiteral("LCK..") + base;
-    for (const QString &dir : std::as_const(roots().lockDirs)) {
-        QFile lock(QDir(dir).filePath(lockName));
-        if (lock.open(QIODevice::ReadOnly))
-            add(QString::fromLatin1(lock.readLine()).trimmed().toLongLong());
+    return QStringLiteral("LCK..") + base;
+}
+
+QList<PortHolders::Holder> PortHolders::holders(const QString &port, bool *incomplete)
+{
+    if (incomplete)
+        *incomplete = false;
+    const QString device = SystemRoot::device(port);
+    const qint64 self = QCoreApplication::applicationPid();
+    QList<Holder> out;
+    const auto known = [&out](qint64 pid) {
+        return std::find_if(out.begin(), out.end(),
+                            [pid](const Holder &h) { return h.pid == pid; });
+    };
+    // A lock whose process is gone is stale: nobody holds the port by it.
+    const QString name = lockName(device);
+    for (const QString &dir : {QStringLiteral("/run/lock"), QStringLiteral("/var/lock")}) {
+        const QString lockFile = dir + QLatin1Char('/') + name;
+        QFile lock(SystemRoot::path(lockFile));
+        if (!lock.open(QIODevice::ReadOnly))
+            continue;
+        const qint64 pid = lockPid(lock);
+        if (pid <= 0 || pid == self || !alive(pid) || known(pid) != out.end())
+            continue;
+        out << Holder{pid, programOf(pid), lockFile, false};
     }
     // Every process with the port open (only our own user's are visible without root).
-    const QDir proc(roots().proc);
+    const QDir proc(SystemRoot::path(QStringLiteral("/proc")));
     for (const QString &entry : proc.entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
         bool number = false;
         const qint64 pid = entry.toLongLong(&number);
         if (!number || pid == self)
             continue;
-        const QDir fds(proc.filePath(entry + QStringLiteral("/fd")));
-        for (const QFileInfo &fd :
-             fds.entryInfoList(QDir::AllEntries | QDir::System | QDir::NoDotAndDotDot)) {
-            if (fd.symLinkTarget() == device) {
-                add(pid);
-                break;
-            }
+        const QString fdDir = proc.filePath(entry + QStringLiteral("/fd"));
+        const QFileInfo fdInfo(fdDir);
+        if (!fdInfo.exists())
+            continue;
+        if (!fdInfo.isReadable() || !fdInfo.isExecutable()) {
+            if (incomplete)
+                *incomplete = true; // another user's process: its files cannot be seen
+            continue;
         }
+        const QFileInfoList fds =
+            QDir(fdDir).entryInfoList(QDir::AllEntries | QDir::System | QDir::NoDotAndDotDot);
+        const bool holds = std::any_of(fds.cbegin(), fds.cend(), [&](const QFileInfo &fd) {
+            const QString target = fd.symLinkTarget();
+            return target == device || target == SystemRoot::path(device);
+        });
+        if (!holds)
+            continue;
+        const auto holder = known(pid);
+        if (holder != out.end())
+            holder->open = true;
+        else
+            out << Holder{pid, programOf(pid), QString(), true};
     }
     return out;
 }

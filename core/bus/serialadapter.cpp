@@ -1,5 +1,7 @@
 #include "bus/serialadapter.h"
 
+#include "bus/systemroot.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -7,12 +9,6 @@
 namespace stepcom {
 
 namespace {
-
-QString &root()
-{
-    static QString r = QStringLiteral("/sys");
-    return r;
-}
 
 QString readText(const QString &path)
 {
@@ -41,16 +37,6 @@ SerialAdapter::Family familyOf(const QString &driver, const QString &tty)
 }
 
 } // namespace
-
-void SerialAdapter::setSysRoot(const QString &r)
-{
-    root() = r.isEmpty() ? QStringLiteral("/sys") : r;
-}
-
-QString SerialAdapter::sysRoot()
-{
-    return root();
-}
 
 const QList<SerialAdapter::Quirk> &SerialAdapter::quirks()
 {
@@ -90,20 +76,31 @@ const QList<SerialAdapter::Quirk> &SerialAdapter::quirks()
 SerialAdapter SerialAdapter::identify(const QString &port)
 {
     SerialAdapter a;
-    const QString canonical = QFileInfo(port).canonicalFilePath();
-    const QString path = canonical.isEmpty() ? port : canonical;
+    const QString path = SystemRoot::device(port);
     a.tty = QFileInfo(path).fileName();
     if (path.startsWith(QLatin1String("/dev/pts/"))) {
         a.family = Family::PseudoTerminal;
         a.driver = QStringLiteral("pty");
         return a;
     }
-    const QString ttyDir = QStringLiteral("%1/class/tty/%2").arg(root(), a.tty);
-    const QString device = QFileInfo(ttyDir + QStringLiteral("/device")).canonicalFilePath();
+    const QString device =
+        QFileInfo(SystemRoot::path(QStringLiteral("/sys/class/tty/%1/device").arg(a.tty)))
+            .canonicalFilePath();
     if (device.isEmpty())
         return a;
-    a.driver =
-        QFileInfo(QFileInfo(device + QStringLiteral("/driver")).canonicalFilePath()).fileName();
+    // The serial core's own "port" and "ctrl" devices sit between the tty and the UART's driver.
+    QDir up(device);
+    const auto serialCore = [](const QString &driver) {
+        return driver.isEmpty() || driver == u"port" || driver == u"ctrl";
+    };
+    for (int i = 0; i < 4 && serialCore(a.driver); ++i) {
+        a.driver = QFileInfo(up.filePath(QStringLiteral("driver"))).symLinkTarget();
+        a.driver = a.driver.section(QLatin1Char('/'), -1);
+        if (!up.cdUp())
+            break;
+    }
+    if (serialCore(a.driver))
+        a.driver.clear();
     a.family = familyOf(a.driver, a.tty);
     const QString latency = readText(device + QStringLiteral("/latency_timer"));
     bool ok = false;
@@ -111,23 +108,25 @@ SerialAdapter SerialAdapter::identify(const QString &port)
     a.latencyTimerMs = ok ? ms : -1;
     // Up from the port to the USB device: the first folder with the vendor's id.
     QDir dir(device);
-    for (int up = 0; up < 6 && dir.cdUp(); ++up) {
-        if (!QFileInfo::exists(dir.filePath(QStringLiteral("idVendor"))))
-            continue;
-        a.vendorId = readText(dir.filePath(QStringLiteral("idVendor")));
-        a.productId = readText(dir.filePath(QStringLiteral("idProduct")));
-        a.manufacturer = readText(dir.filePath(QStringLiteral("manufacturer")));
-        a.product = readText(dir.filePath(QStringLiteral("product")));
-        a.serial = readText(dir.filePath(QStringLiteral("serial")));
-        break;
+    for (int level = 0; level < 7; ++level) {
+        if (QFileInfo::exists(dir.filePath(QStringLiteral("idVendor")))) {
+            a.vendorId = readText(dir.filePath(QStringLiteral("idVendor")));
+            a.productId = readText(dir.filePath(QStringLiteral("idProduct")));
+            a.manufacturer = readText(dir.filePath(QStringLiteral("manufacturer")));
+            a.product = readText(dir.filePath(QStringLiteral("product")));
+            a.serial = readText(dir.filePath(QStringLiteral("serial")));
+            break;
+        }
+        if (dir.isRoot() || !dir.cdUp())
+            break;
     }
     return a;
 }
 
 void SerialAdapter::refreshLatency()
 {
-    const QString text =
-        readText(QStringLiteral("%1/class/tty/%2/device/latency_timer").arg(root(), tty));
+    const QString text = readText(
+        SystemRoot::path(QStringLiteral("/sys/class/tty/%1/device/latency_timer").arg(tty)));
     bool ok = false;
     const int ms = text.toInt(&ok);
     if (ok)

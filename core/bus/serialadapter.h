@@ -10,7 +10,7 @@ namespace stepcom {
 // USB vendor and product, the maker's names and serial number, and an FTDI's latency timer. A
 // USB adapter is not a wire: FTDI chips hold received bytes up to their latency timer (16 ms
 // by default), CH340/CH341, CP210x and PL2303 each have their quirks -- one table, quirks().
-// The sysfs root is injectable, so tests work on a fixture tree.
+// Read below SystemRoot, so tests work on a fixture tree.
 struct SerialAdapter
 {
     Q_DECLARE_TR_FUNCTIONS(stepcom::SerialAdapter)
@@ -43,11 +43,9 @@ public:
     int latencyTimerMs = -1; // FTDI only; -1 not known
 
     // The adapter of `port` (a path, a by-id link, or a name such as ttyUSB0); what sysfs
-    // does not say stays empty.
+    // does not say stays empty. The driver is the first one up from the tty that is not the
+    // serial core's own ("port", "ctrl"), so an on-board UART is named by its own driver.
     static SerialAdapter identify(const QString &port);
-    // "/sys" unless a test set another root ("" back to /sys).
-    static void setSysRoot(const QString &root);
-    static QString sysRoot();
     // Each driver's known quirks.
     static const QList<Quirk> &quirks();
 

@@ -9,11 +9,11 @@
 namespace stepcom {
 
 // Every serial port of this computer as a technician needs it before the first connection:
-// its stable /dev/serial/by-id name, the adapter's vendor, product and serial number (from
-// sysfs, as QSerialPortInfo reads them), and whether another program holds it -- a UUCP lock
-// file (/run/lock/LCK..ttyUSB0, /var/lock) naming a living process, or a process with the device
-// open (/proc/PID/fd). Everything is read under a root folder, so tests hand in a fake system.
-// Without sysfs (Windows, macOS) the ports are Qt's list, their holders unknown.
+// its stable /dev/serial/by-id name, the adapter's vendor, product and serial number
+// (SerialAdapter), and whether another program holds it -- a lock file naming a living process,
+// or a process with the device open (PortHolders). Everything is read below SystemRoot, so
+// tests hand in a fake system. Without sysfs (Windows, macOS) the ports are Qt's list, their
+// holders unknown.
 class PortSurvey
 {
     Q_DECLARE_TR_FUNCTIONS(stepcom::PortSurvey)
@@ -37,26 +37,16 @@ public:
         bool accessible = true; // read and write permission for this user
     };
 
-    // `root`: "" (the default) is this system; else a folder with sys/, dev/, proc/, run/lock/.
-    explicit PortSurvey(const QString &root = QString());
+    // Where the system is read (SystemRoot): "" (the default) is this computer; else a folder
+    // with sys/, dev/, proc/, run/lock/. For the front-ends, which include no bus/ header.
+    static void setSystemRoot(const QString &root);
 
     // The ports, sorted by their device path.
-    QList<Port> ports() const;
+    static QList<Port> ports();
     // Who holds the device at `devicePath` ("/dev/ttyUSB0"), this process left out.
-    QList<Holder> holders(const QString &devicePath, bool *incomplete = nullptr) const;
+    static QList<Holder> holders(const QString &devicePath, bool *incomplete = nullptr);
     // "held by minicom (pid 1234, lock file ...)" or "free".
     static QString holdersText(const Port &port);
-
-    // The process to leave out of the holders (this program's own).
-    void setOwnPid(qint64 pid) { m_ownPid = pid; }
-
-private:
-    QString path(const QString &absolute) const { return m_root + absolute; }
-    QString programOf(qint64 pid) const;
-    void readAdapter(const QString &ttyName, Port *port) const;
-
-    QString m_root;
-    qint64 m_ownPid = 0;
 };
 
 } // namespace stepcom

@@ -336,7 +336,8 @@ private Q_SLOTS:
         QVERIFY(!html.readAll().contains("SIMULATOR"));
     }
 
-    // A fake system: an FTDI adapter held by minicom's lock file, a CH340 opened by picocom.
+    // A fake system: an FTDI adapter held by minicom's lock file, a CH340 opened by picocom
+    // under a lock file as Qt writes it (the pid, the program, the host).
     void portsListsAdaptersAndWhoHoldsThem()
     {
         const QString root = m_home.filePath(QStringLiteral("system"));
@@ -366,6 +367,7 @@ private Q_SLOTS:
         QVERIFY(QDir().mkpath(root + "/proc/4194301/fd"));
         writeFile(root + "/proc/4194302/comm", "picocom\n");
         link("/dev/ttyUSB1", root + "/proc/4194302/fd/3");
+        writeFile(root + "/var/lock/LCK..ttyUSB1", "4194302\npicocom\nbench\n");
 
         const QStringList env{QStringLiteral("STEPCOMCTL_SYSTEM_ROOT=") + root};
         ProgramRun r = ctl({"ports", "--json"}, env);
@@ -384,12 +386,18 @@ private Q_SLOTS:
         const QJsonObject holder = ftdi.value("holders").toArray().at(0).toObject();
         QCOMPARE(holder.value("program").toString(), QStringLiteral("minicom"));
         QCOMPARE(holder.value("pid").toInteger(), 4194301);
+        QCOMPARE(holder.value("how").toString(),
+                 QStringLiteral("lock file /run/lock/LCK..ttyUSB0"));
         const QJsonObject ch340 = ports.at(1).toObject();
         QCOMPARE(ch340.value("path").toString(), QStringLiteral("/dev/ttyUSB1"));
         QVERIFY(ch340.value("by_id").isNull());
         QCOMPARE(ch340.value("product_id").toString(), QStringLiteral("7523"));
-        QCOMPARE(ch340.value("holders").toArray().at(0).toObject().value("program").toString(),
+        const QJsonArray ch340Holders = ch340.value("holders").toArray();
+        QCOMPARE(ch340Holders.size(), 1);
+        QCOMPARE(ch340Holders.at(0).toObject().value("program").toString(),
                  QStringLiteral("picocom"));
+        QCOMPARE(ch340Holders.at(0).toObject().value("how").toString(),
+                 QStringLiteral("lock file /var/lock/LCK..ttyUSB1, has it open"));
 
         // A stale lock (its process is gone) holds nothing.
         QVERIFY(QDir(root + "/proc/4194301").removeRecursively());
@@ -398,7 +406,8 @@ private Q_SLOTS:
         QVERIFY2(r.out.contains(QStringLiteral("/dev/ttyUSB0  FTDI, FT232R USB UART, 0403:6001, "
                                                "S/N A10K3B5Q  free")),
                  qPrintable(r.out));
-        QVERIFY2(r.out.contains(QStringLiteral("held by picocom (pid 4194302, has it open)")),
+        QVERIFY2(r.out.contains(QStringLiteral("held by picocom (pid 4194302, lock file "
+                                               "/var/lock/LCK..ttyUSB1, has it open)")),
                  qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("open it with: stepcomctl --port "
                                                "/dev/serial/by-id/usb-FTDI_FT232R_USB_UART_"

@@ -4,6 +4,7 @@
 // message naming the driver and the option to try, and nothing is sent.
 #include "bus/portsetup.h"
 #include "bus/serialadapter.h"
+#include "bus/systemroot.h"
 #include "programrun.h"
 
 #include <QDir>
@@ -65,7 +66,7 @@ class TestLinePort : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
-    void cleanup() { SerialAdapter::setSysRoot({}); }
+    void cleanup() { SystemRoot::set({}); }
 
     void identifies_data()
     {
@@ -117,7 +118,7 @@ private Q_SLOTS:
         const QString sys = dir.filePath(QStringLiteral("sys"));
         QVERIFY(makeTty(sys, tty, driver, ids, QStringLiteral("Pico"), QStringLiteral("A5XK3RJT"),
                         latency));
-        SerialAdapter::setSysRoot(sys);
+        SystemRoot::set(dir.path());
         const SerialAdapter a = SerialAdapter::identify(QStringLiteral("/dev/") + tty);
         QCOMPARE(a.driver, driver);
         QCOMPARE(int(a.family), family);
@@ -130,11 +131,36 @@ private Q_SLOTS:
     void unknownWithoutSysfs()
     {
         QTemporaryDir dir;
-        SerialAdapter::setSysRoot(dir.path());
+        SystemRoot::set(dir.path());
         const SerialAdapter a = SerialAdapter::identify(QStringLiteral("/dev/ttyUSB9"));
         QCOMPARE(a.family, SerialAdapter::Family::Unknown);
         QVERIFY(a.summary().isEmpty());
         QCOMPARE(a.latencyTimerMs, -1);
+    }
+
+    // Newer kernels put the serial core's "port" and "ctrl" devices between an on-board UART's
+    // tty and its platform device: the driver named is the UART's, not theirs.
+    void driverBehindTheSerialCore()
+    {
+        QTemporaryDir dir;
+        const QString sys = dir.filePath(QStringLiteral("sys"));
+        const QString uart = sys + QStringLiteral("/devices/platform/serial8250");
+        const QString ctrl = uart + QStringLiteral("/serial8250:0");
+        const QString port = ctrl + QStringLiteral("/serial8250:0.0");
+        QVERIFY(QDir().mkpath(port + QStringLiteral("/tty/ttyS0")));
+        QVERIFY(QDir().mkpath(sys + QStringLiteral("/class/tty/ttyS0")));
+        QVERIFY(QFile::link(port, sys + QStringLiteral("/class/tty/ttyS0/device")));
+        for (const auto &[folder, driver] :
+             {std::pair{port, "port"}, std::pair{ctrl, "ctrl"}, std::pair{uart, "serial8250"}}) {
+            const QString driverDir = sys + QStringLiteral("/bus/drivers/") + driver;
+            QVERIFY(QDir().mkpath(driverDir));
+            QVERIFY(QFile::link(driverDir, folder + QStringLiteral("/driver")));
+        }
+        SystemRoot::set(dir.path());
+        const SerialAdapter a = SerialAdapter::identify(QStringLiteral("ttyS0"));
+        QCOMPARE(a.driver, QStringLiteral("serial8250"));
+        QCOMPARE(a.family, SerialAdapter::Family::NativeUart);
+        QCOMPARE(a.summary(), QStringLiteral("native UART (serial8250)"));
     }
 
     // Every driver the guide names has one row in the quirks table.

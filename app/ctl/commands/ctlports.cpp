@@ -16,8 +16,8 @@ void CtlRunner::runPorts()
         return;
     }
     // Tests hand in a fake system (sys/, dev/, proc/, run/lock/ under one folder).
-    const PortSurvey survey(qEnvironmentVariable("STEPCOMCTL_SYSTEM_ROOT"));
-    const QList<PortSurvey::Port> ports = survey.ports();
+    PortSurvey::setSystemRoot(qEnvironmentVariable("STEPCOMCTL_SYSTEM_ROOT"));
+    const QList<PortSurvey::Port> ports = PortSurvey::ports();
     const auto hex = [](quint16 id) {
         return QStringLiteral("%1").arg(id, 4, 16, QLatin1Char('0'));
     };
