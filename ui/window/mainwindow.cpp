@@ -219,11 +219,6 @@ WriteChangesDialog *MainWindow::writeDialog() const
     return m_writeFlow->dialog();
 }
 
-QMessageBox *MainWindow::closeQuestion() const
-{
-    return m_closeQuestion;
-}
-
 Page *MainWindow::currentPage() const
 {
     const int index = m_stack->currentIndex();
@@ -559,53 +554,6 @@ void MainWindow::updateActions()
 void MainWindow::writeChanges()
 {
     m_writeFlow->openAll();
-}
-
-void MainWindow::closeEvent(QCloseEvent *event)
-{
-    if (m_session->parameters()->hasEdits() && !m_closeConfirmed) {
-        event->ignore();
-        if (m_closeQuestion)
-            return;
-        const int edits = int(m_session->parameters()->editedKeys().size());
-        m_closeQuestion = new QMessageBox(
-            QMessageBox::Warning, tr("Unwritten changes"),
-            m_offline->document()->isOpen()
-                ? tr("%n edited value(s) of %1 are not saved in the file. Close anyway and lose "
-                     "them?",
-                     nullptr, edits)
-                      .arg(m_offline->document()->displayName())
-                : tr("%n edited value(s) were never written to the controller. Close anyway "
-                     "and lose them?",
-                     nullptr, edits),
-            QMessageBox::Discard | QMessageBox::Cancel, this);
-        m_closeQuestion->setAttribute(Qt::WA_DeleteOnClose);
-        m_closeQuestion->setDefaultButton(QMessageBox::Cancel);
-        connect(m_closeQuestion, &QMessageBox::finished, this, [this](int result) {
-            if (result == QMessageBox::Discard) {
-                m_closeConfirmed = true;
-                close();
-            }
-        });
-        m_closeQuestion->open();
-        return;
-    }
-    // Stop what is held and let the stop reach the wire (at most 1 s).
-    if (!m_jogStopAwaited && (m_session->stopJogging(DeviceSession::JogStop::WindowClosing) > 0 ||
-                              m_session->jog()->isBusy())) {
-        m_jogStopAwaited = true;
-        event->ignore();
-        const auto closeAgain = [this] {
-            if (isVisible())
-                close();
-        };
-        connect(m_session->jog(), &JogController::settled, this, closeAgain,
-                Qt::SingleShotConnection);
-        QTimer::singleShot(1000, this, closeAgain);
-        return;
-    }
-    saveLayout();
-    event->accept();
 }
 
 } // namespace stepcom
