@@ -5399,6 +5399,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>OUT 1-%1</source>
         <translation>OUT 1-%1</translation>
     </message>
+    <message>
+        <source>reference not known</source>
+        <translation>reference not known</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MainWindow</name>

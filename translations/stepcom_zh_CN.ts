@@ -5370,6 +5370,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>OUT 1-%1</source>
         <translation>输出 1-%1</translation>
     </message>
+    <message>
+        <source>reference not known</source>
+        <translation>参考点未知</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MainWindow</name>

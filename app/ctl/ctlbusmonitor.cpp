@@ -27,6 +27,24 @@ CtlBusMonitor::CtlBusMonitor(DeviceSession *session, const QList<int> &ids, int 
         m_err << QStringLiteral("stepcomctl: ") << tr("link lost: %1").arg(reason) << Qt::endl;
         end(1);
     });
+    // The session watches each device's reads for a restart; said per device as `monitor`
+    // of one says it.
+    CtlMonitor::sayRestarts(m_session, this,
+                            [this](const QString &name, const QString &text,
+                                   const QString &fields) { event(name, text, fields); });
+}
+
+void CtlBusMonitor::event(const QString &name, const QString &text, const QString &fields)
+{
+    if (m_ended)
+        return;
+    if (!m_json) {
+        m_err << QStringLiteral("stepcomctl: ") << text << Qt::endl;
+        return;
+    }
+    m_out << CtlMonitor::eventLine(name, m_clock.elapsed(), fields) << QLatin1Char('\n');
+    m_out.flush();
+    std::fflush(stdout);
 }
 
 void CtlBusMonitor::start()
@@ -77,6 +95,7 @@ void CtlBusMonitor::onRead(quint64 generation, int id, const ReadOutcome &outcom
     if (generation != m_generation || m_ended)
         return;
     ++m_samples[id];
+    m_session->statusSampled(id, outcome.ok, outcome.values);
     if (outcome.ok) {
         m_out << sampleLine(id, m_clock.elapsed(), outcome.values) << QLatin1Char('\n');
         m_out.flush();

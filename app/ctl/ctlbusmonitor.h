@@ -17,8 +17,10 @@ struct ReadOutcome;
 // `stepcomctl monitor --id 1,2,3`: the status of several controllers of one line, fairly: one
 // status read per device in turn, in the order given, a round at most every --interval. Each
 // sample is one line keyed by its device id (JSON with --json, else text); --count N is N
-// samples of each device. The exit code is the worst of the devices': 1 for a device one of
-// whose reads failed (said on standard error with its id), 1 when the link was lost.
+// samples of each device. A restart of a device, certain or possible, is said as `monitor` of
+// one says it (an event line with its id, or words on standard error). The exit code is the worst
+// of the devices': 1 for a device one of whose reads failed (said on standard error with its id), 1
+// when the link was lost.
 class CtlBusMonitor : public QObject
 {
     Q_OBJECT
@@ -37,6 +39,8 @@ private:
     void onRead(quint64 generation, int id, const ReadOutcome &outcome);
     bool countReached() const;
     void end(int exitCode);
+    // One event: `text` on stderr, or with --json CtlMonitor::eventLine().
+    void event(const QString &name, const QString &text, const QString &fields);
 
     DeviceSession *m_session;
     SignalWatcher *m_signals = nullptr;

@@ -68,9 +68,17 @@ CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, bool j
                              : s.portName));
     });
     connect(reconnector, &Reconnector::cancelled, this, [this] { end(1); });
-    connect(m_session, &DeviceSession::controllerRestarted, this,
-            [this](int id, const QStringList &lost, const RestartWatch::Evidence &seen) {
-                const QString axes = RestartWatch::describe(seen, m_session->map());
+    sayRestarts(m_session, this,
+                [this](const QString &name, const QString &text, const QString &fields) {
+                    event(name, text, fields);
+                });
+}
+
+void CtlMonitor::sayRestarts(DeviceSession *session, QObject *context, const EventSink &event)
+{
+    connect(session, &DeviceSession::controllerRestarted, context,
+            [session, event](int id, const QStringList &lost, const RestartWatch::Evidence &seen) {
+                const QString axes = RestartWatch::describe(seen, session->map());
                 event(QStringLiteral("restarted"),
                       tr("controller %1 restarted (power off?): positions and references lost%2%3")
                           .arg(id)
@@ -79,25 +87,25 @@ CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, bool j
                                                     .arg(lost.join(QLatin1String(", "))),
                                axes.isEmpty() ? QString() : tr("; seen: %1").arg(axes)),
                       QStringLiteral(",\"lost\":") + quoted(lost.join(QLatin1String(", "))) +
-                          evidenceFields(id, seen));
+                          evidenceFields(session->map(), id, seen));
             });
     // Zeros after a silence where only moving axes went to 0: said as what it is, not hidden.
-    connect(m_session, &DeviceSession::controllerMayHaveRestarted, this,
-            [this](int id, const RestartWatch::Evidence &seen) {
+    connect(session, &DeviceSession::controllerMayHaveRestarted, context,
+            [session, event](int id, const RestartWatch::Evidence &seen) {
                 event(QStringLiteral("possible_restart"),
                       tr("controller %1 may have restarted (power off?): it did not answer for "
                          "%2 s and every axis reads 0 (%3); whether a motion ended there cannot "
                          "be told: the references are not known, home again")
                           .arg(id)
                           .arg(double(seen.silentMs) / 1000.0, 0, 'f', 1)
-                          .arg(RestartWatch::describe(seen, m_session->map())),
-                      evidenceFields(id, seen));
+                          .arg(RestartWatch::describe(seen, session->map())),
+                      evidenceFields(session->map(), id, seen));
             });
 }
 
-QString CtlMonitor::evidenceFields(int id, const RestartWatch::Evidence &seen) const
+QString CtlMonitor::evidenceFields(const RegisterMap &map, int id,
+                                   const RestartWatch::Evidence &seen)
 {
-    const RegisterMap &map = m_session->map();
     const auto name = [&map](int motor) {
         const Parameter *p =
             map.blockParameter(QStringLiteral("motor"), motor, QStringLiteral("position"));
@@ -137,15 +145,15 @@ void CtlMonitor::event(const QString &name, const QString &text, const QString &
         m_err << QStringLiteral("stepcomctl: ") << text << Qt::endl;
         return;
     }
-    QDateTime now = QDateTime::currentDateTime();
-    now = now.toOffsetFromUtc(now.offsetFromUtc());
-    m_out << QStringLiteral("{\"event\":%1,\"time\":\"%2\",\"t_ms\":%3%4}")
-                 .arg(quoted(name), now.toString(Qt::ISODateWithMs))
-                 .arg(m_clock.elapsed())
-                 .arg(fields)
-          << QLatin1Char('\n');
+    m_out << eventLine(name, m_clock.elapsed(), fields) << QLatin1Char('\n');
     m_out.flush();
     std::fflush(stdout);
+}
+
+QString CtlMonitor::eventLine(const QString &name, qint64 tMs, const QString &fields)
+{
+    return QStringLiteral("{\"event\":") + quoted(name) + QLatin1Char(',') + timeFields(tMs) +
+           fields + QLatin1Char('}');
 }
 
 void CtlMonitor::start()

@@ -13,6 +13,7 @@
 namespace stepcom {
 
 class DeviceSession;
+class RegisterMap;
 class SignalWatcher;
 struct Parameter;
 
@@ -41,6 +42,19 @@ public:
     static QString valueFields(const QList<const Parameter *> &params,
                                const std::function<std::optional<qint64>(const QString &)> &raw);
 
+    // Where an event goes: its name, its words, its JSON fields (`,"key":value` each).
+    using EventSink =
+        std::function<void(const QString &name, const QString &text, const QString &fields)>;
+    // Every (possible) restart the session says of any device, as an event for `event` while
+    // `context` lives: "restarted" and "possible_restart", each with evidenceFields(). Both
+    // monitors, of one device and of several, say them so.
+    static void sayRestarts(DeviceSession *session, QObject *context, const EventSink &event);
+    // The JSON line of one event: {"event":name,"time","t_ms"`fields`}.
+    static QString eventLine(const QString &name, qint64 tMs, const QString &fields);
+    // `,"id","silent_ms","zeroed","stood_still","moving","before"` of a (possible) restart.
+    static QString evidenceFields(const RegisterMap &map, int id,
+                                  const RestartWatch::Evidence &seen);
+
 Q_SIGNALS:
     // 0 after --count samples or a signal, 1 when the link was lost and trying again was
     // cancelled.
@@ -49,11 +63,8 @@ Q_SIGNALS:
 private:
     void onCycle(bool ok);
     void end(int exitCode);
-    // One event: `text` on stderr, or with --json a line {"event":name,"time","t_ms"`fields`}
-    // (`fields`: `,"key":value` each, JSON already).
+    // One event: `text` on stderr, or with --json eventLine().
     void event(const QString &name, const QString &text, const QString &fields);
-    // `,"id","silent_ms","zeroed","stood_still","moving","before"` of a (possible) restart.
-    QString evidenceFields(int id, const RestartWatch::Evidence &seen) const;
 
     DeviceSession *m_session;
     SignalWatcher *m_signals = nullptr;

@@ -33,6 +33,8 @@ public:
 
     int motorCount() const { return m_motors; }
     bool isReferenced(int motor) const { return reason(motor) == Reason::Homed; }
+    // Whether StepCom knows if it is referenced: not after a silence while it moved.
+    bool isKnown(int motor) const { return reason(motor) != Reason::Silent; }
     Reason reason(int motor) const { return reasonOn(m_view, motor); }
     // "referenced" / "not referenced (E-STOP)", in the installed language.
     QString text(int motor) const { return textOn(m_view, motor); }

@@ -208,8 +208,12 @@ public:
     // The link as it reaches device `id` ("/dev/ttyUSB0 · 9600 8N1 · id 2").
     QString describeDevice(int id) const;
 
-    // -- Restarts (sessionrestart.cpp): nothing to call; controllerRestarted() and
-    // controllerMayHaveRestarted() say it --
+    // -- Restarts (sessionrestart.cpp): controllerRestarted() and controllerMayHaveRestarted()
+    // say it --
+    // A status read of device `id` a front-end made itself rather than through the polls
+    // (stepcomctl's monitor of several): `values` (raw, by key) when it was answered. Watched
+    // for a restart per device as the polls' own reads are.
+    void statusSampled(int id, bool ok, const QHash<QString, qint64> &values);
 
 Q_SIGNALS:
     // -- Connection --

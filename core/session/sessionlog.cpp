@@ -9,6 +9,8 @@
 #include <QRegularExpression>
 #include <QStandardPaths>
 
+#include <algorithm>
+
 namespace stepcom {
 
 SessionLog::SessionLog(DeviceSession *session, QObject *parent)
@@ -39,6 +41,11 @@ SessionLog::SessionLog(DeviceSession *session, QObject *parent)
                      QStringLiteral("id %1%2").arg(id).arg(
                          lost.isEmpty() ? QString()
                                         : QStringLiteral(": ") + lost.join(QStringLiteral("; "))));
+            });
+    // Not claimed, but kept with what was seen, so a replay shows it as the session said it.
+    connect(session, &DeviceSession::controllerMayHaveRestarted, this,
+            [mark, session](int id, const RestartWatch::Evidence &seen) {
+                mark(kPossibleRestart, possibleRestartText(session->map(), id, seen));
             });
     connect(session, &DeviceSession::emergencyStopRequested, this,
             [mark] { mark(kUser, QStringLiteral("E-STOP pressed")); });
@@ -145,6 +152,39 @@ QString SessionLog::formatMark(const QDateTime &time, const char *kind, const QS
     return QStringLiteral("%1  --  %2  %3\n")
         .arg(time.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")),
              QString::fromLatin1(kind).leftJustified(7), text);
+}
+
+QString SessionLog::possibleRestartText(const RegisterMap &map, int id,
+                                        const RestartWatch::Evidence &seen)
+{
+    const auto position = [&map](int motor) {
+        return map.blockParameter(QStringLiteral("motor"), motor, QStringLiteral("position"));
+    };
+    const auto name = [&position](int motor) {
+        const Parameter *p = position(motor);
+        return p ? p->key.section(QLatin1Char('.'), 0, 0) : QStringLiteral("motor%1").arg(motor);
+    };
+    const auto names = [&name](const QList<int> &motors) {
+        QStringList out;
+        for (const int motor : motors)
+            out << name(motor);
+        return out.isEmpty() ? QStringLiteral("none") : out.join(QLatin1String(", "));
+    };
+    QList<int> motors = seen.before.keys();
+    std::sort(motors.begin(), motors.end());
+    QStringList before;
+    for (const int motor : std::as_const(motors)) {
+        const Parameter *p = position(motor);
+        const qint64 raw = seen.before.value(motor);
+        before << QStringLiteral("%1=%2").arg(name(motor),
+                                              p ? p->formatRaw(raw) : QString::number(raw));
+    }
+    return QStringLiteral("id %1 may have restarted: silent %2 s; zeroed %3; stood still %4; "
+                          "moving %5; before %6")
+        .arg(id)
+        .arg(double(seen.silentMs) / 1000.0, 0, 'f', 1)
+        .arg(names(seen.zeroed), names(seen.stoodStill), names(seen.moving),
+             before.isEmpty() ? QStringLiteral("not known") : before.join(QLatin1String(", ")));
 }
 
 QString SessionLog::header(const DeviceSession *session, int part, const QString &description,

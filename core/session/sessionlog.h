@@ -1,6 +1,7 @@
 #pragma once
 
 #include "bus/trafficlog.h"
+#include "session/restartwatch.h"
 
 #include <QFile>
 #include <QHash>
@@ -62,9 +63,16 @@ public:
     static constexpr const char *kLinkUp = "linkup";
     static constexpr const char *kLinkDown = "linkdown";
     static constexpr const char *kRestart = "restart";
+    // The controller may have restarted: only moving axes went to 0 after a silence.
+    static constexpr const char *kPossibleRestart = "possible-restart";
     static constexpr const char *kUser = "user";
     // "2026-11-24 22:10:01.123  --  user     E-STOP pressed"
     static QString formatMark(const QDateTime &time, const char *kind, const QString &text);
+    // The text of a possible restart's mark, in English as every mark: "id 1 may have
+    // restarted: silent 1.6 s; zeroed motor2; stood still motor1; moving motor2; before
+    // motor1=0.00, motor2=12.34".
+    static QString possibleRestartText(const RegisterMap &map, int id,
+                                       const RestartWatch::Evidence &seen);
     // The link a file is about, in its header and link-up marks: "built-in simulator, not a
     // machine: /dev/pts/3 · 9600 8N1 · id 1" when it is the built-in simulator.
     static QString linkText(const DeviceSession *session);

@@ -53,6 +53,11 @@ void DeviceSession::watchRestarts()
     connect(m_restarts, &RestartWatch::suspected, this, &DeviceSession::checkRestart);
 }
 
+void DeviceSession::statusSampled(int id, bool ok, const QHash<QString, qint64> &values)
+{
+    m_restarts->statusRead(id, ok, values, nowMs());
+}
+
 void DeviceSession::checkRestart(int id, const QString &why, RestartWatch::Zeros zeros,
                                  const RestartWatch::Evidence &seen)
 {

@@ -305,6 +305,10 @@ void ReplayDecoder::mark(const LogLine &line, qint64 ms, qint64 lineNo, const Si
             d.restartText = line.text;
         }
         emitEvent(sink, ms, id, ReplayEvent::Kind::Restart, line.text, lineNo);
+    } else if (kind == "possible-restart") {
+        // "id 1 may have restarted: silent 1.6 s; ...": not a restart the device list claims.
+        const int id = line.text.section(QLatin1Char(' '), 1, 1).toInt();
+        emitEvent(sink, ms, id, ReplayEvent::Kind::PossibleRestart, line.text, lineNo);
     } else if (kind == "user") {
         emitEvent(sink, ms, 0, ReplayEvent::Kind::User, line.text, lineNo);
     } else if (connecting && line.text.startsWith(u"disconnected: ")) {

@@ -25,6 +25,8 @@ QString ReplayEvent::kindName(Kind kind)
         return QStringLiteral("link-down");
     case Kind::Restart:
         return QStringLiteral("restart");
+    case Kind::PossibleRestart:
+        return QStringLiteral("possible-restart");
     case Kind::User:
         break;
     }

@@ -22,8 +22,9 @@ struct ReplayEvent
         LateAnswer,    // an answer to a request already given up (owed)
         LinkUp,
         LinkDown,
-        Restart, // the session saw the controller restart
-        User,    // a user action the session logged
+        Restart,         // the session saw the controller restart
+        PossibleRestart, // it may have: only moving axes went to 0 after a silence
+        User,            // a user action the session logged
     };
     qint64 ms = 0;  // since the start of the log
     int device = 0; // the controller's id; 0: the line

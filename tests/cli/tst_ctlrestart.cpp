@@ -3,7 +3,8 @@
 // proves it), and a "possible_restart" with what it saw when only a moving axis went to 0; `command
 // motor1.home --wait` cut by it ends with exit code 1 and the cause "silent" (the axis stands at 0
 // as a homing that ended would: whether it ended or the controller restarted is not known), not
-// "done" and not "link lost".
+// "done" and not "link lost". `monitor --id 1,2` says both per device: the one whose standing
+// axis went to 0 restarted, the other one whose only moving axis went there may have.
 #include "programrun.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -149,6 +150,108 @@ private Q_SLOTS:
         QCOMPARE(strings(o.value(QStringLiteral("zeroed"))), QStringList{"motor2"});
         QCOMPARE(strings(o.value(QStringLiteral("stood_still"))), QStringList{"motor1"});
         QCOMPARE(strings(o.value(QStringLiteral("moving"))), QStringList{"motor2"});
+    }
+
+    // Two controllers on the line: device 2's motor 1 stands away from 0, device 1's motor 2
+    // runs on. `stepcomctl --id 1,2 monitor` (--json when `json`) until both were said (or 100
+    // samples each), both cut off for 1.5 s at once after 6 samples. Its standard output lines
+    // and standard error.
+    static QPair<QList<QByteArray>, QString> monitorALine(bool json)
+    {
+        SimHost host;
+        SimOptions o;
+        o.rtu = true;
+        o.answerDelayMs = 5;
+        o.ids = {1, 2};
+        QString error;
+        if (!host.start(o, &error)) {
+            qWarning("%s", qPrintable(error));
+            return {};
+        }
+        SimDevice *one = host.devices().at(0);
+        SimDevice *two = host.devices().at(1);
+        two->command(QStringLiteral("motor1.move"));
+        QDeadlineTimer moving(10000);
+        while (two->running(1) && !moving.hasExpired())
+            QTest::qWait(20);
+        if (two->position(1) == 0 || one->position(1) != 0)
+            return {};
+        one->command(QStringLiteral("motor2.forward"));
+        QProcess p;
+        QStringList args{"--port", host.rtuPath(), "--id", "1,2", "--timeout", "200"};
+        if (json)
+            args << "--json";
+        p.start(programPath(QStringLiteral("stepcomctl")),
+                args + QStringList{"monitor", "--count", "100", "--interval", "100"});
+        if (!p.waitForStarted(10000))
+            return {};
+        QByteArray out;
+        QList<QByteArray> lines;
+        QString err;
+        int samples = 0;
+        bool cut = false;
+        const auto said = [&] {
+            if (json)
+                return out.count("\"event\"") >= 2;
+            return err.contains(QLatin1String("controller 2")) &&
+                   err.contains(QLatin1String("controller 1"));
+        };
+        QDeadlineTimer limit(60000);
+        while (p.state() != QProcess::NotRunning && !said() && !limit.hasExpired()) {
+            QTest::qWait(20);
+            out += p.readAllStandardOutput();
+            err += QString::fromUtf8(p.readAllStandardError());
+            samples = int(out.count('\n'));
+            if (samples >= 6 && !cut)
+                cut = host.powerCycle(1500);
+        }
+        p.terminate();
+        p.waitForFinished(10000);
+        out += p.readAllStandardOutput();
+        err += QString::fromUtf8(p.readAllStandardError());
+        for (const QByteArray &line : out.split('\n'))
+            if (!line.isEmpty())
+                lines << line;
+        return {lines, err};
+    }
+
+    // Both cut at once: device 2's motor 1 stood away from 0 (a restart), device 1's only
+    // moving axis went to 0 (a possible one). Each said with its id and what was seen.
+    void aLineOfSeveralSaysEachRestart()
+    {
+        const auto [lines, err] = monitorALine(true);
+        QHash<int, QJsonObject> events;
+        for (const QByteArray &line : lines) {
+            const QJsonObject o = QJsonDocument::fromJson(line).object();
+            if (o.contains(QStringLiteral("event")))
+                events.insert(o.value(QStringLiteral("id")).toInt(), o);
+        }
+        QVERIFY2(events.size() == 2, qPrintable(err));
+        const QJsonObject restarted = events.value(2);
+        QCOMPARE(restarted.value(QStringLiteral("event")).toString(), QStringLiteral("restarted"));
+        // Its standing axis at 0 is the proof, whether a read fell into the silence or not.
+        QVERIFY(restarted.contains(QStringLiteral("silent_ms")));
+        QCOMPARE(strings(restarted.value(QStringLiteral("zeroed"))), QStringList{"motor1"});
+        QCOMPARE(strings(restarted.value(QStringLiteral("stood_still"))),
+                 (QStringList{"motor1", "motor2"}));
+        QVERIFY(restarted.contains(QStringLiteral("lost")));
+        QVERIFY(restarted.value(QStringLiteral("before")).toObject().value("motor1").toDouble() !=
+                0);
+        const QJsonObject possible = events.value(1);
+        QCOMPARE(possible.value(QStringLiteral("event")).toString(),
+                 QStringLiteral("possible_restart"));
+        QVERIFY(possible.value(QStringLiteral("silent_ms")).toInt() >= 1000);
+        QCOMPARE(strings(possible.value(QStringLiteral("zeroed"))), QStringList{"motor2"});
+        QCOMPARE(strings(possible.value(QStringLiteral("moving"))), QStringList{"motor2"});
+    }
+
+    // Without --json the same two are said in words on standard error, each with its device.
+    void aLineOfSeveralSaysEachRestartInWords()
+    {
+        const auto [lines, err] = monitorALine(false);
+        QVERIFY(!lines.isEmpty());
+        QVERIFY2(err.contains(QLatin1String("controller 2 restarted")), qPrintable(err));
+        QVERIFY2(err.contains(QLatin1String("controller 1 may have restarted")), qPrintable(err));
     }
 
     void aHomingCutByAPowerCycleEndsUnknown()

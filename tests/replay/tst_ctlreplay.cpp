@@ -213,6 +213,33 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(message), qPrintable(r.err));
     }
+
+    // A possible restart the session marked is listed as one, in its own kind and words.
+    void aPossibleRestartIsListed()
+    {
+        LogBuilder b;
+        b.header();
+        b.read(1, 0, {180, 8});
+        b.mark(SessionLog::kPossibleRestart,
+               QStringLiteral("id 1 may have restarted: silent 2.5 s; zeroed motor2; stood still "
+                              "motor1; moving motor2; before motor1=0.00, motor2=98.26"));
+        const QString log = b.save(dir, QStringLiteral("possible.log"));
+        const ProgramRun json = replay(log, {"--events", "--json"});
+        QVERIFY2(json.exitCode == 0, qPrintable(json.err));
+        QJsonObject found;
+        for (const QJsonValue &v : QJsonDocument::fromJson(json.out.toUtf8()).array())
+            if (v.toObject().value(QStringLiteral("kind")).toString() ==
+                QLatin1String("possible-restart"))
+                found = v.toObject();
+        QCOMPARE(found.value(QStringLiteral("device")).toInt(), 1);
+        QVERIFY2(found.value(QStringLiteral("text"))
+                     .toString()
+                     .startsWith(QLatin1String("id 1 may have restarted: silent 2.5 s")),
+                 qPrintable(json.out));
+        const ProgramRun text = replay(log, {"--events"});
+        QVERIFY2(text.out.contains(QLatin1String("possible-restart  id 1 may have restarted")),
+                 qPrintable(text.out));
+    }
 };
 
 #include "testregistry.h"

@@ -141,6 +141,28 @@ private Q_SLOTS:
         QVERIFY(!log.stateAt(log.durationMs()).linkUp);
     }
 
+    // A possible restart is an event of its own kind, said as the session said it; the device
+    // list does not claim it restarted.
+    void aPossibleRestartIsAnEventOfItsOwn()
+    {
+        LogBuilder b;
+        b.header();
+        b.coil(1, map().find(QStringLiteral("motor1.home"))->address);
+        b.mark("possible-restart",
+               QStringLiteral("id 1 may have restarted: silent 1.6 s; zeroed motor1; stood still "
+                              "motor2; moving motor1; before motor1=12.00, motor2=0.00"));
+        ReplayLog log;
+        QVERIFY2(log.open(b.save(dir)), qPrintable(log.errorString()));
+        QStringList seen;
+        for (const ReplayEvent &e : log.events())
+            seen << QStringLiteral("%1 %2 %3")
+                        .arg(e.device)
+                        .arg(ReplayEvent::kindName(e.kind), e.text.section(QLatin1Char(':'), 0, 0));
+        QCOMPARE(seen, (QStringList{"1 command motor1.home",
+                                    "1 possible-restart id 1 may have restarted"}));
+        QCOMPARE(log.stateAt(log.durationMs()).devices.value(1).restartMs, -1);
+    }
+
     void badLogsGiveNamedErrors_data()
     {
         QTest::addColumn<QByteArray>("content");

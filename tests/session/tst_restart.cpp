@@ -6,10 +6,13 @@
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
 #include "session/restartwatch.h"
+#include "session/sessionlog.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
+#include "support/replaylog.h"
 
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace stepcom;
@@ -138,6 +141,9 @@ private Q_SLOTS:
     {
         QVERIFY(start({}));
         QVERIFY(host->device()->save(nullptr)); // no value can be lost
+        QTemporaryDir dir;
+        SessionLog log(session.get());
+        log.setFile(dir.filePath(QStringLiteral("s.log")));
         QSignalSpy finished(session->motion(), &MotionSupervisor::finished);
         QSignalSpy restarted(session.get(), &DeviceSession::controllerRestarted);
         QSignalSpy possible(session.get(), &DeviceSession::controllerMayHaveRestarted);
@@ -166,6 +172,20 @@ private Q_SLOTS:
         QVERIFY2(heard().contains(QLatin1String("may have restarted")), qPrintable(heard()));
         QVERIFY2(heard().contains(QLatin1String("motor 1 was moving and reads 0.00")),
                  qPrintable(heard()));
+        // Kept in the session log with what was seen, so its replay shows it too.
+        ReplayLog replay;
+        QVERIFY2(replay.open(log.currentFile()), qPrintable(replay.errorString()));
+        QStringList marks;
+        for (const ReplayEvent &e : replay.events())
+            if (e.kind == ReplayEvent::Kind::PossibleRestart)
+                marks << QStringLiteral("%1 %2").arg(e.device).arg(e.text);
+        QCOMPARE(marks.size(), 1);
+        QVERIFY2(marks.first().startsWith(QLatin1String("1 id 1 may have restarted: silent ")),
+                 qPrintable(marks.first()));
+        QVERIFY2(marks.first().contains(QLatin1String("; zeroed motor1; ")),
+                 qPrintable(marks.first()));
+        QVERIFY2(marks.first().contains(QLatin1String("; moving motor1; ")),
+                 qPrintable(marks.first()));
     }
 
     // Motor 1 stands away from 0, a long single move of motor 2 is followed, the power goes off:

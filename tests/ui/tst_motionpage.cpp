@@ -9,6 +9,7 @@
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
+#include "widgets/docks/machinestrip.h"
 #include "widgets/docks/messageview.h"
 #include "widgets/docks/statusdock.h"
 #include "widgets/fields/led.h"
@@ -325,6 +326,29 @@ private Q_SLOTS:
         QVERIFY2(said.contains(QStringLiteral("Home: sent")), qPrintable(said.join('|')));
         QVERIFY(!said.join('|').contains(QLatin1String("Home: done")));
         QVERIFY(said.last().contains(QLatin1String("not referenced")));
+    }
+
+    // After a possible restart the reference is not known: the strip says so, as the jog panel
+    // and the status dock do, and does not guess "not referenced".
+    void aReferenceNotKnownIsSaidAlikeEverywhere()
+    {
+        connectSim();
+        ReferenceTracker *references = session->motion()->references();
+        references->setReason(1, ReferenceTracker::Reason::Homed);
+        EmergencyStop estop(session.get());
+        MachineStrip strip(session.get(), &estop);
+        StatusDock dock(session.get());
+        MotionPage page(session.get());
+        QTRY_COMPARE(strip.referenceLabel(1)->text(), QStringLiteral("referenced"));
+        references->setReason(1, ReferenceTracker::Reason::Silent);
+        QTRY_COMPARE(strip.referenceLabel(1)->text(), QStringLiteral("reference not known"));
+        QVERIFY(dock.referenceText(1).startsWith(QLatin1String("reference not known")));
+        QVERIFY(page.panel(1)->referenceText().startsWith(QLatin1String("reference not known")));
+        QVERIFY(
+            strip.referenceLabel(1)->toolTip().startsWith(QLatin1String("reference not known")));
+        // What is known is still said as before.
+        references->setReason(1, ReferenceTracker::Reason::Restarted);
+        QTRY_COMPARE(strip.referenceLabel(1)->text(), QStringLiteral("not referenced"));
     }
 
     void aStopDuringASingleMoveSaysWhereItStopped()

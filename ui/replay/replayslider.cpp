@@ -89,6 +89,7 @@ QColor ReplaySlider::colorOf(ReplayEvent::Kind kind)
     case ReplayEvent::Kind::LinkUp:
     case ReplayEvent::Kind::LinkDown:
     case ReplayEvent::Kind::Restart:
+    case ReplayEvent::Kind::PossibleRestart:
         return QColor(0x80, 0x40, 0xa0); // purple
     case ReplayEvent::Kind::User:
         break;

@@ -310,10 +310,15 @@ void MachineStrip::refresh()
             break;
         }
         v.motion->setAccessibleName(tr("Motor %1: %2").arg(m + 1).arg(v.motion->text()));
+        // Not known after a possible restart: said as unknown, as the status dock says it.
         const bool referenced = references->isReferenced(m + 1);
-        v.reference->setText(referenced ? tr("referenced") : tr("not referenced"));
+        const bool known = references->isKnown(m + 1);
+        v.reference->setText(referenced
+                                 ? tr("referenced")
+                                 : (known ? tr("not referenced") : tr("reference not known")));
         v.reference->setToolTip(references->text(m + 1));
-        setTone(v.reference, referenced ? StateTone::Good : StateTone::Warning);
+        setTone(v.reference,
+                referenced ? StateTone::Good : (known ? StateTone::Warning : StateTone::Unknown));
         v.position->setAccessibleName(
             tr("Motor %1 position: %2").arg(m + 1).arg(v.position->text()));
     }
