@@ -47,7 +47,9 @@ done
 for dir in "${!allowed[@]}"; do
     [[ -d $dir ]] || { echo "check_layers: no folder $dir"; bad=1; continue; }
     while IFS=: read -r file line text; do
-        layer=$(sed -E 's/.*#include "([a-z0-9_]+)\/.*/\1/' <<<"$text")
+        # bash's own regex: a subprocess per include line made the check take seconds
+        [[ $text =~ \#include\ \"([a-z0-9_]+)/ ]] || continue
+        layer=${BASH_REMATCH[1]}
         [[ "core/$layer" == "$dir" ]] && continue
         case " ${allowed[$dir]} " in *" $layer "*) continue ;; esac
         # ui/ has folders of its own (pages/, widgets/, dialogs/, help/)
@@ -67,22 +69,21 @@ while IFS= read -r hit; do
     bad=1
 done < <(grep -rnE '^#include "(bus|poll)/' app ui --include='*.cpp' --include='*.h' | grep -v '^app/bench/')
 # Floors inside ui/ and rooms inside core/sim: a file includes its own floor and those below.
-floor_rank() { # floor_rank FLOOR-LIST NAME: the place of NAME in the list, or nothing
-    local i=0 f
-    for f in $1; do
-        [[ $f == "$2" ]] && { echo $i; return; }
+check_floors() { # check_floors DIR "FLOORS low to high" PREFIX (what includes of DIR start with)
+    local dir=$1 floors=$2 prefix=$3 floor own target file line text rank i=0
+    local -A ranks=()
+    for floor in $floors; do
+        ranks[$floor]=$i
         i=$((i + 1))
     done
-}
-check_floors() { # check_floors DIR "FLOORS low to high" PREFIX (what includes of DIR start with)
-    local dir=$1 floors=$2 prefix=$3 floor own target file line text
+    local pattern="#include \"${prefix}([a-z0-9_]+)/"
     for floor in $floors; do
         [[ -d $dir/$floor ]] || { echo "check_layers: no folder $dir/$floor"; bad=1; continue; }
-        own=$(floor_rank "$floors" "$floor")
+        own=${ranks[$floor]}
         while IFS=: read -r file line text; do
-            target=$(sed -E "s|.*#include \"${prefix}([a-z0-9_]+)/.*|\1|" <<<"$text")
-            local rank
-            rank=$(floor_rank "$floors" "$target")
+            [[ $text =~ $pattern ]] || continue
+            target=${BASH_REMATCH[1]}
+            rank=${ranks[$target]-}
             [[ -z $rank || $rank -le $own ]] && continue
             echo "$file:$line: $dir/$floor may not include $target/, a floor above it ($text)"
             bad=1
@@ -92,7 +93,7 @@ check_floors() { # check_floors DIR "FLOORS low to high" PREFIX (what includes o
     local sub
     for sub in "$dir"/*/; do
         sub=$(basename "$sub")
-        [[ -n $(floor_rank "$floors" "$sub") ]] || { echo "check_layers: $dir/$sub is on no floor"; bad=1; }
+        [[ -n ${ranks[$sub]+x} ]] || { echo "check_layers: $dir/$sub is on no floor"; bad=1; }
     done
 }
 check_floors ui "base help widgets dialogs pages replay window" ""
