@@ -87,8 +87,9 @@ void CtlRunner::printEnvelope(int code)
     errors << m_liveErrors; // said on standard error as they came
     // A stream's last line is one line too, so a script reading line by line reads it whole.
     QTextStream(stdout) << QString::fromUtf8(
-        QJsonDocument(envelope(code, m_buffer, errors, m_result))
-            .toJson(isStreaming() ? QJsonDocument::Compact : QJsonDocument::Indented))
+                               QJsonDocument(envelope(code, m_buffer, errors, m_result))
+                                   .toJson(isStreaming() ? QJsonDocument::Compact
+                                                         : QJsonDocument::Indented))
                         << (isStreaming() ? "\n" : "");
     m_buffer.clear();
     m_errBuffer.clear();

@@ -85,7 +85,9 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          QStringLiteral("2")},
         {QStringLiteral("map"), tr("Register map file to use instead of the built-in one."),
          tr("file")},
-        {QStringLiteral("json"), tr("Machine-readable JSON output.")},
+        {QStringLiteral("json"),
+         tr("Machine-readable JSON: one object, exit, result and errors, for every command and "
+            "usage error (monitor, listen: its last line).")},
         {QStringLiteral("verbose"), tr("Show the Modbus traffic on standard error.")},
         {QStringLiteral("yes"), tr("Do not ask: needed for commands that destroy settings.")},
         {QStringLiteral("save-to-flash"), tr("After writing, save the parameters to flash.")},
