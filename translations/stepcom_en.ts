@@ -2140,10 +2140,6 @@
         <translation>file</translation>
     </message>
     <message>
-        <source>Machine-readable JSON output.</source>
-        <translation>Machine-readable JSON output.</translation>
-    </message>
-    <message>
         <source>Show the Modbus traffic on standard error.</source>
         <translation>Show the Modbus traffic on standard error.</translation>
     </message>
@@ -2442,6 +2438,10 @@
     <message>
         <source>--seconds: &apos;%1&apos; is not a positive number of seconds</source>
         <translation>--seconds: &apos;%1&apos; is not a positive number of seconds</translation>
+    </message>
+    <message>
+        <source>Machine-readable JSON: one object, exit, result and errors, for every command and usage error (monitor, listen: its last line).</source>
+        <translation>Machine-readable JSON: one object, exit, result and errors, for every command and usage error (monitor, listen: its last line).</translation>
     </message>
 </context>
 <context>

@@ -2129,10 +2129,6 @@
         <translation>文件</translation>
     </message>
     <message>
-        <source>Machine-readable JSON output.</source>
-        <translation>以机器可读的 JSON 格式输出。</translation>
-    </message>
-    <message>
         <source>Show the Modbus traffic on standard error.</source>
         <translation>在标准错误输出上显示 Modbus 通信报文。</translation>
     </message>
@@ -2431,6 +2427,10 @@
     <message>
         <source>--seconds: &apos;%1&apos; is not a positive number of seconds</source>
         <translation>--seconds：“%1”不是正的秒数</translation>
+    </message>
+    <message>
+        <source>Machine-readable JSON: one object, exit, result and errors, for every command and usage error (monitor, listen: its last line).</source>
+        <translation>机器可读的 JSON：每个命令和用法错误都输出一个对象，含 exit、result 和 errors（monitor、listen：最后一行）。</translation>
     </message>
 </context>
 <context>

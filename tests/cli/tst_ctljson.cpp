@@ -46,8 +46,8 @@ class TestCtlJson : public QObject
     // The usages of the help's "Commands:" list, each a row of the table below.
     QStringList usages() const
     {
-        const ProgramRun r = ctl({QStringLiteral("--lang"), QStringLiteral("en"),
-                                  QStringLiteral("--help")});
+        const ProgramRun r =
+            ctl({QStringLiteral("--lang"), QStringLiteral("en"), QStringLiteral("--help")});
         QStringList out;
         static const QRegularExpression row(QStringLiteral("^  (\\S.*?)(  +\\S|$)"));
         const QString help = r.out.section(QStringLiteral("Commands:\n"), 1);
@@ -101,63 +101,64 @@ class TestCtlJson : public QObject
         add("read dead", "read [KEY...]", dead + QStringList{"read"}, 1, "cannot connect", fails);
         // The no-answer message says the timeout asked for, on the built-in simulator too.
         add("read silent id", "read [KEY...]",
-               {"--sim", "--timeout", "200", "--retries", "0", "--id", "5", "read", "device.id"},
-               1, "no answer within 200 ms", fails);
-        add("write", "write KEY=VALUE...", {"--sim", "write", "motor1.speed=250"}, 0,
-               "written", ok);
+            {"--sim", "--timeout", "200", "--retries", "0", "--id", "5", "read", "device.id"}, 1,
+            "no answer within 200 ms", fails);
+        add("write", "write KEY=VALUE...", {"--sim", "write", "motor1.speed=250"}, 0, "written",
+            ok);
         add("write bad", "write KEY=VALUE...", {"--sim", "write", "motor1.speed=x"}, 2,
-               "motor1.speed", fails);
+            "motor1.speed", fails);
         add("command", "command NAME", {"--sim", "command", "output1_on"}, 0, "command", ok);
         add("command unknown", "command NAME", {"--sim", "command", "nope"}, 2, "nope", fails);
         add("command --wait", "command NAME --wait",
-               {"--tcp", "@TCP", "command", "motor1.move", "--wait"}, 0, "outcome", ok);
-        add("command --wait estop", "command NAME --wait",
-               {"--sim", "command", "estop", "--wait"}, 2, "estop", fails);
-        add("move", "move MOTOR --by D|--to X", {"--tcp", "@TCP", "move", "motor2", "--by", "1"},
-               0, "arrived", ok);
+            {"--tcp", "@TCP", "command", "motor1.move", "--wait"}, 0, "outcome", ok);
+        add("command --wait estop", "command NAME --wait", {"--sim", "command", "estop", "--wait"},
+            2, "estop", fails);
+        add("move", "move MOTOR --by D|--to X", {"--tcp", "@TCP", "move", "motor2", "--by", "1"}, 0,
+            "arrived", ok);
         add("move no motor", "move MOTOR --by D|--to X", {"--sim", "move", "motor9", "--by", "1"},
-               2, "motor 9", fails);
+            2, "motor 9", fails);
         add("monitor", "monitor", {"--sim", "monitor", "--count", "2"}, 0, "samples", ok);
         add("monitor ids", "monitor", {"--sim", "--id", "1,2", "monitor", "--count", "1"}, 0,
-               "failed", ok);
+            "failed", ok);
         add("monitor dead", "monitor", dead + QStringList{"monitor", "--count", "1"}, 1,
-               "cannot connect", fails);
+            "cannot connect", fails);
         add("listen", "listen", {"--port", "@PTY", "listen", "--seconds", "1"}, 0, "frames", ok);
         add("listen no port", "listen", {"--port", "@DIR/no-tty", "listen", "--seconds", "1"}, 1,
-               "no-tty", fails);
+            "no-tty", fails);
         add("dump", "dump FILE|FOLDER/", {"--sim", "dump", "@DIR/d.json"}, 0, "file", ok);
         add("dump dead", "dump FILE|FOLDER/", dead + QStringList{"dump", "@DIR/x.json"}, 1,
-               "cannot connect", fails);
+            "cannot connect", fails);
         add("diff", "diff FILE", {"--sim", "diff", profile}, 1, "differences", ok);
-        add("diff dead", "diff FILE", dead + QStringList{"diff", profile}, 3, "cannot connect", fails);
+        add("diff dead", "diff FILE", dead + QStringList{"diff", profile}, 3, "cannot connect",
+            fails);
         add("diff files", "diff A.json B.json", {"diff", profile, profile}, 0, "same", ok);
-        add("diff files missing", "diff A.json B.json", {"diff", missing, profile}, 2,
-               "nope.json", fails);
+        add("diff files missing", "diff A.json B.json", {"diff", missing, profile}, 2, "nope.json",
+            fails);
         add("apply", "apply FILE", {"--sim", "--yes", "--no-backup", "apply", profile}, 0,
-               "to_write", ok);
-        add("apply missing", "apply FILE", {"--sim", "--yes", "apply", missing}, 2,
-               "nope.json", fails);
+            "to_write", ok);
+        add("apply missing", "apply FILE", {"--sim", "--yes", "apply", missing}, 2, "nope.json",
+            fails);
         add("assign-id", "assign-id --to N", {"--sim", "assign-id", "--to", "3"}, 0, "to", ok);
         add("assign-id same", "assign-id --to N", {"--sim", "assign-id", "--to", "1"}, 2,
-               "already has id 1", fails);
+            "already has id 1", fails);
         add("scan", "scan", {"--sim", "scan", "--ids", "1-2", "--bauds", "9600"}, 0, "[1]", ok);
         add("scan dead", "scan", {"--rtu-tcp", "127.0.0.1:1", "scan", "--ids", "1-2"}, 3,
-               "scan stopped", fails);
+            "scan stopped", fails);
         add("ports", "ports", {"ports"}, 0, "[]", ok);
         add("ports argument", "ports", {"ports", "extra"}, 2, "extra", fails);
         add("report", "report FILE.pdf|.html", {"report", "--from", profile, "@DIR/r.html"}, 0,
-               "file", ok);
-        add("report missing", "report FILE.pdf|.html",
-               {"report", "--from", missing, "@DIR/r.html"}, 2, "nope.json", fails);
-        add("replay events", "replay LOG|BUNDLE.zip",
-               {"replay", "@DIR/session.log", "--events"}, 0, "[1]", ok);
-        add("replay at", "replay LOG|BUNDLE.zip",
-               {"replay", "@DIR/session.log", "--at", "99999"}, 0, "devices", ok);
+            "file", ok);
+        add("report missing", "report FILE.pdf|.html", {"report", "--from", missing, "@DIR/r.html"},
+            2, "nope.json", fails);
+        add("replay events", "replay LOG|BUNDLE.zip", {"replay", "@DIR/session.log", "--events"}, 0,
+            "[1]", ok);
+        add("replay at", "replay LOG|BUNDLE.zip", {"replay", "@DIR/session.log", "--at", "99999"},
+            0, "devices", ok);
         add("replay missing", "replay LOG|BUNDLE.zip", {"replay", missing, "--events"}, 2,
-               "nope.json", fails);
+            "nope.json", fails);
         add("bundle", "bundle OUT.zip", {"bundle", "@DIR/support.zip"}, 0, "contents", ok);
-        add("bundle no profile", "bundle OUT.zip",
-               {"bundle", "@DIR/s2.zip", "--profile", missing}, 2, "nope.json", fails);
+        add("bundle no profile", "bundle OUT.zip", {"bundle", "@DIR/s2.zip", "--profile", missing},
+            2, "nope.json", fails);
 
         // Before any command is chosen.
         add("unknown option", "", {"--frobnicate", "read"}, 2, "frobnicate", fails);
@@ -223,12 +224,11 @@ private Q_SLOTS:
         QFETCH(QString, expect);
         QFETCH(bool, fails);
         const ProgramRun r = ctl(QStringList{QStringLiteral("--json")} + expand(args));
-        QVERIFY2(r.exitCode == code, qPrintable(QStringLiteral("exit %1: %2%3")
-                                                    .arg(r.exitCode)
-                                                    .arg(r.out, r.err)));
+        QVERIFY2(r.exitCode == code,
+                 qPrintable(QStringLiteral("exit %1: %2%3").arg(r.exitCode).arg(r.out, r.err)));
         // monitor and listen: a JSON object a line, the envelope the last; else one object.
-        const bool streams = args.contains(QStringLiteral("monitor")) ||
-                             args.contains(QStringLiteral("listen"));
+        const bool streams =
+            args.contains(QStringLiteral("monitor")) || args.contains(QStringLiteral("listen"));
         QJsonObject envelope;
         if (streams) {
             const QStringList lines = r.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
