@@ -1,4 +1,5 @@
 #include "ctloptions.h"
+#include "ctlrunner.h"
 
 #include "session/idlist.h"
 
@@ -313,8 +314,7 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         return {};
     }
     if (positional.isEmpty())
-        return tr("no command given (params, read, write, command, move, monitor, dump, diff, "
-                  "apply, assign-id, scan, ports, report, replay, bundle)");
+        return tr("no command given (%1)").arg(CtlRunner::commandNames());
     o.command = positional.first();
     o.arguments = positional.mid(1);
     // --to is a position for move and a device id for assign-id.

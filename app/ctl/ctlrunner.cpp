@@ -198,13 +198,18 @@ QStringList CtlRunner::condensed(const QStringList &errors)
     return out;
 }
 
-QString CtlRunner::unknownCommandMessage(const QString &name)
+QString CtlRunner::commandNames()
 {
     QStringList names;
     for (const CtlCommand &c : commands())
         names << QLatin1String(c.name);
     names.removeDuplicates(); // a command may have several usages (diff)
-    return tr("unknown command '%1' (%2)").arg(name, Translators::joinList(names));
+    return Translators::joinList(names);
+}
+
+QString CtlRunner::unknownCommandMessage(const QString &name)
+{
+    return tr("unknown command '%1' (%2)").arg(name, commandNames());
 }
 
 void CtlRunner::start()

@@ -54,6 +54,8 @@ public:
     static QString commandHelp(const QString &name);
     // The message for a command that is not in the table.
     static QString unknownCommandMessage(const QString &name);
+    // Every command's name, once, in the table's order: "params, read, ... and bundle".
+    static QString commandNames();
     // A run that ends before a command is chosen (a bad option, no command, a bad --id list):
     // each message on standard error and, with --json, the envelope with them on standard
     // output; returns `code`.

@@ -162,7 +162,7 @@ class TestCtlJson : public QObject
 
         // Before any command is chosen.
         add("unknown option", "", {"--frobnicate", "read"}, 2, "frobnicate", fails);
-        add("no command", "", {"--sim"}, 2, "no command given", fails);
+        add("no command", "", {"--sim"}, 2, "monitor, listen", fails);
         add("bad id list", "", {"--sim", "--id", "1,x", "read"}, 2, "--id", fails);
         add("unknown command", "", {"--sim", "frobnicate"}, 2, "frobnicate", fails);
         add("unknown language", "", {"--lang", "xx", "--sim", "read"}, 2, "xx", fails);
