@@ -2140,10 +2140,6 @@
         <translation>file</translation>
     </message>
     <message>
-        <source>Machine-readable JSON output.</source>
-        <translation>Machine-readable JSON output.</translation>
-    </message>
-    <message>
         <source>Show the Modbus traffic on standard error.</source>
         <translation>Show the Modbus traffic on standard error.</translation>
     </message>
@@ -2404,10 +2400,6 @@
         <translation>Start the built-in simulator from the factory again (id 1, 9600 baud): forget what it saved to flash. Alone, or before a --sim command.</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, ports, report, replay, bundle)</source>
-        <translation>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, ports, report, replay, bundle)</translation>
-    </message>
-    <message>
         <source>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</source>
         <translation>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</translation>
     </message>
@@ -2442,6 +2434,14 @@
     <message>
         <source>--seconds: &apos;%1&apos; is not a positive number of seconds</source>
         <translation>--seconds: &apos;%1&apos; is not a positive number of seconds</translation>
+    </message>
+    <message>
+        <source>Machine-readable JSON: one object, exit, result and errors, for every command and usage error (monitor, listen: its last line).</source>
+        <translation>Machine-readable JSON: one object, exit, result and errors, for every command and usage error (monitor, listen: its last line).</translation>
+    </message>
+    <message>
+        <source>no command given (%1)</source>
+        <translation>no command given (%1)</translation>
     </message>
 </context>
 <context>

@@ -2129,10 +2129,6 @@
         <translation>文件</translation>
     </message>
     <message>
-        <source>Machine-readable JSON output.</source>
-        <translation>以机器可读的 JSON 格式输出。</translation>
-    </message>
-    <message>
         <source>Show the Modbus traffic on standard error.</source>
         <translation>在标准错误输出上显示 Modbus 通信报文。</translation>
     </message>
@@ -2393,10 +2389,6 @@
         <translation>让内置仿真器恢复出厂状态（ID 1，9600 波特）：清除它保存到闪存的内容。可单独使用，或用在 --sim 命令之前。</translation>
     </message>
     <message>
-        <source>no command given (params, read, write, command, move, monitor, dump, diff, apply, assign-id, scan, ports, report, replay, bundle)</source>
-        <translation>未给出命令（params、read、write、command、move、monitor、dump、diff、apply、assign-id、scan、ports、report、replay、bundle）</translation>
-    </message>
-    <message>
         <source>--baud: &apos;%1&apos; is not 4800, 9600, 19200 or 38400</source>
         <translation>--baud：“%1”不是 4800、9600、19200 或 38400</translation>
     </message>
@@ -2431,6 +2423,14 @@
     <message>
         <source>--seconds: &apos;%1&apos; is not a positive number of seconds</source>
         <translation>--seconds：“%1”不是正的秒数</translation>
+    </message>
+    <message>
+        <source>Machine-readable JSON: one object, exit, result and errors, for every command and usage error (monitor, listen: its last line).</source>
+        <translation>机器可读的 JSON：每个命令和用法错误都输出一个对象，含 exit、result 和 errors（monitor、listen：最后一行）。</translation>
+    </message>
+    <message>
+        <source>no command given (%1)</source>
+        <translation>未给出命令（%1）</translation>
     </message>
 </context>
 <context>

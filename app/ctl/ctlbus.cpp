@@ -115,30 +115,6 @@ int CtlRunner::worstCode() const
     return m_idCodes.isEmpty() ? int(Ok) : *std::max_element(m_idCodes.begin(), m_idCodes.end());
 }
 
-void CtlRunner::printMulti()
-{
-    QTextStream out(stdout);
-    if (m_options.json) {
-        QJsonObject all;
-        for (qsizetype i = 0; i < m_idOutputs.size(); ++i)
-            all.insert(
-                QString::number(m_options.ids.at(i)),
-                envelope(m_idCodes.at(i), m_idOutputs.at(i), m_idErrors.at(i), m_idResults.at(i)));
-        out << QString::fromUtf8(QJsonDocument(all).toJson(QJsonDocument::Indented));
-    } else {
-        for (qsizetype i = 0; i < m_idOutputs.size(); ++i) {
-            out << tr("== device id %1 ==").arg(m_options.ids.at(i)) << Qt::endl;
-            const QString text = m_idOutputs.at(i);
-            out << text;
-            if (!text.isEmpty() && !text.endsWith(QLatin1Char('\n')))
-                out << Qt::endl;
-        }
-    }
-    out.flush();
-    m_out.setDevice(nullptr);
-    m_err.setDevice(nullptr);
-}
-
 void CtlRunner::runAssignId()
 {
     const int from = m_options.link.deviceId;
@@ -171,6 +147,12 @@ void CtlRunner::runAssignId()
                          text);
                     return;
                 }
+                m_result =
+                    QJsonObject{{QStringLiteral("from"), m_options.link.deviceId},
+                                {QStringLiteral("to"), to},
+                                {QStringLiteral("saved"), m_options.saveToFlash},
+                                {QStringLiteral("next"),
+                                 CtlLinkAdvice::nextOptions(m_options, to, m_options.link.baud)}};
                 m_out << text << Qt::endl;
                 if (!m_options.saveToFlash)
                     m_out << tr("id %1 lasts until the power is switched off, then the "
@@ -218,63 +200,9 @@ void CtlRunner::runScan()
         plan.base.portName = link->portName;
         m_scanSim = std::move(sim);
     }
-    auto *scan = new CtlScan(plan, m_map, m_options.json, this);
+    auto *scan = new CtlScan(plan, m_map, m_options.json, m_out, m_err, this);
     connect(scan, &CtlScan::finished, this, &CtlRunner::finish);
     scan->start();
-}
-
-} // namespace stepcom
-
-namespace stepcom {
-
-bool CtlRunner::isEnveloped() const
-{
-    static const QStringList names{QStringLiteral("write"),  QStringLiteral("command"),
-                                   QStringLiteral("diff"),   QStringLiteral("apply"),
-                                   QStringLiteral("dump"),   QStringLiteral("assign-id"),
-                                   QStringLiteral("report"), QStringLiteral("bundle")};
-    // command --wait has JSON of its own.
-    return m_options.json && m_chosen && !m_chosen->when &&
-           names.contains(QLatin1String(m_chosen->name));
-}
-
-QJsonObject CtlRunner::envelope(int code, const QString &out, const QStringList &errors,
-                                const QJsonObject &result) const
-{
-    QJsonObject one{{QStringLiteral("exit"), code},
-                    {QStringLiteral("errors"), QJsonArray::fromStringList(errors)}};
-    // A command with JSON of its own printed it: that is the result.
-    const QJsonDocument doc = QJsonDocument::fromJson(out.toUtf8());
-    if (result.isEmpty() && doc.isObject()) {
-        one.insert(QStringLiteral("result"), doc.object());
-    } else if (result.isEmpty() && doc.isArray()) {
-        one.insert(QStringLiteral("result"), doc.array());
-    } else {
-        one.insert(QStringLiteral("result"), result);
-        const QStringList lines = out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
-        if (!lines.isEmpty())
-            one.insert(QStringLiteral("messages"), QJsonArray::fromStringList(lines));
-    }
-    return one;
-}
-
-void CtlRunner::printEnvelope(int code)
-{
-    m_out.flush();
-    m_err.flush();
-    const QString prefix = QStringLiteral("stepcomctl: ");
-    QStringList errors;
-    QTextStream err(stderr);
-    for (QString line : m_errBuffer.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
-        err << line << Qt::endl; // still said where a person reads it
-        if (line.startsWith(prefix))
-            line = line.mid(prefix.size());
-        errors << line;
-    }
-    QTextStream(stdout) << QString::fromUtf8(
-        QJsonDocument(envelope(code, m_buffer, errors, m_result)).toJson(QJsonDocument::Indented));
-    m_buffer.clear();
-    m_errBuffer.clear();
 }
 
 } // namespace stepcom

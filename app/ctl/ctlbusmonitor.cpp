@@ -24,7 +24,7 @@ CtlBusMonitor::CtlBusMonitor(DeviceSession *session, const QList<int> &ids, int 
     m_timer.setSingleShot(true);
     connect(&m_timer, &QTimer::timeout, this, &CtlBusMonitor::turn);
     connect(m_session, &DeviceSession::linkLost, this, [this](const QString &reason) {
-        m_err << QStringLiteral("stepcomctl: ") << tr("link lost: %1").arg(reason) << Qt::endl;
+        sayError(tr("link lost: %1").arg(reason));
         end(1);
     });
     // The session watches each device's reads for a restart; said per device as `monitor`
@@ -38,6 +38,7 @@ void CtlBusMonitor::event(const QString &name, const QString &text, const QStrin
 {
     if (m_ended)
         return;
+    ++m_events;
     if (!m_json) {
         m_err << QStringLiteral("stepcomctl: ") << text << Qt::endl;
         return;
@@ -103,8 +104,7 @@ void CtlBusMonitor::onRead(quint64 generation, int id, const ReadOutcome &outcom
     } else {
         // A device that does not answer is no reason to stop watching the others.
         ++m_failed[id];
-        m_err << QStringLiteral("stepcomctl: ")
-              << tr("id %1: %2").arg(id).arg(outcome.errors.join(QLatin1String("; "))) << Qt::endl;
+        sayError(tr("id %1: %2").arg(id).arg(outcome.errors.join(QLatin1String("; "))));
     }
     if (countReached()) {
         end(m_failed.isEmpty() ? 0 : 1);
@@ -122,6 +122,25 @@ bool CtlBusMonitor::countReached() const
         return false;
     return std::all_of(m_ids.cbegin(), m_ids.cend(),
                        [this](int id) { return m_samples.value(id) >= m_count; });
+}
+
+void CtlBusMonitor::sayError(const QString &text)
+{
+    m_err << QStringLiteral("stepcomctl: ") << text << Qt::endl;
+    m_errors << text;
+}
+
+QJsonObject CtlBusMonitor::summary() const
+{
+    QJsonObject samples;
+    QJsonObject failed;
+    for (const int id : m_ids) {
+        samples.insert(QString::number(id), m_samples.value(id) - m_failed.value(id));
+        failed.insert(QString::number(id), m_failed.value(id));
+    }
+    return {{QStringLiteral("samples"), samples},
+            {QStringLiteral("failed"), failed},
+            {QStringLiteral("events"), m_events}};
 }
 
 void CtlBusMonitor::end(int exitCode)

@@ -2,6 +2,7 @@
 
 #include <QElapsedTimer>
 #include <QHash>
+#include <QJsonObject>
 #include <QList>
 #include <QObject>
 #include <QTextStream>
@@ -28,6 +29,10 @@ public:
     CtlBusMonitor(DeviceSession *session, const QList<int> &ids, int count, int intervalMs,
                   bool json, QObject *parent = nullptr);
     void start();
+    // --json's last line: samples printed and reads failed per id, events; the errors said
+    // meanwhile.
+    QJsonObject summary() const;
+    QStringList errors() const { return m_errors; }
     // One sample's line for `id` from the values read.
     QString sampleLine(int id, qint64 tMs, const QHash<QString, qint64> &values) const;
 
@@ -39,6 +44,8 @@ private:
     void onRead(quint64 generation, int id, const ReadOutcome &outcome);
     bool countReached() const;
     void end(int exitCode);
+    // `text` on standard error, kept among errors().
+    void sayError(const QString &text);
     // One event: `text` on stderr, or with --json CtlMonitor::eventLine().
     void event(const QString &name, const QString &text, const QString &fields);
 
@@ -53,6 +60,8 @@ private:
     QHash<int, int> m_samples; // reads per device, good or not
     QHash<int, int> m_failed;  // of those, failed
     quint64 m_generation = 0;  // an answer after end() is dropped
+    int m_events = 0;
+    QStringList m_errors;
     bool m_ended = false;
     QElapsedTimer m_clock;
     QElapsedTimer m_round; // since the start of the current round

@@ -34,21 +34,19 @@ void CtlListen::start()
     m_listener = new LineListener(&m_map, this);
     connect(m_listener, &LineListener::heard, this, &CtlListen::onHeard);
     connect(m_listener, &LineListener::lost, this, [this](const QString &reason) {
-        m_err << tr("stepcomctl: the port %1 was lost: %2").arg(m_line.portName, reason)
-              << Qt::endl;
+        sayError(tr("stepcomctl: the port %1 was lost: %2").arg(m_line.portName, reason));
         end(CtlRunner::DeviceError);
     });
     QString error;
     if (!m_listener->open(m_line, &error)) {
-        m_err << tr("stepcomctl: cannot open %1 to listen: %2").arg(m_line.portName, error)
-              << Qt::endl;
+        sayError(tr("stepcomctl: cannot open %1 to listen: %2").arg(m_line.portName, error));
         end(CtlRunner::DeviceError);
         return;
     }
     if (!m_logFile.isEmpty()) {
         m_log = std::make_unique<ListenLog>(m_map, m_line, QDateTime::currentDateTime());
         if (!m_log->open(m_logFile, &error)) {
-            m_err << QStringLiteral("stepcomctl: ") << error << Qt::endl;
+            sayError(QStringLiteral("stepcomctl: ") + error);
             end(CtlRunner::UsageError);
             return;
         }
@@ -117,6 +115,44 @@ QString CtlListen::summary() const
     return text;
 }
 
+void CtlListen::sayError(const QString &text)
+{
+    m_err << text << Qt::endl;
+    // The JSON's errors say what went wrong, as every command's do, without the program's name.
+    const QString prefix = QStringLiteral("stepcomctl: ");
+    m_errors << (text.startsWith(prefix) ? text.mid(prefix.size()) : text);
+}
+
+QJsonObject CtlListen::summaryJson() const
+{
+    if (!m_listening)
+        return {};
+    const FrameFinder::Stats &f = m_listener->finder().stats();
+    const ListenDecoder &d = m_listener->decoder();
+    QJsonObject devices;
+    const auto &stats = d.deviceStats();
+    for (auto it = stats.cbegin(); it != stats.cend(); ++it) {
+        const ListenDecoder::DeviceStats &s = it.value();
+        const auto ms = [&s](double v) { return s.answered > 0 ? QJsonValue(v) : QJsonValue(); };
+        devices.insert(QString::number(it.key()),
+                       QJsonObject{{QStringLiteral("requests"), s.requests},
+                                   {QStringLiteral("answered"), s.answered},
+                                   {QStringLiteral("unanswered"), s.unanswered},
+                                   {QStringLiteral("answer_ms_min"), ms(s.answerMsMin)},
+                                   {QStringLiteral("answer_ms_max"), ms(s.answerMsMax)},
+                                   {QStringLiteral("answer_ms_average"), ms(s.answerMsAverage())}});
+    }
+    return {{QStringLiteral("frames"), double(f.frames)},
+            {QStringLiteral("bytes"), double(f.bytes)},
+            {QStringLiteral("pairs"), d.pairs()},
+            {QStringLiteral("unanswered"), m_unanswered},
+            {QStringLiteral("exceptions"), m_exceptions},
+            {QStringLiteral("crc_errors"), double(f.damaged)},
+            {QStringLiteral("stray_bytes"), double(f.strayBytes)},
+            {QStringLiteral("stray_answers"), d.strayAnswers()},
+            {QStringLiteral("devices"), devices}};
+}
+
 void CtlListen::end(int exitCode)
 {
     if (m_ended)
@@ -146,7 +182,11 @@ void CtlRunner::runListen()
     }
     auto *listen = new CtlListen(m_map, m_options.link, m_options.json, m_options.seconds,
                                  m_options.logFile, this);
-    connect(listen, &CtlListen::finished, this, &CtlRunner::finish);
+    connect(listen, &CtlListen::finished, this, [this, listen](int code) {
+        m_result = listen->summaryJson();
+        m_liveErrors = listen->errors();
+        finish(code);
+    });
     listen->start();
 }
 

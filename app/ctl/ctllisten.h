@@ -3,6 +3,7 @@
 #include "session/devicesession.h" // LinkSettings
 
 #include <QElapsedTimer>
+#include <QJsonObject>
 #include <QObject>
 #include <QTextStream>
 
@@ -29,6 +30,10 @@ public:
               const QString &logFile, QObject *parent = nullptr);
     ~CtlListen() override;
     void start();
+    // --json's last line: what summary() says in words (nothing heard when the port did not
+    // open); the errors said meanwhile.
+    QJsonObject summaryJson() const;
+    QStringList errors() const { return m_errors; }
 
 Q_SIGNALS:
     // 0 after --seconds or a signal; 1 when the port could not be opened or was lost; 2 when
@@ -39,6 +44,8 @@ private:
     void onHeard(const HeardEvent &event);
     void end(int exitCode);
     QString summary() const;
+    // `text` on standard error, kept among errors().
+    void sayError(const QString &text);
 
     const RegisterMap &m_map;
     LinkSettings m_line;
@@ -54,6 +61,7 @@ private:
     QTextStream m_err;
     int m_unanswered = 0;
     int m_exceptions = 0;
+    QStringList m_errors;
 };
 
 } // namespace stepcom

@@ -141,6 +141,7 @@ void CtlMonitor::event(const QString &name, const QString &text, const QString &
 {
     if (m_ended)
         return;
+    ++m_events;
     if (!m_json) {
         m_err << QStringLiteral("stepcomctl: ") << text << Qt::endl;
         return;
@@ -212,7 +213,7 @@ void CtlMonitor::onCycle(bool ok)
         return;
     if (!ok) {
         // A bad moment on the line is no reason to stop watching: say so and go on.
-        m_err << QStringLiteral("stepcomctl: ") << m_session->statusError() << Qt::endl;
+        sayError(m_session->statusError());
         return;
     }
     m_out << sampleLine(m_clock.elapsed()) << QLatin1Char('\n');
@@ -220,6 +221,17 @@ void CtlMonitor::onCycle(bool ok)
     std::fflush(stdout);
     if (++m_printed >= m_count && m_count > 0)
         end(0);
+}
+
+void CtlMonitor::sayError(const QString &text)
+{
+    m_err << QStringLiteral("stepcomctl: ") << text << Qt::endl;
+    m_errors << text;
+}
+
+QJsonObject CtlMonitor::summary() const
+{
+    return {{QStringLiteral("samples"), m_printed}, {QStringLiteral("events"), m_events}};
 }
 
 void CtlMonitor::end(int exitCode)
@@ -231,8 +243,7 @@ void CtlMonitor::end(int exitCode)
     m_session->stopStatus();
     if (exitCode == 0 && m_printed == 0) {
         // Stopped before a single sample: that is no successful run.
-        m_err << QStringLiteral("stepcomctl: ")
-              << tr("no sample was read: every poll failed (see the errors above)") << Qt::endl;
+        sayError(tr("no sample was read: every poll failed (see the errors above)"));
         exitCode = 1;
     }
     m_out.flush();

@@ -3,6 +3,7 @@
 #include "session/restartwatch.h"
 
 #include <QElapsedTimer>
+#include <QJsonObject>
 #include <QList>
 #include <QObject>
 #include <QTextStream>
@@ -32,6 +33,9 @@ public:
     CtlMonitor(DeviceSession *session, int count, int intervalMs, bool json,
                QObject *parent = nullptr);
     void start();
+    // --json's last line: the samples printed and the events said; the errors said meanwhile.
+    QJsonObject summary() const;
+    QStringList errors() const { return m_errors; }
     // One line for the values known now (null for what was never read).
     QString sampleLine(qint64 tMs) const;
     // The status parameters in the order the lines give them: positions, running flags, rest.
@@ -63,6 +67,8 @@ Q_SIGNALS:
 private:
     void onCycle(bool ok);
     void end(int exitCode);
+    // `text` on standard error, kept among errors().
+    void sayError(const QString &text);
     // One event: `text` on stderr, or with --json eventLine().
     void event(const QString &name, const QString &text, const QString &fields);
 
@@ -72,6 +78,8 @@ private:
     int m_count;
     bool m_json;
     int m_printed = 0;
+    int m_events = 0;
+    QStringList m_errors;
     bool m_ended = false;
     QElapsedTimer m_clock;
     QTextStream m_out;

@@ -22,13 +22,13 @@ constexpr qint64 kSilenceBeforeLostMs = 6000;
 } // namespace
 
 CtlMotionWait::CtlMotionWait(DeviceSession *session, const Parameter &command, bool json,
-                             QObject *parent)
+                             QTextStream &out, QTextStream &err, QObject *parent)
     : QObject(parent)
     , m_session(session)
     , m_command(command)
     , m_json(json)
-    , m_out(stdout)
-    , m_err(stderr)
+    , m_out(out)
+    , m_err(err)
 {
     m_timer.setSingleShot(true);
     m_timer.setInterval(kSampleMs);

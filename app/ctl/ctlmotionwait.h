@@ -25,8 +25,9 @@ class CtlMotionWait : public QObject
 {
     Q_OBJECT
 public:
-    CtlMotionWait(DeviceSession *session, const Parameter &command, bool json,
-                  QObject *parent = nullptr);
+    // What it says goes to `out` and `err`: the runner's, kept for --json's object.
+    CtlMotionWait(DeviceSession *session, const Parameter &command, bool json, QTextStream &out,
+                  QTextStream &err, QObject *parent = nullptr);
     ~CtlMotionWait() override;
     void start();
 
@@ -47,8 +48,8 @@ private:
     QTimer m_timer;
     qint64 m_answeredAtMs = 0; // the controller's last answer (epoch ms)
     bool m_done = false;
-    QTextStream m_out;
-    QTextStream m_err;
+    QTextStream &m_out;
+    QTextStream &m_err;
 };
 
 } // namespace stepcom

@@ -1,4 +1,5 @@
 #include "ctloptions.h"
+#include "ctlrunner.h"
 
 #include "session/idlist.h"
 
@@ -85,7 +86,9 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          QStringLiteral("2")},
         {QStringLiteral("map"), tr("Register map file to use instead of the built-in one."),
          tr("file")},
-        {QStringLiteral("json"), tr("Machine-readable JSON output.")},
+        {QStringLiteral("json"),
+         tr("Machine-readable JSON: one object, exit, result and errors, for every command and "
+            "usage error (monitor, listen: its last line).")},
         {QStringLiteral("verbose"), tr("Show the Modbus traffic on standard error.")},
         {QStringLiteral("yes"), tr("Do not ask: needed for commands that destroy settings.")},
         {QStringLiteral("save-to-flash"), tr("After writing, save the parameters to flash.")},
@@ -311,8 +314,7 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         return {};
     }
     if (positional.isEmpty())
-        return tr("no command given (params, read, write, command, move, monitor, dump, diff, "
-                  "apply, assign-id, scan, ports, report, replay, bundle)");
+        return tr("no command given (%1)").arg(CtlRunner::commandNames());
     o.command = positional.first();
     o.arguments = positional.mid(1);
     // --to is a position for move and a device id for assign-id.

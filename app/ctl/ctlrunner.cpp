@@ -198,13 +198,18 @@ QStringList CtlRunner::condensed(const QStringList &errors)
     return out;
 }
 
-QString CtlRunner::unknownCommandMessage(const QString &name)
+QString CtlRunner::commandNames()
 {
     QStringList names;
     for (const CtlCommand &c : commands())
         names << QLatin1String(c.name);
     names.removeDuplicates(); // a command may have several usages (diff)
-    return tr("unknown command '%1' (%2)").arg(name, Translators::joinList(names));
+    return Translators::joinList(names);
+}
+
+QString CtlRunner::unknownCommandMessage(const QString &name)
+{
+    return tr("unknown command '%1' (%2)").arg(name, commandNames());
 }
 
 void CtlRunner::start()
@@ -221,12 +226,10 @@ void CtlRunner::start()
         if (!c.when && !chosen)
             chosen = &c;
     }
+    if (isEnveloped())
+        captureOutput(); // kept for the JSON object at the end, an unknown command's too
     if (chosen) {
         m_chosen = chosen;
-        if (isEnveloped() && !isPerId()) {
-            m_out.setString(&m_buffer); // kept for the JSON object at the end
-            m_err.setString(&m_errBuffer);
-        }
         if (isPerId())
             startMulti();
         else
@@ -256,10 +259,11 @@ void CtlRunner::finish(int code)
     }
     m_finished = true;
     // The line's health and the timeout it suggests, for whoever tunes the link (monitor runs
-    // long enough to say something; other commands with --verbose).
+    // long enough to say something; other commands with --verbose). Never one of the errors.
     if (m_session && (m_options.verbose || m_options.command == QLatin1String("monitor")))
-        m_err << tr("link: %1").arg(m_session->linkStats().summary(m_session->settings().timeoutMs))
-              << Qt::endl;
+        QTextStream(stderr)
+            << tr("link: %1").arg(m_session->linkStats().summary(m_session->settings().timeoutMs))
+            << Qt::endl;
     m_out.flush();
     m_err.flush();
     if (m_session && m_session->linkState() != DeviceSession::LinkState::Disconnected)
@@ -334,6 +338,7 @@ void CtlRunner::connectThen(std::function<void()> next)
         sim->setEcho(m_options.link.echo);
         // As a real controller: silent at another id or baud, what it saved kept between runs.
         sim->setClientLink(m_options.link.deviceId, m_options.link.baud);
+        sim->setClientTiming(m_options.link); // --timeout and --retries in force here too
         sim->setFlashPath(BuiltinSimulator::defaultFlashPath());
         if (isMulti())
             sim->setIds(m_options.ids); // one simulated controller per id, on one line
@@ -512,7 +517,7 @@ void CtlRunner::runCommandWait()
         return;
     }
     connectThen([this, p] {
-        auto *wait = new CtlMotionWait(m_session, *p, m_options.json, this);
+        auto *wait = new CtlMotionWait(m_session, *p, m_options.json, m_out, m_err, this);
         connect(wait, &CtlMotionWait::finished, this, &CtlRunner::finish);
         wait->start();
     });
@@ -529,13 +534,21 @@ void CtlRunner::runMonitor()
             // Several ids: one status read per device in turn, each line keyed by its id.
             auto *bus = new CtlBusMonitor(m_session, m_options.ids, m_options.count,
                                           m_options.intervalMs, m_options.json, this);
-            connect(bus, &CtlBusMonitor::finished, this, &CtlRunner::finish);
+            connect(bus, &CtlBusMonitor::finished, this, [this, bus](int code) {
+                m_result = bus->summary();
+                m_liveErrors = bus->errors();
+                finish(code);
+            });
             bus->start();
             return;
         }
         auto *monitor =
             new CtlMonitor(m_session, m_options.count, m_options.intervalMs, m_options.json, this);
-        connect(monitor, &CtlMonitor::finished, this, &CtlRunner::finish);
+        connect(monitor, &CtlMonitor::finished, this, [this, monitor](int code) {
+            m_result = monitor->summary();
+            m_liveErrors = monitor->errors();
+            finish(code);
+        });
         monitor->start();
     });
 }

@@ -54,6 +54,14 @@ public:
     static QString commandHelp(const QString &name);
     // The message for a command that is not in the table.
     static QString unknownCommandMessage(const QString &name);
+    // Every command's name, once, in the table's order: "params, read, ... and bundle".
+    static QString commandNames();
+    // A run that ends before a command is chosen (a bad option, no command, a bad --id list):
+    // each message on standard error and, with --json, the envelope with them on standard
+    // output; returns `code`.
+    static int failEarly(int code, const QStringList &messages, bool json);
+    // `--json` was given among `arguments` (before they could be parsed).
+    static bool jsonAsked(const QStringList &arguments);
 
 Q_SIGNALS:
     void finished(int exitCode);
@@ -139,12 +147,17 @@ private:
     void runForCurrentId();
     void printMulti();
     int worstCode() const;
-    // --json for a command without JSON of its own (write, command, diff, apply, dump,
-    // assign-id, report, bundle): what it prints is kept and one object ends the run, as each
-    // id's member does with several ids: exit, result (m_result), errors, messages (ctlbus.cpp).
-    bool isEnveloped() const;
-    QJsonObject envelope(int code, const QString &out, const QStringList &errors,
-                         const QJsonObject &result) const;
+    // --json, for every command (ctlenvelope.cpp): what it prints is kept and one object ends
+    // the run: exit, result (m_result, or the JSON the command printed), errors, messages; with
+    // several ids one such object whose result holds each id's. monitor and listen print their
+    // lines as they come and the object as the last line, its result a summary (m_result).
+    bool isEnveloped() const { return m_options.json; }
+    // monitor and listen: a line as it comes.
+    bool isStreaming() const;
+    // Output and messages into m_buffer and m_errBuffer, for the object at the end.
+    void captureOutput();
+    static QJsonObject envelope(int code, const QString &out, const QStringList &errors,
+                                const QJsonObject &result);
     void printEnvelope(int code);
     // The errors of one read, each answer said once: on a dead line every block of the read
     // gets the same "no answer", which is said for the first with how many more had it.
@@ -173,6 +186,7 @@ private:
     QString m_errBuffer;     // the current id's messages, printed prefixed with its id
     QList<QStringList> m_idErrors;
     QJsonObject m_result;           // --json: what the current run came to
+    QStringList m_liveErrors;       // monitor, listen: the errors already said as they came
     QList<QJsonObject> m_idResults; // each id's
     QString m_multiArgument;        // dump: the path asked for, suffixed per id
     QString m_dumpFolder;           // dump: the folder asked for, one file per id inside

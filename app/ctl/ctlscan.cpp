@@ -10,12 +10,14 @@
 
 namespace stepcom {
 
-CtlScan::CtlScan(const BusScanner::Plan &plan, const RegisterMap &map, bool json, QObject *parent)
+CtlScan::CtlScan(const BusScanner::Plan &plan, const RegisterMap &map, bool json, QTextStream &out,
+                 QTextStream &problems, QObject *parent)
     : QObject(parent)
     , m_plan(plan)
     , m_json(json)
     , m_network(plan.base.isNetwork())
-    , m_out(stdout)
+    , m_out(out)
+    , m_problems(problems)
     , m_err(stderr)
 {
     m_scanner.setMap(&map);
@@ -57,7 +59,8 @@ void CtlScan::onFinished(bool cancelled, const QString &error)
 {
     Q_UNUSED(cancelled);
     if (!error.isEmpty()) {
-        m_err << QStringLiteral("stepcomctl: ") << tr("scan stopped: %1").arg(error) << Qt::endl;
+        m_problems << QStringLiteral("stepcomctl: ") << tr("scan stopped: %1").arg(error)
+                   << Qt::endl;
         if (m_json)
             printJson();
         m_out.flush();
@@ -71,6 +74,13 @@ void CtlScan::onFinished(bool cancelled, const QString &error)
         printJson();
     else
         printTable();
+    // Exit 1 says it; the JSON's errors name it, as the table's line does.
+    if (m_json && m_scanner.found().isEmpty())
+        m_problems << QStringLiteral("stepcomctl: ")
+                   << tr("No controller answered. Check the power, the wiring (A and B swapped?), "
+                         "the port, and for a controller that answers slowly give "
+                         "--probe-timeout.")
+                   << Qt::endl;
     m_out.flush();
     Q_EMIT finished(m_scanner.found().isEmpty() ? NoneFound : Found);
 }

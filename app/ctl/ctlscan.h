@@ -19,8 +19,10 @@ class CtlScan : public QObject
 public:
     enum Exit { Found = 0, NoneFound = 1, LinkError = 3 };
 
-    CtlScan(const BusScanner::Plan &plan, const RegisterMap &map, bool json,
-            QObject *parent = nullptr);
+    // What it found goes to `out`, why it stopped to `problems` (the runner's, kept for
+    // --json's object); the progress to standard error.
+    CtlScan(const BusScanner::Plan &plan, const RegisterMap &map, bool json, QTextStream &out,
+            QTextStream &problems, QObject *parent = nullptr);
     void start();
 
 Q_SIGNALS:
@@ -37,7 +39,8 @@ private:
     bool m_json;
     bool m_network;
     QElapsedTimer m_clock;
-    mutable QTextStream m_out;
+    QTextStream &m_out;
+    QTextStream &m_problems;
     mutable QTextStream m_err;
 };
 

@@ -53,11 +53,11 @@ int main(int argc, char *argv[])
     // The language first: the help and every message are translated when they are built.
     Translators translators;
     const QString language = Translators::languageFromArguments(QCoreApplication::arguments());
-    if (!Translators::available().contains(language)) {
-        err << QStringLiteral("stepcomctl: ") << Translators::unknownLanguageMessage(language)
-            << Qt::endl;
-        return CtlRunner::UsageError;
-    }
+    // --json before the arguments are parsed: a usage error is said in the JSON object too.
+    const bool json = CtlRunner::jsonAsked(QCoreApplication::arguments());
+    if (!Translators::available().contains(language))
+        return CtlRunner::failEarly(CtlRunner::UsageError,
+                                    {Translators::unknownLanguageMessage(language)}, json);
     translators.install(language);
 
     QCommandLineParser parser;
@@ -74,10 +74,8 @@ int main(int argc, char *argv[])
                                  QCoreApplication::translate("stepcomctl", "What to do."));
     CtlOptions::addOptions(parser);
     parser.addOption(Translators::languageOption());
-    if (!parser.parse(QCoreApplication::arguments())) {
-        err << QStringLiteral("stepcomctl: ") << parser.errorText() << Qt::endl;
-        return CtlRunner::UsageError;
-    }
+    if (!parser.parse(QCoreApplication::arguments()))
+        return CtlRunner::failEarly(CtlRunner::UsageError, {parser.errorText()}, json);
     if (parser.isSet(QStringLiteral("help"))) {
         // NAME --help: that command alone.
         const QString help = CtlRunner::commandHelp(parser.positionalArguments().value(0));
@@ -91,17 +89,13 @@ int main(int argc, char *argv[])
         parser.showVersion();
 
     CtlOptions options;
-    if (const QString problem = CtlOptions::fromParser(parser, &options); !problem.isEmpty()) {
-        err << QStringLiteral("stepcomctl: ") << problem << Qt::endl;
-        return CtlRunner::UsageError;
-    }
+    if (const QString problem = CtlOptions::fromParser(parser, &options); !problem.isEmpty())
+        return CtlRunner::failEarly(CtlRunner::UsageError, {problem}, json);
     options.language = language; // the report is written in the program's language
     if (options.simReset) {
         QString problem;
-        if (!BuiltinSimulator::resetFlash(BuiltinSimulator::defaultFlashPath(), &problem)) {
-            err << QStringLiteral("stepcomctl: ") << problem << Qt::endl;
-            return CtlRunner::DeviceError;
-        }
+        if (!BuiltinSimulator::resetFlash(BuiltinSimulator::defaultFlashPath(), &problem))
+            return CtlRunner::failEarly(CtlRunner::DeviceError, {problem}, json);
         err << QStringLiteral("stepcomctl: ")
             << QCoreApplication::translate("stepcomctl",
                                            "the built-in simulator starts from the factory "
@@ -114,11 +108,8 @@ int main(int argc, char *argv[])
     if (!options.mapFile.isEmpty()) {
         QStringList errors;
         auto loaded = RegisterMap::loadFile(options.mapFile, &errors);
-        if (!loaded) {
-            for (const QString &e : std::as_const(errors))
-                err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-            return CtlRunner::UsageError;
-        }
+        if (!loaded)
+            return CtlRunner::failEarly(CtlRunner::UsageError, errors, json);
         map = *loaded;
     }
     CtlRunner runner(options, map);

@@ -40,7 +40,12 @@ private Q_SLOTS:
                                         options);
         QVERIFY2(m.exitCode == 0, qPrintable(m.err));
         int samples = 0;
-        for (const QString &line : m.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+        QStringList lines = m.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        // The last line is --json's envelope, the run's exit code in it.
+        QVERIFY(!lines.isEmpty());
+        QCOMPARE(QJsonDocument::fromJson(lines.takeLast().toUtf8()).object().value("exit"),
+                 QJsonValue(0));
+        for (const QString &line : std::as_const(lines)) {
             const QJsonObject sample = QJsonDocument::fromJson(line.toUtf8()).object();
             QVERIFY2(!sample.isEmpty(), qPrintable(line));
             QVERIFY2(!sample.contains(QStringLiteral("event")), qPrintable(line));

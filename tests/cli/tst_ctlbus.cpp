@@ -8,6 +8,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -65,7 +66,10 @@ private Q_SLOTS:
                      qPrintable(r.out));
         r = ctl({"--sim", "--id", "2,3", "--json", "read", "device.id"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const QJsonObject all = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        // The envelope of every --json run; its result holds each id's.
+        const QJsonObject top = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(top.value("exit").toInt(-1), 0);
+        const QJsonObject all = top.value("result").toObject();
         QCOMPARE(all.keys(), (QStringList{"2", "3"}));
         QCOMPARE(all.value("3").toObject().value("exit").toInt(), 0);
         QCOMPARE(all.value("3").toObject().value("result").toObject().value("device.id").toInt(),
@@ -79,7 +83,10 @@ private Q_SLOTS:
         const ProgramRun r =
             ctl(tcp(host) + QStringList{"--id", "1,7,2", "--json", "read", "device.id"});
         QCOMPARE(r.exitCode, 1);
-        const QJsonObject all = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonObject top = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        QCOMPARE(top.value("exit").toInt(), 1);
+        QVERIFY(top.value("errors").toArray().first().toString().startsWith("id 7: "));
+        const QJsonObject all = top.value("result").toObject();
         QCOMPARE(all.value("1").toObject().value("exit").toInt(), 0);
         QCOMPARE(all.value("7").toObject().value("exit").toInt(), 1);
         QCOMPARE(all.value("2").toObject().value("result").toObject().value("device.id").toInt(),

@@ -161,12 +161,15 @@ private Q_SLOTS:
             const ProgramRun r = ctl(line + args);
             const QJsonDocument doc = QJsonDocument::fromJson(r.out.toUtf8());
             QVERIFY2(doc.isObject(), qPrintable(r.out + r.err));
+            // The same object, for one id, and with two as the result holding each id's.
+            QCOMPARE(doc.object().value(QStringLiteral("exit")).toInt(-1), code);
             QList<QJsonObject> runs;
             if (ids == QLatin1String("1")) {
                 runs << doc.object();
             } else {
-                runs << doc.object().value(QStringLiteral("1")).toObject()
-                     << doc.object().value(QStringLiteral("2")).toObject();
+                const QJsonObject all = doc.object().value(QStringLiteral("result")).toObject();
+                runs << all.value(QStringLiteral("1")).toObject()
+                     << all.value(QStringLiteral("2")).toObject();
             }
             for (const QJsonObject &o : std::as_const(runs)) {
                 QVERIFY2(o.value(QStringLiteral("result")).isObject(), qPrintable(r.out));

@@ -277,7 +277,8 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 1);
         r = ctl({"--sim", "scan", "--ids", "6-8", "--bauds", "9600,19200", "--json"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const QJsonArray found = QJsonDocument::fromJson(r.out.toUtf8()).array();
+        const QJsonArray found =
+            QJsonDocument::fromJson(r.out.toUtf8()).object().value("result").toArray();
         QCOMPARE(found.size(), 1);
         QCOMPARE(found.at(0).toObject().value("id").toInt(), 7);
         QCOMPARE(found.at(0).toObject().value("baud").toInt(), 19200);
@@ -372,7 +373,8 @@ private Q_SLOTS:
         const QStringList env{QStringLiteral("STEPCOMCTL_SYSTEM_ROOT=") + root};
         ProgramRun r = ctl({"ports", "--json"}, env);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const QJsonArray ports = QJsonDocument::fromJson(r.out.toUtf8()).array();
+        const QJsonArray ports =
+            QJsonDocument::fromJson(r.out.toUtf8()).object().value("result").toArray();
         QCOMPARE(ports.size(), 2);
         const QJsonObject ftdi = ports.at(0).toObject();
         QCOMPARE(ftdi.value("path").toString(), QStringLiteral("/dev/ttyUSB0"));

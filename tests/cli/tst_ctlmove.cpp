@@ -86,7 +86,10 @@ private Q_SLOTS:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err + r.out));
         QCOMPARE(sim()->position(1), -325);
         userValuesBack();
-        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8())
+                                  .object()
+                                  .value(QStringLiteral("result"))
+                                  .toObject();
         QCOMPARE(o.value(QStringLiteral("outcome")).toString(), QStringLiteral("done"));
         QCOMPARE(o.value(QStringLiteral("position")).toDouble(), -3.25);
         QVERIFY(o.value(QStringLiteral("arrived")).toBool());
@@ -173,7 +176,10 @@ private Q_SLOTS:
             runProgram(QStringLiteral("stepcomctl"),
                        link + QStringList{"--json", "move", "motor1", "--by", "10"}, env);
         QCOMPARE(json.exitCode, 1);
-        const QJsonObject o = QJsonDocument::fromJson(json.out.toUtf8()).object();
+        const QJsonObject o = QJsonDocument::fromJson(json.out.toUtf8())
+                                  .object()
+                                  .value(QStringLiteral("result"))
+                                  .toObject();
         QCOMPARE(o.value(QStringLiteral("cause")).toString(), QStringLiteral("limit"));
         QVERIFY(o.value(QStringLiteral("warning")).toString().contains(limit));
     }

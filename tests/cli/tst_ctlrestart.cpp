@@ -63,7 +63,7 @@ class TestCtlRestart : public QObject
                 out.remove(0, end + 1);
                 if (o.contains(QStringLiteral("event")))
                     events << o;
-                else
+                else if (!o.contains(QStringLiteral("exit"))) // not the envelope at the end
                     ++samples;
             }
             if (samples >= 3 && !cut)
@@ -104,7 +104,7 @@ private Q_SLOTS:
             const QJsonObject o = QJsonDocument::fromJson(line.toUtf8()).object();
             if (o.contains(QStringLiteral("event")))
                 events << o.value(QStringLiteral("event")).toString();
-            else
+            else if (!o.contains(QStringLiteral("exit"))) // the envelope, the last line
                 ++samples;
         }
         QCOMPARE(events, QStringList{QStringLiteral("restarted")});
@@ -266,7 +266,10 @@ private Q_SLOTS:
                                          "command", "motor1.home", "--wait"},
                                         options);
         QCOMPARE(r.exitCode, 1);
-        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8())
+                                  .object()
+                                  .value(QStringLiteral("result"))
+                                  .toObject();
         QCOMPARE(o.value(QStringLiteral("cause")).toString(), QStringLiteral("silent"));
         QCOMPARE(o.value(QStringLiteral("outcome")).toString(), QStringLiteral("not_known"));
         QCOMPARE(o.value(QStringLiteral("ok")).toBool(), false);

@@ -53,13 +53,16 @@ class TestCtlScan : public QObject
         }
         return table;
     }
+    // The found controllers: the result of --json's object, whose exit is the program's.
     static QJsonArray json(const ProgramRun &r)
     {
         QJsonParseError error;
         const QJsonDocument doc = QJsonDocument::fromJson(r.out.toUtf8(), &error);
-        if (error.error != QJsonParseError::NoError || !doc.isArray())
-            qWarning("not a JSON array: %s", qPrintable(r.out));
-        return doc.array();
+        const QJsonValue result = doc.object().value(QStringLiteral("result"));
+        if (error.error != QJsonParseError::NoError || !result.isArray() ||
+            doc.object().value(QStringLiteral("exit")).toInt(-1) != r.exitCode)
+            qWarning("not an object with the exit code and an array: %s", qPrintable(r.out));
+        return result.toArray();
     }
 
 private Q_SLOTS:

@@ -60,7 +60,10 @@ private Q_SLOTS:
 
         const ProgramRun all = ctl({QStringLiteral("--json"), QStringLiteral("read")});
         QVERIFY2(all.exitCode == 0, qPrintable(all.err));
-        const QJsonObject o = QJsonDocument::fromJson(all.out.toUtf8()).object();
+        const QJsonObject o = QJsonDocument::fromJson(all.out.toUtf8())
+                                  .object()
+                                  .value(QStringLiteral("result"))
+                                  .toObject();
         QVERIFY(o.contains(QStringLiteral("motor1.speed")));
         QVERIFY(o.contains(QStringLiteral("io.out3")));
         QCOMPARE(o.contains(QStringLiteral("motor2.position")), !lacks);

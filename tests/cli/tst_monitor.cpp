@@ -3,6 +3,7 @@
 #include "testpaths.h"
 
 #include <QDateTime>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -23,6 +24,7 @@ struct Run
     int exitCode = -1;
     QList<QJsonObject> lines;
     QStringList raw;
+    QJsonObject envelope; // --json: the last line, {"exit","result","errors"}
     QString err;
 };
 
@@ -62,8 +64,15 @@ class TestMonitor : public QObject
         for (const QByteArray &line : out.split('\n')) {
             if (line.isEmpty())
                 continue;
+            const QJsonObject o = QJsonDocument::fromJson(line).object();
+            if (o.contains(QStringLiteral("exit")) && r.envelope.isEmpty()) {
+                r.envelope = o;
+                continue;
+            }
+            if (!r.envelope.isEmpty()) // the envelope is the last line: fails every check
+                r.exitCode = -3;
             r.raw << QString::fromUtf8(line);
-            r.lines << QJsonDocument::fromJson(line).object();
+            r.lines << o;
         }
         return r;
     }
@@ -188,6 +197,11 @@ private Q_SLOTS:
                 QVERIFY2(o.value(key).isDouble(), qPrintable(key));
         }
         QCOMPARE(ids, (QList<int>{1, 2, 3, 1, 2, 3})); // fair: round robin in the order given
+        // The last line: the envelope, its result what was watched.
+        QCOMPARE(r.envelope.value("exit").toInt(-1), 0);
+        QCOMPARE(r.envelope.value("result").toObject().value("samples").toObject().value("3"),
+                 QJsonValue(2));
+        QVERIFY(r.envelope.value("errors").toArray().isEmpty());
     }
 
     void severalDevicesAsText()
@@ -228,6 +242,10 @@ private Q_SLOTS:
         QCOMPARE(r.lines.at(0).value("id").toInt(), 1);
         QCOMPARE(r.lines.at(1).value("id").toInt(), 2);
         QVERIFY2(r.err.contains(QLatin1String("id 5: ")), qPrintable(r.err));
+        QCOMPARE(r.envelope.value("exit").toInt(-1), 1);
+        QCOMPARE(r.envelope.value("result").toObject().value("failed").toObject().value("5"),
+                 QJsonValue(1));
+        QVERIFY(r.envelope.value("errors").toArray().first().toString().startsWith("id 5: "));
     }
 
     void usageErrors_data()

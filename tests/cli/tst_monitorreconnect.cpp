@@ -141,8 +141,15 @@ private Q_SLOTS:
         QCOMPARE(lines.count(isSample), 6);
         QVERIFY(lines.count(isSample) > before); // samples after the way back
         if (json) {
+            // The last line is the envelope: the run's exit, samples and events, no error.
+            const QJsonObject last = QJsonDocument::fromJson(lines.out.last().toUtf8()).object();
+            QCOMPARE(last.value(QStringLiteral("exit")).toInt(-1), 0);
+            QCOMPARE(last.value(QStringLiteral("result")).toObject().value("samples"),
+                     QJsonValue(6));
+            QCOMPARE(last.value(QStringLiteral("result")).toObject().value("events"),
+                     QJsonValue(2));
             QStringList events;
-            for (const QString &l : std::as_const(lines.out)) {
+            for (const QString &l : lines.out.first(lines.out.size() - 1)) {
                 if (!isSample(l))
                     events << eventOf(l);
             }

@@ -33,6 +33,15 @@ class TestStepcomctl : public QObject
         return runProgram(QStringLiteral("stepcomctl"), (withPort ? link : QStringList()) + args);
     }
 
+    // What --json's object holds as the result, once its exit is the program's.
+    static QJsonValue result(const Run &r)
+    {
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        if (o.value(QStringLiteral("exit")).toInt(-1) != r.exitCode)
+            return QJsonValue(QJsonValue::Undefined);
+        return o.value(QStringLiteral("result"));
+    }
+
 private Q_SLOTS:
     void init()
     {
@@ -64,7 +73,7 @@ private Q_SLOTS:
     {
         const Run r = ctl({QStringLiteral("--json"), QStringLiteral("read")});
         QCOMPARE(r.exitCode, 0);
-        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonObject o = result(r).toObject();
         QCOMPARE(o.size(), 57);
         QCOMPARE(o.value(QStringLiteral("motor1.step_angle")).toDouble(), 1.8);
         QCOMPARE(o.value(QStringLiteral("motor1.position")).toDouble(), -2.5);
@@ -211,11 +220,7 @@ private Q_SLOTS:
                  qPrintable(r.err));
         r = ctl({"--tcp", target, "--json", "read", "motor2.speed"}, false);
         QCOMPARE(r.exitCode, 0);
-        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8())
-                     .object()
-                     .value(QStringLiteral("motor2.speed"))
-                     .toInt(),
-                 275);
+        QCOMPARE(result(r).toObject().value(QStringLiteral("motor2.speed")).toInt(), 275);
         host.stop();
         r = ctl({"--tcp", target, "read"}, false);
         QCOMPARE(r.exitCode, 1);
@@ -236,7 +241,7 @@ private Q_SLOTS:
 
         Run r = ctl({"--tcp", target, "--json", "command", "motor1.move", "--wait"}, false);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const QJsonObject done = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        const QJsonObject done = result(r).toObject();
         QCOMPARE(done.value(QStringLiteral("outcome")).toString(), QStringLiteral("done"));
         QCOMPARE(done.value(QStringLiteral("message")).toString(),
                  QStringLiteral("Single move of motor 1: done at 10.00 mm"));
@@ -267,7 +272,7 @@ private Q_SLOTS:
         // Homing that reaches its switch is referenced.
         r = ctl({"--tcp", target, "--json", "command", "motor1.home", "--wait"}, false);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err + r.out));
-        QCOMPARE(QJsonDocument::fromJson(r.out.toUtf8()).object().value(QStringLiteral("outcome")),
+        QCOMPARE(result(r).toObject().value(QStringLiteral("outcome")),
                  QJsonValue(QStringLiteral("referenced")));
 
         // Forward runs until stopped: nothing to wait for.
@@ -302,7 +307,7 @@ private Q_SLOTS:
     {
         const Run r = ctl({QStringLiteral("--json"), QStringLiteral("params")}, false);
         QCOMPARE(r.exitCode, 0);
-        const QJsonArray array = QJsonDocument::fromJson(r.out.toUtf8()).array();
+        const QJsonArray array = result(r).toArray();
         QCOMPARE(array.size(), 81);
         const QJsonObject first = array.at(0).toObject();
         for (const char *field : {"key", "kind", "plc", "address", "words", "signed", "scale",

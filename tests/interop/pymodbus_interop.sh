@@ -80,9 +80,11 @@ run command-output 0 command output1_on
 run command-stop 0 command motor1.stop
 run command-estop 0 command estop
 run save 0 command save_to_flash
+# --json: a line a sample, then the envelope with the exit code as the last line.
 run monitor 0 monitor --count 3 --json &&
-    [[ $(grep -c '"motor1.position"' "$dir/monitor.out") -eq 3 ]] ||
-    { echo "FAIL monitor: not 3 samples"; failed=$((failed + 1)); }
+    [[ $(grep -c '"motor1.position"' "$dir/monitor.out") -eq 3 ]] &&
+    tail -n 1 "$dir/monitor.out" | grep -q '"exit":0' ||
+    { echo "FAIL monitor: not 3 samples and the envelope"; failed=$((failed + 1)); }
 grep -hE "^stepcomctl: link:|line:" "$dir/monitor.err" | head -1
 # At an id nobody has, the independent server is silent too: the message names the command
 # that finds controllers.

@@ -93,6 +93,11 @@ private Q_SLOTS:
             QVERIFY2(doc.isObject(), line.constData());
             heard << doc.object();
         }
+        // The last line is --json's envelope: the exit code and the summary of what was heard.
+        QVERIFY(!heard.isEmpty());
+        const QJsonObject envelope = heard.takeLast();
+        QCOMPARE(envelope.value(u"exit"), QJsonValue(0));
+        QCOMPARE(envelope.value(u"result").toObject().value(u"crc_errors"), QJsonValue(0));
         // Every write the PLC made, in order, with its key and engineering value.
         QStringList writes;
         for (const QString &s : sent) {

@@ -44,6 +44,14 @@ class TestCtlReplay : public QObject
         const QList<QByteArray> lines = f.readAll().trimmed().split('\n');
         return QString::fromLatin1(lines.last().mid(11, 12));
     }
+    // --json's result, once the object's exit is the program's.
+    static QJsonValue result(const ProgramRun &r)
+    {
+        const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+        if (o.value(QStringLiteral("exit")).toInt(-1) != r.exitCode)
+            qWarning("not the envelope of exit %d: %s", r.exitCode, qPrintable(r.out));
+        return o.value(QStringLiteral("result"));
+    }
     QJsonObject deviceAt(const QString &time)
     {
         const ProgramRun r = replay(logPath, {"--at", time, "--json"});
@@ -51,6 +59,8 @@ class TestCtlReplay : public QObject
             qWarning("replay --at %s: %s", qPrintable(time), qPrintable(r.err));
         return QJsonDocument::fromJson(r.out.toUtf8())
             .object()
+            .value(QStringLiteral("result"))
+            .toObject()
             .value(QStringLiteral("devices"))
             .toObject()
             .value(QStringLiteral("1"))
@@ -73,7 +83,7 @@ private Q_SLOTS:
         // 1. read-all
         const ProgramRun read = ctl({"--json", "read"});
         QVERIFY2(read.exitCode == 0, qPrintable(read.err));
-        const QJsonObject readAll = QJsonDocument::fromJson(read.out.toUtf8()).object();
+        const QJsonObject readAll = result(read).toObject();
         const QString t1 = lastClock();
         const QJsonObject at1 = deviceAt(t1);
         QCOMPARE(at1.value(QStringLiteral("values")).toObject(), readAll);
@@ -98,7 +108,7 @@ private Q_SLOTS:
         const ProgramRun where = ctl({"--json", "read", "motor1.position", "motor2.position",
                                       "motor1.running", "motor2.running", "io.in1", "io.out1"});
         QVERIFY2(where.exitCode == 0, qPrintable(where.err));
-        const QJsonObject ended = QJsonDocument::fromJson(where.out.toUtf8()).object();
+        const QJsonObject ended = result(where).toObject();
         QVERIFY(ended.value(QStringLiteral("motor1.position")).toDouble() != 0);
         const QString t4 = lastClock();
         const QJsonObject at4 = deviceAt(t4).value(QStringLiteral("values")).toObject();
@@ -117,7 +127,7 @@ private Q_SLOTS:
         QVERIFY2(events.exitCode == 0, qPrintable(events.err));
         QStringList seen;
         double last = 0;
-        for (const QJsonValue &v : QJsonDocument::fromJson(events.out.toUtf8()).array()) {
+        for (const QJsonValue &v : result(events).toArray()) {
             const QJsonObject e = v.toObject();
             QVERIFY(e.value(QStringLiteral("t_s")).toDouble() >= last);
             last = e.value(QStringLiteral("t_s")).toDouble();
@@ -159,13 +169,11 @@ private Q_SLOTS:
                                             "motor1.speed", "motor1.position", "device.id"},
                                            options);
         QVERIFY2(read.exitCode == 0, qPrintable(read.err));
-        const QJsonObject byId = QJsonDocument::fromJson(read.out.toUtf8()).object();
+        const QJsonObject byId = result(read).toObject();
         const ProgramRun r = replay(log, {"--at", "99999", "--json"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        const QJsonObject devices = QJsonDocument::fromJson(r.out.toUtf8())
-                                        .object()
-                                        .value(QStringLiteral("devices"))
-                                        .toObject();
+        const QJsonObject devices =
+            result(r).toObject().value(QStringLiteral("devices")).toObject();
         QCOMPARE(devices.keys(), (QStringList{"1", "2"}));
         for (const QString &id : {QStringLiteral("1"), QStringLiteral("2")}) {
             const QJsonObject values =
@@ -227,7 +235,7 @@ private Q_SLOTS:
         const ProgramRun json = replay(log, {"--events", "--json"});
         QVERIFY2(json.exitCode == 0, qPrintable(json.err));
         QJsonObject found;
-        for (const QJsonValue &v : QJsonDocument::fromJson(json.out.toUtf8()).array())
+        for (const QJsonValue &v : result(json).toArray())
             if (v.toObject().value(QStringLiteral("kind")).toString() ==
                 QLatin1String("possible-restart"))
                 found = v.toObject();

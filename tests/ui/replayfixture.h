@@ -170,6 +170,8 @@ protected:
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const QJsonObject cli = QJsonDocument::fromJson(r.out.toUtf8())
                                     .object()
+                                    .value(QStringLiteral("result")) // --json's envelope
+                                    .toObject()
                                     .value(QStringLiteral("devices"))
                                     .toObject()
                                     .value(QStringLiteral("1"))

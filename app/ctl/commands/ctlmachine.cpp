@@ -52,6 +52,8 @@ void CtlRunner::runMachineReport()
                             fail(UsageError, e);
                             return;
                         }
+                        m_result = QJsonObject{{QStringLiteral("file"), path},
+                                               {QStringLiteral("controllers"), int(inputs.size())}};
                         m_out << tr("report of %n controller(s) written to %1", nullptr,
                                     int(inputs.size()))
                                      .arg(path)

@@ -515,6 +515,7 @@ void CtlRunner::runReport()
                 fail(UsageError, e);
                 return;
             }
+            m_result = QJsonObject{{QStringLiteral("file"), path}};
             m_out << tr("report written to %1").arg(path) << Qt::endl;
             finish(Ok);
         });
@@ -545,6 +546,8 @@ void CtlRunner::runReportFromFile(const QString &path)
         return;
     }
     printLeftOut(profile, tr("not in the report:"));
+    m_result =
+        QJsonObject{{QStringLiteral("file"), path}, {QStringLiteral("from"), m_options.from}};
     m_out << tr("report written to %1, made from the profile file %2 (no controller was read)")
                  .arg(path, m_options.from)
           << Qt::endl;

@@ -244,6 +244,9 @@ void CtlRunner::writeBundle(BundleInput input, const QList<ReportInput> &sheets)
         fail(DeviceError, error); // not done: the file could not be written
         return;
     }
+    m_result = QJsonObject{{QStringLiteral("file"), out},
+                           {QStringLiteral("contents"), QJsonArray::fromStringList(contents)},
+                           {QStringLiteral("report"), !input.reportHtml.isEmpty()}};
     m_out << tr("wrote %1 (%2):").arg(out, QLocale::c().formattedDataSize(QFileInfo(out).size()))
           << Qt::endl;
     for (const QString &name : std::as_const(contents))

@@ -78,6 +78,11 @@ std::optional<LinkSettings> BuiltinSimulator::start(const RegisterMap &map, QStr
             return std::nullopt;
     }
     LinkSettings s;
+    s.timeoutMs = m_timing.timeoutMs;
+    s.adaptTimeout = m_timing.adaptTimeout;
+    s.retries = m_timing.retries;
+    s.answerDelayMs = m_timing.answerDelayMs;
+    s.turnaroundMs = m_timing.turnaroundMs;
     if (!m_host->rtuPath().isEmpty()) {
         s.transport = LinkSettings::Transport::Rtu;
         s.portName = m_host->rtuPath();

@@ -35,6 +35,10 @@ public:
     // The id and baud the client opens the line with (0: whatever the simulator holds); at
     // another id or baud the controller does not answer, as a real one.
     void setClientLink(int deviceId, int baud);
+    // How long the client waits for an answer, how often it tries again, its delays (--timeout,
+    // --retries, --answer-delay, --turnaround, --fixed-timeout): the link start() gives has
+    // them, so the simulator is reached as the client asked (defaults: LinkSettings').
+    void setClientTiming(const LinkSettings &timing) { m_timing = timing; }
     // Where what it saves to flash is kept (empty, the default: in memory, gone at stop()). The
     // n-th controller of setIds (n > 1) keeps it in PATH-n.
     void setFlashPath(const QString &path) { m_flashPath = path; }
@@ -55,6 +59,7 @@ private:
     QList<int> m_ids;
     int m_clientId = 0;
     int m_clientBaud = 0;
+    LinkSettings m_timing;
     QString m_flashPath;
 };
 
