@@ -24,24 +24,40 @@ if [[ ${#targets[@]} -eq 0 ]]; then
 fi
 export ASAN_OPTIONS="halt_on_error=1:abort_on_error=1:detect_leaks=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
-status=0
-for t in "${targets[@]}"; do
-    exe="$build/fuzz_$t"
-    [[ -x $exe ]] || { echo "fuzz: no target $t ($exe)" >&2; exit 2; }
-    work="$build/corpus/$t"
+# fuzz_one TARGET: run one target for its time; fails with the crashing input's name.
+fuzz_one() {
+    local t=$1 exe="$build/fuzz_$1" work="$build/corpus/$1" seeds
     mkdir -p "$work"
     seeds=(tests/fuzz/corpus/"$t")
     [[ -d tests/fuzz/regressions/$t ]] && seeds+=(tests/fuzz/regressions/"$t")
-    echo "fuzz: $t for ${seconds} s"
     # -timeout: an input that takes over 10 s is a hang; -rss_limit_mb: a runaway allocation.
     if ! "$exe" "$work" "${seeds[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
             -max_len=65536 -print_final_stats=1 -artifact_prefix="$build/$t-" \
             -dict=tests/fuzz/json.dict 2>"$build/fuzz-$t.log"; then
         tail -n 60 "$build/fuzz-$t.log" >&2
         echo "fuzz: $t FAILED, input saved as $(ls -t "$build/$t"-* 2>/dev/null | head -1)" >&2
-        status=1
-    else
-        grep -E '^stat::number_of_executed_units|^stat::new_units_added|Done ' "$build/fuzz-$t.log" || true
+        return 1
     fi
+    grep -E '^stat::number_of_executed_units|^stat::new_units_added|Done ' "$build/fuzz-$t.log" |
+        sed "s/^/fuzz: $t: /" || true
+}
+for t in "${targets[@]}"; do
+    [[ -x $build/fuzz_$t ]] || { echo "fuzz: no target $t ($build/fuzz_$t)" >&2; exit 2; }
+done
+# The targets run side by side, one per core: each is one process, so on 2 cores two take the
+# time of one.
+status=0
+pids=()
+for t in "${targets[@]}"; do
+    echo "fuzz: $t for ${seconds} s"
+    fuzz_one "$t" &
+    pids+=($!)
+    if [[ ${#pids[@]} -ge ${JOBS:-$(nproc)} ]]; then
+        wait "${pids[0]}" || status=1
+        pids=("${pids[@]:1}")
+    fi
+done
+for pid in "${pids[@]}"; do
+    wait "$pid" || status=1
 done
 exit $status

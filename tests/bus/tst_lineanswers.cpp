@@ -14,7 +14,7 @@ using namespace stepcom;
 
 namespace {
 
-struct Outcome
+struct AnswerOutcome
 {
     bool done = false;
     Result result;
@@ -64,7 +64,7 @@ class TestLineAnswers : public QObject
     }
     Result run(const Request &request)
     {
-        Outcome o;
+        AnswerOutcome o;
         link->submit(request, [&o](const Result &r) {
             o.done = true;
             o.result = r;

@@ -19,7 +19,7 @@ const QStringList kStatusKeys{
     "motor1.position", "motor2.position", "motor1.running", "motor2.running", "io.in1", "io.in2",
     "io.in3",          "io.in4",          "io.out1",        "io.out2",        "io.out3"};
 
-struct Run
+struct MonitorRun
 {
     int exitCode = -1;
     QList<QJsonObject> lines;
@@ -36,13 +36,13 @@ class TestMonitor : public QObject
 
     // Runs stepcomctl without blocking the event loop; stops it with SIGTERM after
     // `terminateAfter` lines when that is > 0.
-    Run ctl(const QStringList &args, int terminateAfter = 0)
+    MonitorRun ctl(const QStringList &args, int terminateAfter = 0)
     {
         QProcess p;
         p.start(programPath(QStringLiteral("stepcomctl")), args);
         if (!p.waitForStarted(5000))
             return {};
-        Run r;
+        MonitorRun r;
         QByteArray out;
         bool terminated = false;
         for (int i = 0; i < 1500 && p.state() != QProcess::NotRunning; ++i) {
@@ -77,7 +77,7 @@ class TestMonitor : public QObject
         return r;
     }
 
-    static void checkLines(const Run &r)
+    static void checkLines(const MonitorRun &r)
     {
         qint64 lastT = -1;
         for (int i = 0; i < r.lines.size(); ++i) {
@@ -105,7 +105,7 @@ class TestMonitor : public QObject
 private Q_SLOTS:
     void fiveSamplesFromTheBuiltInSimulator()
     {
-        const Run r = ctl({"--sim", "monitor", "--count", "5"});
+        const MonitorRun r = ctl({"--sim", "monitor", "--count", "5"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(r.lines.size(), 5);
         checkLines(r);
@@ -141,7 +141,7 @@ private Q_SLOTS:
         const QStringList target =
             tcp ? QStringList{"--tcp", QStringLiteral("127.0.0.1:%1").arg(host.tcpPort())}
                 : QStringList{"--port", host.rtuPath()};
-        const Run r = ctl(target + QStringList{"monitor", "--count", "6"});
+        const MonitorRun r = ctl(target + QStringList{"monitor", "--count", "6"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(r.lines.size(), 6);
         checkLines(r);
@@ -158,7 +158,7 @@ private Q_SLOTS:
 
     void intervalSpacesTheSamples()
     {
-        const Run r = ctl({"--sim", "monitor", "--count", "3", "--interval", "300"});
+        const MonitorRun r = ctl({"--sim", "monitor", "--count", "3", "--interval", "300"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(r.lines.size(), 3);
         checkLines(r);
@@ -171,7 +171,7 @@ private Q_SLOTS:
 
     void sigtermEndsCleanlyAfterAWholeLine()
     {
-        const Run r = ctl({"--sim", "monitor"}, 2);
+        const MonitorRun r = ctl({"--sim", "monitor"}, 2);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY(r.lines.size() >= 2);
         checkLines(r);
@@ -180,7 +180,7 @@ private Q_SLOTS:
     // --id 1,2,3: each device in turn, one line a sample keyed by its id, --count of each.
     void severalDevicesInTurnAsJson()
     {
-        const Run r = ctl({"--sim", "--id", "1,2,3", "monitor", "--count", "2", "--json"});
+        const MonitorRun r = ctl({"--sim", "--id", "1,2,3", "monitor", "--count", "2", "--json"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(r.lines.size(), 6);
         QList<int> ids;
@@ -213,7 +213,8 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(host.start(options, &error), qPrintable(error));
         QVERIFY(host.deviceAt(2)->command(QStringLiteral("motor1.forward")));
-        const Run r = ctl({"--port", host.rtuPath(), "--id", "1-3", "monitor", "--count", "1"});
+        const MonitorRun r =
+            ctl({"--port", host.rtuPath(), "--id", "1-3", "monitor", "--count", "1"});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QCOMPARE(r.raw.size(), 3);
         for (int i = 0; i < 3; ++i) {
@@ -235,7 +236,7 @@ private Q_SLOTS:
         options.ids = {1, 2};
         QString error;
         QVERIFY2(host.start(options, &error), qPrintable(error));
-        const Run r =
+        const MonitorRun r =
             ctl({"--port", host.rtuPath(), "--id", "1,5,2", "monitor", "--count", "1", "--json"});
         QCOMPARE(r.exitCode, 1);
         QCOMPARE(r.lines.size(), 2);
@@ -258,7 +259,7 @@ private Q_SLOTS:
     void usageErrors()
     {
         QFETCH(QStringList, args);
-        const Run r = ctl(args);
+        const MonitorRun r = ctl(args);
         QCOMPARE(r.exitCode, 2);
         QVERIFY(r.lines.isEmpty());
     }

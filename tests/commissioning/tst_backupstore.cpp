@@ -13,7 +13,7 @@ using namespace stepcom::test;
 
 namespace {
 
-const QDateTime t0(QDate(2024, 6, 1), QTime(9, 30, 15, 250), Qt::UTC);
+const QDateTime kBackupT0(QDate(2024, 6, 1), QTime(9, 30, 15, 250), Qt::UTC);
 
 // The settings of machine A as a controller returns them, link included.
 QHash<QString, qint64> controller()
@@ -52,7 +52,7 @@ private Q_SLOTS:
         const BackupStore store(folder);
         const auto saved =
             store.save(RegisterMap::builtin(), controller(), BackupStore::Operation::FactoryReset,
-                       "/dev/ttyUSB0 · 19200 8N1 · id 3", t0);
+                       "/dev/ttyUSB0 · 19200 8N1 · id 3", kBackupT0);
         QVERIFY2(saved.ok(), qPrintable(saved.error));
         QCOMPARE(QFileInfo(saved.path).fileName(),
                  QStringLiteral("backup-20240601-093015-250-factory-reset.json"));
@@ -71,7 +71,7 @@ private Q_SLOTS:
             QCOMPARE(r.profile->values.value(it.key()), it.value());
         // Two in the same millisecond do not overwrite each other.
         const auto again = store.save(RegisterMap::builtin(), controller(),
-                                      BackupStore::Operation::FactoryReset, {}, t0);
+                                      BackupStore::Operation::FactoryReset, {}, kBackupT0);
         QVERIFY(again.ok());
         QVERIFY(again.path.endsWith("-factory-reset-2.json"));
     }
@@ -88,7 +88,7 @@ private Q_SLOTS:
         QStringList removed;
         for (int i = 0; i < ops.size(); ++i) {
             const auto s = store.save(RegisterMap::builtin(), controller(), ops.at(i),
-                                      QStringLiteral("link %1").arg(i), t0.addSecs(60 * i));
+                                      QStringLiteral("link %1").arg(i), kBackupT0.addSecs(60 * i));
             QVERIFY2(s.ok(), qPrintable(s.error));
             paths << s.path;
             removed << s.removed;
@@ -121,7 +121,7 @@ private Q_SLOTS:
         // The next save keeps three: the broken file counts too, and is the newest by name, so
         // the oldest good ones go first.
         const auto s = store.save(RegisterMap::builtin(), controller(),
-                                  BackupStore::Operation::Apply, {}, t0.addSecs(3600));
+                                  BackupStore::Operation::Apply, {}, kBackupT0.addSecs(3600));
         QVERIFY(s.ok());
         QCOMPARE(s.removed, (QStringList{paths.at(2), paths.at(3)}));
     }
@@ -133,13 +133,13 @@ private Q_SLOTS:
         QVERIFY(blocker.open(QIODevice::WriteOnly)); // a file where the folder should be
         blocker.close();
         const BackupStore store(dir.filePath("backups"));
-        const auto s =
-            store.save(RegisterMap::builtin(), controller(), BackupStore::Operation::Apply, {}, t0);
+        const auto s = store.save(RegisterMap::builtin(), controller(),
+                                  BackupStore::Operation::Apply, {}, kBackupT0);
         QVERIFY(!s.ok());
         QVERIFY2(s.error.contains("cannot create the backup folder"), qPrintable(s.error));
         const auto empty =
             BackupStore(dir.filePath("b2"))
-                .save(RegisterMap::builtin(), {}, BackupStore::Operation::Apply, {}, t0);
+                .save(RegisterMap::builtin(), {}, BackupStore::Operation::Apply, {}, kBackupT0);
         QVERIFY(empty.error.contains("no settings to back up"));
         QVERIFY(QDir(dir.filePath("b2")).entryList(QDir::Files).isEmpty());
     }
@@ -147,9 +147,9 @@ private Q_SLOTS:
     void backupMetadataIsChecked()
     {
         QTemporaryDir dir;
-        const auto s =
-            BackupStore(dir.path())
-                .save(RegisterMap::builtin(), controller(), BackupStore::Operation::Apply, "x", t0);
+        const auto s = BackupStore(dir.path())
+                           .save(RegisterMap::builtin(), controller(),
+                                 BackupStore::Operation::Apply, "x", kBackupT0);
         QFile f(s.path);
         QVERIFY(f.open(QIODevice::ReadOnly));
         QByteArray bytes = f.readAll();

@@ -20,7 +20,7 @@ using namespace stepcom::test;
 
 namespace {
 
-const QDateTime t0(QDate(2024, 6, 1), QTime(9, 30), Qt::UTC);
+const QDateTime kCertT0(QDate(2024, 6, 1), QTime(9, 30), Qt::UTC);
 
 QByteArray machineABytes()
 {
@@ -30,7 +30,7 @@ QByteArray machineABytes()
     return f.readAll();
 }
 
-Profile machineA()
+Profile certMachineA()
 {
     return *ProfileFile::parse(machineABytes(), RegisterMap::builtin()).profile;
 }
@@ -40,20 +40,21 @@ Checklist checklist()
 {
     Checklist c = Checklist::forMap(RegisterMap::builtin());
     c.machine = QStringLiteral("Machine A");
-    c.record("motor1.direction", StepResult::Passed, {{"moved_toward_plus", "yes", {}}}, {}, t0);
+    c.record("motor1.direction", StepResult::Passed, {{"moved_toward_plus", "yes", {}}}, {},
+             kCertT0);
     c.record("motor1.calibration", StepResult::Failed, {{"measured", "97.00", "mm"}}, "slipped",
-             t0);
+             kCertT0);
     c.record(
         "motor1.calibration", StepResult::Passed,
         {{"commanded", "100.00", "mm"}, {"measured", "99.20", "mm"}, {"pitch_after", "4.96", "mm"}},
-        "dial gauge <0.01>", t0.addSecs(60));
+        "dial gauge <0.01>", kCertT0.addSecs(60));
     c.record("motor1.limit_negative", StepResult::Passed,
              {{"input_configured", "IN2", {}},
               {"input_answered", "IN1", {}},
               {"fix", "motor1.limit_negative = IN1", {}}},
-             {}, t0.addSecs(120));
+             {}, kCertT0.addSecs(120));
     c.record("machine.interpolation", StepResult::Skipped, {}, "no arc on this machine",
-             t0.addSecs(180));
+             kCertT0.addSecs(180));
     return c;
 }
 
@@ -77,8 +78,8 @@ class TestCertificate : public QObject
 
     ReportInput input(const QString &locale) const
     {
-        ReportInput in =
-            ReportInput::fromProfile(RegisterMap::builtin(), machineA(), "machine-a.json", locale);
+        ReportInput in = ReportInput::fromProfile(RegisterMap::builtin(), certMachineA(),
+                                                  "machine-a.json", locale);
         in.checklist = checklist();
         in.checklistFile = "machine-a.checklist.json";
         in.date = QDateTime(QDate(2024, 6, 1), QTime(12, 0));
@@ -92,7 +93,7 @@ private Q_SLOTS:
     void fingerprintIsStable()
     {
         const RegisterMap &map = RegisterMap::builtin();
-        const Profile a = machineA();
+        const Profile a = certMachineA();
         // The same values with the keys in reverse order in the file.
         QJsonObject o = QJsonDocument::fromJson(machineABytes()).object();
         const QJsonObject values = o.value("values").toObject();
@@ -215,11 +216,12 @@ private Q_SLOTS:
     void fromProfileReadsTheChecklistBesideIt()
     {
         const QString profile = dir.filePath("machine-b.json");
-        QCOMPARE(ProfileFile::save(profile, machineA(), RegisterMap::builtin()), QString());
-        ReportInput in = ReportInput::fromProfile(RegisterMap::builtin(), machineA(), profile, {});
+        QCOMPARE(ProfileFile::save(profile, certMachineA(), RegisterMap::builtin()), QString());
+        ReportInput in =
+            ReportInput::fromProfile(RegisterMap::builtin(), certMachineA(), profile, {});
         QVERIFY(!in.checklist && in.checklistErrors.isEmpty()); // none there
         QCOMPARE(ChecklistFile::save(ChecklistFile::pathFor(profile), checklist()), QString());
-        in = ReportInput::fromProfile(RegisterMap::builtin(), machineA(), profile, {});
+        in = ReportInput::fromProfile(RegisterMap::builtin(), certMachineA(), profile, {});
         QVERIFY(in.checklist.has_value());
         QVERIFY(*in.checklist == checklist());
         QCOMPARE(in.checklistFile, QStringLiteral("machine-b.checklist.json"));
@@ -227,7 +229,7 @@ private Q_SLOTS:
         QVERIFY(bad.open(QIODevice::WriteOnly));
         bad.write("{\"format\": \"stepcom-checklist\", \"schema\": 7}");
         bad.close();
-        in = ReportInput::fromProfile(RegisterMap::builtin(), machineA(), profile, {});
+        in = ReportInput::fromProfile(RegisterMap::builtin(), certMachineA(), profile, {});
         QVERIFY(!in.checklist);
         QCOMPARE(in.checklistErrors,
                  QStringList{"machine-b.checklist.json: checklist schema 7 is newer than this "

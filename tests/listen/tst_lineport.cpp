@@ -22,7 +22,7 @@ using namespace stepcom::test;
 
 namespace {
 
-bool writeFile(const QString &path, const QByteArray &content)
+bool writeSysfsFile(const QString &path, const QByteArray &content)
 {
     QDir().mkpath(QFileInfo(path).absolutePath());
     QFile f(path);
@@ -47,15 +47,16 @@ bool makeTty(const QString &sys, const QString &tty, const QString &driver, cons
     ok = ok && QFile::link(sys + QStringLiteral("/bus/drivers/") + driver,
                            port + QStringLiteral("/driver"));
     if (latency >= 0)
-        ok = ok && writeFile(port + QStringLiteral("/latency_timer"), QByteArray::number(latency));
+        ok = ok &&
+             writeSysfsFile(port + QStringLiteral("/latency_timer"), QByteArray::number(latency));
     if (usb) {
         ok = ok &&
-             writeFile(usbDevice + QStringLiteral("/idVendor"),
-                       ids.section(u':', 0, 0).toLatin1()) &&
-             writeFile(usbDevice + QStringLiteral("/idProduct"),
-                       ids.section(u':', 1, 1).toLatin1()) &&
-             writeFile(usbDevice + QStringLiteral("/product"), product.toUtf8()) &&
-             writeFile(usbDevice + QStringLiteral("/serial"), serial.toUtf8());
+             writeSysfsFile(usbDevice + QStringLiteral("/idVendor"),
+                            ids.section(u':', 0, 0).toLatin1()) &&
+             writeSysfsFile(usbDevice + QStringLiteral("/idProduct"),
+                            ids.section(u':', 1, 1).toLatin1()) &&
+             writeSysfsFile(usbDevice + QStringLiteral("/product"), product.toUtf8()) &&
+             writeSysfsFile(usbDevice + QStringLiteral("/serial"), serial.toUtf8());
     }
     return ok;
 }

@@ -14,7 +14,7 @@ namespace md = stepcom::motorderived;
 namespace {
 
 // The known answers were recorded from the code before it moved to core/motion.
-constexpr double kTol = 1e-9;
+constexpr double kTimingTol = 1e-9;
 
 MotorParameters factoryMotor()
 {
@@ -105,8 +105,8 @@ private Q_SLOTS:
         QCOMPARE(a.timeMs.value_or(-1), timeMs);
         QCOMPARE(a.points.size(), points.size());
         for (int i = 0; i < points.size(); ++i) {
-            QVERIFY2(std::abs(a.points.at(i).x - points.at(i).x()) <= kTol &&
-                         std::abs(a.points.at(i).y - points.at(i).y()) <= kTol,
+            QVERIFY2(std::abs(a.points.at(i).x - points.at(i).x()) <= kTimingTol &&
+                         std::abs(a.points.at(i).y - points.at(i).y()) <= kTimingTol,
                      qPrintable(QStringLiteral("point %1: (%2, %3)")
                                     .arg(i)
                                     .arg(a.points.at(i).x, 0, 'g', 17)
@@ -142,7 +142,7 @@ private Q_SLOTS:
         QFETCH(double, ms);
         const std::optional<double> got = md::moveTimeMs(pulses, startHz, accel, topHz);
         QVERIFY(got);
-        QVERIFY2(std::abs(*got - ms) <= kTol * std::max(1.0, ms),
+        QVERIFY2(std::abs(*got - ms) <= kTimingTol * std::max(1.0, ms),
                  qPrintable(QString::number(*got, 'g', 17)));
     }
 
@@ -162,7 +162,7 @@ private Q_SLOTS:
         QFETCH(double, accel);
         QFETCH(double, topHz);
         QFETCH(double, ms);
-        QVERIFY(std::abs(md::rampTimeMs(startHz, accel, topHz).value_or(-1) - ms) <= kTol);
+        QVERIFY(std::abs(md::rampTimeMs(startHz, accel, topHz).value_or(-1) - ms) <= kTimingTol);
     }
 
     // The continuous trapezoid, worked by hand: 400 Hz → 8000 Hz at 80 Hz/ms is 0.4 → 8 pulses
@@ -181,9 +181,9 @@ private Q_SLOTS:
 
         const Trapezoid tri(160, r); // peak √(0.4² + 0.08 × 160) = 3.6 pulses per ms
         QVERIFY(!tri.reachesTop());
-        QVERIFY(std::abs(tri.peakRate() - 3.6) <= kTol);
-        QVERIFY(std::abs(tri.durationMs() - 80) <= kTol);
-        QVERIFY(std::abs(tri.travelledAt(40) - 80) <= kTol); // half way at half time
+        QVERIFY(std::abs(tri.peakRate() - 3.6) <= kTimingTol);
+        QVERIFY(std::abs(tri.durationMs() - 80) <= kTimingTol);
+        QVERIFY(std::abs(tri.travelledAt(40) - 80) <= kTimingTol); // half way at half time
 
         const Trapezoid flat(3200, RampRates::fromHz(10000, 8000, 80)); // start above the top
         QCOMPARE(flat.rampMs(), 0.0);
@@ -199,7 +199,7 @@ private Q_SLOTS:
         QCOMPARE(pathTimeMs(5 * 3.14159265358979323846, 120, f).value_or(-1), 1602.0);
         QCOMPARE(pathTimeMs(72.111025509279784, 300, f).value_or(-1), 2972.0);
         QCOMPARE(pathTimeMs(0.5, 300, oddMotor()).value_or(-1), 205.0);
-        QVERIFY(std::abs(pathUnitsPerSecond(120, oddMotor()).value_or(-1) - 6.34) <= kTol);
+        QVERIFY(std::abs(pathUnitsPerSecond(120, oddMotor()).value_or(-1) - 6.34) <= kTimingTol);
         QVERIFY(!pathTimeMs(10, 300, motorNamed("no pitch")));
         QVERIFY(!pathTimeMs(0, 300, f));
     }
@@ -234,7 +234,7 @@ private Q_SLOTS:
         QFETCH(double, moveTimeMs);
         const MotorDerived d = md::derive(motorNamed(motor));
         auto near = [](const std::optional<double> &got, double want) {
-            return got && std::abs(*got - want) <= kTol * std::max(1.0, want);
+            return got && std::abs(*got - want) <= kTimingTol * std::max(1.0, want);
         };
         QVERIFY(near(d.pulsesPerRev, pulsesPerRev));
         QVERIFY(near(d.pulseRateHz, pulseRateHz));

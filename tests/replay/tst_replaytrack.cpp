@@ -20,14 +20,14 @@ using stepcom::test::LogBuilder;
 
 namespace {
 
-const RegisterMap &map()
+const RegisterMap &trackMap()
 {
     return RegisterMap::builtin();
 }
 
 const Parameter *param(const char *key)
 {
-    return map().find(QLatin1String(key));
+    return trackMap().find(QLatin1String(key));
 }
 
 // A 32-bit position as the controller's two words, low word first as the map decodes it.
@@ -181,7 +181,7 @@ private Q_SLOTS:
     // no closer than the spacing left.
     void aLongTrackIsThinnedInBoundedMemory()
     {
-        ReplayTrack track(map());
+        ReplayTrack track(trackMap());
         track.setMaxSamples(1000);
         ReplayDevice d;
         const Parameter *p1 = param("motor1.position");
@@ -296,7 +296,7 @@ private Q_SLOTS:
         QCOMPARE(log.stateAt(5).devices.value(2).requests, 0);
         QVERIFY(!log.stateAt(5).linkUp);
         // `stepcomctl replay --at --json` says the same.
-        const QJsonObject two = at.toJson(map())
+        const QJsonObject two = at.toJson(trackMap())
                                     .value(QStringLiteral("devices"))
                                     .toObject()
                                     .value(QStringLiteral("2"))

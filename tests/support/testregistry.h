@@ -55,7 +55,8 @@ std::unique_ptr<QObject> createSuite()
 
 #define STEPCOM_TEST(TestObject, App)                                                              \
     namespace {                                                                                    \
-    [[maybe_unused]] const bool stepcomTestRegistered = ::stepcom::test::registerTestSuite(        \
-        {__FILE__, ::stepcom::test::TestApp::App, &::stepcom::test::callInitMain<TestObject>,      \
-         &::stepcom::test::createSuite<TestObject>});                                              \
+    [[maybe_unused]] const bool stepcomTestRegistered##TestObject =                                \
+        ::stepcom::test::registerTestSuite({__FILE__, ::stepcom::test::TestApp::App,               \
+                                            &::stepcom::test::callInitMain<TestObject>,            \
+                                            &::stepcom::test::createSuite<TestObject>});           \
     }
