@@ -57,7 +57,7 @@ private Q_SLOTS:
 
         ProgramOptions plc;
         plc.timeoutMs = 60000;
-        const QString master = sourcePath(QStringLiteral("tests/listen/plc_master.py"));
+        const QString master = sourcePath(QStringLiteral("tests/fixtures/plc_master.py"));
         QProcess python;
         python.start(QStringLiteral("/usr/bin/python3"),
                      {master, paths.at(0), QStringLiteral("38400"), QStringLiteral("6")});

@@ -1,5 +1,5 @@
 // One visual language: the state colours (statetone.h) stay readable on the style's
-// light palette and on a dark one (tests/support/darkpalette.h): the machine strip's words
+// light palette and on a dark one (tests/fixtures/darkpalette.h): the machine strip's words
 // and lamps, and the sidebar's marks, keep a WCAG contrast of at least 3:1 against what they
 // are drawn on -- disconnected (the unknown grey) and connected (idle, referenced, answering),
 // and the status bar's link state.

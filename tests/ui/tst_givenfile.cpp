@@ -2,8 +2,8 @@
 // a profile is edited without a controller, a session log or a support bundle is replayed,
 // told by what the file holds; a file that is none of them, or cannot be read, is refused
 // with a message naming it, and the window stays as it was.
-#include "../replay/logbuilder.h"
 #include "base/language.h"
+#include "logbuilder.h"
 #include "profile/profiledocument.h"
 #include "replay/replaymode.h"
 #include "session/devicesession.h"

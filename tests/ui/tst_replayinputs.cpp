@@ -1,7 +1,7 @@
 // The window's replay of logs made for the purpose: a line of several controllers, a
 // big log cancelled while it is read, a dead line's thousands of timeouts, and files that are no
 // session log at all (each named by what is wrong, the window left as it was).
-#include "../replay/logbuilder.h"
+#include "logbuilder.h"
 #include "replay/replaybar.h"
 #include "replay/replayslider.h"
 #include "replayfixture.h"

@@ -4,8 +4,8 @@
 // ends at the moment's frame and goes back over the earlier ones, the device list shows each
 // device's own state (names from the log, running, not answering, restarted, errors); playing
 // on feeds the views instead of building them again.
-#include "../replay/logbuilder.h"
 #include "device/statusrecorder.h"
+#include "logbuilder.h"
 #include "pages/plotpage.h"
 #include "replay/replaybar.h"
 #include "replay/replayviews.h"

@@ -3,13 +3,13 @@
 // E-STOP) opens in replay mode, and at each chosen moment the store and the machine strip hold
 // exactly what the session held then (and what `stepcomctl replay --at` says); nothing writes;
 // the markers are the log's events; bundles replay; the support bundle dialog writes one.
-#include "../replay/logbuilder.h"
 #include "base/language.h"
 #include "base/page.h"
 #include "base/writechangesdialog.h"
 #include "device/statusrecorder.h"
 #include "dialogs/supportbundledialog.h"
 #include "enabledcontrols.h"
+#include "logbuilder.h"
 #include "map/factoryvalues.h"
 #include "pages/checklistpage.h"
 #include "profile/profiledocument.h"

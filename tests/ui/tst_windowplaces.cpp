@@ -5,10 +5,10 @@
 // position. While a replay or a profile file stands where the controller's values would and
 // nothing is connected, the E-STOP has nothing to stop: greyed, its tooltip says why, and F12
 // still reaches the session from every page and dialog.
-#include "../replay/logbuilder.h"
 #include "base/emergencystop.h"
 #include "base/language.h"
 #include "base/page.h"
+#include "logbuilder.h"
 #include "pages/connectionpage.h"
 #include "pages/motionpage.h"
 #include "replay/replaymode.h"
