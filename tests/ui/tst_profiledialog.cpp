@@ -309,7 +309,7 @@ private Q_SLOTS:
         QVERIFY(!actions.saveFromEditedAction()->isEnabled()); // nothing known yet
         // A broken file: every problem shown, no dialog, nothing written.
         QVERIFY(!actions.openFile(
-            test::sourcePath(QStringLiteral("tests/profile/corpus/unknown-key.json"))));
+            test::sourcePath(QStringLiteral("tests/core/profile/corpus/unknown-key.json"))));
         QVERIFY(actions.errorBox());
         QVERIFY(actions.errorBox()->detailedText().contains(
             QStringLiteral("unknown parameter \"motor3.speed\"")));

@@ -45,7 +45,7 @@ class TestCtlCommissioning : public QObject
     }
     QString machineA() const
     {
-        return sourcePath(QStringLiteral("tests/profile/data/machine-a.json"));
+        return sourcePath(QStringLiteral("tests/core/profile/data/machine-a.json"));
     }
     QString data() const { return dir.filePath(QStringLiteral("data")); }
     QString backups() const { return data() + QStringLiteral("/StepCom/stepcom/backups"); }

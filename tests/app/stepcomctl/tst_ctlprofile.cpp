@@ -63,7 +63,7 @@ class TestCtlProfile : public QObject
     }
     QString machineA() const
     {
-        return sourcePath(QStringLiteral("tests/profile/data/machine-a.json"));
+        return sourcePath(QStringLiteral("tests/core/profile/data/machine-a.json"));
     }
     // Machine A's values as StepCom with another map saves them, with `extra` (raw) on top.
     QString variant(const char *name, const QString &map, const QHash<QString, qint64> &extra)
@@ -146,7 +146,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("command");
         QTest::addColumn<QString>("path");
         QTest::addColumn<QString>("message");
-        const QString corpus = sourcePath(QStringLiteral("tests/profile/corpus/"));
+        const QString corpus = sourcePath(QStringLiteral("tests/core/profile/corpus/"));
         QTest::newRow("diff unknown key") << "diff" << corpus + "unknown-key.json"
                                           << "unknown parameter \"motor3.speed\"";
         // A same-map file with a key this map lacks is broken (another map's profile is not).
@@ -334,7 +334,7 @@ private Q_SLOTS:
         QCOMPARE(same.exitCode, 0);
         QVERIFY(same.out.contains(QStringLiteral("the two profiles hold the same values")));
 
-        const QString corpus = sourcePath(QStringLiteral("tests/profile/corpus/"));
+        const QString corpus = sourcePath(QStringLiteral("tests/core/profile/corpus/"));
         const Run bad = ctl(
             {QStringLiteral("diff"), corpus + "truncated.json", corpus + "empty.json"}, {}, false);
         QCOMPARE(bad.exitCode, 2);
@@ -475,7 +475,7 @@ private Q_SLOTS:
         QVERIFY(z.open(QIODevice::ReadOnly));
         QVERIFY(z.read(5) == "%PDF-");
 
-        const QString corpus = sourcePath(QStringLiteral("tests/profile/corpus/"));
+        const QString corpus = sourcePath(QStringLiteral("tests/core/profile/corpus/"));
         const Run bad = ctl({QStringLiteral("report"), QStringLiteral("--from"),
                              corpus + "missing-key.json", file("bad.pdf")},
                             {}, false);
