@@ -69,4 +69,21 @@ mkdir -p "$tmp/tree/ui/misc"
 echo "// planted" >"$tmp/tree/ui/misc/x.cpp"
 expect "ui/misc is on no floor"
 
+plant="a test folder for a room the core does not have"
+fresh
+mkdir -p "$tmp/tree/tests/core/misc"
+echo "// planted" >"$tmp/tree/tests/core/misc/tst_misc.cpp"
+expect "tests/core/misc tests no folder core/misc"
+
+plant="a window suite on no floor of tests/ui"
+fresh
+echo "// planted" >"$tmp/tree/tests/ui/tst_misc.cpp"
+expect "tests/ui/tst_misc.cpp sits in no room of tests/ui"
+
+plant="a test area outside the mirror of the sources"
+fresh
+mkdir -p "$tmp/tree/tests/cli"
+echo "// planted" >"$tmp/tree/tests/cli/tst_misc.cpp"
+expect "tests/cli is no room of the sources nor a kind of test"
+
 exit $failed
