@@ -26,6 +26,7 @@
 #include "session/devicesession.h"
 #include "window/mainwindow.h"
 #include "window/pendantactions.h"
+#include "window/windowprobe.h"
 
 #include <QAction>
 #include <QApplication>
@@ -118,7 +119,7 @@ private Q_SLOTS:
         DeviceSession session;
         MainWindow window(&session);
         window.show();
-        window.action(QStringLiteral("createSupportBundle"))->trigger();
+        WindowProbe(window).action(QStringLiteral("createSupportBundle"))->trigger();
         auto *dialog = window.findChild<SupportBundleDialog *>();
         QVERIFY(dialog);
         checkDialog(dialog, QStringLiteral("support bundle"));
@@ -134,7 +135,7 @@ private Q_SLOTS:
         DeviceSession session;
         MainWindow window(&session);
         window.show();
-        auto *page = qobject_cast<ConnectionPage *>(window.pages().first());
+        auto *page = qobject_cast<ConnectionPage *>(WindowProbe(window).pages().first());
         BusScanDialog *dialog = page->openBusScan();
         QVERIFY(dialog);
         checkDialog(dialog, QStringLiteral("bus scan"));
@@ -210,7 +211,8 @@ private Q_SLOTS:
         DeviceSession session;
         MainWindow window(&session);
         window.show();
-        GuideWindow *guide = window.openGuide(QStringLiteral("stepcom::ConnectionPage"));
+        GuideWindow *guide =
+            WindowProbe(window).openGuide(QStringLiteral("stepcom::ConnectionPage"));
         QVERIFY(guide);
         QVERIFY2(!guide->file().isEmpty(), "the guide was not found");
         checkDialog(guide, QStringLiteral("guide"));

@@ -12,6 +12,7 @@
 #include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/devicelistsettings.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QAction>
 #include <QApplication>
@@ -86,7 +87,7 @@ private Q_SLOTS:
         test::connectToSimulator(session);
         SimHost *host = test::simHost(session);
 
-        QAction *action = window.action(QStringLiteral("assignIds"));
+        QAction *action = WindowProbe(window).action(QStringLiteral("assignIds"));
         QVERIFY(action);
         QVERIFY(!action->text().isEmpty());
         action->trigger();
@@ -106,7 +107,7 @@ private Q_SLOTS:
         QCOMPARE(dialog->rowTexts(0), (QStringList{"2", "X table"}));
         QCOMPARE(host->devices().at(0)->deviceId(), 2);
         // On the window's device list, with its name, and the list is shown.
-        DeviceListDock *dock = window.deviceListDock();
+        DeviceListDock *dock = WindowProbe(window).deviceListDock();
         QVERIFY(dock->isVisible());
         QCOMPARE(dock->nameOf(2), QStringLiteral("X table"));
         QCOMPARE(session.deviceIds(), QList<int>{2});
@@ -264,7 +265,7 @@ private Q_SLOTS:
         window.show();
         test::connectToSimulator(session);
         SimDevice *sim = test::simHost(session)->device();
-        window.action(QStringLiteral("assignIds"))->trigger();
+        WindowProbe(window).action(QStringLiteral("assignIds"))->trigger();
         auto *dialog = window.findChild<IdAssistantDialog *>();
         QVERIFY(dialog);
         auto *box = dialog->findChild<QCheckBox *>(QStringLiteral("saveToFlash"));
@@ -299,7 +300,7 @@ private Q_SLOTS:
         QVERIFY(test::simHost(session)->device()->command(QStringLiteral("save_to_flash")));
         QVERIFY(QFileInfo::exists(flash));
 
-        QAction *reset = window.action(QStringLiteral("resetSimulator"));
+        QAction *reset = WindowProbe(window).action(QStringLiteral("resetSimulator"));
         QVERIFY(reset && reset->isEnabled() && !reset->text().isEmpty());
         reset->trigger();
         QCOMPARE(session.linkState(), DeviceSession::LinkState::Disconnected);

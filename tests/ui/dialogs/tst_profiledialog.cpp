@@ -11,6 +11,7 @@
 #include "testpaths.h"
 #include "window/mainwindow.h"
 #include "window/profileactions.h"
+#include "window/windowprobe.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -354,13 +355,17 @@ private Q_SLOTS:
         MainWindow w(session.get());
         for (const char *name : {"openProfile", "saveProfileFromDevice", "saveProfileFromEdited",
                                  "commissioningReport"}) {
-            QAction *a = w.action(QLatin1String(name));
+            QAction *a = WindowProbe(w).action(QLatin1String(name));
             QVERIFY2(a, name);
             QVERIFY2(!a->text().isEmpty(), name);
         }
-        QVERIFY(w.profileActions());
-        QVERIFY(!w.action(QStringLiteral("saveProfileFromDevice"))->isEnabled()); // offline
-        QVERIFY(w.action(QStringLiteral("openProfile"))->isEnabled()); // opening never writes
+        QVERIFY(WindowProbe(w).profileActions());
+        QVERIFY(!WindowProbe(w)
+                     .action(QStringLiteral("saveProfileFromDevice"))
+                     ->isEnabled()); // offline
+        QVERIFY(WindowProbe(w)
+                    .action(QStringLiteral("openProfile"))
+                    ->isEnabled()); // opening never writes
     }
 
     void reportFromTheWindow()

@@ -11,6 +11,7 @@
 #include "simsession.h"
 #include "widgets/fields/aboutbox.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QApplication>
 #include <QLabel>
@@ -127,8 +128,8 @@ private Q_SLOTS:
             QTRY_VERIFY(session.linkStats().answers > 0);
         }
         QStringList problems;
-        for (int i = 0; i < window.pages().size(); ++i) {
-            window.showPage(i);
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {
+            WindowProbe(window).showPage(i);
             settle();
             for (QLabel *label : window.findChildren<QLabel *>()) {
                 if (!label->isVisible())
@@ -136,7 +137,7 @@ private Q_SLOTS:
                 const QString text = plain(label);
                 if (const double words = paragraphWords(text); words > kMaxWords)
                     problems << QStringLiteral("%1: %2 words: %3…")
-                                    .arg(window.pages().at(i)->title())
+                                    .arg(WindowProbe(window).pages().at(i)->title())
                                     .arg(words)
                                     .arg(text.left(70));
             }
@@ -163,9 +164,9 @@ private Q_SLOTS:
             QCOMPARE(box->button()->accessibleName(), QStringLiteral("About this page"));
         }
         AboutBox *box = boxes.first();
-        for (int i = 0; i < window.pages().size(); ++i) {
-            if (window.pages().at(i)->isAncestorOf(box))
-                window.showPage(i);
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {
+            if (WindowProbe(window).pages().at(i)->isAncestorOf(box))
+                WindowProbe(window).showPage(i);
         }
         QVERIFY(box->isVisible());
         QVERIFY(!box->guideButton()->isVisible());

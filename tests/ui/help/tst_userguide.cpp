@@ -9,6 +9,7 @@
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QApplication>
 #include <QFile>
@@ -91,13 +92,13 @@ private Q_SLOTS:
         DeviceSession session;
         MainWindow window(&session);
         window.show();
-        QAction *help = window.action(QStringLiteral("userGuide"));
+        QAction *help = WindowProbe(window).action(QStringLiteral("userGuide"));
         QVERIFY(help);
         QCOMPARE(help->shortcut(), QKeySequence(QKeySequence::HelpContents));
-        for (int i = 0; i < window.pages().size(); ++i) {
-            window.showPage(i);
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {
+            WindowProbe(window).showPage(i);
             const QString topic =
-                QString::fromLatin1(window.pages().at(i)->metaObject()->className());
+                QString::fromLatin1(WindowProbe(window).pages().at(i)->metaObject()->className());
             QVERIFY2(UserGuide::topics().contains(topic), qPrintable(topic + " has no section"));
             help->trigger();
             auto *guide = window.findChild<GuideWindow *>();
@@ -106,7 +107,7 @@ private Q_SLOTS:
             QCOMPARE(guide->file(), sourceGuide(language));
             QCOMPARE(guide->currentHeading(), UserGuide::heading(topic, language));
             // The window's title is the page and nothing else (the platform adds the program).
-            QCOMPARE(window.windowTitle(), window.pages().at(i)->title());
+            QCOMPARE(window.windowTitle(), WindowProbe(window).pages().at(i)->title());
         }
         // Pictures are found beside the guide.
         auto *guide = window.findChild<GuideWindow *>();
@@ -122,7 +123,7 @@ private Q_SLOTS:
     {
         DeviceSession session;
         MainWindow window(&session);
-        GuideWindow *guide = window.openGuide();
+        GuideWindow *guide = WindowProbe(window).openGuide();
         QCOMPARE(guide->currentHeading(), QStringLiteral("The Connection page"));
         Q_EMIT guide->browser()->anchorClicked(
             QUrl(QStringLiteral("#the-serial-port-permission-trap-linux")));
@@ -142,7 +143,7 @@ private Q_SLOTS:
     {
         DeviceSession session;
         MainWindow window(&session);
-        QVERIFY(window.action(QStringLiteral("whatsThis")));
+        QVERIFY(WindowProbe(window).action(QStringLiteral("whatsThis")));
         const auto fields = window.findChildren<ParameterField *>();
         QVERIFY(!fields.isEmpty());
         int withForm = 0;

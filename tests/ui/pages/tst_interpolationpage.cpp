@@ -12,6 +12,7 @@
 #include "widgets/plots/interpolationpreview.h"
 #include "widgets/plots/xyplot.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include "darkpalette.h"
 
@@ -339,16 +340,17 @@ private Q_SLOTS:
         window.show();
         InterpolationPage *page = nullptr;
         int index = -1;
-        for (int i = 0; i < window.pages().size(); ++i) {
-            if (auto *p = qobject_cast<InterpolationPage *>(window.pages().at(i))) {
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {
+            if (auto *p = qobject_cast<InterpolationPage *>(WindowProbe(window).pages().at(i))) {
                 page = p;
                 index = i;
             }
         }
         QVERIFY(page);
-        QVERIFY(std::any_of(window.pages().cbegin(), window.pages().cend(),
+        QVERIFY(std::any_of(WindowProbe(window).pages().cbegin(),
+                            WindowProbe(window).pages().cend(),
                             [](Page *p) { return qobject_cast<ModesPage *>(p) != nullptr; }));
-        window.showPage(index);
+        WindowProbe(window).showPage(index);
         connectSim();
         PathEditor *arc = page->arcEditor();
         const QList<QPair<const char *, const char *>> values = {
@@ -373,7 +375,7 @@ private Q_SLOTS:
         Language::instance().setLanguage(QStringLiteral("zh_CN"));
         QCOMPARE(page->title(), page->title()); // retranslated without a crash
         window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-zh.png")));
-        window.showPage(index + 1);
+        WindowProbe(window).showPage(index + 1);
         QTest::qWait(200); // the layouts settle
         window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-modes-zh.png")));
         Language::instance().setLanguage(QStringLiteral("en"));

@@ -18,6 +18,7 @@
 #include "widgets/motion/jogbutton.h"
 #include "widgets/motion/jogpanel.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include "darkpalette.h"
 
@@ -115,11 +116,11 @@ private Q_SLOTS:
         MainWindow window(session.get());
         showActive(&window);
         connectSim();
-        MotionPage *page = window.motionPage();
+        MotionPage *page = WindowProbe(window).motionPage();
         QVERIFY(page);
         session->jog()->setSettleMs(100);
-        window.showPage(int(window.pages().indexOf(page)));
-        QCOMPARE(window.currentPage(), page);
+        WindowProbe(window).showPage(int(WindowProbe(window).pages().indexOf(page)));
+        QCOMPARE(WindowProbe(window).currentPage(), page);
         JogButton *forward = page->panel(1)->forwardButton();
 
         QTest::mousePress(forward, Qt::LeftButton);
@@ -133,16 +134,17 @@ private Q_SLOTS:
         showActive(&window);
         QTest::mousePress(forward, Qt::LeftButton);
         QTRY_VERIFY(sim()->running(1));
-        window.showPage(0);
+        WindowProbe(window).showPage(0);
         QTRY_VERIFY(!sim()->running(1));
         QTRY_COMPARE(session->jog()->state(1), State::Idle);
-        QVERIFY(window.messageView()
+        QVERIFY(WindowProbe(window)
+                    .messageView()
                     ->texts()
                     .join(QLatin1Char('\n'))
                     .contains(QLatin1String("Motor 1 stopped")));
 
         // Closing the window with a jog held: the stop goes out before it goes away.
-        window.showPage(int(window.pages().indexOf(page)));
+        WindowProbe(window).showPage(int(WindowProbe(window).pages().indexOf(page)));
         QTest::mousePress(page->panel(2)->reverseButton(), Qt::LeftButton);
         QTRY_VERIFY(sim()->running(2));
         window.close();

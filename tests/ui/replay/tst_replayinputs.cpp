@@ -6,6 +6,7 @@
 #include "replay/replayslider.h"
 #include "replayfixture.h"
 #include "widgets/docks/devicelistdock.h"
+#include "window/windowprobe.h"
 
 #include <QComboBox>
 #include <QProgressDialog>
@@ -78,7 +79,7 @@ private Q_SLOTS:
         QCOMPARE(replay()->device(), 2);
         QCOMPARE(store()->deviceValue(speed->key), 450);
         // The device list shows the log's devices, and a click there shows one too.
-        DeviceListDock *list = window->deviceListDock();
+        DeviceListDock *list = WindowProbe(*window).deviceListDock();
         QVERIFY(list->isReplay());
         QCOMPARE(list->table()->rowCount(), 2);
         QCOMPARE(list->rowTexts(0).value(0), QStringLiteral("1"));

@@ -16,6 +16,7 @@
 #include "session/stepmove.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
+#include "window/windowprobe.h"
 
 #include <QComboBox>
 #include <QTest>
@@ -31,9 +32,9 @@ class TestReplayRecorded : public test::ReplayFixture
     void writeEdits()
     {
         QSignalSpy written(session.get(), &DeviceSession::writeFinished);
-        window->writeChanges();
-        QTRY_VERIFY(window->writeDialog());
-        window->writeDialog()->accept();
+        WindowProbe(*window).writeChanges();
+        QTRY_VERIFY(WindowProbe(*window).writeDialog());
+        WindowProbe(*window).writeDialog()->accept();
         QVERIFY(written.wait(15000) || !written.isEmpty());
     }
     // The moment of that name and its time in the log.
@@ -75,7 +76,7 @@ private Q_SLOTS:
         logPath = dir.filePath(QStringLiteral("logs/recorded.log"));
         QDir().mkpath(dir.filePath(QStringLiteral("logs")));
         openWindow();
-        window->sessionLog()->setFile(logPath);
+        WindowProbe(*window).sessionLog()->setFile(logPath);
         // The controller, with what goes wrong on site: output 1's coil answers 450 ms late (as
         // firmware writing its flash first), later its port hangs up and its 24 V goes off.
         host = std::make_unique<SimHost>();
@@ -185,7 +186,7 @@ private Q_SLOTS:
 
         session->disconnectFrom();
         QTRY_VERIFY(!session->isConnected());
-        window->sessionLog()->setFile(QString());
+        WindowProbe(*window).sessionLog()->setFile(QString());
         if (qEnvironmentVariableIsSet("REPLAY_KEEP_LOG"))
             QFile::copy(logPath, qEnvironmentVariable("REPLAY_KEEP_LOG"));
     }

@@ -14,6 +14,7 @@
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
 #include "widgets/plots/xyplot.h"
+#include "window/windowprobe.h"
 
 #include <QDockWidget>
 #include <QPushButton>
@@ -49,7 +50,7 @@ class TestReplayViews : public test::ReplayFixture
         return QPointF(10.0 * i / param("position", 1)->scale,
                        5.0 * i / param("position", 2)->scale);
     }
-    TrafficModel *traffic() const { return window->trafficView()->model(); }
+    TrafficModel *traffic() const { return WindowProbe(*window).trafficView()->model(); }
     const TrafficEntry &lastRow() const
     {
         traffic()->flush();
@@ -111,7 +112,7 @@ private Q_SLOTS:
         QCOMPARE(recorder->last().positions.value(0), positionAt(cycle).x());
         QCOMPARE(recorder->last().positions.value(1), positionAt(cycle).y());
         QCOMPARE(recorder->last().running.value(0), qint8(1));
-        const XYPlot *xy = window->plotPage()->xyPlot();
+        const XYPlot *xy = WindowProbe(*window).plotPage()->xyPlot();
         QVERIFY(xy->traceCount() > 1000);
         QCOMPARE(xy->trace().first(), positionAt(0));
         QCOMPARE(xy->trace().last(), positionAt(cycle));
@@ -154,12 +155,12 @@ private Q_SLOTS:
         for (int i = 0; i < 16000; ++i) // 32 000 lines: three times what the view takes at once
             b.read(1, speed, {quint16(i)});
         QVERIFY(openReplay(b.save(dir, QStringLiteral("long.log"))));
-        for (QWidget *w = window->trafficView(); w; w = w->parentWidget()) {
+        for (QWidget *w = WindowProbe(*window).trafficView(); w; w = w->parentWidget()) {
             if (auto *dock = qobject_cast<QDockWidget *>(w))
                 dock->show();
         }
         seek(replay()->log().durationMs());
-        TrafficView *view = window->trafficView();
+        TrafficView *view = WindowProbe(*window).trafficView();
         QVERIFY(view->earlierButton()->isVisibleTo(window.get()));
         QCOMPARE(clock(lastRow()), QStringLiteral("22:15:19.990"));
         QCOMPARE(traffic()->rowCount(), ReplayViews::kTrafficLines);
@@ -213,7 +214,7 @@ private Q_SLOTS:
         QVERIFY(recorder->size() > samples);
         QCOMPARE(recorder->last().positions.value(0), positionAt(852).x());
         // The XY trace follows (the plot page feeds it from the recorder, as when live).
-        const XYPlot *xy = window->plotPage()->xyPlot();
+        const XYPlot *xy = WindowProbe(*window).plotPage()->xyPlot();
         QTRY_COMPARE(xy->trace().last(), positionAt(852));
         QCOMPARE(xy->trace().first(), positionAt(0));
         // A jump back is shown afresh.
@@ -227,7 +228,7 @@ private Q_SLOTS:
     void theDeviceListShowsEachDevicesState()
     {
         QVERIFY(openReplay(logPath));
-        DeviceListDock *list = window->deviceListDock();
+        DeviceListDock *list = WindowProbe(*window).deviceListDock();
         seek(30 * 1000 + 50);
         QVERIFY(list->isReplay());
         QCOMPARE(list->table()->rowCount(), 2);

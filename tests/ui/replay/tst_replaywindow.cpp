@@ -32,6 +32,7 @@
 #include "widgets/fields/elidedlabel.h"
 #include "window/mainwindow.h"
 #include "window/offlineactions.h"
+#include "window/windowprobe.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -68,7 +69,7 @@ private Q_SLOTS:
         logPath = dir.filePath(QStringLiteral("logs/session.log"));
         QDir().mkpath(dir.filePath(QStringLiteral("logs")));
         openWindow();
-        window->sessionLog()->setFile(logPath);
+        WindowProbe(*window).sessionLog()->setFile(logPath);
 
         // 1. connect and read everything
         test::connectToSimulator(*session);
@@ -78,9 +79,10 @@ private Q_SLOTS:
         const qint64 speed = *store()->deviceValue(key("speed"));
         QVERIFY(store()->edit(key("speed"), speed + 17).isEmpty());
         QSignalSpy written(session.get(), &DeviceSession::writeFinished);
-        window->writeChanges(); // the window's dialog, confirmed: a user line of the log
-        QTRY_VERIFY(window->writeDialog());
-        window->writeDialog()->accept();
+        WindowProbe(*window)
+            .writeChanges(); // the window's dialog, confirmed: a user line of the log
+        QTRY_VERIFY(WindowProbe(*window).writeDialog());
+        WindowProbe(*window).writeDialog()->accept();
         QVERIFY(written.wait(10000));
         QCOMPARE(store()->deviceValue(key("speed")), speed + 17);
         captureAtCycleEnd(QStringLiteral("written"), true);
@@ -90,7 +92,7 @@ private Q_SLOTS:
         QVERIFY(stepped.wait(20000));
         QVERIFY2(stepped.at(0).at(0).value<StepMoveResult>().ok(),
                  qPrintable(stepped.at(0).at(0).value<StepMoveResult>().text));
-        QTRY_COMPARE(window->machineStrip()->motion(1), MachineStrip::Motion::Idle);
+        QTRY_COMPARE(WindowProbe(*window).machineStrip()->motion(1), MachineStrip::Motion::Idle);
         captureAtCycleEnd(QStringLiteral("moved"), true);
         // 4. a long move, seen running, then E-STOP
         QCOMPARE(session->stepMove()->start({StepMoveRequest::Kind::By, 1, 500.0, 0}), QString());
@@ -102,17 +104,18 @@ private Q_SLOTS:
         QCOMPARE(stopped.at(0).at(0).toString(), QStringLiteral("estop"));
         QVERIFY(stopped.at(0).at(1).toBool());
         QTRY_VERIFY_WITH_TIMEOUT(store()->deviceValue(key("running")) == 0, 10000);
-        QTRY_COMPARE(window->machineStrip()->motion(1), MachineStrip::Motion::Idle);
+        QTRY_COMPARE(WindowProbe(*window).machineStrip()->motion(1), MachineStrip::Motion::Idle);
         captureSettled(QStringLiteral("stopped"));
         // 5. a page chosen and a checklist result (skipped), user lines of the log
-        window->sidebar()->setCurrentPage(2);
-        auto *step = window->checklistPage()->stepWidget(QStringLiteral("motor1.direction"));
+        WindowProbe(*window).sidebar()->setCurrentPage(2);
+        auto *step =
+            WindowProbe(*window).checklistPage()->stepWidget(QStringLiteral("motor1.direction"));
         QVERIFY(step);
         step->skipButton()->click();
         session->disconnectFrom();
         QTRY_VERIFY(!session->isConnected());
         QVERIFY(!store()->deviceValue(key("position")).has_value());
-        window->sessionLog()->setFile(QString());
+        WindowProbe(*window).sessionLog()->setFile(QString());
         if (qEnvironmentVariableIsSet("REPLAY_KEEP_LOG"))
             QFile::copy(logPath, qEnvironmentVariable("REPLAY_KEEP_LOG"));
     }
@@ -207,7 +210,7 @@ private Q_SLOTS:
             return QString();
         };
         QCOMPARE(userLine(u"page 3"),
-                 QStringLiteral("page 3: %1").arg(window->pages().at(2)->title()));
+                 QStringLiteral("page 3: %1").arg(WindowProbe(*window).pages().at(2)->title()));
         QVERIFY2(userLine(u"write changes: ")
                      .startsWith(QStringLiteral("write changes: %1 = ").arg(key("speed"))),
                  qPrintable(userLine(u"write changes")));
@@ -241,7 +244,7 @@ private Q_SLOTS:
         const int row = int(estop - events.cbegin());
         bar->eventList()->setCurrentIndex(row);
         Q_EMIT bar->eventList()->activated(row);
-        MachineStrip *strip = window->machineStrip();
+        MachineStrip *strip = WindowProbe(*window).machineStrip();
         QCOMPARE(strip->linkLabel()->text(), QStringLiteral("answering"));
         const QString line = static_cast<ElidedLabel *>(strip->lineLabel())->fullText();
         QVERIFY2(line.startsWith(QStringLiteral("replay: ")), qPrintable(line));
@@ -265,15 +268,15 @@ private Q_SLOTS:
             {"closeReplay", "openSessionLog", "closeReplayButton", "replayPlay", "replayBackFrame",
              "replayNextFrame", "replayBackEvent", "replayNextEvent"});
         QVERIFY2(enabled.isEmpty(), qPrintable(enabled.join(QLatin1Char('\n'))));
-        QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
-        QVERIFY(!window->action(QStringLiteral("saveToFlash"))->isEnabled());
-        QVERIFY(!window->action(QStringLiteral("readAll"))->isEnabled());
+        QVERIFY(!WindowProbe(*window).action(QStringLiteral("writeChanges"))->isEnabled());
+        QVERIFY(!WindowProbe(*window).action(QStringLiteral("saveToFlash"))->isEnabled());
+        QVERIFY(!WindowProbe(*window).action(QStringLiteral("readAll"))->isEnabled());
         // Nothing to stop: the E-STOP is greyed and says why; F12 still reaches the session,
         // which says that nothing was sent.
-        QVERIFY(!window->action(QStringLiteral("emergencyStop"))->isEnabled());
-        QVERIFY(!window->emergencyStopButton()->isEnabled());
-        QVERIFY(
-            window->emergencyStopButton()->toolTip().contains(QStringLiteral("Nothing to stop")));
+        QVERIFY(!WindowProbe(*window).action(QStringLiteral("emergencyStop"))->isEnabled());
+        QVERIFY(!WindowProbe(*window).emergencyStopButton()->isEnabled());
+        QVERIFY(WindowProbe(*window).emergencyStopButton()->toolTip().contains(
+            QStringLiteral("Nothing to stop")));
         QSignalSpy said(session.get(), &DeviceSession::message);
         QTest::keyClick(window.get(), Qt::Key_F12);
         QVERIFY(said.size() >= 1);
@@ -288,7 +291,7 @@ private Q_SLOTS:
         QVERIFY(openReplay(logPath));
         replay()->seek(replay()->log().durationMs());
         QVERIFY(store()->deviceValue(key("position")).has_value());
-        window->action(QStringLiteral("closeReplay"))->trigger();
+        WindowProbe(*window).action(QStringLiteral("closeReplay"))->trigger();
         QVERIFY(!replay()->isActive());
         QVERIFY(!store()->isReplay());
         QVERIFY(!store()->deviceValue(key("position")).has_value());
@@ -338,7 +341,7 @@ private Q_SLOTS:
     // said, and it replays (the round trip).
     void supportBundleFromTheHelpMenu()
     {
-        window->action(QStringLiteral("createSupportBundle"))->trigger();
+        WindowProbe(*window).action(QStringLiteral("createSupportBundle"))->trigger();
         auto *dialog = window->findChild<SupportBundleDialog *>();
         QVERIFY(dialog);
         QVERIFY(dialog->isVisible());
@@ -411,14 +414,14 @@ private Q_SLOTS:
                      profile, Profile::fromValues(map, FactoryValues::writable(map), false), map),
                  QString());
         QVERIFY(openReplay(logPath));
-        QVERIFY(window->offlineActions()->openFile(profile));
+        QVERIFY(WindowProbe(*window).offlineActions()->openFile(profile));
         QVERIFY(!replay()->isActive());
         QVERIFY(store()->isFile());
         QVERIFY(!replay()->banner()->isVisibleTo(window.get()));
         QSignalSpy failed(replay(), &ReplayMode::failed);
         QVERIFY(!replay()->openPath(logPath));
         QVERIFY(failed.at(0).at(0).toString().contains(QStringLiteral("profile file")));
-        QVERIFY(window->offlineActions()->closeFile());
+        QVERIFY(WindowProbe(*window).offlineActions()->closeFile());
         QVERIFY(openReplay(logPath));
     }
 

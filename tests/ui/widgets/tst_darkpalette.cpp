@@ -14,6 +14,7 @@
 #include "widgets/fields/led.h"
 #include "widgets/fields/statetone.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QApplication>
 #include <QLabel>
@@ -125,18 +126,20 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        checkStrip(window.machineStrip(), QStringLiteral("disconnected"));
-        PageSidebar *sidebar = window.sidebar();
+        checkStrip(WindowProbe(window).machineStrip(), QStringLiteral("disconnected"));
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
         const QColor base = sidebar->viewport()->palette().color(QPalette::Base);
         check(QStringLiteral("sidebar edits"), sidebar->editColour(), base);
         check(QStringLiteral("sidebar page waiting for a controller"), sidebar->offlineColour(),
               base);
         check(QStringLiteral("sidebar checklist"),
-              sidebar->progressColour(int(window.pages().indexOf(window.checklistPage()))), base);
+              sidebar->progressColour(
+                  int(WindowProbe(window).pages().indexOf(WindowProbe(window).checklistPage()))),
+              base);
         test::connectToSimulator(session);
         QTRY_VERIFY(session.linkStats().answers > 0);
-        QTRY_VERIFY(window.machineStrip()->motion(1) != MachineStrip::Motion::Unknown);
-        checkStrip(window.machineStrip(), QStringLiteral("connected"));
+        QTRY_VERIFY(WindowProbe(window).machineStrip()->motion(1) != MachineStrip::Motion::Unknown);
+        checkStrip(WindowProbe(window).machineStrip(), QStringLiteral("connected"));
         // The status bar says the link's state in the same colours.
         auto *link = window.findChild<LinkStatus *>();
         QVERIFY(link);

@@ -15,6 +15,7 @@
 #include "widgets/plots/positionplot.h"
 #include "widgets/plots/xyplot.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include "testmaps.h"
 
@@ -369,24 +370,24 @@ private Q_SLOTS:
     {
         MainWindow window(session.get());
         window.show();
-        QVERIFY(window.statusDock());
+        QVERIFY(WindowProbe(window).statusDock());
         // Off at first: the machine strip shows the same; the View menu brings it back.
-        QVERIFY(!window.statusDock()->isVisible());
-        window.statusDock()->toggleViewAction()->trigger();
-        QVERIFY(window.statusDock()->isVisible());
+        QVERIFY(!WindowProbe(window).statusDock()->isVisible());
+        WindowProbe(window).statusDock()->toggleViewAction()->trigger();
+        QVERIFY(WindowProbe(window).statusDock()->isVisible());
         // Beside the page on a wide screen; on a narrow one (the offscreen default is 800 px
         // wide) in the bottom tabs, so the page keeps its width.
         const bool wide = window.screen()->availableGeometry().width() >=
                           window.centralWidget()->minimumSizeHint().width() +
-                              window.statusDock()->minimumSizeHint().width() + 20;
-        QCOMPARE(window.dockWidgetArea(window.statusDock()),
+                              WindowProbe(window).statusDock()->minimumSizeHint().width() + 20;
+        QCOMPARE(window.dockWidgetArea(WindowProbe(window).statusDock()),
                  wide ? Qt::RightDockWidgetArea : Qt::BottomDockWidgetArea);
         bool found = false;
-        for (Page *p : window.pages())
+        for (Page *p : WindowProbe(window).pages())
             found = found || qobject_cast<PlotPage *>(p);
         QVERIFY(found);
-        window.statusDock()->toggleViewAction()->trigger();
-        QVERIFY(!window.statusDock()->isVisible());
+        WindowProbe(window).statusDock()->toggleViewAction()->trigger();
+        QVERIFY(!WindowProbe(window).statusDock()->isVisible());
     }
 
     void languageSwitchRetranslates()
@@ -425,9 +426,9 @@ private Q_SLOTS:
         MainWindow window(session.get());
         window.resize(1400, 800);
         window.show();
-        for (int i = 0; i < window.pages().size(); ++i) {
-            if (qobject_cast<PlotPage *>(window.pages().at(i)))
-                window.showPage(i);
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {
+            if (qobject_cast<PlotPage *>(WindowProbe(window).pages().at(i)))
+                WindowProbe(window).showPage(i);
         }
         // One motor at a time (the controller runs one jog at a time): an L-shaped path.
         for (const char *key : {"motor1.forward", "motor2.forward", "motor1.reverse"}) {

@@ -15,6 +15,7 @@
 #include "widgets/checklist/checkliststepwidget.h"
 #include "widgets/docks/pagesidebar.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QAccessible>
 #include <QApplication>
@@ -37,8 +38,8 @@ class TestSidebar : public QObject
 
     static int pageIndex(MainWindow &window, const char *className)
     {
-        for (int i = 0; i < window.pages().size(); ++i) {
-            if (window.pages().at(i)->inherits(className))
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {
+            if (WindowProbe(window).pages().at(i)->inherits(className))
                 return i;
         }
         return -1;
@@ -58,7 +59,7 @@ private Q_SLOTS:
     {
         DeviceSession session;
         MainWindow window(&session);
-        PageSidebar *sidebar = window.sidebar();
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
         QVERIFY(sidebar);
         QStringList rows;
         for (int r = 0; r < sidebar->count(); ++r) {
@@ -74,8 +75,8 @@ private Q_SLOTS:
                               "# Move and run", "Interpolation", "Plots",
                               "# Check, save and report", "Commissioning checklist", "Device"}));
         // Every page once, by its title.
-        for (int i = 0; i < window.pages().size(); ++i)
-            QCOMPARE(sidebar->itemOf(i)->text(), window.pages().at(i)->title());
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i)
+            QCOMPARE(sidebar->itemOf(i)->text(), WindowProbe(window).pages().at(i)->title());
     }
 
     // Drawn from the SVG at every scale: 24×24 logical, 36 and 48 device pixels at ×1.5, ×2.
@@ -83,13 +84,13 @@ private Q_SLOTS:
     {
         DeviceSession session;
         MainWindow window(&session);
-        for (int i = 0; i < window.pages().size(); ++i) {
-            const QString file =
-                QStringLiteral(":/sidebar/%1.svg").arg(window.pages().at(i)->iconName());
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {
+            const QString file = QStringLiteral(":/sidebar/%1.svg")
+                                     .arg(WindowProbe(window).pages().at(i)->iconName());
             QSvgRenderer svg(file);
             QVERIFY2(svg.isValid(), qPrintable(file));
             QCOMPARE(svg.viewBoxF(), QRectF(0, 0, 24, 24));
-            const QIcon icon = window.sidebar()->itemOf(i)->icon();
+            const QIcon icon = WindowProbe(window).sidebar()->itemOf(i)->icon();
             QVERIFY2(!icon.isNull(), qPrintable(file));
             for (const qreal scale : {1.0, 1.5, 2.0}) {
                 const QPixmap p = icon.pixmap(QSize(24, 24), scale);
@@ -112,25 +113,25 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        PageSidebar *sidebar = window.sidebar();
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
         sidebar->setFocus();
-        window.showPage(0);
-        QCOMPARE(window.currentPage(), window.pages().at(0));
+        WindowProbe(window).showPage(0);
+        QCOMPARE(WindowProbe(window).currentPage(), WindowProbe(window).pages().at(0));
         QTest::keyClick(sidebar, Qt::Key_Down); // over the "Set up" header
-        QCOMPARE(window.currentPage()->title(), QStringLiteral("Motor 1"));
+        QCOMPARE(WindowProbe(window).currentPage()->title(), QStringLiteral("Motor 1"));
         QTest::keyClick(sidebar, Qt::Key_Up);
-        QCOMPARE(window.currentPage()->title(), QStringLiteral("Connection"));
+        QCOMPARE(WindowProbe(window).currentPage()->title(), QStringLiteral("Connection"));
         QTest::keyClick(sidebar, Qt::Key_End);
-        QCOMPARE(window.currentPage()->title(), QStringLiteral("Device"));
+        QCOMPARE(WindowProbe(window).currentPage()->title(), QStringLiteral("Device"));
         QTest::keyClick(sidebar, Qt::Key_Home);
-        QCOMPARE(window.currentPage()->title(), QStringLiteral("Connection"));
+        QCOMPARE(WindowProbe(window).currentPage()->title(), QStringLiteral("Connection"));
         // What the accessibility bus reads: each page by its title.
         QAccessibleInterface *list = QAccessible::queryAccessibleInterface(sidebar);
         QVERIFY(list);
         QStringList names;
         for (int c = 0; c < list->childCount(); ++c)
             names << list->child(c)->text(QAccessible::Name);
-        for (const Page *page : window.pages())
+        for (const Page *page : WindowProbe(window).pages())
             QVERIFY2(names.contains(page->title()), qPrintable(names.join(QLatin1Char('|'))));
     }
 
@@ -144,35 +145,35 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        PageSidebar *sidebar = window.sidebar();
-        window.showPage(0);
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
+        WindowProbe(window).showPage(0);
         QAccessibleInterface *list = QAccessible::queryAccessibleInterface(sidebar);
         QVERIFY(list && list->tableInterface());
         const auto rowOf = [sidebar](const Page *page) {
             return sidebar->row(sidebar->itemOf(int(sidebar->pages().indexOf(page))));
         };
         // Each page's entry by its action ("Toggle" on the bus), the other way back by the row.
-        for (Page *page : window.pages()) {
-            if (page == window.currentPage())
+        for (Page *page : WindowProbe(window).pages()) {
+            if (page == WindowProbe(window).currentPage())
                 continue;
             QAccessibleInterface *entry = list->child(rowOf(page));
             QVERIFY(entry && entry->actionInterface());
             QVERIFY(entry->actionInterface()->actionNames().contains(
                 QAccessibleActionInterface::toggleAction()));
             entry->actionInterface()->doAction(QAccessibleActionInterface::toggleAction());
-            QTRY_COMPARE(window.currentPage(), page);
+            QTRY_COMPARE(WindowProbe(window).currentPage(), page);
             QVERIFY(entry->state().selected);
         }
-        const Page *first = window.pages().at(0);
+        const Page *first = WindowProbe(window).pages().at(0);
         QVERIFY(list->tableInterface()->selectRow(rowOf(first)));
-        QTRY_COMPARE(window.currentPage(), first);
+        QTRY_COMPARE(WindowProbe(window).currentPage(), first);
         // A header stays what it is: choosing it shows no page and keeps the one shown.
         QAccessibleInterface *header = list->child(0);
         QVERIFY(header && !header->state().selectable);
         if (QAccessibleActionInterface *action = header->actionInterface())
             action->doAction(QAccessibleActionInterface::toggleAction());
         QCoreApplication::processEvents();
-        QCOMPARE(window.currentPage(), first);
+        QCOMPARE(WindowProbe(window).currentPage(), first);
     }
 
     // A sidebar lower than its entries (1366×768 at ×1.5 with the docks below): no scroll bar
@@ -183,15 +184,15 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        PageSidebar *sidebar = window.sidebar();
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
         sidebar->setFixedHeight(sidebar->fontMetrics().height() * 8);
         QTRY_VERIFY(sidebar->isCompact());
         QCoreApplication::processEvents();
         QVERIFY(!sidebar->verticalScrollBar()->isVisible());
         QVERIFY(sidebar->hasMoreBelow());
         QVERIFY(!sidebar->hasMoreAbove());
-        const int last = int(window.pages().size()) - 1;
-        window.showPage(last);
+        const int last = int(WindowProbe(window).pages().size()) - 1;
+        WindowProbe(window).showPage(last);
         QCoreApplication::processEvents();
         QVERIFY(
             sidebar->viewport()->rect().contains(sidebar->visualItemRect(sidebar->itemOf(last))));
@@ -215,7 +216,7 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        PageSidebar *sidebar = window.sidebar();
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
         sidebar->setFixedHeight(sidebar->fontMetrics().height() * 7);
         QTRY_VERIFY(sidebar->hasMoreBelow());
         QVERIFY(sidebar->moreBelowArrow()->isVisible());
@@ -225,14 +226,14 @@ private Q_SLOTS:
                              sidebar->viewport()->size());
         QVERIFY(!sidebar->moreBelowArrow()->geometry().intersects(viewport));
         QVERIFY(!sidebar->moreAboveArrow()->geometry().intersects(viewport));
-        for (int i = int(window.pages().size()) - 1; i >= 0; --i) {
+        for (int i = int(WindowProbe(window).pages().size()) - 1; i >= 0; --i) {
             QListWidgetItem *entry = sidebar->itemOf(i);
             sidebar->scrollToItem(entry);
             QCoreApplication::processEvents();
             const QRect rect = sidebar->visualItemRect(entry);
             QVERIFY2(sidebar->clearArea().contains(rect), qPrintable(entry->text()));
             QTest::mouseClick(sidebar->viewport(), Qt::LeftButton, Qt::NoModifier, rect.center());
-            QTRY_COMPARE(window.currentPage(), window.pages().at(i));
+            QTRY_COMPARE(WindowProbe(window).currentPage(), WindowProbe(window).pages().at(i));
         }
         // The arrow scrolls too.
         const int top = sidebar->verticalScrollBar()->value();
@@ -249,11 +250,11 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        PageSidebar *sidebar = window.sidebar();
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
         const int line = sidebar->fontMetrics().height();
         // Room for the low rows (a 16 px icon or a line, a pixel above and below) and four thin
         // lines, not for four headers' titles as well.
-        const int pages = int(window.pages().size());
+        const int pages = int(WindowProbe(window).pages().size());
         sidebar->setFixedHeight(pages * (std::max(16, line) + 2) + 4 * 6 +
                                 2 * sidebar->frameWidth() + 2);
         QTRY_VERIFY(sidebar->isCompact());
@@ -261,7 +262,7 @@ private Q_SLOTS:
         QVERIFY(sidebar->hasThinHeaders());
         QVERIFY(!sidebar->hasMoreBelow());
         QVERIFY(!sidebar->hasMoreAbove());
-        for (int i = 0; i < window.pages().size(); ++i)
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i)
             QVERIFY2(sidebar->clearArea().contains(sidebar->visualItemRect(sidebar->itemOf(i))),
                      qPrintable(sidebar->itemOf(i)->text()));
         // A header's title stays there for the mouse and a screen reader.
@@ -275,9 +276,9 @@ private Q_SLOTS:
     {
         DeviceSession session;
         MainWindow window(&session);
-        PageSidebar *sidebar = window.sidebar();
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
         const int motor1 = pageIndex(window, "stepcom::MotorPage");
-        const QString key = window.pages().at(motor1)->keys().first();
+        const QString key = WindowProbe(window).pages().at(motor1)->keys().first();
         const Parameter *p = session.map().find(key);
         QVERIFY(p);
         QCOMPARE(sidebar->editCount(motor1), 0);
@@ -297,9 +298,9 @@ private Q_SLOTS:
     {
         DeviceSession session;
         MainWindow window(&session);
-        PageSidebar *sidebar = window.sidebar();
-        ChecklistPage *page = window.checklistPage();
-        const int index = int(window.pages().indexOf(page));
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
+        ChecklistPage *page = WindowProbe(window).checklistPage();
+        const int index = int(WindowProbe(window).pages().indexOf(page));
         const int total = int(page->checklist().steps().size());
         QCOMPARE(sidebar->itemOf(index)->data(PageSidebar::ProgressRole).toString(),
                  QStringLiteral("0/%1").arg(total));
@@ -327,8 +328,8 @@ private Q_SLOTS:
     {
         DeviceSession session;
         MainWindow window(&session);
-        PageSidebar *sidebar = window.sidebar();
-        const int jog = int(window.pages().indexOf(window.motionPage()));
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
+        const int jog = int(WindowProbe(window).pages().indexOf(WindowProbe(window).motionPage()));
         const int motor1 = pageIndex(window, "stepcom::MotorPage");
         QVERIFY(sidebar->isOffline(jog));
         QVERIFY(sidebar->itemOf(jog)->data(PageSidebar::OfflineRole).toBool());
@@ -348,9 +349,9 @@ private Q_SLOTS:
         MainWindow window(&session);
         Language::instance().setLanguage(QStringLiteral("zh_CN"));
         QCoreApplication::processEvents();
-        PageSidebar *sidebar = window.sidebar();
-        for (int i = 0; i < window.pages().size(); ++i)
-            QCOMPARE(sidebar->itemOf(i)->text(), window.pages().at(i)->title());
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i)
+            QCOMPARE(sidebar->itemOf(i)->text(), WindowProbe(window).pages().at(i)->title());
         QVERIFY(sidebar->item(0)->text() != QStringLiteral("Connect"));
         Language::instance().setLanguage(QStringLiteral("en"));
         QCoreApplication::processEvents();

@@ -8,6 +8,7 @@
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -172,25 +173,27 @@ private Q_SLOTS:
     {
         DeviceSession session;
         MainWindow window(&session);
-        QVERIFY(window.sessionLog());
-        QCOMPARE(window.trafficView()->logFolder(), window.sessionLog()->directory());
-        QVERIFY(window.sessionLog()->directory().startsWith(
+        QVERIFY(WindowProbe(window).sessionLog());
+        QCOMPARE(WindowProbe(window).trafficView()->logFolder(),
+                 WindowProbe(window).sessionLog()->directory());
+        QVERIFY(WindowProbe(window).sessionLog()->directory().startsWith(
             QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)));
         QTemporaryDir dir;
-        window.sessionLog()->setDirectory(dir.path());
+        WindowProbe(window).sessionLog()->setDirectory(dir.path());
         window.show();
-        QVERIFY(window.trafficView()
+        QVERIFY(WindowProbe(window)
+                    .trafficView()
                     ->findChild<QPushButton *>(QStringLiteral("openLogFolder"))
                     ->isVisible());
         test::useBuiltinSimulator(session);
         test::connectToSimulator(session);
-        const QString file = window.sessionLog()->currentFile();
+        const QString file = WindowProbe(window).sessionLog()->currentFile();
         QVERIFY(file.startsWith(dir.path()));
         QFile f(file);
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(f.readAll());
         QVERIFY2(text.contains(QStringLiteral("  TX  read     ")), qPrintable(text.left(2000)));
-        QTRY_VERIFY(window.trafficView()->model()->rowCount() > 0);
+        QTRY_VERIFY(WindowProbe(window).trafficView()->model()->rowCount() > 0);
         session.disconnectFrom();
     }
 };

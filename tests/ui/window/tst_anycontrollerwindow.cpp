@@ -8,6 +8,7 @@
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QLabel>
 #include <QSignalSpy>
@@ -46,7 +47,7 @@ private Q_SLOTS:
         QVERIFY(read.wait(10000) || !read.isEmpty());
         QVERIFY2(read.at(0).at(0).toBool(), qPrintable(said.join(QLatin1Char('\n'))));
 
-        MachineStrip *strip = window.machineStrip();
+        MachineStrip *strip = WindowProbe(window).machineStrip();
         QVERIFY(strip);
         const Parameter *position = session.map().find(QStringLiteral("motor1.position"));
         const auto shows = [&](qint64 raw) {

@@ -11,6 +11,7 @@
 #include "window/givenfile.h"
 #include "window/mainwindow.h"
 #include "window/offlineactions.h"
+#include "window/windowprobe.h"
 
 #include <QApplication>
 #include <QFile>
@@ -61,17 +62,17 @@ private Q_SLOTS:
         QString path;
         {
             MainWindow maker(&session);
-            QVERIFY(maker.offlineActions()->newFromFactory());
+            QVERIFY(WindowProbe(maker).offlineActions()->newFromFactory());
             path = dir.filePath(QStringLiteral("machine.json"));
-            QVERIFY(maker.offlineActions()->saveFile(path));
-            QVERIFY(maker.offlineActions()->closeFile());
+            QVERIFY(WindowProbe(maker).offlineActions()->saveFile(path));
+            QVERIFY(WindowProbe(maker).offlineActions()->closeFile());
         }
         QString why;
         QCOMPARE(GivenFile::classify(path, &why), GivenFile::Kind::Profile);
         MainWindow window(&session);
         QVERIFY(window.openGivenFile(path));
-        QVERIFY(window.offlineActions()->document()->isOpen());
-        QCOMPARE(window.offlineActions()->document()->path(), path);
+        QVERIFY(WindowProbe(window).offlineActions()->document()->isOpen());
+        QCOMPARE(WindowProbe(window).offlineActions()->document()->path(), path);
         QVERIFY(session.parameters()->isFile());
         QVERIFY(window.windowTitle().contains(QStringLiteral("machine.json")));
     }
@@ -84,12 +85,14 @@ private Q_SLOTS:
         const QString path = sessionLog(session, QStringLiteral("from-the-field.txt"));
         QString why;
         QCOMPARE(GivenFile::classify(path, &why), GivenFile::Kind::SessionLog);
-        QSignalSpy opened(window.replayMode(), &ReplayMode::opened);
+        QSignalSpy opened(WindowProbe(window).replayMode(), &ReplayMode::opened);
         QVERIFY(window.openGivenFile(path));
         QVERIFY(opened.wait(10000) || !opened.isEmpty());
-        QVERIFY(window.replayMode()->isActive());
-        QCOMPARE(window.replayMode()->displayName(), QStringLiteral("from-the-field.txt"));
-        window.replayMode()->seek(window.replayMode()->log().durationMs());
+        QVERIFY(WindowProbe(window).replayMode()->isActive());
+        QCOMPARE(WindowProbe(window).replayMode()->displayName(),
+                 QStringLiteral("from-the-field.txt"));
+        WindowProbe(window).replayMode()->seek(
+            WindowProbe(window).replayMode()->log().durationMs());
         QCOMPARE(session.parameters()->deviceValue(QStringLiteral("motor1.speed")), 321);
     }
 
@@ -106,10 +109,11 @@ private Q_SLOTS:
         QVERIFY2(SupportBundle::create(zip, input, nullptr, &error), qPrintable(error));
         QString why;
         QCOMPARE(GivenFile::classify(zip, &why), GivenFile::Kind::SupportBundle);
-        QSignalSpy opened(window.replayMode(), &ReplayMode::opened);
+        QSignalSpy opened(WindowProbe(window).replayMode(), &ReplayMode::opened);
         QVERIFY(window.openGivenFile(zip));
         QVERIFY(opened.wait(10000) || !opened.isEmpty());
-        QVERIFY(window.replayMode()->displayName().contains(QStringLiteral("stepcom-support-1")));
+        QVERIFY(WindowProbe(window).replayMode()->displayName().contains(
+            QStringLiteral("stepcom-support-1")));
     }
 
     void otherFilesAreRefusedByName_data()
@@ -138,10 +142,10 @@ private Q_SLOTS:
         QVERIFY(!session.parameters()->isReplay());
         if (said.isEmpty()) // the profile reader says what is wrong, in its own box
             return;
-        QVERIFY(window.givenFileError());
-        QVERIFY2(window.givenFileError()->text().contains(said),
-                 qPrintable(window.givenFileError()->text()));
-        QVERIFY(window.givenFileError()->text().contains(path));
+        QVERIFY(WindowProbe(window).givenFileError());
+        QVERIFY2(WindowProbe(window).givenFileError()->text().contains(said),
+                 qPrintable(WindowProbe(window).givenFileError()->text()));
+        QVERIFY(WindowProbe(window).givenFileError()->text().contains(path));
     }
 };
 

@@ -10,6 +10,7 @@
 #include "widgets/fields/parameterfield.h"
 #include "widgets/motion/jogpanel.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -107,12 +108,13 @@ class TestLanguageWalk : public QObject
     QStringList walk(bool english)
     {
         QStringList problems;
-        for (int i = 0; i < window->pages().size(); ++i) {
-            window->showPage(i);
+        for (int i = 0; i < WindowProbe(*window).pages().size(); ++i) {
+            WindowProbe(*window).showPage(i);
             QCoreApplication::processEvents();
             const QStringList bad = english ? chineseIn(visibleTexts()) : englishIn(visibleTexts());
             for (const QString &b : bad)
-                problems << QStringLiteral("%1: %2").arg(window->pages().at(i)->title(), b);
+                problems << QStringLiteral("%1: %2").arg(
+                    WindowProbe(*window).pages().at(i)->title(), b);
         }
         problems.removeDuplicates();
         return problems;
@@ -140,8 +142,9 @@ private Q_SLOTS:
     void everyPageInBothLanguages()
     {
         // State worth translating: a judged homing, a refused value, an edit.
-        JogPanel *panel = window->motionPage()->panel(1);
-        window->showPage(window->pages().indexOf(window->motionPage()));
+        JogPanel *panel = WindowProbe(*window).motionPage()->panel(1);
+        WindowProbe(*window).showPage(
+            WindowProbe(*window).pages().indexOf(WindowProbe(*window).motionPage()));
         QTRY_VERIFY(panel->homeButton()->isEnabled());
         panel->homeButton()->click();
         QTRY_VERIFY_WITH_TIMEOUT(panel->statusText().contains(QLatin1String("referenced")), 10000);

@@ -18,6 +18,7 @@
 #include "widgets/docks/messageview.h"
 #include "widgets/docks/pagesidebar.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QApplication>
 #include <QLabel>
@@ -56,7 +57,7 @@ class TestLayoutFit : public QObject, public test::LayoutChecks
     // The machine strip: both positions and its E-STOP on every page, no text cut.
     void checkStrip(MainWindow &window, const QString &context)
     {
-        MachineStrip *strip = window.machineStrip();
+        MachineStrip *strip = WindowProbe(window).machineStrip();
         if (!strip) {
             problem(context, QStringLiteral("no machine strip"));
             return;
@@ -69,7 +70,7 @@ class TestLayoutFit : public QObject, public test::LayoutChecks
         checkOnScreen(strip->emergencyStopButton(), &window, context,
                       QStringLiteral("the strip's E-STOP"));
         // The sidebar: every page's title whole beside its icon and marks.
-        for (const QString &cut : window.sidebar()->cutEntries())
+        for (const QString &cut : WindowProbe(window).sidebar()->cutEntries())
             problem(context, QStringLiteral("sidebar entry %1 is cut").arg(cut));
         for (QLabel *label : strip->findChildren<QLabel *>()) {
             QString text;
@@ -84,13 +85,14 @@ class TestLayoutFit : public QObject, public test::LayoutChecks
     // clear of the arrows that say more is above or below, and a click on it shows its page.
     void checkSidebar(MainWindow &window, const QString &context)
     {
-        PageSidebar *sidebar = window.sidebar();
+        PageSidebar *sidebar = WindowProbe(window).sidebar();
         const int high = QGuiApplication::primaryScreen()->availableGeometry().height();
         if (high <= 720 && !sidebar->isCompact())
             problem(context,
                     QStringLiteral("the sidebar has full rows on a screen %1 px high").arg(high));
-        const int shown = int(window.pages().indexOf(window.currentPage()));
-        for (int i = 0; i < window.pages().size(); ++i) {
+        const int shown =
+            int(WindowProbe(window).pages().indexOf(WindowProbe(window).currentPage()));
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {
             QListWidgetItem *entry = sidebar->itemOf(i);
             sidebar->scrollToItem(entry);
             settle();
@@ -113,12 +115,12 @@ class TestLayoutFit : public QObject, public test::LayoutChecks
             }
             QTest::mouseClick(sidebar->viewport(), Qt::LeftButton, Qt::NoModifier, rect.center());
             settle();
-            if (window.currentPage() != window.pages().at(i))
+            if (WindowProbe(window).currentPage() != WindowProbe(window).pages().at(i))
                 problem(context, QStringLiteral("a click on sidebar entry %1 does not show its "
                                                 "page")
                                      .arg(title));
         }
-        window.showPage(shown);
+        WindowProbe(window).showPage(shown);
         settle();
     }
 
@@ -193,10 +195,10 @@ private Q_SLOTS:
                 QStringLiteral("window"),
                 QStringLiteral("cannot shrink below %1×%2").arg(least.width()).arg(least.height()));
         window.setGeometry(screen);
-        for (int i = 0; i < window.pages().size(); ++i) {
-            window.showPage(i);
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {
+            WindowProbe(window).showPage(i);
             settle();
-            Page *page = window.pages().at(i);
+            Page *page = WindowProbe(window).pages().at(i);
             const QString context = page->title();
             checkTree(&window, context);
             // What a page needs once shown (and its values read) stays the window's minimum.
@@ -213,7 +215,7 @@ private Q_SLOTS:
                                      .arg(needs.width())
                                      .arg(screen.width())
                                      .arg(kHeadroomPart));
-            QToolButton *estop = window.emergencyStopButton();
+            QToolButton *estop = WindowProbe(window).emergencyStopButton();
             const QRect estopRect(estop->mapTo(&window, QPoint(0, 0)), estop->size());
             if (!estop->isVisible() || !window.rect().contains(estopRect))
                 problem(context, QStringLiteral("the E-STOP is not on screen"));
@@ -245,7 +247,7 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         test::connectToSimulator(session);
         QTRY_VERIFY(session.linkStats().answers > 0);
-        MachineStrip *strip = window.machineStrip();
+        MachineStrip *strip = WindowProbe(window).machineStrip();
         QVERIFY(strip);
         QLabel *position = strip->positionLabel(1);
         QTRY_VERIFY(position->text() != QStringLiteral("—"));
@@ -295,7 +297,7 @@ private Q_SLOTS:
         for (auto *label : window.statusBar()->findChildren<QLabel *>())
             indicator = indicator || (label->isVisible() && label->text().contains(QChar(0x26a0)));
         QVERIFY2(indicator, "the \"Not saved to flash\" indicator is not shown");
-        QVERIFY(window.messageView()->texts().join(QLatin1Char('\n')).contains(text));
+        QVERIFY(WindowProbe(window).messageView()->texts().join(QLatin1Char('\n')).contains(text));
         const QRect shown(message->mapTo(window.statusBar(), QPoint(0, 0)), message->size());
         for (QWidget *w : window.statusBar()->findChildren<QWidget *>()) {
             if (w == message || !w->isVisible() || w->isAncestorOf(message))

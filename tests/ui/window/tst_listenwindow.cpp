@@ -13,6 +13,7 @@
 #include "widgets/docks/machinestrip.h"
 #include "window/listenmode.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QComboBox>
 #include <QFrame>
@@ -126,7 +127,7 @@ private Q_SLOTS:
         QCOMPARE(hub.bytesSent(2), 0);
 
         // The E-STOP asks first; nothing leaves until it is confirmed.
-        window.emergencyStop()->trigger();
+        WindowProbe(window).emergencyStop()->trigger();
         QTRY_VERIFY(listen->estopQuestion() && listen->estopQuestion()->isVisible());
         QTest::qWait(100);
         QCOMPARE(hub.bytesSent(2), 0);

@@ -18,6 +18,7 @@
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QAction>
 #include <QApplication>
@@ -36,6 +37,61 @@
 #include <QToolButton>
 
 using namespace stepcom;
+
+namespace {
+// The window's insides (docks, pages, actions, open dialogs) are reached through WindowProbe;
+// MainWindow keeps public only what the program calls. Each concept: whether W offers it.
+template<class W>
+concept OffersDocks = requires(W &w)
+{
+    w.machineStrip();
+}
+|| requires(W &w)
+{
+    w.statusDock();
+}
+|| requires(W &w)
+{
+    w.trafficView();
+};
+template<class W>
+concept OffersPages = requires(W &w)
+{
+    w.pages();
+}
+|| requires(W &w)
+{
+    w.showPage(0);
+}
+|| requires(W &w)
+{
+    w.sidebar();
+};
+template<class W>
+concept OffersDialogs = requires(W &w)
+{
+    w.writeDialog();
+}
+|| requires(W &w)
+{
+    w.closeQuestion();
+}
+|| requires(W &w)
+{
+    w.action(QString());
+};
+template<class W>
+concept OffersWhatTheProgramCalls = requires(W &w)
+{
+    w.showOnScreen();
+    w.openGivenFile(QString());
+    w.pendantActions();
+    w.listenMode();
+};
+static_assert(!OffersDocks<MainWindow> && !OffersPages<MainWindow> && !OffersDialogs<MainWindow>);
+static_assert(OffersDocks<WindowProbe> && OffersPages<WindowProbe> && OffersDialogs<WindowProbe>);
+static_assert(OffersWhatTheProgramCalls<MainWindow>);
+} // namespace
 
 class TestMainWindow : public QObject
 {
@@ -86,16 +142,20 @@ private Q_SLOTS:
         QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
                  ParameterStore::State::Edited);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // nothing written yet
-        QVERIFY(window->action(QStringLiteral("writeChanges"))->isEnabled());
-        window->action(QStringLiteral("writeChanges"))->trigger();
-        QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
+        QVERIFY(WindowProbe(*window).action(QStringLiteral("writeChanges"))->isEnabled());
+        WindowProbe(*window).action(QStringLiteral("writeChanges"))->trigger();
+        QTRY_VERIFY(WindowProbe(*window).writeDialog() &&
+                    WindowProbe(*window).writeDialog()->isVisible());
         // the dialog shows what will change before anything is sent
-        QTableWidget *table = window->writeDialog()->table();
+        QTableWidget *table = WindowProbe(*window).writeDialog()->table();
         QCOMPARE(table->rowCount(), 1);
         QCOMPARE(table->item(0, 2)->text(), QStringLiteral("300 rpm"));
         QCOMPARE(table->item(0, 3)->text(), QStringLiteral("450 rpm"));
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
-        window->writeDialog()->findChild<QPushButton *>(QStringLiteral("writeButton"))->click();
+        WindowProbe(*window)
+            .writeDialog()
+            ->findChild<QPushButton *>(QStringLiteral("writeButton"))
+            ->click();
         QTRY_COMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
         QTRY_COMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
                      ParameterStore::State::InSync);
@@ -123,7 +183,7 @@ private Q_SLOTS:
         auto *line = qobject_cast<QLineEdit *>(speed->editor());
         QCOMPARE(line->text(), QStringLiteral("99999")); // kept for correction
         QVERIFY(!session->parameters()->hasEdits());
-        QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
+        QVERIFY(!WindowProbe(*window).action(QStringLiteral("writeChanges"))->isEnabled());
         QTest::qWait(300);
         QCOMPARE(writes, 0);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
@@ -142,7 +202,7 @@ private Q_SLOTS:
         // Revert drops a refused text too, and a write never leaves a stale reason behind.
         speed->enterText(QStringLiteral("0"));
         QVERIFY(!speed->rejectionText().isEmpty());
-        window->action(QStringLiteral("revert"))->trigger();
+        WindowProbe(*window).action(QStringLiteral("revert"))->trigger();
         QVERIFY(speed->rejectionText().isEmpty());
         QCOMPARE(line->text(), QStringLiteral("300"));
     }
@@ -152,7 +212,7 @@ private Q_SLOTS:
     void aSilentPortIsNeverConnected()
     {
         session->disconnectFrom();
-        window->showPage(0);
+        WindowProbe(*window).showPage(0);
         test::ScriptedDevice device;
         QString error;
         QVERIFY2(device.open(&error), qPrintable(error));
@@ -168,7 +228,7 @@ private Q_SLOTS:
         session->connectTo(s);
         QTRY_COMPARE(session->health()->state(), LinkHealth::State::NotAnswering);
         QCOMPARE(status->stateText(), QStringLiteral("Not answering"));
-        auto *page = qobject_cast<ConnectionPage *>(window->currentPage());
+        auto *page = qobject_cast<ConnectionPage *>(WindowProbe(*window).currentPage());
         QVERIFY(page); // no jump to Motor 1 with blank fields
         QVERIFY2(page->statusText().contains(QLatin1String("does not answer")) &&
                      page->statusText().contains(QLatin1String("A and B swapped")),
@@ -183,7 +243,7 @@ private Q_SLOTS:
         QCOMPARE(session->linkStats().timeouts, quint64(0)); // per connection
         QTRY_COMPARE(session->health()->state(), LinkHealth::State::Answering);
         QCOMPARE(status->stateText(), QStringLiteral("Connected"));
-        QTRY_VERIFY(!qobject_cast<ConnectionPage *>(window->currentPage()));
+        QTRY_VERIFY(!qobject_cast<ConnectionPage *>(WindowProbe(*window).currentPage()));
     }
 
     // One flash state: a baud or id change makes it "not saved", only a save clears it, and
@@ -219,15 +279,19 @@ private Q_SLOTS:
         ParameterStore *store = session->parameters();
         const qint64 speed = *store->deviceValue(QStringLiteral("motor1.speed"));
         QVERIFY(store->edit(QStringLiteral("motor1.speed"), speed + 10).isEmpty());
-        window->writeChanges();
-        QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
-        QVERIFY(window->writeDialog()->problems().isEmpty());
-        auto *label = window->writeDialog()->findChild<QLabel *>(QStringLiteral("problems"));
+        WindowProbe(*window).writeChanges();
+        QTRY_VERIFY(WindowProbe(*window).writeDialog() &&
+                    WindowProbe(*window).writeDialog()->isVisible());
+        QVERIFY(WindowProbe(*window).writeDialog()->problems().isEmpty());
+        auto *label =
+            WindowProbe(*window).writeDialog()->findChild<QLabel *>(QStringLiteral("problems"));
         QVERIFY(label && label->isHidden());
-        QCOMPARE(
-            window->writeDialog()->findChild<QPushButton *>(QStringLiteral("writeButton"))->text(),
-            QStringLiteral("&Write"));
-        window->writeDialog()->reject();
+        QCOMPARE(WindowProbe(*window)
+                     .writeDialog()
+                     ->findChild<QPushButton *>(QStringLiteral("writeButton"))
+                     ->text(),
+                 QStringLiteral("&Write"));
+        WindowProbe(*window).writeDialog()->reject();
         // The centre on the start point: the arc editor flags it as invalid geometry.
         const qint64 sx = *store->deviceValue(QStringLiteral("arc.start_x"));
         const qint64 sy = *store->deviceValue(QStringLiteral("arc.start_y"));
@@ -240,9 +304,10 @@ private Q_SLOTS:
         // One input as both limits of motor 1: the wiring check flags it.
         QVERIFY(store->edit(QStringLiteral("motor1.limit_positive"), 3).isEmpty());
         QVERIFY(store->edit(QStringLiteral("motor1.limit_negative"), 3).isEmpty());
-        window->writeChanges();
-        QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
-        WriteChangesDialog *dialog = window->writeDialog();
+        WindowProbe(*window).writeChanges();
+        QTRY_VERIFY(WindowProbe(*window).writeDialog() &&
+                    WindowProbe(*window).writeDialog()->isVisible());
+        WriteChangesDialog *dialog = WindowProbe(*window).writeDialog();
         const QString all = dialog->problems().join(QLatin1Char('|'));
         QVERIFY2(dialog->problems().size() >= 2, qPrintable(all));
         QVERIFY2(all.contains(QLatin1String("Arc: ")), qPrintable(all));
@@ -265,27 +330,30 @@ private Q_SLOTS:
         QTRY_COMPARE(done.size(), 1);
         QTRY_VERIFY(sim()->running(1));
         field(QStringLiteral("motor1.speed"))->enterText(QStringLiteral("200"));
-        window->writeChanges();
-        QTRY_VERIFY(window->writeDialog() && window->writeDialog()->isVisible());
+        WindowProbe(*window).writeChanges();
+        QTRY_VERIFY(WindowProbe(*window).writeDialog() &&
+                    WindowProbe(*window).writeDialog()->isVisible());
         QStringList order;
         connect(SessionInternals::link(*session), &ModbusLink::dispatched, this,
                 [&order](quint64, const Request &r) { order << r.what; });
         session->readAll(); // a queue of work in front
-        QTest::keyClick(window->writeDialog()->table(), Qt::Key_F12);
+        QTest::keyClick(WindowProbe(*window).writeDialog()->table(), Qt::Key_F12);
         QTRY_VERIFY(order.contains(QStringLiteral("estop")));
         QVERIFY2(order.indexOf(QStringLiteral("estop")) <= 1,
                  qPrintable(order.join(QLatin1Char(','))));
         QTRY_VERIFY(!sim()->running(1));
-        QVERIFY(window->writeDialog()->isVisible()); // the stop never asked anything
+        QVERIFY(WindowProbe(*window).writeDialog()->isVisible()); // the stop never asked anything
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // and wrote nothing else
     }
 
     void languageSwitchRetranslatesTheOpenWindow()
     {
-        QCOMPARE(window->action(QStringLiteral("readAll"))->text(), QStringLiteral("&Read all"));
+        QCOMPARE(WindowProbe(*window).action(QStringLiteral("readAll"))->text(),
+                 QStringLiteral("&Read all"));
         QVERIFY(Language::instance().setLanguage(QStringLiteral("zh_CN")));
-        QCOMPARE(window->action(QStringLiteral("readAll"))->text(), QStringLiteral("读取全部(&R)"));
-        QCOMPARE(window->emergencyStopButton()->text(), QStringLiteral("急停"));
+        QCOMPARE(WindowProbe(*window).action(QStringLiteral("readAll"))->text(),
+                 QStringLiteral("读取全部(&R)"));
+        QCOMPARE(WindowProbe(*window).emergencyStopButton()->text(), QStringLiteral("急停"));
         const QLabel *label = nullptr;
         for (QLabel *l : window->findChildren<QLabel *>()) {
             if (l->property("parameterKey").toString() == QLatin1String("motor1.microsteps"))
@@ -294,7 +362,8 @@ private Q_SLOTS:
         QVERIFY(label);
         QCOMPARE(label->text(), QStringLiteral("细分:"));
         Language::instance().setLanguage(QStringLiteral("en"));
-        QCOMPARE(window->action(QStringLiteral("readAll"))->text(), QStringLiteral("&Read all"));
+        QCOMPARE(WindowProbe(*window).action(QStringLiteral("readAll"))->text(),
+                 QStringLiteral("&Read all"));
     }
 
     // The first start on a small screen (the offscreen one is 800×600): maximized, every pixel
@@ -325,8 +394,8 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(window.get()));
         const int line = window->fontMetrics().height();
         const int room = window->screen()->availableGeometry().height();
-        for (QWidget *content : {static_cast<QWidget *>(window->messageView()),
-                                 static_cast<QWidget *>(window->trafficView())}) {
+        for (QWidget *content : {static_cast<QWidget *>(WindowProbe(*window).messageView()),
+                                 static_cast<QWidget *>(WindowProbe(*window).trafficView())}) {
             auto *dock = qobject_cast<QDockWidget *>(content->parentWidget());
             QVERIFY(dock);
             QVERIFY2(dock->minimumSizeHint().height() <= 8 * line,
@@ -335,13 +404,14 @@ private Q_SLOTS:
                                     .arg(dock->minimumSizeHint().height())
                                     .arg(line)));
         }
-        auto *messages = qobject_cast<QDockWidget *>(window->messageView()->parentWidget());
+        auto *messages =
+            qobject_cast<QDockWidget *>(WindowProbe(*window).messageView()->parentWidget());
         QTRY_VERIFY2(messages->height() <=
                          std::max(messages->minimumSizeHint().height(), room / 6) + line,
                      qPrintable(QStringLiteral("the messages take %1 px of a %2 px screen")
                                     .arg(messages->height())
                                     .arg(room)));
-        const auto *list = window->messageView()->findChild<QListWidget *>();
+        const auto *list = WindowProbe(*window).messageView()->findChild<QListWidget *>();
         QVERIFY(list && list->height() >= 2 * list->fontMetrics().height());
         QVERIFY(window->close());
     }
@@ -350,9 +420,10 @@ private Q_SLOTS:
     {
         field(QStringLiteral("motor2.speed"))->enterText(QStringLiteral("123"));
         QVERIFY(!window->close());
-        QTRY_VERIFY(window->closeQuestion() && window->closeQuestion()->isVisible());
+        QTRY_VERIFY(WindowProbe(*window).closeQuestion() &&
+                    WindowProbe(*window).closeQuestion()->isVisible());
         QVERIFY(window->isVisible());
-        window->closeQuestion()->button(QMessageBox::Discard)->click();
+        WindowProbe(*window).closeQuestion()->button(QMessageBox::Discard)->click();
         QTRY_VERIFY(!window->isVisible());
         QCOMPARE(*sim()->value(QStringLiteral("motor2.speed")), 300); // discarded, not written
     }

@@ -19,6 +19,7 @@
 #include "window/mainwindow.h"
 #include "window/offlineactions.h"
 #include "window/profileactions.h"
+#include "window/windowprobe.h"
 
 #include <QAbstractButton>
 #include <QAction>
@@ -51,7 +52,7 @@ class TestOffline : public QObject
     std::unique_ptr<MainWindow> window;
     QTemporaryDir dir;
 
-    OfflineActions *offline() const { return window->offlineActions(); }
+    OfflineActions *offline() const { return WindowProbe(*window).offlineActions(); }
     ParameterStore *store() const { return session->parameters(); }
     ParameterField *field(const QString &key) const
     {
@@ -64,7 +65,7 @@ class TestOffline : public QObject
     template<typename T>
     T *page() const
     {
-        for (Page *p : window->pages()) {
+        for (Page *p : WindowProbe(*window).pages()) {
             if (auto *t = qobject_cast<T *>(p))
                 return t;
         }
@@ -123,12 +124,14 @@ private Q_SLOTS:
     {
         const QString path = write(QStringLiteral("machine-a.json"), machineA());
         QVERIFY(!path.isEmpty());
-        QVERIFY(window->profileActions()->openFile(path)); // File → Open, not connected
-        QVERIFY(!window->profileActions()->compareDialog());
+        QVERIFY(
+            WindowProbe(*window).profileActions()->openFile(path)); // File → Open, not connected
+        QVERIFY(!WindowProbe(*window).profileActions()->compareDialog());
         QVERIFY(offline()->document()->isOpen());
         QVERIFY(store()->isFile());
-        QVERIFY(window->offlineBanner()->isVisible());
-        QVERIFY(window->offlineBanner()->text().contains(QStringLiteral("machine-a.json")));
+        QVERIFY(WindowProbe(*window).offlineBanner()->isVisible());
+        QVERIFY(WindowProbe(*window).offlineBanner()->text().contains(
+            QStringLiteral("machine-a.json")));
         QVERIFY(window->windowTitle().contains(QStringLiteral("profile file, no controller")));
         QVERIFY(!window->statusBar()->styleSheet().isEmpty());
         QCOMPARE(store()->shownValue(QStringLiteral("motor1.speed")), 420);
@@ -195,7 +198,7 @@ private Q_SLOTS:
         QVERIFY(offline()->closeFile());
         QVERIFY(!store()->isFile());
         QVERIFY(!store()->shownValue(QStringLiteral("motor1.speed")));
-        QVERIFY(!window->offlineBanner()->isVisible());
+        QVERIFY(!WindowProbe(*window).offlineBanner()->isVisible());
         QVERIFY(offline()->openFile(saved));
         for (auto it = expected.values.cbegin(); it != expected.values.cend(); ++it)
             QCOMPARE(store()->shownValue(it.key()), it.value());
@@ -212,16 +215,16 @@ private Q_SLOTS:
         field(QStringLiteral("motor1.move_distance"))->enterText(QStringLiteral("12"));
         const QStringList enabled = test::enabledControls(window.get());
         QVERIFY2(enabled.isEmpty(), qPrintable(enabled.join(QLatin1Char('\n'))));
-        QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
-        QVERIFY(!window->action(QStringLiteral("saveToFlash"))->isEnabled());
-        QVERIFY(!window->action(QStringLiteral("commissioningReport"))->isEnabled());
+        QVERIFY(!WindowProbe(*window).action(QStringLiteral("writeChanges"))->isEnabled());
+        QVERIFY(!WindowProbe(*window).action(QStringLiteral("saveToFlash"))->isEnabled());
+        QVERIFY(!WindowProbe(*window).action(QStringLiteral("commissioningReport"))->isEnabled());
 
         // Nothing to stop: the E-STOP is greyed and says why; F12 still reaches the session,
         // which says that nothing was sent.
-        QVERIFY(!window->action(QStringLiteral("emergencyStop"))->isEnabled());
-        QVERIFY(!window->emergencyStopButton()->isEnabled());
-        QVERIFY(
-            window->emergencyStopButton()->toolTip().contains(QStringLiteral("Nothing to stop")));
+        QVERIFY(!WindowProbe(*window).action(QStringLiteral("emergencyStop"))->isEnabled());
+        QVERIFY(!WindowProbe(*window).emergencyStopButton()->isEnabled());
+        QVERIFY(WindowProbe(*window).emergencyStopButton()->toolTip().contains(
+            QStringLiteral("Nothing to stop")));
         QSignalSpy said(session.get(), &DeviceSession::message);
         QTest::keyClick(window.get(), Qt::Key_F12);
         QVERIFY(said.size() >= 1);
@@ -244,7 +247,7 @@ private Q_SLOTS:
         test::connectToSimulator(*session);
         QVERIFY(!offline()->document()->isOpen());
         QVERIFY(!store()->isFile());
-        QVERIFY(!window->offlineBanner()->isVisible());
+        QVERIFY(!WindowProbe(*window).offlineBanner()->isVisible());
         ProfileCompareDialog *dialog = offline()->compareDialog();
         QVERIFY(dialog);
         QCOMPARE(dialog->profile().values.value(QStringLiteral("motor1.speed")), 555);
@@ -286,7 +289,8 @@ private Q_SLOTS:
     void newFromFactoryValues()
     {
         QVERIFY(offline()->newFromFactory());
-        QVERIFY(window->offlineBanner()->text().contains(QStringLiteral("new profile")));
+        QVERIFY(
+            WindowProbe(*window).offlineBanner()->text().contains(QStringLiteral("new profile")));
         const QHash<QString, qint64> factory = FactoryValues::writable(session->map());
         for (const Parameter *p : Profile::profileParameters(session->map(), false))
             QCOMPARE(store()->shownValue(p->key), factory.value(p->key));
@@ -315,7 +319,7 @@ private Q_SLOTS:
             writeBytes(QStringLiteral("three.json"),
                        test::profileSavedWith(*threeAxis, raw, QStringLiteral("Machine C")));
         QVERIFY(offline()->openFile(three));
-        const QString listed = window->offlineBanner()->varianceText();
+        const QString listed = WindowProbe(*window).offlineBanner()->varianceText();
         QVERIFY2(listed.contains(QStringLiteral("stepper3/1")), qPrintable(listed));
         QVERIFY2(listed.contains(QStringLiteral("unknown to this map: motor3.speed = 900")),
                  qPrintable(listed));
@@ -327,7 +331,7 @@ private Q_SLOTS:
             QStringLiteral("lite.json"),
             test::profileSavedWith(*lite, FactoryValues::writable(*lite), QStringLiteral("L")));
         QVERIFY(offline()->openFile(litePath));
-        const QString missing = window->offlineBanner()->varianceText();
+        const QString missing = WindowProbe(*window).offlineBanner()->varianceText();
         QVERIFY2(missing.contains(QStringLiteral("not in the profile: line.start_x")),
                  qPrintable(missing));
         QVERIFY2(missing.contains(QStringLiteral("motor1.home_input")), qPrintable(missing));
@@ -347,7 +351,8 @@ private Q_SLOTS:
         QCOMPARE(back.profile->values.value(QStringLiteral("line.start_x")),
                  FactoryValues::value(*session->map().find(QStringLiteral("line.start_x"))));
         QVERIFY(back.profile->variance.missing.isEmpty());
-        QVERIFY(window->offlineBanner()->varianceText().contains(QStringLiteral("stepper2-lite")));
+        QVERIFY(WindowProbe(*window).offlineBanner()->varianceText().contains(
+            QStringLiteral("stepper2-lite")));
     }
 
     // File → Compare profiles: two files row by row, no controller; the groups apart.

@@ -13,6 +13,7 @@
 #include "window/mainwindow.h"
 #include "window/offlineactions.h"
 #include "window/pendantactions.h"
+#include "window/windowprobe.h"
 
 #include <QAction>
 #include <QCheckBox>
@@ -55,12 +56,12 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         test::connectToSimulator(session); // a session log is written from the first connection
-        QAction *action = window.action(QStringLiteral("pendant"));
+        QAction *action = WindowProbe(window).action(QStringLiteral("pendant"));
         QVERIFY(action);
         QVERIFY(action->isEnabled());
         PendantServer *server = window.pendantActions()->server();
         QVERIFY(!server->isRunning()); // off at every start
-        QVERIFY(window.machineStrip()->pendantLabel()->isHidden());
+        QVERIFY(WindowProbe(window).machineStrip()->pendantLabel()->isHidden());
         action->trigger();
         PendantDialog *dialog = window.pendantActions()->dialog();
         QVERIFY(dialog && dialog->isVisible());
@@ -78,7 +79,7 @@ private Q_SLOTS:
         QCOMPARE(code.width(), code.height());
         QVERIFY(code.width() >= (21 + 8) * 4); // at least a version-1 code with its quiet zone
         QCOMPARE(code.pixelColor(0, 0), QColor(Qt::white));
-        QCOMPARE(window.machineStrip()->pendantLabel()->text(),
+        QCOMPARE(WindowProbe(window).machineStrip()->pendantLabel()->text(),
                  QStringLiteral("Pendant: on, no phone yet"));
 
         QTcpSocket phone;
@@ -86,14 +87,14 @@ private Q_SLOTS:
         QTRY_COMPARE(server->clients().size(), 1);
         QTRY_COMPARE(dialog->phones()->rowCount(), 1);
         QCOMPARE(dialog->phones()->item(0, 0)->text(), QStringLiteral("127.0.0.1"));
-        QCOMPARE(window.machineStrip()->pendantLabel()->text(),
+        QCOMPARE(WindowProbe(window).machineStrip()->pendantLabel()->text(),
                  QStringLiteral("Pendant: 1 phone watching"));
         QVERIFY(!dialog->takeBackButton()->isEnabled());
 
         dialog->allowJog()->click();
         QVERIFY(server->control()->isAllowed());
         QVERIFY(server->control()->take(server->clients().first().id).isEmpty());
-        QCOMPARE(window.machineStrip()->pendantLabel()->text(),
+        QCOMPARE(WindowProbe(window).machineStrip()->pendantLabel()->text(),
                  QStringLiteral("Pendant: jogging from 127.0.0.1"));
         QCOMPARE(dialog->controlLabel()->text(), QStringLiteral("Control: 127.0.0.1"));
         if (qEnvironmentVariableIsSet("STEPCOM_TEST_GRAB"))
@@ -101,7 +102,7 @@ private Q_SLOTS:
                 code.save(qEnvironmentVariable("STEPCOM_TEST_GRAB") + QStringLiteral(".qr.png"));
         dialog->takeBackButton()->click();
         QCOMPARE(server->control()->holder(), 0);
-        QCOMPARE(window.machineStrip()->pendantLabel()->text(),
+        QCOMPARE(WindowProbe(window).machineStrip()->pendantLabel()->text(),
                  QStringLiteral("Pendant: 1 phone watching"));
 
         dialog->phones()->selectRow(0);
@@ -111,7 +112,7 @@ private Q_SLOTS:
         QTRY_VERIFY(phone.state() != QAbstractSocket::ConnectedState);
 
         // What the phones did is in the session log as user actions (a replay shows them).
-        QFile log(window.sessionLog()->currentFile());
+        QFile log(WindowProbe(window).sessionLog()->currentFile());
         QVERIFY2(log.open(QIODevice::ReadOnly), qPrintable(log.fileName()));
         const QByteArray logged = log.readAll();
         QVERIFY2(logged.contains("user     pendant 127.0.0.1: took control"), logged.right(2000));
@@ -120,7 +121,7 @@ private Q_SLOTS:
         dialog->startButton()->click(); // stop
         QVERIFY(!server->isRunning());
         QVERIFY(!server->control()->isAllowed()); // allowed for one run only
-        QVERIFY(window.machineStrip()->pendantLabel()->isHidden());
+        QVERIFY(WindowProbe(window).machineStrip()->pendantLabel()->isHidden());
     }
 
     void aProfileEditedOfflineServesNoPendant()
@@ -135,9 +136,9 @@ private Q_SLOTS:
         const Profile p =
             Profile::fromValues(session.map(), FactoryValues::writable(session.map()), false);
         QVERIFY(ProfileFile::save(path, p, session.map()).isEmpty());
-        QVERIFY(window.offlineActions()->openFile(path));
+        QVERIFY(WindowProbe(window).offlineActions()->openFile(path));
         QTRY_VERIFY(!server->isRunning()); // stopped, the phones told
-        QAction *action = window.action(QStringLiteral("pendant"));
+        QAction *action = WindowProbe(window).action(QStringLiteral("pendant"));
         QVERIFY(!action->isEnabled());
         QVERIFY(!window.pendantActions()->refusal().isEmpty());
         QVERIFY(!window.pendantActions()->openDialog());
@@ -150,14 +151,14 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         test::connectToSimulator(session); // a session log to replay
-        const QString path = window.sessionLog()->currentFile();
+        const QString path = WindowProbe(window).sessionLog()->currentFile();
         session.disconnectFrom();
         PendantServer *server = window.pendantActions()->server();
         QVERIFY(server->start(QHostAddress::LocalHost, 0));
-        QVERIFY(window.replayMode()->openPath(path));
-        QTRY_VERIFY_WITH_TIMEOUT(window.replayMode()->isActive(), 20000);
+        QVERIFY(WindowProbe(window).replayMode()->openPath(path));
+        QTRY_VERIFY_WITH_TIMEOUT(WindowProbe(window).replayMode()->isActive(), 20000);
         QTRY_VERIFY(!server->isRunning());
-        QVERIFY(!window.action(QStringLiteral("pendant"))->isEnabled());
+        QVERIFY(!WindowProbe(window).action(QStringLiteral("pendant"))->isEnabled());
         QVERIFY(!window.pendantActions()->openDialog());
     }
 };

@@ -19,6 +19,7 @@
 #include "widgets/fields/statuspollrow.h"
 #include "window/mainwindow.h"
 #include "window/offlineactions.h"
+#include "window/windowprobe.h"
 
 #include <QAction>
 #include <QApplication>
@@ -84,15 +85,16 @@ private Q_SLOTS:
         window.resize(1280, 800);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        for (int i = 0; i < window.pages().size(); ++i) {
-            window.showPage(i);
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {
+            WindowProbe(window).showPage(i);
             QCoreApplication::processEvents();
             const QList<QToolButton *> shown = shownEmergencyStops(&window);
-            QVERIFY2(shown.size() == 1, qPrintable(QStringLiteral("%1 E-STOPs on %2")
-                                                       .arg(shown.size())
-                                                       .arg(window.pages().at(i)->title())));
-            QCOMPARE(shown.first(), window.emergencyStopButton());
-            QCOMPARE(shown.first(), window.machineStrip()->emergencyStopButton());
+            QVERIFY2(shown.size() == 1,
+                     qPrintable(QStringLiteral("%1 E-STOPs on %2")
+                                    .arg(shown.size())
+                                    .arg(WindowProbe(window).pages().at(i)->title())));
+            QCOMPARE(shown.first(), WindowProbe(window).emergencyStopButton());
+            QCOMPARE(shown.first(), WindowProbe(window).machineStrip()->emergencyStopButton());
         }
     }
 
@@ -107,19 +109,20 @@ private Q_SLOTS:
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         test::connectToSimulator(session);
-        window.showPage(int(window.pages().indexOf(window.motionPage())));
-        QLabel *strip1 = window.machineStrip()->positionLabel(1);
+        WindowProbe(window).showPage(
+            int(WindowProbe(window).pages().indexOf(WindowProbe(window).motionPage())));
+        QLabel *strip1 = WindowProbe(window).machineStrip()->positionLabel(1);
         QTRY_VERIFY(strip1->text() != QStringLiteral("—"));
         QTest::qWait(200); // a few more status cycles: every view has had its update
         const QString position = strip1->text();
-        QVERIFY(!window.statusDock()->isVisible());
+        QVERIFY(!WindowProbe(window).statusDock()->isVisible());
         const QStringList shown = positionTexts(&window, position);
         QVERIFY2(shown.size() == 2, qPrintable(shown.join(QStringLiteral(", ")))); // both motors
         QVERIFY(shown.contains(QStringLiteral("stripPosition1")));
         QVERIFY(shown.contains(QStringLiteral("stripPosition2")));
-        QAction *toggle = window.statusDock()->toggleViewAction();
+        QAction *toggle = WindowProbe(window).statusDock()->toggleViewAction();
         toggle->trigger();
-        QVERIFY(window.statusDock()->isVisible());
+        QVERIFY(WindowProbe(window).statusDock()->isVisible());
         session.disconnectFrom();
     }
 
@@ -130,13 +133,15 @@ private Q_SLOTS:
         DeviceSession session;
         MainWindow window(&session);
         ConnectionPage *connection = nullptr;
-        for (Page *p : window.pages())
+        for (Page *p : WindowProbe(window).pages())
             connection = connection ? connection : qobject_cast<ConnectionPage *>(p);
         QVERIFY(connection);
         QVERIFY(connection->statusPoll());
         QVERIFY(connection->isAncestorOf(connection->statusPoll()->intervalBox()));
-        QVERIFY(!window.statusDock()->findChild<QComboBox *>(QStringLiteral("pollInterval")));
-        QVERIFY(!window.statusDock()->findChild<QLabel *>(QStringLiteral("statusRate")));
+        QVERIFY(!WindowProbe(window).statusDock()->findChild<QComboBox *>(
+            QStringLiteral("pollInterval")));
+        QVERIFY(
+            !WindowProbe(window).statusDock()->findChild<QLabel *>(QStringLiteral("statusRate")));
         QCOMPARE(window.findChildren<QComboBox *>(QStringLiteral("pollInterval")).size(), 1);
     }
 
@@ -149,21 +154,21 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QToolButton *estop = window.emergencyStopButton();
-        QAction *menu = window.action(QStringLiteral("emergencyStop"));
+        QToolButton *estop = WindowProbe(window).emergencyStopButton();
+        QAction *menu = WindowProbe(window).action(QStringLiteral("emergencyStop"));
         QVERIFY(estop->isEnabled()); // nothing open: a reconnect would still take it
         // A profile file edited without a controller.
-        QVERIFY(window.offlineActions()->newFromFactory());
+        QVERIFY(WindowProbe(window).offlineActions()->newFromFactory());
         QTRY_VERIFY(!estop->isEnabled());
         QVERIFY(!menu->isEnabled());
         QVERIFY2(estop->toolTip().contains(QStringLiteral("Nothing to stop")),
                  qPrintable(estop->toolTip()));
         QVERIFY(estop->toolTip().contains(QStringLiteral("profile file")));
-        QVERIFY(!window.machineStrip()->emergencyStopButton()->isEnabled());
-        QSignalSpy stops(window.emergencyStop(), &EmergencyStop::triggered);
+        QVERIFY(!WindowProbe(window).machineStrip()->emergencyStopButton()->isEnabled());
+        QSignalSpy stops(WindowProbe(window).emergencyStop(), &EmergencyStop::triggered);
         QTest::keyClick(&window, Qt::Key_F12);
         QCOMPARE(stops.size(), 1);
-        QVERIFY(window.offlineActions()->closeFile());
+        QVERIFY(WindowProbe(window).offlineActions()->closeFile());
         QTRY_VERIFY(estop->isEnabled());
 
         // A session log replayed.
@@ -173,8 +178,8 @@ private Q_SLOTS:
         log.header();
         log.read(1, speed->address, {300});
         const QString path = log.save(dir, QStringLiteral("replayed.log"));
-        QSignalSpy opened(window.replayMode(), &ReplayMode::opened);
-        QVERIFY(window.replayMode()->openPath(path));
+        QSignalSpy opened(WindowProbe(window).replayMode(), &ReplayMode::opened);
+        QVERIFY(WindowProbe(window).replayMode()->openPath(path));
         QVERIFY(opened.wait(10000) || !opened.isEmpty());
         QTRY_VERIFY(!estop->isEnabled());
         QVERIFY2(estop->toolTip().contains(QStringLiteral("replayed")),
