@@ -6,7 +6,7 @@
 #                            gio for the file types), clang with
 #                            libFuzzer (scripts/fuzz.sh), clang-format (scripts/check-format.sh)
 #                            the accessibility bus with pyatspi (tests/a11y/a11y-walk.py) and
-#                            headless chromium with node and puppeteer-core (tests/pendant)
+#                            headless chromium with node and puppeteer-core (tests/core/pendant)
 set -euo pipefail
 
 packages=(build-essential cmake ninja-build pkg-config
@@ -30,10 +30,10 @@ for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 # The pendant's browser test drives chromium with puppeteer-core (no browser download: it uses
-# Debian's chromium), pinned by tests/pendant/package-lock.json.
+# Debian's chromium), pinned by tests/core/pendant/package-lock.json.
 browser_test() {
-    if [[ "${1:-}" == "--test" && ! -d tests/pendant/node_modules/puppeteer-core ]]; then
-        (cd tests/pendant && npm ci --no-audit --no-fund --loglevel=error)
+    if [[ "${1:-}" == "--test" && ! -d tests/core/pendant/node_modules/puppeteer-core ]]; then
+        (cd tests/core/pendant && npm ci --no-audit --no-fund --loglevel=error)
     fi
 }
 cd "$(dirname "$0")/.."

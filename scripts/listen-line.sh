@@ -22,7 +22,7 @@ for _ in $(seq 100); do [[ -e $dir/line.3 ]] && break; sleep 0.1; done
     >"$dir/heard.json" 2>"$dir/listen.err" &
 listenpid=$!
 for _ in $(seq 100); do grep -q "listening on" "$dir/listen.err" && break; sleep 0.1; done
-/usr/bin/python3 "$here/tests/listen/plc_master.py" "$dir/line.1" 38400 "$seconds" >"$dir/plc.out"
+/usr/bin/python3 "$here/tests/fixtures/plc_master.py" "$dir/line.1" 38400 "$seconds" >"$dir/plc.out"
 sleep 1
 kill -INT "$listenpid"; wait "$listenpid"
 kill -INT "$simpid"; wait "$simpid"; simpid=

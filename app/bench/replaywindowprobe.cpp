@@ -12,6 +12,7 @@
 #include "widgets/plots/positionplot.h"
 #include "widgets/plots/xyplot.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QCoreApplication>
 #include <QDockWidget>
@@ -58,24 +59,25 @@ int runReplayWindowChild(const QString &logPath, int seeks)
     window.show();
     // The heaviest views in sight: the Plots page (position plot and XY trace) and every dock
     // (the traffic view, the device list).
-    for (int i = 0; i < window.pages().size(); ++i) {
-        if (window.pages().at(i) == window.plotPage())
-            window.showPage(i);
+    const WindowProbe probe(window);
+    for (int i = 0; i < probe.pages().size(); ++i) {
+        if (probe.pages().at(i) == probe.plotPage())
+            probe.showPage(i);
     }
     for (QDockWidget *dock : window.findChildren<QDockWidget *>())
         dock->show();
     QCoreApplication::processEvents();
     // What the user sees after a seek: the traffic rows batched, the plots redrawn (both on
     // timers of their own otherwise), everything posted done, the window painted.
-    const auto everyViewUpdated = [&window] {
-        window.trafficView()->model()->flush();
-        window.plotPage()->positionPlot()->refresh();
-        window.plotPage()->xyPlot()->flush();
+    const auto everyViewUpdated = [&window, &probe] {
+        probe.trafficView()->model()->flush();
+        probe.plotPage()->positionPlot()->refresh();
+        probe.plotPage()->xyPlot()->flush();
         QCoreApplication::processEvents();
         window.repaint();
     };
 
-    ReplayMode *replay = window.replayMode();
+    ReplayMode *replay = probe.replayMode();
     QEventLoop loop;
     QString failure;
     QObject::connect(replay, &ReplayMode::opened, &loop, &QEventLoop::quit);
@@ -108,8 +110,8 @@ int runReplayWindowChild(const QString &logPath, int seeks)
         times.append(double(timer.nsecsElapsed()) / 1e6);
     }
     result.insert(QStringLiteral("seeks_ms"), times);
-    result.insert(QStringLiteral("traffic_rows"), window.trafficView()->model()->storedCount());
-    result.insert(QStringLiteral("trace_points"), window.plotPage()->xyPlot()->traceCount());
+    result.insert(QStringLiteral("traffic_rows"), probe.trafficView()->model()->storedCount());
+    result.insert(QStringLiteral("trace_points"), probe.plotPage()->xyPlot()->traceCount());
     result.insert(QStringLiteral("peak_rss_mb"),
                   statusMb(QCoreApplication::applicationPid(), QByteArrayLiteral("VmHWM")));
     return say(0);

@@ -8,6 +8,7 @@
 #include "shooter.h"
 #include "widgets/docks/devicelistdock.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QAction>
 
@@ -19,7 +20,7 @@ void deviceList(Shooter &s)
     // technician would, motor 1 of device 2 homed, device 2 in view.
     Script &script = s.script();
     script.then([&s] {
-        DeviceListDock *dock = s.window()->deviceListDock();
+        DeviceListDock *dock = WindowProbe(*s.window()).deviceListDock();
         s.session()->setDeviceIds({1, 2, 3});
         dock->setName(1, QStringLiteral("X/Y table"));
         dock->setName(2, QStringLiteral("Z axis, spindle"));
@@ -36,7 +37,7 @@ void deviceList(Shooter &s)
     s.shoot(Shooter::sceneFileName(QStringLiteral("device-list")), s.pageIndex<MotorPage>());
     script.then([&s] {
         s.session()->showDevice(1);
-        s.window()->deviceListDock()->hide();
+        WindowProbe(*s.window()).deviceListDock()->hide();
         s.session()->setDeviceIds({});
     });
     script.sleep(1000);

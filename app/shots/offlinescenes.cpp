@@ -16,6 +16,7 @@
 #include "window/mainwindow.h"
 #include "window/offlineactions.h"
 #include "window/profileactions.h"
+#include "window/windowprobe.h"
 
 namespace stepcom::offlinescenes {
 
@@ -52,11 +53,11 @@ void editing(Shooter &s)
     script.then([&s, page] {
         const QString path =
             saveMachine(s, QStringLiteral("machine-a.json"), QStringLiteral("Machine A"), 420, 8);
-        if (path.isEmpty() || !s.window()->profileActions()->openFile(path)) {
+        if (path.isEmpty() || !WindowProbe(*s.window()).profileActions()->openFile(path)) {
             s.script().fail(QStringLiteral("the profile could not be opened offline"));
             return;
         }
-        s.window()->showPage(page);
+        WindowProbe(*s.window()).showPage(page);
         for (ParameterField *f : s.window()->findChildren<ParameterField *>()) {
             if (f->parameter().key == QLatin1String("motor1.speed"))
                 f->enterText(QStringLiteral("450"));
@@ -65,7 +66,7 @@ void editing(Shooter &s)
     s.shoot(Shooter::sceneFileName(QStringLiteral("offline-editing")), page);
     script.then([&s] {
         s.session()->parameters()->revertAll();
-        s.window()->offlineActions()->closeFile();
+        WindowProbe(*s.window()).offlineActions()->closeFile();
     });
 }
 
@@ -77,10 +78,13 @@ void compareFiles(Shooter &s)
             saveMachine(s, QStringLiteral("machine-a.json"), QStringLiteral("Machine A"), 420, 8);
         const QString b =
             saveMachine(s, QStringLiteral("machine-b.json"), QStringLiteral("Machine B"), 450, 16);
-        if (a.isEmpty() || b.isEmpty() || !s.window()->offlineActions()->compareFiles(a, b))
+        if (a.isEmpty() || b.isEmpty() ||
+            !WindowProbe(*s.window()).offlineActions()->compareFiles(a, b))
             s.script().fail(QStringLiteral("the two profiles could not be compared"));
     });
-    const auto dialog = [&s]() -> QWidget * { return s.window()->offlineActions()->filesDialog(); };
+    const auto dialog = [&s]() -> QWidget * {
+        return WindowProbe(*s.window()).offlineActions()->filesDialog();
+    };
     script.waitFor(QStringLiteral("the two files compared"),
                    [dialog] { return dialog() && dialog()->isVisible(); });
     s.shoot(Shooter::sceneFileName(QStringLiteral("profile-files-compare")), -1, dialog);
@@ -95,7 +99,7 @@ void replay(Shooter &s)
     const QString speed = QStringLiteral("motor1.speed");
     auto written = std::make_shared<qint64>(0);
     script.then([&s, log] {
-        s.window()->sessionLog()->setFile(log);
+        WindowProbe(*s.window()).sessionLog()->setFile(log);
         s.session()->connectSimulator();
     });
     script.waitFor(QStringLiteral("the read-all of the recorded session"), [&s] {
@@ -117,35 +121,38 @@ void replay(Shooter &s)
     script.then([&s] { s.session()->disconnectFrom(); });
     script.waitFor(QStringLiteral("the disconnect"), [&s] { return !s.session()->isConnected(); });
     script.then([&s, log] {
-        s.window()->sessionLog()->setFile(QString());
-        s.window()->replayMode()->openPath(log);
+        WindowProbe(*s.window()).sessionLog()->setFile(QString());
+        WindowProbe(*s.window()).replayMode()->openPath(log);
     });
     script.waitFor(QStringLiteral("the replay"),
-                   [&s] { return s.window()->replayMode()->isActive(); });
+                   [&s] { return WindowProbe(*s.window()).replayMode()->isActive(); });
     script.then([&s, page] {
-        ReplayMode *replay = s.window()->replayMode();
+        ReplayMode *replay = WindowProbe(*s.window()).replayMode();
         // A moment of the move: after its command, before it ends.
         for (const ReplayEvent &e : replay->log().events()) {
             if (e.kind == ReplayEvent::Kind::Command)
                 replay->seek(e.ms + 400);
         }
-        s.window()->showPage(page);
+        WindowProbe(*s.window()).showPage(page);
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("replay")), page);
     // The last moment the link was up, on the Plots page with the device list open: the
     // position plot and the XY path of the move, each device's state then.
     script.then([&s] {
-        ReplayMode *replay = s.window()->replayMode();
+        ReplayMode *replay = WindowProbe(*s.window()).replayMode();
         qint64 at = replay->log().durationMs();
         while (at > 0 && !replay->log().stateAt(at).linkUp)
             at -= 10;
         replay->seek(at);
-        s.window()->deviceListDock()->toggleViewAction()->trigger(); // as View → Devices does
+        WindowProbe(*s.window())
+            .deviceListDock()
+            ->toggleViewAction()
+            ->trigger(); // as View → Devices does
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("replay-plots")), s.pageIndex<PlotPage>());
     script.then([&s] {
-        s.window()->deviceListDock()->toggleViewAction()->trigger();
-        s.window()->replayMode()->close();
+        WindowProbe(*s.window()).deviceListDock()->toggleViewAction()->trigger();
+        WindowProbe(*s.window()).replayMode()->close();
     });
 }
 

@@ -25,6 +25,7 @@
 #include "widgets/motion/patheditor.h"
 #include "window/mainwindow.h"
 #include "window/profileactions.h"
+#include "window/windowprobe.h"
 
 #include <QDockWidget>
 #include <QFile>
@@ -81,7 +82,7 @@ void jogging(Shooter &s)
 {
     const int page = s.pageIndex<MotionPage>();
     Script &script = s.script();
-    script.then([&s, page] { s.window()->showPage(page); });
+    script.then([&s, page] { WindowProbe(*s.window()).showPage(page); });
     script.sleep(200);
     script.then([&s] {
         if (!s.session()->jog()->press(1, Direction::Forward))
@@ -99,7 +100,7 @@ void plotsMoving(Shooter &s)
 {
     Script &script = s.script();
     script.then([&s] {
-        QPushButton *button = s.window()->motionPage()->returnToZeroButton();
+        QPushButton *button = WindowProbe(*s.window()).motionPage()->returnToZeroButton();
         if (!button->isEnabled()) {
             s.script().fail(QStringLiteral("\"Return to data zero\" is disabled"));
             return;
@@ -148,7 +149,7 @@ void writeChanges(Shooter &s)
 {
     Script &script = s.script();
     script.then([&s] {
-        s.window()->showPage(s.pageIndex<MotorPage>());
+        WindowProbe(*s.window()).showPage(s.pageIndex<MotorPage>());
         ParameterField *speed = field(s.window(), QStringLiteral("motor1.speed"));
         ParameterField *accel = field(s.window(), QStringLiteral("motor1.accel_frequency"));
         if (!speed || !accel) {
@@ -159,15 +160,17 @@ void writeChanges(Shooter &s)
         accel->enterText(QStringLiteral("1200"));
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("edited")));
-    script.then([&s] { s.window()->writeChanges(); });
+    script.then([&s] { WindowProbe(*s.window()).writeChanges(); });
     script.waitFor(QStringLiteral("the write dialog"), [&s] {
-        return s.window()->writeDialog() && s.window()->writeDialog()->isVisible();
+        return WindowProbe(*s.window()).writeDialog() &&
+               WindowProbe(*s.window()).writeDialog()->isVisible();
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("write-changes")), -1,
-            [&s]() -> QWidget * { return s.window()->writeDialog(); });
+            [&s]() -> QWidget * { return WindowProbe(*s.window()).writeDialog(); });
     script.then([&s] {
-        auto *write =
-            s.window()->writeDialog()->findChild<QPushButton *>(QStringLiteral("writeButton"));
+        auto *write = WindowProbe(*s.window())
+                          .writeDialog()
+                          ->findChild<QPushButton *>(QStringLiteral("writeButton"));
         if (!write) {
             s.script().fail(QStringLiteral("the write dialog has no write button"));
             return;
@@ -211,12 +214,13 @@ void wiringWarning(Shooter &s)
 bool typeInterpolation(Shooter &s, int page, int tab,
                        const QList<std::pair<const char *, const char *>> &values)
 {
-    auto *interpolation = qobject_cast<InterpolationPage *>(s.window()->pages().value(page));
+    auto *interpolation =
+        qobject_cast<InterpolationPage *>(WindowProbe(*s.window()).pages().value(page));
     if (!interpolation) {
         s.script().fail(QStringLiteral("the window has no interpolation page"));
         return false;
     }
-    s.window()->showPage(page);
+    WindowProbe(*s.window()).showPage(page);
     interpolation->tabs()->setCurrentIndex(tab);
     for (const auto &[key, value] : values) {
         ParameterField *f = field(s.window(), QLatin1String(key));
@@ -249,11 +253,11 @@ void arcRunning(Shooter &s)
     script.waitFor(QStringLiteral("the arc to be written"),
                    [&s] { return !s.session()->parameters()->hasEdits(); });
     script.waitFor(QStringLiteral("Start arc to be enabled"), [&s, page] {
-        auto *p = qobject_cast<InterpolationPage *>(s.window()->pages().value(page));
+        auto *p = qobject_cast<InterpolationPage *>(WindowProbe(*s.window()).pages().value(page));
         return p->arcEditor()->startButton()->isEnabled();
     });
     script.then([&s, page] {
-        qobject_cast<InterpolationPage *>(s.window()->pages().value(page))
+        qobject_cast<InterpolationPage *>(WindowProbe(*s.window()).pages().value(page))
             ->arcEditor()
             ->startButton()
             ->click();
@@ -281,7 +285,7 @@ void lineEdited(Shooter &s)
     s.shoot(Shooter::sceneFileName(QStringLiteral("line-edited")));
     script.then([&s, page] {
         s.session()->parameters()->revertAll();
-        qobject_cast<InterpolationPage *>(s.window()->pages().value(page))
+        qobject_cast<InterpolationPage *>(WindowProbe(*s.window()).pages().value(page))
             ->tabs()
             ->setCurrentIndex(0);
     });
@@ -294,14 +298,14 @@ void modeQuestion(Shooter &s)
     Script &script = s.script();
     const int page = s.pageIndex<ModesPage>();
     const auto modes = [&s, page] {
-        return qobject_cast<ModesPage *>(s.window()->pages().value(page));
+        return qobject_cast<ModesPage *>(WindowProbe(*s.window()).pages().value(page));
     };
     script.then([&s, page, modes] {
         if (!modes()) {
             s.script().fail(QStringLiteral("the window has no modes page"));
             return;
         }
-        s.window()->showPage(page);
+        WindowProbe(*s.window()).showPage(page);
         modes()->chooseMode(3);
     });
     script.waitFor(QStringLiteral("the mode question"), [modes] {
@@ -314,7 +318,7 @@ void modeQuestion(Shooter &s)
 
 ProfileActions *profiles(Shooter &s)
 {
-    ProfileActions *actions = s.window()->profileActions();
+    ProfileActions *actions = WindowProbe(*s.window()).profileActions();
     if (!actions)
         s.script().fail(QStringLiteral("the window has no profile actions"));
     return actions;
@@ -334,7 +338,7 @@ void profileCompare(Shooter &s)
             s.script().fail(QStringLiteral("no profile actions or motor fields"));
             return;
         }
-        s.window()->showPage(s.pageIndex<MotorPage>());
+        WindowProbe(*s.window()).showPage(s.pageIndex<MotorPage>());
         speed->enterText(QStringLiteral("600"));
         micro->enterText(QStringLiteral("16"));
         const bool saved = actions->saveFromEditedFile(path);
@@ -344,7 +348,7 @@ void profileCompare(Shooter &s)
                 QStringLiteral("the profile %1 could not be saved and opened").arg(path));
     });
     const auto dialog = [&s]() -> ProfileCompareDialog * {
-        return s.window()->profileActions()->compareDialog();
+        return WindowProbe(*s.window()).profileActions()->compareDialog();
     };
     script.waitFor(QStringLiteral("the comparison"), [dialog] {
         return dialog() && dialog()->isVisible() && !dialog()->isBusy() &&
@@ -371,11 +375,13 @@ void profileError(Shooter &s)
         if (ProfileActions *actions = profiles(s); actions && actions->openFile(path))
             s.script().fail(QStringLiteral("the broken profile was accepted"));
     });
-    const auto box = [&s]() -> QWidget * { return s.window()->profileActions()->errorBox(); };
+    const auto box = [&s]() -> QWidget * {
+        return WindowProbe(*s.window()).profileActions()->errorBox();
+    };
     script.waitFor(QStringLiteral("the profile error"),
                    [box] { return box() && box()->isVisible(); });
     s.shoot(Shooter::sceneFileName(QStringLiteral("profile-error")), -1, box);
-    script.then([&s] { s.window()->profileActions()->errorBox()->close(); });
+    script.then([&s] { WindowProbe(*s.window()).profileActions()->errorBox()->close(); });
 }
 
 // A controller at id 7 that nobody remembers: the bus scan finds it.
@@ -387,12 +393,12 @@ void busScan(Shooter &s)
         if (!sim)
             return;
         auto *page = qobject_cast<ConnectionPage *>(
-            s.window()->pages().value(s.pageIndex<ConnectionPage>()));
+            WindowProbe(*s.window()).pages().value(s.pageIndex<ConnectionPage>()));
         if (!page) {
             s.script().fail(QStringLiteral("the window has no connection page"));
             return;
         }
-        s.window()->showPage(s.pageIndex<ConnectionPage>());
+        WindowProbe(*s.window()).showPage(s.pageIndex<ConnectionPage>());
         BusScanDialog *dialog = page->openBusScan();
         LinkSettings base;
         base.portName = sim->rtuPath();
@@ -404,7 +410,7 @@ void busScan(Shooter &s)
     });
     const auto dialog = [&s]() -> BusScanDialog * {
         auto *page = qobject_cast<ConnectionPage *>(
-            s.window()->pages().value(s.pageIndex<ConnectionPage>()));
+            WindowProbe(*s.window()).pages().value(s.pageIndex<ConnectionPage>()));
         return page ? page->scanDialog() : nullptr;
     };
     script.waitFor(
@@ -430,8 +436,8 @@ void portMissing(Shooter &s)
             if (!QFileInfo::exists(candidate))
                 *port = candidate;
         }
-        auto *page = qobject_cast<ConnectionPage *>(s.window()->pages().value(index));
-        s.window()->showPage(index);
+        auto *page = qobject_cast<ConnectionPage *>(WindowProbe(*s.window()).pages().value(index));
+        WindowProbe(*s.window()).showPage(index);
         LinkSettings settings;
         settings.portName = *port;
         page->applySettings(settings);
@@ -439,7 +445,7 @@ void portMissing(Shooter &s)
         page->connectNow();
     });
     script.waitFor(QStringLiteral("the connection attempt to fail"), [&s, index, port] {
-        auto *page = qobject_cast<ConnectionPage *>(s.window()->pages().value(index));
+        auto *page = qobject_cast<ConnectionPage *>(WindowProbe(*s.window()).pages().value(index));
         return !s.session()->isConnected() && page->statusText().contains(*port);
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("port-missing")));
@@ -450,8 +456,8 @@ void checklistDirection(Shooter &s)
 {
     Script &script = s.script();
     script.then([&s] {
-        s.window()->showPage(s.pageIndex<ChecklistPage>());
-        ChecklistPage *page = s.window()->checklistPage();
+        WindowProbe(*s.window()).showPage(s.pageIndex<ChecklistPage>());
+        ChecklistPage *page = WindowProbe(*s.window()).checklistPage();
         page->selectStep(QStringLiteral("motor1.direction"));
         auto *w = qobject_cast<ChecklistDirectionStep *>(
             page->stepWidget(QStringLiteral("motor1.direction")));
@@ -459,7 +465,9 @@ void checklistDirection(Shooter &s)
     });
     script.waitFor(QStringLiteral("the direction step's question"), [&s] {
         auto *w = qobject_cast<ChecklistDirectionStep *>(
-            s.window()->checklistPage()->stepWidget(QStringLiteral("motor1.direction")));
+            WindowProbe(*s.window())
+                .checklistPage()
+                ->stepWidget(QStringLiteral("motor1.direction")));
         return w && w->yesButton()->isEnabled();
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("checklist-direction")));
@@ -472,7 +480,9 @@ void checklistMiswired(Shooter &s)
     Script &script = s.script();
     const auto widget = [&s] {
         return qobject_cast<ChecklistInputStep *>(
-            s.window()->checklistPage()->stepWidget(QStringLiteral("motor1.limit_positive")));
+            WindowProbe(*s.window())
+                .checklistPage()
+                ->stepWidget(QStringLiteral("motor1.limit_positive")));
     };
     script.then([&s] {
         s.simulator()->device()->setValue(QStringLiteral("motor1.limit_positive"), 3);
@@ -480,8 +490,10 @@ void checklistMiswired(Shooter &s)
     });
     script.sleep(800);
     script.then([&s, widget] {
-        s.window()->showPage(s.pageIndex<ChecklistPage>());
-        s.window()->checklistPage()->selectStep(QStringLiteral("motor1.limit_positive"));
+        WindowProbe(*s.window()).showPage(s.pageIndex<ChecklistPage>());
+        WindowProbe(*s.window())
+            .checklistPage()
+            ->selectStep(QStringLiteral("motor1.limit_positive"));
         widget()->watchButton()->click();
         s.simulator()->device()->setInput(1, SimDevice::InputForce::On);
     });
@@ -494,7 +506,7 @@ void checklistMiswired(Shooter &s)
         s.simulator()->device()->setValue(QStringLiteral("motor1.limit_positive"), 1);
         s.session()->readAll();
         // The next language's pictures start from an empty checklist again.
-        ChecklistPage *page = s.window()->checklistPage();
+        ChecklistPage *page = WindowProbe(*s.window()).checklistPage();
         QFile::remove(page->checklistFile());
         page->setProfilePath(page->profilePath());
     });

@@ -7,6 +7,7 @@
 #include "sim/host/builtinsimulator.h"
 #include "sim/host/simhost.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QApplication>
 #include <QHash>
@@ -144,7 +145,7 @@ void Shooter::planPages()
         if (scene.when == Scene::When::BeforePages)
             scene.plan(*this);
     }
-    const QList<Page *> &pages = m_window->pages();
+    const QList<Page *> &pages = WindowProbe(*m_window).pages();
     for (int i = 0; i < pages.size(); ++i)
         shoot(pageFileName(pages, i), i);
     for (const Scene &scene : scenes()) {
@@ -180,7 +181,7 @@ void Shooter::shoot(const QString &fileName, int page, std::function<QWidget *()
 {
     m_script.then([this, page] {
         if (page >= 0)
-            m_window->showPage(page);
+            WindowProbe(*m_window).showPage(page);
     });
     m_script.sleep(kSettleMs);
     m_script.then([this, fileName, dialog] {
@@ -219,7 +220,7 @@ void Shooter::shootOnScreen(const QString &fileName, int page, const QString &sc
         m_window->setWindowFlag(Qt::FramelessWindowHint, true);
         m_window->setScreen(target);
         m_window->move(target->availableGeometry().topLeft());
-        m_window->useDefaultLayout();
+        WindowProbe(*m_window).useDefaultLayout();
         m_window->showOnScreen();
     });
     m_script.waitFor(QStringLiteral("the window to fill %1").arg(screenName), [this, target] {
@@ -228,7 +229,7 @@ void Shooter::shootOnScreen(const QString &fileName, int page, const QString &sc
     });
     m_script.then([this, page] {
         if (page >= 0)
-            m_window->showPage(page);
+            WindowProbe(*m_window).showPage(page);
     });
     m_script.sleep(kSettleMs);
     m_script.then([this, fileName, saved] {

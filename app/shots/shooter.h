@@ -3,6 +3,7 @@
 #include "base/page.h"
 #include "script.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QDir>
 #include <QSize>
@@ -104,7 +105,7 @@ int Shooter::pageIndex() const
 {
     if (!m_window)
         return -1;
-    const QList<Page *> &pages = m_window->pages();
+    const QList<Page *> &pages = WindowProbe(*m_window).pages();
     for (int i = 0; i < pages.size(); ++i) {
         if (qobject_cast<T *>(pages.at(i)))
             return i;

@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "shooter.h"
 #include "window/mainwindow.h"
+#include "window/windowprobe.h"
 
 #include <QApplication>
 #include <QDir>
@@ -68,9 +69,9 @@ private Q_SLOTS:
         Language::instance().setLanguage(QStringLiteral("en"));
         DeviceSession session;
         MainWindow window(&session);
-        QVERIFY(window.pages().size() >= 2);
-        for (int i = 0; i < window.pages().size(); ++i)
-            expected << Shooter::pageFileName(window.pages(), i);
+        QVERIFY(WindowProbe(window).pages().size() >= 2);
+        for (int i = 0; i < WindowProbe(window).pages().size(); ++i)
+            expected << Shooter::pageFileName(WindowProbe(window).pages(), i);
         QCOMPARE(QSet<QString>(expected.begin(), expected.end()).size(), expected.size());
         // One generator per language, side by side: they mostly wait for the simulated motors.
         std::vector<std::unique_ptr<QProcess>> runs;
@@ -91,7 +92,7 @@ private Q_SLOTS:
                     expected << name;
             }
         }
-        QVERIFY2(expected.size() > window.pages().size(), "no scene was shot");
+        QVERIFY2(expected.size() > WindowProbe(window).pages().size(), "no scene was shot");
     }
 
     void everyPageAndSceneInEveryLanguage_data()

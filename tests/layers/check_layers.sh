@@ -104,6 +104,31 @@ while read -r count folder; do
     echo "check_layers: $folder holds $count .cpp files (at most 15: split it along a seam)"
     bad=1
 done < <(find core ui app -name '*.cpp' -not -path '*/build*' -printf '%h\n' | sort | uniq -c)
+# The tests mirror the sources (docs/testing.md): tests/core/<room>, tests/ui/<floor> and
+# tests/app/<program> each stand for a folder that exists there; the other folders of tests/
+# are the shared fixtures and the kinds of test that cut across the rooms.
+mirrored="core ui app"
+crosscutting="fixtures a11y docs fuzz i18n interop layers packaging sanitizers soak"
+for dir in tests/*/; do
+    dir=$(basename "$dir")
+    case " $mirrored $crosscutting " in *" $dir "*) continue ;; esac
+    echo "check_layers: tests/$dir is no room of the sources nor a kind of test (docs/testing.md)"
+    bad=1
+done
+for top in $mirrored; do
+    [[ -d tests/$top ]] || continue
+    for dir in tests/"$top"/*/; do
+        [[ -d $dir ]] || continue
+        room=$(basename "$dir")
+        [[ -d $top/$room ]] && continue
+        echo "check_layers: tests/$top/$room tests no folder $top/$room (move it where its sources are)"
+        bad=1
+    done
+    while IFS= read -r suite; do
+        echo "check_layers: $suite sits in no room of tests/$top (tests/$top/<room>/)"
+        bad=1
+    done < <(find "tests/$top" -maxdepth 1 -name 'tst_*.cpp')
+done
 # History stays in the commits: the reader of the code has no issue tracker.
 while IFS= read -r hit; do
     echo "$hit: names an issue number (say why, not when)"

@@ -16,8 +16,8 @@ fresh() { # a clean tree to plant in
     cp -al "$tmp/clean" "$tmp/tree"
 }
 failed=0
+out=""
 expect() { # expect WORDS: the check fails on the tree as planted, saying WORDS
-    local out
     if out=$(bash "$check" "$tmp/tree" 2>&1); then
         echo "NOT CAUGHT: $plant"
         failed=1
@@ -27,6 +27,12 @@ expect() { # expect WORDS: the check fails on the tree as planted, saying WORDS
         failed=1
     else
         echo "caught: $plant"
+    fi
+}
+expect_also() { # expect_also WORDS: the last run's output also says WORDS
+    if ! grep -qF -- "$1" <<<"$out"; then
+        echo "CAUGHT, but without '$1': $plant"
+        failed=1
     fi
 }
 fresh
@@ -65,10 +71,18 @@ fresh
 sed -i '$a // fixed for iss''ue 12' "$tmp/tree/core/map/registermap.h"
 expect "names an issue number"
 
-plant="a folder of ui/ on no floor"
+# The test-folder plants share this tree (each run of the check reads every source): a test
+# folder for a room the core lacks, a suite on no floor of tests/ui, a folder outside the mirror.
+plant="a folder of ui/ on no floor; test folders the sources do not mirror"
 fresh
-mkdir -p "$tmp/tree/ui/misc"
+mkdir -p "$tmp/tree/ui/misc" "$tmp/tree/tests/core/misc" "$tmp/tree/tests/cli"
 echo "// planted" >"$tmp/tree/ui/misc/x.cpp"
+echo "// planted" >"$tmp/tree/tests/core/misc/tst_misc.cpp"
+echo "// planted" >"$tmp/tree/tests/ui/tst_misc.cpp"
+echo "// planted" >"$tmp/tree/tests/cli/tst_misc.cpp"
 expect "ui/misc is on no floor"
+expect_also "tests/core/misc tests no folder core/misc"
+expect_also "tests/ui/tst_misc.cpp sits in no room of tests/ui"
+expect_also "tests/cli is no room of the sources nor a kind of test"
 
 exit $failed

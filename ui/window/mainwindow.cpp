@@ -214,11 +214,6 @@ void MainWindow::addPage(Page *page)
     m_sidebar->addPage(page);
 }
 
-WriteChangesDialog *MainWindow::writeDialog() const
-{
-    return m_writeFlow->dialog();
-}
-
 Page *MainWindow::currentPage() const
 {
     const int index = m_stack->currentIndex();
@@ -228,11 +223,6 @@ Page *MainWindow::currentPage() const
 void MainWindow::showPage(int index)
 {
     m_sidebar->setCurrentPage(index);
-}
-
-QAction *MainWindow::action(const QString &objectName) const
-{
-    return findChild<QAction *>(objectName);
 }
 
 void MainWindow::createActions()

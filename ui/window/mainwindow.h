@@ -48,55 +48,16 @@ public:
     explicit MainWindow(DeviceSession *session, QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    DeviceSession *session() const { return m_session; }
-    EmergencyStop *emergencyStop() const { return m_estop; }
-    QToolButton *emergencyStopButton() const { return m_estopButton; }
-    const QList<Page *> &pages() const { return m_pages; }
-    Page *currentPage() const;
-    void showPage(int index);
     // Shows the window as the user left it; the first time, maximized on a small screen (below
     // 1440×900) and on a larger one sized to most of it, in its middle.
     void showOnScreen();
-    // The layout of a first start on the window's screen, as if nothing had been saved: the
-    // docks where they start, the bottom ones as high as that screen allows, arranged for its
-    // width; showOnScreen() then shows it as a first start does. stepcom-shots' laptop scenes
-    // take their pictures this way (the real program's path, not an imitation).
-    void useDefaultLayout();
-    MachineStrip *machineStrip() const { return m_strip; }
-    PageSidebar *sidebar() const { return m_sidebar; }
-    StatusDock *statusDock() const { return m_statusDock; } // monitoring
-    DeviceListDock *deviceListDock() const { return m_deviceDock; }
-    TrafficView *trafficView() const { return m_traffic; }
-    // Every frame of every connection in a file (the Traffic dock's "Open log folder").
-    SessionLog *sessionLog() const { return m_sessionLog; }
-    MessageView *messageView() const { return m_messages; }
-    MotionPage *motionPage() const { return m_motion; }           // jogging
-    ProfileActions *profileActions() const { return m_profiles; } // profiles
-    MachineActions *machineActions() const { return m_machine; }
-    OfflineActions *offlineActions() const { return m_offline; }
-    OfflineBanner *offlineBanner() const { return m_offlineBanner; }
-    ReplayMode *replayMode() const { return m_replay; }
     PendantActions *pendantActions() const { return m_pendant; } // a phone as the pendant
     ListenMode *listenMode() const { return m_listen; }
-    ChecklistPage *checklistPage() const { return m_checklist; }
-    PlotPage *plotPage() const { return m_plots; }
-    BackupGuard *backupGuard() const { return m_backups; }
-    // The dialogs a test (or a curious user) may want to reach while they are open.
-    WriteChangesDialog *writeDialog() const;
-    QMessageBox *closeQuestion() const;
-    QAction *action(const QString &objectName) const;
 
     // A file handed to the window (`stepcom FILE`, "Open with StepCom"): a profile is edited
     // without a controller, a session log or a support bundle replayed; anything else is
     // refused with a message naming the file. False when refused at once.
     bool openGivenFile(const QString &path);
-    QMessageBox *givenFileError() const;
-
-    // Ask before writing: opens the write dialog (non-modal to the event loop).
-    void writeChanges();
-    // Help → User guide (F1): the guide in the window's language at the section of `topic`
-    // (a page's or dialog's class name; the current page when empty).
-    GuideWindow *openGuide(const QString &topic = QString());
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -105,6 +66,21 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    // Tests, stepcom-shots and the benchmark reach the docks, pages and dialogs through it.
+    friend class WindowProbe;
+
+    Page *currentPage() const;
+    void showPage(int index);
+    // The layout of a first start on the window's screen, as if nothing had been saved: the
+    // docks where they start, the bottom ones as high as that screen allows, arranged for its
+    // width; showOnScreen() then shows it as a first start does. stepcom-shots' laptop scenes
+    // take their pictures this way (the real program's path, not an imitation).
+    void useDefaultLayout();
+    // Ask before writing: opens the write dialog (non-modal to the event loop).
+    void writeChanges();
+    // Help → User guide (F1): the guide in the window's language at the section of `topic`
+    // (a page's or dialog's class name; the current page when empty).
+    GuideWindow *openGuide(const QString &topic = QString());
     void createActions();
     void createMenus();
     void createDocks();

@@ -13,11 +13,6 @@
 
 namespace stepcom {
 
-QMessageBox *MainWindow::closeQuestion() const
-{
-    return m_closeQuestion;
-}
-
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     if (m_session->parameters()->hasEdits() && !m_closeConfirmed) {

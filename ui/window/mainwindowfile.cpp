@@ -36,9 +36,4 @@ bool MainWindow::openGivenFile(const QString &path)
     return false;
 }
 
-QMessageBox *MainWindow::givenFileError() const
-{
-    return m_givenFileError;
-}
-
 } // namespace stepcom
