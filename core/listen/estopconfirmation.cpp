@@ -38,8 +38,8 @@ EstopConfirmation::EstopConfirmation(const RegisterMap &map, int unit, bool echo
         return;
     }
     m_readAddress = *low;
-    m_read = RtuFrame::adu(unit, QModbusRequest(QModbusPdu::ReadHoldingRegisters, *low,
-                                                quint16(span)));
+    m_read =
+        RtuFrame::adu(unit, QModbusRequest(QModbusPdu::ReadHoldingRegisters, *low, quint16(span)));
 }
 
 QByteArray EstopConfirmation::stopFrameFor(const RegisterMap &map, int unit)
@@ -160,7 +160,9 @@ void EstopConfirmation::motionAnswered(const QByteArray &frame)
             m_moving << axis + 1;
     }
     if (!stopCopied()) {
-        m_sentAtMs = -1; // only the echo of the E-STOP was heard: it goes again now
+        // Only the echo of the E-STOP was heard: it goes again now.
+        m_phase = Phase::Stop;
+        m_sentAtMs = -1;
         return;
     }
     if (m_moving.isEmpty()) {

@@ -52,7 +52,8 @@ private Q_SLOTS:
         QTest::newRow("echo, controller off the line")
             << true << true << false << "not acknowledged by controller 1: only our own echo heard";
         QTest::newRow("echo not set, controller off the line")
-            << true << false << false << "not acknowledged by controller 1: only our own echo heard";
+            << true << false << false
+            << "not acknowledged by controller 1: only our own echo heard";
         QTest::newRow("echo, controller on the line") << true << true << true << stopped;
         QTest::newRow("echo not set, controller on the line") << true << false << true << stopped;
         QTest::newRow("no echo, controller on the line") << false << false << true << stopped;

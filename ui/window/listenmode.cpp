@@ -125,7 +125,7 @@ bool ListenMode::start(const LinkSettings &settings, QString *why)
         const QString text =
             tr("The adapter on %1 returns what StepCom sends (an echo), but the line's echo "
                "option is off: StepCom's own E-STOP was not taken for the controller's answer. "
-               "Turn on Echo for this line on the Connection page.")
+               "Tick \"The adapter echoes what it sends\" for this line on the Connection page.")
                 .arg(m_settings.portName);
         if (m_log)
             m_log->note(SessionLog::kUser, text, m_listener->now());
