@@ -3751,6 +3751,44 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::EstopConfirmation</name>
+    <message>
+        <source>E-STOP acknowledged by controller %1 (its answer heard; the register map names no motion state to read back)</source>
+        <translation>E-STOP acknowledged by controller %1 (its answer heard; the register map names no motion state to read back)</translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged by controller %1: both axes stopped</source>
+        <translation>E-STOP acknowledged by controller %1: both axes stopped</translation>
+    </message>
+    <message numerus="yes">
+        <source>E-STOP acknowledged by controller %1: %n axis(es) stopped</source>
+        <translation>
+            <numerusform>E-STOP acknowledged by controller %1: %n axis(es) stopped</numerusform>
+            <numerusform>E-STOP acknowledged by controller %1: %n axis(es) stopped</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stop the machine by its own E-STOP.</source>
+        <translation>Stop the machine by its own E-STOP.</translation>
+    </message>
+    <message>
+        <source>E-STOP not acknowledged by controller %1: motor %2 still running after %3 E-STOPs. %4</source>
+        <translation>E-STOP not acknowledged by controller %1: motor %2 still running after %3 E-STOPs. %4</translation>
+    </message>
+    <message>
+        <source>E-STOP not acknowledged by controller %1: a copy of it was heard, but the controller never answered the read of its motion state. %2</source>
+        <translation>E-STOP not acknowledged by controller %1: a copy of it was heard, but the controller never answered the read of its motion state. %2</translation>
+    </message>
+    <message>
+        <source>E-STOP not acknowledged by controller %1: only our own echo heard (sent %2 times). %3</source>
+        <translation>E-STOP not acknowledged by controller %1: only our own echo heard (sent %2 times). %3</translation>
+    </message>
+    <message>
+        <source>E-STOP sent %1 times into the other master&apos;s line, and controller %2 never answered it. %3</source>
+        <translation>E-STOP sent %1 times into the other master&apos;s line, and controller %2 never answered it. %3</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::FaultInjector</name>
     <message>
         <source>&apos;%1&apos; is not a share between 0 and 1 (or 0%-100%)</source>
@@ -5078,14 +5116,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>E-STOP into the other master&apos;s line (try %1)</translation>
     </message>
     <message>
-        <source>E-STOP acknowledged by id %1</source>
-        <translation>E-STOP acknowledged by id %1</translation>
-    </message>
-    <message>
-        <source>E-STOP sent %1 times into the other master&apos;s line, and id %2 never answered it: stop the machine by its own E-STOP</source>
-        <translation>E-STOP sent %1 times into the other master&apos;s line, and id %2 never answered it: stop the machine by its own E-STOP</translation>
-    </message>
-    <message>
         <source>listening on %1 at %2 baud: another master drives the line, StepCom sends nothing</source>
         <translation>listening on %1 at %2 baud: another master drives the line, StepCom sends nothing</translation>
     </message>
@@ -5114,10 +5144,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>E-STOP</translation>
     </message>
     <message>
-        <source>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it.</source>
-        <translation>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it.</translation>
-    </message>
-    <message>
         <source>Send E-STOP</source>
         <translation>Send E-STOP</translation>
     </message>
@@ -5140,6 +5166,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>The other master&apos;s writes</source>
         <translation>The other master&apos;s writes</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s motion state read back after the E-STOP (try %1)</source>
+        <translation>the controller&apos;s motion state read back after the E-STOP (try %1)</translation>
+    </message>
+    <message>
+        <source>The adapter on %1 returns what StepCom sends (an echo), but the line&apos;s echo option is off: StepCom&apos;s own E-STOP was not taken for the controller&apos;s answer. Tick &quot;The adapter echoes what it sends&quot; for this line on the Connection page.</source>
+        <translation>The adapter on %1 returns what StepCom sends (an echo), but the line&apos;s echo option is off: StepCom&apos;s own E-STOP was not taken for the controller&apos;s answer. Tick &quot;The adapter echoes what it sends&quot; for this line on the Connection page.</translation>
+    </message>
+    <message>
+        <source>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it and its motors are read back stopped.</source>
+        <translation>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it and its motors are read back stopped.</translation>
     </message>
 </context>
 <context>
@@ -8842,6 +8880,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>--line: &apos;%1&apos; is not a number of ptys from 1 to 32</source>
         <translation>--line: &apos;%1&apos; is not a number of ptys from 1 to 32</translation>
+    </message>
+    <message>
+        <source>With --line: the parties numbered in LIST (e.g. 2 or 1,3) hear every byte they send back first, as through an adapter without echo suppression.</source>
+        <translation>With --line: the parties numbered in LIST (e.g. 2 or 1,3) hear every byte they send back first, as through an adapter without echo suppression.</translation>
+    </message>
+    <message>
+        <source>LIST</source>
+        <translation>LIST</translation>
+    </message>
+    <message>
+        <source>--line-echo needs --line N</source>
+        <translation>--line-echo needs --line N</translation>
+    </message>
+    <message>
+        <source>--line-echo: &apos;%1&apos; is not a party of the line (1 to %2)</source>
+        <translation>--line-echo: &apos;%1&apos; is not a party of the line (1 to %2)</translation>
     </message>
 </context>
 <context>

@@ -3726,6 +3726,43 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::EstopConfirmation</name>
+    <message>
+        <source>E-STOP acknowledged by controller %1 (its answer heard; the register map names no motion state to read back)</source>
+        <translation>控制器 %1 已确认急停（已听到其应答；寄存器映射中没有可回读的运动状态）</translation>
+    </message>
+    <message>
+        <source>E-STOP acknowledged by controller %1: both axes stopped</source>
+        <translation>控制器 %1 已确认急停：两轴均已停止</translation>
+    </message>
+    <message numerus="yes">
+        <source>E-STOP acknowledged by controller %1: %n axis(es) stopped</source>
+        <translation>
+            <numerusform>控制器 %1 已确认急停：%n 个轴已停止</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Stop the machine by its own E-STOP.</source>
+        <translation>请用机器自身的急停停机。</translation>
+    </message>
+    <message>
+        <source>E-STOP not acknowledged by controller %1: motor %2 still running after %3 E-STOPs. %4</source>
+        <translation>控制器 %1 未确认急停：发送 %3 次急停后电机 %2 仍在运行。%4</translation>
+    </message>
+    <message>
+        <source>E-STOP not acknowledged by controller %1: a copy of it was heard, but the controller never answered the read of its motion state. %2</source>
+        <translation>控制器 %1 未确认急停：听到了它的副本，但控制器始终没有应答对其运动状态的读取。%2</translation>
+    </message>
+    <message>
+        <source>E-STOP not acknowledged by controller %1: only our own echo heard (sent %2 times). %3</source>
+        <translation>控制器 %1 未确认急停：只听到了自己的回显（已发送 %2 次）。%3</translation>
+    </message>
+    <message>
+        <source>E-STOP sent %1 times into the other master&apos;s line, and controller %2 never answered it. %3</source>
+        <translation>急停已向另一个主站的线路发送 %1 次，控制器 %2 始终没有应答。%3</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::FaultInjector</name>
     <message>
         <source>&apos;%1&apos; is not a share between 0 and 1 (or 0%-100%)</source>
@@ -5052,14 +5089,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>向另一个主站的线路发送急停（第 %1 次）</translation>
     </message>
     <message>
-        <source>E-STOP acknowledged by id %1</source>
-        <translation>站号 %1 已确认急停</translation>
-    </message>
-    <message>
-        <source>E-STOP sent %1 times into the other master&apos;s line, and id %2 never answered it: stop the machine by its own E-STOP</source>
-        <translation>已向另一个主站的线路发送急停 %1 次，站号 %2 始终未应答：请用机器自身的急停按钮停机</translation>
-    </message>
-    <message>
         <source>listening on %1 at %2 baud: another master drives the line, StepCom sends nothing</source>
         <translation>正在 %1 上以 %2 波特率监听：由另一个主站驱动线路，StepCom 不发送任何数据</translation>
     </message>
@@ -5088,10 +5117,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>急停</translation>
     </message>
     <message>
-        <source>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it.</source>
-        <translation>这条线路由另一个主站驱动。要向站号 %1 发送急停，插入其通信中吗？急停会在第一个静默中发出，并重复发送直到控制器应答。</translation>
-    </message>
-    <message>
         <source>Send E-STOP</source>
         <translation>发送急停</translation>
     </message>
@@ -5114,6 +5139,18 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>The other master&apos;s writes</source>
         <translation>另一个主站的写入</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s motion state read back after the E-STOP (try %1)</source>
+        <translation>急停后回读控制器的运动状态（第 %1 次）</translation>
+    </message>
+    <message>
+        <source>The adapter on %1 returns what StepCom sends (an echo), but the line&apos;s echo option is off: StepCom&apos;s own E-STOP was not taken for the controller&apos;s answer. Tick &quot;The adapter echoes what it sends&quot; for this line on the Connection page.</source>
+        <translation>%1 上的适配器会返回 StepCom 发送的内容（回显），但该线路的回显选项是关闭的：StepCom 自己的急停没有被当作控制器的应答。请在连接页面为该线路勾选“适配器会回显发送的数据”。</translation>
+    </message>
+    <message>
+        <source>Another master drives this line. Send the E-STOP to id %1 into its traffic? It goes in the first silence and again until the controller answers it and its motors are read back stopped.</source>
+        <translation>另一个主站正在驱动此线路。要把急停发送给 ID %1，插入它的通信中吗？急停在第一个静默中发出，并重复发送，直到控制器应答且回读到电机已停止。</translation>
     </message>
 </context>
 <context>
@@ -8787,6 +8824,22 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>--line: &apos;%1&apos; is not a number of ptys from 1 to 32</source>
         <translation>--line：“%1”不是 1 到 32 之间的伪终端数量</translation>
+    </message>
+    <message>
+        <source>With --line: the parties numbered in LIST (e.g. 2 or 1,3) hear every byte they send back first, as through an adapter without echo suppression.</source>
+        <translation>与 --line 一起使用：LIST 中编号的端口（如 2 或 1,3）先听到自己发出的每个字节，如同经过没有回显抑制的适配器。</translation>
+    </message>
+    <message>
+        <source>LIST</source>
+        <translation>列表</translation>
+    </message>
+    <message>
+        <source>--line-echo needs --line N</source>
+        <translation>--line-echo 需要 --line N</translation>
+    </message>
+    <message>
+        <source>--line-echo: &apos;%1&apos; is not a party of the line (1 to %2)</source>
+        <translation>--line-echo：“%1”不是线路上的端口（1 到 %2）</translation>
     </message>
 </context>
 <context>

@@ -112,9 +112,16 @@ int main(int argc, char *argv[])
             host.stop();
             return 1;
         }
+        for (const int party : std::as_const(options.lineEcho))
+            hub.setEcho(party - 1, true);
         const QStringList paths = hub.paths();
         for (int i = 0; i < paths.size(); ++i) {
-            out << QStringLiteral("line %1: %2").arg(i + 1).arg(paths.at(i)) << Qt::endl;
+            out << QStringLiteral("line %1: %2%3")
+                       .arg(i + 1)
+                       .arg(paths.at(i), options.lineEcho.contains(i + 1)
+                                             ? QStringLiteral(" (echo)")
+                                             : QString())
+                << Qt::endl;
             const QString link = QStringLiteral("%1.%2").arg(lineLink).arg(i + 1);
             if (!lineLink.isEmpty() && !hub.createLink(i, link, &error)) {
                 err << QCoreApplication::translate("stepcom-sim", "stepcom-sim: %1").arg(error)

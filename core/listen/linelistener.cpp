@@ -30,7 +30,8 @@ bool LineListener::open(const LinkSettings &settings, QString *error)
     m_port = new QSerialPort(this);
     m_port->setPortName(settings.portName);
     // Read-only: whatever happens, a listener cannot put a byte on the line.
-    m_outgoing.clear();
+    m_estop.cancel();
+    m_verdictOwed = false;
     if (!m_port->open(m_mayTransmit ? QIODevice::ReadWrite : QIODevice::ReadOnly)) {
         *error =
             PortHolders::openFailure(settings.portName, m_port->error(), m_port->errorString());
@@ -102,9 +103,8 @@ void LineListener::feed(const QByteArray &bytes, qint64 ms)
     m_lastByteMs = ms;
     emitAll(m_finder.feed(bytes, ms));
     // The first silence after the other master's frame: an answer just ended a pair.
-    if (!m_outgoing.isEmpty() && !m_decoder.waiting() && m_finder.held() == 0 &&
-        (m_sentAtMs < 0 || ms - m_sentAtMs >= kAnswerWaitMs))
-        sendNow();
+    if (m_estop.isActive() && !m_decoder.waiting() && m_finder.held() == 0)
+        sendDue(ms);
 }
 
 void LineListener::idle(qint64 ms)
@@ -113,55 +113,61 @@ void LineListener::idle(qint64 ms)
     for (const HeardEvent &e : m_decoder.idle(ms))
         Q_EMIT heard(e);
     // Or the line has been quiet for a silence (nobody is answering anything now).
-    if (!m_outgoing.isEmpty() && ms - m_lastByteMs >= m_finder.silenceMs() &&
-        (m_sentAtMs < 0 || ms - m_sentAtMs >= kAnswerWaitMs))
-        sendNow();
+    if (m_estop.isActive() && ms - m_lastByteMs >= m_finder.silenceMs())
+        sendDue(ms);
 }
 
 QByteArray LineListener::emergencyStopFrame(const RegisterMap &map, int unit)
 {
-    for (const Parameter *c : map.coils()) {
-        if (c->command != CommandClass::Emergency)
-            continue;
-        QByteArray pdu;
-        pdu.append(char(c->address >> 8));
-        pdu.append(char(c->address & 0xFF));
-        pdu.append(char(0xFF));
-        pdu.append(char(0x00));
-        return RtuFrame::adu(unit, QModbusRequest(QModbusPdu::WriteSingleCoil, pdu));
-    }
-    return {};
+    return EstopConfirmation::stopFrameFor(map, unit);
 }
 
-bool LineListener::sendInSilence(const QByteArray &frame)
+bool LineListener::sendEmergencyStop(int unit)
 {
     if (!m_port || !m_mayTransmit || !m_port->isOpen())
         return false;
-    m_outgoing = frame;
-    m_tries = 0;
-    m_sentAtMs = -1;
+    m_estop = EstopConfirmation(*m_map, unit, m_settings.echo || m_echoLearned);
+    if (!m_estop.isValid())
+        return false;
+    m_estop.start();
+    m_verdictOwed = true;
     if (now() - m_lastByteMs >= m_finder.silenceMs() && !m_decoder.waiting())
-        sendNow();
+        sendDue(now());
     return true;
 }
 
-void LineListener::sendNow()
+void LineListener::sendDue(qint64 ms)
 {
-    if (m_tries >= kSendTries) {
-        Q_EMIT sendFailed(std::exchange(m_outgoing, {}));
+    const QByteArray frame = m_estop.due(ms);
+    if (frame.isEmpty()) {
+        sayVerdict();
         return;
     }
-    ++m_tries;
+    sendNow(frame);
+    m_estop.sent(now());
+    const bool estop = frame == m_estop.stopFrame();
+    Q_EMIT frameSent(frame, estop, estop ? m_estop.stopTries() : m_estop.readTries());
+}
+
+void LineListener::sendNow(const QByteArray &frame)
+{
     const int fd = int(m_port->handle());
     const bool rts = m_settings.rs485 == LinkSettings::Rs485::Rts;
     if (rts)
         PortSetup::setRts(fd, true);
-    m_port->write(m_outgoing);
+    m_port->write(frame);
     m_port->flush();
     if (rts)
         PortSetup::endOfSend(fd);
-    m_sentAtMs = now();
-    Q_EMIT frameSent(m_outgoing, m_tries);
+}
+
+void LineListener::sayVerdict()
+{
+    if (!m_verdictOwed || m_estop.verdict() == EstopConfirmation::Verdict::Pending)
+        return;
+    m_verdictOwed = false;
+    Q_EMIT emergencyStopSettled(m_estop.verdict() == EstopConfirmation::Verdict::Acknowledged,
+                                m_estop.text());
 }
 
 void LineListener::finish()
@@ -174,9 +180,12 @@ void LineListener::finish()
 void LineListener::emitAll(const QList<HeardFrame> &frames)
 {
     for (const HeardFrame &f : frames) {
-        // The controller's answer to what StepCom sent (a copy of it) ends the sending.
-        if (!m_outgoing.isEmpty() && m_sentAtMs >= 0 && f.bytes == m_outgoing) {
-            Q_EMIT frameAnswered(std::exchange(m_outgoing, {}));
+        // StepCom's own frames (their echo, the controller's copy, the read's answer) are not
+        // the other master's traffic.
+        if (m_estop.isActive() && m_estop.heard(f, m_decoder.waitingRequest())) {
+            if (m_estop.takeEchoLearned() && !std::exchange(m_echoLearned, true))
+                Q_EMIT echoSuspected();
+            sayVerdict();
             continue;
         }
         Q_EMIT frameHeard(f);

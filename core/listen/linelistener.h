@@ -2,6 +2,7 @@
 
 #include "bus/linksettings.h"
 #include "bus/serialadapter.h"
+#include "listen/estopconfirmation.h"
 #include "listen/framefinder.h"
 #include "listen/listendecoder.h"
 
@@ -21,7 +22,8 @@ class RegisterMap;
 // listener never puts a byte on the line), its bytes through FrameFinder and ListenDecoder as
 // they arrive, every frame and every paired request said at once. The time base is ms since
 // open(); a quiet line is looked at every kTickMs so a frame cut short and a request never
-// answered are said without waiting for the next byte.
+// answered are said without waiting for the next byte. The one frame it may send is the E-STOP
+// (with the read that confirms it), never another.
 class LineListener : public QObject
 {
     Q_OBJECT
@@ -33,7 +35,7 @@ public:
 
     // Opens the port read-only at the line's baud, parity and stop bits; false and why not.
     // With setMayTransmit(true) before, it opens for writing too, for the one frame StepCom
-    // may send into another master's line: the E-STOP (sendInSilence).
+    // may send into another master's line: the E-STOP (sendEmergencyStop).
     bool open(const LinkSettings &settings, QString *error);
     void setMayTransmit(bool may) { m_mayTransmit = may; }
     void close();
@@ -52,16 +54,15 @@ public:
     // ms since open() on the listener's clock.
     qint64 now() const { return m_clock.isValid() ? m_clock.elapsed() : 0; }
 
-    // Sends `frame` in the first silence after the other master's frame (once an answer ended
-    // a pair, or the line has been quiet for a silence), and again at the next silence until
-    // the controller's answer to it is heard (a copy: FC05/FC06), at most kSendTries times.
-    // False when the port was not opened to transmit.
-    bool sendInSilence(const QByteArray &frame);
-    static constexpr int kSendTries = 10;
-    static constexpr int kAnswerWaitMs = 300;
-    bool isSending() const { return !m_outgoing.isEmpty(); }
-    // The E-STOP request (the map's emergency coil set, FC05) to `unit`; empty when the map has
-    // no emergency coil.
+    // Sends the E-STOP to `unit` in the first silence after the other master's frame (once an
+    // answer ended a pair, or the line has been quiet for a silence), and again until the
+    // controller is heard to take it (EstopConfirmation: its copy past the adapter's echo, then
+    // its motion state read back the same way). False when the port was not opened to transmit
+    // or the map has no E-STOP.
+    bool sendEmergencyStop(int unit);
+    bool isSending() const { return m_estop.isActive(); }
+    // The E-STOP request (the map's estop coil set, FC05) to `unit`; empty when the map has
+    // none.
     static QByteArray emergencyStopFrame(const RegisterMap &map, int unit);
 
     const FrameFinder &finder() const { return m_finder; }
@@ -72,15 +73,20 @@ Q_SIGNALS:
     void heard(const stepcom::HeardEvent &event);
     // The port failed (unplugged): nothing more will be heard.
     void lost(const QString &reason);
-    // sendInSilence: each time the frame went out; its answer heard; or given up.
-    void frameSent(const QByteArray &frame, int attempt);
-    void frameAnswered(const QByteArray &frame);
-    void sendFailed(const QByteArray &frame);
+    // sendEmergencyStop: each frame as it went out (`estop`: the E-STOP, else the read of the
+    // motion state), the try it was; then the verdict in words, once.
+    void frameSent(const QByteArray &frame, bool estop, int attempt);
+    void emergencyStopSettled(bool acknowledged, const QString &text);
+    // The adapter returned StepCom's own frame though the line's echo option is off (said
+    // once): from then on the first copy of each frame is taken for the echo.
+    void echoSuspected();
 
 private:
     void readPort();
     void emitAll(const QList<HeardFrame> &frames);
-    void sendNow();
+    void sendDue(qint64 ms);
+    void sendNow(const QByteArray &frame);
+    void sayVerdict();
 
     const RegisterMap *m_map;
     LinkSettings m_settings;
@@ -89,10 +95,10 @@ private:
     QTimer *m_tick = nullptr;
     QElapsedTimer m_clock;
     bool m_mayTransmit = false;
-    QByteArray m_outgoing; // the frame to send into the line, until its answer is heard
-    int m_tries = 0;
-    qint64 m_sentAtMs = -1;  // when it last went out
-    qint64 m_lastByteMs = 0; // when the line last carried a byte
+    EstopConfirmation m_estop;
+    bool m_verdictOwed = false; // an E-STOP whose verdict is not said yet
+    bool m_echoLearned = false; // the adapter was heard to echo though the option is off
+    qint64 m_lastByteMs = 0;    // when the line last carried a byte
     FrameFinder m_finder;
     ListenDecoder m_decoder;
 };

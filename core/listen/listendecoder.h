@@ -47,6 +47,8 @@ public:
     const ReplayState &state() const { return m_state; }
     // A request of the other master waits for its answer.
     bool waiting() const { return m_pending.has_value(); }
+    // That request's bytes; empty when none waits.
+    QByteArray waitingRequest() const { return m_pending ? m_pending->bytes : QByteArray(); }
     const QMap<int, DeviceStats> &deviceStats() const { return m_stats; }
     int pairs() const { return m_pairs; }
     int strayAnswers() const { return m_strays; }

@@ -50,8 +50,9 @@ BUTTON_ROLES = {"push button", "toggle button", "check box", "radio button", "pu
 CONTROL_ROLES = BUTTON_ROLES | {"text", "combo box", "spin button", "slider", "password text"}
 # Their children change with every poll (traffic rows, messages): their own extents are
 # checked, what they hold is the view's to scroll and elide.
-OPAQUE_ROLES = {"table", "tree table", "list", "tree", "list box", "menu bar", "page tab list",
-                "combo box", "spin button", "tool bar"}
+ITEM_VIEW_ROLES = {"table", "tree table", "list", "tree", "list box"}
+OPAQUE_ROLES = ITEM_VIEW_ROLES | {"menu bar", "page tab list", "combo box", "spin button",
+                                  "tool bar"}
 SLACK = 1  # px: rounding of scaled geometry
 
 
@@ -266,6 +267,7 @@ class Walker:
         self.findings = {}  # key -> (text, [pages])
         self.pages = []
         self.notes = []
+        self.axes_seen = {}  # object -> scrolls(object), for the page being checked
 
     # ---- small, failure-tolerant reads (objects go away while a page refreshes)
     def role(self, o):
@@ -346,6 +348,9 @@ class Walker:
         return None
 
     def find(self, root, predicate, prune_hidden=True):
+        """What matches `predicate` under `root`, never inside an item view: a table's or a
+        list's children are its cells, every row of its model (the traffic view listening
+        beside a PLC holds thousands), each a round trip on the bus to list and to ask."""
         out, todo = [], [root]
         while todo:
             o = todo.pop()
@@ -353,7 +358,8 @@ class Walker:
                 continue
             if predicate(o):
                 out.append(o)
-            todo.extend(self.children(o))
+            if o is root or self.role(o) not in ITEM_VIEW_ROLES:
+                todo.extend(self.children(o))
         return out
 
     def sidebar(self, frame):
@@ -402,6 +408,13 @@ class Walker:
             time.sleep(0.3)
 
     # ---- the checks
+    def axes(self, o):
+        """scrolls(o), asked once a page: it lists the children of `o` and of its parent, so
+        asked for every object it lists every sibling again for each."""
+        if o not in self.axes_seen:
+            self.axes_seen[o] = self.scrolls(o)
+        return self.axes_seen[o]
+
     def scrolls(self, o):
         """The axes in which `o` scrolls what it holds: a showing scroll bar among its children
         or its parent's (a scroll area's viewport holds the content), or in a plain widget
@@ -432,7 +445,7 @@ class Walker:
                                         e[0], e[1], e[2] - e[0], e[3] - e[1])
 
     def check_tree(self, page, o, chain):
-        """`chain`: the ancestors as (object, extents, scrolling axes, name)."""
+        """`chain`: the ancestors as (object, extents, None, name)."""
         role = self.role(o)
         e = self.extents(o)
         if e is None or role is None:
@@ -456,7 +469,7 @@ class Walker:
             where = chain[-1][3]
         else:
             where = self.describe(o, e)
-        entry = (o, e, self.scrolls(o), where)
+        entry = (o, e, None, where)  # what scrolls is asked only when something runs past
         for c in self.children(o):
             if self.showing(c):
                 self.check_tree(page, c, chain + [entry])
@@ -479,19 +492,25 @@ class Walker:
         """What cuts `o`: the nearest ancestor it runs past in a direction nothing between
         them scrolls, in words; None when it is whole."""
         scrolling = set()
-        for anc, a, axes, aname in reversed(chain):
-            scrolling |= axes  # what scrolls may hide its content in that direction
-            side = []
-            if "x" not in scrolling:
-                if e[2] > a[2] + SLACK:
-                    side.append("%d px past its right edge" % (e[2] - a[2]))
-                if e[0] < a[0] - SLACK:
-                    side.append("%d px past its left edge" % (a[0] - e[0]))
-            if "y" not in scrolling:
-                if e[3] > a[3] + SLACK:
-                    side.append("%d px past its bottom" % (e[3] - a[3]))
-                if e[1] < a[1] - SLACK:
-                    side.append("%d px past its top" % (a[1] - e[1]))
+        nearest = list(reversed(chain))
+        known = 0  # the nearest ancestors whose scrolling is in `scrolling`
+        for k, (anc, a, _, aname) in enumerate(nearest):
+            past = []
+            if e[2] > a[2] + SLACK:
+                past.append(("x", "%d px past its right edge" % (e[2] - a[2])))
+            if e[0] < a[0] - SLACK:
+                past.append(("x", "%d px past its left edge" % (a[0] - e[0])))
+            if e[3] > a[3] + SLACK:
+                past.append(("y", "%d px past its bottom" % (e[3] - a[3])))
+            if e[1] < a[1] - SLACK:
+                past.append(("y", "%d px past its top" % (a[1] - e[1])))
+            if not past:
+                continue
+            # What scrolls between `o` and here may hide its content in that direction.
+            while known <= k:
+                scrolling |= self.axes(nearest[known][0])
+                known += 1
+            side = [text for axis, text in past if axis not in scrolling]
             if side:
                 return "cut: %s runs %s of %s" % (self.describe(o, e), " and ".join(side), aname)
         return None
@@ -621,6 +640,7 @@ class Walker:
             self.pages.append(title)
             self.check_screen(title, frame)
             self.check_strip(title, frame)
+            self.axes_seen = {}
             self.check_tree(title, frame, [])
             self.shoot(number, title)
             self.dump(number, frame)

@@ -7,6 +7,10 @@
 set -uo pipefail
 python=$1 sim=$2 stepcom=$3
 shift 3
+if ! "$python" -c 'import pymodbus.client' 2>/dev/null; then
+    echo "listen-walk: SKIPPED, python3-pymodbus is missing (scripts/deps.sh --test installs it)"
+    exit 77
+fi
 dir=$(mktemp -d)
 "$sim" --line 3 --link "$dir/line" >"$dir/sim.log" 2>&1 &
 simpid=$!

@@ -105,23 +105,31 @@ bool ListenMode::start(const LinkSettings &settings, QString *why)
         stop();
         Q_EMIT finished(false, tr("Listening ended: the port %1 was lost: %2").arg(port, reason));
     });
-    connect(m_listener, &LineListener::frameSent, this, [this](const QByteArray &frame, int n) {
-        m_session->traffic()->add(
-            TrafficEntry{QDateTime::currentDateTime(), TrafficEntry::Direction::Sent,
-                         TrafficEntry::Kind::Command, frame,
-                         tr("E-STOP into the other master's line (try %1)").arg(n)});
-    });
-    connect(m_listener, &LineListener::frameAnswered, this, [this] {
-        const QString text = tr("E-STOP acknowledged by id %1").arg(m_settings.deviceId);
+    connect(m_listener, &LineListener::frameSent, this,
+            [this](const QByteArray &frame, bool estop, int n) {
+                m_session->traffic()->add(TrafficEntry{
+                    QDateTime::currentDateTime(), TrafficEntry::Direction::Sent,
+                    estop ? TrafficEntry::Kind::Command : TrafficEntry::Kind::Read, frame,
+                    estop ? tr("E-STOP into the other master's line (try %1)").arg(n)
+                          : tr("the controller's motion state read back after the E-STOP (try "
+                               "%1)")
+                                .arg(n)});
+            });
+    connect(m_listener, &LineListener::emergencyStopSettled, this,
+            [this](bool acknowledged, const QString &text) {
+                if (m_log)
+                    m_log->note(SessionLog::kUser, text, m_listener->now());
+                Q_EMIT finished(acknowledged, text);
+            });
+    connect(m_listener, &LineListener::echoSuspected, this, [this] {
+        const QString text =
+            tr("The adapter on %1 returns what StepCom sends (an echo), but the line's echo "
+               "option is off: StepCom's own E-STOP was not taken for the controller's answer. "
+               "Tick \"The adapter echoes what it sends\" for this line on the Connection page.")
+                .arg(m_settings.portName);
         if (m_log)
             m_log->note(SessionLog::kUser, text, m_listener->now());
-        Q_EMIT finished(true, text);
-    });
-    connect(m_listener, &LineListener::sendFailed, this, [this] {
-        Q_EMIT finished(false, tr("E-STOP sent %1 times into the other master's line, and id %2 "
-                                  "never answered it: stop the machine by its own E-STOP")
-                                   .arg(LineListener::kSendTries)
-                                   .arg(m_settings.deviceId));
+        Q_EMIT finished(false, text);
     });
     m_log = std::make_unique<ListenLog>(m_session->map(), settings, QDateTime::currentDateTime());
     if (!m_log->open(ListenLog::fileIn(SessionLog::defaultDirectory(), settings.portName),
@@ -224,7 +232,8 @@ void ListenMode::askEmergencyStop()
     m_question = new QMessageBox(QMessageBox::Warning, tr("E-STOP"),
                                  tr("Another master drives this line. Send the E-STOP to id %1 "
                                     "into its traffic? It goes in the first silence and again "
-                                    "until the controller answers it.")
+                                    "until the controller answers it and its motors are read "
+                                    "back stopped.")
                                      .arg(m_settings.deviceId),
                                  QMessageBox::Yes | QMessageBox::Cancel, m_window);
     m_question->setObjectName(QStringLiteral("listenEstopQuestion"));
@@ -239,9 +248,7 @@ void ListenMode::askEmergencyStop()
 
 void ListenMode::sendEmergencyStop()
 {
-    const QByteArray frame =
-        LineListener::emergencyStopFrame(m_session->map(), m_settings.deviceId);
-    if (!m_listener || frame.isEmpty() || !m_listener->sendInSilence(frame)) {
+    if (!m_listener || !m_listener->sendEmergencyStop(m_settings.deviceId)) {
         Q_EMIT finished(false, tr("The E-STOP could not be sent on %1").arg(m_settings.portName));
         return;
     }

@@ -31,7 +31,8 @@ struct HeardEvent;
 // StepCom; its list gives the other master's writes as they come, and the traffic dock each
 // request and answer decoded. No link is opened, so nothing writes, jogs or polls. The E-STOP
 // stays: it asks first, then goes into the first silence after the other master's frame and
-// again until the controller's answer to it is heard. Everything heard goes to a session log.
+// again until the controller is heard to take it (its answer past the adapter's echo, its
+// motors read back stopped). Everything heard goes to a session log.
 // start() and the box's buttons are what tests drive; nothing here is modal.
 class ListenMode : public QObject
 {

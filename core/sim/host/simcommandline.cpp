@@ -44,6 +44,10 @@ void SimCommandLine::addOptions(QCommandLineParser &p)
                  tr("Serve a line of N pseudo-terminals: every byte one program sends reaches "
                     "the others and the controller, as on RS-485 (a master and a listener)."),
                  n});
+    p.addOption({QStringLiteral("line-echo"),
+                 tr("With --line: the parties numbered in LIST (e.g. 2 or 1,3) hear every byte "
+                    "they send back first, as through an adapter without echo suppression."),
+                 tr("LIST")});
     p.addOption({QStringLiteral("no-baud-check"),
                  tr("Answer whatever baud rate the client set (by default a client whose baud "
                     "differs from register 40213 gets silence, as on a real line).")});
@@ -240,6 +244,17 @@ bool SimCommandLine::toOptions(const QCommandLineParser &p, SimOptions *o, QStri
             return fail(tr("--line: '%1' is not a number of ptys from 1 to 32")
                             .arg(p.value(QStringLiteral("line"))));
         o->rtu = true;
+    }
+    if (p.isSet(QStringLiteral("line-echo"))) {
+        if (o->line == 0)
+            return fail(tr("--line-echo needs --line N"));
+        for (const QString &part : p.value(QStringLiteral("line-echo")).split(u',')) {
+            int party = 0;
+            if (!toInt(part.trimmed(), 1, o->line, &party))
+                return fail(tr("--line-echo: '%1' is not a party of the line (1 to %2)")
+                                .arg(part.trimmed(), QString::number(o->line)));
+            o->lineEcho << party;
+        }
     }
     o->serialPort = p.value(QStringLiteral("serial"));
     if (p.isSet(QStringLiteral("serial")) && o->serialPort.isEmpty())

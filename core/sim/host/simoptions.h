@@ -35,6 +35,9 @@ struct SimOptions
     // listener share the line. 0: one pty for one client. With --link PATH the ptys get the
     // links PATH.1 .. PATH.N.
     int line = 0;
+    // The parties of the line (1 .. line) that hear their own bytes back (--line-echo): an
+    // adapter without echo suppression on that end.
+    QList<int> lineEcho;
 
     // Modbus RTU frames over plain TCP, as behind a transparent RS-485/Ethernet converter.
     bool rtuTcp = false;

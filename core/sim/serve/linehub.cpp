@@ -155,6 +155,12 @@ qint64 LineHub::bytesSent(int index) const
     return index >= 0 && index < m_parties.size() ? m_parties.at(index)->sent : 0;
 }
 
+void LineHub::setEcho(int index, bool echo)
+{
+    if (index >= 0 && index < m_parties.size())
+        m_parties.at(index)->echo = echo;
+}
+
 bool LineHub::createLink(int index, const QString &linkPath, QString *error)
 {
     if (index < 0 || index >= m_parties.size()) {
@@ -192,6 +198,8 @@ void LineHub::readParty(int index)
     p->sent += n;
     Q_EMIT bytesSeen(index, bytes);
     followBaud(index);
+    if (p->echo)
+        writeTo(index, bytes);
     for (int i = 0; i < m_parties.size(); ++i)
         if (i != index)
             writeTo(i, bytes);

@@ -40,6 +40,9 @@ public:
     // Bytes party `index` has sent onto the line since open().
     qint64 bytesSent(int index) const;
     int parties() const { return int(m_parties.size()); }
+    // Party `index` hears its own bytes back, before the others hear them: an adapter without
+    // echo suppression (a half-duplex USB-RS485 one) on that party's end.
+    void setEcho(int index, bool echo);
     // A symlink at `linkPath` to party `index`'s path, replacing a symlink but never another
     // kind of file; removed on close().
     bool createLink(int index, const QString &linkPath, QString *error);
@@ -59,6 +62,7 @@ private:
         QSocketNotifier *writer = nullptr;
         QByteArray pending; // bytes the party could not take yet
         qint64 sent = 0;
+        bool echo = false;
     };
     void readParty(int index);
     void writeTo(int index, const QByteArray &bytes);

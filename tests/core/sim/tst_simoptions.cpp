@@ -88,6 +88,14 @@ private Q_SLOTS:
                   &any, &error));
         QCOMPARE(any.tcpAddress, QHostAddress(QHostAddress::Any));
         QVERIFY(!any.rtu);
+
+        SimOptions line;
+        QVERIFY2(parse({QStringLiteral("--line"), QStringLiteral("3"),
+                        QStringLiteral("--line-echo"), QStringLiteral("1, 3")},
+                       &line, &error),
+                 qPrintable(error));
+        QCOMPARE(line.line, 3);
+        QCOMPARE(line.lineEcho, (QList<int>{1, 3}));
     }
 
     void badCommandLines_data()
@@ -131,6 +139,12 @@ private Q_SLOTS:
         QTest::newRow("power cycle, negative") << cycle("-1:3") << "--power-cycle: '-1:3'";
         QTest::newRow("power cycle, words") << cycle("soon:3") << "--power-cycle: 'soon:3'";
         QTest::newRow("power cycle, three") << cycle("1:2:3") << "--power-cycle: '1:2:3'";
+        QTest::newRow("line echo without a line")
+            << QStringList{QStringLiteral("--line-echo"), QStringLiteral("1")} << "--line N";
+        QTest::newRow("line echo past the line")
+            << QStringList{QStringLiteral("--line"), QStringLiteral("2"),
+                           QStringLiteral("--line-echo"), QStringLiteral("3")}
+            << "--line-echo: '3' is not a party of the line (1 to 2)";
         QTest::newRow("map") << QStringList{QStringLiteral("--map"),
                                             QStringLiteral("/nonexistent.json")}
                              << "nonexistent";

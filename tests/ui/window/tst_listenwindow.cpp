@@ -1,7 +1,8 @@
 // The window listening beside another master (a line of three: the PLC's pty, the simulated
 // controller, the window's): the strip and the pages follow what the PLC reads and writes,
 // marked as heard; the PLC's writes are listed; nothing can write, jog or poll and the
-// window's pty sends nothing; the E-STOP asks first, then goes into the line and is answered.
+// window's pty sends nothing; the E-STOP asks first, then goes into the line and is
+// acknowledged: its answer heard and both axes read back stopped.
 #include "base/emergencystop.h"
 #include "enabledcontrols.h"
 #include "line/linksettingsstore.h"
@@ -137,13 +138,15 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(
             [&] {
                 for (const QList<QVariant> &s : said)
-                    if (s.at(1).toString().startsWith(u"E-STOP acknowledged"))
+                    if (s.at(1).toString() ==
+                        u"E-STOP acknowledged by controller 1: both axes stopped")
                         return true;
                 return false;
             }(),
             10000);
         QVERIFY(said.first().at(1).toString() ==
                 QStringLiteral("E-STOP sent into a line driven by another master"));
+        QVERIFY(hub.bytesSent(2) >= 16); // the E-STOP, then the read of the motion state
 
         listen->stop();
         QVERIFY(!session.parameters()->isReplay());
