@@ -7,74 +7,6 @@ namespace stepcom {
 
 using State = AppliedKey::State;
 
-QStringList ProfileApplyResult::keysIn(AppliedKey::State state) const
-{
-    QStringList out;
-    for (const AppliedKey &k : keys) {
-        if (k.state == state)
-            out << k.key;
-    }
-    return out;
-}
-
-const AppliedKey *ProfileApplyResult::key(const QString &key) const
-{
-    for (const AppliedKey &k : keys) {
-        if (k.key == key)
-            return &k;
-    }
-    return nullptr;
-}
-
-bool ProfileApplyResult::ok() const
-{
-    return end == End::Done &&
-           std::all_of(keys.cbegin(), keys.cend(),
-                       [](const AppliedKey &k) {
-                           return k.state == State::Verified || k.state == State::Unchanged;
-                       }) &&
-           (!flashAsked || savedToFlash == true);
-}
-
-QStringList ProfileApplyResult::problems() const
-{
-    QStringList out;
-    for (const AppliedKey &k : keys) {
-        if (k.state != State::Verified && k.state != State::Unchanged)
-            out << describe(k);
-    }
-    return out;
-}
-
-QString ProfileApplyResult::describe(const AppliedKey &k, const QString &name)
-{
-    const QString who = name.isEmpty() ? k.key : name;
-    const auto value = [&k](qint64 raw) {
-        return k.parameter ? k.parameter->displayRaw(raw) : QString::number(raw);
-    };
-    switch (k.state) {
-    case State::Unchanged:
-        return tr("%1: already %2").arg(who, value(k.wanted));
-    case State::Verified:
-        return tr("%1: %2 (written, verified)").arg(who, value(k.wanted));
-    case State::Written:
-        return k.readBack ? tr("%1: wrote %2, the controller holds %3")
-                                .arg(who, value(k.wanted), value(*k.readBack))
-                          : tr("%1: wrote %2, could not read it back").arg(who, value(k.wanted));
-    case State::Refused:
-        return tr("%1: %2 refused: %3").arg(who, value(k.wanted), k.reason);
-    case State::NotWritten:
-        return tr("%1: not written (%2)").arg(who, k.reason);
-    case State::NotKnown:
-        return tr("%1: not known whether %2 was written (%3)").arg(who, value(k.wanted), k.reason);
-    case State::Lost:
-        return tr("%1: wrote %2, then the controller held %3 again (%4)")
-            .arg(who, value(k.wanted), k.readBack ? value(*k.readBack) : QStringLiteral("?"),
-                 k.reason);
-    }
-    return who;
-}
-
 ProfileApply::ProfileApply(DeviceSession *session, const Profile &profile, int id, QObject *parent)
     : QObject(parent)
     , m_session(session)
@@ -97,12 +29,10 @@ ProfileApply::ProfileApply(DeviceSession *session, const Profile &profile, int i
         if (m_busy)
             m_lost = reason.isEmpty() ? tr("the link was closed") : reason;
     });
-    connect(session, &DeviceSession::controllerRestarted, this, [this](int device) {
-        m_restarted = m_restarted || (m_busy && device == m_id);
-    });
-    connect(session, &DeviceSession::controllerMayHaveRestarted, this, [this](int device) {
-        m_restarted = m_restarted || (m_busy && device == m_id);
-    });
+    connect(session, &DeviceSession::controllerRestarted, this,
+            [this](int device) { m_restarted = m_restarted || (m_busy && device == m_id); });
+    connect(session, &DeviceSession::controllerMayHaveRestarted, this,
+            [this](int device) { m_restarted = m_restarted || (m_busy && device == m_id); });
 }
 
 bool ProfileApply::announce(Step step)
@@ -159,8 +89,8 @@ QList<ProfileDifference> ProfileApply::leftOutLinkSettings() const
     QList<ProfileDifference> out;
     if (!m_session || (m_includeLink && isInView()))
         return out;
-    for (const ProfileDifference &row : ProfileDiff::differences(
-             ProfileDiff::compare(m_session->map(), m_profile, m_before))) {
+    for (const ProfileDifference &row :
+         ProfileDiff::differences(ProfileDiff::compare(m_session->map(), m_profile, m_before))) {
         if (row.linkSetting)
             out << row;
     }
@@ -449,8 +379,8 @@ void ProfileApply::readBack()
         return;
     QList<const Parameter *> params;
     for (const AppliedKey &k : std::as_const(m_result.keys)) {
-        if (k.parameter && (k.state == State::Verified || k.state == State::Written ||
-                            k.state == State::NotKnown))
+        if (k.parameter &&
+            (k.state == State::Verified || k.state == State::Written || k.state == State::NotKnown))
             params << k.parameter;
     }
     const auto finish = [this] {
@@ -469,51 +399,51 @@ void ProfileApply::readBack()
         return;
     const quint64 generation = m_generation;
     QPointer<ProfileApply> self(this);
-    m_session->readDevice(
-        m_id, params, [this, self, generation, finish](const ReadOutcome &r) {
-            if (!self || generation != m_generation)
-                return;
-            if (!r.ok) {
-                // A closing link fails what is queued before it says it closed: hear that first.
-                QMetaObject::invokeMethod(
-                    this,
-                    [this, generation, finish] {
-                        if (generation != m_generation)
-                            return;
-                        if (m_lost.isEmpty() && m_session && m_session->isConnected())
-                            finish();
-                        else
-                            end(ProfileApplyResult::End::LinkLost,
-                                m_lost.isEmpty() ? tr("the link was lost") : m_lost);
-                    },
-                    Qt::QueuedConnection);
-            }
-            for (AppliedKey &k : m_result.keys) {
-                const auto it = r.values.constFind(k.key);
-                if (it == r.values.cend())
-                    continue; // not read: what was known of it stands
-                if (*it == k.wanted) {
-                    if (k.state != State::Verified) {
-                        k.state = State::Verified;
-                        k.reason.clear();
-                    }
-                } else if (k.state == State::Verified) {
-                    // Verified before, its old value now: only a restart undoes a write.
-                    k.state = State::Lost;
-                    k.readBack = *it;
-                    k.reason = tr("the controller restarted");
-                    m_restarted = true;
-                } else if (k.state == State::Written) {
-                    k.readBack = *it;
-                } else if (k.state == State::NotKnown) {
-                    k.state = State::NotWritten;
-                    k.reason = tr("the controller holds %1").arg(
-                        k.parameter ? k.parameter->displayRaw(*it) : QString::number(*it));
+    m_session->readDevice(m_id, params, [this, self, generation, finish](const ReadOutcome &r) {
+        if (!self || generation != m_generation)
+            return;
+        if (!r.ok) {
+            // A closing link fails what is queued before it says it closed: hear that first.
+            QMetaObject::invokeMethod(
+                this,
+                [this, generation, finish] {
+                    if (generation != m_generation)
+                        return;
+                    if (m_lost.isEmpty() && m_session && m_session->isConnected())
+                        finish();
+                    else
+                        end(ProfileApplyResult::End::LinkLost,
+                            m_lost.isEmpty() ? tr("the link was lost") : m_lost);
+                },
+                Qt::QueuedConnection);
+        }
+        for (AppliedKey &k : m_result.keys) {
+            const auto it = r.values.constFind(k.key);
+            if (it == r.values.cend())
+                continue; // not read: what was known of it stands
+            if (*it == k.wanted) {
+                if (k.state != State::Verified) {
+                    k.state = State::Verified;
+                    k.reason.clear();
                 }
+            } else if (k.state == State::Verified) {
+                // Verified before, its old value now: only a restart undoes a write.
+                k.state = State::Lost;
+                k.readBack = *it;
+                k.reason = tr("the controller restarted");
+                m_restarted = true;
+            } else if (k.state == State::Written) {
+                k.readBack = *it;
+            } else if (k.state == State::NotKnown) {
+                k.state = State::NotWritten;
+                k.reason =
+                    tr("the controller holds %1")
+                        .arg(k.parameter ? k.parameter->displayRaw(*it) : QString::number(*it));
             }
-            if (r.ok)
-                finish();
-        });
+        }
+        if (r.ok)
+            finish();
+    });
 }
 
 void ProfileApply::saveToFlash()
@@ -532,34 +462,33 @@ void ProfileApply::saveToFlash()
         return;
     const quint64 generation = m_generation;
     QPointer<ProfileApply> self(this);
-    m_session->guard(
-        DeviceSession::Risk::SaveToFlash, m_id,
-        [this, self, generation, coil](const QString &refusal) {
-            if (!self || generation != m_generation || !mayGoOn())
-                return;
-            if (!refusal.isEmpty()) {
-                m_result.savedToFlash = false;
-                m_result.flashError = refusal;
-                end(ProfileApplyResult::End::Done);
-                return;
-            }
-            m_session->command(*coil, [this, self, generation](const Result &r) {
-                if (!self || generation != m_generation)
-                    return;
-                if (r.ok) {
-                    m_result.savedToFlash = true;
-                } else {
-                    m_result.flashError = r.errorText;
-                    if (r.exceptionCode != 0) // answered: not saved
-                        m_result.savedToFlash = false;
-                }
-                // Unanswered, or a restart said: is what was verified still there?
-                if (!r.ok || m_restarted)
-                    readBack();
-                else
-                    end(ProfileApplyResult::End::Done);
-            });
-        });
+    m_session->guard(DeviceSession::Risk::SaveToFlash, m_id,
+                     [this, self, generation, coil](const QString &refusal) {
+                         if (!self || generation != m_generation || !mayGoOn())
+                             return;
+                         if (!refusal.isEmpty()) {
+                             m_result.savedToFlash = false;
+                             m_result.flashError = refusal;
+                             end(ProfileApplyResult::End::Done);
+                             return;
+                         }
+                         m_session->command(*coil, [this, self, generation](const Result &r) {
+                             if (!self || generation != m_generation)
+                                 return;
+                             if (r.ok) {
+                                 m_result.savedToFlash = true;
+                             } else {
+                                 m_result.flashError = r.errorText;
+                                 if (r.exceptionCode != 0) // answered: not saved
+                                     m_result.savedToFlash = false;
+                             }
+                             // Unanswered, or a restart said: is what was verified still there?
+                             if (!r.ok || m_restarted)
+                                 readBack();
+                             else
+                                 end(ProfileApplyResult::End::Done);
+                         });
+                     });
 }
 
 void ProfileApply::end(ProfileApplyResult::End how, const QString &error)
@@ -568,7 +497,7 @@ void ProfileApply::end(ProfileApplyResult::End how, const QString &error)
         return;
     ++m_generation;
     m_busy = false;
-    m_compared = false; // the next apply reads again
+    m_compared = false;            // the next apply reads again
     if (m_result.keys.isEmpty()) { // ended before the plan: none of them was sent
         for (const QString &key : std::as_const(m_keys)) {
             AppliedKey k;

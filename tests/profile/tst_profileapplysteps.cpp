@@ -135,7 +135,8 @@ private Q_SLOTS:
                                                    ProfileApply::Step::BackingUp,
                                                    ProfileApply::Step::Writing}));
         // The backup went through the session's risk guard, for this device, before writing.
-        QCOMPARE(guarded, (QList<QPair<DeviceSession::Risk, int>>{{DeviceSession::Risk::Apply, 1}}));
+        QCOMPARE(guarded,
+                 (QList<QPair<DeviceSession::Risk, int>>{{DeviceSession::Risk::Apply, 1}}));
         const QList<BackupEntry> saved = BackupStore(backups.path()).list(session->map());
         QCOMPARE(saved.size(), 1);
         const auto backup = BackupStore::load(saved.first().path, session->map());
@@ -158,8 +159,8 @@ private Q_SLOTS:
         QCOMPARE(simValue(2, speed), profile.values.value(speed));
         QCOMPARE(simValue(1, speed), one);
         QCOMPARE(writeFramesTo(1), 0);
-        QCOMPARE(guarded, (QList<QPair<DeviceSession::Risk, int>>{{DeviceSession::Risk::Apply, 3},
-                                                                  {DeviceSession::Risk::Apply, 2}}));
+        QCOMPARE(guarded, (QList<QPair<DeviceSession::Risk, int>>{
+                              {DeviceSession::Risk::Apply, 3}, {DeviceSession::Risk::Apply, 2}}));
         QList<int> ids;
         for (const BackupEntry &e : BackupStore(backups.path()).list(session->map()))
             ids << e.deviceId;
@@ -250,10 +251,11 @@ private Q_SLOTS:
         QVERIFY(!r.ok());
         const AppliedKey *k = r.key(speed);
         QCOMPARE(k->state, State::Written); // acknowledged: known written
-        QVERIFY(!k->readBack.has_value()); // what it holds now: not known
+        QVERIFY(!k->readBack.has_value());  // what it holds now: not known
         QVERIFY(r.keysIn(State::Verified).isEmpty());
-        QVERIFY2(ProfileApplyResult::describe(*k).contains(QStringLiteral("could not read it back")),
-                 qPrintable(ProfileApplyResult::describe(*k)));
+        QVERIFY2(
+            ProfileApplyResult::describe(*k).contains(QStringLiteral("could not read it back")),
+            qPrintable(ProfileApplyResult::describe(*k)));
     }
 
     void aRestartBeforeTheSaveToFlashIsSeen()
