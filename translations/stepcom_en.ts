@@ -7566,6 +7566,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>saved to flash only on the device in view</source>
         <translation>saved to flash only on the device in view</translation>
     </message>
+    <message>
+        <source>the link went away during the apply (%1)</source>
+        <translation>the link went away during the apply (%1)</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileApplyResult</name>

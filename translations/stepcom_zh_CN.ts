@@ -7520,6 +7520,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>saved to flash only on the device in view</source>
         <translation>只能对当前显示的设备保存到闪存</translation>
     </message>
+    <message>
+        <source>the link went away during the apply (%1)</source>
+        <translation>应用期间连接断开（%1）</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ProfileApplyResult</name>

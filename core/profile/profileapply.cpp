@@ -27,7 +27,8 @@ ProfileApply::ProfileApply(DeviceSession *session, const Profile &profile, int i
     });
     connect(session, &DeviceSession::disconnected, this, [this](const QString &reason) {
         if (m_busy)
-            m_lost = reason.isEmpty() ? tr("the link was closed") : reason;
+            m_lost = reason.isEmpty() ? tr("the link was closed")
+                                      : tr("the link went away during the apply (%1)").arg(reason);
     });
     connect(session, &DeviceSession::controllerRestarted, this,
             [this](int device) { m_restarted = m_restarted || (m_busy && device == m_id); });

@@ -48,7 +48,7 @@ public:
     int id = 0;
     End end = End::Done;
     QList<AppliedKey> keys;
-    QString error;          // Failed, Stopped, LinkLost, Restarted: why, in words
+    QString error;           // Failed, Stopped, LinkLost, Restarted: why, in words
     QStringList writeErrors; // what the write said went wrong
     bool flashAsked = false;
     std::optional<bool> savedToFlash; // nullopt: not tried, or its answer did not come
