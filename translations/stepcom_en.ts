@@ -7515,6 +7515,136 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileApply</name>
+    <message>
+        <source>not done: E-STOP</source>
+        <translation>not done: E-STOP</translation>
+    </message>
+    <message>
+        <source>stopped by the E-STOP: nothing more was sent for this profile</source>
+        <translation>stopped by the E-STOP: nothing more was sent for this profile</translation>
+    </message>
+    <message>
+        <source>the link was closed</source>
+        <translation>the link was closed</translation>
+    </message>
+    <message>
+        <source>the controller could not be read</source>
+        <translation>the controller could not be read</translation>
+    </message>
+    <message>
+        <source>the link was lost</source>
+        <translation>the link was lost</translation>
+    </message>
+    <message>
+        <source>the controller could not be read: %1</source>
+        <translation>the controller could not be read: %1</translation>
+    </message>
+    <message>
+        <source>the profile holds no value</source>
+        <translation>the profile holds no value</translation>
+    </message>
+    <message>
+        <source>this controller does not have it</source>
+        <translation>this controller does not have it</translation>
+    </message>
+    <message>
+        <source>the device id and baud are applied only to the device in view, when asked for</source>
+        <translation>the device id and baud are applied only to the device in view, when asked for</translation>
+    </message>
+    <message>
+        <source>it is read-only</source>
+        <translation>it is read-only</translation>
+    </message>
+    <message>
+        <source>not a setting of this register map</source>
+        <translation>not a setting of this register map</translation>
+    </message>
+    <message>
+        <source>the session ended</source>
+        <translation>the session ended</translation>
+    </message>
+    <message>
+        <source>the link was lost before it was sent</source>
+        <translation>the link was lost before it was sent</translation>
+    </message>
+    <message>
+        <source>stopped by the E-STOP while writing</source>
+        <translation>stopped by the E-STOP while writing</translation>
+    </message>
+    <message>
+        <source>refused by the controller</source>
+        <translation>refused by the controller</translation>
+    </message>
+    <message>
+        <source>not sent: an earlier write failed</source>
+        <translation>not sent: an earlier write failed</translation>
+    </message>
+    <message>
+        <source>sent without a good answer</source>
+        <translation>sent without a good answer</translation>
+    </message>
+    <message>
+        <source>the controller restarted during the apply: what it held then was lost unless saved to flash</source>
+        <translation>the controller restarted during the apply: what it held then was lost unless saved to flash</translation>
+    </message>
+    <message>
+        <source>the controller restarted</source>
+        <translation>the controller restarted</translation>
+    </message>
+    <message>
+        <source>the controller holds %1</source>
+        <translation>the controller holds %1</translation>
+    </message>
+    <message>
+        <source>this map has no save_to_flash command</source>
+        <translation>this map has no save_to_flash command</translation>
+    </message>
+    <message>
+        <source>saved to flash only on the device in view</source>
+        <translation>saved to flash only on the device in view</translation>
+    </message>
+    <message>
+        <source>the link went away during the apply (%1)</source>
+        <translation>the link went away during the apply (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileApplyResult</name>
+    <message>
+        <source>%1: already %2</source>
+        <translation>%1: already %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 (written, verified)</source>
+        <translation>%1: %2 (written, verified)</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2, the controller holds %3</source>
+        <translation>%1: wrote %2, the controller holds %3</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2, could not read it back</source>
+        <translation>%1: wrote %2, could not read it back</translation>
+    </message>
+    <message>
+        <source>%1: %2 refused: %3</source>
+        <translation>%1: %2 refused: %3</translation>
+    </message>
+    <message>
+        <source>%1: not written (%2)</source>
+        <translation>%1: not written (%2)</translation>
+    </message>
+    <message>
+        <source>%1: not known whether %2 was written (%3)</source>
+        <translation>%1: not known whether %2 was written (%3)</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2, then the controller held %3 again (%4)</source>
+        <translation>%1: wrote %2, then the controller held %3 again (%4)</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ProfileCompareDialog</name>
     <message>
         <source>Saved to flash: the controller keeps these values after power-off.</source>
@@ -7565,18 +7695,6 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>Writing %n value, then reading it back…</numerusform>
             <numerusform>Writing %n values, then reading them back…</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>%1: wrote %2, the controller holds %3</source>
-        <translation>%1: wrote %2, the controller holds %3</translation>
-    </message>
-    <message>
-        <source>%1: wrote %2, could not read it back</source>
-        <translation>%1: wrote %2, could not read it back</translation>
-    </message>
-    <message>
-        <source>%1: not written</source>
-        <translation>%1: not written</translation>
     </message>
     <message numerus="yes">
         <source>Wrote and verified %n value(s).</source>
@@ -7668,6 +7786,13 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Left out, not supported by this controller: %1.</source>
         <translation>Left out, not supported by this controller: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) the controller already held.</source>
+        <translation>
+            <numerusform>%n value the controller already held.</numerusform>
+            <numerusform>%n values the controller already held.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -8013,24 +8138,8 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>no value was chosen for it</translation>
     </message>
     <message>
-        <source>no backup of its settings could be saved (%1): nothing was written</source>
-        <translation>no backup of its settings could be saved (%1): nothing was written</translation>
-    </message>
-    <message>
-        <source>%1 reads back other than written</source>
-        <translation>%1 reads back other than written</translation>
-    </message>
-    <message>
-        <source>not written: %1</source>
-        <translation>not written: %1</translation>
-    </message>
-    <message>
         <source>not every value could be verified</source>
         <translation>not every value could be verified</translation>
-    </message>
-    <message>
-        <source>stopped by the E-STOP while writing: what it holds now was not verified</source>
-        <translation>stopped by the E-STOP while writing: what it holds now was not verified</translation>
     </message>
     <message>
         <source>not done: E-STOP</source>

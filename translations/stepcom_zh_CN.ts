@@ -7468,6 +7468,136 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProfileApply</name>
+    <message>
+        <source>not done: E-STOP</source>
+        <translation>未执行：急停</translation>
+    </message>
+    <message>
+        <source>stopped by the E-STOP: nothing more was sent for this profile</source>
+        <translation>被急停中止：此配置不再发送任何内容</translation>
+    </message>
+    <message>
+        <source>the link was closed</source>
+        <translation>连接已关闭</translation>
+    </message>
+    <message>
+        <source>the controller could not be read</source>
+        <translation>无法读取控制器</translation>
+    </message>
+    <message>
+        <source>the link was lost</source>
+        <translation>连接已断开</translation>
+    </message>
+    <message>
+        <source>the controller could not be read: %1</source>
+        <translation>无法读取控制器：%1</translation>
+    </message>
+    <message>
+        <source>the profile holds no value</source>
+        <translation>配置中没有该值</translation>
+    </message>
+    <message>
+        <source>this controller does not have it</source>
+        <translation>此控制器没有该参数</translation>
+    </message>
+    <message>
+        <source>the device id and baud are applied only to the device in view, when asked for</source>
+        <translation>设备地址和波特率只在要求时应用于当前显示的设备</translation>
+    </message>
+    <message>
+        <source>it is read-only</source>
+        <translation>该参数只读</translation>
+    </message>
+    <message>
+        <source>not a setting of this register map</source>
+        <translation>不是此寄存器表中的参数</translation>
+    </message>
+    <message>
+        <source>the session ended</source>
+        <translation>会话已结束</translation>
+    </message>
+    <message>
+        <source>the link was lost before it was sent</source>
+        <translation>发送前连接已断开</translation>
+    </message>
+    <message>
+        <source>stopped by the E-STOP while writing</source>
+        <translation>写入时被急停中止</translation>
+    </message>
+    <message>
+        <source>refused by the controller</source>
+        <translation>被控制器拒绝</translation>
+    </message>
+    <message>
+        <source>not sent: an earlier write failed</source>
+        <translation>未发送：之前的写入失败</translation>
+    </message>
+    <message>
+        <source>sent without a good answer</source>
+        <translation>已发送，但没有收到正确应答</translation>
+    </message>
+    <message>
+        <source>the controller restarted during the apply: what it held then was lost unless saved to flash</source>
+        <translation>应用期间控制器重启：未保存到闪存的值已丢失</translation>
+    </message>
+    <message>
+        <source>the controller restarted</source>
+        <translation>控制器已重启</translation>
+    </message>
+    <message>
+        <source>the controller holds %1</source>
+        <translation>控制器保存的是 %1</translation>
+    </message>
+    <message>
+        <source>this map has no save_to_flash command</source>
+        <translation>此寄存器表没有 save_to_flash 命令</translation>
+    </message>
+    <message>
+        <source>saved to flash only on the device in view</source>
+        <translation>只能对当前显示的设备保存到闪存</translation>
+    </message>
+    <message>
+        <source>the link went away during the apply (%1)</source>
+        <translation>应用期间连接断开（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProfileApplyResult</name>
+    <message>
+        <source>%1: already %2</source>
+        <translation>%1：已是 %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 (written, verified)</source>
+        <translation>%1：%2（已写入，已校验）</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2, the controller holds %3</source>
+        <translation>%1：写入 %2，控制器保存的是 %3</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2, could not read it back</source>
+        <translation>%1：写入 %2，无法回读</translation>
+    </message>
+    <message>
+        <source>%1: %2 refused: %3</source>
+        <translation>%1：%2 被拒绝：%3</translation>
+    </message>
+    <message>
+        <source>%1: not written (%2)</source>
+        <translation>%1：未写入（%2）</translation>
+    </message>
+    <message>
+        <source>%1: not known whether %2 was written (%3)</source>
+        <translation>%1：不知道 %2 是否已写入（%3）</translation>
+    </message>
+    <message>
+        <source>%1: wrote %2, then the controller held %3 again (%4)</source>
+        <translation>%1：已写入 %2，之后控制器又变回 %3（%4）</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ProfileCompareDialog</name>
     <message>
         <source>Saved to flash: the controller keeps these values after power-off.</source>
@@ -7516,18 +7646,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>
             <numerusform>正在写入 %n 个值，然后回读……</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>%1: wrote %2, the controller holds %3</source>
-        <translation>%1：写入 %2，控制器中为 %3</translation>
-    </message>
-    <message>
-        <source>%1: wrote %2, could not read it back</source>
-        <translation>%1：写入 %2，无法回读</translation>
-    </message>
-    <message>
-        <source>%1: not written</source>
-        <translation>%1：未写入</translation>
     </message>
     <message numerus="yes">
         <source>Wrote and verified %n value(s).</source>
@@ -7618,6 +7736,12 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Left out, not supported by this controller: %1.</source>
         <translation>已排除，此控制器不支持：%1。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) the controller already held.</source>
+        <translation>
+            <numerusform>控制器已保存其中 %n 个值。</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -7963,24 +8087,8 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>没有为它勾选任何值</translation>
     </message>
     <message>
-        <source>no backup of its settings could be saved (%1): nothing was written</source>
-        <translation>无法保存其设置的备份（%1）：未写入任何数据</translation>
-    </message>
-    <message>
-        <source>%1 reads back other than written</source>
-        <translation>%1 读回的值与写入的不同</translation>
-    </message>
-    <message>
-        <source>not written: %1</source>
-        <translation>未写入：%1</translation>
-    </message>
-    <message>
         <source>not every value could be verified</source>
         <translation>并非所有值都已校验</translation>
-    </message>
-    <message>
-        <source>stopped by the E-STOP while writing: what it holds now was not verified</source>
-        <translation>写入时被急停中断：设备当前的值未经校验</translation>
     </message>
     <message>
         <source>not done: E-STOP</source>

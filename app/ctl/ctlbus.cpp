@@ -70,7 +70,6 @@ void CtlRunner::runForCurrentId()
     m_out.setString(&m_buffer); // collected, then printed keyed by id
     m_errBuffer.clear();
     m_err.setString(&m_errBuffer);
-    m_beforeApply.clear();
     if (!m_multiArgument.isEmpty()) {
         // One profile file per controller: NAME-id2.json beside the name asked for.
         const QFileInfo info(m_multiArgument);

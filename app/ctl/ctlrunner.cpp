@@ -299,6 +299,7 @@ void CtlRunner::connectThen(std::function<void()> next)
     // One-shot: no read-all after connecting, no status poll; each command reads what it names.
     m_session = new DeviceSession(m_map, this);
     m_session->setLive(false);
+    installRiskGuard();
     startLog();
     DeviceSession::setLinkDiagnosticsShown(m_options.verbose);
     // Said once, in words: what this controller refuses to read, and that the work goes on.
@@ -499,7 +500,7 @@ void CtlRunner::runCommand()
             });
         };
         if (risky)
-            backupThen(risk, send);
+            guardThen(risk, send);
         else
             send();
     });

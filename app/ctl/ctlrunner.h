@@ -7,12 +7,15 @@
 
 #include <QJsonObject>
 #include <QObject>
+#include <QPointer>
 #include <QTextStream>
 
 namespace stepcom {
 
 struct BundleInput;
 struct Profile;
+class ProfileApply;
+struct ProfileApplyResult;
 struct ReportInput;
 class CtlRunner;
 
@@ -88,9 +91,11 @@ private:
     void runListen();
     // move MOTOR --by D | --to X: a step or move-to over the single move (ctlmove.cpp).
     void runMove();
-    // Saves a backup of the controller's settings before `risk` (unless --no-backup), prints
-    // where, then runs `next`; fails (nothing done) when it cannot be saved.
-    void backupThen(DeviceSession::Risk risk, std::function<void()> next);
+    // The session's risk guard, as the window installs one: a backup of the controller's
+    // settings before every risky operation (unless --no-backup), said where (ctlmove.cpp).
+    void installRiskGuard();
+    // Runs `next` once the guard let `risk` go on; fails (nothing done) when it did not.
+    void guardThen(DeviceSession::Risk risk, std::function<void()> next);
     // assign-id --to N (ctlbus.cpp): the one controller at --id gets id N, verified there.
     void runAssignId();
     // scan (ctlbus.cpp): every controller on the line, at the bauds, parities and ids asked.
@@ -128,9 +133,8 @@ private:
     void startLog();
     void confirmThenApply(const QList<ParameterWrite> &writes);
     void applyWrites(const QList<ParameterWrite> &writes);
-    // Saves the settings read before an apply as a backup (BackupStore), unless --no-backup;
-    // false (and the command failed) when it could not be saved.
-    bool backupBeforeApply();
+    // Prints what ProfileApply came to: each value written and verified, what was not and why.
+    void reportApplied(const ProfileApplyResult &result);
     void saveToFlashThenFinish();
     // --id with several ids (ctlbus.cpp): the command runs for each in turn over the one link;
     // the output is keyed by id and the exit code is the worst of them.
@@ -176,7 +180,8 @@ private:
     // The exit code of a link that cannot be opened or read: DeviceError, except for diff,
     // where 1 already means "different".
     int m_linkError = DeviceError;
-    QHash<QString, qint64> m_beforeApply; // the settings read before apply: its backup
+    QPointer<ProfileApply> m_applier;      // apply: the one ProfileApply of this id
+    QList<ParameterWrite> m_appliedWrites; // apply: what was confirmed
     bool m_finished = false;
     const CtlCommand *m_chosen = nullptr;
     int m_idIndex = 0;

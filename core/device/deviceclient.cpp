@@ -198,6 +198,25 @@ QStringList DeviceClient::validate(const QList<ParameterWrite> &writes)
     return problems;
 }
 
+bool WriteOutcome::verified(const QString &key) const
+{
+    return written.contains(key) && !mismatch(key);
+}
+
+const WriteMismatch *WriteOutcome::mismatch(const QString &key) const
+{
+    for (const WriteMismatch &m : mismatches) {
+        if (m.key == key)
+            return &m;
+    }
+    return nullptr;
+}
+
+bool WriteOutcome::uncertain(const QString &key) const
+{
+    return !written.contains(key) && !notWritten.contains(key) && !refused.contains(key);
+}
+
 namespace {
 
 // One write-and-verify run; steps chain through callbacks, never a nested event loop.
@@ -224,6 +243,8 @@ struct WriteJob : std::enable_shared_from_this<WriteJob>
                 const QStringList keys = self->requests.at(index).what.split(QStringLiteral(", "));
                 if (!r.ok) {
                     self->outcome.errors << r.errorText;
+                    if (r.exceptionCode != 0) // answered: it did not take them
+                        self->outcome.refused += keys;
                     for (int i = index + 1; i < self->requests.size(); ++i)
                         self->outcome.notWritten +=
                             self->requests.at(i).what.split(QStringLiteral(", "));
@@ -253,6 +274,8 @@ struct WriteJob : std::enable_shared_from_this<WriteJob>
             [self, index, w](const Result &r) {
                 if (!r.ok) {
                     self->outcome.errors << r.errorText;
+                    if (r.exceptionCode != 0)
+                        self->outcome.refused << w.parameter->key;
                     self->verify();
                     return;
                 }

@@ -37,8 +37,18 @@ struct WriteOutcome
     bool ok = false;
     QStringList written;    // keys the controller acknowledged
     QStringList notWritten; // keys never sent because something before them failed
+    QStringList refused;    // keys whose request the controller answered with an exception
     QList<WriteMismatch> mismatches;
     QStringList errors;
+
+    // The one answer to "is it verified?": acknowledged and read back equal.
+    bool verified(const QString &key) const;
+    // Acknowledged but read back other (or not at all): null when it read back equal or was
+    // not acknowledged.
+    const WriteMismatch *mismatch(const QString &key) const;
+    // Sent without a good answer (no answer, a lost link): whether the controller took it is
+    // not known.
+    bool uncertain(const QString &key) const;
 };
 
 // A typed view of one controller over a ModbusLink: read parameters by key, write them with

@@ -156,21 +156,18 @@ QList<ParameterWrite> ParameterStore::pendingWrites() const
 void ParameterStore::applyWriteOutcome(const QList<ParameterWrite> &writes,
                                        const WriteOutcome &outcome)
 {
-    QHash<QString, const WriteMismatch *> mismatches;
-    for (const WriteMismatch &m : outcome.mismatches)
-        mismatches.insert(m.key, &m);
     bool anyWritten = false;
     for (const ParameterWrite &w : writes) {
         const QString &key = w.parameter->key;
         Entry e = m_entries.value(key);
-        if (outcome.written.contains(key) && !mismatches.contains(key)) {
+        if (outcome.verified(key)) {
             anyWritten = true;
             e.device = w.raw;
             if (e.edited && *e.edited == w.raw)
                 e.edited.reset();
             e.error.clear();
         } else {
-            if (const WriteMismatch *m = mismatches.value(key)) {
+            if (const WriteMismatch *m = outcome.mismatch(key)) {
                 anyWritten = true; // something reached the device
                 e.device = m->got;
                 e.error = QCoreApplication::translate("stepcom::ParameterStore",

@@ -1,6 +1,5 @@
 #include "profile/profilerollout.h"
 
-#include "profile/backupstore.h"
 #include "session/devicesession.h"
 
 #include <QTimer>
@@ -11,7 +10,6 @@ ProfileRollout::ProfileRollout(DeviceSession *session, const Profile &profile, Q
     : QObject(parent)
     , m_session(session)
     , m_profile(profile)
-    , m_backupDir(BackupStore::defaultDirectory())
 {
     connect(session, &DeviceSession::emergencyStopRequested, this, [this] {
         if (m_busy)
@@ -33,6 +31,8 @@ void ProfileRollout::compare(const QList<int> &ids, const QHash<int, QString> &n
     if (m_busy)
         return;
     m_devices.clear();
+    qDeleteAll(m_applies);
+    m_applies.clear();
     for (int id : ids) {
         RolloutDevice d;
         d.id = id;
@@ -47,6 +47,18 @@ void ProfileRollout::compare(const QList<int> &ids, const QHash<int, QString> &n
     compareNext();
 }
 
+ProfileApply *ProfileRollout::applyOf(int id)
+{
+    ProfileApply *&apply = m_applies[id];
+    if (!apply) {
+        // device.id and device.baud are never applied here (the default): one id for several
+        // devices would make them collide.
+        apply = new ProfileApply(m_session, m_profile, id, this);
+        connect(apply, &ProfileApply::finished, this, &ProfileRollout::applied);
+    }
+    return apply;
+}
+
 void ProfileRollout::compareNext()
 {
     if (m_index >= m_devices.size() || !m_session) {
@@ -55,32 +67,27 @@ void ProfileRollout::compareNext()
         Q_EMIT compared();
         return;
     }
-    const int id = m_devices.at(m_index).id;
+    ProfileApply *apply = applyOf(m_devices.at(m_index).id);
     const quint64 generation = m_generation;
-    QPointer<ProfileRollout> self(this); // the dialog holding it may be gone by the answer
-    m_session->readDevice(
-        id, Profile::profileParameters(m_session->map(), true),
-        [this, self, generation](const ReadOutcome &r) {
-            if (!self || generation != m_generation)
-                return;
-            RolloutDevice &d = m_devices[m_index];
-            d.before = r.values;
-            if (!r.ok) {
-                end(d, RolloutDevice::State::Failed,
-                    tr("could not be read: %1").arg(r.errors.join(QLatin1String("; "))));
-            } else {
-                d.state = RolloutDevice::State::Compared;
-                for (const ProfileDifference &row : ProfileDiff::differences(
-                         ProfileDiff::compare(m_session->map(), m_profile, r.values))) {
-                    if (row.linkSetting)
-                        continue; // one id or baud for several devices: never from here
-                    d.differences << row;
-                    d.chosen << row.parameter->key;
-                }
-            }
-            ++m_index;
-            compareNext();
-        });
+    auto *once = new QObject(this);
+    connect(apply, &ProfileApply::compared, once, [this, apply, once, generation](bool ok) {
+        once->deleteLater();
+        if (generation != m_generation)
+            return;
+        RolloutDevice &d = m_devices[m_index];
+        d.before = apply->before();
+        if (!ok) {
+            end(d, RolloutDevice::State::Failed,
+                tr("could not be read: %1").arg(apply->readErrors().join(QLatin1String("; "))));
+        } else {
+            d.state = RolloutDevice::State::Compared;
+            d.differences = apply->differences();
+            d.chosen = apply->differingKeys();
+        }
+        ++m_index;
+        compareNext();
+    });
+    apply->compare();
 }
 
 void ProfileRollout::choose(int id, const QStringList &keys)
@@ -135,66 +142,46 @@ void ProfileRollout::applyNext()
         return;
     }
     RolloutDevice &d = m_devices[m_index];
-    auto next = [this] {
-        ++m_index;
-        // After the stack of this device has unwound; an E-STOP in between is seen first.
-        QTimer::singleShot(0, this, &ProfileRollout::applyNext);
-    };
     if (d.chosen.isEmpty()) {
         end(d, RolloutDevice::State::Skipped,
             d.differences.isEmpty() ? tr("it already holds the profile's values")
                                     : tr("no value was chosen for it"));
-        next();
+        ++m_index;
+        QTimer::singleShot(0, this, &ProfileRollout::applyNext);
         return;
     }
-    QStringList errors;
-    const QList<ParameterWrite> writes =
-        ProfileDiff::writesFor(m_session->map(), m_profile, d.chosen, false, &errors);
-    if (!errors.isEmpty()) {
-        end(d, RolloutDevice::State::Failed, errors.join(QLatin1String("; ")));
-        next();
+    applyOf(d.id)->apply(d.chosen);
+}
+
+void ProfileRollout::applied(const ProfileApplyResult &result)
+{
+    if (!m_busy || m_index >= m_devices.size() || m_devices.at(m_index).id != result.id)
         return;
-    }
-    const BackupStore::Saved saved =
-        BackupStore(m_backupDir)
-            .save(m_session->map(), d.before, BackupStore::Operation::Apply,
-                  m_session->describeDevice(d.id));
-    if (!saved.ok()) {
+    RolloutDevice &d = m_devices[m_index];
+    d.result = result;
+    d.verified = result.keysIn(AppliedKey::State::Verified);
+    if (result.ok()) {
+        end(d, RolloutDevice::State::Written, QString());
+    } else {
+        const QStringList problems = result.problems();
+        QStringList why;
+        if (!result.error.isEmpty())
+            why << result.error;
+        if (result.error.isEmpty() || result.end != ProfileApplyResult::End::Failed)
+            why += problems;
         end(d, RolloutDevice::State::Failed,
-            tr("no backup of its settings could be saved (%1): nothing was written")
-                .arg(saved.error));
-        next();
+            why.isEmpty() ? tr("not every value could be verified")
+                          : why.join(QLatin1String("; ")));
+    }
+    if (m_stopped) { // the E-STOP that ended this apply ends the rollout too
+        m_busy = false;
+        m_applied = true;
+        Q_EMIT finished(false);
         return;
     }
-    d.backup = saved.path;
-    const quint64 generation = m_generation;
-    QPointer<ProfileRollout> self(this);
-    m_session->writeDevice(
-        d.id, writes, [this, self, generation, writes, next](const WriteOutcome &w) {
-            if (!self || generation != m_generation)
-                return;
-            RolloutDevice &device = m_devices[m_index];
-            QStringList problems = w.errors;
-            for (const ParameterWrite &pw : writes) {
-                const QString &key = pw.parameter->key;
-                const bool mismatch =
-                    std::any_of(w.mismatches.cbegin(), w.mismatches.cend(),
-                                [&](const WriteMismatch &m) { return m.key == key; });
-                if (w.written.contains(key) && !mismatch)
-                    device.verified << key;
-                else if (mismatch)
-                    problems << tr("%1 reads back other than written").arg(key);
-            }
-            if (!w.notWritten.isEmpty())
-                problems << tr("not written: %1").arg(w.notWritten.join(QLatin1String(", ")));
-            if (w.ok && device.verified.size() == writes.size())
-                end(device, RolloutDevice::State::Written, QString());
-            else
-                end(device, RolloutDevice::State::Failed,
-                    problems.isEmpty() ? tr("not every value could be verified")
-                                       : problems.join(QLatin1String("; ")));
-            next();
-        });
+    ++m_index;
+    // After the stack of this device has unwound; an E-STOP in between is seen first.
+    QTimer::singleShot(0, this, &ProfileRollout::applyNext);
 }
 
 void ProfileRollout::end(RolloutDevice &d, RolloutDevice::State state, const QString &reason)
@@ -206,21 +193,23 @@ void ProfileRollout::end(RolloutDevice &d, RolloutDevice::State state, const QSt
 
 void ProfileRollout::stopAll()
 {
-    ++m_generation; // the answers still on their way belong to nothing now
+    ++m_generation; // the comparisons still on their way belong to nothing now
     m_stopped = true;
-    m_busy = false;
     const bool applying = m_compared;
-    for (qsizetype i = m_index; i < m_devices.size(); ++i) {
+    // Applying: the device being written ends through its own ProfileApply (it hears the
+    // E-STOP too, right after this), which then ends the rollout.
+    ProfileApply *current = applying && m_index < m_devices.size()
+                                ? m_applies.value(m_devices.at(m_index).id)
+                                : nullptr;
+    const bool waitForCurrent = current && current->isBusy();
+    for (qsizetype i = m_index + (waitForCurrent ? 1 : 0); i < m_devices.size(); ++i) {
         RolloutDevice &d = m_devices[i];
-        if (d.state != RolloutDevice::State::Pending && d.state != RolloutDevice::State::Compared)
-            continue;
-        if (applying && i == m_index && d.state == RolloutDevice::State::Compared &&
-            !d.chosen.isEmpty())
-            end(d, RolloutDevice::State::Failed,
-                tr("stopped by the E-STOP while writing: what it holds now was not verified"));
-        else
+        if (d.state == RolloutDevice::State::Pending || d.state == RolloutDevice::State::Compared)
             end(d, RolloutDevice::State::Skipped, tr("not done: E-STOP"));
     }
+    if (waitForCurrent)
+        return;
+    m_busy = false;
     if (applying) {
         m_applied = true;
         Q_EMIT finished(false);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "profile/profile.h"
+#include "profile/profileapply.h"
 #include "profile/profilediff.h"
 
 #include <QHash>
@@ -24,14 +25,15 @@ struct RolloutDevice
     QList<ProfileDifference> differences; // rows that differ (link settings left out)
     QStringList chosen;                   // keys to write (all differing ones at first)
     QStringList verified;                 // written, read back and equal
-    QString reason;                       // skipped or failed: why; written: the backup
-    QString backup;                       // the backup saved before writing
+    QString reason;                       // skipped or failed: why
+    ProfileApplyResult result;            // what its ProfileApply came to, per key
 };
 
-// Applies one profile to several controllers of the line, one after the other: compare()
-// reads each and lists what differs (nothing is written); after the user confirmed, apply()
-// saves a backup of each device's settings, writes its chosen differences, and verifies them
-// by read-back. Each device ends written (every chosen value verified), skipped (nothing
+// Applies one profile to several controllers of the line, one after the other, each through
+// its own ProfileApply: compare() reads each and lists what differs (nothing is written); after
+// the user confirmed, apply() lets each back up its settings (the session's risk guard), write
+// its chosen differences and verify them. Each device ends written (every chosen value
+// verified), skipped (nothing
 // chosen, or nothing differed) or failed (with why); a failure on one does not stop the
 // others, an E-STOP stops all that is left. device.id and device.baud are never applied here:
 // one id for several devices would make them collide.
@@ -41,8 +43,6 @@ class ProfileRollout : public QObject
 public:
     ProfileRollout(DeviceSession *session, const Profile &profile, QObject *parent = nullptr);
 
-    // Where the backups before writing go (BackupStore::defaultDirectory() unless set).
-    void setBackupDirectory(const QString &directory) { m_backupDir = directory; }
     const Profile &profile() const { return m_profile; }
 
     // Reads every id in `ids` (names: what the device list calls them) and compares.
@@ -72,13 +72,15 @@ Q_SIGNALS:
 private:
     void compareNext();
     void applyNext();
+    void applied(const ProfileApplyResult &result);
     void end(RolloutDevice &d, RolloutDevice::State state, const QString &reason);
     void stopAll(); // E-STOP: nothing more goes out
+    ProfileApply *applyOf(int id);
 
     QPointer<DeviceSession> m_session;
     Profile m_profile;
-    QString m_backupDir;
     QList<RolloutDevice> m_devices;
+    QHash<int, ProfileApply *> m_applies; // one per device, from its comparison on
     int m_index = 0;
     bool m_busy = false;
     bool m_compared = false;

@@ -30,37 +30,41 @@ QList<const Parameter *> SessionBackup::settings(const RegisterMap &map)
 }
 
 void SessionBackup::save(DeviceSession *session, const BackupStore &store, DeviceSession::Risk risk,
-                         std::function<void(const BackupStore::Saved &)> done)
+                         int id, std::function<void(const BackupStore::Saved &)> done)
 {
     const QList<const Parameter *> params = settings(session->map());
-    QHash<QString, qint64> known;
-    for (const Parameter *p : params) {
-        if (const auto v = session->parameters()->deviceValue(p->key))
-            known.insert(p->key, *v);
-    }
     const BackupStore::Operation op = operation(risk);
-    const QString device = session->settings().describe();
-    if (known.size() == params.size()) {
-        done(store.save(session->map(), known, op, device));
-        return;
+    const bool inView = id == session->deviceInView();
+    const QString device = inView ? session->settings().describe() : session->describeDevice(id);
+    if (inView) {
+        QHash<QString, qint64> known;
+        for (const Parameter *p : params) {
+            if (const auto v = session->parameters()->deviceValue(p->key))
+                known.insert(p->key, *v);
+        }
+        if (known.size() == params.size()) {
+            done(store.save(session->map(), known, op, device));
+            return;
+        }
     }
-    // Not all known: read them (at command priority: the user is waiting for the operation).
+    // Not all known (or another device, whose values here may be old): read them first.
     QPointer<DeviceSession> guard(session);
-    session->read(
-        params,
-        [guard, store, op, device, done](const ReadOutcome &r) {
-            BackupStore::Saved saved;
-            if (!guard) {
-                saved.error = tr("the session ended");
-            } else if (!r.ok) {
-                saved.error = tr("the controller's settings could not be read: %1")
-                                  .arg(r.errors.join(QLatin1String("; ")));
-            } else {
-                saved = store.save(guard->map(), r.values, op, device);
-            }
-            done(saved);
-        },
-        Priority::Command);
+    const auto saveRead = [guard, store, op, device, done](const ReadOutcome &r) {
+        BackupStore::Saved saved;
+        if (!guard) {
+            saved.error = tr("the session ended");
+        } else if (!r.ok) {
+            saved.error = tr("the controller's settings could not be read: %1")
+                              .arg(r.errors.join(QLatin1String("; ")));
+        } else {
+            saved = store.save(guard->map(), r.values, op, device);
+        }
+        done(saved);
+    };
+    if (inView) // at command priority: the user is waiting for the operation
+        session->read(params, saveRead, Priority::Command);
+    else
+        session->readDevice(id, params, saveRead);
 }
 
 } // namespace stepcom

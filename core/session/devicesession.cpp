@@ -296,10 +296,7 @@ void DeviceSession::readBackUncertain(const QList<ParameterWrite> &writes,
     QList<const Parameter *> uncertain; // sent, but failed: the store forgot their value
     for (const ParameterWrite &w : writes) {
         const QString &key = w.parameter->key;
-        bool mismatched = false;
-        for (const WriteMismatch &m : outcome.mismatches)
-            mismatched = mismatched || m.key == key;
-        if (!outcome.written.contains(key) && !outcome.notWritten.contains(key) && !mismatched)
+        if (outcome.uncertain(key) || outcome.refused.contains(key))
             uncertain << w.parameter;
     }
     if (uncertain.isEmpty() || !m_link->isConnected() || !m_live)
@@ -380,8 +377,13 @@ void DeviceSession::setTravelLimits(const TravelLimits &limits)
 
 void DeviceSession::guard(Risk risk, Proceed proceed)
 {
+    guard(risk, deviceInView(), std::move(proceed));
+}
+
+void DeviceSession::guard(Risk risk, int id, Proceed proceed)
+{
     if (m_guard)
-        m_guard(risk, std::move(proceed));
+        m_guard(risk, id, std::move(proceed));
     else
         proceed(QString());
 }

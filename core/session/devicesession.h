@@ -52,10 +52,11 @@ public:
     // Operations after which the controller's settings cannot be had back unless saved first.
     enum class Risk { Apply, FactoryReset, SaveToFlash, DeviceId, Baud };
     Q_ENUM(Risk)
-    // Runs before a risky operation (the window's backup), then calls `proceed` once: with an
-    // empty text when it may go on, else why it may not (nothing is done then).
+    // Runs before a risky operation (the window's backup) on controller `id`, then calls
+    // `proceed` once: with an empty text when it may go on, else why it may not (nothing is
+    // done then).
     using Proceed = std::function<void(const QString &refusal)>;
-    using RiskGuard = std::function<void(Risk risk, Proceed proceed)>;
+    using RiskGuard = std::function<void(Risk risk, int id, Proceed proceed)>;
     // A command answered after this long is said with its answer time ("answered after 0.8 s").
     static constexpr qint64 kSlowAnswerMs = 300;
 
@@ -80,8 +81,10 @@ public:
     // Installed by the window: a backup before every risky operation the session starts
     // (saveToFlash, factoryReset, changeLink) and the ones a front-end announces (guard()).
     void setRiskGuard(RiskGuard guard) { m_guard = std::move(guard); }
-    // Runs `proceed` after the guard (at once, agreed, without one).
+    // Runs `proceed` after the guard (at once, agreed, without one), for the device in view or
+    // for device `id` of the line.
     void guard(Risk risk, Proceed proceed);
+    void guard(Risk risk, int id, Proceed proceed);
     // The live status recorded for the plots; made on first use, recording from then on.
     StatusRecorder *recorder();
     TrafficLog *traffic() const;

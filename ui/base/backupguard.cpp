@@ -12,9 +12,9 @@ BackupGuard::BackupGuard(DeviceSession *session, QObject *parent)
     , m_dir(BackupStore::defaultDirectory())
 {
     QPointer<BackupGuard> self(this);
-    session->setRiskGuard([self](DeviceSession::Risk risk, DeviceSession::Proceed proceed) {
+    session->setRiskGuard([self](DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed) {
         if (self)
-            self->run(risk, std::move(proceed));
+            self->run(risk, id, std::move(proceed));
         else
             proceed(QString());
     });
@@ -26,11 +26,11 @@ BackupGuard::~BackupGuard()
         m_session->setRiskGuard({});
 }
 
-void BackupGuard::run(DeviceSession::Risk risk, DeviceSession::Proceed proceed)
+void BackupGuard::run(DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed)
 {
     QPointer<BackupGuard> self(this);
     SessionBackup::save(
-        m_session, BackupStore(m_dir), risk,
+        m_session, BackupStore(m_dir), risk, id,
         [self, risk, proceed](const BackupStore::Saved &saved) {
             const QString what = BackupStore::operationLabel(
                 BackupStore::operationWord(SessionBackup::operation(risk)));

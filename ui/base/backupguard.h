@@ -27,7 +27,7 @@ Q_SIGNALS:
     void saved(const QString &path);
 
 private:
-    void run(DeviceSession::Risk risk, DeviceSession::Proceed proceed);
+    void run(DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed);
 
     QPointer<DeviceSession> m_session;
     QString m_dir;

@@ -105,11 +105,6 @@ ApplyToDevicesDialog::ApplyToDevicesDialog(DeviceSession *session, const Profile
     updateButtons();
 }
 
-void ApplyToDevicesDialog::setBackupDirectory(const QString &directory)
-{
-    m_rollout->setBackupDirectory(directory);
-}
-
 QList<int> ApplyToDevicesDialog::checkedDevices() const
 {
     QList<int> ids;

@@ -31,7 +31,6 @@ public:
                          const QHash<int, QString> &names, const QList<int> &preselected,
                          QWidget *parent = nullptr);
 
-    void setBackupDirectory(const QString &directory);
     ProfileRollout *rollout() const { return m_rollout; }
     QListWidget *deviceList() const { return m_devices; }
     QTreeWidget *rows() const { return m_rows; }

@@ -1,6 +1,7 @@
 #include "dialogs/profilecomparedialog.h"
 
 #include "base/language.h"
+#include "profile/profileapply.h"
 #include "session/devicesession.h"
 
 #include <QCheckBox>
@@ -349,66 +350,40 @@ void ProfileCompareDialog::apply()
 {
     if (m_busy || !m_session->isConnected())
         return;
-    QStringList errors;
-    const QList<ParameterWrite> writes = ProfileDiff::writesFor(
-        m_session->map(), m_profile, checkedKeys(), m_includeLink->isChecked(), &errors);
-    if (writes.isEmpty())
+    const QStringList keys = checkedKeys();
+    if (keys.isEmpty())
         return;
     m_busy = true;
     m_progress->show();
     m_saveToFlash->hide();
     m_result->setText(
-        tr("Writing %n value(s), then reading them back…", nullptr, int(writes.size())));
+        tr("Writing %n value(s), then reading them back…", nullptr, int(keys.size())));
     updateButtons();
-    QPointer<ProfileCompareDialog> self(this);
-    // The settings it replaces are backed up first (the window's risk guard).
-    m_session->guard(DeviceSession::Risk::Apply, [self, writes](const QString &refusal) {
-        if (!self)
-            return;
-        if (!refusal.isEmpty()) {
-            WriteOutcome none;
-            none.errors << refusal;
-            for (const ParameterWrite &w : writes)
-                none.notWritten << w.parameter->key;
-            self->finishApply(writes, none);
-            return;
-        }
-        self->m_session->write(writes, [self, writes](const WriteOutcome &outcome) {
-            if (self)
-                self->finishApply(writes, outcome);
-        });
-    });
+    // Read, compare, back up (the window's risk guard), write and verify: ProfileApply.
+    delete m_applier;
+    m_applier = new ProfileApply(m_session, m_profile, 0, this);
+    m_applier->setIncludeLink(m_includeLink->isChecked());
+    connect(m_applier, &ProfileApply::finished, this, &ProfileCompareDialog::finishApply);
+    m_applier->apply(keys);
 }
 
-void ProfileCompareDialog::finishApply(const QList<ParameterWrite> &writes,
-                                       const WriteOutcome &outcome)
+void ProfileCompareDialog::finishApply(const ProfileApplyResult &result)
 {
     m_busy = false;
     m_progress->hide();
-    QStringList verified;
+    const QStringList verified = result.keysIn(AppliedKey::State::Verified);
     QStringList problems;
-    for (const ParameterWrite &w : writes) {
-        const QString &key = w.parameter->key;
-        const auto mismatch = std::find_if(outcome.mismatches.cbegin(), outcome.mismatches.cend(),
-                                           [&](const WriteMismatch &m) { return m.key == key; });
-        if (mismatch != outcome.mismatches.cend()) {
-            problems << (mismatch->got ? tr("%1: wrote %2, the controller holds %3")
-                                             .arg(nameOf(key), w.parameter->displayRaw(w.raw),
-                                                  w.parameter->displayRaw(*mismatch->got))
-                                       : tr("%1: wrote %2, could not read it back")
-                                             .arg(nameOf(key), w.parameter->displayRaw(w.raw)));
-        } else if (outcome.written.contains(key)) {
-            verified << key;
-        } else {
-            problems << tr("%1: not written").arg(nameOf(key));
-        }
-    }
-    for (const QString &e : outcome.errors) {
-        if (std::none_of(outcome.mismatches.cbegin(), outcome.mismatches.cend(),
-                         [&](const WriteMismatch &m) { return e.startsWith(m.key + u':'); }))
-            problems << e;
+    if (!result.error.isEmpty())
+        problems << result.error;
+    for (const AppliedKey &k : result.keys) {
+        if (k.state != AppliedKey::State::Verified && k.state != AppliedKey::State::Unchanged)
+            problems << ProfileApplyResult::describe(k, nameOf(k.key));
     }
     QString text = tr("Wrote and verified %n value(s).", nullptr, int(verified.size()));
+    const QStringList held = result.keysIn(AppliedKey::State::Unchanged);
+    if (!held.isEmpty())
+        text += QLatin1Char(' ') +
+                tr("%n value(s) the controller already held.", nullptr, int(held.size()));
     if (!problems.isEmpty())
         text += QLatin1Char('\n') + tr("Problems:") + QLatin1Char('\n') +
                 problems.join(QLatin1Char('\n'));
@@ -417,10 +392,10 @@ void ProfileCompareDialog::finishApply(const QList<ParameterWrite> &writes,
     m_result->setText(text);
     m_saveToFlash->setVisible(!verified.isEmpty());
     m_saveToFlash->setEnabled(!verified.isEmpty());
-    for (const QString &key : std::as_const(verified))
+    for (const QString &key : verified)
         m_touched.remove(key); // written: its check follows the comparison again
     refreshValues();
-    Q_EMIT applied(outcome.ok, verified, problems);
+    Q_EMIT applied(result.ok(), verified, problems);
 }
 
 void ProfileCompareDialog::retranslate()

@@ -1,11 +1,11 @@
 #pragma once
 
-#include "device/deviceclient.h"
 #include "profile/profile.h"
 #include "profile/profilediff.h"
 
 #include <QDialog>
 #include <QHash>
+#include <QPointer>
 #include <QSet>
 
 class QCheckBox;
@@ -17,10 +17,13 @@ class QTableWidget;
 namespace stepcom {
 
 class DeviceSession;
+class ProfileApply;
+struct ProfileApplyResult;
 
 // Device versus profile, one row per parameter: both values, the unit, differences highlighted
 // and a check box per row (the differing rows checked). Opening it writes nothing; Apply writes
-// only the checked rows, verifies them and then offers Save to flash. device.id and device.baud
+// only the checked rows through ProfileApply (backed up, verified) and then offers Save to
+// flash. device.id and device.baud
 // are applied only when "also the device id and baud" is chosen; the link follows them.
 class ProfileCompareDialog : public QDialog
 {
@@ -69,12 +72,13 @@ private:
     void updateButtons();
     void retranslate();
     void onItemChanged(int row, int column);
-    void finishApply(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
+    void finishApply(const ProfileApplyResult &result);
     QString nameOf(const QString &key) const;
     static QString labelOf(const Parameter &p);
     static QString forgetWarning();
 
     DeviceSession *m_session;
+    QPointer<ProfileApply> m_applier; // the last apply (ProfileApply)
     Profile m_profile;
     QString m_fileName;
     QList<ProfileDifference> m_rows;

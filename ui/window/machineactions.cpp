@@ -41,10 +41,8 @@ MachineActions::MachineActions(DeviceSession *session, QWidget *window)
     updateActions();
 }
 
-void MachineActions::addTo(QMenu *menu, const QString &backupDirectory,
-                           std::function<DeviceListDock *()> list)
+void MachineActions::addTo(QMenu *menu, std::function<DeviceListDock *()> list)
 {
-    m_backupDir = backupDirectory;
     m_list = std::move(list);
     menu->addAction(m_apply);
     menu->addAction(m_dump);
@@ -119,7 +117,6 @@ bool MachineActions::applyProfileFile(const QString &path)
     m_applyDialog = new ApplyToDevicesDialog(m_session, *r.profile, QFileInfo(path).fileName(),
                                              names(), {}, m_window);
     m_applyDialog->setAttribute(Qt::WA_DeleteOnClose);
-    m_applyDialog->setBackupDirectory(m_backupDir);
     connect(m_applyDialog, &ApplyToDevicesDialog::message, this, &MachineActions::finished);
     m_applyDialog->show(); // not modal: the window's E-STOP stays at hand
     return true;

@@ -33,9 +33,8 @@ public:
     MachineActions(DeviceSession *session, QWidget *window);
 
     // Adds the actions to `menu`; `list` gives the window's device list (null before it is
-    // made): what it calls each id.
-    void addTo(QMenu *menu, const QString &backupDirectory,
-               std::function<DeviceListDock *()> list = {});
+    // made): what it calls each id. Backups before writing: the session's risk guard.
+    void addTo(QMenu *menu, std::function<DeviceListDock *()> list = {});
     QAction *applyAction() const { return m_apply; }
     QAction *dumpAction() const { return m_dump; }
     QAction *reportAction() const { return m_report; }
@@ -80,7 +79,6 @@ private:
     QAction *m_apply;
     QAction *m_dump;
     QAction *m_report;
-    QString m_backupDir;
     std::function<DeviceListDock *()> m_list;
     QPointer<ApplyToDevicesDialog> m_applyDialog;
     QPointer<BusSweep> m_sweep;

@@ -323,7 +323,7 @@ void MainWindow::createMenus()
     m_profiles->setBackupDirectory(m_backups->directory());
     m_profiles->setChecklistSource([this] { return m_checklist->reportChecklist(); });
     m_machine = new MachineActions(m_session, this); // every device of the line
-    m_machine->addTo(m_fileMenu, m_backups->directory(), [this] { return m_deviceDock; });
+    m_machine->addTo(m_fileMenu, [this] { return m_deviceDock; });
     connect(m_machine, &MachineActions::finished, m_profiles, &ProfileActions::finished);
     m_fileMenu->addSeparator();
     // --- end profiles ---

@@ -1,4 +1,4 @@
-// stepcomctl move and the backups before risky commands: parts of CtlRunner.
+// stepcomctl move and the risk guard (the backups before risky commands): parts of CtlRunner.
 #include "../ctlrunner.h"
 
 #include "profile/sessionbackup.h"
@@ -12,23 +12,45 @@
 
 namespace stepcom {
 
-void CtlRunner::backupThen(DeviceSession::Risk risk, std::function<void()> next)
+void CtlRunner::installRiskGuard()
 {
-    if (m_options.noBackup) {
-        next();
-        return;
-    }
-    SessionBackup::save(
-        m_session, BackupStore(), risk, [this, next](const BackupStore::Saved &saved) {
-            if (!saved.ok()) {
-                fail(DeviceError, tr("no backup of the controller's settings could be saved "
-                                     "(%1): nothing was done (--no-backup goes on without one)")
+    // The session is this runner's child: it never outlives `this`.
+    m_session->setRiskGuard([this](DeviceSession::Risk risk, int id,
+                                   DeviceSession::Proceed proceed) {
+        if (m_options.noBackup) {
+            proceed(QString());
+            return;
+        }
+        SessionBackup::save(
+            m_session, BackupStore(), risk, id,
+            [this, risk, proceed](const BackupStore::Saved &saved) {
+                if (!saved.ok()) {
+                    proceed(risk == DeviceSession::Risk::Apply
+                                ? tr("no backup of the controller's settings could be saved "
+                                     "(%1): nothing was written (--no-backup applies without "
+                                     "one)")
+                                      .arg(saved.error)
+                                : tr("no backup of the controller's settings could be saved "
+                                     "(%1): nothing was done (--no-backup goes on without "
+                                     "one)")
                                       .arg(saved.error));
-                return;
-            }
-            m_out << tr("backup of the controller's settings: %1").arg(saved.path) << Qt::endl;
-            next();
-        });
+                    return;
+                }
+                m_out << tr("backup of the controller's settings: %1").arg(saved.path) << Qt::endl;
+                proceed(QString());
+            });
+    });
+}
+
+void CtlRunner::guardThen(DeviceSession::Risk risk, std::function<void()> next)
+{
+    m_session->guard(risk, [this, next](const QString &refusal) {
+        if (!refusal.isEmpty()) {
+            fail(DeviceError, refusal);
+            return;
+        }
+        next();
+    });
 }
 
 void CtlRunner::runMove()

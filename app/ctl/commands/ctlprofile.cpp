@@ -4,9 +4,8 @@
 
 #include "consolereader.h"
 
-#include "device/writereview.h"
-#include "profile/backupstore.h"
 #include "profile/busdump.h"
+#include "profile/profileapply.h"
 #include "profile/profilecomparison.h"
 #include "profile/profilediff.h"
 #include "profile/profilefile.h"
@@ -300,62 +299,63 @@ void CtlRunner::runApply()
               << tr("note: device.baud changes the controller's serial side only") << Qt::endl;
     }
     connectThen([this, profile] {
-        m_session->read(
-            Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
-                if (!r.ok) {
-                    for (const QString &e : condensed(r.errors))
-                        m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-                    fail(DeviceError, tr("nothing was written"));
-                    return;
-                }
-                m_beforeApply = r.values;
-                Profile applied = profile;
-                noteUnsupported(r, &applied); // never written: the controller lacks them
-                QStringList keys;
-                for (const ProfileDifference &d :
-                     ProfileDiff::differences(ProfileDiff::compare(m_map, applied, r.values))) {
-                    if (d.linkSetting && !m_options.includeLink) {
-                        m_out << tr("not applied (needs --include-link): %1")
-                                     .arg(ProfileDiff::describe(d))
-                              << Qt::endl;
-                        continue;
-                    }
-                    keys << d.parameter->key;
-                    m_out << tr("will write %1").arg(ProfileDiff::describe(d)) << Qt::endl;
-                }
-                m_result.insert(QStringLiteral("to_write"), QJsonArray::fromStringList(keys));
-                // Said before asking, and with --yes too: what of the profile is not applied.
-                printLeftOut(applied, tr("not applied:"));
-                QStringList errors;
-                const QList<ParameterWrite> writes =
-                    ProfileDiff::writesFor(m_map, applied, keys, m_options.includeLink, &errors);
-                if (!errors.isEmpty()) {
-                    fail(UsageError, errors.join(QLatin1String("; ")));
-                    return;
-                }
-                if (writes.isEmpty()) {
-                    m_out << (profile.variance.isVariant()
-                                  ? tr("the controller already holds every value both maps have")
-                                  : tr("the controller already holds the profile's values"))
+        // ProfileApply reads, compares, backs up (the session's risk guard), writes, verifies.
+        delete m_applier;
+        m_applier = new ProfileApply(m_session, profile, 0, this);
+        m_applier->setIncludeLink(m_options.includeLink);
+        m_applier->setSaveToFlash(m_options.saveToFlash);
+        connect(m_applier, &ProfileApply::finished, this, &CtlRunner::reportApplied);
+        connect(m_applier, &ProfileApply::compared, this, [this, profile](bool ok) {
+            if (!ok) {
+                for (const QString &e : condensed(m_applier->readErrors()))
+                    m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+                fail(DeviceError, tr("nothing was written"));
+                return;
+            }
+            ReadOutcome r;
+            r.values = m_applier->before();
+            r.unsupported = m_applier->unsupported();
+            Profile applied = profile;
+            noteUnsupported(r, &applied); // never written: the controller lacks them
+            QStringList keys;
+            for (const ProfileDifference &d :
+                 ProfileDiff::differences(ProfileDiff::compare(m_map, applied, r.values))) {
+                if (d.linkSetting && !m_options.includeLink) {
+                    m_out << tr("not applied (needs --include-link): %1")
+                                 .arg(ProfileDiff::describe(d))
                           << Qt::endl;
-                    if (m_options.saveToFlash)
-                        saveToFlashThenFinish();
-                    else
-                        finish(Ok);
-                    return;
+                    continue;
                 }
-                // What the window's write dialog asks, said before the question (and with --yes).
-                const QStringList questions = WriteReview::problems(
-                    m_map,
-                    [values = r.values](const QString &key) {
-                        const auto it = values.constFind(key);
-                        return it == values.cend() ? std::nullopt : std::optional<qint64>(*it);
-                    },
-                    writes);
-                for (const QString &q : questions)
-                    m_out << tr("check: %1").arg(q) << Qt::endl;
-                confirmThenApply(writes);
-            });
+                keys << d.parameter->key;
+                m_out << tr("will write %1").arg(ProfileDiff::describe(d)) << Qt::endl;
+            }
+            m_result.insert(QStringLiteral("to_write"), QJsonArray::fromStringList(keys));
+            // Said before asking, and with --yes too: what of the profile is not applied.
+            printLeftOut(applied, tr("not applied:"));
+            QStringList errors;
+            const QList<ParameterWrite> writes =
+                ProfileDiff::writesFor(m_map, applied, keys, m_options.includeLink, &errors);
+            if (!errors.isEmpty()) {
+                fail(UsageError, errors.join(QLatin1String("; ")));
+                return;
+            }
+            if (writes.isEmpty()) {
+                m_out << (profile.variance.isVariant()
+                              ? tr("the controller already holds every value both maps have")
+                              : tr("the controller already holds the profile's values"))
+                      << Qt::endl;
+                if (m_options.saveToFlash)
+                    applyWrites({}); // nothing to write: only the save to flash
+                else
+                    finish(Ok);
+                return;
+            }
+            // What the window's write dialog asks, said before the question (and with --yes).
+            for (const QString &q : m_applier->questions(keys))
+                m_out << tr("check: %1").arg(q) << Qt::endl;
+            confirmThenApply(writes);
+        });
+        m_applier->compare();
     });
 }
 
@@ -413,45 +413,68 @@ void CtlRunner::confirmThenApply(const QList<ParameterWrite> &writes)
     });
 }
 
-bool CtlRunner::backupBeforeApply()
-{
-    if (m_options.noBackup)
-        return true;
-    const BackupStore store;
-    const BackupStore::Saved saved = store.save(m_map, m_beforeApply, BackupStore::Operation::Apply,
-                                                m_session->settings().describe());
-    if (!saved.ok()) {
-        fail(DeviceError, tr("no backup of the controller's settings could be saved (%1): nothing "
-                             "was written (--no-backup applies without one)")
-                              .arg(saved.error));
-        return false;
-    }
-    m_out << tr("backup of the controller's settings: %1").arg(saved.path) << Qt::endl;
-    return true;
-}
-
 void CtlRunner::applyWrites(const QList<ParameterWrite> &writes)
 {
-    if (!backupBeforeApply())
-        return;
-    m_session->write(writes, [this, writes](const WriteOutcome &w) {
-        reportWritten(writes, w);
-        if (!w.ok) {
+    QStringList keys;
+    for (const ParameterWrite &w : writes)
+        keys << w.parameter->key;
+    m_appliedWrites = writes;
+    m_applier->apply(keys);
+}
+
+void CtlRunner::reportApplied(const ProfileApplyResult &result)
+{
+    QJsonObject written;
+    for (const AppliedKey &k : result.keys) {
+        if (k.state != AppliedKey::State::Verified)
+            continue;
+        written.insert(k.key, jsonValue(*k.parameter, k.wanted));
+        m_out << k.key << QStringLiteral(" = ") << valueText(*k.parameter, k.wanted)
+              << QStringLiteral("  ") << tr("(written, verified)") << Qt::endl;
+    }
+    const QStringList notWritten =
+        result.keysIn(AppliedKey::State::NotWritten) + result.keysIn(AppliedKey::State::Refused);
+    if (!result.keys.isEmpty() || !written.isEmpty()) {
+        m_result.insert(QStringLiteral("written"), written);
+        m_result.insert(QStringLiteral("not_written"), QJsonArray::fromStringList(notWritten));
+    }
+    for (const QString &e : result.writeErrors)
+        m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+    // Past what the write said: each key not verified, and why (not known is never guessed).
+    for (const AppliedKey &k : result.keys) {
+        if (k.state == AppliedKey::State::Refused || k.state == AppliedKey::State::NotKnown ||
+            k.state == AppliedKey::State::Lost)
+            m_err << QStringLiteral("stepcomctl: ") << ProfileApplyResult::describe(k) << Qt::endl;
+    }
+    if (!notWritten.isEmpty())
+        m_err << QStringLiteral("stepcomctl: ")
+              << tr("not written: %1").arg(notWritten.join(QLatin1String(", "))) << Qt::endl;
+    const bool allHeld = std::all_of(result.keys.cbegin(), result.keys.cend(), [](const auto &k) {
+        return k.state == AppliedKey::State::Verified || k.state == AppliedKey::State::Unchanged;
+    });
+    if (result.end != ProfileApplyResult::End::Done || !allHeld) {
+        if (result.error.isEmpty())
             finish(DeviceError);
+        else
+            fail(DeviceError, result.error);
+        return;
+    }
+    // --include-link: how the next command reaches a new id or baud (the flash is said below).
+    for (const QString &note : CtlLinkAdvice::notes(m_options, m_appliedWrites, true))
+        m_out << note << Qt::endl;
+    if (result.flashAsked) {
+        if (result.savedToFlash != true) {
+            fail(DeviceError, result.flashError);
             return;
         }
-        // --include-link: how the next command reaches a new id or baud (the flash is said below).
-        for (const QString &note : CtlLinkAdvice::notes(m_options, writes, true))
-            m_out << note << Qt::endl;
-        if (m_options.saveToFlash)
-            saveToFlashThenFinish();
-        else {
-            m_out << tr("not saved to flash: the controller forgets these values at power-off "
-                        "(use --save-to-flash)")
-                  << Qt::endl;
-            finish(Ok);
-        }
-    });
+        m_out << tr("saved to flash") << Qt::endl;
+        finish(Ok);
+        return;
+    }
+    m_out << tr("not saved to flash: the controller forgets these values at power-off "
+                "(use --save-to-flash)")
+          << Qt::endl;
+    finish(Ok);
 }
 
 void CtlRunner::saveToFlashThenFinish()

@@ -65,7 +65,7 @@ void CtlRunner::runWrite()
     connectThen([this, writes, risk] {
         reviewThen(writes, [this, writes, risk] {
             if (risk) {
-                backupThen(*risk, [this, writes] { writeThenReport(writes); });
+                guardThen(*risk, [this, writes] { writeThenReport(writes); });
                 return;
             }
             writeThenReport(writes);
@@ -136,11 +136,7 @@ void CtlRunner::reportWritten(const QList<ParameterWrite> &writes, const WriteOu
 {
     QJsonObject written;
     for (const ParameterWrite &pw : writes) {
-        const bool verified =
-            w.written.contains(pw.parameter->key) &&
-            std::none_of(w.mismatches.cbegin(), w.mismatches.cend(),
-                         [&](const WriteMismatch &m) { return m.key == pw.parameter->key; });
-        if (!verified)
+        if (!w.verified(pw.parameter->key))
             continue;
         written.insert(pw.parameter->key, jsonValue(*pw.parameter, pw.raw));
         m_out << pw.parameter->key << QStringLiteral(" = ") << valueText(*pw.parameter, pw.raw)

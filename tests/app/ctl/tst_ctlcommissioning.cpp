@@ -92,6 +92,24 @@ private Q_SLOTS:
         QCOMPARE(device->registers[5], quint16(300));
     }
 
+    // The session's risk guard, as in the window: a backup before the write and another
+    // before the save to flash.
+    void applyWithSaveToFlashBacksUpBeforeEach()
+    {
+        device->registers[5] = 450;
+        const ProgramRun r = ctl({QStringLiteral("apply"), machineA(), QStringLiteral("--yes"),
+                                  QStringLiteral("--save-to-flash")});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err + r.out));
+        QStringList operations;
+        for (const BackupEntry &e : BackupStore(backups()).list(RegisterMap::builtin()))
+            operations << e.operation;
+        operations.sort();
+        QCOMPARE(operations, (QStringList{"apply", "save-to-flash"}));
+        QVERIFY(r.out.indexOf(QStringLiteral("backup of the controller's settings")) <
+                r.out.indexOf(QStringLiteral("(written, verified)")));
+        QVERIFY(r.out.contains(QStringLiteral("saved to flash")));
+    }
+
     void noBackupWritesNone()
     {
         device->registers[5] = 450;

@@ -2,6 +2,7 @@
 #include "bus/trafficlog.h"
 #include "profile/backupstore.h"
 #include "profile/profilerollout.h"
+#include "profile/sessionbackup.h"
 #include "session/devicesession.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
@@ -58,6 +59,14 @@ class TestProfileRollout : public QObject
     }
     void connectLine()
     {
+        // The window's guard: each device backed up (SessionBackup) before it is written.
+        session->setRiskGuard(
+            [this](DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed) {
+                SessionBackup::save(session.get(), BackupStore(backups.path()), risk, id,
+                                    [proceed](const BackupStore::Saved &saved) {
+                                        proceed(saved.ok() ? QString() : saved.error);
+                                    });
+            });
         test::useBuiltinSimulator(*session, {1, 2, 3});
         session->setDeviceIds({1, 2, 3});
         test::connectToSimulator(*session);
@@ -79,7 +88,6 @@ private Q_SLOTS:
         const Profile profile = changedProfile();
         const qint64 untouched = simValue(1, changed.first());
         ProfileRollout rollout(session.get(), profile);
-        rollout.setBackupDirectory(backups.path());
         QSignalSpy compared(&rollout, &ProfileRollout::compared);
         rollout.compare({2, 3}, {{2, QStringLiteral("Y axis")}});
         QTRY_COMPARE_WITH_TIMEOUT(compared.size(), 1, 15000);
@@ -106,7 +114,9 @@ private Q_SLOTS:
             const RolloutDevice *d = rollout.device(id);
             QCOMPARE(d->state, RolloutDevice::State::Written);
             QCOMPARE(d->verified, changed);
-            QVERIFY(QFileInfo::exists(d->backup));
+            // Its ProfileApply's result, per key, is what the device shows.
+            QCOMPARE(d->result.id, id);
+            QCOMPARE(d->result.keysIn(AppliedKey::State::Verified), changed);
             for (const QString &key : changed)
                 QCOMPARE(simValue(id, key), profile.values.value(key));
         }
@@ -125,7 +135,6 @@ private Q_SLOTS:
     {
         const Profile profile = changedProfile();
         ProfileRollout rollout(session.get(), profile);
-        rollout.setBackupDirectory(backups.path());
         QSignalSpy compared(&rollout, &ProfileRollout::compared);
         rollout.compare({1, 2, 9}); // no controller of the line has id 9: it cannot be read
         QTRY_COMPARE_WITH_TIMEOUT(compared.size(), 1, 20000);
@@ -150,7 +159,6 @@ private Q_SLOTS:
     {
         const Profile profile = changedProfile();
         ProfileRollout rollout(session.get(), profile);
-        rollout.setBackupDirectory(backups.path());
         QSignalSpy compared(&rollout, &ProfileRollout::compared);
         rollout.compare({2, 3});
         QTRY_COMPARE_WITH_TIMEOUT(compared.size(), 1, 15000);

@@ -96,8 +96,7 @@ private Q_SLOTS:
         window = std::make_unique<QWidget>();
         actions = new MachineActions(session.get(), window.get());
         list = new DeviceListDock(session.get(), window.get());
-        actions->addTo(new QMenu(window.get()), dir.filePath(QStringLiteral("backups")),
-                       [this] { return list; });
+        actions->addTo(new QMenu(window.get()), [this] { return list; });
         test::useBuiltinSimulator(*session, {1, 2, 3});
     }
     void cleanup()

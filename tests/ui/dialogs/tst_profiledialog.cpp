@@ -1,5 +1,6 @@
 #include "base/language.h"
 #include "bus/modbuslink.h"
+#include "bus/trafficlog.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilesavedialog.h"
 #include "profile/profilefile.h"
@@ -198,6 +199,37 @@ private Q_SLOTS:
                  QStringLiteral("—"));
         dialog.differencesOnly()->setChecked(true);
         QCOMPARE(visibleRows(dialog.table()), 0);
+    }
+
+    // Apply goes through ProfileApply: what the controller holds is read again first, and a
+    // checked row it already holds is said so, not written.
+    void aRowTheControllerAlreadyHoldsIsNotWritten()
+    {
+        connectSim();
+        const Profile profile = changedProfile();
+        ProfileCompareDialog dialog(session.get(), profile, QStringLiteral("b.json"), window.get());
+        dialog.open();
+        QTRY_VERIFY(!dialog.isBusy());
+        QVERIFY(dialog.checkedKeys().contains(QStringLiteral("arc.speed")));
+        // Someone else wrote it meanwhile: the controller holds the profile's value now.
+        QVERIFY(sim()->setValue(QStringLiteral("arc.speed"),
+                                profile.values.value(QStringLiteral("arc.speed"))));
+        SessionInternals::link(*session)->traffic()->clear();
+        QSignalSpy applied(&dialog, &ProfileCompareDialog::applied);
+        dialog.apply();
+        QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
+        QVERIFY(applied.at(0).at(0).toBool());
+        QCOMPARE(applied.at(0).at(1).toStringList(), (QStringList{"motor1.speed", "motor2.pitch"}));
+        const QString text = dialog.resultLabel()->text();
+        QVERIFY2(text.contains(QStringLiteral("1 value(s) the controller already held.")) ||
+                     text.contains(QStringLiteral("1 value the controller already held.")),
+                 qPrintable(text));
+        const Parameter *arc = session->map().find(QStringLiteral("arc.speed"));
+        for (const TrafficEntry &e : SessionInternals::link(*session)->traffic()->entries()) {
+            if (e.direction == TrafficEntry::Direction::Sent && e.bytes.size() > 3 &&
+                quint8(e.bytes.at(1)) == 0x06)
+                QVERIFY(((quint8(e.bytes.at(2)) << 8) | quint8(e.bytes.at(3))) != arc->address);
+        }
     }
 
     void mismatchesAreNamed()

@@ -1,3 +1,4 @@
+#include "base/backupguard.h"
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "dialogs/applytodevicesdialog.h"
@@ -35,6 +36,7 @@ class TestMachineActions : public QObject
     std::unique_ptr<QWidget> window;
     MachineActions *actions = nullptr;
     DeviceListDock *list = nullptr;
+    BackupGuard *guard = nullptr;
     QTemporaryDir dir;
     QStringList messages;
 
@@ -72,7 +74,10 @@ private Q_SLOTS:
         actions = new MachineActions(session.get(), window.get());
         auto *menu = new QMenu(window.get());
         list = new DeviceListDock(session.get(), window.get());
-        actions->addTo(menu, dir.filePath(QStringLiteral("backups")), [this] { return list; });
+        actions->addTo(menu, [this] { return list; });
+        // The window's backups: the session's risk guard, which the rollout goes through.
+        guard = new BackupGuard(session.get(), window.get());
+        guard->setDirectory(dir.filePath(QStringLiteral("backups")));
         messages.clear();
         connect(actions, &MachineActions::finished, this,
                 [this](bool, const QString &text) { messages << text; });

@@ -68,12 +68,8 @@ ChecklistStepWidget::ChecklistStepWidget(DeviceSession *session, WriteFlow *writ
         bool all = true;
         bool any = false;
         for (const QString &k : std::as_const(m_pendingKeys)) {
-            const bool mismatched =
-                std::any_of(o.mismatches.cbegin(), o.mismatches.cend(),
-                            [&k](const WriteMismatch &m) { return m.key == k; });
-            const bool ok = o.written.contains(k) && !mismatched;
-            all = all && ok;
-            any = any || o.written.contains(k) || mismatched;
+            all = all && o.verified(k);
+            any = any || o.written.contains(k); // a mismatch too: it was acknowledged
         }
         if (!any)
             return; // another write (not ours)
