@@ -35,7 +35,9 @@ class WriteChangesDialog;
 class WindowProbe
 {
 public:
-    explicit WindowProbe(MainWindow &window) : m_window(window) {}
+    explicit WindowProbe(MainWindow &window)
+        : m_window(window)
+    {}
 
     const QList<Page *> &pages() const;
     Page *currentPage() const;

@@ -14,7 +14,7 @@ using namespace stepcom::test;
 namespace {
 
 const QByteArray kStop = rtu("01 05 00 29 FF 00");
-const QByteArray kRead = rtu("01 03 00 A7 00 02");
+const QByteArray kRunningRead = rtu("01 03 00 A7 00 02");
 const QByteArray kStopped = rtu("01 03 04 00 00 00 00");
 const QByteArray kMotor2Running = rtu("01 03 04 00 00 00 01");
 
@@ -43,8 +43,8 @@ private Q_SLOTS:
     {
         const EstopConfirmation c(RegisterMap::builtin(), 1, false);
         QVERIFY(c.isValid());
-        QCOMPARE(c.stopFrame(), kStop); // coil 00042, all motors and outputs
-        QCOMPARE(c.readFrame(), kRead); // 40168-40169, motor 1-2 running
+        QCOMPARE(c.stopFrame(), kStop);        // coil 00042, all motors and outputs
+        QCOMPARE(c.readFrame(), kRunningRead); // 40168-40169, motor 1-2 running
     }
 
     // The echo option on: the first copy is the echo; the second is the controller's answer.
@@ -56,8 +56,8 @@ private Q_SLOTS:
         QVERIFY(hear(c, kStop, 2));
         QVERIFY(hear(c, kStop, 40));
         QCOMPARE(step(c, 100), QByteArray()); // its answer may still come
-        QCOMPARE(step(c, 400), kRead);
-        QVERIFY(hear(c, kRead, 402)); // the read's echo
+        QCOMPARE(step(c, 400), kRunningRead);
+        QVERIFY(hear(c, kRunningRead, 402)); // the read's echo
         QVERIFY(hear(c, kStopped, 440));
         QCOMPARE(c.verdict(), EstopConfirmation::Verdict::Acknowledged);
         QCOMPARE(c.text(),
@@ -77,7 +77,7 @@ private Q_SLOTS:
         while (c.isActive() && ms < 60000) {
             const QByteArray f = step(c, ms);
             stops += f == kStop ? 1 : 0;
-            reads += f == kRead ? 1 : 0;
+            reads += f == kRunningRead ? 1 : 0;
             if (!f.isEmpty())
                 QVERIFY(hear(c, f, ms + 1));
             ms += 50;
@@ -97,8 +97,8 @@ private Q_SLOTS:
         c.start();
         QCOMPARE(step(c, 0), kStop);
         QVERIFY(hear(c, kStop, 1)); // the echo; the controller did not hear it (a collision)
-        QCOMPARE(step(c, 300), kRead);
-        QVERIFY(hear(c, kRead, 301));
+        QCOMPARE(step(c, 300), kRunningRead);
+        QVERIFY(hear(c, kRunningRead, 301));
         QVERIFY(c.takeEchoLearned());
         QVERIFY(!c.takeEchoLearned());   // once
         QVERIFY(hear(c, kStopped, 330)); // read answered, but the E-STOP was only echoed
@@ -106,8 +106,8 @@ private Q_SLOTS:
         QCOMPARE(step(c, 331), kStop);
         QVERIFY(hear(c, kStop, 332));
         QVERIFY(hear(c, kStop, 370));
-        QCOMPARE(step(c, 700), kRead);
-        QVERIFY(hear(c, kRead, 701));
+        QCOMPARE(step(c, 700), kRunningRead);
+        QVERIFY(hear(c, kRunningRead, 701));
         QVERIFY(hear(c, kStopped, 730));
         QCOMPARE(c.verdict(), EstopConfirmation::Verdict::Acknowledged);
     }
@@ -133,7 +133,7 @@ private Q_SLOTS:
         c.start();
         QCOMPARE(step(c, 0), kStop);
         QVERIFY(hear(c, kStop, 30));
-        QCOMPARE(step(c, 300), kRead);
+        QCOMPARE(step(c, 300), kRunningRead);
         QVERIFY(hear(c, kStopped, 330));
         QCOMPARE(c.verdict(), EstopConfirmation::Verdict::Acknowledged);
         QVERIFY(!c.echoes());
@@ -152,7 +152,7 @@ private Q_SLOTS:
             if (f == kStop) {
                 ++stops;
                 QVERIFY(hear(c, kStop, ms + 20));
-            } else if (f == kRead) {
+            } else if (f == kRunningRead) {
                 QVERIFY(hear(c, kMotor2Running, ms + 20));
             }
             ms += 50;
@@ -169,7 +169,7 @@ private Q_SLOTS:
         c.start();
         QCOMPARE(step(c, 0), kStop);
         QVERIFY(hear(c, kStop, 20));
-        QCOMPARE(step(c, 300), kRead);
+        QCOMPARE(step(c, 300), kRunningRead);
         const QByteArray plcRead = rtu("01 03 00 6B 00 02");
         QVERIFY(!hear(c, kStopped, 320, plcRead));
         QVERIFY(c.isActive());
@@ -186,7 +186,7 @@ private Q_SLOTS:
         c.start();
         qint64 ms = 0;
         while (c.isActive() && ms < 60000) {
-            QVERIFY(step(c, ms) != kRead);
+            QVERIFY(step(c, ms) != kRunningRead);
             ms += 50;
         }
         QVERIFY2(c.text().contains(u"controller 1 never answered it"), qPrintable(c.text()));
