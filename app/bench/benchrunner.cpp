@@ -6,6 +6,7 @@
 #include "device/poller.h"
 #include "device/readplanner.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -62,7 +63,7 @@ struct LinkWatch
                                      std::max(longestPollMs, msBetween(*it, Clock::now()));
                              pollStarted.erase(it);
                          });
-        QObject::connect(&session, &DeviceSession::statusCycleFinished, &context, [this] {
+        QObject::connect(session.status(), &SessionStatus::statusCycleFinished, &context, [this] {
             mostPollsInACycle = std::max(mostPollsInACycle, pollsThisCycle);
             pollsThisCycle = 0;
         });
@@ -85,15 +86,15 @@ void pause(int ms)
 void measureStatus(DeviceSession &session, LinkWatch &watch, const BenchConfig &config,
                    BaudResult &r)
 {
-    waitUntil([&session] { return session.statusStats().cycles >= 2; }, 5000); // warm up
-    session.resetStatusStats();
+    waitUntil([&session] { return session.status()->stats().cycles >= 2; }, 5000); // warm up
+    session.status()->resetStats();
     watch.mostPollsInACycle = 0;
-    if (!waitUntil([&] { return session.statusStats().cycles >= config.cycles; },
+    if (!waitUntil([&] { return session.status()->stats().cycles >= config.cycles; },
                    config.cycles * 2000 + 5000)) {
-        r.error = QStringLiteral("(a): only %1 cycles").arg(session.statusStats().cycles);
+        r.error = QStringLiteral("(a): only %1 cycles").arg(session.status()->stats().cycles);
         return;
     }
-    const PollStats &s = session.statusStats();
+    const PollStats &s = session.status()->stats();
     r.cycleMs.count = s.cycles;
     r.cycleMs.mean = s.meanMs();
     r.cycleMs.min = double(s.minMs);
@@ -101,15 +102,16 @@ void measureStatus(DeviceSession &session, LinkWatch &watch, const BenchConfig &
     r.fastCycles = s.fastCycles;
     r.readsPerCycle = watch.mostPollsInACycle;
     if (s.failed > 0)
-        r.error =
-            QStringLiteral("(a): %1 cycles failed: %2").arg(s.failed).arg(session.statusError());
+        r.error = QStringLiteral("(a): %1 cycles failed: %2")
+                      .arg(s.failed)
+                      .arg(session.status()->error());
 }
 
 void measureReadAll(DeviceSession &session, LinkWatch &watch, const BenchConfig &config,
                     BaudResult &r)
 {
     ModbusLink *link = SessionInternals::link(session);
-    session.stopStatus(); // read-all alone on the line, as at connect
+    session.status()->stop(); // read-all alone on the line, as at connect
     waitUntil([link] { return !link->isBusy() && link->queuedCount() == 0; }, 5000);
     for (int i = 0; i < config.readAlls; ++i) {
         struct State
@@ -135,7 +137,7 @@ void measureReadAll(DeviceSession &session, LinkWatch &watch, const BenchConfig 
         r.readAllMs.add(state->ms);
         r.readAllReads = std::max(r.readAllReads, watch.dispatched - before);
     }
-    session.startStatus();
+    session.status()->start();
 }
 
 void measureEmergencyStop(DeviceSession &session, SimDevice *device, const BenchConfig &config,
@@ -145,7 +147,7 @@ void measureEmergencyStop(DeviceSession &session, SimDevice *device, const Bench
     for (int round = 0; round < config.estopRounds; ++round) {
         device->setMachinePosition(1, 50.0);
         device->command(QStringLiteral("motor1.forward"));
-        if (!waitUntil([&session] { return session.isStatusFast(); }, 3000)) {
+        if (!waitUntil([&session] { return session.status()->isFast(); }, 3000)) {
             r.error = QStringLiteral("(c): the poller never saw the motor run");
             return;
         }
@@ -242,7 +244,7 @@ BaudResult measureBaud(int baud, const BenchConfig &config, int answerDelayMs, b
     host.device()->setValue(QStringLiteral("device.baud"), baud);
 
     DeviceSession session(map);
-    session.setStatusIntervalMs(0); // full rate
+    session.status()->setIntervalMs(0); // full rate
     LinkWatch watch(session);
     bool read = false;
     QObject::connect(&session, &DeviceSession::readFinished, &session, [&read] { read = true; });
@@ -290,7 +292,7 @@ GapResult measureGapRefusing(int baud, const BenchConfig &config)
     host.device()->setValue(QStringLiteral("device.baud"), baud);
 
     DeviceSession session(map);
-    session.setStatusIntervalMs(0); // full rate
+    session.status()->setIntervalMs(0); // full rate
     LinkWatch watch(session);
     bool read = false;
     bool readOk = false;

@@ -7,6 +7,7 @@
 #include "device/readplanner.h"
 #include "session/buspoller.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -62,7 +63,7 @@ struct Line
         session = std::make_unique<DeviceSession>();
         session->setLive(live);
         session->setDeviceIds(ids);
-        session->setStatusIntervalMs(0); // full rate
+        session->status()->setIntervalMs(0); // full rate
         LinkSettings settings;
         settings.portName = host.rtuPath();
         settings.baud = baud;
@@ -87,7 +88,7 @@ void measureRounds(int baud, const BenchConfig &config, BusResult &r)
     }
     ModbusLink *link = SessionInternals::link(*line.session);
     BusPoller bus(link, line.session->map());
-    bus.setKeys(line.session->statusKeys());
+    bus.setKeys(line.session->status()->keys());
     bus.setDevices(ids);
     bus.setIntervalMs(0); // each turn armed as the last one ends
     int reads = 0;
@@ -153,7 +154,7 @@ EstopAllResult measureEstopAll(int baud, int devices, const BenchConfig &config,
             d->setMachinePosition(1, 50.0);
             d->command(QStringLiteral("motor1.forward"));
         }
-        if (!waitUntil([&session] { return session.isStatusFast(); }, 3000)) {
+        if (!waitUntil([&session] { return session.status()->isFast(); }, 3000)) {
             *error = QStringLiteral("(g): the poller never saw the motor run");
             return e;
         }

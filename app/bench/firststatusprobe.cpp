@@ -5,6 +5,7 @@
 #include "bus/modbuslink.h"
 #include "device/poller.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // requests are watched on the link
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -46,16 +47,18 @@ FirstStatusResult measureFirstStatus(int baud, int runs)
                 opened = true;
             }
         });
-        QObject::connect(&session, &DeviceSession::statusCycleFinished, &session, [&](bool ok) {
-            if (!ok || !opened || shown)
-                return;
-            const ParameterStore *store = session.parameters();
-            shown = std::all_of(positions.cbegin(), positions.cend(), [store](const QString &k) {
-                return store->deviceValue(k).has_value();
+        QObject::connect(
+            session.status(), &SessionStatus::statusCycleFinished, &session, [&](bool ok) {
+                if (!ok || !opened || shown)
+                    return;
+                const ParameterStore *store = session.parameters();
+                shown =
+                    std::all_of(positions.cbegin(), positions.cend(), [store](const QString &k) {
+                        return store->deviceValue(k).has_value();
+                    });
+                if (shown)
+                    ms = double(clock.nsecsElapsed()) / 1e6;
             });
-            if (shown)
-                ms = double(clock.nsecsElapsed()) / 1e6;
-        });
         // The read-all must come after the first status, not before it.
         QObject::connect(SessionInternals::link(session), &ModbusLink::dispatched, &session,
                          [&](quint64, const Request &req) {

@@ -1,6 +1,7 @@
 #include "ctlmonitor.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "signalwatcher.h"
 
@@ -47,9 +48,9 @@ CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, bool j
     , m_out(stdout)
     , m_err(stderr)
 {
-    m_session->setStatusIntervalMs(intervalMs);
+    m_session->status()->setIntervalMs(intervalMs);
     m_params = statusParameters(*m_session);
-    connect(m_session, &DeviceSession::statusCycleFinished, this,
+    connect(m_session->status(), &SessionStatus::statusCycleFinished, this,
             [this](bool ok, qint64) { onCycle(ok); });
     // A pulled cable is no reason to stop watching: try again, say so, go on.
     Reconnector *reconnector = m_session->reconnector();
@@ -162,13 +163,13 @@ void CtlMonitor::start()
     m_signals = new SignalWatcher(this);
     connect(m_signals, &SignalWatcher::terminationRequested, this, [this] { end(0); });
     m_clock.start();
-    m_session->startStatus();
+    m_session->status()->start();
 }
 
 QList<const Parameter *> CtlMonitor::statusParameters(const DeviceSession &session)
 {
     QList<const Parameter *> params;
-    for (const QString &key : session.statusKeys()) {
+    for (const QString &key : session.status()->keys()) {
         if (const Parameter *p = session.map().find(key))
             params << p;
     }
@@ -212,7 +213,7 @@ void CtlMonitor::onCycle(bool ok)
         return;
     if (!ok) {
         // A bad moment on the line is no reason to stop watching: say so and go on.
-        m_err << QStringLiteral("stepcomctl: ") << m_session->statusError() << Qt::endl;
+        m_err << QStringLiteral("stepcomctl: ") << m_session->status()->error() << Qt::endl;
         return;
     }
     m_out << sampleLine(m_clock.elapsed()) << QLatin1Char('\n');
@@ -228,7 +229,7 @@ void CtlMonitor::end(int exitCode)
         return;
     m_ended = true;
     m_session->reconnector()->stop();
-    m_session->stopStatus();
+    m_session->status()->stop();
     if (exitCode == 0 && m_printed == 0) {
         // Stopped before a single sample: that is no successful run.
         m_err << QStringLiteral("stepcomctl: ")

@@ -4,6 +4,7 @@
 #include "base/page.h"
 #include "scenes.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "sim/host/builtinsimulator.h"
 #include "sim/host/simhost.h"
 #include "window/mainwindow.h"
@@ -88,7 +89,7 @@ void Shooter::planLanguage(const QString &language)
     m_script.then([this] {
         // A few status cycles on top, so the dock's lamps and positions are all known.
         auto cycles = std::make_shared<int>(0);
-        connect(m_session.get(), &DeviceSession::statusCycleFinished, this,
+        connect(m_session->status(), &SessionStatus::statusCycleFinished, this,
                 [cycles](bool ok) { *cycles += ok ? 1 : 0; });
         m_script.waitFor(QStringLiteral("%1 status poll cycles").arg(kPollCycles),
                          [cycles] { return *cycles >= kPollCycles; });

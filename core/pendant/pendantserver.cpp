@@ -7,6 +7,7 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionstatus.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -57,7 +58,8 @@ PendantServer::PendantServer(DeviceSession *session, QObject *parent)
 {
     m_push.setSingleShot(true);
     connect(&m_push, &QTimer::timeout, this, &PendantServer::push);
-    connect(session, &DeviceSession::statusCycleFinished, this, &PendantServer::schedulePush);
+    connect(session->status(), &SessionStatus::statusCycleFinished, this,
+            &PendantServer::schedulePush);
     connect(session, &DeviceSession::linkStateChanged, this, &PendantServer::schedulePush);
     connect(session, &DeviceSession::deviceInViewChanged, this, &PendantServer::schedulePush);
     connect(session->health(), &LinkHealth::stateChanged, this, &PendantServer::schedulePush);

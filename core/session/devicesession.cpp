@@ -3,7 +3,6 @@
 #include "bus/modbuslink.h"
 #include "bus/wiretap.h"
 #include "device/devicememory.h"
-#include "device/statusrecorder.h"
 #include "i18n/translators.h"
 #include "map/factoryvalues.h"
 #include "motion/motionjudge.h"
@@ -12,6 +11,7 @@
 #include "session/jogcontroller.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "session/simulatorstarter.h"
 #include "session/stepmove.h"
@@ -27,6 +27,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     , m_client(new DeviceClient(m_link, map, this))
     , m_store(new ParameterStore(map, this))
     , m_poller(new Poller(m_client, m_store, this))
+    , m_status(new SessionStatus(m_poller, m_store, this))
     , m_motion(new MotionSupervisor(this, m_link)) // before the jog controller, which follows it
     , m_health(new LinkHealth(m_link, this))
     , m_jog(new JogController(this, this))
@@ -62,7 +63,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     });
     connect(m_link, &ModbusLink::lost, this, &DeviceSession::onLost);
     connect(m_poller, &Poller::cycleFinished, this, [this](bool ok, qint64 ms) {
-        Q_EMIT statusCycleFinished(ok, ms);
+        Q_EMIT m_status->statusCycleFinished(ok, ms);
         if (std::exchange(m_readAllAfterStatus, false))
             readAll();
     });
@@ -73,7 +74,6 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     connect(m_poller, &Poller::cycleFinished, this, [this](bool ok) {
         m_bus->noteLiveCycle(deviceInView(), ok, *m_store, m_poller->lastError());
     });
-    connect(m_poller, &Poller::fastChanged, this, &DeviceSession::statusFastChanged);
     m_reconnector = new Reconnector(this);
     connect(m_reconnector, &Reconnector::reopen, this, &DeviceSession::reopen);
     connect(m_reconnector, &Reconnector::restored, this,
@@ -96,15 +96,6 @@ DeviceSession::~DeviceSession()
     delete m_link; // before the simulator it may be talking to
     m_link = nullptr;
     delete m_memory;
-}
-
-StatusRecorder *DeviceSession::recorder()
-{
-    if (!m_recorder) {
-        m_recorder = new StatusRecorder(map(), m_store, this);
-        m_recorder->attach(m_poller);
-    }
-    return m_recorder;
 }
 
 TrafficLog *DeviceSession::traffic() const
@@ -149,61 +140,6 @@ bool DeviceSession::isSimulator() const
 void DeviceSession::setLinkDiagnosticsShown(bool shown)
 {
     WireTap::setPassThrough(shown);
-}
-
-void DeviceSession::startStatus()
-{
-    m_poller->start();
-}
-
-void DeviceSession::stopStatus()
-{
-    m_poller->stop();
-}
-
-bool DeviceSession::isStatusActive() const
-{
-    return m_poller->isActive();
-}
-
-QStringList DeviceSession::statusKeys() const
-{
-    return m_poller->keys();
-}
-
-void DeviceSession::setStatusIntervalMs(int ms)
-{
-    m_poller->setIntervalMs(ms);
-}
-
-int DeviceSession::statusIntervalMs() const
-{
-    return m_poller->intervalMs();
-}
-
-double DeviceSession::statusRate() const
-{
-    return m_poller->rate();
-}
-
-bool DeviceSession::isStatusFast() const
-{
-    return m_poller->isFast();
-}
-
-QString DeviceSession::statusError() const
-{
-    return m_poller->lastError();
-}
-
-const PollStats &DeviceSession::statusStats() const
-{
-    return m_poller->stats();
-}
-
-void DeviceSession::resetStatusStats()
-{
-    m_poller->resetStats();
 }
 
 void DeviceSession::setSimulator(std::unique_ptr<SimulatorStarter> simulator)

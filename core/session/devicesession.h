@@ -27,8 +27,8 @@ class LinkHealth;
 class ModbusLink;
 class MotionSupervisor;
 class Reconnector;
+class SessionStatus;
 class SimulatorStarter;
-class StatusRecorder;
 class StepMove;
 
 // One controller connection and everything known about it. Every front-end (the window,
@@ -69,6 +69,8 @@ public:
     // and forms bind to this model; the session keeps it up to date.
     ParameterStore *parameters() const { return m_store; }
     JogController *jog() const { return m_jog; }
+    // The live status poll of the device in view and its recording (parts/sessionstatus.h).
+    SessionStatus *status() const { return m_status; }
     // Follows motion commands to their judged outcome and keeps each axis' reference state.
     MotionSupervisor *motion() const { return m_motion; }
     // Step jogs and move-to over the single move, judged by the supervisor.
@@ -82,8 +84,6 @@ public:
     void setRiskGuard(RiskGuard guard) { m_guard = std::move(guard); }
     // Runs `proceed` after the guard (at once, agreed, without one).
     void guard(Risk risk, Proceed proceed);
-    // The live status recorded for the plots; made on first use, recording from then on.
-    StatusRecorder *recorder();
     TrafficLog *traffic() const;
     const LinkStats &linkStats() const;
     void resetLinkStats();
@@ -154,19 +154,6 @@ public:
     void factoryReset(); // the caller confirmed what will be lost
     // Stop every jog for this reason; returns how many stops were sent or scheduled.
     int stopJogging(JogStop why);
-
-    // -- Status poll (devicesession.cpp; started on connect when live) --
-    void startStatus();
-    void stopStatus();
-    bool isStatusActive() const;
-    QStringList statusKeys() const;
-    void setStatusIntervalMs(int ms);
-    int statusIntervalMs() const;
-    double statusRate() const;
-    bool isStatusFast() const;
-    QString statusError() const;
-    const PollStats &statusStats() const;
-    void resetStatusStats();
 
     // -- Line of several (devicesessionline.cpp; a device not in view: sessiondevices.cpp) --
     // Several controllers on one line (RS-485: one pair of wires, one id each). The link's
@@ -242,9 +229,6 @@ Q_SIGNALS:
     // emergencyStop() was asked for, before anything is cancelled or sent: work that runs
     // device after device (a profile applied to several) stops here.
     void emergencyStopRequested();
-    // -- Status poll --
-    void statusCycleFinished(bool ok, qint64 ms);
-    void statusFastChanged(bool fast);
     // -- Line of several --
     void deviceInViewChanged(int id);
     void deviceStatusChanged(int id);
@@ -300,6 +284,7 @@ private:
     DeviceClient *m_client;
     ParameterStore *m_store;
     Poller *m_poller;
+    SessionStatus *m_status;
     MotionSupervisor *m_motion; // made before the jog controller, which follows it
     LinkHealth *m_health;
     JogController *m_jog;
@@ -309,7 +294,6 @@ private:
     BusPoller *m_bus;
     DeviceMemory *m_memory; // what the store held for each device not in view
     QList<int> m_deviceIds; // the line's devices in order; empty: the link's id alone
-    StatusRecorder *m_recorder = nullptr;
     std::unique_ptr<SimulatorStarter> m_sim;
     bool m_usingSim = false;
     bool m_readAfterConnect = false;

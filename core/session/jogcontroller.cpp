@@ -1,4 +1,5 @@
 #include "session/jogcontroller.h"
+#include "session/parts/sessionstatus.h"
 
 #include "session/motionsupervisor.h"
 
@@ -34,7 +35,7 @@ JogController::JogController(DeviceSession *session, QObject *parent)
         Q_EMIT heldControlsReset();
     });
     // A motor that kept running after its stop is cleared once the poller sees it idle.
-    connect(session, &DeviceSession::statusCycleFinished, this, [this] {
+    connect(session->status(), &SessionStatus::statusCycleFinished, this, [this] {
         stopAtTravelLimits();
         for (int n = 1; n <= motorCount(); ++n) {
             if (at(n).state == State::StillRunning &&

@@ -4,6 +4,7 @@
 #include "motion/motionjudge.h"
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 
 #include <QPointer>
 
@@ -45,7 +46,7 @@ MotionSupervisor::MotionSupervisor(DeviceSession *session, ModbusLink *link)
     // Every stop goes through the link, whoever sent it (jog controller, E-STOP, stop buttons).
     connect(link, &ModbusLink::dispatched, this,
             [this](quint64, const Request &r) { onDispatched(r); });
-    connect(session, &DeviceSession::statusCycleFinished, this,
+    connect(session->status(), &SessionStatus::statusCycleFinished, this,
             [this](bool ok, qint64) { statusRead(m_session->deviceInView(), ok); });
     connect(session, &DeviceSession::deviceStatusChanged, this, [this](int device) {
         statusRead(device,

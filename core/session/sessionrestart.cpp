@@ -28,7 +28,7 @@ void DeviceSession::watchRestarts()
     m_restarts = new RestartWatch(map(), this);
     connect(m_poller, &Poller::cycleFinished, m_restarts, [this](bool ok) {
         QHash<QString, qint64> values;
-        for (const QString &key : statusKeys()) {
+        for (const QString &key : m_poller->keys()) {
             if (const auto raw = m_store->deviceValue(key))
                 values.insert(key, *raw);
         }

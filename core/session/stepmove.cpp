@@ -5,6 +5,7 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionstatus.h"
 
 #include <cmath>
 
@@ -199,8 +200,8 @@ void StepMove::onRead(bool ok, const QHash<QString, qint64> &values, const QStri
     if (direction != m_userDirection)
         writes.append({map.find(key("direction")), direction});
     const auto go = [this] {
-        if (!m_session->isStatusActive()) {
-            m_session->startStatus(); // the supervisor judges the end from the status poll
+        if (!m_session->status()->isActive()) {
+            m_session->status()->start(); // the supervisor judges the end from the status poll
             m_startedPoll = true;
         }
         m_waitingCommand = true;
@@ -248,7 +249,7 @@ void StepMove::onOutcome(const MotionOutcome &outcome)
 void StepMove::restore(const QString &why)
 {
     if (m_startedPoll) {
-        m_session->stopStatus();
+        m_session->status()->stop();
         m_startedPoll = false;
     }
     const RegisterMap &map = m_session->map();
@@ -295,7 +296,7 @@ void StepMove::restore(const QString &why)
 void StepMove::finish(const QString &text)
 {
     if (m_startedPoll && m_session) {
-        m_session->stopStatus();
+        m_session->status()->stop();
         m_startedPoll = false;
     }
     m_busy = false;

@@ -8,6 +8,7 @@
 #include "device/poller.h"
 #include "device/readplanner.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -268,7 +269,7 @@ private Q_SLOTS:
     void silenceAfterAnswersIsNotBlamedOnTheWiring()
     {
         QVERIFY2(start(5, 9600, false, false), qPrintable(heard()));
-        session->stopStatus();
+        session->status()->stop();
         QVERIFY(host->powerCycle(4000));
         bool done = false;
         ReadOutcome outcome;

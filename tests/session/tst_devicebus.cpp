@@ -1,6 +1,7 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -67,7 +68,7 @@ private Q_SLOTS:
         QCOMPARE(session->deviceStatus(3).state, BusDeviceStatus::State::Answering);
         QCOMPARE(session->deviceStatus(2).errors, 0);
         // Every status value of the background devices arrived.
-        QCOMPARE(session->deviceStatus(2).values.size(), session->statusKeys().size());
+        QCOMPARE(session->deviceStatus(2).values.size(), session->status()->keys().size());
         // Counted on the link: round robin, so 2 and 3 are never more than one turn apart,
         // and the device in view (live rate) is read at least as often as either.
         QHash<int, int> reads;

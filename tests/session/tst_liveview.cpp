@@ -3,6 +3,7 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -98,7 +99,7 @@ private Q_SLOTS:
         host.device()->setInput(3, SimDevice::InputForce::On);
         QTRY_COMPARE_WITH_TIMEOUT(store->deviceValue(QStringLiteral("io.in3")).value_or(-1), 1,
                                   5000);
-        QSignalSpy cycles(&session, &DeviceSession::statusCycleFinished);
+        QSignalSpy cycles(session.status(), &SessionStatus::statusCycleFinished);
         QTRY_VERIFY_WITH_TIMEOUT(cycles.size() >= 3, 5000);
         for (const QList<QVariant> &c : std::as_const(cycles))
             QVERIFY(c.first().toBool());

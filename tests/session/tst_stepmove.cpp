@@ -2,6 +2,7 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "session/stepmove.h"
 #include "sim/host/simhost.h"
@@ -207,12 +208,12 @@ private Q_SLOTS:
         session->connectSimulator();
         QTRY_COMPARE(connected.size(), 1);
         QVERIFY(connected.first().first().toBool());
-        QVERIFY(!session->isStatusActive());
+        QVERIFY(!session->status()->isActive());
         const qint64 from = sim()->position(2);
         const StepMoveResult r = run({StepMoveRequest::Kind::By, 2, -0.75});
         QVERIFY2(r.ok(), qPrintable(r.text));
         QCOMPARE(sim()->position(2), from - 75);
-        QVERIFY(!session->isStatusActive());
+        QVERIFY(!session->status()->isActive());
     }
 };
 

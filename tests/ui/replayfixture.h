@@ -6,6 +6,7 @@
 #include "replay/replaybar.h"
 #include "replay/replaymode.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/trafficmodel.h"
@@ -82,8 +83,8 @@ protected:
                            const std::function<bool()> &when = {})
     {
         std::optional<Moment> taken;
-        const auto c =
-            connect(session.get(), &DeviceSession::statusCycleFinished, this, [&](bool ok, qint64) {
+        const auto c = connect(
+            session->status(), &SessionStatus::statusCycleFinished, this, [&](bool ok, qint64) {
                 if (taken || !ok || (when && !when()))
                     return;
                 QFile f(logPath);
@@ -151,7 +152,7 @@ protected:
                                         : MachineStrip::Motion::Idle));
         QCOMPARE(replay()->bar()->momentLabel()->text(), replay()->log().momentText(*ms));
         // The plots end at the moment too, with the same position.
-        const StatusRecorder *plots = session->recorder();
+        const StatusRecorder *plots = session->status()->recorder();
         QVERIFY(!plots->isEmpty());
         QVERIFY(plots->last().elapsedMs <= *ms);
         QCOMPARE(

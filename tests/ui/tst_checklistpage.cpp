@@ -5,6 +5,7 @@
 #include "pages/checklistpage.h"
 #include "profile/backupstore.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -62,7 +63,7 @@ class TestChecklistPage : public QObject
     // Two more status polls: a switch state set now has been sampled.
     void pollTwice()
     {
-        QSignalSpy cycles(session.get(), &DeviceSession::statusCycleFinished);
+        QSignalSpy cycles(session->status(), &SessionStatus::statusCycleFinished);
         QTRY_VERIFY_WITH_TIMEOUT(cycles.size() >= 2, 10000);
     }
     void press(int input)

@@ -2,6 +2,7 @@
 
 #include "device/statusrecorder.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "widgets/fields/wrappingrow.h"
 #include "widgets/plots/positionplot.h"
 #include "widgets/plots/xyplot.h"
@@ -37,7 +38,7 @@ QString nativePath(const QString &path)
 
 PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
-    , m_recorder(session->recorder()) // the session records; this page shows and saves it
+    , m_recorder(session->status()->recorder()) // the session records; this page shows and saves it
 {
     m_positions = new PositionPlot(m_recorder, this);
     m_xy = new XYPlot(this);

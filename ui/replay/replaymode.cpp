@@ -8,6 +8,7 @@
 #include "replay/replaybar.h"
 #include "replay/replayviews.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
 #include "support/supportbundle.h"
@@ -339,8 +340,8 @@ void ReplayMode::openingDone()
     if (m_active)
         close();
     // The plots show the log now; a CSV recording of the live status ends here.
-    if (m_session->recorder()->isRecording())
-        m_session->recorder()->stopRecording();
+    if (m_session->status()->recorder()->isRecording())
+        m_session->status()->recorder()->stopRecording();
     m_log = o->log;
     m_unpacked = std::move(o->unpacked);
     m_name = o->name;

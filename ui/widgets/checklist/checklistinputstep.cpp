@@ -1,6 +1,7 @@
 #include "widgets/checklist/checklistinputstep.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 
 #include <QHBoxLayout>
 #include <QPushButton>
@@ -46,7 +47,7 @@ ChecklistInputStep::ChecklistInputStep(DeviceSession *session, WriteFlow *writes
     connect(m_watch, &QPushButton::clicked, this, &ChecklistInputStep::startWatching);
     connect(m_done, &QPushButton::clicked, this, &ChecklistInputStep::judge);
     // Every poll after the baseline is a sample: a press that reaches one poll is seen.
-    connect(session, &DeviceSession::statusCycleFinished, this, [this](bool ok) {
+    connect(session->status(), &SessionStatus::statusCycleFinished, this, [this](bool ok) {
         if (!ok || !m_observation.started())
             return;
         if (const auto in =

@@ -5,6 +5,7 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionstatus.h"
 #include "widgets/docks/devicelistsettings.h"
 
 #include <QEvent>
@@ -88,7 +89,8 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
     connect(m_session, &DeviceSession::connected, this, &DeviceListDock::onConnected);
     connect(m_session, &DeviceSession::disconnected, this, [this] { m_connectedBefore = false; });
     connect(m_session, &DeviceSession::linkStateChanged, this, &DeviceListDock::refresh);
-    connect(m_session, &DeviceSession::statusCycleFinished, this, &DeviceListDock::refresh);
+    connect(m_session->status(), &SessionStatus::statusCycleFinished, this,
+            &DeviceListDock::refresh);
     connect(m_session->motion()->references(), &ReferenceTracker::deviceChanged, this,
             &DeviceListDock::refresh);
     connect(m_session->motion(), &MotionSupervisor::changed, this, &DeviceListDock::refresh);

@@ -2,6 +2,7 @@
 
 #include "motion/travellimits.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -167,8 +168,8 @@ QString TravelLimitsEditor::overrunText(int motor) const
     OverrunInputs in;
     in.unitsPerSecond = speed->toEngineering(*rpm) * pitch->toEngineering(*p) / 60.0;
     // A cycle starts when the last ended, at most every interval: the slower of the two.
-    in.pollIntervalMs =
-        double(std::max<qint64>(m_session->statusIntervalMs(), m_session->statusStats().maxMs));
+    in.pollIntervalMs = double(
+        std::max<qint64>(m_session->status()->intervalMs(), m_session->status()->stats().maxMs));
     in.readMs = double(roundTrip);
     in.stopMs = 2.0 * double(roundTrip); // a transaction in flight, then the stop's own
     return tr("A hold-to-move jog can run past a limit by %1.")
