@@ -6,6 +6,7 @@
 #include "device/poller.h"
 #include "device/readplanner.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/host/simhost.h"
@@ -251,8 +252,8 @@ BaudResult measureBaud(int baud, const BenchConfig &config, int answerDelayMs, b
     LinkSettings settings;
     settings.portName = host.rtuPath();
     settings.baud = baud;
-    session.connectTo(settings);
-    if (!waitUntil([&read] { return read; }, 10000) || !session.isConnected()) {
+    session.connection()->connectTo(settings);
+    if (!waitUntil([&read] { return read; }, 10000) || !session.connection()->isConnected()) {
         r.error = QStringLiteral("cannot connect to the simulator at %1 baud").arg(baud);
         return r;
     }
@@ -264,7 +265,7 @@ BaudResult measureBaud(int baud, const BenchConfig &config, int answerDelayMs, b
     if (r.error.isEmpty())
         measureEmergencyStop(session, host.device(), config, r);
     r.longestPollMs = watch.longestPollMs;
-    session.disconnectFrom(); // the window takes the line now
+    session.connection()->disconnectFrom(); // the window takes the line now
     if (r.error.isEmpty() && !config.stepcomPath.isEmpty()) {
         host.device()->command(QStringLiteral("estop"));
         r.window = measureWindow(config, &host, baud);
@@ -303,13 +304,14 @@ GapResult measureGapRefusing(int baud, const BenchConfig &config)
     LinkSettings settings;
     settings.portName = host.rtuPath();
     settings.baud = baud;
-    session.connectTo(settings);
+    session.connection()->connectTo(settings);
     // The warm-up: the first status cycle is refused, the gaps are learnt, read-all follows.
-    if (!waitUntil([&read] { return read; }, 10000) || !session.isConnected() || !readOk) {
+    if (!waitUntil([&read] { return read; }, 10000) || !session.connection()->isConnected() ||
+        !readOk) {
         r.error = QStringLiteral("(i): the first read-all on a gap-refusing controller failed");
         return g;
     }
-    g.learnt = session.readLimits().gapFree();
+    g.learnt = session.connection()->readLimits().gapFree();
     if (!g.learnt) {
         r.error = QStringLiteral("(i): the session did not learn that gaps are refused");
         return g;
@@ -326,7 +328,7 @@ GapResult measureGapRefusing(int baud, const BenchConfig &config)
     measureStatus(session, watch, config, r);
     if (r.error.isEmpty())
         measureReadAll(session, watch, config, r);
-    session.disconnectFrom();
+    session.connection()->disconnectFrom();
     return g;
 }
 

@@ -7,6 +7,7 @@
 #include "device/readplanner.h"
 #include "session/buspoller.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/host/simhost.h"
@@ -70,10 +71,11 @@ struct Line
         settings.deviceId = ids.first();
         bool opened = false;
         QObject::connect(
-            session.get(), &DeviceSession::connected, session.get(), [&opened] { opened = true; },
-            Qt::SingleShotConnection);
-        session->connectTo(settings);
-        if (!waitUntil([&opened] { return opened; }, 10000) || !session->isConnected())
+            session->connection(), &SessionConnection::connected, session.get(),
+            [&opened] { opened = true; }, Qt::SingleShotConnection);
+        session->connection()->connectTo(settings);
+        if (!waitUntil([&opened] { return opened; }, 10000) ||
+            !session->connection()->isConnected())
             error = QStringLiteral("cannot connect to the simulator at %1 baud").arg(baud);
     }
 };

@@ -5,6 +5,7 @@
 #include "bus/modbuslink.h"
 #include "device/poller.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // requests are watched on the link
 #include "sim/host/simhost.h"
@@ -41,12 +42,13 @@ FirstStatusResult measureFirstStatus(int baud, int runs)
         bool opened = false;
         bool shown = false;
         double ms = 0;
-        QObject::connect(&session, &DeviceSession::connected, &session, [&](bool ok) {
-            if (ok && !opened) {
-                clock.start();
-                opened = true;
-            }
-        });
+        QObject::connect(session.connection(), &SessionConnection::connected, &session,
+                         [&](bool ok) {
+                             if (ok && !opened) {
+                                 clock.start();
+                                 opened = true;
+                             }
+                         });
         QObject::connect(
             session.status(), &SessionStatus::statusCycleFinished, &session, [&](bool ok) {
                 if (!ok || !opened || shown)
@@ -68,7 +70,7 @@ FirstStatusResult measureFirstStatus(int baud, int runs)
         LinkSettings settings;
         settings.portName = host.rtuPath();
         settings.baud = baud;
-        session.connectTo(settings);
+        session.connection()->connectTo(settings);
         if (!waitUntil([&shown] { return shown; }, 5000)) {
             r.error = QStringLiteral("(j): no status with positions within 5 s of connecting "
                                      "(run %1)")
@@ -76,7 +78,7 @@ FirstStatusResult measureFirstStatus(int baud, int runs)
             return r;
         }
         r.ms.add(ms);
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
         waitUntil([] { return false; }, 300); // the simulator's last answer drains
     }
     return r;

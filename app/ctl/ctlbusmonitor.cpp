@@ -2,6 +2,7 @@
 
 #include "ctlmonitor.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "signalwatcher.h"
 
 #include <algorithm>
@@ -23,10 +24,11 @@ CtlBusMonitor::CtlBusMonitor(DeviceSession *session, const QList<int> &ids, int 
 {
     m_timer.setSingleShot(true);
     connect(&m_timer, &QTimer::timeout, this, &CtlBusMonitor::turn);
-    connect(m_session, &DeviceSession::linkLost, this, [this](const QString &reason) {
-        m_err << QStringLiteral("stepcomctl: ") << tr("link lost: %1").arg(reason) << Qt::endl;
-        end(1);
-    });
+    connect(
+        m_session->connection(), &SessionConnection::linkLost, this, [this](const QString &reason) {
+            m_err << QStringLiteral("stepcomctl: ") << tr("link lost: %1").arg(reason) << Qt::endl;
+            end(1);
+        });
     // The session watches each device's reads for a restart; said per device as `monitor`
     // of one says it.
     CtlMonitor::sayRestarts(m_session, this,

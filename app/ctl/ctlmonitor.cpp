@@ -1,6 +1,7 @@
 #include "ctlmonitor.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "signalwatcher.h"
@@ -53,13 +54,14 @@ CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, bool j
     connect(m_session->status(), &SessionStatus::statusCycleFinished, this,
             [this](bool ok, qint64) { onCycle(ok); });
     // A pulled cable is no reason to stop watching: try again, say so, go on.
-    Reconnector *reconnector = m_session->reconnector();
+    Reconnector *reconnector = m_session->connection()->reconnector();
     reconnector->setEnabled(true);
-    connect(m_session, &DeviceSession::linkLost, this, [this](const QString &reason) {
-        event(QStringLiteral("lost"),
-              tr("link lost: %1; trying again on its own (Ctrl-C ends)").arg(reason),
-              QStringLiteral(",\"reason\":") + quoted(reason));
-    });
+    connect(m_session->connection(), &SessionConnection::linkLost, this,
+            [this](const QString &reason) {
+                event(QStringLiteral("lost"),
+                      tr("link lost: %1; trying again on its own (Ctrl-C ends)").arg(reason),
+                      QStringLiteral(",\"reason\":") + quoted(reason));
+            });
     connect(reconnector, &Reconnector::restored, this, [this](const LinkSettings &s, int n) {
         event(QStringLiteral("back"),
               tr("link back at %1 after %n attempt(s)", nullptr, n).arg(s.describe()),
@@ -228,7 +230,7 @@ void CtlMonitor::end(int exitCode)
     if (m_ended)
         return;
     m_ended = true;
-    m_session->reconnector()->stop();
+    m_session->connection()->reconnector()->stop();
     m_session->status()->stop();
     if (exitCode == 0 && m_printed == 0) {
         // Stopped before a single sample: that is no successful run.

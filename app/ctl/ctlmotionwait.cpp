@@ -3,6 +3,7 @@
 #include "motion/motionjudge.h"
 #include "motion/motionwatch.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/restartwatch.h"
 
 #include <QDateTime>
@@ -33,7 +34,7 @@ CtlMotionWait::CtlMotionWait(DeviceSession *session, const Parameter &command, b
     m_timer.setSingleShot(true);
     m_timer.setInterval(kSampleMs);
     connect(&m_timer, &QTimer::timeout, this, &CtlMotionWait::sample);
-    connect(session, &DeviceSession::linkLost, this,
+    connect(session->connection(), &SessionConnection::linkLost, this,
             [this](const QString &) { conclude(MotionCause::LinkLost); });
     m_restarts = new RestartWatch(session->map(), this);
     connect(m_restarts, &RestartWatch::suspected, this,

@@ -8,6 +8,7 @@
 #include "profile/profilefile.h"
 #include "replay/replaymode.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
 #include "shooter.h"
@@ -46,8 +47,8 @@ void editing(Shooter &s)
     Script &script = s.script();
     const int page = s.pageIndex<MotorPage>();
     script.then([&s] {
-        if (s.session()->isConnected())
-            s.session()->disconnectFrom();
+        if (s.session()->connection()->isConnected())
+            s.session()->connection()->disconnectFrom();
     });
     script.then([&s, page] {
         const QString path =
@@ -96,10 +97,10 @@ void replay(Shooter &s)
     auto written = std::make_shared<qint64>(0);
     script.then([&s, log] {
         s.window()->sessionLog()->setFile(log);
-        s.session()->connectSimulator();
+        s.session()->connection()->connectSimulator();
     });
     script.waitFor(QStringLiteral("the read-all of the recorded session"), [&s] {
-        return s.session()->isConnected() &&
+        return s.session()->connection()->isConnected() &&
                s.session()->parameters()->deviceValue(QStringLiteral("motor1.position"));
     });
     script.then([&s, speed, written] {
@@ -114,8 +115,9 @@ void replay(Shooter &s)
     script.sleep(300);
     script.waitFor(QStringLiteral("the recorded move"),
                    [&s] { return !s.session()->stepMove()->isBusy(); });
-    script.then([&s] { s.session()->disconnectFrom(); });
-    script.waitFor(QStringLiteral("the disconnect"), [&s] { return !s.session()->isConnected(); });
+    script.then([&s] { s.session()->connection()->disconnectFrom(); });
+    script.waitFor(QStringLiteral("the disconnect"),
+                   [&s] { return !s.session()->connection()->isConnected(); });
     script.then([&s, log] {
         s.window()->sessionLog()->setFile(QString());
         s.window()->replayMode()->openPath(log);

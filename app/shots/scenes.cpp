@@ -16,6 +16,7 @@
 #include "pages/plotpage.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
 #include "shooter.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -51,7 +52,7 @@ ParameterField *field(MainWindow *window, const QString &key)
 bool idle(Shooter &s)
 {
     SimDevice *sim = s.simulator()->device();
-    return !s.session()->isConnected() ||
+    return !s.session()->connection()->isConnected() ||
            (!s.session()->jog()->isBusy() && !sim->running(1) && !sim->running(2));
 }
 
@@ -420,8 +421,9 @@ void portMissing(Shooter &s)
 {
     Script &script = s.script();
     const int index = s.pageIndex<ConnectionPage>();
-    script.then([&s] { s.session()->disconnectFrom(); });
-    script.waitFor(QStringLiteral("the disconnect"), [&s] { return !s.session()->isConnected(); });
+    script.then([&s] { s.session()->connection()->disconnectFrom(); });
+    script.waitFor(QStringLiteral("the disconnect"),
+                   [&s] { return !s.session()->connection()->isConnected(); });
     auto port = std::make_shared<QString>();
     script.then([&s, index, port] {
         // A name that does not exist here, so the picture never talks to a real adapter.
@@ -440,7 +442,7 @@ void portMissing(Shooter &s)
     });
     script.waitFor(QStringLiteral("the connection attempt to fail"), [&s, index, port] {
         auto *page = qobject_cast<ConnectionPage *>(s.window()->pages().value(index));
-        return !s.session()->isConnected() && page->statusText().contains(*port);
+        return !s.session()->connection()->isConnected() && page->statusText().contains(*port);
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("port-missing")));
 }

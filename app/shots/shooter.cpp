@@ -4,6 +4,7 @@
 #include "base/page.h"
 #include "scenes.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "sim/host/builtinsimulator.h"
 #include "sim/host/simhost.h"
@@ -131,7 +132,7 @@ void Shooter::openWindow(const QString &language)
     m_window->resize(m_options.size);
     m_window->show();
     m_window->activateWindow();
-    m_session->connectSimulator();
+    m_session->connection()->connectSimulator();
     m_script.waitFor(QStringLiteral("the window to become active"),
                      [this] { return m_window->isActiveWindow(); });
 }

@@ -2,6 +2,7 @@
 
 #include "session/devicesession.h"
 #include "session/idlist.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QPointer>
 
@@ -46,7 +47,7 @@ bool IdAssigner::start(bool newLine)
 {
     if (m_state == State::Working)
         return false;
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         setState(State::Idle, tr("Connect to the line first (the port the controllers are on, "
                                  "%1 baud, device id %2), then start the assistant.")
                                   .arg(kFactoryBaud)

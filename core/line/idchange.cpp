@@ -2,6 +2,7 @@
 
 #include "map/parameter.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QPointer>
 #include <QTimer>
@@ -27,7 +28,7 @@ void IdChange::start(int from, int to, int baud)
     m_problem = Problem::None;
     m_text.clear();
     m_running = true;
-    const LinkSettings line = m_session->settings();
+    const LinkSettings line = m_session->connection()->settings();
     m_baud =
         line.transport == LinkSettings::Transport::Rtu && baud > 0 && baud != line.baud ? baud : 0;
     m_idParam = m_session->map().find(QStringLiteral("device.id"));
@@ -40,7 +41,7 @@ void IdChange::start(int from, int to, int baud)
         refusal = tr("the register map has no device.id");
     else if (m_baud > 0 && !m_session->map().find(QStringLiteral("device.baud")))
         refusal = tr("the register map has no device.baud");
-    else if (!m_session->isConnected())
+    else if (!m_session->connection()->isConnected())
         refusal = tr("not connected: connect to the line first");
     if (!refusal.isEmpty()) {
         // After the caller's start() returned, as every other outcome.
@@ -53,13 +54,13 @@ void IdChange::start(int from, int to, int baud)
 
 void IdChange::probe(int id, void (IdChange::*then)(const ReadOutcome &, bool garbled))
 {
-    const quint64 crcBefore = m_session->linkStats().crcErrors;
+    const quint64 crcBefore = m_session->connection()->linkStats().crcErrors;
     QPointer<IdChange> self(this);
     m_session->readAt(id, {m_idParam}, [self, then, crcBefore](const ReadOutcome &r) {
         if (!self)
             return;
         // Two controllers answering at once garble each other's answers: CRC errors.
-        const bool garbled = self->m_session->linkStats().crcErrors > crcBefore;
+        const bool garbled = self->m_session->connection()->linkStats().crcErrors > crcBefore;
         (self->*then)(r, garbled);
     });
 }
@@ -109,7 +110,7 @@ void IdChange::writeId()
     }
     m_session->showDevice(m_from);
     Q_EMIT progress(tr("Writing id %1 to the controller at id %2").arg(m_to).arg(m_from));
-    changeLink(m_to, m_session->settings().baud, &IdChange::onIdWritten);
+    changeLink(m_to, m_session->connection()->settings().baud, &IdChange::onIdWritten);
 }
 
 void IdChange::changeLink(int id, int baud, void (IdChange::*then)(bool, const QString &))

@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -140,7 +141,7 @@ QJsonObject PendantPage::status(const DeviceSession &session, const QString &lan
 {
     const RegisterMap &map = session.map();
     const ParameterStore *store = session.parameters();
-    const bool connected = session.isConnected();
+    const bool connected = session.connection()->isConnected();
     const ReferenceTracker *references = session.motion()->references();
     const auto value = [&](const QString &key) {
         return connected ? store->deviceValue(key) : std::nullopt;
@@ -188,7 +189,7 @@ QJsonObject PendantPage::status(const DeviceSession &session, const QString &lan
     if (const QString name = namer ? namer(id) : QString(); !name.isEmpty())
         device.insert(QStringLiteral("name"), name);
     return QJsonObject{{QStringLiteral("t"), QStringLiteral("status")},
-                       {QStringLiteral("link"), linkCode(session.health()->state())},
+                       {QStringLiteral("link"), linkCode(session.connection()->health()->state())},
                        {QStringLiteral("device"), device},
                        {QStringLiteral("motors"), motors},
                        {QStringLiteral("inputs"), lamps("io.in%1")},

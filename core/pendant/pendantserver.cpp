@@ -7,6 +7,7 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 
 #include <QJsonDocument>
@@ -60,9 +61,11 @@ PendantServer::PendantServer(DeviceSession *session, QObject *parent)
     connect(&m_push, &QTimer::timeout, this, &PendantServer::push);
     connect(session->status(), &SessionStatus::statusCycleFinished, this,
             &PendantServer::schedulePush);
-    connect(session, &DeviceSession::linkStateChanged, this, &PendantServer::schedulePush);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &PendantServer::schedulePush);
     connect(session, &DeviceSession::deviceInViewChanged, this, &PendantServer::schedulePush);
-    connect(session->health(), &LinkHealth::stateChanged, this, &PendantServer::schedulePush);
+    connect(session->connection()->health(), &LinkHealth::stateChanged, this,
+            &PendantServer::schedulePush);
     connect(session->motion()->references(), &ReferenceTracker::changed, this,
             &PendantServer::schedulePush);
     connect(m_control, &PendantControl::allowedChanged, this, [this](bool allowed) {

@@ -3,6 +3,7 @@
 #include "map/factoryvalues.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QFileInfo>
 
@@ -14,7 +15,7 @@ ProfileDocument::ProfileDocument(DeviceSession *session, QObject *parent)
 {
     // The session emits `connected` before it reads the controller: the file's values and the
     // edits are taken here, before a read could land in the store.
-    connect(session, &DeviceSession::connected, this, [this](bool ok) {
+    connect(session->connection(), &SessionConnection::connected, this, [this](bool ok) {
         if (!ok || !m_open)
             return;
         const Profile values = current();
@@ -52,7 +53,7 @@ QStringList ProfileDocument::varianceLines(const QString &locale) const
 
 QStringList ProfileDocument::open(const QString &path)
 {
-    if (m_session->linkState() != DeviceSession::LinkState::Disconnected)
+    if (m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
         return {tr("a controller is connected: open the profile to compare it instead")};
     const ProfileParseResult r =
         ProfileFile::load(path, m_session->map(), ProfileFile::OtherMaps::Accept);
@@ -64,7 +65,7 @@ QStringList ProfileDocument::open(const QString &path)
 
 QStringList ProfileDocument::newFromFactory()
 {
-    if (m_session->linkState() != DeviceSession::LinkState::Disconnected)
+    if (m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
         return {tr("a controller is connected: disconnect to edit a profile without it")};
     Profile profile =
         Profile::fromValues(m_session->map(), FactoryValues::writable(m_session->map()), false);

@@ -1,4 +1,5 @@
 #include "profile/sessionbackup.h"
+#include "session/parts/sessionconnection.h"
 
 #include "profile/profile.h"
 
@@ -39,7 +40,7 @@ void SessionBackup::save(DeviceSession *session, const BackupStore &store, Devic
             known.insert(p->key, *v);
     }
     const BackupStore::Operation op = operation(risk);
-    const QString device = session->settings().describe();
+    const QString device = session->connection()->settings().describe();
     if (known.size() == params.size()) {
         done(store.save(session->map(), known, op, device));
         return;

@@ -1,7 +1,6 @@
 #include "session/devicesession.h"
 
 #include "bus/modbuslink.h"
-#include "bus/wiretap.h"
 #include "device/devicememory.h"
 #include "i18n/translators.h"
 #include "map/factoryvalues.h"
@@ -11,6 +10,7 @@
 #include "session/jogcontroller.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "session/simulatorstarter.h"
@@ -24,6 +24,7 @@ namespace stepcom {
 DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     : QObject(parent)
     , m_link(new ModbusLink(this))
+    , m_connection(new SessionConnection(this))
     , m_client(new DeviceClient(m_link, map, this))
     , m_store(new ParameterStore(map, this))
     , m_poller(new Poller(m_client, m_store, this))
@@ -49,9 +50,9 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     connect(m_bus, &BusPoller::statusChanged, this, &DeviceSession::deviceStatusChanged);
     m_link->traffic()->setMap(&m_client->map());
     connect(m_link, &ModbusLink::opened, this, &DeviceSession::onOpened);
-    connect(m_link, &ModbusLink::stateChanged, this, &DeviceSession::linkStateChanged);
-    connect(m_link, &ModbusLink::statsChanged, this, &DeviceSession::linkStatsChanged);
-    connect(m_link, &ModbusLink::echoDetected, this, &DeviceSession::echoSuspected);
+    connect(m_link, &ModbusLink::stateChanged, m_connection, &SessionConnection::linkStateChanged);
+    connect(m_link, &ModbusLink::statsChanged, m_connection, &SessionConnection::linkStatsChanged);
+    connect(m_link, &ModbusLink::echoDetected, m_connection, &SessionConnection::echoSuspected);
     connect(m_health, &LinkHealth::stateChanged, this, [this](LinkHealth::State s) {
         if (s == LinkHealth::State::NotAnswering)
             say(Severity::Warning, tr("The port is open, but the controller at %1 does not "
@@ -59,7 +60,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
                                        .arg(m_link->settings().describe()));
         else if (s == LinkHealth::State::Answering)
             say(Severity::Info, tr("The controller answers."));
-        Q_EMIT linkStateChanged();
+        Q_EMIT m_connection->linkStateChanged();
     });
     connect(m_link, &ModbusLink::lost, this, &DeviceSession::onLost);
     connect(m_poller, &Poller::cycleFinished, this, [this](bool ok, qint64 ms) {
@@ -85,7 +86,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             });
     connect(m_reconnector, &Reconnector::cancelled, this, [this] {
         say(Severity::Info, tr("Reconnecting cancelled: Connect tries again."));
-        Q_EMIT linkStateChanged();
+        Q_EMIT m_connection->linkStateChanged();
     });
 }
 
@@ -98,50 +99,6 @@ DeviceSession::~DeviceSession()
     delete m_memory;
 }
 
-TrafficLog *DeviceSession::traffic() const
-{
-    return m_link->traffic();
-}
-
-const LinkStats &DeviceSession::linkStats() const
-{
-    return m_link->stats();
-}
-
-void DeviceSession::resetLinkStats()
-{
-    m_link->resetStats();
-}
-
-DeviceSession::LinkState DeviceSession::linkState() const
-{
-    switch (m_link->state()) {
-    case ModbusLink::State::Connected:
-        return LinkState::Connected;
-    case ModbusLink::State::Connecting:
-        return LinkState::Connecting;
-    case ModbusLink::State::Disconnected:
-        break;
-    }
-    return LinkState::Disconnected;
-}
-
-bool DeviceSession::isConnected() const
-{
-    return m_link->isConnected();
-}
-
-bool DeviceSession::isSimulator() const
-{
-    // connected(true) can arrive from inside connectSimulator(): recognise the simulator's port.
-    return m_usingSim || (m_sim && m_sim->isRunning() && m_sim->serves(m_link->settings()));
-}
-
-void DeviceSession::setLinkDiagnosticsShown(bool shown)
-{
-    WireTap::setPassThrough(shown);
-}
-
 void DeviceSession::setSimulator(std::unique_ptr<SimulatorStarter> simulator)
 {
     if (m_sim && m_sim->isRunning()) {
@@ -151,11 +108,6 @@ void DeviceSession::setSimulator(std::unique_ptr<SimulatorStarter> simulator)
     }
     m_usingSim = false;
     m_sim = std::move(simulator);
-}
-
-LinkSettings DeviceSession::settings() const
-{
-    return m_link->settings();
 }
 
 void DeviceSession::say(Severity severity, const QString &text)

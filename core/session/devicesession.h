@@ -27,6 +27,7 @@ class LinkHealth;
 class ModbusLink;
 class MotionSupervisor;
 class Reconnector;
+class SessionConnection;
 class SessionStatus;
 class SimulatorStarter;
 class StepMove;
@@ -44,8 +45,6 @@ class DeviceSession : public QObject
 public:
     enum class Severity { Info, Warning, Error };
     Q_ENUM(Severity)
-    enum class LinkState { Disconnected, Connecting, Connected };
-    Q_ENUM(LinkState)
     // Why every jog must stop now (the rules live here; the window reports what happened).
     enum class JogStop { PageLeft, FocusLost, WindowClosing };
     Q_ENUM(JogStop)
@@ -84,20 +83,10 @@ public:
     void setRiskGuard(RiskGuard guard) { m_guard = std::move(guard); }
     // Runs `proceed` after the guard (at once, agreed, without one).
     void guard(Risk risk, Proceed proceed);
-    TrafficLog *traffic() const;
-    const LinkStats &linkStats() const;
-    void resetLinkStats();
 
-    // -- Connection (devicesessionconnect.cpp; its state and the simulator in devicesession.cpp) --
-    // Port closed / open but not answering / answering: "connected" means answering.
-    LinkHealth *health() const { return m_health; }
-    // Tries again on its own after a link loss (off until a front-end turns it on); while it
-    // waits, an E-STOP is held and sent first when the link is back, then everything is read.
-    Reconnector *reconnector() const { return m_reconnector; }
-    LinkState linkState() const;
-    bool isConnected() const;
-    bool isSimulator() const;
-    LinkSettings settings() const;
+    // -- Connection (its part: parts/sessionconnection.h; what the session does when the link
+    // opens or drops: devicesessionconnect.cpp) --
+    SessionConnection *connection() const { return m_connection; }
     // Live (the default, as the window wants it): read everything after connecting, poll the
     // status while connected, read back what a failed write left uncertain. stepcomctl turns it
     // off, so a command puts on the wire only what it names.
@@ -105,27 +94,9 @@ public:
     // (devicesessionline.cpp).
     void setLive(bool live);
     bool isLive() const { return m_live; }
-    // Whether Qt's own qt.modbus messages reach stderr (stepcomctl --verbose); off by default.
-    static void setLinkDiagnosticsShown(bool shown);
     // The built-in simulator, injected by programs that offer --sim (the session owns it).
     void setSimulator(std::unique_ptr<SimulatorStarter> simulator);
     SimulatorStarter *simulatorStarter() const { return m_sim.get(); }
-    // Connect, then (live) read everything (reading never writes). `connected(ok, reason)`
-    // follows.
-    void connectTo(const LinkSettings &settings);
-    // Start the built-in simulated controller in this process and connect to it.
-    void connectSimulator();
-    // Close the link; an empty reason says the user disconnected.
-    void disconnectFrom(const QString &reason = QString());
-    // What the connected controller refuses to read (gaps, parameters it lacks), learnt from
-    // its answers and remembered per line and id for this session's life.
-    const ReadLimits &readLimits() const;
-    // The line a controller is on (port, or host:port); read limits are kept per line and id.
-    static QString lineKey(const LinkSettings &settings);
-    // Every controller's known read limits as text by "line#id", for the saved connection
-    // settings; taken back, the next connect need not learn them again (said once then).
-    QMap<QString, QString> knownReadLimits() const;
-    void setKnownReadLimits(const QMap<QString, QString> &known);
 
     // -- Reading and writing the device in view (devicesession.cpp) --
     void readAll();
@@ -203,17 +174,6 @@ public:
     void statusSampled(int id, bool ok, const QHash<QString, qint64> &values);
 
 Q_SIGNALS:
-    // -- Connection --
-    void connected(bool ok, const QString &reason);
-    void disconnected(const QString &reason);
-    // The link dropped on its own (after `disconnected`).
-    void linkLost(const QString &reason);
-    void linkStateChanged();
-    void linkStatsChanged();
-    // Answers began with the request's own bytes: the adapter echoes and the option is off.
-    void echoSuspected();
-    // Learnt what the controller refuses to read (said once, in words; also a message()).
-    void readLimitsLearned(const QString &text);
     // -- Reading and writing --
     void message(stepcom::DeviceSession::Severity severity, const QString &text);
     void readFinished(bool ok);
@@ -247,7 +207,8 @@ Q_SIGNALS:
     void controllerMayHaveRestarted(int id, const stepcom::RestartWatch::Evidence &seen);
 
 private:
-    friend class SessionInternals; // tests and the benchmark's link measurements
+    friend class SessionInternals;  // tests and the benchmark's link measurements
+    friend class SessionConnection; // works on the session's link
 
     void say(Severity severity, const QString &text);
     // -- Connection (devicesessionconnect.cpp) --
@@ -281,6 +242,7 @@ private:
                         const QHash<QString, qint64> &held, const ReadOutcome &read);
 
     ModbusLink *m_link;
+    SessionConnection *m_connection;
     DeviceClient *m_client;
     ParameterStore *m_store;
     Poller *m_poller;

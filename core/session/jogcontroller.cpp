@@ -1,4 +1,5 @@
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 
 #include "session/motionsupervisor.h"
@@ -26,8 +27,9 @@ JogController::JogController(DeviceSession *session, QObject *parent)
     , m_session(session)
 {
     m_motors.resize(session->map().blockCount(kMotor));
-    connect(session, &DeviceSession::disconnected, this, &JogController::onDisconnected);
-    connect(session, &DeviceSession::connected, this,
+    connect(session->connection(), &SessionConnection::disconnected, this,
+            &JogController::onDisconnected);
+    connect(session->connection(), &SessionConnection::connected, this,
             [this](bool ok, const QString &) { onConnected(ok); });
     // The E-STOP stopped every motor: the jogs end now (and are checked like any stop).
     connect(session->motion(), &MotionSupervisor::emergencyStopSent, this, [this] {
@@ -51,7 +53,7 @@ JogController::~JogController()
 {
     // Leaving with a motor held: the stop still goes out (nobody is left to check it).
     DeviceSession *session = m_session;
-    if (!session || !session->isConnected())
+    if (!session || !session->connection()->isConnected())
         return;
     for (int n = 1; n <= motorCount(); ++n) {
         const Motor &m = at(n);
@@ -171,7 +173,7 @@ bool JogController::press(int motor, Direction direction, Source source)
         say(Severity::Info, tr("Keyboard jogging is off: motor %1 does not move").arg(motor));
         return false;
     }
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         say(Severity::Warning, tr("Not connected: motor %1 does not move").arg(motor));
         return false;
     }
@@ -294,7 +296,7 @@ void JogController::sendStop(int motor, const QString &reason)
              tr("Motor %1 has no stop command in this map: use the emergency stop").arg(motor));
         return;
     }
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         if (m.state == State::Jogging || m.state == State::Stopping ||
             m.state == State::StillRunning)
             markPossiblyRunning(motor, tr("not connected, the stop could not be sent"));
@@ -376,7 +378,7 @@ void JogController::checkRunning(int motor, quint64 generation, int retries)
     }
     const QString key = motorKey(motor, QStringLiteral("running"));
     const Parameter *running = m_session->map().find(key);
-    if (!running || !m_session->isConnected()) {
+    if (!running || !m_session->connection()->isConnected()) {
         if (!running)
             setState(motor, State::Idle);
         maybeSettled();
@@ -416,7 +418,7 @@ void JogController::onRunningRead(int motor, quint64 generation, int retries, co
                             .arg(motor)
                             .arg(m.stopReason));
         }
-    } else if (m_session->isConnected() && retries > 0) {
+    } else if (m_session->connection()->isConnected() && retries > 0) {
         // An emergency stop cancels queued reads: ask once more before raising the alarm.
         ++m_checksInFlight;
         QTimer::singleShot(m_settleMs, this, [this, motor, generation, retries] {
@@ -424,7 +426,7 @@ void JogController::onRunningRead(int motor, quint64 generation, int retries, co
             checkRunning(motor, generation, retries - 1);
         });
         return;
-    } else if (m_session->isConnected()) {
+    } else if (m_session->connection()->isConnected()) {
         setState(motor, State::StillRunning);
         warn(motor, tr("Motor %1: could not check that it stopped: %2")
                         .arg(motor)

@@ -4,6 +4,7 @@
 #include "motion/motionjudge.h"
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 
 #include <QPointer>
@@ -42,7 +43,8 @@ MotionSupervisor::MotionSupervisor(DeviceSession *session, ModbusLink *link)
         if (p.isCoil())
             m_coils.insert(p.address, p.key);
     }
-    connect(session, &DeviceSession::disconnected, this, &MotionSupervisor::onDisconnected);
+    connect(session->connection(), &SessionConnection::disconnected, this,
+            &MotionSupervisor::onDisconnected);
     // Every stop goes through the link, whoever sent it (jog controller, E-STOP, stop buttons).
     connect(link, &ModbusLink::dispatched, this,
             [this](quint64, const Request &r) { onDispatched(r); });
@@ -52,7 +54,7 @@ MotionSupervisor::MotionSupervisor(DeviceSession *session, ModbusLink *link)
         statusRead(device,
                    m_session->deviceStatus(device).state == BusDeviceStatus::State::Answering);
     });
-    connect(session, &DeviceSession::connected, this, [this](bool ok) {
+    connect(session->connection(), &SessionConnection::connected, this, [this](bool ok) {
         if (ok)
             setView(m_session->deviceInView());
     });

@@ -8,6 +8,7 @@
 #include "session/buspoller.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "session/restartwatch.h"
 
 #include <QDateTime>
@@ -49,7 +50,7 @@ void DeviceSession::watchRestarts()
             m_restarts->commandSent(r.unitId > 0 ? r.unitId : m_link->settings().deviceId, nowMs(),
                                     RestartWatch::motorsOf(map(), key));
     });
-    connect(this, &DeviceSession::disconnected, m_restarts, &RestartWatch::forget);
+    connect(m_connection, &SessionConnection::disconnected, m_restarts, &RestartWatch::forget);
     connect(m_restarts, &RestartWatch::suspected, this, &DeviceSession::checkRestart);
 }
 

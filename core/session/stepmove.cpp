@@ -5,6 +5,7 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 
 #include <cmath>
@@ -57,7 +58,7 @@ QString StepMove::refusal(const StepMoveRequest &r) const
         return tr("Motor %1: the distance or position is not a number").arg(r.motor);
     if (r.kind == StepMoveRequest::Kind::Raw && r.value < 0)
         return tr("Motor %1: a distance cannot be negative").arg(r.motor);
-    if (!s.isConnected())
+    if (!s.connection()->isConnected())
         return tr("Not connected: nothing was sent");
     if (m_busy)
         return tr("A step is still running: wait for it to end");
@@ -270,7 +271,7 @@ void StepMove::restore(const QString &why)
         finish(why);
         return;
     }
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         finish(tr("%1. The single move's own values (%2) could not be put back: not connected. "
                   "Write them again once the controller answers.")
                    .arg(why, userValues));

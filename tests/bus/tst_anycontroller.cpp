@@ -8,6 +8,7 @@
 #include "device/poller.h"
 #include "device/readplanner.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
@@ -55,7 +56,7 @@ class TestAnyController : public QObject
         s.baud = baud;
         s.echo = echoSetting;
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        session->connection()->connectTo(s);
         if (!read.wait(10000) && read.isEmpty())
             return false;
         return read.at(0).at(0).toBool();

@@ -4,6 +4,7 @@
 #include "device/poller.h"
 #include "scripteddevice.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -72,7 +73,7 @@ class TestPoller : public QObject
         SessionInternals::poller(*session)->setIntervalMs(0);
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
         test::useBuiltinSimulator(*session);
-        session->connectSimulator();
+        session->connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QTRY_VERIFY(SessionInternals::poller(*session)->stats().cycles >= 2);
     }

@@ -2,6 +2,7 @@
 #include "device/poller.h"
 #include "device/statusrecorder.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -56,7 +57,7 @@ private Q_SLOTS:
         recorder.attach(SessionInternals::poller(session));
         QSignalSpy read(&session, &DeviceSession::readFinished);
         test::useBuiltinSimulator(session);
-        session.connectSimulator();
+        session.connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         SimDevice *sim = test::simHost(session)->device();
         sim->setMachinePosition(1, 12.5);

@@ -1,5 +1,6 @@
 #include "line/idassigner.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -157,7 +158,7 @@ private Q_SLOTS:
         QVERIFY2(a.state() == IdAssigner::State::Waiting, qPrintable(a.text()));
         QCOMPARE(sim(0)->deviceId(), 2);
         QCOMPARE(sim(0)->baud(), 19200);
-        QCOMPARE(session->settings().baud, 19200);
+        QCOMPARE(session->connection()->settings().baud, 19200);
 
         // The next arrives at 9600: the line goes back there for it.
         plugIn(1);
@@ -172,7 +173,7 @@ private Q_SLOTS:
         a.finish();
         waitWhileWorking(a);
         QVERIFY2(a.state() == IdAssigner::State::Finished, qPrintable(a.text()));
-        QCOMPARE(session->settings().baud, 19200);
+        QCOMPARE(session->connection()->settings().baud, 19200);
         QVERIFY2(a.text().contains(QStringLiteral("Answering: id 2. NOT answering: id 3")),
                  qPrintable(a.text()));
         QCOMPARE(session->deviceIds(), (QList<int>{2, 3})); // it stays listed

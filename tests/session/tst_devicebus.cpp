@@ -1,6 +1,7 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
@@ -129,8 +130,8 @@ private Q_SLOTS:
     {
         connectBus({1, 2, 3}, {1, 2, 3});
         QVERIFY(host()->deviceAt(2)->setValue(QStringLiteral("motor1.speed"), 444));
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
-        QSignalSpy disconnected(session.get(), &DeviceSession::disconnected);
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
+        QSignalSpy disconnected(session->connection(), &SessionConnection::disconnected);
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
         QSignalSpy shown(session.get(), &DeviceSession::deviceInViewChanged);
         QVERIFY(session->showDevice(2));
@@ -142,7 +143,7 @@ private Q_SLOTS:
         QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("device.id")), 2);
         QCOMPARE(connected.size(), 0);
         QCOMPARE(disconnected.size(), 0);
-        QVERIFY(session->isConnected());
+        QVERIFY(session->connection()->isConnected());
         // Device 1 is now in the background poll.
         QTRY_VERIFY_WITH_TIMEOUT(session->deviceStatus(1).cycles >= 1, 10000);
         QVERIFY(!session->showDevice(9));

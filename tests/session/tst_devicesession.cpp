@@ -3,6 +3,7 @@
 #include "scripteddevice.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -91,7 +92,7 @@ private Q_SLOTS:
         s.timeoutMs = 200;
         s.retries = 1;
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        session->connection()->connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         const QString key = QStringLiteral("motor1.speed");
         QCOMPARE(*session->parameters()->deviceValue(key), 300);
@@ -145,7 +146,7 @@ private Q_SLOTS:
         QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
         session->changeLink(7, 9600);
         QTRY_COMPARE_WITH_TIMEOUT(changed.size(), 1, 5000);
-        QCOMPARE(session->settings().deviceId, 7);
+        QCOMPARE(session->connection()->settings().deviceId, 7);
         QCOMPARE(sim()->deviceId(), 7);
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
         session->readAll();
@@ -162,7 +163,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(changed.size() + failed.size() == 1, 10000);
         QVERIFY2(changed.size() == 1,
                  failed.isEmpty() ? "" : qPrintable(failed.at(0).at(1).toString()));
-        QCOMPARE(session->settings().baud, 19200);
+        QCOMPARE(session->connection()->settings().baud, 19200);
         QCOMPARE(sim()->baud(), 19200);
     }
 
@@ -186,15 +187,15 @@ private Q_SLOTS:
     void withoutASimulatorConnectSimulatorSaysSo()
     {
         // The real device path has no simulator in it: a program must hand the session one.
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
         QSignalSpy said(session.get(), &DeviceSession::message);
-        session->connectSimulator();
+        session->connection()->connectSimulator();
         QCOMPARE(connected.size(), 1);
         QVERIFY(!connected.at(0).at(0).toBool());
         QVERIFY(said.size() >= 1);
         QVERIFY2(said.last().at(1).toString().contains(QLatin1String("no built-in simulator")),
                  qPrintable(said.last().at(1).toString()));
-        QVERIFY(!session->isConnected());
+        QVERIFY(!session->connection()->isConnected());
     }
 
     void stopRulesStopEveryJogWithTheirReason_data()

@@ -2,6 +2,7 @@
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h"
 #include "session/stepmove.h"
 #include "sim/host/simhost.h"
@@ -63,8 +64,8 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QCOMPARE(held("motor1.speed"), 111);
         QVERIFY(session->parameters()->edit(QStringLiteral("motor2.speed"), 321).isEmpty());
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
-        QSignalSpy disconnected(session.get(), &DeviceSession::disconnected);
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
+        QSignalSpy disconnected(session->connection(), &SessionConnection::disconnected);
         show(2);
         QCOMPARE(held("motor1.speed"), 222);
         QCOMPARE(held("device.id"), 2);
@@ -83,7 +84,7 @@ private Q_SLOTS:
         QCOMPARE(*session->parameters()->shownValue(QStringLiteral("motor1.speed")), 999);
         QCOMPARE(connected.size(), 0);
         QCOMPARE(disconnected.size(), 0);
-        QVERIFY(session->isConnected());
+        QVERIFY(session->connection()->isConnected());
         // Device 3 was never in view: its status is known from the background poll only.
         QTRY_VERIFY_WITH_TIMEOUT(session->deviceStatus(3).cycles >= 1, 10000);
         QVERIFY(session->showDevice(3));

@@ -2,6 +2,7 @@
 #include "scripteddevice.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -206,9 +207,9 @@ private Q_SLOTS:
 
         QTRY_COMPARE_WITH_TIMEOUT(reopened.size(), 1, 5000);
         QSignalSpy dispatched(SessionInternals::link(*session), &ModbusLink::dispatched);
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
         test::useBuiltinSimulator(*session);
-        session->connectSimulator();
+        session->connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(connected.size(), 1, 5000);
         QVERIFY(connected.at(0).at(0).toBool());
         QTRY_VERIFY(!sim()->running(1));
@@ -249,7 +250,7 @@ private Q_SLOTS:
         s.portName = device.clientPath();
         s.timeoutMs = 200;
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        session->connection()->connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
 
         QSignalSpy messages(jog.get(), &JogController::message);
@@ -278,7 +279,7 @@ private Q_SLOTS:
         LinkSettings s;
         s.portName = device.clientPath();
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        session->connection()->connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
 
         QSignalSpy warnings(jog.get(), &JogController::warning);

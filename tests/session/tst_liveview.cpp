@@ -3,6 +3,7 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
@@ -55,7 +56,7 @@ private Q_SLOTS:
         QVERIFY2(host.start(options, &error), qPrintable(error));
         DeviceSession session;
         QSignalSpy read(&session, &DeviceSession::readFinished);
-        session.connectTo(ptyLink(host));
+        session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
         QCOMPARE(read.first().first().toBool(), true);
         const QList<std::pair<int, int>> sent = readsSent(session);
@@ -85,12 +86,12 @@ private Q_SLOTS:
         QVERIFY2(host.start(options, &error), qPrintable(error));
         DeviceSession session;
         QSignalSpy read(&session, &DeviceSession::readFinished);
-        QSignalSpy learnt(&session, &DeviceSession::readLimitsLearned);
-        session.connectTo(ptyLink(host));
+        QSignalSpy learnt(session.connection(), &SessionConnection::readLimitsLearned);
+        session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
         QCOMPARE(read.first().first().toBool(), true); // the read-all went on
         QCOMPARE(learnt.size(), lacks ? 2 : 1);        // said once each
-        QVERIFY(session.readLimits().gapFree());
+        QVERIFY(session.connection()->readLimits().gapFree());
         const ParameterStore *store = session.parameters();
         QCOMPARE(store->state(QStringLiteral("motor2.position")),
                  lacks ? ParameterStore::State::Unsupported : ParameterStore::State::InSync);
@@ -130,8 +131,8 @@ private Q_SLOTS:
         session.setDeviceIds({1, 2});
         session.setBackgroundIntervalMs(100);
         QSignalSpy read(&session, &DeviceSession::readFinished);
-        QSignalSpy learnt(&session, &DeviceSession::readLimitsLearned);
-        session.connectTo(ptyLink(host));
+        QSignalSpy learnt(session.connection(), &SessionConnection::readLimitsLearned);
+        session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
         QCOMPARE(read.first().first().toBool(), true);
         // The background poll of id 2 learns both lessons, said with the id.
@@ -140,14 +141,15 @@ private Q_SLOTS:
             QVERIFY2(l.first().toString().startsWith(QLatin1String("Device id 2: ")),
                      qPrintable(l.first().toString()));
         const ParameterStore *store = session.parameters();
-        QVERIFY(session.readLimits().isEmpty()); // id 1 reads its merged plan as before
+        QVERIFY(
+            session.connection()->readLimits().isEmpty()); // id 1 reads its merged plan as before
         QCOMPARE(store->state(QStringLiteral("motor2.position")), ParameterStore::State::InSync);
 
         read.clear();
         QVERIFY(session.showDevice(2));
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QVERIFY(read.first().first().toBool());
-        QVERIFY(session.readLimits().gapFree());
+        QVERIFY(session.connection()->readLimits().gapFree());
         QCOMPARE(store->state(QStringLiteral("motor2.position")),
                  ParameterStore::State::Unsupported);
         QCOMPARE(learnt.size(), 2); // nothing learnt twice
@@ -155,7 +157,7 @@ private Q_SLOTS:
         read.clear();
         QVERIFY(session.showDevice(1));
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QVERIFY(session.readLimits().isEmpty());
+        QVERIFY(session.connection()->readLimits().isEmpty());
         QCOMPARE(store->state(QStringLiteral("motor2.position")), ParameterStore::State::InSync);
     }
 
@@ -174,31 +176,31 @@ private Q_SLOTS:
         {
             DeviceSession first;
             QSignalSpy read(&first, &DeviceSession::readFinished);
-            first.connectTo(ptyLink(host));
+            first.connection()->connectTo(ptyLink(host));
             QVERIFY(read.wait(10000));
-            known = first.knownReadLimits();
+            known = first.connection()->knownReadLimits();
         }
-        const QString key = DeviceSession::lineKey(ptyLink(host)) + QStringLiteral("#1");
+        const QString key = SessionConnection::lineKey(ptyLink(host)) + QStringLiteral("#1");
         QCOMPARE(known, (QMap<QString, QString>{{key, QStringLiteral("gaps,motor2.speed")}}));
 
         DeviceSession session;
-        session.setKnownReadLimits(
+        session.connection()->setKnownReadLimits(
             {{key, QStringLiteral("gaps,motor2.speed,not a key!")}, {QStringLiteral("x"), {}}});
         QSignalSpy read(&session, &DeviceSession::readFinished);
-        QSignalSpy learnt(&session, &DeviceSession::readLimitsLearned);
+        QSignalSpy learnt(session.connection(), &SessionConnection::readLimitsLearned);
         QSignalSpy messages(&session, &DeviceSession::message);
-        session.connectTo(ptyLink(host));
+        session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
         QVERIFY(read.first().first().toBool());
         QCOMPARE(learnt.size(), 0);
-        QCOMPARE(session.linkStats().exceptions, 0); // not one refused read
+        QCOMPARE(session.connection()->linkStats().exceptions, 0); // not one refused read
         QCOMPARE(session.parameters()->state(QStringLiteral("motor2.speed")),
                  ParameterStore::State::Unsupported);
         QStringList said;
         for (const QList<QVariant> &m : std::as_const(messages))
             said << m.at(1).toString();
         QCOMPARE(said.filter(QStringLiteral("Known from an earlier connection")).size(), 1);
-        QCOMPARE(session.knownReadLimits(), known);
+        QCOMPARE(session.connection()->knownReadLimits(), known);
     }
 };
 

@@ -5,6 +5,7 @@
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "session/restartwatch.h"
 #include "session/sessionlog.h"
 #include "sim/host/simhost.h"
@@ -48,7 +49,7 @@ class TestRestart : public QObject
         s.portName = host->rtuPath();
         s.timeoutMs = 200;
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        session->connection()->connectTo(s);
         if (!read.wait(10000) && read.isEmpty())
             return false;
         return read.at(0).at(0).toBool();

@@ -2,6 +2,7 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "session/stepmove.h"
@@ -204,8 +205,8 @@ private Q_SLOTS:
     {
         session->setLive(false); // as stepcomctl
         test::useBuiltinSimulator(*session);
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
-        session->connectSimulator();
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
+        session->connection()->connectSimulator();
         QTRY_COMPARE(connected.size(), 1);
         QVERIFY(connected.first().first().toBool());
         QVERIFY(!session->status()->isActive());

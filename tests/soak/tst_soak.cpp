@@ -19,6 +19,7 @@
 #include "device/poller.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -115,16 +116,16 @@ class TestSoak : public QObject
     {
         QTRY_VERIFY_WITH_TIMEOUT(!sim->rtuPath().isEmpty(), 20000);
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
-        LinkSettings s = session->settings();
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
+        LinkSettings s = session->connection()->settings();
         s.portName = linkPath;
-        session->connectTo(s);
+        session->connection()->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(!connected.isEmpty(), 20000);
         if (!connected.last().at(0).toBool())
             return; // the port went away again at once: the loop tries again
         ++reconnects;
         // The read may fail on this line; either way it ends.
-        QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty() || !session->isConnected(), 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty() || !session->connection()->isConnected(), 60000);
     }
 
     qint64 randomRaw(const Parameter *p)
@@ -253,7 +254,8 @@ class TestSoak : public QObject
             // presses stop again.
             QVERIFY(!warnings.isEmpty());
             jog->stop(motor, QStringLiteral("soak"));
-            QTRY_VERIFY_WITH_TIMEOUT(!jog->isBusy() || !session->isConnected(), 30000);
+            QTRY_VERIFY_WITH_TIMEOUT(!jog->isBusy() || !session->connection()->isConnected(),
+                                     30000);
         }
         if (jog->state(motor) == State::Idle)
             QTRY_VERIFY_WITH_TIMEOUT(!device()->running(motor), 5000); // reported stopped: is
@@ -263,10 +265,10 @@ class TestSoak : public QObject
     void settle()
     {
         for (int m = 1; m <= jog->motorCount(); ++m) {
-            if (jog->state(m) != State::Idle && session->isConnected())
+            if (jog->state(m) != State::Idle && session->connection()->isConnected())
                 jog->stop(m, QStringLiteral("soak"));
         }
-        QTRY_VERIFY_WITH_TIMEOUT(!jog->isBusy() || !session->isConnected(), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(!jog->isBusy() || !session->connection()->isConnected(), 30000);
     }
 
 private Q_SLOTS:
@@ -333,13 +335,13 @@ private Q_SLOTS:
         s.answerDelayMs = 5; // the simulator's, or its answers would be too soon to be answers
         s.echo = sim->options().echo;
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        session->connection()->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty(), 30000);
 
         double warmRss = -1;
         int round = 0;
         while (finished < quint64(target)) {
-            if (!session->isConnected()) {
+            if (!session->connection()->isConnected()) {
                 settle();
                 reconnect();
                 if (QTest::currentTestFailed())
@@ -362,10 +364,10 @@ private Q_SLOTS:
         }
 
         // Quiet down: back on the line, nothing running, nothing pending, nothing lost.
-        if (!session->isConnected())
+        if (!session->connection()->isConnected())
             reconnect();
         settle();
-        QTRY_VERIFY_WITH_TIMEOUT(session->isConnected(), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(session->connection()->isConnected(), 30000);
         SessionInternals::poller(*session)->stop();
         QTRY_VERIFY_WITH_TIMEOUT(!SessionInternals::link(*session)->isBusy() &&
                                      SessionInternals::link(*session)->queuedCount() == 0,

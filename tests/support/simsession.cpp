@@ -1,6 +1,7 @@
 #include "simsession.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "sim/host/builtinsimulator.h"
 #include "sim/host/simhost.h"
 
@@ -56,7 +57,7 @@ void connectToSimulator(DeviceSession &session)
 {
     useBuiltinSimulator(session);
     QSignalSpy read(&session, &DeviceSession::readFinished);
-    session.connectSimulator();
+    session.connection()->connectSimulator();
     // Generous: a machine running other tests beside this one may take many seconds.
     QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 30000);
     QVERIFY(read.at(0).at(0).toBool());

@@ -3,6 +3,7 @@
 // follows the controller's positions as an axis moves and says when it stands, the strip's
 // E-STOP stops it at once, and no message speaks of an echo or of a missing answer.
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -42,7 +43,7 @@ private Q_SLOTS:
         s.portName = host.rtuPath();
         s.baud = baud;
         QSignalSpy read(&session, &DeviceSession::readFinished);
-        session.connectTo(s);
+        session.connection()->connectTo(s);
         QVERIFY(read.wait(10000) || !read.isEmpty());
         QVERIFY2(read.at(0).at(0).toBool(), qPrintable(said.join(QLatin1Char('\n'))));
 
@@ -75,7 +76,7 @@ private Q_SLOTS:
         const QString all = said.join(QLatin1Char('\n'));
         QVERIFY2(!all.contains(QLatin1String("echo"), Qt::CaseInsensitive), qPrintable(all));
         QVERIFY2(!all.contains(QLatin1String("no answer"), Qt::CaseInsensitive), qPrintable(all));
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
     }
 };
 

@@ -7,6 +7,7 @@
 #include "darkpalette.h"
 #include "pages/checklistpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "simsession.h"
 #include "widgets/docks/linkstatus.h"
 #include "widgets/docks/machinestrip.h"
@@ -134,7 +135,7 @@ private Q_SLOTS:
         check(QStringLiteral("sidebar checklist"),
               sidebar->progressColour(int(window.pages().indexOf(window.checklistPage()))), base);
         test::connectToSimulator(session);
-        QTRY_VERIFY(session.linkStats().answers > 0);
+        QTRY_VERIFY(session.connection()->linkStats().answers > 0);
         QTRY_VERIFY(window.machineStrip()->motion(1) != MachineStrip::Motion::Unknown);
         checkStrip(window.machineStrip(), QStringLiteral("connected"));
         // The status bar says the link's state in the same colours.

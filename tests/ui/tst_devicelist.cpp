@@ -1,4 +1,5 @@
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -68,7 +69,7 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(dock.rowTexts(2).at(2), QStringLiteral("answering"), 15000);
         QCOMPARE(dock.rowTexts(2).at(4), QStringLiteral("0"));
 
-        QSignalSpy connected(&session, &DeviceSession::connected);
+        QSignalSpy connected(session.connection(), &SessionConnection::connected);
         QSignalSpy read(&session, &DeviceSession::readFinished);
         Q_EMIT dock.table()->cellClicked(2, 0);
         QCOMPARE(session.deviceInView(), 3);

@@ -13,6 +13,7 @@
 #include "base/page.h"
 #include "pages/connectionpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/messageview.h"
@@ -244,7 +245,7 @@ private Q_SLOTS:
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         test::connectToSimulator(session);
-        QTRY_VERIFY(session.linkStats().answers > 0);
+        QTRY_VERIFY(session.connection()->linkStats().answers > 0);
         MachineStrip *strip = window.machineStrip();
         QVERIFY(strip);
         QLabel *position = strip->positionLabel(1);
@@ -279,7 +280,7 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         // Connected, so that every part of the link status shows (port, rate, errors).
         test::connectToSimulator(session);
-        QTRY_VERIFY(session.linkStats().answers > 0);
+        QTRY_VERIFY(session.connection()->linkStats().answers > 0);
         const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
         window.setGeometry(screen);
         session.parameters()->setUnsavedToFlash(true); // the indicator the message must spare

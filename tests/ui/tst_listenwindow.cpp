@@ -7,6 +7,7 @@
 #include "line/linksettingsstore.h"
 #include "pages/connectionpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "sim/serve/linehub.h"
@@ -122,7 +123,7 @@ private Q_SLOTS:
 
         // Nothing that writes, jogs or polls is on; the window sent nothing.
         QCOMPARE(enabledControls(&window, {QStringLiteral("stopListening")}), QStringList());
-        QVERIFY(!session.isConnected());
+        QVERIFY(!session.connection()->isConnected());
         QCOMPARE(hub.bytesSent(2), 0);
 
         // The E-STOP asks first; nothing leaves until it is confirmed.

@@ -8,6 +8,7 @@
 #include "scripteddevice.h"
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -68,7 +69,7 @@ private Q_SLOTS:
         window->show();
         QSignalSpy read(session.get(), &DeviceSession::readFinished);
         test::useBuiltinSimulator(*session);
-        session->connectSimulator();
+        session->connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
     }
 
@@ -151,22 +152,22 @@ private Q_SLOTS:
     // the Connection page with the likely causes, and the counts start again per connection.
     void aSilentPortIsNeverConnected()
     {
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         window->showPage(0);
         test::ScriptedDevice device;
         QString error;
         QVERIFY2(device.open(&error), qPrintable(error));
         device.setResponder([](const QByteArray &, int) { return std::nullopt; });
         QList<LinkHealth::State> seen;
-        connect(session->health(), &LinkHealth::stateChanged, this,
+        connect(session->connection()->health(), &LinkHealth::stateChanged, this,
                 [&seen](LinkHealth::State st) { seen << st; });
         auto *status = window->findChild<LinkStatus *>();
         LinkSettings s;
         s.portName = device.clientPath();
         s.timeoutMs = 100;
         s.retries = 0;
-        session->connectTo(s);
-        QTRY_COMPARE(session->health()->state(), LinkHealth::State::NotAnswering);
+        session->connection()->connectTo(s);
+        QTRY_COMPARE(session->connection()->health()->state(), LinkHealth::State::NotAnswering);
         QCOMPARE(status->stateText(), QStringLiteral("Not answering"));
         auto *page = qobject_cast<ConnectionPage *>(window->currentPage());
         QVERIFY(page); // no jump to Motor 1 with blank fields
@@ -174,14 +175,14 @@ private Q_SLOTS:
                      page->statusText().contains(QLatin1String("A and B swapped")),
                  qPrintable(page->statusText()));
         QVERIFY(!seen.contains(LinkHealth::State::Answering));
-        QVERIFY(session->linkStats().timeouts > 0);
+        QVERIFY(session->connection()->linkStats().timeouts > 0);
 
         // The controller answers now: "Connected", and on to the first motor.
         device.useRegisterDevice();
-        session->disconnectFrom();
-        session->connectTo(s);
-        QCOMPARE(session->linkStats().timeouts, quint64(0)); // per connection
-        QTRY_COMPARE(session->health()->state(), LinkHealth::State::Answering);
+        session->connection()->disconnectFrom();
+        session->connection()->connectTo(s);
+        QCOMPARE(session->connection()->linkStats().timeouts, quint64(0)); // per connection
+        QTRY_COMPARE(session->connection()->health()->state(), LinkHealth::State::Answering);
         QCOMPARE(status->stateText(), QStringLiteral("Connected"));
         QTRY_VERIFY(!qobject_cast<ConnectionPage *>(window->currentPage()));
     }

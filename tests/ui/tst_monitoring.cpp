@@ -5,6 +5,7 @@
 #include "device/statusrecorder.h"
 #include "pages/plotpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -140,7 +141,7 @@ private Q_SLOTS:
         QTRY_COMPARE(dock.positionText(1), simPositionText(1));
         QCOMPARE(dock.runningLed(2)->state(), Led::State::Off); // the other motor never moved
 
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QTRY_COMPARE(dock.positionText(1), QStringLiteral("unknown"));
         QCOMPARE(dock.runningLed(1)->state(), Led::State::Unknown);
         QCOMPARE(dock.inputLed(1)->state(), Led::State::Unknown);
@@ -178,7 +179,7 @@ private Q_SLOTS:
         };
         QTRY_VERIFY_WITH_TIMEOUT(rate() > 0.5, 4000);
         QVERIFY2(row.rateText().endsWith(QLatin1String(" Hz")), qPrintable(row.rateText()));
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QTRY_COMPARE(row.rateText(), QStringLiteral("unknown"));
     }
 

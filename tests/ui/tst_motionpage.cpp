@@ -6,6 +6,7 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -494,7 +495,7 @@ private Q_SLOTS:
                     page.outputLed(3)->state() == Led::State::On);
         page.outputButton(QStringLiteral("outputs_all_off"))->click();
         QTRY_COMPARE(page.outputLed(3)->state(), Led::State::Off);
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QCOMPARE(page.outputLed(1)->state(), Led::State::Unknown);
         QVERIFY(!page.outputButton(QStringLiteral("output1_on"))->isEnabled());
     }

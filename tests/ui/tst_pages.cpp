@@ -4,6 +4,7 @@
 #include "pages/inputspage.h"
 #include "pages/motorpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -150,7 +151,7 @@ private Q_SLOTS:
         QVERIFY(sim()->running(2));
         QTest::mouseClick(page.stopButton(), Qt::LeftButton);
         QTRY_VERIFY(!sim()->running(2));
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QTRY_VERIFY(!page.stopButton()->isEnabled());
     }
 
@@ -181,7 +182,7 @@ private Q_SLOTS:
         QVERIFY(sim()->command(QStringLiteral("output1_on")));
         QTRY_COMPARE(page.outputLed(1)->state(), Led::State::On);
 
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QCOMPARE(page.inputLed(3)->state(), Led::State::Unknown);
     }
 
@@ -202,7 +203,7 @@ private Q_SLOTS:
         box->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(changed.size(), 1, 5000);
         QCOMPARE(sim()->deviceId(), 5);
-        QCOMPARE(session->settings().deviceId, 5);
+        QCOMPARE(session->connection()->settings().deviceId, 5);
         QVERIFY2(page.linkStatus().contains(QLatin1String("answers at ID 5")),
                  qPrintable(page.linkStatus()));
         QVERIFY(page.reconnectButton()->isHidden());
@@ -261,10 +262,10 @@ private Q_SLOTS:
         QVERIFY(page.reconnectButton()->isEnabled());
         const LinkSettings previous = failed.at(0).at(0).value<LinkSettings>();
         QCOMPARE(previous.deviceId, 1);
-        QSignalSpy attempt(session.get(), &DeviceSession::connected);
+        QSignalSpy attempt(session->connection(), &SessionConnection::connected);
         QTest::mouseClick(page.reconnectButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(attempt.size(), 1, 5000);
-        QCOMPARE(session->settings().deviceId, 1); // it tried the old settings
+        QCOMPARE(session->connection()->settings().deviceId, 1); // it tried the old settings
     }
 
     void factoryResetSaysWhatIsLost()

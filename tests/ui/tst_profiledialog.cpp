@@ -4,6 +4,7 @@
 #include "dialogs/profilesavedialog.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -210,7 +211,7 @@ private Q_SLOTS:
         // and the dialog names the values that were not.
         QSignalSpy applied(&dialog, &ProfileCompareDialog::applied);
         dialog.apply();
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
         QVERIFY(!applied.at(0).at(0).toBool());
         const QString text = dialog.resultLabel()->text();

@@ -11,6 +11,7 @@
 #include "pages/motionpage.h"
 #include "pages/motorpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "simsession.h"
 #include "widgets/checklist/checkliststepwidget.h"
 #include "widgets/docks/pagesidebar.h"
@@ -337,7 +338,7 @@ private Q_SLOTS:
         test::connectToSimulator(session);
         QTRY_VERIFY(!sidebar->itemOf(jog)->data(PageSidebar::OfflineRole).toBool());
         QVERIFY(sidebar->stateText(jog).isEmpty());
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
         QTRY_VERIFY(sidebar->itemOf(jog)->data(PageSidebar::OfflineRole).toBool());
     }
 

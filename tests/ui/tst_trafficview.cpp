@@ -3,6 +3,7 @@
 // file written for a real connection of the window.
 #include "base/language.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
 #include "widgets/docks/trafficmodel.h"
@@ -191,7 +192,7 @@ private Q_SLOTS:
         const QString text = QString::fromUtf8(f.readAll());
         QVERIFY2(text.contains(QStringLiteral("  TX  read     ")), qPrintable(text.left(2000)));
         QTRY_VERIFY(window.trafficView()->model()->rowCount() > 0);
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
     }
 };
 

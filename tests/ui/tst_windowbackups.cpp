@@ -5,6 +5,7 @@
 #include "profile/backupstore.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -80,7 +81,7 @@ private Q_SLOTS:
         QTRY_COMPARE(session->parameters()->deviceValue(QStringLiteral("motor1.speed")),
                      std::optional<qint64>(300));
         QSignalSpy linked(session.get(), &DeviceSession::linkChanged);
-        session->changeLink(7, session->settings().baud);
+        session->changeLink(7, session->connection()->settings().baud);
         QTRY_VERIFY_WITH_TIMEOUT(!linked.isEmpty(), 10000);
         QCOMPARE(sim()->deviceId(), 7);
         QCOMPARE(operations(),

@@ -1,6 +1,7 @@
 #include "base/emergencystop.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QApplication>
 #include <QKeyEvent>
@@ -13,7 +14,8 @@ EmergencyStop::EmergencyStop(DeviceSession *session, QObject *parent)
     , m_session(session)
 {
     qApp->installEventFilter(this);
-    connect(session, &DeviceSession::linkStateChanged, this, &EmergencyStop::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &EmergencyStop::refresh);
     connect(session->parameters(), &ParameterStore::originChanged, this, &EmergencyStop::refresh);
     m_available = isAvailable();
 }
@@ -30,7 +32,7 @@ bool EmergencyStop::isAvailable() const
     if (m_handler)
         return true;
     const ParameterStore *store = m_session->parameters();
-    return m_session->linkState() != DeviceSession::LinkState::Disconnected ||
+    return m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected ||
            !(store->isReplay() || store->isFile());
 }
 

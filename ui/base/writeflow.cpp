@@ -4,6 +4,7 @@
 #include "device/writereview.h"
 #include "map/parameter.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 namespace stepcom {
 
@@ -15,14 +16,14 @@ WriteFlow::WriteFlow(DeviceSession *session, QWidget *dialogParent)
 
 bool WriteFlow::openFor(const QStringList &keys)
 {
-    if (!m_session->isConnected())
+    if (!m_session->connection()->isConnected())
         return false;
     return show(new WriteChangesDialog(*m_session->parameters(), keys, m_dialogParent));
 }
 
 bool WriteFlow::openAll()
 {
-    if (!m_session->isConnected() || !m_session->parameters()->hasEdits())
+    if (!m_session->connection()->isConnected() || !m_session->parameters()->hasEdits())
         return false;
     return show(new WriteChangesDialog(*m_session->parameters(), m_dialogParent));
 }

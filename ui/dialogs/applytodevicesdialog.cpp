@@ -3,6 +3,7 @@
 #include "base/language.h"
 #include "profile/profilerollout.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QCloseEvent>
 #include <QDialogButtonBox>
@@ -253,7 +254,7 @@ void ApplyToDevicesDialog::updateButtons()
     m_write->setText(values > 0
                          ? tr("&Write %n value(s) to %1 device(s)", nullptr, values).arg(devices)
                          : tr("&Write"));
-    m_write->setEnabled(!busy && !done && values > 0 && m_session->isConnected());
+    m_write->setEnabled(!busy && !done && values > 0 && m_session->connection()->isConnected());
     m_write->setDefault(false); // writing is never what Enter does
 }
 

@@ -2,6 +2,7 @@
 
 #include "base/language.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QCheckBox>
 #include <QEvent>
@@ -134,7 +135,8 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
             refreshValues();
         });
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &ProfileCompareDialog::updateButtons);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &ProfileCompareDialog::updateButtons);
 
     refreshValues();
     retranslate();
@@ -146,7 +148,7 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
     resize(size);
     // Compare with what the controller holds now, not with what was read some time ago.
     // Reading never writes.
-    if (session->isConnected())
+    if (session->connection()->isConnected())
         session->readAll();
 }
 
@@ -291,7 +293,7 @@ void ProfileCompareDialog::updateFilter()
 
 void ProfileCompareDialog::updateButtons()
 {
-    const bool connected = m_session->isConnected();
+    const bool connected = m_session->connection()->isConnected();
     m_apply->setEnabled(connected && !m_busy && !checkedKeys().isEmpty());
     m_apply->setToolTip(connected ? QString() : tr("Connect to a controller to apply"));
     m_checkDiffering->setEnabled(!m_busy);
@@ -347,7 +349,7 @@ QStringList ProfileCompareDialog::checkedKeys() const
 
 void ProfileCompareDialog::apply()
 {
-    if (m_busy || !m_session->isConnected())
+    if (m_busy || !m_session->connection()->isConnected())
         return;
     QStringList errors;
     const QList<ParameterWrite> writes = ProfileDiff::writesFor(

@@ -2,6 +2,7 @@
 
 #include "base/language.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -129,7 +130,7 @@ DevicePage::DevicePage(DeviceSession *session, QWidget *parent)
     connect(m_reset, &QPushButton::clicked, this, &DevicePage::requestFactoryReset);
     connect(m_reconnect, &QPushButton::clicked, this, [this] {
         setLinkEvent(LinkEvent::Reconnecting);
-        this->session()->connectTo(m_previous);
+        this->session()->connection()->connectTo(m_previous);
     });
     connect(m_save, &QPushButton::clicked, this, [this] {
         setFlashEvent(FlashEvent::Saving);
@@ -142,15 +143,18 @@ DevicePage::DevicePage(DeviceSession *session, QWidget *parent)
             showDeviceValues();
     });
     connect(store, &ParameterStore::unsavedChanged, this, &DevicePage::updateUnsaved);
-    connect(session, &DeviceSession::linkStateChanged, this, &DevicePage::updateEnabled);
-    connect(session, &DeviceSession::disconnected, this, &DevicePage::updateEnabled);
-    connect(session, &DeviceSession::connected, this, [this](bool ok, const QString &reason) {
-        if (m_linkEvent == LinkEvent::Reconnecting) {
-            m_reason = reason;
-            setLinkEvent(ok ? LinkEvent::Reconnected : LinkEvent::ReconnectFailed);
-        }
-        updateEnabled();
-    });
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &DevicePage::updateEnabled);
+    connect(session->connection(), &SessionConnection::disconnected, this,
+            &DevicePage::updateEnabled);
+    connect(session->connection(), &SessionConnection::connected, this,
+            [this](bool ok, const QString &reason) {
+                if (m_linkEvent == LinkEvent::Reconnecting) {
+                    m_reason = reason;
+                    setLinkEvent(ok ? LinkEvent::Reconnected : LinkEvent::ReconnectFailed);
+                }
+                updateEnabled();
+            });
     connect(session, &DeviceSession::linkChanged, this, [this](const LinkSettings &now) {
         m_targetId = now.deviceId;
         m_targetBaud = now.baud;
@@ -203,7 +207,7 @@ int DevicePage::chosenBaud() const
 
 QString DevicePage::describe(int id, int baud) const
 {
-    if (session()->settings().isNetwork() || baud <= 0)
+    if (session()->connection()->settings().isNetwork() || baud <= 0)
         return tr("ID %1").arg(id);
     return tr("ID %1 at %2 baud").arg(id).arg(baud);
 }
@@ -228,8 +232,8 @@ void DevicePage::showDeviceValues()
 
 void DevicePage::updateEnabled()
 {
-    const bool connected = session()->isConnected();
-    const bool tcp = session()->settings().isNetwork();
+    const bool connected = session()->connection()->isConnected();
+    const bool tcp = session()->connection()->settings().isNetwork();
     const auto id = session()->parameters()->deviceValue(kId);
     const auto baud = session()->parameters()->deviceValue(kBaud);
     const bool changed = id && baud && (m_id->value() != *id || (!tcp && chosenBaud() != *baud));
@@ -356,11 +360,11 @@ QMessageBox *DevicePage::makeConfirmation(const QString &title, const QString &t
 
 void DevicePage::requestLinkChange()
 {
-    if (m_confirmation || !session()->isConnected())
+    if (m_confirmation || !session()->connection()->isConnected())
         return;
     const int id = m_id->value();
     const int baud = chosenBaud();
-    const LinkSettings now = session()->settings();
+    const LinkSettings now = session()->connection()->settings();
     QMessageBox *box =
         makeConfirmation(tr("Change device ID and baud rate"),
                          tr("Change the controller from %1 to %2?")
@@ -382,7 +386,7 @@ void DevicePage::requestLinkChange()
         m_saveAfterLinkChange = save->isChecked();
         m_targetId = id;
         m_targetBaud = baud;
-        m_previous = session()->settings();
+        m_previous = session()->connection()->settings();
         setLinkEvent(LinkEvent::Changing);
         session()->changeLink(id, baud);
     });
@@ -391,7 +395,7 @@ void DevicePage::requestLinkChange()
 
 void DevicePage::requestFactoryReset()
 {
-    if (m_confirmation || !session()->isConnected())
+    if (m_confirmation || !session()->connection()->isConnected())
         return;
     const int motors = session()->map().blockCount(QStringLiteral("motor"));
     const auto id = session()->parameters()->deviceValue(kId);

@@ -1,6 +1,7 @@
 #include "pages/interpolationpage.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/fields/aboutbox.h"
 #include "widgets/fields/verticalscrollarea.h"
 #include "widgets/motion/patheditor.h"
@@ -64,7 +65,8 @@ InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
         if (k.endsWith(QLatin1String(".position")) && !m_positionTimer.isActive())
             m_positionTimer.start(); // x and y of one poll make one point of the trace
     });
-    connect(session, &DeviceSession::disconnected, m_preview, &InterpolationPreview::clearPosition);
+    connect(session->connection(), &SessionConnection::disconnected, m_preview,
+            &InterpolationPreview::clearPosition);
     retranslate();
     updatePreview();
 }

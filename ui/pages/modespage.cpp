@@ -4,6 +4,7 @@
 #include "base/writechangesdialog.h"
 #include "device/writereview.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/fields/aboutbox.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
@@ -170,8 +171,8 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
             refresh();
     });
     connect(session->parameters(), &ParameterStore::editsChanged, this, &ModesPage::refresh);
-    connect(session, &DeviceSession::linkStateChanged, this, &ModesPage::refresh);
-    connect(session, &DeviceSession::disconnected, this, &ModesPage::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, &ModesPage::refresh);
+    connect(session->connection(), &SessionConnection::disconnected, this, &ModesPage::refresh);
     retranslate();
 }
 
@@ -232,7 +233,8 @@ void ModesPage::confirmMode(int mode)
         refresh();
         return;
     }
-    if (!p || mode < 0 || mode >= kModeCount || !session()->isConnected() || deviceMode() == mode) {
+    if (!p || mode < 0 || mode >= kModeCount || !session()->connection()->isConnected() ||
+        deviceMode() == mode) {
         refresh();
         return;
     }
@@ -263,7 +265,7 @@ void ModesPage::confirmMode(int mode)
     m_confirmation = box;
     connect(box, &QMessageBox::finished, this, [this, p, mode](int result) {
         m_confirmation.clear();
-        if (result == QMessageBox::Yes && session()->isConnected())
+        if (result == QMessageBox::Yes && session()->connection()->isConnected())
             session()->write({ParameterWrite{p, mode}});
         refresh();
     });
@@ -279,7 +281,7 @@ void ModesPage::openWriteDialog()
 void ModesPage::refresh()
 {
     const std::optional<qint64> device = deviceMode();
-    const bool connected = session()->isConnected();
+    const bool connected = session()->connection()->isConnected();
     // While nothing is being asked the list shows what the controller holds.
     if (!m_confirmation) {
         const int index = device ? m_mode->findData(int(*device)) : -1;

@@ -6,6 +6,7 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/fields/aboutbox.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/parameterfield.h"
@@ -156,7 +157,8 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
         for (JogPanel *p : std::as_const(m_panels))
             p->letGo();
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &MotionPage::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &MotionPage::refresh);
     connect(session->parameters(), &ParameterStore::editsChanged, this, &MotionPage::refresh);
     connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
         if (k.startsWith(QLatin1String("homing.")) || k.startsWith(QLatin1String("io.out")) ||
@@ -210,7 +212,7 @@ void MotionPage::buildHoming(QWidget *content)
 
     connect(m_order, &HomingOrderEditor::rejected, this, &MotionPage::showBanner);
     connect(m_applyOrder, &QPushButton::clicked, this, [this] {
-        if (session()->isConnected())
+        if (session()->connection()->isConnected())
             session()->write(m_order->pendingWrites());
     });
     connect(m_homeAll, &QPushButton::clicked, this,
@@ -296,7 +298,7 @@ void MotionPage::showBannerOf(std::function<QString()> text)
 
 void MotionPage::sessionCommand(const QString &key)
 {
-    if (!session()->isConnected())
+    if (!session()->connection()->isConnected())
         return;
     if (key == QLatin1String("home_all") || key == QLatin1String("return_to_zero"))
         m_shown = Shown::Nothing;
@@ -337,7 +339,7 @@ QString MotionPage::homingStatus() const
 
 void MotionPage::refresh()
 {
-    const bool connected = session()->isConnected();
+    const bool connected = session()->connection()->isConnected();
     const bool sequence = session()->motion()->active(MotionKind::HomeInOrder).has_value() ||
                           session()->motion()->active(MotionKind::ReturnToZero).has_value();
     const bool jogging = m_jog->isBusy();

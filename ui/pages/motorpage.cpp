@@ -2,6 +2,7 @@
 
 #include "base/language.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/fields/derivedvalues.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
@@ -85,9 +86,11 @@ MotorPage::MotorPage(DeviceSession *session, int motor, QWidget *parent)
         if (m_keys.contains(k))
             updateDerived();
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &MotorPage::updateEnabled);
-    connect(session, &DeviceSession::connected, this, &MotorPage::updateEnabled);
-    connect(session, &DeviceSession::disconnected, this, &MotorPage::updateEnabled);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &MotorPage::updateEnabled);
+    connect(session->connection(), &SessionConnection::connected, this, &MotorPage::updateEnabled);
+    connect(session->connection(), &SessionConnection::disconnected, this,
+            &MotorPage::updateEnabled);
     updateEnabled();
     retranslate();
 }
@@ -148,7 +151,8 @@ void MotorPage::updateDerived()
 void MotorPage::updateEnabled()
 {
     // Stopping must never depend on anything but the link: no state, no edits, no busy flag.
-    m_stop->setEnabled(session()->isConnected() && !key(QStringLiteral("stop")).isEmpty());
+    m_stop->setEnabled(session()->connection()->isConnected() &&
+                       !key(QStringLiteral("stop")).isEmpty());
 }
 
 void MotorPage::retranslate()

@@ -2,6 +2,7 @@
 
 #include "device/statusrecorder.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "widgets/fields/wrappingrow.h"
 #include "widgets/plots/positionplot.h"
@@ -134,7 +135,7 @@ PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
         m_xy->clearMarker();
         m_fedUntilMs = -1;
     });
-    connect(session, &DeviceSession::disconnected, m_xy, &XYPlot::clearMarker);
+    connect(session->connection(), &SessionConnection::disconnected, m_xy, &XYPlot::clearMarker);
     retranslate();
 }
 

@@ -8,6 +8,7 @@
 #include "replay/replaybar.h"
 #include "replay/replayviews.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
@@ -107,8 +108,9 @@ ReplayMode::ReplayMode(DeviceSession *session, QWidget *window)
     connect(m_bar, &ReplayBar::deviceChosen, this, &ReplayMode::showDevice);
     connect(m_bar, &ReplayBar::closeRequested, this, &ReplayMode::close);
     // Connecting or opening a profile file is the way out too.
-    connect(session, &DeviceSession::linkStateChanged, this, [this] {
-        if (m_active && m_session->linkState() != DeviceSession::LinkState::Disconnected)
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, [this] {
+        if (m_active &&
+            m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
             close();
     });
     connect(session->parameters(), &ParameterStore::originChanged, this, [this] {
@@ -208,10 +210,10 @@ bool ReplayMode::refused(QString *why) const
 {
     if (m_opening)
         *why = tr("A session log is being opened already.");
-    else if (m_session->reconnector()->isActive())
+    else if (m_session->connection()->reconnector()->isActive())
         *why = tr("StepCom is trying to reconnect to the controller: cancel that before "
                   "replaying a log.");
-    else if (m_session->linkState() != DeviceSession::LinkState::Disconnected)
+    else if (m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
         *why = tr("Disconnect from the controller before replaying a log: a replay shows the "
                   "log's values where the controller's are.");
     else if (m_session->parameters()->isFile())

@@ -2,6 +2,7 @@
 
 #include "pages/plotpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessionlog.h"
 #include "support/replaylog.h"
@@ -96,7 +97,7 @@ void ReplayViews::stop()
     m_firstLine = -1;
     if (m_view) {
         m_view->setEarlier({});
-        m_view->setLog(m_session->traffic());
+        m_view->setLog(m_session->connection()->traffic());
     }
     m_traffic->clear();
     m_session->status()->recorder()->clear();

@@ -7,6 +7,7 @@
 #include "profile/profilefile.h"
 #include "report/machinereport.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/docks/devicelistdock.h"
 
 #include <QAction>
@@ -33,7 +34,8 @@ MachineActions::MachineActions(DeviceSession *session, QWidget *window)
     connect(m_apply, &QAction::triggered, this, &MachineActions::chooseApply);
     connect(m_dump, &QAction::triggered, this, &MachineActions::chooseDump);
     connect(m_report, &QAction::triggered, this, &MachineActions::chooseReport);
-    connect(session, &DeviceSession::linkStateChanged, this, &MachineActions::updateActions);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &MachineActions::updateActions);
     connect(session, &DeviceSession::deviceInViewChanged, this, &MachineActions::updateActions);
     connect(session, &DeviceSession::deviceStatusChanged, this, &MachineActions::updateActions);
     connect(&Language::instance(), &Language::changed, this, &MachineActions::retranslate);
@@ -66,7 +68,8 @@ void MachineActions::retranslate()
 
 void MachineActions::updateActions()
 {
-    const bool several = m_session->isConnected() && m_session->deviceIds().size() > 1;
+    const bool several =
+        m_session->connection()->isConnected() && m_session->deviceIds().size() > 1;
     m_apply->setEnabled(several);
     m_dump->setEnabled(several && !isBusy());
     m_report->setEnabled(several && !isBusy());
@@ -128,7 +131,7 @@ bool MachineActions::applyProfileFile(const QString &path)
 void MachineActions::sweep(const QString &what, const QList<const Parameter *> &params,
                            std::function<void(BusSweep *)> done)
 {
-    if (!m_session->isConnected() || isBusy()) {
+    if (!m_session->connection()->isConnected() || isBusy()) {
         Q_EMIT finished(false,
                         tr("%1: connect to the line first, and wait for what runs").arg(what));
         return;
@@ -183,7 +186,7 @@ void MachineActions::dumpIntoFolder(const QString &folder)
             }
             const BusDump::Saved saved =
                 BusDump::save(folder, m_session->map(), id, names.value(id), QString(), r.values,
-                              today, m_session->isSimulator());
+                              today, m_session->connection()->isSimulator());
             Q_EMIT finished(saved.ok(),
                             saved.ok() ? tr("id %1 saved to %2").arg(id).arg(saved.path)
                                        : tr("id %1 was not saved: %2").arg(id).arg(saved.error));
@@ -243,8 +246,8 @@ ReportInput MachineActions::sheet(int id, const QHash<QString, qint64> &values, 
     input.map = m_session->map();
     input.values = values;
     input.link = m_session->describeDevice(id);
-    input.simulator = m_session->isSimulator();
-    input.line = m_session->linkStats().lineText(id);
+    input.simulator = m_session->connection()->isSimulator();
+    input.line = m_session->connection()->linkStats().lineText(id);
     input.deviceId = id;
     input.title = name;
     input.date = QDateTime::currentDateTime();

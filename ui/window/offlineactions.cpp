@@ -8,6 +8,7 @@
 #include "report/commissioningreport.h"
 #include "report/reportinput.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QAction>
 #include <QDir>
@@ -55,7 +56,8 @@ OfflineActions::OfflineActions(DeviceSession *session, QWidget *window)
     connect(m_report, &QAction::triggered, this, &OfflineActions::chooseReport);
     connect(m_document, &ProfileDocument::changed, this, &OfflineActions::updateActions);
     connect(m_document, &ProfileDocument::leftForController, this, &OfflineActions::offerCompare);
-    connect(session, &DeviceSession::linkStateChanged, this, &OfflineActions::updateActions);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &OfflineActions::updateActions);
     retranslate();
     updateActions();
 }
@@ -101,7 +103,8 @@ void OfflineActions::retranslate()
 
 void OfflineActions::updateActions()
 {
-    const bool idle = m_session->linkState() == DeviceSession::LinkState::Disconnected;
+    const bool idle =
+        m_session->connection()->linkState() == SessionConnection::LinkState::Disconnected;
     const bool open = m_document->isOpen();
     m_new->setEnabled(idle);
     m_save->setEnabled(open);

@@ -8,6 +8,7 @@
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QAction>
 #include <QDate>
@@ -52,7 +53,8 @@ ProfileActions::ProfileActions(DeviceSession *session, QWidget *window)
     m_backups->setObjectName(QStringLiteral("backups"));
     m_backupDir = BackupStore::defaultDirectory();
     connect(m_backups, &QAction::triggered, this, &ProfileActions::showBackups);
-    connect(session, &DeviceSession::linkStateChanged, this, &ProfileActions::updateActions);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &ProfileActions::updateActions);
     connect(session->parameters(), &ParameterStore::valueChanged, this,
             &ProfileActions::updateActions);
     retranslate();
@@ -126,7 +128,7 @@ void ProfileActions::retranslate()
 
 void ProfileActions::updateActions()
 {
-    const bool connected = m_session->isConnected();
+    const bool connected = m_session->connection()->isConnected();
     m_saveFromDevice->setEnabled(connected);
     m_report->setEnabled(connected);
     m_backups->setEnabled(connected); // a backup is restored onto a controller
@@ -215,7 +217,8 @@ ProfileSaveDialog *ProfileActions::saveDialog() const
 QString ProfileActions::suggestedName() const
 {
     return ProfileSaveDialog::suggestName(
-        m_machine, m_session->isConnected() ? m_session->settings().deviceId : 0,
+        m_machine,
+        m_session->connection()->isConnected() ? m_session->connection()->settings().deviceId : 0,
         QDate::currentDate());
 }
 
@@ -278,7 +281,8 @@ void ProfileActions::setOfflineOpener(std::function<bool(const QString &)> opene
 
 bool ProfileActions::openFile(const QString &path)
 {
-    if (m_offlineOpener && m_session->linkState() == DeviceSession::LinkState::Disconnected) {
+    if (m_offlineOpener &&
+        m_session->connection()->linkState() == SessionConnection::LinkState::Disconnected) {
         const bool opened = m_offlineOpener(path);
         if (opened)
             addRecent(path);
@@ -325,7 +329,7 @@ void ProfileActions::showCompare(const Profile &profile, const QString &title)
 void ProfileActions::saveFromDeviceFile(const QString &path, const QString &name,
                                         const QString &notes)
 {
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         showErrors(tr("Save profile"), {tr("Connect to a controller first.")});
         return;
     }
@@ -346,8 +350,8 @@ void ProfileActions::saveFromDeviceFile(const QString &path, const QString &name
         profile.unsupported = r.unsupported; // not "missing" when the file is read again
         profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
         profile.notes = notes;
-        profile.deviceId = self->m_session->settings().deviceId;
-        profile.fromSimulator = self->m_session->isSimulator();
+        profile.deviceId = self->m_session->connection()->settings().deviceId;
+        profile.fromSimulator = self->m_session->connection()->isSimulator();
         profile.travelLimits = self->m_session->travelLimits();
         if (const QString e = ProfileFile::save(path, profile, self->m_session->map());
             !e.isEmpty()) {
@@ -382,9 +386,9 @@ bool ProfileActions::saveFromEditedFile(const QString &path, const QString &name
     Profile profile = Profile::fromValues(m_session->map(), values, true);
     profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
     profile.notes = notes;
-    if (m_session->isConnected()) {
-        profile.deviceId = m_session->settings().deviceId;
-        profile.fromSimulator = m_session->isSimulator();
+    if (m_session->connection()->isConnected()) {
+        profile.deviceId = m_session->connection()->settings().deviceId;
+        profile.fromSimulator = m_session->connection()->isSimulator();
     }
     profile.travelLimits = m_session->travelLimits();
     if (const QString e = ProfileFile::save(path, profile, m_session->map()); !e.isEmpty()) {
@@ -401,7 +405,7 @@ bool ProfileActions::saveFromEditedFile(const QString &path, const QString &name
 
 void ProfileActions::reportFile(const QString &path, const QString &notes)
 {
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         showErrors(tr("Commissioning report"), {tr("Connect to a controller first.")});
         return;
     }
@@ -421,10 +425,11 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         input.map = self->m_session->map();
         input.values = r.values;
         input.unsupported = r.unsupported;
-        input.link = self->m_session->settings().describe();
-        input.simulator = self->m_session->isSimulator();
-        input.line = self->m_session->linkStats().lineText(self->m_session->deviceInView());
-        input.deviceId = self->m_session->settings().deviceId;
+        input.link = self->m_session->connection()->settings().describe();
+        input.simulator = self->m_session->connection()->isSimulator();
+        input.line =
+            self->m_session->connection()->linkStats().lineText(self->m_session->deviceInView());
+        input.deviceId = self->m_session->connection()->settings().deviceId;
         input.notes = notes;
         input.date = QDateTime::currentDateTime();
         input.lastRead = input.date; // read just now, for this report

@@ -1,6 +1,7 @@
 // stepcomctl for a whole machine: every controller of the line in one report, every one saved
 // into one folder.
 #include "../ctlrunner.h"
+#include "session/parts/sessionconnection.h"
 
 #include "line/bussweep.h"
 #include "profile/busdump.h"
@@ -16,7 +17,7 @@ void CtlRunner::dumpIntoFolder(const QString &folder, const QHash<QString, qint6
     const int id = m_session->deviceInView();
     const BusDump::Saved saved =
         BusDump::save(folder, m_map, id, m_options.name, m_options.notes, values,
-                      QDate::currentDate(), m_session->isSimulator());
+                      QDate::currentDate(), m_session->connection()->isSimulator());
     if (!saved.ok()) {
         fail(UsageError, saved.error);
         return;
@@ -84,8 +85,8 @@ void CtlRunner::readMachine(const QString &failure,
             input.map = m_map;
             input.values = sweep->outcome(id).values;
             input.link = m_session->describeDevice(id);
-            input.simulator = m_session->isSimulator();
-            input.line = m_session->linkStats().lineText(id);
+            input.simulator = m_session->connection()->isSimulator();
+            input.line = m_session->connection()->linkStats().lineText(id);
             input.deviceId = id;
             input.date = now;
             input.lastRead = now; // one-shot: the flash state is not known

@@ -1,6 +1,7 @@
 // stepcomctl dump, diff, apply and report: CtlRunner's profile commands (docs/profiles.md).
 #include "../ctllinkadvice.h"
 #include "../ctlrunner.h"
+#include "session/parts/sessionconnection.h"
 
 #include "consolereader.h"
 
@@ -126,8 +127,8 @@ void CtlRunner::runDump()
             profile.name =
                 m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
             profile.notes = m_options.notes;
-            profile.deviceId = m_session->settings().deviceId;
-            profile.fromSimulator = m_session->isSimulator();
+            profile.deviceId = m_session->connection()->settings().deviceId;
+            profile.fromSimulator = m_session->connection()->isSimulator();
             if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
                 fail(DeviceError, e); // not done: the file could not be written
                 return;
@@ -135,7 +136,7 @@ void CtlRunner::runDump()
             m_result = QJsonObject{{QStringLiteral("file"), path},
                                    {QStringLiteral("parameters"), int(profile.values.size())}};
             m_out << tr("saved %n parameter(s) of %1 to %2", nullptr, int(profile.values.size()))
-                         .arg(m_session->settings().describe(), path)
+                         .arg(m_session->connection()->settings().describe(), path)
                   << Qt::endl;
             finish(Ok);
         });
@@ -419,7 +420,7 @@ bool CtlRunner::backupBeforeApply()
         return true;
     const BackupStore store;
     const BackupStore::Saved saved = store.save(m_map, m_beforeApply, BackupStore::Operation::Apply,
-                                                m_session->settings().describe());
+                                                m_session->connection()->settings().describe());
     if (!saved.ok()) {
         fail(DeviceError, tr("no backup of the controller's settings could be saved (%1): nothing "
                              "was written (--no-backup applies without one)")
@@ -502,10 +503,10 @@ void CtlRunner::runReport()
             input.map = m_map;
             input.values = r.values;
             input.unsupported = r.unsupported;
-            input.link = m_session->settings().describe();
-            input.simulator = m_session->isSimulator();
-            input.line = m_session->linkStats().lineText(m_session->deviceInView());
-            input.deviceId = m_session->settings().deviceId;
+            input.link = m_session->connection()->settings().describe();
+            input.simulator = m_session->connection()->isSimulator();
+            input.line = m_session->connection()->linkStats().lineText(m_session->deviceInView());
+            input.deviceId = m_session->connection()->settings().deviceId;
             input.title = m_options.name;
             input.notes = m_options.notes;
             input.date = QDateTime::currentDateTime();

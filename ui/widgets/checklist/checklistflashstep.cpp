@@ -2,6 +2,7 @@
 
 #include "profile/profile.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QHBoxLayout>
 #include <QPointer>
@@ -24,7 +25,7 @@ ChecklistFlashStep::ChecklistFlashStep(DeviceSession *session, WriteFlow *writes
     needsController(m_save);
     connect(m_save, &QPushButton::clicked, this, [this] {
         DeviceSession *s = this->session();
-        if (!s->isConnected()) {
+        if (!s->connection()->isConnected()) {
             setStatus(tr("Not connected: nothing was sent."));
             return;
         }

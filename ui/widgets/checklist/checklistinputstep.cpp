@@ -1,6 +1,7 @@
 #include "widgets/checklist/checklistinputstep.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 
 #include <QHBoxLayout>
@@ -107,7 +108,7 @@ QList<MotorWiring> ChecklistInputStep::wiring() const
 void ChecklistInputStep::startWatching()
 {
     const auto baseline = InputObservation::inputs(session()->map(), deviceValues(*session()));
-    if (!session()->isConnected() || !baseline) {
+    if (!session()->connection()->isConnected() || !baseline) {
         setStatus(tr("The inputs are not known yet: connect and wait for the status."));
         return;
     }

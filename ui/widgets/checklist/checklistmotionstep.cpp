@@ -3,6 +3,7 @@
 #include "motion/motionjudge.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -29,7 +30,7 @@ ChecklistMotionStep::ChecklistMotionStep(DeviceSession *session, WriteFlow *writ
     body()->addLayout(row);
     needsController(m_run);
     connect(m_run, &QPushButton::clicked, this, [this] {
-        if (!this->session()->isConnected()) {
+        if (!this->session()->connection()->isConnected()) {
             setStatus(tr("Not connected: nothing was sent."));
             return;
         }

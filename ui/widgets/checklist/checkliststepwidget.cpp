@@ -4,6 +4,7 @@
 #include "base/writechangesdialog.h"
 #include "base/writeflow.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -53,9 +54,9 @@ ChecklistStepWidget::ChecklistStepWidget(DeviceSession *session, WriteFlow *writ
     layout->addWidget(m_status);
     layout->addLayout(noteRow);
     layout->addStretch(1);
-    connect(session, &DeviceSession::linkStateChanged, this, [this] {
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, [this] {
         for (QPushButton *b : std::as_const(m_needsController))
-            b->setEnabled(m_session->isConnected());
+            b->setEnabled(m_session->connection()->isConnected());
     });
     connect(m_skip, &QPushButton::clicked, this, [this] {
         finishStep(StepResult::Skipped, {});
@@ -151,7 +152,7 @@ void ChecklistStepWidget::changeEvent(QEvent *event)
 void ChecklistStepWidget::needsController(QPushButton *button)
 {
     m_needsController << button;
-    button->setEnabled(m_session->isConnected());
+    button->setEnabled(m_session->connection()->isConnected());
 }
 
 } // namespace stepcom

@@ -5,6 +5,7 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "widgets/docks/devicelistsettings.h"
 
@@ -86,9 +87,12 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
         refresh();
         saveList();
     });
-    connect(m_session, &DeviceSession::connected, this, &DeviceListDock::onConnected);
-    connect(m_session, &DeviceSession::disconnected, this, [this] { m_connectedBefore = false; });
-    connect(m_session, &DeviceSession::linkStateChanged, this, &DeviceListDock::refresh);
+    connect(m_session->connection(), &SessionConnection::connected, this,
+            &DeviceListDock::onConnected);
+    connect(m_session->connection(), &SessionConnection::disconnected, this,
+            [this] { m_connectedBefore = false; });
+    connect(m_session->connection(), &SessionConnection::linkStateChanged, this,
+            &DeviceListDock::refresh);
     connect(m_session->status(), &SessionStatus::statusCycleFinished, this,
             &DeviceListDock::refresh);
     connect(m_session->motion()->references(), &ReferenceTracker::deviceChanged, this,
@@ -133,7 +137,8 @@ void DeviceListDock::setName(int id, const QString &name)
 void DeviceListDock::saveList() const
 {
     // Only a real line the session is on has a key.
-    if (!m_session->isConnected() || DeviceListSettings::lineKey(*m_session).isEmpty())
+    if (!m_session->connection()->isConnected() ||
+        DeviceListSettings::lineKey(*m_session).isEmpty())
         return;
     DeviceListSettings saved;
     saved.line = DeviceListSettings::lineKey(*m_session);
@@ -254,7 +259,7 @@ QString DeviceListDock::stateText(int id) const
             state = r.answering ? tr("answering") : tr("not answering");
         return r.restartAt.isEmpty() ? state : tr("%1; restarted %2").arg(state, r.restartAt);
     }
-    if (!m_session->isConnected())
+    if (!m_session->connection()->isConnected())
         return tr("not connected");
     // A motion followed on a device (in view or not) says more than "answering".
     if (const QList<MotionStart> moving = m_session->motion()->activeOn(id); !moving.isEmpty()) {
@@ -263,7 +268,7 @@ QString DeviceListDock::stateText(int id) const
             .arg(p ? p->label.text(Translators::current()) : moving.first().command);
     }
     if (id == m_session->deviceInView()) {
-        switch (m_session->health()->state()) {
+        switch (m_session->connection()->health()->state()) {
         case LinkHealth::State::Answering:
             return tr("answering (in view)");
         case LinkHealth::State::NotAnswering:
@@ -285,7 +290,7 @@ QString DeviceListDock::stateText(int id) const
 
 QString DeviceListDock::referencedText(int id) const
 {
-    if (m_replay || !m_session->isConnected())
+    if (m_replay || !m_session->connection()->isConnected())
         return tr("unknown");
     // References are followed on every device of the line.
     const QList<int> motors = m_session->motion()->references()->referencedMotors(id);

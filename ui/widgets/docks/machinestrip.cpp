@@ -6,6 +6,7 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/fields/elidedlabel.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/statetone.h"
@@ -151,11 +152,14 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     });
     connect(session->parameters(), &ParameterStore::originChanged, this,
             &MachineStrip::scheduleRefresh);
-    connect(session, &DeviceSession::linkStateChanged, this, &MachineStrip::scheduleRefresh);
-    connect(session, &DeviceSession::linkStatsChanged, this, &MachineStrip::scheduleRefresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &MachineStrip::scheduleRefresh);
+    connect(session->connection(), &SessionConnection::linkStatsChanged, this,
+            &MachineStrip::scheduleRefresh);
     connect(session, &DeviceSession::deviceInViewChanged, this, &MachineStrip::scheduleRefresh);
     connect(session, &DeviceSession::deviceIdsChanged, this, &MachineStrip::scheduleRefresh);
-    connect(session->health(), &LinkHealth::stateChanged, this, &MachineStrip::scheduleRefresh);
+    connect(session->connection()->health(), &LinkHealth::stateChanged, this,
+            &MachineStrip::scheduleRefresh);
     connect(session->motion()->references(), &ReferenceTracker::changed, this,
             &MachineStrip::scheduleRefresh);
     applyFonts();
@@ -258,7 +262,8 @@ QStringList MachineStrip::inputRoles(int n) const
 MachineStrip::Motion MachineStrip::motionOf(int motor, std::optional<qint64> running) const
 {
     // A replayed log's moment is known as a connected controller's is.
-    if (!running || !(m_session->isConnected() || m_session->parameters()->isReplay()))
+    if (!running ||
+        !(m_session->connection()->isConnected() || m_session->parameters()->isReplay()))
         return Motion::Unknown;
     if (*running)
         return Motion::Running;
@@ -280,7 +285,7 @@ void MachineStrip::refresh()
     const ParameterStore *store = m_session->parameters();
     const RegisterMap &map = m_session->map();
     const QString lang = Language::instance().current();
-    const bool connected = m_session->isConnected() || store->isReplay();
+    const bool connected = m_session->connection()->isConnected() || store->isReplay();
     const ReferenceTracker *references = m_session->motion()->references();
     for (int m = 0; m < m_motors.size(); ++m) {
         MotorView &v = m_motors[m];
@@ -363,7 +368,7 @@ void MachineStrip::endReplay()
 void MachineStrip::refreshLink()
 {
     StateTone tone = StateTone::Unknown;
-    LinkHealth::State state = m_session->health()->state();
+    LinkHealth::State state = m_session->connection()->health()->state();
     if (m_replay)
         state = !m_replay->linkUp     ? LinkHealth::State::Closed
                 : m_replay->answering ? LinkHealth::State::Answering
@@ -391,10 +396,10 @@ void MachineStrip::refreshLink()
                            : QString());
     m_link->setAccessibleName(tr("Link: %1").arg(m_link->text()));
     const int id = m_session->deviceInView();
-    const LinkStats &stats = m_session->linkStats();
+    const LinkStats &stats = m_session->connection()->linkStats();
     ElidedLabel *line = m_line;
-    const bool known =
-        (m_session->isConnected() && stats.answers > 0) || (m_replay && !m_replay->line.isEmpty());
+    const bool known = (m_session->connection()->isConnected() && stats.answers > 0) ||
+                       (m_replay && !m_replay->line.isEmpty());
     line->setFullText(m_replay ? (known ? m_replay->line : kUnknown)
                       : known  ? stats.lineText(id)
                                : kUnknown);

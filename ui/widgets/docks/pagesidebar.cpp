@@ -3,6 +3,7 @@
 #include "device/parameterstore.h"
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/docks/pagesidebardelegate.h"
 #include "widgets/fields/lineicon.h"
 
@@ -59,8 +60,10 @@ PageSidebar::PageSidebar(DeviceSession *session, QWidget *parent)
             setCurrentItem(chosen.first());
     });
     connect(session->parameters(), &ParameterStore::editsChanged, this, &PageSidebar::refresh);
-    connect(session->health(), &LinkHealth::stateChanged, this, &PageSidebar::refresh);
-    connect(session, &DeviceSession::linkStateChanged, this, &PageSidebar::refresh);
+    connect(session->connection()->health(), &LinkHealth::stateChanged, this,
+            &PageSidebar::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &PageSidebar::refresh);
 }
 
 void PageSidebar::addPage(Page *page)
@@ -135,7 +138,7 @@ int PageSidebar::editCount(int page) const
 bool PageSidebar::isOffline(int page) const
 {
     return page >= 0 && page < m_pages.size() && m_pages.at(page)->needsDevice() &&
-           !m_session->health()->isAnswering();
+           !m_session->connection()->health()->isAnswering();
 }
 
 QString PageSidebar::stateText(int page) const
@@ -150,7 +153,8 @@ QString PageSidebar::stateText(int page) const
                               : tr("steps passed not known"));
     }
     if (isOffline(page))
-        parts << tr("needs a controller that answers (%1)").arg(m_session->health()->stateText());
+        parts << tr("needs a controller that answers (%1)")
+                     .arg(m_session->connection()->health()->stateText());
     return parts.join(QStringLiteral("; "));
 }
 

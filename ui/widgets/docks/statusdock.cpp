@@ -4,6 +4,7 @@
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/fields/led.h"
 
 #include <QEvent>
@@ -129,7 +130,8 @@ StatusDock::StatusDock(DeviceSession *session, QWidget *parent)
             m_runningKeys.contains(key))
             scheduleRefresh();
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &StatusDock::scheduleRefresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &StatusDock::scheduleRefresh);
     connect(session->motion()->references(), &ReferenceTracker::changed, this,
             &StatusDock::scheduleRefresh);
     retranslate();

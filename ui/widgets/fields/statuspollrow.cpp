@@ -1,6 +1,7 @@
 #include "widgets/fields/statuspollrow.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 
 #include <QComboBox>
@@ -45,7 +46,8 @@ StatusPollRow::StatusPollRow(DeviceSession *session, QWidget *parent)
         m_session->status()->setIntervalMs(ms);
         QSettings().setValue(QStringLiteral("monitor/pollIntervalMs"), ms);
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &StatusPollRow::refreshRate);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &StatusPollRow::refreshRate);
     connect(&m_rateTimer, &QTimer::timeout, this, &StatusPollRow::refreshRate);
     m_rateTimer.start(1000);
     retranslate();
@@ -66,13 +68,13 @@ void StatusPollRow::changeEvent(QEvent *event)
 void StatusPollRow::refreshRate()
 {
     const double rate = m_session->status()->rate();
-    if (!m_session->isConnected() || !m_session->status()->isActive())
+    if (!m_session->connection()->isConnected() || !m_session->status()->isActive())
         m_rate->setText(tr("unknown"));
     else if (rate <= 0.0)
         m_rate->setText(tr("measuring…"));
     else
         m_rate->setText(tr("%1 Hz").arg(rate, 0, 'f', 1));
-    m_rate->setEnabled(m_session->isConnected());
+    m_rate->setEnabled(m_session->connection()->isConnected());
     m_rate->setAccessibleName(tr("Status updates: %1").arg(m_rate->text()));
 }
 

@@ -6,6 +6,7 @@
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/motion/jogbutton.h"
@@ -131,7 +132,7 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
             refresh();
     });
     connect(session->parameters(), &ParameterStore::editsChanged, this, &JogPanel::refresh);
-    connect(session, &DeviceSession::linkStateChanged, this, &JogPanel::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, &JogPanel::refresh);
     MotionSupervisor *motion = session->motion();
     connect(motion, &MotionSupervisor::changed, this, &JogPanel::refresh);
     connect(motion, &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
@@ -179,7 +180,7 @@ void JogPanel::letGo()
 void JogPanel::applySpeed()
 {
     const Parameter *p = param(QStringLiteral("speed"));
-    if (!p || !m_session->isConnected())
+    if (!p || !m_session->connection()->isConnected())
         return;
     if (const auto edited = m_session->parameters()->entry(p->key).edited)
         m_session->write({{p, *edited}}); // verified by read-back, like "Write changes"
@@ -187,7 +188,7 @@ void JogPanel::applySpeed()
 
 void JogPanel::command(const QString &localKey)
 {
-    if (const QString k = key(localKey); !k.isEmpty() && m_session->isConnected()) {
+    if (const QString k = key(localKey); !k.isEmpty() && m_session->connection()->isConnected()) {
         m_session->command(k);
     }
 }
@@ -201,7 +202,7 @@ bool JogPanel::motorBusy() const
 
 QString JogPanel::moveBlocker() const
 {
-    if (!m_session->isConnected())
+    if (!m_session->connection()->isConnected())
         return tr("Not connected.");
     const QString lang = Language::instance().current();
     QStringList unknown;
@@ -291,7 +292,7 @@ QString JogPanel::referenceText() const
 
 void JogPanel::refresh()
 {
-    const bool connected = m_session->isConnected();
+    const bool connected = m_session->connection()->isConnected();
     const ParameterStore *store = m_session->parameters();
     const auto running = store->deviceValue(key(QStringLiteral("running")));
     m_led->setState(!running ? Led::State::Unknown : *running ? Led::State::On : Led::State::Off);

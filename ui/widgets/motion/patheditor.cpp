@@ -4,6 +4,7 @@
 #include "motion/motionjudge.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
 
@@ -138,9 +139,9 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
             update();
     });
     connect(store, &ParameterStore::editsChanged, this, &PathEditor::update);
-    connect(session, &DeviceSession::linkStateChanged, this, &PathEditor::update);
-    connect(session, &DeviceSession::connected, this, &PathEditor::update);
-    connect(session, &DeviceSession::disconnected, this, &PathEditor::update);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, &PathEditor::update);
+    connect(session->connection(), &SessionConnection::connected, this, &PathEditor::update);
+    connect(session->connection(), &SessionConnection::disconnected, this, &PathEditor::update);
     connect(session->motion(), &MotionSupervisor::changed, this, &PathEditor::update);
     connect(session->motion(), &MotionSupervisor::emergencyStopSent, this, [this] {
         m_startSent.stop(); // nothing waits for a start any more
@@ -215,7 +216,7 @@ std::optional<QPointF> PathEditor::position() const
     const RegisterMap &map = m_session->map();
     const Parameter *x = map.blockParameter(QStringLiteral("motor"), 1, QStringLiteral("position"));
     const Parameter *y = map.blockParameter(QStringLiteral("motor"), 2, QStringLiteral("position"));
-    if (!x || !y || !m_session->isConnected())
+    if (!x || !y || !m_session->connection()->isConnected())
         return std::nullopt;
     const auto rx = m_session->parameters()->deviceValue(x->key);
     const auto ry = m_session->parameters()->deviceValue(y->key);
@@ -245,7 +246,7 @@ std::optional<interpolation::Approach> PathEditor::approach(const Geometry &g) c
 
 QString PathEditor::startBlockedReason() const
 {
-    if (!m_session->isConnected())
+    if (!m_session->connection()->isConnected())
         return tr("Not connected.");
     const ParameterStore *store = m_session->parameters();
     for (const ParameterField *f : m_form->fields()) {
@@ -343,7 +344,7 @@ void PathEditor::update()
         }
     }
 
-    const bool connected = m_session->isConnected();
+    const bool connected = m_session->connection()->isConnected();
     if (anyMotorRunning() || !connected)
         m_startSent.stop(); // the poll saw it start
     const QString reason = startBlockedReason();

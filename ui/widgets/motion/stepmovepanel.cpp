@@ -3,6 +3,7 @@
 #include "motion/travellimits.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -85,7 +86,8 @@ StepMovePanel::StepMovePanel(DeviceSession *session, int motor, QWidget *parent)
             m_result->setText(r.text);
         refresh();
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &StepMovePanel::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &StepMovePanel::refresh);
     connect(session->parameters(), &ParameterStore::editsChanged, this, &StepMovePanel::refresh);
     connect(session->motion(), &MotionSupervisor::changed, this, &StepMovePanel::refresh);
     retranslate();

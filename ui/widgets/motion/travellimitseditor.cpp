@@ -2,6 +2,7 @@
 
 #include "motion/travellimits.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 
 #include <QCheckBox>
@@ -78,7 +79,8 @@ TravelLimitsEditor::TravelLimitsEditor(DeviceSession *session, QWidget *parent)
         if (k.endsWith(QLatin1String(".speed")) || k.endsWith(QLatin1String(".pitch")))
             refreshOverrun();
     });
-    connect(session, &DeviceSession::linkStatsChanged, this, &TravelLimitsEditor::refreshOverrun);
+    connect(session->connection(), &SessionConnection::linkStatsChanged, this,
+            &TravelLimitsEditor::refreshOverrun);
     retranslate();
     showLimits();
 }
@@ -161,7 +163,7 @@ QString TravelLimitsEditor::overrunText(int motor) const
         return {};
     const auto rpm = m_session->parameters()->deviceValue(speed->key);
     const auto p = m_session->parameters()->deviceValue(pitch->key);
-    const qint64 roundTrip = m_session->linkStats().maxRoundTripMs;
+    const qint64 roundTrip = m_session->connection()->linkStats().maxRoundTripMs;
     if (!rpm || !p || roundTrip < 0)
         return tr("How far a jog can overrun a limit is worked out once the speed and pitch are "
                   "read and the link has answered.");
