@@ -7,6 +7,7 @@
 #include "device/readplanner.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/host/simhost.h"
@@ -125,7 +126,7 @@ void measureReadAll(DeviceSession &session, LinkWatch &watch, const BenchConfig 
         auto state = std::make_shared<State>();
         const int before = watch.dispatched;
         state->clock.start();
-        session.readAll([state](const ReadOutcome &o) {
+        session.parameters()->readAll([state](const ReadOutcome &o) {
             state->ms = double(state->clock.nsecsElapsed()) / 1e6;
             state->outcome = o;
             state->done = true;
@@ -248,7 +249,8 @@ BaudResult measureBaud(int baud, const BenchConfig &config, int answerDelayMs, b
     session.status()->setIntervalMs(0); // full rate
     LinkWatch watch(session);
     bool read = false;
-    QObject::connect(&session, &DeviceSession::readFinished, &session, [&read] { read = true; });
+    QObject::connect(session.parameters(), &SessionParameters::readFinished, &session,
+                     [&read] { read = true; });
     LinkSettings settings;
     settings.portName = host.rtuPath();
     settings.baud = baud;
@@ -297,10 +299,11 @@ GapResult measureGapRefusing(int baud, const BenchConfig &config)
     LinkWatch watch(session);
     bool read = false;
     bool readOk = false;
-    QObject::connect(&session, &DeviceSession::readFinished, &session, [&](bool ok) {
-        read = true;
-        readOk = ok;
-    });
+    QObject::connect(session.parameters(), &SessionParameters::readFinished, &session,
+                     [&](bool ok) {
+                         read = true;
+                         readOk = ok;
+                     });
     LinkSettings settings;
     settings.portName = host.rtuPath();
     settings.baud = baud;

@@ -8,6 +8,7 @@
 #include "session/buspoller.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/host/simhost.h"
@@ -63,7 +64,7 @@ struct Line
             d->setValue(QStringLiteral("device.baud"), baud);
         session = std::make_unique<DeviceSession>();
         session->setLive(live);
-        session->setDeviceIds(ids);
+        session->line()->setDeviceIds(ids);
         session->status()->setIntervalMs(0); // full rate
         LinkSettings settings;
         settings.portName = host.rtuPath();
@@ -129,7 +130,7 @@ EstopAllResult measureEstopAll(int baud, int devices, const BenchConfig &config,
         return e;
     }
     DeviceSession &session = *line.session;
-    session.setBackgroundIntervalMs(500);
+    session.line()->setBackgroundIntervalMs(500);
     ModbusLink *link = SessionInternals::link(session);
     const Parameter *estop = session.map().find(QStringLiteral("estop"));
     QHash<quint64, std::pair<Clock::time_point, bool>> started; // request id -> (when, E-STOP)

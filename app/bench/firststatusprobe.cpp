@@ -6,6 +6,7 @@
 #include "device/poller.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // requests are watched on the link
 #include "sim/host/simhost.h"
@@ -53,7 +54,7 @@ FirstStatusResult measureFirstStatus(int baud, int runs)
             session.status(), &SessionStatus::statusCycleFinished, &session, [&](bool ok) {
                 if (!ok || !opened || shown)
                     return;
-                const ParameterStore *store = session.parameters();
+                const ParameterStore *store = session.parameters()->store();
                 shown =
                     std::all_of(positions.cbegin(), positions.cend(), [store](const QString &k) {
                         return store->deviceValue(k).has_value();

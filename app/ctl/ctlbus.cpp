@@ -3,6 +3,7 @@
 #include "ctlrunner.h"
 #include "ctlscan.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include "line/idchange.h"
 #include "sim/host/builtinsimulator.h"
@@ -81,7 +82,7 @@ void CtlRunner::runForCurrentId()
             QStringLiteral("%1-id%2%3").arg(info.baseName()).arg(id).arg(suffix));
     }
     if (m_session && m_session->connection()->isConnected())
-        m_session->showDevice(id);
+        m_session->line()->showDevice(id);
     (this->*m_chosen->run)();
 }
 

@@ -3,6 +3,8 @@
 #include "ctlmonitor.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "signalwatcher.h"
 
 #include <algorithm>
@@ -85,9 +87,9 @@ void CtlBusMonitor::turn()
     const int id = m_ids.at(m_next);
     if (m_next == 0)
         m_round.restart();
-    m_session->showDevice(id); // the one-shot session reads nothing on its own when shown
+    m_session->line()->showDevice(id); // the one-shot session reads nothing on its own when shown
     const quint64 generation = m_generation;
-    m_session->read(
+    m_session->parameters()->read(
         m_params, [this, generation, id](const ReadOutcome &r) { onRead(generation, id, r); },
         Priority::Poll);
 }

@@ -2,6 +2,7 @@
 
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "signalwatcher.h"
@@ -203,7 +204,7 @@ QString CtlMonitor::valueFields(const QList<const Parameter *> &params,
 
 QString CtlMonitor::sampleLine(qint64 tMs) const
 {
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     return QLatin1Char('{') + timeFields(tMs) +
            valueFields(m_params, [store](const QString &key) { return store->deviceValue(key); }) +
            QLatin1Char('}');

@@ -1,5 +1,7 @@
 #include "ctlrunner.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include "ctlbusmonitor.h"
 #include "ctllinkadvice.h"
@@ -307,7 +309,7 @@ void CtlRunner::connectThen(std::function<void()> next)
                 m_err << QStringLiteral("stepcomctl: ") << tr("note: %1").arg(text) << Qt::endl;
             });
     if (isMulti())
-        m_session->setDeviceIds(m_options.ids);
+        m_session->line()->setDeviceIds(m_options.ids);
     if (m_options.verbose) {
         connect(m_session->connection()->traffic(), &TrafficLog::entryAdded, this,
                 [](const TrafficEntry &e) {
@@ -420,7 +422,7 @@ void CtlRunner::runRead()
     if (params.isEmpty())
         params = m_map.holdings();
     connectThen([this, params] {
-        m_session->read(params, [this, params](const ReadOutcome &r) {
+        m_session->parameters()->read(params, [this, params](const ReadOutcome &r) {
             if (m_options.json) {
                 QJsonObject o;
                 for (const Parameter *p : params) {

@@ -9,6 +9,7 @@
 #include "replay/replaymode.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
 #include "shooter.h"
@@ -65,7 +66,7 @@ void editing(Shooter &s)
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("offline-editing")), page);
     script.then([&s] {
-        s.session()->parameters()->revertAll();
+        s.session()->parameters()->store()->revertAll();
         s.window()->offlineActions()->closeFile();
     });
 }
@@ -101,15 +102,15 @@ void replay(Shooter &s)
     });
     script.waitFor(QStringLiteral("the read-all of the recorded session"), [&s] {
         return s.session()->connection()->isConnected() &&
-               s.session()->parameters()->deviceValue(QStringLiteral("motor1.position"));
+               s.session()->parameters()->store()->deviceValue(QStringLiteral("motor1.position"));
     });
     script.then([&s, speed, written] {
-        *written = s.session()->parameters()->deviceValue(speed).value_or(300) + 50;
-        s.session()->parameters()->edit(speed, *written);
-        s.session()->writeChanges();
+        *written = s.session()->parameters()->store()->deviceValue(speed).value_or(300) + 50;
+        s.session()->parameters()->store()->edit(speed, *written);
+        s.session()->parameters()->writeChanges();
     });
     script.waitFor(QStringLiteral("the recorded write"), [&s, speed, written] {
-        return s.session()->parameters()->deviceValue(speed) == *written;
+        return s.session()->parameters()->store()->deviceValue(speed) == *written;
     });
     script.then([&s] { s.session()->stepMove()->start({StepMoveRequest::Kind::By, 1, 20.0, 0}); });
     script.sleep(300);

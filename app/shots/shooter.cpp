@@ -5,6 +5,7 @@
 #include "scenes.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "sim/host/builtinsimulator.h"
 #include "sim/host/simhost.h"
@@ -124,7 +125,7 @@ void Shooter::openWindow(const QString &language)
     m_sim = sim->host();
     m_session->setSimulator(std::move(sim));
     m_readOk = false;
-    connect(m_session.get(), &DeviceSession::readFinished, this, [this](bool ok) {
+    connect(m_session->parameters(), &SessionParameters::readFinished, this, [this](bool ok) {
         if (ok)
             m_readOk = true;
     });

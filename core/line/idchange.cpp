@@ -3,6 +3,7 @@
 #include "map/parameter.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include <QPointer>
 #include <QTimer>
@@ -56,7 +57,7 @@ void IdChange::probe(int id, void (IdChange::*then)(const ReadOutcome &, bool ga
 {
     const quint64 crcBefore = m_session->connection()->linkStats().crcErrors;
     QPointer<IdChange> self(this);
-    m_session->readAt(id, {m_idParam}, [self, then, crcBefore](const ReadOutcome &r) {
+    m_session->line()->readAt(id, {m_idParam}, [self, then, crcBefore](const ReadOutcome &r) {
         if (!self)
             return;
         // Two controllers answering at once garble each other's answers: CRC errors.
@@ -103,12 +104,12 @@ void IdChange::onTargetProbed(const ReadOutcome &r, bool garbled)
 void IdChange::writeId()
 {
     // The session writes to the device in view: put `from` there (on the list if need be).
-    QList<int> ids = m_session->deviceIds();
+    QList<int> ids = m_session->line()->deviceIds();
     if (!ids.contains(m_from)) {
         ids.append(m_from);
-        m_session->setDeviceIds(ids);
+        m_session->line()->setDeviceIds(ids);
     }
-    m_session->showDevice(m_from);
+    m_session->line()->showDevice(m_from);
     Q_EMIT progress(tr("Writing id %1 to the controller at id %2").arg(m_to).arg(m_from));
     changeLink(m_to, m_session->connection()->settings().baud, &IdChange::onIdWritten);
 }
@@ -116,16 +117,16 @@ void IdChange::writeId()
 void IdChange::changeLink(int id, int baud, void (IdChange::*then)(bool, const QString &))
 {
     dropConnections();
-    m_changed = connect(m_session, &DeviceSession::linkChanged, this, [this, then] {
+    m_changed = connect(m_session->line(), &SessionLine::linkChanged, this, [this, then] {
         dropConnections();
         (this->*then)(true, QString());
     });
-    m_changeFailed = connect(m_session, &DeviceSession::linkChangeFailed, this,
+    m_changeFailed = connect(m_session->line(), &SessionLine::linkChangeFailed, this,
                              [this, then](const LinkSettings &, const QString &reason) {
                                  dropConnections();
                                  (this->*then)(false, reason);
                              });
-    m_session->changeLink(id, baud);
+    m_session->line()->changeLink(id, baud);
 }
 
 void IdChange::onIdWritten(bool ok, const QString &reason)
@@ -136,14 +137,14 @@ void IdChange::onIdWritten(bool ok, const QString &reason)
         return;
     }
     // The list names the controller by its new id, in the place the old one had.
-    QList<int> ids = m_session->deviceIds();
+    QList<int> ids = m_session->line()->deviceIds();
     ids.removeAll(m_to);
     const qsizetype at = ids.indexOf(m_from);
     if (at >= 0)
         ids[at] = m_to;
     else
         ids.append(m_to);
-    m_session->setDeviceIds(ids);
+    m_session->line()->setDeviceIds(ids);
     checkOldIdSilent();
 }
 

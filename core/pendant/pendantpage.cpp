@@ -5,6 +5,8 @@
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -140,7 +142,7 @@ QJsonObject PendantPage::status(const DeviceSession &session, const QString &lan
                                 const std::function<QString(int)> &namer)
 {
     const RegisterMap &map = session.map();
-    const ParameterStore *store = session.parameters();
+    const ParameterStore *store = session.parameters()->store();
     const bool connected = session.connection()->isConnected();
     const ReferenceTracker *references = session.motion()->references();
     const auto value = [&](const QString &key) {
@@ -184,7 +186,7 @@ QJsonObject PendantPage::status(const DeviceSession &session, const QString &lan
             a.append(optional(value(QString::fromLatin1(pattern).arg(n))));
         return a;
     };
-    const int id = session.deviceInView();
+    const int id = session.line()->deviceInView();
     QJsonObject device{{QStringLiteral("id"), id}};
     if (const QString name = namer ? namer(id) : QString(); !name.isEmpty())
         device.insert(QStringLiteral("name"), name);

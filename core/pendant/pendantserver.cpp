@@ -8,6 +8,7 @@
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 #include "session/parts/sessionstatus.h"
 
 #include <QJsonDocument>
@@ -63,7 +64,7 @@ PendantServer::PendantServer(DeviceSession *session, QObject *parent)
             &PendantServer::schedulePush);
     connect(session->connection(), &SessionConnection::linkStateChanged, this,
             &PendantServer::schedulePush);
-    connect(session, &DeviceSession::deviceInViewChanged, this, &PendantServer::schedulePush);
+    connect(session->line(), &SessionLine::deviceInViewChanged, this, &PendantServer::schedulePush);
     connect(session->connection()->health(), &LinkHealth::stateChanged, this,
             &PendantServer::schedulePush);
     connect(session->motion()->references(), &ReferenceTracker::changed, this,

@@ -2,6 +2,7 @@
 
 #include "profile/backupstore.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionline.h"
 
 #include <QTimer>
 
@@ -58,7 +59,7 @@ void ProfileRollout::compareNext()
     const int id = m_devices.at(m_index).id;
     const quint64 generation = m_generation;
     QPointer<ProfileRollout> self(this); // the dialog holding it may be gone by the answer
-    m_session->readDevice(
+    m_session->line()->readDevice(
         id, Profile::profileParameters(m_session->map(), true),
         [this, self, generation](const ReadOutcome &r) {
             if (!self || generation != m_generation)
@@ -158,7 +159,7 @@ void ProfileRollout::applyNext()
     const BackupStore::Saved saved =
         BackupStore(m_backupDir)
             .save(m_session->map(), d.before, BackupStore::Operation::Apply,
-                  m_session->describeDevice(d.id));
+                  m_session->line()->describeDevice(d.id));
     if (!saved.ok()) {
         end(d, RolloutDevice::State::Failed,
             tr("no backup of its settings could be saved (%1): nothing was written")
@@ -169,7 +170,7 @@ void ProfileRollout::applyNext()
     d.backup = saved.path;
     const quint64 generation = m_generation;
     QPointer<ProfileRollout> self(this);
-    m_session->writeDevice(
+    m_session->line()->writeDevice(
         d.id, writes, [this, self, generation, writes, next](const WriteOutcome &w) {
             if (!self || generation != m_generation)
                 return;

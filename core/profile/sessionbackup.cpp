@@ -1,5 +1,6 @@
 #include "profile/sessionbackup.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include "profile/profile.h"
 
@@ -36,7 +37,7 @@ void SessionBackup::save(DeviceSession *session, const BackupStore &store, Devic
     const QList<const Parameter *> params = settings(session->map());
     QHash<QString, qint64> known;
     for (const Parameter *p : params) {
-        if (const auto v = session->parameters()->deviceValue(p->key))
+        if (const auto v = session->parameters()->store()->deviceValue(p->key))
             known.insert(p->key, *v);
     }
     const BackupStore::Operation op = operation(risk);
@@ -47,7 +48,7 @@ void SessionBackup::save(DeviceSession *session, const BackupStore &store, Devic
     }
     // Not all known: read them (at command priority: the user is waiting for the operation).
     QPointer<DeviceSession> guard(session);
-    session->read(
+    session->parameters()->read(
         params,
         [guard, store, op, device, done](const ReadOutcome &r) {
             BackupStore::Saved saved;

@@ -11,6 +11,8 @@
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "session/simulatorstarter.h"
@@ -25,8 +27,10 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     : QObject(parent)
     , m_link(new ModbusLink(this))
     , m_connection(new SessionConnection(this))
+    , m_line(new SessionLine(this))
     , m_client(new DeviceClient(m_link, map, this))
     , m_store(new ParameterStore(map, this))
+    , m_parameters(new SessionParameters(this, m_store))
     , m_poller(new Poller(m_client, m_store, this))
     , m_status(new SessionStatus(m_poller, m_store, this))
     , m_motion(new MotionSupervisor(this, m_link)) // before the jog controller, which follows it
@@ -41,13 +45,13 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             [this](int id, const MotionOutcome &o) {
                 const QString text = m_motion->text(o);
                 say(o.ok() ? Severity::Info : Severity::Warning,
-                    deviceIds().size() > 1 ? tr("Device %1: %2").arg(id).arg(text) : text);
+                    m_line->deviceIds().size() > 1 ? tr("Device %1: %2").arg(id).arg(text) : text);
             });
     m_poller->useStatusKeys(); // the full status; positions and running while a motor runs
     m_poller->setIntervalMs(Poller::intervalFromEnvironment(100));
     m_bus->setKeys(m_poller->keys());
     watchRestarts(); // sees each status before the motion supervisor judges a motion from it
-    connect(m_bus, &BusPoller::statusChanged, this, &DeviceSession::deviceStatusChanged);
+    connect(m_bus, &BusPoller::statusChanged, m_line, &SessionLine::deviceStatusChanged);
     m_link->traffic()->setMap(&m_client->map());
     connect(m_link, &ModbusLink::opened, this, &DeviceSession::onOpened);
     connect(m_link, &ModbusLink::stateChanged, m_connection, &SessionConnection::linkStateChanged);
@@ -66,14 +70,14 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     connect(m_poller, &Poller::cycleFinished, this, [this](bool ok, qint64 ms) {
         Q_EMIT m_status->statusCycleFinished(ok, ms);
         if (std::exchange(m_readAllAfterStatus, false))
-            readAll();
+            m_parameters->readAll();
     });
     connect(m_client, &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
     // The background poll plans with, and learns into, the same per-id limits.
     m_client->shareReadLimits(m_bus->client());
     connect(m_bus->client(), &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
     connect(m_poller, &Poller::cycleFinished, this, [this](bool ok) {
-        m_bus->noteLiveCycle(deviceInView(), ok, *m_store, m_poller->lastError());
+        m_bus->noteLiveCycle(m_line->deviceInView(), ok, *m_store, m_poller->lastError());
     });
     m_reconnector = new Reconnector(this);
     connect(m_reconnector, &Reconnector::reopen, this, &DeviceSession::reopen);
@@ -115,87 +119,6 @@ void DeviceSession::say(Severity severity, const QString &text)
     Q_EMIT message(severity, text);
 }
 
-void DeviceSession::readAll()
-{
-    const int id = deviceInView();
-    m_client->readAll([this, id](const ReadOutcome &r) {
-        if (id != deviceInView()) {
-            // Another device was shown meanwhile: its blocks went to that one, none is sure.
-            Q_EMIT readFinished(false);
-            return;
-        }
-        m_store->setDeviceValues(r.values);
-        if (!r.ok)
-            say(Severity::Error, tr("Reading failed: %1").arg(r.errors.join(QLatin1String("; "))));
-        else
-            say(Severity::Info, tr("Read %1 in %2", "%1: n parameters, %2: n requests")
-                                    .arg(tr("%n parameter(s)", nullptr, int(r.values.size())),
-                                         tr("%n request(s)", nullptr, r.reads)));
-        Q_EMIT readFinished(r.ok);
-    });
-}
-
-void DeviceSession::read(const QList<const Parameter *> &params,
-                         std::function<void(const ReadOutcome &)> done, Priority priority)
-{
-    m_client->read(params, priority, std::move(done));
-}
-
-void DeviceSession::readAll(std::function<void(const ReadOutcome &)> done)
-{
-    m_client->readAll(std::move(done));
-}
-
-void DeviceSession::writeChanges()
-{
-    write(m_store->pendingWrites());
-}
-
-void DeviceSession::write(const QList<ParameterWrite> &writes,
-                          std::function<void(const WriteOutcome &)> done)
-{
-    if (writes.isEmpty())
-        return;
-    const LinkSettings before = m_link->settings();
-    m_client->write(writes, [this, writes, before, done](const WriteOutcome &outcome) {
-        m_store->applyWriteOutcome(writes, outcome);
-        readBackUncertain(writes, outcome);
-        if (outcome.ok) {
-            say(Severity::Info,
-                tr("Wrote and verified %n parameter(s)", nullptr, int(outcome.written.size())));
-        } else {
-            for (const QString &e : outcome.errors)
-                say(Severity::Error, e);
-        }
-        // A write that carried device.id or device.baud (a profile applied with its link
-        // settings) moved the link: tell the pages, as changeLink() does.
-        const LinkSettings now = m_link->settings();
-        if (now.deviceId != before.deviceId || now.baud != before.baud)
-            Q_EMIT linkChanged(now);
-        if (done)
-            done(outcome);
-        Q_EMIT writeFinished(outcome);
-    });
-}
-
-void DeviceSession::readBackUncertain(const QList<ParameterWrite> &writes,
-                                      const WriteOutcome &outcome)
-{
-    QList<const Parameter *> uncertain; // sent, but failed: the store forgot their value
-    for (const ParameterWrite &w : writes) {
-        const QString &key = w.parameter->key;
-        bool mismatched = false;
-        for (const WriteMismatch &m : outcome.mismatches)
-            mismatched = mismatched || m.key == key;
-        if (!outcome.written.contains(key) && !outcome.notWritten.contains(key) && !mismatched)
-            uncertain << w.parameter;
-    }
-    if (uncertain.isEmpty() || !m_link->isConnected() || !m_live)
-        return;
-    m_client->read(uncertain, Priority::Command,
-                   [this](const ReadOutcome &r) { m_store->setDeviceValues(r.values); });
-}
-
 void DeviceSession::command(const QString &key)
 {
     const Parameter *p = map().find(key);
@@ -206,7 +129,8 @@ void DeviceSession::command(const QString &key)
     }
     const QString label = p->label.text(Translators::current());
     const bool motion = p->command == CommandClass::Motion;
-    const int id = deviceInView(); // the pulse goes to this one, whatever is shown by the answer
+    const int id =
+        m_line->deviceInView(); // the pulse goes to this one, whatever is shown by the answer
     command(*p, [this, key, label, motion, id](const Result &r) {
         // A moving command is only acknowledged here; MotionSupervisor says how it ended.
         if (r.ok && r.roundTripMs >= kSlowAnswerMs)
@@ -221,7 +145,7 @@ void DeviceSession::command(const QString &key)
             m_store->setUnsavedToFlash(false);
         if (r.ok && key == QLatin1String("factory_reset")) {
             m_store->setUnsavedToFlash(true); // factory values are in RAM; flash keeps the old ones
-            readAll([this](const ReadOutcome &all) { factoryResetReadBack(all); });
+            m_parameters->readAll([this](const ReadOutcome &all) { factoryResetReadBack(all); });
         }
         if (r.ok)
             m_motion->commandAcknowledged(id, key);
@@ -249,7 +173,7 @@ void DeviceSession::emergencyStop()
     }
     // Anything still waiting (polls, reads, queued moves) is stale after an emergency stop.
     m_link->cancelQueued(Priority::Command, tr("emergency stop"));
-    const QList<int> ids = deviceIds();
+    const QList<int> ids = m_line->deviceIds();
     if (ids.size() > 1) {
         emergencyStopAll(ids);
         return;
@@ -315,7 +239,7 @@ void DeviceSession::emergencyStopAll(const QList<int> &ids)
                 (r.ok ? tally->acknowledged : tally->notAcknowledged).append(id);
                 if (!r.ok)
                     tally->errors << r.errorText;
-                if (id == deviceInView() && r.ok)
+                if (id == m_line->deviceInView() && r.ok)
                     Q_EMIT commandFinished(QStringLiteral("estop"), true);
                 if (--tally->pending > 0)
                     return;
@@ -354,7 +278,7 @@ void DeviceSession::factoryResetReadBack(const ReadOutcome &r)
 {
     // What the controller holds now is shown, whatever it is; then compared with the factory.
     m_store->setDeviceValues(r.values);
-    Q_EMIT readFinished(r.ok);
+    Q_EMIT m_parameters->readFinished(r.ok);
     if (!r.ok) {
         say(Severity::Error, tr("Factory reset: reading it back failed: %1")
                                  .arg(r.errors.join(QLatin1String("; "))));
@@ -380,44 +304,28 @@ void DeviceSession::factoryResetReadBack(const ReadOutcome &r)
                                    .arg(differ.join(QLatin1String(", "))));
 }
 
-void DeviceSession::changeLink(int deviceId, int baud)
+void DeviceSession::updateBackground()
 {
-    const LinkSettings previous = m_link->settings();
-    QList<ParameterWrite> writes;
-    const Parameter *id = map().find(QStringLiteral("device.id"));
-    const Parameter *rate = map().find(QStringLiteral("device.baud"));
-    if (id && deviceId != previous.deviceId)
-        writes.append({id, deviceId});
-    if (rate && previous.transport == LinkSettings::Transport::Rtu && baud != previous.baud)
-        writes.append({rate, baud});
-    if (writes.isEmpty())
-        return;
-    const Risk risk = writes.first().parameter == id ? Risk::DeviceId : Risk::Baud;
-    guard(risk, [this, writes, previous](const QString &refusal) {
-        if (refusal.isEmpty()) {
-            writeLink(writes, previous);
-            return;
-        }
-        say(Severity::Error, refusal);
-        Q_EMIT linkChangeFailed(previous, refusal);
-    });
+    QList<int> others = m_line->deviceIds();
+    others.removeAll(m_line->deviceInView());
+    m_bus->setDevices(others);
 }
 
-void DeviceSession::writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous)
+void DeviceSession::setLive(bool live)
 {
-    m_client->write(writes, [this, writes, previous](const WriteOutcome &outcome) {
-        m_store->applyWriteOutcome(writes, outcome);
-        if (outcome.ok) {
-            say(Severity::Info,
-                tr("The controller answers at %1").arg(m_link->settings().describe()));
-            Q_EMIT linkChanged(m_link->settings());
-            return;
-        }
-        const QString reason = outcome.errors.join(QLatin1String("; "));
-        say(Severity::Error,
-            tr("The controller does not answer with the new settings: %1").arg(reason));
-        Q_EMIT linkChangeFailed(previous, reason);
-    });
+    if (std::exchange(m_live, live) == live)
+        return;
+    if (!live) {
+        m_poller->stop();
+        m_bus->stop();
+        return;
+    }
+    if (!m_link->isConnected())
+        return;
+    m_parameters->readAll();
+    m_poller->start();
+    updateBackground();
+    m_bus->start();
 }
 
 int DeviceSession::stopJogging(JogStop why)

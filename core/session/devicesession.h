@@ -28,6 +28,8 @@ class ModbusLink;
 class MotionSupervisor;
 class Reconnector;
 class SessionConnection;
+class SessionLine;
+class SessionParameters;
 class SessionStatus;
 class SimulatorStarter;
 class StepMove;
@@ -64,9 +66,10 @@ public:
 
     // -- Its parts and what it holds (devicesession.cpp) --
     const RegisterMap &map() const { return m_store->map(); }
-    // The values the session knows: what the controller holds and what the user edited. Pages
-    // and forms bind to this model; the session keeps it up to date.
-    ParameterStore *parameters() const { return m_store; }
+    // The values the session knows, what the controller holds and what the user edited (its
+    // store, the model pages and forms bind to), and reading and writing them
+    // (parts/sessionparameters.h).
+    SessionParameters *parameters() const { return m_parameters; }
     JogController *jog() const { return m_jog; }
     // The live status poll of the device in view and its recording (parts/sessionstatus.h).
     SessionStatus *status() const { return m_status; }
@@ -87,31 +90,19 @@ public:
     // -- Connection (its part: parts/sessionconnection.h; what the session does when the link
     // opens or drops: devicesessionconnect.cpp) --
     SessionConnection *connection() const { return m_connection; }
+    // The devices of its line, the one in view, and a new id or baud for it
+    // (parts/sessionline.h).
+    SessionLine *line() const { return m_line; }
     // Live (the default, as the window wants it): read everything after connecting, poll the
     // status while connected, read back what a failed write left uncertain. stepcomctl turns it
     // off, so a command puts on the wire only what it names.
     // Turning it off while connected stops the polls; on again reads everything and polls
-    // (devicesessionline.cpp).
+    // (devicesession.cpp).
     void setLive(bool live);
     bool isLive() const { return m_live; }
     // The built-in simulator, injected by programs that offer --sim (the session owns it).
     void setSimulator(std::unique_ptr<SimulatorStarter> simulator);
     SimulatorStarter *simulatorStarter() const { return m_sim.get(); }
-
-    // -- Reading and writing the device in view (devicesession.cpp) --
-    void readAll();
-    // Read these parameters (or all) and hand the outcome over; the store is left alone.
-    void read(const QList<const Parameter *> &params, std::function<void(const ReadOutcome &)> done,
-              Priority priority = Priority::Read);
-    void readAll(std::function<void(const ReadOutcome &)> done);
-    // Write every edit held in the store, verify, and update the store.
-    void writeChanges();
-    // `done` (optional) hears this write's outcome, after the store has taken it.
-    void write(const QList<ParameterWrite> &writes,
-               std::function<void(const WriteOutcome &)> done = {});
-    // Write a new device id and/or baud, follow the controller and verify it answers there.
-    // On failure `linkChangeFailed` offers the settings that worked before.
-    void changeLink(int deviceId, int baud);
 
     // -- Commands and stops (devicesession.cpp) --
     // Pulse a command coil by key, say how it went and emit commandFinished; emergency ones
@@ -126,46 +117,6 @@ public:
     // Stop every jog for this reason; returns how many stops were sent or scheduled.
     int stopJogging(JogStop why);
 
-    // -- Line of several (devicesessionline.cpp; a device not in view: sessiondevices.cpp) --
-    // Several controllers on one line (RS-485: one pair of wires, one id each). The link's
-    // device id is the device in view; the others' status is read at the background rate, and
-    // emergencyStop() reaches every one. Empty or one id: a single controller.
-    void setDeviceIds(const QList<int> &ids);
-    QList<int> deviceIds() const;
-    int deviceInView() const;
-    // Show another device of the list without reconnecting: a jog still held is stopped on the
-    // device it runs on, what the store holds is put aside for the device that was in view and
-    // `id`'s is put back at once (then read again), and the live poll moves to `id`. Motion
-    // supervision and references stay per device (MotionSupervisor). False (and a message) when
-    // `id` is not on the list or a step move still runs.
-    bool showDevice(int id);
-    // How often each device not in view has its status read.
-    void setBackgroundIntervalMs(int ms);
-    int backgroundIntervalMs() const;
-    // What the status polls saw of a device, in view or not (Unknown before its first read).
-    BusDeviceStatus deviceStatus(int id) const;
-    // The device values known of any device of the line: the store's for the device in view,
-    // else what was read while it was in view with the background poll's newer status on top.
-    QHash<QString, qint64> knownValues(int id) const;
-    // Read these parameters from the controller at `id`, whoever is in view; the store, the
-    // view and the device list are left alone (probes while ids are given).
-    void readAt(int id, const QList<const Parameter *> &params,
-                std::function<void(const ReadOutcome &)> done);
-    // Reopen the line at another baud without writing to any controller (serial lines only;
-    // elsewhere `done(true)` at once): while ids are given, new controllers arrive at 9600 and
-    // the ones already done listen at the common baud. `done` hears whether the port opened.
-    void setLineBaud(int baud, std::function<void(bool ok, const QString &reason)> done);
-    // Read or write a device of the line whether it is in view or not (sessiondevices.cpp):
-    // the device in view goes through read()/write() (its store follows); another one through
-    // a client addressed to its id, leaving the store alone. Link settings (device.id,
-    // device.baud) are refused for a device not in view: the link cannot follow it there.
-    void readDevice(int id, const QList<const Parameter *> &params,
-                    std::function<void(const ReadOutcome &)> done);
-    void writeDevice(int id, const QList<ParameterWrite> &writes,
-                     std::function<void(const WriteOutcome &)> done);
-    // The link as it reaches device `id` ("/dev/ttyUSB0 · 9600 8N1 · id 2").
-    QString describeDevice(int id) const;
-
     // -- Restarts (sessionrestart.cpp): controllerRestarted() and controllerMayHaveRestarted()
     // say it --
     // A status read of device `id` a front-end made itself rather than through the polls
@@ -176,10 +127,6 @@ public:
 Q_SIGNALS:
     // -- Reading and writing --
     void message(stepcom::DeviceSession::Severity severity, const QString &text);
-    void readFinished(bool ok);
-    void writeFinished(const stepcom::WriteOutcome &outcome);
-    void linkChanged(const stepcom::LinkSettings &settings);
-    void linkChangeFailed(const stepcom::LinkSettings &previous, const QString &reason);
     void travelLimitsChanged();
     // -- Commands and stops --
     void commandFinished(const QString &key, bool ok);
@@ -189,11 +136,6 @@ Q_SIGNALS:
     // emergencyStop() was asked for, before anything is cancelled or sent: work that runs
     // device after device (a profile applied to several) stops here.
     void emergencyStopRequested();
-    // -- Line of several --
-    void deviceInViewChanged(int id);
-    void deviceStatusChanged(int id);
-    // setDeviceIds() named other devices or another order.
-    void deviceIdsChanged(const QList<int> &ids);
     // -- Restarts --
     // Controller `id` restarted (power off?): what it read afterwards differs from what the
     // session held (`lost`: "motor1.speed 222 → 120 rpm"), or an axis that stood still went to
@@ -209,6 +151,8 @@ Q_SIGNALS:
 private:
     friend class SessionInternals;  // tests and the benchmark's link measurements
     friend class SessionConnection; // works on the session's link
+    friend class SessionLine;       // and on its devices
+    friend class SessionParameters; // and on its client
 
     void say(Severity severity, const QString &text);
     // -- Connection (devicesessionconnect.cpp) --
@@ -222,14 +166,9 @@ private:
     void learnt(int unit, ReadLimits::Lesson lesson, const QString &key);
     // -- Reading, writing, commands (devicesession.cpp) --
     void guardedCommand(Risk risk, const QString &key);
-    void writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous);
-    // After a failed write, read back what the controller holds for the keys whose request went
-    // out without a good answer.
-    void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
     // After a factory reset: show what it holds now, and say where that is not the factory's.
     void factoryResetReadBack(const ReadOutcome &r);
     void emergencyStopAll(const QList<int> &ids);
-    // -- Line of several (devicesessionline.cpp) --
     // The devices not in view, for the background poll.
     void updateBackground();
     // -- Restarts (sessionrestart.cpp) --
@@ -243,8 +182,10 @@ private:
 
     ModbusLink *m_link;
     SessionConnection *m_connection;
+    SessionLine *m_line;
     DeviceClient *m_client;
     ParameterStore *m_store;
+    SessionParameters *m_parameters;
     Poller *m_poller;
     SessionStatus *m_status;
     MotionSupervisor *m_motion; // made before the jog controller, which follows it

@@ -1,6 +1,6 @@
 // DeviceSession, its connection: what it does when the link opens, drops or comes back, and
 // what each controller of the line refuses to read (its part: parts/sessionconnection.cpp; the
-// devices of the line: devicesessionline.cpp).
+// devices of the line: parts/sessionline.cpp).
 #include "session/devicesession.h"
 
 #include "bus/modbuslink.h"
@@ -8,6 +8,7 @@
 #include "device/poller.h"
 #include "session/buspoller.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 #include "session/reconnector.h"
 #include "session/simulatorstarter.h"
 
@@ -98,12 +99,12 @@ void DeviceSession::learnt(int unit, ReadLimits::Lesson lesson, const QString &k
         text = tr("%1 (register %2) is not supported by this controller: it refuses to read it. "
                   "It is left out from now on.")
                    .arg(key, p ? p->registerName() : QString());
-        if (unit == deviceInView())
+        if (unit == m_line->deviceInView())
             m_store->setUnsupported(m_client->readLimits(unit).unsupported());
     }
     if (text.isEmpty())
         return;
-    if (deviceIds().size() > 1)
+    if (m_line->deviceIds().size() > 1)
         text = tr("Device id %1: %2").arg(unit).arg(text);
     say(Severity::Warning, text);
     Q_EMIT m_connection->readLimitsLearned(text);

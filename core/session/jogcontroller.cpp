@@ -1,5 +1,6 @@
 #include "session/jogcontroller.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 
 #include "session/motionsupervisor.h"
@@ -41,7 +42,8 @@ JogController::JogController(DeviceSession *session, QObject *parent)
         stopAtTravelLimits();
         for (int n = 1; n <= motorCount(); ++n) {
             if (at(n).state == State::StillRunning &&
-                m_session->parameters()->deviceValue(motorKey(n, QStringLiteral("running"))) == 0) {
+                m_session->parameters()->store()->deviceValue(
+                    motorKey(n, QStringLiteral("running"))) == 0) {
                 setState(n, State::Idle);
                 say(DeviceSession::Severity::Info, tr("Motor %1 has stopped now").arg(n));
             }
@@ -73,7 +75,7 @@ void JogController::stopAtTravelLimits()
         if (at(n).state != State::Jogging)
             continue;
         const auto pos =
-            m_session->parameters()->deviceValue(motorKey(n, QStringLiteral("position")));
+            m_session->parameters()->store()->deviceValue(motorKey(n, QStringLiteral("position")));
         const Parameter *p = TravelLimits::positionParameter(m_session->map(), n);
         if (!pos || !p)
             continue;
@@ -195,16 +197,16 @@ bool JogController::press(int motor, Direction direction, Source source)
         return false;
     }
     // A stop of ours in flight makes the last poll stale; otherwise trust it.
-    if (m.state != State::Stopping &&
-        m_session->parameters()->deviceValue(motorKey(motor, QStringLiteral("running"))) == 1) {
+    if (m.state != State::Stopping && m_session->parameters()->store()->deviceValue(
+                                          motorKey(motor, QStringLiteral("running"))) == 1) {
         say(Severity::Warning, tr("Motor %1 is moving (a single move, homing or another command): "
                                   "stop it before jogging")
                                    .arg(motor));
         return false;
     }
     // The software travel limits: an axis at or beyond one may only jog back.
-    if (const auto pos =
-            m_session->parameters()->deviceValue(motorKey(motor, QStringLiteral("position")));
+    if (const auto pos = m_session->parameters()->store()->deviceValue(
+            motorKey(motor, QStringLiteral("position")));
         pos && !m_session->travelLimits().isEmpty()) {
         const Parameter *p = TravelLimits::positionParameter(m_session->map(), motor);
         const QString why = m_session->travelLimits().refuseJog(
@@ -385,7 +387,7 @@ void JogController::checkRunning(int motor, quint64 generation, int retries)
         return;
     }
     ++m_checksInFlight;
-    m_session->read(
+    m_session->parameters()->read(
         {running},
         [self = QPointer<JogController>(this), motor, generation, key,
          retries](const ReadOutcome &o) {
@@ -406,7 +408,7 @@ void JogController::onRunningRead(int motor, quint64 generation, int retries, co
     }
     if (outcome.ok && outcome.values.contains(key)) {
         const qint64 value = outcome.values.value(key);
-        m_session->parameters()->setDeviceValues({{key, value}});
+        m_session->parameters()->store()->setDeviceValues({{key, value}});
         if (value == 0) {
             setState(motor, State::Idle);
             say(DeviceSession::Severity::Info,

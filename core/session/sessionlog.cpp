@@ -2,6 +2,7 @@
 
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -51,7 +52,7 @@ SessionLog::SessionLog(DeviceSession *session, QObject *parent)
             });
     connect(session, &DeviceSession::emergencyStopRequested, this,
             [mark] { mark(kUser, QStringLiteral("E-STOP pressed")); });
-    connect(session, &DeviceSession::deviceInViewChanged, this,
+    connect(session->line(), &SessionLine::deviceInViewChanged, this,
             [mark](int id) { mark(kUser, QStringLiteral("device in view: id %1").arg(id)); });
 }
 
@@ -223,7 +224,7 @@ QString SessionLog::header(const DeviceSession *session, int part, const QString
         line += QStringLiteral(" simulator=built-in (not a machine)");
     text += QStringLiteral("# line: %1\n").arg(line);
     QStringList ids;
-    for (const int id : session->deviceIds())
+    for (const int id : session->line()->deviceIds())
         ids << QString::number(id);
     if (ids.isEmpty())
         ids << QString::number(s.deviceId);

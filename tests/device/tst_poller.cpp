@@ -5,6 +5,7 @@
 #include "scripteddevice.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -71,7 +72,7 @@ class TestPoller : public QObject
     {
         session = std::make_unique<DeviceSession>();
         SessionInternals::poller(*session)->setIntervalMs(0);
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         test::useBuiltinSimulator(*session);
         session->connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
@@ -229,11 +230,14 @@ private Q_SLOTS:
                  qPrintable(QStringLiteral("%1 fast, %2 full").arg(fast).arg(full)));
         QVERIFY(poller->stats().fastCycles >= 6);
         QCOMPARE(watch.maxOutstanding, 1);
-        const qint64 before =
-            session->parameters()->deviceValue(QStringLiteral("motor1.position")).value_or(0);
-        QTRY_VERIFY(
-            session->parameters()->deviceValue(QStringLiteral("motor1.position")).value_or(0) >
-            before);
+        const qint64 before = session->parameters()
+                                  ->store()
+                                  ->deviceValue(QStringLiteral("motor1.position"))
+                                  .value_or(0);
+        QTRY_VERIFY(session->parameters()
+                        ->store()
+                        ->deviceValue(QStringLiteral("motor1.position"))
+                        .value_or(0) > before);
 
         QVERIFY(sim()->command(QStringLiteral("motor1.stop")));
         QTRY_VERIFY_WITH_TIMEOUT(!poller->isFast(), 2000);

@@ -3,6 +3,7 @@
 #include "device/statusrecorder.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -53,9 +54,9 @@ private Q_SLOTS:
     void samplesOncePerCompletedPollCycle()
     {
         DeviceSession session;
-        StatusRecorder recorder(session.map(), session.parameters());
+        StatusRecorder recorder(session.map(), session.parameters()->store());
         recorder.attach(SessionInternals::poller(session));
-        QSignalSpy read(&session, &DeviceSession::readFinished);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
         test::useBuiltinSimulator(session);
         session.connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);

@@ -1,6 +1,7 @@
 #include "line/idassigner.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -25,7 +26,7 @@ class TestIdAssigner : public QObject
     {
         test::useBuiltinSimulator(*session, ids);
         test::connectToSimulator(*session);
-        QCOMPARE(session->deviceInView(), 1);
+        QCOMPARE(session->line()->deviceInView(), 1);
     }
     static void waitWhileWorking(IdAssigner &a)
     {
@@ -35,11 +36,11 @@ class TestIdAssigner : public QObject
     {
         bool done = false;
         bool ok = false;
-        session->readAt(id, {session->map().find(QStringLiteral("device.id"))},
-                        [&](const ReadOutcome &r) {
-                            ok = r.ok && r.values.value(QStringLiteral("device.id")) == id;
-                            done = true;
-                        });
+        session->line()->readAt(id, {session->map().find(QStringLiteral("device.id"))},
+                                [&](const ReadOutcome &r) {
+                                    ok = r.ok && r.values.value(QStringLiteral("device.id")) == id;
+                                    done = true;
+                                });
         if (!QTest::qWaitFor([&] { return done; }, 20000))
             return false;
         return ok;
@@ -93,7 +94,7 @@ private Q_SLOTS:
         QVERIFY2(a.state() == IdAssigner::State::Waiting, qPrintable(a.text()));
         QCOMPARE(sim(0)->deviceId(), 2);
         QCOMPARE(added.size(), 1);
-        QCOMPARE(session->deviceIds(), QList<int>{2});
+        QCOMPARE(session->line()->deviceIds(), QList<int>{2});
         QVERIFY(a.text().contains(QStringLiteral("answers at id 2")));
         QCOMPARE(a.nextId(), 3);
 
@@ -102,7 +103,7 @@ private Q_SLOTS:
         waitWhileWorking(a);
         QVERIFY2(a.state() == IdAssigner::State::Waiting, qPrintable(a.text()));
         QCOMPARE(sim(1)->deviceId(), 3);
-        QCOMPARE(session->deviceIds(), (QList<int>{2, 3}));
+        QCOMPARE(session->line()->deviceIds(), (QList<int>{2, 3}));
 
         // Two new controllers on the line at once: both answer at id 1 and garble each other.
         plugIn(2);
@@ -117,7 +118,7 @@ private Q_SLOTS:
         QCOMPARE(sim(2)->deviceId(), 1); // neither was touched
         QCOMPARE(sim(3)->deviceId(), 1);
         QCOMPARE(added.size(), 2);
-        QVERIFY(!session->deviceIds().contains(4));
+        QVERIFY(!session->line()->deviceIds().contains(4));
         // Asked again with both still there: still refused.
         a.next();
         waitWhileWorking(a);
@@ -138,8 +139,8 @@ private Q_SLOTS:
         QVERIFY2(
             a.text().contains(QStringLiteral("every controller given an id answers: id 2,3,4")),
             qPrintable(a.text()));
-        QCOMPARE(session->deviceIds(), (QList<int>{2, 3, 4}));
-        QCOMPARE(session->deviceInView(), 2);
+        QCOMPARE(session->line()->deviceIds(), (QList<int>{2, 3, 4}));
+        QCOMPARE(session->line()->deviceInView(), 2);
         QVERIFY(session->isLive());
         QVERIFY(answersAt(2));
         QVERIFY(answersAt(3));
@@ -176,7 +177,7 @@ private Q_SLOTS:
         QCOMPARE(session->connection()->settings().baud, 19200);
         QVERIFY2(a.text().contains(QStringLiteral("Answering: id 2. NOT answering: id 3")),
                  qPrintable(a.text()));
-        QCOMPARE(session->deviceIds(), (QList<int>{2, 3})); // it stays listed
+        QCOMPARE(session->line()->deviceIds(), (QList<int>{2, 3})); // it stays listed
         QVERIFY(answersAt(2));
         QVERIFY(!answersAt(3));
     }

@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -341,7 +342,7 @@ private Q_SLOTS:
     void emergencyStopFromThePageReachesEveryDevice()
     {
         test::useBuiltinSimulator(*session, {1, 2});
-        session->setDeviceIds({1, 2});
+        session->line()->setDeviceIds({1, 2});
         test::connectToSimulator(*session);
         QSignalSpy finished(session.get(), &DeviceSession::emergencyStopFinished);
         auto phone = pairedPhone(); // watching only: the E-STOP is for every paired phone

@@ -4,6 +4,7 @@
 #include "logbuilder.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
 #include "support/replaylog.h"
@@ -335,7 +336,7 @@ private Q_SLOTS:
         const QHash<QString, qint64> replayed =
             log.stateAt(log.durationMs()).devices.value(1).values(map());
         for (const Parameter *p : map().holdings()) {
-            const auto held = session.parameters()->deviceValue(p->key);
+            const auto held = session.parameters()->store()->deviceValue(p->key);
             if (held)
                 QCOMPARE(replayed.value(p->key, -1), *held);
         }

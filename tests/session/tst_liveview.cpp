@@ -4,6 +4,8 @@
 #include "bus/trafficlog.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
@@ -55,7 +57,7 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(host.start(options, &error), qPrintable(error));
         DeviceSession session;
-        QSignalSpy read(&session, &DeviceSession::readFinished);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
         session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
         QCOMPARE(read.first().first().toBool(), true);
@@ -85,14 +87,14 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(host.start(options, &error), qPrintable(error));
         DeviceSession session;
-        QSignalSpy read(&session, &DeviceSession::readFinished);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
         QSignalSpy learnt(session.connection(), &SessionConnection::readLimitsLearned);
         session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
         QCOMPARE(read.first().first().toBool(), true); // the read-all went on
         QCOMPARE(learnt.size(), lacks ? 2 : 1);        // said once each
         QVERIFY(session.connection()->readLimits().gapFree());
-        const ParameterStore *store = session.parameters();
+        const ParameterStore *store = session.parameters()->store();
         QCOMPARE(store->state(QStringLiteral("motor2.position")),
                  lacks ? ParameterStore::State::Unsupported : ParameterStore::State::InSync);
         QCOMPARE(store->state(QStringLiteral("motor1.speed")), ParameterStore::State::InSync);
@@ -128,9 +130,9 @@ private Q_SLOTS:
         host.deviceAt(2)->setStrictReads(true);
         host.deviceAt(2)->setLacking({QStringLiteral("motor2.position")});
         DeviceSession session;
-        session.setDeviceIds({1, 2});
-        session.setBackgroundIntervalMs(100);
-        QSignalSpy read(&session, &DeviceSession::readFinished);
+        session.line()->setDeviceIds({1, 2});
+        session.line()->setBackgroundIntervalMs(100);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
         QSignalSpy learnt(session.connection(), &SessionConnection::readLimitsLearned);
         session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
@@ -140,13 +142,13 @@ private Q_SLOTS:
         for (const QList<QVariant> &l : std::as_const(learnt))
             QVERIFY2(l.first().toString().startsWith(QLatin1String("Device id 2: ")),
                      qPrintable(l.first().toString()));
-        const ParameterStore *store = session.parameters();
+        const ParameterStore *store = session.parameters()->store();
         QVERIFY(
             session.connection()->readLimits().isEmpty()); // id 1 reads its merged plan as before
         QCOMPARE(store->state(QStringLiteral("motor2.position")), ParameterStore::State::InSync);
 
         read.clear();
-        QVERIFY(session.showDevice(2));
+        QVERIFY(session.line()->showDevice(2));
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QVERIFY(read.first().first().toBool());
         QVERIFY(session.connection()->readLimits().gapFree());
@@ -155,7 +157,7 @@ private Q_SLOTS:
         QCOMPARE(learnt.size(), 2); // nothing learnt twice
 
         read.clear();
-        QVERIFY(session.showDevice(1));
+        QVERIFY(session.line()->showDevice(1));
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QVERIFY(session.connection()->readLimits().isEmpty());
         QCOMPARE(store->state(QStringLiteral("motor2.position")), ParameterStore::State::InSync);
@@ -175,7 +177,7 @@ private Q_SLOTS:
         QMap<QString, QString> known;
         {
             DeviceSession first;
-            QSignalSpy read(&first, &DeviceSession::readFinished);
+            QSignalSpy read(first.parameters(), &SessionParameters::readFinished);
             first.connection()->connectTo(ptyLink(host));
             QVERIFY(read.wait(10000));
             known = first.connection()->knownReadLimits();
@@ -186,7 +188,7 @@ private Q_SLOTS:
         DeviceSession session;
         session.connection()->setKnownReadLimits(
             {{key, QStringLiteral("gaps,motor2.speed,not a key!")}, {QStringLiteral("x"), {}}});
-        QSignalSpy read(&session, &DeviceSession::readFinished);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
         QSignalSpy learnt(session.connection(), &SessionConnection::readLimitsLearned);
         QSignalSpy messages(&session, &DeviceSession::message);
         session.connection()->connectTo(ptyLink(host));
@@ -194,7 +196,7 @@ private Q_SLOTS:
         QVERIFY(read.first().first().toBool());
         QCOMPARE(learnt.size(), 0);
         QCOMPARE(session.connection()->linkStats().exceptions, 0); // not one refused read
-        QCOMPARE(session.parameters()->state(QStringLiteral("motor2.speed")),
+        QCOMPARE(session.parameters()->store()->state(QStringLiteral("motor2.speed")),
                  ParameterStore::State::Unsupported);
         QStringList said;
         for (const QList<QVariant> &m : std::as_const(messages))

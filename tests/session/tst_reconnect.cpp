@@ -5,6 +5,7 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/reconnector.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
@@ -96,7 +97,7 @@ class TestReconnect : public QObject
         s.portName = m_current;
         s.baud = 9600;
         s.deviceId = 1;
-        QSignalSpy read(m_session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(m_session->parameters(), &SessionParameters::readFinished);
         m_session->connection()->connectTo(s);
         QVERIFY(read.wait(10000));
         QVERIFY(read.first().first().toBool());
@@ -136,7 +137,7 @@ private Q_SLOTS:
 
         QSignalSpy dispatched(SessionInternals::link(*m_session), &ModbusLink::dispatched);
         QSignalSpy restored(r, &Reconnector::restored);
-        QSignalSpy read(m_session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(m_session->parameters(), &SessionParameters::readFinished);
         // Plugged in again, the system names it ttyUSB1.
         m_current = path(QStringLiteral("ttyUSB1"));
         m_host = startSim(m_current);
@@ -151,7 +152,10 @@ private Q_SLOTS:
         QVERIFY2(sent.at(1).startsWith(QLatin1String("poll")), qPrintable(sent.at(1)));
         QVERIFY(m_session->connection()->isConnected());
         QCOMPARE(r->state(), Reconnector::State::Idle);
-        QVERIFY(m_session->parameters()->deviceValue(QStringLiteral("motor1.speed")).has_value());
+        QVERIFY(m_session->parameters()
+                    ->store()
+                    ->deviceValue(QStringLiteral("motor1.speed"))
+                    .has_value());
     }
 
     void emergencyStopWhileAwayIsSentFirst()

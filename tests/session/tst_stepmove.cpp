@@ -3,6 +3,7 @@
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "session/stepmove.h"
@@ -49,8 +50,8 @@ class TestStepMove : public QObject
         test::connectToSimulator(*session);
         QVERIFY(sim()->setValue(QStringLiteral("motor1.move_distance"), 1234));
         QVERIFY(sim()->setValue(QStringLiteral("motor1.direction"), 1));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
     }
     StepMoveResult run(const StepMoveRequest &request)
@@ -70,9 +71,10 @@ class TestStepMove : public QObject
     {
         QCOMPARE(sim()->value(QStringLiteral("motor1.move_distance")).value_or(-1), 1234);
         QCOMPARE(sim()->value(QStringLiteral("motor1.direction")).value_or(-1), 1);
-        QCOMPARE(session->parameters()->deviceValue(QStringLiteral("motor1.move_distance")),
-                 std::optional<qint64>(1234));
-        QCOMPARE(session->parameters()->deviceValue(QStringLiteral("motor1.direction")),
+        QCOMPARE(
+            session->parameters()->store()->deviceValue(QStringLiteral("motor1.move_distance")),
+            std::optional<qint64>(1234));
+        QCOMPARE(session->parameters()->store()->deviceValue(QStringLiteral("motor1.direction")),
                  std::optional<qint64>(1));
     }
 
@@ -126,13 +128,16 @@ private Q_SLOTS:
         QVERIFY2(r.ok(), qPrintable(r.text));
         QCOMPARE(sim()->position(1), -240);
         userValuesBack();
-        QVERIFY(!session->parameters()->unsavedToFlash());
+        QVERIFY(!session->parameters()->store()->unsavedToFlash());
     }
 
     void refusedOverPendingEdits()
     {
         connectWithUserMove();
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.move_distance"), 500).isEmpty());
+        QVERIFY(session->parameters()
+                    ->store()
+                    ->edit(QStringLiteral("motor1.move_distance"), 500)
+                    .isEmpty());
         QSignalSpy dispatched(SessionInternals::link(*session), &ModbusLink::dispatched);
         const QString why = session->stepMove()->start({StepMoveRequest::Kind::By, 1, 1});
         QVERIFY(why.contains(QStringLiteral("Write or revert them first")));

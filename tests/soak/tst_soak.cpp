@@ -20,6 +20,7 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -101,7 +102,7 @@ class TestSoak : public QObject
     // The store must never claim a value the controller does not hold.
     void checkStoreIsTruthful(const Parameter *p, const char *when)
     {
-        const std::optional<qint64> claimed = session->parameters()->deviceValue(p->key);
+        const std::optional<qint64> claimed = session->parameters()->store()->deviceValue(p->key);
         const std::optional<qint64> truth = device()->value(p->key);
         QVERIFY(truth);
         if (claimed && *claimed != *truth)
@@ -115,7 +116,7 @@ class TestSoak : public QObject
     void reconnect()
     {
         QTRY_VERIFY_WITH_TIMEOUT(!sim->rtuPath().isEmpty(), 20000);
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         QSignalSpy connected(session->connection(), &SessionConnection::connected);
         LinkSettings s = session->connection()->settings();
         s.portName = linkPath;
@@ -153,7 +154,7 @@ class TestSoak : public QObject
             if (!duplicate)
                 writes.append({p, randomRaw(p)});
         }
-        ParameterStore *store = session->parameters();
+        ParameterStore *store = session->parameters()->store();
         store->revertAll();
         for (const ParameterWrite &w : std::as_const(writes))
             QCOMPARE(store->edit(w.parameter->key, w.raw), QString());
@@ -165,16 +166,17 @@ class TestSoak : public QObject
                                                      // hang-up right after may clear it again
         bool reported = false;
         QObject scope;
-        connect(session.get(), &DeviceSession::writeFinished, &scope, [&](const WriteOutcome &o) {
-            done = o;
-            for (const ParameterWrite &w : std::as_const(writes))
-                after.insert(w.parameter->key, store->entry(w.parameter->key));
-        });
+        connect(session->parameters(), &SessionParameters::writeFinished, &scope,
+                [&](const WriteOutcome &o) {
+                    done = o;
+                    for (const ParameterWrite &w : std::as_const(writes))
+                        after.insert(w.parameter->key, store->entry(w.parameter->key));
+                });
         connect(session.get(), &DeviceSession::message, &scope,
                 [&](DeviceSession::Severity severity, const QString &) {
                     reported = reported || severity == DeviceSession::Severity::Error;
                 });
-        session->writeChanges();
+        session->parameters()->writeChanges();
         if (!QTest::qWaitFor([&] { return done.has_value(); }, 60000)) {
             reportHang();
             QFAIL("a parameter write never finished");
@@ -334,7 +336,7 @@ private Q_SLOTS:
         s.retries = 2;
         s.answerDelayMs = 5; // the simulator's, or its answers would be too soon to be answers
         s.echo = sim->options().echo;
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         session->connection()->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty(), 30000);
 

@@ -2,6 +2,7 @@
 
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/builtinsimulator.h"
 #include "sim/host/simhost.h"
 
@@ -56,7 +57,7 @@ SimHost *simHost(const DeviceSession &session)
 void connectToSimulator(DeviceSession &session)
 {
     useBuiltinSimulator(session);
-    QSignalSpy read(&session, &DeviceSession::readFinished);
+    QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
     session.connection()->connectSimulator();
     // Generous: a machine running other tests beside this one may take many seconds.
     QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 30000);

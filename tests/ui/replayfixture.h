@@ -6,6 +6,7 @@
 #include "replay/replaybar.h"
 #include "replay/replaymode.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
@@ -191,7 +192,7 @@ protected:
                                     .arg(cli.value(it.key()).toDouble())));
     }
 
-    ParameterStore *store() const { return session->parameters(); }
+    ParameterStore *store() const { return session->parameters()->store(); }
     ReplayMode *replay() const { return window->replayMode(); }
     QString key(const char *role) const
     {

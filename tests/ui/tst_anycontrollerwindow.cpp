@@ -4,6 +4,7 @@
 // E-STOP stops it at once, and no message speaks of an echo or of a missing answer.
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -42,7 +43,7 @@ private Q_SLOTS:
         LinkSettings s;
         s.portName = host.rtuPath();
         s.baud = baud;
-        QSignalSpy read(&session, &DeviceSession::readFinished);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
         session.connection()->connectTo(s);
         QVERIFY(read.wait(10000) || !read.isEmpty());
         QVERIFY2(read.at(0).at(0).toBool(), qPrintable(said.join(QLatin1Char('\n'))));

@@ -4,6 +4,7 @@
 #include "pages/connectionpage.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -128,7 +129,8 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(session.connection()->isConnected(), 5000);
         QVERIFY(session.connection()->isSimulator());
         QTRY_COMPARE_WITH_TIMEOUT(
-            session.parameters()->deviceValue("motor1.step_angle").value_or(-1), qint64(180), 5000);
+            session.parameters()->store()->deviceValue("motor1.step_angle").value_or(-1),
+            qint64(180), 5000);
         QVERIFY2(page.statusText().contains("Connected to the built-in simulator"),
                  qPrintable(page.statusText()));
         // The simulator's pty is not a setting: the page stays on the simulator choice.
@@ -138,7 +140,7 @@ private Q_SLOTS:
         QVERIFY(!button(&page, "connect")->isEnabled());
         click(&page, "disconnect");
         QTRY_VERIFY(!session.connection()->isConnected());
-        QVERIFY(!session.parameters()->deviceValue("motor1.step_angle").has_value());
+        QVERIFY(!session.parameters()->store()->deviceValue("motor1.step_angle").has_value());
         QVERIFY(page.statusText().contains("Disconnected"));
         QVERIFY(button(&page, "connect")->isEnabled());
     }
@@ -213,14 +215,14 @@ private Q_SLOTS:
         click(&page, "connect");
         // Answers begin with the request's own bytes: said, and the option offered.
         QTRY_VERIFY_WITH_TIMEOUT(accept->isVisible(), 5000);
-        QVERIFY(!session.parameters()->deviceValue("motor1.step_angle").has_value());
+        QVERIFY(!session.parameters()->store()->deviceValue("motor1.step_angle").has_value());
         click(&page, "acceptEcho");
         QVERIFY(!accept->isVisible());
         QVERIFY(page.currentSettings().echo);
         QTRY_VERIFY_WITH_TIMEOUT(
             session.connection()->isConnected() && session.connection()->settings().echo, 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(session.parameters()->deviceValue("motor1.step_angle").has_value(),
-                                 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            session.parameters()->store()->deviceValue("motor1.step_angle").has_value(), 5000);
         QVERIFY(!accept->isVisible());
         session.connection()->disconnectFrom();
     }
@@ -276,8 +278,8 @@ private Q_SLOTS:
         QCOMPARE(session.connection()->settings().deviceId, 7);
         QCOMPARE(session.connection()->settings().baud, 9600);
         QCOMPARE(page.currentSettings().deviceId, 7);
-        QTRY_VERIFY_WITH_TIMEOUT(session.parameters()->deviceValue("motor1.step_angle").has_value(),
-                                 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            session.parameters()->store()->deviceValue("motor1.step_angle").has_value(), 5000);
         session.connection()->disconnectFrom();
     }
 

@@ -6,6 +6,8 @@
 #include "map/factoryvalues.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/builtinsimulator.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -110,7 +112,7 @@ private Q_SLOTS:
         DeviceListDock *dock = window.deviceListDock();
         QVERIFY(dock->isVisible());
         QCOMPARE(dock->nameOf(2), QStringLiteral("X table"));
-        QCOMPARE(session.deviceIds(), QList<int>{2});
+        QCOMPARE(session.line()->deviceIds(), QList<int>{2});
 
         // Two new controllers connected at once: refused in words, nothing written.
         QVERIFY(host->devices().at(1)->setValue(QStringLiteral("device.id"), 1));
@@ -137,7 +139,7 @@ private Q_SLOTS:
         dialog->reject();
         QTRY_VERIFY_WITH_TIMEOUT(!dialog->isVisible(), 20000);
         QCOMPARE(dialog->assigner()->state(), IdAssigner::State::Finished);
-        QCOMPARE(session.deviceIds(), (QList<int>{2, 3}));
+        QCOMPARE(session.line()->deviceIds(), (QList<int>{2, 3}));
         QVERIFY(session.isLive());
         QCOMPARE(dock->table()->rowCount(), 2);
         QCOMPARE(dock->rowTexts(0).at(1), QStringLiteral("X table"));
@@ -173,7 +175,7 @@ private Q_SLOTS:
         QSignalSpy added(&scan, &BusScanDialog::devicesAdded);
         click(&scan, "addAll");
         QCOMPARE(added.size(), 1);
-        QCOMPARE(session.deviceIds(), (QList<int>{2, 3}));
+        QCOMPARE(session.line()->deviceIds(), (QList<int>{2, 3}));
         QVERIFY2(scan.statusText().contains(QStringLiteral("Added to the device list: id 2,3")),
                  qPrintable(scan.statusText()));
         QCOMPARE(dock.table()->rowCount(), 2);
@@ -198,7 +200,7 @@ private Q_SLOTS:
         s.deviceId = 3;
         again.connection()->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(again.connection()->isConnected(), 5000);
-        QCOMPARE(again.deviceIds(), (QList<int>{2, 3}));
+        QCOMPARE(again.line()->deviceIds(), (QList<int>{2, 3}));
         QCOMPARE(dockAgain.nameOf(3), QStringLiteral("Z axis"));
         QCOMPARE(dockAgain.table()->rowCount(), 2);
         QTRY_COMPARE_WITH_TIMEOUT(dockAgain.rowTexts(0).at(2), QStringLiteral("answering"), 15000);
@@ -210,7 +212,7 @@ private Q_SLOTS:
         DeviceListDock dockElsewhere(&elsewhere);
         elsewhere.connection()->connectTo(line(other));
         QTRY_VERIFY_WITH_TIMEOUT(elsewhere.connection()->isConnected(), 5000);
-        QCOMPARE(elsewhere.deviceIds(), QList<int>{1});
+        QCOMPARE(elsewhere.line()->deviceIds(), QList<int>{1});
         elsewhere.connection()->disconnectFrom();
     }
 
@@ -223,7 +225,7 @@ private Q_SLOTS:
         QVERIFY(!dock.addDevice(4));
         QVERIFY(!dock.addDevice(0));
         QVERIFY(!dock.addDevice(256));
-        QVERIFY(!session.deviceIds().contains(0));
+        QVERIFY(!session.line()->deviceIds().contains(0));
     }
 
     void savedSettingsRoundTrip()
@@ -305,7 +307,7 @@ private Q_SLOTS:
         reset->trigger();
         QCOMPARE(session.connection()->linkState(), SessionConnection::LinkState::Disconnected);
         QVERIFY(!QFileInfo::exists(flash));
-        QSignalSpy read(&session, &DeviceSession::readFinished);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
         session.connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 30000);
         const qint64 factory =

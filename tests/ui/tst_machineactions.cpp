@@ -4,6 +4,7 @@
 #include "profile/profilefile.h"
 #include "profile/profilerollout.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionline.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -57,7 +58,7 @@ class TestMachineActions : public QObject
     // Three devices on the list, the second called "Y axis" by the user.
     void connectLine()
     {
-        session->setDeviceIds({1, 2, 3});
+        session->line()->setDeviceIds({1, 2, 3});
         test::connectToSimulator(*session);
         QTRY_COMPARE(list->table()->rowCount(), 3);
         list->table()->item(1, 1)->setText(QStringLiteral("Y axis"));
@@ -89,7 +90,7 @@ private Q_SLOTS:
         test::connectToSimulator(*session);
         QVERIFY(!actions->applyAction()->isEnabled());
         QVERIFY(!actions->reportAction()->isEnabled());
-        session->setDeviceIds({1, 2, 3});
+        session->line()->setDeviceIds({1, 2, 3});
         QTRY_VERIFY(actions->applyAction()->isEnabled());
         QVERIFY(actions->dumpAction()->isEnabled());
         QVERIFY(actions->reportAction()->isEnabled());

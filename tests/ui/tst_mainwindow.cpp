@@ -9,6 +9,8 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -67,7 +69,7 @@ private Q_SLOTS:
         session = std::make_unique<DeviceSession>();
         window = std::make_unique<MainWindow>(session.get());
         window->show();
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         test::useBuiltinSimulator(*session);
         session->connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
@@ -84,7 +86,7 @@ private Q_SLOTS:
         ParameterField *speed = field(QStringLiteral("motor1.speed"));
         QVERIFY(speed);
         speed->enterText(QStringLiteral("450"));
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor1.speed")),
                  ParameterStore::State::Edited);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // nothing written yet
         QVERIFY(window->action(QStringLiteral("writeChanges"))->isEnabled());
@@ -98,9 +100,9 @@ private Q_SLOTS:
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
         window->writeDialog()->findChild<QPushButton *>(QStringLiteral("writeButton"))->click();
         QTRY_COMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
-        QTRY_COMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
+        QTRY_COMPARE(session->parameters()->store()->state(QStringLiteral("motor1.speed")),
                      ParameterStore::State::InSync);
-        QVERIFY(session->parameters()->unsavedToFlash());
+        QVERIFY(session->parameters()->store()->unsavedToFlash());
     }
 
     void rejectedValueWritesNothing()
@@ -123,7 +125,7 @@ private Q_SLOTS:
         QVERIFY(!speed->reasonLabel()->text().contains(QLatin1String("motor1.")));
         auto *line = qobject_cast<QLineEdit *>(speed->editor());
         QCOMPARE(line->text(), QStringLiteral("99999")); // kept for correction
-        QVERIFY(!session->parameters()->hasEdits());
+        QVERIFY(!session->parameters()->store()->hasEdits());
         QVERIFY(!window->action(QStringLiteral("writeChanges"))->isEnabled());
         QTest::qWait(300);
         QCOMPARE(writes, 0);
@@ -138,7 +140,7 @@ private Q_SLOTS:
         speed->enterText(QStringLiteral("400"));
         QVERIFY(speed->rejectionText().isEmpty());
         QVERIFY(speed->reasonLabel()->isHidden());
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor1.speed")),
                  ParameterStore::State::Edited);
         // Revert drops a refused text too, and a write never leaves a stale reason behind.
         speed->enterText(QStringLiteral("0"));
@@ -193,31 +195,31 @@ private Q_SLOTS:
     {
         DevicePage *device = window->findChild<DevicePage *>();
         QVERIFY(device);
-        QVERIFY(!session->parameters()->unsavedToFlash());
+        QVERIFY(!session->parameters()->store()->unsavedToFlash());
         session->saveToFlash();
         QTRY_VERIFY(device->flashStatus().startsWith(QLatin1String("Saved to flash")));
-        QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
-        session->changeLink(1, 19200);
+        QSignalSpy changed(session->line(), &SessionLine::linkChanged);
+        session->line()->changeLink(1, 19200);
         QTRY_COMPARE(changed.size(), 1);
-        QVERIFY(session->parameters()->unsavedToFlash());
+        QVERIFY(session->parameters()->store()->unsavedToFlash());
         QVERIFY(device->unsavedWarningShown());
         QVERIFY2(!device->flashStatus().contains(QLatin1String("Saved")),
                  qPrintable(device->flashStatus()));
         QVERIFY(window->findChild<LinkStatus *>()->findChildren<QLabel *>().size() > 0);
         session->saveToFlash();
-        QTRY_VERIFY(!session->parameters()->unsavedToFlash());
+        QTRY_VERIFY(!session->parameters()->store()->unsavedToFlash());
         QVERIFY(!device->unsavedWarningShown());
         QVERIFY(device->flashStatus().startsWith(QLatin1String("Saved to flash")));
-        session->changeLink(7, 19200); // the id alone
+        session->line()->changeLink(7, 19200); // the id alone
         QTRY_COMPARE(changed.size(), 2);
-        QVERIFY(session->parameters()->unsavedToFlash());
+        QVERIFY(session->parameters()->store()->unsavedToFlash());
         QVERIFY(!device->flashStatus().contains(QLatin1String("Saved")));
     }
 
     // The write flow lists what the pages already flag, and asks before writing it anyway.
     void writeDialogListsKnownProblems()
     {
-        ParameterStore *store = session->parameters();
+        ParameterStore *store = session->parameters()->store();
         const qint64 speed = *store->deviceValue(QStringLiteral("motor1.speed"));
         QVERIFY(store->edit(QStringLiteral("motor1.speed"), speed + 10).isEmpty());
         window->writeChanges();
@@ -271,7 +273,7 @@ private Q_SLOTS:
         QStringList order;
         connect(SessionInternals::link(*session), &ModbusLink::dispatched, this,
                 [&order](quint64, const Request &r) { order << r.what; });
-        session->readAll(); // a queue of work in front
+        session->parameters()->readAll(); // a queue of work in front
         QTest::keyClick(window->writeDialog()->table(), Qt::Key_F12);
         QTRY_VERIFY(order.contains(QStringLiteral("estop")));
         QVERIFY2(order.indexOf(QStringLiteral("estop")) <= 1,

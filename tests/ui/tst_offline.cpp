@@ -10,6 +10,7 @@
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -53,7 +54,7 @@ class TestOffline : public QObject
     QTemporaryDir dir;
 
     OfflineActions *offline() const { return window->offlineActions(); }
-    ParameterStore *store() const { return session->parameters(); }
+    ParameterStore *store() const { return session->parameters()->store(); }
     ParameterField *field(const QString &key) const
     {
         for (ParameterField *f : window->findChildren<ParameterField *>()) {

@@ -5,6 +5,8 @@
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -49,7 +51,7 @@ class TestProfileDialog : public QObject
     {
         QHash<QString, qint64> values;
         for (const Parameter *p : Profile::profileParameters(session->map(), true))
-            values.insert(p->key, *session->parameters()->deviceValue(p->key));
+            values.insert(p->key, *session->parameters()->store()->deviceValue(p->key));
         Profile p = Profile::fromValues(session->map(), values, true);
         p.name = QStringLiteral("Machine B");
         p.values[QStringLiteral("motor1.speed")] += 11;
@@ -170,7 +172,7 @@ private Q_SLOTS:
         dialog.open();
         QTRY_COMPARE_WITH_TIMEOUT(dialog.rowOf(QStringLiteral("motor2.pitch")), -1, 10000);
         QTRY_VERIFY(!dialog.isBusy());
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor2.pitch")),
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor2.pitch")),
                  ParameterStore::State::Unsupported);
         QCOMPARE(dialog.table()->rowCount(),
                  int(Profile::profileParameters(session->map(), true).size()) - 1);
@@ -226,7 +228,7 @@ private Q_SLOTS:
         Profile profile = changedProfile();
         profile.values = {{QStringLiteral("device.id"), 7}};
         for (const Parameter *p : Profile::profileParameters(session->map(), false))
-            profile.values.insert(p->key, *session->parameters()->deviceValue(p->key));
+            profile.values.insert(p->key, *session->parameters()->store()->deviceValue(p->key));
         ProfileCompareDialog dialog(session.get(), profile, QStringLiteral("id.json"),
                                     window.get());
         dialog.open();
@@ -235,7 +237,7 @@ private Q_SLOTS:
         QVERIFY(!dialog.applyButton()->isEnabled());
         dialog.includeLink()->setChecked(true);
         QCOMPARE(dialog.checkedKeys(), QStringList{"device.id"});
-        QSignalSpy linkChanged(session.get(), &DeviceSession::linkChanged);
+        QSignalSpy linkChanged(session->line(), &SessionLine::linkChanged);
         QSignalSpy applied(&dialog, &ProfileCompareDialog::applied);
         dialog.apply();
         QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
@@ -331,7 +333,8 @@ private Q_SLOTS:
 
         // From the edited values: the edit goes into the file, nothing to the controller.
         const qint64 speed = simValue("motor2.speed");
-        QCOMPARE(session->parameters()->edit(QStringLiteral("motor2.speed"), speed + 1), QString());
+        QCOMPARE(session->parameters()->store()->edit(QStringLiteral("motor2.speed"), speed + 1),
+                 QString());
         const QString fromEdits = dir.filePath(QStringLiteral("edited.json"));
         QVERIFY(actions.saveFromEditedFile(fromEdits));
         const ProfileParseResult edited = ProfileFile::load(fromEdits, session->map());

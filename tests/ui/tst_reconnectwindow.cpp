@@ -3,6 +3,7 @@
 #include "base/language.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/reconnector.h"
 #include "sim/host/simhost.h"
 #include "widgets/docks/linkstatus.h"
@@ -74,7 +75,7 @@ private Q_SLOTS:
         s.portName = port();
         s.baud = 9600;
         s.deviceId = 1;
-        QSignalSpy read(m_session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(m_session->parameters(), &SessionParameters::readFinished);
         m_session->connection()->connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QVERIFY(countdown() && cancel());
@@ -98,7 +99,7 @@ private Q_SLOTS:
                  qPrintable(countdown()->text()));
         QVERIFY2(countdown()->text().contains(QLatin1String(" s")),
                  qPrintable(countdown()->text()));
-        QSignalSpy read(m_session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(m_session->parameters(), &SessionParameters::readFinished);
         startSim();
         QTRY_VERIFY_WITH_TIMEOUT(m_session->connection()->isConnected(), 15000);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000); // everything read again

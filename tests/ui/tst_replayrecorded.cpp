@@ -12,6 +12,7 @@
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
@@ -31,7 +32,7 @@ class TestReplayRecorded : public test::ReplayFixture
     // Writes the edits held in the store through the window's dialog, confirmed.
     void writeEdits()
     {
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         window->writeChanges();
         QTRY_VERIFY(window->writeDialog());
         window->writeDialog()->accept();
@@ -96,7 +97,7 @@ private Q_SLOTS:
         s.adaptTimeout = false;
 
         // 1. connect and read everything
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         session->connection()->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty(), 15000);
         QVERIFY(read.at(0).at(0).toBool());
@@ -162,7 +163,7 @@ private Q_SLOTS:
 
         // 7. the link lost (the port hangs up for 1.5 s) and back on its own, read again
         QSignalSpy lost(session->connection(), &SessionConnection::linkLost);
-        QSignalSpy readAgain(session.get(), &DeviceSession::readFinished);
+        QSignalSpy readAgain(session->parameters(), &SessionParameters::readFinished);
         host->hangUp(1500);
         QTRY_VERIFY_WITH_TIMEOUT(!lost.isEmpty(), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(session->connection()->isConnected() && !readAgain.isEmpty(),

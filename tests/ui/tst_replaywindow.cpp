@@ -21,6 +21,7 @@
 #include "replayfixture.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
 #include "simsession.h"
@@ -78,7 +79,7 @@ private Q_SLOTS:
         // 2. a write
         const qint64 speed = *store()->deviceValue(key("speed"));
         QVERIFY(store()->edit(key("speed"), speed + 17).isEmpty());
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         window->writeChanges(); // the window's dialog, confirmed: a user line of the log
         QTRY_VERIFY(window->writeDialog());
         window->writeDialog()->accept();
@@ -300,7 +301,7 @@ private Q_SLOTS:
         QVERIFY(!window->windowTitle().contains(QStringLiteral("replay")));
 
         QVERIFY(openReplay(logPath));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         session->connection()->connectSimulator();
         QVERIFY(!replay()->isActive());
         QVERIFY(read.wait(10000));

@@ -2,6 +2,7 @@
 
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QApplication>
 #include <QKeyEvent>
@@ -16,7 +17,8 @@ EmergencyStop::EmergencyStop(DeviceSession *session, QObject *parent)
     qApp->installEventFilter(this);
     connect(session->connection(), &SessionConnection::linkStateChanged, this,
             &EmergencyStop::refresh);
-    connect(session->parameters(), &ParameterStore::originChanged, this, &EmergencyStop::refresh);
+    connect(session->parameters()->store(), &ParameterStore::originChanged, this,
+            &EmergencyStop::refresh);
     m_available = isAvailable();
 }
 
@@ -31,7 +33,7 @@ bool EmergencyStop::isAvailable() const
     // that drives the E-STOP itself (listening beside another master) has a line to send it on.
     if (m_handler)
         return true;
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     return m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected ||
            !(store->isReplay() || store->isFile());
 }
@@ -39,7 +41,7 @@ bool EmergencyStop::isAvailable() const
 QString EmergencyStop::toolTip() const
 {
     const QString key = shortcut().toString(QKeySequence::NativeText);
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     if (isAvailable())
         return tr("Emergency stop: all motors and outputs off (coil 00042). Key: %1").arg(key);
     return store->isReplay()

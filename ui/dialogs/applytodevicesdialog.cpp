@@ -4,6 +4,7 @@
 #include "profile/profilerollout.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include <QCloseEvent>
 #include <QDialogButtonBox>
@@ -57,7 +58,7 @@ ApplyToDevicesDialog::ApplyToDevicesDialog(DeviceSession *session, const Profile
            "settings are saved as a backup before anything is written to it; every value "
            "written is read back. Device id and baud rate are never applied to several "
            "devices: one id for all would make them collide."));
-    for (int id : session->deviceIds()) {
+    for (int id : session->line()->deviceIds()) {
         const QString name = names.value(id);
         auto *item = new QListWidgetItem(
             name.isEmpty() ? tr("id %1").arg(id) : tr("id %1 (%2)").arg(id).arg(name), m_devices);

@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "session/idlist.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include <QCheckBox>
 #include <QEvent>
@@ -437,9 +438,10 @@ QList<int> BusScanDialog::addAllFound()
     if (isScanning() || m_table->rowCount() == 0)
         return {};
     // A session that is not connected lists only the id in its fields: no device of this line.
-    QList<int> ids = m_session->connection()->isConnected() || m_session->deviceIds().size() > 1
-                         ? m_session->deviceIds()
-                         : QList<int>{};
+    QList<int> ids =
+        m_session->connection()->isConnected() || m_session->line()->deviceIds().size() > 1
+            ? m_session->line()->deviceIds()
+            : QList<int>{};
     QList<int> added;
     QList<int> bauds;
     for (int row = 0; row < m_table->rowCount(); ++row) {
@@ -454,7 +456,7 @@ QList<int> BusScanDialog::addAllFound()
     if (added.isEmpty()) {
         m_added = tr("Every controller found is on the device list already.");
     } else {
-        m_session->setDeviceIds(ids);
+        m_session->line()->setDeviceIds(ids);
         m_added = tr("Added to the device list: id %1.").arg(IdList::format(added));
     }
     // One line runs at one baud: controllers found at several cannot all answer at once.

@@ -3,6 +3,7 @@
 #include "base/language.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QCheckBox>
 #include <QEvent>
@@ -126,7 +127,7 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
         m_saveToFlash->setEnabled(!ok);
     });
     // A read-all changes every value at once: compare once, after the burst.
-    connect(session->parameters(), &ParameterStore::valueChanged, this, [this] {
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this, [this] {
         if (m_refreshPending)
             return;
         m_refreshPending = true;
@@ -149,7 +150,7 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
     // Compare with what the controller holds now, not with what was read some time ago.
     // Reading never writes.
     if (session->connection()->isConnected())
-        session->readAll();
+        session->parameters()->readAll();
 }
 
 QString ProfileCompareDialog::forgetWarning()
@@ -178,14 +179,14 @@ void ProfileCompareDialog::refreshValues()
 {
     QHash<QString, qint64> device;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), true)) {
-        if (const auto v = m_session->parameters()->deviceValue(p->key))
+        if (const auto v = m_session->parameters()->store()->deviceValue(p->key))
             device.insert(p->key, *v);
     }
     m_rows = ProfileDiff::compare(m_session->map(), m_profile, device);
     // A key this controller does not have is neither a difference nor writable: left out,
     // and named below the table.
     m_leftOut.clear();
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     m_rows.removeIf([this, store](const ProfileDifference &r) {
         if (store->state(r.parameter->key) != ParameterStore::State::Unsupported)
             return false;
@@ -375,7 +376,7 @@ void ProfileCompareDialog::apply()
             self->finishApply(writes, none);
             return;
         }
-        self->m_session->write(writes, [self, writes](const WriteOutcome &outcome) {
+        self->m_session->parameters()->write(writes, [self, writes](const WriteOutcome &outcome) {
             if (self)
                 self->finishApply(writes, outcome);
         });

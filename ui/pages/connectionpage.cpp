@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 #include "session/serialports.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/lineoptionsbox.h"
@@ -114,7 +115,7 @@ ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
     // connect reads it right away instead of learning it from refusals again.
     connect(session->connection(), &SessionConnection::readLimitsLearned, this,
             &ConnectionPage::saveReadLimits);
-    connect(session, &DeviceSession::linkChanged, this, [this](const LinkSettings &s) {
+    connect(session->line(), &SessionLine::linkChanged, this, [this](const LinkSettings &s) {
         // The Device page moved the controller to a new id or baud: follow and remember it.
         if (!usesSimulator()) {
             applySettings(s);
@@ -528,7 +529,7 @@ void ConnectionPage::updateLine()
     const bool shown = session()->connection()->isConnected() && s.answers > 0;
     m_line->setVisible(shown);
     if (shown)
-        m_line->setText(tr("Line: %1").arg(s.lineText(session()->deviceInView())));
+        m_line->setText(tr("Line: %1").arg(s.lineText(session()->line()->deviceInView())));
 }
 
 BusScanDialog *ConnectionPage::scanDialog() const

@@ -3,6 +3,8 @@
 #include "base/language.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -137,7 +139,7 @@ DevicePage::DevicePage(DeviceSession *session, QWidget *parent)
         this->session()->saveToFlash();
     });
 
-    ParameterStore *store = session->parameters();
+    ParameterStore *store = session->parameters()->store();
     connect(store, &ParameterStore::valueChanged, this, [this](const QString &key) {
         if (key == kId || key == kBaud)
             showDeviceValues();
@@ -155,7 +157,7 @@ DevicePage::DevicePage(DeviceSession *session, QWidget *parent)
                 }
                 updateEnabled();
             });
-    connect(session, &DeviceSession::linkChanged, this, [this](const LinkSettings &now) {
+    connect(session->line(), &SessionLine::linkChanged, this, [this](const LinkSettings &now) {
         m_targetId = now.deviceId;
         m_targetBaud = now.baud;
         m_idTouched = m_baudTouched = false;
@@ -165,7 +167,7 @@ DevicePage::DevicePage(DeviceSession *session, QWidget *parent)
         if (std::exchange(m_saveAfterLinkChange, false))
             this->session()->saveToFlash();
     });
-    connect(session, &DeviceSession::linkChangeFailed, this,
+    connect(session->line(), &SessionLine::linkChangeFailed, this,
             [this](const LinkSettings &previous, const QString &reason) {
                 m_saveAfterLinkChange = false;
                 m_previous = previous;
@@ -214,8 +216,8 @@ QString DevicePage::describe(int id, int baud) const
 
 void DevicePage::showDeviceValues()
 {
-    const auto id = session()->parameters()->deviceValue(kId);
-    const auto baud = session()->parameters()->deviceValue(kBaud);
+    const auto id = session()->parameters()->store()->deviceValue(kId);
+    const auto baud = session()->parameters()->store()->deviceValue(kBaud);
     m_idHeld->setText(id ? tr("The controller holds %1").arg(*id) : tr("Not read yet"));
     m_baudHeld->setText(baud ? tr("The controller holds %1").arg(*baud) : tr("Not read yet"));
     // Follow the device until the user types something of their own.
@@ -234,8 +236,8 @@ void DevicePage::updateEnabled()
 {
     const bool connected = session()->connection()->isConnected();
     const bool tcp = session()->connection()->settings().isNetwork();
-    const auto id = session()->parameters()->deviceValue(kId);
-    const auto baud = session()->parameters()->deviceValue(kBaud);
+    const auto id = session()->parameters()->store()->deviceValue(kId);
+    const auto baud = session()->parameters()->store()->deviceValue(kBaud);
     const bool changed = id && baud && (m_id->value() != *id || (!tcp && chosenBaud() != *baud));
     m_baud->setEnabled(!tcp);
     m_apply->setEnabled(connected && changed && !m_confirmation);
@@ -245,7 +247,7 @@ void DevicePage::updateEnabled()
 
 void DevicePage::updateUnsaved()
 {
-    m_unsavedRow->setHidden(!session()->parameters()->unsavedToFlash());
+    m_unsavedRow->setHidden(!session()->parameters()->store()->unsavedToFlash());
     renderStatus(); // the "saved" line reads the same state
 }
 
@@ -301,7 +303,7 @@ std::pair<DevicePage::Tone, QString> DevicePage::flashText() const
         return {Tone::Busy, tr("Saving to flash…")};
     case FlashEvent::Saved:
         // One flash state: a write since the save makes it "not saved", whatever happened here.
-        if (session()->parameters()->unsavedToFlash())
+        if (session()->parameters()->store()->unsavedToFlash())
             return {Tone::Busy, QString()};
         return {Tone::Ok,
                 tr("Saved to flash: the controller keeps its settings after a power cycle.")};
@@ -388,7 +390,7 @@ void DevicePage::requestLinkChange()
         m_targetBaud = baud;
         m_previous = session()->connection()->settings();
         setLinkEvent(LinkEvent::Changing);
-        session()->changeLink(id, baud);
+        session()->line()->changeLink(id, baud);
     });
     box->open();
 }
@@ -398,8 +400,8 @@ void DevicePage::requestFactoryReset()
     if (m_confirmation || !session()->connection()->isConnected())
         return;
     const int motors = session()->map().blockCount(QStringLiteral("motor"));
-    const auto id = session()->parameters()->deviceValue(kId);
-    const auto baud = session()->parameters()->deviceValue(kBaud);
+    const auto id = session()->parameters()->store()->deviceValue(kId);
+    const auto baud = session()->parameters()->store()->deviceValue(kBaud);
     const QString motorList = motors > 1 ? tr("motors 1 to %1").arg(motors) : tr("the motor");
     // Exactly what the factory reset replaces (docs/simulator.md, "Factory values").
     const QStringList lost = {

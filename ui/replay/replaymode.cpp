@@ -9,6 +9,7 @@
 #include "replay/replayviews.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
@@ -113,8 +114,8 @@ ReplayMode::ReplayMode(DeviceSession *session, QWidget *window)
             m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
             close();
     });
-    connect(session->parameters(), &ParameterStore::originChanged, this, [this] {
-        if (m_active && m_session->parameters()->isFile())
+    connect(session->parameters()->store(), &ParameterStore::originChanged, this, [this] {
+        if (m_active && m_session->parameters()->store()->isFile())
             close();
     });
     retranslate();
@@ -216,7 +217,7 @@ bool ReplayMode::refused(QString *why) const
     else if (m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
         *why = tr("Disconnect from the controller before replaying a log: a replay shows the "
                   "log's values where the controller's are.");
-    else if (m_session->parameters()->isFile())
+    else if (m_session->parameters()->store()->isFile())
         *why = tr("Close the profile file before replaying a log.");
     return !why->isEmpty();
 }
@@ -403,7 +404,8 @@ void ReplayMode::showDevice(int id)
 void ReplayMode::showMoment()
 {
     const ReplayState state = m_log.stateAt(m_moment);
-    m_session->parameters()->showReplay(m_name, state.devices.value(m_device).values(m_log.map()));
+    m_session->parameters()->store()->showReplay(m_name,
+                                                 state.devices.value(m_device).values(m_log.map()));
     m_views->show(m_moment, m_device, m_devices, state);
     m_bar->setMoment(m_moment);
     if (m_strip) { // the line as the log's header names it (an older log: not known)
@@ -453,8 +455,8 @@ void ReplayMode::close()
         return;
     m_bar->setPlaying(false);
     m_active = false;
-    if (m_session->parameters()->isReplay())
-        m_session->parameters()->closeReplay();
+    if (m_session->parameters()->store()->isReplay())
+        m_session->parameters()->store()->closeReplay();
     m_views->stop();
     if (m_strip)
         m_strip->endReplay();

@@ -1,5 +1,6 @@
 #include "window/listenmode.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include "base/emergencystop.h"
 #include "listen/linelistener.h"
@@ -81,8 +82,8 @@ bool ListenMode::start(const LinkSettings &settings, QString *why)
 {
     if (isActive())
         return true;
-    if (m_session->connection()->isConnected() || m_session->parameters()->isFile() ||
-        m_session->parameters()->isReplay()) {
+    if (m_session->connection()->isConnected() || m_session->parameters()->store()->isFile() ||
+        m_session->parameters()->store()->isReplay()) {
         *why = tr("Listening needs the window free: disconnect, and close any profile file or "
                   "replay first.");
         return false;
@@ -138,7 +139,7 @@ bool ListenMode::start(const LinkSettings &settings, QString *why)
         tr("listening on %1 at %2 baud: another master drives the line, StepCom sends nothing")
             .arg(settings.portName)
             .arg(settings.baud));
-    m_session->parameters()->showReplay(tr("heard on %1").arg(settings.portName), {});
+    m_session->parameters()->store()->showReplay(tr("heard on %1").arg(settings.portName), {});
     m_start->setText(tr("Stop listening"));
     updateBanner();
     m_banner->show();
@@ -158,7 +159,7 @@ void ListenMode::stop()
     m_log.reset();
     if (m_question)
         m_question->close();
-    m_session->parameters()->closeReplay();
+    m_session->parameters()->store()->closeReplay();
     if (m_strip)
         m_strip->endReplay();
     m_session->connection()->traffic()->addEvent(tr("listening ended"));
@@ -207,8 +208,8 @@ void ListenMode::onHeard(const HeardEvent &e)
 void ListenMode::showValues()
 {
     const ReplayDevice device = m_listener->decoder().state().devices.value(m_settings.deviceId);
-    m_session->parameters()->showReplay(tr("heard on %1").arg(m_settings.portName),
-                                        device.values(m_session->map()));
+    m_session->parameters()->store()->showReplay(tr("heard on %1").arg(m_settings.portName),
+                                                 device.values(m_session->map()));
     if (m_strip)
         m_strip->showReplayLink(true, device.answering,
                                 tr("listening on %1").arg(m_settings.portName));

@@ -8,6 +8,8 @@
 #include "report/machinereport.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/docks/devicelistdock.h"
 
 #include <QAction>
@@ -36,8 +38,10 @@ MachineActions::MachineActions(DeviceSession *session, QWidget *window)
     connect(m_report, &QAction::triggered, this, &MachineActions::chooseReport);
     connect(session->connection(), &SessionConnection::linkStateChanged, this,
             &MachineActions::updateActions);
-    connect(session, &DeviceSession::deviceInViewChanged, this, &MachineActions::updateActions);
-    connect(session, &DeviceSession::deviceStatusChanged, this, &MachineActions::updateActions);
+    connect(session->line(), &SessionLine::deviceInViewChanged, this,
+            &MachineActions::updateActions);
+    connect(session->line(), &SessionLine::deviceStatusChanged, this,
+            &MachineActions::updateActions);
     connect(&Language::instance(), &Language::changed, this, &MachineActions::retranslate);
     retranslate();
     updateActions();
@@ -69,7 +73,7 @@ void MachineActions::retranslate()
 void MachineActions::updateActions()
 {
     const bool several =
-        m_session->connection()->isConnected() && m_session->deviceIds().size() > 1;
+        m_session->connection()->isConnected() && m_session->line()->deviceIds().size() > 1;
     m_apply->setEnabled(several);
     m_dump->setEnabled(several && !isBusy());
     m_report->setEnabled(several && !isBusy());
@@ -89,7 +93,7 @@ QHash<int, QString> MachineActions::names() const
 {
     QHash<int, QString> out;
     DeviceListDock *dock = m_list ? m_list() : nullptr;
-    for (int id : m_session->deviceIds()) {
+    for (int id : m_session->line()->deviceIds()) {
         if (dock)
             out.insert(id, dock->nameOf(id));
     }
@@ -150,9 +154,9 @@ void MachineActions::sweep(const QString &what, const QList<const Parameter *> &
         updateActions();
     });
     Q_EMIT finished(
-        true,
-        tr("%1: reading %n device(s)", nullptr, int(m_session->deviceIds().size())).arg(what));
-    s->start(m_session->deviceIds(), params);
+        true, tr("%1: reading %n device(s)", nullptr, int(m_session->line()->deviceIds().size()))
+                  .arg(what));
+    s->start(m_session->line()->deviceIds(), params);
     updateActions();
 }
 
@@ -245,29 +249,29 @@ ReportInput MachineActions::sheet(int id, const QHash<QString, qint64> &values, 
     ReportInput input;
     input.map = m_session->map();
     input.values = values;
-    input.link = m_session->describeDevice(id);
+    input.link = m_session->line()->describeDevice(id);
     input.simulator = m_session->connection()->isSimulator();
     input.line = m_session->connection()->linkStats().lineText(id);
     input.deviceId = id;
     input.title = name;
     input.date = QDateTime::currentDateTime();
     input.lastRead = read;
-    if (id == m_session->deviceInView()) { // what the window follows
+    if (id == m_session->line()->deviceInView()) { // what the window follows
         input.travelLimits = m_session->travelLimits();
-        input.savedToFlash = !m_session->parameters()->unsavedToFlash();
+        input.savedToFlash = !m_session->parameters()->store()->unsavedToFlash();
     }
     return input;
 }
 
 QList<ReportInput> MachineActions::knownSheets() const
 {
-    QList<int> ids = m_session->deviceIds();
+    QList<int> ids = m_session->line()->deviceIds();
     if (ids.isEmpty())
-        ids << m_session->deviceInView();
+        ids << m_session->line()->deviceInView();
     const QHash<int, QString> names = this->names();
     QList<ReportInput> sheets;
     for (int id : std::as_const(ids)) {
-        const QHash<QString, qint64> values = m_session->knownValues(id);
+        const QHash<QString, qint64> values = m_session->line()->knownValues(id);
         // Only the live status seen (never in view): no sheet to speak of.
         const bool settings =
             std::any_of(values.keyBegin(), values.keyEnd(), [this](const QString &key) {

@@ -24,6 +24,7 @@
 #include "session/jogcontroller.h"
 #include "session/linkhealth.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
 #include "widgets/docks/devicelistdock.h"
@@ -177,7 +178,8 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
 
     connect(session->connection(), &SessionConnection::linkStateChanged, this,
             &MainWindow::updateActions);
-    connect(session->parameters(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
+    connect(session->parameters()->store(), &ParameterStore::editsChanged, this,
+            &MainWindow::updateActions);
     connect(session, &DeviceSession::message, m_status, &StatusMessage::post);
     // On to the first motor once the controller answered, not when the port opened: a port
     // with nobody behind it keeps the Connection page and its "not answering" hints in view.
@@ -248,11 +250,12 @@ void MainWindow::createActions()
         connect(a, &QAction::triggered, this, slot);
         return a;
     };
-    m_readAll = make("readAll", QKeySequence::Refresh, [this] { m_session->readAll(); });
+    m_readAll =
+        make("readAll", QKeySequence::Refresh, [this] { m_session->parameters()->readAll(); });
     m_write =
         make("writeChanges", QKeySequence(Qt::CTRL | Qt::Key_Return), [this] { writeChanges(); });
     m_revert = make("revert", QKeySequence(Qt::CTRL | Qt::Key_R),
-                    [this] { m_session->parameters()->revertAll(); });
+                    [this] { m_session->parameters()->store()->revertAll(); });
     m_save = make("saveToFlash", QKeySequence::Save, [this] { m_session->saveToFlash(); });
     m_disconnect =
         make("disconnect", QKeySequence(), [this] { m_session->connection()->disconnectFrom(); });
@@ -547,7 +550,7 @@ void MainWindow::changeEvent(QEvent *event)
 void MainWindow::updateActions()
 {
     const bool connected = m_session->connection()->isConnected();
-    const bool edits = m_session->parameters()->hasEdits();
+    const bool edits = m_session->parameters()->store()->hasEdits();
     m_readAll->setEnabled(connected);
     m_write->setEnabled(connected && edits);
     m_revert->setEnabled(edits);

@@ -9,6 +9,7 @@
 #include "report/reportinput.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QAction>
 #include <QDir>
@@ -139,7 +140,7 @@ bool OfflineActions::whenSettled(const std::function<void()> &then)
     const bool canSave = !m_document->path().isEmpty();
     m_question = new QMessageBox(QMessageBox::Warning, tr("Unsaved edits"),
                                  tr("%n edited value(s) of %1 are not saved in the file.", nullptr,
-                                    int(m_session->parameters()->editedKeys().size()))
+                                    int(m_session->parameters()->store()->editedKeys().size()))
                                      .arg(m_document->displayName()),
                                  (canSave ? QMessageBox::Save : QMessageBox::NoButton) |
                                      QMessageBox::Discard | QMessageBox::Cancel,

@@ -9,6 +9,8 @@
 #include "report/commissioningreport.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QAction>
 #include <QDate>
@@ -55,7 +57,7 @@ ProfileActions::ProfileActions(DeviceSession *session, QWidget *window)
     connect(m_backups, &QAction::triggered, this, &ProfileActions::showBackups);
     connect(session->connection(), &SessionConnection::linkStateChanged, this,
             &ProfileActions::updateActions);
-    connect(session->parameters(), &ParameterStore::valueChanged, this,
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this,
             &ProfileActions::updateActions);
     retranslate();
     rebuildRecent();
@@ -134,7 +136,7 @@ void ProfileActions::updateActions()
     m_backups->setEnabled(connected); // a backup is restored onto a controller
     bool known = true;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), false))
-        known = known && m_session->parameters()->shownValue(p->key).has_value();
+        known = known && m_session->parameters()->store()->shownValue(p->key).has_value();
     m_saveFromEdited->setEnabled(known);
 }
 
@@ -335,10 +337,10 @@ void ProfileActions::saveFromDeviceFile(const QString &path, const QString &name
     }
     const QList<const Parameter *> params = Profile::profileParameters(m_session->map(), true);
     QPointer<ProfileActions> self(this);
-    m_session->read(params, [self, path, name, notes](const ReadOutcome &r) {
+    m_session->parameters()->read(params, [self, path, name, notes](const ReadOutcome &r) {
         if (!self)
             return;
-        self->m_session->parameters()->setDeviceValues(r.values);
+        self->m_session->parameters()->store()->setDeviceValues(r.values);
         if (!r.ok) {
             self->showErrors(tr("Save profile"), QStringList{tr("Nothing was saved: the "
                                                                 "controller could not be read "
@@ -372,7 +374,7 @@ bool ProfileActions::saveFromEditedFile(const QString &path, const QString &name
     QHash<QString, qint64> values;
     QStringList unknown;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), true)) {
-        if (const auto v = m_session->parameters()->shownValue(p->key))
+        if (const auto v = m_session->parameters()->store()->shownValue(p->key))
             values.insert(p->key, *v);
         else if (!Profile::isLinkSetting(p->key))
             unknown << p->key;
@@ -410,10 +412,10 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         return;
     }
     QPointer<ProfileActions> self(this);
-    m_session->readAll([self, path, notes](const ReadOutcome &r) {
+    m_session->parameters()->readAll([self, path, notes](const ReadOutcome &r) {
         if (!self)
             return;
-        self->m_session->parameters()->setDeviceValues(r.values);
+        self->m_session->parameters()->store()->setDeviceValues(r.values);
         if (!r.ok) {
             self->showErrors(tr("Commissioning report"),
                              QStringList{tr("No report: the controller could not be read "
@@ -427,13 +429,13 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         input.unsupported = r.unsupported;
         input.link = self->m_session->connection()->settings().describe();
         input.simulator = self->m_session->connection()->isSimulator();
-        input.line =
-            self->m_session->connection()->linkStats().lineText(self->m_session->deviceInView());
+        input.line = self->m_session->connection()->linkStats().lineText(
+            self->m_session->line()->deviceInView());
         input.deviceId = self->m_session->connection()->settings().deviceId;
         input.notes = notes;
         input.date = QDateTime::currentDateTime();
         input.lastRead = input.date; // read just now, for this report
-        input.savedToFlash = !self->m_session->parameters()->unsavedToFlash();
+        input.savedToFlash = !self->m_session->parameters()->store()->unsavedToFlash();
         input.locale = Language::instance().current();
         input.travelLimits = self->m_session->travelLimits();
         if (self->m_checklist) {

@@ -2,6 +2,7 @@
 // into one folder.
 #include "../ctlrunner.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include "line/bussweep.h"
 #include "profile/busdump.h"
@@ -14,7 +15,7 @@ namespace stepcom {
 
 void CtlRunner::dumpIntoFolder(const QString &folder, const QHash<QString, qint64> &values)
 {
-    const int id = m_session->deviceInView();
+    const int id = m_session->line()->deviceInView();
     const BusDump::Saved saved =
         BusDump::save(folder, m_map, id, m_options.name, m_options.notes, values,
                       QDate::currentDate(), m_session->connection()->isSimulator());
@@ -22,7 +23,8 @@ void CtlRunner::dumpIntoFolder(const QString &folder, const QHash<QString, qint6
         fail(UsageError, saved.error);
         return;
     }
-    m_out << tr("saved the settings of %1 to %2").arg(m_session->describeDevice(id), saved.path)
+    m_out << tr("saved the settings of %1 to %2")
+                 .arg(m_session->line()->describeDevice(id), saved.path)
           << Qt::endl;
     finish(Ok);
 }
@@ -84,7 +86,7 @@ void CtlRunner::readMachine(const QString &failure,
             ReportInput input;
             input.map = m_map;
             input.values = sweep->outcome(id).values;
-            input.link = m_session->describeDevice(id);
+            input.link = m_session->line()->describeDevice(id);
             input.simulator = m_session->connection()->isSimulator();
             input.line = m_session->connection()->linkStats().lineText(id);
             input.deviceId = id;

@@ -2,6 +2,7 @@
 
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 
 #include <QHBoxLayout>
@@ -16,7 +17,7 @@ QHash<QString, qint64> deviceValues(const DeviceSession &session)
 {
     QHash<QString, qint64> v;
     for (const Parameter *p : session.map().holdings()) {
-        if (const auto raw = session.parameters()->deviceValue(p->key))
+        if (const auto raw = session.parameters()->store()->deviceValue(p->key))
             v.insert(p->key, *raw);
     }
     return v;
@@ -87,7 +88,7 @@ QList<MotorWiring> ChecklistInputStep::wiring() const
 {
     QList<MotorWiring> out;
     const RegisterMap &map = session()->map();
-    const ParameterStore *store = session()->parameters();
+    const ParameterStore *store = session()->parameters()->store();
     for (int n = 1; n <= map.blockCount(QStringLiteral("motor")); ++n) {
         MotorWiring w;
         w.motor = n;

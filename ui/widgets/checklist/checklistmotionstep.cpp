@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -37,7 +38,7 @@ ChecklistMotionStep::ChecklistMotionStep(DeviceSession *session, WriteFlow *writ
         const QString key = commandKey();
         StatusValues now;
         for (const Parameter *p : this->session()->map().holdings()) {
-            if (const auto v = this->session()->parameters()->deviceValue(p->key))
+            if (const auto v = this->session()->parameters()->store()->deviceValue(p->key))
                 now.insert(p->key, *v);
         }
         // Only what the supervisor will follow to its end is run: its verdict decides the step.

@@ -5,6 +5,7 @@
 #include "base/writeflow.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -63,25 +64,26 @@ ChecklistStepWidget::ChecklistStepWidget(DeviceSession *session, WriteFlow *writ
         setStatus(tr("Skipped."));
     });
     // A proposed fix: the write dialog's outcome decides.
-    connect(session, &DeviceSession::writeFinished, this, [this](const WriteOutcome &o) {
-        if (m_pendingKeys.isEmpty())
-            return;
-        bool all = true;
-        bool any = false;
-        for (const QString &k : std::as_const(m_pendingKeys)) {
-            const bool mismatched =
-                std::any_of(o.mismatches.cbegin(), o.mismatches.cend(),
-                            [&k](const WriteMismatch &m) { return m.key == k; });
-            const bool ok = o.written.contains(k) && !mismatched;
-            all = all && ok;
-            any = any || o.written.contains(k) || mismatched;
-        }
-        if (!any)
-            return; // another write (not ours)
-        m_pendingKeys.clear();
-        if (auto done = std::exchange(m_pendingDone, {}))
-            done(all);
-    });
+    connect(session->parameters(), &SessionParameters::writeFinished, this,
+            [this](const WriteOutcome &o) {
+                if (m_pendingKeys.isEmpty())
+                    return;
+                bool all = true;
+                bool any = false;
+                for (const QString &k : std::as_const(m_pendingKeys)) {
+                    const bool mismatched =
+                        std::any_of(o.mismatches.cbegin(), o.mismatches.cend(),
+                                    [&k](const WriteMismatch &m) { return m.key == k; });
+                    const bool ok = o.written.contains(k) && !mismatched;
+                    all = all && ok;
+                    any = any || o.written.contains(k) || mismatched;
+                }
+                if (!any)
+                    return; // another write (not ours)
+                m_pendingKeys.clear();
+                if (auto done = std::exchange(m_pendingDone, {}))
+                    done(all);
+            });
 }
 
 QString ChecklistStepWidget::statusText() const
@@ -110,7 +112,7 @@ const Parameter *ChecklistStepWidget::motorParameter(const char *local) const
 QString ChecklistStepWidget::deviceText(const QString &key) const
 {
     const Parameter *p = m_session->map().find(key);
-    const auto v = p ? m_session->parameters()->deviceValue(key) : std::nullopt;
+    const auto v = p ? m_session->parameters()->store()->deviceValue(key) : std::nullopt;
     return v ? p->displayRaw(*v, Language::instance().current()) : QStringLiteral("—");
 }
 
@@ -119,7 +121,7 @@ void ChecklistStepWidget::proposeWrite(const QList<std::pair<QString, qint64>> &
 {
     QStringList keys;
     for (const auto &[key, raw] : values) {
-        if (const QString e = m_session->parameters()->edit(key, raw); !e.isEmpty()) {
+        if (const QString e = m_session->parameters()->store()->edit(key, raw); !e.isEmpty()) {
             setStatus(e);
             return;
         }

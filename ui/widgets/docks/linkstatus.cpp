@@ -5,6 +5,7 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/reconnector.h"
 #include "widgets/fields/elidedlabel.h"
 
@@ -49,7 +50,8 @@ LinkStatus::LinkStatus(DeviceSession *session, QWidget *parent)
     connect(session->connection(), &SessionConnection::linkStateChanged, this,
             &LinkStatus::refresh);
     connect(session->connection()->health(), &LinkHealth::stateChanged, this, &LinkStatus::refresh);
-    connect(session->parameters(), &ParameterStore::unsavedChanged, this, &LinkStatus::refresh);
+    connect(session->parameters()->store(), &ParameterStore::unsavedChanged, this,
+            &LinkStatus::refresh);
     connect(&m_timer, &QTimer::timeout, this, &LinkStatus::refresh);
     m_timer.start(1000);
     refresh();
@@ -130,8 +132,9 @@ void LinkStatus::refresh()
                        : tr("Line: %1 (at most %2 ms)")
                              .arg(s.lineText(m_session->connection()->settings().deviceId))
                              .arg(m_session->connection()->settings().timeoutMs));
-    m_unsaved->setText(m_session->parameters()->unsavedToFlash() ? tr("⚠ Not saved to flash")
-                                                                 : QString());
+    m_unsaved->setText(m_session->parameters()->store()->unsavedToFlash()
+                           ? tr("⚠ Not saved to flash")
+                           : QString());
     m_unsaved->setToolTip(
         tr("Parameters were written but not saved to the controller's flash: they are lost "
            "when it loses power. Use Save to flash."));

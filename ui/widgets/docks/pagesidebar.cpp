@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/docks/pagesidebardelegate.h"
 #include "widgets/fields/lineicon.h"
 
@@ -59,7 +60,8 @@ PageSidebar::PageSidebar(DeviceSession *session, QWidget *parent)
             chosen.first()->data(PageRole).toInt() >= 0)
             setCurrentItem(chosen.first());
     });
-    connect(session->parameters(), &ParameterStore::editsChanged, this, &PageSidebar::refresh);
+    connect(session->parameters()->store(), &ParameterStore::editsChanged, this,
+            &PageSidebar::refresh);
     connect(session->connection()->health(), &LinkHealth::stateChanged, this,
             &PageSidebar::refresh);
     connect(session->connection(), &SessionConnection::linkStateChanged, this,
@@ -130,7 +132,7 @@ int PageSidebar::editCount(int page) const
         return 0;
     const QStringList keys = m_pages.at(page)->keys();
     int edits = 0;
-    for (const QString &key : m_session->parameters()->editedKeys())
+    for (const QString &key : m_session->parameters()->store()->editedKeys())
         edits += keys.contains(key) ? 1 : 0;
     return edits;
 }

@@ -5,6 +5,7 @@
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
 
@@ -53,7 +54,7 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
 {
     setObjectName(kind == Kind::Arc ? QStringLiteral("arcEditor") : QStringLiteral("lineEditor"));
     m_writeFlow = new WriteFlow(session, this);
-    ParameterStore *store = session->parameters();
+    ParameterStore *store = session->parameters()->store();
     auto *layout = new QVBoxLayout(this);
 
     m_parameterBox = new QGroupBox(this);
@@ -191,7 +192,7 @@ Point PathEditor::typedPoint(const char *name) const
 MotorParameters PathEditor::motor(int n) const
 {
     // What the controller holds: it runs with those, not with edits on the motor pages.
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     return interpolation::motorParameters(
         m_session->map(), n, [store](const QString &k) { return store->deviceValue(k); });
 }
@@ -218,8 +219,8 @@ std::optional<QPointF> PathEditor::position() const
     const Parameter *y = map.blockParameter(QStringLiteral("motor"), 2, QStringLiteral("position"));
     if (!x || !y || !m_session->connection()->isConnected())
         return std::nullopt;
-    const auto rx = m_session->parameters()->deviceValue(x->key);
-    const auto ry = m_session->parameters()->deviceValue(y->key);
+    const auto rx = m_session->parameters()->store()->deviceValue(x->key);
+    const auto ry = m_session->parameters()->store()->deviceValue(y->key);
     if (!rx || !ry)
         return std::nullopt;
     return QPointF(x->toEngineering(*rx), y->toEngineering(*ry));
@@ -230,7 +231,7 @@ bool PathEditor::anyMotorRunning() const
     for (int n = 1; n <= 2; ++n) {
         const Parameter *p =
             m_session->map().blockParameter(QStringLiteral("motor"), n, QStringLiteral("running"));
-        if (p && m_session->parameters()->deviceValue(p->key).value_or(0) != 0)
+        if (p && m_session->parameters()->store()->deviceValue(p->key).value_or(0) != 0)
             return true;
     }
     return false;
@@ -248,7 +249,7 @@ QString PathEditor::startBlockedReason() const
 {
     if (!m_session->connection()->isConnected())
         return tr("Not connected.");
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     for (const ParameterField *f : m_form->fields()) {
         if (f->isTyping())
             return tr("A value is being typed: press Enter to keep it, then write it.");
@@ -367,7 +368,7 @@ void PathEditor::update()
     m_outcome->setVisible(!m_outcome->text().isEmpty());
     bool edited = false;
     for (const QString &k : std::as_const(m_keys))
-        edited = edited || m_session->parameters()->entry(k).edited.has_value();
+        edited = edited || m_session->parameters()->store()->entry(k).edited.has_value();
     m_write->setEnabled(connected && edited);
     // Stopping depends on nothing but the link.
     m_stop->setEnabled(connected);

@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -88,7 +89,8 @@ StepMovePanel::StepMovePanel(DeviceSession *session, int motor, QWidget *parent)
     });
     connect(session->connection(), &SessionConnection::linkStateChanged, this,
             &StepMovePanel::refresh);
-    connect(session->parameters(), &ParameterStore::editsChanged, this, &StepMovePanel::refresh);
+    connect(session->parameters()->store(), &ParameterStore::editsChanged, this,
+            &StepMovePanel::refresh);
     connect(session->motion(), &MotionSupervisor::changed, this, &StepMovePanel::refresh);
     retranslate();
 }

@@ -3,6 +3,7 @@
 #include "motion/travellimits.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 
 #include <QCheckBox>
@@ -75,10 +76,11 @@ TravelLimitsEditor::TravelLimitsEditor(DeviceSession *session, QWidget *parent)
     grid->addWidget(m_note, last + 1, 0, 1, 5);
     connect(m_apply, &QPushButton::clicked, this, &TravelLimitsEditor::apply);
     connect(session, &DeviceSession::travelLimitsChanged, this, &TravelLimitsEditor::showLimits);
-    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
-        if (k.endsWith(QLatin1String(".speed")) || k.endsWith(QLatin1String(".pitch")))
-            refreshOverrun();
-    });
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this,
+            [this](const QString &k) {
+                if (k.endsWith(QLatin1String(".speed")) || k.endsWith(QLatin1String(".pitch")))
+                    refreshOverrun();
+            });
     connect(session->connection(), &SessionConnection::linkStatsChanged, this,
             &TravelLimitsEditor::refreshOverrun);
     retranslate();
@@ -161,8 +163,8 @@ QString TravelLimitsEditor::overrunText(int motor) const
         map.blockParameter(QStringLiteral("motor"), motor, QStringLiteral("pitch"));
     if (!pos || !speed || !pitch)
         return {};
-    const auto rpm = m_session->parameters()->deviceValue(speed->key);
-    const auto p = m_session->parameters()->deviceValue(pitch->key);
+    const auto rpm = m_session->parameters()->store()->deviceValue(speed->key);
+    const auto p = m_session->parameters()->store()->deviceValue(pitch->key);
     const qint64 roundTrip = m_session->connection()->linkStats().maxRoundTripMs;
     if (!rpm || !p || roundTrip < 0)
         return tr("How far a jog can overrun a limit is worked out once the speed and pitch are "
