@@ -9,6 +9,7 @@
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/host/simhost.h"

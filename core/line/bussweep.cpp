@@ -2,6 +2,7 @@
 
 #include "session/devicesession.h"
 #include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 namespace stepcom {
 

@@ -4,6 +4,7 @@
 #include "session/idlist.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QPointer>
 

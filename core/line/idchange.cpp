@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QPointer>
 #include <QTimer>

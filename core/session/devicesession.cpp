@@ -1,7 +1,11 @@
 #include "session/devicesession.h"
+#include "device/readlimits.h"
 
 #include "bus/modbuslink.h"
+#include "device/deviceclient.h"
 #include "device/devicememory.h"
+#include "device/parameterstore.h"
+#include "device/poller.h"
 #include "i18n/translators.h"
 #include "map/factoryvalues.h"
 #include "motion/motionjudge.h"
@@ -72,10 +76,13 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
         if (std::exchange(m_readAllAfterStatus, false))
             m_parameters->readAll();
     });
-    connect(m_client, &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
+    const auto learn = [this](int unit, ReadLimits::Lesson lesson, const QString &key) {
+        learnt(unit, int(lesson), key);
+    };
+    connect(m_client, &DeviceClient::readLimitsLearned, this, learn);
     // The background poll plans with, and learns into, the same per-id limits.
     m_client->shareReadLimits(m_bus->client());
-    connect(m_bus->client(), &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
+    connect(m_bus->client(), &DeviceClient::readLimitsLearned, this, learn);
     connect(m_poller, &Poller::cycleFinished, this, [this](bool ok) {
         m_bus->noteLiveCycle(m_line->deviceInView(), ok, *m_store, m_poller->lastError());
     });
@@ -101,6 +108,11 @@ DeviceSession::~DeviceSession()
     delete m_link; // before the simulator it may be talking to
     m_link = nullptr;
     delete m_memory;
+}
+
+const RegisterMap &DeviceSession::map() const
+{
+    return m_store->map();
 }
 
 void DeviceSession::setSimulator(std::unique_ptr<SimulatorStarter> simulator)

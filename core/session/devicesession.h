@@ -1,31 +1,31 @@
 #pragma once
 
-// The one header a front-end needs: the session and the value types its API speaks in.
-#include "bus/linksettings.h" // LinkSettings
-#include "bus/linkstats.h"    // LinkStats
-#include "bus/request.h"      // Priority, Result
-#include "bus/trafficlog.h"   // TrafficLog, TrafficEntry
-#include "device/deviceclient.h"
-#include "device/parameterstore.h"
-#include "device/poller.h" // PollStats
-#include "motion/travellimits.h"
-#include "session/busdevicestatus.h"
-#include "session/restartwatch.h" // RestartWatch::Zeros
+// The session: the parts it hands out and what only the whole can do. Each part has its own
+// header under session/parts/, included by the callers that need it; this one includes no
+// client, store, poller or planner header, so touching those rebuilds only their users.
+#include "map/registermap.h"      // RegisterMap::builtin(), the constructor's default
+#include "motion/travellimits.h"  // TravelLimits
+#include "session/restartwatch.h" // RestartWatch::Zeros, ::Evidence, in signals
 
-#include <QMap>
+#include <QHash>
 #include <QObject>
 #include <QSet>
 
+#include <functional>
 #include <memory>
 
 namespace stepcom {
 
 class BusPoller;
+class DeviceClient;
 class DeviceMemory;
 class JogController;
 class LinkHealth;
 class ModbusLink;
 class MotionSupervisor;
+class ParameterStore;
+class Poller;
+class ReadLimits;
 class Reconnector;
 class SessionConnection;
 class SessionLine;
@@ -33,14 +33,18 @@ class SessionParameters;
 class SessionStatus;
 class SimulatorStarter;
 class StepMove;
+struct LinkSettings;
+struct ReadOutcome;
+struct Result;
 
 // One controller connection and everything known about it. Every front-end (the window,
-// stepcomctl, the benchmark, the screenshot tool, the tests) works through this: it reads,
-// writes, pulses commands, jogs, polls the status, records it, and says when motion must stop.
-// It owns the link, the typed client, the parameter store, the status poller, the jog
-// controller, the status recorder and (when a program injects one) the built-in simulator;
-// none of the link's or the poller's parts are handed out. Its declarations are grouped by
-// concern, each group naming the .cpp that implements it (docs/architecture.md, "Who owns what").
+// stepcomctl, the benchmark, the screenshot tool, the tests) works through this front door:
+// it hands out its parts -- connection(), status(), parameters(), line(), motion(), jog() --
+// and does itself only what needs the whole: commands and the emergency stop, saving and the
+// factory reset, live or not, the simulator, restarts. It owns the link, the typed client, the
+// store, the poller and the parts, which work on its state (they are its friends); the link's
+// and the poller's own objects are not handed out. Its declarations are grouped by concern,
+// each group naming the .cpp that implements it (docs/architecture.md, "Who owns what").
 class DeviceSession : public QObject
 {
     Q_OBJECT
@@ -65,7 +69,7 @@ public:
     ~DeviceSession() override;
 
     // -- Its parts and what it holds (devicesession.cpp) --
-    const RegisterMap &map() const { return m_store->map(); }
+    const RegisterMap &map() const;
     // The values the session knows, what the controller holds and what the user edited (its
     // store, the model pages and forms bind to), and reading and writing them
     // (parts/sessionparameters.h).
@@ -163,7 +167,8 @@ private:
     void onLost(const QString &reason);
     // What a connect found already known of this controller, said once in words.
     void sayKnownLimits(int id);
-    void learnt(int unit, ReadLimits::Lesson lesson, const QString &key);
+    // `lesson`: a ReadLimits::Lesson (kept out of this header with the client's).
+    void learnt(int unit, int lesson, const QString &key);
     // -- Reading, writing, commands (devicesession.cpp) --
     void guardedCommand(Risk risk, const QString &key);
     // After a factory reset: show what it holds now, and say where that is not the factory's.

@@ -1,10 +1,13 @@
 // DeviceSession, its connection: what it does when the link opens, drops or comes back, and
 // what each controller of the line refuses to read (its part: parts/sessionconnection.cpp; the
 // devices of the line: parts/sessionline.cpp).
+#include "device/readlimits.h"
 #include "session/devicesession.h"
 
 #include "bus/modbuslink.h"
+#include "device/deviceclient.h"
 #include "device/devicememory.h"
+#include "device/parameterstore.h"
 #include "device/poller.h"
 #include "session/buspoller.h"
 #include "session/parts/sessionconnection.h"
@@ -87,14 +90,14 @@ void DeviceSession::reopen(const LinkSettings &settings)
     openLink(settings);
 }
 
-void DeviceSession::learnt(int unit, ReadLimits::Lesson lesson, const QString &key)
+void DeviceSession::learnt(int unit, int lesson, const QString &key)
 {
     m_knownLimits.insert(SessionConnection::lineKey(m_link->settings()), m_client->allReadLimits());
     QString text;
-    if (lesson == ReadLimits::Lesson::GapsRefused) {
+    if (ReadLimits::Lesson(lesson) == ReadLimits::Lesson::GapsRefused) {
         text = tr("The controller refuses reads that cover reserved registers; from now on only "
                   "its listed registers are read (a few more requests).");
-    } else if (lesson == ReadLimits::Lesson::Unsupported) {
+    } else if (ReadLimits::Lesson(lesson) == ReadLimits::Lesson::Unsupported) {
         const Parameter *p = m_client->map().find(key);
         text = tr("%1 (register %2) is not supported by this controller: it refuses to read it. "
                   "It is left out from now on.")

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "session/devicesession.h"
+#include "session/parts/sessionstatus.h"
+#include "session/parts/sessionparameters.h"
 
 namespace stepcom {
 

@@ -2,7 +2,9 @@
 // status reads; the session reads everything of that controller again and compares it with
 // what it held, so what is said is what the controller showed, not a guess.
 #include "bus/modbuslink.h"
+#include "device/deviceclient.h"
 #include "device/devicememory.h"
+#include "device/parameterstore.h"
 #include "i18n/translators.h"
 #include "motion/referencetracker.h"
 #include "session/buspoller.h"
@@ -10,6 +12,8 @@
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/restartwatch.h"
 
 #include <QDateTime>

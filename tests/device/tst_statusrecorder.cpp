@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"

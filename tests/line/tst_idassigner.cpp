@@ -2,6 +2,7 @@
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"

@@ -3,6 +3,7 @@
 #include "profile/backupstore.h"
 #include "profile/profilerollout.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
 #include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"

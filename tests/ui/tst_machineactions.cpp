@@ -4,6 +4,7 @@
 #include "profile/profilefile.h"
 #include "profile/profilerollout.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"

@@ -10,6 +10,7 @@
 #include "replay/replaybar.h"
 #include "replay/replayviews.h"
 #include "replayfixture.h"
+#include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/trafficmodel.h"

@@ -4,6 +4,7 @@
 #include "base/language.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
 #include "widgets/docks/trafficmodel.h"

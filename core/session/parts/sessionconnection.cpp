@@ -4,7 +4,9 @@
 
 #include "bus/modbuslink.h"
 #include "bus/wiretap.h"
+#include "device/deviceclient.h"
 #include "device/devicememory.h"
+#include "device/parameterstore.h"
 #include "device/poller.h"
 #include "session/buspoller.h"
 #include "session/devicesession.h"

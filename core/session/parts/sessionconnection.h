@@ -1,6 +1,8 @@
 #pragma once
 
 #include "bus/linksettings.h" // LinkSettings
+#include "bus/linkstats.h"    // what linkStats() hands out
+#include "bus/trafficlog.h"   // what traffic() hands out
 
 #include <QMap>
 #include <QObject>
@@ -11,8 +13,6 @@ class DeviceSession;
 class LinkHealth;
 class ReadLimits;
 class Reconnector;
-class TrafficLog;
-struct LinkStats;
 
 // The session's link to its line: connecting (to a port, a TCP address or the built-in
 // simulator), its state and health, reconnecting after a loss, its traffic and statistics, and

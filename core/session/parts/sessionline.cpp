@@ -6,7 +6,9 @@
 #include "session/parts/sessionparameters.h"
 
 #include "bus/modbuslink.h"
+#include "device/deviceclient.h"
 #include "device/devicememory.h"
+#include "device/parameterstore.h"
 #include "device/poller.h"
 #include "map/registermap.h"
 #include "session/buspoller.h"

@@ -1,8 +1,9 @@
 #pragma once
 
-#include "bus/request.h"         // Priority
-#include "device/deviceclient.h" // ReadOutcome, WriteOutcome, in signals
-#include "device/writeplanner.h" // ParameterWrite
+#include "bus/request.h"           // Priority
+#include "device/deviceclient.h"   // ReadOutcome, WriteOutcome, in signals
+#include "device/parameterstore.h" // what store() hands out
+#include "device/writeplanner.h"   // ParameterWrite
 
 #include <QList>
 #include <QObject>
@@ -12,7 +13,6 @@
 namespace stepcom {
 
 class DeviceSession;
-class ParameterStore;
 struct Parameter;
 
 // The parameters of the device in view: what the controller holds and what the user edited

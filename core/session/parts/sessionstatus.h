@@ -1,19 +1,19 @@
 #pragma once
 
+#include "device/poller.h" // what stats() hands out
+
 #include <QObject>
 #include <QStringList>
 
 namespace stepcom {
 
 class ParameterStore;
-class Poller;
 class RegisterMap;
 class StatusRecorder;
-struct PollStats;
 
 // The session's live status poll of the device in view: started on connect while the session
 // is live, its rate, how fast it is, and the samples recorded for the plots. Owned by the
-// DeviceSession that hands it out (status()); what PollStats holds is in device/poller.h.
+// DeviceSession that hands it out (status()).
 class SessionStatus : public QObject
 {
     Q_OBJECT
