@@ -72,12 +72,12 @@ class TestPoller : public QObject
     void connectFullRate()
     {
         session = std::make_unique<DeviceSession>();
-        SessionInternals::poller(*session)->setIntervalMs(0);
+        session->status()->setIntervalMs(0);
         QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         test::useBuiltinSimulator(*session);
         session->connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QTRY_VERIFY(SessionInternals::poller(*session)->stats().cycles >= 2);
+        QTRY_VERIFY(session->status()->stats().cycles >= 2);
     }
 
 private Q_SLOTS:
@@ -96,13 +96,13 @@ private Q_SLOTS:
     {
         qputenv("STEPCOM_POLL_INTERVAL_MS", "0");
         QCOMPARE(Poller::intervalFromEnvironment(100), 0);
-        QCOMPARE(SessionInternals::poller(DeviceSession())->intervalMs(), 0);
+        QCOMPARE(DeviceSession().status()->intervalMs(), 0);
         qputenv("STEPCOM_POLL_INTERVAL_MS", "fast");
         QCOMPARE(Poller::intervalFromEnvironment(100), 100);
         qputenv("STEPCOM_POLL_INTERVAL_MS", "-5");
         QCOMPARE(Poller::intervalFromEnvironment(100), 100);
         qunsetenv("STEPCOM_POLL_INTERVAL_MS");
-        QCOMPARE(SessionInternals::poller(DeviceSession())->intervalMs(), 100);
+        QCOMPARE(DeviceSession().status()->intervalMs(), 100);
     }
 
     // A silent device: each cycle waits for its timeouts, and no poll piles up behind them --
@@ -291,8 +291,8 @@ private Q_SLOTS:
             QTRY_VERIFY_WITH_TIMEOUT(!sim()->running(1), 1000);
         }
         QCOMPARE(watch.maxOutstanding, 1);
-        QVERIFY(SessionInternals::poller(*session)->isActive());
-        QTRY_VERIFY(!SessionInternals::poller(*session)->isFast());
+        QVERIFY(session->status()->isActive());
+        QTRY_VERIFY(!session->status()->isFast());
     }
 };
 

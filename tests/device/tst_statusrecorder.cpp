@@ -67,7 +67,7 @@ private Q_SLOTS:
         QSignalSpy cycles(SessionInternals::poller(session), &Poller::cycleFinished);
         QSignalSpy samples(&recorder, &StatusRecorder::sampleAdded);
         QTRY_VERIFY_WITH_TIMEOUT(cycles.size() >= 5, 5000);
-        SessionInternals::poller(session)->stop();
+        session.status()->stop();
         int ok = 0;
         for (const auto &c : cycles)
             ok += c.at(0).toBool() ? 1 : 0;
@@ -86,7 +86,7 @@ private Q_SLOTS:
         // Detached: no more samples.
         recorder.attach(nullptr);
         const int before = recorder.size();
-        SessionInternals::poller(session)->start();
+        session.status()->start();
         QTRY_VERIFY(cycles.size() >= ok + 2);
         QCOMPARE(recorder.size(), before);
     }

@@ -35,7 +35,7 @@ private Q_SLOTS:
                  180);
         QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor2.pitch")),
                  ParameterStore::State::InSync);
-        for (const TrafficEntry &e : SessionInternals::link(*session)->traffic()->entries()) {
+        for (const TrafficEntry &e : session->connection()->traffic()->entries()) {
             if (e.direction == TrafficEntry::Direction::Sent)
                 QCOMPARE(int(quint8(e.bytes.at(1))), 0x03); // reads only
         }

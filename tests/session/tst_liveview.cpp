@@ -7,7 +7,6 @@
 #include "session/parts/sessionline.h"
 #include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
-#include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 
@@ -22,7 +21,7 @@ namespace {
 QList<std::pair<int, int>> readsSent(const DeviceSession &session)
 {
     QList<std::pair<int, int>> out;
-    for (const TrafficEntry &e : SessionInternals::link(session)->traffic()->entries()) {
+    for (const TrafficEntry &e : session.connection()->traffic()->entries()) {
         if (e.direction != TrafficEntry::Direction::Sent || e.bytes.size() < 8 ||
             quint8(e.bytes.at(1)) != 0x03)
             continue;

@@ -21,6 +21,7 @@
 #include "session/jogcontroller.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -306,7 +307,7 @@ private Q_SLOTS:
         QVERIFY2(sim->start(options, &error), qPrintable(error));
 
         session = std::make_unique<DeviceSession>(device()->map());
-        SessionInternals::poller(*session)->setIntervalMs(20);
+        session->status()->setIntervalMs(20);
         jog = std::make_unique<JogController>(session.get());
         jog->setSettleMs(60);
         for (int m = 1; m <= 2; ++m) {
@@ -370,7 +371,7 @@ private Q_SLOTS:
             reconnect();
         settle();
         QTRY_VERIFY_WITH_TIMEOUT(session->connection()->isConnected(), 30000);
-        SessionInternals::poller(*session)->stop();
+        session->status()->stop();
         QTRY_VERIFY_WITH_TIMEOUT(!SessionInternals::link(*session)->isBusy() &&
                                      SessionInternals::link(*session)->queuedCount() == 0,
                                  30000);

@@ -6,7 +6,6 @@
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
-#include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -48,7 +47,7 @@ class TestMachineActions : public QObject
     QList<int> writeFrameIds() const
     {
         QList<int> ids;
-        for (const TrafficEntry &e : SessionInternals::link(*session)->traffic()->entries()) {
+        for (const TrafficEntry &e : session->connection()->traffic()->entries()) {
             if (e.direction == TrafficEntry::Direction::Sent && e.bytes.size() > 1 &&
                 (quint8(e.bytes.at(1)) == 0x06 || quint8(e.bytes.at(1)) == 0x10))
                 ids << quint8(e.bytes.at(0));
@@ -119,7 +118,7 @@ private Q_SLOTS:
         QCOMPARE(dialog->checkedDevices(), (QList<int>{1, 2, 3}));
         dialog->setDeviceChecked(1, false);
         QVERIFY(!dialog->writeButton()->isEnabled()); // nothing compared: nothing to confirm
-        SessionInternals::link(*session)->traffic()->clear();
+        session->connection()->traffic()->clear();
         dialog->compareButton()->click();
         QTRY_COMPARE_WITH_TIMEOUT(dialog->rows()->topLevelItemCount(), 2, 15000);
         QVERIFY(writeFrameIds().isEmpty());

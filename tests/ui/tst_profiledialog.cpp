@@ -7,7 +7,6 @@
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
 #include "session/parts/sessionparameters.h"
-#include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -244,7 +243,7 @@ private Q_SLOTS:
         QVERIFY2(applied.at(0).at(0).toBool(),
                  qPrintable(applied.at(0).at(2).toStringList().join(QLatin1Char('\n'))));
         QCOMPARE(simValue("device.id"), 7);
-        QCOMPARE(SessionInternals::link(*session)->settings().deviceId, 7); // the link followed
+        QCOMPARE(session->connection()->settings().deviceId, 7); // the link followed
         QCOMPARE(linkChanged.size(), 1);
     }
 
