@@ -6,6 +6,9 @@
 #include "device/poller.h"
 #include "device/readplanner.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -62,7 +65,7 @@ struct LinkWatch
                                      std::max(longestPollMs, msBetween(*it, Clock::now()));
                              pollStarted.erase(it);
                          });
-        QObject::connect(&session, &DeviceSession::statusCycleFinished, &context, [this] {
+        QObject::connect(session.status(), &SessionStatus::statusCycleFinished, &context, [this] {
             mostPollsInACycle = std::max(mostPollsInACycle, pollsThisCycle);
             pollsThisCycle = 0;
         });
@@ -85,15 +88,15 @@ void pause(int ms)
 void measureStatus(DeviceSession &session, LinkWatch &watch, const BenchConfig &config,
                    BaudResult &r)
 {
-    waitUntil([&session] { return session.statusStats().cycles >= 2; }, 5000); // warm up
-    session.resetStatusStats();
+    waitUntil([&session] { return session.status()->stats().cycles >= 2; }, 5000); // warm up
+    session.status()->resetStats();
     watch.mostPollsInACycle = 0;
-    if (!waitUntil([&] { return session.statusStats().cycles >= config.cycles; },
+    if (!waitUntil([&] { return session.status()->stats().cycles >= config.cycles; },
                    config.cycles * 2000 + 5000)) {
-        r.error = QStringLiteral("(a): only %1 cycles").arg(session.statusStats().cycles);
+        r.error = QStringLiteral("(a): only %1 cycles").arg(session.status()->stats().cycles);
         return;
     }
-    const PollStats &s = session.statusStats();
+    const PollStats &s = session.status()->stats();
     r.cycleMs.count = s.cycles;
     r.cycleMs.mean = s.meanMs();
     r.cycleMs.min = double(s.minMs);
@@ -101,15 +104,16 @@ void measureStatus(DeviceSession &session, LinkWatch &watch, const BenchConfig &
     r.fastCycles = s.fastCycles;
     r.readsPerCycle = watch.mostPollsInACycle;
     if (s.failed > 0)
-        r.error =
-            QStringLiteral("(a): %1 cycles failed: %2").arg(s.failed).arg(session.statusError());
+        r.error = QStringLiteral("(a): %1 cycles failed: %2")
+                      .arg(s.failed)
+                      .arg(session.status()->error());
 }
 
 void measureReadAll(DeviceSession &session, LinkWatch &watch, const BenchConfig &config,
                     BaudResult &r)
 {
     ModbusLink *link = SessionInternals::link(session);
-    session.stopStatus(); // read-all alone on the line, as at connect
+    session.status()->stop(); // read-all alone on the line, as at connect
     waitUntil([link] { return !link->isBusy() && link->queuedCount() == 0; }, 5000);
     for (int i = 0; i < config.readAlls; ++i) {
         struct State
@@ -122,7 +126,7 @@ void measureReadAll(DeviceSession &session, LinkWatch &watch, const BenchConfig 
         auto state = std::make_shared<State>();
         const int before = watch.dispatched;
         state->clock.start();
-        session.readAll([state](const ReadOutcome &o) {
+        session.parameters()->readAll([state](const ReadOutcome &o) {
             state->ms = double(state->clock.nsecsElapsed()) / 1e6;
             state->outcome = o;
             state->done = true;
@@ -135,7 +139,7 @@ void measureReadAll(DeviceSession &session, LinkWatch &watch, const BenchConfig 
         r.readAllMs.add(state->ms);
         r.readAllReads = std::max(r.readAllReads, watch.dispatched - before);
     }
-    session.startStatus();
+    session.status()->start();
 }
 
 void measureEmergencyStop(DeviceSession &session, SimDevice *device, const BenchConfig &config,
@@ -145,7 +149,7 @@ void measureEmergencyStop(DeviceSession &session, SimDevice *device, const Bench
     for (int round = 0; round < config.estopRounds; ++round) {
         device->setMachinePosition(1, 50.0);
         device->command(QStringLiteral("motor1.forward"));
-        if (!waitUntil([&session] { return session.isStatusFast(); }, 3000)) {
+        if (!waitUntil([&session] { return session.status()->isFast(); }, 3000)) {
             r.error = QStringLiteral("(c): the poller never saw the motor run");
             return;
         }
@@ -242,15 +246,16 @@ BaudResult measureBaud(int baud, const BenchConfig &config, int answerDelayMs, b
     host.device()->setValue(QStringLiteral("device.baud"), baud);
 
     DeviceSession session(map);
-    session.setStatusIntervalMs(0); // full rate
+    session.status()->setIntervalMs(0); // full rate
     LinkWatch watch(session);
     bool read = false;
-    QObject::connect(&session, &DeviceSession::readFinished, &session, [&read] { read = true; });
+    QObject::connect(session.parameters(), &SessionParameters::readFinished, &session,
+                     [&read] { read = true; });
     LinkSettings settings;
     settings.portName = host.rtuPath();
     settings.baud = baud;
-    session.connectTo(settings);
-    if (!waitUntil([&read] { return read; }, 10000) || !session.isConnected()) {
+    session.connection()->connectTo(settings);
+    if (!waitUntil([&read] { return read; }, 10000) || !session.connection()->isConnected()) {
         r.error = QStringLiteral("cannot connect to the simulator at %1 baud").arg(baud);
         return r;
     }
@@ -262,7 +267,7 @@ BaudResult measureBaud(int baud, const BenchConfig &config, int answerDelayMs, b
     if (r.error.isEmpty())
         measureEmergencyStop(session, host.device(), config, r);
     r.longestPollMs = watch.longestPollMs;
-    session.disconnectFrom(); // the window takes the line now
+    session.connection()->disconnectFrom(); // the window takes the line now
     if (r.error.isEmpty() && !config.stepcomPath.isEmpty()) {
         host.device()->command(QStringLiteral("estop"));
         r.window = measureWindow(config, &host, baud);
@@ -290,24 +295,26 @@ GapResult measureGapRefusing(int baud, const BenchConfig &config)
     host.device()->setValue(QStringLiteral("device.baud"), baud);
 
     DeviceSession session(map);
-    session.setStatusIntervalMs(0); // full rate
+    session.status()->setIntervalMs(0); // full rate
     LinkWatch watch(session);
     bool read = false;
     bool readOk = false;
-    QObject::connect(&session, &DeviceSession::readFinished, &session, [&](bool ok) {
-        read = true;
-        readOk = ok;
-    });
+    QObject::connect(session.parameters(), &SessionParameters::readFinished, &session,
+                     [&](bool ok) {
+                         read = true;
+                         readOk = ok;
+                     });
     LinkSettings settings;
     settings.portName = host.rtuPath();
     settings.baud = baud;
-    session.connectTo(settings);
+    session.connection()->connectTo(settings);
     // The warm-up: the first status cycle is refused, the gaps are learnt, read-all follows.
-    if (!waitUntil([&read] { return read; }, 10000) || !session.isConnected() || !readOk) {
+    if (!waitUntil([&read] { return read; }, 10000) || !session.connection()->isConnected() ||
+        !readOk) {
         r.error = QStringLiteral("(i): the first read-all on a gap-refusing controller failed");
         return g;
     }
-    g.learnt = session.readLimits().gapFree();
+    g.learnt = session.connection()->readLimits().gapFree();
     if (!g.learnt) {
         r.error = QStringLiteral("(i): the session did not learn that gaps are refused");
         return g;
@@ -324,7 +331,7 @@ GapResult measureGapRefusing(int baud, const BenchConfig &config)
     measureStatus(session, watch, config, r);
     if (r.error.isEmpty())
         measureReadAll(session, watch, config, r);
-    session.disconnectFrom();
+    session.connection()->disconnectFrom();
     return g;
 }
 

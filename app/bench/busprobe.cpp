@@ -7,6 +7,10 @@
 #include "device/readplanner.h"
 #include "session/buspoller.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // the link itself is what is measured
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -61,18 +65,19 @@ struct Line
             d->setValue(QStringLiteral("device.baud"), baud);
         session = std::make_unique<DeviceSession>();
         session->setLive(live);
-        session->setDeviceIds(ids);
-        session->setStatusIntervalMs(0); // full rate
+        session->line()->setDeviceIds(ids);
+        session->status()->setIntervalMs(0); // full rate
         LinkSettings settings;
         settings.portName = host.rtuPath();
         settings.baud = baud;
         settings.deviceId = ids.first();
         bool opened = false;
         QObject::connect(
-            session.get(), &DeviceSession::connected, session.get(), [&opened] { opened = true; },
-            Qt::SingleShotConnection);
-        session->connectTo(settings);
-        if (!waitUntil([&opened] { return opened; }, 10000) || !session->isConnected())
+            session->connection(), &SessionConnection::connected, session.get(),
+            [&opened] { opened = true; }, Qt::SingleShotConnection);
+        session->connection()->connectTo(settings);
+        if (!waitUntil([&opened] { return opened; }, 10000) ||
+            !session->connection()->isConnected())
             error = QStringLiteral("cannot connect to the simulator at %1 baud").arg(baud);
     }
 };
@@ -87,7 +92,7 @@ void measureRounds(int baud, const BenchConfig &config, BusResult &r)
     }
     ModbusLink *link = SessionInternals::link(*line.session);
     BusPoller bus(link, line.session->map());
-    bus.setKeys(line.session->statusKeys());
+    bus.setKeys(line.session->status()->keys());
     bus.setDevices(ids);
     bus.setIntervalMs(0); // each turn armed as the last one ends
     int reads = 0;
@@ -126,7 +131,7 @@ EstopAllResult measureEstopAll(int baud, int devices, const BenchConfig &config,
         return e;
     }
     DeviceSession &session = *line.session;
-    session.setBackgroundIntervalMs(500);
+    session.line()->setBackgroundIntervalMs(500);
     ModbusLink *link = SessionInternals::link(session);
     const Parameter *estop = session.map().find(QStringLiteral("estop"));
     QHash<quint64, std::pair<Clock::time_point, bool>> started; // request id -> (when, E-STOP)
@@ -153,7 +158,7 @@ EstopAllResult measureEstopAll(int baud, int devices, const BenchConfig &config,
             d->setMachinePosition(1, 50.0);
             d->command(QStringLiteral("motor1.forward"));
         }
-        if (!waitUntil([&session] { return session.isStatusFast(); }, 3000)) {
+        if (!waitUntil([&session] { return session.status()->isFast(); }, 3000)) {
             *error = QStringLiteral("(g): the poller never saw the motor run");
             return e;
         }

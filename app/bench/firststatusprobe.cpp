@@ -5,6 +5,9 @@
 #include "bus/modbuslink.h"
 #include "device/poller.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h" // requests are watched on the link
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -40,22 +43,25 @@ FirstStatusResult measureFirstStatus(int baud, int runs)
         bool opened = false;
         bool shown = false;
         double ms = 0;
-        QObject::connect(&session, &DeviceSession::connected, &session, [&](bool ok) {
-            if (ok && !opened) {
-                clock.start();
-                opened = true;
-            }
-        });
-        QObject::connect(&session, &DeviceSession::statusCycleFinished, &session, [&](bool ok) {
-            if (!ok || !opened || shown)
-                return;
-            const ParameterStore *store = session.parameters();
-            shown = std::all_of(positions.cbegin(), positions.cend(), [store](const QString &k) {
-                return store->deviceValue(k).has_value();
+        QObject::connect(session.connection(), &SessionConnection::connected, &session,
+                         [&](bool ok) {
+                             if (ok && !opened) {
+                                 clock.start();
+                                 opened = true;
+                             }
+                         });
+        QObject::connect(
+            session.status(), &SessionStatus::statusCycleFinished, &session, [&](bool ok) {
+                if (!ok || !opened || shown)
+                    return;
+                const ParameterStore *store = session.parameters()->store();
+                shown =
+                    std::all_of(positions.cbegin(), positions.cend(), [store](const QString &k) {
+                        return store->deviceValue(k).has_value();
+                    });
+                if (shown)
+                    ms = double(clock.nsecsElapsed()) / 1e6;
             });
-            if (shown)
-                ms = double(clock.nsecsElapsed()) / 1e6;
-        });
         // The read-all must come after the first status, not before it.
         QObject::connect(SessionInternals::link(session), &ModbusLink::dispatched, &session,
                          [&](quint64, const Request &req) {
@@ -65,7 +71,7 @@ FirstStatusResult measureFirstStatus(int baud, int runs)
         LinkSettings settings;
         settings.portName = host.rtuPath();
         settings.baud = baud;
-        session.connectTo(settings);
+        session.connection()->connectTo(settings);
         if (!waitUntil([&shown] { return shown; }, 5000)) {
             r.error = QStringLiteral("(j): no status with positions within 5 s of connecting "
                                      "(run %1)")
@@ -73,7 +79,7 @@ FirstStatusResult measureFirstStatus(int baud, int runs)
             return r;
         }
         r.ms.add(ms);
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
         waitUntil([] { return false; }, 300); // the simulator's last answer drains
     }
     return r;

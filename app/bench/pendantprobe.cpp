@@ -7,6 +7,7 @@
 #include "pendant/pendantserver.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessioninternals.h" // frames are watched on the link
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -54,8 +55,8 @@ PendantResult measurePendant(int baud, int rounds, int answerDelayMs)
     LinkSettings settings;
     settings.portName = host.rtuPath();
     settings.baud = baud;
-    session.connectTo(settings);
-    if (!waitUntil([&session] { return session.isConnected(); }, 5000)) {
+    session.connection()->connectTo(settings);
+    if (!waitUntil([&session] { return session.connection()->isConnected(); }, 5000)) {
         r.error = QStringLiteral("(n): the simulator did not answer");
         return r;
     }

@@ -3,6 +3,9 @@
 #include "device/poller.h"
 #include "device/readplanner.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
 

@@ -2,6 +2,8 @@
 #include "ctllinkadvice.h"
 #include "ctlrunner.h"
 #include "ctlscan.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include "line/idchange.h"
 #include "sim/host/builtinsimulator.h"
@@ -78,8 +80,8 @@ void CtlRunner::runForCurrentId()
         m_options.arguments[0] = info.dir().filePath(
             QStringLiteral("%1-id%2%3").arg(info.baseName()).arg(id).arg(suffix));
     }
-    if (m_session && m_session->isConnected())
-        m_session->showDevice(id);
+    if (m_session && m_session->connection()->isConnected())
+        m_session->line()->showDevice(id);
     (this->*m_chosen->run)();
 }
 

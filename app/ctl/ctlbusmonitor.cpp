@@ -2,6 +2,9 @@
 
 #include "ctlmonitor.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "signalwatcher.h"
 
 #include <algorithm>
@@ -23,10 +26,11 @@ CtlBusMonitor::CtlBusMonitor(DeviceSession *session, const QList<int> &ids, int 
 {
     m_timer.setSingleShot(true);
     connect(&m_timer, &QTimer::timeout, this, &CtlBusMonitor::turn);
-    connect(m_session, &DeviceSession::linkLost, this, [this](const QString &reason) {
-        sayError(tr("link lost: %1").arg(reason));
-        end(1);
-    });
+    connect(m_session->connection(), &SessionConnection::linkLost, this,
+            [this](const QString &reason) {
+                sayError(tr("link lost: %1").arg(reason));
+                end(1);
+            });
     // The session watches each device's reads for a restart; said per device as `monitor`
     // of one says it.
     CtlMonitor::sayRestarts(m_session, this,
@@ -84,9 +88,9 @@ void CtlBusMonitor::turn()
     const int id = m_ids.at(m_next);
     if (m_next == 0)
         m_round.restart();
-    m_session->showDevice(id); // the one-shot session reads nothing on its own when shown
+    m_session->line()->showDevice(id); // the one-shot session reads nothing on its own when shown
     const quint64 generation = m_generation;
-    m_session->read(
+    m_session->parameters()->read(
         m_params, [this, generation, id](const ReadOutcome &r) { onRead(generation, id, r); },
         Priority::Poll);
 }

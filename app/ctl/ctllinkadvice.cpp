@@ -1,5 +1,7 @@
 #include "ctllinkadvice.h"
 
+#include "map/parameter.h"
+
 namespace stepcom {
 
 QString CtlLinkAdvice::nextOptions(const CtlOptions &options, int deviceId, int baud)

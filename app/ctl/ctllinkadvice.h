@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ctloptions.h"
+#include "device/writeplanner.h" // ParameterWrite
 
 #include <QCoreApplication>
 #include <QStringList>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "session/devicesession.h" // LinkSettings
+#include "session/parts/sessionconnection.h" // LinkSettings
 
 #include <QElapsedTimer>
 #include <QJsonObject>

@@ -1,6 +1,9 @@
 #include "ctlmonitor.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "signalwatcher.h"
 
@@ -47,18 +50,19 @@ CtlMonitor::CtlMonitor(DeviceSession *session, int count, int intervalMs, bool j
     , m_out(stdout)
     , m_err(stderr)
 {
-    m_session->setStatusIntervalMs(intervalMs);
+    m_session->status()->setIntervalMs(intervalMs);
     m_params = statusParameters(*m_session);
-    connect(m_session, &DeviceSession::statusCycleFinished, this,
+    connect(m_session->status(), &SessionStatus::statusCycleFinished, this,
             [this](bool ok, qint64) { onCycle(ok); });
     // A pulled cable is no reason to stop watching: try again, say so, go on.
-    Reconnector *reconnector = m_session->reconnector();
+    Reconnector *reconnector = m_session->connection()->reconnector();
     reconnector->setEnabled(true);
-    connect(m_session, &DeviceSession::linkLost, this, [this](const QString &reason) {
-        event(QStringLiteral("lost"),
-              tr("link lost: %1; trying again on its own (Ctrl-C ends)").arg(reason),
-              QStringLiteral(",\"reason\":") + quoted(reason));
-    });
+    connect(m_session->connection(), &SessionConnection::linkLost, this,
+            [this](const QString &reason) {
+                event(QStringLiteral("lost"),
+                      tr("link lost: %1; trying again on its own (Ctrl-C ends)").arg(reason),
+                      QStringLiteral(",\"reason\":") + quoted(reason));
+            });
     connect(reconnector, &Reconnector::restored, this, [this](const LinkSettings &s, int n) {
         event(QStringLiteral("back"),
               tr("link back at %1 after %n attempt(s)", nullptr, n).arg(s.describe()),
@@ -163,13 +167,13 @@ void CtlMonitor::start()
     m_signals = new SignalWatcher(this);
     connect(m_signals, &SignalWatcher::terminationRequested, this, [this] { end(0); });
     m_clock.start();
-    m_session->startStatus();
+    m_session->status()->start();
 }
 
 QList<const Parameter *> CtlMonitor::statusParameters(const DeviceSession &session)
 {
     QList<const Parameter *> params;
-    for (const QString &key : session.statusKeys()) {
+    for (const QString &key : session.status()->keys()) {
         if (const Parameter *p = session.map().find(key))
             params << p;
     }
@@ -201,7 +205,7 @@ QString CtlMonitor::valueFields(const QList<const Parameter *> &params,
 
 QString CtlMonitor::sampleLine(qint64 tMs) const
 {
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     return QLatin1Char('{') + timeFields(tMs) +
            valueFields(m_params, [store](const QString &key) { return store->deviceValue(key); }) +
            QLatin1Char('}');
@@ -213,7 +217,7 @@ void CtlMonitor::onCycle(bool ok)
         return;
     if (!ok) {
         // A bad moment on the line is no reason to stop watching: say so and go on.
-        sayError(m_session->statusError());
+        sayError(m_session->status()->error());
         return;
     }
     m_out << sampleLine(m_clock.elapsed()) << QLatin1Char('\n');
@@ -239,8 +243,8 @@ void CtlMonitor::end(int exitCode)
     if (m_ended)
         return;
     m_ended = true;
-    m_session->reconnector()->stop();
-    m_session->stopStatus();
+    m_session->connection()->reconnector()->stop();
+    m_session->status()->stop();
     if (exitCode == 0 && m_printed == 0) {
         // Stopped before a single sample: that is no successful run.
         sayError(tr("no sample was read: every poll failed (see the errors above)"));

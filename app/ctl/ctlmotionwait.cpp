@@ -3,6 +3,9 @@
 #include "motion/motionjudge.h"
 #include "motion/motionwatch.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/restartwatch.h"
 
 #include <QDateTime>
@@ -33,7 +36,7 @@ CtlMotionWait::CtlMotionWait(DeviceSession *session, const Parameter &command, b
     m_timer.setSingleShot(true);
     m_timer.setInterval(kSampleMs);
     connect(&m_timer, &QTimer::timeout, this, &CtlMotionWait::sample);
-    connect(session, &DeviceSession::linkLost, this,
+    connect(session->connection(), &SessionConnection::linkLost, this,
             [this](const QString &) { conclude(MotionCause::LinkLost); });
     m_restarts = new RestartWatch(session->map(), this);
     connect(m_restarts, &RestartWatch::suspected, this,
@@ -62,7 +65,7 @@ void CtlMotionWait::start()
     QList<const Parameter *> params;
     for (const QString &k : MotionJudge::inputKeys(m_session->map(), m_command.key))
         params << m_session->map().find(k);
-    m_session->read(params, [this](const ReadOutcome &r) {
+    m_session->parameters()->read(params, [this](const ReadOutcome &r) {
         m_values = r.values;
         if (!r.ok) {
             fail(r.errors.join(QLatin1String("; ")));
@@ -86,7 +89,7 @@ void CtlMotionWait::start()
                 return;
             }
             m_answeredAtMs = QDateTime::currentMSecsSinceEpoch();
-            m_restarts->commandSent(m_session->deviceInView(), m_answeredAtMs);
+            m_restarts->commandSent(m_session->line()->deviceInView(), m_answeredAtMs);
             if (!m_json)
                 m_out << tr("%1: sent, waiting for the motion to end").arg(m_command.key)
                       << Qt::endl;
@@ -102,13 +105,13 @@ void CtlMotionWait::sample()
     QList<const Parameter *> params;
     for (const QString &k : MotionJudge::watchKeys(m_session->map()))
         params << m_session->map().find(k);
-    m_session->read(
+    m_session->parameters()->read(
         params,
         [this](const ReadOutcome &r) {
             if (m_done)
                 return;
             const qint64 now = QDateTime::currentMSecsSinceEpoch();
-            m_restarts->statusRead(m_session->deviceInView(), r.ok, r.values, now);
+            m_restarts->statusRead(m_session->line()->deviceInView(), r.ok, r.values, now);
             if (m_done)
                 return; // the controller restarted
             if (!r.ok) {

@@ -1,4 +1,7 @@
 #include "ctlrunner.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include "ctlbusmonitor.h"
 #include "ctllinkadvice.h"
@@ -261,13 +264,15 @@ void CtlRunner::finish(int code)
     // The line's health and the timeout it suggests, for whoever tunes the link (monitor runs
     // long enough to say something; other commands with --verbose). Never one of the errors.
     if (m_session && (m_options.verbose || m_options.command == QLatin1String("monitor")))
-        QTextStream(stderr)
-            << tr("link: %1").arg(m_session->linkStats().summary(m_session->settings().timeoutMs))
-            << Qt::endl;
+        QTextStream(stderr) << tr("link: %1")
+                                   .arg(m_session->connection()->linkStats().summary(
+                                       m_session->connection()->settings().timeoutMs))
+                            << Qt::endl;
     m_out.flush();
     m_err.flush();
-    if (m_session && m_session->linkState() != DeviceSession::LinkState::Disconnected)
-        m_session->disconnectFrom(tr("done"));
+    if (m_session &&
+        m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
+        m_session->connection()->disconnectFrom(tr("done"));
     QTimer::singleShot(0, this, [this, code] { Q_EMIT finished(code); });
 }
 
@@ -290,7 +295,7 @@ void CtlRunner::connectThen(std::function<void()> next)
         fail(UsageError, tr("no controller given: use --port PATH, --tcp HOST[:PORT] or --sim"));
         return;
     }
-    if (m_session && m_session->isConnected()) {
+    if (m_session && m_session->connection()->isConnected()) {
         next(); // --id with several: the next id on the link that is already open
         return;
     }
@@ -301,31 +306,33 @@ void CtlRunner::connectThen(std::function<void()> next)
     m_session->setLive(false);
     installRiskGuard();
     startLog();
-    DeviceSession::setLinkDiagnosticsShown(m_options.verbose);
+    SessionConnection::setLinkDiagnosticsShown(m_options.verbose);
     // Said once, in words: what this controller refuses to read, and that the work goes on.
-    connect(m_session, &DeviceSession::readLimitsLearned, this, [this](const QString &text) {
-        m_err << QStringLiteral("stepcomctl: ") << tr("note: %1").arg(text) << Qt::endl;
-    });
+    connect(m_session->connection(), &SessionConnection::readLimitsLearned, this,
+            [this](const QString &text) {
+                m_err << QStringLiteral("stepcomctl: ") << tr("note: %1").arg(text) << Qt::endl;
+            });
     if (isMulti())
-        m_session->setDeviceIds(m_options.ids);
+        m_session->line()->setDeviceIds(m_options.ids);
     if (m_options.verbose) {
-        connect(m_session->traffic(), &TrafficLog::entryAdded, this, [](const TrafficEntry &e) {
-            // Straight to standard error: never one of the JSON object's errors.
-            QTextStream(stderr) << TrafficLog::format(e) << Qt::endl;
-        });
+        connect(m_session->connection()->traffic(), &TrafficLog::entryAdded, this,
+                [](const TrafficEntry &e) {
+                    // Straight to standard error: never one of the JSON object's errors.
+                    QTextStream(stderr) << TrafficLog::format(e) << Qt::endl;
+                });
     }
     // Only the first opening runs the command: a write of device.baud reopens the link at the
     // new baud, and that must not start the command a second time.
     connect(
-        m_session, &DeviceSession::connected, this,
+        m_session->connection(), &SessionConnection::connected, this,
         [this, next](bool ok, const QString &reason) {
             if (!ok) {
                 const bool simDown =
                     m_session->simulatorStarter() && !m_session->simulatorStarter()->isRunning();
-                fail(m_linkError, simDown
-                                      ? tr("cannot start the built-in simulator: %1").arg(reason)
-                                      : tr("cannot connect to %1: %2")
-                                            .arg(m_session->settings().describe(), reason));
+                fail(m_linkError,
+                     simDown ? tr("cannot start the built-in simulator: %1").arg(reason)
+                             : tr("cannot connect to %1: %2")
+                                   .arg(m_session->connection()->settings().describe(), reason));
                 return;
             }
             next();
@@ -344,9 +351,9 @@ void CtlRunner::connectThen(std::function<void()> next)
         if (isMulti())
             sim->setIds(m_options.ids); // one simulated controller per id, on one line
         m_session->setSimulator(std::move(sim));
-        m_session->connectSimulator();
+        m_session->connection()->connectSimulator();
     } else {
-        m_session->connectTo(m_options.link);
+        m_session->connection()->connectTo(m_options.link);
     }
 }
 
@@ -420,7 +427,7 @@ void CtlRunner::runRead()
     if (params.isEmpty())
         params = m_map.holdings();
     connectThen([this, params] {
-        m_session->read(params, [this, params](const ReadOutcome &r) {
+        m_session->parameters()->read(params, [this, params](const ReadOutcome &r) {
             if (m_options.json) {
                 QJsonObject o;
                 for (const Parameter *p : params) {

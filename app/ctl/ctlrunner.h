@@ -3,6 +3,7 @@
 #include "ctloptions.h"
 #include "map/registermap.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "session/simulatorstarter.h"
 
 #include <QJsonObject>

@@ -5,6 +5,7 @@
 #include "script.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionline.h"
 #include "shooter.h"
 #include "widgets/docks/devicelistdock.h"
 #include "window/mainwindow.h"
@@ -21,12 +22,12 @@ void deviceList(Shooter &s)
     Script &script = s.script();
     script.then([&s] {
         DeviceListDock *dock = WindowProbe(*s.window()).deviceListDock();
-        s.session()->setDeviceIds({1, 2, 3});
+        s.session()->line()->setDeviceIds({1, 2, 3});
         dock->setName(1, QStringLiteral("X/Y table"));
         dock->setName(2, QStringLiteral("Z axis, spindle"));
         dock->setName(3, QStringLiteral("Loader"));
         dock->toggleViewAction()->trigger(); // as View → Devices on the line does
-        s.session()->showDevice(2);
+        s.session()->line()->showDevice(2);
     });
     script.sleep(1500);
     script.then([&s] { s.session()->command(QStringLiteral("motor1.home")); });
@@ -36,9 +37,9 @@ void deviceList(Shooter &s)
     script.sleep(2500); // the other devices' background status
     s.shoot(Shooter::sceneFileName(QStringLiteral("device-list")), s.pageIndex<MotorPage>());
     script.then([&s] {
-        s.session()->showDevice(1);
+        s.session()->line()->showDevice(1);
         WindowProbe(*s.window()).deviceListDock()->hide();
-        s.session()->setDeviceIds({});
+        s.session()->line()->setDeviceIds({});
     });
     script.sleep(1000);
 }

@@ -8,6 +8,8 @@
 #include "profile/profilefile.h"
 #include "replay/replaymode.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
 #include "shooter.h"
@@ -47,8 +49,8 @@ void editing(Shooter &s)
     Script &script = s.script();
     const int page = s.pageIndex<MotorPage>();
     script.then([&s] {
-        if (s.session()->isConnected())
-            s.session()->disconnectFrom();
+        if (s.session()->connection()->isConnected())
+            s.session()->connection()->disconnectFrom();
     });
     script.then([&s, page] {
         const QString path =
@@ -65,7 +67,7 @@ void editing(Shooter &s)
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("offline-editing")), page);
     script.then([&s] {
-        s.session()->parameters()->revertAll();
+        s.session()->parameters()->store()->revertAll();
         WindowProbe(*s.window()).offlineActions()->closeFile();
     });
 }
@@ -100,26 +102,27 @@ void replay(Shooter &s)
     auto written = std::make_shared<qint64>(0);
     script.then([&s, log] {
         WindowProbe(*s.window()).sessionLog()->setFile(log);
-        s.session()->connectSimulator();
+        s.session()->connection()->connectSimulator();
     });
     script.waitFor(QStringLiteral("the read-all of the recorded session"), [&s] {
-        return s.session()->isConnected() &&
-               s.session()->parameters()->deviceValue(QStringLiteral("motor1.position"));
+        return s.session()->connection()->isConnected() &&
+               s.session()->parameters()->store()->deviceValue(QStringLiteral("motor1.position"));
     });
     script.then([&s, speed, written] {
-        *written = s.session()->parameters()->deviceValue(speed).value_or(300) + 50;
-        s.session()->parameters()->edit(speed, *written);
-        s.session()->writeChanges();
+        *written = s.session()->parameters()->store()->deviceValue(speed).value_or(300) + 50;
+        s.session()->parameters()->store()->edit(speed, *written);
+        s.session()->parameters()->writeChanges();
     });
     script.waitFor(QStringLiteral("the recorded write"), [&s, speed, written] {
-        return s.session()->parameters()->deviceValue(speed) == *written;
+        return s.session()->parameters()->store()->deviceValue(speed) == *written;
     });
     script.then([&s] { s.session()->stepMove()->start({StepMoveRequest::Kind::By, 1, 20.0, 0}); });
     script.sleep(300);
     script.waitFor(QStringLiteral("the recorded move"),
                    [&s] { return !s.session()->stepMove()->isBusy(); });
-    script.then([&s] { s.session()->disconnectFrom(); });
-    script.waitFor(QStringLiteral("the disconnect"), [&s] { return !s.session()->isConnected(); });
+    script.then([&s] { s.session()->connection()->disconnectFrom(); });
+    script.waitFor(QStringLiteral("the disconnect"),
+                   [&s] { return !s.session()->connection()->isConnected(); });
     script.then([&s, log] {
         WindowProbe(*s.window()).sessionLog()->setFile(QString());
         WindowProbe(*s.window()).replayMode()->openPath(log);

@@ -16,6 +16,8 @@
 #include "pages/plotpage.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "shooter.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -52,7 +54,7 @@ ParameterField *field(MainWindow *window, const QString &key)
 bool idle(Shooter &s)
 {
     SimDevice *sim = s.simulator()->device();
-    return !s.session()->isConnected() ||
+    return !s.session()->connection()->isConnected() ||
            (!s.session()->jog()->isBusy() && !sim->running(1) && !sim->running(2));
 }
 
@@ -178,8 +180,8 @@ void writeChanges(Shooter &s)
         write->click();
     });
     script.waitFor(QStringLiteral("the write to be verified"), [&s] {
-        return !s.session()->parameters()->hasEdits() &&
-               s.session()->parameters()->unsavedToFlash();
+        return !s.session()->parameters()->store()->hasEdits() &&
+               s.session()->parameters()->store()->unsavedToFlash();
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("not-saved-to-flash")));
 }
@@ -196,17 +198,17 @@ void wiringWarning(Shooter &s)
             return;
         }
         const auto input =
-            s.session()->parameters()->shownValue(QStringLiteral("motor2.limit_positive"));
+            s.session()->parameters()->store()->shownValue(QStringLiteral("motor2.limit_positive"));
         if (!input || *input == 0) {
             s.script().fail(QStringLiteral("motor 2 has no positive limit input to misuse"));
             return;
         }
         home->enterText(QString::number(*input));
-        if (!s.session()->parameters()->hasEdits())
+        if (!s.session()->parameters()->store()->hasEdits())
             s.script().fail(QStringLiteral("the home input edit was refused"));
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("wiring-warning")), s.pageIndex<InputsPage>());
-    script.then([&s] { s.session()->parameters()->revertAll(); });
+    script.then([&s] { s.session()->parameters()->store()->revertAll(); });
 }
 
 // Shows the interpolation page's tab (0 arc, 1 line) and types the values into its fields;
@@ -248,10 +250,10 @@ void arcRunning(Shooter &s)
             {"arc.speed", "120"}};
         if (!typeInterpolation(s, page, 0, values))
             return;
-        s.session()->writeChanges();
+        s.session()->parameters()->writeChanges();
     });
     script.waitFor(QStringLiteral("the arc to be written"),
-                   [&s] { return !s.session()->parameters()->hasEdits(); });
+                   [&s] { return !s.session()->parameters()->store()->hasEdits(); });
     script.waitFor(QStringLiteral("Start arc to be enabled"), [&s, page] {
         auto *p = qobject_cast<InterpolationPage *>(WindowProbe(*s.window()).pages().value(page));
         return p->arcEditor()->startButton()->isEnabled();
@@ -284,7 +286,7 @@ void lineEdited(Shooter &s)
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("line-edited")));
     script.then([&s, page] {
-        s.session()->parameters()->revertAll();
+        s.session()->parameters()->store()->revertAll();
         qobject_cast<InterpolationPage *>(WindowProbe(*s.window()).pages().value(page))
             ->tabs()
             ->setCurrentIndex(0);
@@ -342,7 +344,7 @@ void profileCompare(Shooter &s)
         speed->enterText(QStringLiteral("600"));
         micro->enterText(QStringLiteral("16"));
         const bool saved = actions->saveFromEditedFile(path);
-        s.session()->parameters()->revertAll();
+        s.session()->parameters()->store()->revertAll();
         if (!saved || !actions->openFile(path))
             s.script().fail(
                 QStringLiteral("the profile %1 could not be saved and opened").arg(path));
@@ -426,8 +428,9 @@ void portMissing(Shooter &s)
 {
     Script &script = s.script();
     const int index = s.pageIndex<ConnectionPage>();
-    script.then([&s] { s.session()->disconnectFrom(); });
-    script.waitFor(QStringLiteral("the disconnect"), [&s] { return !s.session()->isConnected(); });
+    script.then([&s] { s.session()->connection()->disconnectFrom(); });
+    script.waitFor(QStringLiteral("the disconnect"),
+                   [&s] { return !s.session()->connection()->isConnected(); });
     auto port = std::make_shared<QString>();
     script.then([&s, index, port] {
         // A name that does not exist here, so the picture never talks to a real adapter.
@@ -446,7 +449,7 @@ void portMissing(Shooter &s)
     });
     script.waitFor(QStringLiteral("the connection attempt to fail"), [&s, index, port] {
         auto *page = qobject_cast<ConnectionPage *>(WindowProbe(*s.window()).pages().value(index));
-        return !s.session()->isConnected() && page->statusText().contains(*port);
+        return !s.session()->connection()->isConnected() && page->statusText().contains(*port);
     });
     s.shoot(Shooter::sceneFileName(QStringLiteral("port-missing")));
 }
@@ -486,7 +489,7 @@ void checklistMiswired(Shooter &s)
     };
     script.then([&s] {
         s.simulator()->device()->setValue(QStringLiteral("motor1.limit_positive"), 3);
-        s.session()->readAll();
+        s.session()->parameters()->readAll();
     });
     script.sleep(800);
     script.then([&s, widget] {
@@ -504,7 +507,7 @@ void checklistMiswired(Shooter &s)
     s.shoot(Shooter::sceneFileName(QStringLiteral("checklist-miswired")));
     script.then([&s] {
         s.simulator()->device()->setValue(QStringLiteral("motor1.limit_positive"), 1);
-        s.session()->readAll();
+        s.session()->parameters()->readAll();
         // The next language's pictures start from an empty checklist again.
         ChecklistPage *page = WindowProbe(*s.window()).checklistPage();
         QFile::remove(page->checklistFile());

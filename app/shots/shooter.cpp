@@ -4,6 +4,9 @@
 #include "base/page.h"
 #include "scenes.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "sim/host/builtinsimulator.h"
 #include "sim/host/simhost.h"
 #include "window/mainwindow.h"
@@ -89,7 +92,7 @@ void Shooter::planLanguage(const QString &language)
     m_script.then([this] {
         // A few status cycles on top, so the dock's lamps and positions are all known.
         auto cycles = std::make_shared<int>(0);
-        connect(m_session.get(), &DeviceSession::statusCycleFinished, this,
+        connect(m_session->status(), &SessionStatus::statusCycleFinished, this,
                 [cycles](bool ok) { *cycles += ok ? 1 : 0; });
         m_script.waitFor(QStringLiteral("%1 status poll cycles").arg(kPollCycles),
                          [cycles] { return *cycles >= kPollCycles; });
@@ -123,7 +126,7 @@ void Shooter::openWindow(const QString &language)
     m_sim = sim->host();
     m_session->setSimulator(std::move(sim));
     m_readOk = false;
-    connect(m_session.get(), &DeviceSession::readFinished, this, [this](bool ok) {
+    connect(m_session->parameters(), &SessionParameters::readFinished, this, [this](bool ok) {
         if (ok)
             m_readOk = true;
     });
@@ -131,7 +134,7 @@ void Shooter::openWindow(const QString &language)
     m_window->resize(m_options.size);
     m_window->show();
     m_window->activateWindow();
-    m_session->connectSimulator();
+    m_session->connection()->connectSimulator();
     m_script.waitFor(QStringLiteral("the window to become active"),
                      [this] { return m_window->isActiveWindow(); });
 }

@@ -4,6 +4,7 @@
 #include "pendant/pendantcontrol.h"
 #include "pendant/pendantserver.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "sim/host/builtinsimulator.h"
 #include "window/listenmode.h"
 #include "window/mainwindow.h"
@@ -281,9 +282,10 @@ int main(int argc, char *argv[])
                            ? QCoreApplication::translate("stepcom", "--listen needs --port")
                            : why);
     } else if (parser.isSet(options.sim))
-        session.connectSimulator();
+        session.connection()->connectSimulator();
     else if (startLink)
-        session.connectTo(*startLink); // an unusable port is reported by the session, in the window
+        session.connection()->connectTo(
+            *startLink); // an unusable port is reported by the session, in the window
     else if (!startFile.isEmpty())
         window.openGivenFile(startFile); // what it is, or why not, is said in the window
     return QCoreApplication::exec();

@@ -1,6 +1,8 @@
 #include "line/bussweep.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 namespace stepcom {
 
@@ -44,7 +46,7 @@ void BusSweep::next()
     const int id = m_ids.at(m_index);
     const quint64 generation = m_generation;
     QPointer<BusSweep> self(this); // its owner may be gone by the answer
-    m_session->readDevice(id, m_params, [this, self, id, generation](const ReadOutcome &r) {
+    m_session->line()->readDevice(id, m_params, [this, self, id, generation](const ReadOutcome &r) {
         if (!self || generation != m_generation)
             return;
         m_outcomes.insert(id, r);

@@ -2,6 +2,9 @@
 
 #include "session/devicesession.h"
 #include "session/idlist.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QPointer>
 
@@ -35,7 +38,7 @@ void IdAssigner::setCommonBaud(int baud)
 
 int IdAssigner::nextId() const
 {
-    const QList<int> listed = m_session->deviceIds();
+    const QList<int> listed = m_session->line()->deviceIds();
     for (int id = m_firstId; id <= 255; ++id)
         if (!m_assigned.contains(id) && (id == kFactoryId || !listed.contains(id)))
             return id;
@@ -46,7 +49,7 @@ bool IdAssigner::start(bool newLine)
 {
     if (m_state == State::Working)
         return false;
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         setState(State::Idle, tr("Connect to the line first (the port the controllers are on, "
                                  "%1 baud, device id %2), then start the assistant.")
                                   .arg(kFactoryBaud)
@@ -55,7 +58,7 @@ bool IdAssigner::start(bool newLine)
     }
     m_assigned.clear();
     if (newLine)
-        m_session->setDeviceIds({});
+        m_session->line()->setDeviceIds({});
     if (!m_paused) {
         // The live reads would go to controllers while their id and baud move.
         m_wasLive = m_session->isLive();
@@ -84,7 +87,7 @@ void IdAssigner::next()
              tr("Giving the controller at id %1 the id %2…").arg(kFactoryId).arg(m_target));
     // New controllers listen at the factory baud; the last one may have moved the line.
     QPointer<IdAssigner> self(this);
-    m_session->setLineBaud(kFactoryBaud, [self](bool ok, const QString &reason) {
+    m_session->line()->setLineBaud(kFactoryBaud, [self](bool ok, const QString &reason) {
         if (!self)
             return;
         if (!ok) {
@@ -134,7 +137,7 @@ void IdAssigner::finish()
     const int baud = m_commonBaud > 0 ? m_commonBaud : kFactoryBaud;
     setState(State::Working, tr("Moving the line to %1 baud…").arg(baud));
     QPointer<IdAssigner> self(this);
-    m_session->setLineBaud(baud, [self, baud](bool ok, const QString &reason) {
+    m_session->line()->setLineBaud(baud, [self, baud](bool ok, const QString &reason) {
         if (!self)
             return;
         if (!ok) {
@@ -154,25 +157,26 @@ void IdAssigner::rollCall(int index, int baud, QList<int> silent)
         const Parameter *idParam = m_session->map().find(QStringLiteral("device.id"));
         Q_EMIT progress(tr("Asking id %1 at %2 baud").arg(id).arg(baud));
         QPointer<IdAssigner> self(this);
-        m_session->readAt(id, {idParam}, [self, index, baud, silent, id](const ReadOutcome &r) {
-            if (!self)
-                return;
-            QList<int> still = silent;
-            if (!r.ok)
-                still << id;
-            self->rollCall(index + 1, baud, still);
-        });
+        m_session->line()->readAt(id, {idParam},
+                                  [self, index, baud, silent, id](const ReadOutcome &r) {
+                                      if (!self)
+                                          return;
+                                      QList<int> still = silent;
+                                      if (!r.ok)
+                                          still << id;
+                                      self->rollCall(index + 1, baud, still);
+                                  });
         return;
     }
     if (!m_assigned.isEmpty()) {
         // The factory id was only where new controllers arrived.
-        QList<int> ids = m_session->deviceIds();
+        QList<int> ids = m_session->line()->deviceIds();
         ids.removeAll(kFactoryId);
         for (int id : std::as_const(m_assigned))
             if (!ids.contains(id))
                 ids << id;
-        m_session->setDeviceIds(ids);
-        m_session->showDevice(m_assigned.constFirst());
+        m_session->line()->setDeviceIds(ids);
+        m_session->line()->showDevice(m_assigned.constFirst());
     }
     resumeLive();
     QList<int> answering = m_assigned;

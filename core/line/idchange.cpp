@@ -2,6 +2,9 @@
 
 #include "map/parameter.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QPointer>
 #include <QTimer>
@@ -27,7 +30,7 @@ void IdChange::start(int from, int to, int baud)
     m_problem = Problem::None;
     m_text.clear();
     m_running = true;
-    const LinkSettings line = m_session->settings();
+    const LinkSettings line = m_session->connection()->settings();
     m_baud =
         line.transport == LinkSettings::Transport::Rtu && baud > 0 && baud != line.baud ? baud : 0;
     m_idParam = m_session->map().find(QStringLiteral("device.id"));
@@ -40,7 +43,7 @@ void IdChange::start(int from, int to, int baud)
         refusal = tr("the register map has no device.id");
     else if (m_baud > 0 && !m_session->map().find(QStringLiteral("device.baud")))
         refusal = tr("the register map has no device.baud");
-    else if (!m_session->isConnected())
+    else if (!m_session->connection()->isConnected())
         refusal = tr("not connected: connect to the line first");
     if (!refusal.isEmpty()) {
         // After the caller's start() returned, as every other outcome.
@@ -53,13 +56,13 @@ void IdChange::start(int from, int to, int baud)
 
 void IdChange::probe(int id, void (IdChange::*then)(const ReadOutcome &, bool garbled))
 {
-    const quint64 crcBefore = m_session->linkStats().crcErrors;
+    const quint64 crcBefore = m_session->connection()->linkStats().crcErrors;
     QPointer<IdChange> self(this);
-    m_session->readAt(id, {m_idParam}, [self, then, crcBefore](const ReadOutcome &r) {
+    m_session->line()->readAt(id, {m_idParam}, [self, then, crcBefore](const ReadOutcome &r) {
         if (!self)
             return;
         // Two controllers answering at once garble each other's answers: CRC errors.
-        const bool garbled = self->m_session->linkStats().crcErrors > crcBefore;
+        const bool garbled = self->m_session->connection()->linkStats().crcErrors > crcBefore;
         (self->*then)(r, garbled);
     });
 }
@@ -102,29 +105,29 @@ void IdChange::onTargetProbed(const ReadOutcome &r, bool garbled)
 void IdChange::writeId()
 {
     // The session writes to the device in view: put `from` there (on the list if need be).
-    QList<int> ids = m_session->deviceIds();
+    QList<int> ids = m_session->line()->deviceIds();
     if (!ids.contains(m_from)) {
         ids.append(m_from);
-        m_session->setDeviceIds(ids);
+        m_session->line()->setDeviceIds(ids);
     }
-    m_session->showDevice(m_from);
+    m_session->line()->showDevice(m_from);
     Q_EMIT progress(tr("Writing id %1 to the controller at id %2").arg(m_to).arg(m_from));
-    changeLink(m_to, m_session->settings().baud, &IdChange::onIdWritten);
+    changeLink(m_to, m_session->connection()->settings().baud, &IdChange::onIdWritten);
 }
 
 void IdChange::changeLink(int id, int baud, void (IdChange::*then)(bool, const QString &))
 {
     dropConnections();
-    m_changed = connect(m_session, &DeviceSession::linkChanged, this, [this, then] {
+    m_changed = connect(m_session->line(), &SessionLine::linkChanged, this, [this, then] {
         dropConnections();
         (this->*then)(true, QString());
     });
-    m_changeFailed = connect(m_session, &DeviceSession::linkChangeFailed, this,
+    m_changeFailed = connect(m_session->line(), &SessionLine::linkChangeFailed, this,
                              [this, then](const LinkSettings &, const QString &reason) {
                                  dropConnections();
                                  (this->*then)(false, reason);
                              });
-    m_session->changeLink(id, baud);
+    m_session->line()->changeLink(id, baud);
 }
 
 void IdChange::onIdWritten(bool ok, const QString &reason)
@@ -135,14 +138,14 @@ void IdChange::onIdWritten(bool ok, const QString &reason)
         return;
     }
     // The list names the controller by its new id, in the place the old one had.
-    QList<int> ids = m_session->deviceIds();
+    QList<int> ids = m_session->line()->deviceIds();
     ids.removeAll(m_to);
     const qsizetype at = ids.indexOf(m_from);
     if (at >= 0)
         ids[at] = m_to;
     else
         ids.append(m_to);
-    m_session->setDeviceIds(ids);
+    m_session->line()->setDeviceIds(ids);
     checkOldIdSilent();
 }
 

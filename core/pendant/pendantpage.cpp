@@ -4,6 +4,9 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -139,8 +142,8 @@ QJsonObject PendantPage::status(const DeviceSession &session, const QString &lan
                                 const std::function<QString(int)> &namer)
 {
     const RegisterMap &map = session.map();
-    const ParameterStore *store = session.parameters();
-    const bool connected = session.isConnected();
+    const ParameterStore *store = session.parameters()->store();
+    const bool connected = session.connection()->isConnected();
     const ReferenceTracker *references = session.motion()->references();
     const auto value = [&](const QString &key) {
         return connected ? store->deviceValue(key) : std::nullopt;
@@ -183,12 +186,12 @@ QJsonObject PendantPage::status(const DeviceSession &session, const QString &lan
             a.append(optional(value(QString::fromLatin1(pattern).arg(n))));
         return a;
     };
-    const int id = session.deviceInView();
+    const int id = session.line()->deviceInView();
     QJsonObject device{{QStringLiteral("id"), id}};
     if (const QString name = namer ? namer(id) : QString(); !name.isEmpty())
         device.insert(QStringLiteral("name"), name);
     return QJsonObject{{QStringLiteral("t"), QStringLiteral("status")},
-                       {QStringLiteral("link"), linkCode(session.health()->state())},
+                       {QStringLiteral("link"), linkCode(session.connection()->health()->state())},
                        {QStringLiteral("device"), device},
                        {QStringLiteral("motors"), motors},
                        {QStringLiteral("inputs"), lamps("io.in%1")},

@@ -7,6 +7,9 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionstatus.h"
 
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -57,10 +60,13 @@ PendantServer::PendantServer(DeviceSession *session, QObject *parent)
 {
     m_push.setSingleShot(true);
     connect(&m_push, &QTimer::timeout, this, &PendantServer::push);
-    connect(session, &DeviceSession::statusCycleFinished, this, &PendantServer::schedulePush);
-    connect(session, &DeviceSession::linkStateChanged, this, &PendantServer::schedulePush);
-    connect(session, &DeviceSession::deviceInViewChanged, this, &PendantServer::schedulePush);
-    connect(session->health(), &LinkHealth::stateChanged, this, &PendantServer::schedulePush);
+    connect(session->status(), &SessionStatus::statusCycleFinished, this,
+            &PendantServer::schedulePush);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &PendantServer::schedulePush);
+    connect(session->line(), &SessionLine::deviceInViewChanged, this, &PendantServer::schedulePush);
+    connect(session->connection()->health(), &LinkHealth::stateChanged, this,
+            &PendantServer::schedulePush);
     connect(session->motion()->references(), &ReferenceTracker::changed, this,
             &PendantServer::schedulePush);
     connect(m_control, &PendantControl::allowedChanged, this, [this](bool allowed) {

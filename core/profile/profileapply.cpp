@@ -2,6 +2,9 @@
 
 #include "device/writereview.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 namespace stepcom {
 
@@ -11,7 +14,7 @@ ProfileApply::ProfileApply(DeviceSession *session, const Profile &profile, int i
     : QObject(parent)
     , m_session(session)
     , m_profile(profile)
-    , m_id(id > 0 ? id : session->deviceInView())
+    , m_id(id > 0 ? id : session->line()->deviceInView())
 {
     connect(session, &DeviceSession::emergencyStopRequested, this, [this] {
         if (!m_busy)
@@ -25,11 +28,13 @@ ProfileApply::ProfileApply(DeviceSession *session, const Profile &profile, int i
         end(ProfileApplyResult::End::Stopped,
             tr("stopped by the E-STOP: nothing more was sent for this profile"));
     });
-    connect(session, &DeviceSession::disconnected, this, [this](const QString &reason) {
-        if (m_busy)
-            m_lost = reason.isEmpty() ? tr("the link was closed")
-                                      : tr("the link went away during the apply (%1)").arg(reason);
-    });
+    connect(session->connection(), &SessionConnection::disconnected, this,
+            [this](const QString &reason) {
+                if (m_busy)
+                    m_lost = reason.isEmpty()
+                                 ? tr("the link was closed")
+                                 : tr("the link went away during the apply (%1)").arg(reason);
+            });
     connect(session, &DeviceSession::controllerRestarted, this,
             [this](int device) { m_restarted = m_restarted || (m_busy && device == m_id); });
     connect(session, &DeviceSession::controllerMayHaveRestarted, this,
@@ -45,7 +50,7 @@ bool ProfileApply::announce(Step step)
 
 bool ProfileApply::isInView() const
 {
-    return m_session && m_id == m_session->deviceInView();
+    return m_session && m_id == m_session->line()->deviceInView();
 }
 
 void ProfileApply::read(std::function<void()> next)
@@ -54,7 +59,7 @@ void ProfileApply::read(std::function<void()> next)
         return;
     const quint64 generation = m_generation;
     QPointer<ProfileApply> self(this);
-    m_session->readDevice(
+    m_session->line()->readDevice(
         m_id, Profile::profileParameters(m_session->map(), true),
         [this, self, generation, next](const ReadOutcome &r) {
             if (!self || generation != m_generation || !m_session)
@@ -62,7 +67,7 @@ void ProfileApply::read(std::function<void()> next)
             m_before = r.values;
             // The device in view shows what was just read, and its backup need not read again.
             if (isInView())
-                m_session->parameters()->setDeviceValues(r.values);
+                m_session->parameters()->store()->setDeviceValues(r.values);
             m_readErrors = r.errors;
             m_unsupported = r.unsupported;
             m_differences.clear();
@@ -158,7 +163,7 @@ void ProfileApply::apply(const QStringList &keys)
             [this, generation] {
                 if (generation != m_generation)
                     return;
-                if (!m_lost.isEmpty() || !m_session || !m_session->isConnected())
+                if (!m_lost.isEmpty() || !m_session || !m_session->connection()->isConnected())
                     end(ProfileApplyResult::End::LinkLost,
                         m_lost.isEmpty() ? tr("the link was lost") : m_lost);
                 else
@@ -326,7 +331,7 @@ void ProfileApply::write()
             k.reason = tr("stopped by the E-STOP while writing");
         }
     }
-    m_session->writeDevice(m_id, writes, [this, self, generation](const WriteOutcome &w) {
+    m_session->line()->writeDevice(m_id, writes, [this, self, generation](const WriteOutcome &w) {
         if (self && generation == m_generation)
             written(w);
     });
@@ -400,51 +405,52 @@ void ProfileApply::readBack()
         return;
     const quint64 generation = m_generation;
     QPointer<ProfileApply> self(this);
-    m_session->readDevice(m_id, params, [this, self, generation, finish](const ReadOutcome &r) {
-        if (!self || generation != m_generation)
-            return;
-        if (!r.ok) {
-            // A closing link fails what is queued before it says it closed: hear that first.
-            QMetaObject::invokeMethod(
-                this,
-                [this, generation, finish] {
-                    if (generation != m_generation)
-                        return;
-                    if (m_lost.isEmpty() && m_session && m_session->isConnected())
-                        finish();
-                    else
-                        end(ProfileApplyResult::End::LinkLost,
-                            m_lost.isEmpty() ? tr("the link was lost") : m_lost);
-                },
-                Qt::QueuedConnection);
-        }
-        for (AppliedKey &k : m_result.keys) {
-            const auto it = r.values.constFind(k.key);
-            if (it == r.values.cend())
-                continue; // not read: what was known of it stands
-            if (*it == k.wanted) {
-                if (k.state != State::Verified) {
-                    k.state = State::Verified;
-                    k.reason.clear();
-                }
-            } else if (k.state == State::Verified) {
-                // Verified before, its old value now: only a restart undoes a write.
-                k.state = State::Lost;
-                k.readBack = *it;
-                k.reason = tr("the controller restarted");
-                m_restarted = true;
-            } else if (k.state == State::Written) {
-                k.readBack = *it;
-            } else if (k.state == State::NotKnown) {
-                k.state = State::NotWritten;
-                k.reason =
-                    tr("the controller holds %1")
-                        .arg(k.parameter ? k.parameter->displayRaw(*it) : QString::number(*it));
+    m_session->line()->readDevice(
+        m_id, params, [this, self, generation, finish](const ReadOutcome &r) {
+            if (!self || generation != m_generation)
+                return;
+            if (!r.ok) {
+                // A closing link fails what is queued before it says it closed: hear that first.
+                QMetaObject::invokeMethod(
+                    this,
+                    [this, generation, finish] {
+                        if (generation != m_generation)
+                            return;
+                        if (m_lost.isEmpty() && m_session && m_session->connection()->isConnected())
+                            finish();
+                        else
+                            end(ProfileApplyResult::End::LinkLost,
+                                m_lost.isEmpty() ? tr("the link was lost") : m_lost);
+                    },
+                    Qt::QueuedConnection);
             }
-        }
-        if (r.ok)
-            finish();
-    });
+            for (AppliedKey &k : m_result.keys) {
+                const auto it = r.values.constFind(k.key);
+                if (it == r.values.cend())
+                    continue; // not read: what was known of it stands
+                if (*it == k.wanted) {
+                    if (k.state != State::Verified) {
+                        k.state = State::Verified;
+                        k.reason.clear();
+                    }
+                } else if (k.state == State::Verified) {
+                    // Verified before, its old value now: only a restart undoes a write.
+                    k.state = State::Lost;
+                    k.readBack = *it;
+                    k.reason = tr("the controller restarted");
+                    m_restarted = true;
+                } else if (k.state == State::Written) {
+                    k.readBack = *it;
+                } else if (k.state == State::NotKnown) {
+                    k.state = State::NotWritten;
+                    k.reason =
+                        tr("the controller holds %1")
+                            .arg(k.parameter ? k.parameter->displayRaw(*it) : QString::number(*it));
+                }
+            }
+            if (r.ok)
+                finish();
+        });
 }
 
 void ProfileApply::saveToFlash()

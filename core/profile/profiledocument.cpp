@@ -3,6 +3,8 @@
 #include "map/factoryvalues.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QFileInfo>
 
@@ -14,16 +16,16 @@ ProfileDocument::ProfileDocument(DeviceSession *session, QObject *parent)
 {
     // The session emits `connected` before it reads the controller: the file's values and the
     // edits are taken here, before a read could land in the store.
-    connect(session, &DeviceSession::connected, this, [this](bool ok) {
+    connect(session->connection(), &SessionConnection::connected, this, [this](bool ok) {
         if (!ok || !m_open)
             return;
         const Profile values = current();
         const QString path = m_path;
-        const int edits = int(m_session->parameters()->editedKeys().size());
+        const int edits = int(m_session->parameters()->store()->editedKeys().size());
         close();
         Q_EMIT leftForController(values, path, edits);
     });
-    connect(session->parameters(), &ParameterStore::editsChanged, this, [this] {
+    connect(session->parameters()->store(), &ParameterStore::editsChanged, this, [this] {
         if (m_open)
             Q_EMIT changed();
     });
@@ -36,7 +38,7 @@ QString ProfileDocument::displayName() const
 
 bool ProfileDocument::isModified() const
 {
-    return m_open && m_session->parameters()->hasEdits();
+    return m_open && m_session->parameters()->store()->hasEdits();
 }
 
 QStringList ProfileDocument::varianceLines(const QString &locale) const
@@ -52,7 +54,7 @@ QStringList ProfileDocument::varianceLines(const QString &locale) const
 
 QStringList ProfileDocument::open(const QString &path)
 {
-    if (m_session->linkState() != DeviceSession::LinkState::Disconnected)
+    if (m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
         return {tr("a controller is connected: open the profile to compare it instead")};
     const ProfileParseResult r =
         ProfileFile::load(path, m_session->map(), ProfileFile::OtherMaps::Accept);
@@ -64,7 +66,7 @@ QStringList ProfileDocument::open(const QString &path)
 
 QStringList ProfileDocument::newFromFactory()
 {
-    if (m_session->linkState() != DeviceSession::LinkState::Disconnected)
+    if (m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
         return {tr("a controller is connected: disconnect to edit a profile without it")};
     Profile profile =
         Profile::fromValues(m_session->map(), FactoryValues::writable(m_session->map()), false);
@@ -81,14 +83,14 @@ void ProfileDocument::start(const Profile &profile, const QString &path)
     QHash<QString, qint64> values;
     for (auto it = profile.values.cbegin(); it != profile.values.cend(); ++it)
         values.insert(it.key(), it.value());
-    m_session->parameters()->openFile(displayName(), values);
+    m_session->parameters()->store()->openFile(displayName(), values);
     Q_EMIT changed();
 }
 
 Profile ProfileDocument::current() const
 {
     Profile out = m_profile;
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     for (const Parameter *p : Profile::profileParameters(m_session->map(), true)) {
         const auto shown = store->shownValue(p->key);
         if (!shown)
@@ -135,7 +137,7 @@ void ProfileDocument::close()
     m_open = false;
     m_path.clear();
     m_profile = Profile();
-    m_session->parameters()->closeFile();
+    m_session->parameters()->store()->closeFile();
     Q_EMIT changed();
 }
 

@@ -1,6 +1,8 @@
 #include "profile/profilerollout.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QTimer>
 

@@ -1,4 +1,7 @@
 #include "profile/sessionbackup.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include "profile/profile.h"
 
@@ -34,12 +37,13 @@ void SessionBackup::save(DeviceSession *session, const BackupStore &store, Devic
 {
     const QList<const Parameter *> params = settings(session->map());
     const BackupStore::Operation op = operation(risk);
-    const bool inView = id == session->deviceInView();
-    const QString device = inView ? session->settings().describe() : session->describeDevice(id);
+    const bool inView = id == session->line()->deviceInView();
+    const QString device =
+        inView ? session->connection()->settings().describe() : session->line()->describeDevice(id);
     if (inView) {
         QHash<QString, qint64> known;
         for (const Parameter *p : params) {
-            if (const auto v = session->parameters()->deviceValue(p->key))
+            if (const auto v = session->parameters()->store()->deviceValue(p->key))
                 known.insert(p->key, *v);
         }
         if (known.size() == params.size()) {
@@ -62,9 +66,9 @@ void SessionBackup::save(DeviceSession *session, const BackupStore &store, Devic
         done(saved);
     };
     if (inView) // at command priority: the user is waiting for the operation
-        session->read(params, saveRead, Priority::Command);
+        session->parameters()->read(params, saveRead, Priority::Command);
     else
-        session->readDevice(id, params, saveRead);
+        session->line()->readDevice(id, params, saveRead);
 }
 
 } // namespace stepcom

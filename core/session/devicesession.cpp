@@ -1,9 +1,11 @@
 #include "session/devicesession.h"
+#include "device/readlimits.h"
 
 #include "bus/modbuslink.h"
-#include "bus/wiretap.h"
+#include "device/deviceclient.h"
 #include "device/devicememory.h"
-#include "device/statusrecorder.h"
+#include "device/parameterstore.h"
+#include "device/poller.h"
 #include "i18n/translators.h"
 #include "map/factoryvalues.h"
 #include "motion/motionjudge.h"
@@ -12,6 +14,10 @@
 #include "session/jogcontroller.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "session/simulatorstarter.h"
 #include "session/stepmove.h"
@@ -24,9 +30,13 @@ namespace stepcom {
 DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     : QObject(parent)
     , m_link(new ModbusLink(this))
+    , m_connection(new SessionConnection(this))
+    , m_line(new SessionLine(this))
     , m_client(new DeviceClient(m_link, map, this))
     , m_store(new ParameterStore(map, this))
+    , m_parameters(new SessionParameters(this, m_store))
     , m_poller(new Poller(m_client, m_store, this))
+    , m_status(new SessionStatus(m_poller, m_store, this))
     , m_motion(new MotionSupervisor(this, m_link)) // before the jog controller, which follows it
     , m_health(new LinkHealth(m_link, this))
     , m_jog(new JogController(this, this))
@@ -39,18 +49,18 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             [this](int id, const MotionOutcome &o) {
                 const QString text = m_motion->text(o);
                 say(o.ok() ? Severity::Info : Severity::Warning,
-                    deviceIds().size() > 1 ? tr("Device %1: %2").arg(id).arg(text) : text);
+                    m_line->deviceIds().size() > 1 ? tr("Device %1: %2").arg(id).arg(text) : text);
             });
     m_poller->useStatusKeys(); // the full status; positions and running while a motor runs
     m_poller->setIntervalMs(Poller::intervalFromEnvironment(100));
     m_bus->setKeys(m_poller->keys());
     watchRestarts(); // sees each status before the motion supervisor judges a motion from it
-    connect(m_bus, &BusPoller::statusChanged, this, &DeviceSession::deviceStatusChanged);
+    connect(m_bus, &BusPoller::statusChanged, m_line, &SessionLine::deviceStatusChanged);
     m_link->traffic()->setMap(&m_client->map());
     connect(m_link, &ModbusLink::opened, this, &DeviceSession::onOpened);
-    connect(m_link, &ModbusLink::stateChanged, this, &DeviceSession::linkStateChanged);
-    connect(m_link, &ModbusLink::statsChanged, this, &DeviceSession::linkStatsChanged);
-    connect(m_link, &ModbusLink::echoDetected, this, &DeviceSession::echoSuspected);
+    connect(m_link, &ModbusLink::stateChanged, m_connection, &SessionConnection::linkStateChanged);
+    connect(m_link, &ModbusLink::statsChanged, m_connection, &SessionConnection::linkStatsChanged);
+    connect(m_link, &ModbusLink::echoDetected, m_connection, &SessionConnection::echoSuspected);
     connect(m_health, &LinkHealth::stateChanged, this, [this](LinkHealth::State s) {
         if (s == LinkHealth::State::NotAnswering)
             say(Severity::Warning, tr("The port is open, but the controller at %1 does not "
@@ -58,22 +68,24 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
                                        .arg(m_link->settings().describe()));
         else if (s == LinkHealth::State::Answering)
             say(Severity::Info, tr("The controller answers."));
-        Q_EMIT linkStateChanged();
+        Q_EMIT m_connection->linkStateChanged();
     });
     connect(m_link, &ModbusLink::lost, this, &DeviceSession::onLost);
     connect(m_poller, &Poller::cycleFinished, this, [this](bool ok, qint64 ms) {
-        Q_EMIT statusCycleFinished(ok, ms);
+        Q_EMIT m_status->statusCycleFinished(ok, ms);
         if (std::exchange(m_readAllAfterStatus, false))
-            readAll();
+            m_parameters->readAll();
     });
-    connect(m_client, &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
+    const auto learn = [this](int unit, ReadLimits::Lesson lesson, const QString &key) {
+        learnt(unit, int(lesson), key);
+    };
+    connect(m_client, &DeviceClient::readLimitsLearned, this, learn);
     // The background poll plans with, and learns into, the same per-id limits.
     m_client->shareReadLimits(m_bus->client());
-    connect(m_bus->client(), &DeviceClient::readLimitsLearned, this, &DeviceSession::learnt);
+    connect(m_bus->client(), &DeviceClient::readLimitsLearned, this, learn);
     connect(m_poller, &Poller::cycleFinished, this, [this](bool ok) {
-        m_bus->noteLiveCycle(deviceInView(), ok, *m_store, m_poller->lastError());
+        m_bus->noteLiveCycle(m_line->deviceInView(), ok, *m_store, m_poller->lastError());
     });
-    connect(m_poller, &Poller::fastChanged, this, &DeviceSession::statusFastChanged);
     m_reconnector = new Reconnector(this);
     connect(m_reconnector, &Reconnector::reopen, this, &DeviceSession::reopen);
     connect(m_reconnector, &Reconnector::restored, this,
@@ -85,7 +97,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
             });
     connect(m_reconnector, &Reconnector::cancelled, this, [this] {
         say(Severity::Info, tr("Reconnecting cancelled: Connect tries again."));
-        Q_EMIT linkStateChanged();
+        Q_EMIT m_connection->linkStateChanged();
     });
 }
 
@@ -98,112 +110,9 @@ DeviceSession::~DeviceSession()
     delete m_memory;
 }
 
-StatusRecorder *DeviceSession::recorder()
+const RegisterMap &DeviceSession::map() const
 {
-    if (!m_recorder) {
-        m_recorder = new StatusRecorder(map(), m_store, this);
-        m_recorder->attach(m_poller);
-    }
-    return m_recorder;
-}
-
-TrafficLog *DeviceSession::traffic() const
-{
-    return m_link->traffic();
-}
-
-const LinkStats &DeviceSession::linkStats() const
-{
-    return m_link->stats();
-}
-
-void DeviceSession::resetLinkStats()
-{
-    m_link->resetStats();
-}
-
-DeviceSession::LinkState DeviceSession::linkState() const
-{
-    switch (m_link->state()) {
-    case ModbusLink::State::Connected:
-        return LinkState::Connected;
-    case ModbusLink::State::Connecting:
-        return LinkState::Connecting;
-    case ModbusLink::State::Disconnected:
-        break;
-    }
-    return LinkState::Disconnected;
-}
-
-bool DeviceSession::isConnected() const
-{
-    return m_link->isConnected();
-}
-
-bool DeviceSession::isSimulator() const
-{
-    // connected(true) can arrive from inside connectSimulator(): recognise the simulator's port.
-    return m_usingSim || (m_sim && m_sim->isRunning() && m_sim->serves(m_link->settings()));
-}
-
-void DeviceSession::setLinkDiagnosticsShown(bool shown)
-{
-    WireTap::setPassThrough(shown);
-}
-
-void DeviceSession::startStatus()
-{
-    m_poller->start();
-}
-
-void DeviceSession::stopStatus()
-{
-    m_poller->stop();
-}
-
-bool DeviceSession::isStatusActive() const
-{
-    return m_poller->isActive();
-}
-
-QStringList DeviceSession::statusKeys() const
-{
-    return m_poller->keys();
-}
-
-void DeviceSession::setStatusIntervalMs(int ms)
-{
-    m_poller->setIntervalMs(ms);
-}
-
-int DeviceSession::statusIntervalMs() const
-{
-    return m_poller->intervalMs();
-}
-
-double DeviceSession::statusRate() const
-{
-    return m_poller->rate();
-}
-
-bool DeviceSession::isStatusFast() const
-{
-    return m_poller->isFast();
-}
-
-QString DeviceSession::statusError() const
-{
-    return m_poller->lastError();
-}
-
-const PollStats &DeviceSession::statusStats() const
-{
-    return m_poller->stats();
-}
-
-void DeviceSession::resetStatusStats()
-{
-    m_poller->resetStats();
+    return m_store->map();
 }
 
 void DeviceSession::setSimulator(std::unique_ptr<SimulatorStarter> simulator)
@@ -217,92 +126,9 @@ void DeviceSession::setSimulator(std::unique_ptr<SimulatorStarter> simulator)
     m_sim = std::move(simulator);
 }
 
-LinkSettings DeviceSession::settings() const
-{
-    return m_link->settings();
-}
-
 void DeviceSession::say(Severity severity, const QString &text)
 {
     Q_EMIT message(severity, text);
-}
-
-void DeviceSession::readAll()
-{
-    const int id = deviceInView();
-    m_client->readAll([this, id](const ReadOutcome &r) {
-        if (id != deviceInView()) {
-            // Another device was shown meanwhile: its blocks went to that one, none is sure.
-            Q_EMIT readFinished(false);
-            return;
-        }
-        m_store->setDeviceValues(r.values);
-        if (!r.ok)
-            say(Severity::Error, tr("Reading failed: %1").arg(r.errors.join(QLatin1String("; "))));
-        else
-            say(Severity::Info, tr("Read %1 in %2", "%1: n parameters, %2: n requests")
-                                    .arg(tr("%n parameter(s)", nullptr, int(r.values.size())),
-                                         tr("%n request(s)", nullptr, r.reads)));
-        Q_EMIT readFinished(r.ok);
-    });
-}
-
-void DeviceSession::read(const QList<const Parameter *> &params,
-                         std::function<void(const ReadOutcome &)> done, Priority priority)
-{
-    m_client->read(params, priority, std::move(done));
-}
-
-void DeviceSession::readAll(std::function<void(const ReadOutcome &)> done)
-{
-    m_client->readAll(std::move(done));
-}
-
-void DeviceSession::writeChanges()
-{
-    write(m_store->pendingWrites());
-}
-
-void DeviceSession::write(const QList<ParameterWrite> &writes,
-                          std::function<void(const WriteOutcome &)> done)
-{
-    if (writes.isEmpty())
-        return;
-    const LinkSettings before = m_link->settings();
-    m_client->write(writes, [this, writes, before, done](const WriteOutcome &outcome) {
-        m_store->applyWriteOutcome(writes, outcome);
-        readBackUncertain(writes, outcome);
-        if (outcome.ok) {
-            say(Severity::Info,
-                tr("Wrote and verified %n parameter(s)", nullptr, int(outcome.written.size())));
-        } else {
-            for (const QString &e : outcome.errors)
-                say(Severity::Error, e);
-        }
-        // A write that carried device.id or device.baud (a profile applied with its link
-        // settings) moved the link: tell the pages, as changeLink() does.
-        const LinkSettings now = m_link->settings();
-        if (now.deviceId != before.deviceId || now.baud != before.baud)
-            Q_EMIT linkChanged(now);
-        if (done)
-            done(outcome);
-        Q_EMIT writeFinished(outcome);
-    });
-}
-
-void DeviceSession::readBackUncertain(const QList<ParameterWrite> &writes,
-                                      const WriteOutcome &outcome)
-{
-    QList<const Parameter *> uncertain; // sent, but failed: the store forgot their value
-    for (const ParameterWrite &w : writes) {
-        const QString &key = w.parameter->key;
-        if (outcome.uncertain(key) || outcome.refused.contains(key))
-            uncertain << w.parameter;
-    }
-    if (uncertain.isEmpty() || !m_link->isConnected() || !m_live)
-        return;
-    m_client->read(uncertain, Priority::Command,
-                   [this](const ReadOutcome &r) { m_store->setDeviceValues(r.values); });
 }
 
 void DeviceSession::command(const QString &key)
@@ -315,7 +141,8 @@ void DeviceSession::command(const QString &key)
     }
     const QString label = p->label.text(Translators::current());
     const bool motion = p->command == CommandClass::Motion;
-    const int id = deviceInView(); // the pulse goes to this one, whatever is shown by the answer
+    const int id =
+        m_line->deviceInView(); // the pulse goes to this one, whatever is shown by the answer
     command(*p, [this, key, label, motion, id](const Result &r) {
         // A moving command is only acknowledged here; MotionSupervisor says how it ended.
         if (r.ok && r.roundTripMs >= kSlowAnswerMs)
@@ -330,7 +157,7 @@ void DeviceSession::command(const QString &key)
             m_store->setUnsavedToFlash(false);
         if (r.ok && key == QLatin1String("factory_reset")) {
             m_store->setUnsavedToFlash(true); // factory values are in RAM; flash keeps the old ones
-            readAll([this](const ReadOutcome &all) { factoryResetReadBack(all); });
+            m_parameters->readAll([this](const ReadOutcome &all) { factoryResetReadBack(all); });
         }
         if (r.ok)
             m_motion->commandAcknowledged(id, key);
@@ -358,7 +185,7 @@ void DeviceSession::emergencyStop()
     }
     // Anything still waiting (polls, reads, queued moves) is stale after an emergency stop.
     m_link->cancelQueued(Priority::Command, tr("emergency stop"));
-    const QList<int> ids = deviceIds();
+    const QList<int> ids = m_line->deviceIds();
     if (ids.size() > 1) {
         emergencyStopAll(ids);
         return;
@@ -377,7 +204,7 @@ void DeviceSession::setTravelLimits(const TravelLimits &limits)
 
 void DeviceSession::guard(Risk risk, Proceed proceed)
 {
-    guard(risk, deviceInView(), std::move(proceed));
+    guard(risk, m_line->deviceInView(), std::move(proceed));
 }
 
 void DeviceSession::guard(Risk risk, int id, Proceed proceed)
@@ -429,7 +256,7 @@ void DeviceSession::emergencyStopAll(const QList<int> &ids)
                 (r.ok ? tally->acknowledged : tally->notAcknowledged).append(id);
                 if (!r.ok)
                     tally->errors << r.errorText;
-                if (id == deviceInView() && r.ok)
+                if (id == m_line->deviceInView() && r.ok)
                     Q_EMIT commandFinished(QStringLiteral("estop"), true);
                 if (--tally->pending > 0)
                     return;
@@ -468,7 +295,7 @@ void DeviceSession::factoryResetReadBack(const ReadOutcome &r)
 {
     // What the controller holds now is shown, whatever it is; then compared with the factory.
     m_store->setDeviceValues(r.values);
-    Q_EMIT readFinished(r.ok);
+    Q_EMIT m_parameters->readFinished(r.ok);
     if (!r.ok) {
         say(Severity::Error, tr("Factory reset: reading it back failed: %1")
                                  .arg(r.errors.join(QLatin1String("; "))));
@@ -494,44 +321,28 @@ void DeviceSession::factoryResetReadBack(const ReadOutcome &r)
                                    .arg(differ.join(QLatin1String(", "))));
 }
 
-void DeviceSession::changeLink(int deviceId, int baud)
+void DeviceSession::updateBackground()
 {
-    const LinkSettings previous = m_link->settings();
-    QList<ParameterWrite> writes;
-    const Parameter *id = map().find(QStringLiteral("device.id"));
-    const Parameter *rate = map().find(QStringLiteral("device.baud"));
-    if (id && deviceId != previous.deviceId)
-        writes.append({id, deviceId});
-    if (rate && previous.transport == LinkSettings::Transport::Rtu && baud != previous.baud)
-        writes.append({rate, baud});
-    if (writes.isEmpty())
-        return;
-    const Risk risk = writes.first().parameter == id ? Risk::DeviceId : Risk::Baud;
-    guard(risk, [this, writes, previous](const QString &refusal) {
-        if (refusal.isEmpty()) {
-            writeLink(writes, previous);
-            return;
-        }
-        say(Severity::Error, refusal);
-        Q_EMIT linkChangeFailed(previous, refusal);
-    });
+    QList<int> others = m_line->deviceIds();
+    others.removeAll(m_line->deviceInView());
+    m_bus->setDevices(others);
 }
 
-void DeviceSession::writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous)
+void DeviceSession::setLive(bool live)
 {
-    m_client->write(writes, [this, writes, previous](const WriteOutcome &outcome) {
-        m_store->applyWriteOutcome(writes, outcome);
-        if (outcome.ok) {
-            say(Severity::Info,
-                tr("The controller answers at %1").arg(m_link->settings().describe()));
-            Q_EMIT linkChanged(m_link->settings());
-            return;
-        }
-        const QString reason = outcome.errors.join(QLatin1String("; "));
-        say(Severity::Error,
-            tr("The controller does not answer with the new settings: %1").arg(reason));
-        Q_EMIT linkChangeFailed(previous, reason);
-    });
+    if (std::exchange(m_live, live) == live)
+        return;
+    if (!live) {
+        m_poller->stop();
+        m_bus->stop();
+        return;
+    }
+    if (!m_link->isConnected())
+        return;
+    m_parameters->readAll();
+    m_poller->start();
+    updateBackground();
+    m_bus->start();
 }
 
 int DeviceSession::stopJogging(JogStop why)

@@ -1,51 +1,56 @@
 #pragma once
 
-// The one header a front-end needs: the session and the value types its API speaks in.
-#include "bus/linksettings.h" // LinkSettings
-#include "bus/linkstats.h"    // LinkStats
-#include "bus/request.h"      // Priority, Result
-#include "bus/trafficlog.h"   // TrafficLog, TrafficEntry
-#include "device/deviceclient.h"
-#include "device/parameterstore.h"
-#include "device/poller.h" // PollStats
-#include "motion/travellimits.h"
-#include "session/busdevicestatus.h"
-#include "session/restartwatch.h" // RestartWatch::Zeros
+// The session: the parts it hands out and what only the whole can do. Each part has its own
+// header under session/parts/, included by the callers that need it; this one includes no
+// client, store, poller or planner header, so touching those rebuilds only their users.
+#include "map/registermap.h"      // RegisterMap::builtin(), the constructor's default
+#include "motion/travellimits.h"  // TravelLimits
+#include "session/restartwatch.h" // RestartWatch::Zeros, ::Evidence, in signals
 
-#include <QMap>
+#include <QHash>
 #include <QObject>
 #include <QSet>
 
+#include <functional>
 #include <memory>
 
 namespace stepcom {
 
 class BusPoller;
+class DeviceClient;
 class DeviceMemory;
 class JogController;
 class LinkHealth;
 class ModbusLink;
 class MotionSupervisor;
+class ParameterStore;
+class Poller;
+class ReadLimits;
 class Reconnector;
+class SessionConnection;
+class SessionLine;
+class SessionParameters;
+class SessionStatus;
 class SimulatorStarter;
-class StatusRecorder;
 class StepMove;
+struct LinkSettings;
+struct ReadOutcome;
+struct Result;
 
 // One controller connection and everything known about it. Every front-end (the window,
-// stepcomctl, the benchmark, the screenshot tool, the tests) works through this: it reads,
-// writes, pulses commands, jogs, polls the status, records it, and says when motion must stop.
-// It owns the link, the typed client, the parameter store, the status poller, the jog
-// controller, the status recorder and (when a program injects one) the built-in simulator;
-// none of the link's or the poller's parts are handed out. Its declarations are grouped by
-// concern, each group naming the .cpp that implements it (docs/architecture.md, "Who owns what").
+// stepcomctl, the benchmark, the screenshot tool, the tests) works through this front door:
+// it hands out its parts -- connection(), status(), parameters(), line(), motion(), jog() --
+// and does itself only what needs the whole: commands and the emergency stop, saving and the
+// factory reset, live or not, the simulator, restarts. It owns the link, the typed client, the
+// store, the poller and the parts, which work on its state (they are its friends); the link's
+// and the poller's own objects are not handed out. Its declarations are grouped by concern,
+// each group naming the .cpp that implements it (docs/architecture.md, "Who owns what").
 class DeviceSession : public QObject
 {
     Q_OBJECT
 public:
     enum class Severity { Info, Warning, Error };
     Q_ENUM(Severity)
-    enum class LinkState { Disconnected, Connecting, Connected };
-    Q_ENUM(LinkState)
     // Why every jog must stop now (the rules live here; the window reports what happened).
     enum class JogStop { PageLeft, FocusLost, WindowClosing };
     Q_ENUM(JogStop)
@@ -65,11 +70,14 @@ public:
     ~DeviceSession() override;
 
     // -- Its parts and what it holds (devicesession.cpp) --
-    const RegisterMap &map() const { return m_store->map(); }
-    // The values the session knows: what the controller holds and what the user edited. Pages
-    // and forms bind to this model; the session keeps it up to date.
-    ParameterStore *parameters() const { return m_store; }
+    const RegisterMap &map() const;
+    // The values the session knows, what the controller holds and what the user edited (its
+    // store, the model pages and forms bind to), and reading and writing them
+    // (parts/sessionparameters.h).
+    SessionParameters *parameters() const { return m_parameters; }
     JogController *jog() const { return m_jog; }
+    // The live status poll of the device in view and its recording (parts/sessionstatus.h).
+    SessionStatus *status() const { return m_status; }
     // Follows motion commands to their judged outcome and keeps each axis' reference state.
     MotionSupervisor *motion() const { return m_motion; }
     // Step jogs and move-to over the single move, judged by the supervisor.
@@ -85,65 +93,23 @@ public:
     // for device `id` of the line.
     void guard(Risk risk, Proceed proceed);
     void guard(Risk risk, int id, Proceed proceed);
-    // The live status recorded for the plots; made on first use, recording from then on.
-    StatusRecorder *recorder();
-    TrafficLog *traffic() const;
-    const LinkStats &linkStats() const;
-    void resetLinkStats();
 
-    // -- Connection (devicesessionconnect.cpp; its state and the simulator in devicesession.cpp) --
-    // Port closed / open but not answering / answering: "connected" means answering.
-    LinkHealth *health() const { return m_health; }
-    // Tries again on its own after a link loss (off until a front-end turns it on); while it
-    // waits, an E-STOP is held and sent first when the link is back, then everything is read.
-    Reconnector *reconnector() const { return m_reconnector; }
-    LinkState linkState() const;
-    bool isConnected() const;
-    bool isSimulator() const;
-    LinkSettings settings() const;
+    // -- Connection (its part: parts/sessionconnection.h; what the session does when the link
+    // opens or drops: devicesessionconnect.cpp) --
+    SessionConnection *connection() const { return m_connection; }
+    // The devices of its line, the one in view, and a new id or baud for it
+    // (parts/sessionline.h).
+    SessionLine *line() const { return m_line; }
     // Live (the default, as the window wants it): read everything after connecting, poll the
     // status while connected, read back what a failed write left uncertain. stepcomctl turns it
     // off, so a command puts on the wire only what it names.
     // Turning it off while connected stops the polls; on again reads everything and polls
-    // (devicesessionline.cpp).
+    // (devicesession.cpp).
     void setLive(bool live);
     bool isLive() const { return m_live; }
-    // Whether Qt's own qt.modbus messages reach stderr (stepcomctl --verbose); off by default.
-    static void setLinkDiagnosticsShown(bool shown);
     // The built-in simulator, injected by programs that offer --sim (the session owns it).
     void setSimulator(std::unique_ptr<SimulatorStarter> simulator);
     SimulatorStarter *simulatorStarter() const { return m_sim.get(); }
-    // Connect, then (live) read everything (reading never writes). `connected(ok, reason)`
-    // follows.
-    void connectTo(const LinkSettings &settings);
-    // Start the built-in simulated controller in this process and connect to it.
-    void connectSimulator();
-    // Close the link; an empty reason says the user disconnected.
-    void disconnectFrom(const QString &reason = QString());
-    // What the connected controller refuses to read (gaps, parameters it lacks), learnt from
-    // its answers and remembered per line and id for this session's life.
-    const ReadLimits &readLimits() const;
-    // The line a controller is on (port, or host:port); read limits are kept per line and id.
-    static QString lineKey(const LinkSettings &settings);
-    // Every controller's known read limits as text by "line#id", for the saved connection
-    // settings; taken back, the next connect need not learn them again (said once then).
-    QMap<QString, QString> knownReadLimits() const;
-    void setKnownReadLimits(const QMap<QString, QString> &known);
-
-    // -- Reading and writing the device in view (devicesession.cpp) --
-    void readAll();
-    // Read these parameters (or all) and hand the outcome over; the store is left alone.
-    void read(const QList<const Parameter *> &params, std::function<void(const ReadOutcome &)> done,
-              Priority priority = Priority::Read);
-    void readAll(std::function<void(const ReadOutcome &)> done);
-    // Write every edit held in the store, verify, and update the store.
-    void writeChanges();
-    // `done` (optional) hears this write's outcome, after the store has taken it.
-    void write(const QList<ParameterWrite> &writes,
-               std::function<void(const WriteOutcome &)> done = {});
-    // Write a new device id and/or baud, follow the controller and verify it answers there.
-    // On failure `linkChangeFailed` offers the settings that worked before.
-    void changeLink(int deviceId, int baud);
 
     // -- Commands and stops (devicesession.cpp) --
     // Pulse a command coil by key, say how it went and emit commandFinished; emergency ones
@@ -158,59 +124,6 @@ public:
     // Stop every jog for this reason; returns how many stops were sent or scheduled.
     int stopJogging(JogStop why);
 
-    // -- Status poll (devicesession.cpp; started on connect when live) --
-    void startStatus();
-    void stopStatus();
-    bool isStatusActive() const;
-    QStringList statusKeys() const;
-    void setStatusIntervalMs(int ms);
-    int statusIntervalMs() const;
-    double statusRate() const;
-    bool isStatusFast() const;
-    QString statusError() const;
-    const PollStats &statusStats() const;
-    void resetStatusStats();
-
-    // -- Line of several (devicesessionline.cpp; a device not in view: sessiondevices.cpp) --
-    // Several controllers on one line (RS-485: one pair of wires, one id each). The link's
-    // device id is the device in view; the others' status is read at the background rate, and
-    // emergencyStop() reaches every one. Empty or one id: a single controller.
-    void setDeviceIds(const QList<int> &ids);
-    QList<int> deviceIds() const;
-    int deviceInView() const;
-    // Show another device of the list without reconnecting: a jog still held is stopped on the
-    // device it runs on, what the store holds is put aside for the device that was in view and
-    // `id`'s is put back at once (then read again), and the live poll moves to `id`. Motion
-    // supervision and references stay per device (MotionSupervisor). False (and a message) when
-    // `id` is not on the list or a step move still runs.
-    bool showDevice(int id);
-    // How often each device not in view has its status read.
-    void setBackgroundIntervalMs(int ms);
-    int backgroundIntervalMs() const;
-    // What the status polls saw of a device, in view or not (Unknown before its first read).
-    BusDeviceStatus deviceStatus(int id) const;
-    // The device values known of any device of the line: the store's for the device in view,
-    // else what was read while it was in view with the background poll's newer status on top.
-    QHash<QString, qint64> knownValues(int id) const;
-    // Read these parameters from the controller at `id`, whoever is in view; the store, the
-    // view and the device list are left alone (probes while ids are given).
-    void readAt(int id, const QList<const Parameter *> &params,
-                std::function<void(const ReadOutcome &)> done);
-    // Reopen the line at another baud without writing to any controller (serial lines only;
-    // elsewhere `done(true)` at once): while ids are given, new controllers arrive at 9600 and
-    // the ones already done listen at the common baud. `done` hears whether the port opened.
-    void setLineBaud(int baud, std::function<void(bool ok, const QString &reason)> done);
-    // Read or write a device of the line whether it is in view or not (sessiondevices.cpp):
-    // the device in view goes through read()/write() (its store follows); another one through
-    // a client addressed to its id, leaving the store alone. Link settings (device.id,
-    // device.baud) are refused for a device not in view: the link cannot follow it there.
-    void readDevice(int id, const QList<const Parameter *> &params,
-                    std::function<void(const ReadOutcome &)> done);
-    void writeDevice(int id, const QList<ParameterWrite> &writes,
-                     std::function<void(const WriteOutcome &)> done);
-    // The link as it reaches device `id` ("/dev/ttyUSB0 · 9600 8N1 · id 2").
-    QString describeDevice(int id) const;
-
     // -- Restarts (sessionrestart.cpp): controllerRestarted() and controllerMayHaveRestarted()
     // say it --
     // A status read of device `id` a front-end made itself rather than through the polls
@@ -219,23 +132,8 @@ public:
     void statusSampled(int id, bool ok, const QHash<QString, qint64> &values);
 
 Q_SIGNALS:
-    // -- Connection --
-    void connected(bool ok, const QString &reason);
-    void disconnected(const QString &reason);
-    // The link dropped on its own (after `disconnected`).
-    void linkLost(const QString &reason);
-    void linkStateChanged();
-    void linkStatsChanged();
-    // Answers began with the request's own bytes: the adapter echoes and the option is off.
-    void echoSuspected();
-    // Learnt what the controller refuses to read (said once, in words; also a message()).
-    void readLimitsLearned(const QString &text);
     // -- Reading and writing --
     void message(stepcom::DeviceSession::Severity severity, const QString &text);
-    void readFinished(bool ok);
-    void writeFinished(const stepcom::WriteOutcome &outcome);
-    void linkChanged(const stepcom::LinkSettings &settings);
-    void linkChangeFailed(const stepcom::LinkSettings &previous, const QString &reason);
     void travelLimitsChanged();
     // -- Commands and stops --
     void commandFinished(const QString &key, bool ok);
@@ -245,14 +143,6 @@ Q_SIGNALS:
     // emergencyStop() was asked for, before anything is cancelled or sent: work that runs
     // device after device (a profile applied to several) stops here.
     void emergencyStopRequested();
-    // -- Status poll --
-    void statusCycleFinished(bool ok, qint64 ms);
-    void statusFastChanged(bool fast);
-    // -- Line of several --
-    void deviceInViewChanged(int id);
-    void deviceStatusChanged(int id);
-    // setDeviceIds() named other devices or another order.
-    void deviceIdsChanged(const QList<int> &ids);
     // -- Restarts --
     // Controller `id` restarted (power off?): what it read afterwards differs from what the
     // session held (`lost`: "motor1.speed 222 → 120 rpm"), or an axis that stood still went to
@@ -266,7 +156,10 @@ Q_SIGNALS:
     void controllerMayHaveRestarted(int id, const stepcom::RestartWatch::Evidence &seen);
 
 private:
-    friend class SessionInternals; // tests and the benchmark's link measurements
+    friend class SessionInternals;  // tests and the benchmark's link measurements
+    friend class SessionConnection; // works on the session's link
+    friend class SessionLine;       // and on its devices
+    friend class SessionParameters; // and on its client
 
     void say(Severity severity, const QString &text);
     // -- Connection (devicesessionconnect.cpp) --
@@ -277,17 +170,13 @@ private:
     void onLost(const QString &reason);
     // What a connect found already known of this controller, said once in words.
     void sayKnownLimits(int id);
-    void learnt(int unit, ReadLimits::Lesson lesson, const QString &key);
+    // `lesson`: a ReadLimits::Lesson (kept out of this header with the client's).
+    void learnt(int unit, int lesson, const QString &key);
     // -- Reading, writing, commands (devicesession.cpp) --
     void guardedCommand(Risk risk, const QString &key);
-    void writeLink(const QList<ParameterWrite> &writes, const LinkSettings &previous);
-    // After a failed write, read back what the controller holds for the keys whose request went
-    // out without a good answer.
-    void readBackUncertain(const QList<ParameterWrite> &writes, const WriteOutcome &outcome);
     // After a factory reset: show what it holds now, and say where that is not the factory's.
     void factoryResetReadBack(const ReadOutcome &r);
     void emergencyStopAll(const QList<int> &ids);
-    // -- Line of several (devicesessionline.cpp) --
     // The devices not in view, for the background poll.
     void updateBackground();
     // -- Restarts (sessionrestart.cpp) --
@@ -300,9 +189,13 @@ private:
                         const QHash<QString, qint64> &held, const ReadOutcome &read);
 
     ModbusLink *m_link;
+    SessionConnection *m_connection;
+    SessionLine *m_line;
     DeviceClient *m_client;
     ParameterStore *m_store;
+    SessionParameters *m_parameters;
     Poller *m_poller;
+    SessionStatus *m_status;
     MotionSupervisor *m_motion; // made before the jog controller, which follows it
     LinkHealth *m_health;
     JogController *m_jog;
@@ -312,7 +205,6 @@ private:
     BusPoller *m_bus;
     DeviceMemory *m_memory; // what the store held for each device not in view
     QList<int> m_deviceIds; // the line's devices in order; empty: the link's id alone
-    StatusRecorder *m_recorder = nullptr;
     std::unique_ptr<SimulatorStarter> m_sim;
     bool m_usingSim = false;
     bool m_readAfterConnect = false;

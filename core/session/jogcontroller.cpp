@@ -1,4 +1,7 @@
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 
 #include "session/motionsupervisor.h"
 
@@ -25,8 +28,9 @@ JogController::JogController(DeviceSession *session, QObject *parent)
     , m_session(session)
 {
     m_motors.resize(session->map().blockCount(kMotor));
-    connect(session, &DeviceSession::disconnected, this, &JogController::onDisconnected);
-    connect(session, &DeviceSession::connected, this,
+    connect(session->connection(), &SessionConnection::disconnected, this,
+            &JogController::onDisconnected);
+    connect(session->connection(), &SessionConnection::connected, this,
             [this](bool ok, const QString &) { onConnected(ok); });
     // The E-STOP stopped every motor: the jogs end now (and are checked like any stop).
     connect(session->motion(), &MotionSupervisor::emergencyStopSent, this, [this] {
@@ -34,11 +38,12 @@ JogController::JogController(DeviceSession *session, QObject *parent)
         Q_EMIT heldControlsReset();
     });
     // A motor that kept running after its stop is cleared once the poller sees it idle.
-    connect(session, &DeviceSession::statusCycleFinished, this, [this] {
+    connect(session->status(), &SessionStatus::statusCycleFinished, this, [this] {
         stopAtTravelLimits();
         for (int n = 1; n <= motorCount(); ++n) {
             if (at(n).state == State::StillRunning &&
-                m_session->parameters()->deviceValue(motorKey(n, QStringLiteral("running"))) == 0) {
+                m_session->parameters()->store()->deviceValue(
+                    motorKey(n, QStringLiteral("running"))) == 0) {
                 setState(n, State::Idle);
                 say(DeviceSession::Severity::Info, tr("Motor %1 has stopped now").arg(n));
             }
@@ -50,7 +55,7 @@ JogController::~JogController()
 {
     // Leaving with a motor held: the stop still goes out (nobody is left to check it).
     DeviceSession *session = m_session;
-    if (!session || !session->isConnected())
+    if (!session || !session->connection()->isConnected())
         return;
     for (int n = 1; n <= motorCount(); ++n) {
         const Motor &m = at(n);
@@ -70,7 +75,7 @@ void JogController::stopAtTravelLimits()
         if (at(n).state != State::Jogging)
             continue;
         const auto pos =
-            m_session->parameters()->deviceValue(motorKey(n, QStringLiteral("position")));
+            m_session->parameters()->store()->deviceValue(motorKey(n, QStringLiteral("position")));
         const Parameter *p = TravelLimits::positionParameter(m_session->map(), n);
         if (!pos || !p)
             continue;
@@ -170,7 +175,7 @@ bool JogController::press(int motor, Direction direction, Source source)
         say(Severity::Info, tr("Keyboard jogging is off: motor %1 does not move").arg(motor));
         return false;
     }
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         say(Severity::Warning, tr("Not connected: motor %1 does not move").arg(motor));
         return false;
     }
@@ -192,16 +197,16 @@ bool JogController::press(int motor, Direction direction, Source source)
         return false;
     }
     // A stop of ours in flight makes the last poll stale; otherwise trust it.
-    if (m.state != State::Stopping &&
-        m_session->parameters()->deviceValue(motorKey(motor, QStringLiteral("running"))) == 1) {
+    if (m.state != State::Stopping && m_session->parameters()->store()->deviceValue(
+                                          motorKey(motor, QStringLiteral("running"))) == 1) {
         say(Severity::Warning, tr("Motor %1 is moving (a single move, homing or another command): "
                                   "stop it before jogging")
                                    .arg(motor));
         return false;
     }
     // The software travel limits: an axis at or beyond one may only jog back.
-    if (const auto pos =
-            m_session->parameters()->deviceValue(motorKey(motor, QStringLiteral("position")));
+    if (const auto pos = m_session->parameters()->store()->deviceValue(
+            motorKey(motor, QStringLiteral("position")));
         pos && !m_session->travelLimits().isEmpty()) {
         const Parameter *p = TravelLimits::positionParameter(m_session->map(), motor);
         const QString why = m_session->travelLimits().refuseJog(
@@ -293,7 +298,7 @@ void JogController::sendStop(int motor, const QString &reason)
              tr("Motor %1 has no stop command in this map: use the emergency stop").arg(motor));
         return;
     }
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         if (m.state == State::Jogging || m.state == State::Stopping ||
             m.state == State::StillRunning)
             markPossiblyRunning(motor, tr("not connected, the stop could not be sent"));
@@ -375,14 +380,14 @@ void JogController::checkRunning(int motor, quint64 generation, int retries)
     }
     const QString key = motorKey(motor, QStringLiteral("running"));
     const Parameter *running = m_session->map().find(key);
-    if (!running || !m_session->isConnected()) {
+    if (!running || !m_session->connection()->isConnected()) {
         if (!running)
             setState(motor, State::Idle);
         maybeSettled();
         return;
     }
     ++m_checksInFlight;
-    m_session->read(
+    m_session->parameters()->read(
         {running},
         [self = QPointer<JogController>(this), motor, generation, key,
          retries](const ReadOutcome &o) {
@@ -403,7 +408,7 @@ void JogController::onRunningRead(int motor, quint64 generation, int retries, co
     }
     if (outcome.ok && outcome.values.contains(key)) {
         const qint64 value = outcome.values.value(key);
-        m_session->parameters()->setDeviceValues({{key, value}});
+        m_session->parameters()->store()->setDeviceValues({{key, value}});
         if (value == 0) {
             setState(motor, State::Idle);
             say(DeviceSession::Severity::Info,
@@ -415,7 +420,7 @@ void JogController::onRunningRead(int motor, quint64 generation, int retries, co
                             .arg(motor)
                             .arg(m.stopReason));
         }
-    } else if (m_session->isConnected() && retries > 0) {
+    } else if (m_session->connection()->isConnected() && retries > 0) {
         // An emergency stop cancels queued reads: ask once more before raising the alarm.
         ++m_checksInFlight;
         QTimer::singleShot(m_settleMs, this, [this, motor, generation, retries] {
@@ -423,7 +428,7 @@ void JogController::onRunningRead(int motor, quint64 generation, int retries, co
             checkRunning(motor, generation, retries - 1);
         });
         return;
-    } else if (m_session->isConnected()) {
+    } else if (m_session->connection()->isConnected()) {
         setState(motor, State::StillRunning);
         warn(motor, tr("Motor %1: could not check that it stopped: %2")
                         .arg(motor)

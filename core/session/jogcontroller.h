@@ -1,6 +1,7 @@
 #pragma once
 
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QList>
 #include <QObject>

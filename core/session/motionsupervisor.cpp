@@ -4,6 +4,10 @@
 #include "motion/motionjudge.h"
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 
 #include <QPointer>
 
@@ -41,23 +45,24 @@ MotionSupervisor::MotionSupervisor(DeviceSession *session, ModbusLink *link)
         if (p.isCoil())
             m_coils.insert(p.address, p.key);
     }
-    connect(session, &DeviceSession::disconnected, this, &MotionSupervisor::onDisconnected);
+    connect(session->connection(), &SessionConnection::disconnected, this,
+            &MotionSupervisor::onDisconnected);
     // Every stop goes through the link, whoever sent it (jog controller, E-STOP, stop buttons).
     connect(link, &ModbusLink::dispatched, this,
             [this](quint64, const Request &r) { onDispatched(r); });
-    connect(session, &DeviceSession::statusCycleFinished, this,
-            [this](bool ok, qint64) { statusRead(m_session->deviceInView(), ok); });
-    connect(session, &DeviceSession::deviceStatusChanged, this, [this](int device) {
-        statusRead(device,
-                   m_session->deviceStatus(device).state == BusDeviceStatus::State::Answering);
+    connect(session->status(), &SessionStatus::statusCycleFinished, this,
+            [this](bool ok, qint64) { statusRead(m_session->line()->deviceInView(), ok); });
+    connect(session->line(), &SessionLine::deviceStatusChanged, this, [this](int device) {
+        statusRead(device, m_session->line()->deviceStatus(device).state ==
+                               BusDeviceStatus::State::Answering);
     });
-    connect(session, &DeviceSession::connected, this, [this](bool ok) {
+    connect(session->connection(), &SessionConnection::connected, this, [this](bool ok) {
         if (ok)
-            setView(m_session->deviceInView());
+            setView(m_session->line()->deviceInView());
     });
-    connect(session, &DeviceSession::deviceInViewChanged, this, &MotionSupervisor::setView);
+    connect(session->line(), &SessionLine::deviceInViewChanged, this, &MotionSupervisor::setView);
     // A write of device.id moved the controller in view: what is known of it goes along.
-    connect(session, &DeviceSession::linkChanged, this, [this](const LinkSettings &s) {
+    connect(session->line(), &SessionLine::linkChanged, this, [this](const LinkSettings &s) {
         if (s.deviceId == m_view || m_devices.contains(s.deviceId))
             return setView(s.deviceId);
         m_devices.insert(s.deviceId, m_devices.take(m_view));
@@ -71,7 +76,7 @@ MotionSupervisor::~MotionSupervisor() = default;
 
 StatusValues MotionSupervisor::snapshot(int device) const
 {
-    return m_session->knownValues(device);
+    return m_session->line()->knownValues(device);
 }
 
 const MotionSupervisor::Device &MotionSupervisor::inView() const

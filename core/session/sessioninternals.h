@@ -4,8 +4,10 @@
 
 namespace stepcom {
 
-// The session's parts, for the tests that check them and for the benchmark's measurements of
-// the link itself. Front-ends never include this: they use the session's own API.
+// What the session does not hand out -- its link, client and poller -- for the tests that must
+// fake or watch the wire itself (the requests as they go out, the poller's own timing) and for
+// the benchmark's measurements of the link. Everything else is reached through the parts
+// (connection(), status(), parameters(), line()); front-ends never include this.
 class SessionInternals
 {
 public:

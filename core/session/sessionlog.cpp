@@ -1,6 +1,8 @@
 #include "session/sessionlog.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -20,20 +22,21 @@ SessionLog::SessionLog(DeviceSession *session, QObject *parent)
 {
     if (!session)
         return;
-    connect(session->traffic(), &TrafficLog::entryAdded, this, &SessionLog::write);
-    connect(session, &DeviceSession::linkStateChanged, this, [this, session] {
-        if (session->linkState() == DeviceSession::LinkState::Connecting)
+    connect(session->connection()->traffic(), &TrafficLog::entryAdded, this, &SessionLog::write);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, [this, session] {
+        if (session->connection()->linkState() == SessionConnection::LinkState::Connecting)
             beginConnection(linkText(session));
     });
     // What happened beyond the frames, in kinds of their own so a replay need not read the
     // (translated) text.
     const auto mark = [this](const char *kind, const QString &text) { writeMark(kind, text); };
-    connect(session, &DeviceSession::connected, this, [session, mark](bool ok, const QString &) {
-        if (ok)
-            mark(kLinkUp, linkText(session));
-    });
+    connect(session->connection(), &SessionConnection::connected, this,
+            [session, mark](bool ok, const QString &) {
+                if (ok)
+                    mark(kLinkUp, linkText(session));
+            });
     // Closed on purpose or lost: the reason says which (linkLost follows this one).
-    connect(session, &DeviceSession::disconnected, this,
+    connect(session->connection(), &SessionConnection::disconnected, this,
             [mark](const QString &reason) { mark(kLinkDown, reason); });
     connect(session, &DeviceSession::controllerRestarted, this,
             [mark](int id, const QStringList &lost) {
@@ -49,7 +52,7 @@ SessionLog::SessionLog(DeviceSession *session, QObject *parent)
             });
     connect(session, &DeviceSession::emergencyStopRequested, this,
             [mark] { mark(kUser, QStringLiteral("E-STOP pressed")); });
-    connect(session, &DeviceSession::deviceInViewChanged, this,
+    connect(session->line(), &SessionLine::deviceInViewChanged, this,
             [mark](int id) { mark(kUser, QStringLiteral("device in view: id %1").arg(id)); });
 }
 
@@ -58,8 +61,8 @@ SessionLog::~SessionLog() = default;
 QString SessionLog::linkText(const DeviceSession *session)
 {
     // A log of the built-in simulator must not pass for one of a machine.
-    const QString link = session->settings().describe();
-    return session->isSimulator()
+    const QString link = session->connection()->settings().describe();
+    return session->connection()->isSimulator()
                ? QStringLiteral("built-in simulator, not a machine: %1").arg(link)
                : link;
 }
@@ -200,7 +203,7 @@ QString SessionLog::header(const DeviceSession *session, int part, const QString
     if (!session)
         return text;
     text += QStringLiteral("# map: %1\n").arg(session->map().identity());
-    const LinkSettings s = session->settings();
+    const LinkSettings s = session->connection()->settings();
     const char *transport = s.transport == LinkSettings::Transport::Tcp      ? "tcp"
                             : s.transport == LinkSettings::Transport::RtuTcp ? "rtu-tcp"
                                                                              : "rtu";
@@ -217,11 +220,11 @@ QString SessionLog::header(const DeviceSession *session, int part, const QString
                 .arg(s.deviceId)
                 .arg(s.timeoutMs)
                 .arg(s.retries);
-    if (session->isSimulator())
+    if (session->connection()->isSimulator())
         line += QStringLiteral(" simulator=built-in (not a machine)");
     text += QStringLiteral("# line: %1\n").arg(line);
     QStringList ids;
-    for (const int id : session->deviceIds())
+    for (const int id : session->line()->deviceIds())
         ids << QString::number(id);
     if (ids.isEmpty())
         ids << QString::number(s.deviceId);
@@ -287,8 +290,8 @@ void SessionLog::writeMark(const char *kind, const QString &text)
 {
     // Not a file of its own: what happens with no link (a page shown before connecting) has no
     // frames to go with.
-    if (!m_file.isOpen() &&
-        (!m_session || m_session->linkState() == DeviceSession::LinkState::Disconnected))
+    if (!m_file.isOpen() && (!m_session || m_session->connection()->linkState() ==
+                                               SessionConnection::LinkState::Disconnected))
         return;
     writeLine(formatMark(QDateTime::currentDateTime(), kind, text).toUtf8());
 }

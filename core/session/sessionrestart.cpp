@@ -2,12 +2,18 @@
 // status reads; the session reads everything of that controller again and compares it with
 // what it held, so what is said is what the controller showed, not a guess.
 #include "bus/modbuslink.h"
+#include "device/deviceclient.h"
 #include "device/devicememory.h"
+#include "device/parameterstore.h"
 #include "i18n/translators.h"
 #include "motion/referencetracker.h"
 #include "session/buspoller.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/restartwatch.h"
 
 #include <QDateTime>
@@ -28,14 +34,14 @@ void DeviceSession::watchRestarts()
     m_restarts = new RestartWatch(map(), this);
     connect(m_poller, &Poller::cycleFinished, m_restarts, [this](bool ok) {
         QHash<QString, qint64> values;
-        for (const QString &key : statusKeys()) {
+        for (const QString &key : m_poller->keys()) {
             if (const auto raw = m_store->deviceValue(key))
                 values.insert(key, *raw);
         }
-        m_restarts->statusRead(deviceInView(), ok, values, nowMs());
+        m_restarts->statusRead(m_line->deviceInView(), ok, values, nowMs());
     });
     connect(m_bus, &BusPoller::statusChanged, m_restarts, [this](int id) {
-        if (id == deviceInView())
+        if (id == m_line->deviceInView())
             return; // the live poll's cycle above
         const BusDeviceStatus s = m_bus->status(id);
         m_restarts->statusRead(id, s.state == BusDeviceStatus::State::Answering, s.values, nowMs());
@@ -49,7 +55,7 @@ void DeviceSession::watchRestarts()
             m_restarts->commandSent(r.unitId > 0 ? r.unitId : m_link->settings().deviceId, nowMs(),
                                     RestartWatch::motorsOf(map(), key));
     });
-    connect(this, &DeviceSession::disconnected, m_restarts, &RestartWatch::forget);
+    connect(m_connection, &SessionConnection::disconnected, m_restarts, &RestartWatch::forget);
     connect(m_restarts, &RestartWatch::suspected, this, &DeviceSession::checkRestart);
 }
 
@@ -69,11 +75,12 @@ void DeviceSession::checkRestart(int id, const QString &why, RestartWatch::Zeros
     if (m_checkingRestart.contains(id) || !m_link->isConnected())
         return;
     m_checkingRestart.insert(id);
-    const QHash<QString, qint64> held = knownValues(id);
-    readDevice(id, map().holdings(), [this, id, why, zeros, seen, held](const ReadOutcome &r) {
-        m_checkingRestart.remove(id);
-        restartChecked(id, why, zeros, seen, held, r);
-    });
+    const QHash<QString, qint64> held = m_line->knownValues(id);
+    m_line->readDevice(id, map().holdings(),
+                       [this, id, why, zeros, seen, held](const ReadOutcome &r) {
+                           m_checkingRestart.remove(id);
+                           restartChecked(id, why, zeros, seen, held, r);
+                       });
 }
 
 void DeviceSession::restartChecked(int id, const QString &why, RestartWatch::Zeros zeros,
@@ -81,7 +88,7 @@ void DeviceSession::restartChecked(int id, const QString &why, RestartWatch::Zer
                                    const QHash<QString, qint64> &held, const ReadOutcome &read)
 {
     const QString locale = Translators::current();
-    const QString device = deviceIds().size() > 1 ? tr("Device %1: ").arg(id) : QString();
+    const QString device = m_line->deviceIds().size() > 1 ? tr("Device %1: ").arg(id) : QString();
     // What was seen, in words: the silence or the zeros, then each axis.
     const QString evidence = RestartWatch::describe(seen, map(), why);
     // Positions at 0 after a motion prove nothing: it may have ended there.
@@ -118,7 +125,7 @@ void DeviceSession::restartChecked(int id, const QString &why, RestartWatch::Zer
                         .arg(p->key, p->displayRaw(*was, locale), p->displayRaw(*now, locale));
     }
     // The values read are what the controller holds now; edits the user holds stay held.
-    if (id == deviceInView())
+    if (id == m_line->deviceInView())
         m_store->setDeviceValues(read.values);
     else
         m_memory->setDeviceValues(id, read.values);
@@ -138,7 +145,7 @@ void DeviceSession::restartChecked(int id, const QString &why, RestartWatch::Zer
                                          .arg(why));
         return;
     }
-    if (id == deviceInView())
+    if (id == m_line->deviceInView())
         m_store->setUnsavedToFlash(false); // it came back with what its flash holds
     m_motion->restarted(id);
     QStringList what{tr("positions lost"), tr("references lost")};

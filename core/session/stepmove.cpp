@@ -5,6 +5,9 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 
 #include <cmath>
 
@@ -56,13 +59,13 @@ QString StepMove::refusal(const StepMoveRequest &r) const
         return tr("Motor %1: the distance or position is not a number").arg(r.motor);
     if (r.kind == StepMoveRequest::Kind::Raw && r.value < 0)
         return tr("Motor %1: a distance cannot be negative").arg(r.motor);
-    if (!s.isConnected())
+    if (!s.connection()->isConnected())
         return tr("Not connected: nothing was sent");
     if (m_busy)
         return tr("A step is still running: wait for it to end");
     QStringList edited;
     for (const QString &k : usedKeys(s, r.motor)) {
-        if (s.parameters()->editedKeys().contains(k))
+        if (s.parameters()->store()->editedKeys().contains(k))
             edited << s.map().find(k)->label.text(QString());
     }
     if (!edited.isEmpty())
@@ -85,7 +88,7 @@ QString StepMove::start(const StepMoveRequest &request)
     m_result.request = request;
     m_startedPoll = false;
     m_waitingCommand = false;
-    m_unsavedBefore = m_session->parameters()->unsavedToFlash();
+    m_unsavedBefore = m_session->parameters()->store()->unsavedToFlash();
     const RegisterMap &map = m_session->map();
     // The step's own registers and what the motion judge reads (limits, inputs, the mode):
     // a step is judged on what `command motorN.move --wait` is judged on.
@@ -103,7 +106,7 @@ QString StepMove::start(const StepMoveRequest &request)
         params << map.find(k);
     Q_EMIT started(request);
     // What the axis and the user's registers hold now, not what the last poll saw.
-    m_session->read(
+    m_session->parameters()->read(
         params,
         [self = QPointer<StepMove>(this)](const ReadOutcome &r) {
             if (self)
@@ -124,7 +127,7 @@ void StepMove::onRead(bool ok, const QHash<QString, qint64> &values, const QStri
                    .arg(errors.join(QLatin1String("; "))));
         return;
     }
-    m_session->parameters()->setDeviceValues(values);
+    m_session->parameters()->store()->setDeviceValues(values);
     const RegisterMap &map = m_session->map();
     const StepMoveRequest &r = m_result.request;
     const Parameter *pos = TravelLimits::positionParameter(map, r.motor);
@@ -199,8 +202,8 @@ void StepMove::onRead(bool ok, const QHash<QString, qint64> &values, const QStri
     if (direction != m_userDirection)
         writes.append({map.find(key("direction")), direction});
     const auto go = [this] {
-        if (!m_session->isStatusActive()) {
-            m_session->startStatus(); // the supervisor judges the end from the status poll
+        if (!m_session->status()->isActive()) {
+            m_session->status()->start(); // the supervisor judges the end from the status poll
             m_startedPoll = true;
         }
         m_waitingCommand = true;
@@ -210,17 +213,18 @@ void StepMove::onRead(bool ok, const QHash<QString, qint64> &values, const QStri
         go();
         return;
     }
-    m_session->write(writes, [self = QPointer<StepMove>(this), go](const WriteOutcome &w) {
-        if (!self)
-            return;
-        if (!w.ok) {
-            self->restore(tr("the step's distance and direction could not be written (%1): "
-                             "nothing was moved")
-                              .arg(w.errors.join(QLatin1String("; "))));
-            return;
-        }
-        go();
-    });
+    m_session->parameters()->write(
+        writes, [self = QPointer<StepMove>(this), go](const WriteOutcome &w) {
+            if (!self)
+                return;
+            if (!w.ok) {
+                self->restore(tr("the step's distance and direction could not be written (%1): "
+                                 "nothing was moved")
+                                  .arg(w.errors.join(QLatin1String("; "))));
+                return;
+            }
+            go();
+        });
 }
 
 void StepMove::onCommand(const QString &commandKey, bool ok)
@@ -248,13 +252,13 @@ void StepMove::onOutcome(const MotionOutcome &outcome)
 void StepMove::restore(const QString &why)
 {
     if (m_startedPoll) {
-        m_session->stopStatus();
+        m_session->status()->stop();
         m_startedPoll = false;
     }
     const RegisterMap &map = m_session->map();
     const DeviceSession &s = *m_session;
     QList<ParameterWrite> writes;
-    const auto held = [&s](const QString &k) { return s.parameters()->deviceValue(k); };
+    const auto held = [&s](const QString &k) { return s.parameters()->store()->deviceValue(k); };
     if (held(key("move_distance")) != m_userDistance)
         writes.append({map.find(key("move_distance")), m_userDistance});
     if (held(key("direction")) != m_userDirection)
@@ -269,13 +273,13 @@ void StepMove::restore(const QString &why)
         finish(why);
         return;
     }
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         finish(tr("%1. The single move's own values (%2) could not be put back: not connected. "
                   "Write them again once the controller answers.")
                    .arg(why, userValues));
         return;
     }
-    m_session->write(
+    m_session->parameters()->write(
         writes, [self = QPointer<StepMove>(this), why, userValues](const WriteOutcome &w) {
             if (!self)
                 return;
@@ -287,7 +291,7 @@ void StepMove::restore(const QString &why)
             self->m_result.restored = true;
             // The registers hold what they held before: the flash state is what it was.
             if (!self->m_unsavedBefore)
-                self->m_session->parameters()->setUnsavedToFlash(false);
+                self->m_session->parameters()->store()->setUnsavedToFlash(false);
             self->finish(why);
         });
 }
@@ -295,7 +299,7 @@ void StepMove::restore(const QString &why)
 void StepMove::finish(const QString &text)
 {
     if (m_startedPoll && m_session) {
-        m_session->stopStatus();
+        m_session->status()->stop();
         m_startedPoll = false;
     }
     m_busy = false;

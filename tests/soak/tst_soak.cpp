@@ -19,6 +19,9 @@
 #include "device/poller.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -100,7 +103,7 @@ class TestSoak : public QObject
     // The store must never claim a value the controller does not hold.
     void checkStoreIsTruthful(const Parameter *p, const char *when)
     {
-        const std::optional<qint64> claimed = session->parameters()->deviceValue(p->key);
+        const std::optional<qint64> claimed = session->parameters()->store()->deviceValue(p->key);
         const std::optional<qint64> truth = device()->value(p->key);
         QVERIFY(truth);
         if (claimed && *claimed != *truth)
@@ -114,17 +117,17 @@ class TestSoak : public QObject
     void reconnect()
     {
         QTRY_VERIFY_WITH_TIMEOUT(!sim->rtuPath().isEmpty(), 20000);
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
-        LinkSettings s = session->settings();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
+        LinkSettings s = session->connection()->settings();
         s.portName = linkPath;
-        session->connectTo(s);
+        session->connection()->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(!connected.isEmpty(), 20000);
         if (!connected.last().at(0).toBool())
             return; // the port went away again at once: the loop tries again
         ++reconnects;
         // The read may fail on this line; either way it ends.
-        QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty() || !session->isConnected(), 60000);
+        QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty() || !session->connection()->isConnected(), 60000);
     }
 
     qint64 randomRaw(const Parameter *p)
@@ -152,7 +155,7 @@ class TestSoak : public QObject
             if (!duplicate)
                 writes.append({p, randomRaw(p)});
         }
-        ParameterStore *store = session->parameters();
+        ParameterStore *store = session->parameters()->store();
         store->revertAll();
         for (const ParameterWrite &w : std::as_const(writes))
             QCOMPARE(store->edit(w.parameter->key, w.raw), QString());
@@ -164,16 +167,17 @@ class TestSoak : public QObject
                                                      // hang-up right after may clear it again
         bool reported = false;
         QObject scope;
-        connect(session.get(), &DeviceSession::writeFinished, &scope, [&](const WriteOutcome &o) {
-            done = o;
-            for (const ParameterWrite &w : std::as_const(writes))
-                after.insert(w.parameter->key, store->entry(w.parameter->key));
-        });
+        connect(session->parameters(), &SessionParameters::writeFinished, &scope,
+                [&](const WriteOutcome &o) {
+                    done = o;
+                    for (const ParameterWrite &w : std::as_const(writes))
+                        after.insert(w.parameter->key, store->entry(w.parameter->key));
+                });
         connect(session.get(), &DeviceSession::message, &scope,
                 [&](DeviceSession::Severity severity, const QString &) {
                     reported = reported || severity == DeviceSession::Severity::Error;
                 });
-        session->writeChanges();
+        session->parameters()->writeChanges();
         if (!QTest::qWaitFor([&] { return done.has_value(); }, 60000)) {
             reportHang();
             QFAIL("a parameter write never finished");
@@ -253,7 +257,8 @@ class TestSoak : public QObject
             // presses stop again.
             QVERIFY(!warnings.isEmpty());
             jog->stop(motor, QStringLiteral("soak"));
-            QTRY_VERIFY_WITH_TIMEOUT(!jog->isBusy() || !session->isConnected(), 30000);
+            QTRY_VERIFY_WITH_TIMEOUT(!jog->isBusy() || !session->connection()->isConnected(),
+                                     30000);
         }
         if (jog->state(motor) == State::Idle)
             QTRY_VERIFY_WITH_TIMEOUT(!device()->running(motor), 5000); // reported stopped: is
@@ -263,10 +268,10 @@ class TestSoak : public QObject
     void settle()
     {
         for (int m = 1; m <= jog->motorCount(); ++m) {
-            if (jog->state(m) != State::Idle && session->isConnected())
+            if (jog->state(m) != State::Idle && session->connection()->isConnected())
                 jog->stop(m, QStringLiteral("soak"));
         }
-        QTRY_VERIFY_WITH_TIMEOUT(!jog->isBusy() || !session->isConnected(), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(!jog->isBusy() || !session->connection()->isConnected(), 30000);
     }
 
 private Q_SLOTS:
@@ -302,7 +307,7 @@ private Q_SLOTS:
         QVERIFY2(sim->start(options, &error), qPrintable(error));
 
         session = std::make_unique<DeviceSession>(device()->map());
-        SessionInternals::poller(*session)->setIntervalMs(20);
+        session->status()->setIntervalMs(20);
         jog = std::make_unique<JogController>(session.get());
         jog->setSettleMs(60);
         for (int m = 1; m <= 2; ++m) {
@@ -332,14 +337,14 @@ private Q_SLOTS:
         s.retries = 2;
         s.answerDelayMs = 5; // the simulator's, or its answers would be too soon to be answers
         s.echo = sim->options().echo;
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->connection()->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty(), 30000);
 
         double warmRss = -1;
         int round = 0;
         while (finished < quint64(target)) {
-            if (!session->isConnected()) {
+            if (!session->connection()->isConnected()) {
                 settle();
                 reconnect();
                 if (QTest::currentTestFailed())
@@ -362,11 +367,11 @@ private Q_SLOTS:
         }
 
         // Quiet down: back on the line, nothing running, nothing pending, nothing lost.
-        if (!session->isConnected())
+        if (!session->connection()->isConnected())
             reconnect();
         settle();
-        QTRY_VERIFY_WITH_TIMEOUT(session->isConnected(), 30000);
-        SessionInternals::poller(*session)->stop();
+        QTRY_VERIFY_WITH_TIMEOUT(session->connection()->isConnected(), 30000);
+        session->status()->stop();
         QTRY_VERIFY_WITH_TIMEOUT(!SessionInternals::link(*session)->isBusy() &&
                                      SessionInternals::link(*session)->queuedCount() == 0,
                                  30000);

@@ -1,6 +1,8 @@
 #include "base/emergencystop.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QApplication>
 #include <QKeyEvent>
@@ -13,8 +15,10 @@ EmergencyStop::EmergencyStop(DeviceSession *session, QObject *parent)
     , m_session(session)
 {
     qApp->installEventFilter(this);
-    connect(session, &DeviceSession::linkStateChanged, this, &EmergencyStop::refresh);
-    connect(session->parameters(), &ParameterStore::originChanged, this, &EmergencyStop::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &EmergencyStop::refresh);
+    connect(session->parameters()->store(), &ParameterStore::originChanged, this,
+            &EmergencyStop::refresh);
     m_available = isAvailable();
 }
 
@@ -29,15 +33,15 @@ bool EmergencyStop::isAvailable() const
     // that drives the E-STOP itself (listening beside another master) has a line to send it on.
     if (m_handler)
         return true;
-    const ParameterStore *store = m_session->parameters();
-    return m_session->linkState() != DeviceSession::LinkState::Disconnected ||
+    const ParameterStore *store = m_session->parameters()->store();
+    return m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected ||
            !(store->isReplay() || store->isFile());
 }
 
 QString EmergencyStop::toolTip() const
 {
     const QString key = shortcut().toString(QKeySequence::NativeText);
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     if (isAvailable())
         return tr("Emergency stop: all motors and outputs off (coil 00042). Key: %1").arg(key);
     return store->isReplay()

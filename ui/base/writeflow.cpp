@@ -4,6 +4,8 @@
 #include "device/writereview.h"
 #include "map/parameter.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 namespace stepcom {
 
@@ -15,16 +17,16 @@ WriteFlow::WriteFlow(DeviceSession *session, QWidget *dialogParent)
 
 bool WriteFlow::openFor(const QStringList &keys)
 {
-    if (!m_session->isConnected())
+    if (!m_session->connection()->isConnected())
         return false;
-    return show(new WriteChangesDialog(*m_session->parameters(), keys, m_dialogParent));
+    return show(new WriteChangesDialog(*m_session->parameters()->store(), keys, m_dialogParent));
 }
 
 bool WriteFlow::openAll()
 {
-    if (!m_session->isConnected() || !m_session->parameters()->hasEdits())
+    if (!m_session->connection()->isConnected() || !m_session->parameters()->store()->hasEdits())
         return false;
-    return show(new WriteChangesDialog(*m_session->parameters(), m_dialogParent));
+    return show(new WriteChangesDialog(*m_session->parameters()->store(), m_dialogParent));
 }
 
 bool WriteFlow::show(WriteChangesDialog *dialog)
@@ -34,7 +36,7 @@ bool WriteFlow::show(WriteChangesDialog *dialog)
         return false;
     }
     // What the pages already flag in these values is said before anything goes out.
-    dialog->setProblems(WriteReview::problems(*m_session->parameters(), dialog->writes()));
+    dialog->setProblems(WriteReview::problems(*m_session->parameters()->store(), dialog->writes()));
     if (m_dialog)
         m_dialog->close();
     m_dialog = dialog;
@@ -44,7 +46,7 @@ bool WriteFlow::show(WriteChangesDialog *dialog)
         for (const ParameterWrite &w : dialog->writes())
             what << QStringLiteral("%1 = %2").arg(w.parameter->key).arg(w.raw);
         Q_EMIT confirmed(what.join(QLatin1String(", ")));
-        m_session->write(dialog->writes());
+        m_session->parameters()->write(dialog->writes());
     });
     dialog->open();
     return true;

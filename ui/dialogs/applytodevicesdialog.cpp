@@ -3,6 +3,8 @@
 #include "base/language.h"
 #include "profile/profilerollout.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include <QCloseEvent>
 #include <QDialogButtonBox>
@@ -56,7 +58,7 @@ ApplyToDevicesDialog::ApplyToDevicesDialog(DeviceSession *session, const Profile
            "settings are saved as a backup before anything is written to it; every value "
            "written is read back. Device id and baud rate are never applied to several "
            "devices: one id for all would make them collide."));
-    for (int id : session->deviceIds()) {
+    for (int id : session->line()->deviceIds()) {
         const QString name = names.value(id);
         auto *item = new QListWidgetItem(
             name.isEmpty() ? tr("id %1").arg(id) : tr("id %1 (%2)").arg(id).arg(name), m_devices);
@@ -248,7 +250,7 @@ void ApplyToDevicesDialog::updateButtons()
     m_write->setText(values > 0
                          ? tr("&Write %n value(s) to %1 device(s)", nullptr, values).arg(devices)
                          : tr("&Write"));
-    m_write->setEnabled(!busy && !done && values > 0 && m_session->isConnected());
+    m_write->setEnabled(!busy && !done && values > 0 && m_session->connection()->isConnected());
     m_write->setDefault(false); // writing is never what Enter does
 }
 

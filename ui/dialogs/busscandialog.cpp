@@ -3,6 +3,8 @@
 #include "line/busscanner.h"
 #include "session/devicesession.h"
 #include "session/idlist.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include <QCheckBox>
 #include <QEvent>
@@ -203,7 +205,8 @@ BusScanDialog::BusScanDialog(DeviceSession *session, const LinkSettings &base, Q
             m_table->selectRow(row); // so Connect is one click away
         updateStatus();
     });
-    connect(m_session, &DeviceSession::linkStateChanged, this, &BusScanDialog::onSessionState);
+    connect(m_session->connection(), &SessionConnection::linkStateChanged, this,
+            &BusScanDialog::onSessionState);
 
     setBaseSettings(base);
     retranslate();
@@ -377,8 +380,8 @@ LinkSettings BusScanDialog::settingsFor(int row) const
 
 bool BusScanDialog::sessionUsesPort() const
 {
-    return m_session->linkState() != DeviceSession::LinkState::Disconnected &&
-           samePort(m_session->settings(), m_base);
+    return m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected &&
+           samePort(m_session->connection()->settings(), m_base);
 }
 
 void BusScanDialog::startScan()
@@ -399,7 +402,7 @@ void BusScanDialog::startScan()
     }
     // One port, one master: the session lets go of it for the scan.
     if (sessionUsesPort())
-        m_session->disconnectFrom();
+        m_session->connection()->disconnectFrom();
     m_table->setRowCount(0);
     m_added.clear();
     m_error.clear();
@@ -435,9 +438,10 @@ QList<int> BusScanDialog::addAllFound()
     if (isScanning() || m_table->rowCount() == 0)
         return {};
     // A session that is not connected lists only the id in its fields: no device of this line.
-    QList<int> ids = m_session->isConnected() || m_session->deviceIds().size() > 1
-                         ? m_session->deviceIds()
-                         : QList<int>{};
+    QList<int> ids =
+        m_session->connection()->isConnected() || m_session->line()->deviceIds().size() > 1
+            ? m_session->line()->deviceIds()
+            : QList<int>{};
     QList<int> added;
     QList<int> bauds;
     for (int row = 0; row < m_table->rowCount(); ++row) {
@@ -452,7 +456,7 @@ QList<int> BusScanDialog::addAllFound()
     if (added.isEmpty()) {
         m_added = tr("Every controller found is on the device list already.");
     } else {
-        m_session->setDeviceIds(ids);
+        m_session->line()->setDeviceIds(ids);
         m_added = tr("Added to the device list: id %1.").arg(IdList::format(added));
     }
     // One line runs at one baud: controllers found at several cannot all answer at once.

@@ -2,6 +2,7 @@
 
 #include "line/busscanner.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QDialog>
 #include <QMap>

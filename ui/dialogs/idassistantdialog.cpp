@@ -1,6 +1,7 @@
 #include "dialogs/idassistantdialog.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -108,7 +109,8 @@ IdAssistantDialog::IdAssistantDialog(DeviceSession *session, QWidget *parent)
     });
     connect(m_assigner, &IdAssigner::progress, m_step, &QLabel::setText);
     connect(m_assigner, &IdAssigner::deviceAdded, this, &IdAssistantDialog::onDeviceAdded);
-    connect(m_session, &DeviceSession::linkStateChanged, this, &IdAssistantDialog::updateControls);
+    connect(m_session->connection(), &SessionConnection::linkStateChanged, this,
+            &IdAssistantDialog::updateControls);
     retranslate();
 }
 
@@ -232,10 +234,10 @@ void IdAssistantDialog::updateControls()
 {
     using State = IdAssigner::State;
     const State state = m_assigner->state();
-    const bool connected = m_session->isConnected();
+    const bool connected = m_session->connection()->isConnected();
     const bool idle = state == State::Idle || state == State::Finished;
     const bool serial =
-        m_session->settings().transport == LinkSettings::Transport::Rtu || !connected;
+        m_session->connection()->settings().transport == LinkSettings::Transport::Rtu || !connected;
     m_firstId->setEnabled(idle);
     m_baud->setEnabled(idle && serial);
     m_newLine->setEnabled(idle);
@@ -248,7 +250,7 @@ void IdAssistantDialog::updateControls()
     QString text = m_assigner->text();
     if (text.isEmpty())
         text = connected ? tr("Press Start. The line's port is open at %1.")
-                               .arg(m_session->settings().describe())
+                               .arg(m_session->connection()->settings().describe())
                          : tr("Connect to the line first (the port the controllers are on, "
                               "%1 baud, device id %2), then press Start.")
                                .arg(IdAssigner::kFactoryBaud)

@@ -3,6 +3,8 @@
 #include "base/language.h"
 #include "profile/profileapply.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QCheckBox>
 #include <QEvent>
@@ -126,7 +128,7 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
         m_saveToFlash->setEnabled(!ok);
     });
     // A read-all changes every value at once: compare once, after the burst.
-    connect(session->parameters(), &ParameterStore::valueChanged, this, [this] {
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this, [this] {
         if (m_refreshPending)
             return;
         m_refreshPending = true;
@@ -135,7 +137,8 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
             refreshValues();
         });
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &ProfileCompareDialog::updateButtons);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &ProfileCompareDialog::updateButtons);
 
     refreshValues();
     retranslate();
@@ -147,8 +150,8 @@ ProfileCompareDialog::ProfileCompareDialog(DeviceSession *session, const Profile
     resize(size);
     // Compare with what the controller holds now, not with what was read some time ago.
     // Reading never writes.
-    if (session->isConnected())
-        session->readAll();
+    if (session->connection()->isConnected())
+        session->parameters()->readAll();
 }
 
 QString ProfileCompareDialog::forgetWarning()
@@ -177,14 +180,14 @@ void ProfileCompareDialog::refreshValues()
 {
     QHash<QString, qint64> device;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), true)) {
-        if (const auto v = m_session->parameters()->deviceValue(p->key))
+        if (const auto v = m_session->parameters()->store()->deviceValue(p->key))
             device.insert(p->key, *v);
     }
     m_rows = ProfileDiff::compare(m_session->map(), m_profile, device);
     // A key this controller does not have is neither a difference nor writable: left out,
     // and named below the table.
     m_leftOut.clear();
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     m_rows.removeIf([this, store](const ProfileDifference &r) {
         if (store->state(r.parameter->key) != ParameterStore::State::Unsupported)
             return false;
@@ -292,7 +295,7 @@ void ProfileCompareDialog::updateFilter()
 
 void ProfileCompareDialog::updateButtons()
 {
-    const bool connected = m_session->isConnected();
+    const bool connected = m_session->connection()->isConnected();
     m_apply->setEnabled(connected && !m_busy && !checkedKeys().isEmpty());
     m_apply->setToolTip(connected ? QString() : tr("Connect to a controller to apply"));
     m_checkDiffering->setEnabled(!m_busy);
@@ -348,7 +351,7 @@ QStringList ProfileCompareDialog::checkedKeys() const
 
 void ProfileCompareDialog::apply()
 {
-    if (m_busy || !m_session->isConnected())
+    if (m_busy || !m_session->connection()->isConnected())
         return;
     const QStringList keys = checkedKeys();
     if (keys.isEmpty())

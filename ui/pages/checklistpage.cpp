@@ -4,6 +4,7 @@
 #include "profile/profile.h"
 #include "profile/settingsfingerprint.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/checklist/checklistcalibrationstep.h"
 #include "widgets/checklist/checklistdirectionstep.h"
 #include "widgets/checklist/checklistflashstep.h"
@@ -174,7 +175,7 @@ void ChecklistPage::onRecorded(const QString &id, StepResult result,
     // The settings this result was had with: the report warns when the machine's differ now.
     QHash<QString, qint64> values;
     for (const Parameter *p : Profile::profileParameters(session()->map(), false)) {
-        if (const auto v = session()->parameters()->deviceValue(p->key))
+        if (const auto v = session()->parameters()->store()->deviceValue(p->key))
             values.insert(p->key, *v);
     }
     if (values.size() == Profile::profileParameters(session()->map(), false).size())

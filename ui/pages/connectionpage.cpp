@@ -3,6 +3,8 @@
 #include "dialogs/busscandialog.h"
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 #include "session/serialports.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/lineoptionsbox.h"
@@ -92,21 +94,28 @@ ConnectionPage::ConnectionPage(DeviceSession *session, QWidget *parent)
     connect(m_disconnect, &QPushButton::clicked, this, &ConnectionPage::disconnectNow);
     connect(m_scan, &QPushButton::clicked, this, [this] { openBusScan(); });
 
-    connect(session, &DeviceSession::linkStateChanged, this, &ConnectionPage::updateState);
-    connect(session, &DeviceSession::linkStatsChanged, this, &ConnectionPage::updateLine);
-    connect(session->health(), &LinkHealth::stateChanged, this, &ConnectionPage::updateState);
-    connect(session, &DeviceSession::connected, this, &ConnectionPage::onConnected);
-    connect(session, &DeviceSession::echoSuspected, m_lineBox, &LineOptionsBox::offerEcho);
-    connect(session, &DeviceSession::disconnected, this,
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &ConnectionPage::updateState);
+    connect(session->connection(), &SessionConnection::linkStatsChanged, this,
+            &ConnectionPage::updateLine);
+    connect(session->connection()->health(), &LinkHealth::stateChanged, this,
+            &ConnectionPage::updateState);
+    connect(session->connection(), &SessionConnection::connected, this,
+            &ConnectionPage::onConnected);
+    connect(session->connection(), &SessionConnection::echoSuspected, m_lineBox,
+            &LineOptionsBox::offerEcho);
+    connect(session->connection(), &SessionConnection::disconnected, this,
             [this] { setNote(false, [] { return tr("Disconnected."); }); });
     // Connected after the session's own handler of `lost`, so this note wins over the plain one.
-    connect(session, &DeviceSession::linkLost, this, [this](const QString &reason) {
-        setNote(true, [reason] { return tr("Connection lost: %1").arg(reason); });
-    });
+    connect(session->connection(), &SessionConnection::linkLost, this,
+            [this](const QString &reason) {
+                setNote(true, [reason] { return tr("Connection lost: %1").arg(reason); });
+            });
     // What a controller refuses to read is kept with the connection settings, so the next
     // connect reads it right away instead of learning it from refusals again.
-    connect(session, &DeviceSession::readLimitsLearned, this, &ConnectionPage::saveReadLimits);
-    connect(session, &DeviceSession::linkChanged, this, [this](const LinkSettings &s) {
+    connect(session->connection(), &SessionConnection::readLimitsLearned, this,
+            &ConnectionPage::saveReadLimits);
+    connect(session->line(), &SessionLine::linkChanged, this, [this](const LinkSettings &s) {
         // The Device page moved the controller to a new id or baud: follow and remember it.
         if (!usesSimulator()) {
             applySettings(s);
@@ -385,7 +394,7 @@ void ConnectionPage::onPortsChanged(const QList<SerialPortEntry> &ports,
 {
     fillPorts(ports);
     // The adapter just plugged in is the one the technician means to use.
-    if (!added.isEmpty() && !session()->isConnected()) {
+    if (!added.isEmpty() && !session()->connection()->isConnected()) {
         const SerialPortEntry port = added.last();
         setPortInCombo(port.path());
         setNote(false, [port] { return tr("Serial port plugged in: %1").arg(port.text()); });
@@ -409,7 +418,7 @@ void ConnectionPage::connectNow()
     saveSettings();
     if (transport() == Transport::Simulator) {
         setNote(false, {});
-        session()->connectSimulator();
+        session()->connection()->connectSimulator();
         return;
     }
     const LinkSettings s = currentSettings();
@@ -418,19 +427,19 @@ void ConnectionPage::connectNow()
         return;
     }
     setNote(false, {});
-    session()->connectTo(s);
+    session()->connection()->connectTo(s);
 }
 
 void ConnectionPage::disconnectNow()
 {
-    session()->disconnectFrom();
+    session()->connection()->disconnectFrom();
 }
 
 void ConnectionPage::onConnected(bool ok, const QString &reason)
 {
     if (!ok) {
         const bool sim = transport() == Transport::Simulator || usesSimulator();
-        const QString where = sim ? QString() : session()->settings().describe();
+        const QString where = sim ? QString() : session()->connection()->settings().describe();
         setNote(true, [reason, where] {
             return tr("Could not connect to %1: %2")
                 .arg(where.isEmpty() ? tr("the built-in simulator") : where, reason);
@@ -442,13 +451,13 @@ void ConnectionPage::onConnected(bool ok, const QString &reason)
     if (usesSimulator())
         setTransport(Transport::Simulator);
     else
-        applySettings(session()->settings());
+        applySettings(session()->connection()->settings());
     saveSettings();
 }
 
 bool ConnectionPage::usesSimulator() const
 {
-    return session()->isSimulator();
+    return session()->connection()->isSimulator();
 }
 
 void ConnectionPage::setNote(bool problem, std::function<QString()> note)
@@ -460,11 +469,11 @@ void ConnectionPage::setNote(bool problem, std::function<QString()> note)
 
 QString ConnectionPage::statusText() const
 {
-    const DeviceSession::LinkState state = session()->linkState();
-    const QString where = session()->settings().describe();
-    if (state == DeviceSession::LinkState::Connected) {
+    const SessionConnection::LinkState state = session()->connection()->linkState();
+    const QString where = session()->connection()->settings().describe();
+    if (state == SessionConnection::LinkState::Connected) {
         // "Connected" only once the controller answered: an open port proves nothing.
-        switch (session()->health()->state()) {
+        switch (session()->connection()->health()->state()) {
         case LinkHealth::State::Answering:
             break;
         case LinkHealth::State::NotAnswering:
@@ -476,7 +485,7 @@ QString ConnectionPage::statusText() const
         return usesSimulator() ? tr("Connected to the built-in simulator (%1).").arg(where)
                                : tr("Connected to %1.").arg(where);
     }
-    if (state == DeviceSession::LinkState::Connecting)
+    if (state == SessionConnection::LinkState::Connecting)
         return tr("Connecting to %1…").arg(where);
     if (m_note)
         return m_note(); // built now, so a language switch retranslates it
@@ -487,8 +496,8 @@ void ConnectionPage::updateState()
 {
     if (!m_status)
         return;
-    const DeviceSession::LinkState state = session()->linkState();
-    const bool idle = state == DeviceSession::LinkState::Disconnected;
+    const SessionConnection::LinkState state = session()->connection()->linkState();
+    const bool idle = state == SessionConnection::LinkState::Disconnected;
     // Settings are what the link was opened with: changing them needs a reconnect.
     for (QGroupBox *box : {m_transportBox, m_serialBox, m_tcpBox, m_deviceBox})
         box->setEnabled(idle);
@@ -500,7 +509,7 @@ void ConnectionPage::updateState()
     m_connect->setEnabled(idle);
     m_disconnect->setEnabled(!idle);
     m_scan->setEnabled(transport() != Transport::Simulator);
-    const LinkHealth::State health = session()->health()->state();
+    const LinkHealth::State health = session()->connection()->health()->state();
     m_led->setState(health == LinkHealth::State::Answering ? Led::State::On
                     : idle                                 ? Led::State::Off
                                                            : Led::State::Unknown);
@@ -516,11 +525,11 @@ void ConnectionPage::updateState()
 
 void ConnectionPage::updateLine()
 {
-    const LinkStats &s = session()->linkStats();
-    const bool shown = session()->isConnected() && s.answers > 0;
+    const LinkStats &s = session()->connection()->linkStats();
+    const bool shown = session()->connection()->isConnected() && s.answers > 0;
     m_line->setVisible(shown);
     if (shown)
-        m_line->setText(tr("Line: %1").arg(s.lineText(session()->deviceInView())));
+        m_line->setText(tr("Line: %1").arg(s.lineText(session()->line()->deviceInView())));
 }
 
 BusScanDialog *ConnectionPage::scanDialog() const

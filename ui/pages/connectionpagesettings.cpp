@@ -4,6 +4,7 @@
 #include "line/linksettingsstore.h"
 #include "pages/connectionpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "widgets/fields/lineoptionsbox.h"
 
 #include <QComboBox>
@@ -66,7 +67,7 @@ void ConnectionPage::loadSettings()
     const QVariantMap saved = settings.value(QStringLiteral("readLimits")).toMap();
     for (auto it = saved.cbegin(); it != saved.cend(); ++it)
         known.insert(it.key(), it.value().toString());
-    session()->setKnownReadLimits(known);
+    session()->connection()->setKnownReadLimits(known);
 }
 
 void ConnectionPage::saveSettings() const
@@ -81,7 +82,7 @@ void ConnectionPage::saveSettings() const
 void ConnectionPage::saveReadLimits() const
 {
     QVariantMap known;
-    const QMap<QString, QString> limits = session()->knownReadLimits();
+    const QMap<QString, QString> limits = session()->connection()->knownReadLimits();
     for (auto it = limits.cbegin(); it != limits.cend(); ++it)
         known.insert(it.key(), it.value());
     QSettings settings;

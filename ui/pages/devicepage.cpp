@@ -2,6 +2,9 @@
 
 #include "base/language.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -129,29 +132,32 @@ DevicePage::DevicePage(DeviceSession *session, QWidget *parent)
     connect(m_reset, &QPushButton::clicked, this, &DevicePage::requestFactoryReset);
     connect(m_reconnect, &QPushButton::clicked, this, [this] {
         setLinkEvent(LinkEvent::Reconnecting);
-        this->session()->connectTo(m_previous);
+        this->session()->connection()->connectTo(m_previous);
     });
     connect(m_save, &QPushButton::clicked, this, [this] {
         setFlashEvent(FlashEvent::Saving);
         this->session()->saveToFlash();
     });
 
-    ParameterStore *store = session->parameters();
+    ParameterStore *store = session->parameters()->store();
     connect(store, &ParameterStore::valueChanged, this, [this](const QString &key) {
         if (key == kId || key == kBaud)
             showDeviceValues();
     });
     connect(store, &ParameterStore::unsavedChanged, this, &DevicePage::updateUnsaved);
-    connect(session, &DeviceSession::linkStateChanged, this, &DevicePage::updateEnabled);
-    connect(session, &DeviceSession::disconnected, this, &DevicePage::updateEnabled);
-    connect(session, &DeviceSession::connected, this, [this](bool ok, const QString &reason) {
-        if (m_linkEvent == LinkEvent::Reconnecting) {
-            m_reason = reason;
-            setLinkEvent(ok ? LinkEvent::Reconnected : LinkEvent::ReconnectFailed);
-        }
-        updateEnabled();
-    });
-    connect(session, &DeviceSession::linkChanged, this, [this](const LinkSettings &now) {
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &DevicePage::updateEnabled);
+    connect(session->connection(), &SessionConnection::disconnected, this,
+            &DevicePage::updateEnabled);
+    connect(session->connection(), &SessionConnection::connected, this,
+            [this](bool ok, const QString &reason) {
+                if (m_linkEvent == LinkEvent::Reconnecting) {
+                    m_reason = reason;
+                    setLinkEvent(ok ? LinkEvent::Reconnected : LinkEvent::ReconnectFailed);
+                }
+                updateEnabled();
+            });
+    connect(session->line(), &SessionLine::linkChanged, this, [this](const LinkSettings &now) {
         m_targetId = now.deviceId;
         m_targetBaud = now.baud;
         m_idTouched = m_baudTouched = false;
@@ -161,7 +167,7 @@ DevicePage::DevicePage(DeviceSession *session, QWidget *parent)
         if (std::exchange(m_saveAfterLinkChange, false))
             this->session()->saveToFlash();
     });
-    connect(session, &DeviceSession::linkChangeFailed, this,
+    connect(session->line(), &SessionLine::linkChangeFailed, this,
             [this](const LinkSettings &previous, const QString &reason) {
                 m_saveAfterLinkChange = false;
                 m_previous = previous;
@@ -203,15 +209,15 @@ int DevicePage::chosenBaud() const
 
 QString DevicePage::describe(int id, int baud) const
 {
-    if (session()->settings().isNetwork() || baud <= 0)
+    if (session()->connection()->settings().isNetwork() || baud <= 0)
         return tr("ID %1").arg(id);
     return tr("ID %1 at %2 baud").arg(id).arg(baud);
 }
 
 void DevicePage::showDeviceValues()
 {
-    const auto id = session()->parameters()->deviceValue(kId);
-    const auto baud = session()->parameters()->deviceValue(kBaud);
+    const auto id = session()->parameters()->store()->deviceValue(kId);
+    const auto baud = session()->parameters()->store()->deviceValue(kBaud);
     m_idHeld->setText(id ? tr("The controller holds %1").arg(*id) : tr("Not read yet"));
     m_baudHeld->setText(baud ? tr("The controller holds %1").arg(*baud) : tr("Not read yet"));
     // Follow the device until the user types something of their own.
@@ -228,10 +234,10 @@ void DevicePage::showDeviceValues()
 
 void DevicePage::updateEnabled()
 {
-    const bool connected = session()->isConnected();
-    const bool tcp = session()->settings().isNetwork();
-    const auto id = session()->parameters()->deviceValue(kId);
-    const auto baud = session()->parameters()->deviceValue(kBaud);
+    const bool connected = session()->connection()->isConnected();
+    const bool tcp = session()->connection()->settings().isNetwork();
+    const auto id = session()->parameters()->store()->deviceValue(kId);
+    const auto baud = session()->parameters()->store()->deviceValue(kBaud);
     const bool changed = id && baud && (m_id->value() != *id || (!tcp && chosenBaud() != *baud));
     m_baud->setEnabled(!tcp);
     m_apply->setEnabled(connected && changed && !m_confirmation);
@@ -241,7 +247,7 @@ void DevicePage::updateEnabled()
 
 void DevicePage::updateUnsaved()
 {
-    m_unsavedRow->setHidden(!session()->parameters()->unsavedToFlash());
+    m_unsavedRow->setHidden(!session()->parameters()->store()->unsavedToFlash());
     renderStatus(); // the "saved" line reads the same state
 }
 
@@ -297,7 +303,7 @@ std::pair<DevicePage::Tone, QString> DevicePage::flashText() const
         return {Tone::Busy, tr("Saving to flash…")};
     case FlashEvent::Saved:
         // One flash state: a write since the save makes it "not saved", whatever happened here.
-        if (session()->parameters()->unsavedToFlash())
+        if (session()->parameters()->store()->unsavedToFlash())
             return {Tone::Busy, QString()};
         return {Tone::Ok,
                 tr("Saved to flash: the controller keeps its settings after a power cycle.")};
@@ -356,11 +362,11 @@ QMessageBox *DevicePage::makeConfirmation(const QString &title, const QString &t
 
 void DevicePage::requestLinkChange()
 {
-    if (m_confirmation || !session()->isConnected())
+    if (m_confirmation || !session()->connection()->isConnected())
         return;
     const int id = m_id->value();
     const int baud = chosenBaud();
-    const LinkSettings now = session()->settings();
+    const LinkSettings now = session()->connection()->settings();
     QMessageBox *box =
         makeConfirmation(tr("Change device ID and baud rate"),
                          tr("Change the controller from %1 to %2?")
@@ -382,20 +388,20 @@ void DevicePage::requestLinkChange()
         m_saveAfterLinkChange = save->isChecked();
         m_targetId = id;
         m_targetBaud = baud;
-        m_previous = session()->settings();
+        m_previous = session()->connection()->settings();
         setLinkEvent(LinkEvent::Changing);
-        session()->changeLink(id, baud);
+        session()->line()->changeLink(id, baud);
     });
     box->open();
 }
 
 void DevicePage::requestFactoryReset()
 {
-    if (m_confirmation || !session()->isConnected())
+    if (m_confirmation || !session()->connection()->isConnected())
         return;
     const int motors = session()->map().blockCount(QStringLiteral("motor"));
-    const auto id = session()->parameters()->deviceValue(kId);
-    const auto baud = session()->parameters()->deviceValue(kBaud);
+    const auto id = session()->parameters()->store()->deviceValue(kId);
+    const auto baud = session()->parameters()->store()->deviceValue(kBaud);
     const QString motorList = motors > 1 ? tr("motors 1 to %1").arg(motors) : tr("the motor");
     // Exactly what the factory reset replaces (docs/simulator.md, "Factory values").
     const QStringList lost = {

@@ -2,6 +2,7 @@
 
 #include "base/page.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QLabel>
 #include <QPointer>

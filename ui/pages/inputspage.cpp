@@ -3,6 +3,7 @@
 #include "base/language.h"
 #include "i18n/translators.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/wiringwarnings.h"
@@ -45,7 +46,7 @@ Led::State lampState(std::optional<qint64> value)
 InputsPage::InputsPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
 {
-    ParameterStore *store = session->parameters();
+    ParameterStore *store = session->parameters()->store();
     const RegisterMap &map = session->map();
     m_motors = map.blockCount(kMotor);
 
@@ -167,7 +168,7 @@ ParameterField *InputsPage::field(int motor, const QString &localKey) const
 QList<MotorWiring> InputsPage::wiring() const
 {
     QList<MotorWiring> out;
-    const ParameterStore *store = session()->parameters();
+    const ParameterStore *store = session()->parameters()->store();
     for (int n = 1; n <= m_motors; ++n) {
         MotorWiring w;
         w.motor = n;
@@ -185,7 +186,7 @@ QList<MotorWiring> InputsPage::wiring() const
 
 QList<WiringWarning> InputsPage::warnings() const
 {
-    const auto mode = session()->parameters()->shownValue(kMode);
+    const auto mode = session()->parameters()->store()->shownValue(kMode);
     return checkWiring(wiring(), mode ? std::optional<int>(int(*mode)) : std::nullopt);
 }
 
@@ -198,7 +199,7 @@ void InputsPage::updateWiring()
     m_warnings->setWarnings(known ? warnings() : QList<WiringWarning>(), known);
 
     const Parameter *mode = session()->map().find(kMode);
-    const auto value = session()->parameters()->shownValue(kMode);
+    const auto value = session()->parameters()->store()->shownValue(kMode);
     const QString lang = Language::instance().current();
     if (!mode || !value) {
         m_modeLine->setText(tr("System mode: not known yet."));
@@ -237,7 +238,7 @@ void InputsPage::updateWiring()
 
 void InputsPage::updateLamps()
 {
-    const ParameterStore *store = session()->parameters();
+    const ParameterStore *store = session()->parameters()->store();
     const auto show = [](Led *led, QLabel *name, std::optional<qint64> value) {
         led->setState(lampState(value));
         const QString state = !value ? tr("unknown") : (*value ? tr("on") : tr("off"));
@@ -265,7 +266,7 @@ void InputsPage::retranslate()
         tr("Homing runs in reverse until the home input is on, so the home input is "
            "usually the negative limit's input. Inputs are on with a 24 V negative "
            "(NPN) signal."));
-    const ParameterStore *store = session()->parameters();
+    const ParameterStore *store = session()->parameters()->store();
     const QString lang = Language::instance().current();
     for (int i = 0; i < m_inputNames.size(); ++i) {
         const Parameter *p = store->map().find(inputKey(i + 1));

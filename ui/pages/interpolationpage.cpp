@@ -1,6 +1,8 @@
 #include "pages/interpolationpage.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/fields/aboutbox.h"
 #include "widgets/fields/verticalscrollarea.h"
 #include "widgets/motion/patheditor.h"
@@ -60,11 +62,13 @@ InterpolationPage::InterpolationPage(DeviceSession *session, QWidget *parent)
         connect(e, &PathEditor::started, m_preview, &InterpolationPreview::restartTrace);
     }
     connect(m_tabs, &QTabWidget::currentChanged, this, &InterpolationPage::schedulePreview);
-    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
-        if (k.endsWith(QLatin1String(".position")) && !m_positionTimer.isActive())
-            m_positionTimer.start(); // x and y of one poll make one point of the trace
-    });
-    connect(session, &DeviceSession::disconnected, m_preview, &InterpolationPreview::clearPosition);
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this,
+            [this](const QString &k) {
+                if (k.endsWith(QLatin1String(".position")) && !m_positionTimer.isActive())
+                    m_positionTimer.start(); // x and y of one poll make one point of the trace
+            });
+    connect(session->connection(), &SessionConnection::disconnected, m_preview,
+            &InterpolationPreview::clearPosition);
     retranslate();
     updatePreview();
 }

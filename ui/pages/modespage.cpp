@@ -4,6 +4,8 @@
 #include "base/writechangesdialog.h"
 #include "device/writereview.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/fields/aboutbox.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
@@ -149,7 +151,7 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
 
     m_tripsBox = new QGroupBox(content);
     auto *tripsLayout = new QVBoxLayout(m_tripsBox);
-    m_form = new ParameterForm(session->parameters(), m_tripsBox);
+    m_form = new ParameterForm(session->parameters()->store(), m_tripsBox);
     m_form->addParameter(kTripsKey);
     tripsLayout->addWidget(m_form);
     m_tripsNote = new QLabel(m_tripsBox);
@@ -165,13 +167,15 @@ ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
             [this](int index) { confirmMode(m_mode->itemData(index).toInt()); });
     connect(m_mode, &QComboBox::currentIndexChanged, this, &ModesPage::describe);
     connect(m_write, &QPushButton::clicked, this, &ModesPage::openWriteDialog);
-    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
-        if (k == kModeKey || k == kTripsKey)
-            refresh();
-    });
-    connect(session->parameters(), &ParameterStore::editsChanged, this, &ModesPage::refresh);
-    connect(session, &DeviceSession::linkStateChanged, this, &ModesPage::refresh);
-    connect(session, &DeviceSession::disconnected, this, &ModesPage::refresh);
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this,
+            [this](const QString &k) {
+                if (k == kModeKey || k == kTripsKey)
+                    refresh();
+            });
+    connect(session->parameters()->store(), &ParameterStore::editsChanged, this,
+            &ModesPage::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, &ModesPage::refresh);
+    connect(session->connection(), &SessionConnection::disconnected, this, &ModesPage::refresh);
     retranslate();
 }
 
@@ -205,9 +209,9 @@ void ModesPage::fitTable()
 std::optional<qint64> ModesPage::deviceMode() const
 {
     // Editing a profile file: the mode the file will hold.
-    if (session()->parameters()->isFile())
-        return session()->parameters()->shownValue(kModeKey);
-    return session()->parameters()->deviceValue(kModeKey);
+    if (session()->parameters()->store()->isFile())
+        return session()->parameters()->store()->shownValue(kModeKey);
+    return session()->parameters()->store()->deviceValue(kModeKey);
 }
 
 int ModesPage::shownMode() const
@@ -227,12 +231,14 @@ void ModesPage::chooseMode(int mode)
 void ModesPage::confirmMode(int mode)
 {
     const Parameter *p = session()->map().find(kModeKey);
-    if (p && session()->parameters()->isFile()) { // a file's value: an edit, nothing is sent
-        session()->parameters()->edit(kModeKey, mode);
+    if (p &&
+        session()->parameters()->store()->isFile()) { // a file's value: an edit, nothing is sent
+        session()->parameters()->store()->edit(kModeKey, mode);
         refresh();
         return;
     }
-    if (!p || mode < 0 || mode >= kModeCount || !session()->isConnected() || deviceMode() == mode) {
+    if (!p || mode < 0 || mode >= kModeCount || !session()->connection()->isConnected() ||
+        deviceMode() == mode) {
         refresh();
         return;
     }
@@ -244,7 +250,8 @@ void ModesPage::confirmMode(int mode)
         inputs += tr("IN%1: %2").arg(i + 1).arg(tr(kModes[mode].inputs[i])) + QLatin1Char('\n');
     QString details = tr(kModes[mode].explanation) + QStringLiteral("\n\n") + inputs;
     // What stepcomctl prints before the same write: one review (core/device/writereview).
-    const QStringList review = WriteReview::problems(*session()->parameters(), {{p, mode}});
+    const QStringList review =
+        WriteReview::problems(*session()->parameters()->store(), {{p, mode}});
     if (!review.isEmpty())
         details += QLatin1Char('\n') + review.join(QLatin1Char('\n'));
     auto *box = new QMessageBox(
@@ -263,8 +270,8 @@ void ModesPage::confirmMode(int mode)
     m_confirmation = box;
     connect(box, &QMessageBox::finished, this, [this, p, mode](int result) {
         m_confirmation.clear();
-        if (result == QMessageBox::Yes && session()->isConnected())
-            session()->write({ParameterWrite{p, mode}});
+        if (result == QMessageBox::Yes && session()->connection()->isConnected())
+            session()->parameters()->write({ParameterWrite{p, mode}});
         refresh();
     });
     box->open();
@@ -279,7 +286,7 @@ void ModesPage::openWriteDialog()
 void ModesPage::refresh()
 {
     const std::optional<qint64> device = deviceMode();
-    const bool connected = session()->isConnected();
+    const bool connected = session()->connection()->isConnected();
     // While nothing is being asked the list shows what the controller holds.
     if (!m_confirmation) {
         const int index = device ? m_mode->findData(int(*device)) : -1;
@@ -288,10 +295,10 @@ void ModesPage::refresh()
             m_mode->setCurrentIndex(index);
         }
     }
-    m_mode->setEnabled((connected || session()->parameters()->isFile()) && device.has_value() &&
-                       !m_confirmation);
+    m_mode->setEnabled((connected || session()->parameters()->store()->isFile()) &&
+                       device.has_value() && !m_confirmation);
     describe();
-    bool edited = session()->parameters()->entry(kTripsKey).edited.has_value();
+    bool edited = session()->parameters()->store()->entry(kTripsKey).edited.has_value();
     m_write->setEnabled(connected && edited);
 }
 
@@ -299,7 +306,7 @@ void ModesPage::describe()
 {
     const std::optional<qint64> device = deviceMode();
     const int shown = shownMode();
-    if (session()->parameters()->isFile())
+    if (session()->parameters()->store()->isFile())
         m_current->setText(!device       ? tr("The profile file does not set the mode.")
                            : device == 0 ? tr("The profile sets the normal mode.")
                                          : tr("The profile sets special mode %1.").arg(*device));

@@ -6,6 +6,8 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/fields/aboutbox.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/parameterfield.h"
@@ -156,13 +158,16 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
         for (JogPanel *p : std::as_const(m_panels))
             p->letGo();
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &MotionPage::refresh);
-    connect(session->parameters(), &ParameterStore::editsChanged, this, &MotionPage::refresh);
-    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
-        if (k.startsWith(QLatin1String("homing.")) || k.startsWith(QLatin1String("io.out")) ||
-            k.endsWith(QLatin1String(".running")))
-            refresh();
-    });
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &MotionPage::refresh);
+    connect(session->parameters()->store(), &ParameterStore::editsChanged, this,
+            &MotionPage::refresh);
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this,
+            [this](const QString &k) {
+                if (k.startsWith(QLatin1String("homing.")) ||
+                    k.startsWith(QLatin1String("io.out")) || k.endsWith(QLatin1String(".running")))
+                    refresh();
+            });
     connect(session, &DeviceSession::commandFinished, this, [this](const QString &k, bool ok) {
         if (ok && k == QLatin1String("zero_coordinates"))
             m_shown = Shown::Zeroed;
@@ -184,7 +189,7 @@ void MotionPage::buildHoming(QWidget *content)
 {
     m_homingBox = new QGroupBox(content);
     auto *layout = new QVBoxLayout(m_homingBox);
-    m_order = new HomingOrderEditor(session()->parameters(), m_homingBox);
+    m_order = new HomingOrderEditor(session()->parameters()->store(), m_homingBox);
     layout->addWidget(m_order);
     auto *applyRow = new QHBoxLayout;
     m_applyOrder = new QPushButton(m_homingBox);
@@ -210,8 +215,8 @@ void MotionPage::buildHoming(QWidget *content)
 
     connect(m_order, &HomingOrderEditor::rejected, this, &MotionPage::showBanner);
     connect(m_applyOrder, &QPushButton::clicked, this, [this] {
-        if (session()->isConnected())
-            session()->write(m_order->pendingWrites());
+        if (session()->connection()->isConnected())
+            session()->parameters()->write(m_order->pendingWrites());
     });
     connect(m_homeAll, &QPushButton::clicked, this,
             [this] { sessionCommand(QStringLiteral("home_all")); });
@@ -296,7 +301,7 @@ void MotionPage::showBannerOf(std::function<QString()> text)
 
 void MotionPage::sessionCommand(const QString &key)
 {
-    if (!session()->isConnected())
+    if (!session()->connection()->isConnected())
         return;
     if (key == QLatin1String("home_all") || key == QLatin1String("return_to_zero"))
         m_shown = Shown::Nothing;
@@ -337,7 +342,7 @@ QString MotionPage::homingStatus() const
 
 void MotionPage::refresh()
 {
-    const bool connected = session()->isConnected();
+    const bool connected = session()->connection()->isConnected();
     const bool sequence = session()->motion()->active(MotionKind::HomeInOrder).has_value() ||
                           session()->motion()->active(MotionKind::ReturnToZero).has_value();
     const bool jogging = m_jog->isBusy();
@@ -366,7 +371,7 @@ void MotionPage::refresh()
     for (QPushButton *b : std::as_const(m_outputButtons))
         b->setEnabled(connected);
     for (int i = 0; i < m_outputLeds.size(); ++i) {
-        const auto v = session()->parameters()->deviceValue(outputKey(i + 1));
+        const auto v = session()->parameters()->store()->deviceValue(outputKey(i + 1));
         m_outputLeds.at(i)->setState(!v   ? Led::State::Unknown
                                      : *v ? Led::State::On
                                           : Led::State::Off);

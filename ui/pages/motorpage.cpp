@@ -2,6 +2,8 @@
 
 #include "base/language.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/fields/derivedvalues.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
@@ -30,7 +32,7 @@ MotorPage::MotorPage(DeviceSession *session, int motor, QWidget *parent)
     : Page(session, parent)
     , m_motor(motor)
 {
-    ParameterStore *store = session->parameters();
+    ParameterStore *store = session->parameters()->store();
     QWidget *content = scrollableContent();
     auto *columns = new QHBoxLayout(content);
 
@@ -85,9 +87,11 @@ MotorPage::MotorPage(DeviceSession *session, int motor, QWidget *parent)
         if (m_keys.contains(k))
             updateDerived();
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &MotorPage::updateEnabled);
-    connect(session, &DeviceSession::connected, this, &MotorPage::updateEnabled);
-    connect(session, &DeviceSession::disconnected, this, &MotorPage::updateEnabled);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &MotorPage::updateEnabled);
+    connect(session->connection(), &SessionConnection::connected, this, &MotorPage::updateEnabled);
+    connect(session->connection(), &SessionConnection::disconnected, this,
+            &MotorPage::updateEnabled);
     updateEnabled();
     retranslate();
 }
@@ -113,7 +117,7 @@ std::optional<double> MotorPage::shown(const QString &localKey) const
     const Parameter *p = session()->map().blockParameter(kMotor, m_motor, localKey);
     if (!p)
         return std::nullopt;
-    const std::optional<qint64> raw = session()->parameters()->shownValue(p->key);
+    const std::optional<qint64> raw = session()->parameters()->store()->shownValue(p->key);
     if (!raw)
         return std::nullopt;
     return p->toEngineering(*raw);
@@ -139,7 +143,7 @@ void MotorPage::updateDerived()
     m_derived->setValues(derived(), pitch ? pitch->unit : QString());
     bool edited = false;
     for (const QString &k : std::as_const(m_keys))
-        edited = edited || session()->parameters()->entry(k).edited.has_value();
+        edited = edited || session()->parameters()->store()->entry(k).edited.has_value();
     m_derivedNote->setText(
         edited ? tr("Computed from the values shown, including edits not written yet.")
                : tr("Computed from the values shown."));
@@ -148,7 +152,8 @@ void MotorPage::updateDerived()
 void MotorPage::updateEnabled()
 {
     // Stopping must never depend on anything but the link: no state, no edits, no busy flag.
-    m_stop->setEnabled(session()->isConnected() && !key(QStringLiteral("stop")).isEmpty());
+    m_stop->setEnabled(session()->connection()->isConnected() &&
+                       !key(QStringLiteral("stop")).isEmpty());
 }
 
 void MotorPage::retranslate()

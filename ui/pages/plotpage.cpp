@@ -2,6 +2,8 @@
 
 #include "device/statusrecorder.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionstatus.h"
 #include "widgets/fields/wrappingrow.h"
 #include "widgets/plots/positionplot.h"
 #include "widgets/plots/xyplot.h"
@@ -37,7 +39,7 @@ QString nativePath(const QString &path)
 
 PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     : Page(session, parent)
-    , m_recorder(session->recorder()) // the session records; this page shows and saves it
+    , m_recorder(session->status()->recorder()) // the session records; this page shows and saves it
 {
     m_positions = new PositionPlot(m_recorder, this);
     m_xy = new XYPlot(this);
@@ -133,7 +135,7 @@ PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
         m_xy->clearMarker();
         m_fedUntilMs = -1;
     });
-    connect(session, &DeviceSession::disconnected, m_xy, &XYPlot::clearMarker);
+    connect(session->connection(), &SessionConnection::disconnected, m_xy, &XYPlot::clearMarker);
     retranslate();
 }
 

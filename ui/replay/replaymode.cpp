@@ -8,6 +8,9 @@
 #include "replay/replaybar.h"
 #include "replay/replayviews.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
 #include "support/supportbundle.h"
@@ -106,12 +109,13 @@ ReplayMode::ReplayMode(DeviceSession *session, QWidget *window)
     connect(m_bar, &ReplayBar::deviceChosen, this, &ReplayMode::showDevice);
     connect(m_bar, &ReplayBar::closeRequested, this, &ReplayMode::close);
     // Connecting or opening a profile file is the way out too.
-    connect(session, &DeviceSession::linkStateChanged, this, [this] {
-        if (m_active && m_session->linkState() != DeviceSession::LinkState::Disconnected)
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, [this] {
+        if (m_active &&
+            m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
             close();
     });
-    connect(session->parameters(), &ParameterStore::originChanged, this, [this] {
-        if (m_active && m_session->parameters()->isFile())
+    connect(session->parameters()->store(), &ParameterStore::originChanged, this, [this] {
+        if (m_active && m_session->parameters()->store()->isFile())
             close();
     });
     retranslate();
@@ -207,13 +211,13 @@ bool ReplayMode::refused(QString *why) const
 {
     if (m_opening)
         *why = tr("A session log is being opened already.");
-    else if (m_session->reconnector()->isActive())
+    else if (m_session->connection()->reconnector()->isActive())
         *why = tr("StepCom is trying to reconnect to the controller: cancel that before "
                   "replaying a log.");
-    else if (m_session->linkState() != DeviceSession::LinkState::Disconnected)
+    else if (m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
         *why = tr("Disconnect from the controller before replaying a log: a replay shows the "
                   "log's values where the controller's are.");
-    else if (m_session->parameters()->isFile())
+    else if (m_session->parameters()->store()->isFile())
         *why = tr("Close the profile file before replaying a log.");
     return !why->isEmpty();
 }
@@ -339,8 +343,8 @@ void ReplayMode::openingDone()
     if (m_active)
         close();
     // The plots show the log now; a CSV recording of the live status ends here.
-    if (m_session->recorder()->isRecording())
-        m_session->recorder()->stopRecording();
+    if (m_session->status()->recorder()->isRecording())
+        m_session->status()->recorder()->stopRecording();
     m_log = o->log;
     m_unpacked = std::move(o->unpacked);
     m_name = o->name;
@@ -400,7 +404,8 @@ void ReplayMode::showDevice(int id)
 void ReplayMode::showMoment()
 {
     const ReplayState state = m_log.stateAt(m_moment);
-    m_session->parameters()->showReplay(m_name, state.devices.value(m_device).values(m_log.map()));
+    m_session->parameters()->store()->showReplay(m_name,
+                                                 state.devices.value(m_device).values(m_log.map()));
     m_views->show(m_moment, m_device, m_devices, state);
     m_bar->setMoment(m_moment);
     if (m_strip) { // the line as the log's header names it (an older log: not known)
@@ -450,8 +455,8 @@ void ReplayMode::close()
         return;
     m_bar->setPlaying(false);
     m_active = false;
-    if (m_session->parameters()->isReplay())
-        m_session->parameters()->closeReplay();
+    if (m_session->parameters()->store()->isReplay())
+        m_session->parameters()->store()->closeReplay();
     m_views->stop();
     if (m_strip)
         m_strip->endReplay();

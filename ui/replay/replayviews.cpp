@@ -2,6 +2,8 @@
 
 #include "pages/plotpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessionlog.h"
 #include "support/replaylog.h"
 #include "widgets/docks/devicelistdock.h"
@@ -95,10 +97,10 @@ void ReplayViews::stop()
     m_firstLine = -1;
     if (m_view) {
         m_view->setEarlier({});
-        m_view->setLog(m_session->traffic());
+        m_view->setLog(m_session->connection()->traffic());
     }
     m_traffic->clear();
-    m_session->recorder()->clear();
+    m_session->status()->recorder()->clear();
     if (m_deviceList)
         m_deviceList->endReplay();
 }
@@ -142,7 +144,7 @@ void ReplayViews::showAfresh(qint64 moment, int device, const ReplayState &state
         m_view->setEarlier([this] { return earlierLines(); });
     // The plots: the half hour the live recorder keeps, from the track (a run that began
     // before it from the window's start); the XY plot: the whole path.
-    StatusRecorder *recorder = m_session->recorder();
+    StatusRecorder *recorder = m_session->status()->recorder();
     recorder->clear();
     const ReplayTrack &track = m_log->track();
     const qint64 from = std::max<qint64>(0, moment - recorder->maxAgeMs());
@@ -187,7 +189,7 @@ void ReplayViews::follow(qint64 from, qint64 moment, int device, const ReplaySta
                         m_traffic->add(entryOf(line));
                     return true;
                 });
-    StatusRecorder *recorder = m_session->recorder();
+    StatusRecorder *recorder = m_session->status()->recorder();
     QList<StatusSample> samples = m_log->track().samples(device, from + 1, moment, m_epochMs);
     const qint64 last = !samples.isEmpty()     ? samples.last().elapsedMs
                         : !recorder->isEmpty() ? recorder->last().elapsedMs

@@ -2,6 +2,7 @@
 
 #include "dialogs/idassistantdialog.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/simulatorstarter.h"
 #include "widgets/docks/devicelistdock.h"
 
@@ -25,8 +26,8 @@ BusActions::BusActions(DeviceSession *session, DeviceListDock *dock, QWidget *wi
     m_assignIds->setObjectName(QStringLiteral("assignIds"));
     connect(m_assignIds, &QAction::triggered, this, &BusActions::openAssistant);
     // It writes ids: only with a line to write to (never while a file is edited offline).
-    const auto update = [this] { m_assignIds->setEnabled(m_session->isConnected()); };
-    connect(m_session, &DeviceSession::linkStateChanged, this, update);
+    const auto update = [this] { m_assignIds->setEnabled(m_session->connection()->isConnected()); };
+    connect(m_session->connection(), &SessionConnection::linkStateChanged, this, update);
     update();
     window->installEventFilter(this); // its language changes are ours
     retranslate();
@@ -54,9 +55,10 @@ void BusActions::resetSimulator()
     if (!sim)
         return;
     // Its controller goes away with the reset: a link to it would only be lost.
-    if (m_session->isSimulator() &&
-        m_session->linkState() != DeviceSession::LinkState::Disconnected)
-        m_session->disconnectFrom(tr("the built-in simulator is reset to the factory"));
+    if (m_session->connection()->isSimulator() &&
+        m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
+        m_session->connection()->disconnectFrom(
+            tr("the built-in simulator is reset to the factory"));
     QString error;
     if (!sim->resetToFactory(&error)) {
         Q_EMIT message(tr("The built-in simulator could not be reset: %1").arg(error));

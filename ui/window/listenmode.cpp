@@ -1,4 +1,6 @@
 #include "window/listenmode.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include "base/emergencystop.h"
 #include "listen/linelistener.h"
@@ -41,7 +43,7 @@ ListenMode::ListenMode(DeviceSession *session, EmergencyStop *estop, QWidget *wi
             return;
         }
         QString why;
-        if (!start(m_source ? m_source() : m_session->settings(), &why))
+        if (!start(m_source ? m_source() : m_session->connection()->settings(), &why))
             Q_EMIT finished(false, why);
     });
     m_banner->setObjectName(QStringLiteral("listenBanner"));
@@ -64,8 +66,9 @@ ListenMode::ListenMode(DeviceSession *session, EmergencyStop *estop, QWidget *wi
     m_banner->hide();
     retranslate();
     // Connecting ends the listening first: the port is the link's then, and it drives the line.
-    connect(m_session, &DeviceSession::linkStateChanged, this, [this] {
-        if (isActive() && m_session->linkState() != DeviceSession::LinkState::Disconnected)
+    connect(m_session->connection(), &SessionConnection::linkStateChanged, this, [this] {
+        if (isActive() &&
+            m_session->connection()->linkState() != SessionConnection::LinkState::Disconnected)
             stop();
     });
 }
@@ -79,8 +82,8 @@ bool ListenMode::start(const LinkSettings &settings, QString *why)
 {
     if (isActive())
         return true;
-    if (m_session->isConnected() || m_session->parameters()->isFile() ||
-        m_session->parameters()->isReplay()) {
+    if (m_session->connection()->isConnected() || m_session->parameters()->store()->isFile() ||
+        m_session->parameters()->store()->isReplay()) {
         *why = tr("Listening needs the window free: disconnect, and close any profile file or "
                   "replay first.");
         return false;
@@ -107,7 +110,7 @@ bool ListenMode::start(const LinkSettings &settings, QString *why)
     });
     connect(m_listener, &LineListener::frameSent, this,
             [this](const QByteArray &frame, bool estop, int n) {
-                m_session->traffic()->add(TrafficEntry{
+                m_session->connection()->traffic()->add(TrafficEntry{
                     QDateTime::currentDateTime(), TrafficEntry::Direction::Sent,
                     estop ? TrafficEntry::Kind::Command : TrafficEntry::Kind::Read, frame,
                     estop ? tr("E-STOP into the other master's line (try %1)").arg(n)
@@ -140,11 +143,11 @@ bool ListenMode::start(const LinkSettings &settings, QString *why)
     m_heardWrites = 0;
     m_writes->clear();
     m_estop->setHandler([this] { askEmergencyStop(); });
-    m_session->traffic()->addEvent(
+    m_session->connection()->traffic()->addEvent(
         tr("listening on %1 at %2 baud: another master drives the line, StepCom sends nothing")
             .arg(settings.portName)
             .arg(settings.baud));
-    m_session->parameters()->showReplay(tr("heard on %1").arg(settings.portName), {});
+    m_session->parameters()->store()->showReplay(tr("heard on %1").arg(settings.portName), {});
     m_start->setText(tr("Stop listening"));
     updateBanner();
     m_banner->show();
@@ -164,10 +167,10 @@ void ListenMode::stop()
     m_log.reset();
     if (m_question)
         m_question->close();
-    m_session->parameters()->closeReplay();
+    m_session->parameters()->store()->closeReplay();
     if (m_strip)
         m_strip->endReplay();
-    m_session->traffic()->addEvent(tr("listening ended"));
+    m_session->connection()->traffic()->addEvent(tr("listening ended"));
     m_banner->hide();
     retranslate();
     Q_EMIT activeChanged(false);
@@ -190,14 +193,14 @@ void ListenMode::onHeard(const HeardEvent &e)
     const QString text = e.text();
     const QDateTime now = QDateTime::currentDateTime();
     if (!e.request.isEmpty())
-        m_session->traffic()->add(
+        m_session->connection()->traffic()->add(
             TrafficEntry{now.addMSecs(e.requestMs - e.ms), TrafficEntry::Direction::Sent,
                          TrafficEntry::Kind::Read, e.request, tr("PLC (heard)")});
     if (!e.answer.isEmpty() || e.request.isEmpty())
-        m_session->traffic()->add(TrafficEntry{now, TrafficEntry::Direction::Received,
-                                               TrafficEntry::Kind::Read, e.answer, text});
+        m_session->connection()->traffic()->add(TrafficEntry{
+            now, TrafficEntry::Direction::Received, TrafficEntry::Kind::Read, e.answer, text});
     else
-        m_session->traffic()->addEvent(text);
+        m_session->connection()->traffic()->addEvent(text);
     if (e.kind == HeardEvent::Kind::Write || e.kind == HeardEvent::Kind::Command) {
         ++m_heardWrites;
         m_writes->insertItem(
@@ -213,8 +216,8 @@ void ListenMode::onHeard(const HeardEvent &e)
 void ListenMode::showValues()
 {
     const ReplayDevice device = m_listener->decoder().state().devices.value(m_settings.deviceId);
-    m_session->parameters()->showReplay(tr("heard on %1").arg(m_settings.portName),
-                                        device.values(m_session->map()));
+    m_session->parameters()->store()->showReplay(tr("heard on %1").arg(m_settings.portName),
+                                                 device.values(m_session->map()));
     if (m_strip)
         m_strip->showReplayLink(true, device.answering,
                                 tr("listening on %1").arg(m_settings.portName));

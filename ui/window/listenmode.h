@@ -1,6 +1,7 @@
 #pragma once
 
-#include "session/devicesession.h" // LinkSettings
+#include "session/devicesession.h"
+#include "session/parts/sessionconnection.h" // LinkSettings
 
 #include <QObject>
 #include <QPointer>

@@ -7,6 +7,9 @@
 #include "profile/profilefile.h"
 #include "report/machinereport.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/docks/devicelistdock.h"
 
 #include <QAction>
@@ -33,9 +36,12 @@ MachineActions::MachineActions(DeviceSession *session, QWidget *window)
     connect(m_apply, &QAction::triggered, this, &MachineActions::chooseApply);
     connect(m_dump, &QAction::triggered, this, &MachineActions::chooseDump);
     connect(m_report, &QAction::triggered, this, &MachineActions::chooseReport);
-    connect(session, &DeviceSession::linkStateChanged, this, &MachineActions::updateActions);
-    connect(session, &DeviceSession::deviceInViewChanged, this, &MachineActions::updateActions);
-    connect(session, &DeviceSession::deviceStatusChanged, this, &MachineActions::updateActions);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &MachineActions::updateActions);
+    connect(session->line(), &SessionLine::deviceInViewChanged, this,
+            &MachineActions::updateActions);
+    connect(session->line(), &SessionLine::deviceStatusChanged, this,
+            &MachineActions::updateActions);
     connect(&Language::instance(), &Language::changed, this, &MachineActions::retranslate);
     retranslate();
     updateActions();
@@ -64,7 +70,8 @@ void MachineActions::retranslate()
 
 void MachineActions::updateActions()
 {
-    const bool several = m_session->isConnected() && m_session->deviceIds().size() > 1;
+    const bool several =
+        m_session->connection()->isConnected() && m_session->line()->deviceIds().size() > 1;
     m_apply->setEnabled(several);
     m_dump->setEnabled(several && !isBusy());
     m_report->setEnabled(several && !isBusy());
@@ -84,7 +91,7 @@ QHash<int, QString> MachineActions::names() const
 {
     QHash<int, QString> out;
     DeviceListDock *dock = m_list ? m_list() : nullptr;
-    for (int id : m_session->deviceIds()) {
+    for (int id : m_session->line()->deviceIds()) {
         if (dock)
             out.insert(id, dock->nameOf(id));
     }
@@ -125,7 +132,7 @@ bool MachineActions::applyProfileFile(const QString &path)
 void MachineActions::sweep(const QString &what, const QList<const Parameter *> &params,
                            std::function<void(BusSweep *)> done)
 {
-    if (!m_session->isConnected() || isBusy()) {
+    if (!m_session->connection()->isConnected() || isBusy()) {
         Q_EMIT finished(false,
                         tr("%1: connect to the line first, and wait for what runs").arg(what));
         return;
@@ -144,9 +151,9 @@ void MachineActions::sweep(const QString &what, const QList<const Parameter *> &
         updateActions();
     });
     Q_EMIT finished(
-        true,
-        tr("%1: reading %n device(s)", nullptr, int(m_session->deviceIds().size())).arg(what));
-    s->start(m_session->deviceIds(), params);
+        true, tr("%1: reading %n device(s)", nullptr, int(m_session->line()->deviceIds().size()))
+                  .arg(what));
+    s->start(m_session->line()->deviceIds(), params);
     updateActions();
 }
 
@@ -180,7 +187,7 @@ void MachineActions::dumpIntoFolder(const QString &folder)
             }
             const BusDump::Saved saved =
                 BusDump::save(folder, m_session->map(), id, names.value(id), QString(), r.values,
-                              today, m_session->isSimulator());
+                              today, m_session->connection()->isSimulator());
             Q_EMIT finished(saved.ok(),
                             saved.ok() ? tr("id %1 saved to %2").arg(id).arg(saved.path)
                                        : tr("id %1 was not saved: %2").arg(id).arg(saved.error));
@@ -239,29 +246,29 @@ ReportInput MachineActions::sheet(int id, const QHash<QString, qint64> &values, 
     ReportInput input;
     input.map = m_session->map();
     input.values = values;
-    input.link = m_session->describeDevice(id);
-    input.simulator = m_session->isSimulator();
-    input.line = m_session->linkStats().lineText(id);
+    input.link = m_session->line()->describeDevice(id);
+    input.simulator = m_session->connection()->isSimulator();
+    input.line = m_session->connection()->linkStats().lineText(id);
     input.deviceId = id;
     input.title = name;
     input.date = QDateTime::currentDateTime();
     input.lastRead = read;
-    if (id == m_session->deviceInView()) { // what the window follows
+    if (id == m_session->line()->deviceInView()) { // what the window follows
         input.travelLimits = m_session->travelLimits();
-        input.savedToFlash = !m_session->parameters()->unsavedToFlash();
+        input.savedToFlash = !m_session->parameters()->store()->unsavedToFlash();
     }
     return input;
 }
 
 QList<ReportInput> MachineActions::knownSheets() const
 {
-    QList<int> ids = m_session->deviceIds();
+    QList<int> ids = m_session->line()->deviceIds();
     if (ids.isEmpty())
-        ids << m_session->deviceInView();
+        ids << m_session->line()->deviceInView();
     const QHash<int, QString> names = this->names();
     QList<ReportInput> sheets;
     for (int id : std::as_const(ids)) {
-        const QHash<QString, qint64> values = m_session->knownValues(id);
+        const QHash<QString, qint64> values = m_session->line()->knownValues(id);
         // Only the live status seen (never in view): no sheet to speak of.
         const bool settings =
             std::any_of(values.keyBegin(), values.keyEnd(), [this](const QString &key) {

@@ -23,6 +23,8 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/linkhealth.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
 #include "widgets/docks/devicelistdock.h"
@@ -136,7 +138,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     });
     m_linkStatus = new LinkStatus(session, this);
     // A cable pulled and plugged back, an adapter that came back: the window tries again.
-    session->reconnector()->setEnabled(true);
+    session->connection()->reconnector()->setEnabled(true);
     // A page change stops every jog (the session's rule); jog messages go to the dock.
     connect(m_sidebar, &PageSidebar::pageChosen, session,
             [session] { session->stopJogging(DeviceSession::JogStop::PageLeft); });
@@ -174,19 +176,22 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
                         text);
     });
 
-    connect(session, &DeviceSession::linkStateChanged, this, &MainWindow::updateActions);
-    connect(session->parameters(), &ParameterStore::editsChanged, this, &MainWindow::updateActions);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &MainWindow::updateActions);
+    connect(session->parameters()->store(), &ParameterStore::editsChanged, this,
+            &MainWindow::updateActions);
     connect(session, &DeviceSession::message, m_status, &StatusMessage::post);
     // On to the first motor once the controller answered, not when the port opened: a port
     // with nobody behind it keeps the Connection page and its "not answering" hints in view.
-    connect(session->health(), &LinkHealth::stateChanged, this, [this](LinkHealth::State s) {
-        if (s == LinkHealth::State::Answering && !m_answeredOnce && currentPage() &&
-            qobject_cast<ConnectionPage *>(currentPage()))
-            showPage(1);
-        m_answeredOnce = m_answeredOnce || s == LinkHealth::State::Answering;
-        if (s == LinkHealth::State::Closed)
-            m_answeredOnce = false;
-    });
+    connect(session->connection()->health(), &LinkHealth::stateChanged, this,
+            [this](LinkHealth::State s) {
+                if (s == LinkHealth::State::Answering && !m_answeredOnce && currentPage() &&
+                    qobject_cast<ConnectionPage *>(currentPage()))
+                    showPage(1);
+                m_answeredOnce = m_answeredOnce || s == LinkHealth::State::Answering;
+                if (s == LinkHealth::State::Closed)
+                    m_answeredOnce = false;
+            });
     retranslate();
     // The sidebar as wide as its titles, not as wide as a list's default size hint (256 px):
     // that left a strip of nothing between the sidebar and the page. The page takes the rest.
@@ -235,13 +240,15 @@ void MainWindow::createActions()
         connect(a, &QAction::triggered, this, slot);
         return a;
     };
-    m_readAll = make("readAll", QKeySequence::Refresh, [this] { m_session->readAll(); });
+    m_readAll =
+        make("readAll", QKeySequence::Refresh, [this] { m_session->parameters()->readAll(); });
     m_write =
         make("writeChanges", QKeySequence(Qt::CTRL | Qt::Key_Return), [this] { writeChanges(); });
     m_revert = make("revert", QKeySequence(Qt::CTRL | Qt::Key_R),
-                    [this] { m_session->parameters()->revertAll(); });
+                    [this] { m_session->parameters()->store()->revertAll(); });
     m_save = make("saveToFlash", QKeySequence::Save, [this] { m_session->saveToFlash(); });
-    m_disconnect = make("disconnect", QKeySequence(), [this] { m_session->disconnectFrom(); });
+    m_disconnect =
+        make("disconnect", QKeySequence(), [this] { m_session->connection()->disconnectFrom(); });
     m_estopAction = make("emergencyStop", QKeySequence(), [this] { m_estop->trigger(); });
     m_quit = make("quit", QKeySequence::Quit, [this] { close(); });
     m_about = make("about", QKeySequence(), [this] {
@@ -349,7 +356,7 @@ void MainWindow::createMenus()
 void MainWindow::createDocks()
 {
     m_traffic = new TrafficView(this);
-    m_traffic->setLog(m_session->traffic());
+    m_traffic->setLog(m_session->connection()->traffic());
     m_sessionLog = new SessionLog(m_session, this);
     m_traffic->setLogFolder(m_sessionLog->directory());
     m_trafficDock = new QDockWidget(this);
@@ -532,8 +539,8 @@ void MainWindow::changeEvent(QEvent *event)
 
 void MainWindow::updateActions()
 {
-    const bool connected = m_session->isConnected();
-    const bool edits = m_session->parameters()->hasEdits();
+    const bool connected = m_session->connection()->isConnected();
+    const bool edits = m_session->parameters()->store()->hasEdits();
     m_readAll->setEnabled(connected);
     m_write->setEnabled(connected && edits);
     m_revert->setEnabled(edits);

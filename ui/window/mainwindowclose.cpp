@@ -5,6 +5,7 @@
 #include "profile/profiledocument.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionparameters.h"
 #include "window/offlineactions.h"
 
 #include <QCloseEvent>
@@ -15,11 +16,11 @@ namespace stepcom {
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    if (m_session->parameters()->hasEdits() && !m_closeConfirmed) {
+    if (m_session->parameters()->store()->hasEdits() && !m_closeConfirmed) {
         event->ignore();
         if (m_closeQuestion)
             return;
-        const int edits = int(m_session->parameters()->editedKeys().size());
+        const int edits = int(m_session->parameters()->store()->editedKeys().size());
         m_closeQuestion = new QMessageBox(
             QMessageBox::Warning, tr("Unwritten changes"),
             m_offline->document()->isOpen()

@@ -8,6 +8,8 @@
 #include "report/commissioningreport.h"
 #include "report/reportinput.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QAction>
 #include <QDir>
@@ -55,7 +57,8 @@ OfflineActions::OfflineActions(DeviceSession *session, QWidget *window)
     connect(m_report, &QAction::triggered, this, &OfflineActions::chooseReport);
     connect(m_document, &ProfileDocument::changed, this, &OfflineActions::updateActions);
     connect(m_document, &ProfileDocument::leftForController, this, &OfflineActions::offerCompare);
-    connect(session, &DeviceSession::linkStateChanged, this, &OfflineActions::updateActions);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &OfflineActions::updateActions);
     retranslate();
     updateActions();
 }
@@ -101,7 +104,8 @@ void OfflineActions::retranslate()
 
 void OfflineActions::updateActions()
 {
-    const bool idle = m_session->linkState() == DeviceSession::LinkState::Disconnected;
+    const bool idle =
+        m_session->connection()->linkState() == SessionConnection::LinkState::Disconnected;
     const bool open = m_document->isOpen();
     m_new->setEnabled(idle);
     m_save->setEnabled(open);
@@ -136,7 +140,7 @@ bool OfflineActions::whenSettled(const std::function<void()> &then)
     const bool canSave = !m_document->path().isEmpty();
     m_question = new QMessageBox(QMessageBox::Warning, tr("Unsaved edits"),
                                  tr("%n edited value(s) of %1 are not saved in the file.", nullptr,
-                                    int(m_session->parameters()->editedKeys().size()))
+                                    int(m_session->parameters()->store()->editedKeys().size()))
                                      .arg(m_document->displayName()),
                                  (canSave ? QMessageBox::Save : QMessageBox::NoButton) |
                                      QMessageBox::Discard | QMessageBox::Cancel,

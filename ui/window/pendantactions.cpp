@@ -6,6 +6,7 @@
 #include "profile/profiledocument.h"
 #include "replay/replaymode.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessionlog.h"
 #include "widgets/docks/machinestrip.h"
 #include "window/offlineactions.h"
@@ -35,7 +36,8 @@ PendantActions::PendantActions(DeviceSession *session, MachineStrip *strip, Sess
     connect(m_server->control(), &PendantControl::holderChanged, this, &PendantActions::update);
     connect(replay, &ReplayMode::activeChanged, this, &PendantActions::update);
     connect(offline->document(), &ProfileDocument::changed, this, &PendantActions::update);
-    connect(session->parameters(), &ParameterStore::originChanged, this, &PendantActions::update);
+    connect(session->parameters()->store(), &ParameterStore::originChanged, this,
+            &PendantActions::update);
     window->installEventFilter(this); // its language changes are ours
     retranslate();
 }
@@ -47,7 +49,7 @@ QString PendantActions::refusal() const
     if (m_offline->document()->isOpen())
         return tr("A profile file edited without a controller serves no pendant");
     // Heard values stand in the store as a replay's do: listening beside another master.
-    if (m_session->parameters()->isReplay())
+    if (m_session->parameters()->store()->isReplay())
         return tr("Listening beside another master serves no pendant: stop listening first");
     return {};
 }

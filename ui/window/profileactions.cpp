@@ -8,6 +8,9 @@
 #include "profile/profilefile.h"
 #include "report/commissioningreport.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QAction>
 #include <QDate>
@@ -52,8 +55,9 @@ ProfileActions::ProfileActions(DeviceSession *session, QWidget *window)
     m_backups->setObjectName(QStringLiteral("backups"));
     m_backupDir = BackupStore::defaultDirectory();
     connect(m_backups, &QAction::triggered, this, &ProfileActions::showBackups);
-    connect(session, &DeviceSession::linkStateChanged, this, &ProfileActions::updateActions);
-    connect(session->parameters(), &ParameterStore::valueChanged, this,
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &ProfileActions::updateActions);
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this,
             &ProfileActions::updateActions);
     retranslate();
     rebuildRecent();
@@ -126,13 +130,13 @@ void ProfileActions::retranslate()
 
 void ProfileActions::updateActions()
 {
-    const bool connected = m_session->isConnected();
+    const bool connected = m_session->connection()->isConnected();
     m_saveFromDevice->setEnabled(connected);
     m_report->setEnabled(connected);
     m_backups->setEnabled(connected); // a backup is restored onto a controller
     bool known = true;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), false))
-        known = known && m_session->parameters()->shownValue(p->key).has_value();
+        known = known && m_session->parameters()->store()->shownValue(p->key).has_value();
     m_saveFromEdited->setEnabled(known);
 }
 
@@ -215,7 +219,8 @@ ProfileSaveDialog *ProfileActions::saveDialog() const
 QString ProfileActions::suggestedName() const
 {
     return ProfileSaveDialog::suggestName(
-        m_machine, m_session->isConnected() ? m_session->settings().deviceId : 0,
+        m_machine,
+        m_session->connection()->isConnected() ? m_session->connection()->settings().deviceId : 0,
         QDate::currentDate());
 }
 
@@ -278,7 +283,8 @@ void ProfileActions::setOfflineOpener(std::function<bool(const QString &)> opene
 
 bool ProfileActions::openFile(const QString &path)
 {
-    if (m_offlineOpener && m_session->linkState() == DeviceSession::LinkState::Disconnected) {
+    if (m_offlineOpener &&
+        m_session->connection()->linkState() == SessionConnection::LinkState::Disconnected) {
         const bool opened = m_offlineOpener(path);
         if (opened)
             addRecent(path);
@@ -325,16 +331,16 @@ void ProfileActions::showCompare(const Profile &profile, const QString &title)
 void ProfileActions::saveFromDeviceFile(const QString &path, const QString &name,
                                         const QString &notes)
 {
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         showErrors(tr("Save profile"), {tr("Connect to a controller first.")});
         return;
     }
     const QList<const Parameter *> params = Profile::profileParameters(m_session->map(), true);
     QPointer<ProfileActions> self(this);
-    m_session->read(params, [self, path, name, notes](const ReadOutcome &r) {
+    m_session->parameters()->read(params, [self, path, name, notes](const ReadOutcome &r) {
         if (!self)
             return;
-        self->m_session->parameters()->setDeviceValues(r.values);
+        self->m_session->parameters()->store()->setDeviceValues(r.values);
         if (!r.ok) {
             self->showErrors(tr("Save profile"), QStringList{tr("Nothing was saved: the "
                                                                 "controller could not be read "
@@ -346,8 +352,8 @@ void ProfileActions::saveFromDeviceFile(const QString &path, const QString &name
         profile.unsupported = r.unsupported; // not "missing" when the file is read again
         profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
         profile.notes = notes;
-        profile.deviceId = self->m_session->settings().deviceId;
-        profile.fromSimulator = self->m_session->isSimulator();
+        profile.deviceId = self->m_session->connection()->settings().deviceId;
+        profile.fromSimulator = self->m_session->connection()->isSimulator();
         profile.travelLimits = self->m_session->travelLimits();
         if (const QString e = ProfileFile::save(path, profile, self->m_session->map());
             !e.isEmpty()) {
@@ -368,7 +374,7 @@ bool ProfileActions::saveFromEditedFile(const QString &path, const QString &name
     QHash<QString, qint64> values;
     QStringList unknown;
     for (const Parameter *p : Profile::profileParameters(m_session->map(), true)) {
-        if (const auto v = m_session->parameters()->shownValue(p->key))
+        if (const auto v = m_session->parameters()->store()->shownValue(p->key))
             values.insert(p->key, *v);
         else if (!Profile::isLinkSetting(p->key))
             unknown << p->key;
@@ -382,9 +388,9 @@ bool ProfileActions::saveFromEditedFile(const QString &path, const QString &name
     Profile profile = Profile::fromValues(m_session->map(), values, true);
     profile.name = name.isEmpty() ? QFileInfo(path).completeBaseName() : name;
     profile.notes = notes;
-    if (m_session->isConnected()) {
-        profile.deviceId = m_session->settings().deviceId;
-        profile.fromSimulator = m_session->isSimulator();
+    if (m_session->connection()->isConnected()) {
+        profile.deviceId = m_session->connection()->settings().deviceId;
+        profile.fromSimulator = m_session->connection()->isSimulator();
     }
     profile.travelLimits = m_session->travelLimits();
     if (const QString e = ProfileFile::save(path, profile, m_session->map()); !e.isEmpty()) {
@@ -401,15 +407,15 @@ bool ProfileActions::saveFromEditedFile(const QString &path, const QString &name
 
 void ProfileActions::reportFile(const QString &path, const QString &notes)
 {
-    if (!m_session->isConnected()) {
+    if (!m_session->connection()->isConnected()) {
         showErrors(tr("Commissioning report"), {tr("Connect to a controller first.")});
         return;
     }
     QPointer<ProfileActions> self(this);
-    m_session->readAll([self, path, notes](const ReadOutcome &r) {
+    m_session->parameters()->readAll([self, path, notes](const ReadOutcome &r) {
         if (!self)
             return;
-        self->m_session->parameters()->setDeviceValues(r.values);
+        self->m_session->parameters()->store()->setDeviceValues(r.values);
         if (!r.ok) {
             self->showErrors(tr("Commissioning report"),
                              QStringList{tr("No report: the controller could not be read "
@@ -421,14 +427,15 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
         input.map = self->m_session->map();
         input.values = r.values;
         input.unsupported = r.unsupported;
-        input.link = self->m_session->settings().describe();
-        input.simulator = self->m_session->isSimulator();
-        input.line = self->m_session->linkStats().lineText(self->m_session->deviceInView());
-        input.deviceId = self->m_session->settings().deviceId;
+        input.link = self->m_session->connection()->settings().describe();
+        input.simulator = self->m_session->connection()->isSimulator();
+        input.line = self->m_session->connection()->linkStats().lineText(
+            self->m_session->line()->deviceInView());
+        input.deviceId = self->m_session->connection()->settings().deviceId;
         input.notes = notes;
         input.date = QDateTime::currentDateTime();
         input.lastRead = input.date; // read just now, for this report
-        input.savedToFlash = !self->m_session->parameters()->unsavedToFlash();
+        input.savedToFlash = !self->m_session->parameters()->store()->unsavedToFlash();
         input.locale = Language::instance().current();
         input.travelLimits = self->m_session->travelLimits();
         if (self->m_checklist) {

@@ -1,6 +1,8 @@
 // stepcomctl for a whole machine: every controller of the line in one report, every one saved
 // into one folder.
 #include "../ctlrunner.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 
 #include "line/bussweep.h"
 #include "profile/busdump.h"
@@ -13,15 +15,16 @@ namespace stepcom {
 
 void CtlRunner::dumpIntoFolder(const QString &folder, const QHash<QString, qint64> &values)
 {
-    const int id = m_session->deviceInView();
+    const int id = m_session->line()->deviceInView();
     const BusDump::Saved saved =
         BusDump::save(folder, m_map, id, m_options.name, m_options.notes, values,
-                      QDate::currentDate(), m_session->isSimulator());
+                      QDate::currentDate(), m_session->connection()->isSimulator());
     if (!saved.ok()) {
         fail(UsageError, saved.error);
         return;
     }
-    m_out << tr("saved the settings of %1 to %2").arg(m_session->describeDevice(id), saved.path)
+    m_out << tr("saved the settings of %1 to %2")
+                 .arg(m_session->line()->describeDevice(id), saved.path)
           << Qt::endl;
     finish(Ok);
 }
@@ -85,9 +88,9 @@ void CtlRunner::readMachine(const QString &failure,
             ReportInput input;
             input.map = m_map;
             input.values = sweep->outcome(id).values;
-            input.link = m_session->describeDevice(id);
-            input.simulator = m_session->isSimulator();
-            input.line = m_session->linkStats().lineText(id);
+            input.link = m_session->line()->describeDevice(id);
+            input.simulator = m_session->connection()->isSimulator();
+            input.line = m_session->connection()->linkStats().lineText(id);
             input.deviceId = id;
             input.date = now;
             input.lastRead = now; // one-shot: the flash state is not known

@@ -1,6 +1,9 @@
 // stepcomctl dump, diff, apply and report: CtlRunner's profile commands (docs/profiles.md).
 #include "../ctllinkadvice.h"
 #include "../ctlrunner.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include "consolereader.h"
 
@@ -94,50 +97,51 @@ void CtlRunner::runDump()
             return;
         }
         connectThen([this, path] {
-            m_session->read(Profile::profileParameters(m_map, true),
-                            [this, path](const ReadOutcome &r) {
-                                if (!r.ok) {
-                                    for (const QString &e : condensed(r.errors))
-                                        m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-                                    fail(DeviceError, tr("nothing was saved: the controller "
-                                                         "could not be read completely"));
-                                    return;
-                                }
-                                dumpIntoFolder(path, r.values);
-                            });
+            m_session->parameters()->read(
+                Profile::profileParameters(m_map, true), [this, path](const ReadOutcome &r) {
+                    if (!r.ok) {
+                        for (const QString &e : condensed(r.errors))
+                            m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+                        fail(DeviceError, tr("nothing was saved: the controller "
+                                             "could not be read completely"));
+                        return;
+                    }
+                    dumpIntoFolder(path, r.values);
+                });
         });
         return;
     }
     connectThen([this, path] {
-        m_session->read(Profile::profileParameters(m_map, true), [this,
-                                                                  path](const ReadOutcome &r) {
-            if (!r.ok) {
-                for (const QString &e : condensed(r.errors))
-                    m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-                fail(DeviceError, tr("nothing was saved: the controller could "
-                                     "not be read completely"));
-                return;
-            }
-            noteUnsupported(r);
-            Profile profile = Profile::fromValues(m_map, r.values, m_options.includeLink);
-            profile.unsupported = r.unsupported;
-            profile.unsupported.sort();
-            profile.name =
-                m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
-            profile.notes = m_options.notes;
-            profile.deviceId = m_session->settings().deviceId;
-            profile.fromSimulator = m_session->isSimulator();
-            if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
-                fail(DeviceError, e); // not done: the file could not be written
-                return;
-            }
-            m_result = QJsonObject{{QStringLiteral("file"), path},
-                                   {QStringLiteral("parameters"), int(profile.values.size())}};
-            m_out << tr("saved %n parameter(s) of %1 to %2", nullptr, int(profile.values.size()))
-                         .arg(m_session->settings().describe(), path)
-                  << Qt::endl;
-            finish(Ok);
-        });
+        m_session->parameters()->read(
+            Profile::profileParameters(m_map, true), [this, path](const ReadOutcome &r) {
+                if (!r.ok) {
+                    for (const QString &e : condensed(r.errors))
+                        m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
+                    fail(DeviceError, tr("nothing was saved: the controller could "
+                                         "not be read completely"));
+                    return;
+                }
+                noteUnsupported(r);
+                Profile profile = Profile::fromValues(m_map, r.values, m_options.includeLink);
+                profile.unsupported = r.unsupported;
+                profile.unsupported.sort();
+                profile.name =
+                    m_options.name.isEmpty() ? QFileInfo(path).completeBaseName() : m_options.name;
+                profile.notes = m_options.notes;
+                profile.deviceId = m_session->connection()->settings().deviceId;
+                profile.fromSimulator = m_session->connection()->isSimulator();
+                if (const QString e = ProfileFile::save(path, profile, m_map); !e.isEmpty()) {
+                    fail(DeviceError, e); // not done: the file could not be written
+                    return;
+                }
+                m_result = QJsonObject{{QStringLiteral("file"), path},
+                                       {QStringLiteral("parameters"), int(profile.values.size())}};
+                m_out << tr("saved %n parameter(s) of %1 to %2", nullptr,
+                            int(profile.values.size()))
+                             .arg(m_session->connection()->settings().describe(), path)
+                      << Qt::endl;
+                finish(Ok);
+            });
     });
 }
 
@@ -157,7 +161,7 @@ void CtlRunner::runDiff()
         return;
     m_linkError = LinkError; // 1 means "different" here
     connectThen([this, profile] {
-        m_session->read(
+        m_session->parameters()->read(
             Profile::profileParameters(m_map, true), [this, profile](const ReadOutcome &r) {
                 if (!r.ok) {
                     for (const QString &e : condensed(r.errors))
@@ -513,7 +517,7 @@ void CtlRunner::runReport()
     }
     // The report speaks the program's language (--lang or the environment), installed in main().
     connectThen([this, path] {
-        m_session->readAll([this, path](const ReadOutcome &r) {
+        m_session->parameters()->readAll([this, path](const ReadOutcome &r) {
             if (!r.ok) {
                 for (const QString &e : condensed(r.errors))
                     m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
@@ -525,10 +529,11 @@ void CtlRunner::runReport()
             input.map = m_map;
             input.values = r.values;
             input.unsupported = r.unsupported;
-            input.link = m_session->settings().describe();
-            input.simulator = m_session->isSimulator();
-            input.line = m_session->linkStats().lineText(m_session->deviceInView());
-            input.deviceId = m_session->settings().deviceId;
+            input.link = m_session->connection()->settings().describe();
+            input.simulator = m_session->connection()->isSimulator();
+            input.line =
+                m_session->connection()->linkStats().lineText(m_session->line()->deviceInView());
+            input.deviceId = m_session->connection()->settings().deviceId;
             input.title = m_options.name;
             input.notes = m_options.notes;
             input.date = QDateTime::currentDateTime();

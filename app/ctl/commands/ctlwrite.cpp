@@ -1,6 +1,7 @@
 // stepcomctl write: parsed and checked, reviewed as the window reviews it (WriteReview), then
 // written and verified: a part of CtlRunner.
 #include "../ctlrunner.h"
+#include "session/parts/sessionparameters.h"
 
 #include "../ctllinkadvice.h"
 
@@ -102,7 +103,7 @@ void CtlRunner::reviewThen(const QList<ParameterWrite> &writes, std::function<vo
         judge({});
         return;
     }
-    m_session->read(params, [this, judge](const ReadOutcome &r) {
+    m_session->parameters()->read(params, [this, judge](const ReadOutcome &r) {
         if (!r.ok) {
             for (const QString &e : condensed(r.errors))
                 m_err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
@@ -116,7 +117,7 @@ void CtlRunner::reviewThen(const QList<ParameterWrite> &writes, std::function<vo
 
 void CtlRunner::writeThenReport(const QList<ParameterWrite> &writes)
 {
-    m_session->write(writes, [this, writes](const WriteOutcome &w) {
+    m_session->parameters()->write(writes, [this, writes](const WriteOutcome &w) {
         reportWritten(writes, w);
         if (!w.ok) {
             finish(DeviceError);

@@ -8,6 +8,9 @@
 #include "device/poller.h"
 #include "device/readplanner.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -53,8 +56,8 @@ class TestAnyController : public QObject
         s.portName = host->rtuPath();
         s.baud = baud;
         s.echo = echoSetting;
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->connection()->connectTo(s);
         if (!read.wait(10000) && read.isEmpty())
             return false;
         return read.at(0).at(0).toBool();
@@ -90,16 +93,16 @@ private Q_SLOTS:
         // What was read is what the controller holds.
         for (const QString &key : {QStringLiteral("motor1.speed"), QStringLiteral("motor2.pitch"),
                                    QStringLiteral("device.baud")})
-            QCOMPARE(session->parameters()->deviceValue(key), sim->value(key));
+            QCOMPARE(session->parameters()->store()->deviceValue(key), sim->value(key));
         // A write is confirmed and held.
         const Parameter *speed = session->map().find(QStringLiteral("motor1.speed"));
-        QSignalSpy wrote(session.get(), &DeviceSession::writeFinished);
-        session->write({{speed, 222}});
+        QSignalSpy wrote(session->parameters(), &SessionParameters::writeFinished);
+        session->parameters()->write({{speed, 222}});
         QVERIFY(wrote.wait(8000));
         const auto outcome = wrote.at(0).at(0).value<WriteOutcome>();
         QVERIFY2(outcome.ok, qPrintable(outcome.errors.join(QLatin1Char('\n'))));
         QCOMPARE(*sim->value(QStringLiteral("motor1.speed")), 222);
-        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.speed")), 222);
+        QCOMPARE(*session->parameters()->store()->deviceValue(QStringLiteral("motor1.speed")), 222);
         // Commands, the stops and the E-STOP are acknowledged and done.
         QVERIFY2(commandDone(QStringLiteral("output1_on")), qPrintable(heard()));
         QCOMPARE(*sim->value(QStringLiteral("io.out1")), 1);
@@ -225,8 +228,8 @@ private Q_SLOTS:
         QVERIFY2(commandDone(QStringLiteral("estop")), qPrintable(heard()));
         QVERIFY(!sim->running(1));
         const Parameter *speed = session->map().find(QStringLiteral("motor2.speed"));
-        QSignalSpy wrote(session.get(), &DeviceSession::writeFinished);
-        session->write({{speed, 150}});
+        QSignalSpy wrote(session->parameters(), &SessionParameters::writeFinished);
+        session->parameters()->write({{speed, 150}});
         QVERIFY(wrote.wait(8000));
         QVERIFY(wrote.at(0).at(0).value<WriteOutcome>().ok);
         QCOMPARE(*sim->value(QStringLiteral("motor2.speed")), 150);
@@ -247,7 +250,7 @@ private Q_SLOTS:
                  qPrintable(heard()));
         QCOMPARE(link()->stats().timeouts, before.timeouts);
         QCOMPARE(link()->stats().requests, before.requests + 1); // never repeated
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         session->factoryReset();
         QVERIFY2(read.wait(10000), qPrintable(heard())); // everything read back after it
         QVERIFY(read.at(0).at(0).toBool());
@@ -268,15 +271,15 @@ private Q_SLOTS:
     void silenceAfterAnswersIsNotBlamedOnTheWiring()
     {
         QVERIFY2(start(5, 9600, false, false), qPrintable(heard()));
-        session->stopStatus();
+        session->status()->stop();
         QVERIFY(host->powerCycle(4000));
         bool done = false;
         ReadOutcome outcome;
-        session->read({session->map().find(QStringLiteral("motor1.speed"))},
-                      [&](const ReadOutcome &r) {
-                          done = true;
-                          outcome = r;
-                      });
+        session->parameters()->read({session->map().find(QStringLiteral("motor1.speed"))},
+                                    [&](const ReadOutcome &r) {
+                                        done = true;
+                                        outcome = r;
+                                    });
         QTRY_VERIFY_WITH_TIMEOUT(done, 10000);
         QVERIFY(!outcome.ok);
         const QString why = outcome.errors.join(QLatin1Char('\n'));

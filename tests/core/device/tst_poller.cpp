@@ -4,6 +4,9 @@
 #include "device/poller.h"
 #include "scripteddevice.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -69,12 +72,12 @@ class TestPoller : public QObject
     void connectFullRate()
     {
         session = std::make_unique<DeviceSession>();
-        SessionInternals::poller(*session)->setIntervalMs(0);
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        session->status()->setIntervalMs(0);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         test::useBuiltinSimulator(*session);
-        session->connectSimulator();
+        session->connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QTRY_VERIFY(SessionInternals::poller(*session)->stats().cycles >= 2);
+        QTRY_VERIFY(session->status()->stats().cycles >= 2);
     }
 
 private Q_SLOTS:
@@ -93,13 +96,13 @@ private Q_SLOTS:
     {
         qputenv("STEPCOM_POLL_INTERVAL_MS", "0");
         QCOMPARE(Poller::intervalFromEnvironment(100), 0);
-        QCOMPARE(SessionInternals::poller(DeviceSession())->intervalMs(), 0);
+        QCOMPARE(DeviceSession().status()->intervalMs(), 0);
         qputenv("STEPCOM_POLL_INTERVAL_MS", "fast");
         QCOMPARE(Poller::intervalFromEnvironment(100), 100);
         qputenv("STEPCOM_POLL_INTERVAL_MS", "-5");
         QCOMPARE(Poller::intervalFromEnvironment(100), 100);
         qunsetenv("STEPCOM_POLL_INTERVAL_MS");
-        QCOMPARE(SessionInternals::poller(DeviceSession())->intervalMs(), 100);
+        QCOMPARE(DeviceSession().status()->intervalMs(), 100);
     }
 
     // A silent device: each cycle waits for its timeouts, and no poll piles up behind them --
@@ -228,11 +231,14 @@ private Q_SLOTS:
                  qPrintable(QStringLiteral("%1 fast, %2 full").arg(fast).arg(full)));
         QVERIFY(poller->stats().fastCycles >= 6);
         QCOMPARE(watch.maxOutstanding, 1);
-        const qint64 before =
-            session->parameters()->deviceValue(QStringLiteral("motor1.position")).value_or(0);
-        QTRY_VERIFY(
-            session->parameters()->deviceValue(QStringLiteral("motor1.position")).value_or(0) >
-            before);
+        const qint64 before = session->parameters()
+                                  ->store()
+                                  ->deviceValue(QStringLiteral("motor1.position"))
+                                  .value_or(0);
+        QTRY_VERIFY(session->parameters()
+                        ->store()
+                        ->deviceValue(QStringLiteral("motor1.position"))
+                        .value_or(0) > before);
 
         QVERIFY(sim()->command(QStringLiteral("motor1.stop")));
         QTRY_VERIFY_WITH_TIMEOUT(!poller->isFast(), 2000);
@@ -285,8 +291,8 @@ private Q_SLOTS:
             QTRY_VERIFY_WITH_TIMEOUT(!sim()->running(1), 1000);
         }
         QCOMPARE(watch.maxOutstanding, 1);
-        QVERIFY(SessionInternals::poller(*session)->isActive());
-        QTRY_VERIFY(!SessionInternals::poller(*session)->isFast());
+        QVERIFY(session->status()->isActive());
+        QTRY_VERIFY(!session->status()->isFast());
     }
 };
 

@@ -2,6 +2,9 @@
 #include "device/poller.h"
 #include "device/statusrecorder.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -52,11 +55,11 @@ private Q_SLOTS:
     void samplesOncePerCompletedPollCycle()
     {
         DeviceSession session;
-        StatusRecorder recorder(session.map(), session.parameters());
+        StatusRecorder recorder(session.map(), session.parameters()->store());
         recorder.attach(SessionInternals::poller(session));
-        QSignalSpy read(&session, &DeviceSession::readFinished);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
         test::useBuiltinSimulator(session);
-        session.connectSimulator();
+        session.connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         SimDevice *sim = test::simHost(session)->device();
         sim->setMachinePosition(1, 12.5);
@@ -64,7 +67,7 @@ private Q_SLOTS:
         QSignalSpy cycles(SessionInternals::poller(session), &Poller::cycleFinished);
         QSignalSpy samples(&recorder, &StatusRecorder::sampleAdded);
         QTRY_VERIFY_WITH_TIMEOUT(cycles.size() >= 5, 5000);
-        SessionInternals::poller(session)->stop();
+        session.status()->stop();
         int ok = 0;
         for (const auto &c : cycles)
             ok += c.at(0).toBool() ? 1 : 0;
@@ -83,7 +86,7 @@ private Q_SLOTS:
         // Detached: no more samples.
         recorder.attach(nullptr);
         const int before = recorder.size();
-        SessionInternals::poller(session)->start();
+        session.status()->start();
         QTRY_VERIFY(cycles.size() >= ok + 2);
         QCOMPARE(recorder.size(), before);
     }

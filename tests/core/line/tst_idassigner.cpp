@@ -1,5 +1,8 @@
 #include "line/idassigner.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -24,7 +27,7 @@ class TestIdAssigner : public QObject
     {
         test::useBuiltinSimulator(*session, ids);
         test::connectToSimulator(*session);
-        QCOMPARE(session->deviceInView(), 1);
+        QCOMPARE(session->line()->deviceInView(), 1);
     }
     static void waitWhileWorking(IdAssigner &a)
     {
@@ -34,11 +37,11 @@ class TestIdAssigner : public QObject
     {
         bool done = false;
         bool ok = false;
-        session->readAt(id, {session->map().find(QStringLiteral("device.id"))},
-                        [&](const ReadOutcome &r) {
-                            ok = r.ok && r.values.value(QStringLiteral("device.id")) == id;
-                            done = true;
-                        });
+        session->line()->readAt(id, {session->map().find(QStringLiteral("device.id"))},
+                                [&](const ReadOutcome &r) {
+                                    ok = r.ok && r.values.value(QStringLiteral("device.id")) == id;
+                                    done = true;
+                                });
         if (!QTest::qWaitFor([&] { return done; }, 20000))
             return false;
         return ok;
@@ -92,7 +95,7 @@ private Q_SLOTS:
         QVERIFY2(a.state() == IdAssigner::State::Waiting, qPrintable(a.text()));
         QCOMPARE(sim(0)->deviceId(), 2);
         QCOMPARE(added.size(), 1);
-        QCOMPARE(session->deviceIds(), QList<int>{2});
+        QCOMPARE(session->line()->deviceIds(), QList<int>{2});
         QVERIFY(a.text().contains(QStringLiteral("answers at id 2")));
         QCOMPARE(a.nextId(), 3);
 
@@ -101,7 +104,7 @@ private Q_SLOTS:
         waitWhileWorking(a);
         QVERIFY2(a.state() == IdAssigner::State::Waiting, qPrintable(a.text()));
         QCOMPARE(sim(1)->deviceId(), 3);
-        QCOMPARE(session->deviceIds(), (QList<int>{2, 3}));
+        QCOMPARE(session->line()->deviceIds(), (QList<int>{2, 3}));
 
         // Two new controllers on the line at once: both answer at id 1 and garble each other.
         plugIn(2);
@@ -116,7 +119,7 @@ private Q_SLOTS:
         QCOMPARE(sim(2)->deviceId(), 1); // neither was touched
         QCOMPARE(sim(3)->deviceId(), 1);
         QCOMPARE(added.size(), 2);
-        QVERIFY(!session->deviceIds().contains(4));
+        QVERIFY(!session->line()->deviceIds().contains(4));
         // Asked again with both still there: still refused.
         a.next();
         waitWhileWorking(a);
@@ -137,8 +140,8 @@ private Q_SLOTS:
         QVERIFY2(
             a.text().contains(QStringLiteral("every controller given an id answers: id 2,3,4")),
             qPrintable(a.text()));
-        QCOMPARE(session->deviceIds(), (QList<int>{2, 3, 4}));
-        QCOMPARE(session->deviceInView(), 2);
+        QCOMPARE(session->line()->deviceIds(), (QList<int>{2, 3, 4}));
+        QCOMPARE(session->line()->deviceInView(), 2);
         QVERIFY(session->isLive());
         QVERIFY(answersAt(2));
         QVERIFY(answersAt(3));
@@ -157,7 +160,7 @@ private Q_SLOTS:
         QVERIFY2(a.state() == IdAssigner::State::Waiting, qPrintable(a.text()));
         QCOMPARE(sim(0)->deviceId(), 2);
         QCOMPARE(sim(0)->baud(), 19200);
-        QCOMPARE(session->settings().baud, 19200);
+        QCOMPARE(session->connection()->settings().baud, 19200);
 
         // The next arrives at 9600: the line goes back there for it.
         plugIn(1);
@@ -172,10 +175,10 @@ private Q_SLOTS:
         a.finish();
         waitWhileWorking(a);
         QVERIFY2(a.state() == IdAssigner::State::Finished, qPrintable(a.text()));
-        QCOMPARE(session->settings().baud, 19200);
+        QCOMPARE(session->connection()->settings().baud, 19200);
         QVERIFY2(a.text().contains(QStringLiteral("Answering: id 2. NOT answering: id 3")),
                  qPrintable(a.text()));
-        QCOMPARE(session->deviceIds(), (QList<int>{2, 3})); // it stays listed
+        QCOMPARE(session->line()->deviceIds(), (QList<int>{2, 3})); // it stays listed
         QVERIFY(answersAt(2));
         QVERIFY(!answersAt(3));
     }

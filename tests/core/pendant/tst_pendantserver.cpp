@@ -3,6 +3,8 @@
 #include "pendant/pendantserver.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -193,7 +195,7 @@ private Q_SLOTS:
         QVERIFY2(actions.join(QLatin1Char('\n')).contains(QLatin1String("127.0.0.1: paired")),
                  qPrintable(actions.join(QLatin1Char('\n'))));
         // Disconnecting tells the phones: the link closed, the positions no longer known.
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QTRY_COMPARE(phone->of("status").last().value(QStringLiteral("link")).toString(),
                      QStringLiteral("closed"));
         QVERIFY(phone->of("status")
@@ -340,7 +342,7 @@ private Q_SLOTS:
     void emergencyStopFromThePageReachesEveryDevice()
     {
         test::useBuiltinSimulator(*session, {1, 2});
-        session->setDeviceIds({1, 2});
+        session->line()->setDeviceIds({1, 2});
         test::connectToSimulator(*session);
         QSignalSpy finished(session.get(), &DeviceSession::emergencyStopFinished);
         auto phone = pairedPhone(); // watching only: the E-STOP is for every paired phone

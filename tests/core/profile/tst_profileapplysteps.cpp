@@ -5,6 +5,9 @@
 #include "profile/profileapply.h"
 #include "profile/sessionbackup.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 
@@ -42,7 +45,7 @@ class TestProfileApplySteps : public QObject
         }
         session = std::make_unique<DeviceSession>();
         if (!ids.isEmpty())
-            session->setDeviceIds(ids);
+            session->line()->setDeviceIds(ids);
         // The window's and stepcomctl's guard: a backup through SessionBackup, then go on.
         session->setRiskGuard(
             [this](DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed) {
@@ -59,8 +62,8 @@ class TestProfileApplySteps : public QObject
         LinkSettings s;
         s.portName = host->rtuPath();
         s.timeoutMs = 200;
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        QSignalSpy read(session.get()->parameters(), &SessionParameters::readFinished);
+        session->connection()->connectTo(s);
         if (!read.wait(10000) && read.isEmpty())
             return false;
         return read.at(0).at(0).toBool();
@@ -83,7 +86,7 @@ class TestProfileApplySteps : public QObject
     int writeFramesTo(int id) const
     {
         int n = 0;
-        for (const TrafficEntry &e : session->traffic()->entries()) {
+        for (const TrafficEntry &e : session->connection()->traffic()->entries()) {
             if (e.direction == TrafficEntry::Direction::Sent && e.bytes.size() > 1 &&
                 (quint8(e.bytes.at(1)) == 0x06 || quint8(e.bytes.at(1)) == 0x10) &&
                 quint8(e.bytes.at(0)) == id)
@@ -150,7 +153,7 @@ private Q_SLOTS:
         Profile profile = profileFrom(3, {{speed, 9}});
         ProfileApply two(session.get(), profile, 2);
         ProfileApply three(session.get(), profile, 3);
-        session->traffic()->clear();
+        session->connection()->traffic()->clear();
         const ProfileApplyResult r3 = run(three, {speed});
         const ProfileApplyResult r2 = run(two, {speed});
         QVERIFY(r2.ok() && r3.ok());
@@ -206,7 +209,7 @@ private Q_SLOTS:
         QVERIFY(start({}));
         refusal = QStringLiteral("no backup could be saved");
         ProfileApply apply(session.get(), profileFrom(0, {{speed, 4}}));
-        session->traffic()->clear();
+        session->connection()->traffic()->clear();
         const ProfileApplyResult r = run(apply, {speed});
         QCOMPARE(r.end, ProfileApplyResult::End::Failed);
         QCOMPARE(r.error, refusal);
@@ -221,11 +224,12 @@ private Q_SLOTS:
         ProfileApply apply(session.get(), profile);
         apply.setSaveToFlash(true);
         // The write frame is on the wire: the E-STOP comes before its answer and read-back.
-        connect(session->traffic(), &TrafficLog::entryAdded, this, [this](const TrafficEntry &e) {
-            if (e.direction == TrafficEntry::Direction::Sent && e.bytes.size() > 1 &&
-                quint8(e.bytes.at(1)) == 0x06)
-                QTimer::singleShot(0, session.get(), &DeviceSession::emergencyStop);
-        });
+        connect(session->connection()->traffic(), &TrafficLog::entryAdded, this,
+                [this](const TrafficEntry &e) {
+                    if (e.direction == TrafficEntry::Direction::Sent && e.bytes.size() > 1 &&
+                        quint8(e.bytes.at(1)) == 0x06)
+                        QTimer::singleShot(0, session.get(), &DeviceSession::emergencyStop);
+                });
         QSignalSpy finished(&apply, &ProfileApply::finished);
         apply.apply({speed});
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
@@ -242,11 +246,12 @@ private Q_SLOTS:
         Profile profile = profileFrom(0, {{speed, 8}});
         ProfileApply apply(session.get(), profile);
         // The write's answer came: the simulator goes away before the read-back.
-        connect(session->traffic(), &TrafficLog::entryAdded, this, [this](const TrafficEntry &e) {
-            if (e.direction == TrafficEntry::Direction::Received && e.bytes.size() > 1 &&
-                quint8(e.bytes.at(1)) == 0x06 && host->isRunning())
-                host->stop();
-        });
+        connect(session->connection()->traffic(), &TrafficLog::entryAdded, this,
+                [this](const TrafficEntry &e) {
+                    if (e.direction == TrafficEntry::Direction::Received && e.bytes.size() > 1 &&
+                        quint8(e.bytes.at(1)) == 0x06 && host->isRunning())
+                        host->stop();
+                });
         const ProfileApplyResult r = run(apply, {speed}, 20000);
         QVERIFY(!r.ok());
         const AppliedKey *k = r.key(speed);

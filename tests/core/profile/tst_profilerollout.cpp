@@ -4,6 +4,9 @@
 #include "profile/profilerollout.h"
 #include "profile/sessionbackup.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -68,7 +71,7 @@ class TestProfileRollout : public QObject
                                     });
             });
         test::useBuiltinSimulator(*session, {1, 2, 3});
-        session->setDeviceIds({1, 2, 3});
+        session->line()->setDeviceIds({1, 2, 3});
         test::connectToSimulator(*session);
         link()->traffic()->clear();
     }
@@ -146,7 +149,7 @@ private Q_SLOTS:
         QCOMPARE(finished.first().first().toBool(), false); // the worst of them: one failed
         // Device 1 is in view: its store follows the write.
         QCOMPARE(rollout.device(1)->state, RolloutDevice::State::Written);
-        QCOMPARE(session->parameters()->deviceValue(changed.first()),
+        QCOMPARE(session->parameters()->store()->deviceValue(changed.first()),
                  std::optional<qint64>(profile.values.value(changed.first())));
         QCOMPARE(rollout.device(2)->state, RolloutDevice::State::Skipped);
         QCOMPARE(rollout.device(2)->reason, QStringLiteral("no value was chosen for it"));

@@ -1,6 +1,10 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -28,10 +32,10 @@ class TestDeviceBus : public QObject
     void connectBus(const QList<int> &lineIds, const QList<int> &listIds)
     {
         test::useBuiltinSimulator(*session, lineIds);
-        session->setDeviceIds(listIds);
-        session->setBackgroundIntervalMs(400);
+        session->line()->setDeviceIds(listIds);
+        session->line()->setBackgroundIntervalMs(400);
         test::connectToSimulator(*session);
-        QCOMPARE(session->deviceInView(), 1);
+        QCOMPARE(session->line()->deviceInView(), 1);
         connect(link(), &ModbusLink::dispatched, this,
                 [this](quint64, const Request &r) { sent.append(r); });
     }
@@ -61,13 +65,14 @@ private Q_SLOTS:
     void pollingIsFairAcrossTheDevices()
     {
         connectBus({1, 2, 3}, {1, 2, 3});
-        QTRY_VERIFY_WITH_TIMEOUT(
-            session->deviceStatus(2).cycles >= 3 && session->deviceStatus(3).cycles >= 3, 15000);
-        QCOMPARE(session->deviceStatus(2).state, BusDeviceStatus::State::Answering);
-        QCOMPARE(session->deviceStatus(3).state, BusDeviceStatus::State::Answering);
-        QCOMPARE(session->deviceStatus(2).errors, 0);
+        QTRY_VERIFY_WITH_TIMEOUT(session->line()->deviceStatus(2).cycles >= 3 &&
+                                     session->line()->deviceStatus(3).cycles >= 3,
+                                 15000);
+        QCOMPARE(session->line()->deviceStatus(2).state, BusDeviceStatus::State::Answering);
+        QCOMPARE(session->line()->deviceStatus(3).state, BusDeviceStatus::State::Answering);
+        QCOMPARE(session->line()->deviceStatus(2).errors, 0);
         // Every status value of the background devices arrived.
-        QCOMPARE(session->deviceStatus(2).values.size(), session->statusKeys().size());
+        QCOMPARE(session->line()->deviceStatus(2).values.size(), session->status()->keys().size());
         // Counted on the link: round robin, so 2 and 3 are never more than one turn apart,
         // and the device in view (live rate) is read at least as often as either.
         QHash<int, int> reads;
@@ -75,7 +80,7 @@ private Q_SLOTS:
             if (r.priority == Priority::Poll)
                 ++reads[unitOf(r)];
         QVERIFY2(reads.value(2) > 0 && reads.value(3) > 0, "both background devices polled");
-        const int blocks = reads.value(2) / std::max(1, session->deviceStatus(2).cycles);
+        const int blocks = reads.value(2) / std::max(1, session->line()->deviceStatus(2).cycles);
         QVERIFY2(
             std::abs(reads.value(2) - reads.value(3)) <= blocks,
             qPrintable(QStringLiteral("2: %1, 3: %2").arg(reads.value(2)).arg(reads.value(3))));
@@ -128,24 +133,24 @@ private Q_SLOTS:
     {
         connectBus({1, 2, 3}, {1, 2, 3});
         QVERIFY(host()->deviceAt(2)->setValue(QStringLiteral("motor1.speed"), 444));
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
-        QSignalSpy disconnected(session.get(), &DeviceSession::disconnected);
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        QSignalSpy shown(session.get(), &DeviceSession::deviceInViewChanged);
-        QVERIFY(session->showDevice(2));
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
+        QSignalSpy disconnected(session->connection(), &SessionConnection::disconnected);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        QSignalSpy shown(session->line(), &SessionLine::deviceInViewChanged);
+        QVERIFY(session->line()->showDevice(2));
         QCOMPARE(shown.size(), 1);
-        QCOMPARE(session->deviceInView(), 2);
+        QCOMPARE(session->line()->deviceInView(), 2);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QVERIFY(read.at(0).at(0).toBool());
-        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.speed")), 444);
-        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("device.id")), 2);
+        QCOMPARE(*session->parameters()->store()->deviceValue(QStringLiteral("motor1.speed")), 444);
+        QCOMPARE(*session->parameters()->store()->deviceValue(QStringLiteral("device.id")), 2);
         QCOMPARE(connected.size(), 0);
         QCOMPARE(disconnected.size(), 0);
-        QVERIFY(session->isConnected());
+        QVERIFY(session->connection()->isConnected());
         // Device 1 is now in the background poll.
-        QTRY_VERIFY_WITH_TIMEOUT(session->deviceStatus(1).cycles >= 1, 10000);
-        QVERIFY(!session->showDevice(9));
-        QCOMPARE(session->deviceInView(), 2);
+        QTRY_VERIFY_WITH_TIMEOUT(session->line()->deviceStatus(1).cycles >= 1, 10000);
+        QVERIFY(!session->line()->showDevice(9));
+        QCOMPARE(session->line()->deviceInView(), 2);
     }
 
     void aCommandGoesToTheDeviceThatWasInView()
@@ -153,7 +158,7 @@ private Q_SLOTS:
         connectBus({1, 2, 3}, {1, 2, 3});
         QSignalSpy done(session.get(), &DeviceSession::commandFinished);
         session->command(QStringLiteral("motor1.move"));
-        QVERIFY(session->showDevice(3)); // before the pulse reached the wire
+        QVERIFY(session->line()->showDevice(3)); // before the pulse reached the wire
         QTRY_COMPARE_WITH_TIMEOUT(done.size(), 1, 10000);
         QVERIFY(host()->deviceAt(1)->running(1));
         QVERIFY(!host()->deviceAt(3)->running(1));

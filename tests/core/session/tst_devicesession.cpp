@@ -3,6 +3,9 @@
 #include "scripteddevice.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -28,10 +31,11 @@ private Q_SLOTS:
     void connectingReadsButNeverWrites()
     {
         connectSim();
-        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.step_angle")), 180);
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor2.pitch")),
+        QCOMPARE(*session->parameters()->store()->deviceValue(QStringLiteral("motor1.step_angle")),
+                 180);
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor2.pitch")),
                  ParameterStore::State::InSync);
-        for (const TrafficEntry &e : SessionInternals::link(*session)->traffic()->entries()) {
+        for (const TrafficEntry &e : session->connection()->traffic()->entries()) {
             if (e.direction == TrafficEntry::Direction::Sent)
                 QCOMPARE(int(quint8(e.bytes.at(1))), 0x03); // reads only
         }
@@ -40,20 +44,21 @@ private Q_SLOTS:
     void writeChangesReachesTheController()
     {
         connectSim();
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // held, not written
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
-        session->writeChanges();
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
+        session->parameters()->writeChanges();
         QTRY_COMPARE(written.size(), 1);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor1.speed")),
                  ParameterStore::State::InSync);
-        QVERIFY(session->parameters()->unsavedToFlash());
+        QVERIFY(session->parameters()->store()->unsavedToFlash());
         QSignalSpy done(session.get(), &DeviceSession::commandFinished);
         session->saveToFlash();
         QTRY_COMPARE(done.size(), 1);
         QVERIFY(done.at(0).at(1).toBool());
-        QVERIFY(!session->parameters()->unsavedToFlash());
+        QVERIFY(!session->parameters()->store()->unsavedToFlash());
     }
 
     void writeWhoseAnswerIsLostIsNeverTakenForTheOldValue()
@@ -90,23 +95,23 @@ private Q_SLOTS:
         s.portName = device.clientPath();
         s.timeoutMs = 200;
         s.retries = 1;
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->connection()->connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         const QString key = QStringLiteral("motor1.speed");
-        QCOMPARE(*session->parameters()->deviceValue(key), 300);
+        QCOMPARE(*session->parameters()->store()->deviceValue(key), 300);
 
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
-        QVERIFY(session->parameters()->edit(key, 450).isEmpty());
-        session->writeChanges();
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
+        QVERIFY(session->parameters()->store()->edit(key, 450).isEmpty());
+        session->parameters()->writeChanges();
         QTRY_COMPARE_WITH_TIMEOUT(written.size(), 1, 10000);
         QCOMPARE(device.registers[speed], quint16(450)); // it did arrive
-        QCOMPARE(session->parameters()->state(key), ParameterStore::State::WriteFailed);
-        QVERIFY(session->parameters()->deviceValue(key) != std::optional<qint64>(300));
+        QCOMPARE(session->parameters()->store()->state(key), ParameterStore::State::WriteFailed);
+        QVERIFY(session->parameters()->store()->deviceValue(key) != std::optional<qint64>(300));
         // Read back: the controller holds what was typed, so nothing is pending any more.
-        QTRY_COMPARE_WITH_TIMEOUT(session->parameters()->deviceValue(key),
+        QTRY_COMPARE_WITH_TIMEOUT(session->parameters()->store()->deviceValue(key),
                                   std::optional<qint64>(450), 5000);
-        QCOMPARE(session->parameters()->state(key), ParameterStore::State::InSync);
+        QCOMPARE(session->parameters()->store()->state(key), ParameterStore::State::InSync);
     }
 
     void statusIsPolled()
@@ -114,10 +119,12 @@ private Q_SLOTS:
         connectSim();
         sim()->setInput(3, SimDevice::InputForce::On);
         QTRY_COMPARE_WITH_TIMEOUT(
-            session->parameters()->deviceValue(QStringLiteral("io.in3")).value_or(-1), 1, 5000);
+            session->parameters()->store()->deviceValue(QStringLiteral("io.in3")).value_or(-1), 1,
+            5000);
         sim()->setInput(3, SimDevice::InputForce::Off);
         QTRY_COMPARE_WITH_TIMEOUT(
-            session->parameters()->deviceValue(QStringLiteral("io.in3")).value_or(-1), 0, 5000);
+            session->parameters()->store()->deviceValue(QStringLiteral("io.in3")).value_or(-1), 0,
+            5000);
     }
 
     void emergencyStopGoesAheadAndStops()
@@ -130,8 +137,8 @@ private Q_SLOTS:
         QList<QString> order;
         connect(SessionInternals::link(*session), &ModbusLink::dispatched, this,
                 [&order](quint64, const Request &r) { order << r.what; });
-        session->readAll();
-        session->readAll();
+        session->parameters()->readAll();
+        session->parameters()->readAll();
         session->emergencyStop();
         QTRY_VERIFY(order.contains(QStringLiteral("estop")));
         QVERIFY2(order.indexOf(QStringLiteral("estop")) <= 1,
@@ -142,13 +149,13 @@ private Q_SLOTS:
     void idChangeIsFollowed()
     {
         connectSim();
-        QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
-        session->changeLink(7, 9600);
+        QSignalSpy changed(session->line(), &SessionLine::linkChanged);
+        session->line()->changeLink(7, 9600);
         QTRY_COMPARE_WITH_TIMEOUT(changed.size(), 1, 5000);
-        QCOMPARE(session->settings().deviceId, 7);
+        QCOMPARE(session->connection()->settings().deviceId, 7);
         QCOMPARE(sim()->deviceId(), 7);
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
         QVERIFY(read.at(0).at(0).toBool());
     }
@@ -156,13 +163,13 @@ private Q_SLOTS:
     void baudChangeIsFollowed()
     {
         connectSim();
-        QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
-        QSignalSpy failed(session.get(), &DeviceSession::linkChangeFailed);
-        session->changeLink(1, 19200);
+        QSignalSpy changed(session->line(), &SessionLine::linkChanged);
+        QSignalSpy failed(session->line(), &SessionLine::linkChangeFailed);
+        session->line()->changeLink(1, 19200);
         QTRY_VERIFY_WITH_TIMEOUT(changed.size() + failed.size() == 1, 10000);
         QVERIFY2(changed.size() == 1,
                  failed.isEmpty() ? "" : qPrintable(failed.at(0).at(1).toString()));
-        QCOMPARE(session->settings().baud, 19200);
+        QCOMPARE(session->connection()->settings().baud, 19200);
         QCOMPARE(sim()->baud(), 19200);
     }
 
@@ -170,14 +177,14 @@ private Q_SLOTS:
     {
         connectSim();
         test::simHost(*session)->device()->setValue(QStringLiteral("device.id"), 1);
-        QSignalSpy failed(session.get(), &DeviceSession::linkChangeFailed);
+        QSignalSpy failed(session->line(), &SessionLine::linkChangeFailed);
         // the controller takes the new id but we stop it before it can answer there
         connect(SessionInternals::link(*session), &ModbusLink::finished, this,
                 [this](quint64, const Request &r, const Result &res) {
                     if (r.what == QLatin1String("device.id") && res.ok)
                         test::simHost(*session)->stop();
                 });
-        session->changeLink(9, 9600);
+        session->line()->changeLink(9, 9600);
         QTRY_COMPARE_WITH_TIMEOUT(failed.size(), 1, 10000);
         const LinkSettings previous = failed.at(0).at(0).value<LinkSettings>();
         QCOMPARE(previous.deviceId, 1);
@@ -186,15 +193,15 @@ private Q_SLOTS:
     void withoutASimulatorConnectSimulatorSaysSo()
     {
         // The real device path has no simulator in it: a program must hand the session one.
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
         QSignalSpy said(session.get(), &DeviceSession::message);
-        session->connectSimulator();
+        session->connection()->connectSimulator();
         QCOMPARE(connected.size(), 1);
         QVERIFY(!connected.at(0).at(0).toBool());
         QVERIFY(said.size() >= 1);
         QVERIFY2(said.last().at(1).toString().contains(QLatin1String("no built-in simulator")),
                  qPrintable(said.last().at(1).toString()));
-        QVERIFY(!session->isConnected());
+        QVERIFY(!session->connection()->isConnected());
     }
 
     void stopRulesStopEveryJogWithTheirReason_data()

@@ -2,6 +2,9 @@
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "session/stepmove.h"
 #include "sim/host/simhost.h"
@@ -25,13 +28,13 @@ class TestDeviceState : public QObject
     ModbusLink *link() const { return SessionInternals::link(*session); }
     std::optional<qint64> held(const char *key) const
     {
-        return session->parameters()->deviceValue(QLatin1String(key));
+        return session->parameters()->store()->deviceValue(QLatin1String(key));
     }
     void connectBus()
     {
         test::useBuiltinSimulator(*session, {1, 2, 3});
-        session->setDeviceIds({1, 2, 3});
-        session->setBackgroundIntervalMs(300);
+        session->line()->setDeviceIds({1, 2, 3});
+        session->line()->setBackgroundIntervalMs(300);
         test::connectToSimulator(*session);
         connect(link(), &ModbusLink::dispatched, this,
                 [this](quint64, const Request &r) { sent.append(r); });
@@ -39,8 +42,8 @@ class TestDeviceState : public QObject
     // Shows `id` and waits for its read-all.
     void show(int id)
     {
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        QVERIFY(session->showDevice(id));
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        QVERIFY(session->line()->showDevice(id));
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QVERIFY(read.at(0).at(0).toBool());
     }
@@ -58,35 +61,38 @@ private Q_SLOTS:
         connectBus();
         QVERIFY(host()->deviceAt(1)->setValue(QStringLiteral("motor1.speed"), 111));
         QVERIFY(host()->deviceAt(2)->setValue(QStringLiteral("motor1.speed"), 222));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QCOMPARE(held("motor1.speed"), 111);
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor2.speed"), 321).isEmpty());
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
-        QSignalSpy disconnected(session.get(), &DeviceSession::disconnected);
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor2.speed"), 321).isEmpty());
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
+        QSignalSpy disconnected(session->connection(), &SessionConnection::disconnected);
         show(2);
         QCOMPARE(held("motor1.speed"), 222);
         QCOMPARE(held("device.id"), 2);
         // Device 1's edit stays with device 1: nothing typed for it can be written to 2.
-        QVERIFY(!session->parameters()->hasEdits());
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.speed"), 999).isEmpty());
+        QVERIFY(!session->parameters()->store()->hasEdits());
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor1.speed"), 999).isEmpty());
         // Back to 1: its values and its edit at once, before anything was read again.
-        QVERIFY(session->showDevice(1));
+        QVERIFY(session->line()->showDevice(1));
         QCOMPARE(held("motor1.speed"), 111);
         QCOMPARE(held("device.id"), 1);
-        QCOMPARE(session->parameters()->editedKeys(), QStringList{QStringLiteral("motor2.speed")});
-        QCOMPARE(*session->parameters()->shownValue(QStringLiteral("motor2.speed")), 321);
+        QCOMPARE(session->parameters()->store()->editedKeys(),
+                 QStringList{QStringLiteral("motor2.speed")});
+        QCOMPARE(*session->parameters()->store()->shownValue(QStringLiteral("motor2.speed")), 321);
         // And 2's edit is back with 2.
-        QVERIFY(session->showDevice(2));
+        QVERIFY(session->line()->showDevice(2));
         QCOMPARE(held("motor1.speed"), 222);
-        QCOMPARE(*session->parameters()->shownValue(QStringLiteral("motor1.speed")), 999);
+        QCOMPARE(*session->parameters()->store()->shownValue(QStringLiteral("motor1.speed")), 999);
         QCOMPARE(connected.size(), 0);
         QCOMPARE(disconnected.size(), 0);
-        QVERIFY(session->isConnected());
+        QVERIFY(session->connection()->isConnected());
         // Device 3 was never in view: its status is known from the background poll only.
-        QTRY_VERIFY_WITH_TIMEOUT(session->deviceStatus(3).cycles >= 1, 10000);
-        QVERIFY(session->showDevice(3));
+        QTRY_VERIFY_WITH_TIMEOUT(session->line()->deviceStatus(3).cycles >= 1, 10000);
+        QVERIFY(session->line()->showDevice(3));
         QVERIFY(held("motor1.position").has_value());
         QVERIFY(!held("motor1.speed").has_value()); // not read yet, so not shown as known
         QTRY_COMPARE_WITH_TIMEOUT(held("device.id"), 3, 10000);
@@ -114,7 +120,7 @@ private Q_SLOTS:
         QTRY_COMPARE(done.size(), 1);
         QCOMPARE(motion->references()->reasonOn(3, 1), ReferenceTracker::Reason::EmergencyStop);
         QVERIFY(motion->references()->isReferencedOn(2, 1));
-        QVERIFY(session->showDevice(2));
+        QVERIFY(session->line()->showDevice(2));
         QVERIFY(motion->references()->isReferenced(1));
     }
 
@@ -130,7 +136,7 @@ private Q_SLOTS:
         session->command(QStringLiteral("motor1.home"));
         QTRY_COMPARE(acknowledged.size(), 1);
         QVERIFY(motion->active(1).has_value());
-        QVERIFY(session->showDevice(3));         // while device 2 still homes
+        QVERIFY(session->line()->showDevice(3)); // while device 2 still homes
         QVERIFY(!motion->active(1).has_value()); // nothing runs on device 3
         QCOMPARE(motion->activeOn(2).size(), 1);
         QTRY_COMPARE_WITH_TIMEOUT(judged.size(), 1, 20000);
@@ -146,7 +152,7 @@ private Q_SLOTS:
         for (const Request &r : std::as_const(sent))
             readFromTwo = readFromTwo || (r.priority == Priority::Read && r.unitId == 2);
         QVERIFY(readFromTwo);
-        QVERIFY(session->showDevice(2));
+        QVERIFY(session->line()->showDevice(2));
         QCOMPARE(motion->lastOutcome(1)->verdict, MotionOutcome::Verdict::Referenced);
     }
 
@@ -158,31 +164,31 @@ private Q_SLOTS:
         QSignalSpy finished(session->stepMove(), &StepMove::finished);
         QVERIFY(session->stepMove()->start({StepMoveRequest::Kind::By, 1, 20}).isEmpty());
         QSignalSpy said(session.get(), &DeviceSession::message);
-        QVERIFY(!session->showDevice(2));
-        QCOMPARE(session->deviceInView(), 1);
+        QVERIFY(!session->line()->showDevice(2));
+        QCOMPARE(session->line()->deviceInView(), 1);
         QVERIFY(said.last().at(1).toString().contains(QLatin1String("step move")));
         QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
         QVERIFY(finished.first().first().value<StepMoveResult>().restored);
-        QVERIFY(session->showDevice(2));
+        QVERIFY(session->line()->showDevice(2));
     }
 
     void everyDevicesStatusIsCountedWithItsErrors()
     {
         test::useBuiltinSimulator(*session, {1, 2, 3});
-        session->setDeviceIds({1, 2, 4}); // nobody answers at 4
-        session->setBackgroundIntervalMs(300);
+        session->line()->setDeviceIds({1, 2, 4}); // nobody answers at 4
+        session->line()->setBackgroundIntervalMs(300);
         test::connectToSimulator(*session);
-        QTRY_VERIFY_WITH_TIMEOUT(session->deviceStatus(4).errors >= 1 &&
-                                     session->deviceStatus(2).cycles >= 2 &&
-                                     session->deviceStatus(1).cycles >= 2,
+        QTRY_VERIFY_WITH_TIMEOUT(session->line()->deviceStatus(4).errors >= 1 &&
+                                     session->line()->deviceStatus(2).cycles >= 2 &&
+                                     session->line()->deviceStatus(1).cycles >= 2,
                                  20000);
-        QCOMPARE(session->deviceStatus(1).state, BusDeviceStatus::State::Answering);
-        QCOMPARE(session->deviceStatus(1).errors, 0);
-        QCOMPARE(session->deviceStatus(2).state, BusDeviceStatus::State::Answering);
-        QCOMPARE(session->deviceStatus(4).state, BusDeviceStatus::State::NotAnswering);
-        QVERIFY(!session->deviceStatus(4).lastError.isEmpty());
+        QCOMPARE(session->line()->deviceStatus(1).state, BusDeviceStatus::State::Answering);
+        QCOMPARE(session->line()->deviceStatus(1).errors, 0);
+        QCOMPARE(session->line()->deviceStatus(2).state, BusDeviceStatus::State::Answering);
+        QCOMPARE(session->line()->deviceStatus(4).state, BusDeviceStatus::State::NotAnswering);
+        QVERIFY(!session->line()->deviceStatus(4).lastError.isEmpty());
         // What is known of device 2 (not in view) comes from its own status reads.
-        QCOMPARE(session->knownValues(2).value(QStringLiteral("motor1.position"), -1),
+        QCOMPARE(session->line()->knownValues(2).value(QStringLiteral("motor1.position"), -1),
                  *host()->deviceAt(2)->value(QStringLiteral("motor1.position")));
     }
 };

@@ -2,6 +2,8 @@
 #include "scripteddevice.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -130,9 +132,11 @@ private Q_SLOTS:
         // A motor moving on its own (a single move) is not jogged on top.
         QVERIFY(sim()->setValue(QStringLiteral("motor2.speed"), 30));
         QVERIFY(sim()->command(QStringLiteral("motor2.move")));
-        QTRY_COMPARE(
-            session->parameters()->deviceValue(QStringLiteral("motor2.running")).value_or(-1),
-            qint64(1));
+        QTRY_COMPARE(session->parameters()
+                         ->store()
+                         ->deviceValue(QStringLiteral("motor2.running"))
+                         .value_or(-1),
+                     qint64(1));
         QVERIFY(!jog->press(2, Direction::Forward));
         QVERIFY(messages.last().at(1).toString().contains(QLatin1String("is moving")));
         QVERIFY(sim()->command(QStringLiteral("motor2.stop")));
@@ -206,9 +210,9 @@ private Q_SLOTS:
 
         QTRY_COMPARE_WITH_TIMEOUT(reopened.size(), 1, 5000);
         QSignalSpy dispatched(SessionInternals::link(*session), &ModbusLink::dispatched);
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
         test::useBuiltinSimulator(*session);
-        session->connectSimulator();
+        session->connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(connected.size(), 1, 5000);
         QVERIFY(connected.at(0).at(0).toBool());
         QTRY_VERIFY(!sim()->running(1));
@@ -248,8 +252,8 @@ private Q_SLOTS:
         LinkSettings s;
         s.portName = device.clientPath();
         s.timeoutMs = 200;
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->connection()->connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
 
         QSignalSpy messages(jog.get(), &JogController::message);
@@ -277,8 +281,8 @@ private Q_SLOTS:
         });
         LinkSettings s;
         s.portName = device.clientPath();
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->connection()->connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
 
         QSignalSpy warnings(jog.get(), &JogController::warning);
@@ -291,7 +295,10 @@ private Q_SLOTS:
             warnings.at(0).at(1).toString().contains(QLatin1String("still runs after its stop")),
             qPrintable(warnings.at(0).at(1).toString()));
         QCOMPARE(jog->state(1), State::StillRunning);
-        QCOMPARE(session->parameters()->deviceValue(QStringLiteral("motor1.running")).value_or(-1),
+        QCOMPARE(session->parameters()
+                     ->store()
+                     ->deviceValue(QStringLiteral("motor1.running"))
+                     .value_or(-1),
                  qint64(1));
         QVERIFY(!jog->press(1, Direction::Reverse)); // not on top of a runaway
 

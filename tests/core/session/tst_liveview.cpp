@@ -3,7 +3,10 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "session/devicesession.h"
-#include "session/sessioninternals.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 
@@ -18,7 +21,7 @@ namespace {
 QList<std::pair<int, int>> readsSent(const DeviceSession &session)
 {
     QList<std::pair<int, int>> out;
-    for (const TrafficEntry &e : SessionInternals::link(session)->traffic()->entries()) {
+    for (const TrafficEntry &e : session.connection()->traffic()->entries()) {
         if (e.direction != TrafficEntry::Direction::Sent || e.bytes.size() < 8 ||
             quint8(e.bytes.at(1)) != 0x03)
             continue;
@@ -53,8 +56,8 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(host.start(options, &error), qPrintable(error));
         DeviceSession session;
-        QSignalSpy read(&session, &DeviceSession::readFinished);
-        session.connectTo(ptyLink(host));
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
+        session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
         QCOMPARE(read.first().first().toBool(), true);
         const QList<std::pair<int, int>> sent = readsSent(session);
@@ -83,14 +86,14 @@ private Q_SLOTS:
         QString error;
         QVERIFY2(host.start(options, &error), qPrintable(error));
         DeviceSession session;
-        QSignalSpy read(&session, &DeviceSession::readFinished);
-        QSignalSpy learnt(&session, &DeviceSession::readLimitsLearned);
-        session.connectTo(ptyLink(host));
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
+        QSignalSpy learnt(session.connection(), &SessionConnection::readLimitsLearned);
+        session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
         QCOMPARE(read.first().first().toBool(), true); // the read-all went on
         QCOMPARE(learnt.size(), lacks ? 2 : 1);        // said once each
-        QVERIFY(session.readLimits().gapFree());
-        const ParameterStore *store = session.parameters();
+        QVERIFY(session.connection()->readLimits().gapFree());
+        const ParameterStore *store = session.parameters()->store();
         QCOMPARE(store->state(QStringLiteral("motor2.position")),
                  lacks ? ParameterStore::State::Unsupported : ParameterStore::State::InSync);
         QCOMPARE(store->state(QStringLiteral("motor1.speed")), ParameterStore::State::InSync);
@@ -98,7 +101,7 @@ private Q_SLOTS:
         host.device()->setInput(3, SimDevice::InputForce::On);
         QTRY_COMPARE_WITH_TIMEOUT(store->deviceValue(QStringLiteral("io.in3")).value_or(-1), 1,
                                   5000);
-        QSignalSpy cycles(&session, &DeviceSession::statusCycleFinished);
+        QSignalSpy cycles(session.status(), &SessionStatus::statusCycleFinished);
         QTRY_VERIFY_WITH_TIMEOUT(cycles.size() >= 3, 5000);
         for (const QList<QVariant> &c : std::as_const(cycles))
             QVERIFY(c.first().toBool());
@@ -126,11 +129,11 @@ private Q_SLOTS:
         host.deviceAt(2)->setStrictReads(true);
         host.deviceAt(2)->setLacking({QStringLiteral("motor2.position")});
         DeviceSession session;
-        session.setDeviceIds({1, 2});
-        session.setBackgroundIntervalMs(100);
-        QSignalSpy read(&session, &DeviceSession::readFinished);
-        QSignalSpy learnt(&session, &DeviceSession::readLimitsLearned);
-        session.connectTo(ptyLink(host));
+        session.line()->setDeviceIds({1, 2});
+        session.line()->setBackgroundIntervalMs(100);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
+        QSignalSpy learnt(session.connection(), &SessionConnection::readLimitsLearned);
+        session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
         QCOMPARE(read.first().first().toBool(), true);
         // The background poll of id 2 learns both lessons, said with the id.
@@ -138,23 +141,24 @@ private Q_SLOTS:
         for (const QList<QVariant> &l : std::as_const(learnt))
             QVERIFY2(l.first().toString().startsWith(QLatin1String("Device id 2: ")),
                      qPrintable(l.first().toString()));
-        const ParameterStore *store = session.parameters();
-        QVERIFY(session.readLimits().isEmpty()); // id 1 reads its merged plan as before
+        const ParameterStore *store = session.parameters()->store();
+        QVERIFY(
+            session.connection()->readLimits().isEmpty()); // id 1 reads its merged plan as before
         QCOMPARE(store->state(QStringLiteral("motor2.position")), ParameterStore::State::InSync);
 
         read.clear();
-        QVERIFY(session.showDevice(2));
+        QVERIFY(session.line()->showDevice(2));
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QVERIFY(read.first().first().toBool());
-        QVERIFY(session.readLimits().gapFree());
+        QVERIFY(session.connection()->readLimits().gapFree());
         QCOMPARE(store->state(QStringLiteral("motor2.position")),
                  ParameterStore::State::Unsupported);
         QCOMPARE(learnt.size(), 2); // nothing learnt twice
 
         read.clear();
-        QVERIFY(session.showDevice(1));
+        QVERIFY(session.line()->showDevice(1));
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QVERIFY(session.readLimits().isEmpty());
+        QVERIFY(session.connection()->readLimits().isEmpty());
         QCOMPARE(store->state(QStringLiteral("motor2.position")), ParameterStore::State::InSync);
     }
 
@@ -172,32 +176,32 @@ private Q_SLOTS:
         QMap<QString, QString> known;
         {
             DeviceSession first;
-            QSignalSpy read(&first, &DeviceSession::readFinished);
-            first.connectTo(ptyLink(host));
+            QSignalSpy read(first.parameters(), &SessionParameters::readFinished);
+            first.connection()->connectTo(ptyLink(host));
             QVERIFY(read.wait(10000));
-            known = first.knownReadLimits();
+            known = first.connection()->knownReadLimits();
         }
-        const QString key = DeviceSession::lineKey(ptyLink(host)) + QStringLiteral("#1");
+        const QString key = SessionConnection::lineKey(ptyLink(host)) + QStringLiteral("#1");
         QCOMPARE(known, (QMap<QString, QString>{{key, QStringLiteral("gaps,motor2.speed")}}));
 
         DeviceSession session;
-        session.setKnownReadLimits(
+        session.connection()->setKnownReadLimits(
             {{key, QStringLiteral("gaps,motor2.speed,not a key!")}, {QStringLiteral("x"), {}}});
-        QSignalSpy read(&session, &DeviceSession::readFinished);
-        QSignalSpy learnt(&session, &DeviceSession::readLimitsLearned);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
+        QSignalSpy learnt(session.connection(), &SessionConnection::readLimitsLearned);
         QSignalSpy messages(&session, &DeviceSession::message);
-        session.connectTo(ptyLink(host));
+        session.connection()->connectTo(ptyLink(host));
         QVERIFY(read.wait(10000));
         QVERIFY(read.first().first().toBool());
         QCOMPARE(learnt.size(), 0);
-        QCOMPARE(session.linkStats().exceptions, 0); // not one refused read
-        QCOMPARE(session.parameters()->state(QStringLiteral("motor2.speed")),
+        QCOMPARE(session.connection()->linkStats().exceptions, 0); // not one refused read
+        QCOMPARE(session.parameters()->store()->state(QStringLiteral("motor2.speed")),
                  ParameterStore::State::Unsupported);
         QStringList said;
         for (const QList<QVariant> &m : std::as_const(messages))
             said << m.at(1).toString();
         QCOMPARE(said.filter(QStringLiteral("Known from an earlier connection")).size(), 1);
-        QCOMPARE(session.knownReadLimits(), known);
+        QCOMPARE(session.connection()->knownReadLimits(), known);
     }
 };
 

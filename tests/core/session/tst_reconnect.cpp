@@ -4,6 +4,8 @@
 #include "bus/modbuslink.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/reconnector.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
@@ -86,7 +88,7 @@ class TestReconnect : public QObject
         m_current = path(name);
         m_host = startSim(m_current);
         QVERIFY(m_host);
-        Reconnector *r = m_session->reconnector();
+        Reconnector *r = m_session->connection()->reconnector();
         r->setEnabled(true);
         r->setDelaysMs({150, 300});
         r->setPortLister([this] { return listing(); });
@@ -95,8 +97,8 @@ class TestReconnect : public QObject
         s.portName = m_current;
         s.baud = 9600;
         s.deviceId = 1;
-        QSignalSpy read(m_session.get(), &DeviceSession::readFinished);
-        m_session->connectTo(s);
+        QSignalSpy read(m_session->parameters(), &SessionParameters::readFinished);
+        m_session->connection()->connectTo(s);
         QVERIFY(read.wait(10000));
         QVERIFY(read.first().first().toBool());
     }
@@ -104,7 +106,7 @@ class TestReconnect : public QObject
     // The adapter is pulled: the pty and its name vanish; the session notices.
     void pull()
     {
-        QSignalSpy lost(m_session.get(), &DeviceSession::linkLost);
+        QSignalSpy lost(m_session->connection(), &SessionConnection::linkLost);
         m_host.reset();
         m_current.clear();
         QTRY_COMPARE_WITH_TIMEOUT(lost.size(), 1, 10000);
@@ -122,35 +124,38 @@ private Q_SLOTS:
     void backUnderAnotherNameStopFirstThenStatus()
     {
         connectAt(QStringLiteral("ttyUSB0"));
-        Reconnector *r = m_session->reconnector();
+        Reconnector *r = m_session->connection()->reconnector();
         // A jog runs when the cable is pulled: its stop is due on reconnect.
         QVERIFY(m_session->jog()->press(1, JogController::Direction::Forward));
         QTRY_VERIFY(m_host->device()->running(1));
         pull();
         QTRY_COMPARE(r->state(), Reconnector::State::Waiting);
-        QVERIFY(!m_session->isConnected());
+        QVERIFY(!m_session->connection()->isConnected());
         // An attempt or two at the old name fails while nothing is plugged in.
         QTRY_VERIFY_WITH_TIMEOUT(r->attempt() >= 2, 5000);
-        QCOMPARE(m_session->linkState(), DeviceSession::LinkState::Disconnected);
+        QCOMPARE(m_session->connection()->linkState(), SessionConnection::LinkState::Disconnected);
 
         QSignalSpy dispatched(SessionInternals::link(*m_session), &ModbusLink::dispatched);
         QSignalSpy restored(r, &Reconnector::restored);
-        QSignalSpy read(m_session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(m_session->parameters(), &SessionParameters::readFinished);
         // Plugged in again, the system names it ttyUSB1.
         m_current = path(QStringLiteral("ttyUSB1"));
         m_host = startSim(m_current);
         QVERIFY(m_host);
         QTRY_COMPARE_WITH_TIMEOUT(restored.size(), 1, 10000);
-        QCOMPARE(m_session->settings().portName, m_current);
+        QCOMPARE(m_session->connection()->settings().portName, m_current);
         QVERIFY(read.wait(10000));
         QVERIFY(read.first().first().toBool());
         const QStringList sent = whats(dispatched);
         QVERIFY2(sent.size() >= 3, qPrintable(sent.join(QLatin1Char(','))));
         QCOMPARE(sent.first(), QStringLiteral("motor1.stop")); // the pending stop first
         QVERIFY2(sent.at(1).startsWith(QLatin1String("poll")), qPrintable(sent.at(1)));
-        QVERIFY(m_session->isConnected());
+        QVERIFY(m_session->connection()->isConnected());
         QCOMPARE(r->state(), Reconnector::State::Idle);
-        QVERIFY(m_session->parameters()->deviceValue(QStringLiteral("motor1.speed")).has_value());
+        QVERIFY(m_session->parameters()
+                    ->store()
+                    ->deviceValue(QStringLiteral("motor1.speed"))
+                    .has_value());
     }
 
     void emergencyStopWhileAwayIsSentFirst()
@@ -163,7 +168,7 @@ private Q_SLOTS:
         QVERIFY2(said.contains(QLatin1String("NOT")) && said.contains(QLatin1String("first")),
                  qPrintable(said));
         QSignalSpy dispatched(SessionInternals::link(*m_session), &ModbusLink::dispatched);
-        QSignalSpy restored(m_session->reconnector(), &Reconnector::restored);
+        QSignalSpy restored(m_session->connection()->reconnector(), &Reconnector::restored);
         m_current = path(QStringLiteral("ttyUSB0")); // back under its own name this time
         m_host = startSim(m_current);
         QVERIFY(m_host);
@@ -175,7 +180,7 @@ private Q_SLOTS:
     void cancelStopsTrying()
     {
         connectAt(QStringLiteral("ttyUSB0"));
-        Reconnector *r = m_session->reconnector();
+        Reconnector *r = m_session->connection()->reconnector();
         QSignalSpy cancelled(r, &Reconnector::cancelled);
         pull();
         QTRY_COMPARE(r->state(), Reconnector::State::Waiting);
@@ -188,14 +193,14 @@ private Q_SLOTS:
         QVERIFY(m_host);
         QTest::qWait(800); // longer than every pause: nothing may try again
         QCOMPARE(r->attempt(), attempts);
-        QVERIFY(!m_session->isConnected());
+        QVERIFY(!m_session->connection()->isConnected());
     }
 
     void userDisconnectIsNoLoss()
     {
         connectAt(QStringLiteral("ttyUSB0"));
-        m_session->disconnectFrom();
-        QCOMPARE(m_session->reconnector()->state(), Reconnector::State::Idle);
+        m_session->connection()->disconnectFrom();
+        QCOMPARE(m_session->connection()->reconnector()->state(), Reconnector::State::Idle);
     }
 
     void locateByIdLinkOrSerialNumber()

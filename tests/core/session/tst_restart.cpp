@@ -5,6 +5,9 @@
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/restartwatch.h"
 #include "session/sessionlog.h"
 #include "sim/host/simhost.h"
@@ -41,14 +44,14 @@ class TestRestart : public QObject
         connect(session.get(), &DeviceSession::message, this,
                 [this](DeviceSession::Severity, const QString &text) { said << text; });
         if (!ids.isEmpty()) {
-            session->setDeviceIds(ids);
-            session->setBackgroundIntervalMs(200);
+            session->line()->setDeviceIds(ids);
+            session->line()->setBackgroundIntervalMs(200);
         }
         LinkSettings s;
         s.portName = host->rtuPath();
         s.timeoutMs = 200;
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->connection()->connectTo(s);
         if (!read.wait(10000) && read.isEmpty())
             return false;
         return read.at(0).at(0).toBool();
@@ -59,7 +62,7 @@ class TestRestart : public QObject
         const Parameter *p = session->map().find(key);
         bool done = false;
         bool ok = false;
-        session->writeDevice(id, {{p, raw}}, [&](const WriteOutcome &w) {
+        session->line()->writeDevice(id, {{p, raw}}, [&](const WriteOutcome &w) {
             done = true;
             ok = w.ok;
         });
@@ -84,11 +87,12 @@ private Q_SLOTS:
         const qint64 factory = *sim->value(QStringLiteral("motor1.speed"));
         QVERIFY(write(1, QStringLiteral("motor1.speed"), factory + 22)); // not saved to flash
         // An edit the user holds, not written.
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor2.speed"), 150).isEmpty());
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor2.speed"), 150).isEmpty());
         QVERIFY(sim->command(QStringLiteral("motor1.move")));
         QTRY_VERIFY_WITH_TIMEOUT(!sim->running(1) && sim->position(1) != 0, 10000);
-        QTRY_VERIFY(session->parameters()->deviceValue(QStringLiteral("motor1.position")) ==
-                    sim->position(1));
+        QTRY_VERIFY(session->parameters()->store()->deviceValue(
+                        QStringLiteral("motor1.position")) == sim->position(1));
         session->motion()->references()->setReasonOn(1, 1, ReferenceTracker::Reason::Homed);
         QSignalSpy restarted(session.get(), &DeviceSession::controllerRestarted);
         QVERIFY(host->powerCycle(1500));
@@ -98,11 +102,13 @@ private Q_SLOTS:
         QVERIFY2(lost.join(QLatin1Char(' ')).contains(QLatin1String("motor1.speed")),
                  qPrintable(lost.join(QLatin1Char('\n'))));
         // What is shown is what the controller holds now.
-        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.speed")), factory);
-        QTRY_COMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.position")), 0);
-        QVERIFY(!session->parameters()->unsavedToFlash());
+        QCOMPARE(*session->parameters()->store()->deviceValue(QStringLiteral("motor1.speed")),
+                 factory);
+        QTRY_COMPARE(
+            *session->parameters()->store()->deviceValue(QStringLiteral("motor1.position")), 0);
+        QVERIFY(!session->parameters()->store()->unsavedToFlash());
         // The edit is still held; the reference is gone.
-        QCOMPARE(*session->parameters()->shownValue(QStringLiteral("motor2.speed")), 150);
+        QCOMPARE(*session->parameters()->store()->shownValue(QStringLiteral("motor2.speed")), 150);
         QCOMPARE(session->motion()->references()->reasonOn(1, 1),
                  ReferenceTracker::Reason::Restarted);
         QVERIFY2(heard().contains(QLatin1String("The controller restarted")), qPrintable(heard()));
@@ -116,8 +122,8 @@ private Q_SLOTS:
         QVERIFY(start({}));
         QVERIFY(host->device()->command(QStringLiteral("motor1.move")));
         QTRY_VERIFY_WITH_TIMEOUT(!host->device()->running(1), 10000);
-        QTRY_VERIFY(session->parameters()->deviceValue(QStringLiteral("motor1.position")) ==
-                    host->device()->position(1));
+        QTRY_VERIFY(session->parameters()->store()->deviceValue(
+                        QStringLiteral("motor1.position")) == host->device()->position(1));
         QVERIFY(host->device()->save(nullptr)); // everything in flash: no value can be lost
         const qint64 at = host->device()->position(1);
         // A controller at rest: zeros a moment after a motor was seen running may be that
@@ -148,11 +154,12 @@ private Q_SLOTS:
         QSignalSpy restarted(session.get(), &DeviceSession::controllerRestarted);
         QSignalSpy possible(session.get(), &DeviceSession::controllerMayHaveRestarted);
         session->command(QStringLiteral("motor1.home"));
-        QTRY_VERIFY_WITH_TIMEOUT(
-            host->device()->running(1) &&
-                session->parameters()->deviceValue(QStringLiteral("motor1.position")).value_or(0) !=
-                    0,
-            5000);
+        QTRY_VERIFY_WITH_TIMEOUT(host->device()->running(1) &&
+                                     session->parameters()
+                                             ->store()
+                                             ->deviceValue(QStringLiteral("motor1.position"))
+                                             .value_or(0) != 0,
+                                 5000);
         QVERIFY(host->powerCycle(1500));
         QTRY_VERIFY_WITH_TIMEOUT(heard().contains(QLatin1String("cannot be told")), 15000);
         QCOMPARE(restarted.size(), 0);
@@ -203,14 +210,16 @@ private Q_SLOTS:
         QSignalSpy restarted(session.get(), &DeviceSession::controllerRestarted);
         QSignalSpy possible(session.get(), &DeviceSession::controllerMayHaveRestarted);
         session->command(QStringLiteral("motor2.move"));
-        QTRY_VERIFY_WITH_TIMEOUT(
-            session->motion()->active(2) &&
-                session->parameters()->deviceValue(QStringLiteral("motor2.running")) == 1 &&
-                session->parameters()->deviceValue(QStringLiteral("motor2.position")).value_or(0) !=
-                    0 &&
-                session->parameters()->deviceValue(QStringLiteral("motor1.position")) ==
-                    sim->position(1),
-            10000);
+        QTRY_VERIFY_WITH_TIMEOUT(session->motion()->active(2) &&
+                                     session->parameters()->store()->deviceValue(
+                                         QStringLiteral("motor2.running")) == 1 &&
+                                     session->parameters()
+                                             ->store()
+                                             ->deviceValue(QStringLiteral("motor2.position"))
+                                             .value_or(0) != 0 &&
+                                     session->parameters()->store()->deviceValue(
+                                         QStringLiteral("motor1.position")) == sim->position(1),
+                                 10000);
         QVERIFY(host->powerCycle(1500));
         QVERIFY2(restarted.wait(15000), qPrintable(heard()));
         QCOMPARE(possible.size(), 0);
@@ -236,7 +245,7 @@ private Q_SLOTS:
         QVERIFY(start({1, 2, 3}));
         QVERIFY(write(2, QStringLiteral("motor1.speed"), 111));
         QVERIFY(write(3, QStringLiteral("motor1.speed"), 112));
-        QTRY_VERIFY_WITH_TIMEOUT(session->deviceStatus(2).cycles >= 2, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(session->line()->deviceStatus(2).cycles >= 2, 10000);
         QSignalSpy restarted(session.get(), &DeviceSession::controllerRestarted);
         QVERIFY(host->powerCycle(1500, 2));
         QVERIFY2(restarted.wait(20000), qPrintable(heard()));
@@ -250,7 +259,7 @@ private Q_SLOTS:
                  qPrintable(heard()));
         QTest::qWait(1500);
         QCOMPARE(restarted.size(), 1); // 1 and 3 went on
-        QCOMPARE(session->knownValues(2).value(QStringLiteral("motor1.speed")),
+        QCOMPARE(session->line()->knownValues(2).value(QStringLiteral("motor1.speed")),
                  *host->deviceAt(2)->value(QStringLiteral("motor1.speed")));
         QCOMPARE(*host->deviceAt(3)->value(QStringLiteral("motor1.speed")), 112);
     }

@@ -1,6 +1,7 @@
 // The session log file: every frame with its date and time, a file per connection, rotated at a
 // size, the oldest deleted beyond a total, and a real connection feeding it.
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
 
@@ -69,7 +70,7 @@ private Q_SLOTS:
         QSignalSpy started(&log, &SessionLog::fileStarted);
         log.beginConnection(QStringLiteral("/dev/ttyUSB0 9600 8N1 id 1"));
         for (int i = 0; i < 10; ++i)
-            session.traffic()->addEvent(QStringLiteral("entry %1").arg(i));
+            session.connection()->traffic()->addEvent(QStringLiteral("entry %1").arg(i));
         QCOMPARE(started.count(), 1);
         const QString first = log.currentFile();
         QVERIFY(first.contains(QStringLiteral("dev_ttyUSB0_9600_8N1_id_1")));
@@ -82,7 +83,7 @@ private Q_SLOTS:
         // Reconnecting starts another file; the first stays, whole.
         QTest::qWait(2); // the names carry milliseconds
         log.beginConnection(QStringLiteral("localhost:1502 id 1"));
-        session.traffic()->addEvent(QStringLiteral("second connection"));
+        session.connection()->traffic()->addEvent(QStringLiteral("second connection"));
         QCOMPARE(started.count(), 2);
         QVERIFY(log.currentFile() != first);
         QCOMPARE(readAll(first), text);
@@ -103,7 +104,8 @@ private Q_SLOTS:
         const QString line = QStringLiteral("x").repeated(80);
         int written = 0;
         for (; written < 2000; ++written) {
-            session.traffic()->addEvent(QStringLiteral("%1 %2").arg(written).arg(line));
+            session.connection()->traffic()->addEvent(
+                QStringLiteral("%1 %2").arg(written).arg(line));
             QVERIFY(QFileInfo(log.currentFile()).size() <= log.fileLimit());
             QVERIFY2(totalSize(log.files()) <= log.totalLimit(),
                      qPrintable(QString::number(totalSize(log.files()))));
@@ -137,8 +139,8 @@ private Q_SLOTS:
         SessionLog log(&session);
         log.setDirectory(blocker.fileName() + QStringLiteral("/logs")); // under a plain file
         QSignalSpy failed(&log, &SessionLog::failed);
-        session.traffic()->addEvent(QStringLiteral("a"));
-        session.traffic()->addEvent(QStringLiteral("b"));
+        session.connection()->traffic()->addEvent(QStringLiteral("a"));
+        session.connection()->traffic()->addEvent(QStringLiteral("b"));
         QCOMPARE(failed.count(), 1); // once, not per frame
         QVERIFY2(failed.first().first().toString().contains(blocker.fileName()),
                  qPrintable(failed.first().first().toString()));

@@ -2,6 +2,9 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "session/sessioninternals.h"
 #include "session/stepmove.h"
 #include "sim/host/simhost.h"
@@ -47,8 +50,8 @@ class TestStepMove : public QObject
         test::connectToSimulator(*session);
         QVERIFY(sim()->setValue(QStringLiteral("motor1.move_distance"), 1234));
         QVERIFY(sim()->setValue(QStringLiteral("motor1.direction"), 1));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
     }
     StepMoveResult run(const StepMoveRequest &request)
@@ -68,9 +71,10 @@ class TestStepMove : public QObject
     {
         QCOMPARE(sim()->value(QStringLiteral("motor1.move_distance")).value_or(-1), 1234);
         QCOMPARE(sim()->value(QStringLiteral("motor1.direction")).value_or(-1), 1);
-        QCOMPARE(session->parameters()->deviceValue(QStringLiteral("motor1.move_distance")),
-                 std::optional<qint64>(1234));
-        QCOMPARE(session->parameters()->deviceValue(QStringLiteral("motor1.direction")),
+        QCOMPARE(
+            session->parameters()->store()->deviceValue(QStringLiteral("motor1.move_distance")),
+            std::optional<qint64>(1234));
+        QCOMPARE(session->parameters()->store()->deviceValue(QStringLiteral("motor1.direction")),
                  std::optional<qint64>(1));
     }
 
@@ -124,13 +128,16 @@ private Q_SLOTS:
         QVERIFY2(r.ok(), qPrintable(r.text));
         QCOMPARE(sim()->position(1), -240);
         userValuesBack();
-        QVERIFY(!session->parameters()->unsavedToFlash());
+        QVERIFY(!session->parameters()->store()->unsavedToFlash());
     }
 
     void refusedOverPendingEdits()
     {
         connectWithUserMove();
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.move_distance"), 500).isEmpty());
+        QVERIFY(session->parameters()
+                    ->store()
+                    ->edit(QStringLiteral("motor1.move_distance"), 500)
+                    .isEmpty());
         QSignalSpy dispatched(SessionInternals::link(*session), &ModbusLink::dispatched);
         const QString why = session->stepMove()->start({StepMoveRequest::Kind::By, 1, 1});
         QVERIFY(why.contains(QStringLiteral("Write or revert them first")));
@@ -203,16 +210,16 @@ private Q_SLOTS:
     {
         session->setLive(false); // as stepcomctl
         test::useBuiltinSimulator(*session);
-        QSignalSpy connected(session.get(), &DeviceSession::connected);
-        session->connectSimulator();
+        QSignalSpy connected(session->connection(), &SessionConnection::connected);
+        session->connection()->connectSimulator();
         QTRY_COMPARE(connected.size(), 1);
         QVERIFY(connected.first().first().toBool());
-        QVERIFY(!session->isStatusActive());
+        QVERIFY(!session->status()->isActive());
         const qint64 from = sim()->position(2);
         const StepMoveResult r = run({StepMoveRequest::Kind::By, 2, -0.75});
         QVERIFY2(r.ok(), qPrintable(r.text));
         QCOMPARE(sim()->position(2), from - 75);
-        QVERIFY(!session->isStatusActive());
+        QVERIFY(!session->status()->isActive());
     }
 };
 

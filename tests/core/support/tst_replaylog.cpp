@@ -3,6 +3,8 @@
 // make a seek cheap agree with reading from the start; the session log's own header and marks.
 #include "logbuilder.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
 #include "support/replaylog.h"
@@ -310,7 +312,7 @@ private Q_SLOTS:
         sessionLog.setFile(path);
         test::connectToSimulator(session);
         sessionLog.noteUserAction(QStringLiteral("page: Motor 1"));
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
         QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QString text = QString::fromUtf8(f.readAll());
@@ -327,14 +329,14 @@ private Q_SLOTS:
         // The built-in simulator is named where the link comes up, so no log passes for a
         // machine's.
         QCOMPARE(kinds, (QStringList{"link-up built-in simulator, not a machine: " +
-                                         session.settings().describe(),
+                                         session.connection()->settings().describe(),
                                      "user page: Motor 1", "link-down disconnected by the user"}));
 
         // Everything the read-all read, as the store holds it.
         const QHash<QString, qint64> replayed =
             log.stateAt(log.durationMs()).devices.value(1).values(map());
         for (const Parameter *p : map().holdings()) {
-            const auto held = session.parameters()->deviceValue(p->key);
+            const auto held = session.parameters()->store()->deviceValue(p->key);
             if (held)
                 QCOMPARE(replayed.value(p->key, -1), *held);
         }

@@ -5,6 +5,7 @@
 // in the log's header.
 #include "logbuilder.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
 #include "support/replaylog.h"
@@ -320,7 +321,7 @@ private Q_SLOTS:
                                    {2, QStringLiteral("Z: \"lift\"")},
                                    {3, QStringLiteral("  ")}});
         test::connectToSimulator(session);
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
         ReplayLog log;
         QVERIFY2(log.open(path), qPrintable(log.errorString()));
         QVERIFY2(log.header().value(QStringLiteral("names")).startsWith(u'{'),

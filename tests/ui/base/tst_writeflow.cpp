@@ -1,6 +1,7 @@
 #include "base/writechangesdialog.h"
 #include "base/writeflow.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -43,7 +44,8 @@ private Q_SLOTS:
     void opensNothingWhileDisconnected()
     {
         WriteFlow flow(session.get(), parent.get());
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
         QVERIFY(!flow.openAll());
         QVERIFY(!flow.openFor({QStringLiteral("motor1.speed")}));
         QVERIFY(!flow.dialog());
@@ -54,7 +56,8 @@ private Q_SLOTS:
         test::connectToSimulator(*session);
         WriteFlow flow(session.get(), parent.get());
         QVERIFY(!flow.openAll());
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor2.speed"), 500).isEmpty());
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor2.speed"), 500).isEmpty());
         QVERIFY(!flow.openFor({QStringLiteral("motor1.speed")})); // only other keys are edited
         QVERIFY(!flow.dialog());
     }
@@ -63,14 +66,14 @@ private Q_SLOTS:
     {
         test::connectToSimulator(*session);
         WriteFlow flow(session.get(), parent.get());
-        ParameterStore *store = session->parameters();
+        ParameterStore *store = session->parameters()->store();
         QVERIFY(store->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
         QVERIFY(store->edit(QStringLiteral("motor2.speed"), 500).isEmpty());
         QVERIFY(flow.openFor({QStringLiteral("motor1.speed")}));
         QVERIFY(flow.dialog());
         QCOMPARE(keysOf(flow.dialog()->writes()), QStringList{QStringLiteral("motor1.speed")});
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // nothing before accepting
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         flow.dialog()->accept();
         QTRY_COMPARE(written.size(), 1);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
@@ -83,14 +86,16 @@ private Q_SLOTS:
     {
         test::connectToSimulator(*session);
         WriteFlow flow(session.get(), parent.get());
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor2.speed"), 500).isEmpty());
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor2.speed"), 500).isEmpty());
         QVERIFY(flow.openFor({QStringLiteral("motor1.speed")}));
         QPointer<WriteChangesDialog> first = flow.dialog();
         QVERIFY(flow.openAll());
         QTRY_VERIFY(!first); // closed and gone
         QCOMPARE(flow.dialog()->writes().size(), 2);
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         flow.dialog()->reject();
         QTest::qWait(100);
         QCOMPARE(written.size(), 0);

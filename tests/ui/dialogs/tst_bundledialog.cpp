@@ -7,6 +7,8 @@
 #include "map/factoryvalues.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "simsession.h"
 #include "support/supportbundle.h"
 #include "widgets/docks/devicelistdock.h"
@@ -109,14 +111,14 @@ private Q_SLOTS:
     // last read, with the names the list gives them, and the profile's sheet.
     void theReportIsTheMachineAsTheWindowKnowsIt()
     {
-        session->setDeviceIds({1, 2, 3});
+        session->line()->setDeviceIds({1, 2, 3});
         test::connectToSimulator(*session);
         QTRY_COMPARE(list->table()->rowCount(), 3);
         list->table()->item(1, 1)->setText(QStringLiteral("Y axis"));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        QVERIFY(session->showDevice(2));
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        QVERIFY(session->line()->showDevice(2));
         QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty(), 10000);
-        QVERIFY(session->showDevice(1));
+        QVERIFY(session->line()->showDevice(1));
         QTRY_VERIFY_WITH_TIMEOUT(read.size() >= 2, 10000);
 
         SupportBundleDialog *dialog = openDialog(profile);

@@ -24,6 +24,7 @@
 #include "pendant/pendantserver.h"
 #include "profile/backupstore.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "window/mainwindow.h"
 #include "window/pendantactions.h"
 #include "window/windowprobe.h"
@@ -152,7 +153,7 @@ private Q_SLOTS:
         DeviceSession session;
         MainWindow window(&session);
         window.show();
-        ParameterStore *store = session.parameters();
+        ParameterStore *store = session.parameters()->store();
         int edits = 0;
         for (const Parameter &p : session.map().parameters()) {
             if (p.writable() && store->edit(p.key, p.rawMax).isEmpty() && ++edits == 12)

@@ -5,6 +5,9 @@
 #include "line/idassigner.h"
 #include "map/factoryvalues.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/builtinsimulator.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -110,7 +113,7 @@ private Q_SLOTS:
         DeviceListDock *dock = WindowProbe(window).deviceListDock();
         QVERIFY(dock->isVisible());
         QCOMPARE(dock->nameOf(2), QStringLiteral("X table"));
-        QCOMPARE(session.deviceIds(), QList<int>{2});
+        QCOMPARE(session.line()->deviceIds(), QList<int>{2});
 
         // Two new controllers connected at once: refused in words, nothing written.
         QVERIFY(host->devices().at(1)->setValue(QStringLiteral("device.id"), 1));
@@ -137,7 +140,7 @@ private Q_SLOTS:
         dialog->reject();
         QTRY_VERIFY_WITH_TIMEOUT(!dialog->isVisible(), 20000);
         QCOMPARE(dialog->assigner()->state(), IdAssigner::State::Finished);
-        QCOMPARE(session.deviceIds(), (QList<int>{2, 3}));
+        QCOMPARE(session.line()->deviceIds(), (QList<int>{2, 3}));
         QVERIFY(session.isLive());
         QCOMPARE(dock->table()->rowCount(), 2);
         QCOMPARE(dock->rowTexts(0).at(1), QStringLiteral("X table"));
@@ -173,7 +176,7 @@ private Q_SLOTS:
         QSignalSpy added(&scan, &BusScanDialog::devicesAdded);
         click(&scan, "addAll");
         QCOMPARE(added.size(), 1);
-        QCOMPARE(session.deviceIds(), (QList<int>{2, 3}));
+        QCOMPARE(session.line()->deviceIds(), (QList<int>{2, 3}));
         QVERIFY2(scan.statusText().contains(QStringLiteral("Added to the device list: id 2,3")),
                  qPrintable(scan.statusText()));
         QCOMPARE(dock.table()->rowCount(), 2);
@@ -182,36 +185,36 @@ private Q_SLOTS:
         QVERIFY(scan.statusText().contains(QStringLiteral("on the device list already")));
 
         // Connected: the list and the names are kept with the connection settings.
-        session.connectTo(scan.settingsFor(0));
-        QTRY_VERIFY_WITH_TIMEOUT(session.isConnected(), 5000);
+        session.connection()->connectTo(scan.settingsFor(0));
+        QTRY_VERIFY_WITH_TIMEOUT(session.connection()->isConnected(), 5000);
         dock.setName(3, QStringLiteral("Z axis"));
         const DeviceListSettings saved = DeviceListSettings::load();
         QCOMPARE(saved.line, QStringLiteral("serial:%1").arg(host.rtuPath()));
         QCOMPARE(saved.ids, (QList<int>{2, 3}));
         QCOMPARE(saved.names.value(3), QStringLiteral("Z axis"));
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
 
         // The next connect to this line restores them; another line does not get them.
         DeviceSession again;
         DeviceListDock dockAgain(&again);
         LinkSettings s = line(host);
         s.deviceId = 3;
-        again.connectTo(s);
-        QTRY_VERIFY_WITH_TIMEOUT(again.isConnected(), 5000);
-        QCOMPARE(again.deviceIds(), (QList<int>{2, 3}));
+        again.connection()->connectTo(s);
+        QTRY_VERIFY_WITH_TIMEOUT(again.connection()->isConnected(), 5000);
+        QCOMPARE(again.line()->deviceIds(), (QList<int>{2, 3}));
         QCOMPARE(dockAgain.nameOf(3), QStringLiteral("Z axis"));
         QCOMPARE(dockAgain.table()->rowCount(), 2);
         QTRY_COMPARE_WITH_TIMEOUT(dockAgain.rowTexts(0).at(2), QStringLiteral("answering"), 15000);
-        again.disconnectFrom();
+        again.connection()->disconnectFrom();
 
         SimHost other;
         QVERIFY(startRtu(other, {1}));
         DeviceSession elsewhere;
         DeviceListDock dockElsewhere(&elsewhere);
-        elsewhere.connectTo(line(other));
-        QTRY_VERIFY_WITH_TIMEOUT(elsewhere.isConnected(), 5000);
-        QCOMPARE(elsewhere.deviceIds(), QList<int>{1});
-        elsewhere.disconnectFrom();
+        elsewhere.connection()->connectTo(line(other));
+        QTRY_VERIFY_WITH_TIMEOUT(elsewhere.connection()->isConnected(), 5000);
+        QCOMPARE(elsewhere.line()->deviceIds(), QList<int>{1});
+        elsewhere.connection()->disconnectFrom();
     }
 
     void addDeviceByIdRefusesBadIds()
@@ -223,7 +226,7 @@ private Q_SLOTS:
         QVERIFY(!dock.addDevice(4));
         QVERIFY(!dock.addDevice(0));
         QVERIFY(!dock.addDevice(256));
-        QVERIFY(!session.deviceIds().contains(0));
+        QVERIFY(!session.line()->deviceIds().contains(0));
     }
 
     void savedSettingsRoundTrip()
@@ -303,10 +306,10 @@ private Q_SLOTS:
         QAction *reset = WindowProbe(window).action(QStringLiteral("resetSimulator"));
         QVERIFY(reset && reset->isEnabled() && !reset->text().isEmpty());
         reset->trigger();
-        QCOMPARE(session.linkState(), DeviceSession::LinkState::Disconnected);
+        QCOMPARE(session.connection()->linkState(), SessionConnection::LinkState::Disconnected);
         QVERIFY(!QFileInfo::exists(flash));
-        QSignalSpy read(&session, &DeviceSession::readFinished);
-        session.connectSimulator();
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
+        session.connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 30000);
         const qint64 factory =
             FactoryValues::writable(session.map()).value(QStringLiteral("motor1.speed"));

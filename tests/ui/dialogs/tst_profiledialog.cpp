@@ -5,7 +5,9 @@
 #include "dialogs/profilesavedialog.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
-#include "session/sessioninternals.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -50,7 +52,7 @@ class TestProfileDialog : public QObject
     {
         QHash<QString, qint64> values;
         for (const Parameter *p : Profile::profileParameters(session->map(), true))
-            values.insert(p->key, *session->parameters()->deviceValue(p->key));
+            values.insert(p->key, *session->parameters()->store()->deviceValue(p->key));
         Profile p = Profile::fromValues(session->map(), values, true);
         p.name = QStringLiteral("Machine B");
         p.values[QStringLiteral("motor1.speed")] += 11;
@@ -171,7 +173,7 @@ private Q_SLOTS:
         dialog.open();
         QTRY_COMPARE_WITH_TIMEOUT(dialog.rowOf(QStringLiteral("motor2.pitch")), -1, 10000);
         QTRY_VERIFY(!dialog.isBusy());
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor2.pitch")),
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor2.pitch")),
                  ParameterStore::State::Unsupported);
         QCOMPARE(dialog.table()->rowCount(),
                  int(Profile::profileParameters(session->map(), true).size()) - 1);
@@ -214,7 +216,7 @@ private Q_SLOTS:
         // Someone else wrote it meanwhile: the controller holds the profile's value now.
         QVERIFY(sim()->setValue(QStringLiteral("arc.speed"),
                                 profile.values.value(QStringLiteral("arc.speed"))));
-        SessionInternals::link(*session)->traffic()->clear();
+        session->connection()->traffic()->clear();
         QSignalSpy applied(&dialog, &ProfileCompareDialog::applied);
         dialog.apply();
         QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
@@ -225,7 +227,7 @@ private Q_SLOTS:
                      text.contains(QStringLiteral("1 value the controller already held.")),
                  qPrintable(text));
         const Parameter *arc = session->map().find(QStringLiteral("arc.speed"));
-        for (const TrafficEntry &e : SessionInternals::link(*session)->traffic()->entries()) {
+        for (const TrafficEntry &e : session->connection()->traffic()->entries()) {
             if (e.direction == TrafficEntry::Direction::Sent && e.bytes.size() > 3 &&
                 quint8(e.bytes.at(1)) == 0x06)
                 QVERIFY(((quint8(e.bytes.at(2)) << 8) | quint8(e.bytes.at(3))) != arc->address);
@@ -243,7 +245,7 @@ private Q_SLOTS:
         // and the dialog names the values that were not.
         QSignalSpy applied(&dialog, &ProfileCompareDialog::applied);
         dialog.apply();
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
         QVERIFY(!applied.at(0).at(0).toBool());
         const QString text = dialog.resultLabel()->text();
@@ -258,7 +260,7 @@ private Q_SLOTS:
         Profile profile = changedProfile();
         profile.values = {{QStringLiteral("device.id"), 7}};
         for (const Parameter *p : Profile::profileParameters(session->map(), false))
-            profile.values.insert(p->key, *session->parameters()->deviceValue(p->key));
+            profile.values.insert(p->key, *session->parameters()->store()->deviceValue(p->key));
         ProfileCompareDialog dialog(session.get(), profile, QStringLiteral("id.json"),
                                     window.get());
         dialog.open();
@@ -267,14 +269,14 @@ private Q_SLOTS:
         QVERIFY(!dialog.applyButton()->isEnabled());
         dialog.includeLink()->setChecked(true);
         QCOMPARE(dialog.checkedKeys(), QStringList{"device.id"});
-        QSignalSpy linkChanged(session.get(), &DeviceSession::linkChanged);
+        QSignalSpy linkChanged(session->line(), &SessionLine::linkChanged);
         QSignalSpy applied(&dialog, &ProfileCompareDialog::applied);
         dialog.apply();
         QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
         QVERIFY2(applied.at(0).at(0).toBool(),
                  qPrintable(applied.at(0).at(2).toStringList().join(QLatin1Char('\n'))));
         QCOMPARE(simValue("device.id"), 7);
-        QCOMPARE(SessionInternals::link(*session)->settings().deviceId, 7); // the link followed
+        QCOMPARE(session->connection()->settings().deviceId, 7); // the link followed
         QCOMPARE(linkChanged.size(), 1);
     }
 
@@ -363,7 +365,8 @@ private Q_SLOTS:
 
         // From the edited values: the edit goes into the file, nothing to the controller.
         const qint64 speed = simValue("motor2.speed");
-        QCOMPARE(session->parameters()->edit(QStringLiteral("motor2.speed"), speed + 1), QString());
+        QCOMPARE(session->parameters()->store()->edit(QStringLiteral("motor2.speed"), speed + 1),
+                 QString());
         const QString fromEdits = dir.filePath(QStringLiteral("edited.json"));
         QVERIFY(actions.saveFromEditedFile(fromEdits));
         const ProfileParseResult edited = ProfileFile::load(fromEdits, session->map());

@@ -8,6 +8,7 @@
 #include "base/page.h"
 #include "help/guidewindow.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "simsession.h"
 #include "widgets/fields/aboutbox.h"
 #include "window/mainwindow.h"
@@ -125,7 +126,7 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         if (connected) {
             test::connectToSimulator(session);
-            QTRY_VERIFY(session.linkStats().answers > 0);
+            QTRY_VERIFY(session.connection()->linkStats().answers > 0);
         }
         QStringList problems;
         for (int i = 0; i < WindowProbe(window).pages().size(); ++i) {

@@ -5,6 +5,8 @@
 #include "pages/checklistpage.h"
 #include "profile/backupstore.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -55,14 +57,14 @@ class TestChecklistPage : public QObject
     void acceptWrite()
     {
         QTRY_VERIFY(writes->dialog());
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         writes->dialog()->accept();
         QTRY_COMPARE(written.size(), 1);
     }
     // Two more status polls: a switch state set now has been sampled.
     void pollTwice()
     {
-        QSignalSpy cycles(session.get(), &DeviceSession::statusCycleFinished);
+        QSignalSpy cycles(session->status(), &SessionStatus::statusCycleFinished);
         QTRY_VERIFY_WITH_TIMEOUT(cycles.size() >= 2, 10000);
     }
     void press(int input)
@@ -153,8 +155,8 @@ private Q_SLOTS:
     {
         // The register says IN3; the switch is wired to IN1.
         QVERIFY(sim()->setValue(QStringLiteral("motor1.limit_positive"), 3));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
         auto *w = step<ChecklistInputStep>(QStringLiteral("motor1.limit_positive"));
         QVERIFY(w);
@@ -187,8 +189,8 @@ private Q_SLOTS:
         auto *line = step<ChecklistMotionStep>(QStringLiteral("machine.interpolation"));
         QVERIFY(sim()->setValue(QStringLiteral("line.speed"), 600));
         QVERIFY(sim()->setValue(QStringLiteral("line.enabled"), 1));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
         line->pathChoice()->setCurrentIndex(1);
         line->runButton()->click();

@@ -3,6 +3,8 @@
 #include "line/busscanner.h"
 #include "pages/connectionpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -124,10 +126,11 @@ private Q_SLOTS:
         QCOMPARE(page.transport(), ConnectionPage::Transport::Simulator);
         QVERIFY(!page.findChild<QComboBox *>("port")->isVisible());
         click(&page, "connect");
-        QTRY_VERIFY_WITH_TIMEOUT(session.isConnected(), 5000);
-        QVERIFY(session.isSimulator());
+        QTRY_VERIFY_WITH_TIMEOUT(session.connection()->isConnected(), 5000);
+        QVERIFY(session.connection()->isSimulator());
         QTRY_COMPARE_WITH_TIMEOUT(
-            session.parameters()->deviceValue("motor1.step_angle").value_or(-1), qint64(180), 5000);
+            session.parameters()->store()->deviceValue("motor1.step_angle").value_or(-1),
+            qint64(180), 5000);
         QVERIFY2(page.statusText().contains("Connected to the built-in simulator"),
                  qPrintable(page.statusText()));
         // The simulator's pty is not a setting: the page stays on the simulator choice.
@@ -136,8 +139,8 @@ private Q_SLOTS:
         QVERIFY(page.findChild<QLabel *>("status")->text().contains("built-in simulator"));
         QVERIFY(!button(&page, "connect")->isEnabled());
         click(&page, "disconnect");
-        QTRY_VERIFY(!session.isConnected());
-        QVERIFY(!session.parameters()->deviceValue("motor1.step_angle").has_value());
+        QTRY_VERIFY(!session.connection()->isConnected());
+        QVERIFY(!session.parameters()->store()->deviceValue("motor1.step_angle").has_value());
         QVERIFY(page.statusText().contains("Disconnected"));
         QVERIFY(button(&page, "connect")->isEnabled());
     }
@@ -151,7 +154,7 @@ private Q_SLOTS:
         page.applySettings(s);
         click(&page, "connect");
         QTRY_VERIFY(page.statusText().contains("/dev/stepcom-no-such-port"));
-        QVERIFY(!session.isConnected());
+        QVERIFY(!session.connection()->isConnected());
         const auto *label = page.findChild<QLabel *>("status");
         QVERIFY(label->text().contains("Could not connect"));
         QVERIFY(label->text().contains("/dev/stepcom-no-such-port"));
@@ -212,15 +215,16 @@ private Q_SLOTS:
         click(&page, "connect");
         // Answers begin with the request's own bytes: said, and the option offered.
         QTRY_VERIFY_WITH_TIMEOUT(accept->isVisible(), 5000);
-        QVERIFY(!session.parameters()->deviceValue("motor1.step_angle").has_value());
+        QVERIFY(!session.parameters()->store()->deviceValue("motor1.step_angle").has_value());
         click(&page, "acceptEcho");
         QVERIFY(!accept->isVisible());
         QVERIFY(page.currentSettings().echo);
-        QTRY_VERIFY_WITH_TIMEOUT(session.isConnected() && session.settings().echo, 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(session.parameters()->deviceValue("motor1.step_angle").has_value(),
-                                 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            session.connection()->isConnected() && session.connection()->settings().echo, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            session.parameters()->store()->deviceValue("motor1.step_angle").has_value(), 5000);
         QVERIFY(!accept->isVisible());
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
     }
 
     void busScanFindsTheSimulator()
@@ -270,13 +274,13 @@ private Q_SLOTS:
         QSignalSpy requested(dialog, &BusScanDialog::connectRequested);
         click(dialog, "connect");
         QCOMPARE(requested.size(), 1);
-        QTRY_VERIFY_WITH_TIMEOUT(session.isConnected(), 5000);
-        QCOMPARE(session.settings().deviceId, 7);
-        QCOMPARE(session.settings().baud, 9600);
+        QTRY_VERIFY_WITH_TIMEOUT(session.connection()->isConnected(), 5000);
+        QCOMPARE(session.connection()->settings().deviceId, 7);
+        QCOMPARE(session.connection()->settings().baud, 9600);
         QCOMPARE(page.currentSettings().deviceId, 7);
-        QTRY_VERIFY_WITH_TIMEOUT(session.parameters()->deviceValue("motor1.step_angle").has_value(),
-                                 5000);
-        session.disconnectFrom();
+        QTRY_VERIFY_WITH_TIMEOUT(
+            session.parameters()->store()->deviceValue("motor1.step_angle").has_value(), 5000);
+        session.connection()->disconnectFrom();
     }
 
     void busScanDisconnectsFirstAndCancels()
@@ -293,14 +297,14 @@ private Q_SLOTS:
         s.portName = sim.rtuPath();
         page.applySettings(s);
         click(&page, "connect");
-        QTRY_VERIFY_WITH_TIMEOUT(session.isConnected(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(session.connection()->isConnected(), 5000);
 
         BusScanDialog *dialog = page.openBusScan();
         auto *warning = dialog->findChild<QLabel *>("warning");
         QVERIFY(warning->isVisible());
         QVERIFY(warning->text().contains("disconnects first"));
         click(dialog, "start");
-        QVERIFY(!session.isConnected());
+        QVERIFY(!session.connection()->isConnected());
         QVERIFY(dialog->isScanning());
         click(dialog, "cancel");
         QVERIFY(!dialog->isScanning()); // at once, not after the probe in flight

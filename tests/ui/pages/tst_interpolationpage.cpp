@@ -3,6 +3,7 @@
 #include "pages/interpolationpage.h"
 #include "pages/modespage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -60,7 +61,7 @@ class TestInterpolationPage : public QObject
         for (const ParameterWrite &w : e->writeDialog()->writes())
             QVERIFY(e->keys().contains(w.parameter->key)); // only this editor's values
         e->writeDialog()->accept();
-        QTRY_VERIFY_WITH_TIMEOUT(!session->parameters()->hasEdits(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!session->parameters()->store()->hasEdits(), 10000);
     }
     // Non-background pixels inside the plot area of the preview.
     static int drawnPixels(InterpolationPreview *preview)
@@ -207,8 +208,8 @@ private Q_SLOTS:
         QVERIFY(sim()->setValue(QStringLiteral("motor2.limit_negative"), 4));
         QVERIFY(sim()->setValue(QStringLiteral("motor2.home_input"), 4));
         sim()->setInput(4, SimDevice::InputForce::On);
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
         // From (10, -5) counter-clockwise round (0, -5) to (0, 5): the approach drives motor 2
         // from 0 in reverse, into its negative limit.
@@ -256,7 +257,7 @@ private Q_SLOTS:
         enter(arc, QStringLiteral("arc.end_y"), QStringLiteral("0"));
         enter(arc, QStringLiteral("arc.center_x"), QStringLiteral("0"));
         enter(arc, QStringLiteral("arc.center_y"), QStringLiteral("0"));
-        if (session->parameters()->hasEdits())
+        if (session->parameters()->store()->hasEdits())
             writeThroughDialog(arc);
         if (simValue(QStringLiteral("arc.enabled")) != 1) {
             QTRY_VERIFY(arc->startReason()->text().contains(QStringLiteral("is off")));
@@ -283,7 +284,7 @@ private Q_SLOTS:
         QVERIFY(page.preview()->plot()->pathIds().contains(QStringLiteral("invalid")));
         page.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-invalid.png")));
         QTest::keyClick(endY, Qt::Key_Return);
-        QVERIFY(session->parameters()->entry(QStringLiteral("arc.end_y")).edited);
+        QVERIFY(session->parameters()->store()->entry(QStringLiteral("arc.end_y")).edited);
         QVERIFY(!arc->startButton()->isEnabled());
         QVERIFY(arc->startReason()->text().contains(QStringLiteral("not written")));
         // Three points on one line: invalid, Start off with the reason; Stop stays.
@@ -412,7 +413,7 @@ private Q_SLOTS:
         QTest::qWait(300);
         QCOMPARE(simValue(QStringLiteral("mode.system")), 0);
         QCOMPARE(page.modeBox()->currentData().toInt(), 0);
-        QVERIFY(!session->parameters()->hasEdits()); // never held as an edit
+        QVERIFY(!session->parameters()->store()->hasEdits()); // never held as an edit
 
         // Yes: written at once and read back.
         page.chooseMode(3);
@@ -420,8 +421,9 @@ private Q_SLOTS:
         QCOMPARE(simValue(QStringLiteral("mode.system")), 0);
         page.confirmation()->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(simValue(QStringLiteral("mode.system")), 3, 10000);
-        QTRY_COMPARE(session->parameters()->deviceValue(QStringLiteral("mode.system")).value_or(-1),
-                     3);
+        QTRY_COMPARE(
+            session->parameters()->store()->deviceValue(QStringLiteral("mode.system")).value_or(-1),
+            3);
         QCOMPARE(page.modeBox()->currentData().toInt(), 3);
 
         // Round trips: edited, then written through the write dialog.

@@ -6,6 +6,8 @@
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -230,19 +232,21 @@ private Q_SLOTS:
         connectSim();
         for (const char *k : {"motor1.speed", "motor2.speed"})
             QVERIFY(sim()->setValue(QLatin1String(k), 1200)); // 100 mm/s: a quick test
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
         MotionPage page(session.get());
         showActive(&page);
         JogPanel *p = page.panel(1);
         QCOMPARE(p->moveText(), QStringLiteral("10.00 mm, Forward, at 1200 rpm"));
         QVERIFY(p->moveButton()->isEnabled());
-        QVERIFY(
-            session->parameters()->edit(QStringLiteral("motor1.move_distance"), 2000).isEmpty());
+        QVERIFY(session->parameters()
+                    ->store()
+                    ->edit(QStringLiteral("motor1.move_distance"), 2000)
+                    .isEmpty());
         QVERIFY(!p->moveButton()->isEnabled()); // the controller would move by what it holds
         QVERIFY(p->moveButton()->toolTip().contains(QLatin1String("not written")));
-        session->parameters()->revert(QStringLiteral("motor1.move_distance"));
+        session->parameters()->store()->revert(QStringLiteral("motor1.move_distance"));
         QVERIFY(p->moveButton()->isEnabled());
 
         p->moveButton()->click();
@@ -275,7 +279,7 @@ private Q_SLOTS:
         const QMetaObject::Connection motion =
             connect(session->motion(), &MotionSupervisor::changed, this, record);
         const QMetaObject::Connection values =
-            connect(session->parameters(), &ParameterStore::valueChanged, this, record);
+            connect(session->parameters()->store(), &ParameterStore::valueChanged, this, record);
         page.homeAllButton()->click();
         QTRY_VERIFY2_WITH_TIMEOUT(
             shown.filter(QLatin1String("motor 1 running")).size() > 0 ||
@@ -358,8 +362,8 @@ private Q_SLOTS:
         connectSim();
         QVERIFY(sim()->setValue(QStringLiteral("motor1.move_distance"), 20000)); // 200 mm
         QVERIFY(sim()->setValue(QStringLiteral("motor1.speed"), 120));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
         MotionPage page(session.get());
         showActive(&page);
@@ -383,8 +387,8 @@ private Q_SLOTS:
         connectSim();
         QVERIFY(sim()->setValue(QStringLiteral("motor1.move_distance"), 20000));
         QVERIFY(sim()->setValue(QStringLiteral("motor1.speed"), 120));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
         MotionSupervisor *motion = session->motion();
         session->command(QStringLiteral("motor1.home"));
@@ -439,22 +443,22 @@ private Q_SLOTS:
         QVERIFY2(page.bannerText().contains(QLatin1String("Motor 2 is already the 2nd")),
                  qPrintable(page.bannerText()));
         QCOMPARE(order->combo(0)->currentText(), QStringLiteral("Motor 1"));
-        QVERIFY(!session->parameters()->hasEdits());
+        QVERIFY(!session->parameters()->store()->hasEdits());
         // The same through the list, as a user picks it.
         Q_EMIT order->combo(1)->activated(order->combo(1)->findText(QStringLiteral("Motor 1")));
         QCOMPARE(order->combo(1)->currentText(), QStringLiteral("Motor 2"));
-        QVERIFY(!session->parameters()->hasEdits());
+        QVERIFY(!session->parameters()->store()->hasEdits());
 
         QVERIFY(order->choose(1, 0));
         QVERIFY(order->choose(0, 2));
         QVERIFY(!page.homeAllButton()->isEnabled()); // edited: the controller holds another order
         QVERIFY(page.applyOrderButton()->isEnabled());
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         page.applyOrderButton()->click();
         QTRY_COMPARE(written.size(), 1);
         QCOMPARE(simValue("homing.first"), 2);
         QCOMPARE(simValue("homing.second"), 0);
-        QVERIFY(!session->parameters()->hasEdits());
+        QVERIFY(!session->parameters()->store()->hasEdits());
         QVERIFY(page.homeAllButton()->isEnabled());
     }
 
@@ -464,17 +468,20 @@ private Q_SLOTS:
         MotionPage page(session.get());
         JogPanel *p = page.panel(2);
         QVERIFY(!p->applySpeedButton()->isEnabled());
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor2.microsteps"), 16).isEmpty());
+        QVERIFY(session->parameters()
+                    ->store()
+                    ->edit(QStringLiteral("motor2.microsteps"), 16)
+                    .isEmpty());
         p->speedField()->enterText(QStringLiteral("450"));
         QVERIFY(p->applySpeedButton()->isEnabled());
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         p->applySpeedButton()->click();
         QTRY_COMPARE(written.size(), 1);
         QCOMPARE(simValue("motor2.speed"), 450);
         QCOMPARE(simValue("motor2.microsteps"), 8); // the other edit waits for "Write changes"
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor2.speed")),
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor2.speed")),
                  ParameterStore::State::InSync);
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor2.microsteps")),
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor2.microsteps")),
                  ParameterStore::State::Edited);
         QVERIFY(!p->applySpeedButton()->isEnabled());
     }
@@ -496,7 +503,7 @@ private Q_SLOTS:
                     page.outputLed(3)->state() == Led::State::On);
         page.outputButton(QStringLiteral("outputs_all_off"))->click();
         QTRY_COMPARE(page.outputLed(3)->state(), Led::State::Off);
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QCOMPARE(page.outputLed(1)->state(), Led::State::Unknown);
         QVERIFY(!page.outputButton(QStringLiteral("output1_on"))->isEnabled());
     }
@@ -519,14 +526,14 @@ private Q_SLOTS:
                 page.resize(page.sizeHint().expandedTo(QSize(1000, 760)));
                 page.show();
                 page.keyboardCheck()->setChecked(true);
-                session->parameters()->edit(QStringLiteral("motor1.speed"), 450);
+                session->parameters()->store()->edit(QStringLiteral("motor1.speed"), 450);
                 page.homingOrder()->choose(0, 2);
                 QTest::mousePress(page.panel(2)->forwardButton(), Qt::LeftButton);
                 QTest::qWait(400);
                 page.grab().save(QStringLiteral("%1/motion-%2%3.png")
                                      .arg(dir, lang, isDark ? QStringLiteral("-dark") : QString()));
                 QTest::mouseRelease(page.panel(2)->forwardButton(), Qt::LeftButton);
-                session->parameters()->revertAll();
+                session->parameters()->store()->revertAll();
                 QTest::qWait(300);
             }
         }

@@ -4,6 +4,9 @@
 #include "pages/inputspage.h"
 #include "pages/motorpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -47,8 +50,8 @@ class TstPages : public QObject
     void connectSim() { test::connectToSimulator(*session); }
     void readAgain()
     {
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 5000);
         QVERIFY(read.at(0).at(0).toBool());
     }
@@ -125,7 +128,7 @@ private Q_SLOTS:
         MotorPage page(session.get(), 1);
         const QString before = page.derivedValues()->text(DerivedValues::Row::MoveTime);
         page.form()->field(QStringLiteral("motor1.microsteps"))->enterText(QStringLiteral("16"));
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.microsteps")),
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor1.microsteps")),
                  ParameterStore::State::Edited);
         QCOMPARE(page.derivedValues()->text(DerivedValues::Row::PulsesPerRev),
                  QStringLiteral("3200 pulses/rev"));
@@ -133,12 +136,12 @@ private Q_SLOTS:
                  QStringLiteral("6400 pulses"));
         QVERIFY(page.derivedValues()->text(DerivedValues::Row::MoveTime) != before);
         page.form()->field(QStringLiteral("motor1.pitch"))->enterText(QStringLiteral("0"));
-        QVERIFY(session->parameters()->state(QStringLiteral("motor1.pitch")) !=
+        QVERIFY(session->parameters()->store()->state(QStringLiteral("motor1.pitch")) !=
                 ParameterStore::State::Edited);
         // Nothing was written: the simulator still holds the old value after a few poll cycles.
         QTest::qWait(300);
         QCOMPARE(simValue("motor1.microsteps"), 8);
-        QVERIFY(session->parameters()->hasEdits());
+        QVERIFY(session->parameters()->store()->hasEdits());
     }
 
     void stopButtonStopsTheMotor()
@@ -150,7 +153,7 @@ private Q_SLOTS:
         QVERIFY(sim()->running(2));
         QTest::mouseClick(page.stopButton(), Qt::LeftButton);
         QTRY_VERIFY(!sim()->running(2));
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QTRY_VERIFY(!page.stopButton()->isEnabled());
     }
 
@@ -165,7 +168,9 @@ private Q_SLOTS:
                  QStringList{QStringLiteral("No suspicious wiring found.")});
 
         page.field(1, QStringLiteral("limit_positive"))->enterText(QStringLiteral("IN2"));
-        QCOMPARE(*session->parameters()->shownValue(QStringLiteral("motor1.limit_positive")), 2);
+        QCOMPARE(
+            *session->parameters()->store()->shownValue(QStringLiteral("motor1.limit_positive")),
+            2);
         QVERIFY(page.warningsView()->texts().contains(
             QStringLiteral("Motor 1: IN2 is both the positive and the negative limit")));
         QCOMPARE(simValue("motor1.limit_positive"), 1); // held, not written
@@ -181,7 +186,7 @@ private Q_SLOTS:
         QVERIFY(sim()->command(QStringLiteral("output1_on")));
         QTRY_COMPARE(page.outputLed(1)->state(), Led::State::On);
 
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QCOMPARE(page.inputLed(3)->state(), Led::State::Unknown);
     }
 
@@ -198,16 +203,16 @@ private Q_SLOTS:
         QVERIFY(box);
         QVERIFY2(box->text().contains(QLatin1String("ID 5")), qPrintable(box->text()));
         QCOMPARE(simValue("device.id"), 1); // asking changes nothing
-        QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
+        QSignalSpy changed(session->line(), &SessionLine::linkChanged);
         box->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(changed.size(), 1, 5000);
         QCOMPARE(sim()->deviceId(), 5);
-        QCOMPARE(session->settings().deviceId, 5);
+        QCOMPARE(session->connection()->settings().deviceId, 5);
         QVERIFY2(page.linkStatus().contains(QLatin1String("answers at ID 5")),
                  qPrintable(page.linkStatus()));
         QVERIFY(page.reconnectButton()->isHidden());
         readAgain(); // the session reads at the new id
-        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("device.id")), 5);
+        QCOMPARE(*session->parameters()->store()->deviceValue(QStringLiteral("device.id")), 5);
         QCOMPARE(page.idEditor()->value(), 5);
     }
 
@@ -251,7 +256,7 @@ private Q_SLOTS:
         QTest::mouseClick(page.applyLinkButton(), Qt::LeftButton);
         QVERIFY(page.confirmation());
         test::simHost(*session)->stop(); // the controller is gone: nothing will answer
-        QSignalSpy failed(session.get(), &DeviceSession::linkChangeFailed);
+        QSignalSpy failed(session->line(), &SessionLine::linkChangeFailed);
         page.confirmation()->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(failed.size(), 1, 10000);
         QVERIFY2(page.linkStatus().contains(QLatin1String("does not answer")),
@@ -261,10 +266,10 @@ private Q_SLOTS:
         QVERIFY(page.reconnectButton()->isEnabled());
         const LinkSettings previous = failed.at(0).at(0).value<LinkSettings>();
         QCOMPARE(previous.deviceId, 1);
-        QSignalSpy attempt(session.get(), &DeviceSession::connected);
+        QSignalSpy attempt(session->connection(), &SessionConnection::connected);
         QTest::mouseClick(page.reconnectButton(), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(attempt.size(), 1, 5000);
-        QCOMPARE(session->settings().deviceId, 1); // it tried the old settings
+        QCOMPARE(session->connection()->settings().deviceId, 1); // it tried the old settings
     }
 
     void factoryResetSaysWhatIsLost()
@@ -288,14 +293,14 @@ private Q_SLOTS:
         QCOMPARE(simValue("motor1.speed"), 600); // cancelled: nothing sent
 
         QTest::mouseClick(page.factoryResetButton(), Qt::LeftButton);
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         page.confirmation()->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(simValue("motor1.speed"), 300, 5000);
         QCOMPARE(simValue("motor2.limit_positive"), 3);
         QCOMPARE(sim()->deviceId(), 1);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1,
                                   5000); // the session reads what the controller holds now
-        QCOMPARE(*session->parameters()->deviceValue(QStringLiteral("motor1.speed")), 300);
+        QCOMPARE(*session->parameters()->store()->deviceValue(QStringLiteral("motor1.speed")), 300);
         QVERIFY2(page.flashStatus().contains(QLatin1String("restored")),
                  qPrintable(page.flashStatus()));
     }
@@ -305,9 +310,10 @@ private Q_SLOTS:
         connectSim();
         DevicePage page(session.get());
         QVERIFY(!page.unsavedWarningShown());
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.speed"), 420).isEmpty());
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
-        session->writeChanges(); // what MainWindow's "Write changes" does
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor1.speed"), 420).isEmpty());
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
+        session->parameters()->writeChanges(); // what MainWindow's "Write changes" does
         QTRY_COMPARE(written.size(), 1);
         QVERIFY(page.unsavedWarningShown());
         QTest::mouseClick(page.saveButton(), Qt::LeftButton);
@@ -339,10 +345,10 @@ private Q_SLOTS:
             QSKIP("set STEPCOM_SCREENSHOTS to a directory to render the pages");
         QDir().mkpath(dir);
         connectSim();
-        session->parameters()->edit(QStringLiteral("motor1.speed"), 450);
-        session->parameters()->edit(QStringLiteral("motor1.limit_positive"), 2);
-        session->parameters()->edit(QStringLiteral("motor2.home_input"), 3);
-        session->parameters()->setUnsavedToFlash(true);
+        session->parameters()->store()->edit(QStringLiteral("motor1.speed"), 450);
+        session->parameters()->store()->edit(QStringLiteral("motor1.limit_positive"), 2);
+        session->parameters()->store()->edit(QStringLiteral("motor2.home_input"), 3);
+        session->parameters()->store()->setUnsavedToFlash(true);
         sim()->setInput(4, SimDevice::InputForce::On);
         QTest::qWait(400);
         const QPalette dark = stepcom::test::darkPalette();
@@ -375,7 +381,7 @@ private Q_SLOTS:
         failed.requestLinkChange();
         failed.confirmation()->grab().save(dir + QStringLiteral("/device-confirm.png"));
         test::simHost(*session)->stop();
-        QSignalSpy done(session.get(), &DeviceSession::linkChangeFailed);
+        QSignalSpy done(session->line(), &SessionLine::linkChangeFailed);
         failed.confirmation()->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(done.size(), 1, 10000);
         failed.grab().save(dir + QStringLiteral("/device-failed.png"));

@@ -11,6 +11,8 @@
 #include "replayfixture.h"
 #include "session/jogcontroller.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/reconnector.h"
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
@@ -31,7 +33,7 @@ class TestReplayRecorded : public test::ReplayFixture
     // Writes the edits held in the store through the window's dialog, confirmed.
     void writeEdits()
     {
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         WindowProbe(*window).writeChanges();
         QTRY_VERIFY(WindowProbe(*window).writeDialog());
         WindowProbe(*window).writeDialog()->accept();
@@ -86,8 +88,8 @@ private Q_SLOTS:
         o.slowCoils = {{49, 450}};
         QString error;
         QVERIFY2(host->start(o, &error), qPrintable(error));
-        QVERIFY(session->reconnector()->isEnabled()); // the window turns it on
-        session->reconnector()->setDelaysMs({300, 600});
+        QVERIFY(session->connection()->reconnector()->isEnabled()); // the window turns it on
+        session->connection()->reconnector()->setDelaysMs({300, 600});
         LinkSettings s;
         s.portName = o.linkPath;
         s.baud = 9600;
@@ -96,8 +98,8 @@ private Q_SLOTS:
         s.adaptTimeout = false;
 
         // 1. connect and read everything
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectTo(s);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->connection()->connectTo(s);
         QTRY_VERIFY_WITH_TIMEOUT(!read.isEmpty(), 15000);
         QVERIFY(read.at(0).at(0).toBool());
         captureSettled(QStringLiteral("read-all"));
@@ -146,24 +148,27 @@ private Q_SLOTS:
         // 6. a late answer: output 1 on, its coil answered after the first attempt was given
         // up; the retry takes that answer, the retry's own comes late and is discarded. Should
         // a stalled machine let the first answer in on time, it goes again.
-        const quint64 staleBefore = session->linkStats().stale;
-        for (int attempt = 0; attempt < 3 && session->linkStats().stale == staleBefore; ++attempt) {
+        const quint64 staleBefore = session->connection()->linkStats().stale;
+        for (int attempt = 0;
+             attempt < 3 && session->connection()->linkStats().stale == staleBefore; ++attempt) {
             QSignalSpy commanded(session.get(), &DeviceSession::commandFinished);
             session->command(QStringLiteral("output1_on"));
             QTRY_VERIFY_WITH_TIMEOUT(!commanded.isEmpty(), 20000);
-            if (QTest::qWaitFor([&] { return session->linkStats().stale > staleBefore; }, 10000))
+            if (QTest::qWaitFor(
+                    [&] { return session->connection()->linkStats().stale > staleBefore; }, 10000))
                 break;
         }
-        QVERIFY(session->linkStats().stale > staleBefore);
+        QVERIFY(session->connection()->linkStats().stale > staleBefore);
         QTRY_VERIFY_WITH_TIMEOUT(host->device()->value(QStringLiteral("io.out1")) == 1, 10000);
         captureSettled(QStringLiteral("late answer"));
 
         // 7. the link lost (the port hangs up for 1.5 s) and back on its own, read again
-        QSignalSpy lost(session.get(), &DeviceSession::linkLost);
-        QSignalSpy readAgain(session.get(), &DeviceSession::readFinished);
+        QSignalSpy lost(session->connection(), &SessionConnection::linkLost);
+        QSignalSpy readAgain(session->parameters(), &SessionParameters::readFinished);
         host->hangUp(1500);
         QTRY_VERIFY_WITH_TIMEOUT(!lost.isEmpty(), 10000);
-        QTRY_VERIFY_WITH_TIMEOUT(session->isConnected() && !readAgain.isEmpty(), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(session->connection()->isConnected() && !readAgain.isEmpty(),
+                                 30000);
         QVERIFY(readAgain.last().at(0).toBool());
         captureSettled(QStringLiteral("reconnected"));
 
@@ -184,8 +189,8 @@ private Q_SLOTS:
         QTRY_COMPARE(store()->deviceValue(key("speed")), speed + 17);
         captureSettled(QStringLiteral("written again"));
 
-        session->disconnectFrom();
-        QTRY_VERIFY(!session->isConnected());
+        session->connection()->disconnectFrom();
+        QTRY_VERIFY(!session->connection()->isConnected());
         WindowProbe(*window).sessionLog()->setFile(QString());
         if (qEnvironmentVariableIsSet("REPLAY_KEEP_LOG"))
             QFile::copy(logPath, qEnvironmentVariable("REPLAY_KEEP_LOG"));
@@ -219,14 +224,14 @@ private Q_SLOTS:
     // replay shows what the live window showed.
     void replayShowsWhatTheLiveWindowShowed()
     {
-        const qsizetype sent = session->traffic()->entries().size();
+        const qsizetype sent = session->connection()->traffic()->entries().size();
         QVERIFY(openReplay(logPath));
         for (const Moment &m : std::as_const(moments)) {
             checkReplayAt(m);
             if (QTest::currentTestFailed())
                 return;
         }
-        QCOMPARE(session->traffic()->entries().size(), sent); // nothing went out
+        QCOMPARE(session->connection()->traffic()->entries().size(), sent); // nothing went out
     }
 
     // The faults are markers, each before the moment compared after it: the late answer to the

@@ -10,6 +10,8 @@
 #include "replay/replaybar.h"
 #include "replay/replayviews.h"
 #include "replayfixture.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionstatus.h"
 #include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/trafficmodel.h"
 #include "widgets/docks/trafficview.h"
@@ -103,7 +105,7 @@ private Q_SLOTS:
         const int cycle = 850;
         const qint64 moment = qint64(cycle) * kCycleMs + 50; // the running flag's answer
         seek(moment);
-        const StatusRecorder *recorder = session->recorder();
+        const StatusRecorder *recorder = session->status()->recorder();
         QVERIFY(!recorder->isEmpty());
         QVERIFY2(recorder->at(0).elapsedMs < moment - 60000,
                  qPrintable(QString::number(recorder->at(0).elapsedMs)));
@@ -197,7 +199,7 @@ private Q_SLOTS:
     {
         QVERIFY(openReplay(logPath));
         seek(850 * kCycleMs + 50);
-        const StatusRecorder *recorder = session->recorder();
+        const StatusRecorder *recorder = session->status()->recorder();
         const int samples = recorder->size();
         const int rows = (traffic()->flush(), traffic()->rowCount());
         QSignalSpy cleared(recorder, &StatusRecorder::cleared);

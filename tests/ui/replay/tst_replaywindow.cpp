@@ -20,6 +20,8 @@
 #include "replay/replayslider.h"
 #include "replayfixture.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessionlog.h"
 #include "session/stepmove.h"
 #include "simsession.h"
@@ -78,7 +80,7 @@ private Q_SLOTS:
         // 2. a write
         const qint64 speed = *store()->deviceValue(key("speed"));
         QVERIFY(store()->edit(key("speed"), speed + 17).isEmpty());
-        QSignalSpy written(session.get(), &DeviceSession::writeFinished);
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         WindowProbe(*window)
             .writeChanges(); // the window's dialog, confirmed: a user line of the log
         QTRY_VERIFY(WindowProbe(*window).writeDialog());
@@ -112,8 +114,8 @@ private Q_SLOTS:
             WindowProbe(*window).checklistPage()->stepWidget(QStringLiteral("motor1.direction"));
         QVERIFY(step);
         step->skipButton()->click();
-        session->disconnectFrom();
-        QTRY_VERIFY(!session->isConnected());
+        session->connection()->disconnectFrom();
+        QTRY_VERIFY(!session->connection()->isConnected());
         QVERIFY(!store()->deviceValue(key("position")).has_value());
         WindowProbe(*window).sessionLog()->setFile(QString());
         if (qEnvironmentVariableIsSet("REPLAY_KEEP_LOG"))
@@ -127,7 +129,8 @@ private Q_SLOTS:
     void replayShowsWhatTheSessionHeld()
     {
         const QString title = window->windowTitle();
-        const qsizetype sent = session->traffic()->entries().size(); // the recording's
+        const qsizetype sent =
+            session->connection()->traffic()->entries().size(); // the recording's
         QVERIFY(openReplay(logPath));
         QVERIFY(replay()->isActive());
         QVERIFY(window->windowTitle().contains(QStringLiteral("replay")));
@@ -141,7 +144,8 @@ private Q_SLOTS:
             checkReplayAt(m);
             if (QTest::currentTestFailed())
                 return;
-            QCOMPARE(session->traffic()->entries().size(), sent); // the session's own: nothing new
+            QCOMPARE(session->connection()->traffic()->entries().size(),
+                     sent); // the session's own: nothing new
         }
         QVERIFY2(
             replay()->momentStateText().contains(QStringLiteral("the link is up. Id 1 answers.")),
@@ -260,7 +264,8 @@ private Q_SLOTS:
     // Nothing that writes or moves a controller is enabled in a replay; E-STOP sends nothing.
     void nothingWritesInReplay()
     {
-        const qsizetype sent = session->traffic()->entries().size(); // the recording's
+        const qsizetype sent =
+            session->connection()->traffic()->entries().size(); // the recording's
         QVERIFY(openReplay(logPath));
         replay()->seek(replay()->log().durationMs() / 2);
         const QStringList enabled = test::enabledControls(
@@ -281,7 +286,7 @@ private Q_SLOTS:
         QTest::keyClick(window.get(), Qt::Key_F12);
         QVERIFY(said.size() >= 1);
         QVERIFY(said.at(0).at(1).toString().contains(QStringLiteral("nothing was sent")));
-        QCOMPARE(session->traffic()->entries().size(), sent);
+        QCOMPARE(session->connection()->traffic()->entries().size(), sent);
         QVERIFY(replay()->isActive());
     }
 
@@ -299,8 +304,8 @@ private Q_SLOTS:
         QVERIFY(!window->windowTitle().contains(QStringLiteral("replay")));
 
         QVERIFY(openReplay(logPath));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->connectSimulator();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->connection()->connectSimulator();
         QVERIFY(!replay()->isActive());
         QVERIFY(read.wait(10000));
         // While connected a replay is refused, with why.
@@ -308,8 +313,8 @@ private Q_SLOTS:
         QVERIFY(!replay()->openPath(logPath));
         QCOMPARE(failed.size(), 1);
         QVERIFY(failed.at(0).at(0).toString().contains(QStringLiteral("Disconnect")));
-        session->disconnectFrom();
-        QTRY_VERIFY(!session->isConnected());
+        session->connection()->disconnectFrom();
+        QTRY_VERIFY(!session->connection()->isConnected());
     }
 
     // A support bundle replays its log.

@@ -7,6 +7,7 @@
 #include "darkpalette.h"
 #include "pages/checklistpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "simsession.h"
 #include "widgets/docks/linkstatus.h"
 #include "widgets/docks/machinestrip.h"
@@ -137,7 +138,7 @@ private Q_SLOTS:
                   int(WindowProbe(window).pages().indexOf(WindowProbe(window).checklistPage()))),
               base);
         test::connectToSimulator(session);
-        QTRY_VERIFY(session.linkStats().answers > 0);
+        QTRY_VERIFY(session.connection()->linkStats().answers > 0);
         QTRY_VERIFY(WindowProbe(window).machineStrip()->motion(1) != MachineStrip::Motion::Unknown);
         checkStrip(WindowProbe(window).machineStrip(), QStringLiteral("connected"));
         // The status bar says the link's state in the same colours.

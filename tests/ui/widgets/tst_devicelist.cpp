@@ -1,4 +1,7 @@
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -36,14 +39,14 @@ private Q_SLOTS:
             DeviceSession session;
             DeviceListDock dock(&session);
             QCOMPARE(dock.backgroundIntervalBox()->value(), 1000);
-            QCOMPARE(session.backgroundIntervalMs(), 1000);
+            QCOMPARE(session.line()->backgroundIntervalMs(), 1000);
             dock.backgroundIntervalBox()->setValue(2500);
-            QCOMPARE(session.backgroundIntervalMs(), 2500);
+            QCOMPARE(session.line()->backgroundIntervalMs(), 2500);
         }
         DeviceSession session;
         DeviceListDock dock(&session);
         QCOMPARE(dock.backgroundIntervalBox()->value(), 2500);
-        QCOMPARE(session.backgroundIntervalMs(), 2500);
+        QCOMPARE(session.line()->backgroundIntervalMs(), 2500);
         QSettings().clear();
     }
 
@@ -51,7 +54,7 @@ private Q_SLOTS:
     {
         DeviceSession session;
         test::useBuiltinSimulator(session, {1, 2, 3});
-        session.setDeviceIds({1, 2});
+        session.line()->setDeviceIds({1, 2});
         test::connectToSimulator(session);
         DeviceListDock dock(&session);
         QCOMPARE(dock.table()->rowCount(), 2);
@@ -60,7 +63,7 @@ private Q_SLOTS:
         // Add device 3 by id; a second time is refused with a reason.
         dock.idBox()->setValue(3);
         dock.addButton()->click();
-        QCOMPARE(session.deviceIds(), (QList<int>{1, 2, 3}));
+        QCOMPARE(session.line()->deviceIds(), (QList<int>{1, 2, 3}));
         QCOMPARE(dock.table()->rowCount(), 3);
         QVERIFY(!dock.addDevice(3));
 
@@ -68,12 +71,12 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(dock.rowTexts(2).at(2), QStringLiteral("answering"), 15000);
         QCOMPARE(dock.rowTexts(2).at(4), QStringLiteral("0"));
 
-        QSignalSpy connected(&session, &DeviceSession::connected);
-        QSignalSpy read(&session, &DeviceSession::readFinished);
+        QSignalSpy connected(session.connection(), &SessionConnection::connected);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
         Q_EMIT dock.table()->cellClicked(2, 0);
-        QCOMPARE(session.deviceInView(), 3);
+        QCOMPARE(session.line()->deviceInView(), 3);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
-        QCOMPARE(*session.parameters()->deviceValue(QStringLiteral("device.id")), 3);
+        QCOMPARE(*session.parameters()->store()->deviceValue(QStringLiteral("device.id")), 3);
         QCOMPARE(connected.size(), 0);
         QVERIFY(dock.rowTexts(2).at(2).contains(QStringLiteral("in view")));
 
@@ -87,8 +90,8 @@ private Q_SLOTS:
     {
         DeviceSession session;
         test::useBuiltinSimulator(session, {1, 2});
-        session.setDeviceIds({1, 2});
-        session.setBackgroundIntervalMs(300);
+        session.line()->setDeviceIds({1, 2});
+        session.line()->setBackgroundIntervalMs(300);
         test::connectToSimulator(session);
         DeviceListDock dock(&session);
         test::simHost(session)->deviceAt(1)->setMachinePosition(1, 10.0);
@@ -96,7 +99,7 @@ private Q_SLOTS:
         QTRY_VERIFY(dock.rowTexts(0).at(2).startsWith(QStringLiteral("running: ")));
         QTRY_COMPARE_WITH_TIMEOUT(dock.rowTexts(0).at(3), QStringLiteral("motor 1"), 15000);
         QCOMPARE(dock.rowTexts(1).at(3), QStringLiteral("no"));
-        QVERIFY(session.showDevice(2));
+        QVERIFY(session.line()->showDevice(2));
         QCOMPARE(dock.rowTexts(0).at(3), QStringLiteral("motor 1")); // still, while 2 is in view
         QCOMPARE(dock.rowTexts(1).at(3), QStringLiteral("no"));
         QTRY_COMPARE_WITH_TIMEOUT(dock.rowTexts(0).at(2), QStringLiteral("answering"), 10000);

@@ -5,7 +5,8 @@
 #include "device/statusrecorder.h"
 #include "pages/plotpage.h"
 #include "session/devicesession.h"
-#include "session/sessioninternals.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionstatus.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -141,7 +142,7 @@ private Q_SLOTS:
         QTRY_COMPARE(dock.positionText(1), simPositionText(1));
         QCOMPARE(dock.runningLed(2)->state(), Led::State::Off); // the other motor never moved
 
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QTRY_COMPARE(dock.positionText(1), QStringLiteral("unknown"));
         QCOMPARE(dock.runningLed(1)->state(), Led::State::Unknown);
         QCOMPARE(dock.inputLed(1)->state(), Led::State::Unknown);
@@ -179,7 +180,7 @@ private Q_SLOTS:
         };
         QTRY_VERIFY_WITH_TIMEOUT(rate() > 0.5, 4000);
         QVERIFY2(row.rateText().endsWith(QLatin1String(" Hz")), qPrintable(row.rateText()));
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QTRY_COMPARE(row.rateText(), QStringLiteral("unknown"));
     }
 
@@ -192,17 +193,16 @@ private Q_SLOTS:
         QVERIFY(slow >= 0);
         box->setCurrentIndex(slow);
         Q_EMIT box->activated(slow);
-        QCOMPARE(SessionInternals::poller(*session)->intervalMs(), 500);
+        QCOMPARE(session->status()->intervalMs(), 500);
         // about two cycles a second now
-        const quint64 before = SessionInternals::link(*session)->stats().requests;
+        const quint64 before = session->connection()->linkStats().requests;
         QTest::qWait(1100);
-        QVERIFY2(SessionInternals::link(*session)->stats().requests - before <= 8,
-                 qPrintable(
-                     QString::number(SessionInternals::link(*session)->stats().requests - before)));
+        QVERIFY2(session->connection()->linkStats().requests - before <= 8,
+                 qPrintable(QString::number(session->connection()->linkStats().requests - before)));
         // a new dock (the next start) applies the remembered choice
-        SessionInternals::poller(*session)->setIntervalMs(100);
+        session->status()->setIntervalMs(100);
         dock = std::make_unique<StatusPollRow>(session.get());
-        QCOMPARE(SessionInternals::poller(*session)->intervalMs(), 500);
+        QCOMPARE(session->status()->intervalMs(), 500);
         QCOMPARE(dock->intervalBox()->currentData().toInt(), 500);
         QSettings().remove(QStringLiteral("monitor/pollIntervalMs"));
     }

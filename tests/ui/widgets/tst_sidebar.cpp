@@ -11,6 +11,8 @@
 #include "pages/motionpage.h"
 #include "pages/motorpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "simsession.h"
 #include "widgets/checklist/checkliststepwidget.h"
 #include "widgets/docks/pagesidebar.h"
@@ -282,7 +284,7 @@ private Q_SLOTS:
         const Parameter *p = session.map().find(key);
         QVERIFY(p);
         QCOMPARE(sidebar->editCount(motor1), 0);
-        QVERIFY(session.parameters()->edit(key, p->rawMax).isEmpty());
+        QVERIFY(session.parameters()->store()->edit(key, p->rawMax).isEmpty());
         QCOMPARE(sidebar->editCount(motor1), 1);
         QCOMPARE(sidebar->itemOf(motor1)->data(PageSidebar::EditsRole).toInt(), 1);
         QVERIFY(sidebar->stateText(motor1).contains(QStringLiteral("1 edit not written")));
@@ -290,7 +292,7 @@ private Q_SLOTS:
         QCOMPARE(sidebar->itemOf(motor1)->data(Qt::AccessibleDescriptionRole).toString(),
                  sidebar->stateText(motor1));
         QCOMPARE(sidebar->editCount(motor1 + 1), 0); // motor 2 has none
-        session.parameters()->revertAll();
+        session.parameters()->store()->revertAll();
         QCOMPARE(sidebar->itemOf(motor1)->data(PageSidebar::EditsRole).toInt(), 0);
     }
 
@@ -338,7 +340,7 @@ private Q_SLOTS:
         test::connectToSimulator(session);
         QTRY_VERIFY(!sidebar->itemOf(jog)->data(PageSidebar::OfflineRole).toBool());
         QVERIFY(sidebar->stateText(jog).isEmpty());
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
         QTRY_VERIFY(sidebar->itemOf(jog)->data(PageSidebar::OfflineRole).toBool());
     }
 

@@ -1,4 +1,5 @@
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "session/stepmove.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -63,7 +64,8 @@ private Q_SLOTS:
         QVERIFY2(panel.resultText().contains(QStringLiteral("done at -1.50 mm")),
                  qPrintable(panel.resultText()));
         // Pending edits of the single move: the buttons refuse and say why.
-        QVERIFY(session->parameters()->edit(QStringLiteral("motor1.direction"), 1).isEmpty());
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor1.direction"), 1).isEmpty());
         QVERIFY(!panel.plusButton()->isEnabled());
         QVERIFY(panel.plusButton()->toolTip().contains(QStringLiteral("Write or revert")));
     }

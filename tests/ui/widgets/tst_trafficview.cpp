@@ -3,6 +3,8 @@
 // file written for a real connection of the window.
 #include "base/language.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
 #include "widgets/docks/trafficmodel.h"
@@ -194,7 +196,7 @@ private Q_SLOTS:
         const QString text = QString::fromUtf8(f.readAll());
         QVERIFY2(text.contains(QStringLiteral("  TX  read     ")), qPrintable(text.left(2000)));
         QTRY_VERIFY(WindowProbe(window).trafficView()->model()->rowCount() > 0);
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
     }
 };
 

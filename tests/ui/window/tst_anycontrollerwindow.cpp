@@ -3,6 +3,8 @@
 // follows the controller's positions as an axis moves and says when it stands, the strip's
 // E-STOP stops it at once, and no message speaks of an echo or of a missing answer.
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -42,8 +44,8 @@ private Q_SLOTS:
         LinkSettings s;
         s.portName = host.rtuPath();
         s.baud = baud;
-        QSignalSpy read(&session, &DeviceSession::readFinished);
-        session.connectTo(s);
+        QSignalSpy read(session.parameters(), &SessionParameters::readFinished);
+        session.connection()->connectTo(s);
         QVERIFY(read.wait(10000) || !read.isEmpty());
         QVERIFY2(read.at(0).at(0).toBool(), qPrintable(said.join(QLatin1Char('\n'))));
 
@@ -76,7 +78,7 @@ private Q_SLOTS:
         const QString all = said.join(QLatin1Char('\n'));
         QVERIFY2(!all.contains(QLatin1String("echo"), Qt::CaseInsensitive), qPrintable(all));
         QVERIFY2(!all.contains(QLatin1String("no answer"), Qt::CaseInsensitive), qPrintable(all));
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
     }
 };
 

@@ -7,6 +7,7 @@
 #include "profile/profiledocument.h"
 #include "replay/replaymode.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "support/supportbundle.h"
 #include "window/givenfile.h"
 #include "window/mainwindow.h"
@@ -73,7 +74,7 @@ private Q_SLOTS:
         QVERIFY(window.openGivenFile(path));
         QVERIFY(WindowProbe(window).offlineActions()->document()->isOpen());
         QCOMPARE(WindowProbe(window).offlineActions()->document()->path(), path);
-        QVERIFY(session.parameters()->isFile());
+        QVERIFY(session.parameters()->store()->isFile());
         QVERIFY(window.windowTitle().contains(QStringLiteral("machine.json")));
     }
 
@@ -93,7 +94,7 @@ private Q_SLOTS:
                  QStringLiteral("from-the-field.txt"));
         WindowProbe(window).replayMode()->seek(
             WindowProbe(window).replayMode()->log().durationMs());
-        QCOMPARE(session.parameters()->deviceValue(QStringLiteral("motor1.speed")), 321);
+        QCOMPARE(session.parameters()->store()->deviceValue(QStringLiteral("motor1.speed")), 321);
     }
 
     void supportBundleIsReplayed()
@@ -138,8 +139,8 @@ private Q_SLOTS:
         MainWindow window(&session);
         const QString path = bytes.isEmpty() ? dir.filePath(name) : writeFile(name, bytes);
         QVERIFY(!window.openGivenFile(path));
-        QVERIFY(!session.parameters()->isFile());
-        QVERIFY(!session.parameters()->isReplay());
+        QVERIFY(!session.parameters()->store()->isFile());
+        QVERIFY(!session.parameters()->store()->isReplay());
         if (said.isEmpty()) // the profile reader says what is wrong, in its own box
             return;
         QVERIFY(WindowProbe(window).givenFileError());

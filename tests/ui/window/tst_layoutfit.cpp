@@ -13,6 +13,8 @@
 #include "base/page.h"
 #include "pages/connectionpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/messageview.h"
@@ -246,7 +248,7 @@ private Q_SLOTS:
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         test::connectToSimulator(session);
-        QTRY_VERIFY(session.linkStats().answers > 0);
+        QTRY_VERIFY(session.connection()->linkStats().answers > 0);
         MachineStrip *strip = WindowProbe(window).machineStrip();
         QVERIFY(strip);
         QLabel *position = strip->positionLabel(1);
@@ -258,7 +260,7 @@ private Q_SLOTS:
         session.setLive(false); // the poll would put the simulator's value back
         settle();
         for (qint64 raw : {p->rawMin, p->rawMax, qint64(0)}) {
-            session.parameters()->setDeviceValues({{p->key, raw}});
+            session.parameters()->store()->setDeviceValues({{p->key, raw}});
             settle();
             QString text;
             QVERIFY2(overflow(position, &text) <= 0, qPrintable(position->text()));
@@ -281,10 +283,11 @@ private Q_SLOTS:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         // Connected, so that every part of the link status shows (port, rate, errors).
         test::connectToSimulator(session);
-        QTRY_VERIFY(session.linkStats().answers > 0);
+        QTRY_VERIFY(session.connection()->linkStats().answers > 0);
         const QRect screen = QGuiApplication::primaryScreen()->availableGeometry();
         window.setGeometry(screen);
-        session.parameters()->setUnsavedToFlash(true); // the indicator the message must spare
+        session.parameters()->store()->setUnsavedToFlash(
+            true); // the indicator the message must spare
         const QString text = QStringLiteral(
             "Motor 2 did not confirm the written speed: the controller answered 1200 "
             "while 1500 was sent; the value was not saved, check the wiring of the RS-485 "

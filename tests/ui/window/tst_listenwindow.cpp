@@ -8,6 +8,8 @@
 #include "line/linksettingsstore.h"
 #include "pages/connectionpage.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "sim/serve/linehub.h"
@@ -90,16 +92,17 @@ private Q_SLOTS:
         line.portName = hub.paths().at(2);
         QVERIFY2(listen->start(line, &error), qPrintable(error));
         QVERIFY(listen->banner()->isVisible());
-        QVERIFY(session.parameters()->isReplay()); // values shown are not StepCom's reads
-        QVERIFY(!session.parameters()->shownValue(QStringLiteral("motor1.speed")));
+        QVERIFY(session.parameters()->store()->isReplay()); // values shown are not StepCom's reads
+        QVERIFY(!session.parameters()->store()->shownValue(QStringLiteral("motor1.speed")));
 
         QSerialPort plc;
         plc.setPortName(hub.paths().at(0));
         QVERIFY(plc.open(QIODevice::ReadWrite));
         // A write: in the store as heard, in the writes list.
         QVERIFY(ask(plc, rtu("01 06 00 05 03 09"), 8));
-        QTRY_COMPARE(session.parameters()->shownValue(QStringLiteral("motor1.speed")).value_or(0),
-                     777);
+        QTRY_COMPARE(
+            session.parameters()->store()->shownValue(QStringLiteral("motor1.speed")).value_or(0),
+            777);
         QCOMPARE(listen->writes()->count(), 1);
         QVERIFY2(listen->writes()->item(0)->text().contains(u"motor1.speed = 777 rpm"),
                  qPrintable(listen->writes()->item(0)->text()));
@@ -107,14 +110,17 @@ private Q_SLOTS:
         MachineStrip *strip = window.findChild<MachineStrip *>();
         QVERIFY(strip);
         QVERIFY(ask(plc, rtu("01 03 00 6B 00 04"), 13));
-        QTRY_VERIFY(
-            session.parameters()->shownValue(QStringLiteral("motor1.position")).has_value());
+        QTRY_VERIFY(session.parameters()
+                        ->store()
+                        ->shownValue(QStringLiteral("motor1.position"))
+                        .has_value());
         const QString before = strip->positionLabel(1)->text();
         QVERIFY(ask(plc, rtu("01 05 00 00 FF 00"), 8)); // motor1.move
         QTRY_VERIFY_WITH_TIMEOUT(
             [&] {
                 ask(plc, rtu("01 03 00 6B 00 04"), 13);
                 return session.parameters()
+                           ->store()
                            ->shownValue(QStringLiteral("motor1.position"))
                            .value_or(0) != 0;
             }(),
@@ -124,7 +130,7 @@ private Q_SLOTS:
 
         // Nothing that writes, jogs or polls is on; the window sent nothing.
         QCOMPARE(enabledControls(&window, {QStringLiteral("stopListening")}), QStringList());
-        QVERIFY(!session.isConnected());
+        QVERIFY(!session.connection()->isConnected());
         QCOMPARE(hub.bytesSent(2), 0);
 
         // The E-STOP asks first; nothing leaves until it is confirmed.
@@ -149,7 +155,7 @@ private Q_SLOTS:
         QVERIFY(hub.bytesSent(2) >= 16); // the E-STOP, then the read of the motion state
 
         listen->stop();
-        QVERIFY(!session.parameters()->isReplay());
+        QVERIFY(!session.parameters()->store()->isReplay());
         QVERIFY(!listen->banner()->isVisible());
         hub.close();
         host.stop();

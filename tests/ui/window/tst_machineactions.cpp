@@ -5,7 +5,8 @@
 #include "profile/profilefile.h"
 #include "profile/profilerollout.h"
 #include "session/devicesession.h"
-#include "session/sessioninternals.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -48,7 +49,7 @@ class TestMachineActions : public QObject
     QList<int> writeFrameIds() const
     {
         QList<int> ids;
-        for (const TrafficEntry &e : SessionInternals::link(*session)->traffic()->entries()) {
+        for (const TrafficEntry &e : session->connection()->traffic()->entries()) {
             if (e.direction == TrafficEntry::Direction::Sent && e.bytes.size() > 1 &&
                 (quint8(e.bytes.at(1)) == 0x06 || quint8(e.bytes.at(1)) == 0x10))
                 ids << quint8(e.bytes.at(0));
@@ -59,7 +60,7 @@ class TestMachineActions : public QObject
     // Three devices on the list, the second called "Y axis" by the user.
     void connectLine()
     {
-        session->setDeviceIds({1, 2, 3});
+        session->line()->setDeviceIds({1, 2, 3});
         test::connectToSimulator(*session);
         QTRY_COMPARE(list->table()->rowCount(), 3);
         list->table()->item(1, 1)->setText(QStringLiteral("Y axis"));
@@ -94,7 +95,7 @@ private Q_SLOTS:
         test::connectToSimulator(*session);
         QVERIFY(!actions->applyAction()->isEnabled());
         QVERIFY(!actions->reportAction()->isEnabled());
-        session->setDeviceIds({1, 2, 3});
+        session->line()->setDeviceIds({1, 2, 3});
         QTRY_VERIFY(actions->applyAction()->isEnabled());
         QVERIFY(actions->dumpAction()->isEnabled());
         QVERIFY(actions->reportAction()->isEnabled());
@@ -122,7 +123,7 @@ private Q_SLOTS:
         QCOMPARE(dialog->checkedDevices(), (QList<int>{1, 2, 3}));
         dialog->setDeviceChecked(1, false);
         QVERIFY(!dialog->writeButton()->isEnabled()); // nothing compared: nothing to confirm
-        SessionInternals::link(*session)->traffic()->clear();
+        session->connection()->traffic()->clear();
         dialog->compareButton()->click();
         QTRY_COMPARE_WITH_TIMEOUT(dialog->rows()->topLevelItemCount(), 2, 15000);
         QVERIFY(writeFrameIds().isEmpty());

@@ -8,6 +8,9 @@
 #include "scripteddevice.h"
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -122,9 +125,9 @@ private Q_SLOTS:
         session = std::make_unique<DeviceSession>();
         window = std::make_unique<MainWindow>(session.get());
         window->show();
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         test::useBuiltinSimulator(*session);
-        session->connectSimulator();
+        session->connection()->connectSimulator();
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
     }
 
@@ -139,7 +142,7 @@ private Q_SLOTS:
         ParameterField *speed = field(QStringLiteral("motor1.speed"));
         QVERIFY(speed);
         speed->enterText(QStringLiteral("450"));
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor1.speed")),
                  ParameterStore::State::Edited);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300); // nothing written yet
         QVERIFY(WindowProbe(*window).action(QStringLiteral("writeChanges"))->isEnabled());
@@ -157,9 +160,9 @@ private Q_SLOTS:
             ->findChild<QPushButton *>(QStringLiteral("writeButton"))
             ->click();
         QTRY_COMPARE(*sim()->value(QStringLiteral("motor1.speed")), 450);
-        QTRY_COMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
+        QTRY_COMPARE(session->parameters()->store()->state(QStringLiteral("motor1.speed")),
                      ParameterStore::State::InSync);
-        QVERIFY(session->parameters()->unsavedToFlash());
+        QVERIFY(session->parameters()->store()->unsavedToFlash());
     }
 
     void rejectedValueWritesNothing()
@@ -182,7 +185,7 @@ private Q_SLOTS:
         QVERIFY(!speed->reasonLabel()->text().contains(QLatin1String("motor1.")));
         auto *line = qobject_cast<QLineEdit *>(speed->editor());
         QCOMPARE(line->text(), QStringLiteral("99999")); // kept for correction
-        QVERIFY(!session->parameters()->hasEdits());
+        QVERIFY(!session->parameters()->store()->hasEdits());
         QVERIFY(!WindowProbe(*window).action(QStringLiteral("writeChanges"))->isEnabled());
         QTest::qWait(300);
         QCOMPARE(writes, 0);
@@ -197,7 +200,7 @@ private Q_SLOTS:
         speed->enterText(QStringLiteral("400"));
         QVERIFY(speed->rejectionText().isEmpty());
         QVERIFY(speed->reasonLabel()->isHidden());
-        QCOMPARE(session->parameters()->state(QStringLiteral("motor1.speed")),
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor1.speed")),
                  ParameterStore::State::Edited);
         // Revert drops a refused text too, and a write never leaves a stale reason behind.
         speed->enterText(QStringLiteral("0"));
@@ -211,22 +214,22 @@ private Q_SLOTS:
     // the Connection page with the likely causes, and the counts start again per connection.
     void aSilentPortIsNeverConnected()
     {
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         WindowProbe(*window).showPage(0);
         test::ScriptedDevice device;
         QString error;
         QVERIFY2(device.open(&error), qPrintable(error));
         device.setResponder([](const QByteArray &, int) { return std::nullopt; });
         QList<LinkHealth::State> seen;
-        connect(session->health(), &LinkHealth::stateChanged, this,
+        connect(session->connection()->health(), &LinkHealth::stateChanged, this,
                 [&seen](LinkHealth::State st) { seen << st; });
         auto *status = window->findChild<LinkStatus *>();
         LinkSettings s;
         s.portName = device.clientPath();
         s.timeoutMs = 100;
         s.retries = 0;
-        session->connectTo(s);
-        QTRY_COMPARE(session->health()->state(), LinkHealth::State::NotAnswering);
+        session->connection()->connectTo(s);
+        QTRY_COMPARE(session->connection()->health()->state(), LinkHealth::State::NotAnswering);
         QCOMPARE(status->stateText(), QStringLiteral("Not answering"));
         auto *page = qobject_cast<ConnectionPage *>(WindowProbe(*window).currentPage());
         QVERIFY(page); // no jump to Motor 1 with blank fields
@@ -234,14 +237,14 @@ private Q_SLOTS:
                      page->statusText().contains(QLatin1String("A and B swapped")),
                  qPrintable(page->statusText()));
         QVERIFY(!seen.contains(LinkHealth::State::Answering));
-        QVERIFY(session->linkStats().timeouts > 0);
+        QVERIFY(session->connection()->linkStats().timeouts > 0);
 
         // The controller answers now: "Connected", and on to the first motor.
         device.useRegisterDevice();
-        session->disconnectFrom();
-        session->connectTo(s);
-        QCOMPARE(session->linkStats().timeouts, quint64(0)); // per connection
-        QTRY_COMPARE(session->health()->state(), LinkHealth::State::Answering);
+        session->connection()->disconnectFrom();
+        session->connection()->connectTo(s);
+        QCOMPARE(session->connection()->linkStats().timeouts, quint64(0)); // per connection
+        QTRY_COMPARE(session->connection()->health()->state(), LinkHealth::State::Answering);
         QCOMPARE(status->stateText(), QStringLiteral("Connected"));
         QTRY_VERIFY(!qobject_cast<ConnectionPage *>(WindowProbe(*window).currentPage()));
     }
@@ -252,31 +255,31 @@ private Q_SLOTS:
     {
         DevicePage *device = window->findChild<DevicePage *>();
         QVERIFY(device);
-        QVERIFY(!session->parameters()->unsavedToFlash());
+        QVERIFY(!session->parameters()->store()->unsavedToFlash());
         session->saveToFlash();
         QTRY_VERIFY(device->flashStatus().startsWith(QLatin1String("Saved to flash")));
-        QSignalSpy changed(session.get(), &DeviceSession::linkChanged);
-        session->changeLink(1, 19200);
+        QSignalSpy changed(session->line(), &SessionLine::linkChanged);
+        session->line()->changeLink(1, 19200);
         QTRY_COMPARE(changed.size(), 1);
-        QVERIFY(session->parameters()->unsavedToFlash());
+        QVERIFY(session->parameters()->store()->unsavedToFlash());
         QVERIFY(device->unsavedWarningShown());
         QVERIFY2(!device->flashStatus().contains(QLatin1String("Saved")),
                  qPrintable(device->flashStatus()));
         QVERIFY(window->findChild<LinkStatus *>()->findChildren<QLabel *>().size() > 0);
         session->saveToFlash();
-        QTRY_VERIFY(!session->parameters()->unsavedToFlash());
+        QTRY_VERIFY(!session->parameters()->store()->unsavedToFlash());
         QVERIFY(!device->unsavedWarningShown());
         QVERIFY(device->flashStatus().startsWith(QLatin1String("Saved to flash")));
-        session->changeLink(7, 19200); // the id alone
+        session->line()->changeLink(7, 19200); // the id alone
         QTRY_COMPARE(changed.size(), 2);
-        QVERIFY(session->parameters()->unsavedToFlash());
+        QVERIFY(session->parameters()->store()->unsavedToFlash());
         QVERIFY(!device->flashStatus().contains(QLatin1String("Saved")));
     }
 
     // The write flow lists what the pages already flag, and asks before writing it anyway.
     void writeDialogListsKnownProblems()
     {
-        ParameterStore *store = session->parameters();
+        ParameterStore *store = session->parameters()->store();
         const qint64 speed = *store->deviceValue(QStringLiteral("motor1.speed"));
         QVERIFY(store->edit(QStringLiteral("motor1.speed"), speed + 10).isEmpty());
         WindowProbe(*window).writeChanges();
@@ -336,7 +339,7 @@ private Q_SLOTS:
         QStringList order;
         connect(SessionInternals::link(*session), &ModbusLink::dispatched, this,
                 [&order](quint64, const Request &r) { order << r.what; });
-        session->readAll(); // a queue of work in front
+        session->parameters()->readAll(); // a queue of work in front
         QTest::keyClick(WindowProbe(*window).writeDialog()->table(), Qt::Key_F12);
         QTRY_VERIFY(order.contains(QStringLiteral("estop")));
         QVERIFY2(order.indexOf(QStringLiteral("estop")) <= 1,

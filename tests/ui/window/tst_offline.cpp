@@ -9,6 +9,8 @@
 #include "profile/profiledocument.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
@@ -53,7 +55,7 @@ class TestOffline : public QObject
     QTemporaryDir dir;
 
     OfflineActions *offline() const { return WindowProbe(*window).offlineActions(); }
-    ParameterStore *store() const { return session->parameters(); }
+    ParameterStore *store() const { return session->parameters()->store(); }
     ParameterField *field(const QString &key) const
     {
         for (ParameterField *f : window->findChildren<ParameterField *>()) {
@@ -229,10 +231,10 @@ private Q_SLOTS:
         QTest::keyClick(window.get(), Qt::Key_F12);
         QVERIFY(said.size() >= 1);
         QVERIFY(said.at(0).at(1).toString().contains(QStringLiteral("nothing was sent")));
-        QCOMPARE(session->traffic()->entries().size(), 0);
+        QCOMPARE(session->connection()->traffic()->entries().size(), 0);
 
         // No link to lose: the file's values stay.
-        session->disconnectFrom();
+        session->connection()->disconnectFrom();
         QCOMPARE(store()->deviceValue(QStringLiteral("motor1.speed")), 420);
         QCOMPARE(store()->shownValue(QStringLiteral("motor1.speed")), 450);
     }
@@ -392,7 +394,7 @@ private Q_SLOTS:
         d->differencesOnly()->setChecked(true);
         QVERIFY(d->table()->isRowHidden(pitch));
         QVERIFY(!d->table()->isRowHidden(speed));
-        QCOMPARE(session->traffic()->entries().size(), 0); // no controller involved
+        QCOMPARE(session->connection()->traffic()->entries().size(), 0); // no controller involved
 
         // A bad file is named, and no comparison opens.
         const QString bad = writeBytes(QStringLiteral("bad.json"), "{ not json");

@@ -6,6 +6,7 @@
 #include "profile/profilefile.h"
 #include "replay/replaymode.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "session/sessionlog.h"
 #include "simsession.h"
 #include "testregistry.h"
@@ -152,7 +153,7 @@ private Q_SLOTS:
         window.show();
         test::connectToSimulator(session); // a session log to replay
         const QString path = WindowProbe(window).sessionLog()->currentFile();
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
         PendantServer *server = window.pendantActions()->server();
         QVERIFY(server->start(QHostAddress::LocalHost, 0));
         QVERIFY(WindowProbe(window).replayMode()->openPath(path));

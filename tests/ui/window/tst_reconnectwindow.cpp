@@ -2,6 +2,8 @@
 // Cancel button in the status bar, and shows the controller's values again when it is back.
 #include "base/language.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/reconnector.h"
 #include "sim/host/simhost.h"
 #include "widgets/docks/linkstatus.h"
@@ -47,7 +49,7 @@ class TestReconnectWindow : public QObject
     }
     void pull()
     {
-        QSignalSpy lost(m_session.get(), &DeviceSession::linkLost);
+        QSignalSpy lost(m_session->connection(), &SessionConnection::linkLost);
         m_host.reset();
         QTRY_COMPARE_WITH_TIMEOUT(lost.size(), 1, 10000);
     }
@@ -67,14 +69,14 @@ private Q_SLOTS:
         m_session = std::make_unique<DeviceSession>();
         m_window = std::make_unique<MainWindow>(m_session.get());
         m_window->show();
-        QVERIFY(m_session->reconnector()->isEnabled()); // the window turns it on
-        m_session->reconnector()->setDelaysMs({1500, 3000});
+        QVERIFY(m_session->connection()->reconnector()->isEnabled()); // the window turns it on
+        m_session->connection()->reconnector()->setDelaysMs({1500, 3000});
         LinkSettings s;
         s.portName = port();
         s.baud = 9600;
         s.deviceId = 1;
-        QSignalSpy read(m_session.get(), &DeviceSession::readFinished);
-        m_session->connectTo(s);
+        QSignalSpy read(m_session->parameters(), &SessionParameters::readFinished);
+        m_session->connection()->connectTo(s);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000);
         QVERIFY(countdown() && cancel());
         QVERIFY(!countdown()->isVisible());
@@ -97,9 +99,9 @@ private Q_SLOTS:
                  qPrintable(countdown()->text()));
         QVERIFY2(countdown()->text().contains(QLatin1String(" s")),
                  qPrintable(countdown()->text()));
-        QSignalSpy read(m_session.get(), &DeviceSession::readFinished);
+        QSignalSpy read(m_session->parameters(), &SessionParameters::readFinished);
         startSim();
-        QTRY_VERIFY_WITH_TIMEOUT(m_session->isConnected(), 15000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_session->connection()->isConnected(), 15000);
         QTRY_COMPARE_WITH_TIMEOUT(read.size(), 1, 10000); // everything read again
         QTRY_VERIFY(!countdown()->isVisible());
         QVERIFY(!cancel()->isVisible());
@@ -111,12 +113,12 @@ private Q_SLOTS:
         pull();
         QTRY_VERIFY(cancel()->isVisible());
         QTest::mouseClick(cancel(), Qt::LeftButton);
-        QCOMPARE(m_session->reconnector()->state(), Reconnector::State::Idle);
+        QCOMPARE(m_session->connection()->reconnector()->state(), Reconnector::State::Idle);
         QVERIFY(!countdown()->isVisible());
         QVERIFY(!cancel()->isVisible());
         startSim();
         QTest::qWait(2000); // past the first pause: nothing tries again
-        QVERIFY(!m_session->isConnected());
+        QVERIFY(!m_session->connection()->isConnected());
     }
 };
 

@@ -5,6 +5,9 @@
 #include "profile/backupstore.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -70,17 +73,17 @@ private Q_SLOTS:
     void backupBeforeEachRiskyOperation()
     {
         QVERIFY(sim()->setValue(QStringLiteral("motor1.speed"), 450));
-        QSignalSpy read(session.get(), &DeviceSession::readFinished);
-        session->readAll();
+        QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
+        session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
         runCommand([this] { session->saveToFlash(); }, QStringLiteral("save_to_flash"));
         runCommand([this] { session->factoryReset(); }, QStringLiteral("factory_reset"));
         QTRY_COMPARE(sim()->value(QStringLiteral("motor1.speed")).value_or(-1), 300);
         // The window reads everything after a reset: the store shows the factory values.
-        QTRY_COMPARE(session->parameters()->deviceValue(QStringLiteral("motor1.speed")),
+        QTRY_COMPARE(session->parameters()->store()->deviceValue(QStringLiteral("motor1.speed")),
                      std::optional<qint64>(300));
-        QSignalSpy linked(session.get(), &DeviceSession::linkChanged);
-        session->changeLink(7, session->settings().baud);
+        QSignalSpy linked(session->line(), &SessionLine::linkChanged);
+        session->line()->changeLink(7, session->connection()->settings().baud);
         QTRY_VERIFY_WITH_TIMEOUT(!linked.isEmpty(), 10000);
         QCOMPARE(sim()->deviceId(), 7);
         QCOMPARE(operations(),

@@ -13,6 +13,7 @@
 #include "pages/motionpage.h"
 #include "replay/replaymode.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
 #include "simsession.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/statusdock.h"
@@ -123,7 +124,7 @@ private Q_SLOTS:
         QAction *toggle = WindowProbe(window).statusDock()->toggleViewAction();
         toggle->trigger();
         QVERIFY(WindowProbe(window).statusDock()->isVisible());
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
     }
 
     // The update rate and the poll choice are where the link is described: the Connection
@@ -193,12 +194,12 @@ private Q_SLOTS:
         QCOMPARE(estop->text(), QStringLiteral("急停"));
         Language::instance().setLanguage(QStringLiteral("en"));
         // Connecting ends the replay: a controller to stop again.
-        session.connectSimulator();
-        QTRY_VERIFY(session.isConnected());
+        session.connection()->connectSimulator();
+        QTRY_VERIFY(session.connection()->isConnected());
         QTRY_VERIFY(estop->isEnabled());
         QVERIFY(menu->isEnabled());
         QVERIFY(estop->toolTip().contains(QStringLiteral("coil 00042")));
-        session.disconnectFrom();
+        session.connection()->disconnectFrom();
     }
 };
 

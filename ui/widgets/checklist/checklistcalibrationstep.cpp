@@ -2,6 +2,7 @@
 
 #include "commissioning/travelcalibration.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "session/stepmove.h"
 
 #include <QDoubleSpinBox>
@@ -100,7 +101,7 @@ void ChecklistCalibrationStep::onMoved(const StepMoveResult &r)
         return;
     setStatus(r.text);
     const Parameter *p = motorParameter("pitch");
-    m_pitchNow = p ? session()->parameters()->deviceValue(p->key) : std::nullopt;
+    m_pitchNow = p ? session()->parameters()->store()->deviceValue(p->key) : std::nullopt;
     m_moved = r.request.value;
     // A measurement is asked for only when the axis arrived where it was sent.
     m_measured->setEnabled(r.arrived && m_pitchNow);

@@ -2,6 +2,7 @@
 
 #include "commissioning/directioncheck.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionparameters.h"
 #include "session/stepmove.h"
 
 #include <QDoubleSpinBox>
@@ -49,7 +50,7 @@ ChecklistDirectionStep::ChecklistDirectionStep(DeviceSession *session, WriteFlow
     connect(m_move, &QPushButton::clicked, this, [this] {
         const Parameter *dir = motorParameter("direction");
         const auto current =
-            dir ? this->session()->parameters()->deviceValue(dir->key) : std::nullopt;
+            dir ? this->session()->parameters()->store()->deviceValue(dir->key) : std::nullopt;
         if (!current) {
             setStatus(tr("The direction register is not read yet."));
             return;

@@ -2,6 +2,8 @@
 
 #include "profile/profile.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QHBoxLayout>
 #include <QPointer>
@@ -24,14 +26,14 @@ ChecklistFlashStep::ChecklistFlashStep(DeviceSession *session, WriteFlow *writes
     needsController(m_save);
     connect(m_save, &QPushButton::clicked, this, [this] {
         DeviceSession *s = this->session();
-        if (!s->isConnected()) {
+        if (!s->connection()->isConnected()) {
             setStatus(tr("Not connected: nothing was sent."));
             return;
         }
         m_before.clear();
         QStringList unknown;
         for (const Parameter *p : Profile::profileParameters(s->map(), false)) {
-            if (const auto v = s->parameters()->deviceValue(p->key))
+            if (const auto v = s->parameters()->store()->deviceValue(p->key))
                 m_before.insert(p->key, *v);
             else
                 unknown << p->key;
@@ -63,7 +65,7 @@ void ChecklistFlashStep::readBack()
 {
     QList<const Parameter *> params = Profile::profileParameters(session()->map(), false);
     QPointer<ChecklistFlashStep> self(this);
-    session()->read(params, [self](const ReadOutcome &r) {
+    session()->parameters()->read(params, [self](const ReadOutcome &r) {
         if (!self)
             return;
         QStringList differ;
@@ -83,7 +85,7 @@ void ChecklistFlashStep::readBack()
                                        .arg(r.errors.join(QLatin1String("; "))));
             return;
         }
-        self->session()->parameters()->setDeviceValues(r.values);
+        self->session()->parameters()->store()->setDeviceValues(r.values);
         self->finishStep(StepResult::Passed, {{QStringLiteral("readback"),
                                                tr("%n setting(s) read back unchanged", nullptr,
                                                   int(self->m_before.size())),

@@ -1,6 +1,9 @@
 #include "widgets/checklist/checklistinputstep.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 
 #include <QHBoxLayout>
 #include <QPushButton>
@@ -14,7 +17,7 @@ QHash<QString, qint64> deviceValues(const DeviceSession &session)
 {
     QHash<QString, qint64> v;
     for (const Parameter *p : session.map().holdings()) {
-        if (const auto raw = session.parameters()->deviceValue(p->key))
+        if (const auto raw = session.parameters()->store()->deviceValue(p->key))
             v.insert(p->key, *raw);
     }
     return v;
@@ -46,7 +49,7 @@ ChecklistInputStep::ChecklistInputStep(DeviceSession *session, WriteFlow *writes
     connect(m_watch, &QPushButton::clicked, this, &ChecklistInputStep::startWatching);
     connect(m_done, &QPushButton::clicked, this, &ChecklistInputStep::judge);
     // Every poll after the baseline is a sample: a press that reaches one poll is seen.
-    connect(session, &DeviceSession::statusCycleFinished, this, [this](bool ok) {
+    connect(session->status(), &SessionStatus::statusCycleFinished, this, [this](bool ok) {
         if (!ok || !m_observation.started())
             return;
         if (const auto in =
@@ -85,7 +88,7 @@ QList<MotorWiring> ChecklistInputStep::wiring() const
 {
     QList<MotorWiring> out;
     const RegisterMap &map = session()->map();
-    const ParameterStore *store = session()->parameters();
+    const ParameterStore *store = session()->parameters()->store();
     for (int n = 1; n <= map.blockCount(QStringLiteral("motor")); ++n) {
         MotorWiring w;
         w.motor = n;
@@ -106,7 +109,7 @@ QList<MotorWiring> ChecklistInputStep::wiring() const
 void ChecklistInputStep::startWatching()
 {
     const auto baseline = InputObservation::inputs(session()->map(), deviceValues(*session()));
-    if (!session()->isConnected() || !baseline) {
+    if (!session()->connection()->isConnected() || !baseline) {
         setStatus(tr("The inputs are not known yet: connect and wait for the status."));
         return;
     }

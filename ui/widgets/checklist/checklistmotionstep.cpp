@@ -3,6 +3,8 @@
 #include "motion/motionjudge.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -29,14 +31,14 @@ ChecklistMotionStep::ChecklistMotionStep(DeviceSession *session, WriteFlow *writ
     body()->addLayout(row);
     needsController(m_run);
     connect(m_run, &QPushButton::clicked, this, [this] {
-        if (!this->session()->isConnected()) {
+        if (!this->session()->connection()->isConnected()) {
             setStatus(tr("Not connected: nothing was sent."));
             return;
         }
         const QString key = commandKey();
         StatusValues now;
         for (const Parameter *p : this->session()->map().holdings()) {
-            if (const auto v = this->session()->parameters()->deviceValue(p->key))
+            if (const auto v = this->session()->parameters()->store()->deviceValue(p->key))
                 now.insert(p->key, *v);
         }
         // Only what the supervisor will follow to its end is run: its verdict decides the step.

@@ -4,6 +4,8 @@
 #include "base/writechangesdialog.h"
 #include "base/writeflow.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -53,30 +55,31 @@ ChecklistStepWidget::ChecklistStepWidget(DeviceSession *session, WriteFlow *writ
     layout->addWidget(m_status);
     layout->addLayout(noteRow);
     layout->addStretch(1);
-    connect(session, &DeviceSession::linkStateChanged, this, [this] {
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, [this] {
         for (QPushButton *b : std::as_const(m_needsController))
-            b->setEnabled(m_session->isConnected());
+            b->setEnabled(m_session->connection()->isConnected());
     });
     connect(m_skip, &QPushButton::clicked, this, [this] {
         finishStep(StepResult::Skipped, {});
         setStatus(tr("Skipped."));
     });
     // A proposed fix: the write dialog's outcome decides.
-    connect(session, &DeviceSession::writeFinished, this, [this](const WriteOutcome &o) {
-        if (m_pendingKeys.isEmpty())
-            return;
-        bool all = true;
-        bool any = false;
-        for (const QString &k : std::as_const(m_pendingKeys)) {
-            all = all && o.verified(k);
-            any = any || o.written.contains(k); // a mismatch too: it was acknowledged
-        }
-        if (!any)
-            return; // another write (not ours)
-        m_pendingKeys.clear();
-        if (auto done = std::exchange(m_pendingDone, {}))
-            done(all);
-    });
+    connect(session->parameters(), &SessionParameters::writeFinished, this,
+            [this](const WriteOutcome &o) {
+                if (m_pendingKeys.isEmpty())
+                    return;
+                bool all = true;
+                bool any = false;
+                for (const QString &k : std::as_const(m_pendingKeys)) {
+                    all = all && o.verified(k);
+                    any = any || o.written.contains(k); // a mismatch too: it was acknowledged
+                }
+                if (!any)
+                    return; // another write (not ours)
+                m_pendingKeys.clear();
+                if (auto done = std::exchange(m_pendingDone, {}))
+                    done(all);
+            });
 }
 
 QString ChecklistStepWidget::statusText() const
@@ -105,7 +108,7 @@ const Parameter *ChecklistStepWidget::motorParameter(const char *local) const
 QString ChecklistStepWidget::deviceText(const QString &key) const
 {
     const Parameter *p = m_session->map().find(key);
-    const auto v = p ? m_session->parameters()->deviceValue(key) : std::nullopt;
+    const auto v = p ? m_session->parameters()->store()->deviceValue(key) : std::nullopt;
     return v ? p->displayRaw(*v, Language::instance().current()) : QStringLiteral("—");
 }
 
@@ -114,7 +117,7 @@ void ChecklistStepWidget::proposeWrite(const QList<std::pair<QString, qint64>> &
 {
     QStringList keys;
     for (const auto &[key, raw] : values) {
-        if (const QString e = m_session->parameters()->edit(key, raw); !e.isEmpty()) {
+        if (const QString e = m_session->parameters()->store()->edit(key, raw); !e.isEmpty()) {
             setStatus(e);
             return;
         }
@@ -147,7 +150,7 @@ void ChecklistStepWidget::changeEvent(QEvent *event)
 void ChecklistStepWidget::needsController(QPushButton *button)
 {
     m_needsController << button;
-    button->setEnabled(m_session->isConnected());
+    button->setEnabled(m_session->connection()->isConnected());
 }
 
 } // namespace stepcom

@@ -5,6 +5,9 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionstatus.h"
 #include "widgets/docks/devicelistsettings.h"
 
 #include <QEvent>
@@ -60,9 +63,9 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
     m_backgroundMs->setSingleStep(100);
     m_backgroundMs->setValue(QSettings()
                                  .value(QStringLiteral("devices/backgroundIntervalMs"),
-                                        std::max(100, m_session->backgroundIntervalMs()))
+                                        std::max(100, m_session->line()->backgroundIntervalMs()))
                                  .toInt());
-    m_session->setBackgroundIntervalMs(m_backgroundMs->value());
+    m_session->line()->setBackgroundIntervalMs(m_backgroundMs->value());
     m_backgroundLabel->setBuddy(m_backgroundMs);
     rateRow->addWidget(m_backgroundLabel);
     rateRow->addWidget(m_backgroundMs);
@@ -76,19 +79,23 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
     connect(m_table, &QTableWidget::cellChanged, this, &DeviceListDock::onCellChanged);
     connect(m_add, &QPushButton::clicked, this, [this] { addDevice(m_idBox->value()); });
     connect(m_backgroundMs, &QSpinBox::valueChanged, this, [this](int ms) {
-        m_session->setBackgroundIntervalMs(ms);
+        m_session->line()->setBackgroundIntervalMs(ms);
         QSettings().setValue(QStringLiteral("devices/backgroundIntervalMs"), ms);
     });
-    connect(m_session, &DeviceSession::deviceStatusChanged, this, &DeviceListDock::refresh);
-    connect(m_session, &DeviceSession::deviceInViewChanged, this, &DeviceListDock::refresh);
-    connect(m_session, &DeviceSession::deviceIdsChanged, this, [this] {
+    connect(m_session->line(), &SessionLine::deviceStatusChanged, this, &DeviceListDock::refresh);
+    connect(m_session->line(), &SessionLine::deviceInViewChanged, this, &DeviceListDock::refresh);
+    connect(m_session->line(), &SessionLine::deviceIdsChanged, this, [this] {
         refresh();
         saveList();
     });
-    connect(m_session, &DeviceSession::connected, this, &DeviceListDock::onConnected);
-    connect(m_session, &DeviceSession::disconnected, this, [this] { m_connectedBefore = false; });
-    connect(m_session, &DeviceSession::linkStateChanged, this, &DeviceListDock::refresh);
-    connect(m_session, &DeviceSession::statusCycleFinished, this, &DeviceListDock::refresh);
+    connect(m_session->connection(), &SessionConnection::connected, this,
+            &DeviceListDock::onConnected);
+    connect(m_session->connection(), &SessionConnection::disconnected, this,
+            [this] { m_connectedBefore = false; });
+    connect(m_session->connection(), &SessionConnection::linkStateChanged, this,
+            &DeviceListDock::refresh);
+    connect(m_session->status(), &SessionStatus::statusCycleFinished, this,
+            &DeviceListDock::refresh);
     connect(m_session->motion()->references(), &ReferenceTracker::deviceChanged, this,
             &DeviceListDock::refresh);
     connect(m_session->motion(), &MotionSupervisor::changed, this, &DeviceListDock::refresh);
@@ -97,7 +104,7 @@ DeviceListDock::DeviceListDock(DeviceSession *session, QWidget *parent)
 
 bool DeviceListDock::addDevice(int id, const QString &name)
 {
-    QList<int> ids = m_session->deviceIds();
+    QList<int> ids = m_session->line()->deviceIds();
     if (id < 1 || id > 255) {
         m_problem->setText(tr("Device ids are 1 to 255, not %1.").arg(id));
         return false;
@@ -112,7 +119,7 @@ bool DeviceListDock::addDevice(int id, const QString &name)
         Q_EMIT namesChanged();
     }
     ids.append(id);
-    m_session->setDeviceIds(ids);
+    m_session->line()->setDeviceIds(ids);
     refresh();
     return true;
 }
@@ -131,11 +138,12 @@ void DeviceListDock::setName(int id, const QString &name)
 void DeviceListDock::saveList() const
 {
     // Only a real line the session is on has a key.
-    if (!m_session->isConnected() || DeviceListSettings::lineKey(*m_session).isEmpty())
+    if (!m_session->connection()->isConnected() ||
+        DeviceListSettings::lineKey(*m_session).isEmpty())
         return;
     DeviceListSettings saved;
     saved.line = DeviceListSettings::lineKey(*m_session);
-    saved.ids = m_session->deviceIds();
+    saved.ids = m_session->line()->deviceIds();
     saved.names = m_names;
     saved.save();
 }
@@ -146,16 +154,16 @@ bool DeviceListDock::restoreList()
     if (saved.ids.size() < 2 || saved.line.isEmpty() ||
         saved.line != DeviceListSettings::lineKey(*m_session))
         return false;
-    if (m_session->deviceIds().size() > 1)
+    if (m_session->line()->deviceIds().size() > 1)
         return false; // the user (or a scan) named the devices for this connection already
     for (auto it = saved.names.cbegin(); it != saved.names.cend(); ++it)
         m_names.insert(it.key(), it.value());
     Q_EMIT namesChanged();
     QList<int> ids = saved.ids;
     // The device in view is on the list it belongs to.
-    if (!ids.contains(m_session->deviceInView()))
-        ids.prepend(m_session->deviceInView());
-    m_session->setDeviceIds(ids);
+    if (!ids.contains(m_session->line()->deviceInView()))
+        ids.prepend(m_session->line()->deviceInView());
+    m_session->line()->setDeviceIds(ids);
     refresh();
     return true;
 }
@@ -166,11 +174,11 @@ void DeviceListDock::onConnected(bool ok)
         return;
     // Only a new connection restores: a baud change reopens the port, the list stays.
     const bool restored = !std::exchange(m_connectedBefore, true) && restoreList();
-    if (!restored && m_session->deviceIds().size() > 1) {
-        QList<int> ids = m_session->deviceIds();
-        if (!ids.contains(m_session->deviceInView())) {
-            ids.prepend(m_session->deviceInView());
-            m_session->setDeviceIds(ids); // saves
+    if (!restored && m_session->line()->deviceIds().size() > 1) {
+        QList<int> ids = m_session->line()->deviceIds();
+        if (!ids.contains(m_session->line()->deviceInView())) {
+            ids.prepend(m_session->line()->deviceInView());
+            m_session->line()->setDeviceIds(ids); // saves
         } else {
             saveList();
         }
@@ -222,12 +230,12 @@ void DeviceListDock::endReplay()
 
 QList<int> DeviceListDock::ids() const
 {
-    return m_replay ? m_replay->ids : m_session->deviceIds();
+    return m_replay ? m_replay->ids : m_session->line()->deviceIds();
 }
 
 int DeviceListDock::inView() const
 {
-    return m_replay ? m_replay->inView : m_session->deviceInView();
+    return m_replay ? m_replay->inView : m_session->line()->deviceInView();
 }
 
 QString DeviceListDock::stateText(int id) const
@@ -252,7 +260,7 @@ QString DeviceListDock::stateText(int id) const
             state = r.answering ? tr("answering") : tr("not answering");
         return r.restartAt.isEmpty() ? state : tr("%1; restarted %2").arg(state, r.restartAt);
     }
-    if (!m_session->isConnected())
+    if (!m_session->connection()->isConnected())
         return tr("not connected");
     // A motion followed on a device (in view or not) says more than "answering".
     if (const QList<MotionStart> moving = m_session->motion()->activeOn(id); !moving.isEmpty()) {
@@ -260,8 +268,8 @@ QString DeviceListDock::stateText(int id) const
         return tr("running: %1")
             .arg(p ? p->label.text(Translators::current()) : moving.first().command);
     }
-    if (id == m_session->deviceInView()) {
-        switch (m_session->health()->state()) {
+    if (id == m_session->line()->deviceInView()) {
+        switch (m_session->connection()->health()->state()) {
         case LinkHealth::State::Answering:
             return tr("answering (in view)");
         case LinkHealth::State::NotAnswering:
@@ -270,7 +278,7 @@ QString DeviceListDock::stateText(int id) const
             return tr("asking (in view)");
         }
     }
-    switch (m_session->deviceStatus(id).state) {
+    switch (m_session->line()->deviceStatus(id).state) {
     case BusDeviceStatus::State::Answering:
         return tr("answering");
     case BusDeviceStatus::State::NotAnswering:
@@ -283,7 +291,7 @@ QString DeviceListDock::stateText(int id) const
 
 QString DeviceListDock::referencedText(int id) const
 {
-    if (m_replay || !m_session->isConnected())
+    if (m_replay || !m_session->connection()->isConnected())
         return tr("unknown");
     // References are followed on every device of the line.
     const QList<int> motors = m_session->motion()->references()->referencedMotors(id);
@@ -305,7 +313,8 @@ void DeviceListDock::refresh()
     m_table->setRowCount(int(ids.size()));
     for (int row = 0; row < ids.size(); ++row) {
         const int id = ids.at(row);
-        BusDeviceStatus status = m_replay ? BusDeviceStatus::of(id) : m_session->deviceStatus(id);
+        BusDeviceStatus status =
+            m_replay ? BusDeviceStatus::of(id) : m_session->line()->deviceStatus(id);
         QString name = m_names.value(id);
         QString stateTip;
         if (m_replay) { // the requests to it in the log up to the moment, and what failed
@@ -348,7 +357,7 @@ void DeviceListDock::onCellClicked(int row)
     if (m_replay)
         m_replay->choose(id);
     else
-        m_session->showDevice(id);
+        m_session->line()->showDevice(id);
 }
 
 void DeviceListDock::onCellChanged(int row, int column)

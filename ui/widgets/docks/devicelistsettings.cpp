@@ -2,6 +2,7 @@
 
 #include "session/devicesession.h"
 #include "session/idlist.h"
+#include "session/parts/sessionconnection.h"
 
 #include <QSettings>
 
@@ -16,9 +17,9 @@ const QString kNames = QStringLiteral("deviceNames");
 
 QString DeviceListSettings::lineKey(const DeviceSession &session)
 {
-    if (session.isSimulator())
+    if (session.connection()->isSimulator())
         return QString();
-    const LinkSettings s = session.settings();
+    const LinkSettings s = session.connection()->settings();
     if (s.transport == LinkSettings::Transport::Rtu)
         return QStringLiteral("serial:%1").arg(s.portName);
     return QStringLiteral("tcp:%1:%2").arg(s.host).arg(s.tcpPort);

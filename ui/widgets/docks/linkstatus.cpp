@@ -4,6 +4,8 @@
 
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/reconnector.h"
 #include "widgets/fields/elidedlabel.h"
 
@@ -37,7 +39,7 @@ LinkStatus::LinkStatus(DeviceSession *session, QWidget *parent)
     m_cancelReconnect->setObjectName(QStringLiteral("reconnectCancel"));
     m_reconnect->hide();
     m_cancelReconnect->hide();
-    Reconnector *reconnector = session->reconnector();
+    Reconnector *reconnector = session->connection()->reconnector();
     connect(m_cancelReconnect, &QPushButton::clicked, reconnector, &Reconnector::cancel);
     connect(reconnector, &Reconnector::stateChanged, this, &LinkStatus::refreshReconnect);
     connect(reconnector, &Reconnector::countdown, this, &LinkStatus::refreshReconnect);
@@ -45,9 +47,11 @@ LinkStatus::LinkStatus(DeviceSession *session, QWidget *parent)
     bold.setBold(true);
     m_unsaved->setFont(bold);
     m_state->setFont(bold);
-    connect(session, &DeviceSession::linkStateChanged, this, &LinkStatus::refresh);
-    connect(session->health(), &LinkHealth::stateChanged, this, &LinkStatus::refresh);
-    connect(session->parameters(), &ParameterStore::unsavedChanged, this, &LinkStatus::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &LinkStatus::refresh);
+    connect(session->connection()->health(), &LinkHealth::stateChanged, this, &LinkStatus::refresh);
+    connect(session->parameters()->store(), &ParameterStore::unsavedChanged, this,
+            &LinkStatus::refresh);
     connect(&m_timer, &QTimer::timeout, this, &LinkStatus::refresh);
     m_timer.start(1000);
     refresh();
@@ -72,12 +76,13 @@ QString LinkStatus::stateText() const
 void LinkStatus::refresh()
 {
     // Green "Connected" only once the controller answered; amber while it does not.
-    const LinkHealth *health = m_session->health();
+    const LinkHealth *health = m_session->connection()->health();
     // The state palette (statetone.h), as the machine strip says it.
     StateTone tone = StateTone::Normal;
     switch (health->state()) {
     case LinkHealth::State::Answering:
-        m_state->setText(m_session->isSimulator() ? tr("Connected (simulator)") : tr("Connected"));
+        m_state->setText(m_session->connection()->isSimulator() ? tr("Connected (simulator)")
+                                                                : tr("Connected"));
         tone = StateTone::Good;
         break;
     case LinkHealth::State::NotAnswering:
@@ -100,18 +105,20 @@ void LinkStatus::refresh()
     m_state->setToolTip(health->state() == LinkHealth::State::NotAnswering
                             ? LinkHealth::likelyCauses()
                             : QString());
-    m_where->setFullText(m_session->linkState() == DeviceSession::LinkState::Disconnected
+    m_where->setFullText(m_session->connection()->linkState() ==
+                                 SessionConnection::LinkState::Disconnected
                              ? QString()
-                             : m_session->settings().describe());
-    const LinkStats &s = m_session->linkStats();
+                             : m_session->connection()->settings().describe());
+    const LinkStats &s = m_session->connection()->linkStats();
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     if (m_lastMs > 0 && now > m_lastMs && s.answers >= m_lastAnswers)
         m_perSecond = double(s.answers - m_lastAnswers) * 1000.0 / double(now - m_lastMs);
     m_lastAnswers = s.answers;
     m_lastMs = now;
     // The status rate is the Connection page's, beside the choice of how often to read it.
-    m_rate->setFullText(
-        m_session->isConnected() ? tr("%1 transactions/s").arg(m_perSecond, 0, 'f', 1) : QString());
+    m_rate->setFullText(m_session->connection()->isConnected()
+                            ? tr("%1 transactions/s").arg(m_perSecond, 0, 'f', 1)
+                            : QString());
     // Counted from this connection's start (the session resets them on every connect).
     m_errors->setFullText(tr("errors: %1 (timeouts %2, CRC %3, exceptions %4, stale answers %5)")
                               .arg(s.errors())
@@ -120,12 +127,14 @@ void LinkStatus::refresh()
                               .arg(s.exceptions)
                               .arg(s.stale));
     // What the line showed: the controller's answer times, echo, the timeout in use.
-    m_errors->setFullToolTip(s.answers == 0 ? QString()
-                                            : tr("Line: %1 (at most %2 ms)")
-                                                  .arg(s.lineText(m_session->settings().deviceId))
-                                                  .arg(m_session->settings().timeoutMs));
-    m_unsaved->setText(m_session->parameters()->unsavedToFlash() ? tr("⚠ Not saved to flash")
-                                                                 : QString());
+    m_errors->setFullToolTip(
+        s.answers == 0 ? QString()
+                       : tr("Line: %1 (at most %2 ms)")
+                             .arg(s.lineText(m_session->connection()->settings().deviceId))
+                             .arg(m_session->connection()->settings().timeoutMs));
+    m_unsaved->setText(m_session->parameters()->store()->unsavedToFlash()
+                           ? tr("⚠ Not saved to flash")
+                           : QString());
     m_unsaved->setToolTip(
         tr("Parameters were written but not saved to the controller's flash: they are lost "
            "when it loses power. Use Save to flash."));
@@ -133,7 +142,7 @@ void LinkStatus::refresh()
 
 void LinkStatus::refreshReconnect()
 {
-    const Reconnector *r = m_session->reconnector();
+    const Reconnector *r = m_session->connection()->reconnector();
     m_reconnect->setVisible(r->isActive());
     m_cancelReconnect->setVisible(r->isActive());
     m_cancelReconnect->setText(tr("Cancel"));

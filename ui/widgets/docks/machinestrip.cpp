@@ -6,6 +6,9 @@
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/fields/elidedlabel.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/statetone.h"
@@ -145,17 +148,22 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     m_refresh.setSingleShot(true);
     m_refresh.setInterval(0);
     connect(&m_refresh, &QTimer::timeout, this, &MachineStrip::refresh);
-    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &key) {
-        if (key.startsWith(QLatin1String("io.")) || key.startsWith(kMotor))
-            scheduleRefresh();
-    });
-    connect(session->parameters(), &ParameterStore::originChanged, this,
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this,
+            [this](const QString &key) {
+                if (key.startsWith(QLatin1String("io.")) || key.startsWith(kMotor))
+                    scheduleRefresh();
+            });
+    connect(session->parameters()->store(), &ParameterStore::originChanged, this,
             &MachineStrip::scheduleRefresh);
-    connect(session, &DeviceSession::linkStateChanged, this, &MachineStrip::scheduleRefresh);
-    connect(session, &DeviceSession::linkStatsChanged, this, &MachineStrip::scheduleRefresh);
-    connect(session, &DeviceSession::deviceInViewChanged, this, &MachineStrip::scheduleRefresh);
-    connect(session, &DeviceSession::deviceIdsChanged, this, &MachineStrip::scheduleRefresh);
-    connect(session->health(), &LinkHealth::stateChanged, this, &MachineStrip::scheduleRefresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &MachineStrip::scheduleRefresh);
+    connect(session->connection(), &SessionConnection::linkStatsChanged, this,
+            &MachineStrip::scheduleRefresh);
+    connect(session->line(), &SessionLine::deviceInViewChanged, this,
+            &MachineStrip::scheduleRefresh);
+    connect(session->line(), &SessionLine::deviceIdsChanged, this, &MachineStrip::scheduleRefresh);
+    connect(session->connection()->health(), &LinkHealth::stateChanged, this,
+            &MachineStrip::scheduleRefresh);
     connect(session->motion()->references(), &ReferenceTracker::changed, this,
             &MachineStrip::scheduleRefresh);
     applyFonts();
@@ -243,7 +251,7 @@ QStringList MachineStrip::inputRoles(int n) const
 {
     QStringList roles;
     const RegisterMap &map = m_session->map();
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     const QString lang = Language::instance().current();
     for (int m = 1; m <= m_motors.size(); ++m) {
         for (const char *role : {"limit_positive", "limit_negative", "home_input"}) {
@@ -258,13 +266,14 @@ QStringList MachineStrip::inputRoles(int n) const
 MachineStrip::Motion MachineStrip::motionOf(int motor, std::optional<qint64> running) const
 {
     // A replayed log's moment is known as a connected controller's is.
-    if (!running || !(m_session->isConnected() || m_session->parameters()->isReplay()))
+    if (!running ||
+        !(m_session->connection()->isConnected() || m_session->parameters()->store()->isReplay()))
         return Motion::Unknown;
     if (*running)
         return Motion::Running;
     // Stopped with one of its limit inputs on: it stands at that limit.
     const RegisterMap &map = m_session->map();
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     for (const char *role : {"limit_positive", "limit_negative"}) {
         const Parameter *p = map.blockParameter(kMotor, motor, QLatin1String(role));
         const auto input = p ? store->deviceValue(p->key) : std::nullopt;
@@ -277,10 +286,10 @@ MachineStrip::Motion MachineStrip::motionOf(int motor, std::optional<qint64> run
 
 void MachineStrip::refresh()
 {
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     const RegisterMap &map = m_session->map();
     const QString lang = Language::instance().current();
-    const bool connected = m_session->isConnected() || store->isReplay();
+    const bool connected = m_session->connection()->isConnected() || store->isReplay();
     const ReferenceTracker *references = m_session->motion()->references();
     for (int m = 0; m < m_motors.size(); ++m) {
         MotorView &v = m_motors[m];
@@ -363,7 +372,7 @@ void MachineStrip::endReplay()
 void MachineStrip::refreshLink()
 {
     StateTone tone = StateTone::Unknown;
-    LinkHealth::State state = m_session->health()->state();
+    LinkHealth::State state = m_session->connection()->health()->state();
     if (m_replay)
         state = !m_replay->linkUp     ? LinkHealth::State::Closed
                 : m_replay->answering ? LinkHealth::State::Answering
@@ -390,17 +399,17 @@ void MachineStrip::refreshLink()
                            ? LinkHealth::likelyCauses()
                            : QString());
     m_link->setAccessibleName(tr("Link: %1").arg(m_link->text()));
-    const int id = m_session->deviceInView();
-    const LinkStats &stats = m_session->linkStats();
+    const int id = m_session->line()->deviceInView();
+    const LinkStats &stats = m_session->connection()->linkStats();
     ElidedLabel *line = m_line;
-    const bool known =
-        (m_session->isConnected() && stats.answers > 0) || (m_replay && !m_replay->line.isEmpty());
+    const bool known = (m_session->connection()->isConnected() && stats.answers > 0) ||
+                       (m_replay && !m_replay->line.isEmpty());
     line->setFullText(m_replay ? (known ? m_replay->line : kUnknown)
                       : known  ? stats.lineText(id)
                                : kUnknown);
     setTone(line, known ? StateTone::Normal : StateTone::Unknown);
     line->setAccessibleName(tr("Line: %1").arg(line->fullText()));
-    const QList<int> ids = m_session->deviceIds();
+    const QList<int> ids = m_session->line()->deviceIds();
     m_device->setVisible(ids.size() > 1);
     const QString name = m_namer ? m_namer(id) : QString();
     m_device->setFullText(name.isEmpty() ? tr("Device %1").arg(id)

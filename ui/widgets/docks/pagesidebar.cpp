@@ -3,6 +3,8 @@
 #include "device/parameterstore.h"
 #include "session/devicesession.h"
 #include "session/linkhealth.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/docks/pagesidebardelegate.h"
 #include "widgets/fields/lineicon.h"
 
@@ -58,9 +60,12 @@ PageSidebar::PageSidebar(DeviceSession *session, QWidget *parent)
             chosen.first()->data(PageRole).toInt() >= 0)
             setCurrentItem(chosen.first());
     });
-    connect(session->parameters(), &ParameterStore::editsChanged, this, &PageSidebar::refresh);
-    connect(session->health(), &LinkHealth::stateChanged, this, &PageSidebar::refresh);
-    connect(session, &DeviceSession::linkStateChanged, this, &PageSidebar::refresh);
+    connect(session->parameters()->store(), &ParameterStore::editsChanged, this,
+            &PageSidebar::refresh);
+    connect(session->connection()->health(), &LinkHealth::stateChanged, this,
+            &PageSidebar::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &PageSidebar::refresh);
 }
 
 void PageSidebar::addPage(Page *page)
@@ -127,7 +132,7 @@ int PageSidebar::editCount(int page) const
         return 0;
     const QStringList keys = m_pages.at(page)->keys();
     int edits = 0;
-    for (const QString &key : m_session->parameters()->editedKeys())
+    for (const QString &key : m_session->parameters()->store()->editedKeys())
         edits += keys.contains(key) ? 1 : 0;
     return edits;
 }
@@ -135,7 +140,7 @@ int PageSidebar::editCount(int page) const
 bool PageSidebar::isOffline(int page) const
 {
     return page >= 0 && page < m_pages.size() && m_pages.at(page)->needsDevice() &&
-           !m_session->health()->isAnswering();
+           !m_session->connection()->health()->isAnswering();
 }
 
 QString PageSidebar::stateText(int page) const
@@ -150,7 +155,8 @@ QString PageSidebar::stateText(int page) const
                               : tr("steps passed not known"));
     }
     if (isOffline(page))
-        parts << tr("needs a controller that answers (%1)").arg(m_session->health()->stateText());
+        parts << tr("needs a controller that answers (%1)")
+                     .arg(m_session->connection()->health()->stateText());
     return parts.join(QStringLiteral("; "));
 }
 

@@ -4,6 +4,8 @@
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/fields/led.h"
 
 #include <QEvent>
@@ -124,12 +126,14 @@ StatusDock::StatusDock(DeviceSession *session, QWidget *parent)
     m_refresh.setSingleShot(true);
     m_refresh.setInterval(0);
     connect(&m_refresh, &QTimer::timeout, this, &StatusDock::refresh);
-    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &key) {
-        if (key.startsWith(QLatin1String("io.")) || m_positionKeys.contains(key) ||
-            m_runningKeys.contains(key))
-            scheduleRefresh();
-    });
-    connect(session, &DeviceSession::linkStateChanged, this, &StatusDock::scheduleRefresh);
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this,
+            [this](const QString &key) {
+                if (key.startsWith(QLatin1String("io.")) || m_positionKeys.contains(key) ||
+                    m_runningKeys.contains(key))
+                    scheduleRefresh();
+            });
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &StatusDock::scheduleRefresh);
     connect(session->motion()->references(), &ReferenceTracker::changed, this,
             &StatusDock::scheduleRefresh);
     retranslate();
@@ -167,7 +171,7 @@ QString StatusDock::referenceText(int motor) const
 
 void StatusDock::refresh()
 {
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     const RegisterMap &map = m_session->map();
     const QString lang = Language::instance().current();
     for (int m = 0; m < m_positions.size(); ++m) {

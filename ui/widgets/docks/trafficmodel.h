@@ -1,6 +1,6 @@
 #pragma once
 
-#include "session/devicesession.h" // TrafficLog, TrafficEntry
+#include "session/parts/sessionconnection.h" // TrafficLog, TrafficEntry
 
 #include <QAbstractTableModel>
 #include <QHash>

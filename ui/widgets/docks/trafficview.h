@@ -1,6 +1,6 @@
 #pragma once
 
-#include "session/devicesession.h" // TrafficLog
+#include "session/parts/sessionconnection.h" // TrafficLog
 
 #include <QMap>
 #include <QWidget>

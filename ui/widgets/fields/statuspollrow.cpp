@@ -1,6 +1,8 @@
 #include "widgets/fields/statuspollrow.h"
 
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionstatus.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -31,20 +33,21 @@ StatusPollRow::StatusPollRow(DeviceSession *session, QWidget *parent)
     rows->addRow(m_rateCaption, m_rate);
     // STEPCOM_POLL_INTERVAL_MS (benchmarks, scripts) wins over the remembered choice.
     if (!qEnvironmentVariableIsSet("STEPCOM_POLL_INTERVAL_MS"))
-        session->setStatusIntervalMs(
+        session->status()->setIntervalMs(
             QSettings()
-                .value(QStringLiteral("monitor/pollIntervalMs"), session->statusIntervalMs())
+                .value(QStringLiteral("monitor/pollIntervalMs"), session->status()->intervalMs())
                 .toInt());
-    const int current = m_interval->findData(session->statusIntervalMs());
+    const int current = m_interval->findData(session->status()->intervalMs());
     if (current < 0)
-        m_interval->addItem(QString(), session->statusIntervalMs());
+        m_interval->addItem(QString(), session->status()->intervalMs());
     m_interval->setCurrentIndex(current < 0 ? m_interval->count() - 1 : current);
     connect(m_interval, &QComboBox::activated, this, [this](int index) {
         const int ms = m_interval->itemData(index).toInt();
-        m_session->setStatusIntervalMs(ms);
+        m_session->status()->setIntervalMs(ms);
         QSettings().setValue(QStringLiteral("monitor/pollIntervalMs"), ms);
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &StatusPollRow::refreshRate);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &StatusPollRow::refreshRate);
     connect(&m_rateTimer, &QTimer::timeout, this, &StatusPollRow::refreshRate);
     m_rateTimer.start(1000);
     retranslate();
@@ -64,14 +67,14 @@ void StatusPollRow::changeEvent(QEvent *event)
 
 void StatusPollRow::refreshRate()
 {
-    const double rate = m_session->statusRate();
-    if (!m_session->isConnected() || !m_session->isStatusActive())
+    const double rate = m_session->status()->rate();
+    if (!m_session->connection()->isConnected() || !m_session->status()->isActive())
         m_rate->setText(tr("unknown"));
     else if (rate <= 0.0)
         m_rate->setText(tr("measuring…"));
     else
         m_rate->setText(tr("%1 Hz").arg(rate, 0, 'f', 1));
-    m_rate->setEnabled(m_session->isConnected());
+    m_rate->setEnabled(m_session->connection()->isConnected());
     m_rate->setAccessibleName(tr("Status updates: %1").arg(m_rate->text()));
 }
 

@@ -6,6 +6,8 @@
 #include "motion/referencetracker.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/motion/jogbutton.h"
@@ -68,7 +70,7 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     auto *grid = new QGridLayout;
     m_speedLabel = new QLabel(this);
     if (const Parameter *p = param(QStringLiteral("speed"))) {
-        m_speed = new ParameterField(session->parameters(), *p, this);
+        m_speed = new ParameterField(session->parameters()->store(), *p, this);
         m_speedLabel->setBuddy(m_speed->editor());
     }
     m_applySpeed = new QPushButton(this);
@@ -126,12 +128,14 @@ JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidge
     connect(m_move, &QPushButton::clicked, this, [this] { command(QStringLiteral("move")); });
     connect(m_home, &QPushButton::clicked, this, [this] { command(QStringLiteral("home")); });
 
-    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
-        if (m_keys.contains(k))
-            refresh();
-    });
-    connect(session->parameters(), &ParameterStore::editsChanged, this, &JogPanel::refresh);
-    connect(session, &DeviceSession::linkStateChanged, this, &JogPanel::refresh);
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this,
+            [this](const QString &k) {
+                if (m_keys.contains(k))
+                    refresh();
+            });
+    connect(session->parameters()->store(), &ParameterStore::editsChanged, this,
+            &JogPanel::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, &JogPanel::refresh);
     MotionSupervisor *motion = session->motion();
     connect(motion, &MotionSupervisor::changed, this, &JogPanel::refresh);
     connect(motion, &MotionSupervisor::finished, this, [this](const MotionOutcome &o) {
@@ -179,15 +183,16 @@ void JogPanel::letGo()
 void JogPanel::applySpeed()
 {
     const Parameter *p = param(QStringLiteral("speed"));
-    if (!p || !m_session->isConnected())
+    if (!p || !m_session->connection()->isConnected())
         return;
-    if (const auto edited = m_session->parameters()->entry(p->key).edited)
-        m_session->write({{p, *edited}}); // verified by read-back, like "Write changes"
+    if (const auto edited = m_session->parameters()->store()->entry(p->key).edited)
+        m_session->parameters()->write(
+            {{p, *edited}}); // verified by read-back, like "Write changes"
 }
 
 void JogPanel::command(const QString &localKey)
 {
-    if (const QString k = key(localKey); !k.isEmpty() && m_session->isConnected()) {
+    if (const QString k = key(localKey); !k.isEmpty() && m_session->connection()->isConnected()) {
         m_session->command(k);
     }
 }
@@ -196,12 +201,15 @@ bool JogPanel::motorBusy() const
 {
     return m_jog->state(m_motor) != JogController::State::Idle ||
            m_session->motion()->active(m_motor).has_value() ||
-           m_session->parameters()->deviceValue(key(QStringLiteral("running"))).value_or(0) != 0;
+           m_session->parameters()
+                   ->store()
+                   ->deviceValue(key(QStringLiteral("running")))
+                   .value_or(0) != 0;
 }
 
 QString JogPanel::moveBlocker() const
 {
-    if (!m_session->isConnected())
+    if (!m_session->connection()->isConnected())
         return tr("Not connected.");
     const QString lang = Language::instance().current();
     QStringList unknown;
@@ -210,7 +218,7 @@ QString JogPanel::moveBlocker() const
         const Parameter *p = param(QLatin1String(local));
         if (!p)
             continue;
-        const ParameterStore::Entry e = m_session->parameters()->entry(p->key);
+        const ParameterStore::Entry e = m_session->parameters()->store()->entry(p->key);
         if (!e.device)
             unknown << p->label.text(lang);
         else if (e.edited)
@@ -229,7 +237,7 @@ QString JogPanel::moveBlocker() const
 
 QString JogPanel::moveText() const
 {
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     const QString lang = Language::instance().current();
     const Parameter *distance = param(QStringLiteral("move_distance"));
     const Parameter *direction = param(QStringLiteral("direction"));
@@ -249,14 +257,15 @@ QString JogPanel::moveText() const
 QString JogPanel::positionText() const
 {
     const Parameter *p = param(QStringLiteral("position"));
-    const auto raw = p ? m_session->parameters()->deviceValue(p->key) : std::nullopt;
+    const auto raw = p ? m_session->parameters()->store()->deviceValue(p->key) : std::nullopt;
     return raw ? p->displayRaw(*raw, Language::instance().current()) : QStringLiteral("—");
 }
 
 QString JogPanel::statusText() const
 {
     using State = JogController::State;
-    const auto running = m_session->parameters()->deviceValue(key(QStringLiteral("running")));
+    const auto running =
+        m_session->parameters()->store()->deviceValue(key(QStringLiteral("running")));
     switch (m_jog->state(m_motor)) {
     case State::Jogging:
         return m_jog->direction(m_motor) == JogController::Direction::Forward
@@ -291,8 +300,8 @@ QString JogPanel::referenceText() const
 
 void JogPanel::refresh()
 {
-    const bool connected = m_session->isConnected();
-    const ParameterStore *store = m_session->parameters();
+    const bool connected = m_session->connection()->isConnected();
+    const ParameterStore *store = m_session->parameters()->store();
     const auto running = store->deviceValue(key(QStringLiteral("running")));
     m_led->setState(!running ? Led::State::Unknown : *running ? Led::State::On : Led::State::Off);
     m_status->setText(statusText());

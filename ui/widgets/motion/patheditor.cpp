@@ -4,6 +4,8 @@
 #include "motion/motionjudge.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "widgets/fields/parameterfield.h"
 #include "widgets/fields/parameterform.h"
 
@@ -52,7 +54,7 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
 {
     setObjectName(kind == Kind::Arc ? QStringLiteral("arcEditor") : QStringLiteral("lineEditor"));
     m_writeFlow = new WriteFlow(session, this);
-    ParameterStore *store = session->parameters();
+    ParameterStore *store = session->parameters()->store();
     auto *layout = new QVBoxLayout(this);
 
     m_parameterBox = new QGroupBox(this);
@@ -138,9 +140,9 @@ PathEditor::PathEditor(DeviceSession *session, Kind kind, QWidget *parent)
             update();
     });
     connect(store, &ParameterStore::editsChanged, this, &PathEditor::update);
-    connect(session, &DeviceSession::linkStateChanged, this, &PathEditor::update);
-    connect(session, &DeviceSession::connected, this, &PathEditor::update);
-    connect(session, &DeviceSession::disconnected, this, &PathEditor::update);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this, &PathEditor::update);
+    connect(session->connection(), &SessionConnection::connected, this, &PathEditor::update);
+    connect(session->connection(), &SessionConnection::disconnected, this, &PathEditor::update);
     connect(session->motion(), &MotionSupervisor::changed, this, &PathEditor::update);
     connect(session->motion(), &MotionSupervisor::emergencyStopSent, this, [this] {
         m_startSent.stop(); // nothing waits for a start any more
@@ -190,7 +192,7 @@ Point PathEditor::typedPoint(const char *name) const
 MotorParameters PathEditor::motor(int n) const
 {
     // What the controller holds: it runs with those, not with edits on the motor pages.
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     return interpolation::motorParameters(
         m_session->map(), n, [store](const QString &k) { return store->deviceValue(k); });
 }
@@ -215,10 +217,10 @@ std::optional<QPointF> PathEditor::position() const
     const RegisterMap &map = m_session->map();
     const Parameter *x = map.blockParameter(QStringLiteral("motor"), 1, QStringLiteral("position"));
     const Parameter *y = map.blockParameter(QStringLiteral("motor"), 2, QStringLiteral("position"));
-    if (!x || !y || !m_session->isConnected())
+    if (!x || !y || !m_session->connection()->isConnected())
         return std::nullopt;
-    const auto rx = m_session->parameters()->deviceValue(x->key);
-    const auto ry = m_session->parameters()->deviceValue(y->key);
+    const auto rx = m_session->parameters()->store()->deviceValue(x->key);
+    const auto ry = m_session->parameters()->store()->deviceValue(y->key);
     if (!rx || !ry)
         return std::nullopt;
     return QPointF(x->toEngineering(*rx), y->toEngineering(*ry));
@@ -229,7 +231,7 @@ bool PathEditor::anyMotorRunning() const
     for (int n = 1; n <= 2; ++n) {
         const Parameter *p =
             m_session->map().blockParameter(QStringLiteral("motor"), n, QStringLiteral("running"));
-        if (p && m_session->parameters()->deviceValue(p->key).value_or(0) != 0)
+        if (p && m_session->parameters()->store()->deviceValue(p->key).value_or(0) != 0)
             return true;
     }
     return false;
@@ -245,9 +247,9 @@ std::optional<interpolation::Approach> PathEditor::approach(const Geometry &g) c
 
 QString PathEditor::startBlockedReason() const
 {
-    if (!m_session->isConnected())
+    if (!m_session->connection()->isConnected())
         return tr("Not connected.");
-    const ParameterStore *store = m_session->parameters();
+    const ParameterStore *store = m_session->parameters()->store();
     for (const ParameterField *f : m_form->fields()) {
         if (f->isTyping())
             return tr("A value is being typed: press Enter to keep it, then write it.");
@@ -343,7 +345,7 @@ void PathEditor::update()
         }
     }
 
-    const bool connected = m_session->isConnected();
+    const bool connected = m_session->connection()->isConnected();
     if (anyMotorRunning() || !connected)
         m_startSent.stop(); // the poll saw it start
     const QString reason = startBlockedReason();
@@ -366,7 +368,7 @@ void PathEditor::update()
     m_outcome->setVisible(!m_outcome->text().isEmpty());
     bool edited = false;
     for (const QString &k : std::as_const(m_keys))
-        edited = edited || m_session->parameters()->entry(k).edited.has_value();
+        edited = edited || m_session->parameters()->store()->entry(k).edited.has_value();
     m_write->setEnabled(connected && edited);
     // Stopping depends on nothing but the link.
     m_stop->setEnabled(connected);

@@ -3,6 +3,8 @@
 #include "motion/travellimits.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -85,8 +87,10 @@ StepMovePanel::StepMovePanel(DeviceSession *session, int motor, QWidget *parent)
             m_result->setText(r.text);
         refresh();
     });
-    connect(session, &DeviceSession::linkStateChanged, this, &StepMovePanel::refresh);
-    connect(session->parameters(), &ParameterStore::editsChanged, this, &StepMovePanel::refresh);
+    connect(session->connection(), &SessionConnection::linkStateChanged, this,
+            &StepMovePanel::refresh);
+    connect(session->parameters()->store(), &ParameterStore::editsChanged, this,
+            &StepMovePanel::refresh);
     connect(session->motion(), &MotionSupervisor::changed, this, &StepMovePanel::refresh);
     retranslate();
 }

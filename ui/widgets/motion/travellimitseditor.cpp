@@ -2,6 +2,9 @@
 
 #include "motion/travellimits.h"
 #include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
+#include "session/parts/sessionstatus.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -73,11 +76,13 @@ TravelLimitsEditor::TravelLimitsEditor(DeviceSession *session, QWidget *parent)
     grid->addWidget(m_note, last + 1, 0, 1, 5);
     connect(m_apply, &QPushButton::clicked, this, &TravelLimitsEditor::apply);
     connect(session, &DeviceSession::travelLimitsChanged, this, &TravelLimitsEditor::showLimits);
-    connect(session->parameters(), &ParameterStore::valueChanged, this, [this](const QString &k) {
-        if (k.endsWith(QLatin1String(".speed")) || k.endsWith(QLatin1String(".pitch")))
-            refreshOverrun();
-    });
-    connect(session, &DeviceSession::linkStatsChanged, this, &TravelLimitsEditor::refreshOverrun);
+    connect(session->parameters()->store(), &ParameterStore::valueChanged, this,
+            [this](const QString &k) {
+                if (k.endsWith(QLatin1String(".speed")) || k.endsWith(QLatin1String(".pitch")))
+                    refreshOverrun();
+            });
+    connect(session->connection(), &SessionConnection::linkStatsChanged, this,
+            &TravelLimitsEditor::refreshOverrun);
     retranslate();
     showLimits();
 }
@@ -158,17 +163,17 @@ QString TravelLimitsEditor::overrunText(int motor) const
         map.blockParameter(QStringLiteral("motor"), motor, QStringLiteral("pitch"));
     if (!pos || !speed || !pitch)
         return {};
-    const auto rpm = m_session->parameters()->deviceValue(speed->key);
-    const auto p = m_session->parameters()->deviceValue(pitch->key);
-    const qint64 roundTrip = m_session->linkStats().maxRoundTripMs;
+    const auto rpm = m_session->parameters()->store()->deviceValue(speed->key);
+    const auto p = m_session->parameters()->store()->deviceValue(pitch->key);
+    const qint64 roundTrip = m_session->connection()->linkStats().maxRoundTripMs;
     if (!rpm || !p || roundTrip < 0)
         return tr("How far a jog can overrun a limit is worked out once the speed and pitch are "
                   "read and the link has answered.");
     OverrunInputs in;
     in.unitsPerSecond = speed->toEngineering(*rpm) * pitch->toEngineering(*p) / 60.0;
     // A cycle starts when the last ended, at most every interval: the slower of the two.
-    in.pollIntervalMs =
-        double(std::max<qint64>(m_session->statusIntervalMs(), m_session->statusStats().maxMs));
+    in.pollIntervalMs = double(
+        std::max<qint64>(m_session->status()->intervalMs(), m_session->status()->stats().maxMs));
     in.readMs = double(roundTrip);
     in.stopMs = 2.0 * double(roundTrip); // a transaction in flight, then the stop's own
     return tr("A hold-to-move jog can run past a limit by %1.")
