@@ -1,68 +1,23 @@
 #include "bus/modbuslink.h"
 #include "bus/trafficlog.h"
 #include "map/registermap.h"
-#include "scripteddevice.h"
+#include "modbuslinkfixture.h"
 
 #include <QSet>
 #include <QSignalSpy>
-#include <QTemporaryFile>
 #include <QTest>
 #include <QTimer>
 
 using namespace stepcom;
 using namespace stepcom::test;
 
-namespace {
-
-struct Outcome
-{
-    bool done = false;
-    Result result;
-};
-
-ResultCallback into(Outcome *o)
-{
-    return [o](const Result &r) {
-        o->done = true;
-        o->result = r;
-    };
-}
-
-} // namespace
-
-class TestModbusLink : public QObject
+class TestModbusLink : public LinkFixture
 {
     Q_OBJECT
 
-    std::unique_ptr<ScriptedDevice> device;
-    std::unique_ptr<ModbusLink> link;
-
-    void openLink(int timeoutMs = 300, int retries = 0)
-    {
-        LinkSettings s;
-        s.portName = device->clientPath();
-        s.timeoutMs = timeoutMs;
-        s.retries = retries;
-        QSignalSpy opened(link.get(), &ModbusLink::opened);
-        link->open(s);
-        QTRY_COMPARE(opened.size(), 1);
-        QVERIFY2(opened.at(0).at(0).toBool(), qPrintable(opened.at(0).at(1).toString()));
-        link->setQuietTimeMs(50);
-    }
-
 private Q_SLOTS:
-    void init()
-    {
-        device = std::make_unique<ScriptedDevice>();
-        QString error;
-        QVERIFY2(device->open(&error), qPrintable(error));
-        link = std::make_unique<ModbusLink>();
-    }
-    void cleanup()
-    {
-        link.reset();
-        device.reset();
-    }
+    void init() { initLink(); }
+    void cleanup() { cleanupLink(); }
 
     // The manual's worked frames, byte for byte, both ways.
     void manualFrames_data()
@@ -97,7 +52,7 @@ private Q_SLOTS:
         Request req = kind == 0   ? Request::read(quint16(address), values.first())
                       : kind == 1 ? Request::write(quint16(address), values)
                                   : Request::coil(quint16(address), true);
-        Outcome o;
+        LinkOutcome o;
         link->submit(req, into(&o));
         QTRY_VERIFY(o.done);
         QCOMPARE(device->requests().size(), 1);
@@ -126,7 +81,7 @@ private Q_SLOTS:
             return withCrc(r.left(2) + fromHex("02 00 07"));
         });
         openLink(100, 1);
-        Outcome first;
+        LinkOutcome first;
         link->submit(Request::read(0, 1), into(&first));
         QTRY_VERIFY(first.done);
         QVERIFY(!first.result.ok);
@@ -135,7 +90,7 @@ private Q_SLOTS:
         QVERIFY(first.result.errorText.contains(QStringLiteral("no answer")));
         QCOMPARE(link->stats().timeouts, quint64(2));
         QVERIFY(link->isConnected());
-        Outcome second;
+        LinkOutcome second;
         link->submit(Request::read(0, 1), into(&second));
         QTRY_VERIFY(second.done);
         QVERIFY2(second.result.ok, qPrintable(second.result.errorText));
@@ -157,7 +112,7 @@ private Q_SLOTS:
         openLink(2000, 0);
         const Request read = Request::read(0, 1);
         for (int i = 0; i < ModbusLink::kAdaptAfter + 1; ++i) {
-            Outcome o;
+            LinkOutcome o;
             link->submit(read, into(&o));
             QTRY_VERIFY(o.done);
             QVERIFY2(o.result.ok, qPrintable(o.result.errorText));
@@ -166,7 +121,7 @@ private Q_SLOTS:
         QVERIFY2(fitted < 2000 / 4, qPrintable(QString::number(fitted)));
         int previous = fitted;
         for (int timeouts = 1; timeouts <= 2; ++timeouts) {
-            Outcome o;
+            LinkOutcome o;
             link->submit(read, into(&o));
             QTRY_VERIFY_WITH_TIMEOUT(o.done, 10000);
             QCOMPARE(o.result.error, QModbusDevice::TimeoutError);
@@ -175,7 +130,7 @@ private Q_SLOTS:
                      qPrintable(QStringLiteral("%1 after %2").arg(now).arg(previous)));
             previous = now;
         }
-        Outcome answered;
+        LinkOutcome answered;
         link->submit(read, into(&answered));
         QTRY_VERIFY(answered.done);
         QVERIFY2(answered.result.ok, qPrintable(answered.result.errorText));
@@ -188,7 +143,7 @@ private Q_SLOTS:
             silent.insert(i);
         QList<int> backedOff;
         for (int i = 0; i < 4; ++i) {
-            Outcome o;
+            LinkOutcome o;
             link->submit(read, into(&o));
             QTRY_VERIFY_WITH_TIMEOUT(o.done, 15000);
             QCOMPARE(o.result.error, QModbusDevice::TimeoutError);
@@ -221,15 +176,15 @@ private Q_SLOTS:
                 return std::nullopt;
             });
         openLink(100, 0);
-        Outcome first;
+        LinkOutcome first;
         link->submit(Request::read(0, 1), into(&first));
         QTRY_VERIFY(first.done);
         QCOMPARE(first.result.error, QModbusDevice::TimeoutError);
-        Outcome second;
+        LinkOutcome second;
         link->submit(Request::read(1, 1), into(&second));
         QTRY_VERIFY_WITH_TIMEOUT(second.done, 5000);
         QCOMPARE(second.result.error, QModbusDevice::TimeoutError);
-        Outcome third;
+        LinkOutcome third;
         Request read = Request::read(2, 1);
         read.timeoutMs = 1000;
         link->submit(read, into(&third));
@@ -260,13 +215,13 @@ private Q_SLOTS:
             return r; // a coil write is answered with its own copy
         });
         openLink(300, 0);
-        Outcome read;
+        LinkOutcome read;
         link->submit(Request::read(0, 1), into(&read));
         QTRY_VERIFY(read.done);
         QCOMPARE(read.result.error, QModbusDevice::TimeoutError);
         Request estop = Request::coil(41, true, Priority::Emergency);
         estop.retryable = false;
-        Outcome stopped;
+        LinkOutcome stopped;
         link->submit(estop, into(&stopped));
         QTRY_VERIFY_WITH_TIMEOUT(stopped.done, 5000);
         QVERIFY2(stopped.result.ok, qPrintable(stopped.result.errorText));
@@ -299,7 +254,7 @@ private Q_SLOTS:
             return answer;
         });
         openLink(150, 2);
-        Outcome o;
+        LinkOutcome o;
         link->submit(Request::read(5, 1), into(&o));
         QTRY_VERIFY(o.done);
         QVERIFY2(o.result.ok, qPrintable(o.result.errorText));
@@ -316,7 +271,7 @@ private Q_SLOTS:
         openLink();
         Request req = Request::write(0x0014, {1});
         req.what = QStringLiteral("motor1.speed");
-        Outcome o;
+        LinkOutcome o;
         link->submit(req, into(&o));
         QTRY_VERIFY(o.done);
         QVERIFY(!o.result.ok);
@@ -345,8 +300,8 @@ private Q_SLOTS:
         });
         openLink(100, 0);
         link->setQuietTimeMs(120);
-        Outcome first;
-        Outcome second;
+        LinkOutcome first;
+        LinkOutcome second;
         link->submit(Request::read(0, 1), into(&first));
         link->submit(Request::read(1, 1), into(&second));
         QTRY_VERIFY(second.done);
@@ -360,7 +315,7 @@ private Q_SLOTS:
         device->setResponder(
             [](const QByteArray &r, int) { return withCrc(r.left(2) + fromHex("02 00 01")); });
         openLink(100, 0);
-        Outcome o;
+        LinkOutcome o;
         link->submit(Request::read(0, 2), into(&o));
         QTRY_VERIFY(o.done);
         QVERIFY(!o.result.ok);
@@ -387,7 +342,7 @@ private Q_SLOTS:
             return std::nullopt;
         });
         openLink(300, 0);
-        Outcome o;
+        LinkOutcome o;
         link->submit(Request::write(0xB0, {1}), into(&o));
         QTRY_VERIFY(o.done);
         QVERIFY2(o.result.ok, qPrintable(o.result.errorText));
@@ -417,7 +372,7 @@ private Q_SLOTS:
         openLink(80, 3); // silent device
         Request req = Request::coil(1, true);
         req.retryable = false;
-        Outcome o;
+        LinkOutcome o;
         link->submit(req, into(&o));
         QTRY_VERIFY(o.done);
         QCOMPARE(device->requests().size(), 1);
@@ -446,157 +401,6 @@ private Q_SLOTS:
         QCOMPARE(order.at(2), write);
         QCOMPARE(order.mid(3), polls.mid(1));
         QCOMPARE(device->requests().at(1), fromHex("01 05 00 29 FF 00 5D F2"));
-    }
-
-    void vanishedPortDisconnectsOnceWithAReason()
-    {
-        openLink(300, 2); // silent device: the request hangs in flight
-        QSignalSpy lost(link.get(), &ModbusLink::lost);
-        QSignalSpy state(link.get(), &ModbusLink::stateChanged);
-        Outcome o;
-        link->submit(Request::read(0, 1), into(&o));
-        QTRY_COMPARE(device->requests().size(), 1);
-        device->bridge().close();
-        QTRY_VERIFY_WITH_TIMEOUT(o.done, 5000);
-        QVERIFY(!o.result.ok);
-        QTRY_COMPARE_WITH_TIMEOUT(lost.size(), 1, 5000);
-        QVERIFY(!lost.at(0).at(0).toString().isEmpty());
-        QCOMPARE(link->state(), ModbusLink::State::Disconnected);
-        QTest::qWait(200); // Qt 6.4 repeats port errors: they must not repeat our verdict
-        QCOMPARE(lost.size(), 1);
-        // and new requests fail at once instead of queueing
-        Outcome after;
-        link->submit(Request::read(0, 1), into(&after));
-        QTRY_VERIFY(after.done);
-        QVERIFY(after.result.errorText.contains(QStringLiteral("not connected")));
-    }
-
-    // Every request ends exactly once, also the ones a failing request's callback submits on
-    // its way out (a write's read-back, the next poll): the soak hung on a read-back queued
-    // while the vanishing link was still "connected" and then never failed or sent.
-    void followUpsOfFailedRequestsEndWhenThePortVanishes()
-    {
-        openLink(300, 2); // silent device: the first request hangs in flight
-        QList<Outcome> outcomes(4);
-        link->submit(Request::read(0, 1), [&](const Result &r) {
-            outcomes[0] = {true, r};
-            link->submit(Request::read(1, 1), into(&outcomes[1]));
-        });
-        link->submit(Request::write(2, {5}), [&](const Result &r) {
-            outcomes[2] = {true, r};
-            link->submit(Request::read(2, 1), into(&outcomes[3]));
-        });
-        QTRY_COMPARE(device->requests().size(), 1);
-        device->bridge().close();
-        for (int i = 0; i < outcomes.size(); ++i) {
-            QTRY_VERIFY2_WITH_TIMEOUT(outcomes.at(i).done, qPrintable(QString::number(i)), 5000);
-            QVERIFY(!outcomes.at(i).result.ok);
-        }
-        QCOMPARE(link->state(), ModbusLink::State::Disconnected);
-        QVERIFY(!link->isBusy());
-        QCOMPARE(link->queuedCount(), 0);
-    }
-
-    void followUpsOfFailedRequestsEndWhenTheLinkIsClosed()
-    {
-        openLink(5000, 0);
-        Outcome first;
-        Outcome followUp;
-        link->submit(Request::read(0, 1), [&](const Result &r) {
-            first = {true, r};
-            link->submit(Request::read(1, 1), into(&followUp));
-        });
-        QTRY_COMPARE(device->requests().size(), 1);
-        link->close(QStringLiteral("the user pressed Disconnect"));
-        QVERIFY(first.done);
-        QTRY_VERIFY_WITH_TIMEOUT(followUp.done, 5000);
-        QVERIFY(!followUp.result.ok);
-        QVERIFY2(followUp.result.errorText.contains(QStringLiteral("the user pressed Disconnect")),
-                 qPrintable(followUp.result.errorText));
-        QCOMPARE(link->queuedCount(), 0);
-    }
-
-    // A callback that reconnects while the link closes gets a link that opens (the closing
-    // must not declare the new attempt failed), and it works.
-    void reopenedFromACallbackWhileClosingOpens()
-    {
-        device->useRegisterDevice();
-        device->registers[3] = 42;
-        // The first request is held in flight (no answer), then closed under it.
-        device->setResponder([this](const QByteArray &r, int index) -> std::optional<QByteArray> {
-            if (index == 0)
-                return std::nullopt;
-            return device->registerDevice(r);
-        });
-        openLink(5000, 0);
-        const LinkSettings settings = link->settings();
-        QSignalSpy opened(link.get(), &ModbusLink::opened);
-        Outcome first;
-        link->submit(Request::read(0, 1), [&](const Result &r) {
-            first = {true, r};
-            link->open(settings);
-        });
-        QTRY_COMPARE(device->requests().size(), 1);
-        link->close(QStringLiteral("switching"));
-        QVERIFY(first.done);
-        QVERIFY(!first.result.ok);
-        QTRY_COMPARE_WITH_TIMEOUT(opened.size(), 1, 5000);
-        QVERIFY2(opened.at(0).at(0).toBool(), qPrintable(opened.at(0).at(1).toString()));
-        QVERIFY(link->isConnected());
-        Outcome after;
-        link->submit(Request::read(3, 1), into(&after));
-        QTRY_VERIFY_WITH_TIMEOUT(after.done, 5000);
-        QVERIFY2(after.result.ok, qPrintable(after.result.errorText));
-        QCOMPARE(after.result.values, QVector<quint16>{42});
-        QTest::qWait(100);
-        QCOMPARE(opened.size(), 1);
-    }
-
-    void missingPortIsNamed()
-    {
-        LinkSettings s;
-        s.portName = QStringLiteral("/dev/stepcom-no-such-port");
-        QSignalSpy opened(link.get(), &ModbusLink::opened);
-        link->open(s);
-        QTRY_COMPARE(opened.size(), 1);
-        QVERIFY(!opened.at(0).at(0).toBool());
-        QVERIFY(opened.at(0).at(1).toString().contains(
-            QStringLiteral("/dev/stepcom-no-such-port does not exist")));
-    }
-
-    // Regression: Qt reports the error inside connectDevice(), which tore the client down
-    // under open()'s feet (segfault on a file that is no serial port).
-    void aFileThatIsNoSerialPortFailsCleanly()
-    {
-        LinkSettings s;
-        s.portName = QStringLiteral("/dev/null");
-        QSignalSpy opened(link.get(), &ModbusLink::opened);
-        link->open(s);
-        QTRY_COMPARE(opened.size(), 1);
-        QVERIFY(!opened.at(0).at(0).toBool());
-        QVERIFY2(opened.at(0).at(1).toString().contains(
-                     QStringLiteral("/dev/null is not a serial port")),
-                 qPrintable(opened.at(0).at(1).toString()));
-        QCOMPARE(link->state(), ModbusLink::State::Disconnected);
-        // A regular file too.
-        QTemporaryFile file;
-        QVERIFY(file.open());
-        s.portName = file.fileName();
-        link->open(s);
-        QTRY_COMPARE(opened.size(), 2);
-        QVERIFY2(opened.at(1).at(1).toString().contains(QStringLiteral("is not a serial port")),
-                 qPrintable(opened.at(1).at(1).toString()));
-    }
-
-    void badSettingsAreRefused()
-    {
-        LinkSettings s;
-        s.portName = device->clientPath();
-        s.baud = 1200;
-        QSignalSpy opened(link.get(), &ModbusLink::opened);
-        link->open(s);
-        QTRY_COMPARE(opened.size(), 1);
-        QVERIFY(opened.at(0).at(1).toString().contains(QStringLiteral("baud 1200")));
     }
 };
 
