@@ -19,6 +19,7 @@
 #include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "session/reconnector.h"
+#include "session/sessionlog.h"
 #include "session/simulatorstarter.h"
 #include "session/stepmove.h"
 
@@ -200,6 +201,13 @@ void DeviceSession::setTravelLimits(const TravelLimits &limits)
         return;
     m_limits = limits;
     Q_EMIT travelLimitsChanged();
+}
+
+SessionLog *DeviceSession::log()
+{
+    if (!m_log)
+        m_log = new SessionLog(this, this);
+    return m_log;
 }
 
 void DeviceSession::guard(Risk risk, Proceed proceed)

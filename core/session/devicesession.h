@@ -29,6 +29,7 @@ class ReadLimits;
 class Reconnector;
 class SessionConnection;
 class SessionLine;
+class SessionLog;
 class SessionParameters;
 class SessionStatus;
 class SimulatorStarter;
@@ -100,6 +101,9 @@ public:
     // The devices of its line, the one in view, and a new id or baud for it
     // (parts/sessionline.h).
     SessionLine *line() const { return m_line; }
+    // Every frame of every connection, in a file a day (session/sessionlog.h): made on first
+    // use and logging from then on, so only a front-end that asks for a log writes one.
+    SessionLog *log();
     // Live (the default, as the window wants it): read everything after connecting, poll the
     // status while connected, read back what a failed write left uncertain. stepcomctl turns it
     // off, so a command puts on the wire only what it names.
@@ -216,6 +220,7 @@ private:
     bool m_resumeStatus = false; // the status poll ran when the link was lost
     QSet<QString> m_restored;    // "line#id" taken from the saved settings, not said yet
     RestartWatch *m_restarts = nullptr;
+    SessionLog *m_log = nullptr;
     QSet<int> m_checkingRestart; // devices being read again after a suspected restart
 };
 

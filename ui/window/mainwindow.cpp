@@ -357,7 +357,7 @@ void MainWindow::createDocks()
 {
     m_traffic = new TrafficView(this);
     m_traffic->setLog(m_session->connection()->traffic());
-    m_sessionLog = new SessionLog(m_session, this);
+    m_sessionLog = m_session->log();
     m_traffic->setLogFolder(m_sessionLog->directory());
     m_trafficDock = new QDockWidget(this);
     m_trafficDock->setObjectName(QStringLiteral("trafficDock"));

@@ -29,7 +29,7 @@ void CtlRunner::startLog()
 {
     if (m_options.logFile.isEmpty())
         return;
-    auto *log = new SessionLog(m_session, m_session);
+    SessionLog *log = m_session->log();
     log->setFile(m_options.logFile);
     connect(log, &SessionLog::failed, this, [this](const QString &reason) {
         m_err << QStringLiteral("stepcomctl: ") << reason << Qt::endl;

@@ -161,6 +161,25 @@ private Q_SLOTS:
         QVERIFY(text.contains(QStringLiteral("  RX  read     ")));
         QCOMPARE(log.files().size(), 1);
     }
+
+    // The session's own log (what the window and stepcomctl --log use): one per session, made
+    // when asked and from then on fed by every connection; a session never asked writes none.
+    void theSessionsOwnLogIsMadeWhenAsked()
+    {
+        QTemporaryDir dir;
+        DeviceSession quiet;
+        QVERIFY(quiet.findChild<SessionLog *>() == nullptr);
+        DeviceSession session;
+        SessionLog *log = session.log();
+        QVERIFY(log);
+        QCOMPARE(session.log(), log);
+        QCOMPARE(log->parent(), &session);
+        log->setDirectory(dir.path());
+        test::useBuiltinSimulator(session);
+        test::connectToSimulator(session);
+        QVERIFY(readAll(log->currentFile()).contains(QStringLiteral("  RX  read     ")));
+        QVERIFY(quiet.findChild<SessionLog *>() == nullptr);
+    }
 };
 
 #include "testregistry.h"
