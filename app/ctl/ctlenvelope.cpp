@@ -1,5 +1,6 @@
 // stepcomctl --json: one object for every command, `exit`, `result` and `errors`, so a script
 // reads the same three members whatever it ran (guide: "--json for every command").
+#include "ctlcontext.h"
 #include "ctlrunner.h"
 
 #include <QJsonArray>
@@ -46,10 +47,10 @@ bool CtlRunner::isStreaming() const
 
 void CtlRunner::captureOutput()
 {
-    m_buffer.clear();
-    m_out.setString(&m_buffer);
-    m_errBuffer.clear();
-    m_err.setString(&m_errBuffer);
+    m_ctx->outBuffer.clear();
+    m_ctx->out.setString(&m_ctx->outBuffer);
+    m_ctx->errBuffer.clear();
+    m_ctx->err.setString(&m_ctx->errBuffer);
 }
 
 QJsonObject CtlRunner::envelope(int code, const QString &out, const QStringList &errors,
@@ -74,35 +75,35 @@ QJsonObject CtlRunner::envelope(int code, const QString &out, const QStringList 
 
 void CtlRunner::printEnvelope(int code)
 {
-    m_out.flush();
-    m_err.flush();
+    m_ctx->out.flush();
+    m_ctx->err.flush();
     QStringList errors;
     QTextStream err(stderr);
-    for (QString line : m_errBuffer.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
+    for (QString line : m_ctx->errBuffer.split(QLatin1Char('\n'), Qt::SkipEmptyParts)) {
         err << line << Qt::endl; // still said where a person reads it
         if (line.startsWith(kPrefix))
             line = line.mid(kPrefix.size());
         errors << line;
     }
-    errors << m_liveErrors; // said on standard error as they came
+    errors << m_ctx->liveErrors; // said on standard error as they came
     // A stream's last line is one line too, so a script reading line by line reads it whole.
-    QTextStream(stdout) << QString::fromUtf8(
-                               QJsonDocument(envelope(code, m_buffer, errors, m_result))
-                                   .toJson(isStreaming() ? QJsonDocument::Compact
-                                                         : QJsonDocument::Indented))
+    QTextStream(stdout) << QString::fromUtf8(QJsonDocument(envelope(code, m_ctx->outBuffer, errors,
+                                                                    m_ctx->result))
+                                                 .toJson(isStreaming() ? QJsonDocument::Compact
+                                                                       : QJsonDocument::Indented))
                         << (isStreaming() ? "\n" : "");
-    m_buffer.clear();
-    m_errBuffer.clear();
+    m_ctx->outBuffer.clear();
+    m_ctx->errBuffer.clear();
 }
 
 void CtlRunner::printMulti()
 {
     QTextStream out(stdout);
-    if (m_options.json) {
+    if (m_ctx->options.json) {
         QJsonObject all;
         QStringList errors;
         for (qsizetype i = 0; i < m_idOutputs.size(); ++i) {
-            const int id = m_options.ids.at(i);
+            const int id = m_ctx->options.ids.at(i);
             all.insert(QString::number(id), envelope(m_idCodes.at(i), m_idOutputs.at(i),
                                                      m_idErrors.at(i), m_idResults.at(i)));
             for (const QString &e : m_idErrors.at(i))
@@ -115,7 +116,7 @@ void CtlRunner::printMulti()
         out << QString::fromUtf8(QJsonDocument(top).toJson(QJsonDocument::Indented));
     } else {
         for (qsizetype i = 0; i < m_idOutputs.size(); ++i) {
-            out << tr("== device id %1 ==").arg(m_options.ids.at(i)) << Qt::endl;
+            out << tr("== device id %1 ==").arg(m_ctx->options.ids.at(i)) << Qt::endl;
             const QString text = m_idOutputs.at(i);
             out << text;
             if (!text.isEmpty() && !text.endsWith(QLatin1Char('\n')))
@@ -123,8 +124,8 @@ void CtlRunner::printMulti()
         }
     }
     out.flush();
-    m_out.setDevice(nullptr);
-    m_err.setDevice(nullptr);
+    m_ctx->out.setDevice(nullptr);
+    m_ctx->err.setDevice(nullptr);
 }
 
 } // namespace stepcom

@@ -168,26 +168,4 @@ void CtlListen::end(int exitCode)
     Q_EMIT finished(exitCode);
 }
 
-void CtlRunner::runListen()
-{
-    if (!m_options.arguments.isEmpty()) {
-        fail(UsageError, tr("listen takes no arguments, only --port, --baud, --parity, "
-                            "--seconds, --json and --log"));
-        return;
-    }
-    if (m_options.target != CtlOptions::Target::Port) {
-        fail(UsageError, tr("listen hears a serial line: give --port (a line StepCom does not "
-                            "drive; --tcp and --sim have no other master to hear)"));
-        return;
-    }
-    auto *listen = new CtlListen(m_map, m_options.link, m_options.json, m_options.seconds,
-                                 m_options.logFile, this);
-    connect(listen, &CtlListen::finished, this, [this, listen](int code) {
-        m_result = listen->summaryJson();
-        m_liveErrors = listen->errors();
-        finish(code);
-    });
-    listen->start();
-}
-
 } // namespace stepcom

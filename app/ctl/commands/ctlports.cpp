@@ -1,5 +1,6 @@
 // stepcomctl ports: the computer's serial ports, before any controller is reached.
-#include "../ctlrunner.h"
+#include "../ctlcontext.h"
+#include "ctlcommands.h"
 
 #include "line/portsurvey.h"
 
@@ -9,10 +10,12 @@
 
 namespace stepcom {
 
-void CtlRunner::runPorts()
+void runPorts(CtlContext &ctx)
 {
-    if (!m_options.arguments.isEmpty()) {
-        fail(UsageError, tr("ports takes no arguments ('%1')").arg(m_options.arguments.first()));
+    if (!ctx.options.arguments.isEmpty()) {
+        ctx.fail(
+            CtlRunner::UsageError,
+            CtlRunner::tr("ports takes no arguments ('%1')").arg(ctx.options.arguments.first()));
         return;
     }
     // Tests hand in a fake system (sys/, dev/, proc/, run/lock/ under one folder).
@@ -21,7 +24,7 @@ void CtlRunner::runPorts()
     const auto hex = [](quint16 id) {
         return QStringLiteral("%1").arg(id, 4, 16, QLatin1Char('0'));
     };
-    if (m_options.json) {
+    if (ctx.options.json) {
         QJsonArray array;
         for (const PortSurvey::Port &p : ports) {
             QJsonArray holders;
@@ -49,15 +52,17 @@ void CtlRunner::runPorts()
                 // Another user's processes cannot be looked into: a holder may be missing.
                 {QStringLiteral("holders_complete"), p.holdersKnown && !p.holdersIncomplete}});
         }
-        m_out << QString::fromUtf8(QJsonDocument(array).toJson(QJsonDocument::Indented));
-        finish(Ok);
+        ctx.out << QString::fromUtf8(QJsonDocument(array).toJson(QJsonDocument::Indented));
+        ctx.finish(CtlRunner::Ok);
         return;
     }
     if (ports.isEmpty()) {
-        m_out << tr("no serial port found: is the USB adapter plugged in? (its driver's messages: "
-                    "sudo dmesg | tail)")
-              << Qt::endl;
-        finish(Ok);
+        ctx.out
+            << CtlRunner::tr(
+                   "no serial port found: is the USB adapter plugged in? (its driver's messages: "
+                   "sudo dmesg | tail)")
+            << Qt::endl;
+        ctx.finish(CtlRunner::Ok);
         return;
     }
     for (const PortSurvey::Port &p : ports) {
@@ -69,24 +74,28 @@ void CtlRunner::runPorts()
         if (p.entry.vendorId || p.entry.productId)
             adapter << hex(p.entry.vendorId) + QLatin1Char(':') + hex(p.entry.productId);
         if (!p.entry.serialNumber.isEmpty())
-            adapter << tr("S/N %1").arg(p.entry.serialNumber);
+            adapter << CtlRunner::tr("S/N %1").arg(p.entry.serialNumber);
         if (adapter.isEmpty() && !p.driver.isEmpty())
             adapter << p.driver;
-        m_out << p.entry.systemLocation << QStringLiteral("  ") << adapter.join(QLatin1String(", "))
-              << QStringLiteral("  ") << PortSurvey::holdersText(p) << Qt::endl;
+        ctx.out << p.entry.systemLocation << QStringLiteral("  ")
+                << adapter.join(QLatin1String(", ")) << QStringLiteral("  ")
+                << PortSurvey::holdersText(p) << Qt::endl;
         if (!p.entry.byId.isEmpty())
-            m_out << QStringLiteral("    ") << tr("stable name: %1").arg(p.entry.byId) << Qt::endl;
+            ctx.out << QStringLiteral("    ") << CtlRunner::tr("stable name: %1").arg(p.entry.byId)
+                    << Qt::endl;
         if (!p.accessible)
-            m_out << QStringLiteral("    ")
-                  << tr("no permission to open it: add yourself to its group (ls -l %1; "
-                        "usually dialout), then log in again")
-                         .arg(p.entry.systemLocation)
-                  << Qt::endl;
-        m_out << QStringLiteral("    ")
-              << tr("open it with: stepcomctl --port %1 read device.id").arg(p.entry.path())
-              << Qt::endl;
+            ctx.out << QStringLiteral("    ")
+                    << CtlRunner::tr(
+                           "no permission to open it: add yourself to its group (ls -l %1; "
+                           "usually dialout), then log in again")
+                           .arg(p.entry.systemLocation)
+                    << Qt::endl;
+        ctx.out << QStringLiteral("    ")
+                << CtlRunner::tr("open it with: stepcomctl --port %1 read device.id")
+                       .arg(p.entry.path())
+                << Qt::endl;
     }
-    finish(Ok);
+    ctx.finish(CtlRunner::Ok);
 }
 
 } // namespace stepcom
