@@ -153,7 +153,8 @@ void CtlContext::connectThen(std::function<void()> next)
 void CtlContext::installRiskGuard()
 {
     // The session is the runner's child: it never outlives this context.
-    session->setRiskGuard([this](DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed) {
+    session->risks()->setGuard([this](DeviceSession::Risk risk, int id,
+                                      DeviceSession::Proceed proceed) {
         if (options.noBackup) {
             proceed(QString());
             return;
@@ -182,7 +183,7 @@ void CtlContext::installRiskGuard()
 
 void CtlContext::guardThen(DeviceSession::Risk risk, std::function<void()> next)
 {
-    session->guard(risk, [this, next](const QString &refusal) {
+    session->risks()->guard(risk, [this, next](const QString &refusal) {
         if (!refusal.isEmpty()) {
             fail(CtlRunner::DeviceError, refusal);
             return;

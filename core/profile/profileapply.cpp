@@ -297,22 +297,22 @@ void ProfileApply::backUp()
         return;
     const quint64 generation = m_generation;
     QPointer<ProfileApply> self(this);
-    m_session->guard(DeviceSession::Risk::Apply, m_id,
-                     [this, self, generation](const QString &refusal) {
-                         if (!self || generation != m_generation)
-                             return;
-                         if (refusal.isEmpty()) {
-                             write();
-                             return;
-                         }
-                         if (!mayGoOn())
-                             return;
-                         for (AppliedKey &k : m_result.keys) {
-                             if (k.state == State::NotWritten && k.reason.isEmpty())
-                                 k.reason = refusal;
-                         }
-                         end(ProfileApplyResult::End::Failed, refusal);
-                     });
+    m_session->risks()->guard(DeviceSession::Risk::Apply, m_id,
+                              [this, self, generation](const QString &refusal) {
+                                  if (!self || generation != m_generation)
+                                      return;
+                                  if (refusal.isEmpty()) {
+                                      write();
+                                      return;
+                                  }
+                                  if (!mayGoOn())
+                                      return;
+                                  for (AppliedKey &k : m_result.keys) {
+                                      if (k.state == State::NotWritten && k.reason.isEmpty())
+                                          k.reason = refusal;
+                                  }
+                                  end(ProfileApplyResult::End::Failed, refusal);
+                              });
 }
 
 void ProfileApply::write()
@@ -469,33 +469,35 @@ void ProfileApply::saveToFlash()
         return;
     const quint64 generation = m_generation;
     QPointer<ProfileApply> self(this);
-    m_session->guard(DeviceSession::Risk::SaveToFlash, m_id,
-                     [this, self, generation, coil](const QString &refusal) {
-                         if (!self || generation != m_generation || !mayGoOn())
-                             return;
-                         if (!refusal.isEmpty()) {
-                             m_result.savedToFlash = false;
-                             m_result.flashError = refusal;
-                             end(ProfileApplyResult::End::Done);
-                             return;
-                         }
-                         m_session->command(*coil, [this, self, generation](const Result &r) {
-                             if (!self || generation != m_generation)
-                                 return;
-                             if (r.ok) {
-                                 m_result.savedToFlash = true;
-                             } else {
-                                 m_result.flashError = r.errorText;
-                                 if (r.exceptionCode != 0) // answered: not saved
-                                     m_result.savedToFlash = false;
-                             }
-                             // Unanswered, or a restart said: is what was verified still there?
-                             if (!r.ok || m_restarted)
-                                 readBack();
-                             else
-                                 end(ProfileApplyResult::End::Done);
-                         });
-                     });
+    m_session->risks()->guard(DeviceSession::Risk::SaveToFlash, m_id,
+                              [this, self, generation, coil](const QString &refusal) {
+                                  if (!self || generation != m_generation || !mayGoOn())
+                                      return;
+                                  if (!refusal.isEmpty()) {
+                                      m_result.savedToFlash = false;
+                                      m_result.flashError = refusal;
+                                      end(ProfileApplyResult::End::Done);
+                                      return;
+                                  }
+                                  m_session->command(
+                                      *coil, [this, self, generation](const Result &r) {
+                                          if (!self || generation != m_generation)
+                                              return;
+                                          if (r.ok) {
+                                              m_result.savedToFlash = true;
+                                          } else {
+                                              m_result.flashError = r.errorText;
+                                              if (r.exceptionCode != 0) // answered: not saved
+                                                  m_result.savedToFlash = false;
+                                          }
+                                          // Unanswered, or a restart said: is what was verified
+                                          // still there?
+                                          if (!r.ok || m_restarted)
+                                              readBack();
+                                          else
+                                              end(ProfileApplyResult::End::Done);
+                                      });
+                              });
 }
 
 void ProfileApply::end(ProfileApplyResult::End how, const QString &error)

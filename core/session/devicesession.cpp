@@ -42,6 +42,7 @@ DeviceSession::DeviceSession(const RegisterMap &map, QObject *parent)
     , m_health(new LinkHealth(m_link, this))
     , m_jog(new JogController(this, this))
     , m_step(new StepMove(this))
+    , m_risks(new SessionRisks(m_line, this))
     , m_bus(new BusPoller(m_link, map, this))
     , m_memory(new DeviceMemory)
 {
@@ -210,22 +211,9 @@ SessionLog *DeviceSession::log()
     return m_log;
 }
 
-void DeviceSession::guard(Risk risk, Proceed proceed)
-{
-    guard(risk, m_line->deviceInView(), std::move(proceed));
-}
-
-void DeviceSession::guard(Risk risk, int id, Proceed proceed)
-{
-    if (m_guard)
-        m_guard(risk, id, std::move(proceed));
-    else
-        proceed(QString());
-}
-
 void DeviceSession::guardedCommand(Risk risk, const QString &key)
 {
-    guard(risk, [this, key](const QString &refusal) {
+    m_risks->guard(risk, [this, key](const QString &refusal) {
         if (refusal.isEmpty()) {
             command(key);
             return;

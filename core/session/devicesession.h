@@ -3,8 +3,9 @@
 // The session: the parts it hands out and what only the whole can do. Each part has its own
 // header under session/parts/, included by the callers that need it; this one includes no
 // client, store, poller or planner header, so touching those rebuilds only their users.
-#include "map/registermap.h"      // RegisterMap::builtin(), the constructor's default
-#include "motion/travellimits.h"  // TravelLimits
+#include "map/registermap.h"     // RegisterMap::builtin(), the constructor's default
+#include "motion/travellimits.h" // TravelLimits
+#include "session/parts/sessionrisks.h"
 #include "session/restartwatch.h" // RestartWatch::Zeros, ::Evidence, in signals
 
 #include <QHash>
@@ -55,14 +56,10 @@ public:
     // Why every jog must stop now (the rules live here; the window reports what happened).
     enum class JogStop { PageLeft, FocusLost, WindowClosing };
     Q_ENUM(JogStop)
-    // Operations after which the controller's settings cannot be had back unless saved first.
-    enum class Risk { Apply, FactoryReset, SaveToFlash, DeviceId, Baud };
-    Q_ENUM(Risk)
-    // Runs before a risky operation (the window's backup) on controller `id`, then calls
-    // `proceed` once: with an empty text when it may go on, else why it may not (nothing is
-    // done then).
-    using Proceed = std::function<void(const QString &refusal)>;
-    using RiskGuard = std::function<void(Risk risk, int id, Proceed proceed)>;
+    // The risk guard's words, here too: every front-end names them DeviceSession::Risk.
+    using Risk = SessionRisks::Risk;
+    using Proceed = SessionRisks::Proceed;
+    using RiskGuard = SessionRisks::Guard;
     // A command answered after this long is said with its answer time ("answered after 0.8 s").
     static constexpr qint64 kSlowAnswerMs = 300;
 
@@ -87,13 +84,9 @@ public:
     // them are refused, a hold-to-move jog crossing them is stopped on the next poll.
     const TravelLimits &travelLimits() const { return m_limits; }
     void setTravelLimits(const TravelLimits &limits);
-    // Installed by the window: a backup before every risky operation the session starts
-    // (saveToFlash, factoryReset, changeLink) and the ones a front-end announces (guard()).
-    void setRiskGuard(RiskGuard guard) { m_guard = std::move(guard); }
-    // Runs `proceed` after the guard (at once, agreed, without one), for the device in view or
-    // for device `id` of the line.
-    void guard(Risk risk, Proceed proceed);
-    void guard(Risk risk, int id, Proceed proceed);
+    // The risk guard (parts/sessionrisks.h): a front-end installs its backup there; the session
+    // asks it before saveToFlash, factoryReset and changeLink, a front-end before what it starts.
+    SessionRisks *risks() const { return m_risks; }
 
     // -- Connection (its part: parts/sessionconnection.h; what the session does when the link
     // opens or drops: devicesessionconnect.cpp) --
@@ -205,7 +198,7 @@ private:
     JogController *m_jog;
     StepMove *m_step;
     TravelLimits m_limits;
-    RiskGuard m_guard;
+    SessionRisks *m_risks;
     BusPoller *m_bus;
     DeviceMemory *m_memory; // what the store held for each device not in view
     QList<int> m_deviceIds; // the line's devices in order; empty: the link's id alone

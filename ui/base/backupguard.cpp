@@ -12,18 +12,19 @@ BackupGuard::BackupGuard(DeviceSession *session, QObject *parent)
     , m_dir(BackupStore::defaultDirectory())
 {
     QPointer<BackupGuard> self(this);
-    session->setRiskGuard([self](DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed) {
-        if (self)
-            self->run(risk, id, std::move(proceed));
-        else
-            proceed(QString());
-    });
+    session->risks()->setGuard(
+        [self](DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed) {
+            if (self)
+                self->run(risk, id, std::move(proceed));
+            else
+                proceed(QString());
+        });
 }
 
 BackupGuard::~BackupGuard()
 {
     if (m_session)
-        m_session->setRiskGuard({});
+        m_session->risks()->setGuard({});
 }
 
 void BackupGuard::run(DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed)

@@ -233,7 +233,7 @@ void SessionLine::changeLink(int deviceId, int baud)
         return;
     const DeviceSession::Risk risk =
         writes.first().parameter == id ? DeviceSession::Risk::DeviceId : DeviceSession::Risk::Baud;
-    m_session->guard(risk, [this, writes, previous](const QString &refusal) {
+    m_session->m_risks->guard(risk, [this, writes, previous](const QString &refusal) {
         if (refusal.isEmpty()) {
             writeLink(writes, previous);
             return;

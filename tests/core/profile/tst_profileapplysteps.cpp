@@ -47,7 +47,7 @@ class TestProfileApplySteps : public QObject
         if (!ids.isEmpty())
             session->line()->setDeviceIds(ids);
         // The window's and stepcomctl's guard: a backup through SessionBackup, then go on.
-        session->setRiskGuard(
+        session->risks()->setGuard(
             [this](DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed) {
                 guarded.append({risk, id});
                 if (!refusal.isEmpty()) {

@@ -63,7 +63,7 @@ class TestProfileRollout : public QObject
     void connectLine()
     {
         // The window's guard: each device backed up (SessionBackup) before it is written.
-        session->setRiskGuard(
+        session->risks()->setGuard(
             [this](DeviceSession::Risk risk, int id, DeviceSession::Proceed proceed) {
                 SessionBackup::save(session.get(), BackupStore(backups.path()), risk, id,
                                     [proceed](const BackupStore::Saved &saved) {

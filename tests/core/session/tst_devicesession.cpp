@@ -6,6 +6,7 @@
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
 #include "session/parts/sessionparameters.h"
+#include "session/parts/sessionrisks.h"
 #include "session/sessioninternals.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -144,6 +145,40 @@ private Q_SLOTS:
         QVERIFY2(order.indexOf(QStringLiteral("estop")) <= 1,
                  qPrintable(order.join(QLatin1Char(','))));
         QTRY_VERIFY(!sim()->running(1));
+    }
+
+    // The risk guard a front-end installs on risks() is asked, for the device in view, before
+    // what the session itself starts that cannot be undone; its refusal stops it, nothing sent.
+    void theRiskGuardIsAskedFirstAndItsNoStops()
+    {
+        connectSim();
+        QList<QPair<SessionRisks::Risk, int>> asked;
+        QString refusal = QStringLiteral("no backup folder");
+        session->risks()->setGuard(
+            [&](SessionRisks::Risk risk, int id, SessionRisks::Proceed proceed) {
+                asked.append({risk, id});
+                proceed(refusal);
+            });
+        QVERIFY(session->risks()->hasGuard());
+        QSignalSpy done(session.get(), &DeviceSession::commandFinished);
+        const qsizetype sent = session->connection()->traffic()->entries().size();
+        session->saveToFlash();
+        QTRY_COMPARE(done.size(), 1);
+        QVERIFY(!done.at(0).at(1).toBool());
+        QCOMPARE(asked,
+                 (QList<QPair<SessionRisks::Risk, int>>{{SessionRisks::Risk::SaveToFlash, 1}}));
+        for (const TrafficEntry &e : session->connection()->traffic()->entries().mid(sent))
+            QVERIFY(e.direction != TrafficEntry::Direction::Sent || quint8(e.bytes.at(1)) == 0x03);
+        refusal.clear(); // agreed: it goes on
+        session->saveToFlash();
+        QTRY_COMPARE(done.size(), 2);
+        QVERIFY(done.at(1).at(1).toBool());
+        session->risks()->setGuard({}); // none: at once
+        QVERIFY(!session->risks()->hasGuard());
+        bool proceeded = false;
+        session->risks()->guard(SessionRisks::Risk::Apply, 3,
+                                [&](const QString &r) { proceeded = r.isEmpty(); });
+        QVERIFY(proceeded);
     }
 
     void idChangeIsFollowed()
