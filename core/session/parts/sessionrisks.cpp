@@ -6,8 +6,7 @@ namespace stepcom {
 SessionRisks::SessionRisks(const SessionLine *line, QObject *parent)
     : QObject(parent)
     , m_line(line)
-{
-}
+{}
 
 void SessionRisks::guard(Risk risk, Proceed proceed)
 {

@@ -3,6 +3,7 @@
 #include "bus/trafficlog.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilesavedialog.h"
+#include "profile/profileapply.h"
 #include "profile/profilefile.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
@@ -138,6 +139,11 @@ private Q_SLOTS:
         QTRY_COMPARE_WITH_TIMEOUT(applied.size(), 1, 10000);
         QVERIFY(applied.at(0).at(0).toBool());
         QCOMPARE(applied.at(0).at(1).toStringList(), (QStringList{"motor1.speed", "motor2.pitch"}));
+        // The dialog applies through ProfileApply and shows what its result says.
+        const auto *applier = dialog.findChild<ProfileApply *>();
+        QVERIFY(applier);
+        QCOMPARE(applier->result().keysIn(AppliedKey::State::Verified),
+                 (QStringList{"motor1.speed", "motor2.pitch"}));
         QCOMPARE(simValue("motor1.speed"), speed + 11);
         QCOMPARE(simValue("motor2.pitch"), profile.values.value(QStringLiteral("motor2.pitch")));
         QCOMPARE(simValue("arc.speed"), arcSpeed); // unchecked: untouched
