@@ -54,6 +54,8 @@ void runBundle(CtlContext &ctx);
 bool loadProfile(CtlContext &ctx, const QString &path, Profile *out);
 // The one profile file of `command`'s arguments; fails (nothing written) when it cannot be read.
 bool loadProfileArgument(CtlContext &ctx, const QString &command, Profile *out);
+// report's one file argument, a .pdf or .html; empty (and the run failed, saying why) otherwise.
+QString reportPath(CtlContext &ctx);
 // What of a profile of another map is left out, under `heading` (nothing when all fits).
 void printLeftOut(CtlContext &ctx, const Profile &profile, const QString &heading);
 // "not supported by this controller: ..." for what a read found the controller lacks;

@@ -32,19 +32,9 @@ void dumpIntoFolder(CtlContext &ctx, const QString &folder, const QHash<QString,
 
 void runMachineReport(CtlContext &ctx)
 {
-    if (ctx.options.arguments.size() != 1) {
-        ctx.fail(CtlRunner::UsageError,
-                 CtlRunner::tr("report needs exactly one file (.pdf or .html)"));
+    const QString path = reportPath(ctx);
+    if (path.isEmpty())
         return;
-    }
-    const QString path = ctx.options.arguments.first();
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != QLatin1String("pdf") && suffix != QLatin1String("html") &&
-        suffix != QLatin1String("htm")) {
-        ctx.fail(CtlRunner::UsageError,
-                 CtlRunner::tr("%1: the report is written as .pdf or .html").arg(path));
-        return;
-    }
     if (!ctx.options.from.isEmpty()) {
         ctx.fail(
             CtlRunner::UsageError,

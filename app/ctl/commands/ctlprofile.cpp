@@ -224,36 +224,27 @@ void runDump(CtlContext &ctx)
         return;
     }
     const QString path = ctx.options.arguments.first();
-    if (path.endsWith(QLatin1Char('/')) || QFileInfo(path).isDir()) {
+    const bool intoFolder = path.endsWith(QLatin1Char('/')) || QFileInfo(path).isDir();
+    if (intoFolder) {
         if (const QString problem = BusDump::checkDirectory(path); !problem.isEmpty()) {
             ctx.fail(CtlRunner::UsageError, CtlRunner::tr("nothing was saved: %1").arg(problem));
             return;
         }
-        ctx.connectThen([&ctx, path] {
-            ctx.session->parameters()->read(
-                Profile::profileParameters(ctx.map, true), [&ctx, path](const ReadOutcome &r) {
-                    if (!r.ok) {
-                        for (const QString &e : CtlContext::condensed(r.errors))
-                            ctx.err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
-                        ctx.fail(CtlRunner::DeviceError,
-                                 CtlRunner::tr("nothing was saved: the controller "
-                                               "could not be read completely"));
-                        return;
-                    }
-                    dumpIntoFolder(ctx, path, r.values);
-                });
-        });
-        return;
     }
-    ctx.connectThen([&ctx, path] {
+    ctx.connectThen([&ctx, path, intoFolder] {
         ctx.session->parameters()->read(
-            Profile::profileParameters(ctx.map, true), [&ctx, path](const ReadOutcome &r) {
+            Profile::profileParameters(ctx.map, true),
+            [&ctx, path, intoFolder](const ReadOutcome &r) {
                 if (!r.ok) {
                     for (const QString &e : CtlContext::condensed(r.errors))
                         ctx.err << QStringLiteral("stepcomctl: ") << e << Qt::endl;
                     ctx.fail(CtlRunner::DeviceError,
                              CtlRunner::tr("nothing was saved: the controller could "
                                            "not be read completely"));
+                    return;
+                }
+                if (intoFolder) {
+                    dumpIntoFolder(ctx, path, r.values);
                     return;
                 }
                 noteUnsupported(ctx, r);
@@ -345,12 +336,12 @@ void runDiff(CtlContext &ctx)
     });
 }
 
-void runReport(CtlContext &ctx)
+QString reportPath(CtlContext &ctx)
 {
     if (ctx.options.arguments.size() != 1) {
         ctx.fail(CtlRunner::UsageError,
                  CtlRunner::tr("report needs exactly one file (.pdf or .html)"));
-        return;
+        return QString();
     }
     const QString path = ctx.options.arguments.first();
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -358,8 +349,16 @@ void runReport(CtlContext &ctx)
         suffix != QLatin1String("htm")) {
         ctx.fail(CtlRunner::UsageError,
                  CtlRunner::tr("%1: the report is written as .pdf or .html").arg(path));
-        return;
+        return QString();
     }
+    return path;
+}
+
+void runReport(CtlContext &ctx)
+{
+    const QString path = reportPath(ctx);
+    if (path.isEmpty())
+        return;
     if (!ctx.options.from.isEmpty()) {
         runReportFromFile(ctx, path); // no controller
         return;
