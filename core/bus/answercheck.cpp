@@ -1,5 +1,7 @@
 #include "bus/answercheck.h"
 
+#include "bus/bigendian.h"
+
 #include <QCoreApplication>
 
 namespace stepcom {
@@ -16,11 +18,10 @@ int fcOf(const QModbusPdu &pdu)
     return quint8(pdu.functionCode()); // Qt 6.4 stores it sign-extended
 }
 
-int word(const QByteArray &data, int at)
+// -1 where the frame is too short to hold the word.
+int checkedWord(const QByteArray &data, int at)
 {
-    if (data.size() < at + 2)
-        return -1;
-    return (quint8(data.at(at)) << 8) | quint8(data.at(at + 1));
+    return data.size() < at + 2 ? -1 : bigendian::wordAt(data, at);
 }
 
 QString hex4(int value)
@@ -55,7 +56,7 @@ QString AnswerCheck::mismatch(const QModbusRequest &request, int answerFunctionC
     }
     switch (fc) {
     case 0x03: {
-        const int asked = word(q, 2);
+        const int asked = checkedWord(q, 2);
         const int carried = a.isEmpty() ? 0 : quint8(a.at(0)) / 2;
         if (a.isEmpty() || quint8(a.at(0)) != asked * 2 || a.size() != 1 + asked * 2)
             return tr("FC03 answer carried %1 registers, %2 were asked for")
@@ -68,15 +69,16 @@ QString AnswerCheck::mismatch(const QModbusRequest &request, int answerFunctionC
         if (a != q)
             return tr("FC%1 answer for 0x%2 = 0x%3, the request wrote 0x%4 = 0x%5")
                 .arg(fc, 2, 16, QLatin1Char('0'))
-                .arg(hex4(word(a, 0)), hex4(word(a, 2)), hex4(word(q, 0)), hex4(word(q, 2)));
+                .arg(hex4(checkedWord(a, 0)), hex4(checkedWord(a, 2)), hex4(checkedWord(q, 0)),
+                     hex4(checkedWord(q, 2)));
         return {};
     case 0x10:
         if (a != q.left(4))
             return tr("FC10 answer for %1 registers at 0x%2, the request wrote %3 at 0x%4")
-                .arg(word(a, 2))
-                .arg(hex4(word(a, 0)))
-                .arg(word(q, 2))
-                .arg(hex4(word(q, 0)));
+                .arg(checkedWord(a, 2))
+                .arg(hex4(checkedWord(a, 0)))
+                .arg(checkedWord(q, 2))
+                .arg(hex4(checkedWord(q, 0)));
         return {};
     default:
         return {};

@@ -1,15 +1,13 @@
 #include "bus/trafficlog.h"
 
+#include "bus/bigendian.h"
 #include "map/registermap.h"
 
 namespace stepcom {
 
 namespace {
 
-quint16 word(const QByteArray &b, int at)
-{
-    return quint16((quint8(b.at(at)) << 8) | quint8(b.at(at + 1)));
-}
+using bigendian::wordAt;
 
 QString registerRange(quint16 address, int count, const RegisterMap *map)
 {
@@ -38,7 +36,7 @@ QString valuesText(const QByteArray &pdu, int from, int count)
             values << QStringLiteral("…");
             break;
         }
-        values << QString::number(word(pdu, from + 2 * i));
+        values << QString::number(wordAt(pdu, from + 2 * i));
     }
     return values.join(QLatin1String(", "));
 }
@@ -127,7 +125,8 @@ QString TrafficLog::describePdu(TrafficEntry::Direction direction, const QByteAr
     switch (fc) {
     case 0x03:
         if (sent && pdu.size() >= 5)
-            return QStringLiteral("read %1").arg(registerRange(word(pdu, 1), word(pdu, 3), map));
+            return QStringLiteral("read %1").arg(
+                registerRange(wordAt(pdu, 1), wordAt(pdu, 3), map));
         if (!sent && pdu.size() >= 2) {
             const int count = quint8(pdu.at(1)) / 2;
             QString text = QStringLiteral("= %1").arg(valuesText(pdu, 2, count));
@@ -138,13 +137,13 @@ QString TrafficLog::describePdu(TrafficEntry::Direction direction, const QByteAr
         break;
     case 0x05:
         if (pdu.size() >= 5) {
-            const quint16 address = word(pdu, 1);
+            const quint16 address = wordAt(pdu, 1);
             QString name = QString::number(address + 1).rightJustified(5, QLatin1Char('0'));
             if (map) {
                 if (const Parameter *p = map->coilAt(address))
                     name += QStringLiteral(" (%1)").arg(p->key);
             }
-            const quint16 value = word(pdu, 3);
+            const quint16 value = wordAt(pdu, 3);
             const QString state = value == 0xFF00   ? QStringLiteral("ON")
                                   : value == 0x0000 ? QStringLiteral("OFF")
                                                     : QStringLiteral("0x%1?").arg(value, 4, 16);
@@ -156,13 +155,13 @@ QString TrafficLog::describePdu(TrafficEntry::Direction direction, const QByteAr
         if (pdu.size() >= 5)
             return QStringLiteral("%1 %2 = %3")
                 .arg(sent ? QStringLiteral("write") : QStringLiteral("ok"),
-                     registerRange(word(pdu, 1), 1, map))
-                .arg(word(pdu, 3));
+                     registerRange(wordAt(pdu, 1), 1, map))
+                .arg(wordAt(pdu, 3));
         break;
     case 0x10:
         if (pdu.size() >= 5) {
-            const quint16 address = word(pdu, 1);
-            const int count = word(pdu, 3);
+            const quint16 address = wordAt(pdu, 1);
+            const int count = wordAt(pdu, 3);
             if (sent)
                 return QStringLiteral("write %1 = %2")
                     .arg(registerRange(address, count, map), valuesText(pdu, 6, count));

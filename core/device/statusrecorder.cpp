@@ -16,8 +16,6 @@ namespace stepcom {
 
 namespace {
 
-const QString kMotor = QStringLiteral("motor");
-
 qint8 flagOf(const std::optional<qint64> &v)
 {
     return v ? qint8(*v != 0) : qint8(-1);
@@ -45,9 +43,9 @@ QString describePath(const QString &path)
 
 StatusColumns::StatusColumns(const RegisterMap &map)
 {
-    for (int n = 1; n <= map.blockCount(kMotor); ++n) {
-        const Parameter *pos = map.blockParameter(kMotor, n, QStringLiteral("position"));
-        const Parameter *run = map.blockParameter(kMotor, n, QStringLiteral("running"));
+    for (int n = 1; n <= map.blockCount(kMotorBlock); ++n) {
+        const Parameter *pos = map.blockParameter(kMotorBlock, n, QStringLiteral("position"));
+        const Parameter *run = map.blockParameter(kMotorBlock, n, QStringLiteral("running"));
         if (!pos)
             break;
         positionKeys << pos->key;

@@ -10,7 +10,7 @@ namespace stepcom {
 namespace {
 
 using Severity = WiringWarning::Severity;
-using Kind = WiringWarning::Kind;
+using WarningKind = WiringWarning::Kind;
 
 enum class Role { Positive, Negative, Home };
 
@@ -81,7 +81,7 @@ QString modeUse(int mode, int input)
     return {};
 }
 
-WiringWarning make(Severity severity, Kind kind, int motor, const QString &message)
+WiringWarning make(Severity severity, WarningKind kind, int motor, const QString &message)
 {
     WiringWarning w;
     w.severity = severity;
@@ -98,7 +98,7 @@ void checkMotor(const MotorWiring &m, QList<WiringWarning> *out)
     const bool limitsKnown = m.positive && m.negative;
     if (pos != 0 && pos == neg) {
         out->append(make(
-            Severity::Error, Kind::BothLimitsOneInput, m.motor,
+            Severity::Error, WarningKind::BothLimitsOneInput, m.motor,
             QCoreApplication::translate("stepcom::WiringCheck",
                                         "Motor %1: %2 is both the positive and the negative limit")
                 .arg(m.motor)
@@ -106,7 +106,7 @@ void checkMotor(const MotorWiring &m, QList<WiringWarning> *out)
     }
     if (limitsKnown && (pos == 0) != (neg == 0)) {
         out->append(make(
-            Severity::Warning, Kind::OneSidedLimits, m.motor,
+            Severity::Warning, WarningKind::OneSidedLimits, m.motor,
             pos != 0 ? QCoreApplication::translate("stepcom::WiringCheck",
                                                    "Motor %1: only the positive limit is set (%2); "
                                                    "nothing stops the motor at the negative end")
@@ -123,13 +123,13 @@ void checkMotor(const MotorWiring &m, QList<WiringWarning> *out)
     const int home = *m.home;
     if (home == 0) {
         out->append(make(
-            Severity::Info, Kind::NoHomeInput, m.motor,
+            Severity::Info, WarningKind::NoHomeInput, m.motor,
             QCoreApplication::translate("stepcom::WiringCheck",
                                         "Motor %1: no home input; homing runs in reverse until the "
                                         "negative limit or a stop and does not zero the position")
                 .arg(m.motor)));
     } else if (home == pos && home != neg) {
-        out->append(make(Severity::Error, Kind::HomeOnPositiveLimit, m.motor,
+        out->append(make(Severity::Error, WarningKind::HomeOnPositiveLimit, m.motor,
                          QCoreApplication::translate(
                              "stepcom::WiringCheck",
                              "Motor %1: the home input %2 is the positive limit, but homing "
@@ -138,7 +138,7 @@ void checkMotor(const MotorWiring &m, QList<WiringWarning> *out)
                              .arg(inputName(home))));
     } else if (home != pos && home != neg) {
         out->append(make(
-            Severity::Warning, Kind::HomeNotALimit, m.motor,
+            Severity::Warning, WarningKind::HomeNotALimit, m.motor,
             QCoreApplication::translate("stepcom::WiringCheck",
                                         "Motor %1: the home input %2 is neither of its limits; "
                                         "usually the home input is the negative limit (%3)")
@@ -190,7 +190,7 @@ QList<WiringWarning> checkWiring(const QList<MotorWiring> &motors, std::optional
         }
         if (seenMotors.size() < 2)
             continue;
-        out.append(make(Severity::Warning, Kind::InputSharedByMotors, seenMotors.first(),
+        out.append(make(Severity::Warning, WarningKind::InputSharedByMotors, seenMotors.first(),
                         QCoreApplication::translate(
                             "stepcom::WiringCheck",
                             "%1 is wired to more than one motor (%2): its switch acts on "
@@ -224,7 +224,7 @@ QList<WiringWarning> checkWiring(const QList<MotorWiring> &motors, std::optional
                                         .arg(inputName(*input), roleName(role))
                                         .arg(mode)
                                         .arg(modeName(mode), use);
-                out.append(make(Severity::Warning, Kind::LimitIgnoredInMode, m.motor, text));
+                out.append(make(Severity::Warning, WarningKind::LimitIgnoredInMode, m.motor, text));
             }
         }
     }

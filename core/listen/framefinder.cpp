@@ -1,5 +1,6 @@
 #include "listen/framefinder.h"
 
+#include "bus/bigendian.h"
 #include "bus/rtuframe.h"
 
 #include <algorithm>
@@ -11,15 +12,8 @@ namespace {
 
 constexpr int kMaxUnit = 247;
 
-int byteAt(const QByteArray &b, int at)
-{
-    return quint8(b.at(at));
-}
-
-int wordAt(const QByteArray &b, int at)
-{
-    return (byteAt(b, at) << 8) | byteAt(b, at + 1);
-}
+using bigendian::byteAt;
+using bigendian::wordAt;
 
 bool knownFunction(int fc)
 {

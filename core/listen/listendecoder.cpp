@@ -1,5 +1,6 @@
 #include "listen/listendecoder.h"
 
+#include "bus/bigendian.h"
 #include "bus/rtuframe.h"
 #include "map/registermap.h"
 
@@ -10,15 +11,8 @@ namespace stepcom {
 
 namespace {
 
-int byteAt(const QByteArray &b, int at)
-{
-    return quint8(b.at(at));
-}
-
-quint16 wordAt(const QByteArray &b, int at)
-{
-    return quint16((byteAt(b, at) << 8) | byteAt(b, at + 1));
-}
+using bigendian::byteAt;
+using bigendian::wordAt;
 
 QList<bool> bitsOf(const QByteArray &b, int from, int count)
 {

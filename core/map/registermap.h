@@ -9,6 +9,9 @@
 
 namespace stepcom {
 
+// The motors' block: its parameters are "motor1.speed", "motor2.speed", ...
+inline const QString kMotorBlock = QStringLiteral("motor");
+
 struct ParameterGroup
 {
     QString id;

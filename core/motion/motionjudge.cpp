@@ -11,8 +11,6 @@ namespace stepcom {
 
 namespace {
 
-const QString kMotor = QStringLiteral("motor");
-
 std::optional<qint64> get(const StatusValues &v, const QString &key)
 {
     const auto it = v.constFind(key);
@@ -23,7 +21,7 @@ std::optional<qint64> get(const StatusValues &v, const QString &key)
 
 const Parameter *motorParam(const RegisterMap &map, int motor, const char *local)
 {
-    return map.blockParameter(kMotor, motor, QLatin1String(local));
+    return map.blockParameter(kMotorBlock, motor, QLatin1String(local));
 }
 
 std::optional<qint64> motorValue(const RegisterMap &map, const StatusValues &v, int motor,
@@ -125,9 +123,9 @@ std::optional<MotionKind> MotionJudge::kindOf(const RegisterMap &map, const QStr
     const Parameter *p = map.find(command);
     if (!p || !p->isCoil())
         return std::nullopt;
-    if (p->block == kMotor && p->localKey == QLatin1String("move"))
+    if (p->block == kMotorBlock && p->localKey == QLatin1String("move"))
         return MotionKind::SingleMove;
-    if (p->block == kMotor && p->localKey == QLatin1String("home"))
+    if (p->block == kMotorBlock && p->localKey == QLatin1String("home"))
         return MotionKind::Home;
     if (command == QLatin1String("home_all"))
         return MotionKind::HomeInOrder;
@@ -143,7 +141,7 @@ std::optional<MotionKind> MotionJudge::kindOf(const RegisterMap &map, const QStr
 QStringList MotionJudge::watchKeys(const RegisterMap &map)
 {
     QStringList keys;
-    for (int n = 1; n <= map.blockCount(kMotor); ++n) {
+    for (int n = 1; n <= map.blockCount(kMotorBlock); ++n) {
         for (const char *local : {"position", "running"}) {
             if (const Parameter *p = motorParam(map, n, local))
                 keys << p->key;
@@ -178,7 +176,7 @@ QStringList MotionJudge::inputKeys(const RegisterMap &map, const QString &comman
     case MotionKind::ReturnToZero:
     case MotionKind::Arc:
     case MotionKind::Line:
-        for (int n = 1; n <= map.blockCount(kMotor); ++n)
+        for (int n = 1; n <= map.blockCount(kMotorBlock); ++n)
             motors << n;
         break;
     }
@@ -190,7 +188,7 @@ QStringList MotionJudge::inputKeys(const RegisterMap &map, const QString &comman
         // The path's end points in counts need each axis's step angle, microsteps and pitch.
         if (path) {
             for (const Parameter *p : map.holdings()) {
-                if (p->block == kMotor && p->instance == n)
+                if (p->block == kMotorBlock && p->instance == n)
                     add(p);
             }
         }
@@ -215,7 +213,7 @@ std::optional<MotionStart> MotionJudge::plan(const RegisterMap &map, const QStri
     MotionStart s;
     s.kind = *kind;
     s.command = command;
-    const int motors = map.blockCount(kMotor);
+    const int motors = map.blockCount(kMotorBlock);
     switch (*kind) {
     case MotionKind::SingleMove: {
         const int n = map.find(command)->instance;
@@ -337,7 +335,7 @@ QString MotionJudge::limitWarning(const RegisterMap &map, const QString &command
     case MotionKind::HomeInOrder:
         break; // homing reverses onto its own switch, which is often the negative limit
     case MotionKind::ReturnToZero:
-        for (int n = 1; n <= map.blockCount(kMotor); ++n) {
+        for (int n = 1; n <= map.blockCount(kMotorBlock); ++n) {
             if (const auto p = motorValue(map, now, n, "position"))
                 check(n, sign(double(-*p)), tr("the return to data zero"));
         }

@@ -13,8 +13,6 @@ namespace stepcom {
 
 namespace {
 
-const QString kMotor = QStringLiteral("motor");
-
 // A result that says the link itself is gone (closed or lost), not that the device refused.
 bool linkGone(const Result &r)
 {
@@ -27,7 +25,7 @@ JogController::JogController(DeviceSession *session, QObject *parent)
     : QObject(parent)
     , m_session(session)
 {
-    m_motors.resize(session->map().blockCount(kMotor));
+    m_motors.resize(session->map().blockCount(kMotorBlock));
     connect(session->connection(), &SessionConnection::disconnected, this,
             &JogController::onDisconnected);
     connect(session->connection(), &SessionConnection::connected, this,
@@ -90,7 +88,7 @@ void JogController::stopAtTravelLimits()
 
 QString JogController::motorKey(int motor, const QString &localKey) const
 {
-    const Parameter *p = m_session->map().blockParameter(kMotor, motor, localKey);
+    const Parameter *p = m_session->map().blockParameter(kMotorBlock, motor, localKey);
     return p ? p->key : QString();
 }
 

@@ -13,12 +13,6 @@
 
 namespace stepcom {
 
-namespace {
-
-const QString kMotor = QStringLiteral("motor");
-
-} // namespace
-
 StepMove::StepMove(DeviceSession *session)
     : QObject(session)
     , m_session(session)
@@ -33,7 +27,8 @@ QStringList StepMove::usedKeys(const DeviceSession &session, int motor)
 {
     QStringList keys;
     for (const char *local : {"move_distance", "direction"}) {
-        if (const Parameter *p = session.map().blockParameter(kMotor, motor, QLatin1String(local)))
+        if (const Parameter *p =
+                session.map().blockParameter(kMotorBlock, motor, QLatin1String(local)))
             keys << p->key;
     }
     return keys;
@@ -42,17 +37,17 @@ QStringList StepMove::usedKeys(const DeviceSession &session, int motor)
 QString StepMove::key(const char *local) const
 {
     const Parameter *p =
-        m_session->map().blockParameter(kMotor, m_result.request.motor, QLatin1String(local));
+        m_session->map().blockParameter(kMotorBlock, m_result.request.motor, QLatin1String(local));
     return p ? p->key : QString();
 }
 
 QString StepMove::refusal(const StepMoveRequest &r) const
 {
     const DeviceSession &s = *m_session;
-    const int motors = s.map().blockCount(kMotor);
+    const int motors = s.map().blockCount(kMotorBlock);
     if (r.motor < 1 || r.motor > motors)
         return tr("There is no motor %1 (this controller has %2)").arg(r.motor).arg(motors);
-    if (!s.map().blockParameter(kMotor, r.motor, QStringLiteral("move")) ||
+    if (!s.map().blockParameter(kMotorBlock, r.motor, QStringLiteral("move")) ||
         usedKeys(s, r.motor).size() != 2 || !TravelLimits::positionParameter(s.map(), r.motor))
         return tr("This register map has no single move for motor %1").arg(r.motor);
     if (!std::isfinite(r.value))
@@ -94,7 +89,8 @@ QString StepMove::start(const StepMoveRequest &request)
     // a step is judged on what `command motorN.move --wait` is judged on.
     QStringList keys;
     for (const char *local : {"position", "running", "move_distance", "direction"}) {
-        if (const Parameter *p = map.blockParameter(kMotor, request.motor, QLatin1String(local)))
+        if (const Parameter *p =
+                map.blockParameter(kMotorBlock, request.motor, QLatin1String(local)))
             keys << p->key;
     }
     for (const QString &k : MotionJudge::inputKeys(map, key("move"))) {
@@ -132,7 +128,7 @@ void StepMove::onRead(bool ok, const QHash<QString, qint64> &values, const QStri
     const StepMoveRequest &r = m_result.request;
     const Parameter *pos = TravelLimits::positionParameter(map, r.motor);
     const Parameter *dist = map.find(key("move_distance"));
-    const Parameter *running = map.blockParameter(kMotor, r.motor, QStringLiteral("running"));
+    const Parameter *running = map.blockParameter(kMotorBlock, r.motor, QStringLiteral("running"));
     m_userDistance = values.value(dist->key);
     m_userDirection = values.value(key("direction"));
     if (running && values.value(running->key) != 0) {

@@ -6,8 +6,6 @@ namespace stepcom {
 
 namespace {
 
-constexpr qint64 kDayMs = 24 * 3600 * 1000;
-
 bool digits(QByteArrayView text, qsizetype from, qsizetype count, int *out)
 {
     int v = 0;

@@ -22,6 +22,9 @@ struct LogLine
     QString text;      // the summary (Frame, Mark), or a header's value
     QByteArray key;    // Header: "map", "line", "ids" ... ("title" for the first line)
 
+    // A log's stamps count days as this many ms (replays step over midnight with it).
+    static constexpr qint64 kDayMs = 24 * 3600 * 1000;
+
     static LogLine parse(QByteArrayView line);
     // "2026-11-24 22:10:01.123" at the start of `text` as a stamp; false when it is not one.
     static bool parseStamp(QByteArrayView text, qint64 *stamp);

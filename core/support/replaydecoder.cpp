@@ -1,5 +1,6 @@
 #include "support/replaydecoder.h"
 
+#include "bus/bigendian.h"
 #include "bus/request.h" // exceptionText
 #include "bus/rtuframe.h"
 #include "map/registermap.h"
@@ -10,10 +11,7 @@ namespace {
 
 constexpr int kOwedKept = 8;
 
-quint16 word(const QByteArray &b, int at)
-{
-    return quint16((quint8(b.at(at)) << 8) | quint8(b.at(at + 1)));
-}
+using bigendian::wordAt;
 
 int functionOf(const QByteArray &pdu)
 {
@@ -26,12 +24,12 @@ QMap<quint16, quint16> writtenWords(const QByteArray &pdu)
     QMap<quint16, quint16> out;
     const int fc = functionOf(pdu);
     if (fc == 0x06 && pdu.size() >= 5)
-        out.insert(word(pdu, 1), word(pdu, 3));
+        out.insert(wordAt(pdu, 1), wordAt(pdu, 3));
     if (fc == 0x10 && pdu.size() >= 6) {
-        const quint16 address = word(pdu, 1);
-        const int count = word(pdu, 3);
+        const quint16 address = wordAt(pdu, 1);
+        const int count = wordAt(pdu, 3);
         for (int i = 0; i < count && 6 + 2 * i + 1 < pdu.size(); ++i)
-            out.insert(quint16(address + i), word(pdu, 6 + 2 * i));
+            out.insert(quint16(address + i), wordAt(pdu, 6 + 2 * i));
     }
     return out;
 }
@@ -46,7 +44,7 @@ bool ReplayDecoder::split(const QByteArray &raw, Framing framing, int *unit, QBy
 {
     const bool rtu = raw.size() >= 4 && RtuFrame::crcOk(raw);
     const bool tcp =
-        raw.size() >= 8 && raw.at(2) == 0 && raw.at(3) == 0 && word(raw, 4) == raw.size() - 6;
+        raw.size() >= 8 && raw.at(2) == 0 && raw.at(3) == 0 && wordAt(raw, 4) == raw.size() - 6;
     if (rtu && framing != Framing::Tcp) {
         *unit = quint8(raw.at(0));
         *pdu = raw.mid(1, raw.size() - 3);
@@ -88,13 +86,13 @@ QString ReplayDecoder::describe(const QByteArray &pdu) const
     const int fc = functionOf(pdu);
     if (pdu.size() < 5)
         return QStringLiteral("FC%1").arg(fc, 2, 16, QLatin1Char('0'));
-    const quint16 address = word(pdu, 1);
+    const quint16 address = wordAt(pdu, 1);
     if (fc == 0x05) {
         const Parameter *p = m_map ? m_map->coilAt(address) : nullptr;
         return QStringLiteral("command %1")
             .arg(p ? p->key : QStringLiteral("coil %1").arg(address + 1));
     }
-    const int count = fc == 0x06 ? 1 : word(pdu, 3);
+    const int count = fc == 0x06 ? 1 : wordAt(pdu, 3);
     QString where = QString::number(40001 + address);
     if (count > 1)
         where += QLatin1Char('-') + QString::number(40001 + address + count - 1);
@@ -120,12 +118,12 @@ bool ReplayDecoder::fits(const Pending &p, int unit, const QByteArray &a)
         return true; // an exception to this function
     switch (fc) {
     case 0x03:
-        return a.size() >= 2 && p.pdu.size() >= 5 && quint8(a.at(1)) == 2 * word(p.pdu, 3) &&
+        return a.size() >= 2 && p.pdu.size() >= 5 && quint8(a.at(1)) == 2 * wordAt(p.pdu, 3) &&
                a.size() == 2 + quint8(a.at(1));
     case 0x05:
     case 0x06:
     case 0x10:
-        return a.size() >= 5 && p.pdu.size() >= 5 && word(a, 1) == word(p.pdu, 1);
+        return a.size() >= 5 && p.pdu.size() >= 5 && wordAt(a, 1) == wordAt(p.pdu, 1);
     default:
         return true;
     }
@@ -192,7 +190,7 @@ void ReplayDecoder::timedOut(const Pending &p, qint64 ms, qint64 lineNo, const S
     d.lastError = tr("no answer: %1").arg(describe(p.pdu));
     d.lastErrorMs = ms;
     const bool estop = m_map && functionOf(p.pdu) == 0x05 && p.pdu.size() >= 5 && [&] {
-        const Parameter *c = m_map->coilAt(word(p.pdu, 1));
+        const Parameter *c = m_map->coilAt(wordAt(p.pdu, 1));
         return c && c->command == CommandClass::Emergency;
     }();
     if (estop)
@@ -226,15 +224,15 @@ void ReplayDecoder::answered(const Pending &p, const QByteArray &a, qint64 ms, q
     }
     const int fc = functionOf(p.pdu);
     if (fc == 0x03) {
-        const quint16 address = word(p.pdu, 1);
+        const quint16 address = wordAt(p.pdu, 1);
         for (int i = 0; 2 + 2 * i + 1 < a.size(); ++i) {
-            d.words.insert(quint16(address + i), word(a, 2 + 2 * i));
+            d.words.insert(quint16(address + i), wordAt(a, 2 + 2 * i));
         }
         return;
     }
     if (fc == 0x05) {
-        const Parameter *c = m_map ? m_map->coilAt(word(p.pdu, 1)) : nullptr;
-        const QString name = c ? c->key : QStringLiteral("coil %1").arg(word(p.pdu, 1) + 1);
+        const Parameter *c = m_map ? m_map->coilAt(wordAt(p.pdu, 1)) : nullptr;
+        const QString name = c ? c->key : QStringLiteral("coil %1").arg(wordAt(p.pdu, 1) + 1);
         d.lastCommand = name;
         const bool estop = c && c->command == CommandClass::Emergency;
         emitEvent(sink, ms, p.unit,

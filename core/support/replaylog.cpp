@@ -1,5 +1,7 @@
 #include "support/replaylog.h"
 
+#include "support/logline.h"
+
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -10,7 +12,6 @@ namespace stepcom {
 
 namespace {
 
-constexpr qint64 kDayMs = 24 * 3600 * 1000;
 constexpr qint64 kProgressBytes = 1024 * 1024;
 constexpr int kNamedGarbage = 5;
 constexpr int kLineBuffer = 64 * 1024;
@@ -324,15 +325,15 @@ std::optional<qint64> ReplayLog::parseTime(const QString &text, QString *error) 
     const qint64 ofDay =
         ((m.captured(1).toInt() * 60 + m.captured(2).toInt()) * 60 + m.captured(3).toInt()) * 1000 +
         m.captured(4).leftJustified(3, QLatin1Char('0')).toInt();
-    qint64 at = (m_startStamp / kDayMs) * kDayMs + ofDay;
+    qint64 at = (m_startStamp / LogLine::kDayMs) * LogLine::kDayMs + ofDay;
     if (at < m_startStamp) {
         // The next day's, when the log reaches it.
-        if (at + kDayMs > m_startStamp + m_durationMs) {
+        if (at + LogLine::kDayMs > m_startStamp + m_durationMs) {
             if (error)
                 *error = tr("%1 is before the log's start (%2)").arg(text, startText());
             return std::nullopt;
         }
-        at += kDayMs;
+        at += LogLine::kDayMs;
     }
     return at - m_startStamp;
 }

@@ -1,15 +1,14 @@
 #include "sim/model/simprotocol.h"
 
+#include "bus/bigendian.h"
+
 #include "sim/model/simregisters.h"
 
 namespace stepcom {
 
 namespace {
 
-quint16 word(const QByteArray &data, int offset)
-{
-    return quint16((quint8(data.at(offset)) << 8) | quint8(data.at(offset + 1)));
-}
+using bigendian::wordAt;
 
 void appendWord(QByteArray &data, quint16 value)
 {
@@ -54,8 +53,8 @@ QModbusResponse SimProtocol::readHolding(const QModbusRequest &request) const
     const QByteArray data = request.data();
     if (data.size() != 4)
         return exception(request, QModbusExceptionResponse::IllegalDataValue);
-    const int start = word(data, 0);
-    const int count = word(data, 2);
+    const int start = wordAt(data, 0);
+    const int count = wordAt(data, 2);
     if (count < 1 || count > m_regs.map().maxRegistersPerRequest())
         return exception(request, QModbusExceptionResponse::IllegalDataValue);
     QByteArray out;
@@ -81,8 +80,8 @@ QModbusResponse SimProtocol::writeSingle(const QModbusRequest &request) const
     const QByteArray data = request.data();
     if (data.size() != 4)
         return exception(request, QModbusExceptionResponse::IllegalDataValue);
-    const quint16 address = word(data, 0);
-    const quint16 value = word(data, 2);
+    const quint16 address = wordAt(data, 0);
+    const quint16 value = wordAt(data, 2);
     const Parameter *p = m_regs.map().holdingAt(address);
     if (!p || !p->writable() || p->words != 1 || m_lacking.contains(p->key))
         return exception(request, QModbusExceptionResponse::IllegalDataAddress);
@@ -98,15 +97,15 @@ QModbusResponse SimProtocol::writeMultiple(const QModbusRequest &request) const
     const QByteArray data = request.data();
     if (data.size() < 5)
         return exception(request, QModbusExceptionResponse::IllegalDataValue);
-    const int start = word(data, 0);
-    const int count = word(data, 2);
+    const int start = wordAt(data, 0);
+    const int count = wordAt(data, 2);
     const int bytes = quint8(data.at(4));
     if (count < 1 || count > m_regs.map().maxRegistersPerRequest() || bytes != 2 * count ||
         data.size() != 5 + bytes)
         return exception(request, QModbusExceptionResponse::IllegalDataValue);
     QList<quint16> words;
     for (int i = 0; i < count; ++i)
-        words.append(word(data, 5 + 2 * i));
+        words.append(wordAt(data, 5 + 2 * i));
 
     // Addresses first (02), then values (03), as the Modbus specification orders the checks.
     QList<Write> writes;
@@ -131,8 +130,8 @@ QModbusResponse SimProtocol::writeCoil(const QModbusRequest &request) const
     const QByteArray data = request.data();
     if (data.size() != 4)
         return exception(request, QModbusExceptionResponse::IllegalDataValue);
-    const quint16 address = word(data, 0);
-    const quint16 value = word(data, 2);
+    const quint16 address = wordAt(data, 0);
+    const quint16 value = wordAt(data, 2);
     if (value != 0xFF00 && value != 0x0000)
         return exception(request, QModbusExceptionResponse::IllegalDataValue);
     const Parameter *p = m_regs.map().coilAt(address);

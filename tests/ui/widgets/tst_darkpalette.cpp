@@ -30,9 +30,12 @@ class TestDarkPalette : public QObject
 {
     Q_OBJECT
     QStringList m_problems;
+    QList<QColor> m_backgrounds; // what the checked colours were drawn on
 
     void check(const QString &what, const QColor &colour, const QColor &background)
     {
+        if (!m_backgrounds.contains(background))
+            m_backgrounds << background;
         const double ratio = contrastRatio(colour, background);
         if (ratio < kMinContrast)
             m_problems << QStringLiteral("%1: %2 on %3, contrast %4")
@@ -102,6 +105,19 @@ private Q_SLOTS:
     {
         QApplication::setPalette(QApplication::style()->standardPalette());
         m_problems.clear();
+        m_backgrounds.clear();
+    }
+
+    // The widgets really are drawn on the palette under test: a check of colours on a palette
+    // that never reached them would pass on any palette.
+    void requireDrawnOn(const QPalette &palette, const QString &what, const QWidget *widget)
+    {
+        const QColor seen = widget->palette().color(widget->backgroundRole());
+        QVERIFY2(seen == palette.color(QPalette::Window) || seen == palette.color(QPalette::Base),
+                 qPrintable(QStringLiteral("%1 is drawn on %2, not on the palette's window %3 or "
+                                           "base %4")
+                                .arg(what, seen.name(), palette.color(QPalette::Window).name(),
+                                     palette.color(QPalette::Base).name())));
     }
 
     void stateColoursKeepContrast_data()
@@ -127,6 +143,9 @@ private Q_SLOTS:
         MainWindow window(&session);
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
+        requireDrawnOn(palette, QStringLiteral("the window"), &window);
+        requireDrawnOn(palette, QStringLiteral("the machine strip"),
+                       WindowProbe(window).machineStrip());
         checkStrip(WindowProbe(window).machineStrip(), QStringLiteral("disconnected"));
         PageSidebar *sidebar = WindowProbe(window).sidebar();
         const QColor base = sidebar->viewport()->palette().color(QPalette::Base);
@@ -152,6 +171,8 @@ private Q_SLOTS:
         }
         QVERIFY2(m_problems.isEmpty(),
                  qPrintable(QLatin1Char('\n') + m_problems.join(QLatin1Char('\n'))));
+        // The strip's words were checked on the palette under test's own window colour.
+        QVERIFY(m_backgrounds.contains(palette.color(QPalette::Window)));
     }
 };
 
