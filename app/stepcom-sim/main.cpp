@@ -6,12 +6,15 @@
 #include "sim/host/simcommandline.h"
 #include "sim/host/simconsole.h"
 #include "sim/host/simhost.h"
+#include "sim/host/truthwriter.h"
 #include "sim/model/simdevice.h"
 #include "sim/serve/linehub.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QTextStream>
+
+#include <memory>
 
 using namespace stepcom;
 
@@ -148,6 +151,20 @@ int main(int argc, char *argv[])
                    .arg(host.rtuTcpPort())
             << Qt::endl;
 
+    std::unique_ptr<TruthWriter> truth;
+    if (!options.truthOut.isEmpty()) {
+        truth = std::make_unique<TruthWriter>(device, options.truthOut);
+        QObject::connect(truth.get(), &TruthWriter::failed, &app,
+                         [&err](const QString &why) { err << why << Qt::endl; });
+        if (!truth->start(&error)) {
+            err << QCoreApplication::translate("stepcom-sim", "stepcom-sim: %1").arg(error)
+                << Qt::endl;
+            host.stop();
+            return 1;
+        }
+        out << QStringLiteral("truth: %1").arg(options.truthOut) << Qt::endl;
+    }
+
     SimConsole console(&host);
     ConsoleReader *reader = nullptr;
     if (parser.isSet(consoleOption) || ConsoleReader::stdinIsTerminal()) {
@@ -172,6 +189,8 @@ int main(int argc, char *argv[])
                 << Qt::endl;
         hub.close();
     }
+    if (truth && !truth->flush(&error))
+        err << error << Qt::endl;
     host.stop();
     return rc;
 }

@@ -14,6 +14,8 @@
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QIcon>
+#include <QSettings>
+#include <QStatusBar>
 #include <QTextStream>
 
 #include <memory>
@@ -33,6 +35,13 @@ struct Options
         QStringLiteral("sim-reset"),
         QCoreApplication::translate("stepcom", "Start the built-in simulator from the factory "
                                                "again: forget what it saved to flash.")};
+    QCommandLineOption machine{
+        QStringLiteral("machine"),
+        QCoreApplication::translate("stepcom", "With --sim: the simulated machine's mechanics "
+                                               "from this machine file (stalls, backlash, "
+                                               "switches; default: the setting "
+                                               "simulator/machineFile)."),
+        QCoreApplication::translate("stepcom", "file")};
     QCommandLineOption port{
         QStringLiteral("port"),
         QCoreApplication::translate("stepcom", "Connect to this serial port at start."),
@@ -79,8 +88,8 @@ struct Options
         parser.addHelpOption();
         parser.addVersionOption();
         parser.addOption(Translators::languageOption());
-        parser.addOptions({sim, simReset, port, tcp, rtuTcp, baud, parity, id, echo, pendant,
-                           pendantJog, listen});
+        parser.addOptions({sim, simReset, machine, port, tcp, rtuTcp, baud, parity, id, echo,
+                           pendant, pendantJog, listen});
         parser.addPositionalArgument(
             QStringLiteral("file"),
             QCoreApplication::translate("stepcom",
@@ -257,9 +266,20 @@ int main(int argc, char *argv[])
     // The Connection page offers it; what it saves to flash is there again on the next start.
     auto sim = std::make_unique<BuiltinSimulator>();
     sim->setFlashPath(BuiltinSimulator::defaultFlashPath());
+    const QString machineFile =
+        parser.isSet(options.machine)
+            ? parser.value(options.machine)
+            : QSettings().value(BuiltinSimulator::machineFileSettingsKey()).toString();
+    QString machineProblem;
+    sim->setMachineFile(machineFile, &machineProblem);
     session.setSimulator(std::move(sim));
     MainWindow window(&session);
     window.showOnScreen();
+    if (!machineProblem.isEmpty()) {
+        // Said, and the simulator runs as the ideal machine.
+        QTextStream(stderr) << QStringLiteral("stepcom: ") << machineProblem << Qt::endl;
+        window.statusBar()->showMessage(machineProblem);
+    }
     if (pendant) {
         PendantServer *server = window.pendantActions()->server();
         if (!server->start(pendant->first, pendant->second)) {

@@ -1,6 +1,7 @@
 #include "sim/host/builtinsimulator.h"
 
 #include "sim/host/simhost.h"
+#include "sim/model/machinefile.h"
 #include "sim/model/simdevice.h"
 
 #include <QCoreApplication>
@@ -53,6 +54,20 @@ bool BuiltinSimulator::resetFlash(const QString &path, QString *error)
     return true;
 }
 
+bool BuiltinSimulator::setMachineFile(const QString &path, QString *error)
+{
+    m_machine.reset();
+    if (path.isEmpty())
+        return true;
+    QString why;
+    m_machine = MachineFile::load(path, &why);
+    if (!m_machine && error)
+        *error = QCoreApplication::translate("stepcom::BuiltinSimulator",
+                                             "%1 (the simulator runs as the ideal machine)")
+                     .arg(why);
+    return m_machine.has_value();
+}
+
 std::optional<LinkSettings> BuiltinSimulator::start(const RegisterMap &map, QString *error)
 {
     if (!m_host->isRunning()) {
@@ -61,6 +76,7 @@ std::optional<LinkSettings> BuiltinSimulator::start(const RegisterMap &map, QStr
         options.ids = m_ids;
         options.checkBaud = true; // silent when the client's baud is not the controller's
         options.statePath = m_flashPath;
+        options.machine = m_machine;
         if (!m_flashPath.isEmpty() && !QDir().mkpath(QFileInfo(m_flashPath).absolutePath())) {
             if (error)
                 *error = QCoreApplication::translate("stepcom::BuiltinSimulator",

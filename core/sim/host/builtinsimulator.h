@@ -1,6 +1,7 @@
 #pragma once
 
 #include "session/simulatorstarter.h"
+#include "sim/model/machinesettings.h"
 
 #include <QList>
 
@@ -50,6 +51,14 @@ public:
     // False and why when a file cannot be removed.
     static bool resetFlash(const QString &path, QString *error);
 
+    // The machine's mechanics from a machine file (MachineFile) for the next start(); empty:
+    // the ideal machine. A file that cannot be used gives false and why, and the simulator keeps
+    // the ideal machine (it still starts).
+    bool setMachineFile(const QString &path, QString *error);
+    // Where the window keeps the machine file's path (stepcom --sim --machine sets it for a run).
+    static QString machineFileSettingsKey() { return QStringLiteral("simulator/machineFile"); }
+    const std::optional<MachineSettings> &machine() const { return m_machine; }
+
     // The running simulator, for the tools and tests that act on the simulated machine.
     SimHost *host() const { return m_host.get(); }
 
@@ -61,6 +70,7 @@ private:
     int m_clientBaud = 0;
     LinkSettings m_timing;
     QString m_flashPath;
+    std::optional<MachineSettings> m_machine;
 };
 
 } // namespace stepcom

@@ -1,6 +1,7 @@
 #include "sim/host/simcommandline.h"
 
 #include "session/idlist.h"
+#include "sim/model/machinefile.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -112,6 +113,14 @@ void SimCommandLine::addOptions(QCommandLineParser &p)
     p.addOption({QStringLiteral("seed"), tr("Seed of the fault dice (default 1)."), n});
     p.addOption({QStringLiteral("input"),
                  tr("Set an input at start: INn=on|off|pulse (repeatable)."), tr("INn=STATE")});
+    p.addOption({QStringLiteral("machine"),
+                 tr("The machine's mechanics from FILE (format stepcom-sim-machine): motor "
+                    "limits (stalls), backlash, switches, hard stops, wiring."),
+                 tr("FILE")});
+    p.addOption({QStringLiteral("truth-out"),
+                 tr("Keep what really happened (count, rotor, carriage, lost steps, switches) "
+                    "as JSON in FILE, rewritten when it changes (at most every 50 ms)."),
+                 tr("FILE")});
     p.addOption({QStringLiteral("travel"),
                  tr("Travel of each axis between its limit switches (default 200)."), tr("MM")});
 }
@@ -337,6 +346,15 @@ bool SimCommandLine::toOptions(const QCommandLineParser &p, SimOptions *o, QStri
                             .arg(p.value(QStringLiteral("travel"))));
         o->startPosition = std::min(o->startPosition, o->travel / 4);
     }
+    if (p.isSet(QStringLiteral("machine"))) {
+        const auto machine = MachineFile::load(p.value(QStringLiteral("machine")), error);
+        if (!machine)
+            return false;
+        o->machine = *machine;
+    }
+    o->truthOut = p.value(QStringLiteral("truth-out"));
+    if (p.isSet(QStringLiteral("truth-out")) && o->truthOut.isEmpty())
+        return fail(tr("--truth-out: no file given"));
     for (const QString &text : p.values(QStringLiteral("input"))) {
         const auto input = parseInput(text, error);
         if (!input)

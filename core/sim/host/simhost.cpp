@@ -9,6 +9,8 @@
 #include <QThread>
 #include <QTimer>
 
+#include <algorithm>
+
 namespace stepcom {
 
 SimHost::SimHost(QObject *parent)
@@ -28,6 +30,25 @@ std::unique_ptr<SimDevice> SimHost::makeDevice(const SimOptions &options, int id
     for (int n = 1; n <= d.motorCount(); ++n) {
         d.setTravel(n, options.travel);
         d.setMachinePosition(n, options.startPosition);
+    }
+    if (options.machine) {
+        for (auto it = options.machine->axes.begin(); it != options.machine->axes.end(); ++it) {
+            if (it.key() > d.motorCount()) {
+                if (error)
+                    *error = tr("%1: axes.motor%2: the register map has %3 motors")
+                                 .arg(options.machine->source)
+                                 .arg(it.key())
+                                 .arg(d.motorCount());
+                return nullptr;
+            }
+        }
+        d.setMachine(*options.machine);
+        for (int n = 1; n <= d.motorCount(); ++n) {
+            // A shorter travel without a start: a quarter of it, as --travel does.
+            const AxisPhysics p = options.machine->axis(n);
+            if (p.travelMm && !p.startMm)
+                d.setMachinePosition(n, std::min(options.startPosition, *p.travelMm / 4));
+        }
     }
     d.setStatePath(statePath);
     d.setStrictReads(options.strictReads);

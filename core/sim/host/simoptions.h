@@ -1,6 +1,7 @@
 #pragma once
 
 #include "map/registermap.h"
+#include "sim/model/machinesettings.h"
 #include "sim/model/simmachine.h"
 #include "sim/serve/faultinjector.h"
 
@@ -8,6 +9,8 @@
 #include <QHostAddress>
 #include <QList>
 #include <QString>
+
+#include <optional>
 
 #include <utility>
 
@@ -74,6 +77,12 @@ struct SimOptions
     bool manualClock = false;  // time only moves by SimDevice::advance() (tests)
     double travel = 200;       // travel of every axis, distance units
     double startPosition = 50; // where the carriages stand at power-up
+    // The machine's mechanics (stepcom-sim --machine FILE, MachineFile::load()), applied to
+    // every controller after travel and startPosition; unset: the ideal machine.
+    std::optional<MachineSettings> machine;
+    // stepcom-sim --truth-out FILE: where the program keeps SimDevice::truthJson() of the first
+    // controller (TruthWriter); SimHost itself does not write it.
+    QString truthOut;
     QList<std::pair<int, SimMachine::InputForce>> inputs; // inputs set at start
     // The 24 V supply of every controller switched off (ms after start, ms off): --power-cycle.
     // The start counts on the host's event loop, the time off on the device's clock.

@@ -43,6 +43,7 @@ void Interpolator::beginPath(SimAxis &x, SimAxis &y)
     x.startPath();
     y.startPath();
     m_phase = Phase::Path;
+    m_last = m_path.start();
     m_mover.moveTo(m_path.length());
 }
 
@@ -82,9 +83,13 @@ void Interpolator::tick(SimAxis &x, SimAxis &y)
         return;
     }
     const InterpolationPath::Point p = m_path.pointAt(m_mover.position());
+    // The pulse rates from the unrounded path, so whole pulses do not make them jitter.
+    const double rateX = (p.x - m_last.x) * sx * 1000.0;
+    const double rateY = (p.y - m_last.y) * sy * 1000.0;
+    m_last = p;
     // The controller sends whole pulses: the counters stay integers along the way.
-    x.setPathSteps(motorderived::wholePulses(p.x, sx));
-    y.setPathSteps(motorderived::wholePulses(p.y, sy));
+    x.setPathSteps(motorderived::wholePulses(p.x, sx), rateX);
+    y.setPathSteps(motorderived::wholePulses(p.y, sy), rateY);
 }
 
 } // namespace stepcom

@@ -38,6 +38,8 @@ private:
     double m_speedRpm = 60;
     double m_startX = 0; // approach targets in steps
     double m_startY = 0;
+    // The path point of the last tick before rounding to pulses: each axis's pulse rate.
+    InterpolationPath::Point m_last{};
 };
 
 } // namespace stepcom

@@ -383,6 +383,35 @@ void SimDevice::setTravel(int motor, double travel, double overtravel)
     m_machine.setTravel(motor, travel, overtravel);
 }
 
+void SimDevice::setMachine(const MachineSettings &machine)
+{
+    QMutexLocker lock(&m_mutex);
+    sync();
+    m_machine.setMachine(machine);
+}
+
+MachineSettings SimDevice::machine() const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_machine.machine();
+}
+
+SimTruth SimDevice::truth() const
+{
+    QMutexLocker lock(&m_mutex);
+    sync();
+    SimTruth t;
+    t.timeMs = m_machine.now();
+    for (int n = 1; n <= m_machine.motorCount(); ++n)
+        t.axes.append(SimTruth::Axis::of(n, m_machine.axis(n)));
+    return t;
+}
+
+QJsonObject SimDevice::truthJson() const
+{
+    return truth().toJson();
+}
+
 void SimDevice::setStatePath(const QString &path)
 {
     QMutexLocker lock(&m_mutex);

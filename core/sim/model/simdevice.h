@@ -4,6 +4,7 @@
 #include "sim/model/simanswer.h"
 #include "sim/model/simmachine.h"
 #include "sim/model/simregisters.h"
+#include "sim/model/simtruth.h"
 
 #include <QHash>
 #include <QModbusPdu>
@@ -65,6 +66,13 @@ public:
     double machinePosition(int motor) const;
     void setMachinePosition(int motor, double units);
     void setTravel(int motor, double travel, double overtravel = 5.0);
+    // The machine's mechanics (MachineFile); without a call the ideal machine of old. A start_mm
+    // puts that carriage there now.
+    void setMachine(const MachineSettings &machine);
+    MachineSettings machine() const;
+    // What really happened: count, rotor, carriage, lost pulses, switches (see SimTruth).
+    SimTruth truth() const;
+    QJsonObject truthJson() const;
 
     // The 24 V supply switched off for `offMs` of the device's time (manual clock: advance()).
     // Meanwhile it answers nothing and refuses setValue() and command(); the motors stop at

@@ -59,6 +59,7 @@ SimMachine::SimMachine(SimRegisters &registers)
         a.running = p("running");
         m_params.append(a);
         m_axes.append(SimAxis());
+        m_axes.last().setPhysics(m_machine.axis(n), m_machine.seed * 1000003u + quint32(n));
         m_homed.append(false);
     }
     for (int i = 0; i < m_regs.inputCount(); ++i) {
@@ -222,6 +223,12 @@ void SimMachine::updateInputs()
         bool on = m_forced.at(i);
         for (int a = 0; a < m_axes.size() && !on; ++a) {
             const SimAxis &axis = m_axes.at(a);
+            // A wired switch drives its input whatever the registers name, as on a machine.
+            if (const auto &w = axis.physics().wiring) {
+                on = (axis.positiveSwitch() && w->positive == n) ||
+                     (axis.negativeSwitch() && (w->negative == n || w->home == n));
+                continue;
+            }
             if (axis.positiveSwitch() && limitInput(a, 1) == n)
                 on = true;
             if (axis.negativeSwitch() && (limitInput(a, -1) == n || homeWire(a) == n))
@@ -236,8 +243,9 @@ void SimMachine::checkHomeAndLimits()
     for (int i = 0; i < m_axes.size(); ++i) {
         SimAxis &a = m_axes[i];
         if (a.activity() == SimAxis::Activity::Home && inputOn(homeWire(i))) {
-            a.stop(); // on the home switch: stop and make this the zero
-            a.zero();
+            a.stop(); // on the home switch: stop and (unless the machine says not) zero
+            if (m_machine.homingZeroesCount)
+                a.zero();
             m_homed[i] = true;
             continue;
         }
@@ -337,7 +345,7 @@ void SimMachine::powerUp()
     m_homed.fill(false);
     // The counters start at 0 wherever the carriages stand (they do not move by themselves).
     for (SimAxis &a : m_axes)
-        a.zero();
+        a.powerUp();
     for (bool &o : m_outputs)
         o = false;
     parametersChanged(); // the restored registers, inputs read afresh, status published
@@ -477,6 +485,19 @@ void SimMachine::setTravel(int motor, double travel, double overtravel)
     if (!validMotor(motor))
         return;
     ax(motor).setTravel(travel, overtravel);
+    settle();
+    publish();
+}
+
+void SimMachine::setMachine(const MachineSettings &machine)
+{
+    m_machine = machine;
+    for (int i = 0; i < m_axes.size(); ++i) {
+        const AxisPhysics physics = machine.axis(i + 1);
+        m_axes[i].setPhysics(physics, machine.seed * 1000003u + quint32(i + 1));
+        if (physics.startMm)
+            m_axes[i].setMachinePosition(*physics.startMm);
+    }
     settle();
     publish();
 }

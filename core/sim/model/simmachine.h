@@ -2,6 +2,7 @@
 
 #include "motion/pathsetup.h"
 #include "sim/model/interpolator.h"
+#include "sim/model/machinesettings.h"
 #include "sim/model/simaxis.h"
 #include "sim/model/specialmodes.h"
 
@@ -66,6 +67,9 @@ public:
     const SimAxis &axis(int motor) const { return m_axes.at(motor - 1); }
     void setMachinePosition(int motor, double units);
     void setTravel(int motor, double travel, double overtravel);
+    // The mechanics of every axis; a start_mm puts that carriage there now.
+    void setMachine(const MachineSettings &machine);
+    const MachineSettings &machine() const { return m_machine; }
     bool homingSequenceActive() const { return !m_homingQueue.isEmpty(); }
     bool homed(int motor) const { return m_homed.value(motor - 1); }
     const Interpolator &interpolator() const { return m_interpolator; }
@@ -122,6 +126,7 @@ private:
     QList<bool> m_inputs;
     QList<bool> m_outputs;
     QList<int> m_homingQueue; // motors still to home, the first is homing now
+    MachineSettings m_machine = MachineSettings::ideal();
     Interpolator m_interpolator;
     SpecialModes m_modes;
     qint64 m_now = 0;

@@ -1,12 +1,17 @@
 #include "testpaths.h"
 
+#include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <cmath>
 #include <memory>
 
 using namespace stepcom;
@@ -89,6 +94,64 @@ private Q_SLOTS:
         QVERIFY(p.waitForFinished(5000));
         QCOMPARE(p.exitCode(), 2);
         QVERIFY(p.readAllStandardError().contains("--drop"));
+    }
+
+    void badMachineFileIsRefused()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("machine.json"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format": "stepcom-sim-machine", "version": 1,
+                    "axes": {"motor1": {"backlash_mm": -1}}})");
+        f.close();
+        QProcess p;
+        p.start(test::programPath(QStringLiteral("stepcom-sim")),
+                {QStringLiteral("--tcp"), QStringLiteral("0"), QStringLiteral("--machine"), path});
+        QVERIFY(p.waitForFinished(5000));
+        QCOMPARE(p.exitCode(), 2);
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(err.contains(path + QStringLiteral(": axes.motor1.backlash_mm: ")),
+                 qPrintable(err));
+    }
+
+    // --truth-out: what really happened, for a test in another process.
+    void truthOutShowsAStall()
+    {
+        QTemporaryDir dir;
+        const QString machine = dir.filePath(QStringLiteral("machine.json"));
+        const QString truth = dir.filePath(QStringLiteral("truth.json"));
+        QFile f(machine);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format": "stepcom-sim-machine", "version": 1, "axes": {"motor1":
+                    {"pull_out_rpm": 100, "pull_in_rpm": 30, "start_mm": 30}}})");
+        f.close();
+        auto read = [&truth] {
+            QFile file(truth);
+            if (!file.open(QIODevice::ReadOnly))
+                return QJsonObject();
+            const QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+            return root.value(QStringLiteral("axes")).toArray().at(0).toObject();
+        };
+        auto sim =
+            startSim({QStringLiteral("--tcp"), QStringLiteral("0"), QStringLiteral("--console"),
+                      QStringLiteral("--machine"), machine, QStringLiteral("--truth-out"), truth},
+                     nullptr);
+        QVERIFY(sim);
+        QTRY_COMPARE(read().value(QStringLiteral("carriage_mm")).toDouble(), 30.0);
+        QCOMPARE(read().value(QStringLiteral("stalled")).toBool(), false);
+        sim->write("set motor1.speed 300\ndo motor1.forward\n");
+        QTRY_VERIFY_WITH_TIMEOUT(read().value(QStringLiteral("stalled")).toBool(), 10000);
+        sim->write("do motor1.stop\nquit\n");
+        QVERIFY(sim->waitForFinished(5000));
+        QCOMPARE(sim->exitCode(), 0);
+        const QJsonObject last = read(); // written at exit
+        QCOMPARE(last.value(QStringLiteral("stalled")).toBool(), false);
+        const qint64 lost = qint64(last.value(QStringLiteral("lost_pulses")).toDouble());
+        QVERIFY(lost > 0);
+        QCOMPARE(lost % 32, 0);
+        QVERIFY(std::abs(last.value(QStringLiteral("lost_mm")).toDouble() + double(lost) / 320.0) <
+                1e-9);
     }
 
     void mbpollOverThePty()

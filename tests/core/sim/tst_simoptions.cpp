@@ -1,10 +1,14 @@
+#include "sim/host/builtinsimulator.h"
 #include "sim/host/simcommandline.h"
 #include "sim/host/simconsole.h"
 #include "sim/host/simhost.h"
+#include "sim/model/machinefile.h"
 #include "sim/model/simdevice.h"
 #include "sim/serve/faultinjector.h"
 #include "sim/serve/simresponder.h"
 
+#include <QFile>
+#include <QTemporaryDir>
 #include <QTest>
 
 using namespace stepcom;
@@ -145,6 +149,11 @@ private Q_SLOTS:
             << QStringList{QStringLiteral("--line"), QStringLiteral("2"),
                            QStringLiteral("--line-echo"), QStringLiteral("3")}
             << "--line-echo: '3' is not a party of the line (1 to 2)";
+        QTest::newRow("machine file missing")
+            << QStringList{QStringLiteral("--machine"), QStringLiteral("/nonexistent/m.json")}
+            << "/nonexistent/m.json: cannot read the machine file";
+        QTest::newRow("truth-out empty")
+            << QStringList{QStringLiteral("--truth-out=")} << "--truth-out";
         QTest::newRow("map") << QStringList{QStringLiteral("--map"),
                                             QStringLiteral("/nonexistent.json")}
                              << "nonexistent";
@@ -157,6 +166,61 @@ private Q_SLOTS:
         QString error;
         QVERIFY(!parse(args, &o, &error));
         QVERIFY2(error.contains(mentions), qPrintable(error));
+    }
+
+    // --machine FILE reaches every controller of the host; a bad one stops the start.
+    void machineFile()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("machine.json"));
+        auto write = [&path](const QByteArray &axis) {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            f.write(R"({"format": "stepcom-sim-machine", "version": 1, "homing_zeroes_count":
+                        false, "axes": {)" +
+                    axis + "}}");
+        };
+        write(R"("motor2": {"start_mm": 12.5, "backlash_mm": 0.03})");
+        SimOptions o;
+        QString error;
+        QVERIFY2(parse({QStringLiteral("--tcp"), QStringLiteral("0"), QStringLiteral("--machine"),
+                        path, QStringLiteral("--truth-out"), dir.filePath(QStringLiteral("t"))},
+                       &o, &error),
+                 qPrintable(error));
+        QVERIFY(o.machine);
+        QCOMPARE(o.machine->source, path);
+        QCOMPARE(o.truthOut, dir.filePath(QStringLiteral("t")));
+        o.manualClock = true;
+        o.ids = {1, 2};
+        SimHost host;
+        QVERIFY2(host.start(o, &error), qPrintable(error));
+        for (SimDevice *d : host.devices()) {
+            QCOMPARE(d->machinePosition(2), 12.5);
+            QCOMPARE(d->machinePosition(1), 50.0);
+            QCOMPARE(d->machine().axis(2).backlashMm, 0.03);
+            QVERIFY(!d->machine().homingZeroesCount);
+        }
+        host.stop();
+        write(R"("motor3": {})"); // the built-in map has two motors
+        o.machine = MachineFile::load(path, &error);
+        QVERIFY(o.machine);
+        QVERIFY(!host.start(o, &error));
+        QVERIFY2(error.contains(path + QStringLiteral(": axes.motor3")), qPrintable(error));
+
+        // The window's simulator says a bad file and runs as the ideal machine.
+        write(R"("motor1": {"pull_in_rpm": "fast"})");
+        BuiltinSimulator sim;
+        QVERIFY(!sim.setMachineFile(path, &error));
+        QVERIFY2(error.contains(path + QStringLiteral(": axes.motor1.pull_in_rpm: ")),
+                 qPrintable(error));
+        QVERIFY(!sim.machine());
+        write(R"("motor1": {"backlash_mm": 0.1})");
+        QVERIFY2(sim.setMachineFile(path, &error), qPrintable(error));
+        QVERIFY(sim.machine());
+        const auto link = sim.start(RegisterMap::builtin(), &error);
+        QVERIFY2(link, qPrintable(error));
+        QCOMPARE(sim.host()->device()->machine().axis(1).backlashMm, 0.1);
+        sim.stop();
     }
 
     void faultDiceAreSeeded()
