@@ -5,6 +5,7 @@
 #include "device/deviceclient.h"
 #include "device/parameterstore.h"
 #include "map/registermap.h"
+#include "motion/motionjudge.h"
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
@@ -70,9 +71,29 @@ void SequenceRunner::home(const SequenceStep &step)
             tr("this register map has no homing command for %1").arg(step.describe()));
         return;
     }
-    m_waitCommand = keys.first();
-    m_waitMotion = keys.first();
-    m_session->command(keys.first());
+    // What the judge reads (the home inputs, limits, the mode), as StepMove and `command
+    // --wait` read it: a homing is judged on what the controller holds now.
+    const QString key = keys.first();
+    QList<const Parameter *> params;
+    for (const QString &k : MotionJudge::inputKeys(map, key))
+        params << map.find(k);
+    m_session->parameters()->read(
+        params,
+        [self = QPointer<SequenceRunner>(this), key](const ReadOutcome &r) {
+            if (!self || !self->m_running || self->m_ending != Ending::None)
+                return;
+            if (!r.ok) {
+                self->end(SequenceResult::Outcome::DeviceError,
+                          tr("could not read what the homing is judged on (%1): nothing was moved")
+                              .arg(r.errors.join(QLatin1String("; "))));
+                return;
+            }
+            self->m_session->parameters()->store()->setDeviceValues(r.values);
+            self->m_waitCommand = key;
+            self->m_waitMotion = key;
+            self->m_session->command(key);
+        },
+        Priority::Command);
 }
 
 void SequenceRunner::move(const SequenceStep &step)
