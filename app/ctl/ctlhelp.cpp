@@ -29,7 +29,8 @@ const ExitCodeRow kExitCodes[] = {
                                      "an apply not confirmed")},
     {CtlRunner::LinkError,
      QT_TRANSLATE_NOOP("stepcomctl", "diff, scan: a link or device error (their 1 is an\n"
-                                     "answer)")},
+                                     "answer); run: the link lost, the controller\n"
+                                     "restarted, a command not taken")},
 };
 
 // "  first<padded>help" with the help's further lines under its first one.

@@ -133,6 +133,8 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          tr("n")},
         {QStringLiteral("seconds"), tr("listen: stop after N seconds (default: until Ctrl-C)."),
          tr("n")},
+        {QStringLiteral("cycles"), tr("run: how many times the whole step list runs (default 1)."),
+         tr("n")},
         {QStringLiteral("rs485"),
          tr("Who switches an RS-485 adapter's direction: auto (the adapter itself, default), "
             "kernel (the driver's RS-485 mode, RTS on send) or rts (StepCom raises RTS for "
@@ -287,6 +289,10 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         (!toInt(parser.value(QStringLiteral("seconds")), &o.seconds) || o.seconds < 1))
         return tr("--seconds: '%1' is not a positive number of seconds")
             .arg(parser.value(QStringLiteral("seconds")));
+    if (parser.isSet(QStringLiteral("cycles")) &&
+        (!toInt(parser.value(QStringLiteral("cycles")), &o.cycles) || o.cycles < 1))
+        return tr("--cycles: '%1' is not a positive number")
+            .arg(parser.value(QStringLiteral("cycles")));
     if (!toInt(parser.value(QStringLiteral("days")), &o.days) || o.days < 0)
         return tr("--days: '%1' is not a number of days").arg(parser.value(QStringLiteral("days")));
     o.logFile = parser.value(QStringLiteral("log"));

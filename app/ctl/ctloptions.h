@@ -45,6 +45,7 @@ struct CtlOptions
     int days = 7;        // bundle --days N
     QString profile;     // bundle --profile FILE
     int seconds = 0;     // listen --seconds N: stop after N s (0: until Ctrl-C)
+    int cycles = 1;      // run --cycles N: how many times the whole step list runs
     int count = -1;
     int intervalMs = 0;
     QString command;

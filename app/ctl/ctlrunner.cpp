@@ -42,6 +42,16 @@ const QList<CtlCommand> &CtlRunner::commands()
                                          "move; its own distance and direction are put back and\n"
                                          "verified; exit 0 only when it arrived"),
          &runMove},
+        {"run", "run FILE",
+         QT_TRANSLATE_NOOP("stepcomctl",
+                           "run a machine cycle (a .stepseq file: home, moves, waits\n"
+                           "for inputs, outputs, dwells, repeats; docs/sequence.md)\n"
+                           "--cycles N times, after showing it and asking (--yes);\n"
+                           "each step a line on stderr (--json: JSON lines); Ctrl-C\n"
+                           "stops the motors; exit 0 done, 1 stopped by the machine\n"
+                           "(timeout, limit, E-STOP) or Ctrl-C, 2 bad file, 3 link,\n"
+                           "restart or device"),
+         &runRun},
         {"monitor", "monitor",
          QT_TRANSLATE_NOOP("stepcomctl", "print the live status as one JSON object per line,\n"
                                          "until --count samples or Ctrl-C (--interval MS);\n"

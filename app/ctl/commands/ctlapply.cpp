@@ -96,6 +96,23 @@ void confirmThenApply(CtlContext &ctx, ProfileApply *applier, const QList<Parame
         applyWrites(ctx, applier, writes);
         return;
     }
+    const QString question =
+        ctx.isMulti()
+            ? CtlRunner::tr("Write these %n value(s) to id %1? [y/N] ", nullptr, int(writes.size()))
+                  .arg(ctx.options.ids.at(ctx.idIndex))
+            : CtlRunner::tr("Write these %n value(s) to the controller? [y/N] ", nullptr,
+                            int(writes.size()));
+    confirmThen(ctx, QString(), question,
+                {CtlRunner::tr("not confirmed: nothing was written"),
+                 CtlRunner::tr("no answer on standard input: nothing was written (use --yes)")},
+                [&ctx, applier, writes] { applyWrites(ctx, applier, writes); });
+}
+
+} // namespace
+
+void confirmThen(CtlContext &ctx, const QString &shown, const QString &question,
+                 const ConfirmRefusals &refusals, std::function<void()> yes)
+{
     if (ctx.isMulti() || ctx.isEnveloped()) {
         // With several ids the output is keyed by id at the end; what the question is about
         // must be seen before it is answered (on standard error with --json, which stays JSON).
@@ -104,51 +121,39 @@ void confirmThenApply(CtlContext &ctx, ProfileApply *applier, const QList<Parame
         if (ctx.isMulti())
             console << CtlRunner::tr("== device id %1 ==").arg(ctx.options.ids.at(ctx.idIndex))
                     << Qt::endl;
-        console << ctx.outBuffer
-                << (ctx.isMulti()
-                        ? CtlRunner::tr("Write these %n value(s) to id %1? [y/N] ", nullptr,
-                                        int(writes.size()))
-                              .arg(ctx.options.ids.at(ctx.idIndex))
-                        : CtlRunner::tr("Write these %n value(s) to the controller? [y/N] ",
-                                        nullptr, int(writes.size())))
-                << Qt::flush;
+        console << ctx.outBuffer << shown << question << Qt::flush;
         if (ctx.isMulti()) { // shown now; one id's messages stay in its JSON object
             ctx.outBuffer.clear();
             ctx.out.setString(&ctx.outBuffer);
         }
     } else {
-        ctx.out << CtlRunner::tr("Write these %n value(s) to the controller? [y/N] ", nullptr,
-                                 int(writes.size()))
-                << Qt::flush;
+        ctx.out << shown << question << Qt::flush;
     }
     // Standard input is read through the event loop, so the link stays served meanwhile.
     auto *console = new ConsoleReader(ctx.runner());
     auto answered = std::make_shared<bool>(false);
     QObject::connect(console, &ConsoleReader::lineRead, ctx.runner(),
-                     [&ctx, applier, writes, console, answered](const QString &line) {
+                     [&ctx, yes, refusals, console, answered](const QString &line) {
                          if (*answered)
                              return;
                          *answered = true;
                          console->deleteLater();
                          const QString a = line.trimmed().toLower();
                          if (a == QLatin1String("y") || a == QLatin1String("yes")) {
-                             applyWrites(ctx, applier, writes);
+                             yes();
                              return;
                          }
-                         ctx.fail(CtlRunner::UsageError,
-                                  CtlRunner::tr("not confirmed: nothing was written"));
+                         ctx.fail(CtlRunner::UsageError, refusals.notConfirmed);
                      });
-    QObject::connect(console, &ConsoleReader::endOfInput, ctx.runner(), [&ctx, console, answered] {
-        if (*answered)
-            return;
-        *answered = true;
-        console->deleteLater();
-        ctx.fail(CtlRunner::UsageError,
-                 CtlRunner::tr("no answer on standard input: nothing was written (use --yes)"));
-    });
+    QObject::connect(console, &ConsoleReader::endOfInput, ctx.runner(),
+                     [&ctx, refusals, console, answered] {
+                         if (*answered)
+                             return;
+                         *answered = true;
+                         console->deleteLater();
+                         ctx.fail(CtlRunner::UsageError, refusals.noAnswer);
+                     });
 }
-
-} // namespace
 
 void runApply(CtlContext &ctx)
 {

@@ -43,6 +43,20 @@ void runDiff(CtlContext &ctx);
 void runReport(CtlContext &ctx);
 // ctlapply.cpp: a profile's differing values written, after asking, and verified.
 void runApply(CtlContext &ctx);
+// ctlrun.cpp: a machine cycle (a .stepseq file) run, shown and asked about first.
+void runRun(CtlContext &ctx);
+
+// What a question before a risky command says when it is not answered yes.
+struct ConfirmRefusals
+{
+    QString notConfirmed; // answered anything but y/yes
+    QString noAnswer;     // standard input ended
+};
+// Shows `shown` and asks `question` on the console (standard error with --json), reading the
+// answer through the event loop: `yes` on y/yes, else the run fails (exit 2) with a refusal
+// (ctlapply.cpp).
+void confirmThen(CtlContext &ctx, const QString &shown, const QString &question,
+                 const ConfirmRefusals &refusals, std::function<void()> yes);
 // ctlmachine.cpp: report --id 1,2,3, every controller of the line in one document.
 void runMachineReport(CtlContext &ctx);
 // ctlreplay.cpp: replay a session log or a bundle's; make a support bundle.
