@@ -106,6 +106,26 @@
         <source>--listen needs --port</source>
         <translation>--listen needs --port</translation>
     </message>
+    <message>
+        <source>With --sim: the simulated machine&apos;s mechanics from this machine file (stalls, backlash, switches; default: the setting simulator/machineFile).</source>
+        <translation>With --sim: the simulated machine&apos;s mechanics from this machine file (stalls, backlash, switches; default: the setting simulator/machineFile).</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>file</translation>
+    </message>
+    <message>
+        <source>%1 is above pull_out_rpm (%2): a motor cannot start faster than it runs</source>
+        <translation>%1 is above pull_out_rpm (%2): a motor cannot start faster than it runs</translation>
+    </message>
+    <message>
+        <source>%1 is not above negative_switch_mm (%2)</source>
+        <translation>%1 is not above negative_switch_mm (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is beyond the hard stops</source>
+        <translation>%1 is beyond the hard stops</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -359,6 +379,10 @@
     <message>
         <source>cannot make the folder of %1</source>
         <translation>cannot make the folder of %1</translation>
+    </message>
+    <message>
+        <source>%1 (the simulator runs as the ideal machine)</source>
+        <translation>%1 (the simulator runs as the ideal machine)</translation>
     </message>
 </context>
 <context>
@@ -2443,6 +2467,14 @@
         <source>no command given (%1)</source>
         <translation>no command given (%1)</translation>
     </message>
+    <message>
+        <source>run: how many times the whole step list runs (default 1).</source>
+        <translation>run: how many times the whole step list runs (default 1).</translation>
+    </message>
+    <message>
+        <source>--cycles: &apos;%1&apos; is not a positive number</source>
+        <translation>--cycles: &apos;%1&apos; is not a positive number</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlRunner</name>
@@ -2950,6 +2982,73 @@
     <message>
         <source>listen hears a serial line: give --port (a line StepCom does not drive; --tcp and --sim have no other master to hear)</source>
         <translation>listen hears a serial line: give --port (a line StepCom does not drive; --tcp and --sim have no other master to hear)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Sequence %1: %n step(s) in the file</source>
+        <translation>
+            <numerusform>Sequence %1: %n step in the file</numerusform>
+            <numerusform>Sequence %1: %n steps in the file</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>  point %1: %2</source>
+        <translation>  point %1: %2</translation>
+    </message>
+    <message>
+        <source>  limits motor%1: %2 .. %3 %4</source>
+        <translation>  limits motor%1: %2 .. %3 %4</translation>
+    </message>
+    <message>
+        <source>  on a stop: all outputs off</source>
+        <translation>  on a stop: all outputs off</translation>
+    </message>
+    <message>
+        <source>  on a stop: the outputs are left as they are</source>
+        <translation>  on a stop: the outputs are left as they are</translation>
+    </message>
+    <message>
+        <source>  cycles: %1 (the whole step list each time)</source>
+        <translation>  cycles: %1 (the whole step list each time)</translation>
+    </message>
+    <message>
+        <source>%1 (at %2)</source>
+        <translation>%1 (at %2)</translation>
+    </message>
+    <message>
+        <source>cycles done: %1; cycle time min %2 s, median %3 s, max %4 s; %5 s in all</source>
+        <translation>cycles done: %1; cycle time min %2 s, median %3 s, max %4 s; %5 s in all</translation>
+    </message>
+    <message>
+        <source>cycle %1 %2: %3</source>
+        <translation>cycle %1 %2: %3</translation>
+    </message>
+    <message>
+        <source>cycle %1 done in %2 s</source>
+        <translation>cycle %1 done in %2 s</translation>
+    </message>
+    <message>
+        <source>the run could not start: not connected</source>
+        <translation>the run could not start: not connected</translation>
+    </message>
+    <message>
+        <source>run needs one sequence file: run FILE</source>
+        <translation>run needs one sequence file: run FILE</translation>
+    </message>
+    <message>
+        <source>the sequence file was refused: nothing was sent</source>
+        <translation>the sequence file was refused: nothing was sent</translation>
+    </message>
+    <message>
+        <source>Run it? The machine will move. [y/N] </source>
+        <translation>Run it? The machine will move. [y/N] </translation>
+    </message>
+    <message>
+        <source>not confirmed: nothing was sent</source>
+        <translation>not confirmed: nothing was sent</translation>
+    </message>
+    <message>
+        <source>no answer on standard input: nothing was sent (use --yes)</source>
+        <translation>no answer on standard input: nothing was sent (use --yes)</translation>
     </message>
 </context>
 <context>
@@ -5287,6 +5386,41 @@ Every other master on the bus must use the new settings too, and no other device
             <numerusform>Commissioning report of %n device written to %1</numerusform>
             <numerusform>Commissioning report of %n devices written to %1</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MachineFile</name>
+    <message>
+        <source>%1: cannot read the machine file: %2</source>
+        <translation>%1: cannot read the machine file: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>not JSON (%1 at offset %2)</source>
+        <translation>not JSON (%1 at offset %2)</translation>
+    </message>
+    <message>
+        <source>not a JSON object</source>
+        <translation>not a JSON object</translation>
+    </message>
+    <message>
+        <source>format: must be &quot;stepcom-sim-machine&quot;</source>
+        <translation>format: must be &quot;stepcom-sim-machine&quot;</translation>
+    </message>
+    <message>
+        <source>version: must be 1</source>
+        <translation>version: must be 1</translation>
+    </message>
+    <message>
+        <source>%1: unknown key (the axes are motor1, motor2, ...)</source>
+        <translation>%1: unknown key (the axes are motor1, motor2, ...)</translation>
+    </message>
+    <message>
+        <source>%1: must be an object</source>
+        <translation>%1: must be an object</translation>
     </message>
 </context>
 <context>
@@ -8242,6 +8376,33 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::Reader</name>
+    <message>
+        <source>unknown key</source>
+        <translation>unknown key</translation>
+    </message>
+    <message>
+        <source>must be a number</source>
+        <translation>must be a number</translation>
+    </message>
+    <message>
+        <source>%1 is out of range (%2 to %3)</source>
+        <translation>%1 is out of range (%2 to %3)</translation>
+    </message>
+    <message>
+        <source>must be a whole number</source>
+        <translation>must be a whole number</translation>
+    </message>
+    <message>
+        <source>must be true or false</source>
+        <translation>must be true or false</translation>
+    </message>
+    <message>
+        <source>must be an object</source>
+        <translation>must be an object</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ReferenceTracker</name>
     <message>
         <source>referenced</source>
@@ -8665,6 +8826,363 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SequenceCheck</name>
+    <message>
+        <source>%1: the run has too many steps to check its positions (more than %2): make it shorter or use fewer cycles</source>
+        <translation>%1: the run has too many steps to check its positions (more than %2): make it shorter or use fewer cycles</translation>
+    </message>
+    <message>
+        <source>motor %1 would go to %2 %3, outside the file&apos;s limits (%4 .. %5 %3)</source>
+        <translation>motor %1 would go to %2 %3, outside the file&apos;s limits (%4 .. %5 %3)</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s homing order (40177, 40178) names no motor: &quot;home&quot;: &quot;order&quot; homes nothing</source>
+        <translation>the controller&apos;s homing order (40177, 40178) names no motor: &quot;home&quot;: &quot;order&quot; homes nothing</translation>
+    </message>
+    <message>
+        <source>motor %1 is not referenced: a move_to needs a home step before it (or the axis referenced already)</source>
+        <translation>motor %1 is not referenced: a move_to needs a home step before it (or the axis referenced already)</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceMove</name>
+    <message>
+        <source>A move is still running: wait for it to end</source>
+        <translation>A move is still running: wait for it to end</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceParser</name>
+    <message>
+        <source>a true/false</source>
+        <translation>a true/false</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>a number</translation>
+    </message>
+    <message>
+        <source>a text</source>
+        <translation>a text</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>a list</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>an object</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>nothing</translation>
+    </message>
+    <message>
+        <source>unknown key &quot;%1&quot; (allowed here: %2)</source>
+        <translation>unknown key &quot;%1&quot; (allowed here: %2)</translation>
+    </message>
+    <message>
+        <source>must be %1, not %2</source>
+        <translation>must be %1, not %2</translation>
+    </message>
+    <message>
+        <source>a whole number</source>
+        <translation>a whole number</translation>
+    </message>
+    <message>
+        <source>must be a whole number from %1 to %2, not %3</source>
+        <translation>must be a whole number from %1 to %2, not %3</translation>
+    </message>
+    <message>
+        <source>unknown axis &quot;%1&quot; (this controller has motor1 .. motor%2)</source>
+        <translation>unknown axis &quot;%1&quot; (this controller has motor1 .. motor%2)</translation>
+    </message>
+    <message>
+        <source>an object {&quot;motor1&quot;: …}</source>
+        <translation>an object {&quot;motor1&quot;: …}</translation>
+    </message>
+    <message>
+        <source>names no axis</source>
+        <translation>names no axis</translation>
+    </message>
+    <message>
+        <source>an object of named points</source>
+        <translation>an object of named points</translation>
+    </message>
+    <message>
+        <source>an object {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</source>
+        <translation>an object {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</translation>
+    </message>
+    <message>
+        <source>an object {&quot;min&quot;: …, &quot;max&quot;: …}</source>
+        <translation>an object {&quot;min&quot;: …, &quot;max&quot;: …}</translation>
+    </message>
+    <message>
+        <source>sets neither min nor max</source>
+        <translation>sets neither min nor max</translation>
+    </message>
+    <message>
+        <source>must be &quot;leave&quot; or &quot;all_off&quot;</source>
+        <translation>must be &quot;leave&quot; or &quot;all_off&quot;</translation>
+    </message>
+    <message>
+        <source>a list of steps</source>
+        <translation>a list of steps</translation>
+    </message>
+    <message>
+        <source>holds no step</source>
+        <translation>holds no step</translation>
+    </message>
+    <message>
+        <source>a step (an object)</source>
+        <translation>a step (an object)</translation>
+    </message>
+    <message>
+        <source>unknown key &quot;%1&quot;: a step needs one of %2</source>
+        <translation>unknown key &quot;%1&quot;: a step needs one of %2</translation>
+    </message>
+    <message>
+        <source>not a step: it needs one of %1</source>
+        <translation>not a step: it needs one of %1</translation>
+    </message>
+    <message>
+        <source>one step does one thing, not %1</source>
+        <translation>one step does one thing, not %1</translation>
+    </message>
+    <message>
+        <source>&quot;order&quot; or a motor (&quot;motor1&quot;)</source>
+        <translation>&quot;order&quot; or a motor (&quot;motor1&quot;)</translation>
+    </message>
+    <message>
+        <source>unknown point &quot;%1&quot; (the file&apos;s points: %2)</source>
+        <translation>unknown point &quot;%1&quot; (the file&apos;s points: %2)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>none</translation>
+    </message>
+    <message>
+        <source>the controller has no input %1 (it has IN1 .. IN%2)</source>
+        <translation>the controller has no input %1 (it has IN1 .. IN%2)</translation>
+    </message>
+    <message>
+        <source>the controller has no output %1 (it has outputs 1 .. %2)</source>
+        <translation>the controller has no output %1 (it has outputs 1 .. %2)</translation>
+    </message>
+    <message>
+        <source>the controller cannot switch output %1 alone (only outputs with their own on/off command: output 1); use &quot;outputs&quot;: &quot;all_on&quot; or &quot;all_off&quot;</source>
+        <translation>the controller cannot switch output %1 alone (only outputs with their own on/off command: output 1); use &quot;outputs&quot;: &quot;all_on&quot; or &quot;all_off&quot;</translation>
+    </message>
+    <message>
+        <source>needs &quot;on&quot;: true or false</source>
+        <translation>needs &quot;on&quot;: true or false</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true or false</translation>
+    </message>
+    <message>
+        <source>a number of seconds</source>
+        <translation>a number of seconds</translation>
+    </message>
+    <message>
+        <source>must be more than 0 and at most 86400 s</source>
+        <translation>must be more than 0 and at most 86400 s</translation>
+    </message>
+    <message>
+        <source>must be &quot;all_on&quot; or &quot;all_off&quot;</source>
+        <translation>must be &quot;all_on&quot; or &quot;all_off&quot;</translation>
+    </message>
+    <message>
+        <source>a repeat needs &quot;steps&quot;</source>
+        <translation>a repeat needs &quot;steps&quot;</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>line %1, column %2</translation>
+    </message>
+    <message>
+        <source>%1: not valid JSON at %2: %3</source>
+        <translation>%1: not valid JSON at %2: %3</translation>
+    </message>
+    <message>
+        <source>%1: a sequence file is one JSON object</source>
+        <translation>%1: a sequence file is one JSON object</translation>
+    </message>
+    <message>
+        <source>not a sequence file (&quot;format&quot; must be &quot;%1&quot;)</source>
+        <translation>not a sequence file (&quot;format&quot; must be &quot;%1&quot;)</translation>
+    </message>
+    <message>
+        <source>version %1 is not known (this StepCom reads version %2)</source>
+        <translation>version %1 is not known (this StepCom reads version %2)</translation>
+    </message>
+    <message>
+        <source>the file has no &quot;steps&quot;</source>
+        <translation>the file has no &quot;steps&quot;</translation>
+    </message>
+    <message>
+        <source>%1: cannot be read: %2</source>
+        <translation>%1: cannot be read: %2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceRunner</name>
+    <message>
+        <source>%1: the input did not come within %2 s</source>
+        <translation>%1: the input did not come within %2 s</translation>
+    </message>
+    <message>
+        <source>E-STOP: every motor and output stopped; the run ended</source>
+        <translation>E-STOP: every motor and output stopped; the run ended</translation>
+    </message>
+    <message>
+        <source>the link was lost (%1): the run ended; the controller goes on with what it was doing</source>
+        <translation>the link was lost (%1): the run ended; the controller goes on with what it was doing</translation>
+    </message>
+    <message>
+        <source>the controller restarted (or may have): its positions and references are gone; the run ended</source>
+        <translation>the controller restarted (or may have): its positions and references are gone; the run ended</translation>
+    </message>
+    <message>
+        <source>could not read the positions, speeds and homing order (%1): nothing was moved</source>
+        <translation>could not read the positions, speeds and homing order (%1): nothing was moved</translation>
+    </message>
+    <message>
+        <source>motor %1 is running</source>
+        <translation>motor %1 is running</translation>
+    </message>
+    <message>
+        <source>the run was refused before anything moved: %1</source>
+        <translation>the run was refused before anything moved: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cycle(s) done</source>
+        <translation>
+            <numerusform>%n cycle done</numerusform>
+            <numerusform>%n cycles done</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>stopped: the run was interrupted</source>
+        <translation>stopped: the run was interrupted</translation>
+    </message>
+    <message>
+        <source>The motors&apos; own speed or single-move values may not be back: read them before the next run</source>
+        <translation>The motors&apos; own speed or single-move values may not be back: read them before the next run</translation>
+    </message>
+    <message>
+        <source>this register map has no homing command for %1</source>
+        <translation>this register map has no homing command for %1</translation>
+    </message>
+    <message>
+        <source>could not read what the homing is judged on (%1): nothing was moved</source>
+        <translation>could not read what the homing is judged on (%1): nothing was moved</translation>
+    </message>
+    <message>
+        <source>this register map has no command %1</source>
+        <translation>this register map has no command %1</translation>
+    </message>
+    <message>
+        <source>the speed could not be written and verified (%1)</source>
+        <translation>the speed could not be written and verified (%1)</translation>
+    </message>
+    <message>
+        <source>the controller did not acknowledge %1: the run ended</source>
+        <translation>the controller did not acknowledge %1: the run ended</translation>
+    </message>
+    <message>
+        <source>the outputs could not be read back (%1)</source>
+        <translation>the outputs could not be read back (%1)</translation>
+    </message>
+    <message>
+        <source>output %1 still reads OFF after its command</source>
+        <translation>output %1 still reads OFF after its command</translation>
+    </message>
+    <message>
+        <source>output %1 still reads ON after its command</source>
+        <translation>output %1 still reads ON after its command</translation>
+    </message>
+    <message>
+        <source>%1; the outputs the run had switched on read OFF: an E-STOP (or all outputs off) from elsewhere</source>
+        <translation>%1; the outputs the run had switched on read OFF: an E-STOP (or all outputs off) from elsewhere</translation>
+    </message>
+    <message>
+        <source>the outputs the run had switched on read OFF: an E-STOP (or all outputs off) from elsewhere</source>
+        <translation>the outputs the run had switched on read OFF: an E-STOP (or all outputs off) from elsewhere</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceStep</name>
+    <message>
+        <source>home in the set order</source>
+        <translation>home in the set order</translation>
+    </message>
+    <message>
+        <source>home %1</source>
+        <translation>home %1</translation>
+    </message>
+    <message>
+        <source>move to %1</source>
+        <translation>move to %1</translation>
+    </message>
+    <message>
+        <source>move to %1 (%2)</source>
+        <translation>move to %1 (%2)</translation>
+    </message>
+    <message>
+        <source>move by %1</source>
+        <translation>move by %1</translation>
+    </message>
+    <message>
+        <source>wait for IN%1 ON (at most %2 s)</source>
+        <translation>wait for IN%1 ON (at most %2 s)</translation>
+    </message>
+    <message>
+        <source>wait for IN%1 OFF (at most %2 s)</source>
+        <translation>wait for IN%1 OFF (at most %2 s)</translation>
+    </message>
+    <message>
+        <source>wait for IN%1 ON</source>
+        <translation>wait for IN%1 ON</translation>
+    </message>
+    <message>
+        <source>wait for IN%1 OFF</source>
+        <translation>wait for IN%1 OFF</translation>
+    </message>
+    <message>
+        <source>output %1 ON</source>
+        <translation>output %1 ON</translation>
+    </message>
+    <message>
+        <source>output %1 OFF</source>
+        <translation>output %1 OFF</translation>
+    </message>
+    <message>
+        <source>all outputs ON</source>
+        <translation>all outputs ON</translation>
+    </message>
+    <message>
+        <source>all outputs OFF</source>
+        <translation>all outputs OFF</translation>
+    </message>
+    <message>
+        <source>dwell %1 ms</source>
+        <translation>dwell %1 ms</translation>
+    </message>
+    <message numerus="yes">
+        <source>repeat %n time(s)</source>
+        <translation>
+            <numerusform>repeat %n time</numerusform>
+            <numerusform>repeat %n times</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>speed %1 rpm</source>
+        <translation>speed %1 rpm</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SerialAdapter</name>
     <message>
         <source>holds received bytes up to its latency timer (16 ms by default), which adds up to 16 ms to every answer; StepCom asks for low latency (1 ms) when it opens the port, and the package&apos;s udev rule sets 1 ms; the kernel&apos;s RS-485 mode is supported by some chips</source>
@@ -9006,6 +9524,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>--line-echo: &apos;%1&apos; is not a party of the line (1 to %2)</source>
         <translation>--line-echo: &apos;%1&apos; is not a party of the line (1 to %2)</translation>
     </message>
+    <message>
+        <source>The machine&apos;s mechanics from FILE (format stepcom-sim-machine): motor limits (stalls), backlash, switches, hard stops, wiring.</source>
+        <translation>The machine&apos;s mechanics from FILE (format stepcom-sim-machine): motor limits (stalls), backlash, switches, hard stops, wiring.</translation>
+    </message>
+    <message>
+        <source>Keep what really happened (count, rotor, carriage, lost steps, switches) as JSON in FILE, rewritten when it changes (at most every 50 ms).</source>
+        <translation>Keep what really happened (count, rotor, carriage, lost steps, switches) as JSON in FILE, rewritten when it changes (at most every 50 ms).</translation>
+    </message>
+    <message>
+        <source>--truth-out: no file given</source>
+        <translation>--truth-out: no file given</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimConsole</name>
@@ -9194,6 +9724,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>power cycle: 24 V back on</source>
         <translation>power cycle: 24 V back on</translation>
+    </message>
+    <message>
+        <source>%1: axes.motor%2: the register map has %3 motors</source>
+        <translation>%1: axes.motor%2: the register map has %3 motors</translation>
     </message>
 </context>
 <context>
@@ -9930,6 +10464,13 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::TruthWriter</name>
+    <message>
+        <source>--truth-out: %1: %2</source>
+        <translation>--truth-out: %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ValueCheck</name>
     <message>
         <source>%1 – %2</source>
@@ -10349,12 +10890,6 @@ file, a write the window asks about without --yes,
 an apply not confirmed</translation>
     </message>
     <message>
-        <source>diff, scan: a link or device error (their 1 is an
-answer)</source>
-        <translation>diff, scan: a link or device error (their 1 is an
-answer)</translation>
-    </message>
-    <message>
         <source>Exit codes (every command):</source>
         <translation>Exit codes (every command):</translation>
     </message>
@@ -10413,6 +10948,30 @@ decoded by the map, a line each as heard (--json), until
 Ctrl-C or --seconds N; a summary of frames, pairs, CRC
 errors and answer times on stderr (--port, --baud,
 --parity; --log FILE keeps it as a session log)</translation>
+    </message>
+    <message>
+        <source>diff, scan: a link or device error (their 1 is an
+answer); run: the link lost, the controller
+restarted, a command not taken</source>
+        <translation>diff, scan: a link or device error (their 1 is an
+answer); run: the link lost, the controller
+restarted, a command not taken</translation>
+    </message>
+    <message>
+        <source>run a machine cycle (a .stepseq file: home, moves, waits
+for inputs, outputs, dwells, repeats; docs/sequence.md)
+--cycles N times, after showing it and asking (--yes);
+each step a line on stderr (--json: JSON lines); Ctrl-C
+stops the motors; exit 0 done, 1 stopped by the machine
+(timeout, limit, E-STOP) or Ctrl-C, 2 bad file, 3 link,
+restart or device</source>
+        <translation>run a machine cycle (a .stepseq file: home, moves, waits
+for inputs, outputs, dwells, repeats; docs/sequence.md)
+--cycles N times, after showing it and asking (--yes);
+each step a line on stderr (--json: JSON lines); Ctrl-C
+stops the motors; exit 0 done, 1 stopped by the machine
+(timeout, limit, E-STOP) or Ctrl-C, 2 bad file, 3 link,
+restart or device</translation>
     </message>
 </context>
 </TS>

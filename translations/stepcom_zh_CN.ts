@@ -106,6 +106,26 @@
         <source>--listen needs --port</source>
         <translation>--listen 需要 --port</translation>
     </message>
+    <message>
+        <source>With --sim: the simulated machine&apos;s mechanics from this machine file (stalls, backlash, switches; default: the setting simulator/machineFile).</source>
+        <translation>与 --sim 一起使用：从此机器文件读取仿真机器的机械特性（失步、反向间隙、开关；默认：设置项 simulator/machineFile）。</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>文件</translation>
+    </message>
+    <message>
+        <source>%1 is above pull_out_rpm (%2): a motor cannot start faster than it runs</source>
+        <translation>%1 高于 pull_out_rpm（%2）：电机的启动速度不可能高于运行速度</translation>
+    </message>
+    <message>
+        <source>%1 is not above negative_switch_mm (%2)</source>
+        <translation>%1 不大于 negative_switch_mm（%2）</translation>
+    </message>
+    <message>
+        <source>%1 is beyond the hard stops</source>
+        <translation>%1 超出了机械硬限位</translation>
+    </message>
 </context>
 <context>
     <name>stepcom-sim</name>
@@ -357,6 +377,10 @@
     <message>
         <source>cannot make the folder of %1</source>
         <translation>无法创建 %1 所在的文件夹</translation>
+    </message>
+    <message>
+        <source>%1 (the simulator runs as the ideal machine)</source>
+        <translation>%1（仿真器按理想机器运行）</translation>
     </message>
 </context>
 <context>
@@ -2432,6 +2456,14 @@
         <source>no command given (%1)</source>
         <translation>未给出命令（%1）</translation>
     </message>
+    <message>
+        <source>run: how many times the whole step list runs (default 1).</source>
+        <translation>run：整个步骤表运行的次数（默认 1）。</translation>
+    </message>
+    <message>
+        <source>--cycles: &apos;%1&apos; is not a positive number</source>
+        <translation>--cycles：“%1”不是正数</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlRunner</name>
@@ -2932,6 +2964,72 @@
     <message>
         <source>listen hears a serial line: give --port (a line StepCom does not drive; --tcp and --sim have no other master to hear)</source>
         <translation>listen 监听串口线路：请给出 --port（一条不由 StepCom 驱动的线路；--tcp 和 --sim 上没有其他主站可听）</translation>
+    </message>
+    <message numerus="yes">
+        <source>Sequence %1: %n step(s) in the file</source>
+        <translation>
+            <numerusform>序列 %1：文件中有 %n 个步骤</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>  point %1: %2</source>
+        <translation>  点 %1：%2</translation>
+    </message>
+    <message>
+        <source>  limits motor%1: %2 .. %3 %4</source>
+        <translation>  电机%1 限位：%2 .. %3 %4</translation>
+    </message>
+    <message>
+        <source>  on a stop: all outputs off</source>
+        <translation>  停止时：关闭所有输出</translation>
+    </message>
+    <message>
+        <source>  on a stop: the outputs are left as they are</source>
+        <translation>  停止时：输出保持原样</translation>
+    </message>
+    <message>
+        <source>  cycles: %1 (the whole step list each time)</source>
+        <translation>  循环：%1（每次运行整个步骤表）</translation>
+    </message>
+    <message>
+        <source>%1 (at %2)</source>
+        <translation>%1（在 %2）</translation>
+    </message>
+    <message>
+        <source>cycles done: %1; cycle time min %2 s, median %3 s, max %4 s; %5 s in all</source>
+        <translation>完成循环：%1；循环时间最短 %2 秒，中位 %3 秒，最长 %4 秒；共 %5 秒</translation>
+    </message>
+    <message>
+        <source>cycle %1 %2: %3</source>
+        <translation>循环 %1 %2：%3</translation>
+    </message>
+    <message>
+        <source>cycle %1 done in %2 s</source>
+        <translation>循环 %1 用时 %2 秒完成</translation>
+    </message>
+    <message>
+        <source>the run could not start: not connected</source>
+        <translation>无法开始运行：未连接</translation>
+    </message>
+    <message>
+        <source>run needs one sequence file: run FILE</source>
+        <translation>run 需要一个序列文件：run 文件</translation>
+    </message>
+    <message>
+        <source>the sequence file was refused: nothing was sent</source>
+        <translation>序列文件被拒绝：未发送任何内容</translation>
+    </message>
+    <message>
+        <source>Run it? The machine will move. [y/N] </source>
+        <translation>运行吗？机器将会运动。[y/N] </translation>
+    </message>
+    <message>
+        <source>not confirmed: nothing was sent</source>
+        <translation>未确认：未发送任何内容</translation>
+    </message>
+    <message>
+        <source>no answer on standard input: nothing was sent (use --yes)</source>
+        <translation>标准输入没有回答：未发送任何内容（请用 --yes）</translation>
     </message>
 </context>
 <context>
@@ -5258,6 +5356,41 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>
             <numerusform>已将 %n 台设备的调试报告写入 %1</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MachineFile</name>
+    <message>
+        <source>%1: cannot read the machine file: %2</source>
+        <translation>%1：无法读取机器文件：%2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <source>not JSON (%1 at offset %2)</source>
+        <translation>不是 JSON（%1，位于偏移 %2）</translation>
+    </message>
+    <message>
+        <source>not a JSON object</source>
+        <translation>不是 JSON 对象</translation>
+    </message>
+    <message>
+        <source>format: must be &quot;stepcom-sim-machine&quot;</source>
+        <translation>format：必须是 &quot;stepcom-sim-machine&quot;</translation>
+    </message>
+    <message>
+        <source>version: must be 1</source>
+        <translation>version：必须是 1</translation>
+    </message>
+    <message>
+        <source>%1: unknown key (the axes are motor1, motor2, ...)</source>
+        <translation>%1：未知的键（轴的名称是 motor1、motor2……）</translation>
+    </message>
+    <message>
+        <source>%1: must be an object</source>
+        <translation>%1：必须是对象</translation>
     </message>
 </context>
 <context>
@@ -8188,6 +8321,33 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::Reader</name>
+    <message>
+        <source>unknown key</source>
+        <translation>未知的键</translation>
+    </message>
+    <message>
+        <source>must be a number</source>
+        <translation>必须是数字</translation>
+    </message>
+    <message>
+        <source>%1 is out of range (%2 to %3)</source>
+        <translation>%1 超出范围（%2 到 %3）</translation>
+    </message>
+    <message>
+        <source>must be a whole number</source>
+        <translation>必须是整数</translation>
+    </message>
+    <message>
+        <source>must be true or false</source>
+        <translation>必须是 true 或 false</translation>
+    </message>
+    <message>
+        <source>must be an object</source>
+        <translation>必须是对象</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ReferenceTracker</name>
     <message>
         <source>referenced</source>
@@ -8608,6 +8768,361 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SequenceCheck</name>
+    <message>
+        <source>%1: the run has too many steps to check its positions (more than %2): make it shorter or use fewer cycles</source>
+        <translation>%1：运行的步骤太多，无法检查其位置（超过 %2）：请缩短或减少循环次数</translation>
+    </message>
+    <message>
+        <source>motor %1 would go to %2 %3, outside the file&apos;s limits (%4 .. %5 %3)</source>
+        <translation>电机 %1 将到达 %2 %3，超出文件的限位（%4 .. %5 %3）</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s homing order (40177, 40178) names no motor: &quot;home&quot;: &quot;order&quot; homes nothing</source>
+        <translation>控制器的回零顺序（40177、40178）未指定电机：&quot;home&quot;: &quot;order&quot; 不会使任何电机回零</translation>
+    </message>
+    <message>
+        <source>motor %1 is not referenced: a move_to needs a home step before it (or the axis referenced already)</source>
+        <translation>电机 %1 未建立参考：move_to 之前需要回零步骤（或该轴已建立参考）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceMove</name>
+    <message>
+        <source>A move is still running: wait for it to end</source>
+        <translation>仍有运动在进行：请等待其结束</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceParser</name>
+    <message>
+        <source>a true/false</source>
+        <translation>true/false</translation>
+    </message>
+    <message>
+        <source>a number</source>
+        <translation>数字</translation>
+    </message>
+    <message>
+        <source>a text</source>
+        <translation>文本</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>列表</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>对象</translation>
+    </message>
+    <message>
+        <source>nothing</source>
+        <translation>空值</translation>
+    </message>
+    <message>
+        <source>unknown key &quot;%1&quot; (allowed here: %2)</source>
+        <translation>未知的键“%1”（此处允许：%2）</translation>
+    </message>
+    <message>
+        <source>must be %1, not %2</source>
+        <translation>必须是%1，而不是%2</translation>
+    </message>
+    <message>
+        <source>a whole number</source>
+        <translation>整数</translation>
+    </message>
+    <message>
+        <source>must be a whole number from %1 to %2, not %3</source>
+        <translation>必须是 %1 到 %2 之间的整数，而不是 %3</translation>
+    </message>
+    <message>
+        <source>unknown axis &quot;%1&quot; (this controller has motor1 .. motor%2)</source>
+        <translation>未知的轴“%1”（此控制器有 motor1 .. motor%2）</translation>
+    </message>
+    <message>
+        <source>an object {&quot;motor1&quot;: …}</source>
+        <translation>对象 {&quot;motor1&quot;: …}</translation>
+    </message>
+    <message>
+        <source>names no axis</source>
+        <translation>未指定轴</translation>
+    </message>
+    <message>
+        <source>an object of named points</source>
+        <translation>由命名点组成的对象</translation>
+    </message>
+    <message>
+        <source>an object {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</source>
+        <translation>对象 {&quot;motor1&quot;: {&quot;min&quot;: …, &quot;max&quot;: …}}</translation>
+    </message>
+    <message>
+        <source>an object {&quot;min&quot;: …, &quot;max&quot;: …}</source>
+        <translation>对象 {&quot;min&quot;: …, &quot;max&quot;: …}</translation>
+    </message>
+    <message>
+        <source>sets neither min nor max</source>
+        <translation>既未设置 min 也未设置 max</translation>
+    </message>
+    <message>
+        <source>must be &quot;leave&quot; or &quot;all_off&quot;</source>
+        <translation>必须是 &quot;leave&quot; 或 &quot;all_off&quot;</translation>
+    </message>
+    <message>
+        <source>a list of steps</source>
+        <translation>步骤列表</translation>
+    </message>
+    <message>
+        <source>holds no step</source>
+        <translation>不含任何步骤</translation>
+    </message>
+    <message>
+        <source>a step (an object)</source>
+        <translation>步骤（对象）</translation>
+    </message>
+    <message>
+        <source>unknown key &quot;%1&quot;: a step needs one of %2</source>
+        <translation>未知的键“%1”：步骤需要 %2 之一</translation>
+    </message>
+    <message>
+        <source>not a step: it needs one of %1</source>
+        <translation>不是步骤：需要 %1 之一</translation>
+    </message>
+    <message>
+        <source>one step does one thing, not %1</source>
+        <translation>一个步骤只做一件事，而不是 %1</translation>
+    </message>
+    <message>
+        <source>&quot;order&quot; or a motor (&quot;motor1&quot;)</source>
+        <translation>&quot;order&quot; 或电机（&quot;motor1&quot;）</translation>
+    </message>
+    <message>
+        <source>unknown point &quot;%1&quot; (the file&apos;s points: %2)</source>
+        <translation>未知的点“%1”（文件中的点：%2）</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>the controller has no input %1 (it has IN1 .. IN%2)</source>
+        <translation>控制器没有输入 %1（它有 IN1 .. IN%2）</translation>
+    </message>
+    <message>
+        <source>the controller has no output %1 (it has outputs 1 .. %2)</source>
+        <translation>控制器没有输出 %1（它有输出 1 .. %2）</translation>
+    </message>
+    <message>
+        <source>the controller cannot switch output %1 alone (only outputs with their own on/off command: output 1); use &quot;outputs&quot;: &quot;all_on&quot; or &quot;all_off&quot;</source>
+        <translation>控制器不能单独切换输出 %1（只有带独立开/关命令的输出可以：输出 1）；请用 &quot;outputs&quot;: &quot;all_on&quot; 或 &quot;all_off&quot;</translation>
+    </message>
+    <message>
+        <source>needs &quot;on&quot;: true or false</source>
+        <translation>需要 &quot;on&quot;: true 或 false</translation>
+    </message>
+    <message>
+        <source>true or false</source>
+        <translation>true 或 false</translation>
+    </message>
+    <message>
+        <source>a number of seconds</source>
+        <translation>秒数</translation>
+    </message>
+    <message>
+        <source>must be more than 0 and at most 86400 s</source>
+        <translation>必须大于 0 且不超过 86400 秒</translation>
+    </message>
+    <message>
+        <source>must be &quot;all_on&quot; or &quot;all_off&quot;</source>
+        <translation>必须是 &quot;all_on&quot; 或 &quot;all_off&quot;</translation>
+    </message>
+    <message>
+        <source>a repeat needs &quot;steps&quot;</source>
+        <translation>repeat 需要 &quot;steps&quot;</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>第 %1 行第 %2 列</translation>
+    </message>
+    <message>
+        <source>%1: not valid JSON at %2: %3</source>
+        <translation>%1：在 %2 处不是有效的 JSON：%3</translation>
+    </message>
+    <message>
+        <source>%1: a sequence file is one JSON object</source>
+        <translation>%1：序列文件是一个 JSON 对象</translation>
+    </message>
+    <message>
+        <source>not a sequence file (&quot;format&quot; must be &quot;%1&quot;)</source>
+        <translation>不是序列文件（&quot;format&quot; 必须是 &quot;%1&quot;）</translation>
+    </message>
+    <message>
+        <source>version %1 is not known (this StepCom reads version %2)</source>
+        <translation>未知的版本 %1（此 StepCom 读取版本 %2）</translation>
+    </message>
+    <message>
+        <source>the file has no &quot;steps&quot;</source>
+        <translation>文件中没有 &quot;steps&quot;</translation>
+    </message>
+    <message>
+        <source>%1: cannot be read: %2</source>
+        <translation>%1：无法读取：%2</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceRunner</name>
+    <message>
+        <source>%1: the input did not come within %2 s</source>
+        <translation>%1：输入未在 %2 秒内到来</translation>
+    </message>
+    <message>
+        <source>E-STOP: every motor and output stopped; the run ended</source>
+        <translation>急停：所有电机和输出已停止；运行结束</translation>
+    </message>
+    <message>
+        <source>the link was lost (%1): the run ended; the controller goes on with what it was doing</source>
+        <translation>通信中断（%1）：运行结束；控制器会继续执行它正在做的事</translation>
+    </message>
+    <message>
+        <source>the controller restarted (or may have): its positions and references are gone; the run ended</source>
+        <translation>控制器已重启（或可能已重启）：其位置和参考已丢失；运行结束</translation>
+    </message>
+    <message>
+        <source>could not read the positions, speeds and homing order (%1): nothing was moved</source>
+        <translation>无法读取位置、速度和回零顺序（%1）：未运动任何轴</translation>
+    </message>
+    <message>
+        <source>motor %1 is running</source>
+        <translation>电机 %1 正在运行</translation>
+    </message>
+    <message>
+        <source>the run was refused before anything moved: %1</source>
+        <translation>运行在任何运动之前被拒绝：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cycle(s) done</source>
+        <translation>
+            <numerusform>完成 %n 个循环</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>stopped: the run was interrupted</source>
+        <translation>已停止：运行被中断</translation>
+    </message>
+    <message>
+        <source>The motors&apos; own speed or single-move values may not be back: read them before the next run</source>
+        <translation>电机自身的速度或单次运动参数可能未恢复：下次运行前请读取它们</translation>
+    </message>
+    <message>
+        <source>this register map has no homing command for %1</source>
+        <translation>此寄存器表没有 %1 的回零命令</translation>
+    </message>
+    <message>
+        <source>could not read what the homing is judged on (%1): nothing was moved</source>
+        <translation>无法读取判断回零所需的数据（%1）：未运动任何轴</translation>
+    </message>
+    <message>
+        <source>this register map has no command %1</source>
+        <translation>此寄存器表没有命令 %1</translation>
+    </message>
+    <message>
+        <source>the speed could not be written and verified (%1)</source>
+        <translation>速度无法写入并校验（%1）</translation>
+    </message>
+    <message>
+        <source>the controller did not acknowledge %1: the run ended</source>
+        <translation>控制器未确认 %1：运行结束</translation>
+    </message>
+    <message>
+        <source>the outputs could not be read back (%1)</source>
+        <translation>无法读回输出（%1）</translation>
+    </message>
+    <message>
+        <source>output %1 still reads OFF after its command</source>
+        <translation>命令后输出 %1 仍读为 OFF</translation>
+    </message>
+    <message>
+        <source>output %1 still reads ON after its command</source>
+        <translation>命令后输出 %1 仍读为 ON</translation>
+    </message>
+    <message>
+        <source>%1; the outputs the run had switched on read OFF: an E-STOP (or all outputs off) from elsewhere</source>
+        <translation>%1；运行打开的输出读为 OFF：来自别处的急停（或全部输出关闭）</translation>
+    </message>
+    <message>
+        <source>the outputs the run had switched on read OFF: an E-STOP (or all outputs off) from elsewhere</source>
+        <translation>运行打开的输出读为 OFF：来自别处的急停（或全部输出关闭）</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceStep</name>
+    <message>
+        <source>home in the set order</source>
+        <translation>按设定顺序回零</translation>
+    </message>
+    <message>
+        <source>home %1</source>
+        <translation>%1 回零</translation>
+    </message>
+    <message>
+        <source>move to %1</source>
+        <translation>移动到 %1</translation>
+    </message>
+    <message>
+        <source>move to %1 (%2)</source>
+        <translation>移动到 %1（%2）</translation>
+    </message>
+    <message>
+        <source>move by %1</source>
+        <translation>相对移动 %1</translation>
+    </message>
+    <message>
+        <source>wait for IN%1 ON (at most %2 s)</source>
+        <translation>等待 IN%1 为 ON（最多 %2 秒）</translation>
+    </message>
+    <message>
+        <source>wait for IN%1 OFF (at most %2 s)</source>
+        <translation>等待 IN%1 为 OFF（最多 %2 秒）</translation>
+    </message>
+    <message>
+        <source>wait for IN%1 ON</source>
+        <translation>等待 IN%1 为 ON</translation>
+    </message>
+    <message>
+        <source>wait for IN%1 OFF</source>
+        <translation>等待 IN%1 为 OFF</translation>
+    </message>
+    <message>
+        <source>output %1 ON</source>
+        <translation>输出 %1 ON</translation>
+    </message>
+    <message>
+        <source>output %1 OFF</source>
+        <translation>输出 %1 OFF</translation>
+    </message>
+    <message>
+        <source>all outputs ON</source>
+        <translation>全部输出 ON</translation>
+    </message>
+    <message>
+        <source>all outputs OFF</source>
+        <translation>全部输出 OFF</translation>
+    </message>
+    <message>
+        <source>dwell %1 ms</source>
+        <translation>停留 %1 毫秒</translation>
+    </message>
+    <message numerus="yes">
+        <source>repeat %n time(s)</source>
+        <translation>
+            <numerusform>重复 %n 次</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>speed %1 rpm</source>
+        <translation>速度 %1 rpm</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SerialAdapter</name>
     <message>
         <source>holds received bytes up to its latency timer (16 ms by default), which adds up to 16 ms to every answer; StepCom asks for low latency (1 ms) when it opens the port, and the package&apos;s udev rule sets 1 ms; the kernel&apos;s RS-485 mode is supported by some chips</source>
@@ -8949,6 +9464,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>--line-echo: &apos;%1&apos; is not a party of the line (1 to %2)</source>
         <translation>--line-echo：“%1”不是线路上的端口（1 到 %2）</translation>
     </message>
+    <message>
+        <source>The machine&apos;s mechanics from FILE (format stepcom-sim-machine): motor limits (stalls), backlash, switches, hard stops, wiring.</source>
+        <translation>从 FILE 读取机器的机械特性（格式 stepcom-sim-machine）：电机极限（失步）、反向间隙、开关、机械硬限位、接线。</translation>
+    </message>
+    <message>
+        <source>Keep what really happened (count, rotor, carriage, lost steps, switches) as JSON in FILE, rewritten when it changes (at most every 50 ms).</source>
+        <translation>把实际发生的情况（计数、转子、滑台、丢步、开关）以 JSON 保存在 FILE 中，有变化时重写（最多每 50 ms 一次）。</translation>
+    </message>
+    <message>
+        <source>--truth-out: no file given</source>
+        <translation>--truth-out：没有给出文件</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::SimConsole</name>
@@ -9137,6 +9664,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>power cycle: 24 V back on</source>
         <translation>断电重启：24 V 已恢复供电</translation>
+    </message>
+    <message>
+        <source>%1: axes.motor%2: the register map has %3 motors</source>
+        <translation>%1：axes.motor%2：寄存器表只有 %3 个电机</translation>
     </message>
 </context>
 <context>
@@ -9871,6 +10402,13 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::TruthWriter</name>
+    <message>
+        <source>--truth-out: %1: %2</source>
+        <translation>--truth-out：%1：%2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ValueCheck</name>
     <message>
         <source>%1 – %2</source>
@@ -10286,12 +10824,6 @@ an apply not confirmed</source>
 apply 未确认</translation>
     </message>
     <message>
-        <source>diff, scan: a link or device error (their 1 is an
-answer)</source>
-        <translation>diff、scan：通信或设备错误（它们的 1
-是一种结果）</translation>
-    </message>
-    <message>
         <source>Exit codes (every command):</source>
         <translation>退出码（所有命令）：</translation>
     </message>
@@ -10350,6 +10882,30 @@ errors and answer times on stderr (--port, --baud,
 结束时在标准错误输出帧、配对、CRC 错误和应答时间的
 汇总（--port、--baud、--parity；--log FILE 将其保存
 为会话日志）</translation>
+    </message>
+    <message>
+        <source>diff, scan: a link or device error (their 1 is an
+answer); run: the link lost, the controller
+restarted, a command not taken</source>
+        <translation>diff、scan：通信或设备错误（它们的 1
+是一种结果）；run：通信中断、控制器
+重启、命令未被接受</translation>
+    </message>
+    <message>
+        <source>run a machine cycle (a .stepseq file: home, moves, waits
+for inputs, outputs, dwells, repeats; docs/sequence.md)
+--cycles N times, after showing it and asking (--yes);
+each step a line on stderr (--json: JSON lines); Ctrl-C
+stops the motors; exit 0 done, 1 stopped by the machine
+(timeout, limit, E-STOP) or Ctrl-C, 2 bad file, 3 link,
+restart or device</source>
+        <translation>运行机器循环（.stepseq 文件：回零、移动、等待
+输入、输出、停留、重复；docs/sequence.md）
+共 --cycles N 次，先显示并询问（--yes 跳过）；
+每个步骤在 stderr 输出一行（--json：JSON 行）；Ctrl-C
+停止电机；退出码 0 完成，1 被机器停止
+（超时、限位、急停）或 Ctrl-C，2 文件错误，3 通信、
+重启或设备错误</translation>
     </message>
 </context>
 </TS>
