@@ -2,6 +2,7 @@
 #include "motion/travellimits.h"
 #include "sequence/sequencecheck.h"
 #include "sequence/sequenceparser.h"
+#include "sequence/sequencewriter.h"
 
 #include <QTest>
 
@@ -38,6 +39,32 @@ class TestSequenceParser : public QObject
 {
     Q_OBJECT
 private Q_SLOTS:
+    // What the window saves reloads to the same sequence.
+    void writeRoundTrip()
+    {
+        const QByteArray json =
+            file("[{\"home\": \"order\"}, {\"speed\": {\"motor1\": 120}}, {\"repeat\": 3, "
+                 "\"steps\": [{\"move_to\": \"load\"}, {\"move_to\": {\"motor2\": 5.5}}, "
+                 "{\"move_by\": {\"motor1\": -2}}, {\"wait_input\": 3, \"on\": true, "
+                 "\"timeout_s\": 20}, {\"output\": 1, \"on\": true}, {\"outputs\": \"all_off\"}, "
+                 "{\"dwell_ms\": 500}, {\"repeat\": 2, \"steps\": [{\"home\": \"motor2\"}]}]}]",
+                 " \"on_stop\": {\"outputs\": \"all_off\"},\n");
+        const RegisterMap &map = RegisterMap::builtin();
+        QStringList errors;
+        const auto first = SequenceParser::parse(json, QStringLiteral("t.stepseq"), map, &errors);
+        QVERIFY2(first, qPrintable(errors.join('\n')));
+        const QByteArray written = SequenceWriter::write(*first, map);
+        const auto again =
+            SequenceParser::parse(written, QStringLiteral("t.stepseq"), map, &errors);
+        QVERIFY2(again, qPrintable(errors.join('\n') + '\n' + QString::fromUtf8(written)));
+        QCOMPARE(SequenceWriter::write(*again, map), written);
+        QCOMPARE(again->points, first->points);
+        QCOMPARE(again->limits.axes(), first->limits.axes());
+        QVERIFY(again->outputsOffOnStop);
+        QCOMPARE(again->allSteps().size(), first->allSteps().size());
+        QCOMPARE(again->steps.at(2).steps.at(3).timeoutMs, 20000);
+        QCOMPARE(again->steps.at(2).steps.at(7).steps.at(0).homeMotors, QList<int>{2});
+    }
     void example()
     {
         const QByteArray json = file(
