@@ -65,6 +65,7 @@ class TestCtlJson : public QObject
     {
         const QString tcp = QStringLiteral("127.0.0.1:%1").arg(host->tcpPort());
         args.replaceInStrings(QStringLiteral("@TCP"), tcp);
+        args.replaceInStrings(QStringLiteral("@SRC"), qEnvironmentVariable("STEPCOM_SOURCE_DIR"));
         args.replaceInStrings(QStringLiteral("@PTY"), ptyPath);
         args.replaceInStrings(QStringLiteral("@DIR/"), dir.path() + QLatin1Char('/'));
         return args;
@@ -117,6 +118,10 @@ class TestCtlJson : public QObject
             "arrived", ok);
         add("move no motor", "move MOTOR --by D|--to X", {"--sim", "move", "motor9", "--by", "1"},
             2, "motor 9", fails);
+        add("run", "run FILE", {"--sim", "run", "@SRC/tests/app/ctl/dwell.stepseq", "--yes"}, 0,
+            "outcome", ok);
+        add("run no file", "run FILE", {"--sim", "run", "@SRC/none.stepseq", "--yes"}, 2,
+            "none.stepseq", fails);
         add("monitor", "monitor", {"--sim", "monitor", "--count", "2"}, 0, "samples", ok);
         add("monitor ids", "monitor", {"--sim", "--id", "1,2", "monitor", "--count", "1"}, 0,
             "failed", ok);
