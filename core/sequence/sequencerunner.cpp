@@ -14,12 +14,6 @@
 
 namespace stepcom {
 
-namespace {
-
-const QString kMotor = QStringLiteral("motor");
-
-} // namespace
-
 SequenceRunner::SequenceRunner(DeviceSession *session, QObject *parent)
     : QObject(parent)
     , m_session(session)
@@ -81,7 +75,7 @@ QStringList SequenceRunner::check(const Sequence &sequence, int cycles) const
 {
     SequenceCheck::Start start;
     const ReferenceTracker *refs = m_session->motion()->references();
-    for (int m = 1; m <= m_session->map().blockCount(kMotor); ++m)
+    for (int m = 1; m <= m_session->map().blockCount(kMotorBlock); ++m)
         start.axes.insert(m, SequenceCheck::Axis{refs->isReferenced(m), std::nullopt});
     return SequenceCheck::check(sequence, m_session->map(), m_session->travelLimits(), start,
                                 cycles);
@@ -112,9 +106,9 @@ bool SequenceRunner::start(const Sequence &sequence, int cycles)
     m_clock.start();
     const RegisterMap &map = m_session->map();
     QList<const Parameter *> params;
-    for (int m = 1; m <= map.blockCount(kMotor); ++m) {
+    for (int m = 1; m <= map.blockCount(kMotorBlock); ++m) {
         for (const char *local : {"position", "running", "speed"}) {
-            if (const Parameter *p = map.blockParameter(kMotor, m, QLatin1String(local)))
+            if (const Parameter *p = map.blockParameter(kMotorBlock, m, QLatin1String(local)))
                 params << p;
         }
     }
@@ -151,16 +145,16 @@ void SequenceRunner::onPrepared(const ReadOutcome &read)
     SequenceCheck::Start start;
     const ReferenceTracker *refs = m_session->motion()->references();
     QStringList running;
-    for (int m = 1; m <= map.blockCount(kMotor); ++m) {
+    for (int m = 1; m <= map.blockCount(kMotorBlock); ++m) {
         SequenceCheck::Axis axis{refs->isReferenced(m), std::nullopt};
-        if (const Parameter *p = map.blockParameter(kMotor, m, QStringLiteral("position"));
+        if (const Parameter *p = map.blockParameter(kMotorBlock, m, QStringLiteral("position"));
             p && read.values.contains(p->key))
             axis.position = p->toEngineering(read.values.value(p->key));
         start.axes.insert(m, axis);
-        if (const Parameter *p = map.blockParameter(kMotor, m, QStringLiteral("running"));
+        if (const Parameter *p = map.blockParameter(kMotorBlock, m, QStringLiteral("running"));
             p && read.values.value(p->key) != 0)
             running << tr("motor %1 is running").arg(m);
-        if (const Parameter *p = map.blockParameter(kMotor, m, QStringLiteral("speed"));
+        if (const Parameter *p = map.blockParameter(kMotorBlock, m, QStringLiteral("speed"));
             p && read.values.contains(p->key))
             m_userSpeed.insert(m, read.values.value(p->key));
     }
@@ -301,8 +295,9 @@ void SequenceRunner::stop()
 
 void SequenceRunner::sendStops()
 {
-    for (int m = 1; m <= m_session->map().blockCount(kMotor); ++m) {
-        if (const Parameter *p = m_session->map().blockParameter(kMotor, m, QStringLiteral("stop")))
+    for (int m = 1; m <= m_session->map().blockCount(kMotorBlock); ++m) {
+        if (const Parameter *p =
+                m_session->map().blockParameter(kMotorBlock, m, QStringLiteral("stop")))
             m_session->command(p->key);
     }
 }
@@ -364,7 +359,7 @@ void SequenceRunner::restoreSpeeds()
     const RegisterMap &map = m_session->map();
     QList<ParameterWrite> writes;
     for (auto it = m_speedSet.begin(); it != m_speedSet.end(); ++it) {
-        const Parameter *p = map.blockParameter(kMotor, it.key(), QStringLiteral("speed"));
+        const Parameter *p = map.blockParameter(kMotorBlock, it.key(), QStringLiteral("speed"));
         if (p && m_userSpeed.contains(it.key()) && it.value() != m_userSpeed.value(it.key()))
             writes.append({p, m_userSpeed.value(it.key())});
     }

@@ -15,8 +15,6 @@ namespace stepcom {
 
 namespace {
 
-const QString kMotor = QStringLiteral("motor");
-
 QString outputKey(int n)
 {
     return QStringLiteral("io.out%1").arg(n);
@@ -62,7 +60,7 @@ void SequenceRunner::home(const SequenceStep &step)
             keys << p->key;
     } else {
         for (int m : step.homeMotors) {
-            if (const Parameter *p = map.blockParameter(kMotor, m, QStringLiteral("home")))
+            if (const Parameter *p = map.blockParameter(kMotorBlock, m, QStringLiteral("home")))
                 keys << p->key;
         }
     }
@@ -144,7 +142,7 @@ void SequenceRunner::setSpeed(const SequenceStep &step)
     QList<ParameterWrite> writes;
     QHash<int, qint64> raws;
     for (auto it = step.axes.begin(); it != step.axes.end(); ++it) {
-        const Parameter *p = map.blockParameter(kMotor, it.key(), QStringLiteral("speed"));
+        const Parameter *p = map.blockParameter(kMotorBlock, it.key(), QStringLiteral("speed"));
         QString why;
         const auto raw = p ? p->fromEngineering(it.value(), &why) : std::nullopt;
         if (!raw) {

@@ -19,13 +19,11 @@ namespace stepcom {
 
 namespace {
 
-const QString kMotor = QStringLiteral("motor");
-
 QString axesText(const RegisterMap &map, const QMap<int, double> &axes)
 {
     QStringList parts;
     for (auto it = axes.begin(); it != axes.end(); ++it) {
-        const Parameter *p = map.blockParameter(kMotor, it.key(), QStringLiteral("position"));
+        const Parameter *p = map.blockParameter(kMotorBlock, it.key(), QStringLiteral("position"));
         parts << QStringLiteral("motor%1 %2 %3")
                      .arg(it.key())
                      .arg(it.value(), 0, 'f', p ? p->decimals() : 2)
@@ -45,7 +43,8 @@ QString plan(const CtlContext &ctx, const Sequence &s)
         text += CtlRunner::tr("  point %1: %2").arg(it.key(), axesText(ctx.map, it.value())) +
                 QLatin1Char('\n');
     for (auto it = s.limits.axes().begin(); it != s.limits.axes().end(); ++it) {
-        const Parameter *p = ctx.map.blockParameter(kMotor, it.key(), QStringLiteral("position"));
+        const Parameter *p =
+            ctx.map.blockParameter(kMotorBlock, it.key(), QStringLiteral("position"));
         if (!p)
             continue;
         text += CtlRunner::tr("  limits motor%1: %2 .. %3 %4")
@@ -180,7 +179,7 @@ void runRun(CtlContext &ctx)
         // every move_to needs a home step before it. The positions read before the first step
         // are checked again by the runner.
         SequenceCheck::Start start;
-        for (int m = 1; m <= ctx.map.blockCount(kMotor); ++m)
+        for (int m = 1; m <= ctx.map.blockCount(kMotorBlock); ++m)
             start.axes.insert(m, SequenceCheck::Axis{});
         errors << SequenceCheck::check(*sequence, ctx.map, TravelLimits(), start,
                                        ctx.options.cycles);
