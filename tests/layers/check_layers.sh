@@ -22,6 +22,7 @@ declare -A allowed=(
     [core/pendant]="map device motion session"
     [core/listen]="map bus session support"
     [core/sequence]="map bus device motion session"
+    [core/proof]="map bus device motion session"
     [ui]="map device motion session line profile commissioning report i18n support pendant listen"
 )
 bad=0
