@@ -22,15 +22,19 @@ const ExitCodeRow kExitCodes[] = {
      QT_TRANSLATE_NOOP("stepcomctl", "not done: a link or device error, a value not\n"
                                      "verified, a file or backup that could not be\n"
                                      "written; diff: different; scan: none found; move,\n"
-                                     "command --wait: stopped elsewhere or not known")},
+                                     "command --wait: stopped elsewhere or not known;\n"
+                                     "lost-steps: lost or not known; a proof stopped\n"
+                                     "(Ctrl-C, E-STOP, end of input)")},
     {CtlRunner::UsageError,
      QT_TRANSLATE_NOOP("stepcomctl", "nothing was done: a usage or validation error, a bad\n"
                                      "file, a write the window asks about without --yes,\n"
-                                     "an apply not confirmed")},
+                                     "an apply not confirmed, a proof refused")},
     {CtlRunner::LinkError,
      QT_TRANSLATE_NOOP("stepcomctl", "diff, scan: a link or device error (their 1 is an\n"
                                      "answer); run: the link lost, the controller\n"
-                                     "restarted, a command not taken")},
+                                     "restarted, a command not taken; lost-steps,\n"
+                                     "margin, backlash: the link lost, a restart, a\n"
+                                     "read or move that failed")},
 };
 
 // "  first<padded>help" with the help's further lines under its first one.

@@ -133,8 +133,19 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          tr("n")},
         {QStringLiteral("seconds"), tr("listen: stop after N seconds (default: until Ctrl-C)."),
          tr("n")},
-        {QStringLiteral("cycles"), tr("run: how many times the whole step list runs (default 1)."),
+        {QStringLiteral("cycles"),
+         tr("run: how many times the whole step list runs (default 1); lost-steps, backlash: "
+            "back-and-forth moves (default 3); margin: at each value (default 2)."),
          tr("n")},
+        {QStringLiteral("distance"),
+         tr("lost-steps, margin: each move of the test (default 10 axis units); backlash: each "
+            "move (default 1)."),
+         tr("d")},
+        {QStringLiteral("step"), tr("margin: the step between the values tested."), tr("n")},
+        {QStringLiteral("accel"),
+         tr("margin: search the acceleration register at the motor's own speed.")},
+        {QStringLiteral("apply"),
+         tr("margin: write the recommended value, reviewed as write reviews it.")},
         {QStringLiteral("rs485"),
          tr("Who switches an RS-485 adapter's direction: auto (the adapter itself, default), "
             "kernel (the driver's RS-485 mode, RTS on send) or rts (StepCom raises RTS for "
@@ -293,6 +304,11 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
         (!toInt(parser.value(QStringLiteral("cycles")), &o.cycles) || o.cycles < 1))
         return tr("--cycles: '%1' is not a positive number")
             .arg(parser.value(QStringLiteral("cycles")));
+    o.cyclesGiven = parser.isSet(QStringLiteral("cycles"));
+    o.distance = parser.value(QStringLiteral("distance"));
+    o.step = parser.value(QStringLiteral("step"));
+    o.accel = parser.isSet(QStringLiteral("accel"));
+    o.apply = parser.isSet(QStringLiteral("apply"));
     if (!toInt(parser.value(QStringLiteral("days")), &o.days) || o.days < 0)
         return tr("--days: '%1' is not a number of days").arg(parser.value(QStringLiteral("days")));
     o.logFile = parser.value(QStringLiteral("log"));

@@ -37,15 +37,20 @@ struct CtlOptions
     QList<QSerialPort::Parity> scanParities;
     QList<int> scanIds;
     int probeTimeoutMs = 0;
-    QString logFile;     // --log FILE: the session log of this run, appended
-    bool events = false; // replay --events
-    QString at;          // replay --at TIME
-    QString diffFrom;    // replay --diff T1 (T2 is the next argument)
-    QString entry;       // replay BUNDLE.zip --entry NAME: which log of the bundle
-    int days = 7;        // bundle --days N
-    QString profile;     // bundle --profile FILE
-    int seconds = 0;     // listen --seconds N: stop after N s (0: until Ctrl-C)
-    int cycles = 1;      // run --cycles N: how many times the whole step list runs
+    QString logFile;          // --log FILE: the session log of this run, appended
+    bool events = false;      // replay --events
+    QString at;               // replay --at TIME
+    QString diffFrom;         // replay --diff T1 (T2 is the next argument)
+    QString entry;            // replay BUNDLE.zip --entry NAME: which log of the bundle
+    int days = 7;             // bundle --days N
+    QString profile;          // bundle --profile FILE
+    int seconds = 0;          // listen --seconds N: stop after N s (0: until Ctrl-C)
+    int cycles = 1;           // run --cycles N: how many times the whole step list runs
+    bool cyclesGiven = false; // the proofs have defaults of their own
+    QString distance;         // lost-steps, margin, backlash --distance D
+    QString step;             // margin --step N
+    bool accel = false;       // margin --accel: the acceleration register
+    bool apply = false;       // margin --apply: write the recommendation (reviewed)
     int count = -1;
     int intervalMs = 0;
     QString command;

@@ -52,6 +52,27 @@ const QList<CtlCommand> &CtlRunner::commands()
                            "(timeout, limit, E-STOP) or Ctrl-C, 2 bad file, 3 link,\n"
                            "restart or device"),
          &runRun},
+        {"lost-steps", "lost-steps motorN",
+         QT_TRANSLATE_NOOP("stepcomctl", "prove the axis keeps its steps: the count against the\n"
+                                         "home switch before and after --cycles K moves of\n"
+                                         "--distance D out fast and back slowly, and the other\n"
+                                         "way (docs/proving.md); shown and asked first (--yes);\n"
+                                         "exit 0 kept, 1 lost, not known or stopped, 2 refused,\n"
+                                         "3 link, restart or device"),
+         &runLostSteps},
+        {"margin", "margin motorN",
+         QT_TRANSLATE_NOOP("stepcomctl", "the lost-step test at each speed --from .. --to in\n"
+                                         "--step (--accel: the acceleration), lowest first, up\n"
+                                         "to the first loss; recommends 75 % of the highest kept\n"
+                                         "and writes it only with --apply; exit 0 searched, 1\n"
+                                         "stopped or nothing kept to apply, 2 refused, 3 link"),
+         &runMargin},
+        {"backlash", "backlash motorN",
+         QT_TRANSLATE_NOOP("stepcomctl", "the lost motion on reversal with a dial gauge: moves of\n"
+                                         "--distance D, each followed by 'gauge (mm)?' on stderr\n"
+                                         "and a reading from stdin; exit 0 measured, 1 stopped\n"
+                                         "(end of input), 2 refused, 3 link"),
+         &runBacklash},
         {"monitor", "monitor",
          QT_TRANSLATE_NOOP("stepcomctl", "print the live status as one JSON object per line,\n"
                                          "until --count samples or Ctrl-C (--interval MS);\n"

@@ -9,6 +9,7 @@
 namespace stepcom {
 
 class CtlContext;
+struct ParameterWrite;
 struct Profile;
 struct ReadOutcome;
 struct ReportInput;
@@ -45,6 +46,18 @@ void runReport(CtlContext &ctx);
 void runApply(CtlContext &ctx);
 // ctlrun.cpp: a machine cycle (a .stepseq file) run, shown and asked about first.
 void runRun(CtlContext &ctx);
+
+// ctlproof.cpp: proving an axis (docs/proving.md), shown and asked about first.
+void runLostSteps(CtlContext &ctx);
+void runMargin(CtlContext &ctx);
+void runBacklash(CtlContext &ctx);
+
+// What write shares (ctlwrite.cpp).
+// The window's review of `writes` (WriteReview) on what the controller holds: its questions
+// printed; without --yes nothing is written (exit 2), else `next`.
+void reviewThen(CtlContext &ctx, const QList<ParameterWrite> &writes, std::function<void()> next);
+// Writes, verifies and prints each value (--save-to-flash after it), then ends the run.
+void writeThenReport(CtlContext &ctx, const QList<ParameterWrite> &writes);
 
 // What a question before a risky command says when it is not answered yes.
 struct ConfirmRefusals

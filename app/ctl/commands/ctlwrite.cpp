@@ -55,6 +55,8 @@ void saveToFlashThenFinish(CtlContext &ctx)
     });
 }
 
+} // namespace
+
 void writeThenReport(CtlContext &ctx, const QList<ParameterWrite> &writes)
 {
     ctx.session->parameters()->write(writes, [&ctx, writes](const WriteOutcome &w) {
@@ -74,8 +76,6 @@ void writeThenReport(CtlContext &ctx, const QList<ParameterWrite> &writes)
     });
 }
 
-// The window's review of `writes` (WriteReview), on what the controller holds: its
-// questions printed; without --yes nothing is written (exit 2), else `next`.
 void reviewThen(CtlContext &ctx, const QList<ParameterWrite> &writes, std::function<void()> next)
 {
     const auto judge = [&ctx, writes, next](const QHash<QString, qint64> &held) {
@@ -119,8 +119,6 @@ void reviewThen(CtlContext &ctx, const QList<ParameterWrite> &writes, std::funct
         judge(r.values);
     });
 }
-
-} // namespace
 
 void runWrite(CtlContext &ctx)
 {

@@ -33,9 +33,14 @@ class TestCtlJson : public QObject
 
     QString path(const QString &name) const { return dir.filePath(name); }
 
-    ProgramRun ctl(const QStringList &args) const
+    // An argument "@STDIN:text" is not passed on: `text` is the program's standard input.
+    ProgramRun ctl(QStringList args) const
     {
         ProgramOptions options;
+        for (qsizetype i = args.size() - 1; i >= 0; --i) {
+            if (args.at(i).startsWith(QLatin1String("@STDIN:")))
+                options.input = args.takeAt(i).mid(7).toUtf8();
+        }
         options.cleanLocale = true;
         options.timeoutMs = 60000;
         // The simulator's flash, the backups and the session logs stay in this test's folder.
@@ -122,6 +127,23 @@ class TestCtlJson : public QObject
             "outcome", ok);
         add("run no file", "run FILE", {"--sim", "run", "@SRC/none.stepseq", "--yes"}, 2,
             "none.stepseq", fails);
+        // The gauge's three readings on standard input; before the proofs, which end with the
+        // carriage on the switch, 1 mm below which it cannot go.
+        add("backlash", "backlash motorN",
+            {"--tcp", "@TCP", "backlash", "motor1", "--cycles", "1", "--yes", "@STDIN:0\n1\n0\n"},
+            0, "backlash_mm", ok);
+        add("backlash no motor", "backlash motorN", {"--sim", "backlash"}, 2, "motorN", fails);
+        add("lost-steps", "lost-steps motorN",
+            {"--tcp", "@TCP", "lost-steps", "motor1", "--cycles", "1", "--distance", "1", "--yes"},
+            0, "verdict", ok);
+        add("lost-steps no motor", "lost-steps motorN", {"--sim", "lost-steps", "motor9"}, 2,
+            "motorN", fails);
+        add("margin", "margin motorN",
+            {"--tcp", "@TCP", "margin", "motor1", "--from", "100", "--to", "100", "--cycles", "1",
+             "--distance", "1", "--yes"},
+            0, "kept_rpm", ok);
+        add("margin bad step", "margin motorN", {"--sim", "margin", "motor1", "--step", "0"}, 2,
+            "--step", fails);
         add("monitor", "monitor", {"--sim", "monitor", "--count", "2"}, 0, "samples", ok);
         add("monitor ids", "monitor", {"--sim", "--id", "1,2", "monitor", "--count", "1"}, 0,
             "failed", ok);
@@ -183,8 +205,17 @@ private Q_SLOTS:
         host = std::make_unique<SimHost>();
         SimOptions options;
         options.tcp = true;
+        // The proofs reference on motor 1's home switch: its carriage 1 mm off it, answers at
+        // once, the references at 60 rpm.
+        options.answerDelayMs = 0;
+        MachineSettings machine = MachineSettings::ideal();
+        AxisPhysics motor1 = AxisPhysics::ideal();
+        motor1.startMm = 1.0;
+        machine.axes.insert(1, motor1);
+        options.machine = machine;
         QString error;
         QVERIFY2(host->start(options, &error), qPrintable(error));
+        QVERIFY(host->device()->setValue(QStringLiteral("motor1.start_frequency"), 1600));
         // A single move of 0.5 mm at speed: over in a moment.
         QVERIFY(host->device()->setValue(QStringLiteral("motor1.speed"), 1200));
         QVERIFY(host->device()->setValue(QStringLiteral("motor1.move_distance"), 50));

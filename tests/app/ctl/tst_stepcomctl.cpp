@@ -116,7 +116,7 @@ private Q_SLOTS:
         QTest::newRow("unknown command")
             << QStringList{"frobnicate"}
             << "unknown command 'frobnicate' (params, read, write, "
-               "command, move, run, monitor, listen, dump, diff, "
+               "command, move, run, lost-steps, margin, backlash, monitor, listen, dump, diff, "
                "apply, assign-id, scan, ports, report, replay, bundle)";
         QTest::newRow("read unknown") << QStringList{"read", "nope"} << "unknown parameter 'nope'";
     }
