@@ -286,6 +286,160 @@
     </message>
 </context>
 <context>
+    <name>stepcom::AxisProof</name>
+    <message>
+        <source>Motor %1: reading its values</source>
+        <translation>Motor %1: reading its values</translation>
+    </message>
+    <message>
+        <source>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</source>
+        <translation>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</translation>
+    </message>
+    <message>
+        <source>cycles must be 1 to 1000, not %1</source>
+        <translation>cycles must be 1 to 1000, not %1</translation>
+    </message>
+    <message>
+        <source>the distance must be above 0 and within the single move&apos;s range, not %1</source>
+        <translation>the distance must be above 0 and within the single move&apos;s range, not %1</translation>
+    </message>
+    <message>
+        <source>Motor %1: the test speed %2 rpm: %3</source>
+        <translation>Motor %1: the test speed %2 rpm: %3</translation>
+    </message>
+    <message>
+        <source>Motor %1: the test acceleration %2: %3</source>
+        <translation>Motor %1: the test acceleration %2: %3</translation>
+    </message>
+    <message>
+        <source>The test needs the travel from the home switch to %1 %2 past it: %3</source>
+        <translation>The test needs the travel from the home switch to %1 %2 past it: %3</translation>
+    </message>
+    <message>
+        <source>Motor %1 stands at its lower travel limit: the home switch beyond it cannot be searched for</source>
+        <translation>Motor %1 stands at its lower travel limit: the home switch beyond it cannot be searched for</translation>
+    </message>
+    <message>
+        <source>Motor %1: the lost-step test</source>
+        <translation>Motor %1: the lost-step test</translation>
+    </message>
+    <message>
+        <source>  reference: the home switch on IN%1, approached in the negative direction (up to %2 %3) at %4 rpm, %5</source>
+        <translation>  reference: the home switch on IN%1, approached in the negative direction (up to %2 %3) at %4 rpm, %5</translation>
+    </message>
+    <message>
+        <source>from where the last test found it</source>
+        <translation>from where the last test found it</translation>
+    </message>
+    <message>
+        <source>twice, to measure its repeatability</source>
+        <translation>twice, to measure its repeatability</translation>
+    </message>
+    <message>
+        <source>  then %1 cycle(s) of %2 %3 out at %4 rpm (acceleration %5 %6) and back at %7 rpm, a reference, the same out at %7 rpm and back at %4 rpm, a reference</source>
+        <translation>  then %1 cycle(s) of %2 %3 out at %4 rpm (acceleration %5 %6) and back at %7 rpm, a reference, the same out at %7 rpm and back at %4 rpm, a reference</translation>
+    </message>
+    <message>
+        <source>  travel: from the home switch to %1 %2 past it</source>
+        <translation>  travel: from the home switch to %1 %2 past it</translation>
+    </message>
+    <message>
+        <source>  afterwards: speed %1 rpm and acceleration %2 %3 put back and verified</source>
+        <translation>  afterwards: speed %1 rpm and acceleration %2 %3 put back and verified</translation>
+    </message>
+    <message>
+        <source>Motor %1: reference 1 of 2 on the home switch</source>
+        <translation>Motor %1: reference 1 of 2 on the home switch</translation>
+    </message>
+    <message>
+        <source>Motor %1: reference 2 of 2 on the home switch</source>
+        <translation>Motor %1: reference 2 of 2 on the home switch</translation>
+    </message>
+    <message>
+        <source>Motor %1: the reference on the home switch failed: %2</source>
+        <translation>Motor %1: the reference on the home switch failed: %2</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 cycle(s) out at %3 rpm, back at %4 rpm</source>
+        <translation>Motor %1: %2 cycle(s) out at %3 rpm, back at %4 rpm</translation>
+    </message>
+    <message>
+        <source>Motor %1: reference on the home switch</source>
+        <translation>Motor %1: reference on the home switch</translation>
+    </message>
+    <message>
+        <source>Stopped before anything moved</source>
+        <translation>Stopped before anything moved</translation>
+    </message>
+    <message>
+        <source>Motor %1 %2 at %3 rpm: %4 %5 off after the moves out, %6 %5 after the moves back (switch repeatability %7 %5, 4 full steps %8 %5)</source>
+        <translation>Motor %1 %2 at %3 rpm: %4 %5 off after the moves out, %6 %5 after the moves back (switch repeatability %7 %5, 4 full steps %8 %5)</translation>
+    </message>
+    <message>
+        <source>The switch did not repeat well enough to tell a loss of 4 full steps.</source>
+        <translation>The switch did not repeat well enough to tell a loss of 4 full steps.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BacklashTest</name>
+    <message>
+        <source>cycles must be 1 to 100, not %1</source>
+        <translation>cycles must be 1 to 100, not %1</translation>
+    </message>
+    <message>
+        <source>the distance must be above 0 and within the single move&apos;s range, not %1</source>
+        <translation>the distance must be above 0 and within the single move&apos;s range, not %1</translation>
+    </message>
+    <message>
+        <source>The test moves %1 %2 either way: %3</source>
+        <translation>The test moves %1 %2 either way: %3</translation>
+    </message>
+    <message>
+        <source>Motor %1: the backlash test with a dial gauge on the carriage</source>
+        <translation>Motor %1: the backlash test with a dial gauge on the carriage</translation>
+    </message>
+    <message>
+        <source>  back %1 %2 and on %1 %2 (the approach), then %3 time(s) on %1 %2 and back %1 %2, at %4 rpm; the gauge is read %5 times</source>
+        <translation>  back %1 %2 and on %1 %2 (the approach), then %3 time(s) on %1 %2 and back %1 %2, at %4 rpm; the gauge is read %5 times</translation>
+    </message>
+    <message>
+        <source>  afterwards: speed %1 rpm put back and verified</source>
+        <translation>  afterwards: speed %1 rpm put back and verified</translation>
+    </message>
+    <message>
+        <source>Motor %1: the approach</source>
+        <translation>Motor %1: the approach</translation>
+    </message>
+    <message>
+        <source>after the approach</source>
+        <translation>after the approach</translation>
+    </message>
+    <message>
+        <source>Motor %1: backlash %2 %3 (spread %4 %3 over %5 reversals)</source>
+        <translation>Motor %1: backlash %2 %3 (spread %4 %3 over %5 reversals)</translation>
+    </message>
+    <message>
+        <source>It is more than the count&apos;s resolution: position the axis from one side (approach every point in the same direction)</source>
+        <translation>It is more than the count&apos;s resolution: position the axis from one side (approach every point in the same direction)</translation>
+    </message>
+    <message>
+        <source>Motor %1: move %2 of %3</source>
+        <translation>Motor %1: move %2 of %3</translation>
+    </message>
+    <message>
+        <source>after moving on by %1</source>
+        <translation>after moving on by %1</translation>
+    </message>
+    <message>
+        <source>after moving back by %1</source>
+        <translation>after moving back by %1</translation>
+    </message>
+    <message>
+        <source>Stopped: no more readings</source>
+        <translation>Stopped: no more readings</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BackupGuard</name>
     <message>
         <source>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</source>
@@ -2468,12 +2622,32 @@
         <translation>no command given (%1)</translation>
     </message>
     <message>
-        <source>run: how many times the whole step list runs (default 1).</source>
-        <translation>run: how many times the whole step list runs (default 1).</translation>
-    </message>
-    <message>
         <source>--cycles: &apos;%1&apos; is not a positive number</source>
         <translation>--cycles: &apos;%1&apos; is not a positive number</translation>
+    </message>
+    <message>
+        <source>run: how many times the whole step list runs (default 1); lost-steps, backlash: back-and-forth moves (default 3); margin: at each value (default 2).</source>
+        <translation>run: how many times the whole step list runs (default 1); lost-steps, backlash: back-and-forth moves (default 3); margin: at each value (default 2).</translation>
+    </message>
+    <message>
+        <source>lost-steps, margin: each move of the test (default 10 axis units); backlash: each move (default 1).</source>
+        <translation>lost-steps, margin: each move of the test (default 10 axis units); backlash: each move (default 1).</translation>
+    </message>
+    <message>
+        <source>d</source>
+        <translation>d</translation>
+    </message>
+    <message>
+        <source>margin: the step between the values tested.</source>
+        <translation>margin: the step between the values tested.</translation>
+    </message>
+    <message>
+        <source>margin: search the acceleration register at the motor&apos;s own speed.</source>
+        <translation>margin: search the acceleration register at the motor&apos;s own speed.</translation>
+    </message>
+    <message>
+        <source>margin: write the recommended value, reviewed as write reviews it.</source>
+        <translation>margin: write the recommended value, reviewed as write reviews it.</translation>
     </message>
 </context>
 <context>
@@ -3049,6 +3223,42 @@
     <message>
         <source>no answer on standard input: nothing was sent (use --yes)</source>
         <translation>no answer on standard input: nothing was sent (use --yes)</translation>
+    </message>
+    <message>
+        <source>%1 needs one motor: %1 motorN (N from 1 to %2)</source>
+        <translation>%1 needs one motor: %1 motorN (N from 1 to %2)</translation>
+    </message>
+    <message>
+        <source>--distance: &apos;%1&apos; is not a positive distance</source>
+        <translation>--distance: &apos;%1&apos; is not a positive distance</translation>
+    </message>
+    <message>
+        <source>--%1: &apos;%2&apos; is not a positive whole number</source>
+        <translation>--%1: &apos;%2&apos; is not a positive whole number</translation>
+    </message>
+    <message>
+        <source>Run it? The axis will move. [y/N] </source>
+        <translation>Run it? The axis will move. [y/N] </translation>
+    </message>
+    <message>
+        <source>no answer on standard input: nothing was moved (use --yes)</source>
+        <translation>no answer on standard input: nothing was moved (use --yes)</translation>
+    </message>
+    <message>
+        <source>not confirmed: nothing was moved</source>
+        <translation>not confirmed: nothing was moved</translation>
+    </message>
+    <message>
+        <source>--apply: nothing kept its steps, nothing was written</source>
+        <translation>--apply: nothing kept its steps, nothing was written</translation>
+    </message>
+    <message>
+        <source>%1, %2: gauge (mm)? </source>
+        <translation>%1, %2: gauge (mm)? </translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number: type the gauge&apos;s reading</source>
+        <translation>&apos;%1&apos; is not a number: type the gauge&apos;s reading</translation>
     </message>
 </context>
 <context>
@@ -5280,6 +5490,21 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::LostStepResult</name>
+    <message>
+        <source>kept its steps</source>
+        <translation>kept its steps</translation>
+    </message>
+    <message>
+        <source>lost steps</source>
+        <translation>lost steps</translation>
+    </message>
+    <message>
+        <source>not known</source>
+        <translation>not known</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::MachineActions</name>
     <message>
         <source>Apply profile to &amp;several devices…</source>
@@ -5719,6 +5944,65 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Open a file</source>
         <translation>Open a file</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MarginFinder</name>
+    <message>
+        <source>Motor %1: the acceleration margin at %2 rpm: the lost-step test (%3 cycle(s) of %4 %5 each way) at each acceleration %6 %7, stopping at the first loss</source>
+        <translation>Motor %1: the acceleration margin at %2 rpm: the lost-step test (%3 cycle(s) of %4 %5 each way) at each acceleration %6 %7, stopping at the first loss</translation>
+    </message>
+    <message>
+        <source>Motor %1: the speed margin: the lost-step test (%3 cycle(s) of %4 %5 each way) at each speed %6 %7, stopping at the first loss</source>
+        <translation>Motor %1: the speed margin: the lost-step test (%3 cycle(s) of %4 %5 each way) at each speed %6 %7, stopping at the first loss</translation>
+    </message>
+    <message>
+        <source>  each test references on the home switch (IN%1) and moves up to %2 %3 past it</source>
+        <translation>  each test references on the home switch (IN%1) and moves up to %2 %3 past it</translation>
+    </message>
+    <message>
+        <source>  afterwards: speed %1 rpm and acceleration %2 put back and verified; nothing of the recommendation is written</source>
+        <translation>  afterwards: speed %1 rpm and acceleration %2 put back and verified; nothing of the recommendation is written</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 %3: %4</source>
+        <translation>Motor %1: %2 %3: %4</translation>
+    </message>
+    <message>
+        <source>the search must go up: from %1 is above to %2</source>
+        <translation>the search must go up: from %1 is above to %2</translation>
+    </message>
+    <message>
+        <source>the step must be at least 1, not %1</source>
+        <translation>the step must be at least 1, not %1</translation>
+    </message>
+    <message>
+        <source>%1 values to test: take a larger step (at most 100)</source>
+        <translation>%1 values to test: take a larger step (at most 100)</translation>
+    </message>
+    <message>
+        <source>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</source>
+        <translation>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</translation>
+    </message>
+    <message>
+        <source>Motor %1: testing %2 %3 (%4 of %5)</source>
+        <translation>Motor %1: testing %2 %3 (%4 of %5)</translation>
+    </message>
+    <message>
+        <source>Stopped before anything moved</source>
+        <translation>Stopped before anything moved</translation>
+    </message>
+    <message>
+        <source>Motor %1 kept its steps up to %2 %3 and lost them at %4 %3: run at %5 %3 or less</source>
+        <translation>Motor %1 kept its steps up to %2 %3 and lost them at %4 %3: run at %5 %3 or less</translation>
+    </message>
+    <message>
+        <source>Motor %1 kept its steps at every value up to %2 %3: run at %4 %3 or less</source>
+        <translation>Motor %1 kept its steps at every value up to %2 %3: run at %4 %3 or less</translation>
+    </message>
+    <message>
+        <source>Motor %1 lost steps already at %2 %3, the lowest value tested</source>
+        <translation>Motor %1 lost steps already at %2 %3, the lowest value tested</translation>
     </message>
 </context>
 <context>
@@ -8376,6 +8660,84 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProofDrive</name>
+    <message>
+        <source>There is no motor %1 (this controller has %2)</source>
+        <translation>There is no motor %1 (this controller has %2)</translation>
+    </message>
+    <message>
+        <source>This register map has no %1 for motor %2: the axis cannot be proven</source>
+        <translation>This register map has no %1 for motor %2: the axis cannot be proven</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was sent</source>
+        <translation>Not connected: nothing was sent</translation>
+    </message>
+    <message>
+        <source>Motor %1: its values could not be read (%2): nothing was moved</source>
+        <translation>Motor %1: its values could not be read (%2): nothing was moved</translation>
+    </message>
+    <message>
+        <source>Motor %1: its step angle, microsteps or pitch is 0: the axis cannot be proven</source>
+        <translation>Motor %1: its step angle, microsteps or pitch is 0: the axis cannot be proven</translation>
+    </message>
+    <message>
+        <source>Motor %1: the test speed could not be written (%2)</source>
+        <translation>Motor %1: the test speed could not be written (%2)</translation>
+    </message>
+    <message>
+        <source>This register map has no input %1</source>
+        <translation>This register map has no input %1</translation>
+    </message>
+    <message>
+        <source>the home input could not be read (%1)</source>
+        <translation>the home input could not be read (%1)</translation>
+    </message>
+    <message>
+        <source>speed %1 %2, acceleration %3 %4</source>
+        <translation>speed %1 %2, acceleration %3 %4</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s own %2 are as they were.</source>
+        <translation>Motor %1&apos;s own %2 are as they were.</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s own %2 could not be put back: not connected. Write them again once the controller answers.</source>
+        <translation>Motor %1&apos;s own %2 could not be put back: not connected. Write them again once the controller answers.</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s own %2 could not be put back: %3</source>
+        <translation>Motor %1&apos;s own %2 could not be put back: %3</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s own %2 are back (verified).</source>
+        <translation>Motor %1&apos;s own %2 are back (verified).</translation>
+    </message>
+    <message>
+        <source>Stopped: the motor was stopped</source>
+        <translation>Stopped: the motor was stopped</translation>
+    </message>
+    <message>
+        <source>E-STOP: the test ended at once</source>
+        <translation>E-STOP: the test ended at once</translation>
+    </message>
+    <message>
+        <source>The link was lost: the test ended</source>
+        <translation>The link was lost: the test ended</translation>
+    </message>
+    <message>
+        <source>The controller restarted: the test ended</source>
+        <translation>The controller restarted: the test ended</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProofResult</name>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::Reader</name>
     <message>
         <source>unknown key</source>
@@ -10161,6 +10523,21 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SwitchReference</name>
+    <message>
+        <source>the home switch (IN%1) did not come ON within %2 %3 toward it</source>
+        <translation>the home switch (IN%1) did not come ON within %2 %3 toward it</translation>
+    </message>
+    <message>
+        <source>the home switch (IN%1) stayed ON %2 %3 away from it</source>
+        <translation>the home switch (IN%1) stayed ON %2 %3 away from it</translation>
+    </message>
+    <message>
+        <source>the home switch (IN%1) did not come ON again within %2 creep moves</source>
+        <translation>the home switch (IN%1) did not come ON again within %2 creep moves</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::TrafficModel</name>
     <message>
         <source>Time</source>
@@ -10872,24 +11249,6 @@ scan: found; move, command --wait: arrived</source>
 scan: found; move, command --wait: arrived</translation>
     </message>
     <message>
-        <source>not done: a link or device error, a value not
-verified, a file or backup that could not be
-written; diff: different; scan: none found; move,
-command --wait: stopped elsewhere or not known</source>
-        <translation>not done: a link or device error, a value not
-verified, a file or backup that could not be
-written; diff: different; scan: none found; move,
-command --wait: stopped elsewhere or not known</translation>
-    </message>
-    <message>
-        <source>nothing was done: a usage or validation error, a bad
-file, a write the window asks about without --yes,
-an apply not confirmed</source>
-        <translation>nothing was done: a usage or validation error, a bad
-file, a write the window asks about without --yes,
-an apply not confirmed</translation>
-    </message>
-    <message>
         <source>Exit codes (every command):</source>
         <translation>Exit codes (every command):</translation>
     </message>
@@ -10950,14 +11309,6 @@ errors and answer times on stderr (--port, --baud,
 --parity; --log FILE keeps it as a session log)</translation>
     </message>
     <message>
-        <source>diff, scan: a link or device error (their 1 is an
-answer); run: the link lost, the controller
-restarted, a command not taken</source>
-        <translation>diff, scan: a link or device error (their 1 is an
-answer); run: the link lost, the controller
-restarted, a command not taken</translation>
-    </message>
-    <message>
         <source>run a machine cycle (a .stepseq file: home, moves, waits
 for inputs, outputs, dwells, repeats; docs/sequence.md)
 --cycles N times, after showing it and asking (--yes);
@@ -10972,6 +11323,76 @@ each step a line on stderr (--json: JSON lines); Ctrl-C
 stops the motors; exit 0 done, 1 stopped by the machine
 (timeout, limit, E-STOP) or Ctrl-C, 2 bad file, 3 link,
 restart or device</translation>
+    </message>
+    <message>
+        <source>not done: a link or device error, a value not
+verified, a file or backup that could not be
+written; diff: different; scan: none found; move,
+command --wait: stopped elsewhere or not known;
+lost-steps: lost or not known; a proof stopped
+(Ctrl-C, E-STOP, end of input)</source>
+        <translation>not done: a link or device error, a value not
+verified, a file or backup that could not be
+written; diff: different; scan: none found; move,
+command --wait: stopped elsewhere or not known;
+lost-steps: lost or not known; a proof stopped
+(Ctrl-C, E-STOP, end of input)</translation>
+    </message>
+    <message>
+        <source>nothing was done: a usage or validation error, a bad
+file, a write the window asks about without --yes,
+an apply not confirmed, a proof refused</source>
+        <translation>nothing was done: a usage or validation error, a bad
+file, a write the window asks about without --yes,
+an apply not confirmed, a proof refused</translation>
+    </message>
+    <message>
+        <source>diff, scan: a link or device error (their 1 is an
+answer); run: the link lost, the controller
+restarted, a command not taken; lost-steps,
+margin, backlash: the link lost, a restart, a
+read or move that failed</source>
+        <translation>diff, scan: a link or device error (their 1 is an
+answer); run: the link lost, the controller
+restarted, a command not taken; lost-steps,
+margin, backlash: the link lost, a restart, a
+read or move that failed</translation>
+    </message>
+    <message>
+        <source>prove the axis keeps its steps: the count against the
+home switch before and after --cycles K moves of
+--distance D out fast and back slowly, and the other
+way (docs/proving.md); shown and asked first (--yes);
+exit 0 kept, 1 lost, not known or stopped, 2 refused,
+3 link, restart or device</source>
+        <translation>prove the axis keeps its steps: the count against the
+home switch before and after --cycles K moves of
+--distance D out fast and back slowly, and the other
+way (docs/proving.md); shown and asked first (--yes);
+exit 0 kept, 1 lost, not known or stopped, 2 refused,
+3 link, restart or device</translation>
+    </message>
+    <message>
+        <source>the lost-step test at each speed --from .. --to in
+--step (--accel: the acceleration), lowest first, up
+to the first loss; recommends 75 % of the highest kept
+and writes it only with --apply; exit 0 searched, 1
+stopped or nothing kept to apply, 2 refused, 3 link</source>
+        <translation>the lost-step test at each speed --from .. --to in
+--step (--accel: the acceleration), lowest first, up
+to the first loss; recommends 75 % of the highest kept
+and writes it only with --apply; exit 0 searched, 1
+stopped or nothing kept to apply, 2 refused, 3 link</translation>
+    </message>
+    <message>
+        <source>the lost motion on reversal with a dial gauge: moves of
+--distance D, each followed by &apos;gauge (mm)?&apos; on stderr
+and a reading from stdin; exit 0 measured, 1 stopped
+(end of input), 2 refused, 3 link</source>
+        <translation>the lost motion on reversal with a dial gauge: moves of
+--distance D, each followed by &apos;gauge (mm)?&apos; on stderr
+and a reading from stdin; exit 0 measured, 1 stopped
+(end of input), 2 refused, 3 link</translation>
     </message>
 </context>
 </TS>

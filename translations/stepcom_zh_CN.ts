@@ -284,6 +284,160 @@
     </message>
 </context>
 <context>
+    <name>stepcom::AxisProof</name>
+    <message>
+        <source>Motor %1: reading its values</source>
+        <translation>电机 %1：正在读取其参数</translation>
+    </message>
+    <message>
+        <source>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</source>
+        <translation>电机 %1 未设定原点输入（%2 为 0）：测试要以原点开关为参考，因此没有运动</translation>
+    </message>
+    <message>
+        <source>cycles must be 1 to 1000, not %1</source>
+        <translation>循环次数必须在 1 到 1000 之间，不能是 %1</translation>
+    </message>
+    <message>
+        <source>the distance must be above 0 and within the single move&apos;s range, not %1</source>
+        <translation>距离必须大于 0 且在单次运行的范围内，不能是 %1</translation>
+    </message>
+    <message>
+        <source>Motor %1: the test speed %2 rpm: %3</source>
+        <translation>电机 %1：测试转速 %2 rpm：%3</translation>
+    </message>
+    <message>
+        <source>Motor %1: the test acceleration %2: %3</source>
+        <translation>电机 %1：测试加速度 %2：%3</translation>
+    </message>
+    <message>
+        <source>The test needs the travel from the home switch to %1 %2 past it: %3</source>
+        <translation>测试需要从原点开关到越过它 %1 %2 处的行程：%3</translation>
+    </message>
+    <message>
+        <source>Motor %1 stands at its lower travel limit: the home switch beyond it cannot be searched for</source>
+        <translation>电机 %1 位于行程限位的下限：无法越过它寻找原点开关</translation>
+    </message>
+    <message>
+        <source>Motor %1: the lost-step test</source>
+        <translation>电机 %1：丢步测试</translation>
+    </message>
+    <message>
+        <source>  reference: the home switch on IN%1, approached in the negative direction (up to %2 %3) at %4 rpm, %5</source>
+        <translation>  参考：IN%1 上的原点开关，以 %4 rpm 从负方向趋近（最多 %2 %3），%5</translation>
+    </message>
+    <message>
+        <source>from where the last test found it</source>
+        <translation>从上次测试找到它的位置开始</translation>
+    </message>
+    <message>
+        <source>twice, to measure its repeatability</source>
+        <translation>共两次，以测量其重复性</translation>
+    </message>
+    <message>
+        <source>  then %1 cycle(s) of %2 %3 out at %4 rpm (acceleration %5 %6) and back at %7 rpm, a reference, the same out at %7 rpm and back at %4 rpm, a reference</source>
+        <translation>  然后 %1 个循环：每次以 %4 rpm（加速度 %5 %6）外移 %2 %3、以 %7 rpm 返回，参考一次；再以 %7 rpm 外移、以 %4 rpm 返回同样的距离，参考一次</translation>
+    </message>
+    <message>
+        <source>  travel: from the home switch to %1 %2 past it</source>
+        <translation>  行程：从原点开关到越过它 %1 %2 处</translation>
+    </message>
+    <message>
+        <source>  afterwards: speed %1 rpm and acceleration %2 %3 put back and verified</source>
+        <translation>  之后：恢复速度 %1 rpm 和加速度 %2 %3 并校验</translation>
+    </message>
+    <message>
+        <source>Motor %1: reference 1 of 2 on the home switch</source>
+        <translation>电机 %1：在原点开关上参考（第 1 次，共 2 次）</translation>
+    </message>
+    <message>
+        <source>Motor %1: reference 2 of 2 on the home switch</source>
+        <translation>电机 %1：在原点开关上参考（第 2 次，共 2 次）</translation>
+    </message>
+    <message>
+        <source>Motor %1: the reference on the home switch failed: %2</source>
+        <translation>电机 %1：在原点开关上参考失败：%2</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 cycle(s) out at %3 rpm, back at %4 rpm</source>
+        <translation>电机 %1：%2 个循环，以 %3 rpm 外移，以 %4 rpm 返回</translation>
+    </message>
+    <message>
+        <source>Motor %1: reference on the home switch</source>
+        <translation>电机 %1：在原点开关上参考</translation>
+    </message>
+    <message>
+        <source>Stopped before anything moved</source>
+        <translation>在任何运动之前已停止</translation>
+    </message>
+    <message>
+        <source>Motor %1 %2 at %3 rpm: %4 %5 off after the moves out, %6 %5 after the moves back (switch repeatability %7 %5, 4 full steps %8 %5)</source>
+        <translation>电机 %1 在 %3 rpm 下%2：外移后偏差 %4 %5，返回后偏差 %6 %5（开关重复性 %7 %5，4 个整步为 %8 %5）</translation>
+    </message>
+    <message>
+        <source>The switch did not repeat well enough to tell a loss of 4 full steps.</source>
+        <translation>开关的重复性不足以分辨 4 个整步的丢步。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::BacklashTest</name>
+    <message>
+        <source>cycles must be 1 to 100, not %1</source>
+        <translation>循环次数必须在 1 到 100 之间，不能是 %1</translation>
+    </message>
+    <message>
+        <source>the distance must be above 0 and within the single move&apos;s range, not %1</source>
+        <translation>距离必须大于 0 且在单次运行的范围内，不能是 %1</translation>
+    </message>
+    <message>
+        <source>The test moves %1 %2 either way: %3</source>
+        <translation>测试向两个方向各移动 %1 %2：%3</translation>
+    </message>
+    <message>
+        <source>Motor %1: the backlash test with a dial gauge on the carriage</source>
+        <translation>电机 %1：反向间隙测试（百分表装在滑台上）</translation>
+    </message>
+    <message>
+        <source>  back %1 %2 and on %1 %2 (the approach), then %3 time(s) on %1 %2 and back %1 %2, at %4 rpm; the gauge is read %5 times</source>
+        <translation>  先退回 %1 %2 再前进 %1 %2（趋近移动），然后 %3 次前进 %1 %2、退回 %1 %2，转速 %4 rpm；共读取百分表 %5 次</translation>
+    </message>
+    <message>
+        <source>  afterwards: speed %1 rpm put back and verified</source>
+        <translation>  之后：恢复速度 %1 rpm 并校验</translation>
+    </message>
+    <message>
+        <source>Motor %1: the approach</source>
+        <translation>电机 %1：趋近移动</translation>
+    </message>
+    <message>
+        <source>after the approach</source>
+        <translation>趋近移动之后</translation>
+    </message>
+    <message>
+        <source>Motor %1: backlash %2 %3 (spread %4 %3 over %5 reversals)</source>
+        <translation>电机 %1：反向间隙 %2 %3（%5 次反向的极差 %4 %3）</translation>
+    </message>
+    <message>
+        <source>It is more than the count&apos;s resolution: position the axis from one side (approach every point in the same direction)</source>
+        <translation>它大于计数分辨率：请从同一侧定位该轴（每个位置都从同一方向趋近）</translation>
+    </message>
+    <message>
+        <source>Motor %1: move %2 of %3</source>
+        <translation>电机 %1：第 %2 次移动（共 %3 次）</translation>
+    </message>
+    <message>
+        <source>after moving on by %1</source>
+        <translation>前进 %1 之后</translation>
+    </message>
+    <message>
+        <source>after moving back by %1</source>
+        <translation>退回 %1 之后</translation>
+    </message>
+    <message>
+        <source>Stopped: no more readings</source>
+        <translation>已停止：没有更多读数</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::BackupGuard</name>
     <message>
         <source>No backup of the controller&apos;s settings could be saved (%1): %2 was not done</source>
@@ -2457,12 +2611,32 @@
         <translation>未给出命令（%1）</translation>
     </message>
     <message>
-        <source>run: how many times the whole step list runs (default 1).</source>
-        <translation>run：整个步骤表运行的次数（默认 1）。</translation>
-    </message>
-    <message>
         <source>--cycles: &apos;%1&apos; is not a positive number</source>
         <translation>--cycles：“%1”不是正数</translation>
+    </message>
+    <message>
+        <source>run: how many times the whole step list runs (default 1); lost-steps, backlash: back-and-forth moves (default 3); margin: at each value (default 2).</source>
+        <translation>run：整个步骤表运行的次数（默认 1）；lost-steps、backlash：往返移动的次数（默认 3）；margin：每个值下的次数（默认 2）。</translation>
+    </message>
+    <message>
+        <source>lost-steps, margin: each move of the test (default 10 axis units); backlash: each move (default 1).</source>
+        <translation>lost-steps、margin：测试中每次移动的距离（默认 10 个轴单位）；backlash：每次移动的距离（默认 1）。</translation>
+    </message>
+    <message>
+        <source>d</source>
+        <translation>距离</translation>
+    </message>
+    <message>
+        <source>margin: the step between the values tested.</source>
+        <translation>margin：所测试的值之间的步长。</translation>
+    </message>
+    <message>
+        <source>margin: search the acceleration register at the motor&apos;s own speed.</source>
+        <translation>margin：在电机自身的转速下搜索加速度寄存器。</translation>
+    </message>
+    <message>
+        <source>margin: write the recommended value, reviewed as write reviews it.</source>
+        <translation>margin：写入推荐值，并像 write 一样先经过审查。</translation>
     </message>
 </context>
 <context>
@@ -3030,6 +3204,42 @@
     <message>
         <source>no answer on standard input: nothing was sent (use --yes)</source>
         <translation>标准输入没有回答：未发送任何内容（请用 --yes）</translation>
+    </message>
+    <message>
+        <source>%1 needs one motor: %1 motorN (N from 1 to %2)</source>
+        <translation>%1 需要一个电机：%1 motorN（N 为 1 到 %2）</translation>
+    </message>
+    <message>
+        <source>--distance: &apos;%1&apos; is not a positive distance</source>
+        <translation>--distance：“%1”不是正的距离</translation>
+    </message>
+    <message>
+        <source>--%1: &apos;%2&apos; is not a positive whole number</source>
+        <translation>--%1：“%2”不是正整数</translation>
+    </message>
+    <message>
+        <source>Run it? The axis will move. [y/N] </source>
+        <translation>运行吗？轴将会运动。[y/N] </translation>
+    </message>
+    <message>
+        <source>no answer on standard input: nothing was moved (use --yes)</source>
+        <translation>标准输入没有回答：没有运动（请用 --yes）</translation>
+    </message>
+    <message>
+        <source>not confirmed: nothing was moved</source>
+        <translation>未确认：没有运动</translation>
+    </message>
+    <message>
+        <source>--apply: nothing kept its steps, nothing was written</source>
+        <translation>--apply：没有未丢步的值，未写入任何内容</translation>
+    </message>
+    <message>
+        <source>%1, %2: gauge (mm)? </source>
+        <translation>%1，%2：百分表读数 gauge (mm)? </translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a number: type the gauge&apos;s reading</source>
+        <translation>“%1”不是数字：请输入百分表的读数</translation>
     </message>
 </context>
 <context>
@@ -5252,6 +5462,21 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::LostStepResult</name>
+    <message>
+        <source>kept its steps</source>
+        <translation>未丢步</translation>
+    </message>
+    <message>
+        <source>lost steps</source>
+        <translation>丢步</translation>
+    </message>
+    <message>
+        <source>not known</source>
+        <translation>无法判断是否丢步</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::MachineActions</name>
     <message>
         <source>Apply profile to &amp;several devices…</source>
@@ -5686,6 +5911,65 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Open a file</source>
         <translation>打开文件</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MarginFinder</name>
+    <message>
+        <source>Motor %1: the acceleration margin at %2 rpm: the lost-step test (%3 cycle(s) of %4 %5 each way) at each acceleration %6 %7, stopping at the first loss</source>
+        <translation>电机 %1：%2 rpm 下的加速度余量：在每个加速度（%6 %7）下运行丢步测试（%3 个循环，每个方向 %4 %5），遇到第一次丢步即停止</translation>
+    </message>
+    <message>
+        <source>Motor %1: the speed margin: the lost-step test (%3 cycle(s) of %4 %5 each way) at each speed %6 %7, stopping at the first loss</source>
+        <translation>电机 %1：转速余量：在每个转速（%6 %7）下运行丢步测试（%3 个循环，每个方向 %4 %5），遇到第一次丢步即停止</translation>
+    </message>
+    <message>
+        <source>  each test references on the home switch (IN%1) and moves up to %2 %3 past it</source>
+        <translation>  每次测试都以原点开关（IN%1）为参考，最远移动到越过它 %2 %3 处</translation>
+    </message>
+    <message>
+        <source>  afterwards: speed %1 rpm and acceleration %2 put back and verified; nothing of the recommendation is written</source>
+        <translation>  之后：恢复速度 %1 rpm 和加速度 %2 并校验；不写入任何推荐值</translation>
+    </message>
+    <message>
+        <source>Motor %1: %2 %3: %4</source>
+        <translation>电机 %1：%2 %3：%4</translation>
+    </message>
+    <message>
+        <source>the search must go up: from %1 is above to %2</source>
+        <translation>搜索必须由低到高：起始值 %1 高于终止值 %2</translation>
+    </message>
+    <message>
+        <source>the step must be at least 1, not %1</source>
+        <translation>步长至少为 1，不能是 %1</translation>
+    </message>
+    <message>
+        <source>%1 values to test: take a larger step (at most 100)</source>
+        <translation>要测试 %1 个值：请取更大的步长（最多 100 个值）</translation>
+    </message>
+    <message>
+        <source>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</source>
+        <translation>电机 %1 未设定原点输入（%2 为 0）：测试要以原点开关为参考，因此没有运动</translation>
+    </message>
+    <message>
+        <source>Motor %1: testing %2 %3 (%4 of %5)</source>
+        <translation>电机 %1：正在测试 %2 %3（第 %4 个，共 %5 个）</translation>
+    </message>
+    <message>
+        <source>Stopped before anything moved</source>
+        <translation>在任何运动之前已停止</translation>
+    </message>
+    <message>
+        <source>Motor %1 kept its steps up to %2 %3 and lost them at %4 %3: run at %5 %3 or less</source>
+        <translation>电机 %1 在 %2 %3 及以下未丢步，在 %4 %3 时丢步：请以 %5 %3 或更低运行</translation>
+    </message>
+    <message>
+        <source>Motor %1 kept its steps at every value up to %2 %3: run at %4 %3 or less</source>
+        <translation>电机 %1 在直到 %2 %3 的每个值下都未丢步：请以 %4 %3 或更低运行</translation>
+    </message>
+    <message>
+        <source>Motor %1 lost steps already at %2 %3, the lowest value tested</source>
+        <translation>电机 %1 在所测试的最低值 %2 %3 时就已丢步</translation>
     </message>
 </context>
 <context>
@@ -8321,6 +8605,84 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::ProofDrive</name>
+    <message>
+        <source>There is no motor %1 (this controller has %2)</source>
+        <translation>没有电机 %1（此控制器有 %2 个）</translation>
+    </message>
+    <message>
+        <source>This register map has no %1 for motor %2: the axis cannot be proven</source>
+        <translation>此寄存器表中电机 %2 没有 %1：无法验证该轴</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was sent</source>
+        <translation>未连接：没有发送任何命令</translation>
+    </message>
+    <message>
+        <source>Motor %1: its values could not be read (%2): nothing was moved</source>
+        <translation>电机 %1：无法读取其参数（%2）：没有运动</translation>
+    </message>
+    <message>
+        <source>Motor %1: its step angle, microsteps or pitch is 0: the axis cannot be proven</source>
+        <translation>电机 %1：步距角、细分或螺距为 0：无法验证该轴</translation>
+    </message>
+    <message>
+        <source>Motor %1: the test speed could not be written (%2)</source>
+        <translation>电机 %1：无法写入测试转速（%2）</translation>
+    </message>
+    <message>
+        <source>This register map has no input %1</source>
+        <translation>此寄存器表中没有输入 %1</translation>
+    </message>
+    <message>
+        <source>the home input could not be read (%1)</source>
+        <translation>无法读取原点输入（%1）</translation>
+    </message>
+    <message>
+        <source>speed %1 %2, acceleration %3 %4</source>
+        <translation>速度 %1 %2，加速度 %3 %4</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s own %2 are as they were.</source>
+        <translation>电机 %1 原来的参数（%2）保持不变。</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s own %2 could not be put back: not connected. Write them again once the controller answers.</source>
+        <translation>电机 %1 原来的参数（%2）未能恢复：未连接。控制器应答后请重新写入。</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s own %2 could not be put back: %3</source>
+        <translation>电机 %1 原来的参数（%2）未能恢复：%3</translation>
+    </message>
+    <message>
+        <source>Motor %1&apos;s own %2 are back (verified).</source>
+        <translation>电机 %1 原来的参数（%2）已恢复（已校验）。</translation>
+    </message>
+    <message>
+        <source>Stopped: the motor was stopped</source>
+        <translation>已停止：电机已被停止</translation>
+    </message>
+    <message>
+        <source>E-STOP: the test ended at once</source>
+        <translation>急停：测试立即结束</translation>
+    </message>
+    <message>
+        <source>The link was lost: the test ended</source>
+        <translation>通信中断：测试已结束</translation>
+    </message>
+    <message>
+        <source>The controller restarted: the test ended</source>
+        <translation>控制器已重新启动：测试已结束</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::ProofResult</name>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1。%2</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::Reader</name>
     <message>
         <source>unknown key</source>
@@ -10099,6 +10461,21 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SwitchReference</name>
+    <message>
+        <source>the home switch (IN%1) did not come ON within %2 %3 toward it</source>
+        <translation>朝原点开关（IN%1）移动 %2 %3 内它未变为 ON</translation>
+    </message>
+    <message>
+        <source>the home switch (IN%1) stayed ON %2 %3 away from it</source>
+        <translation>离开原点开关（IN%1）%2 %3 后它仍为 ON</translation>
+    </message>
+    <message>
+        <source>the home switch (IN%1) did not come ON again within %2 creep moves</source>
+        <translation>原点开关（IN%1）在 %2 次微动移动内未再次变为 ON</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::TrafficModel</name>
     <message>
         <source>Time</source>
@@ -10806,24 +11183,6 @@ scan: found; move, command --wait: arrived</source>
 scan：已找到；move、command --wait：已到达</translation>
     </message>
     <message>
-        <source>not done: a link or device error, a value not
-verified, a file or backup that could not be
-written; diff: different; scan: none found; move,
-command --wait: stopped elsewhere or not known</source>
-        <translation>未完成：通信或设备错误、值未通过校验、
-文件或备份无法写入；diff：不同；
-scan：未找到；move、command --wait：
-停在别处或结果未知</translation>
-    </message>
-    <message>
-        <source>nothing was done: a usage or validation error, a bad
-file, a write the window asks about without --yes,
-an apply not confirmed</source>
-        <translation>什么也没做：用法或数值错误、文件有误、
-窗口会询问的写入未加 --yes、
-apply 未确认</translation>
-    </message>
-    <message>
         <source>Exit codes (every command):</source>
         <translation>退出码（所有命令）：</translation>
     </message>
@@ -10884,14 +11243,6 @@ errors and answer times on stderr (--port, --baud,
 为会话日志）</translation>
     </message>
     <message>
-        <source>diff, scan: a link or device error (their 1 is an
-answer); run: the link lost, the controller
-restarted, a command not taken</source>
-        <translation>diff、scan：通信或设备错误（它们的 1
-是一种结果）；run：通信中断、控制器
-重启、命令未被接受</translation>
-    </message>
-    <message>
         <source>run a machine cycle (a .stepseq file: home, moves, waits
 for inputs, outputs, dwells, repeats; docs/sequence.md)
 --cycles N times, after showing it and asking (--yes);
@@ -10906,6 +11257,76 @@ restart or device</source>
 停止电机；退出码 0 完成，1 被机器停止
 （超时、限位、急停）或 Ctrl-C，2 文件错误，3 通信、
 重启或设备错误</translation>
+    </message>
+    <message>
+        <source>not done: a link or device error, a value not
+verified, a file or backup that could not be
+written; diff: different; scan: none found; move,
+command --wait: stopped elsewhere or not known;
+lost-steps: lost or not known; a proof stopped
+(Ctrl-C, E-STOP, end of input)</source>
+        <translation>未完成：通信或设备错误、值未通过校验、
+文件或备份无法写入；diff：不同；
+scan：未找到；move、command --wait：
+停在别处或结果未知；
+lost-steps：丢步或无法判断；验证被中止
+（Ctrl-C、急停、输入结束）</translation>
+    </message>
+    <message>
+        <source>nothing was done: a usage or validation error, a bad
+file, a write the window asks about without --yes,
+an apply not confirmed, a proof refused</source>
+        <translation>什么也没做：用法或数值错误、文件有误、
+窗口会询问的写入未加 --yes、
+apply 未确认、验证被拒绝</translation>
+    </message>
+    <message>
+        <source>diff, scan: a link or device error (their 1 is an
+answer); run: the link lost, the controller
+restarted, a command not taken; lost-steps,
+margin, backlash: the link lost, a restart, a
+read or move that failed</source>
+        <translation>diff、scan：通信或设备错误（它们的 1
+是一种结果）；run：通信中断、控制器
+重启、命令未被接受；lost-steps、
+margin、backlash：通信中断、重启、
+读取或移动失败</translation>
+    </message>
+    <message>
+        <source>prove the axis keeps its steps: the count against the
+home switch before and after --cycles K moves of
+--distance D out fast and back slowly, and the other
+way (docs/proving.md); shown and asked first (--yes);
+exit 0 kept, 1 lost, not known or stopped, 2 refused,
+3 link, restart or device</source>
+        <translation>验证轴不丢步：以原点开关对照计数，比较
+--cycles K 次 --distance D 的移动（快速外移、
+慢速返回，以及反过来）前后的结果
+（docs/proving.md）；先显示并询问（--yes 跳过）；
+退出码 0 未丢步，1 丢步、无法判断或被停止，
+2 被拒绝，3 通信、重启或设备错误</translation>
+    </message>
+    <message>
+        <source>the lost-step test at each speed --from .. --to in
+--step (--accel: the acceleration), lowest first, up
+to the first loss; recommends 75 % of the highest kept
+and writes it only with --apply; exit 0 searched, 1
+stopped or nothing kept to apply, 2 refused, 3 link</source>
+        <translation>在 --from .. --to 之间按 --step 取的每个转速
+（--accel：加速度）下运行丢步测试，由低到高，
+直到第一次丢步；推荐未丢步最高值的 75 %，
+仅在 --apply 时写入；退出码 0 已搜索，1 被停止
+或没有可写入的未丢步值，2 被拒绝，3 通信错误</translation>
+    </message>
+    <message>
+        <source>the lost motion on reversal with a dial gauge: moves of
+--distance D, each followed by &apos;gauge (mm)?&apos; on stderr
+and a reading from stdin; exit 0 measured, 1 stopped
+(end of input), 2 refused, 3 link</source>
+        <translation>用百分表测量反向间隙：每次移动 --distance D，
+之后在 stderr 输出 &apos;gauge (mm)?&apos;，
+并从 stdin 读取一个读数；退出码 0 已测量，
+1 被停止（输入结束），2 被拒绝，3 通信错误</translation>
     </message>
 </context>
 </TS>
