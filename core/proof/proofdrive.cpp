@@ -4,8 +4,12 @@
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionparameters.h"
+#include "session/reconnector.h"
+
+#include <QTimer>
 
 #include <cmath>
+#include <memory>
 
 namespace stepcom {
 
@@ -244,10 +248,37 @@ void ProofDrive::writeBack(std::function<void(bool, const QString &)> done)
         return;
     }
     if (!m_session->connection()->isConnected()) {
-        done(false, tr("Motor %1's own %2 could not be put back: not connected. Write them again "
-                       "once the controller answers.")
-                        .arg(m_motor)
-                        .arg(values));
+        const auto notBack = [this, values, done] {
+            done(false, tr("Motor %1's own %2 could not be put back: not connected. Write them "
+                           "again once the controller answers.")
+                            .arg(m_motor)
+                            .arg(values));
+        };
+        Reconnector *again = m_session->connection()->reconnector();
+        if (!again->isEnabled() || m_waitedForLink) {
+            notBack();
+            return;
+        }
+        // The window tries the link again on its own: the registers go back once it is up,
+        // within a while.
+        m_waitedForLink = true;
+        auto *timeout = new QTimer(this);
+        timeout->setSingleShot(true);
+        const auto once = std::make_shared<bool>(false);
+        connect(m_session->connection(), &SessionConnection::connected, timeout,
+                [this, done, timeout, once](bool ok) {
+                    if (!ok || std::exchange(*once, true))
+                        return;
+                    timeout->deleteLater();
+                    writeBack(done);
+                });
+        connect(timeout, &QTimer::timeout, this, [timeout, once, notBack] {
+            if (std::exchange(*once, true))
+                return;
+            timeout->deleteLater();
+            notBack();
+        });
+        timeout->start(kLinkWaitMs);
         return;
     }
     m_session->parameters()->write(

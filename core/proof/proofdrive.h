@@ -48,6 +48,7 @@ class ProofDrive : public QObject
     Q_OBJECT
 public:
     enum class Halt { None, Stopped, EmergencyStop, LinkLost, Restarted };
+    static constexpr int kLinkWaitMs = 30000;
 
     ProofDrive(DeviceSession *session, int motor, QObject *parent = nullptr);
 
@@ -69,7 +70,8 @@ public:
     // The home input and the count, read together.
     void readHome(std::function<void(const QString &error, bool on, double position)> done);
     // The speed and acceleration registers back as readSetup() found them, verified; after an
-    // E-STOP it waits for the E-STOP's own answer first. `done(restored, text)`.
+    // E-STOP it waits for the E-STOP's own answer first, after a lost link for the reconnect
+    // (when the session tries again on its own, at most kLinkWaitMs). `done(restored, text)`.
     void restore(std::function<void(bool restored, const QString &text)> done);
 
     // Stops the motor at once (its stop coil); the proof ends with what it knows.
@@ -95,6 +97,7 @@ private:
     std::function<void(const StepMoveResult &)> m_moveDone;
     qint64 m_speedHeld = 0; // what the registers hold now, as the proof wrote them
     qint64 m_accelHeld = 0;
+    bool m_waitedForLink = false;
 };
 
 } // namespace stepcom

@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "session/motionsupervisor.h"
 #include "session/parts/sessionconnection.h"
+#include "session/reconnector.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 
@@ -197,6 +198,23 @@ private Q_SLOTS:
         QCOMPARE(proofOutcomeWord(r.outcome), QStringLiteral("link_lost"));
         QVERIFY(!r.restored);
         QVERIFY2(r.text.contains(QLatin1String("300")), qPrintable(r.text)); // names the speed
+    }
+
+    void lostLinkPutsTheRegistersBackOnceItIsUp()
+    {
+        boot(proofAxis());
+        session->connection()->reconnector()->setDelaysMs({300, 500, 1000});
+        session->connection()->reconnector()->setEnabled(true);
+        bool cut = false;
+        const LostStepResult r = run(quick(), [this, &cut](AxisProof &, const QString &text) {
+            if (!cut && text.contains(QLatin1String("cycle"))) {
+                cut = true;
+                QTimer::singleShot(200, host.get(), [this] { host->hangUp(1500); });
+            }
+        });
+        QCOMPARE(proofOutcomeWord(r.outcome), QStringLiteral("link_lost"));
+        QVERIFY2(r.restored, qPrintable(r.text));
+        QCOMPARE(held("motor1.speed"), 300);
     }
 };
 
