@@ -146,6 +146,8 @@ void CtlOptions::addOptions(QCommandLineParser &parser)
          tr("margin: search the acceleration register at the motor's own speed.")},
         {QStringLiteral("apply"),
          tr("margin: write the recommended value, reviewed as write reviews it.")},
+        {QStringLiteral("check-steps"),
+         tr("run: after the cycles, the lost-step test on every axis the sequence moved.")},
         {QStringLiteral("rs485"),
          tr("Who switches an RS-485 adapter's direction: auto (the adapter itself, default), "
             "kernel (the driver's RS-485 mode, RTS on send) or rts (StepCom raises RTS for "
@@ -309,6 +311,7 @@ QString CtlOptions::fromParser(const QCommandLineParser &parser, CtlOptions *out
     o.step = parser.value(QStringLiteral("step"));
     o.accel = parser.isSet(QStringLiteral("accel"));
     o.apply = parser.isSet(QStringLiteral("apply"));
+    o.checkSteps = parser.isSet(QStringLiteral("check-steps"));
     if (!toInt(parser.value(QStringLiteral("days")), &o.days) || o.days < 0)
         return tr("--days: '%1' is not a number of days").arg(parser.value(QStringLiteral("days")));
     o.logFile = parser.value(QStringLiteral("log"));

@@ -51,6 +51,7 @@ struct CtlOptions
     QString step;             // margin --step N
     bool accel = false;       // margin --accel: the acceleration register
     bool apply = false;       // margin --apply: write the recommendation (reviewed)
+    bool checkSteps = false;  // run --check-steps: the lost-step test on the moved axes after
     int count = -1;
     int intervalMs = 0;
     QString command;

@@ -48,9 +48,10 @@ const QList<CtlCommand> &CtlRunner::commands()
                            "for inputs, outputs, dwells, repeats; docs/sequence.md)\n"
                            "--cycles N times, after showing it and asking (--yes);\n"
                            "each step a line on stderr (--json: JSON lines); Ctrl-C\n"
-                           "stops the motors; exit 0 done, 1 stopped by the machine\n"
-                           "(timeout, limit, E-STOP) or Ctrl-C, 2 bad file, 3 link,\n"
-                           "restart or device"),
+                           "stops the motors; --check-steps: then the lost-step test\n"
+                           "on every axis it moved; exit 0 done (and kept), 1\n"
+                           "stopped by the machine (timeout, limit, E-STOP), Ctrl-C\n"
+                           "or steps lost, 2 bad file, 3 link, restart or device"),
          &runRun},
         {"lost-steps", "lost-steps motorN",
          QT_TRANSLATE_NOOP("stepcomctl", "prove the axis keeps its steps: the count against the\n"

@@ -3,12 +3,14 @@
 #include "../ctlcontext.h"
 #include "ctlcommands.h"
 
+#include "proof/axisproof.h"
 #include "sequence/sequencecheck.h"
 #include "sequence/sequenceparser.h"
 #include "sequence/sequencerunner.h"
 #include "signalwatcher.h"
 
 #include <QElapsedTimer>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -30,6 +32,22 @@ QString axesText(const RegisterMap &map, const QMap<int, double> &axes)
                      .arg(p ? p->unit : QString());
     }
     return parts.join(QLatin1String(", "));
+}
+
+// The motors a move of the sequence drives: the axes --check-steps proves afterwards.
+QList<int> movedMotors(const Sequence &s)
+{
+    QList<int> motors;
+    for (const SequenceStep *step : s.allSteps()) {
+        if (step->kind != SequenceStep::Kind::MoveTo && step->kind != SequenceStep::Kind::MoveBy)
+            continue;
+        for (auto it = step->axes.begin(); it != step->axes.end(); ++it) {
+            if (!motors.contains(it.key()))
+                motors << it.key();
+        }
+    }
+    std::sort(motors.begin(), motors.end());
+    return motors;
 }
 
 // What the run will do, said before it is asked about.
@@ -58,6 +76,15 @@ QString plan(const CtlContext &ctx, const Sequence &s)
             QLatin1Char('\n');
     text += CtlRunner::tr("  cycles: %1 (the whole step list each time)").arg(ctx.options.cycles) +
             QLatin1Char('\n');
+    if (ctx.options.checkSteps) {
+        QStringList motors;
+        for (int m : movedMotors(s))
+            motors << QStringLiteral("motor%1").arg(m);
+        text += CtlRunner::tr("  then the lost-step test (lost-steps) on %1, each referenced on "
+                              "its home switch")
+                    .arg(motors.join(QLatin1String(", "))) +
+                QLatin1Char('\n');
+    }
     return text;
 }
 
@@ -83,7 +110,7 @@ int exitFor(SequenceResult::Outcome outcome)
     return CtlRunner::LinkError;
 }
 
-void report(CtlContext &ctx, const SequenceResult &r)
+void report(CtlContext &ctx, const SequenceResult &r, const QList<LostStepResult> &checks = {})
 {
     const auto seconds = [](double s) { return std::round(s * 1000) / 1000; };
     ctx.result = QJsonObject{{QStringLiteral("outcome"), r.word()},
@@ -114,13 +141,72 @@ void report(CtlContext &ctx, const SequenceResult &r)
                        .arg(r.maxCycle(), 0, 'f', 3)
                        .arg(r.elapsedSeconds, 0, 'f', 3)
                 << Qt::endl;
-    ctx.finish(exitFor(r.outcome));
+    int code = exitFor(r.outcome);
+    if (ctx.options.checkSteps) {
+        // After a run that ended well: each moved axis's lost-step test, the worst verdict.
+        QJsonArray list;
+        QString verdict = checks.isEmpty() ? QStringLiteral("unknown") : QStringLiteral("kept");
+        for (const LostStepResult &c : checks) {
+            list.append(c.toJson());
+            if (c.outcome != ProofOutcome::Done || c.verdict == LostStepResult::Verdict::Unknown)
+                verdict = verdict == QLatin1String("lost") ? verdict : QStringLiteral("unknown");
+            if (c.verdict == LostStepResult::Verdict::Lost)
+                verdict = QStringLiteral("lost");
+            const QString line = CtlRunner::tr("check-steps: %1").arg(c.text);
+            if (c.ok() && !ctx.options.json)
+                ctx.out << line << Qt::endl;
+            else if (!c.ok())
+                ctx.err << QStringLiteral("stepcomctl: ") << line << Qt::endl;
+        }
+        ctx.result.insert(QStringLiteral("check_steps"), list);
+        ctx.result.insert(QStringLiteral("check_steps_verdict"), verdict);
+        if (code == CtlRunner::Ok && verdict != QLatin1String("kept"))
+            code = CtlRunner::DeviceError;
+    }
+    ctx.finish(code);
+}
+
+// --check-steps: the lost-step test on each motor in turn, then the run's report with them.
+// `current` is the test under way, which Ctrl-C stops.
+void checkSteps(CtlContext &ctx, const SequenceResult &run, QList<int> motors,
+                std::shared_ptr<QPointer<AxisProof>> current, QList<LostStepResult> done = {})
+{
+    if (motors.isEmpty()) {
+        report(ctx, run, done);
+        return;
+    }
+    auto *proof = new AxisProof(ctx.session, ctx.runner());
+    *current = proof;
+    QObject::connect(proof, &AxisProof::progress, ctx.runner(), [&ctx](const QString &t) {
+        QTextStream(stderr) << (ctx.options.json
+                                    ? QString::fromUtf8(
+                                          QJsonDocument(QJsonObject{{QStringLiteral("event"),
+                                                                     QStringLiteral("check_steps")},
+                                                                    {QStringLiteral("text"), t}})
+                                              .toJson(QJsonDocument::Compact))
+                                    : t)
+                            << Qt::endl;
+    });
+    QObject::connect(proof, &AxisProof::finished, ctx.runner(),
+                     [&ctx, run, motors, current, done, proof](const LostStepResult &r) mutable {
+                         proof->deleteLater();
+                         done << r;
+                         motors.removeFirst();
+                         // A check that could not end (the link, an E-STOP) ends them all.
+                         if (r.outcome != ProofOutcome::Done)
+                             motors.clear();
+                         checkSteps(ctx, run, motors, current, done);
+                     });
+    AxisProof::Options o;
+    o.motor = motors.first();
+    proof->start(o);
 }
 
 void startRun(CtlContext &ctx, const Sequence &sequence)
 {
     ctx.connectThen([&ctx, sequence] {
         auto *runner = new SequenceRunner(ctx.session, ctx.runner());
+        auto checking = std::make_shared<QPointer<AxisProof>>(); // --check-steps' test
         // Each step a line on standard error as it starts, never one of the JSON object's
         // errors; with --json a JSON line.
         auto clock = std::make_shared<QElapsedTimer>();
@@ -154,11 +240,19 @@ void startRun(CtlContext &ctx, const Sequence &sequence)
                      CtlRunner::tr("cycle %1 done in %2 s").arg(cycle).arg(seconds, 0, 'f', 3));
             });
         QObject::connect(runner, &SequenceRunner::finished, ctx.runner(),
-                         [&ctx](const SequenceResult &r) { report(ctx, r); });
+                         [&ctx, moved = movedMotors(sequence), checking](const SequenceResult &r) {
+                             if (ctx.options.checkSteps && r.ok())
+                                 checkSteps(ctx, r, moved, checking);
+                             else
+                                 report(ctx, r);
+                         });
         // Ctrl-C and SIGTERM stop the motors (and the outputs, as on_stop says) before it ends.
         auto *watcher = new SignalWatcher(runner);
-        QObject::connect(watcher, &SignalWatcher::terminationRequested, runner,
-                         [runner] { runner->stop(); });
+        QObject::connect(watcher, &SignalWatcher::terminationRequested, runner, [runner, checking] {
+            runner->stop();
+            if (*checking)
+                (*checking)->stop();
+        });
         if (!runner->start(sequence, ctx.options.cycles))
             ctx.fail(ctx.linkError, CtlRunner::tr("the run could not start: not connected"));
     });

@@ -4,6 +4,7 @@
 #include "sim/model/simdevice.h"
 #include "testpaths.h"
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -252,6 +253,34 @@ private Q_SLOTS:
         QCOMPARE(o.value(QStringLiteral("outcome")).toString(), QStringLiteral("stopped"));
         QCOMPARE(o.value(QStringLiteral("readings")).toArray().size(), 1);
         QVERIFY(o.value(QStringLiteral("restored")).toBool());
+        QCOMPARE(held("motor1.speed"), 300);
+    }
+
+    void runChecksTheStepsAfterTheCycles()
+    {
+        AxisPhysics p = proofAxis();
+        p.pullOutRpm = 200;
+        p.pullInRpm = 100;
+        boot(p);
+        QFile f(dir.filePath(QStringLiteral("cycle.stepseq")));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format": "stepcom-sequence", "version": 1,
+                  "steps": [{"move_by": {"motor1": 2}}, {"move_by": {"motor1": -1}}]})");
+        f.close();
+        const ProgramRun r =
+            ctl({QStringLiteral("run"), f.fileName(), QStringLiteral("--check-steps"),
+                 QStringLiteral("--yes"), QStringLiteral("--json")});
+        QCOMPARE(r.exitCode, 1); // the cycle ran, the axis lost steps at its speed
+        const QJsonObject o = result(r);
+        QCOMPARE(o.value(QStringLiteral("outcome")).toString(), QStringLiteral("done"));
+        QCOMPARE(o.value(QStringLiteral("check_steps_verdict")).toString(), QStringLiteral("lost"));
+        const QJsonArray checks = o.value(QStringLiteral("check_steps")).toArray();
+        QCOMPARE(checks.size(), 1);
+        QCOMPARE(checks.first().toObject().value(QStringLiteral("motor")).toInt(), 1);
+        QVERIFY(checks.first().toObject().value(QStringLiteral("restored")).toBool());
+        QVERIFY2(r.out.contains(QLatin1String("lost-step test")) ||
+                     r.err.contains(QLatin1String("check_steps")),
+                 qPrintable(r.err));
         QCOMPARE(held("motor1.speed"), 300);
     }
 
