@@ -1064,6 +1064,53 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ChecklistBacklashStep</name>
+    <message>
+        <source>Put the gauge on the carriage. Run it? The axis will move.</source>
+        <translation>Put the gauge on the carriage. Run it? The axis will move.</translation>
+    </message>
+    <message>
+        <source>Reading %1 of %2, %3: type what the gauge shows and press Enter.</source>
+        <translation>Reading %1 of %2, %3: type what the gauge shows and press Enter.</translation>
+    </message>
+    <message>
+        <source>&amp;Distance of each move:</source>
+        <translation>&amp;Distance of each move:</translation>
+    </message>
+    <message>
+        <source>C&amp;ycles:</source>
+        <translation>C&amp;ycles:</translation>
+    </message>
+    <message>
+        <source>Distance of each move</source>
+        <translation>Distance of each move</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>Cycles</translation>
+    </message>
+    <message>
+        <source>Gauge: </source>
+        <translation>Gauge: </translation>
+    </message>
+    <message>
+        <source>Gauge reading</source>
+        <translation>Gauge reading</translation>
+    </message>
+    <message>
+        <source>Start the &amp;backlash test</source>
+        <translation>Start the &amp;backlash test</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>&amp;Stop</translation>
+    </message>
+    <message>
+        <source>&amp;Enter reading</source>
+        <translation>&amp;Enter reading</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ChecklistCalibrationStep</name>
     <message>
         <source>Moving…</source>
@@ -1458,6 +1505,93 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ChecklistProofStep</name>
+    <message>
+        <source>auto</source>
+        <translation>auto</translation>
+    </message>
+    <message>
+        <source>After the moves out: %1 mm</source>
+        <translation>After the moves out: %1 mm</translation>
+    </message>
+    <message>
+        <source>After the moves back: %1 mm</source>
+        <translation>After the moves back: %1 mm</translation>
+    </message>
+    <message>
+        <source>Run it? The axis will move.</source>
+        <translation>Run it? The axis will move.</translation>
+    </message>
+    <message>
+        <source>Write the recommended acceleration %1…</source>
+        <translation>Write the recommended acceleration %1…</translation>
+    </message>
+    <message>
+        <source>Write the recommended speed %1 rpm…</source>
+        <translation>Write the recommended speed %1 rpm…</translation>
+    </message>
+    <message>
+        <source>The recommendation was not written.</source>
+        <translation>The recommendation was not written.</translation>
+    </message>
+    <message>
+        <source>The recommendation is written and verified. Run the lost-step test again to prove it.</source>
+        <translation>The recommendation is written and verified. Run the lost-step test again to prove it.</translation>
+    </message>
+    <message>
+        <source>C&amp;ycles:</source>
+        <translation>C&amp;ycles:</translation>
+    </message>
+    <message>
+        <source>&amp;Distance of each move:</source>
+        <translation>&amp;Distance of each move:</translation>
+    </message>
+    <message>
+        <source>Margin: &amp;from, to, step:</source>
+        <translation>Margin: &amp;from, to, step:</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>Cycles</translation>
+    </message>
+    <message>
+        <source>Distance of each move</source>
+        <translation>Distance of each move</translation>
+    </message>
+    <message>
+        <source>Margin from</source>
+        <translation>Margin from</translation>
+    </message>
+    <message>
+        <source>Margin to</source>
+        <translation>Margin to</translation>
+    </message>
+    <message>
+        <source>Margin step</source>
+        <translation>Margin step</translation>
+    </message>
+    <message>
+        <source>Search the &amp;acceleration instead of the speed</source>
+        <translation>Search the &amp;acceleration instead of the speed</translation>
+    </message>
+    <message>
+        <source>Run the &amp;lost-step test</source>
+        <translation>Run the &amp;lost-step test</translation>
+    </message>
+    <message>
+        <source>Find the &amp;margin</source>
+        <translation>Find the &amp;margin</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>&amp;Stop</translation>
+    </message>
+    <message>
+        <source>Test progress</source>
+        <translation>Test progress</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ChecklistStep</name>
     <message>
         <source>Not run</source>
@@ -1606,6 +1740,94 @@
     <message>
         <source>Read back</source>
         <translation>Read back</translation>
+    </message>
+    <message>
+        <source>keeps its steps</source>
+        <translation>keeps its steps</translation>
+    </message>
+    <message>
+        <source>backlash</source>
+        <translation>backlash</translation>
+    </message>
+    <message>
+        <source>Prove that motor %1 keeps its steps at its own speed and acceleration: the count against the home switch before and after moves out fast and back slowly, and the other way. Then find the margin: the test at each speed on the way up, to the first loss.</source>
+        <translation>Prove that motor %1 keeps its steps at its own speed and acceleration: the count against the home switch before and after moves out fast and back slowly, and the other way. Then find the margin: the test at each speed on the way up, to the first loss.</translation>
+    </message>
+    <message>
+        <source>Put a dial gauge on motor %1&apos;s carriage. StepCom approaches a point from one side, then moves on and back; type what the gauge shows after each move.</source>
+        <translation>Put a dial gauge on motor %1&apos;s carriage. StepCom approaches a point from one side, then moves on and back; type what the gauge shows after each move.</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>Verdict</translation>
+    </message>
+    <message>
+        <source>Tested at speed</source>
+        <translation>Tested at speed</translation>
+    </message>
+    <message>
+        <source>Tested at acceleration</source>
+        <translation>Tested at acceleration</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>Cycles</translation>
+    </message>
+    <message>
+        <source>Distance of each move</source>
+        <translation>Distance of each move</translation>
+    </message>
+    <message>
+        <source>Lost after the moves out</source>
+        <translation>Lost after the moves out</translation>
+    </message>
+    <message>
+        <source>Lost after the moves back</source>
+        <translation>Lost after the moves back</translation>
+    </message>
+    <message>
+        <source>Switch repeatability</source>
+        <translation>Switch repeatability</translation>
+    </message>
+    <message>
+        <source>Highest speed kept</source>
+        <translation>Highest speed kept</translation>
+    </message>
+    <message>
+        <source>First speed lost</source>
+        <translation>First speed lost</translation>
+    </message>
+    <message>
+        <source>Recommended speed</source>
+        <translation>Recommended speed</translation>
+    </message>
+    <message>
+        <source>Highest acceleration kept</source>
+        <translation>Highest acceleration kept</translation>
+    </message>
+    <message>
+        <source>First acceleration lost</source>
+        <translation>First acceleration lost</translation>
+    </message>
+    <message>
+        <source>Recommended acceleration</source>
+        <translation>Recommended acceleration</translation>
+    </message>
+    <message>
+        <source>Backlash</source>
+        <translation>Backlash</translation>
+    </message>
+    <message>
+        <source>Spread</source>
+        <translation>Spread</translation>
+    </message>
+    <message>
+        <source>Gauge readings</source>
+        <translation>Gauge readings</translation>
+    </message>
+    <message>
+        <source>Taken on</source>
+        <translation>Taken on</translation>
     </message>
 </context>
 <context>
@@ -2649,6 +2871,10 @@
         <source>margin: write the recommended value, reviewed as write reviews it.</source>
         <translation>margin: write the recommended value, reviewed as write reviews it.</translation>
     </message>
+    <message>
+        <source>run: after the cycles, the lost-step test on every axis the sequence moved.</source>
+        <translation>run: after the cycles, the lost-step test on every axis the sequence moved.</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlRunner</name>
@@ -3259,6 +3485,14 @@
     <message>
         <source>&apos;%1&apos; is not a number: type the gauge&apos;s reading</source>
         <translation>&apos;%1&apos; is not a number: type the gauge&apos;s reading</translation>
+    </message>
+    <message>
+        <source>  then the lost-step test (lost-steps) on %1, each referenced on its home switch</source>
+        <translation>  then the lost-step test (lost-steps) on %1, each referenced on its home switch</translation>
+    </message>
+    <message>
+        <source>check-steps: %1</source>
+        <translation>check-steps: %1</translation>
     </message>
 </context>
 <context>
@@ -5945,6 +6179,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Open a file</source>
         <translation>Open a file</translation>
     </message>
+    <message>
+        <source>Use %1 rpm…</source>
+        <translation>Use %1 rpm…</translation>
+    </message>
+    <message>
+        <source>Find a safe speed…</source>
+        <translation>Find a safe speed…</translation>
+    </message>
+    <message>
+        <source>Motor %1 lost steps at %2 rpm</source>
+        <translation>Motor %1 lost steps at %2 rpm</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MarginFinder</name>
@@ -6003,6 +6249,33 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Motor %1 lost steps already at %2 %3, the lowest value tested</source>
         <translation>Motor %1 lost steps already at %2 %3, the lowest value tested</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MarginPlot</name>
+    <message>
+        <source>kept its steps</source>
+        <translation>kept its steps</translation>
+    </message>
+    <message>
+        <source>lost steps</source>
+        <translation>lost steps</translation>
+    </message>
+    <message>
+        <source>recommended</source>
+        <translation>recommended</translation>
+    </message>
+    <message>
+        <source>Acceleration (Hz/ms)</source>
+        <translation>Acceleration (Hz/ms)</translation>
+    </message>
+    <message>
+        <source>Speed (rpm)</source>
+        <translation>Speed (rpm)</translation>
+    </message>
+    <message>
+        <source>Lost (mm, − behind)</source>
+        <translation>Lost (mm, − behind)</translation>
     </message>
 </context>
 <context>
@@ -11309,22 +11582,6 @@ errors and answer times on stderr (--port, --baud,
 --parity; --log FILE keeps it as a session log)</translation>
     </message>
     <message>
-        <source>run a machine cycle (a .stepseq file: home, moves, waits
-for inputs, outputs, dwells, repeats; docs/sequence.md)
---cycles N times, after showing it and asking (--yes);
-each step a line on stderr (--json: JSON lines); Ctrl-C
-stops the motors; exit 0 done, 1 stopped by the machine
-(timeout, limit, E-STOP) or Ctrl-C, 2 bad file, 3 link,
-restart or device</source>
-        <translation>run a machine cycle (a .stepseq file: home, moves, waits
-for inputs, outputs, dwells, repeats; docs/sequence.md)
---cycles N times, after showing it and asking (--yes);
-each step a line on stderr (--json: JSON lines); Ctrl-C
-stops the motors; exit 0 done, 1 stopped by the machine
-(timeout, limit, E-STOP) or Ctrl-C, 2 bad file, 3 link,
-restart or device</translation>
-    </message>
-    <message>
         <source>not done: a link or device error, a value not
 verified, a file or backup that could not be
 written; diff: different; scan: none found; move,
@@ -11393,6 +11650,24 @@ and a reading from stdin; exit 0 measured, 1 stopped
 --distance D, each followed by &apos;gauge (mm)?&apos; on stderr
 and a reading from stdin; exit 0 measured, 1 stopped
 (end of input), 2 refused, 3 link</translation>
+    </message>
+    <message>
+        <source>run a machine cycle (a .stepseq file: home, moves, waits
+for inputs, outputs, dwells, repeats; docs/sequence.md)
+--cycles N times, after showing it and asking (--yes);
+each step a line on stderr (--json: JSON lines); Ctrl-C
+stops the motors; --check-steps: then the lost-step test
+on every axis it moved; exit 0 done (and kept), 1
+stopped by the machine (timeout, limit, E-STOP), Ctrl-C
+or steps lost, 2 bad file, 3 link, restart or device</source>
+        <translation>run a machine cycle (a .stepseq file: home, moves, waits
+for inputs, outputs, dwells, repeats; docs/sequence.md)
+--cycles N times, after showing it and asking (--yes);
+each step a line on stderr (--json: JSON lines); Ctrl-C
+stops the motors; --check-steps: then the lost-step test
+on every axis it moved; exit 0 done (and kept), 1
+stopped by the machine (timeout, limit, E-STOP), Ctrl-C
+or steps lost, 2 bad file, 3 link, restart or device</translation>
     </message>
 </context>
 </TS>

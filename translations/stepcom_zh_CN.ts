@@ -1057,6 +1057,53 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ChecklistBacklashStep</name>
+    <message>
+        <source>Put the gauge on the carriage. Run it? The axis will move.</source>
+        <translation>请将百分表放在滑台上。是否运行？轴将会移动。</translation>
+    </message>
+    <message>
+        <source>Reading %1 of %2, %3: type what the gauge shows and press Enter.</source>
+        <translation>第 %1 个读数（共 %2 个），%3：请输入百分表的读数并按回车。</translation>
+    </message>
+    <message>
+        <source>&amp;Distance of each move:</source>
+        <translation>每次移动的距离(&amp;D)：</translation>
+    </message>
+    <message>
+        <source>C&amp;ycles:</source>
+        <translation>循环次数(&amp;Y)：</translation>
+    </message>
+    <message>
+        <source>Distance of each move</source>
+        <translation>每次移动的距离</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>循环次数</translation>
+    </message>
+    <message>
+        <source>Gauge: </source>
+        <translation>百分表：</translation>
+    </message>
+    <message>
+        <source>Gauge reading</source>
+        <translation>百分表读数</translation>
+    </message>
+    <message>
+        <source>Start the &amp;backlash test</source>
+        <translation>开始反向间隙测试(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>停止(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Enter reading</source>
+        <translation>输入读数(&amp;E)</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ChecklistCalibrationStep</name>
     <message>
         <source>Moving…</source>
@@ -1448,6 +1495,93 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ChecklistProofStep</name>
+    <message>
+        <source>auto</source>
+        <translation>自动</translation>
+    </message>
+    <message>
+        <source>After the moves out: %1 mm</source>
+        <translation>外移之后：%1 mm</translation>
+    </message>
+    <message>
+        <source>After the moves back: %1 mm</source>
+        <translation>返回之后：%1 mm</translation>
+    </message>
+    <message>
+        <source>Run it? The axis will move.</source>
+        <translation>是否运行？轴将会移动。</translation>
+    </message>
+    <message>
+        <source>Write the recommended acceleration %1…</source>
+        <translation>写入推荐的加速度 %1…</translation>
+    </message>
+    <message>
+        <source>Write the recommended speed %1 rpm…</source>
+        <translation>写入推荐的速度 %1 rpm…</translation>
+    </message>
+    <message>
+        <source>The recommendation was not written.</source>
+        <translation>推荐值未写入。</translation>
+    </message>
+    <message>
+        <source>The recommendation is written and verified. Run the lost-step test again to prove it.</source>
+        <translation>推荐值已写入并校验。请再次运行丢步测试加以验证。</translation>
+    </message>
+    <message>
+        <source>C&amp;ycles:</source>
+        <translation>循环次数(&amp;Y)：</translation>
+    </message>
+    <message>
+        <source>&amp;Distance of each move:</source>
+        <translation>每次移动的距离(&amp;D)：</translation>
+    </message>
+    <message>
+        <source>Margin: &amp;from, to, step:</source>
+        <translation>余量：起始、终止、步长(&amp;F)：</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>循环次数</translation>
+    </message>
+    <message>
+        <source>Distance of each move</source>
+        <translation>每次移动的距离</translation>
+    </message>
+    <message>
+        <source>Margin from</source>
+        <translation>余量起始值</translation>
+    </message>
+    <message>
+        <source>Margin to</source>
+        <translation>余量终止值</translation>
+    </message>
+    <message>
+        <source>Margin step</source>
+        <translation>余量步长</translation>
+    </message>
+    <message>
+        <source>Search the &amp;acceleration instead of the speed</source>
+        <translation>改为搜索加速度(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Run the &amp;lost-step test</source>
+        <translation>运行丢步测试(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Find the &amp;margin</source>
+        <translation>寻找余量(&amp;M)</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>停止(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Test progress</source>
+        <translation>测试进度</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ChecklistStep</name>
     <message>
         <source>Not run</source>
@@ -1596,6 +1730,94 @@
     <message>
         <source>Read back</source>
         <translation>读回</translation>
+    </message>
+    <message>
+        <source>keeps its steps</source>
+        <translation>未丢步</translation>
+    </message>
+    <message>
+        <source>backlash</source>
+        <translation>反向间隙</translation>
+    </message>
+    <message>
+        <source>Prove that motor %1 keeps its steps at its own speed and acceleration: the count against the home switch before and after moves out fast and back slowly, and the other way. Then find the margin: the test at each speed on the way up, to the first loss.</source>
+        <translation>验证电机 %1 在其自身的速度和加速度下不丢步：在快速外移、慢速返回以及反过来的移动前后，以原点开关对照计数。然后寻找余量：逐步升高转速运行该测试，直到第一次丢步。</translation>
+    </message>
+    <message>
+        <source>Put a dial gauge on motor %1&apos;s carriage. StepCom approaches a point from one side, then moves on and back; type what the gauge shows after each move.</source>
+        <translation>将百分表放在电机 %1 的滑台上。StepCom 从一侧趋近某一点，然后继续前移并返回；每次移动后输入百分表的读数。</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>结论</translation>
+    </message>
+    <message>
+        <source>Tested at speed</source>
+        <translation>测试速度</translation>
+    </message>
+    <message>
+        <source>Tested at acceleration</source>
+        <translation>测试加速度</translation>
+    </message>
+    <message>
+        <source>Cycles</source>
+        <translation>循环次数</translation>
+    </message>
+    <message>
+        <source>Distance of each move</source>
+        <translation>每次移动的距离</translation>
+    </message>
+    <message>
+        <source>Lost after the moves out</source>
+        <translation>外移后的丢失量</translation>
+    </message>
+    <message>
+        <source>Lost after the moves back</source>
+        <translation>返回后的丢失量</translation>
+    </message>
+    <message>
+        <source>Switch repeatability</source>
+        <translation>开关重复性</translation>
+    </message>
+    <message>
+        <source>Highest speed kept</source>
+        <translation>未丢步的最高速度</translation>
+    </message>
+    <message>
+        <source>First speed lost</source>
+        <translation>首个丢步的速度</translation>
+    </message>
+    <message>
+        <source>Recommended speed</source>
+        <translation>推荐速度</translation>
+    </message>
+    <message>
+        <source>Highest acceleration kept</source>
+        <translation>未丢步的最高加速度</translation>
+    </message>
+    <message>
+        <source>First acceleration lost</source>
+        <translation>首个丢步的加速度</translation>
+    </message>
+    <message>
+        <source>Recommended acceleration</source>
+        <translation>推荐加速度</translation>
+    </message>
+    <message>
+        <source>Backlash</source>
+        <translation>反向间隙</translation>
+    </message>
+    <message>
+        <source>Spread</source>
+        <translation>极差</translation>
+    </message>
+    <message>
+        <source>Gauge readings</source>
+        <translation>百分表读数</translation>
+    </message>
+    <message>
+        <source>Taken on</source>
+        <translation>测试对象</translation>
     </message>
 </context>
 <context>
@@ -2638,6 +2860,10 @@
         <source>margin: write the recommended value, reviewed as write reviews it.</source>
         <translation>margin：写入推荐值，并像 write 一样先经过审查。</translation>
     </message>
+    <message>
+        <source>run: after the cycles, the lost-step test on every axis the sequence moved.</source>
+        <translation>run：循环结束后，对序列移动过的每根轴运行丢步测试。</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::CtlRunner</name>
@@ -3240,6 +3466,14 @@
     <message>
         <source>&apos;%1&apos; is not a number: type the gauge&apos;s reading</source>
         <translation>“%1”不是数字：请输入百分表的读数</translation>
+    </message>
+    <message>
+        <source>  then the lost-step test (lost-steps) on %1, each referenced on its home switch</source>
+        <translation>  然后对 %1 运行丢步测试（lost-steps），每根轴都以其原点开关为参考</translation>
+    </message>
+    <message>
+        <source>check-steps: %1</source>
+        <translation>check-steps：%1</translation>
     </message>
 </context>
 <context>
@@ -5912,6 +6146,18 @@ Every other master on the bus must use the new settings too, and no other device
         <source>Open a file</source>
         <translation>打开文件</translation>
     </message>
+    <message>
+        <source>Use %1 rpm…</source>
+        <translation>使用 %1 rpm…</translation>
+    </message>
+    <message>
+        <source>Find a safe speed…</source>
+        <translation>寻找安全速度…</translation>
+    </message>
+    <message>
+        <source>Motor %1 lost steps at %2 rpm</source>
+        <translation>电机 %1 在 %2 rpm 时丢步</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MarginFinder</name>
@@ -5970,6 +6216,33 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Motor %1 lost steps already at %2 %3, the lowest value tested</source>
         <translation>电机 %1 在所测试的最低值 %2 %3 时就已丢步</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MarginPlot</name>
+    <message>
+        <source>kept its steps</source>
+        <translation>未丢步</translation>
+    </message>
+    <message>
+        <source>lost steps</source>
+        <translation>丢步</translation>
+    </message>
+    <message>
+        <source>recommended</source>
+        <translation>推荐值</translation>
+    </message>
+    <message>
+        <source>Acceleration (Hz/ms)</source>
+        <translation>加速度 (Hz/ms)</translation>
+    </message>
+    <message>
+        <source>Speed (rpm)</source>
+        <translation>速度 (rpm)</translation>
+    </message>
+    <message>
+        <source>Lost (mm, − behind)</source>
+        <translation>丢失量（mm，− 为滞后）</translation>
     </message>
 </context>
 <context>
@@ -11243,22 +11516,6 @@ errors and answer times on stderr (--port, --baud,
 为会话日志）</translation>
     </message>
     <message>
-        <source>run a machine cycle (a .stepseq file: home, moves, waits
-for inputs, outputs, dwells, repeats; docs/sequence.md)
---cycles N times, after showing it and asking (--yes);
-each step a line on stderr (--json: JSON lines); Ctrl-C
-stops the motors; exit 0 done, 1 stopped by the machine
-(timeout, limit, E-STOP) or Ctrl-C, 2 bad file, 3 link,
-restart or device</source>
-        <translation>运行机器循环（.stepseq 文件：回零、移动、等待
-输入、输出、停留、重复；docs/sequence.md）
-共 --cycles N 次，先显示并询问（--yes 跳过）；
-每个步骤在 stderr 输出一行（--json：JSON 行）；Ctrl-C
-停止电机；退出码 0 完成，1 被机器停止
-（超时、限位、急停）或 Ctrl-C，2 文件错误，3 通信、
-重启或设备错误</translation>
-    </message>
-    <message>
         <source>not done: a link or device error, a value not
 verified, a file or backup that could not be
 written; diff: different; scan: none found; move,
@@ -11327,6 +11584,24 @@ and a reading from stdin; exit 0 measured, 1 stopped
 之后在 stderr 输出 &apos;gauge (mm)?&apos;，
 并从 stdin 读取一个读数；退出码 0 已测量，
 1 被停止（输入结束），2 被拒绝，3 通信错误</translation>
+    </message>
+    <message>
+        <source>run a machine cycle (a .stepseq file: home, moves, waits
+for inputs, outputs, dwells, repeats; docs/sequence.md)
+--cycles N times, after showing it and asking (--yes);
+each step a line on stderr (--json: JSON lines); Ctrl-C
+stops the motors; --check-steps: then the lost-step test
+on every axis it moved; exit 0 done (and kept), 1
+stopped by the machine (timeout, limit, E-STOP), Ctrl-C
+or steps lost, 2 bad file, 3 link, restart or device</source>
+        <translation>运行机器循环（.stepseq 文件：回零、移动、等待
+输入、输出、停留、重复；docs/sequence.md）
+共 --cycles N 次，先显示并询问（--yes 跳过）；
+每个步骤在 stderr 输出一行（--json：JSON 行）；Ctrl-C
+停止电机；--check-steps：然后对移动过的每根轴
+运行丢步测试；退出码 0 完成（且未丢步），1 被机器
+停止（超时、限位、急停）、Ctrl-C 或丢步，2 文件
+错误，3 通信、重启或设备错误</translation>
     </message>
 </context>
 </TS>

@@ -14,6 +14,7 @@
 #include "pages/motionpage.h"
 #include "pages/motorpage.h"
 #include "pages/plotpage.h"
+#include "proofscenes.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/parts/sessionconnection.h"
@@ -536,6 +537,7 @@ const QList<Scene> &scenes()
         {QStringLiteral("write-changes"), W::AfterPages, &writeChanges},
         {QStringLiteral("checklist-direction"), W::AfterPages, &checklistDirection},
         {QStringLiteral("checklist-miswired"), W::AfterPages, &checklistMiswired},
+        {QStringLiteral("checklist-margin"), W::AfterPages, &proofscenes::margin},
         {QStringLiteral("device-list"), W::AfterPages, &busscenes::deviceList},
         // Small laptop screens, while connected: before port-missing.
         {QStringLiteral("laptop-1024x600"), W::AfterPages, &laptopscenes::small},

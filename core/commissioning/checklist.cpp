@@ -14,7 +14,8 @@ Checklist Checklist::forMap(const RegisterMap &map)
     c.m_motors = map.blockCount(QStringLiteral("motor"));
     for (int motor = 1; motor <= c.m_motors; ++motor) {
         for (StepKind k : {StepKind::Direction, StepKind::Calibration, StepKind::LimitPositive,
-                           StepKind::LimitNegative, StepKind::HomeInput, StepKind::Homing})
+                           StepKind::LimitNegative, StepKind::HomeInput, StepKind::Homing,
+                           StepKind::KeepsSteps, StepKind::Backlash})
             c.m_steps.append({stepId(k, motor), k, motor, {}});
     }
     for (StepKind k : {StepKind::HomingOrder, StepKind::Interpolation, StepKind::SaveToFlash})

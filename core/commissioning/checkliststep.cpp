@@ -19,6 +19,10 @@ QString ChecklistStep::kindWord(Kind kind)
         return QStringLiteral("home_input");
     case Kind::Homing:
         return QStringLiteral("homing");
+    case Kind::KeepsSteps:
+        return QStringLiteral("keeps_steps");
+    case Kind::Backlash:
+        return QStringLiteral("backlash");
     case Kind::HomingOrder:
         return QStringLiteral("homing_order");
     case Kind::Interpolation:
@@ -86,6 +90,12 @@ QString ChecklistStep::title() const
     case Kind::Homing:
         what = tr("homing");
         break;
+    case Kind::KeepsSteps:
+        what = tr("keeps its steps");
+        break;
+    case Kind::Backlash:
+        what = tr("backlash");
+        break;
     case Kind::HomingOrder:
         return tr("Machine: homing order");
     case Kind::Interpolation:
@@ -123,6 +133,16 @@ QString ChecklistStep::instruction() const
     case Kind::Homing:
         return tr("Home motor %1 and check that it ended on its home switch, referenced.")
             .arg(motor);
+    case Kind::KeepsSteps:
+        return tr("Prove that motor %1 keeps its steps at its own speed and acceleration: the "
+                  "count against the home switch before and after moves out fast and back "
+                  "slowly, and the other way. Then find the margin: the test at each speed on "
+                  "the way up, to the first loss.")
+            .arg(motor);
+    case Kind::Backlash:
+        return tr("Put a dial gauge on motor %1's carriage. StepCom approaches a point from one "
+                  "side, then moves on and back; type what the gauge shows after each move.")
+            .arg(motor);
     case Kind::HomingOrder:
         return tr("Home the machine in the configured order and check that every axis in the "
                   "order ended referenced.");
@@ -153,6 +173,24 @@ QString ChecklistStep::measurementLabel(const QString &key)
         {QStringLiteral("expected_end"), QT_TR_NOOP("Expected end")},
         {QStringLiteral("order"), QT_TR_NOOP("Homing order")},
         {QStringLiteral("readback"), QT_TR_NOOP("Read back")},
+        {QStringLiteral("verdict"), QT_TR_NOOP("Verdict")},
+        {QStringLiteral("speed_rpm"), QT_TR_NOOP("Tested at speed")},
+        {QStringLiteral("accel"), QT_TR_NOOP("Tested at acceleration")},
+        {QStringLiteral("cycles"), QT_TR_NOOP("Cycles")},
+        {QStringLiteral("distance"), QT_TR_NOOP("Distance of each move")},
+        {QStringLiteral("lost_out"), QT_TR_NOOP("Lost after the moves out")},
+        {QStringLiteral("lost_back"), QT_TR_NOOP("Lost after the moves back")},
+        {QStringLiteral("repeatability"), QT_TR_NOOP("Switch repeatability")},
+        {QStringLiteral("kept_rpm"), QT_TR_NOOP("Highest speed kept")},
+        {QStringLiteral("stall_rpm"), QT_TR_NOOP("First speed lost")},
+        {QStringLiteral("recommended_rpm"), QT_TR_NOOP("Recommended speed")},
+        {QStringLiteral("kept_accel"), QT_TR_NOOP("Highest acceleration kept")},
+        {QStringLiteral("stall_accel"), QT_TR_NOOP("First acceleration lost")},
+        {QStringLiteral("recommended_accel"), QT_TR_NOOP("Recommended acceleration")},
+        {QStringLiteral("backlash"), QT_TR_NOOP("Backlash")},
+        {QStringLiteral("spread"), QT_TR_NOOP("Spread")},
+        {QStringLiteral("readings"), QT_TR_NOOP("Gauge readings")},
+        {QStringLiteral("simulator"), QT_TR_NOOP("Taken on")},
     };
     const auto it = labels.constFind(key);
     return it == labels.cend() ? key : tr(*it);

@@ -31,7 +31,8 @@ struct ChecklistAttempt
 };
 
 // One step of the commissioning checklist: per motor (direction, travel calibration, the limit
-// and home inputs, homing) or for the machine (homing order, interpolation, save to flash).
+// and home inputs, homing, keeping its steps, backlash) or for the machine (homing order,
+// interpolation, save to flash).
 struct ChecklistStep
 {
     Q_DECLARE_TR_FUNCTIONS(stepcom::ChecklistStep)
@@ -43,6 +44,8 @@ public:
         LimitNegative,
         HomeInput,
         Homing,
+        KeepsSteps, // the lost-step test and the speed margin (core/proof)
+        Backlash,   // the backlash test with a dial gauge
         HomingOrder,
         Interpolation,
         SaveToFlash,

@@ -5,11 +5,13 @@
 #include "profile/settingsfingerprint.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionparameters.h"
+#include "widgets/checklist/checklistbacklashstep.h"
 #include "widgets/checklist/checklistcalibrationstep.h"
 #include "widgets/checklist/checklistdirectionstep.h"
 #include "widgets/checklist/checklistflashstep.h"
 #include "widgets/checklist/checklistinputstep.h"
 #include "widgets/checklist/checklistmotionstep.h"
+#include "widgets/checklist/checklistproofstep.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -44,6 +46,10 @@ ChecklistStepWidget *makeStep(DeviceSession *session, WriteFlow *writes, const C
     case Kind::LimitNegative:
     case Kind::HomeInput:
         return new ChecklistInputStep(session, writes, s, parent);
+    case Kind::KeepsSteps:
+        return new ChecklistProofStep(session, writes, s, parent);
+    case Kind::Backlash:
+        return new ChecklistBacklashStep(session, writes, s, parent);
     case Kind::Homing:
     case Kind::HomingOrder:
     case Kind::Interpolation:
@@ -106,6 +112,10 @@ ChecklistPage::ChecklistPage(DeviceSession *session, WriteFlow *writes, QWidget 
         auto *item = new QListWidgetItem(m_list);
         item->setData(Qt::UserRole, s.id);
         connect(w, &ChecklistStepWidget::recorded, this, &ChecklistPage::onRecorded);
+        if (auto *proof = qobject_cast<ChecklistProofStep *>(w)) {
+            connect(proof, &ChecklistProofStep::stepsLost, this, &ChecklistPage::stepsLost);
+            connect(proof, &ChecklistProofStep::stepsKept, this, &ChecklistPage::stepsKept);
+        }
     }
     connect(m_list, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     connect(m_chooseProfile, &QPushButton::clicked, this, &ChecklistPage::chooseProfile);
@@ -115,6 +125,14 @@ ChecklistPage::ChecklistPage(DeviceSession *session, WriteFlow *writes, QWidget 
     m_profile = settings.value(kProfile).toString();
     load();
     retranslate();
+}
+
+void ChecklistPage::writeRecommendation(int motor)
+{
+    const QString id = Checklist::stepId(ChecklistStep::Kind::KeepsSteps, motor);
+    selectStep(id);
+    if (auto *proof = qobject_cast<ChecklistProofStep *>(m_widgets.value(id)))
+        proof->writeRecommendation();
 }
 
 QString ChecklistPage::defaultFile()

@@ -49,6 +49,8 @@ public:
 
     // Where the checklist is kept without a profile.
     static QString defaultFile();
+    // Opens the write dialog for the speed the motor's margin search recommended.
+    void writeRecommendation(int motor);
 
 protected:
     void retranslate() override;
@@ -57,6 +59,10 @@ Q_SIGNALS:
     // A step's result was recorded: "checklist motor1.direction: passed" (English, for the
     // session log's user lines).
     void resultRecorded(const QString &what);
+    // The proof of an axis: lost steps at the motor's own settings (a margin's recommendation
+    // when one is known), or kept again.
+    void stepsLost(int motor, qint64 speedRpm, std::optional<qint64> recommended);
+    void stepsKept(int motor);
 
 private:
     void load();

@@ -131,6 +131,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     centralLayout->addWidget(m_replay->bar());
     centralLayout->addWidget(m_strip);
     m_estopButton = m_strip->emergencyStopButton();
+    watchProofs();
     m_estopAction->setEnabled(m_estop->isAvailable());
     connect(m_estop, &EmergencyStop::availabilityChanged, this, [this](bool available) {
         m_estopAction->setEnabled(available);

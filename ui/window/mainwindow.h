@@ -85,6 +85,9 @@ private:
     void createMenus();
     void createDocks();
     void addPage(Page *page);
+    // A proof of an axis that lost steps at the motor's own settings: a warning in the strip,
+    // its recommended speed (or the way to find one) one click away (mainwindowlayout.cpp).
+    void watchProofs();
     void retranslate();
     void retranslateEmergencyStop();
     void updateActions();

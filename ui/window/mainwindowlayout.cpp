@@ -2,6 +2,7 @@
 // inside the screen, and the layout saved and restored (split from mainwindow.cpp).
 #include "window/mainwindow.h"
 
+#include "pages/checklistpage.h"
 #include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/pagesidebar.h"
@@ -170,6 +171,27 @@ void MainWindow::saveLayout()
     settings.beginGroup(QStringLiteral("window"));
     settings.setValue(QStringLiteral("geometry"), saveGeometry());
     settings.setValue(QStringLiteral("state"), saveState());
+}
+
+void MainWindow::watchProofs()
+{
+    connect(m_checklist, &ChecklistPage::stepsLost, this,
+            [this](int motor, qint64 rpm, std::optional<qint64> recommended) {
+                const QString action =
+                    recommended ? tr("Use %1 rpm…").arg(*recommended) : tr("Find a safe speed…");
+                m_strip->setProofWarning(tr("Motor %1 lost steps at %2 rpm").arg(motor).arg(rpm),
+                                         action, [this, motor, recommended] {
+                                             showPage(int(m_pages.indexOf(m_checklist)));
+                                             if (recommended) {
+                                                 m_checklist->writeRecommendation(motor);
+                                                 return;
+                                             }
+                                             m_checklist->selectStep(Checklist::stepId(
+                                                 ChecklistStep::Kind::KeepsSteps, motor));
+                                         });
+            });
+    connect(m_checklist, &ChecklistPage::stepsKept, this,
+            [this] { m_strip->setProofWarning({}, {}, {}); });
 }
 
 } // namespace stepcom

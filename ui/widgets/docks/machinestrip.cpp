@@ -63,6 +63,8 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     , m_line(new ElidedLabel(this))
     , m_device(new ElidedLabel(this))
     , m_pendant(new QLabel(this))
+    , m_proofWarning(new QLabel(this))
+    , m_proofAction(new QToolButton(this))
     , m_estopButton(estop->createButton(this))
 {
     setObjectName(QStringLiteral("machineStrip"));
@@ -139,6 +141,20 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     m_pendant->setObjectName(QStringLiteral("stripPendant"));
     m_pendant->hide();
     linkColumn->addWidget(m_pendant);
+    m_proofWarning->setObjectName(QStringLiteral("stripProofWarning"));
+    m_proofWarning->setStyleSheet(QStringLiteral("color: #c62828; font-weight: bold;"));
+    m_proofAction->setObjectName(QStringLiteral("stripProofAction"));
+    m_proofWarning->hide();
+    m_proofAction->hide();
+    connect(m_proofAction, &QToolButton::clicked, this, [this] {
+        if (m_onProofAction)
+            m_onProofAction();
+    });
+    auto *proof = new QHBoxLayout;
+    proof->addWidget(m_proofWarning);
+    proof->addWidget(m_proofAction);
+    proof->addStretch(1);
+    linkColumn->addLayout(proof);
     row->addLayout(linkColumn, 1);
 
     // The window's one E-STOP button, at the end: on every page, beside the machine's state.
@@ -361,6 +377,17 @@ void MachineStrip::setPendantText(const QString &text)
     m_pendant->setText(text);
     m_pendant->setAccessibleName(text);
     m_pendant->setVisible(!text.isEmpty());
+}
+
+void MachineStrip::setProofWarning(const QString &text, const QString &action,
+                                   std::function<void()> onAction)
+{
+    m_proofWarning->setText(text);
+    m_proofWarning->setAccessibleName(text);
+    m_proofWarning->setVisible(!text.isEmpty());
+    m_proofAction->setText(action);
+    m_proofAction->setVisible(!text.isEmpty() && !action.isEmpty());
+    m_onProofAction = std::move(onAction);
 }
 
 void MachineStrip::endReplay()

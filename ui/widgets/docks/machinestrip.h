@@ -55,6 +55,12 @@ public:
     // "Pendant: 1 phone watching" / "Pendant: jogging from 192.168.1.23"; empty hides it.
     void setPendantText(const QString &text);
     QLabel *pendantLabel() const { return m_pendant; }
+    // A proof of an axis failed at the user's own settings: "Motor 1 lost steps at 300 rpm" and
+    // a button (`action`, e.g. "Use 225 rpm…") that runs `onAction`; an empty text hides both.
+    void setProofWarning(const QString &text, const QString &action,
+                         std::function<void()> onAction);
+    QLabel *proofWarningLabel() const { return m_proofWarning; }
+    QToolButton *proofActionButton() const { return m_proofAction; }
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -92,6 +98,9 @@ private:
     ElidedLabel *m_line;
     ElidedLabel *m_device; // a long name gives way: the strip must not widen the window
     QLabel *m_pendant;     // who watches or jogs from a phone (PendantActions)
+    QLabel *m_proofWarning;
+    QToolButton *m_proofAction;
+    std::function<void()> m_onProofAction;
     QToolButton *m_estopButton;
     std::function<QString(int)> m_namer;
     struct ReplayLink
