@@ -191,8 +191,7 @@ private Q_SLOTS:
         QTRY_VERIFY_WITH_TIMEOUT(!w->isRunning(), 60000);
         QVERIFY2(result("motor1.backlash").result() == StepResult::Passed,
                  qPrintable(w->findChild<QLabel *>(QStringLiteral("stepStatus"))
-                                ? w->findChild<QLabel *>(QStringLiteral("stepStatus"))
-                                      ->text()
+                                ? w->findChild<QLabel *>(QStringLiteral("stepStatus"))->text()
                                 : QString()));
         const double backlash = measured("motor1.backlash", "backlash").toDouble();
         QVERIFY2(std::abs(backlash - 0.1) <= 0.02, qPrintable(QString::number(backlash)));
