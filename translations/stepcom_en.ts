@@ -6274,8 +6274,8 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Speed (rpm)</translation>
     </message>
     <message>
-        <source>Lost (mm, − behind)</source>
-        <translation>Lost (mm, − behind)</translation>
+        <source>Lost (mm)</source>
+        <translation>Lost (mm)</translation>
     </message>
 </context>
 <context>

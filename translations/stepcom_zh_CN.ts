@@ -6241,8 +6241,8 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>速度 (rpm)</translation>
     </message>
     <message>
-        <source>Lost (mm, − behind)</source>
-        <translation>丢失量（mm，− 为滞后）</translation>
+        <source>Lost (mm)</source>
+        <translation>丢失量 (mm)</translation>
     </message>
 </context>
 <context>

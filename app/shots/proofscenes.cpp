@@ -8,11 +8,13 @@
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "widgets/checklist/checklistproofstep.h"
+#include "widgets/plots/marginplot.h"
 #include "window/windowprobe.h"
 
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSpinBox>
 
 namespace stepcom::proofscenes {
@@ -52,6 +54,16 @@ void margin(Shooter &s)
     });
     script.waitFor(
         QStringLiteral("the margin search"), [widget] { return !widget()->isRunning(); }, 180000);
+    script.then([widget] {
+        // The page scrolls on a laptop's screen: the plot is what the picture is about.
+        for (QWidget *p = widget()->parentWidget(); p; p = p->parentWidget()) {
+            if (auto *area = qobject_cast<QScrollArea *>(p)) {
+                area->ensureWidgetVisible(widget()->plot(), 0, 0);
+                break;
+            }
+        }
+    });
+    script.sleep(300);
     s.shoot(Shooter::sceneFileName(QStringLiteral("checklist-margin")));
     script.then([&s, before] {
         s.simulator()->device()->setMachine(before);

@@ -110,7 +110,7 @@ void MarginPlot::retranslate()
     m_lost->setName(tr("lost steps"));
     m_recommended->setName(tr("recommended"));
     m_axisX->setTitleText(m_accel ? tr("Acceleration (Hz/ms)") : tr("Speed (rpm)"));
-    m_axisY->setTitleText(tr("Lost (mm, − behind)"));
+    m_axisY->setTitleText(tr("Lost (mm)"));
 }
 
 void MarginPlot::changeEvent(QEvent *event)
