@@ -40,7 +40,13 @@ QString MotionOutcome::causeWord() const
     if (ok())
         return QStringLiteral("none");
     for (const AxisEnd &a : axes) {
-        if (a.limitPositiveOn || a.limitNegativeOn)
+        // A move short of its target was going toward it: only the limit on that side can
+        // have stopped it (the one behind may still read ON just after leaving its switch).
+        const bool known = a.position && a.target && *a.position != *a.target;
+        const bool towardPlus = known && *a.target > *a.position;
+        const bool towardMinus = known && *a.target < *a.position;
+        if ((a.limitPositiveOn && (!known || towardPlus)) ||
+            (a.limitNegativeOn && (!known || towardMinus)))
             return QStringLiteral("limit");
     }
     return QStringLiteral("unknown");

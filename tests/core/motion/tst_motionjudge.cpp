@@ -166,6 +166,38 @@ private Q_SLOTS:
         QCOMPARE(MotionJudge::text(map, o), text);
     }
 
+    // A move stopped short is put down to a limit only on the side it was going: the switch it
+    // just left may still read ON behind it (an E-STOP right after leaving the home switch).
+    void onlyTheLimitAheadStoppedAMove_data()
+    {
+        QTest::addColumn<qint64>("direction");
+        QTest::addColumn<QString>("input");
+        QTest::addColumn<QString>("causeWord");
+        QTest::newRow("toward +, the negative limit behind ON")
+            << qint64(0) << u"io.in2"_s << u"unknown"_s;
+        QTest::newRow("toward +, the positive limit ahead ON")
+            << qint64(0) << u"io.in1"_s << u"limit"_s;
+        QTest::newRow("toward −, the negative limit ahead ON")
+            << qint64(1) << u"io.in2"_s << u"limit"_s;
+        QTest::newRow("toward −, the positive limit behind ON")
+            << qint64(1) << u"io.in1"_s << u"unknown"_s;
+    }
+    void onlyTheLimitAheadStoppedAMove()
+    {
+        QFETCH(qint64, direction);
+        QFETCH(QString, input);
+        QFETCH(QString, causeWord);
+        const StatusValues before = with(idleMachine(), {{u"motor1.direction"_s, direction}});
+        const auto start = MotionJudge::plan(map, u"motor1.move"_s, before);
+        QVERIFY(start);
+        const qint64 end = direction ? -300 : 300; // short of ±10.00 mm
+        const MotionOutcome o =
+            MotionJudge::judge(map, *start, with(before, {{u"motor1.position"_s, end}, {input, 1}}),
+                               MotionCause::None);
+        QCOMPARE(o.verdictWord(), u"stopped"_s);
+        QCOMPARE(o.causeWord(), causeWord);
+    }
+
     // What inputKeys() names is all a front-end needs to read: plan, warning and verdict from
     // those registers alone are the ones from everything.
     void theInputKeysAreEnoughToJudge_data()
