@@ -30,11 +30,7 @@ bool AxisProof::start(const Options &options)
     m_waiting = false;
     m_ending = false;
     m_lastFound.reset();
-    if (m_drive) { // a test before: its callbacks may still be on the stack
-        m_drive->disconnect(this);
-        m_drive->deleteLater();
-    }
-    m_drive = new ProofDrive(m_session, options.motor, this);
+    ProofDrive::renew(m_drive, m_session, options.motor, this);
     m_reference = new SwitchReference(m_drive, m_drive);
     if (const QString why = m_drive->refusal(); !why.isEmpty()) {
         m_result.restored = true;

@@ -72,11 +72,7 @@ bool MarginFinder::start(const Options &options)
     m_running = true;
     m_waiting = false;
     m_stopped = false;
-    if (m_drive) {
-        m_drive->disconnect(this);
-        m_drive->deleteLater();
-    }
-    m_drive = new ProofDrive(m_session, options.motor, this);
+    ProofDrive::renew(m_drive, m_session, options.motor, this);
     if (const QString why = m_drive->refusal(); !why.isEmpty()) {
         end(ProofOutcome::Refused, why);
         return true;

@@ -77,6 +77,16 @@ ProofDrive::ProofDrive(DeviceSession *session, int motor, QObject *parent)
     });
 }
 
+ProofDrive *ProofDrive::renew(ProofDrive *&slot, DeviceSession *session, int motor, QObject *owner)
+{
+    if (slot) {
+        slot->disconnect(owner);
+        slot->deleteLater();
+    }
+    slot = new ProofDrive(session, motor, owner);
+    return slot;
+}
+
 const Parameter *ProofDrive::parameter(const char *local) const
 {
     return m_session->map().blockParameter(kMotorBlock, m_motor, QLatin1String(local));

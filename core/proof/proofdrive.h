@@ -51,6 +51,9 @@ public:
     static constexpr int kLinkWaitMs = 30000;
 
     ProofDrive(DeviceSession *session, int motor, QObject *parent = nullptr);
+    // A new drive for `owner`'s next test in `slot`: the one before is let go (its callbacks
+    // may still be on the stack, so it is deleted later) and no longer talks to `owner`.
+    static ProofDrive *renew(ProofDrive *&slot, DeviceSession *session, int motor, QObject *owner);
 
     // What keeps this motor from being proven at all (no such motor, not connected); empty if
     // nothing.

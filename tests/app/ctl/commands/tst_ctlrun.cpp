@@ -76,27 +76,7 @@ class TestCtlRun : public QObject
     ProgramRun ctlWhile(const QStringList &args,
                         const std::function<void(const QString &err, QProcess &p)> &act)
     {
-        QProcess p;
-        p.start(programPath(QStringLiteral("stepcomctl")), link() + args);
-        ProgramRun r;
-        if (!p.waitForStarted(5000))
-            return r;
-        QString err;
-        for (int i = 0; i < 2000 && p.state() != QProcess::NotRunning; ++i) {
-            QTest::qWait(10);
-            err += QString::fromUtf8(p.readAllStandardError());
-            act(err, p);
-        }
-        if (p.state() != QProcess::NotRunning) {
-            p.kill();
-            p.waitForFinished(1000);
-            r.err = err;
-            return r;
-        }
-        r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-        r.out = QString::fromUtf8(p.readAllStandardOutput());
-        r.err = err + QString::fromUtf8(p.readAllStandardError());
-        return r;
+        return runProgramWhile(QStringLiteral("stepcomctl"), link() + args, act);
     }
     // What stepcomctl said, without the traffic of --verbose.
     static QByteArray said(const ProgramRun &r)
