@@ -15,7 +15,7 @@ using namespace stepcom::test;
 
 // SequenceRunner in the core, against the simulator over TCP: pause after each step, single
 // steps and resume; a stop that switches the outputs off when on_stop says all_off, and one
-// that leaves them.
+// that leaves them; a restart of the controller mid-run.
 class TestSequenceRunner : public QObject
 {
     Q_OBJECT
@@ -111,6 +111,25 @@ private Q_SLOTS:
         const auto r = finished.first().first().value<SequenceResult>();
         QCOMPARE(r.word(), QStringLiteral("interrupted"));
         QCOMPARE(output(1), after);
+    }
+
+    // The controller loses power mid-run for 1.5 s (its counts are 0 here, so the silence is
+    // what shows it): a run never goes on after a restart.
+    void aRestartEndsTheRun()
+    {
+        const Sequence s = parse(R"({"format": "stepcom-sequence", "version": 1,
+            "steps": [{"dwell_ms": 60000}, {"output": 1, "on": true}]})");
+        SequenceRunner runner(session.get());
+        QSignalSpy started(&runner, &SequenceRunner::stepStarted);
+        QSignalSpy finished(&runner, &SequenceRunner::finished);
+        QVERIFY(runner.start(s, 1));
+        QTRY_COMPARE_WITH_TIMEOUT(started.size(), 1, 10000);
+        QVERIFY(host->powerCycle(1500));
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+        const auto r = finished.first().first().value<SequenceResult>();
+        QCOMPARE(r.word(), QStringLiteral("restarted"));
+        QCOMPARE(r.step, QStringLiteral("steps[0]"));
+        QCOMPARE(output(1), 0); // the step after it never ran
     }
 };
 
