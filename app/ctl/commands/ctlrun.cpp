@@ -240,10 +240,13 @@ void startRun(CtlContext &ctx, const Sequence &sequence)
                      CtlRunner::tr("cycle %1 done in %2 s").arg(cycle).arg(seconds, 0, 'f', 3));
             });
         QObject::connect(runner, &SequenceRunner::finished, ctx.runner(),
-                         [&ctx, moved = movedMotors(sequence), checking](const SequenceResult &r) {
-                             if (ctx.options.checkSteps && r.ok())
+                         [&ctx, moved = movedMotors(sequence), limits = sequence.limits,
+                          checking](const SequenceResult &r) {
+                             if (ctx.options.checkSteps && r.ok()) {
+                                 // The file's limits hold for the tests' moves too.
+                                 ctx.session->setTravelLimits(limits);
                                  checkSteps(ctx, r, moved, checking);
-                             else
+                             } else
                                  report(ctx, r);
                          });
         // Ctrl-C and SIGTERM stop the motors (and the outputs, as on_stop says) before it ends.

@@ -264,6 +264,30 @@ private Q_SLOTS:
         QCOMPARE(held("motor1.speed"), 300);
     }
 
+    void runCheckKeepsToTheFilesLimits()
+    {
+        boot(proofAxis());
+        QFile f(dir.filePath(QStringLiteral("narrow.stepseq")));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"format": "stepcom-sequence", "version": 1,
+                  "limits": {"motor1": {"min": -5, "max": 5}},
+                  "steps": [{"move_by": {"motor1": 2}}, {"move_by": {"motor1": -1}}]})");
+        f.close();
+        const ProgramRun r =
+            ctl({QStringLiteral("run"), f.fileName(), QStringLiteral("--check-steps"),
+                 QStringLiteral("--yes"), QStringLiteral("--json")});
+        QCOMPARE(r.exitCode, 1);
+        const QJsonObject o = result(r);
+        QCOMPARE(o.value(QStringLiteral("outcome")).toString(), QStringLiteral("done"));
+        QCOMPARE(o.value(QStringLiteral("check_steps_verdict")).toString(),
+                 QStringLiteral("unknown"));
+        const QJsonObject check =
+            o.value(QStringLiteral("check_steps")).toArray().first().toObject();
+        QCOMPARE(check.value(QStringLiteral("outcome")).toString(), QStringLiteral("refused"));
+        QVERIFY2(check.value(QStringLiteral("message")).toString().contains(QLatin1String("5.00")),
+                 qPrintable(r.out));
+    }
+
     void ctrlCStopsAndRestores()
     {
         boot(proofAxis());
