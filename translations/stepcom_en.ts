@@ -1590,6 +1590,10 @@
         <source>Test progress</source>
         <translation>Test progress</translation>
     </message>
+    <message>
+        <source>The margin search: lost mm at each value tested</source>
+        <translation>The margin search: lost mm at each value tested</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ChecklistStep</name>

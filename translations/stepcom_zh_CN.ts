@@ -1580,6 +1580,10 @@
         <source>Test progress</source>
         <translation>测试进度</translation>
     </message>
+    <message>
+        <source>The margin search: lost mm at each value tested</source>
+        <translation>余量搜索：每个测试值下丢失的 mm</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::ChecklistStep</name>

@@ -298,6 +298,7 @@ void ChecklistProofStep::retranslate()
     m_margin->setText(tr("Find the &margin"));
     m_stop->setText(tr("&Stop"));
     m_log->setAccessibleName(tr("Test progress"));
+    m_plot->setAccessibleName(tr("The margin search: lost mm at each value tested"));
     if (m_recommended && m_write->isVisible())
         m_write->setText(m_recommendedAccel
                              ? tr("Write the recommended acceleration %1…").arg(*m_recommended)
