@@ -3,10 +3,33 @@
 #include "commissioning/checklistfile.h"
 #include "profile/profile.h"
 #include "profile/profilefile.h"
+#include "session/devicesession.h"
+#include "session/parts/sessionconnection.h"
+#include "session/parts/sessionline.h"
+#include "session/parts/sessionparameters.h"
 
 #include <QFileInfo>
 
 namespace stepcom {
+
+ReportInput ReportInput::fromSession(const DeviceSession &session, int id,
+                                     const QHash<QString, qint64> &values, const QDateTime &read)
+{
+    ReportInput in;
+    in.map = session.map();
+    in.values = values;
+    in.link = session.line()->describeDevice(id);
+    in.simulator = session.connection()->isSimulator();
+    in.line = session.connection()->linkStats().lineText(id);
+    in.deviceId = id;
+    in.date = QDateTime::currentDateTime();
+    in.lastRead = read;
+    if (session.isLive() && id == session.line()->deviceInView()) { // what the window follows
+        in.travelLimits = session.travelLimits();
+        in.savedToFlash = !session.parameters()->store()->unsavedToFlash();
+    }
+    return in;
+}
 
 ReportInput ReportInput::fromProfile(const RegisterMap &map, const Profile &profile,
                                      const QString &path, const QString &locale)

@@ -13,6 +13,7 @@
 
 namespace stepcom {
 
+class DeviceSession;
 struct Profile;
 
 // Everything the commissioning sheet shows: raw values as read from a controller, or as a
@@ -65,6 +66,12 @@ public:
     // checklist kept beside it (ChecklistFile::pathFor) when there is one.
     static ReportInput fromProfile(const RegisterMap &map, const Profile &profile,
                                    const QString &path, const QString &locale);
+    // Controller `id` of the session's line, with `values` read from it at `read`: the link and
+    // what the line showed, and -- for the device in view of a live session (the window) --
+    // the flash state and StepCom's travel limits; a one-shot session (stepcomctl) does not
+    // watch the flash state, so it stays unknown. Dated now.
+    static ReportInput fromSession(const DeviceSession &session, int id,
+                                   const QHash<QString, qint64> &values, const QDateTime &read);
     // The same read from the file at `path` (profiles of other maps too); nullopt and why
     // not when it is no profile StepCom can read.
     static std::optional<ReportInput> fromProfileFile(const RegisterMap &map, const QString &path,

@@ -243,20 +243,8 @@ void MachineActions::reportFile(const QString &path, const QString &title, const
 ReportInput MachineActions::sheet(int id, const QHash<QString, qint64> &values, const QString &name,
                                   const QDateTime &read) const
 {
-    ReportInput input;
-    input.map = m_session->map();
-    input.values = values;
-    input.link = m_session->line()->describeDevice(id);
-    input.simulator = m_session->connection()->isSimulator();
-    input.line = m_session->connection()->linkStats().lineText(id);
-    input.deviceId = id;
+    ReportInput input = ReportInput::fromSession(*m_session, id, values, read);
     input.title = name;
-    input.date = QDateTime::currentDateTime();
-    input.lastRead = read;
-    if (id == m_session->line()->deviceInView()) { // what the window follows
-        input.travelLimits = m_session->travelLimits();
-        input.savedToFlash = !m_session->parameters()->store()->unsavedToFlash();
-    }
     return input;
 }
 

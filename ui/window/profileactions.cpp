@@ -423,21 +423,13 @@ void ProfileActions::reportFile(const QString &path, const QString &notes)
                                  r.errors);
             return;
         }
-        ReportInput input;
-        input.map = self->m_session->map();
-        input.values = r.values;
+        // Read just now, for this report.
+        ReportInput input =
+            ReportInput::fromSession(*self->m_session, self->m_session->line()->deviceInView(),
+                                     r.values, QDateTime::currentDateTime());
         input.unsupported = r.unsupported;
-        input.link = self->m_session->connection()->settings().describe();
-        input.simulator = self->m_session->connection()->isSimulator();
-        input.line = self->m_session->connection()->linkStats().lineText(
-            self->m_session->line()->deviceInView());
-        input.deviceId = self->m_session->connection()->settings().deviceId;
         input.notes = notes;
-        input.date = QDateTime::currentDateTime();
-        input.lastRead = input.date; // read just now, for this report
-        input.savedToFlash = !self->m_session->parameters()->store()->unsavedToFlash();
         input.locale = Language::instance().current();
-        input.travelLimits = self->m_session->travelLimits();
         if (self->m_checklist) {
             if (const auto c = self->m_checklist()) {
                 input.checklist = c->first;

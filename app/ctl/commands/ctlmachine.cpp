@@ -82,16 +82,8 @@ void readMachine(CtlContext &ctx, const QString &failure,
             QList<ReportInput> inputs;
             const QDateTime now = QDateTime::currentDateTime();
             for (int id : ctx.options.ids) {
-                ReportInput input;
-                input.map = ctx.map;
-                input.values = sweep->outcome(id).values;
-                input.link = ctx.session->line()->describeDevice(id);
-                input.simulator = ctx.session->connection()->isSimulator();
-                input.line = ctx.session->connection()->linkStats().lineText(id);
-                input.deviceId = id;
-                input.date = now;
-                input.lastRead = now; // one-shot: the flash state is not known
-                inputs << input;
+                inputs << ReportInput::fromSession(*ctx.session, id, sweep->outcome(id).values,
+                                                   now);
             }
             done(inputs);
         });

@@ -374,19 +374,13 @@ void runReport(CtlContext &ctx)
                 return;
             }
             noteUnsupported(ctx, r);
-            ReportInput input;
-            input.map = ctx.map;
-            input.values = r.values;
+            // A one-shot session: the flash state is not known.
+            ReportInput input =
+                ReportInput::fromSession(*ctx.session, ctx.session->line()->deviceInView(),
+                                         r.values, QDateTime::currentDateTime());
             input.unsupported = r.unsupported;
-            input.link = ctx.session->connection()->settings().describe();
-            input.simulator = ctx.session->connection()->isSimulator();
-            input.line = ctx.session->connection()->linkStats().lineText(
-                ctx.session->line()->deviceInView());
-            input.deviceId = ctx.session->connection()->settings().deviceId;
             input.title = ctx.options.name;
             input.notes = ctx.options.notes;
-            input.date = QDateTime::currentDateTime();
-            input.lastRead = input.date; // a one-shot session: the flash state is not known
             input.locale = ctx.options.language;
             if (const QString e = CommissioningReport(input).write(path); !e.isEmpty()) {
                 ctx.fail(CtlRunner::UsageError, e);
