@@ -1,5 +1,6 @@
 #include "window/offlineactions.h"
 
+#include "base/errorbox.h"
 #include "base/language.h"
 #include "dialogs/profilecomparedialog.h"
 #include "dialogs/profilefilesdialog.h"
@@ -115,16 +116,7 @@ void OfflineActions::updateActions()
 
 void OfflineActions::showErrors(const QString &title, const QStringList &errors)
 {
-    if (m_errorBox)
-        m_errorBox->close();
-    m_errorBox =
-        new QMessageBox(QMessageBox::Warning, title,
-                        errors.value(0) + (errors.size() > 1 ? QStringLiteral("\n…") : QString()),
-                        QMessageBox::Close, m_window);
-    m_errorBox->setObjectName(QStringLiteral("offlineErrorBox"));
-    m_errorBox->setDetailedText(errors.join(QLatin1Char('\n')));
-    m_errorBox->setAttribute(Qt::WA_DeleteOnClose);
-    m_errorBox->open();
+    showErrorBox(m_errorBox, m_window, QStringLiteral("offlineErrorBox"), title, errors);
     for (const QString &e : errors)
         Q_EMIT finished(false, e);
 }

@@ -1,5 +1,6 @@
 #include "window/profileactions.h"
 
+#include "base/errorbox.h"
 #include "base/language.h"
 #include "dialogs/backupsdialog.h"
 #include "dialogs/profilecomparedialog.h"
@@ -186,17 +187,8 @@ void ProfileActions::rebuildRecent()
 
 void ProfileActions::showErrors(const QString &title, const QStringList &errors)
 {
-    if (m_errorBox)
-        m_errorBox->close();
-    m_errorBox =
-        new QMessageBox(QMessageBox::Warning, title,
-                        errors.value(0) + (errors.size() > 1 ? QStringLiteral("\n…") : QString()),
-                        QMessageBox::Close, m_window);
-    m_errorBox->setObjectName(QStringLiteral("profileErrorBox"));
-    m_errorBox->setDetailedText(errors.join(QLatin1Char('\n')));
-    m_errorBox->setInformativeText(tr("Nothing was written to the controller."));
-    m_errorBox->setAttribute(Qt::WA_DeleteOnClose);
-    m_errorBox->open();
+    showErrorBox(m_errorBox, m_window, QStringLiteral("profileErrorBox"), title, errors,
+                 tr("Nothing was written to the controller."));
     for (const QString &e : errors)
         Q_EMIT finished(false, e);
 }
