@@ -292,10 +292,6 @@
         <translation>Motor %1: reading its values</translation>
     </message>
     <message>
-        <source>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</source>
-        <translation>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</translation>
-    </message>
-    <message>
         <source>cycles must be 1 to 1000, not %1</source>
         <translation>cycles must be 1 to 1000, not %1</translation>
     </message>
@@ -6231,10 +6227,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>%1 values to test: take a larger step (at most 100)</translation>
     </message>
     <message>
-        <source>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</source>
-        <translation>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</translation>
-    </message>
-    <message>
         <source>Motor %1: testing %2 %3 (%4 of %5)</source>
         <translation>Motor %1: testing %2 %3 (%4 of %5)</translation>
     </message>
@@ -9005,6 +8997,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>The controller restarted: the test ended</source>
         <translation>The controller restarted: the test ended</translation>
+    </message>
+    <message>
+        <source>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</source>
+        <translation>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</translation>
     </message>
 </context>
 <context>

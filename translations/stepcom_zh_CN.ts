@@ -290,10 +290,6 @@
         <translation>电机 %1：正在读取其参数</translation>
     </message>
     <message>
-        <source>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</source>
-        <translation>电机 %1 未设定原点输入（%2 为 0）：测试要以原点开关为参考，因此没有运动</translation>
-    </message>
-    <message>
         <source>cycles must be 1 to 1000, not %1</source>
         <translation>循环次数必须在 1 到 1000 之间，不能是 %1</translation>
     </message>
@@ -6198,10 +6194,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>要测试 %1 个值：请取更大的步长（最多 100 个值）</translation>
     </message>
     <message>
-        <source>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</source>
-        <translation>电机 %1 未设定原点输入（%2 为 0）：测试要以原点开关为参考，因此没有运动</translation>
-    </message>
-    <message>
         <source>Motor %1: testing %2 %3 (%4 of %5)</source>
         <translation>电机 %1：正在测试 %2 %3（第 %4 个，共 %5 个）</translation>
     </message>
@@ -8950,6 +8942,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>The controller restarted: the test ended</source>
         <translation>控制器已重新启动：测试已结束</translation>
+    </message>
+    <message>
+        <source>Motor %1 has no home input set (%2 is 0): the test references on the home switch, so nothing was moved</source>
+        <translation>电机 %1 未设定原点输入（%2 为 0）：测试要以原点开关为参考，因此没有运动</translation>
     </message>
 </context>
 <context>

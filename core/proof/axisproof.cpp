@@ -75,11 +75,8 @@ QString AxisProof::check()
     const ProofSetup &s = m_drive->setup();
     const int motor = m_options.motor;
     const Parameter *position = m_drive->parameter("position");
-    if (s.homeInput == 0)
-        return tr("Motor %1 has no home input set (%2 is 0): the test references on the home "
-                  "switch, so nothing was moved")
-            .arg(motor)
-            .arg(m_drive->parameter("home_input")->key);
+    if (const QString why = m_drive->homeInputRefusal(); !why.isEmpty())
+        return why;
     if (m_options.cycles < 1 || m_options.cycles > 1000)
         return tr("cycles must be 1 to 1000, not %1").arg(m_options.cycles);
     const Parameter *distance = m_drive->parameter("move_distance");

@@ -12,15 +12,6 @@
 
 namespace stepcom {
 
-namespace {
-
-double round3(double v)
-{
-    return std::round(v * 1000) / 1000 + 0.0;
-}
-
-} // namespace
-
 QList<double> BacklashResult::losses() const
 {
     QList<double> list;
@@ -34,15 +25,12 @@ QJsonObject BacklashResult::toJson() const
     QJsonArray shown;
     for (double r : readings)
         shown.append(r);
-    const auto value = [](const std::optional<double> &v) {
-        return v ? QJsonValue(round3(*v)) : QJsonValue(QJsonValue::Null);
-    };
     return {{QStringLiteral("motor"), motor},
             {QStringLiteral("distance_mm"), distance},
             {QStringLiteral("cycles"), cycles},
-            {QStringLiteral("backlash_mm"), value(backlash)},
+            {QStringLiteral("backlash_mm"), proofJsonValue(backlash)},
             {QStringLiteral("readings"), shown},
-            {QStringLiteral("spread_mm"), value(spread)},
+            {QStringLiteral("spread_mm"), proofJsonValue(spread)},
             {QStringLiteral("resolution_mm"), resolution},
             {QStringLiteral("approach_from_one_side"), approachFromOneSide()},
             {QStringLiteral("outcome"), proofOutcomeWord(outcome)},

@@ -21,11 +21,9 @@ QJsonObject MarginResult::toJson() const
     for (const MarginStep &s : steps) {
         LostStepResult words;
         words.verdict = s.verdict;
-        list.append(QJsonObject{
-            {unit, s.value},
-            {QStringLiteral("lost_mm"),
-             s.lost ? QJsonValue(std::round(*s.lost * 1000) / 1000 + 0.0) : QJsonValue()},
-            {QStringLiteral("verdict"), words.verdictWord()}});
+        list.append(QJsonObject{{unit, s.value},
+                                {QStringLiteral("lost_mm"), proofJsonValue(s.lost)},
+                                {QStringLiteral("verdict"), words.verdictWord()}});
     }
     QJsonObject o{{QStringLiteral("motor"), motor},
                   {QStringLiteral("kept_") + unit, value(kept)},
@@ -146,12 +144,7 @@ QString MarginFinder::check()
     m_values = values(from, to, step);
     if (m_values.size() > 100)
         return tr("%1 values to test: take a larger step (at most 100)").arg(m_values.size());
-    if (s.homeInput == 0)
-        return tr("Motor %1 has no home input set (%2 is 0): the test references on the home "
-                  "switch, so nothing was moved")
-            .arg(m_options.motor)
-            .arg(m_drive->parameter("home_input")->key);
-    return {};
+    return m_drive->homeInputRefusal();
 }
 
 void MarginFinder::proceed()

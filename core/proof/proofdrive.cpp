@@ -109,6 +109,16 @@ QString ProofDrive::refusal() const
     return {};
 }
 
+QString ProofDrive::homeInputRefusal() const
+{
+    if (m_setup.homeInput != 0)
+        return {};
+    return tr("Motor %1 has no home input set (%2 is 0): the test references on the home "
+              "switch, so nothing was moved")
+        .arg(m_motor)
+        .arg(parameter("home_input")->key);
+}
+
 void ProofDrive::readSetup(std::function<void(const QString &)> done)
 {
     QList<const Parameter *> params;

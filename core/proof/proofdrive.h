@@ -58,6 +58,9 @@ public:
     // What keeps this motor from being proven at all (no such motor, not connected); empty if
     // nothing.
     QString refusal() const;
+    // After readSetup(): why a test that references on the home switch cannot run (no home
+    // input set); empty when it can.
+    QString homeInputRefusal() const;
     // Reads the motor's values into setup(); `done(error)` with an empty error on success.
     void readSetup(std::function<void(const QString &error)> done);
     const ProofSetup &setup() const { return m_setup; }

@@ -6,17 +6,13 @@
 
 namespace stepcom {
 
-namespace {
-
-QJsonValue rounded(std::optional<double> v, int decimals = 3)
+QJsonValue proofJsonValue(std::optional<double> v, int decimals)
 {
     if (!v)
         return QJsonValue::Null;
     const double f = std::pow(10.0, decimals);
     return std::round(*v * f) / f + 0.0; // + 0.0: no "-0" in the JSON
 }
-
-} // namespace
 
 QString proofOutcomeWord(ProofOutcome outcome)
 {
@@ -92,15 +88,16 @@ QJsonObject LostStepResult::toJson() const
     const bool measured = lostOut || lostBack;
     return {{QStringLiteral("motor"), motor},
             {QStringLiteral("cycles"), cycles},
-            {QStringLiteral("distance_mm"), rounded(distance, 2)},
+            {QStringLiteral("distance_mm"), proofJsonValue(distance, 2)},
             {QStringLiteral("speed_rpm"), speedRpm},
             {QStringLiteral("accel"), accel},
-            {QStringLiteral("lost_mm"), measured ? rounded(lost()) : QJsonValue::Null},
-            {QStringLiteral("lost_out_mm"), rounded(lostOut)},
-            {QStringLiteral("lost_back_mm"), rounded(lostBack)},
-            {QStringLiteral("lost_steps"), measured ? rounded(lostSteps(), 1) : QJsonValue::Null},
-            {QStringLiteral("resolution_mm"), rounded(resolution, 4)},
-            {QStringLiteral("repeatability_mm"), rounded(repeatability, 4)},
+            {QStringLiteral("lost_mm"), measured ? proofJsonValue(lost()) : QJsonValue::Null},
+            {QStringLiteral("lost_out_mm"), proofJsonValue(lostOut)},
+            {QStringLiteral("lost_back_mm"), proofJsonValue(lostBack)},
+            {QStringLiteral("lost_steps"),
+             measured ? proofJsonValue(lostSteps(), 1) : QJsonValue::Null},
+            {QStringLiteral("resolution_mm"), proofJsonValue(resolution, 4)},
+            {QStringLiteral("repeatability_mm"), proofJsonValue(repeatability, 4)},
             {QStringLiteral("verdict"), verdictWord()},
             {QStringLiteral("outcome"), proofOutcomeWord(outcome)},
             {QStringLiteral("simulator"), simulator},

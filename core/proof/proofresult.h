@@ -20,6 +20,8 @@ enum class ProofOutcome {
 };
 // done, refused, stopped, estop, link_lost, restarted, device_error
 QString proofOutcomeWord(ProofOutcome outcome);
+// A figure of a proof's JSON: rounded to `decimals`, null when not measured, never "-0".
+QJsonValue proofJsonValue(std::optional<double> value, int decimals = 3);
 // Two sentences of a proof's message, one after the other as the language writes them; either
 // may be empty.
 QString proofSentences(const QString &first, const QString &second);
