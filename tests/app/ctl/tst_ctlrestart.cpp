@@ -53,22 +53,24 @@ class TestCtlRestart : public QObject
         QList<QJsonObject> events;
         int samples = 0;
         bool cut = false;
-        QDeadlineTimer limit(60000);
-        while (p.state() != QProcess::NotRunning && events.isEmpty() && !limit.hasExpired()) {
-            QTest::qWait(20);
-            out += p.readAllStandardOutput();
-            qsizetype end = 0;
-            while ((end = out.indexOf('\n')) >= 0) {
-                const QJsonObject o = QJsonDocument::fromJson(out.left(end)).object();
-                out.remove(0, end + 1);
-                if (o.contains(QStringLiteral("event")))
-                    events << o;
-                else if (!o.contains(QStringLiteral("exit"))) // not the envelope at the end
-                    ++samples;
-            }
-            if (samples >= 3 && !cut)
-                cut = host.powerCycle(1500);
-        }
+        // Whatever ends it, what follows looks at the events it printed.
+        (void)QTest::qWaitFor(
+            [&] {
+                out += p.readAllStandardOutput();
+                qsizetype end = 0;
+                while ((end = out.indexOf('\n')) >= 0) {
+                    const QJsonObject o = QJsonDocument::fromJson(out.left(end)).object();
+                    out.remove(0, end + 1);
+                    if (o.contains(QStringLiteral("event")))
+                        events << o;
+                    else if (!o.contains(QStringLiteral("exit"))) // not the envelope at the end
+                        ++samples;
+                }
+                if (samples >= 3 && !cut)
+                    cut = host.powerCycle(1500);
+                return p.state() == QProcess::NotRunning || !events.isEmpty();
+            },
+            60000);
         p.terminate();
         p.waitForFinished(10000);
         *err = QString::fromUtf8(p.readAllStandardError());
@@ -171,10 +173,8 @@ private Q_SLOTS:
         SimDevice *one = host.devices().at(0);
         SimDevice *two = host.devices().at(1);
         two->command(QStringLiteral("motor1.move"));
-        QDeadlineTimer moving(10000);
-        while (two->running(1) && !moving.hasExpired())
-            QTest::qWait(20);
-        if (two->position(1) == 0 || one->position(1) != 0)
+        if (!QTest::qWaitFor([two] { return !two->running(1); }, 10000) || two->position(1) == 0 ||
+            one->position(1) != 0)
             return {};
         one->command(QStringLiteral("motor2.forward"));
         QProcess p;
@@ -196,15 +196,17 @@ private Q_SLOTS:
             return err.contains(QLatin1String("controller 2")) &&
                    err.contains(QLatin1String("controller 1"));
         };
-        QDeadlineTimer limit(60000);
-        while (p.state() != QProcess::NotRunning && !said() && !limit.hasExpired()) {
-            QTest::qWait(20);
-            out += p.readAllStandardOutput();
-            err += QString::fromUtf8(p.readAllStandardError());
-            samples = int(out.count('\n'));
-            if (samples >= 6 && !cut)
-                cut = host.powerCycle(1500);
-        }
+        // Whatever ends it, the callers look at what it printed.
+        (void)QTest::qWaitFor(
+            [&] {
+                out += p.readAllStandardOutput();
+                err += QString::fromUtf8(p.readAllStandardError());
+                samples = int(out.count('\n'));
+                if (samples >= 6 && !cut)
+                    cut = host.powerCycle(1500);
+                return p.state() == QProcess::NotRunning || said();
+            },
+            60000);
         p.terminate();
         p.waitForFinished(10000);
         out += p.readAllStandardOutput();

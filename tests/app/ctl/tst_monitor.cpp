@@ -45,15 +45,17 @@ class TestMonitor : public QObject
         MonitorRun r;
         QByteArray out;
         bool terminated = false;
-        for (int i = 0; i < 1500 && p.state() != QProcess::NotRunning; ++i) {
-            QTest::qWait(10);
-            out += p.readAllStandardOutput();
-            if (terminateAfter > 0 && !terminated && out.count('\n') >= terminateAfter) {
-                p.terminate();
-                terminated = true;
-            }
-        }
-        if (p.state() != QProcess::NotRunning) {
+        const bool ended = QTest::qWaitFor(
+            [&] {
+                out += p.readAllStandardOutput();
+                if (terminateAfter > 0 && !terminated && out.count('\n') >= terminateAfter) {
+                    p.terminate();
+                    terminated = true;
+                }
+                return p.state() == QProcess::NotRunning;
+            },
+            20000);
+        if (!ended) {
             p.kill();
             p.waitForFinished(1000);
             return r;

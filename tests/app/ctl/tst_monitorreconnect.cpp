@@ -4,7 +4,6 @@
 #include "sim/host/simhost.h"
 #include "testpaths.h"
 
-#include <QDeadlineTimer>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -56,15 +55,12 @@ struct Lines
     }
     bool waitFor(const std::function<bool()> &condition, int ms)
     {
-        const QDeadlineTimer deadline(ms);
-        while (!deadline.hasExpired()) {
-            take();
-            if (condition())
-                return true;
-            QTest::qWait(20);
-        }
-        take();
-        return condition();
+        return QTest::qWaitFor(
+            [&] {
+                take();
+                return condition();
+            },
+            ms);
     }
 };
 

@@ -34,11 +34,20 @@ private:
         p->start();
         if (!p->waitForStarted(5000))
             return nullptr;
+        // The banner names what the arguments asked for, a line each, the tcp port last.
+        const QByteArray last = args.contains(QStringLiteral("--tcp"))    ? "tcp: "
+                                : args.contains(QStringLiteral("--link")) ? "link: "
+                                                                          : "pty: ";
         QByteArray out;
-        while (!out.contains("pty:") && !out.contains("tcp:") && p->waitForReadyRead(5000))
-            out += p->readAllStandardOutput();
-        QTest::qWait(50); // the tcp line may follow the pty line
-        out += p->readAllStandardOutput();
+        const bool told = QTest::qWaitFor(
+            [&] {
+                out += p->readAllStandardOutput();
+                const qsizetype at = out.indexOf(last);
+                return at >= 0 && out.indexOf('\n', at) > at;
+            },
+            10000);
+        if (!told)
+            return nullptr;
         if (banner)
             *banner = QString::fromUtf8(out);
         return p;
@@ -184,13 +193,13 @@ private Q_SLOTS:
         out = mbpoll(rtu(link, split("-a 1 -t 0 -r 1"),
                          {QStringLiteral("1")})); // coil 00001: motor 1 single move
         QVERIFY2(out.contains(QStringLiteral("Written 1 references")), qPrintable(out));
-        for (int i = 0; i < 30; ++i) {
-            out = mbpoll(rtu(link, split("-a 1 -t 4:int -r 108 -c 1")));
-            if (out.contains(QStringLiteral("[108]: \t-1000")))
-                break;
-            QTest::qWait(100);
-        }
-        QVERIFY2(out.contains(QStringLiteral("[108]: \t-1000")), qPrintable(out));
+        const bool arrived = QTest::qWaitFor(
+            [&] {
+                out = mbpoll(rtu(link, split("-a 1 -t 4:int -r 108 -c 1")));
+                return out.contains(QStringLiteral("[108]: \t-1000"));
+            },
+            20000);
+        QVERIFY2(arrived, qPrintable(out));
         endSim(sim.get());
         QVERIFY(!QFileInfo::exists(link)); // removed on a clean exit
     }

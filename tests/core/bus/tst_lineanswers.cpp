@@ -6,7 +6,6 @@
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 
-#include <QDeadlineTimer>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -70,10 +69,7 @@ class TestLineAnswers : public QObject
             o.result = r;
         });
         // Every request ends (timeouts and retries included) well within this.
-        QDeadlineTimer limit(30000);
-        while (!o.done && !limit.hasExpired())
-            QTest::qWait(5);
-        if (!o.done)
+        if (!QTest::qWaitFor([&o] { return o.done; }, 30000))
             o.result.errorText = QStringLiteral("the request never ended");
         return o.result;
     }
