@@ -128,7 +128,7 @@ private Q_SLOTS:
         const Run r = ctl(args);
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(message), qPrintable(r.err));
-        QTest::qWait(50);
+        QVERIFY(device->takeEverythingSent());
         QCOMPARE(device->requests().size(), 0); // nothing was sent at all
         QCOMPARE(device->registers, before);
     }

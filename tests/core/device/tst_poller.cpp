@@ -145,7 +145,7 @@ private Q_SLOTS:
         link.open(s);
         QTRY_VERIFY(link.isConnected());
         poller.start();
-        QTest::qWait(150);
+        QVERIFY(QTest::qWaitFor([&watch] { return !watch.onWire.isEmpty(); }, 5000));
         poller.stop(); // with a request out: the restart must wait for it
         poller.start();
         QTRY_VERIFY_WITH_TIMEOUT(cycles.size() >= 2, 5000);
@@ -183,8 +183,9 @@ private Q_SLOTS:
         if (QTest::currentTestFailed())
             return;
         Poller *poller = SessionInternals::poller(*session);
+        QSignalSpy underWay(poller, &Poller::cycleFinished);
         poller->setIntervalMs(300);
-        QTest::qWait(300); // let the cycle under way finish
+        QVERIFY(underWay.wait(10000)); // the cycle under way ends: the next one waits
         // Cycles start no closer than the interval (a busy machine only spreads them further;
         // a coarse timer may fire 5 % early).
         QElapsedTimer clock;
@@ -281,7 +282,10 @@ private Q_SLOTS:
         for (int round = 0; round < 4; ++round) {
             QVERIFY(sim()->command(QStringLiteral("motor1.forward")));
             QTRY_VERIFY(sim()->running(1));
-            QTest::qWait(60 + 37 * round); // land at different points of a cycle
+            // Land at different points of a cycle: after one more poll request each round.
+            const qsizetype running = watch.dispatched.size();
+            QVERIFY(QTest::qWaitFor([&] { return watch.dispatched.size() >= running + 1 + round; },
+                                    10000));
             const qsizetype before = watch.dispatched.size();
             session->emergencyStop();
             QTRY_VERIFY(watch.dispatched.size() > before);

@@ -11,6 +11,7 @@
 #include "simsession.h"
 
 #include <QDateTime>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -34,6 +35,15 @@ class TstStatusRecorder : public QObject
         if (!lines.isEmpty() && lines.last().isEmpty())
             lines.removeLast();
         return lines;
+    }
+
+    // Waits until a millisecond clock started before has moved on (2 ms on one of our own,
+    // read in whole milliseconds): a sample taken next is stamped later than the one before.
+    static bool clockMovesOn()
+    {
+        QElapsedTimer clock;
+        clock.start();
+        return QTest::qWaitFor([&clock] { return clock.elapsed() >= 2; }, 5000);
     }
 
     static void setStatus(ParameterStore &store, qint64 pos1, qint64 pos2)
@@ -152,10 +162,10 @@ private Q_SLOTS:
         QCOMPARE(readLines(path).size(), 1);
         setStatus(store, 12345, -50);
         recorder.takeSample();
-        QTest::qWait(20);
+        QVERIFY(clockMovesOn());
         store.forgetDeviceValues();
         recorder.takeSample();
-        QTest::qWait(20);
+        QVERIFY(clockMovesOn());
         setStatus(store, 0, 100000);
         recorder.takeSample();
         QCOMPARE(readLines(path).size(), 4);
@@ -195,7 +205,7 @@ private Q_SLOTS:
         for (int i = 0; i < 4; ++i) {
             setStatus(store, i, 0);
             recorder.takeSample();
-            QTest::qWait(5);
+            QVERIFY(clockMovesOn());
         }
         QString error;
         const QString path = dir.filePath("export.csv");

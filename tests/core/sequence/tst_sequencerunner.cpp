@@ -4,6 +4,7 @@
 #include "session/devicesession.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
+#include "simsession.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -66,8 +67,9 @@ private Q_SLOTS:
         QVERIFY(runner.isPaused());
         QCOMPARE(stepped.size(), 1);
         QCOMPARE(paused.last().first().toString(), QStringLiteral("steps[1]"));
-        // Paused: nothing more happens.
-        QTest::qWait(300);
+        // Paused: nothing more happens. The output step would have gone out, ahead of the
+        // status polls, by the time two of them have ended.
+        QVERIFY(waitForStatusCycles(*session));
         QCOMPARE(stepped.size(), 1);
         QCOMPARE(output(1), 0);
         runner.singleStep(); // the output goes on, then it pauses again

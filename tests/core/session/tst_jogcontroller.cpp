@@ -122,8 +122,8 @@ private Q_SLOTS:
         QVERIFY(!jog->press(1, Direction::Reverse));
         QVERIFY(messages.last().at(1).toString().contains(QLatin1String("already jogs forward")));
         QTRY_VERIFY(sim()->running(1));
-        jog->release(1, Source::Keyboard); // not the hand that holds it
-        QTest::qWait(150);
+        jog->release(1, Source::Keyboard);            // not the hand that holds it
+        QVERIFY(test::waitForStatusCycles(*session)); // a stop would have gone out by then
         QVERIFY(sim()->running(1));
         QCOMPARE(jog->state(1), State::Jogging);
         jog->release(1);

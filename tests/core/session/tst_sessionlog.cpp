@@ -5,6 +5,7 @@
 #include "session/sessionlog.h"
 #include "simsession.h"
 
+#include <QDateTime>
 #include <QFile>
 #include <QRegularExpression>
 #include <QSignalSpy>
@@ -81,7 +82,10 @@ private Q_SLOTS:
             QVERIFY(text.contains(QStringLiteral("entry %1\n").arg(i)));
 
         // Reconnecting starts another file; the first stays, whole.
-        QTest::qWait(2); // the names carry milliseconds
+        // The names carry milliseconds: the next one is in a later millisecond.
+        const qint64 named = QDateTime::currentMSecsSinceEpoch();
+        QVERIFY(
+            QTest::qWaitFor([named] { return QDateTime::currentMSecsSinceEpoch() > named; }, 5000));
         log.beginConnection(QStringLiteral("localhost:1502 id 1"));
         session.connection()->traffic()->addEvent(QStringLiteral("second connection"));
         QCOMPARE(started.count(), 2);

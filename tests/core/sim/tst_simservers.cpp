@@ -185,8 +185,7 @@ private Q_SLOTS:
         QVERIFY2(host.start(rtuOptions(), &error), qPrintable(error));
         auto c = rtuClient(host.rtuPath());
         QVERIFY(host.device()->setValue(QStringLiteral("device.id"), 7));
-        QTest::qWait(20);
-        QCOMPARE(read(c.get(), 211, 1, 7).values, QList<quint16>{7});
+        QTRY_COMPARE_WITH_TIMEOUT(read(c.get(), 211, 1, 7).values, QList<quint16>{7}, 10000);
         QCOMPARE(read(c.get(), 211, 1, 1).error, QModbusDevice::TimeoutError);
     }
 
@@ -348,9 +347,10 @@ private Q_SLOTS:
         host.hangUp(200);
         QVERIFY(hungUp.wait(1000));
         QTRY_COMPARE_WITH_TIMEOUT(int(c->state()), int(QModbusDevice::UnconnectedState), 2000);
-        QTest::qWait(400);
-        auto again = tcpClient(host.tcpPort()); // the same port after the pause
-        QCOMPARE(int(again->state()), int(QModbusDevice::ConnectedState));
+        // The same port takes connections again once the pause is over.
+        std::unique_ptr<QModbusClient> again;
+        QTRY_VERIFY_WITH_TIMEOUT(
+            (again = tcpClient(host.tcpPort()))->state() == QModbusDevice::ConnectedState, 10000);
     }
 
     void manualClockAndDeviceAccess()

@@ -168,7 +168,7 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.contains(message), qPrintable(r.err));
         QVERIFY(r.err.contains(QStringLiteral("nothing was written")));
-        QTest::qWait(50);
+        QVERIFY(device->takeEverythingSent());
         QCOMPARE(device->requests().size(), 0); // not even connected
     }
 
@@ -345,7 +345,7 @@ private Q_SLOTS:
         QCOMPARE(
             ctl({QStringLiteral("diff"), machineA(), machineA(), machineA()}, {}, false).exitCode,
             2);
-        QTest::qWait(50);
+        QVERIFY(device->takeEverythingSent());
         QCOMPARE(device->requests().size(), 0); // no controller was asked
     }
 
@@ -447,7 +447,7 @@ private Q_SLOTS:
         QVERIFY2(r.out.contains(QStringLiteral("unknown to this map: spindle.rpm = 12000")),
                  qPrintable(r.out));
         QVERIFY(r.err.contains(QStringLiteral("holds no setting of this map")));
-        QTest::qWait(50);
+        QVERIFY(device->takeEverythingSent());
         QCOMPARE(device->requests().size(), 0);
     }
 
@@ -484,7 +484,7 @@ private Q_SLOTS:
                      bad.err.contains(QStringLiteral("no report")),
                  qPrintable(bad.err));
         QVERIFY(!QFile::exists(file("bad.pdf")));
-        QTest::qWait(50);
+        QVERIFY(device->takeEverythingSent());
         QCOMPARE(device->requests().size(), 0);
     }
 
