@@ -97,7 +97,7 @@ private Q_SLOTS:
         QCOMPARE(flow.dialog()->writes().size(), 2);
         QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         flow.dialog()->reject();
-        QTest::qWait(100);
+        QVERIFY(test::waitForStatusCycles(*session)); // a write would have gone out by then
         QCOMPARE(written.size(), 0);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
     }

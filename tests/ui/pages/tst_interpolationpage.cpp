@@ -296,8 +296,8 @@ private Q_SLOTS:
         QTRY_VERIFY(arc->startReason()->text().contains(QStringLiteral("one straight line")));
         QVERIFY(!arc->startButton()->isEnabled());
         QVERIFY(arc->stopButton()->isEnabled());
-        arc->startButton()->click(); // disabled: nothing is sent
-        QTest::qWait(200);
+        arc->startButton()->click();                  // disabled: nothing is sent
+        QVERIFY(test::waitForStatusCycles(*session)); // a start would have gone out by then
         QVERIFY(!sim()->running(1) && !sim()->running(2));
     }
 
@@ -370,17 +370,21 @@ private Q_SLOTS:
         window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-after.png")));
         const QPalette light = QApplication::palette();
         QApplication::setPalette(test::darkPalette());
-        QTest::qWait(100);
+        QCoreApplication::sendPostedEvents(); // the layouts settle before the picture
         window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-dark.png")));
         QApplication::setPalette(light);
+        const QString english = page->title();
         Language::instance().setLanguage(QStringLiteral("zh_CN"));
-        QCOMPARE(page->title(), page->title()); // retranslated without a crash
+        QTRY_VERIFY(page->title() != english); // retranslated without a crash
+        QCoreApplication::sendPostedEvents();
         window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-zh.png")));
         WindowProbe(window).showPage(index + 1);
-        QTest::qWait(200); // the layouts settle
+        QTRY_VERIFY(WindowProbe(window).pages().at(index + 1)->isVisible());
+        QCoreApplication::sendPostedEvents();
         window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-modes-zh.png")));
         Language::instance().setLanguage(QStringLiteral("en"));
-        QTest::qWait(200);
+        QTRY_COMPARE(page->title(), english);
+        QCoreApplication::sendPostedEvents();
         window.grab().save(QDir::temp().filePath(QStringLiteral("stepcom-i6-modes.png")));
     }
 
@@ -410,7 +414,7 @@ private Q_SLOTS:
         QVERIFY(page.explanation()->text().contains(QStringLiteral("IN1")));
         page.confirmation()->button(QMessageBox::Cancel)->click();
         QTRY_VERIFY(!page.confirmation());
-        QTest::qWait(300);
+        QVERIFY(test::waitForStatusCycles(*session)); // a write would have gone out by then
         QCOMPARE(simValue(QStringLiteral("mode.system")), 0);
         QCOMPARE(page.modeBox()->currentData().toInt(), 0);
         QVERIFY(!session->parameters()->store()->hasEdits()); // never held as an edit

@@ -187,7 +187,7 @@ private Q_SLOTS:
         QCOMPARE(line->text(), QStringLiteral("99999")); // kept for correction
         QVERIFY(!session->parameters()->store()->hasEdits());
         QVERIFY(!WindowProbe(*window).action(QStringLiteral("writeChanges"))->isEnabled());
-        QTest::qWait(300);
+        QVERIFY(test::waitForStatusCycles(*session)); // a write would have gone out by then
         QCOMPARE(writes, 0);
         QCOMPARE(*sim()->value(QStringLiteral("motor1.speed")), 300);
 

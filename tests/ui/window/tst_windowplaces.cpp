@@ -114,7 +114,8 @@ private Q_SLOTS:
             int(WindowProbe(window).pages().indexOf(WindowProbe(window).motionPage())));
         QLabel *strip1 = WindowProbe(window).machineStrip()->positionLabel(1);
         QTRY_VERIFY(strip1->text() != QStringLiteral("—"));
-        QTest::qWait(200); // a few more status cycles: every view has had its update
+        // A few more status cycles: every view has had its update.
+        QVERIFY(test::waitForStatusCycles(session, 3));
         const QString position = strip1->text();
         QVERIFY(!WindowProbe(window).statusDock()->isVisible());
         const QStringList shown = positionTexts(&window, position);
