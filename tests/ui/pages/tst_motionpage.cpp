@@ -23,6 +23,7 @@
 #include "window/windowprobe.h"
 
 #include "darkpalette.h"
+#include "screenshots.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -102,7 +103,7 @@ private Q_SLOTS:
         QTest::mouseMove(p->reverseButton(), QPoint(-30, -30));
         QTRY_VERIFY(!sim()->running(1));
         QTest::mouseMove(p->reverseButton(), p->reverseButton()->rect().center());
-        QTest::qWait(200);
+        QVERIFY(test::waitForStatusCycles(*session)); // a jog would have gone out by then
         QVERIFY(!sim()->running(1));
         QTest::mouseRelease(p->reverseButton(), Qt::LeftButton);
         QVERIFY(!page.bannerShown());
@@ -163,8 +164,8 @@ private Q_SLOTS:
         QVERIFY(!page.keyboardCheck()->isChecked());
         QVERIFY(page.keyboardIndicator()->isHidden());
         QTest::keyPress(&page, Qt::Key_Right);
-        QTest::qWait(300);
-        QVERIFY(!sim()->running(1)); // off by default: keys do nothing
+        QVERIFY(test::waitForStatusCycles(*session)); // a jog would have gone out by then
+        QVERIFY(!sim()->running(1));                  // off by default: keys do nothing
         QTest::keyRelease(&page, Qt::Key_Right);
 
         page.keyboardCheck()->click();
@@ -177,7 +178,7 @@ private Q_SLOTS:
         // Auto-repeat (a release+press pair on X11) neither stops nor restarts.
         sendKey(&page, QEvent::KeyRelease, Qt::Key_Right, true);
         sendKey(&page, QEvent::KeyPress, Qt::Key_Right, true);
-        QTest::qWait(200);
+        QVERIFY(test::waitForStatusCycles(*session)); // a stop would have gone out by then
         QVERIFY(sim()->running(1));
         QTest::keyRelease(&page, Qt::Key_Right);
         QTRY_VERIFY(!sim()->running(1));
@@ -194,7 +195,7 @@ private Q_SLOTS:
         QTRY_VERIFY(!sim()->running(1));
         QTRY_COMPARE(session->jog()->state(1), State::Idle);
         sendKey(&page, QEvent::KeyPress, Qt::Key_Left, true);
-        QTest::qWait(200);
+        QVERIFY(test::waitForStatusCycles(*session)); // a jog would have gone out by then
         QVERIFY(!sim()->running(1));
         QTest::keyRelease(&page, Qt::Key_Left);
 
@@ -215,14 +216,14 @@ private Q_SLOTS:
         speed->setFocus();
         QTRY_VERIFY(speed->hasFocus());
         QTest::keyPress(speed, Qt::Key_Right);
-        QTest::qWait(200);
+        QVERIFY(test::waitForStatusCycles(*session)); // a jog would have gone out by then
         QVERIFY(!sim()->running(1));
         QTest::keyRelease(speed, Qt::Key_Right);
 
         page.keyboardCheck()->click();
         QVERIFY(page.keyboardIndicator()->isHidden());
         QTest::keyPress(&page, Qt::Key_Right);
-        QTest::qWait(200);
+        QVERIFY(test::waitForStatusCycles(*session)); // a jog would have gone out by then
         QVERIFY(!sim()->running(1));
         QTest::keyRelease(&page, Qt::Key_Right);
     }
@@ -508,13 +509,12 @@ private Q_SLOTS:
         QVERIFY(!page.outputButton(QStringLiteral("output1_on"))->isEnabled());
     }
 
-    // Pictures to look at: STEPCOM_SCREENSHOTS=/tmp/shots tst_motionpage screenshots
+    // The page in both languages, light and dark, motor 2 jogging: each picture is checked.
+    // STEPCOM_SCREENSHOTS=/tmp/shots tests_ui tst_motionpage screenshots keeps them to look at.
     void screenshots()
     {
-        const QString dir = qEnvironmentVariable("STEPCOM_SCREENSHOTS");
-        if (dir.isEmpty())
-            QSKIP("set STEPCOM_SCREENSHOTS to a directory to render the page");
-        QDir().mkpath(dir);
+        const test::ScreenshotDir dir;
+        QVERIFY(dir.isValid());
         connectSim();
         const QPalette dark = stepcom::test::darkPalette();
         const QPalette light = QApplication::palette();
@@ -525,16 +525,23 @@ private Q_SLOTS:
                 MotionPage page(session.get());
                 page.resize(page.sizeHint().expandedTo(QSize(1000, 760)));
                 page.show();
+                QVERIFY(QTest::qWaitForWindowExposed(&page));
                 page.keyboardCheck()->setChecked(true);
                 session->parameters()->store()->edit(QStringLiteral("motor1.speed"), 450);
                 page.homingOrder()->choose(0, 2);
                 QTest::mousePress(page.panel(2)->forwardButton(), Qt::LeftButton);
-                QTest::qWait(400);
-                page.grab().save(QStringLiteral("%1/motion-%2%3.png")
-                                     .arg(dir, lang, isDark ? QStringLiteral("-dark") : QString()));
+                QTRY_VERIFY_WITH_TIMEOUT(sim()->running(2) &&
+                                             page.panel(2)->runningLed()->state() == Led::State::On,
+                                         10000);
+                const QString problem = test::saveAndCheckGrab(
+                    &page,
+                    dir.filePath(QStringLiteral("motion-%1%2.png")
+                                     .arg(lang, isDark ? QStringLiteral("-dark") : QString())));
                 QTest::mouseRelease(page.panel(2)->forwardButton(), Qt::LeftButton);
                 session->parameters()->store()->revertAll();
-                QTest::qWait(300);
+                QVERIFY2(problem.isEmpty(), qPrintable(problem));
+                QTRY_VERIFY_WITH_TIMEOUT(
+                    !sim()->running(2) && session->jog()->state(2) == State::Idle, 10000);
             }
         }
         QApplication::setPalette(light);

@@ -19,6 +19,7 @@
 #include "testmaps.h"
 
 #include "darkpalette.h"
+#include "screenshots.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -139,7 +140,7 @@ private Q_SLOTS:
         QVERIFY(session->parameters()->store()->state(QStringLiteral("motor1.pitch")) !=
                 ParameterStore::State::Edited);
         // Nothing was written: the simulator still holds the old value after a few poll cycles.
-        QTest::qWait(300);
+        QVERIFY(test::waitForStatusCycles(*session, 3));
         QCOMPARE(simValue("motor1.microsteps"), 8);
         QVERIFY(session->parameters()->store()->hasEdits());
     }
@@ -289,8 +290,8 @@ private Q_SLOTS:
             QVERIFY2(said.contains(QLatin1String(part)), part);
         box->button(QMessageBox::Cancel)->click();
         QTRY_VERIFY(!page.confirmation());
-        QTest::qWait(100);
-        QCOMPARE(simValue("motor1.speed"), 600); // cancelled: nothing sent
+        QVERIFY(test::waitForStatusCycles(*session)); // a reset would have gone out by then
+        QCOMPARE(simValue("motor1.speed"), 600);      // cancelled: nothing sent
 
         QTest::mouseClick(page.factoryResetButton(), Qt::LeftButton);
         QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
@@ -336,21 +337,21 @@ private Q_SLOTS:
         QTRY_VERIFY2(modeLine().contains(QLatin1String("Normal")), qPrintable(modeLine()));
     }
 
-    // Pictures to look at while building the pages: STEPCOM_SCREENSHOTS=/tmp/shots tst_pages
-    // screenshots
+    // The motor, inputs and device pages in both languages, light and dark, with edits, a
+    // wiring warning and an input on; a link change that fails. Each picture is checked.
+    // STEPCOM_SCREENSHOTS=/tmp/shots tests_ui tst_pages screenshots keeps them to look at.
     void screenshots()
     {
-        const QString dir = qEnvironmentVariable("STEPCOM_SCREENSHOTS");
-        if (dir.isEmpty())
-            QSKIP("set STEPCOM_SCREENSHOTS to a directory to render the pages");
-        QDir().mkpath(dir);
+        const test::ScreenshotDir dir;
+        QVERIFY(dir.isValid());
         connectSim();
         session->parameters()->store()->edit(QStringLiteral("motor1.speed"), 450);
         session->parameters()->store()->edit(QStringLiteral("motor1.limit_positive"), 2);
         session->parameters()->store()->edit(QStringLiteral("motor2.home_input"), 3);
         session->parameters()->store()->setUnsavedToFlash(true);
         sim()->setInput(4, SimDevice::InputForce::On);
-        QTest::qWait(400);
+        QTRY_VERIFY_WITH_TIMEOUT(
+            session->parameters()->store()->deviceValue(QStringLiteral("io.in4")) == 1, 10000);
         const QPalette dark = stepcom::test::darkPalette();
         const QPalette light = QApplication::palette();
         for (const QString &lang : {QStringLiteral("en"), QStringLiteral("zh_CN")}) {
@@ -366,9 +367,11 @@ private Q_SLOTS:
                                           {&device, "device"}}) {
                     page->resize(page->sizeHint().expandedTo(QSize(900, 560)));
                     page->show();
-                    QTest::qWait(50);
-                    page->grab().save(
-                        QStringLiteral("%1/%2-%3.png").arg(dir, QLatin1String(name), suffix));
+                    QVERIFY(QTest::qWaitForWindowExposed(page));
+                    const QString problem = test::saveAndCheckGrab(
+                        page,
+                        dir.filePath(QStringLiteral("%1-%2.png").arg(QLatin1String(name), suffix)));
+                    QVERIFY2(problem.isEmpty(), qPrintable(problem));
                 }
             }
         }
@@ -379,12 +382,17 @@ private Q_SLOTS:
         failed.show();
         failed.idEditor()->setValue(9);
         failed.requestLinkChange();
-        failed.confirmation()->grab().save(dir + QStringLiteral("/device-confirm.png"));
+        QVERIFY(failed.confirmation());
+        const QString confirm = test::saveAndCheckGrab(
+            failed.confirmation(), dir.filePath(QStringLiteral("device-confirm.png")));
+        QVERIFY2(confirm.isEmpty(), qPrintable(confirm));
         test::simHost(*session)->stop();
         QSignalSpy done(session->line(), &SessionLine::linkChangeFailed);
         failed.confirmation()->button(QMessageBox::Yes)->click();
         QTRY_COMPARE_WITH_TIMEOUT(done.size(), 1, 10000);
-        failed.grab().save(dir + QStringLiteral("/device-failed.png"));
+        const QString problem =
+            test::saveAndCheckGrab(&failed, dir.filePath(QStringLiteral("device-failed.png")));
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));
     }
 };
 

@@ -1,11 +1,13 @@
 #include "base/language.h"
 #include "base/page.h"
 #include "bus/modbuslink.h"
+#include "device/parameterstore.h"
 #include "device/poller.h"
 #include "device/statusrecorder.h"
 #include "pages/plotpage.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
+#include "session/parts/sessionparameters.h"
 #include "session/parts/sessionstatus.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
@@ -21,6 +23,7 @@
 #include "testmaps.h"
 
 #include "darkpalette.h"
+#include "screenshots.h"
 
 #include <QAction>
 #include <QApplication>
@@ -407,13 +410,13 @@ private Q_SLOTS:
         QCOMPARE(page->positionPlot()->series(2)->name(), QStringLiteral("Motor 2"));
     }
 
-    // Pictures to look at: STEPCOM_SCREENSHOTS=/tmp/shots tst_monitoring screenshots
+    // The plots, the status dock and the window after an L-shaped path, light and dark: each
+    // picture is checked. STEPCOM_SCREENSHOTS=/tmp/shots tests_ui tst_monitoring screenshots
+    // keeps them to look at.
     void screenshots()
     {
-        const QString dir = qEnvironmentVariable("STEPCOM_SCREENSHOTS");
-        if (dir.isEmpty())
-            QSKIP("set STEPCOM_SCREENSHOTS to a directory to render the monitoring views");
-        QDir().mkpath(dir);
+        const test::ScreenshotDir dir;
+        QVERIFY(dir.isValid());
         connectSim();
         sim()->setInput(4, SimDevice::InputForce::On); // IN3 would be motor 2's limit
         QVERIFY(sim()->command(QStringLiteral("output1_on")));
@@ -430,20 +433,33 @@ private Q_SLOTS:
             if (qobject_cast<PlotPage *>(WindowProbe(window).pages().at(i)))
                 WindowProbe(window).showPage(i);
         }
-        // One motor at a time (the controller runs one jog at a time): an L-shaped path.
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        // One motor at a time (the controller runs one jog at a time): an L-shaped path, each leg
+        // 5 mm as the status poll saw it.
+        const ParameterStore *store = session->parameters()->store();
         for (const char *key : {"motor1.forward", "motor2.forward", "motor1.reverse"}) {
+            const QString motor = QLatin1String(key).left(6);
+            const QString position = motor + QLatin1String(".position");
+            const qint64 from = store->deviceValue(position).value_or(0);
             session->command(QLatin1String(key));
-            QTest::qWait(1200);
-            session->command(QLatin1String(key).left(6) + QLatin1String(".stop"));
+            QTRY_VERIFY_WITH_TIMEOUT(
+                std::abs(store->deviceValue(position).value_or(from) - from) >= 500, 20000);
+            session->command(motor + QLatin1String(".stop"));
             QTRY_VERIFY(!sim()->running(1) && !sim()->running(2));
         }
+        QTRY_VERIFY(page->positionPlot()->pointCount(1) >= 3);
         for (const bool isDark : {false, true}) {
             QApplication::setPalette(isDark ? dark : light);
-            QTest::qWait(300);
+            QCoreApplication::sendPostedEvents(); // the layouts settle before the pictures
             const QString suffix = isDark ? QStringLiteral("-dark") : QString();
-            page->grab().save(QStringLiteral("%1/plots%2.png").arg(dir, suffix));
-            dock.grab().save(QStringLiteral("%1/status%2.png").arg(dir, suffix));
-            window.grab().save(QStringLiteral("%1/window%2.png").arg(dir, suffix));
+            for (auto [widget, name] : {std::pair<QWidget *, const char *>{page.get(), "plots"},
+                                        {&dock, "status"},
+                                        {&window, "window"}}) {
+                const QString problem = test::saveAndCheckGrab(
+                    widget,
+                    dir.filePath(QStringLiteral("%1%2.png").arg(QLatin1String(name), suffix)));
+                QVERIFY2(problem.isEmpty(), qPrintable(problem));
+            }
         }
         QApplication::setPalette(light);
     }
