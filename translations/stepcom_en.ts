@@ -16,8 +16,8 @@
         <translation>%1 cannot be read: %2</translation>
     </message>
     <message>
-        <source>%1 is neither a StepCom profile, a session log nor a support bundle: StepCom opens those.</source>
-        <translation>%1 is neither a StepCom profile, a session log nor a support bundle: StepCom opens those.</translation>
+        <source>%1 is neither a StepCom profile, a sequence, a session log nor a support bundle: StepCom opens those.</source>
+        <translation>%1 is neither a StepCom profile, a sequence, a session log nor a support bundle: StepCom opens those.</translation>
     </message>
 </context>
 <context>
@@ -1592,6 +1592,13 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ChecklistRunInStep</name>
+    <message>
+        <source>Open the Sequence page</source>
+        <translation>Open the Sequence page</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ChecklistStep</name>
     <message>
         <source>Not run</source>
@@ -1828,6 +1835,42 @@
     <message>
         <source>Taken on</source>
         <translation>Taken on</translation>
+    </message>
+    <message>
+        <source>Machine: run-in of its cycle</source>
+        <translation>Machine: run-in of its cycle</translation>
+    </message>
+    <message>
+        <source>Run the machine&apos;s cycle on the Sequence page for a number of cycles, with the lost-step check at the end. The run-in&apos;s result is recorded here: cycles, cycle time and whether every axis kept its steps.</source>
+        <translation>Run the machine&apos;s cycle on the Sequence page for a number of cycles, with the lost-step check at the end. The run-in&apos;s result is recorded here: cycles, cycle time and whether every axis kept its steps.</translation>
+    </message>
+    <message>
+        <source>Sequence</source>
+        <translation>Sequence</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>Outcome</translation>
+    </message>
+    <message>
+        <source>Cycles done</source>
+        <translation>Cycles done</translation>
+    </message>
+    <message>
+        <source>Shortest cycle</source>
+        <translation>Shortest cycle</translation>
+    </message>
+    <message>
+        <source>Median cycle</source>
+        <translation>Median cycle</translation>
+    </message>
+    <message>
+        <source>Longest cycle</source>
+        <translation>Longest cycle</translation>
+    </message>
+    <message>
+        <source>Lost-step check</source>
+        <translation>Lost-step check</translation>
     </message>
 </context>
 <context>
@@ -3383,33 +3426,6 @@
         <source>listen hears a serial line: give --port (a line StepCom does not drive; --tcp and --sim have no other master to hear)</source>
         <translation>listen hears a serial line: give --port (a line StepCom does not drive; --tcp and --sim have no other master to hear)</translation>
     </message>
-    <message numerus="yes">
-        <source>Sequence %1: %n step(s) in the file</source>
-        <translation>
-            <numerusform>Sequence %1: %n step in the file</numerusform>
-            <numerusform>Sequence %1: %n steps in the file</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>  point %1: %2</source>
-        <translation>  point %1: %2</translation>
-    </message>
-    <message>
-        <source>  limits motor%1: %2 .. %3 %4</source>
-        <translation>  limits motor%1: %2 .. %3 %4</translation>
-    </message>
-    <message>
-        <source>  on a stop: all outputs off</source>
-        <translation>  on a stop: all outputs off</translation>
-    </message>
-    <message>
-        <source>  on a stop: the outputs are left as they are</source>
-        <translation>  on a stop: the outputs are left as they are</translation>
-    </message>
-    <message>
-        <source>  cycles: %1 (the whole step list each time)</source>
-        <translation>  cycles: %1 (the whole step list each time)</translation>
-    </message>
     <message>
         <source>%1 (at %2)</source>
         <translation>%1 (at %2)</translation>
@@ -3485,10 +3501,6 @@
     <message>
         <source>&apos;%1&apos; is not a number: type the gauge&apos;s reading</source>
         <translation>&apos;%1&apos; is not a number: type the gauge&apos;s reading</translation>
-    </message>
-    <message>
-        <source>  then the lost-step test (lost-steps) on %1, each referenced on its home switch</source>
-        <translation>  then the lost-step test (lost-steps) on %1, each referenced on its home switch</translation>
     </message>
     <message>
         <source>check-steps: %1</source>
@@ -9480,10 +9492,164 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SequenceEditor</name>
+    <message>
+        <source>&amp;Add step</source>
+        <translation>&amp;Add step</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Remove</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Up</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Down</translation>
+    </message>
+    <message>
+        <source>Into the loop above</source>
+        <translation>Into the loop above</translation>
+    </message>
+    <message>
+        <source>Out of the loop</source>
+        <translation>Out of the loop</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Steps</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SequenceMove</name>
     <message>
         <source>A move is still running: wait for it to end</source>
         <translation>A move is still running: wait for it to end</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequencePage</name>
+    <message>
+        <source>Sequence</source>
+        <translation>Sequence</translation>
+    </message>
+    <message>
+        <source>(new sequence)</source>
+        <translation>(new sequence)</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Points</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>Path</translation>
+    </message>
+    <message>
+        <source>The sequence has changes that are not saved. Discard them?</source>
+        <translation>The sequence has changes that are not saved. Discard them?</translation>
+    </message>
+    <message>
+        <source>Open a sequence</source>
+        <translation>Open a sequence</translation>
+    </message>
+    <message>
+        <source>%1 was not opened: the sequence is as it was.</source>
+        <translation>%1 was not opened: the sequence is as it was.</translation>
+    </message>
+    <message>
+        <source>Save the sequence</source>
+        <translation>Save the sequence</translation>
+    </message>
+    <message>
+        <source>Not saved: the sequence could not be read back as a file.</source>
+        <translation>Not saved: the sequence could not be read back as a file.</translation>
+    </message>
+    <message>
+        <source>%1 was not saved: %2</source>
+        <translation>%1 was not saved: %2</translation>
+    </message>
+    <message>
+        <source>Any earlier file there is as it was.</source>
+        <translation>Any earlier file there is as it was.</translation>
+    </message>
+    <message>
+        <source>StepCom sequences (*.stepseq);;All files (*)</source>
+        <translation>StepCom sequences (*.stepseq);;All files (*)</translation>
+    </message>
+    <message>
+        <source>StepCom sequences (*.stepseq)</source>
+        <translation>StepCom sequences (*.stepseq)</translation>
+    </message>
+    <message>
+        <source>a new sequence, not saved</source>
+        <translation>a new sequence, not saved</translation>
+    </message>
+    <message>
+        <source>Sequence: %1%2</source>
+        <translation>Sequence: %1%2</translation>
+    </message>
+    <message>
+        <source> (changed)</source>
+        <translation> (changed)</translation>
+    </message>
+    <message>
+        <source>motor %1 %2 .. %3 %4</source>
+        <translation>motor %1 %2 .. %3 %4</translation>
+    </message>
+    <message>
+        <source>The file sets no limits of its own; StepCom&apos;s travel limits (Jog page) apply.</source>
+        <translation>The file sets no limits of its own; StepCom&apos;s travel limits (Jog page) apply.</translation>
+    </message>
+    <message>
+        <source>The file&apos;s limits: %1; StepCom&apos;s travel limits apply too.</source>
+        <translation>The file&apos;s limits: %1; StepCom&apos;s travel limits apply too.</translation>
+    </message>
+    <message>
+        <source>Path (motor 1 across, motor 2 up)</source>
+        <translation>Path (motor 1 across, motor 2 up)</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>Steps</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Run</translation>
+    </message>
+    <message>
+        <source>All outputs &amp;off when the run stops</source>
+        <translation>All outputs &amp;off when the run stops</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;New</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Open…</translation>
+    </message>
+    <message>
+        <source>Sa&amp;ve</source>
+        <translation>Sa&amp;ve</translation>
+    </message>
+    <message>
+        <source>Save &amp;as…</source>
+        <translation>Save &amp;as…</translation>
+    </message>
+    <message>
+        <source>motor 1</source>
+        <translation>motor 1</translation>
+    </message>
+    <message>
+        <source>motor 2</source>
+        <translation>motor 2</translation>
+    </message>
+    <message>
+        <source>No steps yet: jog to each point and teach it, then Add step (or open a .stepseq file).</source>
+        <translation>No steps yet: jog to each point and teach it, then Add step (or open a .stepseq file).</translation>
     </message>
 </context>
 <context>
@@ -9662,6 +9828,250 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SequencePlan</name>
+    <message numerus="yes">
+        <source>Sequence %1: %n step(s) in the file</source>
+        <translation>
+            <numerusform>Sequence %1: %n step in the file</numerusform>
+            <numerusform>Sequence %1: %n steps in the file</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>  point %1: %2</source>
+        <translation>  point %1: %2</translation>
+    </message>
+    <message>
+        <source>  limits motor%1: %2 .. %3 %4</source>
+        <translation>  limits motor%1: %2 .. %3 %4</translation>
+    </message>
+    <message>
+        <source>  on a stop: all outputs off</source>
+        <translation>  on a stop: all outputs off</translation>
+    </message>
+    <message>
+        <source>  on a stop: the outputs are left as they are</source>
+        <translation>  on a stop: the outputs are left as they are</translation>
+    </message>
+    <message>
+        <source>  cycles: %1 (the whole step list each time)</source>
+        <translation>  cycles: %1 (the whole step list each time)</translation>
+    </message>
+    <message>
+        <source>  then the lost-step test (lost-steps) on %1, each referenced on its home switch</source>
+        <translation>  then the lost-step test (lost-steps) on %1, each referenced on its home switch</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequencePoints</name>
+    <message>
+        <source>motor %1</source>
+        <translation>motor %1</translation>
+    </message>
+    <message>
+        <source>Not taught: the position of %1 is not known (connect, and let the status poll read it).</source>
+        <translation>Not taught: the position of %1 is not known (connect, and let the status poll read it).</translation>
+    </message>
+    <message>
+        <source>Point %1 taught again at the live position.</source>
+        <translation>Point %1 taught again at the live position.</translation>
+    </message>
+    <message>
+        <source>Point %1 taught at the live position; double-click its name to rename it.</source>
+        <translation>Point %1 taught at the live position; double-click its name to rename it.</translation>
+    </message>
+    <message>
+        <source>There is a point %1 already: the name stays %2.</source>
+        <translation>There is a point %1 already: the name stays %2.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot name a point: use 1-40 letters, digits, _ or -.</source>
+        <translation>&quot;%1&quot; cannot name a point: use 1-40 letters, digits, _ or -.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no position: point %2 keeps motor %3 as it was.</source>
+        <translation>&quot;%1&quot; is no position: point %2 keeps motor %3 as it was.</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Point</translation>
+    </message>
+    <message>
+        <source>Motor %1 (%2)</source>
+        <translation>Motor %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>Jog motor %1:</source>
+        <translation>Jog motor %1:</translation>
+    </message>
+    <message>
+        <source>◀ Hold</source>
+        <translation>◀ Hold</translation>
+    </message>
+    <message>
+        <source>Hold ▶</source>
+        <translation>Hold ▶</translation>
+    </message>
+    <message>
+        <source>Jog motor %1 reverse (hold)</source>
+        <translation>Jog motor %1 reverse (hold)</translation>
+    </message>
+    <message>
+        <source>Jog motor %1 forward (hold)</source>
+        <translation>Jog motor %1 forward (hold)</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Points</translation>
+    </message>
+    <message>
+        <source>&amp;Teach here</source>
+        <translation>&amp;Teach here</translation>
+    </message>
+    <message>
+        <source>A new point at the live position of every motor</source>
+        <translation>A new point at the live position of every motor</translation>
+    </message>
+    <message>
+        <source>Teach &amp;selected again</source>
+        <translation>Teach &amp;selected again</translation>
+    </message>
+    <message>
+        <source>Remove point</source>
+        <translation>Remove point</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceRunPanel</name>
+    <message>
+        <source>Pausing after the current step…</source>
+        <translation>Pausing after the current step…</translation>
+    </message>
+    <message>
+        <source>Step %1: %2</source>
+        <translation>Step %1: %2</translation>
+    </message>
+    <message>
+        <source>Cycle %1 done in %2 s.</source>
+        <translation>Cycle %1 done in %2 s.</translation>
+    </message>
+    <message>
+        <source>Paused before %1: Step runs it, Resume goes on.</source>
+        <translation>Paused before %1: Step runs it, Resume goes on.</translation>
+    </message>
+    <message>
+        <source>The sequence has problems (listed above): nothing was sent.</source>
+        <translation>The sequence has problems (listed above): nothing was sent.</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was sent.</source>
+        <translation>Not connected: nothing was sent.</translation>
+    </message>
+    <message>
+        <source>Run the sequence</source>
+        <translation>Run the sequence</translation>
+    </message>
+    <message>
+        <source>Run it? The machine will move.</source>
+        <translation>Run it? The machine will move.</translation>
+    </message>
+    <message>
+        <source>Not started: nothing was sent.</source>
+        <translation>Not started: nothing was sent.</translation>
+    </message>
+    <message>
+        <source>The run could not start: not connected, or one is running.</source>
+        <translation>The run could not start: not connected, or one is running.</translation>
+    </message>
+    <message>
+        <source>Reading the positions and checking the run…</source>
+        <translation>Reading the positions and checking the run…</translation>
+    </message>
+    <message>
+        <source>Cycle — of %1</source>
+        <translation>Cycle — of %1</translation>
+    </message>
+    <message>
+        <source>Running sequence: cycle %1 of %2</source>
+        <translation>Running sequence: cycle %1 of %2</translation>
+    </message>
+    <message>
+        <source>Running sequence: cycle %1 of %2, step %3</source>
+        <translation>Running sequence: cycle %1 of %2, step %3</translation>
+    </message>
+    <message>
+        <source>%1 (at %2)</source>
+        <translation>%1 (at %2)</translation>
+    </message>
+    <message>
+        <source>Cycles done: %1 of %2; cycle time min %3 s, median %4 s, max %5 s</source>
+        <translation>Cycles done: %1 of %2; cycle time min %3 s, median %4 s, max %5 s</translation>
+    </message>
+    <message>
+        <source>Cycles done: %1 of %2</source>
+        <translation>Cycles done: %1 of %2</translation>
+    </message>
+    <message>
+        <source>Running sequence: the lost-step check</source>
+        <translation>Running sequence: the lost-step check</translation>
+    </message>
+    <message>
+        <source>Lost-step check: %1</source>
+        <translation>Lost-step check: %1</translation>
+    </message>
+    <message>
+        <source>C&amp;ycles:</source>
+        <translation>C&amp;ycles:</translation>
+    </message>
+    <message>
+        <source>S&amp;ingle step</source>
+        <translation>S&amp;ingle step</translation>
+    </message>
+    <message>
+        <source>Pause after every step; Step runs the next one</source>
+        <translation>Pause after every step; Step runs the next one</translation>
+    </message>
+    <message>
+        <source>Lost-step &amp;check at the end</source>
+        <translation>Lost-step &amp;check at the end</translation>
+    </message>
+    <message>
+        <source>After the last cycle, the lost-step test on every axis the sequence moved, each referenced on its home switch</source>
+        <translation>After the last cycle, the lost-step test on every axis the sequence moved, each referenced on its home switch</translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation>&amp;Run</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <source>Pause after the step running now</source>
+        <translation>Pause after the step running now</translation>
+    </message>
+    <message>
+        <source>S&amp;tep</source>
+        <translation>S&amp;tep</translation>
+    </message>
+    <message>
+        <source>Resu&amp;me</source>
+        <translation>Resu&amp;me</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>&amp;Stop</translation>
+    </message>
+    <message>
+        <source>Not running.</source>
+        <translation>Not running.</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SequenceRunner</name>
     <message>
         <source>%1: the input did not come within %2 s</source>
@@ -9815,6 +10225,137 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>speed %1 rpm</source>
         <translation>speed %1 rpm</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceStepForm</name>
+    <message>
+        <source>Home</source>
+        <translation>Home</translation>
+    </message>
+    <message>
+        <source>Move to</source>
+        <translation>Move to</translation>
+    </message>
+    <message>
+        <source>Move by</source>
+        <translation>Move by</translation>
+    </message>
+    <message>
+        <source>Wait for an input</source>
+        <translation>Wait for an input</translation>
+    </message>
+    <message>
+        <source>Switch output 1</source>
+        <translation>Switch output 1</translation>
+    </message>
+    <message>
+        <source>Switch all outputs</source>
+        <translation>Switch all outputs</translation>
+    </message>
+    <message>
+        <source>Dwell</source>
+        <translation>Dwell</translation>
+    </message>
+    <message>
+        <source>Repeat (a loop)</source>
+        <translation>Repeat (a loop)</translation>
+    </message>
+    <message>
+        <source>Set the speed</source>
+        <translation>Set the speed</translation>
+    </message>
+    <message>
+        <source>(a position of its own)</source>
+        <translation>(a position of its own)</translation>
+    </message>
+    <message>
+        <source>&amp;Step:</source>
+        <translation>&amp;Step:</translation>
+    </message>
+    <message>
+        <source>In the set homing order</source>
+        <translation>In the set homing order</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>Motor %1</translation>
+    </message>
+    <message>
+        <source>All ON</source>
+        <translation>All ON</translation>
+    </message>
+    <message>
+        <source>All OFF</source>
+        <translation>All OFF</translation>
+    </message>
+    <message>
+        <source>&amp;Home:</source>
+        <translation>&amp;Home:</translation>
+    </message>
+    <message>
+        <source>&amp;Point:</source>
+        <translation>&amp;Point:</translation>
+    </message>
+    <message>
+        <source>&amp;Input (IN):</source>
+        <translation>&amp;Input (IN):</translation>
+    </message>
+    <message>
+        <source>&amp;Output:</source>
+        <translation>&amp;Output:</translation>
+    </message>
+    <message>
+        <source>State:</source>
+        <translation>State:</translation>
+    </message>
+    <message>
+        <source>Wait for ON (unticked: for OFF)</source>
+        <translation>Wait for ON (unticked: for OFF)</translation>
+    </message>
+    <message>
+        <source>ON (unticked: OFF)</source>
+        <translation>ON (unticked: OFF)</translation>
+    </message>
+    <message>
+        <source>&amp;Timeout (0: none):</source>
+        <translation>&amp;Timeout (0: none):</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>O&amp;utputs:</source>
+        <translation>O&amp;utputs:</translation>
+    </message>
+    <message>
+        <source>&amp;Dwell:</source>
+        <translation>&amp;Dwell:</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>&amp;Times:</source>
+        <translation>&amp;Times:</translation>
+    </message>
+    <message>
+        <source>Motor %1:</source>
+        <translation>Motor %1:</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>set</translation>
+    </message>
+    <message>
+        <source>moves</source>
+        <translation>moves</translation>
+    </message>
+    <message>
+        <source>The controller switches output 1 alone; all %1 outputs together with &quot;Switch all outputs&quot;.</source>
+        <translation>The controller switches output 1 alone; all %1 outputs together with &quot;Switch all outputs&quot;.</translation>
     </message>
 </context>
 <context>

@@ -16,8 +16,8 @@
         <translation>无法读取 %1：%2</translation>
     </message>
     <message>
-        <source>%1 is neither a StepCom profile, a session log nor a support bundle: StepCom opens those.</source>
-        <translation>%1 既不是 StepCom 参数文件，也不是会话日志或支持包：StepCom 只能打开这几种文件。</translation>
+        <source>%1 is neither a StepCom profile, a sequence, a session log nor a support bundle: StepCom opens those.</source>
+        <translation>%1 既不是 StepCom 参数文件、序列、会话日志，也不是支持包：StepCom 只打开这些文件。</translation>
     </message>
 </context>
 <context>
@@ -1582,6 +1582,13 @@
     </message>
 </context>
 <context>
+    <name>stepcom::ChecklistRunInStep</name>
+    <message>
+        <source>Open the Sequence page</source>
+        <translation>打开序列页面</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::ChecklistStep</name>
     <message>
         <source>Not run</source>
@@ -1818,6 +1825,42 @@
     <message>
         <source>Taken on</source>
         <translation>测试对象</translation>
+    </message>
+    <message>
+        <source>Machine: run-in of its cycle</source>
+        <translation>整机：工作循环试运行</translation>
+    </message>
+    <message>
+        <source>Run the machine&apos;s cycle on the Sequence page for a number of cycles, with the lost-step check at the end. The run-in&apos;s result is recorded here: cycles, cycle time and whether every axis kept its steps.</source>
+        <translation>在序列页面上将机器的工作循环运行若干次，结束时检查丢步。试运行的结果记录在这里：循环次数、循环时间以及每根轴是否未丢步。</translation>
+    </message>
+    <message>
+        <source>Sequence</source>
+        <translation>序列</translation>
+    </message>
+    <message>
+        <source>Outcome</source>
+        <translation>结果</translation>
+    </message>
+    <message>
+        <source>Cycles done</source>
+        <translation>完成的循环</translation>
+    </message>
+    <message>
+        <source>Shortest cycle</source>
+        <translation>最短循环</translation>
+    </message>
+    <message>
+        <source>Median cycle</source>
+        <translation>中位循环</translation>
+    </message>
+    <message>
+        <source>Longest cycle</source>
+        <translation>最长循环</translation>
+    </message>
+    <message>
+        <source>Lost-step check</source>
+        <translation>丢步检查</translation>
     </message>
 </context>
 <context>
@@ -3365,32 +3408,6 @@
         <source>listen hears a serial line: give --port (a line StepCom does not drive; --tcp and --sim have no other master to hear)</source>
         <translation>listen 监听串口线路：请给出 --port（一条不由 StepCom 驱动的线路；--tcp 和 --sim 上没有其他主站可听）</translation>
     </message>
-    <message numerus="yes">
-        <source>Sequence %1: %n step(s) in the file</source>
-        <translation>
-            <numerusform>序列 %1：文件中有 %n 个步骤</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>  point %1: %2</source>
-        <translation>  点 %1：%2</translation>
-    </message>
-    <message>
-        <source>  limits motor%1: %2 .. %3 %4</source>
-        <translation>  电机%1 限位：%2 .. %3 %4</translation>
-    </message>
-    <message>
-        <source>  on a stop: all outputs off</source>
-        <translation>  停止时：关闭所有输出</translation>
-    </message>
-    <message>
-        <source>  on a stop: the outputs are left as they are</source>
-        <translation>  停止时：输出保持原样</translation>
-    </message>
-    <message>
-        <source>  cycles: %1 (the whole step list each time)</source>
-        <translation>  循环：%1（每次运行整个步骤表）</translation>
-    </message>
     <message>
         <source>%1 (at %2)</source>
         <translation>%1（在 %2）</translation>
@@ -3466,10 +3483,6 @@
     <message>
         <source>&apos;%1&apos; is not a number: type the gauge&apos;s reading</source>
         <translation>“%1”不是数字：请输入百分表的读数</translation>
-    </message>
-    <message>
-        <source>  then the lost-step test (lost-steps) on %1, each referenced on its home switch</source>
-        <translation>  然后对 %1 运行丢步测试（lost-steps），每根轴都以其原点开关为参考</translation>
     </message>
     <message>
         <source>check-steps: %1</source>
@@ -9422,10 +9435,164 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SequenceEditor</name>
+    <message>
+        <source>&amp;Add step</source>
+        <translation>添加步骤(&amp;A)</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>删除(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>上移</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>下移</translation>
+    </message>
+    <message>
+        <source>Into the loop above</source>
+        <translation>移入上面的循环</translation>
+    </message>
+    <message>
+        <source>Out of the loop</source>
+        <translation>移出循环</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>步骤</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SequenceMove</name>
     <message>
         <source>A move is still running: wait for it to end</source>
         <translation>仍有运动在进行：请等待其结束</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequencePage</name>
+    <message>
+        <source>Sequence</source>
+        <translation>序列</translation>
+    </message>
+    <message>
+        <source>(new sequence)</source>
+        <translation>（新序列）</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>点位</translation>
+    </message>
+    <message>
+        <source>Path</source>
+        <translation>路径</translation>
+    </message>
+    <message>
+        <source>The sequence has changes that are not saved. Discard them?</source>
+        <translation>序列有尚未保存的修改。要放弃这些修改吗？</translation>
+    </message>
+    <message>
+        <source>Open a sequence</source>
+        <translation>打开序列</translation>
+    </message>
+    <message>
+        <source>%1 was not opened: the sequence is as it was.</source>
+        <translation>未打开 %1：序列保持原样。</translation>
+    </message>
+    <message>
+        <source>Save the sequence</source>
+        <translation>保存序列</translation>
+    </message>
+    <message>
+        <source>Not saved: the sequence could not be read back as a file.</source>
+        <translation>未保存：序列无法作为文件读回。</translation>
+    </message>
+    <message>
+        <source>%1 was not saved: %2</source>
+        <translation>未保存 %1：%2</translation>
+    </message>
+    <message>
+        <source>Any earlier file there is as it was.</source>
+        <translation>该位置原有的文件保持不变。</translation>
+    </message>
+    <message>
+        <source>StepCom sequences (*.stepseq);;All files (*)</source>
+        <translation>StepCom 序列 (*.stepseq);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>StepCom sequences (*.stepseq)</source>
+        <translation>StepCom 序列 (*.stepseq)</translation>
+    </message>
+    <message>
+        <source>a new sequence, not saved</source>
+        <translation>新序列，尚未保存</translation>
+    </message>
+    <message>
+        <source>Sequence: %1%2</source>
+        <translation>序列：%1%2</translation>
+    </message>
+    <message>
+        <source> (changed)</source>
+        <translation>（已修改）</translation>
+    </message>
+    <message>
+        <source>motor %1 %2 .. %3 %4</source>
+        <translation>电机 %1 %2 .. %3 %4</translation>
+    </message>
+    <message>
+        <source>The file sets no limits of its own; StepCom&apos;s travel limits (Jog page) apply.</source>
+        <translation>文件没有自己的限位；适用 StepCom 的软件行程限位（点动页面）。</translation>
+    </message>
+    <message>
+        <source>The file&apos;s limits: %1; StepCom&apos;s travel limits apply too.</source>
+        <translation>文件的限位：%1；StepCom 的软件行程限位同样适用。</translation>
+    </message>
+    <message>
+        <source>Path (motor 1 across, motor 2 up)</source>
+        <translation>路径（电机 1 为横轴，电机 2 为纵轴）</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>步骤</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>运行</translation>
+    </message>
+    <message>
+        <source>All outputs &amp;off when the run stops</source>
+        <translation>运行停止时关闭全部输出(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>新建(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>打开(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Sa&amp;ve</source>
+        <translation>保存(&amp;V)</translation>
+    </message>
+    <message>
+        <source>Save &amp;as…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>motor 1</source>
+        <translation>电机 1</translation>
+    </message>
+    <message>
+        <source>motor 2</source>
+        <translation>电机 2</translation>
+    </message>
+    <message>
+        <source>No steps yet: jog to each point and teach it, then Add step (or open a .stepseq file).</source>
+        <translation>还没有步骤：点动到每个点位并示教，然后“添加步骤”（或打开 .stepseq 文件）。</translation>
     </message>
 </context>
 <context>
@@ -9604,6 +9771,249 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::SequencePlan</name>
+    <message numerus="yes">
+        <source>Sequence %1: %n step(s) in the file</source>
+        <translation>
+            <numerusform>序列 %1：文件中有 %n 个步骤</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>  point %1: %2</source>
+        <translation>  点 %1：%2</translation>
+    </message>
+    <message>
+        <source>  limits motor%1: %2 .. %3 %4</source>
+        <translation>  电机%1 限位：%2 .. %3 %4</translation>
+    </message>
+    <message>
+        <source>  on a stop: all outputs off</source>
+        <translation>  停止时：关闭所有输出</translation>
+    </message>
+    <message>
+        <source>  on a stop: the outputs are left as they are</source>
+        <translation>  停止时：输出保持原样</translation>
+    </message>
+    <message>
+        <source>  cycles: %1 (the whole step list each time)</source>
+        <translation>  循环：%1（每次运行整个步骤表）</translation>
+    </message>
+    <message>
+        <source>  then the lost-step test (lost-steps) on %1, each referenced on its home switch</source>
+        <translation>  然后对 %1 运行丢步测试（lost-steps），每根轴都以其原点开关为参考</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequencePoints</name>
+    <message>
+        <source>motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Not taught: the position of %1 is not known (connect, and let the status poll read it).</source>
+        <translation>未示教：%1 的位置未知（请连接，并等待状态轮询读到它）。</translation>
+    </message>
+    <message>
+        <source>Point %1 taught again at the live position.</source>
+        <translation>点 %1 已按实时位置重新示教。</translation>
+    </message>
+    <message>
+        <source>Point %1 taught at the live position; double-click its name to rename it.</source>
+        <translation>点 %1 已按实时位置示教；双击名称可重命名。</translation>
+    </message>
+    <message>
+        <source>There is a point %1 already: the name stays %2.</source>
+        <translation>已经有点 %1：名称仍为 %2。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot name a point: use 1-40 letters, digits, _ or -.</source>
+        <translation>“%1”不能作为点的名称：请使用 1-40 个字母、数字、_ 或 -。</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no position: point %2 keeps motor %3 as it was.</source>
+        <translation>“%1”不是位置：点 %2 的电机 %3 保持原值。</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>点</translation>
+    </message>
+    <message>
+        <source>Motor %1 (%2)</source>
+        <translation>电机 %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Jog motor %1:</source>
+        <translation>点动电机 %1：</translation>
+    </message>
+    <message>
+        <source>◀ Hold</source>
+        <translation>◀ 按住</translation>
+    </message>
+    <message>
+        <source>Hold ▶</source>
+        <translation>按住 ▶</translation>
+    </message>
+    <message>
+        <source>Jog motor %1 reverse (hold)</source>
+        <translation>电机 %1 反转点动（按住）</translation>
+    </message>
+    <message>
+        <source>Jog motor %1 forward (hold)</source>
+        <translation>电机 %1 正转点动（按住）</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>点位</translation>
+    </message>
+    <message>
+        <source>&amp;Teach here</source>
+        <translation>示教此处(&amp;T)</translation>
+    </message>
+    <message>
+        <source>A new point at the live position of every motor</source>
+        <translation>以各电机的实时位置新建一个点</translation>
+    </message>
+    <message>
+        <source>Teach &amp;selected again</source>
+        <translation>重新示教所选点(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Remove point</source>
+        <translation>删除点</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceRunPanel</name>
+    <message>
+        <source>Pausing after the current step…</source>
+        <translation>当前步骤之后暂停…</translation>
+    </message>
+    <message>
+        <source>Step %1: %2</source>
+        <translation>步骤 %1：%2</translation>
+    </message>
+    <message>
+        <source>Cycle %1 done in %2 s.</source>
+        <translation>第 %1 个循环用时 %2 s。</translation>
+    </message>
+    <message>
+        <source>Paused before %1: Step runs it, Resume goes on.</source>
+        <translation>在 %1 之前暂停：“单步执行”运行它，“继续”接着运行。</translation>
+    </message>
+    <message>
+        <source>The sequence has problems (listed above): nothing was sent.</source>
+        <translation>序列有问题（见上方）：未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Not connected: nothing was sent.</source>
+        <translation>未连接：未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Run the sequence</source>
+        <translation>运行序列</translation>
+    </message>
+    <message>
+        <source>Run it? The machine will move.</source>
+        <translation>要运行吗？机器将会运动。</translation>
+    </message>
+    <message>
+        <source>Not started: nothing was sent.</source>
+        <translation>未开始：未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>The run could not start: not connected, or one is running.</source>
+        <translation>无法开始运行：未连接，或已有运行在进行。</translation>
+    </message>
+    <message>
+        <source>Reading the positions and checking the run…</source>
+        <translation>正在读取位置并检查运行…</translation>
+    </message>
+    <message>
+        <source>Cycle — of %1</source>
+        <translation>第 — 个循环（共 %1 个）</translation>
+    </message>
+    <message>
+        <source>Running sequence: cycle %1 of %2</source>
+        <translation>正在运行序列：第 %1 个循环（共 %2 个）</translation>
+    </message>
+    <message>
+        <source>Running sequence: cycle %1 of %2, step %3</source>
+        <translation>正在运行序列：第 %1 个循环（共 %2 个），第 %3 步</translation>
+    </message>
+    <message>
+        <source>%1 (at %2)</source>
+        <translation>%1（在 %2）</translation>
+    </message>
+    <message>
+        <source>Cycles done: %1 of %2; cycle time min %3 s, median %4 s, max %5 s</source>
+        <translation>完成循环：%1 / %2；循环时间 最短 %3 s，中位 %4 s，最长 %5 s</translation>
+    </message>
+    <message>
+        <source>Cycles done: %1 of %2</source>
+        <translation>完成循环：%1 / %2</translation>
+    </message>
+    <message>
+        <source>Running sequence: the lost-step check</source>
+        <translation>正在运行序列：丢步检查</translation>
+    </message>
+    <message>
+        <source>Lost-step check: %1</source>
+        <translation>丢步检查：%1</translation>
+    </message>
+    <message>
+        <source>C&amp;ycles:</source>
+        <translation>循环次数(&amp;Y)：</translation>
+    </message>
+    <message>
+        <source>S&amp;ingle step</source>
+        <translation>单步(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Pause after every step; Step runs the next one</source>
+        <translation>每一步之后暂停；“单步执行”运行下一步</translation>
+    </message>
+    <message>
+        <source>Lost-step &amp;check at the end</source>
+        <translation>结束时检查丢步(&amp;C)</translation>
+    </message>
+    <message>
+        <source>After the last cycle, the lost-step test on every axis the sequence moved, each referenced on its home switch</source>
+        <translation>最后一个循环之后，对序列移动过的每根轴运行丢步测试，每根轴都以其原点开关为参考</translation>
+    </message>
+    <message>
+        <source>&amp;Run</source>
+        <translation>运行(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>暂停(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Pause after the step running now</source>
+        <translation>在正在执行的步骤之后暂停</translation>
+    </message>
+    <message>
+        <source>S&amp;tep</source>
+        <translation>单步执行(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Resu&amp;me</source>
+        <translation>继续(&amp;M)</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>停止(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Not running.</source>
+        <translation>未在运行。</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::SequenceRunner</name>
     <message>
         <source>%1: the input did not come within %2 s</source>
@@ -9755,6 +10165,137 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>speed %1 rpm</source>
         <translation>速度 %1 rpm</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::SequenceStepForm</name>
+    <message>
+        <source>Home</source>
+        <translation>回原点</translation>
+    </message>
+    <message>
+        <source>Move to</source>
+        <translation>运行到</translation>
+    </message>
+    <message>
+        <source>Move by</source>
+        <translation>相对运行</translation>
+    </message>
+    <message>
+        <source>Wait for an input</source>
+        <translation>等待输入</translation>
+    </message>
+    <message>
+        <source>Switch output 1</source>
+        <translation>切换输出 1</translation>
+    </message>
+    <message>
+        <source>Switch all outputs</source>
+        <translation>切换全部输出</translation>
+    </message>
+    <message>
+        <source>Dwell</source>
+        <translation>停留</translation>
+    </message>
+    <message>
+        <source>Repeat (a loop)</source>
+        <translation>重复（循环）</translation>
+    </message>
+    <message>
+        <source>Set the speed</source>
+        <translation>设定速度</translation>
+    </message>
+    <message>
+        <source>(a position of its own)</source>
+        <translation>（单独的位置）</translation>
+    </message>
+    <message>
+        <source>&amp;Step:</source>
+        <translation>步骤(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>In the set homing order</source>
+        <translation>按设定的回零顺序</translation>
+    </message>
+    <message>
+        <source>Motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>All ON</source>
+        <translation>全部 ON</translation>
+    </message>
+    <message>
+        <source>All OFF</source>
+        <translation>全部 OFF</translation>
+    </message>
+    <message>
+        <source>&amp;Home:</source>
+        <translation>回原点(&amp;H)：</translation>
+    </message>
+    <message>
+        <source>&amp;Point:</source>
+        <translation>点位(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>&amp;Input (IN):</source>
+        <translation>输入(&amp;I)（IN）：</translation>
+    </message>
+    <message>
+        <source>&amp;Output:</source>
+        <translation>输出(&amp;O)：</translation>
+    </message>
+    <message>
+        <source>State:</source>
+        <translation>状态：</translation>
+    </message>
+    <message>
+        <source>Wait for ON (unticked: for OFF)</source>
+        <translation>等待 ON（不勾选：等待 OFF）</translation>
+    </message>
+    <message>
+        <source>ON (unticked: OFF)</source>
+        <translation>ON（不勾选：OFF）</translation>
+    </message>
+    <message>
+        <source>&amp;Timeout (0: none):</source>
+        <translation>超时(&amp;T)（0：不限）：</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>O&amp;utputs:</source>
+        <translation>输出(&amp;U)：</translation>
+    </message>
+    <message>
+        <source>&amp;Dwell:</source>
+        <translation>停留(&amp;D)：</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>&amp;Times:</source>
+        <translation>次数(&amp;T)：</translation>
+    </message>
+    <message>
+        <source>Motor %1:</source>
+        <translation>电机 %1：</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>设定</translation>
+    </message>
+    <message>
+        <source>moves</source>
+        <translation>运动</translation>
+    </message>
+    <message>
+        <source>The controller switches output 1 alone; all %1 outputs together with &quot;Switch all outputs&quot;.</source>
+        <translation>控制器只能单独切换输出 1；全部 %1 个输出可用“切换全部输出”一起切换。</translation>
     </message>
 </context>
 <context>

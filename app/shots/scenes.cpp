@@ -15,6 +15,7 @@
 #include "pages/motorpage.h"
 #include "pages/plotpage.h"
 #include "proofscenes.h"
+#include "sequencescenes.h"
 #include "session/devicesession.h"
 #include "session/jogcontroller.h"
 #include "session/parts/sessionconnection.h"
@@ -538,6 +539,7 @@ const QList<Scene> &scenes()
         {QStringLiteral("checklist-direction"), W::AfterPages, &checklistDirection},
         {QStringLiteral("checklist-miswired"), W::AfterPages, &checklistMiswired},
         {QStringLiteral("checklist-margin"), W::AfterPages, &proofscenes::margin},
+        {QStringLiteral("sequence-run"), W::AfterPages, &sequencescenes::running},
         {QStringLiteral("device-list"), W::AfterPages, &busscenes::deviceList},
         // Small laptop screens, while connected: before port-missing.
         {QStringLiteral("laptop-1024x600"), W::AfterPages, &laptopscenes::small},

@@ -18,7 +18,8 @@ Checklist Checklist::forMap(const RegisterMap &map)
                            StepKind::KeepsSteps, StepKind::Backlash})
             c.m_steps.append({stepId(k, motor), k, motor, {}});
     }
-    for (StepKind k : {StepKind::HomingOrder, StepKind::Interpolation, StepKind::SaveToFlash})
+    for (StepKind k :
+         {StepKind::HomingOrder, StepKind::Interpolation, StepKind::RunIn, StepKind::SaveToFlash})
         c.m_steps.append({stepId(k), k, 0, {}});
     return c;
 }

@@ -27,6 +27,8 @@ QString ChecklistStep::kindWord(Kind kind)
         return QStringLiteral("homing_order");
     case Kind::Interpolation:
         return QStringLiteral("interpolation");
+    case Kind::RunIn:
+        return QStringLiteral("run_in");
     case Kind::SaveToFlash:
         return QStringLiteral("save_to_flash");
     }
@@ -35,7 +37,8 @@ QString ChecklistStep::kindWord(Kind kind)
 
 bool ChecklistStep::isMotorStep(Kind kind)
 {
-    return kind != Kind::HomingOrder && kind != Kind::Interpolation && kind != Kind::SaveToFlash;
+    return kind != Kind::HomingOrder && kind != Kind::Interpolation && kind != Kind::RunIn &&
+           kind != Kind::SaveToFlash;
 }
 
 QString ChecklistStep::resultWord(StepResult result)
@@ -100,6 +103,8 @@ QString ChecklistStep::title() const
         return tr("Machine: homing order");
     case Kind::Interpolation:
         return tr("Machine: interpolation test");
+    case Kind::RunIn:
+        return tr("Machine: run-in of its cycle");
     case Kind::SaveToFlash:
         return tr("Machine: save to flash and read back");
     }
@@ -149,6 +154,10 @@ QString ChecklistStep::instruction() const
     case Kind::Interpolation:
         return tr("Run the configured arc or line and check that the axes ended at its end "
                   "point.");
+    case Kind::RunIn:
+        return tr("Run the machine's cycle on the Sequence page for a number of cycles, with the "
+                  "lost-step check at the end. The run-in's result is recorded here: cycles, "
+                  "cycle time and whether every axis kept its steps.");
     case Kind::SaveToFlash:
         return tr("Save the parameters to flash, read them back and compare them with what "
                   "was written.");
@@ -191,6 +200,13 @@ QString ChecklistStep::measurementLabel(const QString &key)
         {QStringLiteral("spread"), QT_TR_NOOP("Spread")},
         {QStringLiteral("readings"), QT_TR_NOOP("Gauge readings")},
         {QStringLiteral("simulator"), QT_TR_NOOP("Taken on")},
+        {QStringLiteral("sequence"), QT_TR_NOOP("Sequence")},
+        {QStringLiteral("outcome"), QT_TR_NOOP("Outcome")},
+        {QStringLiteral("cycles_done"), QT_TR_NOOP("Cycles done")},
+        {QStringLiteral("cycle_min"), QT_TR_NOOP("Shortest cycle")},
+        {QStringLiteral("cycle_median"), QT_TR_NOOP("Median cycle")},
+        {QStringLiteral("cycle_max"), QT_TR_NOOP("Longest cycle")},
+        {QStringLiteral("check_steps"), QT_TR_NOOP("Lost-step check")},
     };
     const auto it = labels.constFind(key);
     return it == labels.cend() ? key : tr(*it);

@@ -32,7 +32,7 @@ struct ChecklistAttempt
 
 // One step of the commissioning checklist: per motor (direction, travel calibration, the limit
 // and home inputs, homing, keeping its steps, backlash) or for the machine (homing order,
-// interpolation, save to flash).
+// interpolation, the run-in of its cycle, save to flash).
 struct ChecklistStep
 {
     Q_DECLARE_TR_FUNCTIONS(stepcom::ChecklistStep)
@@ -48,6 +48,7 @@ public:
         Backlash,   // the backlash test with a dial gauge
         HomingOrder,
         Interpolation,
+        RunIn, // the machine's cycle run N times, then the lost-step check (Sequence page)
         SaveToFlash,
     };
 

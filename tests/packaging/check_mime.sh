@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # StepCom's file types (packaging/linux/org.stepcom.StepCom.mime.xml): the database builds from
 # them; a profile is known as StepCom's by what it holds (GIO, as GNOME's file manager asks
-# it), a session log and a support bundle by what they hold where their names do not settle it
-# (GIO takes a lone *.log or *.zip glob as it is), other JSON, log and zip files are not
-# StepCom's; the desktop entry declares exactly these types and takes the file (%f).
+# it), a sequence by its .stepseq name or what it holds, a session log and a support bundle
+# by what they hold where their names do not settle it (GIO takes a lone *.log or *.zip glob
+# as it is), other JSON, log and zip files are not StepCom's; the desktop entry declares
+# exactly these types and takes the file (%f).
 #   check_mime.sh SOURCE_DIR
 set -euo pipefail
 src=${1:?source dir}
@@ -28,6 +29,8 @@ f=$scratch/files
 mkdir -p "$f"
 printf '{\n    "format": "stepcom-profile",\n    "map": {\n    }\n}\n' >"$f/machine.json"
 printf '{\n    "name": "not a profile"\n}\n' >"$f/other.json"
+printf '{\n    "format": "stepcom-sequence",\n    "steps": [\n    ]\n}\n' >"$f/cycle.stepseq"
+printf '{\n    "format": "stepcom-sequence",\n    "steps": [\n    ]\n}\n' >"$f/cycle-copy"
 printf '# StepCom 0.1.0 session log, part 1: test\n# program: StepCom 0.1.0\n' >"$f/stepcom-20261124-221000"
 printf 'just text\n' >"$f/notes.log"
 python3 - "$f" <<'PY'
@@ -51,6 +54,8 @@ expect() {
 }
 expect machine.json application/x-stepcom-profile
 expect other.json application/json
+expect cycle.stepseq application/x-stepcom-sequence
+expect cycle-copy application/x-stepcom-sequence
 expect stepcom-20261124-221000 application/x-stepcom-session-log
 expect notes.log text/x-log
 expect stepcom-support-20261124-2210 application/x-stepcom-support-bundle

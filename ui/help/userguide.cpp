@@ -29,6 +29,7 @@ const Section sections[] = {
     {"stepcom::DevicePage", "The device: id, baud, flash, factory settings",
      "设备：ID、波特率、数据保存、出厂设置"},
     {"stepcom::PlotPage", "Live monitoring and plots", "实时监视与曲线图"},
+    {"stepcom::SequencePage", "Running a cycle", "运行工作循环"},
     {"stepcom::ChecklistPage", "Commissioning a machine step by step", "逐步调试一台机器"},
     {"stepcom::BusScanDialog", "Finding a forgotten id or baud rate", "忘记了设备 ID 或波特率"},
     {"stepcom::IdAssistantDialog", "Several controllers on one line", "一条总线上的多台控制器"},

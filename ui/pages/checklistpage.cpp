@@ -12,6 +12,7 @@
 #include "widgets/checklist/checklistinputstep.h"
 #include "widgets/checklist/checklistmotionstep.h"
 #include "widgets/checklist/checklistproofstep.h"
+#include "widgets/checklist/checklistruninstep.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -54,6 +55,8 @@ ChecklistStepWidget *makeStep(DeviceSession *session, WriteFlow *writes, const C
     case Kind::HomingOrder:
     case Kind::Interpolation:
         return new ChecklistMotionStep(session, writes, s, parent);
+    case Kind::RunIn:
+        return new ChecklistRunInStep(session, writes, s, parent);
     case Kind::SaveToFlash:
         break;
     }
@@ -116,6 +119,9 @@ ChecklistPage::ChecklistPage(DeviceSession *session, WriteFlow *writes, QWidget 
             connect(proof, &ChecklistProofStep::stepsLost, this, &ChecklistPage::stepsLost);
             connect(proof, &ChecklistProofStep::stepsKept, this, &ChecklistPage::stepsKept);
         }
+        if (auto *runIn = qobject_cast<ChecklistRunInStep *>(w))
+            connect(runIn, &ChecklistRunInStep::sequencePageWanted, this,
+                    &ChecklistPage::sequencePageWanted);
     }
     connect(m_list, &QListWidget::currentRowChanged, m_stack, &QStackedWidget::setCurrentIndex);
     connect(m_chooseProfile, &QPushButton::clicked, this, &ChecklistPage::chooseProfile);
@@ -133,6 +139,14 @@ void ChecklistPage::writeRecommendation(int motor)
     selectStep(id);
     if (auto *proof = qobject_cast<ChecklistProofStep *>(m_widgets.value(id)))
         proof->writeRecommendation();
+}
+
+void ChecklistPage::recordRunIn(StepResult result, const QList<ChecklistMeasurement> &measurements,
+                                const QString &summary)
+{
+    const QString id = Checklist::stepId(ChecklistStep::Kind::RunIn);
+    if (auto *runIn = qobject_cast<ChecklistRunInStep *>(m_widgets.value(id)))
+        runIn->record(result, measurements, summary);
 }
 
 QString ChecklistPage::defaultFile()

@@ -51,6 +51,10 @@ public:
     static QString defaultFile();
     // Opens the write dialog for the speed the motor's margin search recommended.
     void writeRecommendation(int motor);
+    // A run-in of the machine's cycle ended (the Sequence page): its result, recorded as the
+    // run-in step's attempt.
+    void recordRunIn(StepResult result, const QList<ChecklistMeasurement> &measurements,
+                     const QString &summary);
 
 protected:
     void retranslate() override;
@@ -63,6 +67,8 @@ Q_SIGNALS:
     // when one is known), or kept again.
     void stepsLost(int motor, qint64 speedRpm, std::optional<qint64> recommended);
     void stepsKept(int motor);
+    // The run-in step's "Open the Sequence page".
+    void sequencePageWanted();
 
 private:
     void load();

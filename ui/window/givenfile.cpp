@@ -26,11 +26,15 @@ GivenFile::Kind GivenFile::classify(const QString &path, QString *why)
         return Kind::SupportBundle; // the replay names what is missing in another .zip
     if (head.startsWith(QByteArrayLiteral("# StepCom ")))
         return Kind::SessionLog;
-    // A profile is a JSON object; the profile reader says what is wrong with a broken one.
+    // A sequence and a profile are JSON objects, told apart by their "format"; the readers say
+    // what is wrong with a broken one.
     if (head.trimmed().startsWith('{'))
-        return Kind::Profile;
-    *why = tr("%1 is neither a StepCom profile, a session log nor a support bundle: StepCom "
-              "opens those.")
+        return head.contains("\"stepcom-sequence\"") ||
+                       info.suffix().compare(QLatin1String("stepseq"), Qt::CaseInsensitive) == 0
+                   ? Kind::Sequence
+                   : Kind::Profile;
+    *why = tr("%1 is neither a StepCom profile, a sequence, a session log nor a support bundle: "
+              "StepCom opens those.")
                .arg(path);
     return Kind::Unknown;
 }

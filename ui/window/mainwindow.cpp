@@ -17,6 +17,7 @@
 #include "pages/motionpage.h"        // jogging
 #include "pages/motorpage.h"
 #include "pages/plotpage.h" // monitoring
+#include "pages/sequencepage.h"
 #include "pendant/pendantserver.h"
 #include "replay/replaybar.h"
 #include "replay/replaymode.h" // replaying a session log
@@ -107,10 +108,11 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
         addPage(new MotorPage(session, n, this));
     // In commissioning order: the sidebar groups them by Page::stage().
     addPage(new InputsPage(session, this));
-    addPage(m_motion = new MotionPage(session, this)); // jogging and homing
-    addPage(new ModesPage(session, this));             // special modes
-    addPage(new InterpolationPage(session, this));     // interpolation
-    addPage(m_plots = new PlotPage(session, this));    // monitoring
+    addPage(m_motion = new MotionPage(session, this));     // jogging and homing
+    addPage(new ModesPage(session, this));                 // special modes
+    addPage(new InterpolationPage(session, this));         // interpolation
+    addPage(m_plots = new PlotPage(session, this));        // monitoring
+    addPage(m_sequence = new SequencePage(session, this)); // the machine's cycle
     addPage(m_checklist = new ChecklistPage(session, m_writeFlow, this));
     addPage(new DevicePage(session, this)); // its id and baud, save to flash, factory reset
     m_sidebar->setCurrentPage(0);
@@ -132,6 +134,7 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
     centralLayout->addWidget(m_strip);
     m_estopButton = m_strip->emergencyStopButton();
     watchProofs();
+    watchSequence();
     m_estopAction->setEnabled(m_estop->isAvailable());
     connect(m_estop, &EmergencyStop::availabilityChanged, this, [this](bool available) {
         m_estopAction->setEnabled(available);

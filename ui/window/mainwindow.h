@@ -15,6 +15,7 @@ namespace stepcom {
 class BackupGuard;
 class ChecklistPage;
 class PlotPage;
+class SequencePage;
 class DeviceSession;
 class EmergencyStop;
 class GuideWindow;
@@ -88,6 +89,8 @@ private:
     // A proof of an axis that lost steps at the motor's own settings: a warning in the strip,
     // its recommended speed (or the way to find one) one click away (mainwindowlayout.cpp).
     void watchProofs();
+    // The Sequence page's run: the strip's line, the run-in to the checklist.
+    void watchSequence();
     void retranslate();
     void retranslateEmergencyStop();
     void updateActions();
@@ -138,6 +141,7 @@ private:
     WriteFlow *m_writeFlow = nullptr;
     ChecklistPage *m_checklist = nullptr;
     PlotPage *m_plots = nullptr;
+    SequencePage *m_sequence = nullptr;
     BackupGuard *m_backups = nullptr;
     QPointer<QMessageBox> m_closeQuestion;
     QPointer<QMessageBox> m_givenFileError;

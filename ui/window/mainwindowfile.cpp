@@ -3,6 +3,7 @@
 // (split from mainwindow.cpp).
 #include "window/mainwindow.h"
 
+#include "pages/sequencepage.h"
 #include "replay/replaymode.h"
 #include "session/devicesession.h"
 #include "widgets/docks/messageview.h"
@@ -19,6 +20,9 @@ bool MainWindow::openGivenFile(const QString &path)
     switch (GivenFile::classify(path, &why)) {
     case GivenFile::Kind::Profile:
         return m_profiles->openFile(path); // no controller connected: edited as a file
+    case GivenFile::Kind::Sequence:
+        showPage(int(m_pages.indexOf(m_sequence)));
+        return m_sequence->openFile(path);
     case GivenFile::Kind::SessionLog:
     case GivenFile::Kind::SupportBundle:
         return m_replay->openPath(path);

@@ -3,10 +3,12 @@
 #include "window/mainwindow.h"
 
 #include "pages/checklistpage.h"
+#include "pages/sequencepage.h"
 #include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/pagesidebar.h"
 #include "widgets/docks/statusdock.h"
+#include "widgets/sequence/sequencerunpanel.h"
 
 #include <QDockWidget>
 #include <QScreen>
@@ -192,6 +194,15 @@ void MainWindow::watchProofs()
             });
     connect(m_checklist, &ChecklistPage::stepsKept, this,
             [this] { m_strip->setProofWarning({}, {}, {}); });
+}
+
+void MainWindow::watchSequence()
+{
+    connect(m_sequence, &SequencePage::runText, m_strip, &MachineStrip::setSequenceText);
+    connect(m_sequence->runPanel(), &SequenceRunPanel::runInFinished, m_checklist,
+            &ChecklistPage::recordRunIn);
+    connect(m_checklist, &ChecklistPage::sequencePageWanted, this,
+            [this] { showPage(int(m_pages.indexOf(m_sequence))); });
 }
 
 } // namespace stepcom

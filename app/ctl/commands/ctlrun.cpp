@@ -6,6 +6,7 @@
 #include "proof/axisproof.h"
 #include "sequence/sequencecheck.h"
 #include "sequence/sequenceparser.h"
+#include "sequence/sequenceplan.h"
 #include "sequence/sequencerunner.h"
 #include "signalwatcher.h"
 
@@ -20,73 +21,6 @@
 namespace stepcom {
 
 namespace {
-
-QString axesText(const RegisterMap &map, const QMap<int, double> &axes)
-{
-    QStringList parts;
-    for (auto it = axes.begin(); it != axes.end(); ++it) {
-        const Parameter *p = map.blockParameter(kMotorBlock, it.key(), QStringLiteral("position"));
-        parts << QStringLiteral("motor%1 %2 %3")
-                     .arg(it.key())
-                     .arg(it.value(), 0, 'f', p ? p->decimals() : 2)
-                     .arg(p ? p->unit : QString());
-    }
-    return parts.join(QLatin1String(", "));
-}
-
-// The motors a move of the sequence drives: the axes --check-steps proves afterwards.
-QList<int> movedMotors(const Sequence &s)
-{
-    QList<int> motors;
-    for (const SequenceStep *step : s.allSteps()) {
-        if (step->kind != SequenceStep::Kind::MoveTo && step->kind != SequenceStep::Kind::MoveBy)
-            continue;
-        for (auto it = step->axes.begin(); it != step->axes.end(); ++it) {
-            if (!motors.contains(it.key()))
-                motors << it.key();
-        }
-    }
-    std::sort(motors.begin(), motors.end());
-    return motors;
-}
-
-// What the run will do, said before it is asked about.
-QString plan(const CtlContext &ctx, const Sequence &s)
-{
-    QString text =
-        CtlRunner::tr("Sequence %1: %n step(s) in the file", nullptr, int(s.allSteps().size()))
-            .arg(s.fileName) +
-        QLatin1Char('\n');
-    for (auto it = s.points.begin(); it != s.points.end(); ++it)
-        text += CtlRunner::tr("  point %1: %2").arg(it.key(), axesText(ctx.map, it.value())) +
-                QLatin1Char('\n');
-    for (auto it = s.limits.axes().begin(); it != s.limits.axes().end(); ++it) {
-        const Parameter *p =
-            ctx.map.blockParameter(kMotorBlock, it.key(), QStringLiteral("position"));
-        if (!p)
-            continue;
-        text += CtlRunner::tr("  limits motor%1: %2 .. %3 %4")
-                    .arg(it.key())
-                    .arg(it->min ? p->formatRaw(*it->min) : QStringLiteral("−∞"),
-                         it->max ? p->formatRaw(*it->max) : QStringLiteral("+∞"), p->unit) +
-                QLatin1Char('\n');
-    }
-    text += (s.outputsOffOnStop ? CtlRunner::tr("  on a stop: all outputs off")
-                                : CtlRunner::tr("  on a stop: the outputs are left as they are")) +
-            QLatin1Char('\n');
-    text += CtlRunner::tr("  cycles: %1 (the whole step list each time)").arg(ctx.options.cycles) +
-            QLatin1Char('\n');
-    if (ctx.options.checkSteps) {
-        QStringList motors;
-        for (int m : movedMotors(s))
-            motors << QStringLiteral("motor%1").arg(m);
-        text += CtlRunner::tr("  then the lost-step test (lost-steps) on %1, each referenced on "
-                              "its home switch")
-                    .arg(motors.join(QLatin1String(", "))) +
-                QLatin1Char('\n');
-    }
-    return text;
-}
 
 int exitFor(SequenceResult::Outcome outcome)
 {
@@ -240,8 +174,8 @@ void startRun(CtlContext &ctx, const Sequence &sequence)
                      CtlRunner::tr("cycle %1 done in %2 s").arg(cycle).arg(seconds, 0, 'f', 3));
             });
         QObject::connect(runner, &SequenceRunner::finished, ctx.runner(),
-                         [&ctx, moved = movedMotors(sequence), limits = sequence.limits,
-                          checking](const SequenceResult &r) {
+                         [&ctx, moved = SequencePlan::movedMotors(sequence),
+                          limits = sequence.limits, checking](const SequenceResult &r) {
                              if (ctx.options.checkSteps && r.ok()) {
                                  // The file's limits hold for the tests' moves too.
                                  ctx.session->setTravelLimits(limits);
@@ -288,7 +222,8 @@ void runRun(CtlContext &ctx)
                  CtlRunner::tr("the sequence file was refused: nothing was sent"));
         return;
     }
-    const QString shown = plan(ctx, *sequence);
+    const QString shown =
+        SequencePlan::describe(*sequence, ctx.map, ctx.options.cycles, ctx.options.checkSteps);
     if (ctx.options.yes) {
         ctx.out << shown;
         startRun(ctx, *sequence);

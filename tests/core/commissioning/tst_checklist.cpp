@@ -57,7 +57,7 @@ private Q_SLOTS:
     {
         const Checklist c = Checklist::forMap(RegisterMap::builtin());
         QCOMPARE(c.motorCount(), 2);
-        QCOMPARE(c.steps().size(), 2 * 8 + 3);
+        QCOMPARE(c.steps().size(), 2 * 8 + 4);
         QStringList ids;
         for (const ChecklistStep &s : c.steps()) {
             ids << s.id;
@@ -68,7 +68,7 @@ private Q_SLOTS:
                  (QStringList{"motor1.direction", "motor1.calibration", "motor1.limit_positive",
                               "motor1.limit_negative", "motor1.home_input", "motor1.homing"}));
         QCOMPARE(ids.mid(16), (QStringList{"machine.homing_order", "machine.interpolation",
-                                           "machine.save_to_flash"}));
+                                           "machine.run_in", "machine.save_to_flash"}));
         QCOMPARE(c.step(QStringLiteral("motor2.homing"))->title(),
                  QStringLiteral("Motor 2: homing"));
         QCOMPARE(c.verdict(), Checklist::Verdict::NotStarted);
@@ -99,7 +99,7 @@ private Q_SLOTS:
         QCOMPARE(c.verdict(), Checklist::Verdict::Passed);
         QVERIFY(c.nextPending() == nullptr);
         QCOMPARE(c.summary(),
-                 QStringLiteral("19 of 19 steps passed, 0 failed, 0 skipped, 0 not run"));
+                 QStringLiteral("20 of 20 steps passed, 0 failed, 0 skipped, 0 not run"));
         QCOMPARE(c.record(QStringLiteral("machine.interpolation"), StepResult::Skipped, {}, {}, t0),
                  QString());
         QCOMPARE(c.verdict(), Checklist::Verdict::PassedWithSkips);

@@ -74,7 +74,7 @@ private Q_SLOTS:
         QCOMPARE(rows,
                  QStringList({"# Connect", "Connection", "# Set up", "Motor 1", "Motor 2",
                               "Inputs and limits", "Jog and home", "Special modes",
-                              "# Move and run", "Interpolation", "Plots",
+                              "# Move and run", "Interpolation", "Plots", "Sequence",
                               "# Check, save and report", "Commissioning checklist", "Device"}));
         // Every page once, by its title.
         for (int i = 0; i < WindowProbe(window).pages().size(); ++i)

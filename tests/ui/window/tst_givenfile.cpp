@@ -124,7 +124,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("said");
         QTest::newRow("a picture")
             << QStringLiteral("photo.png") << QByteArray("\x89PNG\r\n\x1a\n", 8)
-            << QStringLiteral("neither a StepCom profile");
+            << QStringLiteral("neither a StepCom profile, a sequence");
         QTest::newRow("missing") << QStringLiteral("gone.json") << QByteArray()
                                  << QStringLiteral("no such file");
         QTest::newRow("broken profile")

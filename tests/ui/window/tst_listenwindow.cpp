@@ -55,13 +55,12 @@ bool ask(QSerialPort &plc, const QByteArray &request, int answerBytes)
     plc.readAll();
     plc.write(request);
     QByteArray answer;
-    QElapsedTimer t;
-    t.start();
-    while (answer.size() < answerBytes && t.elapsed() < 5000) {
-        QTest::qWait(5);
-        answer += plc.readAll();
-    }
-    return answer.size() >= answerBytes;
+    return QTest::qWaitFor(
+        [&] {
+            answer += plc.readAll();
+            return answer.size() >= answerBytes;
+        },
+        10000);
 }
 
 } // namespace

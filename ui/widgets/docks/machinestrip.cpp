@@ -63,6 +63,7 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     , m_line(new ElidedLabel(this))
     , m_device(new ElidedLabel(this))
     , m_pendant(new QLabel(this))
+    , m_sequence(new QLabel(this))
     , m_proofWarning(new QLabel(this))
     , m_proofAction(new QToolButton(this))
     , m_estopButton(estop->createButton(this))
@@ -141,6 +142,9 @@ MachineStrip::MachineStrip(DeviceSession *session, EmergencyStop *estop, QWidget
     m_pendant->setObjectName(QStringLiteral("stripPendant"));
     m_pendant->hide();
     linkColumn->addWidget(m_pendant);
+    m_sequence->setObjectName(QStringLiteral("stripSequence"));
+    m_sequence->hide();
+    linkColumn->addWidget(m_sequence);
     m_proofWarning->setObjectName(QStringLiteral("stripProofWarning"));
     m_proofWarning->setStyleSheet(QStringLiteral("color: #c62828; font-weight: bold;"));
     m_proofAction->setObjectName(QStringLiteral("stripProofAction"));
@@ -370,6 +374,13 @@ void MachineStrip::showReplayLink(bool linkUp, bool answering, const QString &li
 {
     m_replay = ReplayLink{linkUp, answering, line};
     refreshLink();
+}
+
+void MachineStrip::setSequenceText(const QString &text)
+{
+    m_sequence->setText(text);
+    m_sequence->setAccessibleName(text);
+    m_sequence->setVisible(!text.isEmpty());
 }
 
 void MachineStrip::setPendantText(const QString &text)

@@ -55,6 +55,9 @@ public:
     // "Pendant: 1 phone watching" / "Pendant: jogging from 192.168.1.23"; empty hides it.
     void setPendantText(const QString &text);
     QLabel *pendantLabel() const { return m_pendant; }
+    // "Running sequence: cycle 3 of 10, step 4" (the Sequence page's run); empty hides it.
+    void setSequenceText(const QString &text);
+    QLabel *sequenceLabel() const { return m_sequence; }
     // A proof of an axis failed at the user's own settings: "Motor 1 lost steps at 300 rpm" and
     // a button (`action`, e.g. "Use 225 rpm…") that runs `onAction`; an empty text hides both.
     void setProofWarning(const QString &text, const QString &action,
@@ -98,6 +101,7 @@ private:
     ElidedLabel *m_line;
     ElidedLabel *m_device; // a long name gives way: the strip must not widen the window
     QLabel *m_pendant;     // who watches or jogs from a phone (PendantActions)
+    QLabel *m_sequence;    // the run of the Sequence page
     QLabel *m_proofWarning;
     QToolButton *m_proofAction;
     std::function<void()> m_onProofAction;

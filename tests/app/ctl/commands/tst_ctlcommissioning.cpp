@@ -155,7 +155,7 @@ private Q_SLOTS:
                        {QStringLiteral("report"), QStringLiteral("--from"), profile, html});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("with the commissioning checklist "
-                                               "machine-c.checklist.json: 1 of 19 steps passed")),
+                                               "machine-c.checklist.json: 1 of 20 steps passed")),
                  qPrintable(r.out));
         QFile f(html);
         QVERIFY(f.open(QIODevice::ReadOnly));
