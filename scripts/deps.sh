@@ -13,7 +13,7 @@ packages=(build-essential cmake ninja-build pkg-config
           qt6-base-dev qt6-serialbus-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools
           qt6-l10n-tools qt6-charts-dev libqt6opengl6-dev libxkbcommon-dev qt6-svg-dev
           qt6-translations-l10n libgl-dev libquazip1-qt6-dev
-          qt6-httpserver-dev qt6-websockets-dev libqrencode-dev
+          qt6-httpserver-dev qt6-websockets-dev libqrencode-dev libsdl2-dev
           qt6-qpa-plugins fonts-noto-cjk help2man)
 if [[ "${1:-}" == "--test" ]]; then
     packages+=(mbpoll socat python3-pymodbus python3-serial-asyncio xvfb xauth dpkg-dev file poppler-utils

@@ -345,9 +345,9 @@ int DeviceSession::stopJogging(JogStop why)
 {
     switch (why) {
     case JogStop::PageLeft:
-        return m_jog->stopAll(tr("the page was left"));
+        return m_jog->stopAll(tr("the page was left"), true);
     case JogStop::FocusLost:
-        return m_jog->stopAll(tr("the window lost focus"));
+        return m_jog->stopAll(tr("the window lost focus"), true);
     case JogStop::WindowClosing:
         return m_jog->stopAll(tr("the window closes"));
     }

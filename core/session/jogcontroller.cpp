@@ -178,6 +178,15 @@ bool JogController::press(int motor, Direction direction, Source source)
         return false;
     }
     Motor &m = at(motor);
+    if (m.state == State::Jogging && m.source == Source::Gamepad && source != Source::Gamepad) {
+        // A second hand on an axis the pad jogs: the pad lets go, and this press is not taken
+        // either -- one hand at a time, the new one presses again.
+        release(motor, Source::Gamepad, tr("another hand took over from the pad"));
+        say(Severity::Warning,
+            tr("Motor %1 was jogged from the pad: it stops; press again to jog it here")
+                .arg(motor));
+        return false;
+    }
     if (m.state == State::Jogging) {
         say(Severity::Warning, tr("Motor %1 already jogs %2: let go of it first")
                                    .arg(motor)
@@ -264,11 +273,13 @@ void JogController::stop(int motor, const QString &reason)
     sendStop(motor, reason.isEmpty() ? tr("stop button") : reason);
 }
 
-int JogController::stopAll(const QString &reason)
+int JogController::stopAll(const QString &reason, bool spareGamepad)
 {
     int stops = 0;
     for (int n = 1; n <= motorCount(); ++n) {
         Motor &m = at(n);
+        if (spareGamepad && m.source == Source::Gamepad && m.state == State::Jogging)
+            continue;
         if (m.state == State::StillRunning) {
             sendStop(n, reason);
             ++stops;

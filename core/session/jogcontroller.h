@@ -26,8 +26,9 @@ public:
     enum class Direction { Forward, Reverse };
     Q_ENUM(Direction)
     // Who holds the jog: a release only ends a jog started by the same hand. Pendant: a phone
-    // through core/pendant, whose hold messages keep it going.
-    enum class Source { Pointer, Keyboard, Pendant };
+    // through core/pendant, whose hold messages keep it going. Gamepad: a pad through
+    // core/gamepad, held by its dead-man; any other hand pressing on that motor ends it.
+    enum class Source { Pointer, Keyboard, Pendant, Gamepad };
     Q_ENUM(Source)
     enum class State {
         Idle,
@@ -54,8 +55,9 @@ public:
     // The stop button: send the stop now, whoever started the motion.
     void stop(int motor, const QString &reason = QString());
     // Stop every jog this controller started (focus loss, page change, exit ...). Returns how
-    // many stops it sent or scheduled.
-    int stopAll(const QString &reason);
+    // many stops it sent or scheduled. `spareGamepad`: a pad's jogs go on (the pad is held at
+    // the machine, whatever the window does; its dead-man and its silence stop them).
+    int stopAll(const QString &reason, bool spareGamepad = false);
 
     State state(int motor) const;
     std::optional<Direction> direction(int motor) const; // of the jog held, if any

@@ -23,7 +23,8 @@ declare -A allowed=(
     [core/listen]="map bus session support"
     [core/sequence]="map bus device motion session"
     [core/proof]="map bus device motion session"
-    [ui]="map device motion session line profile commissioning report i18n support pendant listen proof sequence"
+    [core/gamepad]="session"
+    [ui]="map device motion session line profile commissioning report i18n support pendant listen proof sequence gamepad"
 )
 bad=0
 # The rules themselves must have no cycle: a room never reaches itself through the others.
