@@ -1,6 +1,7 @@
 #include "ctlbusmonitor.h"
 
 #include "ctlmonitor.h"
+#include "session/buspoller.h"
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionline.h"
@@ -18,14 +19,23 @@ CtlBusMonitor::CtlBusMonitor(DeviceSession *session, const QList<int> &ids, int 
     , m_session(session)
     , m_ids(ids)
     , m_params(CtlMonitor::statusParameters(*session))
+    , m_poller(new BusPoller(
+          session->map(),
+          [this](int id, const QList<const Parameter *> &params,
+                 std::function<void(const ReadOutcome &)> done) { read(id, params, done); },
+          this))
     , m_count(count)
-    , m_intervalMs(std::max(0, intervalMs))
     , m_json(json)
     , m_out(stdout)
     , m_err(stderr)
 {
-    m_timer.setSingleShot(true);
-    connect(&m_timer, &QTimer::timeout, this, &CtlBusMonitor::turn);
+    QStringList keys;
+    for (const Parameter *p : std::as_const(m_params))
+        keys << p->key;
+    m_poller->setKeys(keys);
+    m_poller->setPacing(BusPoller::Pacing::Rounds);
+    m_poller->setIntervalMs(intervalMs);
+    m_poller->setDevices(m_ids);
     connect(m_session->connection(), &SessionConnection::linkLost, this,
             [this](const QString &reason) {
                 sayError(tr("link lost: %1").arg(reason));
@@ -57,10 +67,9 @@ void CtlBusMonitor::start()
     // Ctrl-C and SIGTERM end the run between two lines, never in the middle of one.
     m_signals = new SignalWatcher(this);
     connect(m_signals, &SignalWatcher::terminationRequested, this,
-            [this] { end(m_failed.isEmpty() ? 0 : 1); });
+            [this] { end(anyFailed() ? 1 : 0); });
     m_clock.start();
-    m_round.start();
-    turn();
+    m_poller->start();
 }
 
 QString CtlBusMonitor::sampleLine(int id, qint64 tMs, const QHash<QString, qint64> &values) const
@@ -81,25 +90,23 @@ QString CtlBusMonitor::sampleLine(int id, qint64 tMs, const QHash<QString, qint6
     return line;
 }
 
-void CtlBusMonitor::turn()
+void CtlBusMonitor::read(int id, const QList<const Parameter *> &params,
+                         const std::function<void(const ReadOutcome &)> &done)
 {
-    if (m_ended)
-        return;
-    const int id = m_ids.at(m_next);
-    if (m_next == 0)
-        m_round.restart();
     m_session->line()->showDevice(id); // the one-shot session reads nothing on its own when shown
-    const quint64 generation = m_generation;
     m_session->parameters()->read(
-        m_params, [this, generation, id](const ReadOutcome &r) { onRead(generation, id, r); },
+        params,
+        [this, id, done](const ReadOutcome &r) {
+            done(r); // the poller counts it and arms the next turn
+            onRead(id, r);
+        },
         Priority::Poll);
 }
 
-void CtlBusMonitor::onRead(quint64 generation, int id, const ReadOutcome &outcome)
+void CtlBusMonitor::onRead(int id, const ReadOutcome &outcome)
 {
-    if (generation != m_generation || m_ended)
+    if (m_ended)
         return;
-    ++m_samples[id];
     m_session->statusSampled(id, outcome.ok, outcome.values);
     if (outcome.ok) {
         m_out << sampleLine(id, m_clock.elapsed(), outcome.values) << QLatin1Char('\n');
@@ -107,17 +114,10 @@ void CtlBusMonitor::onRead(quint64 generation, int id, const ReadOutcome &outcom
         std::fflush(stdout);
     } else {
         // A device that does not answer is no reason to stop watching the others.
-        ++m_failed[id];
         sayError(tr("id %1: %2").arg(id).arg(outcome.errors.join(QLatin1String("; "))));
     }
-    if (countReached()) {
-        end(m_failed.isEmpty() ? 0 : 1);
-        return;
-    }
-    m_next = (m_next + 1) % int(m_ids.size());
-    // The next device at once; the next round no sooner than the interval after the last began.
-    const qint64 wait = m_next == 0 ? std::max<qint64>(0, m_intervalMs - m_round.elapsed()) : 0;
-    m_timer.start(int(wait));
+    if (countReached())
+        end(anyFailed() ? 1 : 0);
 }
 
 bool CtlBusMonitor::countReached() const
@@ -125,7 +125,13 @@ bool CtlBusMonitor::countReached() const
     if (m_count < 1)
         return false;
     return std::all_of(m_ids.cbegin(), m_ids.cend(),
-                       [this](int id) { return m_samples.value(id) >= m_count; });
+                       [this](int id) { return m_poller->status(id).cycles >= m_count; });
+}
+
+bool CtlBusMonitor::anyFailed() const
+{
+    return std::any_of(m_ids.cbegin(), m_ids.cend(),
+                       [this](int id) { return m_poller->status(id).errors > 0; });
 }
 
 void CtlBusMonitor::sayError(const QString &text)
@@ -139,8 +145,9 @@ QJsonObject CtlBusMonitor::summary() const
     QJsonObject samples;
     QJsonObject failed;
     for (const int id : m_ids) {
-        samples.insert(QString::number(id), m_samples.value(id) - m_failed.value(id));
-        failed.insert(QString::number(id), m_failed.value(id));
+        const BusDeviceStatus s = m_poller->status(id);
+        samples.insert(QString::number(id), s.cycles - s.errors);
+        failed.insert(QString::number(id), s.errors);
     }
     return {{QStringLiteral("samples"), samples},
             {QStringLiteral("failed"), failed},
@@ -152,8 +159,7 @@ void CtlBusMonitor::end(int exitCode)
     if (m_ended)
         return;
     m_ended = true;
-    ++m_generation;
-    m_timer.stop();
+    m_poller->stop();
     m_out.flush();
     Q_EMIT finished(exitCode);
 }

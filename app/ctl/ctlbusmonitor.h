@@ -6,10 +6,12 @@
 #include <QList>
 #include <QObject>
 #include <QTextStream>
-#include <QTimer>
+
+#include <functional>
 
 namespace stepcom {
 
+class BusPoller;
 class DeviceSession;
 class SignalWatcher;
 struct Parameter;
@@ -21,7 +23,8 @@ struct ReadOutcome;
 // samples of each device. A restart of a device, certain or possible, is said as `monitor` of
 // one says it (an event line with its id, or words on standard error). The exit code is the worst
 // of the devices': 1 for a device one of whose reads failed (said on standard error with its id), 1
-// when the link was lost.
+// when the link was lost. The turns are the window's background poll's (BusPoller, in rounds);
+// each read goes through the session, the device shown for it.
 class CtlBusMonitor : public QObject
 {
     Q_OBJECT
@@ -40,9 +43,12 @@ Q_SIGNALS:
     void finished(int exitCode);
 
 private:
-    void turn();
-    void onRead(quint64 generation, int id, const ReadOutcome &outcome);
+    // The poller's turn: `id`'s status read through the session.
+    void read(int id, const QList<const Parameter *> &params,
+              const std::function<void(const ReadOutcome &)> &done);
+    void onRead(int id, const ReadOutcome &outcome);
     bool countReached() const;
+    bool anyFailed() const;
     void end(int exitCode);
     // `text` on standard error, kept among errors().
     void sayError(const QString &text);
@@ -53,19 +59,13 @@ private:
     SignalWatcher *m_signals = nullptr;
     QList<int> m_ids;
     QList<const Parameter *> m_params;
+    BusPoller *m_poller; // the turns, and each device's reads and failed ones
     int m_count;
-    int m_intervalMs;
     bool m_json;
-    int m_next = 0;
-    QHash<int, int> m_samples; // reads per device, good or not
-    QHash<int, int> m_failed;  // of those, failed
-    quint64 m_generation = 0;  // an answer after end() is dropped
     int m_events = 0;
     QStringList m_errors;
-    bool m_ended = false;
+    bool m_ended = false; // an answer after end() is dropped
     QElapsedTimer m_clock;
-    QElapsedTimer m_round; // since the start of the current round
-    QTimer m_timer;
     QTextStream m_out;
     QTextStream m_err;
 };

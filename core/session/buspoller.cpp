@@ -8,8 +8,21 @@
 namespace stepcom {
 
 BusPoller::BusPoller(ModbusLink *link, const RegisterMap &map, QObject *parent)
+    : BusPoller(map, {}, parent)
+{
+    m_client = new DeviceClient(link, map, this);
+    m_map = &m_client->map();
+    m_read = [this](int id, const QList<const Parameter *> &params,
+                    std::function<void(const ReadOutcome &)> done) {
+        m_client->setUnitId(id); // one turn at a time: the id is this turn's until it ends
+        m_client->read(params, Priority::Poll, std::move(done));
+    };
+}
+
+BusPoller::BusPoller(const RegisterMap &map, Reader read, QObject *parent)
     : QObject(parent)
-    , m_client(new DeviceClient(link, map, this))
+    , m_map(&map)
+    , m_read(std::move(read))
 {
     m_timer.setSingleShot(true);
     connect(&m_timer, &QTimer::timeout, this, &BusPoller::turn);
@@ -28,7 +41,15 @@ void BusPoller::setDevices(const QList<int> &ids)
 
 void BusPoller::setIntervalMs(int ms)
 {
-    m_intervalMs = ms <= 0 ? 0 : std::max(50, ms); // 0: each turn as the last one ends
+    m_intervalMs = std::max(0, ms); // 0: each turn as the last one ends
+}
+
+int BusPoller::intervalMs() const
+{
+    // Rounds are what a command line asked for; the window's background never hogs the line.
+    if (m_pacing == Pacing::Rounds || m_intervalMs == 0)
+        return m_intervalMs;
+    return std::max(50, m_intervalMs);
 }
 
 void BusPoller::start()
@@ -72,24 +93,32 @@ void BusPoller::arm()
 {
     if (!m_active || m_ids.isEmpty())
         return;
+    if (m_pacing == Pacing::Rounds) {
+        const qint64 wait = m_next == 0 && m_round.isValid()
+                                ? std::max<qint64>(0, m_intervalMs - m_round.elapsed())
+                                : 0;
+        m_timer.start(int(wait));
+        return;
+    }
     // Spread the turns so every device comes round once per interval.
-    m_timer.start(m_intervalMs / int(m_ids.size()));
+    m_timer.start(intervalMs() / int(m_ids.size()));
 }
 
 void BusPoller::turn()
 {
     if (!m_active || m_ids.isEmpty())
         return;
+    if (m_next == 0)
+        m_round.start();
     const int id = m_ids.at(m_next % m_ids.size());
     m_next = (m_next + 1) % int(m_ids.size());
     QList<const Parameter *> params;
     for (const QString &key : std::as_const(m_keys))
-        if (const Parameter *p = m_client->map().find(key))
+        if (const Parameter *p = m_map->find(key))
             params << p;
     m_busy = true;
-    m_client->setUnitId(id); // one turn at a time: the id is this turn's until it ends
     const quint64 generation = m_generation;
-    m_client->read(params, Priority::Poll, [this, id, generation](const ReadOutcome &r) {
+    m_read(id, params, [this, id, generation](const ReadOutcome &r) {
         if (generation != m_generation)
             return;
         m_busy = false;
