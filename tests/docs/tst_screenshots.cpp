@@ -82,7 +82,7 @@ private Q_SLOTS:
                      {QStringLiteral("--out"), out.path(), QStringLiteral("--lang"), language});
         }
         for (auto &p : runs) {
-            QTRY_VERIFY_WITH_TIMEOUT(p->state() == QProcess::NotRunning, 150000);
+            QTRY_VERIFY_WITH_TIMEOUT(p->state() == QProcess::NotRunning, 270000);
             QCOMPARE(p->exitStatus(), QProcess::NormalExit);
             QCOMPARE(p->exitCode(), 0);
             const QString written = QString::fromUtf8(p->readAllStandardOutput());
