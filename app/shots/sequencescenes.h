@@ -8,8 +8,8 @@ class Shooter;
 namespace sequencescenes {
 
 // A pick-and-place cycle for motor 1 (home, then load and unload points with the part sensor
-// IN3 held ON by the simulator), run for 5 cycles and shot during the second; the run is
-// stopped and the input let go afterwards.
+// IN3 held ON by the simulator), run for 5 cycles and shot on the first cycle's way back; the run
+// is stopped and the input let go afterwards.
 void running(Shooter &s);
 
 } // namespace sequencescenes
