@@ -2,11 +2,7 @@
 
 #include "sim/serve/simtcplistener.h"
 
-#include <QElapsedTimer>
-
 namespace stepcom {
-
-class SimResponder;
 
 // The simulated controller behind a transparent RS-485/Ethernet converter: Modbus RTU frames,
 // CRC and all, over a plain TCP connection (no MBAP header). Frames with a bad CRC and
@@ -20,14 +16,11 @@ public:
 private:
     QString listenError(const QHostAddress &address, quint16 port,
                         const QString &reason) const override;
-    void onReadyRead(QTcpSocket *socket) override;
+    void heard(QTcpSocket *socket, const QByteArray &bytes) override;
+    Taken take(QByteArray &buffer) override;
+    QByteArray frame(const Taken &request, const SimResponder::Outcome &out) const override;
 
-    SimResponder *m_responder;
     bool m_echo;
-    // The controller does one thing at a time: a request that arrives while an answer is
-    // pending is taken up only once that answer has left.
-    QElapsedTimer m_clock;
-    qint64 m_freeAtMs = 0;
 };
 
 } // namespace stepcom

@@ -1,16 +1,19 @@
 #include "sim/serve/simtcplistener.h"
 
+#include <QPointer>
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTimer>
 
 namespace stepcom {
 
-SimTcpListener::SimTcpListener(QObject *parent)
+SimTcpListener::SimTcpListener(SimResponder *responder, QObject *parent)
     : QObject(parent)
+    , m_responder(responder)
     , m_server(new QTcpServer(this))
     , m_reopen(new QTimer(this))
 {
+    m_clock.start();
     m_reopen->setSingleShot(true);
     connect(m_server, &QTcpServer::newConnection, this, &SimTcpListener::onNewConnection);
     connect(m_reopen, &QTimer::timeout, this, [this] {
@@ -64,6 +67,47 @@ void SimTcpListener::onNewConnection()
         connect(socket, &QTcpSocket::disconnected, this,
                 [this, socket] { dropConnection(socket); });
     }
+}
+
+void SimTcpListener::heard(QTcpSocket *, const QByteArray &) {}
+
+void SimTcpListener::onReadyRead(QTcpSocket *socket)
+{
+    if (!m_buffers.contains(socket))
+        return;
+    const QByteArray bytes = socket->readAll();
+    heard(socket, bytes);
+    m_buffers[socket].append(bytes);
+    // An answer may hang up or drop the connection: its buffer is looked up again each time.
+    for (auto it = m_buffers.find(socket); it != m_buffers.end(); it = m_buffers.find(socket)) {
+        const Taken taken = take(*it);
+        if (taken.what == Taken::What::Wait)
+            return;
+        if (taken.what == Taken::What::Drop) {
+            dropConnection(socket);
+            return;
+        }
+        // Another id's request is silence; unit 0 is a broadcast, acted on, never answered.
+        const SimResponder::Outcome out = m_responder->respond(taken.unit, taken.request);
+        if (taken.unit != 0 && out.response.isValid())
+            send(socket, frame(taken, out), out);
+    }
+}
+
+void SimTcpListener::send(QTcpSocket *socket, const QByteArray &bytes,
+                          const SimResponder::Outcome &out)
+{
+    const qint64 now = m_clock.elapsed();
+    const qint64 leaveAt = std::max(now, m_freeAtMs) + out.delayMs;
+    m_freeAtMs = leaveAt;
+    QPointer<QTcpSocket> target(socket);
+    const bool hangUpAfter = out.hangUp;
+    QTimer::singleShot(int(leaveAt - now), this, [this, target, bytes, hangUpAfter] {
+        if (target && m_buffers.contains(target.data()))
+            target->write(bytes);
+        if (hangUpAfter)
+            Q_EMIT hangUpRequested();
+    });
 }
 
 void SimTcpListener::dropConnection(QTcpSocket *socket)

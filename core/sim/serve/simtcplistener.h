@@ -1,5 +1,8 @@
 #pragma once
 
+#include "sim/serve/simresponder.h"
+
+#include <QElapsedTimer>
 #include <QHash>
 #include <QHostAddress>
 #include <QObject>
@@ -13,8 +16,11 @@ QT_END_NAMESPACE
 namespace stepcom {
 
 // What the simulator's TCP servers share: listening, taking connections with a buffer each,
-// dropping them, and hanging up (drop everything, refuse connections for a while, listen on the
-// same port again). A server adds only how it reads requests from a buffer and answers them.
+// dropping them, hanging up (drop everything, refuse connections for a while, listen on the
+// same port again), and serving: every whole request goes to the SimResponder, the faults it
+// decides apply alike, and the answers leave one after the other, as the one controller behind
+// them does one thing at a time. A server adds only its framing: how a request is taken from a
+// buffer and how an answer is framed.
 class SimTcpListener : public QObject
 {
     Q_OBJECT
@@ -36,25 +42,49 @@ Q_SIGNALS:
     void reopened();
 
 protected:
-    explicit SimTcpListener(QObject *parent);
+    // One request taken from the front of a connection's buffer.
+    struct Taken
+    {
+        enum class What {
+            Wait,    // nothing whole yet: wait for more bytes
+            Request, // `unit` and `request` were taken off the buffer
+            Drop,    // not this protocol: the connection is dropped
+        };
+        What what = What::Wait;
+        int unit = 0;
+        QModbusRequest request;
+        quint16 transaction = 0; // Modbus TCP's, repeated in its answer
+    };
+
+    SimTcpListener(SimResponder *responder, QObject *parent);
 
     // Why listening failed, in the server's own words (and translation context).
     virtual QString listenError(const QHostAddress &address, quint16 port,
                                 const QString &reason) const = 0;
-    // Bytes arrived on `socket`: take them, append them to its buffer, answer what is whole.
-    virtual void onReadyRead(QTcpSocket *socket) = 0;
-    void dropConnection(QTcpSocket *socket);
-    // The bytes received on each open connection and not handled yet.
-    QHash<QTcpSocket *, QByteArray> &buffers() { return m_buffers; }
+    // The next request in `buffer`, removed from it (with what it discards).
+    virtual Taken take(QByteArray &buffer) = 0;
+    // The bytes of the answer `out` to `request`, with its faults (collision, CRC).
+    virtual QByteArray frame(const Taken &request, const SimResponder::Outcome &out) const = 0;
+    // Every byte as it arrives, before it is taken (an adapter's echo).
+    virtual void heard(QTcpSocket *socket, const QByteArray &bytes);
 
 private:
     void onNewConnection();
+    // Bytes arrived on `socket`: append them to its buffer, answer what is whole.
+    void onReadyRead(QTcpSocket *socket);
+    // `bytes` leave on `socket` once the controller is free and `out`'s delay is over.
+    void send(QTcpSocket *socket, const QByteArray &bytes, const SimResponder::Outcome &out);
+    void dropConnection(QTcpSocket *socket);
 
+    SimResponder *m_responder;
     QTcpServer *m_server;
     QTimer *m_reopen;
     QHostAddress m_address;
     quint16 m_port = 0;
-    QHash<QTcpSocket *, QByteArray> m_buffers;
+    QHash<QTcpSocket *, QByteArray> m_buffers; // received and not taken yet, per connection
+    // A request that arrives while an answer is pending is taken up only once it has left.
+    QElapsedTimer m_clock;
+    qint64 m_freeAtMs = 0;
 };
 
 } // namespace stepcom

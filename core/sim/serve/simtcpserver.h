@@ -4,8 +4,6 @@
 
 namespace stepcom {
 
-class SimResponder;
-
 // Modbus TCP (MBAP framing) in front of the simulated controller. Our own rather than
 // QModbusTcpServer: Qt 6.4's writes a frame even for "no answer", so dropped answers and
 // answers for other unit ids could not be silent, and it cannot delay without blocking.
@@ -19,9 +17,8 @@ public:
 private:
     QString listenError(const QHostAddress &address, quint16 port,
                         const QString &reason) const override;
-    void onReadyRead(QTcpSocket *socket) override;
-
-    SimResponder *m_responder;
+    Taken take(QByteArray &buffer) override;
+    QByteArray frame(const Taken &request, const SimResponder::Outcome &out) const override;
 };
 
 } // namespace stepcom

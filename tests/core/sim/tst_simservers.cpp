@@ -1,6 +1,8 @@
+#include "bus/rtuframe.h"
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 
+#include <QDataStream>
 #include <QElapsedTimer>
 #include <QFileInfo>
 #include <QModbusReply>
@@ -9,6 +11,7 @@
 #include <QRegularExpression>
 #include <QSerialPort>
 #include <QSignalSpy>
+#include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -351,6 +354,67 @@ private Q_SLOTS:
         std::unique_ptr<QModbusClient> again;
         QTRY_VERIFY_WITH_TIMEOUT(
             (again = tcpClient(host.tcpPort()))->state() == QModbusDevice::ConnectedState, 10000);
+    }
+
+    // Both TCP servers front one controller, which does one thing at a time: two requests sent
+    // at once are answered in their order, even when the first one's answer is slow (a coil
+    // whose firmware writes its flash first).
+    void answersLeaveOneAfterTheOther_data()
+    {
+        QTest::addColumn<bool>("rtuFraming");
+        QTest::newRow("modbus tcp") << false;
+        QTest::newRow("rtu over tcp") << true;
+    }
+    void answersLeaveOneAfterTheOther()
+    {
+        QFETCH(bool, rtuFraming);
+        SimOptions o;
+        o.tcp = !rtuFraming;
+        o.rtuTcp = rtuFraming;
+        o.slowCoils = {{5, 400}}; // 00005, motor 1 stop: harmless
+        SimHost host;
+        QString error;
+        QVERIFY2(host.start(o, &error), qPrintable(error));
+        QTcpSocket socket;
+        socket.connectToHost(QHostAddress::LocalHost,
+                             rtuFraming ? host.rtuTcpPort() : host.tcpPort());
+        QVERIFY(socket.waitForConnected(5000));
+        const QByteArray stopPdu = QByteArray::fromHex("050004ff00");
+        const QByteArray readPdu = QByteArray::fromHex("0300000001"); // 40001, one register
+        const auto framed = [rtuFraming](quint16 transaction, const QByteArray &pdu) {
+            QByteArray f;
+            if (!rtuFraming) {
+                QDataStream s(&f, QIODevice::WriteOnly);
+                s << transaction << quint16(0) << quint16(pdu.size() + 1) << quint8(1);
+                f.append(pdu);
+                return f;
+            }
+            f.append(char(1)).append(pdu);
+            const quint16 sum = RtuFrame::crc(f);
+            f.append(char(sum & 0xFF)).append(char(sum >> 8));
+            return f;
+        };
+        socket.write(framed(1, stopPdu).append(framed(2, readPdu)));
+        // The stop's answer repeats its request; the read's has one register: 2 bytes.
+        const int header = rtuFraming ? 1 : 7;
+        const int trailer = rtuFraming ? 2 : 0;
+        const int stopAnswer = header + int(stopPdu.size()) + trailer;
+        const int readAnswer = header + 2 + 2 + trailer;
+        QByteArray in;
+        QVERIFY(QTest::qWaitFor(
+            [&] {
+                in += socket.readAll();
+                return in.size() >= stopAnswer + readAnswer;
+            },
+            10000));
+        QCOMPARE(in.size(), stopAnswer + readAnswer);
+        QCOMPARE(in.mid(header, stopPdu.size()), stopPdu);
+        QCOMPARE(quint8(in.at(stopAnswer + header)), quint8(0x03));
+        if (!rtuFraming) {
+            QCOMPARE(in.left(2), QByteArray::fromHex("0001")); // the transactions in order
+            QCOMPARE(in.mid(stopAnswer, 2), QByteArray::fromHex("0002"));
+        }
+        QVERIFY(!host.device()->running(1));
     }
 
     void manualClockAndDeviceAccess()
