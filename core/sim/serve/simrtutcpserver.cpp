@@ -11,7 +11,7 @@
 namespace stepcom {
 
 SimRtuTcpServer::SimRtuTcpServer(SimResponder *responder, bool echo, QObject *parent)
-    : SimTcpListener(responder, parent)
+    : SimTcpListener(responder, Busy::OneAtATime, parent)
     , m_echo(echo)
 {}
 

@@ -7,9 +7,10 @@
 
 namespace stepcom {
 
-SimTcpListener::SimTcpListener(SimResponder *responder, QObject *parent)
+SimTcpListener::SimTcpListener(SimResponder *responder, Busy busy, QObject *parent)
     : QObject(parent)
     , m_responder(responder)
+    , m_busy(busy)
     , m_server(new QTcpServer(this))
     , m_reopen(new QTimer(this))
 {
@@ -98,7 +99,8 @@ void SimTcpListener::send(QTcpSocket *socket, const QByteArray &bytes,
                           const SimResponder::Outcome &out)
 {
     const qint64 now = m_clock.elapsed();
-    const qint64 leaveAt = std::max(now, m_freeAtMs) + out.delayMs;
+    const qint64 leaveAt =
+        (m_busy == Busy::OneAtATime ? std::max(now, m_freeAtMs) : now) + out.delayMs;
     m_freeAtMs = leaveAt;
     QPointer<QTcpSocket> target(socket);
     const bool hangUpAfter = out.hangUp;

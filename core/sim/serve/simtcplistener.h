@@ -18,9 +18,9 @@ namespace stepcom {
 // What the simulator's TCP servers share: listening, taking connections with a buffer each,
 // dropping them, hanging up (drop everything, refuse connections for a while, listen on the
 // same port again), and serving: every whole request goes to the SimResponder, the faults it
-// decides apply alike, and the answers leave one after the other, as the one controller behind
-// them does one thing at a time. A server adds only its framing: how a request is taken from a
-// buffer and how an answer is framed.
+// decides apply alike, and each answer leaves after its delay. A server adds only its framing
+// (how a request is taken from a buffer and how an answer is framed) and whether the controller
+// behind it is busy while an answer is pending (docs/simulator.md, "Timing").
 class SimTcpListener : public QObject
 {
     Q_OBJECT
@@ -56,7 +56,11 @@ protected:
         quint16 transaction = 0; // Modbus TCP's, repeated in its answer
     };
 
-    SimTcpListener(SimResponder *responder, QObject *parent);
+    // While an answer is pending: the next request waits until it has left (the line behind
+    // an RS-485 converter), or is answered meanwhile (Modbus TCP).
+    enum class Busy { OneAtATime, Overlapping };
+
+    SimTcpListener(SimResponder *responder, Busy busy, QObject *parent);
 
     // Why listening failed, in the server's own words (and translation context).
     virtual QString listenError(const QHostAddress &address, quint16 port,
@@ -77,12 +81,13 @@ private:
     void dropConnection(QTcpSocket *socket);
 
     SimResponder *m_responder;
+    Busy m_busy;
     QTcpServer *m_server;
     QTimer *m_reopen;
     QHostAddress m_address;
     quint16 m_port = 0;
     QHash<QTcpSocket *, QByteArray> m_buffers; // received and not taken yet, per connection
-    // A request that arrives while an answer is pending is taken up only once it has left.
+    // Busy::OneAtATime: when the pending answer will have left.
     QElapsedTimer m_clock;
     qint64 m_freeAtMs = 0;
 };

@@ -19,7 +19,7 @@ quint16 be16(const QByteArray &b, int at)
 } // namespace
 
 SimTcpServer::SimTcpServer(SimResponder *responder, QObject *parent)
-    : SimTcpListener(responder, parent)
+    : SimTcpListener(responder, Busy::Overlapping, parent)
 {}
 
 QString SimTcpServer::listenError(const QHostAddress &address, quint16 port,
