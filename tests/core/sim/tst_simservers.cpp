@@ -107,6 +107,36 @@ private:
         t.start();
         return finish(c->sendRawRequest(request, unit), t);
     }
+    // A request as the Modbus TCP server (MBAP, unit 1) or the RTU-over-TCP one (RTU frame, id
+    // 1) takes it.
+    static QByteArray framed(bool rtuFraming, quint16 transaction, const QByteArray &pdu)
+    {
+        QByteArray f;
+        if (!rtuFraming) {
+            QDataStream s(&f, QIODevice::WriteOnly);
+            s << transaction << quint16(0) << quint16(pdu.size() + 1) << quint8(1);
+            f.append(pdu);
+            return f;
+        }
+        f.append(char(1)).append(pdu);
+        const quint16 sum = RtuFrame::crc(f);
+        f.append(char(sum & 0xFF)).append(char(sum >> 8));
+        return f;
+    }
+    // The host with one of its TCP servers, `socket` connected to it; its port (0: it failed).
+    static quint16 serveOverTcp(SimHost &host, SimOptions o, bool rtuFraming, QTcpSocket *socket)
+    {
+        o.tcp = !rtuFraming;
+        o.rtuTcp = rtuFraming;
+        QString error;
+        if (!host.start(o, &error)) {
+            qWarning("%s", qPrintable(error));
+            return 0;
+        }
+        const quint16 port = rtuFraming ? host.rtuTcpPort() : host.tcpPort();
+        socket->connectToHost(QHostAddress::LocalHost, port);
+        return socket->waitForConnected(5000) ? port : 0;
+    }
     static SimOptions rtuOptions()
     {
         SimOptions o;
@@ -371,32 +401,13 @@ private Q_SLOTS:
         QFETCH(bool, rtuFraming);
         QFETCH(bool, inOrder);
         SimOptions o;
-        o.tcp = !rtuFraming;
-        o.rtuTcp = rtuFraming;
         o.slowCoils = {{5, 400}}; // 00005, motor 1 stop: harmless
         SimHost host;
-        QString error;
-        QVERIFY2(host.start(o, &error), qPrintable(error));
         QTcpSocket socket;
-        socket.connectToHost(QHostAddress::LocalHost,
-                             rtuFraming ? host.rtuTcpPort() : host.tcpPort());
-        QVERIFY(socket.waitForConnected(5000));
+        QVERIFY(serveOverTcp(host, o, rtuFraming, &socket) != 0);
         const QByteArray stopPdu = QByteArray::fromHex("050004ff00");
         const QByteArray readPdu = QByteArray::fromHex("0300000001"); // 40001, one register
-        const auto framed = [rtuFraming](quint16 transaction, const QByteArray &pdu) {
-            QByteArray f;
-            if (!rtuFraming) {
-                QDataStream s(&f, QIODevice::WriteOnly);
-                s << transaction << quint16(0) << quint16(pdu.size() + 1) << quint8(1);
-                f.append(pdu);
-                return f;
-            }
-            f.append(char(1)).append(pdu);
-            const quint16 sum = RtuFrame::crc(f);
-            f.append(char(sum & 0xFF)).append(char(sum >> 8));
-            return f;
-        };
-        socket.write(framed(1, stopPdu).append(framed(2, readPdu)));
+        socket.write(framed(rtuFraming, 1, stopPdu).append(framed(rtuFraming, 2, readPdu)));
         // The stop's answer repeats its request; the read's has one register: 2 bytes.
         const int header = rtuFraming ? 1 : 7;
         const int trailer = rtuFraming ? 2 : 0;
@@ -432,26 +443,13 @@ private Q_SLOTS:
     {
         QFETCH(bool, rtuFraming);
         SimOptions o;
-        o.tcp = !rtuFraming;
-        o.rtuTcp = rtuFraming;
         o.faults.hangupAfter = 1;
         o.faults.hangupPauseMs = 200;
         SimHost host;
-        QString error;
-        QVERIFY2(host.start(o, &error), qPrintable(error));
-        const quint16 port = rtuFraming ? host.rtuTcpPort() : host.tcpPort();
         QTcpSocket socket;
-        socket.connectToHost(QHostAddress::LocalHost, port);
-        QVERIFY(socket.waitForConnected(5000));
-        QByteArray request = QByteArray::fromHex("0300000001");
-        if (rtuFraming) {
-            request.prepend(char(1));
-            const quint16 sum = RtuFrame::crc(request);
-            request.append(char(sum & 0xFF)).append(char(sum >> 8));
-        } else {
-            request.prepend(QByteArray::fromHex("00070000000601"));
-        }
-        socket.write(request);
+        const quint16 port = serveOverTcp(host, o, rtuFraming, &socket);
+        QVERIFY(port != 0);
+        socket.write(framed(rtuFraming, 7, QByteArray::fromHex("0300000001")));
         QByteArray in;
         // The answer leaves, then the line goes dead.
         QVERIFY(QTest::qWaitFor(
