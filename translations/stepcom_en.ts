@@ -4355,6 +4355,175 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::GamepadJog</name>
+    <message>
+        <source>the pad went silent</source>
+        <translation>the pad went silent</translation>
+    </message>
+    <message>
+        <source>the pad was switched off</source>
+        <translation>the pad was switched off</translation>
+    </message>
+    <message>
+        <source>E-STOP on the pad</source>
+        <translation>E-STOP on the pad</translation>
+    </message>
+    <message>
+        <source>stop on the pad</source>
+        <translation>stop on the pad</translation>
+    </message>
+    <message>
+        <source>the dead-man was let go</source>
+        <translation>the dead-man was let go</translation>
+    </message>
+    <message>
+        <source>the stick was let go</source>
+        <translation>the stick was let go</translation>
+    </message>
+    <message>
+        <source>the pad was unplugged</source>
+        <translation>the pad was unplugged</translation>
+    </message>
+    <message>
+        <source>Pad: %1, the jog stopped</source>
+        <translation>Pad: %1, the jog stopped</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::GamepadMapping</name>
+    <message>
+        <source>unknown key &quot;%1&quot; in the pad&apos;s mapping</source>
+        <translation>unknown key &quot;%1&quot; in the pad&apos;s mapping</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; names no button of a pad</source>
+        <translation>&quot;%1&quot; names no button of a pad</translation>
+    </message>
+    <message>
+        <source>the dead zone must be a number from 0.05 to 0.9</source>
+        <translation>the dead zone must be a number from 0.05 to 0.9</translation>
+    </message>
+    <message>
+        <source>&quot;invert_y&quot; must be true or false</source>
+        <translation>&quot;invert_y&quot; must be true or false</translation>
+    </message>
+    <message>
+        <source>one button cannot do two things in the pad&apos;s mapping</source>
+        <translation>one button cannot do two things in the pad&apos;s mapping</translation>
+    </message>
+    <message>
+        <source>left trigger</source>
+        <translation>left trigger</translation>
+    </message>
+    <message>
+        <source>right trigger</source>
+        <translation>right trigger</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Back</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>left shoulder</source>
+        <translation>left shoulder</translation>
+    </message>
+    <message>
+        <source>right shoulder</source>
+        <translation>right shoulder</translation>
+    </message>
+    <message>
+        <source>button %1</source>
+        <translation>button %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::GamepadPanel</name>
+    <message>
+        <source>Not changed: %1.</source>
+        <translation>Not changed: %1.</translation>
+    </message>
+    <message>
+        <source>Game pads cannot be read: %1</source>
+        <translation>Game pads cannot be read: %1</translation>
+    </message>
+    <message>
+        <source>Off: tick it to jog with a game pad.</source>
+        <translation>Off: tick it to jog with a game pad.</translation>
+    </message>
+    <message>
+        <source>No pad connected: plug one in or pair it (Bluetooth).</source>
+        <translation>No pad connected: plug one in or pair it (Bluetooth).</translation>
+    </message>
+    <message>
+        <source>, wired</source>
+        <translation>, wired</translation>
+    </message>
+    <message>
+        <source>, battery about %1 %</source>
+        <translation>, battery about %1 %</translation>
+    </message>
+    <message>
+        <source>Connected: %1%2</source>
+        <translation>Connected: %1%2</translation>
+    </message>
+    <message>
+        <source>Hold %1 (the dead-man) and move the left stick or the D-pad to jog; %2 stops, %3 is the E-STOP.</source>
+        <translation>Hold %1 (the dead-man) and move the left stick or the D-pad to jog; %2 stops, %3 is the E-STOP.</translation>
+    </message>
+    <message>
+        <source>motor %1</source>
+        <translation>motor %1</translation>
+    </message>
+    <message>
+        <source>Jogging %1 from the pad.</source>
+        <translation>Jogging %1 from the pad.</translation>
+    </message>
+    <message>
+        <source>Home the machine in its homing order? The axes will move to their home switches.</source>
+        <translation>Home the machine in its homing order? The axes will move to their home switches.</translation>
+    </message>
+    <message>
+        <source>Home from the pad</source>
+        <translation>Home from the pad</translation>
+    </message>
+    <message>
+        <source>Game pad</source>
+        <translation>Game pad</translation>
+    </message>
+    <message>
+        <source>&amp;Jog with a game pad</source>
+        <translation>&amp;Jog with a game pad</translation>
+    </message>
+    <message>
+        <source>The pad jogs only while its dead-man is held; unplugged or silent, it stops what it jogs.</source>
+        <translation>The pad jogs only while its dead-man is held; unplugged or silent, it stops what it jogs.</translation>
+    </message>
+    <message>
+        <source>Dead-man (hold):</source>
+        <translation>Dead-man (hold):</translation>
+    </message>
+    <message>
+        <source>Stop:</source>
+        <translation>Stop:</translation>
+    </message>
+    <message>
+        <source>Home:</source>
+        <translation>Home:</translation>
+    </message>
+    <message>
+        <source>E-STOP:</source>
+        <translation>E-STOP:</translation>
+    </message>
+    <message>
+        <source>Dead zone:</source>
+        <translation>Dead zone:</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::GuideWindow</name>
     <message>
         <source>The user guide (%1) was not found in %2. It is installed with StepCom; reinstalling the package brings it back.</source>
@@ -5191,6 +5360,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>E-STOP</source>
         <translation>E-STOP</translation>
     </message>
+    <message>
+        <source>another hand took over from the pad</source>
+        <translation>another hand took over from the pad</translation>
+    </message>
+    <message>
+        <source>Motor %1 was jogged from the pad: it stops; press again to jog it here</source>
+        <translation>Motor %1 was jogged from the pad: it stops; press again to jog it here</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::JogPanel</name>
@@ -5319,10 +5496,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>&amp;Apply speed</translation>
     </message>
     <message>
-        <source>Write just the jog speed to the controller now and read it back. The controller takes a new speed even while the motor runs. Other edits wait for &quot;Write changes&quot;.</source>
-        <translation>Write just the jog speed to the controller now and read it back. The controller takes a new speed even while the motor runs. Other edits wait for &quot;Write changes&quot;.</translation>
-    </message>
-    <message>
         <source>Single move:</source>
         <translation>Single move:</translation>
     </message>
@@ -5345,6 +5518,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Reference: %1</source>
         <translation>Reference: %1</translation>
+    </message>
+    <message>
+        <source>Write just the jog speed to the controller: the write dialog shows it first, then it is written and read back. The controller takes a new speed even while the motor runs. Other edits wait for &quot;Write changes&quot;.</source>
+        <translation>Write just the jog speed to the controller: the write dialog shows it first, then it is written and read back. The controller takes a new speed even while the motor runs. Other edits wait for &quot;Write changes&quot;.</translation>
     </message>
 </context>
 <context>
@@ -6840,10 +7017,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>Apply o&amp;rder</translation>
     </message>
     <message>
-        <source>Write just the homing order to the controller now and read it back</source>
-        <translation>Write just the homing order to the controller now and read it back</translation>
-    </message>
-    <message>
         <source>Home &amp;in order</source>
         <translation>Home &amp;in order</translation>
     </message>
@@ -6883,6 +7056,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>All &amp;outputs off</source>
         <translation>All &amp;outputs off</translation>
     </message>
+    <message>
+        <source>Write just the homing order to the controller: the write dialog shows it first, then it is written and read back</source>
+        <translation>Write just the homing order to the controller: the write dialog shows it first, then it is written and read back</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MotorPage</name>
@@ -6917,6 +7094,63 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Stops the motor at once, without a ramp. The E-STOP under every page stops everything.</source>
         <translation>Stops the motor at once, without a ramp. The E-STOP under every page stops everything.</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MoveHere</name>
+    <message>
+        <source>not connected</source>
+        <translation>not connected</translation>
+    </message>
+    <message>
+        <source>a move is under way</source>
+        <translation>a move is under way</translation>
+    </message>
+    <message>
+        <source>motor %1 is not referenced: home it first</source>
+        <translation>motor %1 is not referenced: home it first</translation>
+    </message>
+    <message>
+        <source>the position of motor %1 is not known</source>
+        <translation>the position of motor %1 is not known</translation>
+    </message>
+    <message>
+        <source>Move here (%1, %2)</source>
+        <translation>Move here (%1, %2)</translation>
+    </message>
+    <message>
+        <source>Move here: %1</source>
+        <translation>Move here: %1</translation>
+    </message>
+    <message>
+        <source>Not moved: %1.</source>
+        <translation>Not moved: %1.</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 → %3 %4 (%5%6 %4)</source>
+        <translation>motor %1: %2 → %3 %4 (%5%6 %4)</translation>
+    </message>
+    <message>
+        <source>Move both axes to (%1, %2)?
+%3</source>
+        <translation>Move both axes to (%1, %2)?
+%3</translation>
+    </message>
+    <message>
+        <source>Move here</source>
+        <translation>Move here</translation>
+    </message>
+    <message>
+        <source>Not moved.</source>
+        <translation>Not moved.</translation>
+    </message>
+    <message>
+        <source>Not moved: %1</source>
+        <translation>Not moved: %1</translation>
+    </message>
+    <message>
+        <source>Moving to (%1, %2)…</source>
+        <translation>Moving to (%1, %2)…</translation>
     </message>
 </context>
 <context>
@@ -9650,6 +9884,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>No steps yet: jog to each point and teach it, then Add step (or open a .stepseq file).</source>
         <translation>No steps yet: jog to each point and teach it, then Add step (or open a .stepseq file).</translation>
+    </message>
+    <message>
+        <source>Teach this point (%1, %2)</source>
+        <translation>Teach this point (%1, %2)</translation>
+    </message>
+    <message>
+        <source>Point %1 taught at the place clicked.</source>
+        <translation>Point %1 taught at the place clicked.</translation>
     </message>
 </context>
 <context>

@@ -4329,6 +4329,175 @@ Every other master on the bus must use the new settings too, and no other device
     </message>
 </context>
 <context>
+    <name>stepcom::GamepadJog</name>
+    <message>
+        <source>the pad went silent</source>
+        <translation>手柄没有了信号</translation>
+    </message>
+    <message>
+        <source>the pad was switched off</source>
+        <translation>手柄已关闭</translation>
+    </message>
+    <message>
+        <source>E-STOP on the pad</source>
+        <translation>手柄上的急停</translation>
+    </message>
+    <message>
+        <source>stop on the pad</source>
+        <translation>手柄上的停止</translation>
+    </message>
+    <message>
+        <source>the dead-man was let go</source>
+        <translation>松开了使能键</translation>
+    </message>
+    <message>
+        <source>the stick was let go</source>
+        <translation>松开了摇杆</translation>
+    </message>
+    <message>
+        <source>the pad was unplugged</source>
+        <translation>手柄已拔出</translation>
+    </message>
+    <message>
+        <source>Pad: %1, the jog stopped</source>
+        <translation>手柄：%1，点动已停止</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::GamepadMapping</name>
+    <message>
+        <source>unknown key &quot;%1&quot; in the pad&apos;s mapping</source>
+        <translation>手柄映射中有未知的键“%1”</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; names no button of a pad</source>
+        <translation>“%1”不是手柄上的按键</translation>
+    </message>
+    <message>
+        <source>the dead zone must be a number from 0.05 to 0.9</source>
+        <translation>死区必须是 0.05 到 0.9 之间的数</translation>
+    </message>
+    <message>
+        <source>&quot;invert_y&quot; must be true or false</source>
+        <translation>“invert_y”必须是 true 或 false</translation>
+    </message>
+    <message>
+        <source>one button cannot do two things in the pad&apos;s mapping</source>
+        <translation>手柄映射中一个按键不能有两个功能</translation>
+    </message>
+    <message>
+        <source>left trigger</source>
+        <translation>左扳机</translation>
+    </message>
+    <message>
+        <source>right trigger</source>
+        <translation>右扳机</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Back 键</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start 键</translation>
+    </message>
+    <message>
+        <source>left shoulder</source>
+        <translation>左肩键</translation>
+    </message>
+    <message>
+        <source>right shoulder</source>
+        <translation>右肩键</translation>
+    </message>
+    <message>
+        <source>button %1</source>
+        <translation>按键 %1</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::GamepadPanel</name>
+    <message>
+        <source>Not changed: %1.</source>
+        <translation>未修改：%1。</translation>
+    </message>
+    <message>
+        <source>Game pads cannot be read: %1</source>
+        <translation>无法读取手柄：%1</translation>
+    </message>
+    <message>
+        <source>Off: tick it to jog with a game pad.</source>
+        <translation>已关闭：勾选后可用手柄点动。</translation>
+    </message>
+    <message>
+        <source>No pad connected: plug one in or pair it (Bluetooth).</source>
+        <translation>未连接手柄：请插入或配对（蓝牙）。</translation>
+    </message>
+    <message>
+        <source>, wired</source>
+        <translation>，有线</translation>
+    </message>
+    <message>
+        <source>, battery about %1 %</source>
+        <translation>，电量约 %1 %</translation>
+    </message>
+    <message>
+        <source>Connected: %1%2</source>
+        <translation>已连接：%1%2</translation>
+    </message>
+    <message>
+        <source>Hold %1 (the dead-man) and move the left stick or the D-pad to jog; %2 stops, %3 is the E-STOP.</source>
+        <translation>按住 %1（使能键）并拨动左摇杆或方向键即可点动；%2 停止，%3 为急停。</translation>
+    </message>
+    <message>
+        <source>motor %1</source>
+        <translation>电机 %1</translation>
+    </message>
+    <message>
+        <source>Jogging %1 from the pad.</source>
+        <translation>正在用手柄点动 %1。</translation>
+    </message>
+    <message>
+        <source>Home the machine in its homing order? The axes will move to their home switches.</source>
+        <translation>按回零顺序让机器回原点吗？各轴将移动到原点开关。</translation>
+    </message>
+    <message>
+        <source>Home from the pad</source>
+        <translation>从手柄回原点</translation>
+    </message>
+    <message>
+        <source>Game pad</source>
+        <translation>手柄</translation>
+    </message>
+    <message>
+        <source>&amp;Jog with a game pad</source>
+        <translation>用手柄点动(&amp;J)</translation>
+    </message>
+    <message>
+        <source>The pad jogs only while its dead-man is held; unplugged or silent, it stops what it jogs.</source>
+        <translation>只有按住使能键时手柄才会点动；拔出或没有信号时，它所点动的轴会停止。</translation>
+    </message>
+    <message>
+        <source>Dead-man (hold):</source>
+        <translation>使能键（按住）：</translation>
+    </message>
+    <message>
+        <source>Stop:</source>
+        <translation>停止：</translation>
+    </message>
+    <message>
+        <source>Home:</source>
+        <translation>回原点：</translation>
+    </message>
+    <message>
+        <source>E-STOP:</source>
+        <translation>急停：</translation>
+    </message>
+    <message>
+        <source>Dead zone:</source>
+        <translation>死区：</translation>
+    </message>
+</context>
+<context>
     <name>stepcom::GuideWindow</name>
     <message>
         <source>The user guide (%1) was not found in %2. It is installed with StepCom; reinstalling the package brings it back.</source>
@@ -5164,6 +5333,14 @@ Every other master on the bus must use the new settings too, and no other device
         <source>E-STOP</source>
         <translation>急停</translation>
     </message>
+    <message>
+        <source>another hand took over from the pad</source>
+        <translation>另一操作接管了手柄的点动</translation>
+    </message>
+    <message>
+        <source>Motor %1 was jogged from the pad: it stops; press again to jog it here</source>
+        <translation>电机 %1 正由手柄点动：现在停止；请再按一次在此点动</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::JogPanel</name>
@@ -5292,10 +5469,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>应用速度(&amp;A)</translation>
     </message>
     <message>
-        <source>Write just the jog speed to the controller now and read it back. The controller takes a new speed even while the motor runs. Other edits wait for &quot;Write changes&quot;.</source>
-        <translation>立即只将点动速度写入控制器并回读。电机运行中控制器也会采用新速度。其他修改需通过“写入更改”写入。</translation>
-    </message>
-    <message>
         <source>Single move:</source>
         <translation>单次运行：</translation>
     </message>
@@ -5318,6 +5491,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Reference: %1</source>
         <translation>参考点：%1</translation>
+    </message>
+    <message>
+        <source>Write just the jog speed to the controller: the write dialog shows it first, then it is written and read back. The controller takes a new speed even while the motor runs. Other edits wait for &quot;Write changes&quot;.</source>
+        <translation>只将点动速度写入控制器：先在写入对话框中显示，然后写入并回读。电机运行中控制器也会采用新速度。其他修改需通过“写入更改”写入。</translation>
     </message>
 </context>
 <context>
@@ -6808,10 +6985,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>应用顺序(&amp;R)</translation>
     </message>
     <message>
-        <source>Write just the homing order to the controller now and read it back</source>
-        <translation>立即只将回零顺序写入控制器并回读</translation>
-    </message>
-    <message>
         <source>Home &amp;in order</source>
         <translation>顺序回机械零(&amp;I)</translation>
     </message>
@@ -6851,6 +7024,10 @@ Every other master on the bus must use the new settings too, and no other device
         <source>All &amp;outputs off</source>
         <translation>输出全关(&amp;O)</translation>
     </message>
+    <message>
+        <source>Write just the homing order to the controller: the write dialog shows it first, then it is written and read back</source>
+        <translation>只将回零顺序写入控制器：先在写入对话框中显示，然后写入并回读</translation>
+    </message>
 </context>
 <context>
     <name>stepcom::MotorPage</name>
@@ -6885,6 +7062,63 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Stops the motor at once, without a ramp. The E-STOP under every page stops everything.</source>
         <translation>立即停止电机，不经减速。每个页面下方的“急停”会停止所有电机并关闭所有输出。</translation>
+    </message>
+</context>
+<context>
+    <name>stepcom::MoveHere</name>
+    <message>
+        <source>not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>a move is under way</source>
+        <translation>有运动正在进行</translation>
+    </message>
+    <message>
+        <source>motor %1 is not referenced: home it first</source>
+        <translation>电机 %1 未建立参考点：请先回原点</translation>
+    </message>
+    <message>
+        <source>the position of motor %1 is not known</source>
+        <translation>电机 %1 的位置未知</translation>
+    </message>
+    <message>
+        <source>Move here (%1, %2)</source>
+        <translation>运行到此处 (%1, %2)</translation>
+    </message>
+    <message>
+        <source>Move here: %1</source>
+        <translation>运行到此处：%1</translation>
+    </message>
+    <message>
+        <source>Not moved: %1.</source>
+        <translation>未运动：%1。</translation>
+    </message>
+    <message>
+        <source>motor %1: %2 → %3 %4 (%5%6 %4)</source>
+        <translation>电机 %1：%2 → %3 %4（%5%6 %4）</translation>
+    </message>
+    <message>
+        <source>Move both axes to (%1, %2)?
+%3</source>
+        <translation>让两个轴运行到 (%1, %2) 吗？
+%3</translation>
+    </message>
+    <message>
+        <source>Move here</source>
+        <translation>运行到此处</translation>
+    </message>
+    <message>
+        <source>Not moved.</source>
+        <translation>未运动。</translation>
+    </message>
+    <message>
+        <source>Not moved: %1</source>
+        <translation>未运动：%1</translation>
+    </message>
+    <message>
+        <source>Moving to (%1, %2)…</source>
+        <translation>正在运行到 (%1, %2)…</translation>
     </message>
 </context>
 <context>
@@ -9593,6 +9827,14 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>No steps yet: jog to each point and teach it, then Add step (or open a .stepseq file).</source>
         <translation>还没有步骤：点动到每个点位并示教，然后“添加步骤”（或打开 .stepseq 文件）。</translation>
+    </message>
+    <message>
+        <source>Teach this point (%1, %2)</source>
+        <translation>示教此点 (%1, %2)</translation>
+    </message>
+    <message>
+        <source>Point %1 taught at the place clicked.</source>
+        <translation>点 %1 已按点击位置示教。</translation>
     </message>
 </context>
 <context>

@@ -194,6 +194,7 @@ void GamepadJog::want(int motor, int direction, const QString &reason)
         // Not pressed again while the stick still asks for the same: centre it first.
         m_held.remove(motor);
         m_refused.insert(motor, held);
+        Q_EMIT joggingChanged();
         return;
     }
     if (held == direction)
@@ -203,14 +204,16 @@ void GamepadJog::want(int motor, int direction, const QString &reason)
     if (held != 0) {
         m_jog->release(motor, Source::Gamepad, reason);
         m_held.remove(motor);
+        Q_EMIT joggingChanged();
     }
     // A press refused (at a limit, not connected, another hand's jog) is said once, and not
     // tried again until the stick asks for something else.
     if (direction != 0 && !m_held.contains(motor) && !m_refused.contains(motor)) {
         if (m_jog->press(motor, direction > 0 ? Direction::Forward : Direction::Reverse,
-                         Source::Gamepad))
+                         Source::Gamepad)) {
             m_held.insert(motor, direction);
-        else
+            Q_EMIT joggingChanged();
+        } else
             m_refused.insert(motor, direction);
     }
 }
@@ -229,8 +232,10 @@ void GamepadJog::stopAll(const QString &reason)
     m_held.clear();
     for (int motor : motors)
         m_jog->release(motor, Source::Gamepad, reason);
-    if (!motors.isEmpty())
+    if (!motors.isEmpty()) {
+        Q_EMIT joggingChanged();
         Q_EMIT message(tr("Pad: %1, the jog stopped").arg(reason));
+    }
 }
 
 } // namespace stepcom

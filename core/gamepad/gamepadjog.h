@@ -68,6 +68,8 @@ public:
 Q_SIGNALS:
     // Y pressed with the dead-man held: the window asks, then homes.
     void homeRequested();
+    // jogging() changed.
+    void joggingChanged();
     void message(const QString &text);
 
 private:

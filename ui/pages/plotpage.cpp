@@ -5,6 +5,7 @@
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionstatus.h"
 #include "widgets/fields/wrappingrow.h"
+#include "widgets/plots/movehere.h"
 #include "widgets/plots/positionplot.h"
 #include "widgets/plots/xyplot.h"
 
@@ -82,6 +83,9 @@ PlotPage::PlotPage(DeviceSession *session, QWidget *parent)
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->addWidget(m_positions);
     m_splitter->addWidget(m_xy);
+    // A right-click on the XY view: move both axes there (referenced, inside the limits).
+    m_moveHere = new MoveHere(session, m_xy, this);
+    connect(m_moveHere, &MoveHere::said, m_status, &QLabel::setText);
     m_splitter->setStretchFactor(0, 3);
     m_splitter->setStretchFactor(1, 2);
     m_splitter->setChildrenCollapsible(false);

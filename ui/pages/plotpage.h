@@ -16,6 +16,7 @@ namespace stepcom {
 
 class PositionPlot;
 class StatusRecorder;
+class MoveHere;
 class XYPlot;
 
 // "Plots": each motor's position over time and the XY view of the tool's path (motor 1 = X,
@@ -37,6 +38,7 @@ public:
     StatusRecorder *recorder() const { return m_recorder; }
     PositionPlot *positionPlot() const { return m_positions; }
     XYPlot *xyPlot() const { return m_xy; }
+    MoveHere *moveHere() const { return m_moveHere; }
     QPushButton *pauseButton() const { return m_pause; }
     QPushButton *recordButton() const { return m_record; }
     // The save dialog while one is open (non-modal; tests pick a file through it).
@@ -73,6 +75,7 @@ private:
     StatusRecorder *m_recorder;
     PositionPlot *m_positions;
     XYPlot *m_xy;
+    MoveHere *m_moveHere;
     QSplitter *m_splitter;
     QPushButton *m_pause;
     QPushButton *m_fit;

@@ -8,6 +8,7 @@
 #include "session/devicesession.h"
 #include "session/parts/sessionconnection.h"
 #include "session/parts/sessionparameters.h"
+#include "widgets/plots/movehere.h"
 #include "widgets/plots/xyplot.h"
 #include "widgets/sequence/sequenceeditor.h"
 #include "widgets/sequence/sequencepoints.h"
@@ -19,6 +20,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSaveFile>
@@ -160,6 +162,21 @@ SequencePage::SequencePage(DeviceSession *session, QWidget *parent)
     layout->addWidget(split, 1);
 
     m_run->setSource([this] { return m_problems.isEmpty() ? m_valid : std::nullopt; });
+    // A right-click on the preview: move there, or take the point clicked as a taught one.
+    m_moveHere = new MoveHere(session, m_preview, this);
+    m_moveHere->setExtra([this](QMenu *menu, const QPointF &at) {
+        QAction *teach = menu->addAction(
+            tr("Teach this point (%1, %2)").arg(at.x(), 0, 'f', 2).arg(at.y(), 0, 'f', 2));
+        teach->setObjectName(QStringLiteral("teachClicked"));
+        teach->setEnabled(!m_run->isBusy());
+        connect(teach, &QAction::triggered, this, [this, at] {
+            const QString name = m_points->addPoint({{1, at.x()}, {2, at.y()}});
+            m_points->say(tr("Point %1 taught at the place clicked.").arg(name), false);
+            edited();
+        });
+    });
+    connect(m_moveHere, &MoveHere::said, this,
+            [this](const QString &t) { m_points->say(t, false); });
     connect(m_points, &SequencePoints::changed, this, &SequencePage::edited);
     connect(m_points, &SequencePoints::renamed, m_editor, &SequenceEditor::renamePoint);
     connect(m_editor, &SequenceEditor::changed, this, &SequencePage::edited);

@@ -18,6 +18,7 @@ namespace stepcom {
 class SequenceEditor;
 class SequencePoints;
 class SequenceRunPanel;
+class MoveHere;
 class XYPlot;
 
 // "Sequence": the machine's own cycle, built and run in the window. Taught points (jog there,
@@ -54,6 +55,7 @@ public:
     SequenceEditor *editor() const { return m_editor; }
     SequenceRunPanel *runPanel() const { return m_run; }
     XYPlot *preview() const { return m_preview; }
+    MoveHere *moveHere() const { return m_moveHere; }
     QLabel *problemLabel() const { return m_problemLabel; }
     QCheckBox *outputsOffBox() const { return m_outputsOff; }
 
@@ -80,6 +82,7 @@ private:
     SequenceEditor *m_editor;
     SequenceRunPanel *m_run;
     XYPlot *m_preview;
+    MoveHere *m_moveHere;
     QLabel *m_file;
     QLabel *m_limits;
     QLabel *m_problemLabel;

@@ -1,5 +1,6 @@
 #include "gamepad/gamepadjog.h"
 #include "gamepad/sdlgamepad.h"
+#include "gamepad/virtualgamepad.h"
 #include "motion/travellimits.h"
 #include "proofsim.h"
 #include "session/devicesession.h"
@@ -7,8 +8,6 @@
 #include "sim/host/simhost.h"
 #include "sim/model/simdevice.h"
 #include "simsession.h"
-
-#include <SDL2/SDL.h>
 
 #include <QJsonObject>
 #include <QSignalSpy>
@@ -29,23 +28,17 @@ class TestGamepadJog : public QObject
     std::unique_ptr<DeviceSession> session;
     std::unique_ptr<SdlGamepad> sdl;
     std::unique_ptr<GamepadJog> pad;
-    int device = -1;
-    SDL_Joystick *stick = nullptr;
+    std::unique_ptr<VirtualGamepad> virtualPad;
 
     SimDevice *sim() const { return host->device(); }
     bool running(int motor) const
     {
         return sim()->value(QStringLiteral("motor%1.running").arg(motor)).value_or(0) != 0;
     }
-    void axis(SDL_GameControllerAxis a, double v)
-    {
-        QVERIFY(SDL_JoystickSetVirtualAxis(stick, a, Sint16(std::lround(v * 32767))) == 0);
-    }
-    void button(SDL_GameControllerButton b, bool down)
-    {
-        QVERIFY(SDL_JoystickSetVirtualButton(stick, b, down ? 1 : 0) == 0);
-    }
-    void deadman(bool held) { axis(SDL_CONTROLLER_AXIS_TRIGGERRIGHT, held ? 1.0 : 0.0); }
+    using Axis = VirtualGamepad::Axis;
+    void axis(Axis a, double v) { QVERIFY(virtualPad->setAxis(a, v)); }
+    void button(int b, bool down) { QVERIFY(virtualPad->setButton(b, down)); }
+    void deadman(bool held) { axis(Axis::RightTrigger, held ? 1.0 : 0.0); }
     // Nothing moved after a few status polls: what would have gone out has gone.
     void nothingMoves()
     {
@@ -64,36 +57,20 @@ private Q_SLOTS:
         sdl = std::make_unique<SdlGamepad>();
         QString why;
         QVERIFY2(sdl->start(&why), qPrintable(why));
-        SDL_VirtualJoystickDesc desc;
-        SDL_zero(desc);
-        desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
-        desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
-        desc.naxes = SDL_CONTROLLER_AXIS_MAX;
-        desc.nbuttons = SDL_CONTROLLER_BUTTON_MAX;
-        desc.name = "StepCom test pad";
-        device = SDL_JoystickAttachVirtualEx(&desc);
-        QVERIFY2(device >= 0, SDL_GetError());
-        stick = SDL_JoystickOpen(device);
-        QVERIFY2(stick, SDL_GetError());
+        virtualPad = std::make_unique<VirtualGamepad>();
+        QVERIFY2(virtualPad->attach(QStringLiteral("StepCom test pad"), &why), qPrintable(why));
         pad = std::make_unique<GamepadJog>(session->jog());
         connect(sdl.get(), &SdlGamepad::state, pad.get(), &GamepadJog::update);
         connect(sdl.get(), &SdlGamepad::detached, pad.get(), &GamepadJog::detached);
         QTRY_VERIFY_WITH_TIMEOUT(sdl->info().has_value(), 5000);
         QCOMPARE(sdl->info()->name, QStringLiteral("StepCom test pad"));
-        // Triggers rest at 0 (SDL scales them from −32768).
-        axis(SDL_CONTROLLER_AXIS_TRIGGERLEFT, 0);
         deadman(false);
         pad->setEnabled(true);
     }
     void cleanup()
     {
         pad.reset();
-        if (stick)
-            SDL_JoystickClose(stick);
-        stick = nullptr;
-        if (device >= 0 && SDL_JoystickIsVirtual(device))
-            SDL_JoystickDetachVirtual(device);
-        device = -1;
+        virtualPad.reset();
         sdl.reset();
         session.reset();
         host.reset();
@@ -102,15 +79,15 @@ private Q_SLOTS:
     void theStickJogsWhileTheDeadmanIsHeldAndStopsWhenLetGo()
     {
         deadman(true);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 0.8);
+        axis(Axis::LeftX, 0.8);
         QTRY_VERIFY_WITH_TIMEOUT(running(1), 5000);
         QCOMPARE(session->jog()->source(1), JogController::Source::Gamepad);
         QCOMPARE(*session->jog()->direction(1), JogController::Direction::Forward);
         QVERIFY(!running(2));
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 0);
+        axis(Axis::LeftX, 0);
         QTRY_VERIFY_WITH_TIMEOUT(!running(1), 5000);
         // Up on the stick is motor 2 forward.
-        axis(SDL_CONTROLLER_AXIS_LEFTY, -0.9);
+        axis(Axis::LeftY, -0.9);
         QTRY_VERIFY_WITH_TIMEOUT(running(2), 5000);
         QCOMPARE(*session->jog()->direction(2), JogController::Direction::Forward);
         // Letting go of the dead-man with the stick still over stops it.
@@ -121,28 +98,25 @@ private Q_SLOTS:
 
     void withoutTheDeadmanNothingMoves()
     {
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 1.0);
+        axis(Axis::LeftX, 1.0);
         nothingMoves();
         // A stick inside the dead zone is centred, dead-man or not.
         deadman(true);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 0.1);
+        axis(Axis::LeftX, 0.1);
         nothingMoves();
         // And a pad not enabled moves nothing.
         pad->setEnabled(false);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 1.0);
+        axis(Axis::LeftX, 1.0);
         nothingMoves();
     }
 
     void anUnpluggedPadStopsItsJogs()
     {
         deadman(true);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, -1.0);
+        axis(Axis::LeftX, -1.0);
         QTRY_VERIFY_WITH_TIMEOUT(running(1), 5000);
         QSignalSpy gone(sdl.get(), &SdlGamepad::detached);
-        SDL_JoystickClose(stick);
-        stick = nullptr;
-        QVERIFY(SDL_JoystickDetachVirtual(device) == 0);
-        device = -1;
+        virtualPad->detach();
         QTRY_COMPARE_WITH_TIMEOUT(gone.size(), 1, 5000);
         QTRY_VERIFY_WITH_TIMEOUT(!running(1), 5000);
         QVERIFY(pad->jogging().isEmpty());
@@ -151,7 +125,7 @@ private Q_SLOTS:
     void readingsThatStopComingStopTheJog()
     {
         deadman(true);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 1.0);
+        axis(Axis::LeftX, 1.0);
         QTRY_VERIFY_WITH_TIMEOUT(running(1), 5000);
         // The pad is not read any more (as when its reader stalls): the silence stops the jog.
         sdl->stop();
@@ -162,7 +136,7 @@ private Q_SLOTS:
     void theWindowLosingFocusDoesNotStopThePadButClosingDoes()
     {
         deadman(true);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 1.0);
+        axis(Axis::LeftX, 1.0);
         QTRY_VERIFY_WITH_TIMEOUT(running(1), 5000);
         QCOMPARE(session->stopJogging(DeviceSession::JogStop::FocusLost), 0);
         QCOMPARE(session->stopJogging(DeviceSession::JogStop::PageLeft), 0);
@@ -176,12 +150,12 @@ private Q_SLOTS:
     void aDiagonalJogsBothMotors()
     {
         deadman(true);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 0.7);
-        axis(SDL_CONTROLLER_AXIS_LEFTY, -0.7);
+        axis(Axis::LeftX, 0.7);
+        axis(Axis::LeftY, -0.7);
         QTRY_VERIFY_WITH_TIMEOUT(running(1) && running(2), 5000);
         QCOMPARE(pad->jogging(), (QList<int>{1, 2}));
         // Back to straight across: motor 2 stops, motor 1 goes on.
-        axis(SDL_CONTROLLER_AXIS_LEFTY, 0);
+        axis(Axis::LeftY, 0);
         QTRY_VERIFY_WITH_TIMEOUT(!running(2), 5000);
         QVERIFY(running(1));
         deadman(false);
@@ -196,7 +170,7 @@ private Q_SLOTS:
         QCOMPARE(limits.setAxis(session->map(), 1, std::nullopt, here + 2.0), QString());
         session->setTravelLimits(limits);
         deadman(true);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 1.0);
+        axis(Axis::LeftX, 1.0);
         QTRY_VERIFY_WITH_TIMEOUT(running(1), 5000);
         QTRY_VERIFY_WITH_TIMEOUT(!running(1), 10000);
         QVERIFY(pad->jogging().isEmpty());
@@ -207,7 +181,7 @@ private Q_SLOTS:
     void anotherHandEndsThePadsJog()
     {
         deadman(true);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 1.0);
+        axis(Axis::LeftX, 1.0);
         QTRY_VERIFY_WITH_TIMEOUT(running(1), 5000);
         // The mouse on the same motor: the pad lets go, and the mouse presses again.
         QVERIFY(!session->jog()->press(1, JogController::Direction::Reverse,
@@ -224,19 +198,19 @@ private Q_SLOTS:
             session->emergencyStop();
         });
         deadman(true);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 1.0);
+        axis(Axis::LeftX, 1.0);
         QTRY_VERIFY_WITH_TIMEOUT(running(1), 5000);
         // B stops, the stick still over.
-        button(SDL_CONTROLLER_BUTTON_B, true);
+        button(GamepadState::B, true);
         QTRY_VERIFY_WITH_TIMEOUT(!running(1), 5000);
         QVERIFY(pad->jogging().isEmpty());
-        button(SDL_CONTROLLER_BUTTON_B, false);
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 0);
+        button(GamepadState::B, false);
+        axis(Axis::LeftX, 0);
         QVERIFY(test::waitForStatusCycles(*session, 2));
-        axis(SDL_CONTROLLER_AXIS_LEFTX, 1.0);
+        axis(Axis::LeftX, 1.0);
         QTRY_VERIFY_WITH_TIMEOUT(running(1), 5000);
         // Back: the E-STOP, which stops it.
-        button(SDL_CONTROLLER_BUTTON_BACK, true);
+        button(GamepadState::Back, true);
         QTRY_COMPARE_WITH_TIMEOUT(estops, 1, 5000);
         QTRY_VERIFY_WITH_TIMEOUT(!running(1), 5000);
         QVERIFY(pad->jogging().isEmpty());

@@ -27,20 +27,29 @@ JogKeys::~JogKeys()
 }
 
 // Left/Right jog motor 1 (the x axis), Down/Up motor 2 (y), as on a plotter's keypad.
-std::optional<JogKeys::Binding> JogKeys::bindingFor(int key)
+QList<JogKeys::Binding> JogKeys::bindingsFor(int key)
 {
     using D = JogController::Direction;
     switch (key) {
     case Qt::Key_Left:
-        return Binding{1, D::Reverse};
+        return {{1, D::Reverse}};
     case Qt::Key_Right:
-        return Binding{1, D::Forward};
+        return {{1, D::Forward}};
     case Qt::Key_Down:
-        return Binding{2, D::Reverse};
+        return {{2, D::Reverse}};
     case Qt::Key_Up:
-        return Binding{2, D::Forward};
+        return {{2, D::Forward}};
+    // The diagonals, as on a numeric keypad (7 9 1 3 without Num Lock): both motors at once.
+    case Qt::Key_Home:
+        return {{1, D::Reverse}, {2, D::Forward}};
+    case Qt::Key_PageUp:
+        return {{1, D::Forward}, {2, D::Forward}};
+    case Qt::Key_End:
+        return {{1, D::Reverse}, {2, D::Reverse}};
+    case Qt::Key_PageDown:
+        return {{1, D::Forward}, {2, D::Reverse}};
     default:
-        return std::nullopt;
+        return {};
     }
 }
 
@@ -57,8 +66,8 @@ void JogKeys::letGo()
     const QList<int> held = m_held.keys();
     m_held.clear();
     for (int key : held) {
-        if (const auto b = bindingFor(key))
-            m_jog->release(b->motor, JogController::Source::Keyboard);
+        for (const Binding &b : bindingsFor(key))
+            m_jog->release(b.motor, JogController::Source::Keyboard);
     }
 }
 
@@ -83,16 +92,22 @@ bool JogKeys::eventFilter(QObject *watched, QEvent *event)
     if (event->type() != QEvent::KeyPress && event->type() != QEvent::KeyRelease)
         return false;
     auto *key = static_cast<QKeyEvent *>(event);
-    const auto binding = bindingFor(key->key());
-    if (!binding || binding->motor > m_jog->motorCount())
+    const QList<Binding> bindings = bindingsFor(key->key());
+    if (bindings.isEmpty())
         return false;
+    for (const Binding &b : bindings) {
+        if (b.motor > m_jog->motorCount())
+            return false;
+    }
     if (event->type() == QEvent::KeyRelease) {
         if (!m_held.contains(key->key()))
             return false;
         if (key->isAutoRepeat())
             return true; // X11 repeats come as release+press pairs: the key is still held
-        if (m_held.take(key->key()))
-            m_jog->release(binding->motor, JogController::Source::Keyboard);
+        if (m_held.take(key->key())) {
+            for (const Binding &b : bindings)
+                m_jog->release(b.motor, JogController::Source::Keyboard);
+        }
         return true;
     }
     if (m_held.contains(key->key()))
@@ -103,8 +118,11 @@ bool JogKeys::eventFilter(QObject *watched, QEvent *event)
         return true; // still held after a stop: press it again to move
     if (key->modifiers() & ~Qt::KeypadModifier)
         return false; // Shift/Ctrl/Alt+arrow keep their meaning
-    m_held.insert(key->key(), m_jog->press(binding->motor, binding->direction,
-                                           JogController::Source::Keyboard));
+    // A diagonal jogs each motor it can; one at its limit (refused) leaves the other going.
+    bool started = false;
+    for (const Binding &b : bindings)
+        started = m_jog->press(b.motor, b.direction, JogController::Source::Keyboard) || started;
+    m_held.insert(key->key(), started);
     return true;
 }
 

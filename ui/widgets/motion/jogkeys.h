@@ -30,7 +30,8 @@ public:
     JogKeys(JogController *jog, QWidget *scope, QObject *parent = nullptr);
     ~JogKeys() override;
 
-    static std::optional<Binding> bindingFor(int key);
+    // What a key jogs: an arrow one motor, Home/PgUp/End/PgDn (the keypad's diagonals) both.
+    static QList<Binding> bindingsFor(int key);
     // Forget the keys held (after a stop the same key must be pressed again).
     void letGo();
 

@@ -1,5 +1,6 @@
 #include "widgets/plots/xyplot.h"
 
+#include <QContextMenuEvent>
 #include <QDir>
 #include <QEvent>
 #include <QFileInfo>
@@ -373,6 +374,18 @@ void XYPlot::applyPalette()
     m_markerSeries->setMarkerSize(fontMetrics().height() * 0.8);
     m_markerSeries->setColor(pal.color(QPalette::Highlight));
     m_markerSeries->setBorderColor(pal.color(QPalette::Text));
+}
+
+void XYPlot::contextMenuEvent(QContextMenuEvent *event)
+{
+    const QPointF scene = mapToScene(event->pos());
+    const QPointF inChart = chart()->mapFromScene(scene);
+    if (!chart()->plotArea().contains(inChart)) {
+        NavigableChartView::contextMenuEvent(event);
+        return;
+    }
+    Q_EMIT pointMenuRequested(chart()->mapToValue(inChart), event->globalPos());
+    event->accept();
 }
 
 } // namespace stepcom

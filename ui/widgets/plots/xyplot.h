@@ -70,9 +70,12 @@ public:
 
 Q_SIGNALS:
     void autoFitChanged(bool on);
+    // A right-click on the plot at `value` (data units), for a menu at `globalPos`.
+    void pointMenuRequested(const QPointF &value, const QPoint &globalPos);
 
 protected:
     void changeEvent(QEvent *event) override;
+    void contextMenuEvent(QContextMenuEvent *event) override;
     void zoomAt(const QPointF &plotPoint, qreal factor) override;
     void showEvent(QShowEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;

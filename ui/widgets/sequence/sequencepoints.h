@@ -33,6 +33,8 @@ public:
     // Adds a point at `position` (a clicked place); returns its name.
     QString addPoint(const QMap<int, double> &position);
     void setEditable(bool editable);
+    // A line under the buttons: what was taught, or why not (`problem` in red).
+    void say(const QString &text, bool problem);
 
     QTableWidget *table() const { return m_table; }
     QPushButton *teachButton() const { return m_teach; }
@@ -55,7 +57,6 @@ private:
     void onCellChanged(int row, int column);
     // The live position of each motor the poll has read, in axis units.
     QMap<int, double> livePosition(QStringList *unknown) const;
-    void say(const QString &text, bool problem);
 
     DeviceSession *m_session;
     Points m_points;
