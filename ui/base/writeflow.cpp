@@ -41,15 +41,27 @@ bool WriteFlow::show(WriteChangesDialog *dialog)
         m_dialog->close();
     m_dialog = dialog;
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QDialog::accepted, this, [this, dialog] {
-        QStringList what;
-        for (const ParameterWrite &w : dialog->writes())
-            what << QStringLiteral("%1 = %2").arg(w.parameter->key).arg(w.raw);
-        Q_EMIT confirmed(what.join(QLatin1String(", ")));
-        m_session->parameters()->write(dialog->writes());
-    });
+    connect(dialog, &QDialog::accepted, this, [this, dialog] { send(dialog->writes()); });
     dialog->open();
     return true;
+}
+
+bool WriteFlow::writeConfirmed(const QList<ParameterWrite> &writes)
+{
+    if (!m_session->connection()->isConnected() || writes.isEmpty())
+        return false;
+    send(writes);
+    return true;
+}
+
+void WriteFlow::send(const QList<ParameterWrite> &writes)
+{
+    QStringList what;
+    for (const ParameterWrite &w : writes)
+        what << QStringLiteral("%1 = %2").arg(w.parameter->key).arg(w.raw);
+    Q_EMIT confirmed(what.join(QLatin1String(", ")));
+    // The session verifies by read-back and says the outcome, a refusal too.
+    m_session->parameters()->write(writes);
 }
 
 } // namespace stepcom

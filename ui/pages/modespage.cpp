@@ -90,10 +90,10 @@ constexpr int kModeCount = int(std::size(kModes));
 
 } // namespace
 
-ModesPage::ModesPage(DeviceSession *session, QWidget *parent)
+ModesPage::ModesPage(DeviceSession *session, WriteFlow *writes, QWidget *parent)
     : Page(session, parent)
+    , m_writeFlow(writes)
 {
-    m_writeFlow = new WriteFlow(session, this);
     QWidget *content = scrollableContent();
     auto *layout = new QVBoxLayout(content);
     m_about = new AboutBox(content); // Explanations on demand
@@ -270,8 +270,10 @@ void ModesPage::confirmMode(int mode)
     m_confirmation = box;
     connect(box, &QMessageBox::finished, this, [this, p, mode](int result) {
         m_confirmation.clear();
-        if (result == QMessageBox::Yes && session()->connection()->isConnected())
-            session()->parameters()->write({ParameterWrite{p, mode}});
+        // This question was the review (its problems are in it): the flow asks nothing more
+        // and logs, writes and verifies it as the write dialog's writes.
+        if (result == QMessageBox::Yes)
+            m_writeFlow->writeConfirmed({ParameterWrite{p, mode}});
         refresh();
     });
     box->open();

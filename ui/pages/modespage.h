@@ -22,13 +22,14 @@ class AboutBox;
 class ParameterForm;
 
 // The special modes (40300) and the round-trip count (40301). A mode changes what the machine's
-// inputs IN1-IN4 do, so choosing one asks first and then writes it at once with read-back; it
-// is never held as an edit that "Write changes" could send unseen.
+// inputs IN1-IN4 do, so choosing one asks first (the question says the write review's problems)
+// and then writes it at once through the window's WriteFlow, logged and read back; it is never
+// held as an edit that "Write changes" could send unseen.
 class ModesPage : public Page
 {
     Q_OBJECT
 public:
-    explicit ModesPage(DeviceSession *session, QWidget *parent = nullptr);
+    ModesPage(DeviceSession *session, WriteFlow *writes, QWidget *parent = nullptr);
 
     QString title() const override;
     QString iconName() const override { return QStringLiteral("modes"); }
@@ -75,7 +76,7 @@ private:
     QLabel *m_tripsNote;
     QPushButton *m_write;
     QPointer<QMessageBox> m_confirmation;
-    WriteFlow *m_writeFlow = nullptr;
+    WriteFlow *m_writeFlow;
 };
 
 } // namespace stepcom

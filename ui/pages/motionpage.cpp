@@ -1,6 +1,7 @@
 #include "pages/motionpage.h"
 
 #include "base/language.h"
+#include "base/writeflow.h"
 #include "i18n/translators.h"
 #include "motion/motionjudge.h"
 #include "session/devicesession.h"
@@ -53,9 +54,10 @@ void makeProminent(QWidget *w, QPalette::ColorRole back, QPalette::ColorRole tex
 
 } // namespace
 
-MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
+MotionPage::MotionPage(DeviceSession *session, WriteFlow *writes, QWidget *parent)
     : Page(session, parent)
     , m_jog(session->jog())
+    , m_writes(writes)
     , m_keys(new JogKeys(m_jog, this, this))
 {
     // A scroll area keeps every control reachable at 200% scale on a small screen.
@@ -110,7 +112,7 @@ MotionPage::MotionPage(DeviceSession *session, QWidget *parent)
     // Motors side by side, two to a row, so a 3-motor map still fits.
     auto *panels = new QGridLayout;
     for (int n = 1; n <= m_jog->motorCount(); ++n) {
-        auto *p = new JogPanel(session, m_jog, n, content);
+        auto *p = new JogPanel(session, m_jog, m_writes, n, content);
         panels->addWidget(p, (n - 1) / 2, (n - 1) % 2, Qt::AlignTop);
         m_panels << p;
         if (ParameterField *f = p->speedField())
@@ -214,9 +216,10 @@ void MotionPage::buildHoming(QWidget *content)
     layout->addWidget(m_homingStatus);
 
     connect(m_order, &HomingOrderEditor::rejected, this, &MotionPage::showBanner);
+    // The window's write dialog for the order alone: reviewed, read back and logged as "Write
+    // changes" is.
     connect(m_applyOrder, &QPushButton::clicked, this, [this] {
-        if (session()->connection()->isConnected())
-            session()->parameters()->write(m_order->pendingWrites());
+        m_writes->openFor({m_order->key(0), m_order->key(1)});
     });
     connect(m_homeAll, &QPushButton::clicked, this,
             [this] { sessionCommand(QStringLiteral("home_all")); });
@@ -425,7 +428,8 @@ void MotionPage::retranslate()
     m_homingBox->setTitle(tr("Homing"));
     m_applyOrder->setText(tr("Apply o&rder"));
     m_applyOrder->setToolTip(
-        tr("Write just the homing order to the controller now and read it back"));
+        tr("Write just the homing order to the controller: the write dialog shows it first, "
+           "then it is written and read back"));
     m_homeAll->setText(tr("Home &in order"));
     m_zero->setText(tr("&Zero coordinates"));
     m_zero->setToolTip(tr("Make the present positions of all motors 0; nothing moves"));

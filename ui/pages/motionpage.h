@@ -21,16 +21,18 @@ class JogKeys;
 class JogPanel;
 class Led;
 class TravelLimitsEditor;
+class WriteFlow;
 
 // "Jog and home": the part of commissioning where things move. Per motor a JogPanel (hold to
 // move, stop, jog speed, single move, home); the homing order and the sequence commands;
 // the outputs; opt-in keyboard jogging. Any jog stops when the page is left or hidden, the
-// window loses focus, or the link goes (the JogController's rules).
+// window loses focus, or the link goes (the JogController's rules). The jog speed and the homing
+// order are written through the window's WriteFlow.
 class MotionPage : public Page
 {
     Q_OBJECT
 public:
-    explicit MotionPage(DeviceSession *session, QWidget *parent = nullptr);
+    MotionPage(DeviceSession *session, WriteFlow *writes, QWidget *parent = nullptr);
     ~MotionPage() override;
 
     QString title() const override;
@@ -72,6 +74,7 @@ private:
     void refresh();
 
     JogController *m_jog;
+    WriteFlow *m_writes;
     JogKeys *m_keys;
     QList<JogPanel *> m_panels;
     TravelLimitsEditor *m_limits = nullptr;

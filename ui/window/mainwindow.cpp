@@ -108,11 +108,11 @@ MainWindow::MainWindow(DeviceSession *session, QWidget *parent)
         addPage(new MotorPage(session, n, this));
     // In commissioning order: the sidebar groups them by Page::stage().
     addPage(new InputsPage(session, this));
-    addPage(m_motion = new MotionPage(session, this));     // jogging and homing
-    addPage(new ModesPage(session, this));                 // special modes
-    addPage(new InterpolationPage(session, this));         // interpolation
-    addPage(m_plots = new PlotPage(session, this));        // monitoring
-    addPage(m_sequence = new SequencePage(session, this)); // the machine's cycle
+    addPage(m_motion = new MotionPage(session, m_writeFlow, this)); // jogging and homing
+    addPage(new ModesPage(session, m_writeFlow, this));             // special modes
+    addPage(new InterpolationPage(session, this));                  // interpolation
+    addPage(m_plots = new PlotPage(session, this));                 // monitoring
+    addPage(m_sequence = new SequencePage(session, this));          // the machine's cycle
     addPage(m_checklist = new ChecklistPage(session, m_writeFlow, this));
     addPage(new DevicePage(session, this)); // its id and baud, save to flash, factory reset
     m_sidebar->setCurrentPage(0);

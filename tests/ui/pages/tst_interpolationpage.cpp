@@ -1,5 +1,6 @@
 #include "base/language.h"
 #include "base/writechangesdialog.h"
+#include "base/writeflow.h"
 #include "pages/interpolationpage.h"
 #include "pages/modespage.h"
 #include "session/devicesession.h"
@@ -29,6 +30,7 @@
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTest>
+#include <QWidget>
 
 #include <memory>
 
@@ -390,7 +392,10 @@ private Q_SLOTS:
 
     void modeChangeAsksFirst()
     {
-        ModesPage page(session.get());
+        QWidget owner; // the write flow's dialogs open over it, as over the window
+        WriteFlow writes(session.get(), &owner);
+        QSignalSpy confirmed(&writes, &WriteFlow::confirmed);
+        ModesPage page(session.get(), &writes);
         page.resize(1200, 900);
         page.show();
         QVERIFY(!page.modeBox()->isEnabled()); // not connected
@@ -418,12 +423,16 @@ private Q_SLOTS:
         QCOMPARE(simValue(QStringLiteral("mode.system")), 0);
         QCOMPARE(page.modeBox()->currentData().toInt(), 0);
         QVERIFY(!session->parameters()->store()->hasEdits()); // never held as an edit
+        QVERIFY(confirmed.isEmpty());
 
         // Yes: written at once and read back.
         page.chooseMode(3);
         QVERIFY(page.confirmation());
         QCOMPARE(simValue(QStringLiteral("mode.system")), 0);
         page.confirmation()->button(QMessageBox::Yes)->click();
+        QVERIFY(!page.writeDialog()); // one question: the flow asks nothing more
+        QCOMPARE(confirmed.size(), 1);
+        QCOMPARE(confirmed.first().first().toString(), QStringLiteral("mode.system = 3"));
         QTRY_COMPARE_WITH_TIMEOUT(simValue(QStringLiteral("mode.system")), 3, 10000);
         QTRY_COMPARE(
             session->parameters()->store()->deviceValue(QStringLiteral("mode.system")).value_or(-1),

@@ -1,5 +1,7 @@
 #include "base/emergencystop.h"
 #include "base/language.h"
+#include "base/writechangesdialog.h"
+#include "base/writeflow.h"
 #include "device/parameterstore.h"
 #include "motion/referencetracker.h"
 #include "pages/motionpage.h"
@@ -35,6 +37,7 @@
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
+#include <QWidget>
 
 #include <memory>
 
@@ -46,6 +49,8 @@ class TestMotionPage : public QObject
 {
     Q_OBJECT
     std::unique_ptr<DeviceSession> session;
+    std::unique_ptr<QWidget> dialogs; // the write flow's dialogs open over it
+    WriteFlow *writes = nullptr;      // the window's one, for a page on its own
 
     SimDevice *sim() const { return test::simHost(*session)->device(); }
     qint64 simValue(const char *key) const { return sim()->value(QLatin1String(key)).value_or(-1); }
@@ -70,12 +75,21 @@ private Q_SLOTS:
         QApplication::setOrganizationName(QStringLiteral("StepComTest"));
         Language::instance().setLanguage(QStringLiteral("en"));
     }
-    void init() { session = std::make_unique<DeviceSession>(); }
-    void cleanup() { session.reset(); }
+    void init()
+    {
+        session = std::make_unique<DeviceSession>();
+        dialogs = std::make_unique<QWidget>();
+        writes = new WriteFlow(session.get(), dialogs.get());
+    }
+    void cleanup()
+    {
+        dialogs.reset();
+        session.reset();
+    }
 
     void holdingTheButtonMovesAndLettingGoStops()
     {
-        MotionPage page(session.get());
+        MotionPage page(session.get(), writes);
         QCOMPARE(page.title(), QStringLiteral("Jog and home"));
         QCOMPARE(page.motorCount(), 2);
         session->jog()->setSettleMs(100);
@@ -157,7 +171,7 @@ private Q_SLOTS:
 
     void keyboardJoggingIsOptInAndStopsOnRelease()
     {
-        MotionPage page(session.get());
+        MotionPage page(session.get(), writes);
         session->jog()->setSettleMs(100);
         showActive(&page);
         connectSim();
@@ -236,7 +250,7 @@ private Q_SLOTS:
         QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
-        MotionPage page(session.get());
+        MotionPage page(session.get(), writes);
         showActive(&page);
         JogPanel *p = page.panel(1);
         QCOMPARE(p->moveText(), QStringLiteral("10.00 mm, Forward, at 1200 rpm"));
@@ -308,7 +322,7 @@ private Q_SLOTS:
     {
         connectSim();
         sim()->setMachinePosition(1, 60.0); // a long way from the home switch
-        MotionPage page(session.get());
+        MotionPage page(session.get(), writes);
         showActive(&page);
         JogPanel *p = page.panel(1);
         QTRY_VERIFY(p->homeButton()->isEnabled());
@@ -345,7 +359,7 @@ private Q_SLOTS:
         EmergencyStop estop(session.get());
         MachineStrip strip(session.get(), &estop);
         StatusDock dock(session.get());
-        MotionPage page(session.get());
+        MotionPage page(session.get(), writes);
         QTRY_COMPARE(strip.referenceLabel(1)->text(), QStringLiteral("referenced"));
         references->setReason(1, ReferenceTracker::Reason::Silent);
         QTRY_COMPARE(strip.referenceLabel(1)->text(), QStringLiteral("reference not known"));
@@ -366,7 +380,7 @@ private Q_SLOTS:
         QSignalSpy read(session->parameters(), &SessionParameters::readFinished);
         session->parameters()->readAll();
         QTRY_COMPARE(read.size(), 1);
-        MotionPage page(session.get());
+        MotionPage page(session.get(), writes);
         showActive(&page);
         JogPanel *p = page.panel(1);
         QTRY_VERIFY(p->moveButton()->isEnabled());
@@ -413,7 +427,7 @@ private Q_SLOTS:
     void eStopLetsGoOfAHeldJog()
     {
         EmergencyStop estop(session.get());
-        MotionPage page(session.get());
+        MotionPage page(session.get(), writes);
         session->jog()->setSettleMs(50);
         showActive(&page);
         connectSim();
@@ -434,7 +448,7 @@ private Q_SLOTS:
     void homingOrderRefusesDuplicates()
     {
         connectSim();
-        MotionPage page(session.get());
+        MotionPage page(session.get(), writes);
         HomingOrderEditor *order = page.homingOrder();
         QCOMPARE(order->combo(0)->currentText(), QStringLiteral("Motor 1"));
         QCOMPARE(order->combo(1)->currentText(), QStringLiteral("Motor 2"));
@@ -456,6 +470,8 @@ private Q_SLOTS:
         QVERIFY(page.applyOrderButton()->isEnabled());
         QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         page.applyOrderButton()->click();
+        QVERIFY(writes->dialog()); // the write dialog of "Write changes", for the order alone
+        writes->dialog()->accept();
         QTRY_COMPARE(written.size(), 1);
         QCOMPARE(simValue("homing.first"), 2);
         QCOMPARE(simValue("homing.second"), 0);
@@ -466,7 +482,7 @@ private Q_SLOTS:
     void applySpeedWritesOnlyTheSpeed()
     {
         connectSim();
-        MotionPage page(session.get());
+        MotionPage page(session.get(), writes);
         JogPanel *p = page.panel(2);
         QVERIFY(!p->applySpeedButton()->isEnabled());
         QVERIFY(session->parameters()
@@ -477,6 +493,8 @@ private Q_SLOTS:
         QVERIFY(p->applySpeedButton()->isEnabled());
         QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
         p->applySpeedButton()->click();
+        QVERIFY(writes->dialog()); // the write dialog of "Write changes", for the speed alone
+        writes->dialog()->accept();
         QTRY_COMPARE(written.size(), 1);
         QCOMPARE(simValue("motor2.speed"), 450);
         QCOMPARE(simValue("motor2.microsteps"), 8); // the other edit waits for "Write changes"
@@ -490,7 +508,7 @@ private Q_SLOTS:
     void outputsShowInTheLeds()
     {
         connectSim();
-        MotionPage page(session.get());
+        MotionPage page(session.get(), writes);
         QTRY_COMPARE(page.outputLed(1)->state(), Led::State::Off);
         page.outputButton(QStringLiteral("output1_on"))->click();
         QTRY_COMPARE(page.outputLed(1)->state(), Led::State::On);
@@ -522,7 +540,7 @@ private Q_SLOTS:
             Language::instance().setLanguage(lang);
             for (const bool isDark : {false, true}) {
                 QApplication::setPalette(isDark ? dark : light);
-                MotionPage page(session.get());
+                MotionPage page(session.get(), writes);
                 page.resize(page.sizeHint().expandedTo(QSize(1000, 760)));
                 page.show();
                 QVERIFY(QTest::qWaitForWindowExposed(&page));

@@ -31,7 +31,7 @@ public:
     // What a user does: pick `value` (0 none, n motor n) for a slot. False, with rejected(),
     // when the other slot already holds that motor.
     bool choose(int slot, qint64 value);
-    // The edited slots, ready for DeviceSession::write().
+    // The edited slots: what "Apply order" writes (through the window's WriteFlow).
     QList<ParameterWrite> pendingWrites() const;
     bool isEdited() const;
     // Both slots read from the controller.

@@ -1,6 +1,7 @@
 #include "widgets/motion/jogpanel.h"
 
 #include "base/language.h"
+#include "base/writeflow.h"
 #include "i18n/translators.h"
 #include "motion/motionjudge.h"
 #include "motion/referencetracker.h"
@@ -31,10 +32,12 @@ const char *const kWatched[] = {"speed",   "move_distance", "direction", "positi
 
 } // namespace
 
-JogPanel::JogPanel(DeviceSession *session, JogController *jog, int motor, QWidget *parent)
+JogPanel::JogPanel(DeviceSession *session, JogController *jog, WriteFlow *writes, int motor,
+                   QWidget *parent)
     : QGroupBox(parent)
     , m_session(session)
     , m_jog(jog)
+    , m_writes(writes)
     , m_motor(motor)
 {
     for (const char *local : kWatched) {
@@ -182,12 +185,10 @@ void JogPanel::letGo()
 
 void JogPanel::applySpeed()
 {
-    const Parameter *p = param(QStringLiteral("speed"));
-    if (!p || !m_session->connection()->isConnected())
-        return;
-    if (const auto edited = m_session->parameters()->store()->entry(p->key).edited)
-        m_session->parameters()->write(
-            {{p, *edited}}); // verified by read-back, like "Write changes"
+    // The window's write dialog for this one key: reviewed, read back and logged as "Write
+    // changes" is; the other edits stay held.
+    if (const Parameter *p = param(QStringLiteral("speed")))
+        m_writes->openFor({p->key});
 }
 
 void JogPanel::command(const QString &localKey)
@@ -375,9 +376,9 @@ void JogPanel::retranslate()
     m_speedLabel->setText(tr("Jog speed:"));
     m_applySpeed->setText(tr("&Apply speed"));
     m_applySpeed->setToolTip(
-        tr("Write just the jog speed to the controller now and read it back. The controller "
-           "takes a new speed even while the motor runs. Other edits wait for \"Write "
-           "changes\"."));
+        tr("Write just the jog speed to the controller: the write dialog shows it first, then "
+           "it is written and read back. The controller takes a new speed even while the motor "
+           "runs. Other edits wait for \"Write changes\"."));
     m_moveLabel->setText(tr("Single move:"));
     m_move->setText(tr("&Single move"));
     m_homeLabel->setText(tr("Home:"));

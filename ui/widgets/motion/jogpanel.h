@@ -14,16 +14,19 @@ class JogButton;
 class Led;
 class ParameterField;
 class StepMovePanel;
+class WriteFlow;
 
 // One motor's hands-on controls: hold-to-move reverse/forward, stop, the jog speed with its own
 // "apply", the running lamp and what the jog is doing (the position is the machine strip's,
 // under every page: one place for a live value), the single move with the distance, direction
-// and speed it will use, and homing. Everything shown comes from the session's store.
+// and speed it will use, and homing. Everything shown comes from the session's store; the
+// speed is written through the window's WriteFlow, as "Write changes" writes.
 class JogPanel : public QGroupBox
 {
     Q_OBJECT
 public:
-    JogPanel(DeviceSession *session, JogController *jog, int motor, QWidget *parent = nullptr);
+    JogPanel(DeviceSession *session, JogController *jog, WriteFlow *writes, int motor,
+             QWidget *parent = nullptr);
 
     int motor() const { return m_motor; }
     JogButton *reverseButton() const { return m_reverse; }
@@ -63,6 +66,7 @@ private:
 
     DeviceSession *m_session;
     JogController *m_jog;
+    WriteFlow *m_writes;
     int m_motor;
     QStringList m_keys;
     JogButton *m_reverse;
