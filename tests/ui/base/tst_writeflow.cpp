@@ -82,6 +82,41 @@ private Q_SLOTS:
         QCOMPARE(*sim()->value(QStringLiteral("motor2.speed")), 300);
     }
 
+    // Accepting the dialog says what goes out (the window's session log hears it).
+    void acceptingSaysWhatIsWritten()
+    {
+        test::connectToSimulator(*session);
+        WriteFlow flow(session.get(), parent.get());
+        QSignalSpy confirmed(&flow, &WriteFlow::confirmed);
+        QVERIFY(
+            session->parameters()->store()->edit(QStringLiteral("motor1.speed"), 450).isEmpty());
+        QVERIFY(flow.openFor({QStringLiteral("motor1.speed")}));
+        QVERIFY(confirmed.isEmpty()); // nothing before accepting
+        flow.dialog()->accept();
+        QCOMPARE(confirmed.size(), 1);
+        QCOMPARE(confirmed.first().first().toString(), QStringLiteral("motor1.speed = 450"));
+    }
+
+    // Writes the caller has asked about itself: no dialog, but said, written and verified as
+    // the dialog's are.
+    void writeConfirmedOpensNothingAndVerifies()
+    {
+        test::connectToSimulator(*session);
+        WriteFlow flow(session.get(), parent.get());
+        QSignalSpy confirmed(&flow, &WriteFlow::confirmed);
+        QSignalSpy written(session->parameters(), &SessionParameters::writeFinished);
+        const Parameter *speed = session->map().find(QStringLiteral("motor2.speed"));
+        QVERIFY(speed);
+        QVERIFY(flow.writeConfirmed({ParameterWrite{speed, 420}}));
+        QVERIFY(!flow.dialog());
+        QCOMPARE(confirmed.size(), 1);
+        QCOMPARE(confirmed.first().first().toString(), QStringLiteral("motor2.speed = 420"));
+        QTRY_COMPARE(written.size(), 1);
+        QCOMPARE(*sim()->value(QStringLiteral("motor2.speed")), 420);
+        QCOMPARE(session->parameters()->store()->state(QStringLiteral("motor2.speed")),
+                 ParameterStore::State::InSync);
+    }
+
     void aNewRequestReplacesTheOpenDialogAndRejectingWritesNothing()
     {
         test::connectToSimulator(*session);
