@@ -30,8 +30,8 @@ set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_MAINTAINER ${CPACK_PACKAGE_CONTACT})
 # Depends come from the programs' shared libraries (dpkg-shlibdeps: libc6, libqt6core6,
 # libqt6serialbus6, libqt6widgets6, libqt6svg6, the pendant's libqt6httpserver6,
-# libqt6websockets6 and libqrencode4, ...). Qt's own translations (QCommandLineParser's
-# texts, standard buttons) are a separate package; the window on Wayland needs Qt's plugin.
+# libqt6websockets6 and libqrencode4, the game pad's libsdl2-2.0-0, ...). Qt's own
+# translations (QCommandLineParser's texts, standard buttons) are a separate package; the window on Wayland needs Qt's plugin.
 # libqt6svg6 holds the plugins that draw the SVG window icon (iconengines/libqsvgicon.so):
 # loaded at run time, so dpkg-shlibdeps cannot see it.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)

@@ -7005,10 +7005,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>⌨ KEYBOARD JOGGING ON</translation>
     </message>
     <message>
-        <source>Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward. Hold to move, let go to stop. Not while typing in a field; leaving the page or the window stops.</source>
-        <translation>Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward. Hold to move, let go to stop. Not while typing in a field; leaving the page or the window stops.</translation>
-    </message>
-    <message>
         <source>Homing</source>
         <translation>Homing</translation>
     </message>
@@ -7059,6 +7055,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write just the homing order to the controller: the write dialog shows it first, then it is written and read back</source>
         <translation>Write just the homing order to the controller: the write dialog shows it first, then it is written and read back</translation>
+    </message>
+    <message>
+        <source>Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward, Home PgUp End PgDn the diagonals (both motors). Hold to move, let go to stop. Not while typing in a field; leaving the page or the window stops.</source>
+        <translation>Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward, Home PgUp End PgDn the diagonals (both motors). Hold to move, let go to stop. Not while typing in a field; leaving the page or the window stops.</translation>
     </message>
 </context>
 <context>

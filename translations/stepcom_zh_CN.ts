@@ -6973,10 +6973,6 @@ Every other master on the bus must use the new settings too, and no other device
         <translation>⌨ 键盘点动已开启</translation>
     </message>
     <message>
-        <source>Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward. Hold to move, let go to stop. Not while typing in a field; leaving the page or the window stops.</source>
-        <translation>按键：← → 电机 1 反转/正转，↓ ↑ 电机 2 反转/正转。按住运行，松开停止。在输入框中输入时无效；离开此页面或窗口时电机停止。</translation>
-    </message>
-    <message>
         <source>Homing</source>
         <translation>回零</translation>
     </message>
@@ -7027,6 +7023,10 @@ Every other master on the bus must use the new settings too, and no other device
     <message>
         <source>Write just the homing order to the controller: the write dialog shows it first, then it is written and read back</source>
         <translation>只将回零顺序写入控制器：先在写入对话框中显示，然后写入并回读</translation>
+    </message>
+    <message>
+        <source>Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward, Home PgUp End PgDn the diagonals (both motors). Hold to move, let go to stop. Not while typing in a field; leaving the page or the window stops.</source>
+        <translation>按键：← → 电机 1 反转/正转，↓ ↑ 电机 2 反转/正转，Home、PgUp、End、PgDn 斜向（两个电机同时）。按住运动，松开停止。在输入框中输入时无效；离开页面或窗口即停止。</translation>
     </message>
 </context>
 <context>

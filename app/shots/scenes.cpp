@@ -6,6 +6,7 @@
 #include "dialogs/profilecomparedialog.h"
 #include "laptopscenes.h"
 #include "offlinescenes.h"
+#include "padscenes.h"
 #include "pages/checklistpage.h"
 #include "pages/connectionpage.h"
 #include "pages/inputspage.h"
@@ -540,6 +541,7 @@ const QList<Scene> &scenes()
         {QStringLiteral("checklist-miswired"), W::AfterPages, &checklistMiswired},
         {QStringLiteral("checklist-margin"), W::AfterPages, &proofscenes::margin},
         {QStringLiteral("sequence-run"), W::AfterPages, &sequencescenes::running},
+        {QStringLiteral("gamepad-jogging"), W::AfterPages, &padscenes::jogging},
         {QStringLiteral("device-list"), W::AfterPages, &busscenes::deviceList},
         // Small laptop screens, while connected: before port-missing.
         {QStringLiteral("laptop-1024x600"), W::AfterPages, &laptopscenes::small},

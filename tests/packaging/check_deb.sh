@@ -39,7 +39,7 @@ description=$(field Description)
 grep -qx '  \.' <<<"$(dpkg-deb -I "$deb")" || fail "the Description's empty line is not ' .'"
 depends=$(field Depends)
 for lib in libc6 libqt6core6 libqt6serialbus6 libqt6serialport6 libqt6network6 libqt6gui6 \
-           libqt6widgets6 libqt6svg6 libqt6charts6; do
+           libqt6widgets6 libqt6svg6 libqt6charts6 libsdl2-2.0-0; do
     [[ ", $depends" =~ ,\ $lib([ ,]|$) ]] || fail "Depends lacks $lib: $depends"
 done
 [[ $depends =~ libqt6core6(t64)?\ \(\>=\ 6\. ]] || fail "Depends has no Qt 6 version: $depends"

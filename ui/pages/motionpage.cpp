@@ -12,6 +12,7 @@
 #include "widgets/fields/aboutbox.h"
 #include "widgets/fields/led.h"
 #include "widgets/fields/parameterfield.h"
+#include "widgets/motion/gamepadpanel.h"
 #include "widgets/motion/homingordereditor.h"
 #include "widgets/motion/jogkeys.h"
 #include "widgets/motion/jogpanel.h"
@@ -122,6 +123,8 @@ MotionPage::MotionPage(DeviceSession *session, WriteFlow *writes, QWidget *paren
     rows->addLayout(panels);
     m_limits = new TravelLimitsEditor(session, content);
     rows->addWidget(m_limits);
+    m_gamepad = new GamepadPanel(session, content); // jogging at the machine, with a dead-man
+    rows->addWidget(m_gamepad);
 
     auto *bottom = new QHBoxLayout;
     buildHoming(content);
@@ -421,8 +424,9 @@ void MotionPage::retranslate()
                               "shown and the window has focus"));
     m_keyboardIndicator->setText(tr("⌨ KEYBOARD JOGGING ON"));
     m_keyboardHelp->setText(
-        tr("Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward. Hold to move, "
-           "let go to stop. Not while typing in a field; leaving the page or the window stops."));
+        tr("Keys: ← → motor 1 reverse/forward, ↓ ↑ motor 2 reverse/forward, Home PgUp End PgDn "
+           "the diagonals (both motors). Hold to move, let go to stop. Not while typing in a "
+           "field; leaving the page or the window stops."));
     m_about->setText(StepMovePanel::explanation() + QStringLiteral("\n\n") +
                      m_limits->explanation());
     m_homingBox->setTitle(tr("Homing"));

@@ -20,6 +20,7 @@ class JogController;
 class JogKeys;
 class JogPanel;
 class Led;
+class GamepadPanel;
 class TravelLimitsEditor;
 class WriteFlow;
 
@@ -36,6 +37,8 @@ public:
     ~MotionPage() override;
 
     QString title() const override;
+    // The game pad's box: the window gives it its E-STOP.
+    GamepadPanel *gamepadPanel() const { return m_gamepad; }
     QString iconName() const override { return QStringLiteral("jog"); }
     Stage stage() const override { return Stage::SetUp; }
     bool needsDevice() const override { return true; }
@@ -78,6 +81,7 @@ private:
     JogKeys *m_keys;
     QList<JogPanel *> m_panels;
     TravelLimitsEditor *m_limits = nullptr;
+    GamepadPanel *m_gamepad = nullptr;
     AboutBox *m_about = nullptr; // Explanations on demand
     QFrame *m_banner;
     QLabel *m_bannerIcon;

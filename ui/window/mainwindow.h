@@ -89,7 +89,8 @@ private:
     // A proof of an axis that lost steps at the motor's own settings: a warning in the strip,
     // its recommended speed (or the way to find one) one click away (mainwindowlayout.cpp).
     void watchProofs();
-    // The Sequence page's run: the strip's line, the run-in to the checklist.
+    // The Sequence page's run: the strip's line, the run-in to the checklist; the game pad's
+    // E-STOP.
     void watchSequence();
     void retranslate();
     void retranslateEmergencyStop();

@@ -2,12 +2,15 @@
 // inside the screen, and the layout saved and restored (split from mainwindow.cpp).
 #include "window/mainwindow.h"
 
+#include "base/emergencystop.h"
 #include "pages/checklistpage.h"
+#include "pages/motionpage.h"
 #include "pages/sequencepage.h"
 #include "widgets/docks/devicelistdock.h"
 #include "widgets/docks/machinestrip.h"
 #include "widgets/docks/pagesidebar.h"
 #include "widgets/docks/statusdock.h"
+#include "widgets/motion/gamepadpanel.h"
 #include "widgets/sequence/sequencerunpanel.h"
 
 #include <QDockWidget>
@@ -198,6 +201,8 @@ void MainWindow::watchProofs()
 
 void MainWindow::watchSequence()
 {
+    // The pad's Back is the window's own E-STOP, ahead of everything queued.
+    m_motion->gamepadPanel()->setEmergencyStop([this] { m_estop->trigger(); });
     connect(m_sequence, &SequencePage::runText, m_strip, &MachineStrip::setSequenceText);
     connect(m_sequence->runPanel(), &SequenceRunPanel::runInFinished, m_checklist,
             &ChecklistPage::recordRunIn);
