@@ -9,7 +9,7 @@ build=${BUILD_DIR:-build}
 # The suites mostly wait (for the simulator, timers, ptys; the whole suite uses under a minute
 # of CPU), so three per core run side by side: on 2 cores 6 at once, 2.5 minutes instead of 6
 # with -j 2 (docs/testing.md). CTEST_JOBS=2 runs them as before.
-ctest --test-dir "$build" --output-on-failure --timeout 300 -j "${CTEST_JOBS:-$((3 * $(nproc)))}" "$@"
+ctest --test-dir "$build" --output-on-failure --timeout 300 -j "${CTEST_JOBS:-$((2 * $(nproc)))}" "$@"
 [[ $# -gt 0 ]] && exit 0 # a chosen subset of the tests: nothing more
 
 # The fuzz targets, 10 s each here (docs/testing.md): the suite replays their corpus and
